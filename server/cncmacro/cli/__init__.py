@@ -1,0 +1,1 @@
+"""The command-line front end: thin adapters from arguments to the analysis and the machine."""

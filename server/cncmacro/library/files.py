@@ -1,0 +1,96 @@
+"""Reading program files as controls and editors write them.
+
+Files come as UTF-8 (with or without a BOM), as GBK/GB18030 from Chinese controls and
+editors, with LF, CRLF or CR line breaks. Text is decoded UTF-8 first and GB18030 second; bytes
+that neither accepts are kept as surrogate escapes, so nothing is lost when the text is
+written back. A file with NUL bytes or mostly control characters is binary: it is reported,
+not parsed.
+"""
+
+from __future__ import annotations
+
+import codecs
+from dataclasses import dataclass
+from pathlib import Path
+
+# Program files are found by these endings (any case), or by an O-number name without one.
+PROGRAM_SUFFIXES = frozenset({".nc", ".cnc", ".mac", ".prg", ".tap", ".eia"})
+
+
+class BinaryFileError(Exception):
+    """The file is not text; ``offset`` is where the first NUL (or the evidence) is."""
+
+    def __init__(self, path: str, offset: int) -> None:
+        super().__init__(f"{path}: binary file (NUL byte at offset {offset}), not a program")
+        self.path = path
+        self.offset = offset
+
+
+@dataclass(slots=True)
+class SourceText:
+    """Decoded file text and the encoding it was read with."""
+
+    text: str
+    encoding: str
+    bom: bool = False
+
+
+def decode_program(data: bytes, path: str = "<bytes>") -> SourceText:
+    """Decode the bytes of a program file; raise ``BinaryFileError`` for a binary one."""
+    if data.startswith(codecs.BOM_UTF8):
+        return SourceText(data[3:].decode("utf-8", errors="surrogateescape"), "utf-8", True)
+    if data.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
+        return SourceText(data.decode("utf-16", errors="surrogateescape"), "utf-16", True)
+    nul = data.find(b"\0")
+    if nul >= 0:
+        raise BinaryFileError(path, nul)
+    sample = data[:8192]
+    if sample:
+        controls = sum(1 for b in sample if b < 32 and b not in (9, 10, 12, 13, 26))
+        if controls * 10 > len(sample):
+            raise BinaryFileError(path, next(i for i, b in enumerate(sample) if b < 32 and b not in (9, 10, 12, 13, 26)))
+    try:
+        return SourceText(data.decode("utf-8"), "utf-8")
+    except UnicodeDecodeError:
+        pass
+    try:
+        return SourceText(data.decode("gb18030"), "gb18030")
+    except UnicodeDecodeError:
+        return SourceText(data.decode("utf-8", errors="surrogateescape"), "utf-8")
+
+
+def read_program(path: str | Path) -> SourceText:
+    """Read and decode a program file (``OSError`` and ``BinaryFileError`` pass through)."""
+    p = Path(path)
+    return decode_program(p.read_bytes(), str(p))
+
+
+def encode_program(source: SourceText) -> bytes:
+    """The bytes of ``source`` in the encoding it was read with (the inverse of decoding)."""
+    prefix = b""
+    if source.bom and source.encoding == "utf-8":
+        prefix = codecs.BOM_UTF8
+    if source.encoding == "utf-16":
+        return source.text.encode("utf-16", errors="surrogatepass")
+    return prefix + source.text.encode(source.encoding, errors="surrogateescape")
+
+
+def is_program_file(path: Path) -> bool:
+    """True for a file whose name says it holds a program: a known ending, or ``O1234``."""
+    if path.suffix.lower() in PROGRAM_SUFFIXES:
+        return True
+    name = path.name
+    return not path.suffix and len(name) >= 2 and name[0] in "Oo" and name[1:].isdigit()
+
+
+def find_program_files(root: Path) -> list[Path]:
+    """Program files under ``root`` (itself, if it is a file), sorted, hidden folders skipped."""
+    if root.is_file():
+        return [root]
+    found = []
+    for p in sorted(root.rglob("*")):
+        if any(part.startswith(".") for part in p.relative_to(root).parts):
+            continue
+        if p.is_file() and is_program_file(p):
+            found.append(p)
+    return found

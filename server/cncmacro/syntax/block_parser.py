@@ -1,0 +1,148 @@
+"""Parsing one line into a ``Block``: the fast path first, then the lark grammar.
+
+``parse_block`` never raises: a line that does not parse gives a block whose ``problems`` say
+why, with a range. Blocks are cached by line text (``BlockCache``), so re-parsing a document
+after an edit only parses the lines whose text is new.
+"""
+
+from __future__ import annotations
+
+import gc
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+from lark.exceptions import UnexpectedInput
+
+from .assemble import assemble, assemble_words
+from .fastpath import plain_words, read_items
+from .grammar import BlockError, make_parser
+from .lines import Prepared, has_special, prepare
+from .messages import describe_error
+from .nodes import Block, Problem
+
+# Real controls read blocks of at most a few hundred characters; a longer line is reported,
+# not parsed, so that a huge line costs nothing and cannot stall the editor.
+MAX_BLOCK_CHARS = 4096
+
+_local = threading.local()
+
+
+def _parser():
+    p = getattr(_local, "parser", None)
+    if p is None:
+        p = _local.parser = make_parser()
+    return p
+
+
+def parse_with_grammar(code: str, prep: Prepared) -> Block:
+    """Parse prepared code with the lark grammar only (no fast path)."""
+    lark, builder = _parser()
+    builder.reset()
+    try:
+        items = lark.parse(code)
+    except UnexpectedInput as err:
+        return _failed(prep, describe_error(code, err))
+    except BlockError as err:
+        return _failed(prep, Problem(err.message, err.start, err.end))
+    except RecursionError:
+        return _failed(prep, Problem("the block is nested too deeply to read", 0, len(code)))
+    return assemble(items, prep)
+
+
+def parse_block(line: str) -> Block:
+    """The block of one line of program text (without its line break)."""
+    if len(line) > MAX_BLOCK_CHARS:
+        return Block(
+            problems=(
+                Problem(
+                    f"block of {len(line)} characters is too long to be a program line "
+                    f"(at most {MAX_BLOCK_CHARS}); not read",
+                    0,
+                    len(line),
+                ),
+            )
+        )
+    if not has_special(line):  # the common case: no comment, ';', '/' or '%'
+        words = plain_words(line)
+        if words is not None and words[0].letter not in ("O", "N"):
+            return Block(words=tuple(words))
+    prep = prepare(line)
+    code = prep.code
+    if not code or code.isspace():
+        return assemble((), prep)
+    words = plain_words(code)
+    if words is not None:
+        return assemble_words(words, prep)
+    items = read_items(code)
+    if items is None:
+        return parse_with_grammar(code, prep)
+    return assemble(items, prep)
+
+
+def _failed(prep: Prepared, problem: Problem) -> Block:
+    """The block of a line that does not parse: only its comments and the problem remain."""
+    return Block(
+        block_delete=prep.block_delete,
+        tape=prep.tape,
+        comments=prep.comments,
+        problems=prep.problems + (problem,),
+        structural=prep.tape,
+    )
+
+
+@contextmanager
+def collector_paused() -> Iterator[None]:
+    """Pause Python's cycle collector while many blocks are made at once, then freeze them.
+
+    Blocks hold no reference cycles, yet the collector walks every live object each time a
+    generation fills: a 100k-line file is over a million objects, and each full walk costs
+    hundreds of milliseconds, during the parse and at any later moment (an edit, a hover).
+    Frozen objects are skipped by the collector; they are still freed by reference
+    counting when their document goes away.
+    """
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        gc.freeze()
+        if was_enabled:
+            gc.enable()
+
+
+class BlockCache:
+    """Blocks by line text. Identical lines share one block; the cache is bounded."""
+
+    def __init__(self, max_entries: int = 400_000) -> None:
+        self._blocks: dict[str, Block] = {}
+        self.max_entries = max_entries
+        self.parsed = 0  # lines actually parsed (cache misses), for tests and benchmarks
+
+    def get(self, line: str) -> Block:
+        b = self._blocks.get(line)
+        if b is None:
+            b = parse_block(line)
+            self.parsed += 1
+            if len(self._blocks) >= self.max_entries:
+                self._blocks.clear()
+            self._blocks[line] = b
+        return b
+
+    def get_many(self, lines: list[str]) -> list[Block]:
+        """The blocks of many lines at once (a file being opened)."""
+        blocks = self._blocks
+        if len(blocks) + len(lines) > self.max_entries:
+            blocks.clear()
+        out = []
+        append = out.append
+        for line in lines:
+            b = blocks.get(line)
+            if b is None:
+                b = blocks[line] = parse_block(line)
+                self.parsed += 1
+            append(b)
+        return out
+
+    def __len__(self) -> int:
+        return len(self._blocks)

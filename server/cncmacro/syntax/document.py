@@ -1,0 +1,80 @@
+"""A document kept parsed across edits.
+
+The text is held as a list of lines. An edit replaces a range of lines; only the lines whose
+text is new are parsed (blocks come from a ``BlockCache`` keyed by line text), the block list
+is spliced, and the ``Program`` is rebuilt from the structural blocks alone. So a one-line edit
+costs one line's parse plus a pass over the labels and loops, whatever the file's length.
+"""
+
+from __future__ import annotations
+
+from .block_parser import BlockCache, collector_paused
+from .nodes import Block
+from .program import Program, build_program
+
+_shared_cache = BlockCache()
+
+
+def split_lines(text: str) -> list[str]:
+    """Lines as an editor counts them: a break is CRLF, LF or a lone CR."""
+    if "\r" in text:
+        text = text.replace("\r\n", "\n").replace("\r", "\n")
+    return text.split("\n")
+
+
+class ParsedDocument:
+    """The lines, blocks and program of one document, updated in place by edits."""
+
+    def __init__(self, text: str, cache: BlockCache | None = None) -> None:
+        self.cache = cache if cache is not None else _shared_cache
+        self.lines: list[str] = []
+        self.blocks: list[Block] = []
+        self._structural: list[bool] = []
+        self.program: Program
+        self.set_text(text)
+
+    # ---- whole text
+    def set_text(self, text: str) -> None:
+        """Replace the whole text (a document opened, or a full-sync change)."""
+        self.lines = split_lines(text)
+        with collector_paused():
+            self.blocks = self.cache.get_many(self.lines)
+        self._structural = [b.structural for b in self.blocks]
+        self.program = build_program(self.blocks, self._structural)
+
+    @property
+    def text(self) -> str:
+        return "\n".join(self.lines)
+
+    # ---- edits
+    def replace_lines(self, start: int, end: int, new_lines: list[str]) -> None:
+        """Replace lines ``start`` to ``end`` (exclusive) by ``new_lines``."""
+        get = self.cache.get
+        new_blocks = [get(line) for line in new_lines]
+        old_blocks = self.blocks[start:end]
+        if len(new_blocks) == len(old_blocks):
+            unchanged = all(o.structure_key() == b.structure_key() for o, b in zip(old_blocks, new_blocks))
+        else:  # lines came or went: cheap only if none of them, old or new, has structure
+            unchanged = not any(b.structural for b in old_blocks) and not any(b.structural for b in new_blocks)
+        self.lines[start:end] = new_lines
+        self.blocks[start:end] = new_blocks
+        self._structural[start:end] = [b.structural for b in new_blocks]
+        if unchanged:  # the program (which holds self.blocks) stays; later lines may move
+            self.program.shift(end, len(new_blocks) - len(old_blocks))
+        else:
+            self.program = build_program(self.blocks, self._structural)
+
+    def apply_change(self, start_line: int, start_col: int, end_line: int, end_col: int, text: str) -> None:
+        """Apply an editor change: the text between two positions (0-based line and column,
+        in code points) becomes ``text``. Positions past the end are clamped."""
+        n = len(self.lines)
+        start_line = min(max(start_line, 0), n - 1)
+        end_line = min(max(end_line, start_line), n - 1)
+        first = self.lines[start_line]
+        last = self.lines[end_line]
+        start_col = min(max(start_col, 0), len(first))
+        end_col = min(max(end_col, 0), len(last))
+        if end_line == start_line:
+            end_col = max(end_col, start_col)
+        merged = first[:start_col] + text + last[end_col:]
+        self.replace_lines(start_line, end_line + 1, split_lines(merged))

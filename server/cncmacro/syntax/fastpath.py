@@ -1,0 +1,330 @@
+"""The fast path: a hand-written reader for the common forms of a block.
+
+Plain NC blocks (``G01 X12.5 Y-3. F200``) are nine lines in ten of a CAM program, and most of
+the rest are assignments and IF/WHILE/GOTO with ordinary expressions. LALR parsing in Python
+costs several microseconds a token, so these forms are read here instead, by a regular
+expression for plain words and a small recursive-descent reader for statements.
+
+The contract, held by a property test: for any line this module accepts, it returns exactly
+the items that the lark grammar builds; for anything else (a bracketed program name, DPRNT,
+an unusual form, every error) it returns None and the grammar decides, so error messages
+always come from the grammar.
+"""
+
+from __future__ import annotations
+
+import re
+
+from .grammar import RELATION_NAMES, BlockError, _check_condition, _has_relation
+from .nodes import (
+    Assign,
+    Binary,
+    Bracket,
+    Call,
+    Do,
+    End,
+    Goto,
+    If,
+    IndirectVar,
+    Number,
+    Relation,
+    Unary,
+    Var,
+    While,
+    Word,
+)
+
+_WORDS = re.compile(r"([ \t]*)([A-Za-z])([+-]?(?:\d+\.?\d*|\.\d+))")
+
+
+def plain_words(code: str) -> list[Word] | None:
+    """The words of ``code`` when it holds only address-number words, else None.
+
+    ``findall`` skips what it cannot match, so the columns are counted from the matched
+    lengths: they reach the end of the line exactly when nothing was skipped.
+    """
+    words = []
+    pos = 0
+    for gap, letter, text in _WORDS.findall(code):
+        pos += len(gap)
+        end = pos + 1 + len(text)
+        words.append(Word(letter.upper(), Number(float(text), text, pos + 1, end), None, pos, end))
+        pos = end
+    if not words or pos != len(code.rstrip(" \t")):
+        return None
+    return words
+
+
+# ---------------------------------------------------------------- statements
+
+_KEYWORDS = (
+    "ATAN|ASIN|ACOS|SQRT|ROUND|WHILE|GOTO|THEN|POPEN|PCLOS|DPRNT|BPRNT|"
+    "SIN|COS|TAN|ABS|EXP|FIX|FUP|BIN|BCD|AND|MOD|XOR|END|LN|OR|EQ|NE|GT|GE|LT|LE|IF|DO"
+)
+_TOKEN = re.compile(
+    r"[ \t]*(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|(" + _KEYWORDS + r")|(==|!=|<=|>=|[-+*/\[\]=<>#])|([A-Za-z]))",
+    re.I,
+)
+_BRACKET_NAME = re.compile(r"\[(?=[^\[\]#()\s]*[^\[\]#()\s\d.+\-*/])[^\[\]#()\s.][^\[\]#()\s]*\]")
+_FUNCS = frozenset("SIN COS TAN ASIN ACOS SQRT ABS LN EXP ROUND FIX FUP BIN BCD".split())
+_RELOPS = frozenset("EQ NE GT GE LT LE == != <= >= < >".split())
+_MULOPS = frozenset(("*", "/", "AND", "MOD"))
+_ADDOPS = frozenset(("+", "-", "OR", "XOR"))
+_MAX_TOKENS = 200
+
+# token kinds
+_VAR, _NUM, _KW, _OP, _LETTER, _EOF = range(6)
+
+
+class _Decline(Exception):
+    """The line is not one of the forms read here: let the grammar read it."""
+
+
+def read_items(code: str) -> list[object] | None:
+    """The items of a block of common statement forms, or None to defer to the grammar."""
+    if code.count("[") > 12:  # deep nesting is rare; the grammar reads it without recursion
+        return None
+    toks = _tokenize(code)
+    if toks is None:
+        return None
+    try:
+        return _Reader(toks, code).items()
+    except (_Decline, BlockError):
+        return None
+
+
+def _tokenize(code: str) -> list[tuple[int, str, int, int]] | None:
+    toks: list[tuple[int, str, int, int]] = []
+    pos = 0
+    n = len(code)
+    match = _TOKEN.match
+    while pos < n:
+        m = match(code, pos)
+        if m is None:
+            if code[pos:].strip(" \t"):
+                return None
+            break
+        kind = m.lastindex - 1  # type: ignore[operator]
+        s, e = m.span(m.lastindex)  # type: ignore[arg-type]
+        text = m.group(m.lastindex)  # type: ignore[arg-type]
+        if kind == _KW or kind == _LETTER:
+            text = text.upper()
+        toks.append((kind, text, s, e))
+        pos = m.end()
+        if len(toks) > _MAX_TOKENS:
+            return None
+    toks.append((_EOF, "", n, n))
+    return toks
+
+
+class _Reader:
+    """Recursive descent over the grammar's common rules, building the grammar's nodes."""
+
+    def __init__(self, toks: list[tuple[int, str, int, int]], code: str) -> None:
+        self.toks = toks
+        self.code = code
+        self.i = 0
+        self.relations = 0
+
+    # ---- helpers
+    def peek(self) -> tuple[int, str, int, int]:
+        return self.toks[self.i]
+
+    def take(self) -> tuple[int, str, int, int]:
+        t = self.toks[self.i]
+        self.i += 1
+        return t
+
+    def expect(self, kind: int, text: str | None = None) -> tuple[int, str, int, int]:
+        t = self.toks[self.i]
+        if t[0] != kind or (text is not None and t[1] != text):
+            raise _Decline
+        self.i += 1
+        return t
+
+    def number(self) -> Number:
+        _k, text, s, e = self.expect(_NUM)
+        return Number(float(text), text, s, e)
+
+    # ---- items
+    def items(self) -> list[object]:
+        out: list[object] = []
+        while self.peek()[0] != _EOF:
+            out.append(self.item())
+        return out
+
+    def item(self) -> object:
+        kind, text, s, _e = self.peek()
+        if kind == _LETTER:
+            return self.word()
+        if kind == _VAR or (kind == _OP and text == "#"):
+            return self.assign()
+        if kind == _KW:
+            self.i += 1
+            if text == "IF":
+                cond = self.condition()
+                k2 = self.take()
+                if k2[0] == _KW and k2[1] == "GOTO":
+                    target = self.target()
+                    return If(cond, target, None, s, target.end)
+                if k2[0] == _KW and k2[1] == "THEN":
+                    then = self.assign()
+                    return If(cond, None, then, s, then.end)
+                raise _Decline
+            if text == "WHILE":
+                cond = self.condition()
+                self.expect(_KW, "DO")
+                num = self.number()
+                return While(cond, num, s, num.end)
+            if text == "DO":
+                num = self.number()
+                return Do(num, s, num.end)
+            if text == "END":
+                num = self.number()
+                return End(num, s, num.end)
+            if text == "GOTO":
+                target = self.target()
+                return Goto(target, s, target.end)
+        raise _Decline
+
+    def word(self) -> Word:
+        _k, letter, ls, _le = self.take()
+        kind, text, s, e = self.peek()
+        if letter == "P" and kind == _OP and text == "[" and _BRACKET_NAME.match(self.code, s):
+            raise _Decline
+        if kind == _NUM:
+            self.i += 1
+            value: object = Number(float(text), text, s, e)
+        elif kind == _OP and text in ("+", "-"):
+            self.i += 1
+            k2, t2, _s2, e2 = self.peek()
+            if k2 == _NUM:
+                self.i += 1
+                signed = text + t2
+                value = Number(float(signed), signed, s, e2)
+            else:
+                x = self.variable_or_bracket()
+                value = Unary(text, x, s, x.end)
+        else:
+            value = self.variable_or_bracket()
+        if self.relations and _has_relation(value):  # type: ignore[arg-type]
+            raise _Decline
+        return Word(letter, value, None, ls, value.end)  # type: ignore[arg-type,attr-defined]
+
+    def variable_or_bracket(self) -> Var | IndirectVar | Bracket:
+        kind, text, _s, _e = self.peek()
+        if kind == _VAR or (kind == _OP and text == "#"):
+            return self.variable()
+        if kind == _OP and text == "[":
+            return self.bracket()
+        raise _Decline
+
+    def assign(self) -> Assign:
+        target = self.variable()
+        self.expect(_OP, "=")
+        value = self.sum()
+        if self.relations and (
+            _has_relation(value) or (isinstance(target, IndirectVar) and _has_relation(target.index))
+        ):
+            raise _Decline
+        return Assign(target, value, None, target.start, value.end)
+
+    def condition(self) -> Bracket:
+        cond = self.bracket()
+        _check_condition(cond)
+        return cond
+
+    def target(self) -> object:
+        kind, text, s, e = self.peek()
+        if kind == _NUM:
+            self.i += 1
+            return Number(float(text), text, s, e)
+        x = self.variable_or_bracket()
+        if self.relations and _has_relation(x):
+            raise _Decline
+        return x
+
+    # ---- expressions
+    def sum(self) -> object:
+        left = self.product()
+        while True:
+            kind, text, _s, _e = self.peek()
+            if (kind == _OP or kind == _KW) and text in _ADDOPS:
+                self.i += 1
+                right = self.product()
+                left = Binary(text, left, right, left.start, right.end)  # type: ignore[attr-defined]
+            else:
+                return left
+
+    def product(self) -> object:
+        left = self.unary()
+        while True:
+            kind, text, _s, _e = self.peek()
+            if (kind == _OP or kind == _KW) and text in _MULOPS:
+                self.i += 1
+                right = self.unary()
+                left = Binary(text, left, right, left.start, right.end)  # type: ignore[attr-defined]
+            else:
+                return left
+
+    def unary(self) -> object:
+        kind, text, s, _e = self.peek()
+        if kind == _OP and text in ("+", "-"):
+            self.i += 1
+            x = self.unary()
+            return Unary(text, x, s, x.end)  # type: ignore[attr-defined]
+        return self.primary()
+
+    def primary(self) -> object:
+        kind, text, s, e = self.peek()
+        if kind == _NUM:
+            self.i += 1
+            return Number(float(text), text, s, e)
+        if kind == _VAR or (kind == _OP and text == "#"):
+            return self.variable()
+        if kind == _OP and text == "[":
+            return self.bracket()
+        if kind == _KW and (text in _FUNCS or text == "ATAN"):
+            self.i += 1
+            self.expect(_OP, "[")
+            arg = self.relexpr()
+            close = self.expect(_OP, "]")
+            args = [arg]
+            if text == "ATAN":
+                k2, t2, _s2, _e2 = self.peek()
+                k3, t3, _s3, _e3 = self.toks[self.i + 1] if k2 != _EOF else (_EOF, "", 0, 0)
+                if k2 == _OP and t2 == "/" and k3 == _OP and t3 == "[":
+                    self.i += 2
+                    args.append(self.relexpr())
+                    close = self.expect(_OP, "]")
+            if self.relations and any(_has_relation(a) for a in args):  # type: ignore[arg-type]
+                raise _Decline
+            return Call(text, tuple(args), s, close[3])  # type: ignore[arg-type]
+        raise _Decline
+
+    def bracket(self) -> Bracket:
+        lb = self.expect(_OP, "[")
+        inner = self.relexpr()
+        rb = self.expect(_OP, "]")
+        return Bracket(inner, lb[2], rb[3])  # type: ignore[arg-type]
+
+    def relexpr(self) -> object:
+        left = self.sum()
+        kind, text, _s, _e = self.peek()
+        if (kind == _OP or kind == _KW) and text in _RELOPS:
+            self.i += 1
+            right = self.sum()
+            self.relations += 1
+            if _has_relation(left) or _has_relation(right):  # type: ignore[arg-type]
+                raise _Decline
+            return Relation(RELATION_NAMES.get(text, text), text, left, right, left.start, right.end)  # type: ignore[arg-type,attr-defined]
+        return left
+
+    def variable(self) -> Var | IndirectVar:
+        kind, text, s, e = self.take()
+        if kind == _VAR:
+            return Var(int(text[1:].strip()), s, e)
+        if kind == _OP and text == "#":
+            index = self.bracket()
+            return IndirectVar(index, s, index.end)
+        raise _Decline

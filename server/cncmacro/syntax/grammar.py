@@ -1,0 +1,320 @@
+"""The lark LALR parser of one block and the transformer that builds typed nodes while parsing.
+
+The grammar lives in ``block.lark``. Nodes are built inside the parse (lark's inline
+transformer), so no intermediate parse tree is made. Rules the language imposes on top of the
+grammar (comparisons only in IF/WHILE conditions, ``AND``/``OR`` joining bracketed
+conditions, whole loop numbers) raise ``BlockError`` with a plain-words message.
+"""
+
+from __future__ import annotations
+
+import re
+from importlib import resources
+
+from lark import Lark, Token, Transformer, Tree
+
+from .nodes import (
+    Assign,
+    Binary,
+    Bracket,
+    Call,
+    Do,
+    End,
+    Expr,
+    Goto,
+    If,
+    IndirectVar,
+    Number,
+    Output,
+    OutputPart,
+    Relation,
+    Unary,
+    Var,
+    While,
+    Word,
+)
+
+RELATION_NAMES = {"==": "EQ", "!=": "NE", ">": "GT", ">=": "GE", "<": "LT", "<=": "LE"}
+
+
+class BlockError(Exception):
+    """A rule of the language broken by a line that the grammar itself accepts."""
+
+    def __init__(self, message: str, start: int, end: int) -> None:
+        super().__init__(message)
+        self.message = message
+        self.start = start
+        self.end = end
+
+
+def _start(x: object) -> int:
+    return x.start_pos if isinstance(x, Token) else x.start  # type: ignore[attr-defined,return-value]
+
+
+def _end(x: object) -> int:
+    return x.end_pos if isinstance(x, Token) else x.end  # type: ignore[attr-defined,return-value]
+
+
+def _number(tok: Token) -> Number:
+    return Number(float(tok), str(tok), tok.start_pos, tok.end_pos)  # type: ignore[arg-type]
+
+
+def _varnum(tok: Token) -> Var:
+    return Var(int(tok[1:].strip()), tok.start_pos, tok.end_pos)  # type: ignore[arg-type]
+
+
+_DPRNT_PIECE = re.compile(r"#[ \t]*(\d+)(?:[ \t]*\[[ \t]*(\d)[ \t]*(\d)[ \t]*\])?|\[|\]|.", re.S)
+
+
+class _Builder(Transformer):
+    """Lark callbacks: one method per grammar rule, each returning a node.
+
+    ``relations`` counts the comparisons built since ``reset``: while it is 0, no expression
+    of the line can hide one, and the checks that walk expressions are skipped.
+    """
+
+    relations = 0
+
+    def reset(self) -> None:
+        self.relations = 0
+
+    def __default__(self, data, children, meta):  # lark's helper rules (item*) stay trees
+        return Tree(data, children, meta)
+
+    # ---- items
+    def start(self, children):
+        return children
+
+    def word(self, c):
+        letter = c[0]
+        value = c[1]
+        if isinstance(value, Token):  # BRACKET_NAME
+            return Word(letter.upper(), None, value[1:-1], letter.start_pos, value.end_pos)
+        if self.relations and _has_relation(value):
+            raise _relation_error(value)
+        return Word(letter.upper(), value, None, letter.start_pos, value.end)
+
+    def wvalue(self, c):
+        if len(c) == 1:
+            x = c[0]
+            return _number(x) if isinstance(x, Token) else x
+        sign, x = c
+        if isinstance(x, Token):  # a signed literal is one number
+            text = sign + x
+            return Number(float(text), text, sign.start_pos, x.end_pos)
+        return Unary(str(sign), x, sign.start_pos, x.end)
+
+    def assign(self, c):
+        target, _eq, value = c
+        if self.relations and _has_relation(value):
+            raise _relation_error(value)
+        if self.relations and isinstance(target, IndirectVar) and _has_relation(target.index):
+            raise _relation_error(target.index)
+        return Assign(target, value, None, target.start, value.end)
+
+    def if_stmt(self, c):
+        kw, cond, kw2, rest = c
+        _check_condition(cond)
+        if kw2.type == "GOTO":
+            return If(cond, rest, None, kw.start_pos, rest.end)
+        return If(cond, None, rest, kw.start_pos, rest.end)
+
+    def while_stmt(self, c):
+        kw, cond, _do, num = c
+        _check_condition(cond)
+        return While(cond, _number(num), kw.start_pos, num.end_pos)
+
+    def do_stmt(self, c):
+        kw, num = c
+        return Do(_number(num), kw.start_pos, num.end_pos)
+
+    def end_stmt(self, c):
+        kw, num = c
+        return End(_number(num), kw.start_pos, num.end_pos)
+
+    def goto_stmt(self, c):
+        kw, target = c
+        return Goto(target, kw.start_pos, target.end)
+
+    def target(self, c):
+        x = c[0]
+        if isinstance(x, Token):
+            return _number(x)
+        if self.relations and _has_relation(x):
+            raise _relation_error(x)
+        return x
+
+    def output_stmt(self, c):
+        kw = c[0]
+        name = kw.upper()
+        if len(c) == 1:
+            return Output(name, (), kw.start_pos, kw.end_pos)
+        args = c[1]
+        return Output(name, _output_parts(args), kw.start_pos, args.end_pos)
+
+    # ---- expressions
+    def binary(self, c):
+        left, op, right = c
+        return Binary(op.upper(), left, right, left.start, right.end)
+
+    def unary(self, c):
+        sign, x = c
+        return Unary(str(sign), x, sign.start_pos, x.end)
+
+    def number(self, c):
+        return _number(c[0])
+
+    def bracket(self, c):
+        lb, inner, rb = c
+        return Bracket(inner, lb.start_pos, rb.end_pos)
+
+    def relation(self, c):
+        left, op, right = c
+        self.relations += 1
+        spelling = op.upper()
+        for side in (left, right):
+            if _has_relation(side):
+                raise _relation_error(side)
+        return Relation(RELATION_NAMES.get(spelling, spelling), spelling, left, right, left.start, right.end)
+
+    def variable(self, c):
+        if len(c) == 1:
+            return _varnum(c[0])
+        hash_, index = c
+        return IndirectVar(index, hash_.start_pos, index.end)
+
+    def call(self, c):
+        name = c[0].upper()
+        args = tuple(c[i] for i in range(2, len(c), 4))
+        if self.relations:
+            for a in args:
+                if _has_relation(a):
+                    raise _relation_error(a)
+        return Call(name, args, c[0].start_pos, c[-1].end_pos)
+
+
+def _has_relation(expr: Expr) -> bool:
+    """True when a comparison hides anywhere inside ``expr`` (walked without recursion)."""
+    stack: list[object] = [expr]
+    while stack:
+        e = stack.pop()
+        if isinstance(e, Relation):
+            return True
+        if isinstance(e, Binary):
+            stack.append(e.left)
+            stack.append(e.right)
+        elif isinstance(e, (Bracket,)):
+            stack.append(e.inner)
+        elif isinstance(e, Unary):
+            stack.append(e.operand)
+        elif isinstance(e, Call):
+            stack.extend(e.args)
+        elif isinstance(e, IndirectVar):
+            stack.append(e.index)
+    return False
+
+
+def _relation_error(expr: Expr) -> BlockError:
+    rel = _find_relation(expr)
+    return BlockError(
+        f"the comparison '{rel.spelling}' is allowed only in an IF or WHILE condition (alarm 114)",
+        rel.start,
+        rel.end,
+    )
+
+
+def _find_relation(expr: Expr) -> Relation:
+    stack: list[object] = [expr]
+    while stack:
+        e = stack.pop()
+        if isinstance(e, Relation):
+            return e
+        for attr in ("left", "right", "inner", "operand", "index"):
+            sub = getattr(e, attr, None)
+            if sub is not None:
+                stack.append(sub)
+        if isinstance(e, Call):
+            stack.extend(e.args)
+    raise AssertionError("no comparison found")  # only called after _has_relation
+
+
+def _check_condition(cond: Bracket) -> None:
+    """A condition is ``[a op b]`` or bracketed conditions joined by AND, OR or XOR."""
+    stack: list[Bracket] = [cond]
+    while stack:
+        b = stack.pop()
+        inner = b.inner
+        if isinstance(inner, Relation):
+            continue
+        if (
+            isinstance(inner, Binary)
+            and inner.op in ("AND", "OR", "XOR")
+            and _is_bracketed_condition(inner.left)
+            and _is_bracketed_condition(inner.right)
+        ):
+            stack.append(inner.left)  # type: ignore[arg-type]
+            stack.append(inner.right)  # type: ignore[arg-type]
+            continue
+        if _has_relation(inner):
+            raise BlockError(
+                "conditions are joined with AND/OR only when each side is bracketed: "
+                "[[#1 EQ 0] OR [#2 LT 0]]",
+                b.start,
+                b.end,
+            )
+        raise BlockError(
+            "the condition needs a comparison such as [#1 GT 0] (EQ NE GT GE LT LE)",
+            b.start,
+            b.end,
+        )
+
+
+def _is_bracketed_condition(e: Expr) -> bool:
+    """A bracket whose content can be a condition; its details are checked in turn."""
+    if not isinstance(e, Bracket):
+        return False
+    inner = e.inner
+    return isinstance(inner, Relation) or (isinstance(inner, Binary) and inner.op in ("AND", "OR", "XOR"))
+
+
+def _output_parts(tok: Token) -> tuple[OutputPart, ...]:
+    """Split ``[X#2[53]**Y#5]`` into literal text and formatted variables."""
+    body = str(tok)[1:-1]
+    base = tok.start_pos + 1  # type: ignore[operator]
+    parts: list[OutputPart] = []
+    text: list[str] = []
+    for m in _DPRNT_PIECE.finditer(body):
+        if m.group(1) is not None:
+            if text:
+                parts.append(OutputPart("".join(text), None, None, None))
+                text = []
+            var = Var(int(m.group(1)), base + m.start(), base + m.end(1))
+            digits = int(m.group(2)) if m.group(2) else None
+            decimals = int(m.group(3)) if m.group(3) else None
+            parts.append(OutputPart(None, var, digits, decimals))
+        else:
+            ch = m.group(0)
+            if ch == "*":
+                text.append(" ")
+            elif ch not in " \t":
+                text.append(ch)
+    if text:
+        parts.append(OutputPart("".join(text), None, None, None))
+    return tuple(parts)
+
+
+def _load_grammar() -> str:
+    return resources.files(__package__).joinpath("block.lark").read_text(encoding="utf-8")
+
+
+def make_parser() -> tuple[Lark, _Builder]:
+    """A fresh LALR parser that builds nodes as it parses, and its node builder."""
+    builder = _Builder()
+    lark = Lark(
+        _load_grammar(),
+        parser="lalr",
+        lexer="contextual",
+        transformer=builder,
+        maybe_placeholders=False,
+    )
+    return lark, builder

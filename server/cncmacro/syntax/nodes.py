@@ -1,0 +1,297 @@
+"""Typed syntax tree of one block (one line) of a macro program.
+
+Every node carries ``start`` and ``end``: 0-based columns (code points, end exclusive) in the
+line's own text. The line number is not stored in the node: blocks are cached by their text and
+shared between lines and documents, so the line is the block's index in its ``Program``.
+Nodes are plain slotted dataclasses; once built they are never mutated, because the cache shares
+them. Comparison is structural, which the tests use to prove that the fast path and the lark
+grammar build the same tree.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Union
+
+# ---------------------------------------------------------------- expressions
+
+
+@dataclass(slots=True)
+class Number:
+    """A numeric literal as written: ``12``, ``-3.5``, ``.5``. ``text`` keeps leading zeros,
+    which matter for ``M98 P00020040`` (count and program in one number)."""
+
+    value: float
+    text: str
+    start: int
+    end: int
+
+    @property
+    def has_point(self) -> bool:
+        return "." in self.text
+
+
+@dataclass(slots=True)
+class Var:
+    """``#n`` with a literal number."""
+
+    number: int
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class IndirectVar:
+    """``#[expr]``: the variable whose number is the rounded value of ``index``."""
+
+    index: Expr
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class Unary:
+    """``-x`` or ``+x``."""
+
+    op: str
+    operand: Expr
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class Binary:
+    """``a op b`` with op one of ``+ - * / AND OR XOR MOD`` (upper case)."""
+
+    op: str
+    left: Expr
+    right: Expr
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class Relation:
+    """``a op b`` with op normalised to ``EQ NE GT GE LT LE``; ``spelling`` is the text as
+    written (``GT`` or ``>``), so the C-style forms of gsk980tdi can be told apart."""
+
+    op: str
+    spelling: str
+    left: Expr
+    right: Expr
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class Bracket:
+    """``[ inner ]``: kept as a node because bracket depth is a rule of the language."""
+
+    inner: Expr
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class Call:
+    """A function: ``SIN[x]`` has one argument, ``ATAN[a]/[b]`` two. ``name`` is upper case."""
+
+    name: str
+    args: tuple[Expr, ...]
+    start: int
+    end: int
+
+
+Expr = Union[Number, Var, IndirectVar, Unary, Binary, Relation, Bracket, Call]
+Variable = Union[Var, IndirectVar]
+
+# ---------------------------------------------------------------- words and statements
+
+
+@dataclass(slots=True)
+class Word:
+    """An address and its value: ``X-#1``, ``G65``, ``P[CUT]``. ``letter`` is upper case.
+    ``value`` is None only when ``name`` holds a bracketed program name (``P[CUT]``)."""
+
+    letter: str
+    value: Expr | None
+    name: str | None
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class Assign:
+    """``#n = expr``. ``message`` is the text of the comment right after it on the block,
+    which ``#3000=n(text)`` and ``#3006=n(text)`` show."""
+
+    target: Variable
+    value: Expr
+    message: str | None
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class If:
+    """``IF [cond] GOTO n`` (``goto`` set) or ``IF [cond] THEN statement`` (``then`` set)."""
+
+    condition: Bracket
+    goto: Expr | None
+    then: Statement | None
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class While:
+    """``WHILE [cond] DO m``; ``loop`` is the literal m."""
+
+    condition: Bracket
+    loop: Number
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class Do:
+    """``DO m`` without WHILE: an endless loop up to ``END m``."""
+
+    loop: Number
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class End:
+    """``END m``."""
+
+    loop: Number
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class Goto:
+    """``GOTO n``, ``GOTO #i`` or ``GOTO [expr]``."""
+
+    target: Expr
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class OutputPart:
+    """One piece of a DPRNT/BPRNT argument: literal ``text`` (``*`` already turned into a
+    space) or a variable with its format ``[ab]`` (``digits`` before and ``decimals`` after
+    the point; None when not given)."""
+
+    text: str | None
+    variable: Variable | None
+    digits: int | None
+    decimals: int | None
+
+
+@dataclass(slots=True)
+class Output:
+    """External output: ``POPEN``, ``PCLOS``, ``DPRNT[...]`` or ``BPRNT[...]``."""
+
+    command: str
+    parts: tuple[OutputPart, ...]
+    start: int
+    end: int
+
+
+Statement = Union[Assign, If, While, Do, End, Goto, Output]
+
+# ---------------------------------------------------------------- the block
+
+
+@dataclass(slots=True)
+class Comment:
+    """``( text )``. ``closed`` is False when the line ended before ``)``."""
+
+    text: str
+    closed: bool
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class Problem:
+    """A syntax problem on one block, ready to become a diagnostic."""
+
+    message: str
+    start: int
+    end: int
+    severity: str = "error"
+
+
+@dataclass(slots=True)
+class Block:
+    """One line of a program.
+
+    ``label`` is the sequence number of a leading ``N`` word; ``program`` the number of a
+    leading ``O`` word (the line then starts a program, ``title`` being its first comment).
+    ``words`` holds the NC words other than those two, in order; ``statements`` the macro
+    statements. ``block_delete`` is None, 0 for ``/`` or 1–9 for ``/n``. ``tape`` marks a
+    ``%`` line. ``problems`` are the syntax errors and warnings of the line; a block with an
+    error has no words or statements.
+    """
+
+    label: int | None = None
+    label_span: tuple[int, int] | None = None
+    program: int | None = None
+    program_span: tuple[int, int] | None = None
+    title: str | None = None
+    block_delete: int | None = None
+    tape: bool = False
+    words: tuple[Word, ...] = ()
+    statements: tuple[Statement, ...] = ()
+    comments: tuple[Comment, ...] = ()
+    problems: tuple[Problem, ...] = ()
+    structural: bool = False  # has a label, O header, % mark or loop marker: see program.py
+
+    @property
+    def has_error(self) -> bool:
+        return any(p.severity == "error" for p in self.problems)
+
+    @property
+    def is_empty(self) -> bool:
+        """True for a line that does nothing: blank, comments only, or only ``;``."""
+        return (
+            self.label is None
+            and self.program is None
+            and not self.tape
+            and not self.words
+            and not self.statements
+            and not self.has_error
+        )
+
+    def word(self, letter: str) -> Word | None:
+        """The first NC word with this address letter, if any."""
+        for w in self.words:
+            if w.letter == letter:
+                return w
+        return None
+
+    def structure_key(self) -> tuple[object, ...] | None:
+        """What this block adds to the cross-line structure (None for most blocks): two
+        blocks with equal keys leave a ``Program`` unchanged when one replaces the other."""
+        if not self.structural:
+            return None
+        marker = self.loop_marker()
+        loop = (marker[0], marker[1].value) if marker else None
+        return (self.label, self.program, self.title, self.tape, loop)
+
+    def loop_marker(self) -> tuple[str, Number] | None:
+        """``("DO", m)`` for a WHILE..DO or DO block, ``("END", m)`` for END, else None."""
+        for s in self.statements:
+            if isinstance(s, (While, Do)):
+                return ("DO", s.loop)
+            if isinstance(s, End):
+                return ("END", s.loop)
+        return None
+
+
+EMPTY_BLOCK = Block()

@@ -1,0 +1,196 @@
+"""The cross-line structure of a document: O programs, N labels and DO/END pairs.
+
+A ``Program`` is built from the blocks of a whole file by one linear pass that visits only
+the blocks marked ``structural`` (a label, an O header, a ``%`` mark, a WHILE/DO/END), so that
+rebuilding it after an edit costs time in proportion to those blocks, not to the file.
+The pass finds facts; judging them (a duplicate label, a DO without END) is the analysis
+layer's job.
+"""
+
+from __future__ import annotations
+
+from bisect import bisect_right
+from dataclasses import dataclass
+from itertools import compress
+
+from .nodes import Block
+
+
+@dataclass(slots=True)
+class LoopPair:
+    """A ``WHILE..DO m`` or ``DO m`` line and the ``END m`` line that closes it."""
+
+    number: int
+    do_line: int
+    end_line: int
+
+
+@dataclass(slots=True)
+class LoopProblem:
+    """A loop marker that does not pair: ``kind`` is ``do-without-end``, ``end-without-do``
+    or ``crossing`` (an END that closes a DO while an inner loop is still open, whose DO is
+    ``other_line``)."""
+
+    kind: str
+    line: int
+    number: int
+    other_line: int | None = None
+
+
+@dataclass(slots=True)
+class ProgramUnit:
+    """One O program in a file, from its header line up to (not including) ``end``.
+
+    A file that does not start with an O header has a first unit with ``number`` None
+    covering the lines before the first header (GSK programs are often named by their
+    file).
+    """
+
+    number: int | None
+    title: str | None
+    start: int
+    end: int
+
+    def __contains__(self, line: int) -> bool:
+        return self.start <= line < self.end
+
+
+@dataclass(slots=True)
+class Program:
+    """A parsed file: its blocks (one per line) and what connects them."""
+
+    blocks: list[Block]
+    units: list[ProgramUnit]
+    labels: dict[int, list[int]]
+    loops: list[LoopPair]
+    loop_problems: list[LoopProblem]
+    tape_marks: list[int]
+
+    def shift(self, at: int, delta: int) -> None:
+        """Move every line number at or after ``at`` by ``delta``: lines without structure
+        were inserted (or removed) just before ``at``. Costs a look at each label, not a
+        pass over the blocks."""
+        if delta == 0:
+            return
+        for lines in self.labels.values():
+            if lines[-1] >= at:
+                for j, x in enumerate(lines):
+                    if x >= at:
+                        lines[j] = x + delta
+        for u in self.units:
+            if u.start >= at:
+                u.start += delta
+            if u.end >= at:
+                u.end += delta
+        for p in self.loops:
+            if p.do_line >= at:
+                p.do_line += delta
+            if p.end_line >= at:
+                p.end_line += delta
+        for q in self.loop_problems:
+            if q.line >= at:
+                q.line += delta
+            if q.other_line is not None and q.other_line >= at:
+                q.other_line += delta
+        self.tape_marks = [x + delta if x >= at else x for x in self.tape_marks]
+
+    def label_lines(self, label: int, unit: ProgramUnit | None = None) -> list[int]:
+        """The lines labelled N``label``, in order (duplicates kept), optionally only those
+        inside ``unit``."""
+        lines = self.labels.get(label, [])
+        if unit is None:
+            return list(lines)
+        return [i for i in lines if unit.start <= i < unit.end]
+
+    def unit_at(self, line: int) -> ProgramUnit:
+        """The O program that holds ``line``."""
+        starts = [u.start for u in self.units]
+        return self.units[max(0, bisect_right(starts, line) - 1)]
+
+    def unit_numbered(self, number: int) -> ProgramUnit | None:
+        """The unit whose header is ``O<number>``, if the file has one."""
+        for u in self.units:
+            if u.number == number:
+                return u
+        return None
+
+    def loop_at(self, do_line: int) -> LoopPair | None:
+        for p in self.loops:
+            if p.do_line == do_line:
+                return p
+        return None
+
+
+def build_program(blocks: list[Block], structural: list[bool] | None = None) -> Program:
+    """Find the units, labels and loop pairs of ``blocks``.
+
+    ``structural`` may be given as the list of each block's ``structural`` flag, kept up to
+    date by the caller, so that the blocks without structure are never visited here.
+    """
+    if structural is None:
+        structural = [b.structural for b in blocks]
+    n = len(blocks)
+    units: list[ProgramUnit] = [ProgramUnit(None, None, 0, n)]
+    labels: dict[int, list[int]] = {}
+    loops: list[LoopPair] = []
+    problems: list[LoopProblem] = []
+    tape_marks: list[int] = []
+    open_loops: list[tuple[int, int]] = []  # (number, DO line)
+    unit = units[0]
+
+    for i in compress(range(n), structural):
+        b = blocks[i]
+        lab = b.label
+        if lab is not None:
+            lines = labels.get(lab)
+            if lines is None:
+                labels[lab] = [i]
+            else:
+                lines.append(i)
+        if b.program is None and not b.statements and not b.tape:
+            continue
+        if b.program is not None:
+            _close_unit(open_loops, problems)
+            if unit.start == i:  # the header is the file's first line: replace the implicit unit
+                units.pop()
+            else:
+                unit.end = i
+            unit = ProgramUnit(b.program, b.title, i, n)
+            units.append(unit)
+        if b.tape:
+            tape_marks.append(i)
+        marker = b.loop_marker() if b.statements else None
+        if marker is not None:
+            kind, num = marker
+            number = int(num.value) if num.value == int(num.value) else -1
+            if kind == "DO":
+                open_loops.append((number, i))
+            else:
+                _close_loop(number, i, open_loops, loops, problems)
+    _close_unit(open_loops, problems)
+    return Program(blocks, units, labels, loops, problems, tape_marks)
+
+
+def _close_loop(
+    number: int,
+    line: int,
+    open_loops: list[tuple[int, int]],
+    loops: list[LoopPair],
+    problems: list[LoopProblem],
+) -> None:
+    if open_loops and open_loops[-1][0] == number:
+        loops.append(LoopPair(number, open_loops.pop()[1], line))
+        return
+    for k in range(len(open_loops) - 1, -1, -1):
+        if open_loops[k][0] == number:
+            inner = open_loops[-1]
+            problems.append(LoopProblem("crossing", line, number, inner[1]))
+            loops.append(LoopPair(number, open_loops.pop(k)[1], line))
+            return
+    problems.append(LoopProblem("end-without-do", line, number))
+
+
+def _close_unit(open_loops: list[tuple[int, int]], problems: list[LoopProblem]) -> None:
+    for number, line in open_loops:
+        problems.append(LoopProblem("do-without-end", line, number))
+    open_loops.clear()

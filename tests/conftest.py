@@ -1,0 +1,28 @@
+"""Shared helpers for the tests: parse a line and look at its block."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "benchmarks"))  # the CAM program generator
+
+from cncmacro.syntax import Block, parse_block  # noqa: E402
+from cncmacro.syntax.nodes import Problem  # noqa: E402
+
+
+def block(text: str) -> Block:
+    """The block of one line; it must parse without an error."""
+    b = parse_block(text)
+    errors = [p for p in b.problems if p.severity == "error"]
+    assert not errors, f"{text!r}: {errors}"
+    return b
+
+
+def error(text: str) -> Problem:
+    """The (first) syntax error of a line that must not parse."""
+    b = parse_block(text)
+    errors = [p for p in b.problems if p.severity == "error"]
+    assert errors, f"{text!r} parsed without error: {b}"
+    return errors[0]

@@ -1,0 +1,125 @@
+"""Hypothesis strategies that write program lines: valid ones, nearly valid ones and noise."""
+
+from __future__ import annotations
+
+from hypothesis import strategies as st
+
+SPACE = st.sampled_from(["", "", " ", "  ", "\t"])
+FUNCS = ["SIN", "COS", "TAN", "ASIN", "ACOS", "SQRT", "ABS", "LN", "EXP", "ROUND", "FIX", "FUP", "BIN", "BCD"]
+RELOPS = ["EQ", "NE", "GT", "GE", "LT", "LE", "==", "!=", "<", ">", "<=", ">="]
+BINOPS = ["+", "-", "*", "/", "AND", "OR", "XOR", "MOD"]
+
+
+@st.composite
+def _case(draw, word: str) -> str:
+    return word.lower() if draw(st.integers(0, 5)) == 0 else word
+
+
+@st.composite
+def number(draw) -> str:
+    whole = draw(st.integers(0, 99999))
+    form = draw(st.integers(0, 3))
+    if form == 0:
+        return str(whole)
+    if form == 1:
+        return f"{whole}."
+    if form == 2:
+        return f".{draw(st.integers(0, 999))}"
+    return f"{whole}.{draw(st.integers(0, 9999))}"
+
+
+def _join(draw, parts: list[str]) -> str:
+    out = ""
+    for p in parts:
+        out += draw(SPACE) + p
+    return out
+
+
+def expr(max_leaves: int = 8) -> st.SearchStrategy[str]:
+    atoms = st.one_of(number(), st.integers(0, 9999).map(lambda n: f"#{n}"))
+
+    def extend(inner: st.SearchStrategy[str]) -> st.SearchStrategy[str]:
+        return st.one_of(
+            st.tuples(inner, st.sampled_from(BINOPS), inner, SPACE, SPACE).map(lambda t: f"{t[0]}{t[3]}{t[1]}{t[4]}{t[2]}"),
+            inner.map(lambda e: f"[{e}]"),
+            inner.map(lambda e: f"-{e}"),
+            inner.map(lambda e: f"#[{e}]"),
+            st.tuples(st.sampled_from(FUNCS), inner).map(lambda t: f"{t[0]}[{t[1]}]"),
+            st.tuples(inner, inner).map(lambda t: f"ATAN[{t[0]}]/[{t[1]}]"),
+            st.tuples(inner, st.sampled_from(RELOPS), inner).map(lambda t: f"[{t[0]} {t[1]} {t[2]}]"),
+        )
+
+    return st.recursive(atoms, extend, max_leaves=max_leaves)
+
+
+@st.composite
+def condition(draw) -> str:
+    left, right = draw(expr(4)), draw(expr(4))
+    rel = draw(st.sampled_from(RELOPS))
+    single = f"[{left}{draw(SPACE)}{rel}{draw(SPACE)}{right}]"
+    if draw(st.booleans()):
+        return single
+    other = f"[{draw(expr(3))} {draw(st.sampled_from(RELOPS))} {draw(expr(3))}]"
+    return f"[{single} {draw(st.sampled_from(['AND', 'OR', 'XOR']))} {other}]"
+
+
+@st.composite
+def word(draw) -> str:
+    letter = draw(st.sampled_from("ABCDEFGHIJKLMPQRSTUVWXYZ"))
+    kind = draw(st.integers(0, 5))
+    if kind == 0:
+        value = draw(number())
+    elif kind == 1:
+        value = draw(st.sampled_from("+-")) + draw(number())
+    elif kind == 2:
+        value = draw(st.sampled_from(["", "-"])) + f"#{draw(st.integers(0, 999))}"
+    elif kind == 3:
+        value = f"[{draw(expr(4))}]"
+    elif kind == 4:
+        value = draw(st.sampled_from(["[CUT]", "[螺纹切削]", "[O1004]", "[#100]", "[T123]"]))
+    else:
+        value = draw(number())
+    return letter + draw(SPACE) + value
+
+
+@st.composite
+def statement(draw) -> str:
+    kind = draw(st.integers(0, 6))
+    var = draw(st.sampled_from(["#1", "#100", "#[#2+1]", "#3000", "#9100"]))
+    if kind == 0:
+        return _join(draw, [var, "=", draw(expr())])
+    if kind == 1:
+        return _join(draw, [draw(_case("IF")), draw(condition()), draw(_case("GOTO")), draw(st.sampled_from(["10", "#5", "[#1+2]"]))])
+    if kind == 2:
+        return _join(draw, [draw(_case("IF")), draw(condition()), draw(_case("THEN")), var, "=", draw(expr(4))])
+    if kind == 3:
+        return _join(draw, [draw(_case("WHILE")), draw(condition()), draw(_case("DO")), str(draw(st.integers(0, 4)))])
+    if kind == 4:
+        return _join(draw, [draw(st.sampled_from(["DO", "END"])), str(draw(st.integers(1, 3)))])
+    if kind == 5:
+        return _join(draw, [draw(_case("GOTO")), draw(st.sampled_from(["10", "#1", "[#2*10]"]))])
+    return draw(st.sampled_from(["POPEN", "PCLOS", "DPRNT[X#2[53]**Y#5[53]]"]))
+
+
+@st.composite
+def line(draw) -> str:
+    """A block, usually valid, sometimes with a label, a comment, a ';' or noise."""
+    parts: list[str] = []
+    if draw(st.integers(0, 9)) == 0:
+        parts.append(draw(st.sampled_from(["/", "/2"])))
+    if draw(st.integers(0, 4)) == 0:
+        parts.append(f"N{draw(st.integers(1, 99999))}")
+    shape = draw(st.integers(0, 3))
+    if shape == 0:
+        parts += draw(st.lists(word(), min_size=1, max_size=6))
+    elif shape == 1:
+        parts.append(draw(statement()))
+    elif shape == 2:
+        parts += draw(st.lists(word(), min_size=1, max_size=3))
+        parts.append(draw(statement()))
+    else:
+        parts.append(draw(st.text(alphabet="GXYZN#[]+-*/=0123456789. ANDORIFGOTOWHILE;()", max_size=30)))
+    text = "".join(draw(SPACE) + p for p in parts)
+    if draw(st.integers(0, 5)) == 0:
+        text += draw(st.sampled_from([";", " (COMMENT)", "(注释)", ";(X)", " (OPEN"]))
+    return text

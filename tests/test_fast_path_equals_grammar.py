@@ -1,0 +1,66 @@
+"""The hand-written fast path builds exactly the lark grammar's tree, or leaves the line to it.
+
+SEMANTICS.md §1–§7 are defined by the grammar in ``block.lark``; the fast path only exists
+for speed, so on every line it accepts it must agree with the grammar to the last column.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from camgen import cam_program
+from hypothesis import HealthCheck, given, settings
+from strategies import line
+
+from cncmacro.syntax.assemble import assemble
+from cncmacro.syntax.block_parser import parse_block, parse_with_grammar
+from cncmacro.syntax.fastpath import plain_words, read_items
+from cncmacro.syntax.lines import prepare
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def check_line(text: str) -> bool:
+    """Assert the contract for one line; True when the fast path accepted it."""
+    prep = prepare(text)
+    if not prep.code.strip():  # nothing for either reader: comments, ';', '%' or blank
+        assert parse_block(text).problems == prep.problems
+        return False
+    reference = parse_with_grammar(prep.code, prep)
+    items = plain_words(prep.code)
+    if items is None:
+        items = read_items(prep.code)
+    if items is not None:
+        assert not reference.has_error, (text, reference.problems)
+        assert assemble(items, prepare(text)) == reference, text
+    assert parse_block(text) == reference, text
+    return items is not None
+
+
+@settings(max_examples=1500, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(line())
+def test_generated_lines(text):
+    check_line(text)
+
+
+def real_lines() -> list[str]:
+    lines = cam_program(3000, seed=7).splitlines()
+    for path in sorted((ROOT / "examples").rglob("*")):
+        if path.is_file() and path.suffix.lower() in (".nc", ".cnc"):
+            lines += path.read_text(encoding="utf-8").splitlines()
+    return lines
+
+
+def test_real_lines():
+    lines = real_lines()
+    accepted = sum(check_line(t) for t in lines)
+    assert accepted > 0.9 * len(lines)  # the fast path does take the common forms
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["G65 P[CUT] L2", "DPRNT[X#2[53]]", "#1=[1 LT 2]", "IF[#1]GOTO1", "X[#1 GT 2]", "#1=SIN[#2 GT 1]", "x5y.5"],
+)
+def test_lines_the_fast_path_leaves_to_the_grammar(text):
+    check_line(text)

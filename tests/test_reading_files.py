@@ -1,0 +1,65 @@
+"""SEMANTICS.md §1 "Text and blocks": files in UTF-8 or GBK/GB18030, with BOM and CRLF, and
+binary files reported rather than parsed."""
+
+from __future__ import annotations
+
+import pytest
+
+from cncmacro.library.files import (
+    BinaryFileError,
+    decode_program,
+    encode_program,
+    find_program_files,
+    is_program_file,
+)
+from cncmacro.syntax.document import ParsedDocument, split_lines
+
+GSK_TEXT = "O0100 (刀具磨损补偿)\nG65 P[螺纹切削]\nM30\n"
+
+
+def test_utf8_with_bom():
+    src = decode_program(b"\xef\xbb\xbfO1 (X)\nM30\n")
+    assert src.text.startswith("O1") and src.bom and src.encoding == "utf-8"
+    assert encode_program(src) == b"\xef\xbb\xbfO1 (X)\nM30\n"
+
+
+def test_gbk_file_decodes_and_round_trips():
+    data = GSK_TEXT.encode("gbk")
+    src = decode_program(data)
+    assert src.encoding == "gb18030" and src.text == GSK_TEXT
+    assert encode_program(src) == data
+    doc = ParsedDocument(src.text)
+    assert doc.blocks[0].title == "刀具磨损补偿"
+    assert doc.blocks[1].word("P").name == "螺纹切削"
+
+
+def test_undecodable_bytes_are_kept():
+    data = b"G00 X0 (\xff\xfe\x80)\n"
+    src = decode_program(data)
+    assert encode_program(src) == data
+
+
+def test_crlf_and_lone_cr_line_breaks():
+    assert split_lines("G00\r\nG01\rG02\nG03") == ["G00", "G01", "G02", "G03"]
+    doc = ParsedDocument("N1 G00\r\nN2 G01\r\n")
+    assert doc.program.labels == {1: [0], 2: [1]}
+
+
+def test_binary_file_is_refused():
+    with pytest.raises(BinaryFileError) as e:
+        decode_program(b"\x7fELF\x02\x01\x01\x00\x00")
+    assert e.value.offset == 7
+    with pytest.raises(BinaryFileError):
+        decode_program(bytes(range(1, 32)) * 20)
+
+
+def test_text_file_is_not_binary():
+    assert decode_program(b"G00 X0\tY0\n\x1a").text.startswith("G00")
+
+
+def test_program_files_by_ending_or_o_number(tmp_path):
+    for name in ["a.NC", "b.cnc", "O1234", "c.txt", "readme", ".hidden.nc"]:
+        (tmp_path / name).write_text("M30\n")
+    assert is_program_file(tmp_path / "O1234") and not is_program_file(tmp_path / "readme")
+    names = [p.name for p in find_program_files(tmp_path)]
+    assert names == ["O1234", "a.NC", "b.cnc"]
