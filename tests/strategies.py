@@ -40,7 +40,9 @@ def expr(max_leaves: int = 8) -> st.SearchStrategy[str]:
 
     def extend(inner: st.SearchStrategy[str]) -> st.SearchStrategy[str]:
         return st.one_of(
-            st.tuples(inner, st.sampled_from(BINOPS), inner, SPACE, SPACE).map(lambda t: f"{t[0]}{t[3]}{t[1]}{t[4]}{t[2]}"),
+            st.tuples(inner, st.sampled_from(BINOPS), inner, SPACE, SPACE).map(
+                lambda t: f"{t[0]}{t[3]}{t[1]}{t[4]}{t[2]}"
+            ),
             inner.map(lambda e: f"[{e}]"),
             inner.map(lambda e: f"-{e}"),
             inner.map(lambda e: f"#[{e}]"),
@@ -89,7 +91,8 @@ def statement(draw) -> str:
     if kind == 0:
         return _join(draw, [var, "=", draw(expr())])
     if kind == 1:
-        return _join(draw, [draw(_case("IF")), draw(condition()), draw(_case("GOTO")), draw(st.sampled_from(["10", "#5", "[#1+2]"]))])
+        target = draw(st.sampled_from(["10", "#5", "[#1+2]"]))
+        return _join(draw, [draw(_case("IF")), draw(condition()), draw(_case("GOTO")), target])
     if kind == 2:
         return _join(draw, [draw(_case("IF")), draw(condition()), draw(_case("THEN")), var, "=", draw(expr(4))])
     if kind == 3:

@@ -9,14 +9,14 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from camgen import cam_program
 from hypothesis import HealthCheck, given, settings
-from strategies import line
 
+from camgen import cam_program
 from cncmacro.syntax.assemble import assemble
 from cncmacro.syntax.block_parser import parse_block, parse_with_grammar
 from cncmacro.syntax.fastpath import plain_words, read_items
 from cncmacro.syntax.lines import prepare
+from strategies import line
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -32,7 +32,6 @@ def check_line(text: str) -> bool:
     if items is None:
         items = read_items(prep.code)
     if items is not None:
-        assert not reference.has_error, (text, reference.problems)
         assert assemble(items, prepare(text)) == reference, text
     assert parse_block(text) == reference, text
     return items is not None

@@ -9,11 +9,11 @@ from __future__ import annotations
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from strategies import line
 
 from cncmacro.syntax.block_parser import BlockCache
 from cncmacro.syntax.document import ParsedDocument
 from cncmacro.syntax.program import build_program
+from strategies import line
 
 POOL = [
     "O1000 (MAIN)", "N10 G00 X0 Y0", "WHILE[#1 LT 3]DO1", "END1", "DO2", "END2", "N20 #1=#1+1",

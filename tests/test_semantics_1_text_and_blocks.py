@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import pytest
-from conftest import block, error
 
 from cncmacro.syntax import parse_block
 from cncmacro.syntax.nodes import Assign, Goto, If, While
+from conftest import block, error
 
 
 def test_trailing_semicolon_is_end_of_block():

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import pytest
-from conftest import block, error
 
 from cncmacro.syntax.nodes import Binary, Bracket, Call, IndirectVar, Number, Relation, Unary, Var
+from conftest import block, error
 
 
 def value(text: str):

@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-from conftest import block, error
-
 from cncmacro.syntax.document import ParsedDocument
 from cncmacro.syntax.nodes import Assign, Bracket, Do, End, Goto, If, Number, Var, While
+from conftest import block, error
 
 
 def test_goto_forms():

@@ -2,9 +2,8 @@
 
 from __future__ import annotations
 
-from conftest import block, error
-
 from cncmacro.syntax.nodes import Bracket, Number, Output, Unary, Var
+from conftest import block, error
 
 
 def letters(text: str) -> list[str]:

@@ -16,11 +16,14 @@ from .check import main_check
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="cncmacro",
-        description="Check CNC custom-macro programs (FANUC 0i Macro B, GSK980TDi) before they reach a machine.",
+        description="Check CNC custom-macro programs (FANUC 0i Macro B, GSK980TDi) "
+        "before they reach a machine.",
     )
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
-    check = sub.add_parser("check", help="report problems in program files", description="Report problems in program files.")
+    check = sub.add_parser(
+        "check", help="report problems in program files", description="Report problems in program files."
+    )
     check.add_argument("paths", nargs="+", metavar="PATH", help="program files, or folders to search for them")
     check.add_argument("--dialect", choices=DIALECTS, help="dialect when a file does not name one (default fanuc)")
     check.add_argument("--format", choices=("text", "json"), default="text", help="output format (default text)")

@@ -48,7 +48,8 @@ def decode_program(data: bytes, path: str = "<bytes>") -> SourceText:
     if sample:
         controls = sum(1 for b in sample if b < 32 and b not in (9, 10, 12, 13, 26))
         if controls * 10 > len(sample):
-            raise BinaryFileError(path, next(i for i, b in enumerate(sample) if b < 32 and b not in (9, 10, 12, 13, 26)))
+            first = next(i for i, b in enumerate(sample) if b < 32 and b not in (9, 10, 12, 13, 26))
+            raise BinaryFileError(path, first)
     try:
         return SourceText(data.decode("utf-8"), "utf-8")
     except UnicodeDecodeError:

@@ -86,7 +86,7 @@ def _failed(prep: Prepared, problem: Problem) -> Block:
         block_delete=prep.block_delete,
         tape=prep.tape,
         comments=prep.comments,
-        problems=prep.problems + (problem,),
+        problems=(*prep.problems, problem),
         structural=prep.tape,
     )
 

@@ -2,15 +2,16 @@
 
 The text is held as a list of lines. An edit replaces a range of lines; only the lines whose
 text is new are parsed (blocks come from a ``BlockCache`` keyed by line text), the block list
-is spliced, and the ``Program`` is rebuilt from the structural blocks alone. So a one-line edit
-costs one line's parse plus a pass over the labels and loops, whatever the file's length.
+is spliced, and the ``Program`` is patched: labels moved, units and loops re-derived from the
+few marker lines. So a one-line edit costs one line's parse and a look at the labels, never a
+pass over the blocks.
 """
 
 from __future__ import annotations
 
 from .block_parser import BlockCache, collector_paused
 from .nodes import Block
-from .program import Program, build_program
+from .program import Program, build_program, update_program
 
 _shared_cache = BlockCache()
 
@@ -52,17 +53,14 @@ class ParsedDocument:
         get = self.cache.get
         new_blocks = [get(line) for line in new_lines]
         old_blocks = self.blocks[start:end]
-        if len(new_blocks) == len(old_blocks):
-            unchanged = all(o.structure_key() == b.structure_key() for o, b in zip(old_blocks, new_blocks))
-        else:  # lines came or went: cheap only if none of them, old or new, has structure
-            unchanged = not any(b.structural for b in old_blocks) and not any(b.structural for b in new_blocks)
         self.lines[start:end] = new_lines
         self.blocks[start:end] = new_blocks
         self._structural[start:end] = [b.structural for b in new_blocks]
-        if unchanged:  # the program (which holds self.blocks) stays; later lines may move
-            self.program.shift(end, len(new_blocks) - len(old_blocks))
-        else:
-            self.program = build_program(self.blocks, self._structural)
+        if len(new_blocks) == len(old_blocks) and all(
+            o.structure_key() == b.structure_key() for o, b in zip(old_blocks, new_blocks, strict=True)
+        ):
+            return  # the program (which holds self.blocks) is unchanged
+        update_program(self.program, start, old_blocks, new_blocks)
 
     def apply_change(self, start_line: int, start_col: int, end_line: int, end_col: int, text: str) -> None:
         """Apply an editor change: the text between two positions (0-based line and column,

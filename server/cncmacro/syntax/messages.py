@@ -136,7 +136,7 @@ def _expected_text(expected: set[str]) -> str:
         expected = expected - _VALUE_START - {"FUNC", "ATAN"}
     names += _names(expected)
     if len(names) > 5:
-        names = names[:5] + ["..."]
+        names = [*names[:5], "..."]
     return "; expected " + ", ".join(names)
 
 

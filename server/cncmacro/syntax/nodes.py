@@ -11,7 +11,6 @@ grammar build the same tree.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Union
 
 # ---------------------------------------------------------------- expressions
 
@@ -102,8 +101,8 @@ class Call:
     end: int
 
 
-Expr = Union[Number, Var, IndirectVar, Unary, Binary, Relation, Bracket, Call]
-Variable = Union[Var, IndirectVar]
+Expr = Number | Var | IndirectVar | Unary | Binary | Relation | Bracket | Call
+Variable = Var | IndirectVar
 
 # ---------------------------------------------------------------- words and statements
 
@@ -202,7 +201,7 @@ class Output:
     end: int
 
 
-Statement = Union[Assign, If, While, Do, End, Goto, Output]
+Statement = Assign | If | While | Do | End | Goto | Output
 
 # ---------------------------------------------------------------- the block
 

@@ -9,7 +9,7 @@ layer's job.
 
 from __future__ import annotations
 
-from bisect import bisect_right
+from bisect import bisect_left, bisect_right, insort
 from dataclasses import dataclass
 from itertools import compress
 
@@ -65,18 +65,11 @@ class Program:
     loops: list[LoopPair]
     loop_problems: list[LoopProblem]
     tape_marks: list[int]
+    markers: list[int]  # lines with an O header, a '%' or a loop marker, in order
 
     def shift(self, at: int, delta: int) -> None:
-        """Move every line number at or after ``at`` by ``delta``: lines without structure
-        were inserted (or removed) just before ``at``. Costs a look at each label, not a
-        pass over the blocks."""
-        if delta == 0:
-            return
-        for lines in self.labels.values():
-            if lines[-1] >= at:
-                for j, x in enumerate(lines):
-                    if x >= at:
-                        lines[j] = x + delta
+        """Move the line numbers of units, loops and tape marks at or after ``at`` by
+        ``delta`` (labels and markers are moved by ``update_program``)."""
         for u in self.units:
             if u.start >= at:
                 u.start += delta
@@ -121,6 +114,10 @@ class Program:
         return None
 
 
+def _is_marker(b: Block) -> bool:
+    return b.program is not None or b.tape or (bool(b.statements) and b.loop_marker() is not None)
+
+
 def build_program(blocks: list[Block], structural: list[bool] | None = None) -> Program:
     """Find the units, labels and loop pairs of ``blocks``.
 
@@ -129,16 +126,9 @@ def build_program(blocks: list[Block], structural: list[bool] | None = None) -> 
     """
     if structural is None:
         structural = [b.structural for b in blocks]
-    n = len(blocks)
-    units: list[ProgramUnit] = [ProgramUnit(None, None, 0, n)]
     labels: dict[int, list[int]] = {}
-    loops: list[LoopPair] = []
-    problems: list[LoopProblem] = []
-    tape_marks: list[int] = []
-    open_loops: list[tuple[int, int]] = []  # (number, DO line)
-    unit = units[0]
-
-    for i in compress(range(n), structural):
+    markers: list[int] = []
+    for i in compress(range(len(blocks)), structural):
         b = blocks[i]
         lab = b.label
         if lab is not None:
@@ -147,8 +137,70 @@ def build_program(blocks: list[Block], structural: list[bool] | None = None) -> 
                 labels[lab] = [i]
             else:
                 lines.append(i)
-        if b.program is None and not b.statements and not b.tape:
-            continue
+        if b.program is not None or b.tape or b.statements:
+            if _is_marker(b):
+                markers.append(i)
+    program = Program(blocks, [], labels, [], [], [], markers)
+    _derive_from_markers(program)
+    return program
+
+
+def update_program(program: Program, start: int, old_blocks: list[Block], new_blocks: list[Block]) -> None:
+    """Patch ``program`` after ``old_blocks`` at ``start`` were replaced by ``new_blocks``
+    (``program.blocks`` already holds the new list). Costs a look at each label and each
+    marker, never a pass over the blocks; the result equals ``build_program``."""
+    end = start + len(old_blocks)
+    delta = len(new_blocks) - len(old_blocks)
+    labels = program.labels
+    for k, b in enumerate(old_blocks):
+        if b.label is not None:
+            lines = labels[b.label]
+            lines.remove(start + k)
+            if not lines:
+                del labels[b.label]
+    if delta:
+        for lines in labels.values():
+            if lines[-1] >= end:
+                for j, x in enumerate(lines):
+                    if x >= end:
+                        lines[j] = x + delta
+    for k, b in enumerate(new_blocks):
+        if b.label is not None:
+            lines = labels.get(b.label)
+            if lines is None:
+                labels[b.label] = [start + k]
+            else:
+                insort(lines, start + k)
+
+    markers = program.markers
+    lo = bisect_left(markers, start)
+    hi = bisect_left(markers, end)
+    changed = hi > lo
+    new_markers = [start + k for k, b in enumerate(new_blocks) if b.structural and _is_marker(b)]
+    markers[lo:hi] = new_markers
+    if delta:
+        for j in range(lo + len(new_markers), len(markers)):
+            markers[j] += delta
+    if changed or new_markers:
+        _derive_from_markers(program)
+    elif delta:
+        program.shift(end, delta)
+    else:
+        program.units[-1].end = len(program.blocks)
+
+
+def _derive_from_markers(program: Program) -> None:
+    """Units, loop pairs and tape marks from the marker lines alone."""
+    blocks = program.blocks
+    n = len(blocks)
+    units: list[ProgramUnit] = [ProgramUnit(None, None, 0, n)]
+    loops: list[LoopPair] = []
+    problems: list[LoopProblem] = []
+    tape_marks: list[int] = []
+    open_loops: list[tuple[int, int]] = []  # (number, DO line)
+    unit = units[0]
+    for i in program.markers:
+        b = blocks[i]
         if b.program is not None:
             _close_unit(open_loops, problems)
             if unit.start == i:  # the header is the file's first line: replace the implicit unit
@@ -168,9 +220,10 @@ def build_program(blocks: list[Block], structural: list[bool] | None = None) -> 
             else:
                 _close_loop(number, i, open_loops, loops, problems)
     _close_unit(open_loops, problems)
-    return Program(blocks, units, labels, loops, problems, tape_marks)
-
-
+    program.units = units
+    program.loops = loops
+    program.loop_problems = problems
+    program.tape_marks = tape_marks
 def _close_loop(
     number: int,
     line: int,

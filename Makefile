@@ -1,0 +1,25 @@
+# The two commands of the README. Both set up a virtual environment in .venv on first use.
+PYTHON ?= python3
+VENV := .venv
+PY := $(VENV)/bin/python
+
+.PHONY: demo test setup
+
+$(VENV)/.installed: pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+	$(PY) -m pip install --quiet -e '.[test]'
+	touch $@
+
+setup: $(VENV)/.installed
+
+# Check the bundled examples (later: run one on the simulated machine).
+demo: setup
+	$(VENV)/bin/cncmacro check examples && echo "examples: no problems found"
+	@echo "--- a program with mistakes:"
+	-$(VENV)/bin/cncmacro check tests/data/O0999_broken.nc
+
+# Every test: lint, then the Python suite.
+test: setup
+	$(VENV)/bin/ruff check server tests benchmarks
+	$(PY) -m pytest
