@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import pytest
-import seed_examples  # the catalogue of the manuals' examples
 
+import seed_examples  # the catalogue of the manuals' examples
 from cncmacro.syntax import parse_block
 from cncmacro.syntax.document import ParsedDocument
 
