@@ -104,13 +104,7 @@ def _unclosed_problem(code: str, bracket: int, at: int) -> Problem:
 
 def _open_bracket_before(code: str, pos: int) -> bool:
     """True when a '[' opened before ``pos`` is still open there."""
-    depth = 0
-    for ch in code[:pos]:
-        if ch == "[":
-            depth += 1
-        elif ch == "]" and depth:
-            depth -= 1
-    return depth > 0
+    return _unclosed_bracket(code[:pos]) is not None
 
 
 def _unclosed_bracket(code: str) -> int | None:

@@ -292,5 +292,3 @@ class Block:
                 return ("END", s.loop)
         return None
 
-
-EMPTY_BLOCK = Block()
