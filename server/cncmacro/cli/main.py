@@ -11,6 +11,7 @@ import sys
 
 from ..dialects import DIALECTS
 from .check import main_check
+from .run import add_run_parser
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -31,6 +32,7 @@ def build_parser() -> argparse.ArgumentParser:
         "--path", action="append", default=[], metavar="DIR", help="another folder where called programs are looked up"
     )
     check.set_defaults(handler=main_check)
+    add_run_parser(sub)
     return parser
 
 

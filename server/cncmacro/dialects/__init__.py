@@ -5,6 +5,8 @@ Two dialects exist: ``fanuc`` (FANUC 0i Custom Macro B, the default) and ``gsk98
 
 from __future__ import annotations
 
+from .dialect import BY_NAME, Dialect
+
 DEFAULT_DIALECT = "fanuc"
 DIALECTS = ("fanuc", "gsk980tdi")
 _ALIASES = {"fanuc": "fanuc", "fanuc0i": "fanuc", "gsk": "gsk980tdi", "gsk980tdi": "gsk980tdi", "gsk980": "gsk980tdi"}
@@ -15,3 +17,11 @@ def normalise_dialect(name: str | None) -> str | None:
     if not name:
         return None
     return _ALIASES.get(name.strip().lower().replace(" ", ""))
+
+
+def get_dialect(name: str | None = None) -> Dialect:
+    """The ``Dialect`` for a name or alias (the default for None); ``ValueError`` if unknown."""
+    canonical = normalise_dialect(name) if name else DEFAULT_DIALECT
+    if canonical is None:
+        raise ValueError(f"unknown dialect {name!r}; choose one of {', '.join(DIALECTS)}")
+    return BY_NAME[canonical]

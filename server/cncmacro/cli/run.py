@@ -1,0 +1,195 @@
+"""``cncmacro run``: run a program on the simulated machine and show what it did.
+
+The text output is for a machinist: the moves, anything the program printed or stopped
+with, the alarm and where it came from, and the final variables. ``--json`` prints DESIGN.md's
+object. Exit status: 0 when the program completed, 1 on an alarm, 3 when the block budget
+ran out (a likely endless loop), 2 on bad usage or an unreadable file or machine file.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+from typing import Any, TextIO
+
+from ..dialects import get_dialect
+from ..library.dialect_choice import dialect_from_text
+from ..library.files import BinaryFileError, read_program
+from ..library.machine_file import (
+    PERSISTENT_FILE_NAME,
+    MachineFileError,
+    MachineSettings,
+    find_machine_file,
+    load_machine_file,
+    parse_preset,
+)
+from ..library.programs import ProgramLibrary
+from ..machine import Machine, RunResult
+from ..machine.machine import ALARM, LIMIT, PAUSED
+from ..machine.numbers import format_plain
+from ..machine.persistence import PersistentFileError, load_persistent, save_persistent
+
+MAX_TEXT_MOVES = 1000
+MODE_NAMES = {0.0: "G00", 1.0: "G01", 2.0: "G02", 3.0: "G03", 31.0: "G31"}
+
+
+def add_run_parser(sub: Any) -> None:
+    run = sub.add_parser(
+        "run",
+        help="run a program on the simulated machine",
+        description="Run a program on the simulated machine: the moves it makes, its alarms and its final variables.",
+    )
+    run.add_argument("file", metavar="FILE", help="the program to run")
+    run.add_argument(
+        "--dialect", choices=("fanuc", "gsk980tdi"), help="dialect when neither the file nor the machine file names one"
+    )
+    run.add_argument(
+        "--path", action="append", default=[], metavar="DIR", help="another folder where called programs are looked up"
+    )
+    run.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="N=VALUE",
+        help="preset a variable, e.g. --set 100=5 or --set 2001=0.5",
+    )
+    run.add_argument("--machine", metavar="FILE", help="machine settings (default: the nearest .cncmacro.toml)")
+    run.add_argument("--max-blocks", type=int, metavar="N", help="stop after N blocks (default 1000000)")
+    run.add_argument("--json", action="store_true", help="print the result as JSON")
+    run.add_argument(
+        "--no-save", action="store_true", help="do not write #500-#999 back to the persistent-variable file"
+    )
+    run.set_defaults(handler=main_run)
+
+
+def main_run(args: argparse.Namespace, out: TextIO = sys.stdout, err: TextIO = sys.stderr) -> int:
+    path = Path(args.file)
+    try:
+        source = read_program(path)
+    except (OSError, BinaryFileError) as e:
+        print(f"cncmacro run: {e}", file=err)
+        return 2
+    try:
+        settings = _settings(args, path)
+        presets = dict(parse_preset(s) for s in args.set)
+    except (MachineFileError, ValueError) as e:
+        print(f"cncmacro run: {e}", file=err)
+        return 2
+    if args.max_blocks is not None and args.max_blocks < 1:
+        print("cncmacro run: --max-blocks must be at least 1", file=err)
+        return 2
+    lines = source.text.splitlines()[:5]
+    dialect = get_dialect(dialect_from_text(lines) or settings.dialect or args.dialect)
+    library = ProgramLibrary([Path(p) for p in args.path])
+    machine = Machine(dialect, settings, library)
+    persistent = settings.persistent_path() or (path.parent / PERSISTENT_FILE_NAME)
+    try:
+        machine.load_persistent(load_persistent(persistent))
+        machine.apply_presets(presets)
+    except (PersistentFileError, ValueError) as e:
+        print(f"cncmacro run: {e}", file=err)
+        return 2
+    machine.start_file(str(path), source.text)
+    budget = args.max_blocks if args.max_blocks is not None else settings.max_blocks
+    while True:
+        status = machine.run(max(1, budget - machine.blocks))
+        if status != PAUSED:
+            break
+        machine.resume()  # M00 and #3006 pause a machine; a simulation goes on
+    if not args.no_save:
+        try:
+            save_persistent(persistent, machine.persistent_values())
+        except OSError as e:
+            print(f"cncmacro run: could not save the persistent variables: {e}", file=err)
+    result = machine.result()
+    if args.json:
+        json.dump(result_json(result, dialect.axes), out, ensure_ascii=False, indent=1)
+        out.write("\n")
+    else:
+        write_text(result, machine, out)
+    return {ALARM: 1, LIMIT: 3}.get(result.status, 0)
+
+
+def _settings(args: argparse.Namespace, path: Path) -> MachineSettings:
+    if args.machine:
+        return load_machine_file(args.machine)
+    found = find_machine_file(path)
+    return load_machine_file(found) if found is not None else MachineSettings()
+
+
+def result_json(result: RunResult, axes: tuple[str, ...]) -> dict[str, Any]:
+    alarm = None
+    if result.alarm is not None:
+        a = result.alarm
+        alarm = {
+            "number": a.number,
+            "message": a.message,
+            "file": a.file,
+            "line": a.line + 1,
+            "chain": [{"program": c.program, "file": c.file, "line": c.line + 1, "how": c.how} for c in a.chain],
+        }
+    return {
+        "status": result.status,
+        "alarm": alarm,
+        "blocks": result.blocks,
+        "variables": {str(k): v for k, v in result.variables.items()},
+        "moves": [
+            {
+                "file": mv.file,
+                "line": mv.line + 1,
+                "mode": MODE_NAMES.get(mv.mode, f"G{mv.mode:g}"),
+                "from": dict(zip(axes, mv.start, strict=True)),
+                "to": dict(zip(axes, mv.end, strict=True)),
+                "feed": mv.feed,
+            }
+            for mv in result.moves
+        ],
+        "output": result.output,
+        "messages": [n.message for n in result.notes if n.kind in ("message", "call")],
+    }
+
+
+def write_text(result: RunResult, machine: Machine, out: TextIO) -> None:
+    axes = machine.dialect.axes
+    moved = [i for i in range(len(axes)) if any(mv.start[i] != mv.end[i] or mv.end[i] for mv in result.moves)]
+    if result.moves:
+        print(f"moves ({len(result.moves)}):", file=out)
+        shown = result.moves if len(result.moves) <= MAX_TEXT_MOVES else result.moves[: MAX_TEXT_MOVES // 2]
+        for mv in shown:
+            out.write(_move_line(mv, axes, moved))
+        if len(shown) < len(result.moves):
+            rest = result.moves[-MAX_TEXT_MOVES // 2 :]
+            print(f"  ... {len(result.moves) - len(shown) - len(rest)} more moves ...", file=out)
+            for mv in rest:
+                out.write(_move_line(mv, axes, moved))
+    for note in result.notes:
+        where = f"{Path(note.file).name}:{note.line + 1}"
+        if note.kind == "output":
+            print(f"DPRNT  {note.message}", file=out)
+        elif note.kind == "message":
+            print(f"stop at {where}: {note.message}", file=out)
+        elif note.kind == "call":
+            print(f"note at {where}: {note.message}", file=out)
+    if result.alarm is not None:
+        a = result.alarm
+        print(f"ALARM {a.number}: {a.message}", file=out)
+        print(f"  at {a.file}:{a.line + 1}", file=out)
+        for site in reversed(a.chain[:-1]):
+            print(f"  called from {site.program} ({site.how}) at {site.file}:{site.line + 1}", file=out)
+    elif result.status == LIMIT:
+        print(f"stopped after {result.blocks} blocks: the block budget ran out (an endless loop?)", file=out)
+    print(f"status: {result.status} after {result.blocks} blocks", file=out)
+    if result.variables:
+        print("variables:", file=out)
+        for n, v in result.variables.items():
+            print(f"  #{n} = {format_plain(v)}", file=out)
+
+
+def _move_line(mv: Any, axes: tuple[str, ...], moved: list[int]) -> str:
+    mode = MODE_NAMES.get(mv.mode, f"G{mv.mode:g}")
+    start = " ".join(f"{axes[i]}{mv.start[i]:.3f}" for i in moved)
+    end = " ".join(f"{axes[i]}{mv.end[i]:.3f}" for i in moved)
+    feed = f"  F{format_plain(mv.feed)}" if mv.mode not in (0.0,) and mv.feed else ""
+    return f"  {Path(mv.file).name}:{mv.line + 1:<5} {mode:<4} {start} -> {end}{feed}\n"

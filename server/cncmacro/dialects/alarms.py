@@ -1,0 +1,61 @@
+"""Alarm numbers and their texts, in English and Chinese (SEMANTICS.md §6).
+
+The numbers are FANUC 0i's where the manuals give no other (both dialects share them); the
+GSK-only numbers (291, 293) come from seeds 001 and 002. A macro alarm raised by ``#3000``
+(3000+n on fanuc, 5900+n on gsk980tdi) or ``G65 H99`` carries the program's own text instead.
+"""
+
+from __future__ import annotations
+
+from .tables import AlarmDoc
+
+PROGRAM_NOT_FOUND = 76
+SUBPROGRAM_NESTING = 77
+OVERFLOW = 111
+DIVISION_BY_ZERO = 112
+FORMAT = 114
+VARIABLE_NUMBER = 115
+WRITE_PROTECTED = 116
+BRACKET_NESTING = 118
+ARGUMENT_RANGE = 119
+MACRO_NESTING = 122
+MISSING_END = 124
+STATEMENT_FORMAT = 125
+LOOP_NUMBER = 126
+NC_AND_MACRO = 127
+SEQUENCE_NUMBER = 128
+G_ARGUMENT = 129
+P_VALUE_RANGE = 291
+COUNT_TWICE = 293
+
+ALARMS: dict[int, AlarmDoc] = {
+    a.number: a
+    for a in (
+        AlarmDoc(PROGRAM_NOT_FOUND, "program not found", "未找到程序"),
+        AlarmDoc(SUBPROGRAM_NESTING, "subprogram nesting too deep", "子程序嵌套过深"),
+        AlarmDoc(OVERFLOW, "calculated value out of range", "运算结果超出范围"),
+        AlarmDoc(DIVISION_BY_ZERO, "division by zero", "除数为零"),
+        AlarmDoc(FORMAT, "illegal expression format", "表达式格式错误"),
+        AlarmDoc(VARIABLE_NUMBER, "variable number out of range", "变量号超出范围"),
+        AlarmDoc(WRITE_PROTECTED, "write-protected variable", "变量禁止写入"),
+        AlarmDoc(BRACKET_NESTING, "brackets nested more than 5 deep", "括号嵌套超过5层"),
+        AlarmDoc(ARGUMENT_RANGE, "argument out of range", "自变量超出范围"),
+        AlarmDoc(MACRO_NESTING, "macro call nesting too deep", "宏程序调用嵌套过深"),
+        AlarmDoc(MISSING_END, "missing END statement", "缺少END语句"),
+        AlarmDoc(STATEMENT_FORMAT, "illegal macro statement format", "宏语句格式错误"),
+        AlarmDoc(LOOP_NUMBER, "illegal loop number", "循环号错误"),
+        AlarmDoc(NC_AND_MACRO, "NC word and macro statement in one block", "NC代码与宏语句在同一程序段"),
+        AlarmDoc(SEQUENCE_NUMBER, "sequence number not found", "未找到顺序号"),
+        AlarmDoc(G_ARGUMENT, "illegal address in the argument list", "自变量中使用了非法地址"),
+        AlarmDoc(P_VALUE_RANGE, "P value out of range", "P值超出范围"),
+        AlarmDoc(COUNT_TWICE, "repeat count given in both P and L", "P和L同时指定了调用次数"),
+    )
+}
+
+
+def alarm_text(number: int, locale: str = "en") -> str:
+    """The standard text of an alarm number, or a generic one."""
+    doc = ALARMS.get(number)
+    if doc is None:
+        return "alarm" if locale == "en" else "报警"
+    return doc.zh if locale.lower().startswith("zh") else doc.en

@@ -1,0 +1,431 @@
+"""GSK980TDi data: the system variables, G codes and M codes of the GSK980TDi lathe control.
+
+``SYSTEM_VARIABLES`` follows the system-variable tables of the GSK980TDi manual §3.28.1 (seed 000):
+interface signals, tool offsets 1-32 (X, Z, Y wear and geometry, nose radius, imaginary tool nose
+direction), parts counters, the X/Z work coordinate shift, the macro alarm #3000 (alarm
+5900 + value), cutting timers, system date and time, modal information #4001-#4120, positions for
+five axes (X, Y, Z, 4th, 5th), manual pulse interrupt amounts and work zero offsets. ``G_CODES``
+and ``M_CODES`` describe the lathe's codes; a code's ``group`` is its name in ``MODAL_GROUPS``, or
+empty for a one-shot code. On this lathe G98/G99 are feed per minute/per revolution and
+G90/G92/G94 are single turning, thread and facing cycles in the motion group.
+"""
+
+from __future__ import annotations
+
+import re
+
+from .tables import CodeDoc, SystemVariable
+
+# ---------------------------------------------------------------------------------------------
+# 1) interface signals: readable; the CNC acts on G and F signals only
+
+
+def _bit_rows(first: int, letter: str, en_kind: str, zh_kind: str) -> tuple[SystemVariable, ...]:
+    return tuple(
+        SystemVariable(
+            first + bit,
+            first + bit,
+            "r",
+            "signals",
+            f"{en_kind} signal {letter}{54 + bit // 8}.{bit % 8}: its state, 0 or 1",
+            f"{zh_kind}信号{letter}{54 + bit // 8}.{bit % 8}的状态（0或1）",
+        )
+        for bit in range(16)
+    )
+
+
+def _byte_pair_row(number: int, letter: str, low: int, en_kind: str, zh_kind: str) -> SystemVariable:
+    return SystemVariable(
+        number,
+        number,
+        "r",
+        "signals",
+        f"{en_kind} signals {letter}{low} and {letter}{low + 1}: the state of both bytes read at once as one number",
+        f"{zh_kind}信号{letter}{low}、{letter}{low + 1}两字节的状态，作为一个数一次读出",
+    )
+
+
+_SIGNALS: tuple[SystemVariable, ...] = (
+    *_bit_rows(1000, "G", "PLC-to-CNC (G)", "PLC→CNC（G）"),
+    _byte_pair_row(1032, "G", 54, "PLC-to-CNC (G)", "PLC→CNC（G）"),
+    _byte_pair_row(1033, "G", 56, "PLC-to-CNC (G)", "PLC→CNC（G）"),
+    _byte_pair_row(1034, "G", 58, "PLC-to-CNC (G)", "PLC→CNC（G）"),
+    *_bit_rows(1100, "F", "CNC-to-PLC (F)", "CNC→PLC（F）"),
+    _byte_pair_row(1132, "F", 54, "CNC-to-PLC (F)", "CNC→PLC（F）"),
+    _byte_pair_row(1133, "F", 56, "CNC-to-PLC (F)", "CNC→PLC（F）"),
+    _byte_pair_row(1134, "F", 58, "CNC-to-PLC (F)", "CNC→PLC（F）"),
+)
+
+# ---------------------------------------------------------------------------------------------
+# 2) tool offsets 1-32: readable and writable
+
+_TOOL_OFFSET_KINDS: tuple[tuple[int, str, str, str], ...] = (
+    (2001, "X wear", "X轴磨损补偿值", "mm"),
+    (2101, "Z wear", "Z轴磨损补偿值", "mm"),
+    (2201, "tool nose radius wear", "刀尖半径磨损补偿值", "mm"),
+    (2301, "imaginary tool nose direction T (0-9)", "假想刀尖位置T（0～9）", ""),
+    (2401, "Y wear", "Y轴磨损补偿值", "mm"),
+    (2451, "Y geometry", "Y轴几何形状补偿值", "mm"),
+    (2701, "X geometry", "X轴几何形状补偿值", "mm"),
+    (2801, "Z geometry", "Z轴几何形状补偿值", "mm"),
+    (2901, "tool nose radius geometry", "刀尖半径几何形状补偿值", "mm"),
+)
+
+_TOOL_OFFSETS: tuple[SystemVariable, ...] = tuple(
+    SystemVariable(
+        first,
+        first + 31,
+        "rw",
+        "tool",
+        f"Tool offset {{index}}: {en}",
+        f"{{index}}号刀补的{zh}",
+        unit,
+    )
+    for first, en, zh, unit in _TOOL_OFFSET_KINDS
+)
+
+# ---------------------------------------------------------------------------------------------
+# 3)-8) counters, work coordinate shift, alarm, cutting time, system time, modal information
+
+_CONTROL: tuple[SystemVariable, ...] = (
+    SystemVariable(3901, 3901, "rw", "counters", "Number of parts machined (completed)", "已加工的零件数（已完成）"),
+    SystemVariable(3902, 3902, "rw", "counters", "Maximum number of parts to machine", "最大加工件数"),
+    SystemVariable(2501, 2501, "rw", "work", "X work coordinate system shift", "X轴工件坐标系偏移值", "mm"),
+    SystemVariable(2502, 2502, "rw", "work", "Z work coordinate system shift", "Z轴工件坐标系偏移值", "mm"),
+    SystemVariable(
+        3000,
+        3000,
+        "w",
+        "alarm",
+        "Macro alarm: #3000=n (message) stops the program with alarm 5900+n (5900-5999); "
+        "the message may be left out. Cannot be read",
+        "宏程序报警：执行#3000=n（报警内容）时系统停止运行并报警，报警号为n+5900（范围5900～5999），"
+        "报警内容可省略。只能写不能读",
+        source="alarm",
+    ),
+    SystemVariable(
+        3001,
+        3001,
+        "r",
+        "time",
+        "Machining time of the current part (single run), in seconds; read only",
+        "单次加工时间（单位：秒），可读不可写",
+        "s",
+        "timer",
+        "s",
+    ),
+    SystemVariable(
+        3002,
+        3002,
+        "rw",
+        "time",
+        "Accumulated cutting time, in seconds",
+        "累加切削时间（单位：秒），可读可写",
+        "s",
+        "timer",
+        "s",
+    ),
+    SystemVariable(
+        3011,
+        3011,
+        "rw",
+        "time",
+        "System date as a decimal number YYYYMMDD (year/month/day)",
+        "系统时间 年/月/日，以十进制数YYYYMMDD表示",
+        "",
+        "date",
+    ),
+    SystemVariable(
+        3012,
+        3012,
+        "rw",
+        "time",
+        "System time of day as a decimal number HHMMSS (hour/minute/second)",
+        "系统时间 时/分/秒，以十进制数HHMMSS表示",
+        "",
+        "time",
+    ),
+)
+
+_MODAL_ROWS: tuple[tuple[int, str, str, str, str], ...] = (
+    (
+        4001,
+        "motion",
+        "01",
+        "G00, G01, G02, G03, G05, G32, G33, G34, G80, G84, G88, G90, G92, G94, "
+        "G06.2 (reads 124), G06.3 (126), G32.1 (132), G07.2 (144), G07.3 (146)",
+        "G00、G01、G02、G03、G05、G32、G33、G34、G80、G84、G88、G90、G92、G94、"
+        "G06.2（读出124）、G06.3（126）、G32.1（132）、G07.2（144）、G07.3（146）",
+    ),
+    (4002, "spindle", "02", "G96, G97", "G96、G97"),
+    (4005, "feed", "03", "G98 feed per minute, G99 feed per revolution", "G98每分钟进给、G99每转进给"),
+    (4006, "units", "06", "G20, G21", "G20、G21"),
+    (4007, "cutter", "07", "G40, G41, G42", "G40、G41、G42"),
+    (4012, "macro", "12", "G66, G67", "G66、G67"),
+    (4014, "wcs", "14", "G54-G59", "G54～G59"),
+    (4016, "plane", "16", "G17, G18, G19", "G17、G18、G19"),
+)
+
+_CODE_LETTERS: tuple[tuple[int, str, str, str], ...] = (
+    (4109, "F", "F code (feedrate) in effect", "当前的F代码（进给速度）"),
+    (4113, "M", "M code last commanded", "最近指令的M代码"),
+    (4114, "N", "Sequence number (N) of the last numbered block", "顺序号（最近的N号）"),
+    (4115, "O", "Program number (O) of the program being run", "正在运行的程序号（O号）"),
+    (4119, "S", "S code (spindle speed or surface speed) in effect", "当前的S代码（主轴转速或线速度）"),
+    (
+        4120,
+        "T",
+        "T code last commanded: tool number x 100 + offset number (T0101 reads 101)",
+        "最近指令的T代码：刀具号×100+刀补号（T0101读出101）",
+    ),
+)
+
+
+def _reads(codes: str) -> tuple[str, str]:
+    """An example for a modal row's hover: the group's second code and the number it reads as."""
+    found = re.findall(r"G\d+(?:\.\d)?", codes)
+    code = found[1] if len(found) > 1 else found[0]
+    return code, code[1:].lstrip("0") or "0"
+
+
+_MODAL: tuple[SystemVariable, ...] = (
+    *(
+        SystemVariable(
+            number,
+            number,
+            "r",
+            "modal",
+            f"Modal G code of group {group} ({codes}), read as a number ({code} reads {value})",
+            f"{group}组模态G代码（{zh_codes}），读出的是数值（{code}读出为{value}）",
+            source="modal",
+            param=name,
+        )
+        for number, name, group, codes, zh_codes in _MODAL_ROWS
+        for code, value in (_reads(codes),)
+    ),
+    *(
+        SystemVariable(number, number, "r", "modal", en, zh, source="code", param=letter)
+        for number, letter, en, zh in _CODE_LETTERS
+    ),
+)
+
+# ---------------------------------------------------------------------------------------------
+# 9)-11) positions, manual pulse interrupt, work zero offsets: readable (axes X, Y, Z, 4th, 5th)
+
+_POSITIONS: tuple[SystemVariable, ...] = (
+    SystemVariable(
+        5001,
+        5005,
+        "r",
+        "position",
+        "{axis} axis block end position, work coordinates, without tool offset; readable while the axis moves",
+        "第{index}轴（{axis}）程序段终点位置（工件坐标系，不含刀具补偿，移动中可读）",
+        "mm",
+        "position",
+        "end",
+    ),
+    SystemVariable(
+        5021,
+        5025,
+        "r",
+        "position",
+        "{axis} axis current position, machine coordinates, with tool offset; not readable while moving",
+        "第{index}轴（{axis}）当前位置（机床坐标系，含刀具补偿，移动中不可读）",
+        "mm",
+        "position",
+        "machine",
+    ),
+    SystemVariable(
+        5041,
+        5045,
+        "r",
+        "position",
+        "{axis} axis current position, work coordinates, with tool offset; not readable while moving",
+        "第{index}轴（{axis}）当前位置（工件坐标系，含刀具补偿，移动中不可读）",
+        "mm",
+        "position",
+        "current",
+    ),
+    SystemVariable(
+        5121,
+        5125,
+        "r",
+        "position",
+        "Axis {index} ({axis}) manual pulse generator interrupt amount: the distance added by the handwheel "
+        "during automatic operation",
+        "第{index}轴（{axis}）手脉中断值：自动运行中用手脉插入的移动量",
+        "mm",
+        "position",
+        "handle",
+    ),
+)
+
+_WCS_NAMES: tuple[tuple[str, str], ...] = (
+    ("external work zero offset", "外部工件零点偏移值"),
+    ("G54 work zero offset", "G54工件零点偏移值"),
+    ("G55 work zero offset", "G55工件零点偏移值"),
+    ("G56 work zero offset", "G56工件零点偏移值"),
+    ("G57 work zero offset", "G57工件零点偏移值"),
+    ("G58 work zero offset", "G58工件零点偏移值"),
+    ("G59 work zero offset", "G59工件零点偏移值"),
+)
+
+_WORK_OFFSETS: tuple[SystemVariable, ...] = tuple(
+    SystemVariable(
+        5201 + 20 * i,
+        5205 + 20 * i,
+        "r",
+        "work",
+        f"{{axis}} axis {en} (read only; set by G10 L2 P{i} or on the offset page)",
+        f"第{{index}}轴（{{axis}}）{zh}（只读；用G10 L2 P{i}或在偏置页面设定）",
+        "mm",
+    )
+    for i, (en, zh) in enumerate(_WCS_NAMES)
+)
+
+SYSTEM_VARIABLES: tuple[SystemVariable, ...] = (
+    *_SIGNALS,
+    *_TOOL_OFFSETS,
+    *_CONTROL,
+    *_MODAL,
+    *_POSITIONS,
+    *_WORK_OFFSETS,
+)
+
+# ---------------------------------------------------------------------------------------------
+# G and M codes of the GSK980TDi lathe
+
+G_CODES: tuple[CodeDoc, ...] = (
+    CodeDoc("G00", "motion", "Rapid positioning", "快速定位"),
+    CodeDoc("G01", "motion", "Linear interpolation at feedrate F", "直线插补（以进给速度F切削）"),
+    CodeDoc("G02", "motion", "Circular interpolation clockwise (R or I K)", "顺时针圆弧插补（R或I K）"),
+    CodeDoc("G03", "motion", "Circular interpolation counterclockwise (R or I K)", "逆时针圆弧插补（R或I K）"),
+    CodeDoc("G04", "", "Dwell: G04 P_ (milliseconds) or G04 X_/U_ (seconds)", "暂停：G04 P_（毫秒）或G04 X_/U_（秒）"),
+    CodeDoc(
+        "G05",
+        "motion",
+        "Three-point circular interpolation: an arc from the current point through an intermediate point to the end",
+        "三点圆弧插补：从当前点经中间点到终点的圆弧",
+    ),
+    CodeDoc("G07.1", "", "Cylindrical interpolation on/off", "圆柱插补开/关"),
+    CodeDoc("G10", "", "Programmable data input (work and tool offsets)", "可编程数据输入（工件及刀具偏置）"),
+    CodeDoc("G17", "plane", "XY plane selection", "XY平面选择"),
+    CodeDoc("G18", "plane", "ZX plane selection (the lathe's usual plane)", "ZX平面选择（车床常用平面）"),
+    CodeDoc("G19", "plane", "YZ plane selection", "YZ平面选择"),
+    CodeDoc("G20", "units", "Input in inches", "英制输入"),
+    CodeDoc("G21", "units", "Input in millimetres", "公制输入"),
+    CodeDoc(
+        "G28",
+        "",
+        "Return to the machine reference point through the intermediate point given by the axis words",
+        "经由轴地址指定的中间点返回机床参考点",
+    ),
+    CodeDoc("G30", "", "Return to the 2nd, 3rd or 4th reference point", "返回第2、第3或第4参考点"),
+    CodeDoc(
+        "G31",
+        "",
+        "Skip function: linear move that stops when the skip signal comes on",
+        "跳转功能：直线移动，跳转信号接通时停止",
+    ),
+    CodeDoc(
+        "G32",
+        "motion",
+        "Thread cutting with constant lead: G32 X(U)_ Z(W)_ F_ (lead) or I_ (threads per inch)",
+        "等螺距螺纹切削：G32 X(U)_ Z(W)_ F_（螺距）或I_（每英寸牙数）",
+    ),
+    CodeDoc("G33", "motion", "Z-axis tapping cycle", "Z轴攻丝循环"),
+    CodeDoc("G34", "motion", "Thread cutting with variable lead", "变螺距螺纹切削"),
+    CodeDoc("G40", "cutter", "Tool nose radius compensation cancel", "刀尖半径补偿取消"),
+    CodeDoc("G41", "cutter", "Tool nose radius compensation left", "刀尖半径左补偿"),
+    CodeDoc("G42", "cutter", "Tool nose radius compensation right", "刀尖半径右补偿"),
+    CodeDoc(
+        "G50",
+        "",
+        "Set the work coordinate system so that the current position has the given coordinates",
+        "坐标系设定（使当前位置成为指定的坐标值）",
+    ),
+    CodeDoc("G54", "wcs", "Work coordinate system 1 (offsets #5221-#5225)", "工件坐标系1（偏移值#5221～#5225）"),
+    CodeDoc("G55", "wcs", "Work coordinate system 2 (offsets #5241-#5245)", "工件坐标系2（偏移值#5241～#5245）"),
+    CodeDoc("G56", "wcs", "Work coordinate system 3 (offsets #5261-#5265)", "工件坐标系3（偏移值#5261～#5265）"),
+    CodeDoc("G57", "wcs", "Work coordinate system 4 (offsets #5281-#5285)", "工件坐标系4（偏移值#5281～#5285）"),
+    CodeDoc("G58", "wcs", "Work coordinate system 5 (offsets #5301-#5305)", "工件坐标系5（偏移值#5301～#5305）"),
+    CodeDoc("G59", "wcs", "Work coordinate system 6 (offsets #5321-#5325)", "工件坐标系6（偏移值#5321～#5325）"),
+    CodeDoc(
+        "G65",
+        "",
+        "Macro call G65 P_ L_ arguments (opens a new level of local variables), "
+        "or macro arithmetic/branch G65 Hm P#i Q#j R#k",
+        "宏程序非模态调用G65 P_ L_ 自变量（局部变量进入新的一级），或宏运算/转移命令G65 Hm P#i Q#j R#k",
+    ),
+    CodeDoc(
+        "G66",
+        "macro",
+        "Modal macro call: G66 P L arguments; the macro is called after every later block that moves an axis",
+        "宏程序模态调用：G66 P L 自变量；之后每个有轴移动的程序段执行后调用宏程序",
+    ),
+    CodeDoc("G67", "macro", "Modal macro call cancel", "宏程序模态调用取消"),
+    CodeDoc("G70", "", "Finishing cycle: G70 P(ns) Q(nf)", "精加工循环：G70 P(ns) Q(nf)"),
+    CodeDoc("G71", "", "Axial rough turning cycle (outer/inner diameter)", "轴向粗车循环（外圆/内孔）"),
+    CodeDoc("G72", "", "Radial rough facing cycle", "径向粗车循环（端面）"),
+    CodeDoc("G73", "", "Closed-loop (pattern repeating) cutting cycle", "封闭切削循环（仿形粗车）"),
+    CodeDoc("G74", "", "Face peck drilling / axial grooving cycle", "轴向切槽多重循环（端面深孔钻）"),
+    CodeDoc("G75", "", "Radial grooving cycle", "径向切槽多重循环"),
+    CodeDoc("G76", "", "Multiple thread cutting cycle", "多重螺纹切削循环"),
+    CodeDoc("G80", "motion", "Drilling/tapping cycle cancel", "钻孔/攻丝固定循环取消"),
+    CodeDoc("G83", "", "Face (axial) drilling cycle", "端面（轴向）钻孔循环"),
+    CodeDoc("G84", "motion", "Face (axial) tapping cycle", "端面（轴向）攻丝循环"),
+    CodeDoc("G87", "", "Side (radial) drilling cycle", "侧面（径向）钻孔循环"),
+    CodeDoc("G88", "motion", "Side (radial) tapping cycle", "侧面（径向）攻丝循环"),
+    CodeDoc("G90", "motion", "Outer/inner diameter turning cycle (single pass)", "外圆/内孔切削循环（单一固定循环）"),
+    CodeDoc("G92", "motion", "Thread cutting cycle (single pass)", "螺纹切削循环（单一固定循环）"),
+    CodeDoc("G94", "motion", "Facing cycle (single pass)", "端面切削循环（单一固定循环）"),
+    CodeDoc("G96", "spindle", "Constant surface speed control (S in m/min)", "恒线速度控制（S单位m/min）"),
+    CodeDoc("G97", "spindle", "Constant surface speed control cancel (S in rev/min)", "恒线速度控制取消（S单位r/min）"),
+    CodeDoc("G98", "feed", "Feed per minute (F in mm/min)", "每分钟进给（F单位mm/min）"),
+    CodeDoc("G99", "feed", "Feed per revolution (F in mm/rev)", "每转进给（F单位mm/r）"),
+)
+
+M_CODES: tuple[CodeDoc, ...] = (
+    CodeDoc("M00", "", "Program pause; cycle start resumes", "程序暂停，按循环启动继续"),
+    CodeDoc(
+        "M01", "", "Optional stop (only when the optional stop switch is on)", "选择停止（选择停止开关打开时有效）"
+    ),
+    CodeDoc("M02", "", "End of program; modal macro calls are cleared", "程序结束，清除模态宏调用"),
+    CodeDoc("M03", "", "Spindle on clockwise", "主轴正转"),
+    CodeDoc("M04", "", "Spindle on counterclockwise", "主轴反转"),
+    CodeDoc("M05", "", "Spindle stop", "主轴停止"),
+    CodeDoc("M08", "", "Coolant on", "冷却液开"),
+    CodeDoc("M09", "", "Coolant off", "冷却液关"),
+    CodeDoc("M10", "", "Tailstock forward (standard PLC)", "尾座进（标准PLC）"),
+    CodeDoc("M11", "", "Tailstock back (standard PLC)", "尾座退（标准PLC）"),
+    CodeDoc(
+        "M30",
+        "",
+        "End of program and return to its start; modal macro calls are cleared",
+        "程序结束并返回程序开头，清除模态宏调用",
+    ),
+    CodeDoc("M32", "", "Lubrication on (standard PLC)", "润滑开（标准PLC）"),
+    CodeDoc("M33", "", "Lubrication off (standard PLC)", "润滑关（标准PLC）"),
+    CodeDoc(
+        "M98",
+        "",
+        "Subprogram call: M98 P(program) L(count) Q(start sequence number); with more than 4 digits in P "
+        "the last 4 are the program and the digits before them the count (not together with L: alarm 293). "
+        "No new level of local variables",
+        "子程序调用：M98 P（程序号）L（次数）Q（开始的顺序号）；P超过4位时右边4位为程序号，前面为调用次数"
+        "（不可再用L指定次数，否则293号报警）。局部变量不改变级别",
+    ),
+    CodeDoc(
+        "M99",
+        "",
+        "Return from a subprogram or macro to the block after the call (M99 Pn: to block Nn); "
+        "in a main program it restarts the program",
+        "从子程序或宏程序返回调用程序段的下一段（M99 Pn返回到Nn段）；在主程序中则反复执行当前程序",
+    ),
+    CodeDoc(
+        "M198",
+        "",
+        "Call a subprogram on the external input/output device (usually a USB stick); otherwise like M98",
+        "调用外部输入/输出设备（通常为U盘）中的子程序，用法同M98",
+    ),
+)

@@ -1,0 +1,106 @@
+"""The shape of a dialect's data: system variables, G/M codes, functions and alarms.
+
+Every dialect module (``fanuc_data``, ``gsk980tdi_data``) fills these records; nothing here
+runs a program. A ``SystemVariable`` row covers one number or a range of consecutive numbers
+with the same meaning, says who may read and write it, and names the ``source`` the machine
+takes its value from. The sources form a small fixed vocabulary that the machine layer
+understands (see ``SOURCES``); descriptions are written in English and Chinese for a
+programmer to read on hover.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+# Where a system variable's value comes from. ``k`` below is ``number - first`` of the row.
+SOURCES = {
+    "store": "a value the machine keeps (offsets, counters, signals); preset by the machine file",
+    "alarm": "#3000: writing raises a macro alarm",
+    "stop": "#3006: writing stops with a message, like M00",
+    "timer": "a timer that advances with simulated time (param: 'ms', 's' or 'h')",
+    "date": "the date as YYYYMMDD",
+    "time": "the time of day as HHMMSS",
+    "modal": "the modal G code of a group (param: the group's name in MODAL_GROUPS)",
+    "code": "the last F, S, T, M, D, H, B, N, O or P value (param: the letter)",
+    "position": "an axis position (param: 'end', 'machine', 'current', 'skip', 'tool', 'servo', 'handle'); axis k+1",
+    "alias": "another number for a stored variable (param: the number that k = 0 maps to)",
+}
+
+# The modal groups a ``modal`` row may name, with the code each holds at power-on.
+MODAL_GROUPS = {
+    "motion": 0.0,  # G00 G01 G02 G03 ...
+    "plane": 17.0,  # G17 G18 G19 (a lathe starts in G18, set by the dialect's switches)
+    "distance": 90.0,  # G90 G91
+    "stroke": 22.0,  # G22 G23
+    "feed": 94.0,  # G94 G95 (lathe: G98 G99)
+    "units": 21.0,  # G20 G21
+    "cutter": 40.0,  # G40 G41 G42
+    "length": 49.0,  # G43 G44 G49
+    "canned": 80.0,  # G73 .. G89
+    "return": 98.0,  # G98 G99 (mill)
+    "scaling": 50.0,  # G50 G51
+    "macro": 67.0,  # G66 G67
+    "spindle": 97.0,  # G96 G97
+    "wcs": 54.0,  # G54 .. G59
+    "cutting": 64.0,  # G61 .. G64
+    "rotation": 69.0,  # G68 G69
+    "mirror": 50.1,  # G50.1 G51.1
+    "polar": 15.0,  # G15 G16
+}
+
+
+@dataclass(frozen=True, slots=True)
+class SystemVariable:
+    """One system variable, or a range of them that share a meaning.
+
+    ``access`` is ``"r"``, ``"w"`` or ``"rw"``. ``en`` and ``zh`` describe the variable; in a
+    range they may use ``{axis}`` (X, Y, Z, 4th, 5th from ``k``) and ``{index}`` (``k + 1``,
+    e.g. the offset number). ``unit`` is shown on hover (``mm``, ``s``, ``ms``, ``h``, or
+    empty). ``group`` sorts variables into the debugger's scopes: ``signals``, ``tool``,
+    ``work``, ``alarm``, ``time``, ``control``, ``counters``, ``modal``, ``position``.
+    ``default`` is the value before anything sets it (None for vacant).
+    """
+
+    first: int
+    last: int
+    access: str
+    group: str
+    en: str
+    zh: str
+    unit: str = ""
+    source: str = "store"
+    param: str = ""
+    default: float | None = 0.0
+
+    def __contains__(self, number: int) -> bool:
+        return self.first <= number <= self.last
+
+
+@dataclass(frozen=True, slots=True)
+class CodeDoc:
+    """A G or M code: ``code`` as written (``G01``, ``M98``), its modal group (empty for a
+    one-shot code) and what it does."""
+
+    code: str
+    group: str
+    en: str
+    zh: str
+
+
+@dataclass(frozen=True, slots=True)
+class FunctionDoc:
+    """A function or operator: its ``signature`` as a programmer writes it and what it does."""
+
+    name: str
+    signature: str
+    en: str
+    zh: str
+
+
+@dataclass(frozen=True, slots=True)
+class AlarmDoc:
+    """An alarm number and its text."""
+
+    number: int
+    en: str
+    zh: str

@@ -1,0 +1,221 @@
+"""Machine settings: the workspace's ``.cncmacro.toml``, read with ``tomllib``.
+
+Every key is optional (DESIGN.md "Machine settings")::
+
+    dialect = "gsk980tdi"
+    common = [100, 499]            # the volatile common range (default 100-199)
+    decimal_point = "increment"    # or "calculator" (default): how X10 without a point is read
+    block_delete = true            # skip blocks that start with '/'
+    persistent_file = ".cncmacro-vars.json"   # keeps #500-#999 between runs
+    max_blocks = 1000000           # the analysis budget per run
+    date = 20261122                # the clock (#3011, #3012) when runs must be repeatable
+    time = 153000
+
+    [variables]                    # preset values: offsets, counters, commons
+    2001 = 0.5
+    100 = 3
+
+    [calls]                        # codes that call programs (seed 001, seed 003 ch. 8)
+    G100 = 9010                    # like G65 P9010
+    M50 = 9020
+    M60 = { program = 9001, call = "subprogram" }   # like M98 P9001
+    T = 9000                       # every T code calls O9000 (the T value in #149)
+
+    [skip]                         # where the G31 skip signal fires
+    Z = -12.5
+
+Errors are reported as ``MachineFileError`` with the file and the key, never as a crash.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+import tomllib
+
+from ..dialects import normalise_dialect
+
+MACHINE_FILE_NAME = ".cncmacro.toml"
+PERSISTENT_FILE_NAME = ".cncmacro-vars.json"
+DEFAULT_MAX_BLOCKS = 1_000_000
+
+
+class MachineFileError(ValueError):
+    """A machine file that cannot be used, with a message that names the file and key."""
+
+
+@dataclass(frozen=True, slots=True)
+class CallCode:
+    """A G, M or T code that calls a program: ``macro`` (like G65, a new local level) or
+    ``subprogram`` (like M98)."""
+
+    program: int
+    call: str = "macro"
+
+
+@dataclass(frozen=True)
+class MachineSettings:
+    """The settings of the simulated machine. ``folder`` is where relative paths start."""
+
+    dialect: str | None = None
+    common: tuple[int, int] = (100, 199)
+    decimal_point: str = "calculator"
+    block_delete: bool = False
+    persistent_file: str | None = None
+    max_blocks: int = DEFAULT_MAX_BLOCKS
+    date: int | None = None
+    time: int | None = None
+    variables: dict[int, float] = field(default_factory=dict)
+    calls: dict[str, CallCode] = field(default_factory=dict)
+    skip: dict[str, float] = field(default_factory=dict)
+    folder: str | None = None
+
+    def with_presets(self, presets: dict[int, float]) -> MachineSettings:
+        """These settings with more preset variables (later ones win)."""
+        merged = dict(self.variables)
+        merged.update(presets)
+        return replace(self, variables=merged)
+
+    def persistent_path(self) -> Path | None:
+        if self.persistent_file is None:
+            return None
+        p = Path(self.persistent_file)
+        if not p.is_absolute() and self.folder:
+            p = Path(self.folder) / p
+        return p
+
+
+def load_machine_file(path: str | Path) -> MachineSettings:
+    """Read a machine file; ``MachineFileError`` says what is wrong."""
+    p = Path(path)
+    try:
+        data = tomllib.loads(p.read_text(encoding="utf-8"))
+    except OSError as e:
+        raise MachineFileError(f"{p}: cannot read the machine file ({e.strerror or e})") from e
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:
+        raise MachineFileError(f"{p}: not a valid TOML file: {e}") from e
+    return settings_from_mapping(data, str(p), folder=str(p.parent))
+
+
+def find_machine_file(start: str | Path) -> Path | None:
+    """The nearest ``.cncmacro.toml`` in ``start`` (a folder or file) or a folder above it."""
+    p = Path(start).resolve()
+    folder = p if p.is_dir() else p.parent
+    for d in (folder, *folder.parents):
+        candidate = d / MACHINE_FILE_NAME
+        if candidate.is_file():
+            return candidate
+    return None
+
+
+def settings_from_mapping(
+    data: dict[str, object], source: str = "settings", folder: str | None = None
+) -> MachineSettings:
+    """Settings from a parsed TOML table (also used for a debugger launch configuration)."""
+
+    def fail(key: str, what: str) -> MachineFileError:
+        return MachineFileError(f"{source}: '{key}' {what}")
+
+    known = {"dialect", "common", "decimal_point", "block_delete", "persistent_file", "max_blocks", "date", "time",
+             "variables", "calls", "skip"}  # fmt: skip
+    for key in data:
+        if key not in known:
+            raise fail(key, f"is not a machine setting (known: {', '.join(sorted(known))})")
+    kw: dict[str, object] = {"folder": folder}
+    if "dialect" in data:
+        d = normalise_dialect(str(data["dialect"]))
+        if d is None:
+            raise fail("dialect", "must be fanuc or gsk980tdi")
+        kw["dialect"] = d
+    if "common" in data:
+        c = data["common"]
+        if not (
+            isinstance(c, list) and len(c) == 2 and all(isinstance(x, int) for x in c) and 100 <= c[0] <= c[1] < 500
+        ):
+            raise fail("common", "must be two numbers such as [100, 199] (within #100-#499)")
+        kw["common"] = (c[0], c[1])
+    if "decimal_point" in data:
+        if data["decimal_point"] not in ("calculator", "increment"):
+            raise fail("decimal_point", 'must be "calculator" or "increment"')
+        kw["decimal_point"] = data["decimal_point"]
+    if "block_delete" in data:
+        if not isinstance(data["block_delete"], bool):
+            raise fail("block_delete", "must be true or false")
+        kw["block_delete"] = data["block_delete"]
+    if "persistent_file" in data:
+        kw["persistent_file"] = str(data["persistent_file"])
+    for key in ("max_blocks", "date", "time"):
+        if key in data:
+            v = data[key]
+            if not isinstance(v, int) or isinstance(v, bool) or v < 0:
+                raise fail(key, "must be a whole number")
+            kw[key] = v
+    if "variables" in data:
+        kw["variables"] = _variables(data["variables"], fail)
+    if "calls" in data:
+        kw["calls"] = _calls(data["calls"], fail)
+    if "skip" in data:
+        s = data["skip"]
+        if not isinstance(s, dict) or not all(isinstance(v, (int, float)) for v in s.values()):
+            raise fail("skip", "must map axis letters to positions")
+        kw["skip"] = {str(k).upper(): float(v) for k, v in s.items()}
+    return MachineSettings(**kw)  # type: ignore[arg-type]
+
+
+def _variables(table: object, fail) -> dict[int, float]:  # type: ignore[no-untyped-def]
+    if not isinstance(table, dict):
+        raise fail("variables", "must be a table of number = value")
+    out: dict[int, float] = {}
+    for k, v in table.items():
+        key = str(k).lstrip("#")
+        if not key.isdigit():
+            raise fail(f"variables.{k}", "is not a variable number")
+        if not isinstance(v, (int, float)) or isinstance(v, bool):
+            raise fail(f"variables.{k}", "must be a number")
+        out[int(key)] = float(v)
+    return out
+
+
+def _calls(table: object, fail) -> dict[str, CallCode]:  # type: ignore[no-untyped-def]
+    if not isinstance(table, dict):
+        raise fail("calls", "must be a table of code = program")
+    out: dict[str, CallCode] = {}
+    for k, v in table.items():
+        code = str(k).upper()
+        if not (code == "T" or (code[:1] in ("G", "M") and code[1:].replace(".", "", 1).isdigit())):
+            raise fail(f"calls.{k}", "must be a G or M code (G100, M50) or T")
+        default = "subprogram" if code == "T" else "macro"
+        if isinstance(v, int) and not isinstance(v, bool):
+            out[_code_key(code)] = CallCode(v, default)
+        elif isinstance(v, dict) and isinstance(v.get("program"), int):
+            call = v.get("call", default)
+            if call not in ("macro", "subprogram"):
+                raise fail(f"calls.{k}.call", 'must be "macro" or "subprogram"')
+            out[_code_key(code)] = CallCode(int(v["program"]), str(call))
+        else:
+            raise fail(f"calls.{k}", "must be a program number or {program = N, call = ...}")
+    return out
+
+
+def _code_key(code: str) -> str:
+    """``G0100`` and ``G100`` are one code: the key is the letter and the number's value."""
+    if code == "T":
+        return code
+    value = float(code[1:])
+    return f"{code[0]}{value:g}"
+
+
+def parse_preset(text: str) -> tuple[int, float]:
+    """``100=5`` or ``#2001=0.5`` from ``--set``; ``ValueError`` with a plain message."""
+    name, sep, value = text.partition("=")
+    name = name.strip().lstrip("#")
+    if not sep or not name.isdigit():
+        raise ValueError(f"--set {text!r}: write it as NUMBER=VALUE, e.g. --set 100=5")
+    try:
+        v = float(value)
+    except ValueError:
+        raise ValueError(f"--set {text!r}: {value.strip()!r} is not a number") from None
+    if v != v or v in (float("inf"), float("-inf")):
+        raise ValueError(f"--set {text!r}: the value must be a finite number")
+    return int(name), v

@@ -1,0 +1,193 @@
+"""Finding the program that a call names, across the files of a workspace.
+
+``G65 P9100``, ``M98 P0040`` and (on gsk980tdi) ``G65 P[CUT]`` name a program. It is looked
+up first among the O programs of the calling file, then in the calling file's folder and each
+extra folder, in order: a file named after the number (``O9100.nc``, ``O9100.CNC``,
+``9100.nc``, ``O9100``), then any program file whose text has an ``O9100`` header. A bracketed
+name is a file name (``CUT.CNC``), or an O number when it looks like one (``P[O1004]``).
+Only files inside those folders are ever read: a name with a path in it is never found.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..syntax.block_parser import BlockCache
+from ..syntax.document import split_lines
+from ..syntax.program import Program, ProgramUnit, build_program
+from .dialect_choice import dialect_from_text
+from .files import BinaryFileError, is_program_file, read_program
+
+_NAME_OK = re.compile(r"^[\w+\-.\u4e00-\u9fff]+$")
+_O_NAME = re.compile(r"^[Oo](\d{1,8})$")
+
+
+@dataclass(slots=True)
+class LoadedFile:
+    """A program file, parsed: its path (as given), lines, structure and dialect comment."""
+
+    path: str
+    lines: list[str]
+    program: Program
+    dialect: str | None
+
+    @property
+    def name(self) -> str:
+        return Path(self.path).name
+
+
+@dataclass(slots=True)
+class FoundProgram:
+    """An O program inside a loaded file."""
+
+    file: LoadedFile
+    unit: ProgramUnit
+
+    @property
+    def label(self) -> str:
+        """How a person names it: ``O9100``, or the file name for a program without header."""
+        if self.unit.number is not None:
+            return f"O{self.unit.number:04d}"
+        return Path(self.file.path).stem
+
+
+def load_text(path: str, text: str, cache: BlockCache | None = None) -> LoadedFile:
+    """Parse a file's text into a ``LoadedFile``."""
+    lines = split_lines(text)
+    blocks = (cache or _cache).get_many(lines)
+    return LoadedFile(path, lines, build_program(blocks), dialect_from_text(lines))
+
+
+_cache = BlockCache()
+
+
+class ProgramLibrary:
+    """The programs a run may call. ``folders`` are searched after the calling file's own
+    folder; ``texts`` maps paths to text that replaces the file on disk (open editors)."""
+
+    def __init__(
+        self,
+        folders: list[str | Path] | None = None,
+        texts: dict[str, str] | None = None,
+        cache: BlockCache | None = None,
+    ) -> None:
+        self.folders = [Path(f) for f in folders or []]
+        self.texts = dict(texts or {})
+        self.cache = cache or _cache
+        self._files: dict[str, LoadedFile | None] = {}
+        self._listing: dict[Path, list[Path]] = {}
+
+    # ---- files
+    def load(self, path: str | Path) -> LoadedFile | None:
+        """The parsed file at ``path``; None when it cannot be read or is binary."""
+        key = str(path)
+        if key in self._files:
+            return self._files[key]
+        text = self.texts.get(key)
+        if text is None:
+            try:
+                text = read_program(key).text
+            except (OSError, BinaryFileError):
+                self._files[key] = None
+                return None
+        loaded = load_text(key, text, self.cache)
+        self._files[key] = loaded
+        return loaded
+
+    def add_text(self, path: str, text: str) -> LoadedFile:
+        """Load ``text`` as the content of ``path`` (a file given on the command line or open
+        in the editor)."""
+        self.texts[path] = text
+        self._files.pop(path, None)
+        loaded = self.load(path)
+        assert loaded is not None
+        return loaded
+
+    def _folder_files(self, folder: Path) -> list[Path]:
+        files = self._listing.get(folder)
+        if files is None:
+            try:
+                files = sorted(p for p in folder.iterdir() if p.is_file() and is_program_file(p))
+            except OSError:
+                files = []
+            self._listing[folder] = files
+        return files
+
+    def _search_folders(self, near: LoadedFile | None) -> list[Path]:
+        folders: list[Path] = []
+        if near is not None:
+            folders.append(Path(near.path).parent)
+        for f in self.folders:
+            if f not in folders:
+                folders.append(f)
+        return folders
+
+    # ---- lookup
+    def find_number(self, number: int, near: LoadedFile | None = None) -> FoundProgram | None:
+        """The program O``number``, searched as the module docstring says."""
+        if near is not None:
+            unit = near.program.unit_numbered(number)
+            if unit is not None:
+                return FoundProgram(near, unit)
+        names = {f"o{number:04d}", f"o{number}", f"{number:04d}", f"{number}"}
+        folders = self._search_folders(near)
+        for folder in folders:
+            for p in self._folder_files(folder):
+                stem = p.stem.lower() if p.suffix else p.name.lower()
+                if stem in names:
+                    found = self._unit_in(p, number)
+                    if found is not None:
+                        return found
+        header = re.compile(rf"(?m)^[ \t/%]*(?:N\d+[ \t]*)?O0*{number}(?!\d)", re.I)
+        for folder in folders:
+            for p in self._folder_files(folder):
+                loaded = self._files.get(str(p))
+                if loaded is not None:
+                    unit = loaded.program.unit_numbered(number)
+                    if unit is not None:
+                        return FoundProgram(loaded, unit)
+                    continue
+                text = self.texts.get(str(p))
+                if text is None:
+                    try:
+                        text = read_program(p).text
+                    except (OSError, BinaryFileError):
+                        continue
+                if header.search(text):
+                    loaded = self.load(p)
+                    if loaded is not None:
+                        unit = loaded.program.unit_numbered(number)
+                        if unit is not None:
+                            return FoundProgram(loaded, unit)
+        return None
+
+    def find_name(self, name: str, near: LoadedFile | None = None) -> FoundProgram | None:
+        """A program named by a bracketed name (``P[CUT]``): a file name, or ``O1004``."""
+        name = name.strip()
+        m = _O_NAME.match(name)
+        if m:
+            return self.find_number(int(m.group(1)), near)
+        if not _NAME_OK.match(name) or ".." in name:
+            return None
+        wanted = name.lower()
+        for folder in self._search_folders(near):
+            for p in self._folder_files(folder):
+                if p.stem.lower() == wanted or p.name.lower() == wanted:
+                    loaded = self.load(p)
+                    if loaded is not None:
+                        return FoundProgram(loaded, loaded.program.units[0])
+        return None
+
+    def _unit_in(self, path: Path, number: int) -> FoundProgram | None:
+        loaded = self.load(path)
+        if loaded is None:
+            return None
+        unit = loaded.program.unit_numbered(number)
+        if unit is None:
+            first = loaded.program.units[0]
+            if first.number is not None:
+                return None  # the file names another program in its header
+            unit = first
+        return FoundProgram(loaded, unit)

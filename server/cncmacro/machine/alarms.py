@@ -1,0 +1,46 @@
+"""Alarms as structured results: a number, a message, and where the run was.
+
+Inside the interpreter an alarm travels as ``MacroAlarm`` (number and message). The run loop
+turns it into an ``Alarm`` with the file, the line and the call chain that reached it, which
+is what the command line, the diagnostics and the debugger show.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..dialects.alarms import alarm_text
+
+
+class MacroAlarm(Exception):
+    """Raised while a block executes. ``message`` defaults to the alarm's standard text."""
+
+    def __init__(self, number: int, message: str | None = None) -> None:
+        self.number = number
+        self.message = message or alarm_text(number)
+        super().__init__(f"alarm {number}: {self.message}")
+
+
+@dataclass(frozen=True, slots=True)
+class CallSite:
+    """One level of the call chain: the program and the line of the call in it."""
+
+    program: str
+    file: str
+    line: int
+    how: str  # "main", "G65", "G66", "M98", or the code that called (e.g. "M50")
+
+
+@dataclass(frozen=True, slots=True)
+class Alarm:
+    """An alarm the run stopped with: ``line`` is 0-based, ``chain`` lists the callers from
+    the main program inward."""
+
+    number: int
+    message: str
+    file: str
+    line: int
+    chain: tuple[CallSite, ...] = ()
+
+    def describe(self) -> str:
+        return f"alarm {self.number}: {self.message}"

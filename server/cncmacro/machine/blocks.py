@@ -1,0 +1,364 @@
+"""Blocks compiled once into closures that run them (SEMANTICS.md §1, §4, §5).
+
+``CompiledFile`` holds, for one program file, a list with one slot per line: the closure that
+runs the line, made the first time the line runs. A closure takes the machine and its own
+line number and returns the line to run next, or -1 when it changed the frame (a call, a
+return, the end). Each closure already knows the next non-empty line, the loop its END
+closes, and its literal word values rounded for their address, so running a block does no
+lookups in the syntax tree. Jumps are resolved once per (line, label) and cached.
+"""
+
+from __future__ import annotations
+
+from bisect import bisect_left, bisect_right
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+from ..dialects.alarms import (
+    LOOP_NUMBER,
+    MISSING_END,
+    NC_AND_MACRO,
+    OVERFLOW,
+    SEQUENCE_NUMBER,
+    STATEMENT_FORMAT,
+    WRITE_PROTECTED,
+)
+from ..library.programs import LoadedFile
+from ..syntax.nodes import Assign, Block, Do, End, Goto, If, IndirectVar, Number, Output, Statement, Var, While, Word
+from .alarms import MacroAlarm
+from .expressions import ExpressionCompiler, Getter
+from .numbers import MAX_VALUE, format_value, round_half_away, to_increment
+
+if TYPE_CHECKING:
+    from .machine import Machine
+
+Runner = Callable[[Any, int], int]
+
+INTEGER_LETTERS = frozenset("MSTHDNOPLBEQ")
+MAX_LOOP_DEPTH = 3
+
+
+def _raising(number: int, message: str) -> Runner:
+    def run(m: Any, pc: int) -> int:
+        raise MacroAlarm(number, message)
+
+    return run
+
+
+class CompiledFile:
+    """The runnable form of one loaded file, for one machine."""
+
+    def __init__(self, machine: Machine, file: LoadedFile) -> None:
+        self.machine = machine
+        self.file = file
+        n = len(file.lines)
+        self.code: list[Runner | None] = [None] * (n + 1)
+        self.code[n] = _end_of_file
+        self.do_end = {p.do_line: p.end_line for p in file.program.loops}
+        self.end_do = {p.end_line: p.do_line for p in file.program.loops}
+        self._jumps: dict[tuple[int, int], tuple[int, int]] = {}
+        self.values = ExpressionCompiler(machine.kinds)
+        self.addresses = ExpressionCompiler(machine.kinds, in_address=True)
+
+    # ---------------------------------------------------------------- lines
+    def skipped(self, block: Block) -> bool:
+        """True for a line that does nothing when run (blank, comment, deleted block)."""
+        if block.is_empty:
+            return True
+        return block.block_delete is not None and self.machine.settings.block_delete
+
+    def next_line(self, pc: int) -> int:
+        """The next line after ``pc`` that does something (the file's end at worst)."""
+        blocks = self.file.program.blocks
+        n = len(blocks)
+        i = pc + 1
+        while i < n and self.skipped(blocks[i]):
+            i += 1
+        return i
+
+    def first_line(self, pc: int) -> int:
+        """``pc`` itself if it does something, else the next line that does."""
+        blocks = self.file.program.blocks
+        if pc < len(blocks) and not self.skipped(blocks[pc]):
+            return pc
+        return self.next_line(pc)
+
+    def runner(self, pc: int) -> Runner:
+        c = self.code[pc]
+        if c is None:
+            c = self.code[pc] = self.compile(pc)
+        return c
+
+    # ---------------------------------------------------------------- jumps
+    def jump(self, frame: Any, pc: int, label: float | None) -> int:
+        """The line a GOTO on line ``pc`` lands on, leaving loops it jumps out of
+        (SEMANTICS.md §4: forward to the end of the program, then from its start)."""
+        if label is None:
+            raise MacroAlarm(SEQUENCE_NUMBER, "GOTO to a vacant sequence number")
+        n = int(round_half_away(label))
+        if not 1 <= n <= 99999:
+            raise MacroAlarm(SEQUENCE_NUMBER, f"GOTO {n}: a sequence number must be 1 to 99999")
+        key = (pc, n)
+        hit = self._jumps.get(key)
+        if hit is None:
+            hit = self._jumps[key] = self._find_jump(frame, pc, n)
+        target, keep = hit
+        if keep < 0:
+            raise MacroAlarm(LOOP_NUMBER, f"GOTO {n} jumps into a WHILE/DO loop from outside it")
+        del frame.loops[keep:]
+        return target
+
+    def _find_jump(self, frame: Any, pc: int, n: int) -> tuple[int, int]:
+        unit = frame.found.unit
+        lines = self.file.program.label_lines(n, unit)
+        if not lines:
+            raise MacroAlarm(SEQUENCE_NUMBER, f"N{n} not found in {frame.found.label}")
+        k = bisect_right(lines, pc)
+        target = lines[k] if k < len(lines) else lines[0]
+        keep = 0
+        for d, e in self.do_end.items():
+            inside_target = d < target <= e
+            inside_here = d < pc <= e
+            if inside_target and not inside_here:
+                return target, -1
+            if inside_target and inside_here:
+                keep += 1
+        return target, keep
+
+    def label_in_caller(self, unit: Any, call_line: int, n: int) -> int:
+        """Where ``M99 Pn`` returns in the caller (seed 002): the first Nn after the call
+        line, else the last one before it."""
+        lines = self.file.program.label_lines(n, unit)
+        if not lines:
+            raise MacroAlarm(SEQUENCE_NUMBER, f"M99 P{n}: N{n} not found in the calling program")
+        k = bisect_right(lines, call_line)
+        return lines[k] if k < len(lines) else lines[k - 1]
+
+    def label_from_start(self, unit: Any, n: int) -> int:
+        """The first Nn of a program (``M98 Q``), searching from its start."""
+        lines = self.file.program.label_lines(n, unit)
+        if not lines:
+            raise MacroAlarm(SEQUENCE_NUMBER, f"N{n} not found in the called program")
+        return lines[bisect_left(lines, unit.start)]
+
+    # ---------------------------------------------------------------- compiling
+    def compile(self, pc: int) -> Runner:
+        block = self.file.program.blocks[pc]
+        nxt = self.next_line(pc)
+        if self.skipped(block):
+            return lambda m, pc: nxt
+        if block.has_error:
+            problem = next(p for p in block.problems if p.severity == "error")
+            return _raising(STATEMENT_FORMAT, f"the block does not parse: {problem.message}")
+        if block.program is not None:
+            return self._header(block, pc, nxt)
+        return self._body(block, pc, nxt)
+
+    def _header(self, block: Block, pc: int, nxt: int) -> Runner:
+        rest = self._body(block, pc, nxt) if (block.words or block.statements or block.label is not None) else None
+        number = float(block.program or 0)
+
+        def header(m: Any, pc: int) -> int:
+            if m.frame.found.unit.start != pc:
+                return m.end_of_program(pc)  # ran into the next program's header
+            m.codes["O"] = number
+            return rest(m, pc) if rest is not None else nxt
+
+        return header
+
+    def _body(self, block: Block, pc: int, nxt: int) -> Runner:
+        label = block.label
+        if block.statements:
+            if block.words:
+                w = block.words[0]
+                return _raising(NC_AND_MACRO, f"{w.letter} word and a macro statement in one block")
+            if len(block.statements) > 1:
+                return _raising(STATEMENT_FORMAT, "one macro statement per block")
+            run = self.statement(block.statements[0], pc, nxt)
+        elif block.words:
+            run = self.nc_block(block, pc, nxt)
+        else:
+            run = lambda m, pc: nxt  # noqa: E731  (a label alone)
+        if label is None:
+            return run
+        n = float(label)
+
+        def labelled(m: Any, pc: int) -> int:
+            m.codes["N"] = n
+            return run(m, pc)
+
+        return labelled
+
+    # ---------------------------------------------------------------- statements
+    def statement(self, s: Statement, pc: int, nxt: int) -> Runner:
+        if isinstance(s, Assign):
+            return self.assign(s, nxt)
+        if isinstance(s, If):
+            test = self.values.condition(s.condition)
+            if s.goto is not None:
+                target = self.values.value(s.goto)
+                jump = self.jump
+
+                def if_goto(m: Any, pc: int) -> int:
+                    if test(m):
+                        return jump(m.frame, pc, target(m))
+                    return nxt
+
+                return if_goto
+            assert s.then is not None
+            then = self.statement(s.then, pc, nxt)
+
+            def if_then(m: Any, pc: int) -> int:
+                return then(m, pc) if test(m) else nxt
+
+            return if_then
+        if isinstance(s, Goto):
+            target = self.values.value(s.target)
+            jump = self.jump
+            return lambda m, pc: jump(m.frame, pc, target(m))
+        if isinstance(s, (While, Do)):
+            return self.loop_head(s, pc, nxt)
+        if isinstance(s, End):
+            return self.loop_end(s, pc)
+        if isinstance(s, Output):
+            return self.output(s, nxt)
+        return _raising(STATEMENT_FORMAT, "unknown statement")
+
+    def assign(self, s: Assign, nxt: int) -> Runner:
+        value = self.values.value(s.value)
+        target = s.target
+        message = s.message
+        if isinstance(target, Var):
+            n = target.number
+            kind = self.machine.kinds.kind(n)
+            if kind == "local":
+
+                def set_local(m: Any, pc: int) -> int:
+                    v = value(m)
+                    if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
+                        raise MacroAlarm(OVERFLOW, f"#{n} = {v}: the value is out of range")
+                    m.L[n] = v
+                    return nxt
+
+                return set_local
+            if kind in ("common", "persistent"):
+
+                def set_common(m: Any, pc: int) -> int:
+                    v = value(m)
+                    if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
+                        raise MacroAlarm(OVERFLOW, f"#{n} = {v}: the value is out of range")
+                    m.C[n] = v
+                    return nxt
+
+                return set_common
+            if kind == "vacant":
+                return _raising(WRITE_PROTECTED, "#0 is always vacant and cannot be written")
+            number = float(n)
+
+            def set_other(m: Any, pc: int) -> int:
+                m.write(number, value(m), message)
+                return nxt
+
+            return set_other
+        assert isinstance(target, IndirectVar)
+        index = self.values.value(target.index)
+
+        def set_indirect(m: Any, pc: int) -> int:
+            m.write(index(m), value(m), message)
+            return nxt
+
+        return set_indirect
+
+    def loop_number(self, num: Number) -> int | None:
+        v = num.value
+        return int(v) if v == int(v) and 1 <= v <= 3 else None
+
+    def loop_head(self, s: While | Do, pc: int, nxt: int) -> Runner:
+        number = self.loop_number(s.loop)
+        if number is None:
+            return _raising(LOOP_NUMBER, f"DO {s.loop.text}: the loop number must be 1, 2 or 3")
+        end = self.do_end.get(pc)
+        if end is None:
+            return _raising(MISSING_END, f"DO {number} has no END {number}")
+        after = self.next_line(end)
+        test = self.values.condition(s.condition) if isinstance(s, While) else None
+
+        def head(m: Any, pc: int) -> int:
+            loops = m.frame.loops
+            if not loops or loops[-1] != pc:
+                if len(loops) >= MAX_LOOP_DEPTH:
+                    raise MacroAlarm(LOOP_NUMBER, f"loops nested more than {MAX_LOOP_DEPTH} deep")
+                loops.append(pc)
+            if test is None or test(m):
+                return nxt
+            loops.pop()
+            return after
+
+        return head
+
+    def loop_end(self, s: End, pc: int) -> Runner:
+        number = self.loop_number(s.loop)
+        if number is None:
+            return _raising(LOOP_NUMBER, f"END {s.loop.text}: the loop number must be 1, 2 or 3")
+        do = self.end_do.get(pc)
+        if do is None:
+            return _raising(LOOP_NUMBER, f"END {number} has no DO {number} before it")
+
+        def end(m: Any, pc: int) -> int:
+            loops = m.frame.loops
+            if not loops or loops[-1] != do:
+                raise MacroAlarm(LOOP_NUMBER, f"END {number} reached outside its loop (loops may not cross)")
+            return do
+
+        return end
+
+    def output(self, s: Output, nxt: int) -> Runner:
+        if s.command not in ("DPRNT", "BPRNT"):
+            return lambda m, pc: nxt
+        parts: list[tuple[str | None, Getter | None, int | None, int | None]] = []
+        for p in s.parts:
+            getter = self.values.value(p.variable) if p.variable is not None else None
+            parts.append((p.text, getter, p.digits, p.decimals))
+
+        def dprnt(m: Any, pc: int) -> int:
+            text = "".join(t if g is None else format_value(g(m), a, b) for t, g, a, b in parts)  # type: ignore[misc]
+            m.print_line(text, pc)
+            return nxt
+
+        return dprnt
+
+    # ---------------------------------------------------------------- NC words
+    def word_value(self, w: Word) -> tuple[bool, Any]:
+        """(is_constant, value or getter) for an NC word, rounded for its address."""
+        letter = w.letter
+        if w.value is None:
+            return True, None
+        const, v = self.addresses.constant(w.value)
+        point = isinstance(w.value, Number) and w.value.has_point
+        if const:
+            return True, self.round_for(letter, v, literal=True, point=point)
+        getter = self.addresses.value(w.value)
+        round_for = self.round_for
+        return False, lambda m: round_for(letter, getter(m), literal=False, point=True)
+
+    def round_for(self, letter: str, v: float | None, literal: bool, point: bool) -> float | None:
+        if v is None:
+            return 0.0 if self.machine.dialect.vacant_address_is_zero else None
+        if letter == "G":
+            return to_increment(v, 1) if v != int(v) else float(v)
+        if letter in INTEGER_LETTERS:
+            return round_half_away(v)
+        if letter == "F":
+            return v
+        if literal and not point and self.machine.settings.decimal_point == "increment":
+            v = v / 1000.0
+        return to_increment(v, 4 if self.machine.modal.get("units") == 20.0 else 3)
+
+    def nc_block(self, block: Block, pc: int, nxt: int) -> Runner:
+        from .nc_blocks import compile_nc_block
+
+        return compile_nc_block(self, block, pc, nxt)
+
+
+def _end_of_file(m: Any, pc: int) -> int:
+    return m.end_of_program(pc)

@@ -1,0 +1,115 @@
+"""What the call words mean (SEMANTICS.md §5): G65/G66 arguments, P and L, M98 counts.
+
+``map_arguments`` applies argument specifications I and II word by word, left to right, a
+later word winning on a shared variable; ``program_and_count`` splits ``M98 P30040`` into
+program 40 and count 3; ``repeat_count`` checks L. They take evaluated words and return plain
+values, raising ``MacroAlarm`` for what the control refuses; the machine does the calling.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ..dialects.alarms import COUNT_TWICE, G_ARGUMENT, P_VALUE_RANGE
+from ..dialects.dialect import ARGUMENTS_I, Dialect
+from .alarms import MacroAlarm
+from .numbers import to_int
+
+NOT_ARGUMENTS = frozenset("GLNOP")
+MAX_REPEAT = 9999
+
+
+@dataclass(slots=True)
+class Arguments:
+    """Locals filled by a call: number -> value, with the letter that filled each, and any
+    remark the mapping made (I/J/K out of order on fanuc)."""
+
+    values: dict[int, float | None] = field(default_factory=dict)
+    letters: dict[int, str] = field(default_factory=dict)
+    remarks: list[str] = field(default_factory=list)
+
+
+def map_arguments(words: list[tuple[str, float | None]], dialect: Dialect) -> Arguments:
+    """Locals for the argument words of a G65/G66 block (P, L and the G code removed)."""
+    out = Arguments()
+    counts = {"I": 0, "J": 0, "K": 0}
+    last = (-1, -1)  # (set, I=0 J=1 K=2) of the previous I/J/K word
+    out_of_order = False
+    for letter, value in words:
+        if letter in NOT_ARGUMENTS:
+            raise MacroAlarm(G_ARGUMENT, f"address {letter} cannot be an argument of a macro call")
+        if letter in counts:
+            k = counts[letter]
+            if k >= 10:
+                raise MacroAlarm(G_ARGUMENT, f"more than 10 {letter} arguments")
+            counts[letter] = k + 1
+            number = {"I": 4, "J": 5, "K": 6}[letter] + 3 * k
+            here = (k, "IJK".index(letter))
+            out_of_order = out_of_order or here < last
+            last = here
+        else:
+            number = ARGUMENTS_I.get(letter, 0)
+            if not number:
+                raise MacroAlarm(G_ARGUMENT, f"address {letter} cannot be an argument of a macro call")
+        if value is None and not dialect.vacant_address_is_zero:
+            continue  # a vacant argument is not passed (fanuc)
+        out.values[number] = 0.0 if value is None else value
+        out.letters[number] = letter if letter not in counts else f"{letter}{counts[letter]}"
+    if out_of_order and dialect.ijk_order_matters:
+        out.remarks.append("I, J and K arguments should come in the order I, J, K within each set")
+    return out
+
+
+def repeat_count(value: float | None, dialect: Dialect, notes: list[str]) -> int:
+    """The L of a call: 1 when absent; below 1 is an alarm; above 9999 is clamped (with a
+    note) where the dialect clamps, else an alarm."""
+    if value is None:
+        return 1
+    n = to_int(value)
+    if n < 1:
+        raise MacroAlarm(
+            P_VALUE_RANGE if dialect.count_in_p_and_l_alarm else 119, f"L{n}: the repeat count must be 1 to 9999"
+        )
+    if n > MAX_REPEAT:
+        if dialect.clamp_repeat_count:
+            notes.append(f"L{n} is above 9999; the control runs it 9999 times")
+            return MAX_REPEAT
+        raise MacroAlarm(119, f"L{n}: the repeat count must be 1 to 9999")
+    return n
+
+
+def program_and_count(
+    p_text: str | None, p_value: float | None, l_value: float | None, dialect: Dialect, notes: list[str]
+) -> tuple[int, int]:
+    """``M98 P<count><program> L<count>``: (program number, repeat count). More than four
+    digits in P: the last four are the program and the ones before them the count."""
+    if p_value is None:
+        raise MacroAlarm(P_VALUE_RANGE, "M98 needs P: the program to call")
+    n = to_int(p_value)
+    if n < 0:
+        raise MacroAlarm(P_VALUE_RANGE, f"P{n}: a program number cannot be negative")
+    digits = p_text.lstrip("+") if p_text and p_text.lstrip("+").isdigit() else str(n)
+    if len(digits) > 8:
+        raise MacroAlarm(P_VALUE_RANGE, f"P{digits}: at most 8 digits (4 for the count, 4 for the program)")
+    count_in_p = 0
+    program = n
+    if len(digits) > 4:
+        program = int(digits[-4:])
+        count_in_p = int(digits[:-4])
+    if count_in_p and l_value is not None:
+        if dialect.count_in_p_and_l_alarm:
+            raise MacroAlarm(COUNT_TWICE, f"P{digits} L{to_int(l_value)}: the count is given in both P and L")
+        notes.append("the count is given in both P and L; L is used")
+    if l_value is not None:
+        return program, repeat_count(l_value, dialect, notes)
+    return program, max(1, count_in_p) if len(digits) > 4 else 1
+
+
+def macro_program_number(value: float | None, dialect: Dialect) -> int:
+    """The program a G65/G66 P names: at most 4 digits on gsk980tdi (alarm 291), 8 on fanuc."""
+    if value is None:
+        raise MacroAlarm(P_VALUE_RANGE, "the call needs P: the program to call")
+    n = to_int(value)
+    if n < 0 or n >= 10**dialect.program_digits:
+        raise MacroAlarm(P_VALUE_RANGE, f"P{n}: a program number has at most {dialect.program_digits} digits")
+    return n

@@ -1,0 +1,399 @@
+"""Expressions compiled once into Python closures (SEMANTICS.md §2 and §3).
+
+A block's syntax tree is turned into nested closures the first time the block runs; after
+that, executing it never looks at the tree again. Each closure takes the machine and returns
+a float, or None for vacant. The common shapes (a local variable, a constant, a local and a
+constant joined by ``+ - * /``) get closures of their own, because they are most of what
+loops execute. Errors that the text alone decides (a relation outside a condition, ``==`` on
+fanuc, brackets nested too deep) compile to a closure that raises the alarm when the block
+runs, since a program may well never reach the block.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+from ..dialects.alarms import (
+    ARGUMENT_RANGE,
+    BRACKET_NESTING,
+    DIVISION_BY_ZERO,
+    FORMAT,
+    OVERFLOW,
+    VARIABLE_NUMBER,
+)
+from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, Number, Relation, Unary, Var
+from .alarms import MacroAlarm
+from .numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away
+
+if TYPE_CHECKING:
+    from ..dialects import Dialect
+
+Value = float | None
+Getter = Callable[[Any], Value]
+Test = Callable[[Any], bool]
+
+MAX_BRACKETS = 5
+
+
+def _raiser(number: int, message: str) -> Callable[[Any], Any]:
+    def fail(m: Any) -> Any:
+        raise MacroAlarm(number, message)
+
+    return fail
+
+
+def bracket_depth(node: Expr) -> int:
+    """The deepest nesting of ``[ ]`` in ``node``, function brackets included."""
+    best = 0
+    stack: list[tuple[Expr, int]] = [(node, 0)]
+    while stack:
+        n, d = stack.pop()
+        if isinstance(n, Bracket):
+            d += 1
+            best = max(best, d)
+            stack.append((n.inner, d))
+        elif isinstance(n, Call):
+            inner = d + 1
+            best = max(best, inner)
+            stack.extend((a, inner) for a in n.args)
+        elif isinstance(n, (Binary, Relation)):
+            stack.append((n.left, d))
+            stack.append((n.right, d))
+        elif isinstance(n, Unary):
+            stack.append((n.operand, d))
+        elif isinstance(n, IndirectVar):
+            best = max(best, d + 1)
+            stack.append((n.index, d + 1))
+    return best
+
+
+class VariableKinds:
+    """Sorts variable numbers into local, common, system or nonexistent, for one dialect and
+    one common range (a machine setting)."""
+
+    def __init__(self, dialect: Dialect, common: tuple[int, int]) -> None:
+        self.dialect = dialect
+        self.common = common
+
+    def kind(self, n: int) -> str:
+        """``vacant`` (#0), ``local``, ``common``, ``persistent``, ``indirect9`` (gsk #9xxx),
+        ``system`` or ``none``."""
+        if n == 0:
+            return "vacant"
+        if 1 <= n <= 33:
+            return "local"
+        if self.common[0] <= n <= self.common[1]:
+            return "common"
+        if 500 <= n <= 999:
+            return "persistent"
+        if self.dialect.nine_indirection and 9000 <= n <= 9999 and self.kind(n - 9000) in ("common", "persistent"):
+            return "indirect9"
+        if n >= 1000 and self.dialect.system_variable(n) is not None:
+            return "system"
+        return "none"
+
+
+class ExpressionCompiler:
+    """Compiles expression and condition nodes into closures for one dialect and machine."""
+
+    def __init__(self, kinds: VariableKinds, in_address: bool = False) -> None:
+        self.kinds = kinds
+        self.dialect = kinds.dialect
+        self.in_address = in_address
+
+    # ---------------------------------------------------------------- values
+    def value(self, node: Expr) -> Getter:
+        """A closure computing ``node``; brackets nested too deep raise alarm 118."""
+        depth = bracket_depth(node)
+        if depth > MAX_BRACKETS:
+            return _raiser(BRACKET_NESTING, f"brackets nested {depth} deep (at most {MAX_BRACKETS})")
+        return self._value(node)
+
+    def constant(self, node: Expr) -> tuple[bool, Value]:
+        """(True, value) when ``node`` is a literal number (possibly negated)."""
+        if isinstance(node, Number):
+            return True, node.value
+        if isinstance(node, Unary) and isinstance(node.operand, Number):
+            return True, -node.operand.value if node.op == "-" else node.operand.value
+        if isinstance(node, Bracket):
+            return self.constant(node.inner)
+        return False, None
+
+    def _value(self, node: Expr) -> Getter:
+        if isinstance(node, Number):
+            c = node.value
+            return lambda m: c
+        if isinstance(node, Var):
+            return self.reader(node.number)
+        if isinstance(node, IndirectVar):
+            index = self._value(node.index)
+
+            def indirect(m: Any) -> Value:
+                return m.read(index(m))
+
+            return indirect
+        if isinstance(node, Bracket):
+            return self._value(node.inner)
+        if isinstance(node, Unary):
+            inner = self._value(node.operand)
+            if node.op == "-":
+                return lambda m: -(inner(m) or 0.0)
+            return lambda m: inner(m) or 0.0
+        if isinstance(node, Binary):
+            return self._binary(node)
+        if isinstance(node, Call):
+            return self._call(node)
+        if isinstance(node, Relation):
+            return _raiser(FORMAT, "a relation (EQ, LT, ...) is only allowed in an IF or WHILE condition")
+        return _raiser(FORMAT, "illegal expression")
+
+    def reader(self, n: int) -> Getter:
+        """A closure reading ``#n`` (a literal number)."""
+        kind = self.kinds.kind(n)
+        if kind == "local":
+            return lambda m: m.L[n]
+        if kind in ("common", "persistent"):
+            return lambda m: m.C[n]
+        if kind == "vacant":
+            return lambda m: None
+        if kind == "indirect9":
+            k = n - 9000
+            return lambda m: m.read(m.C[k])
+        if kind == "system":
+            return lambda m: m.read_system(n)
+        return _raiser(VARIABLE_NUMBER, f"#{n} does not exist on {self.dialect.title}")
+
+    def _binary(self, node: Binary) -> Getter:
+        op = node.op
+        rc, rv = self.constant(node.right)
+        left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local"
+        if op in ("+", "-", "*") and left_local and rc:
+            n = node.left.number  # type: ignore[union-attr]
+            c = rv or 0.0
+            if op == "+":
+                return lambda m: (m.L[n] or 0.0) + c
+            if op == "-":
+                return lambda m: (m.L[n] or 0.0) - c
+            return lambda m: (m.L[n] or 0.0) * c
+        a = self._value(node.left)
+        b = self._value(node.right)
+        if op == "+":
+            if rc:
+                c = rv or 0.0
+                return lambda m: (a(m) or 0.0) + c
+            return lambda m: (a(m) or 0.0) + (b(m) or 0.0)
+        if op == "-":
+            return lambda m: (a(m) or 0.0) - (b(m) or 0.0)
+        if op == "*":
+            if rc:
+                c = rv or 0.0
+                return lambda m: (a(m) or 0.0) * c
+            return lambda m: (a(m) or 0.0) * (b(m) or 0.0)
+        if op == "/":
+
+            def divide(m: Any) -> Value:
+                d = b(m)
+                if not d:
+                    raise MacroAlarm(
+                        DIVISION_BY_ZERO, "division by zero" + (" (the divisor is vacant)" if d is None else "")
+                    )
+                return (a(m) or 0.0) / d
+
+            return divide
+        if op == "MOD":
+
+            def modulo(m: Any) -> Value:
+                d = b(m)
+                if not d:
+                    raise MacroAlarm(DIVISION_BY_ZERO, "MOD by zero")
+                return math.fmod(a(m) or 0.0, d)
+
+            return modulo
+        if op in ("AND", "OR", "XOR"):
+            bitop = _BITWISE[op]
+
+            def bitwise(m: Any) -> Value:
+                x = _whole(a(m) or 0.0)
+                y = _whole(b(m) or 0.0)
+                return float(bitop(x, y))
+
+            return bitwise
+        return _raiser(FORMAT, f"unknown operator {op}")
+
+    def _call(self, node: Call) -> Getter:
+        name = node.name
+        args = [self._value(a) for a in node.args]
+        if name == "ATAN" and len(args) == 2:
+            y, x = args
+
+            def atan2(m: Any) -> Value:
+                a = y(m) or 0.0
+                b = x(m) or 0.0
+                if a == 0 and b == 0:
+                    raise MacroAlarm(ARGUMENT_RANGE, "ATAN[0]/[0] has no angle")
+                r = math.degrees(math.atan2(a, b))
+                return r + 360.0 if r < 0 else r
+
+            return atan2
+        if len(args) != 1:
+            return _raiser(FORMAT, f"{name} takes one argument")
+        f = _FUNCTIONS.get(name)
+        if f is None:
+            return _raiser(FORMAT, f"unknown function {name}")
+        arg = args[0]
+        if name == "ROUND" and self.in_address:
+            from .numbers import to_increment
+
+            return lambda m: to_increment(arg(m) or 0.0)
+
+        def call(m: Any) -> Value:
+            return f(arg(m) or 0.0)
+
+        return call
+
+    # ---------------------------------------------------------------- conditions
+    def condition(self, node: Expr) -> Test:
+        """A closure deciding an IF/WHILE condition (which must hold a relation)."""
+        depth = bracket_depth(node)
+        if depth > MAX_BRACKETS:
+            return _raiser(BRACKET_NESTING, f"brackets nested {depth} deep (at most {MAX_BRACKETS})")
+        return self._condition(node)
+
+    def _condition(self, node: Expr) -> Test:
+        if isinstance(node, Bracket):
+            return self._condition(node.inner)
+        if isinstance(node, Relation):
+            return self._relation(node)
+        if isinstance(node, Binary) and node.op in ("AND", "OR", "XOR") and _has_relation(node):
+            a = self._condition(node.left)
+            b = self._condition(node.right)
+            if node.op == "AND":
+                return lambda m: a(m) and b(m)
+            if node.op == "OR":
+                return lambda m: a(m) or b(m)
+            return lambda m: a(m) != b(m)
+        return _raiser(FORMAT, "a condition needs a relation such as [#1 GT 0]")
+
+    def _relation(self, node: Relation) -> Test:
+        if not node.spelling.isalpha() and not self.dialect.c_relations:
+            return _raiser(FORMAT, f"'{node.spelling}' is not a relation on {self.dialect.title}; write {node.op}")
+        op = node.op
+        rc, rv = self.constant(node.right)
+        left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local"
+        exact = op in ("EQ", "NE") and self.dialect.vacant_differs_in_eq
+        if left_local and rc and not exact:
+            n = node.left.number  # type: ignore[union-attr]
+            c = rv or 0.0
+            if op == "LT":
+                return lambda m: (m.L[n] or 0.0) < c
+            if op == "LE":
+                return lambda m: (m.L[n] or 0.0) <= c
+            if op == "GT":
+                return lambda m: (m.L[n] or 0.0) > c
+            if op == "GE":
+                return lambda m: (m.L[n] or 0.0) >= c
+        a = self._value(node.left)
+        b = self._value(node.right)
+        if exact:  # fanuc: vacant EQ vacant holds, 0 EQ vacant does not
+            if op == "EQ":
+                return lambda m: _same(a(m), b(m))
+            return lambda m: not _same(a(m), b(m))
+        if op == "EQ":
+            return lambda m: (a(m) or 0.0) == (b(m) or 0.0)
+        if op == "NE":
+            return lambda m: (a(m) or 0.0) != (b(m) or 0.0)
+        if op == "LT":
+            return lambda m: (a(m) or 0.0) < (b(m) or 0.0)
+        if op == "LE":
+            return lambda m: (a(m) or 0.0) <= (b(m) or 0.0)
+        if op == "GT":
+            return lambda m: (a(m) or 0.0) > (b(m) or 0.0)
+        return lambda m: (a(m) or 0.0) >= (b(m) or 0.0)
+
+
+def _same(x: Value, y: Value) -> bool:
+    if x is None or y is None:
+        return x is None and y is None
+    return x == y
+
+
+def _has_relation(node: Expr) -> bool:
+    if isinstance(node, Relation):
+        return True
+    if isinstance(node, Bracket):
+        return _has_relation(node.inner)
+    if isinstance(node, Binary):
+        return _has_relation(node.left) or _has_relation(node.right)
+    return False
+
+
+def _whole(x: float) -> int:
+    if not -MAX_VALUE <= x <= MAX_VALUE:
+        raise MacroAlarm(OVERFLOW, "value out of range for a bitwise operation")
+    return int(round_half_away(x))
+
+
+_BITWISE: dict[str, Callable[[int, int], int]] = {
+    "AND": lambda x, y: x & y,
+    "OR": lambda x, y: x | y,
+    "XOR": lambda x, y: x ^ y,
+}
+
+
+def _sqrt(x: float) -> float:
+    if x < 0:
+        raise MacroAlarm(ARGUMENT_RANGE, f"SQRT of a negative number ({x:g})")
+    return math.sqrt(x)
+
+
+def _asin(x: float) -> float:
+    if not -1.0 <= x <= 1.0:
+        raise MacroAlarm(ARGUMENT_RANGE, f"ASIN[{x:g}] is outside -1..1")
+    return math.degrees(math.asin(x))
+
+
+def _acos(x: float) -> float:
+    if not -1.0 <= x <= 1.0:
+        raise MacroAlarm(ARGUMENT_RANGE, f"ACOS[{x:g}] is outside -1..1")
+    return math.degrees(math.acos(x))
+
+
+def _ln(x: float) -> float:
+    if x <= 0:
+        raise MacroAlarm(ARGUMENT_RANGE, f"LN of {x:g} (it must be above 0)")
+    return math.log(x)
+
+
+def _exp(x: float) -> float:
+    try:
+        return math.exp(x)
+    except OverflowError:
+        raise MacroAlarm(OVERFLOW, f"EXP[{x:g}] is too large") from None
+
+
+def _tan(x: float) -> float:
+    r = math.fmod(x, 180.0)
+    if abs(abs(r) - 90.0) < 1e-12:
+        raise MacroAlarm(ARGUMENT_RANGE, f"TAN[{x:g}] is infinite")
+    return math.tan(math.radians(x))
+
+
+_FUNCTIONS: dict[str, Callable[[float], float]] = {
+    "SIN": lambda x: math.sin(math.radians(x)),
+    "COS": lambda x: math.cos(math.radians(x)),
+    "TAN": _tan,
+    "ASIN": _asin,
+    "ACOS": _acos,
+    "ATAN": lambda x: math.degrees(math.atan(x)),
+    "SQRT": _sqrt,
+    "ABS": abs,
+    "LN": _ln,
+    "EXP": _exp,
+    "ROUND": round_half_away,
+    "FIX": fix,
+    "FUP": fup,
+    "BIN": bin_,
+    "BCD": bcd,
+}

@@ -1,0 +1,86 @@
+"""The records the interpreter keeps while it runs: call frames, modal calls, moves, notes.
+
+A ``Frame`` is one program level: the main program, or a program entered by G65, G66,
+M98 or a call code. Macro calls (G65, G66, call codes) own a fresh set of locals
+``#1–#33``; a subprogram (M98) shares its caller's. Frames are small and copied whole by
+snapshots, so everything in them is a plain value or a list the snapshot copies.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..library.programs import FoundProgram
+
+
+@dataclass(slots=True)
+class Frame:
+    """One program level. ``pc`` is the 0-based line about to run; ``return_pc`` the caller's
+    line to continue at; ``loops`` the DO lines of the loops that are running, innermost last."""
+
+    found: FoundProgram
+    code: Any  # the CompiledFile the frame runs
+    pc: int
+    kind: str  # "main", "G65", "G66", "M98", or the calling code ("M50", "G100", "T")
+    locals: list[float | None]
+    macro_level: int
+    call_line: int = -1  # the caller's line that made the call
+    return_pc: int = -1
+    repeats: int = 1  # how many more times the program runs after this pass
+    start_pc: int = 0  # where each pass starts (M98 Q starts at a label)
+    arguments: dict[int, float | None] = field(default_factory=dict)
+    letters: dict[int, str] = field(default_factory=dict)  # local number -> argument letter
+    loops: list[int] = field(default_factory=list)
+    modal: Any = None  # the ModalCall that made this frame, if a G66 did
+
+    @property
+    def file(self) -> str:
+        return self.found.file.path
+
+    @property
+    def name(self) -> str:
+        return self.found.label
+
+    def copy(self, locals_copy: list[float | None]) -> Frame:
+        f = Frame(
+            self.found, self.code, self.pc, self.kind, locals_copy, self.macro_level, self.call_line, self.return_pc,
+            self.repeats, self.start_pc, self.arguments, self.letters, list(self.loops), self.modal,
+        )  # fmt: skip
+        return f
+
+
+@dataclass(frozen=True, slots=True)
+class ModalCall:
+    """A G66 in force: the program, its arguments and count, and the level that set it."""
+
+    found: FoundProgram
+    arguments: tuple[tuple[int, float | None], ...]
+    letters: tuple[tuple[int, str], ...]
+    repeats: int
+    level: int
+
+
+@dataclass(frozen=True, slots=True)
+class Move:
+    """One executed motion: where (file, 0-based line), the motion code (0, 1, 2, 3, a cycle
+    or 31 for a skip), and the end points in work coordinates before and after, one value
+    per axis in the dialect's order."""
+
+    file: str
+    line: int
+    mode: float
+    start: tuple[float, ...]
+    end: tuple[float, ...]
+    feed: float
+
+
+@dataclass(frozen=True, slots=True)
+class Note:
+    """Something a run noticed that is not an alarm (a clamped L, arguments out of order, a
+    DPRNT line, a #3006 message): ``kind`` names it for the analysis and the debugger."""
+
+    kind: str
+    message: str
+    file: str
+    line: int

@@ -1,0 +1,160 @@
+"""GSK980TDi macro A: ``G65 Hm P#i Q#j R#k`` (SEMANTICS.md §7, seed 000 §3.28.2).
+
+P names the destination variable (for H80–H86 and H99 a sequence number or alarm number);
+Q and R are variables or constants, and ``Q-#102`` negates. The table of operations is
+SEMANTICS.md's; vacant counts as 0 as everywhere on this control. Compiled once per block,
+like every other block.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+from ..dialects.alarms import ARGUMENT_RANGE, DIVISION_BY_ZERO, FORMAT
+from ..syntax.nodes import IndirectVar, Number, Var, Word
+from .alarms import MacroAlarm
+from .numbers import bcd, bin_, round_half_away
+
+if TYPE_CHECKING:
+    from .blocks import CompiledFile, Runner
+
+
+def _div(j: float, k: float) -> float:
+    if k == 0:
+        raise MacroAlarm(DIVISION_BY_ZERO, "G65 H05: division by zero (R is 0)")
+    return j / k
+
+
+def _rem(j: float, k: float) -> float:
+    if k == 0:
+        raise MacroAlarm(DIVISION_BY_ZERO, "G65 H23: remainder of a division by zero (R is 0)")
+    return j - math.trunc(j / k) * k
+
+
+def _sqrt(j: float, k: float) -> float:
+    if j < 0:
+        raise MacroAlarm(ARGUMENT_RANGE, f"G65 H21: square root of a negative number ({j:g})")
+    return math.sqrt(j)
+
+
+def _atan(j: float, k: float) -> float:
+    if j == 0 and k == 0:
+        raise MacroAlarm(ARGUMENT_RANGE, "G65 H34: the angle of 0/0")
+    r = math.degrees(math.atan2(j, k))
+    return r + 360.0 if r < 0 else r
+
+
+def _int(x: float) -> int:
+    return int(round_half_away(x))
+
+
+ARITHMETIC: dict[int, Callable[[float, float], float]] = {
+    1: lambda j, k: j,
+    2: lambda j, k: j + k,
+    3: lambda j, k: j - k,
+    4: lambda j, k: j * k,
+    5: _div,
+    11: lambda j, k: float(_int(j) | _int(k)),
+    12: lambda j, k: float(_int(j) & _int(k)),
+    13: lambda j, k: float(_int(j) ^ _int(k)),
+    21: _sqrt,
+    22: lambda j, k: abs(j),
+    23: _rem,
+    24: lambda j, k: bin_(j),
+    25: lambda j, k: bcd(j),
+    27: lambda j, k: math.hypot(j, k),
+    31: lambda j, k: j * math.sin(math.radians(k)),
+    32: lambda j, k: j * math.cos(math.radians(k)),
+    33: lambda j, k: j * math.tan(math.radians(k)),
+    34: _atan,
+}
+
+BRANCHES: dict[int, Callable[[float, float], bool]] = {
+    80: lambda j, k: True,
+    81: lambda j, k: j == k,
+    82: lambda j, k: j != k,
+    83: lambda j, k: j > k,
+    84: lambda j, k: j < k,
+    85: lambda j, k: j >= k,
+    86: lambda j, k: j <= k,
+}
+
+
+def _raising(number: int, message: str) -> Runner:
+    def run(m: Any, pc: int) -> int:
+        raise MacroAlarm(number, message)
+
+    return run
+
+
+def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int) -> Runner:
+    """The closure for ``G65 Hm P.. Q.. R..`` (``words`` are those after G65)."""
+    by_letter = {w.letter: w for w in words}
+    extra = [w.letter for w in words if w.letter not in "HPQR"]
+    if extra:
+        return _raising(FORMAT, f"G65 H takes only P, Q and R (found {', '.join(extra)})")
+    h_word = by_letter["H"]
+    if not isinstance(h_word.value, Number):
+        return _raising(FORMAT, "G65 H needs a literal operation number such as H01")
+    h = int(h_word.value.value)
+    q = _operand(cf, by_letter.get("Q"))
+    r = _operand(cf, by_letter.get("R"))
+    p_word = by_letter.get("P")
+    if p_word is None or p_word.value is None:
+        return _raising(FORMAT, f"G65 H{h:02d} needs P")
+    if h in BRANCHES or h == 99:
+        target = cf.values.value(p_word.value)
+        if h == 99:
+            base = cf.machine.dialect.macro_alarm_base
+
+            def alarm(m: Any, pc: int) -> int:
+                n = _int(target(m) or 0.0)
+                raise MacroAlarm(base + n, f"G65 H99 P{n}: user alarm {base + n}")
+
+            return alarm
+        test = BRANCHES[h]
+        jump = cf.jump
+
+        def branch(m: Any, pc: int) -> int:
+            if test(q(m), r(m)):
+                return jump(m.frame, pc, target(m))
+            return nxt
+
+        return branch
+    destination = p_word.value
+    if not isinstance(destination, (Var, IndirectVar)):
+        return _raising(FORMAT, f"G65 H{h:02d}: P names the result variable, e.g. P#100")
+    if isinstance(destination, Var):
+        n = float(destination.number)
+        where: Callable[[Any], float | None] = lambda m: n  # noqa: E731
+    else:
+        where = cf.values.value(destination.index)
+    if h == 26:
+        dest_value = cf.values.value(destination)
+
+        def scale(m: Any, pc: int) -> int:
+            k = r(m)
+            if k == 0:
+                raise MacroAlarm(DIVISION_BY_ZERO, "G65 H26: division by zero (R is 0)")
+            m.write(where(m), (dest_value(m) or 0.0) * q(m) / k)
+            return nxt
+
+        return scale
+    op = ARITHMETIC.get(h)
+    if op is None:
+        return _raising(FORMAT, f"G65 H{h:02d} is not an operation of this control")
+
+    def arithmetic(m: Any, pc: int) -> int:
+        m.write(where(m), op(q(m), r(m)))
+        return nxt
+
+    return arithmetic
+
+
+def _operand(cf: CompiledFile, w: Word | None) -> Callable[[Any], float]:
+    if w is None or w.value is None:
+        return lambda m: 0.0
+    get = cf.values.value(w.value)
+    return lambda m: get(m) or 0.0

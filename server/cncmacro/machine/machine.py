@@ -1,0 +1,534 @@
+"""The interpreter: a steppable FANUC 0i / GSK980TDi macro machine.
+
+``Machine`` holds the whole state of a run (variables, frames, modal state, positions, moves)
+and advances it one block at a time. ``run`` executes blocks until the program ends, alarms,
+pauses (``M00``, ``#3006``) or spends its block budget; ``step`` executes one block;
+``run_until`` stops when a predicate holds. ``snapshot`` and ``restore`` copy the state
+cheaply and deterministically, which the debugger's step back and the incremental analysis
+build on. The front ends read ``result()``, ``frames``, and variables through ``read``.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..dialects import Dialect, get_dialect
+from ..dialects.alarms import MACRO_NESTING, PROGRAM_NOT_FOUND, SUBPROGRAM_NESTING
+from ..library.machine_file import CallCode, MachineSettings
+from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
+from .alarms import Alarm, CallSite, MacroAlarm
+from .blocks import CompiledFile
+from .calls import Arguments, map_arguments, repeat_count
+from .expressions import VariableKinds
+from .frames import Frame, ModalCall, Move, Note
+from .motion import Motion
+from .variables import StopRequest, VariableAccess
+
+Value = float | None
+
+READY, RUNNING, PAUSED, COMPLETED, ALARM, LIMIT, STOPPED = (
+    "ready", "running", "paused", "completed", "alarm", "limit", "stopped",
+)  # fmt: skip
+FINISHED = frozenset({COMPLETED, ALARM, LIMIT, STOPPED})
+CANCEL_CHECK = 4096
+
+
+@dataclass(slots=True)
+class RunResult:
+    """What a run ended with, in DESIGN.md's terms (``cncmacro run --json``)."""
+
+    status: str
+    alarm: Alarm | None
+    blocks: int
+    variables: dict[int, float]
+    moves: list[Move]
+    output: list[str]
+    notes: list[Note]
+    message: str | None = None
+
+
+@dataclass(slots=True)
+class Snapshot:
+    """A copy of a machine's state at one moment; restore it any number of times."""
+
+    frames: list[Frame]
+    C: list[Value]
+    S: dict[int, Value]
+    modal: dict[str, float]
+    codes: dict[str, Value]
+    positions: tuple[list[float], list[float], list[float], list[float]]
+    extra_wcs: int
+    cycle_start_z: float | None
+    modal_calls: list[ModalCall]
+    counts: tuple[int, int, int]
+    clock: float
+    blocks: int
+    status: str
+    alarm: Alarm | None
+    message: str | None
+    written_system: set[int] = field(default_factory=set)
+    timer_marks: dict[int, float] = field(default_factory=dict)
+
+
+class Machine(VariableAccess, Motion):
+    """One simulated control running one program."""
+
+    def __init__(
+        self,
+        dialect: Dialect | str | None = None,
+        settings: MachineSettings | None = None,
+        library: ProgramLibrary | None = None,
+        *,
+        m99_ends_main: bool = False,
+    ) -> None:
+        self.settings = settings or MachineSettings()
+        if dialect is None or isinstance(dialect, str):
+            dialect = get_dialect(dialect or self.settings.dialect)
+        self.dialect = dialect
+        self.library = library or ProgramLibrary()
+        self.kinds = VariableKinds(dialect, self.settings.common)
+        self.m99_ends_main = m99_ends_main
+        self.L: list[Value] = [None] * 34
+        self.C: list[Value] = [None] * 1000
+        self.S: dict[int, Value] = {}
+        self.clock = 0.0
+        today = _dt.datetime.now()
+        self.start_date = self.settings.date if self.settings.date is not None else int(today.strftime("%Y%m%d"))
+        self.start_time = self.settings.time if self.settings.time is not None else int(today.strftime("%H%M%S"))
+        self.timer_marks: dict[int, float] = {}
+        self.written_system: set[int] = set()
+        self.preset_system: set[int] = set()
+        self.init_motion()
+        self.frames: list[Frame] = []
+        self.modal_calls: list[ModalCall] = []
+        self.compiled: dict[str, CompiledFile] = {}
+        self.status = READY
+        self.alarm: Alarm | None = None
+        self.message: str | None = None
+        self.blocks = 0
+        self.output: list[str] = []
+        self.notes: list[Note] = []
+        self.cancel_requested = False
+        self.apply_presets(self.settings.variables)
+
+    # ---------------------------------------------------------------- setting up
+    def apply_presets(self, presets: dict[int, float]) -> None:
+        """Set variables before the run (``--set``, the machine file). Offsets and other
+        stored system variables may be preset even where a program may not write them;
+        computed ones (positions, modal codes) may not. ``ValueError`` says why."""
+        for n, v in presets.items():
+            kind = self.kinds.kind(n)
+            if kind == "local":
+                self.L[n] = v
+            elif kind in ("common", "persistent"):
+                self.C[n] = v
+            elif kind == "system":
+                row = self.dialect.system_variable(n)
+                assert row is not None
+                if row.source == "alias":
+                    self.S[int(row.param) + n - row.first] = v
+                elif row.source in ("store", "date", "time", "timer"):
+                    self.S[n] = v
+                else:
+                    raise ValueError(f"#{n} ({row.en.split(';')[0]}) is computed by the machine and cannot be preset")
+                self.preset_system.add(n)
+            else:
+                raise ValueError(f"#{n} is not a variable of {self.dialect.title} that can be preset")
+
+    def load_persistent(self, values: dict[int, float]) -> None:
+        for n, v in values.items():
+            if 500 <= n <= 999:
+                self.C[n] = v
+
+    def persistent_values(self) -> dict[int, float]:
+        return {n: v for n in range(500, 1000) if (v := self.C[n]) is not None}
+
+    def compiled_file(self, file: LoadedFile) -> CompiledFile:
+        cf = self.compiled.get(file.path)
+        if cf is None or cf.file is not file:
+            cf = self.compiled[file.path] = CompiledFile(self, file)
+        return cf
+
+    def start(self, found: FoundProgram) -> None:
+        """Make ``found`` the main program (level 0) and get ready to run its first block."""
+        cf = self.compiled_file(found.file)
+        first = cf.first_line(found.unit.start)
+        self.frames = [Frame(found, cf, first, "main", self.L, 0, start_pc=first)]
+        self.codes["O"] = float(found.unit.number) if found.unit.number is not None else None
+        self.status = READY
+
+    def start_file(self, path: str, text: str | None = None) -> FoundProgram:
+        """Load a file (or ``text`` as that file) and start its first program."""
+        loaded = self.library.add_text(path, text) if text is not None else self.library.load(path)
+        if loaded is None:
+            raise OSError(f"{path}: cannot read the program")
+        program = loaded.program
+        unit = next((u for u in program.units if u.number is not None or u.end > u.start), program.units[0])
+        if unit.number is None and len(program.units) > 1:
+            blocks = program.blocks[unit.start : unit.end]
+            if all(b.is_empty or b.tape for b in blocks):
+                unit = program.units[1]
+        found = FoundProgram(loaded, unit)
+        self.start(found)
+        return found
+
+    # ---------------------------------------------------------------- state for the front ends
+    @property
+    def frame(self) -> Frame:
+        return self.frames[-1]
+
+    @property
+    def finished(self) -> bool:
+        return self.status in FINISHED
+
+    def current_line(self) -> tuple[str, int] | None:
+        if not self.frames:
+            return None
+        f = self.frames[-1]
+        return f.file, f.pc
+
+    def note(self, kind: str, message: str) -> None:
+        f = self.frames[-1]
+        self.notes.append(Note(kind, message, f.file, f.pc))
+
+    def print_line(self, text: str, pc: int) -> None:
+        self.output.append(text)
+        self.notes.append(Note("output", text, self.frames[-1].file, pc))
+
+    def chain(self) -> tuple[CallSite, ...]:
+        """Who called whom, from the main program inward (each with the line of its call)."""
+        sites = []
+        for k, f in enumerate(self.frames):
+            line = self.frames[k + 1].call_line if k + 1 < len(self.frames) else f.pc
+            sites.append(CallSite(f.name, f.file, line, f.kind))
+        return tuple(sites)
+
+    # ---------------------------------------------------------------- running
+    def run(self, max_blocks: int | None = None, *, is_limit: bool = True) -> str:
+        """Run until the program ends, alarms, pauses or has run ``max_blocks`` more blocks
+        (status ``limit``, or ``paused`` when ``is_limit`` is False). Returns the status."""
+        if self.status in FINISHED or not self.frames:
+            return self.status
+        budget = self.settings.max_blocks if max_blocks is None else max_blocks
+        limit = self.blocks + budget
+        self.status = RUNNING
+        self.message = None
+        frame = self.frames[-1]
+        cf = frame.code
+        code = cf.code
+        pc = frame.pc
+        n = self.blocks
+        try:
+            while True:
+                if n >= limit:
+                    self.status = LIMIT if is_limit else PAUSED
+                    break
+                c = code[pc]
+                if c is None:
+                    c = cf.runner(pc)
+                n += 1
+                pc = c(self, pc)
+                if pc < 0:
+                    if self.status != RUNNING:
+                        break
+                    frame = self.frames[-1]
+                    cf = frame.code
+                    code = cf.code
+                    pc = frame.pc
+                if not n % CANCEL_CHECK and self.cancel_requested:
+                    self.status = STOPPED
+                    break
+        except MacroAlarm as e:
+            self.blocks = n
+            self.frames[-1].pc = pc
+            self.alarm = Alarm(e.number, e.message, self.frames[-1].file, pc, self.chain())
+            self.status = ALARM
+            return self.status
+        except StopRequest as e:
+            self.blocks = n
+            f = self.frames[-1]
+            f.pc = f.code.next_line(pc)
+            self.status = PAUSED
+            self.message = e.message
+            self.notes.append(Note("message", e.message, f.file, pc))
+            return self.status
+        except RecursionError:  # cannot happen with bounded nesting; kept as a last guard
+            self.blocks = n
+            self.alarm = Alarm(MACRO_NESTING, "nesting too deep", self.frames[-1].file, pc, self.chain())
+            self.status = ALARM
+            return self.status
+        self.blocks = n
+        if pc >= 0:
+            self.frames[-1].pc = pc
+        return self.status
+
+    def step(self) -> str:
+        """Execute one block; the status is ``paused`` unless the run ended."""
+        return self.run(1, is_limit=False)
+
+    def run_until(self, stop: Callable[[Machine], bool], max_blocks: int | None = None) -> str:
+        """Execute blocks until ``stop(machine)`` holds after one, or the run ends."""
+        budget = self.settings.max_blocks if max_blocks is None else max_blocks
+        limit = self.blocks + budget
+        while True:
+            status = self.step()
+            if status != PAUSED or self.message is not None:
+                return status
+            if stop(self):
+                return status
+            if self.blocks >= limit:
+                self.status = LIMIT
+                return LIMIT
+
+    def resume(self) -> None:
+        """Continue after a pause (``M00``, ``#3006``)."""
+        if self.status == PAUSED:
+            self.status = READY
+            self.message = None
+
+    def cancel(self) -> None:
+        """Ask a running ``run`` (in another thread) to stop soon."""
+        self.cancel_requested = True
+
+    # ---------------------------------------------------------------- calls and returns
+    def find_program(self, number: int) -> FoundProgram:
+        near = self.frames[-1].found.file if self.frames else None
+        found = self.library.find_number(number, near)
+        if found is None:
+            raise MacroAlarm(PROGRAM_NOT_FOUND, f"program O{number:04d} not found")
+        return found
+
+    def find_program_named(self, name: str) -> FoundProgram:
+        if not self.dialect.bracket_names:
+            raise MacroAlarm(PROGRAM_NOT_FOUND, f"P[{name}]: {self.dialect.title} names programs only by number")
+        near = self.frames[-1].found.file if self.frames else None
+        found = self.library.find_name(name, near)
+        if found is None:
+            raise MacroAlarm(PROGRAM_NOT_FOUND, f"program {name} not found")
+        return found
+
+    def _check_depth(self, macro: bool) -> None:
+        if len(self.frames) > self.dialect.subprogram_levels:
+            raise MacroAlarm(SUBPROGRAM_NESTING, f"more than {self.dialect.subprogram_levels} nested program calls")
+        if macro and self.frames[-1].macro_level >= self.dialect.macro_levels:
+            raise MacroAlarm(MACRO_NESTING, f"more than {self.dialect.macro_levels} nested macro calls (G65/G66)")
+
+    def macro_call(
+        self, found: FoundProgram, arguments: Arguments, repeats: int, pc: int, nxt: int, kind: str, modal: Any = None
+    ) -> int:
+        """G65 (or a modal or code call): a new local level filled with the arguments."""
+        self._check_depth(macro=True)
+        caller = self.frames[-1]
+        caller.pc = pc
+        cf = self.compiled_file(found.file)
+        start = cf.first_line(found.unit.start)
+        local: list[Value] = [None] * 34
+        for k, v in arguments.values.items():
+            local[k] = v
+        frame = Frame(found, cf, start, kind, local, caller.macro_level + 1, pc, nxt, repeats - 1, start,
+                      arguments.values, arguments.letters, [], modal)  # fmt: skip
+        self.frames.append(frame)
+        self.L = local
+        return -1
+
+    def subprogram_call(self, found: FoundProgram, repeats: int, q: float | None, pc: int, nxt: int, kind: str) -> int:
+        """M98: the caller's locals stay in force; Q starts at a label."""
+        self._check_depth(macro=False)
+        caller = self.frames[-1]
+        caller.pc = pc
+        cf = self.compiled_file(found.file)
+        start = cf.label_from_start(found.unit, int(q)) if q is not None else cf.first_line(found.unit.start)
+        frame = Frame(found, cf, start, kind, caller.locals, caller.macro_level, pc, nxt, repeats - 1, start)
+        self.frames.append(frame)
+        return -1
+
+    def return_from_call(self, pc: int, p: float | None) -> int:
+        """M99 (Pn): back to the caller, or the next pass of a repeated call."""
+        frame = self.frames[-1]
+        if len(self.frames) == 1:
+            if self.m99_ends_main:
+                self.status = COMPLETED
+                frame.pc = pc
+                return -1
+            frame.loops.clear()
+            return frame.start_pc  # M99 in a main program runs it again
+        if frame.repeats > 0 and p is None:
+            frame.repeats -= 1
+            frame.loops.clear()
+            if frame.locals is not self.frames[-2].locals:
+                local: list[Value] = [None] * 34
+                for k, v in frame.arguments.items():
+                    local[k] = v
+                frame.locals = local
+                self.L = local
+            return frame.start_pc
+        self.frames.pop()
+        caller = self.frames[-1]
+        self.L = caller.locals
+        if p is not None:
+            target = caller.code.label_in_caller(caller.found.unit, frame.call_line, int(p))
+            caller.loops[:] = [d for d in caller.loops if d < target <= caller.code.do_end.get(d, -1)]
+            caller.pc = target
+        else:
+            caller.pc = frame.return_pc
+        return -1
+
+    def end_of_program(self, pc: int) -> int:
+        """Ran off the end of a program: a called one returns, the main one ends."""
+        if len(self.frames) > 1:
+            return self.return_from_call(pc, None)
+        self.status = COMPLETED
+        self.frames[-1].pc = pc
+        return -1
+
+    def end_program(self, pc: int) -> int:
+        """M30 / M02: the run is complete; modal calls are cancelled."""
+        self.modal_calls.clear()
+        self.status = COMPLETED
+        self.frames[-1].pc = pc
+        return -1
+
+    def pause(self, message: str, nxt: int) -> int:
+        self.status = PAUSED
+        self.message = message
+        f = self.frames[-1]
+        f.pc = nxt
+        self.notes.append(Note("message", message, f.file, nxt))
+        return -1
+
+    def skip_past_label(self, pc: int, label: float) -> int:
+        """A lathe roughing cycle ``G71 P Q``: continue after the block labelled Q."""
+        f = self.frames[-1]
+        lines = f.found.file.program.label_lines(int(label), f.found.unit)
+        after = [x for x in lines if x > pc]
+        return f.code.next_line(after[0]) if after else f.code.next_line(pc)
+
+    # ---------------------------------------------------------------- modal and code calls
+    def set_modal_call(self, found: FoundProgram, arguments: Arguments, repeats: int) -> None:
+        self.modal_calls.append(
+            ModalCall(
+                found,
+                tuple(arguments.values.items()),
+                tuple(arguments.letters.items()),
+                repeats,
+                self.frames[-1].macro_level,
+            )
+        )
+
+    def cancel_modal_call(self) -> None:
+        if self.modal_calls:
+            self.modal_calls.pop()
+
+    def modal_call(self, pc: int, nxt: int) -> int:
+        """After a move while G66 is in force: call the macro, unless it is that macro moving."""
+        top = self.modal_calls[-1]
+        if any(f.modal is top for f in self.frames):
+            return nxt
+        args = Arguments(dict(top.arguments), dict(top.letters))
+        return self.macro_call(top.found, args, top.repeats, pc, nxt, "G66", modal=top)
+
+    def call_code_for(self, values: list[tuple[str, float]]) -> CallCode | None:
+        """The configured call for a G, M or T code in the block (not inside such a call)."""
+        calls = self.settings.calls
+        if any(f.kind[:1] in ("G", "M", "T") and f.kind not in ("G65", "G66", "M98") for f in self.frames):
+            return None
+        for letter, v in values:
+            if letter in ("G", "M"):
+                c = calls.get(f"{letter}{v:g}")
+                if c is not None:
+                    return c
+            elif letter == "T" and "T" in calls:
+                return calls["T"]
+        return None
+
+    def code_macro_call(self, call: CallCode, values: list[tuple[str, float]], pc: int, nxt: int) -> int:
+        found = self.find_program(call.program)
+        code_word = next((f"{letter}{v:g}" for letter, v in values if f"{letter}{v:g}" in self.settings.calls), "G")
+        args_words = [(letter, v) for letter, v in values if f"{letter}{v:g}" != code_word and letter != "L"]
+        notes: list[str] = []
+        repeats = repeat_count(dict(values).get("L"), self.dialect, notes)
+        arguments = map_arguments(args_words, self.dialect)
+        return self.macro_call(found, arguments, repeats, pc, nxt, code_word)
+
+    def code_subprogram_call(self, call: CallCode, values: list[tuple[str, float]], pc: int, nxt: int) -> int:
+        found = self.find_program(call.program)
+        t = dict(values).get("T")
+        if t is not None and self.kinds.kind(149) in ("common", "persistent"):
+            self.C[149] = t
+        code = next((f"{letter}{v:g}" for letter, v in values if f"{letter}{v:g}" in self.settings.calls), "T")
+        return self.subprogram_call(found, 1, None, pc, nxt, code)
+
+    # ---------------------------------------------------------------- snapshots
+    def snapshot(self) -> Snapshot:
+        return Snapshot(
+            self._copy_frames(self.frames), list(self.C), dict(self.S), dict(self.modal), dict(self.codes),
+            (list(self.pos), list(self.shift), list(self.skip_pos), list(self.tool_vector)), self.extra_wcs,
+            self.cycle_start_z, list(self.modal_calls), (len(self.moves), len(self.output), len(self.notes)),
+            self.clock, self.blocks, self.status, self.alarm, self.message, set(self.written_system),
+            dict(self.timer_marks),
+        )  # fmt: skip
+
+    def restore(self, snap: Snapshot) -> None:
+        self.frames = self._copy_frames(snap.frames)
+        self.L = self.frames[-1].locals if self.frames else [None] * 34
+        self.C = list(snap.C)
+        self.S = dict(snap.S)
+        self.modal = dict(snap.modal)
+        self.codes = dict(snap.codes)
+        pos, shift, skip, tool = snap.positions
+        self.pos, self.shift, self.skip_pos, self.tool_vector = list(pos), list(shift), list(skip), list(tool)
+        self.extra_wcs = snap.extra_wcs
+        self.cycle_start_z = snap.cycle_start_z
+        self.modal_calls = list(snap.modal_calls)
+        moves, output, notes = snap.counts
+        del self.moves[moves:]
+        del self.output[output:]
+        del self.notes[notes:]
+        self.clock = snap.clock
+        self.blocks = snap.blocks
+        self.status = snap.status
+        self.alarm = snap.alarm
+        self.message = snap.message
+        self.written_system = set(snap.written_system)
+        self.timer_marks = dict(snap.timer_marks)
+        self.cancel_requested = False
+
+    @staticmethod
+    def _copy_frames(frames: list[Frame]) -> list[Frame]:
+        memo: dict[int, list[Value]] = {}
+        out = []
+        for f in frames:
+            copied = memo.get(id(f.locals))
+            if copied is None:
+                copied = memo[id(f.locals)] = list(f.locals)
+            out.append(f.copy(copied))
+        return out
+
+    # ---------------------------------------------------------------- results
+    def variables(self) -> dict[int, float]:
+        """DESIGN.md's ``variables``: non-vacant level-0 locals, commons and persistent, and
+        the system variables that were preset or written (vacant ones are absent)."""
+        out: dict[int, float] = {}
+        level0 = self.frames[0].locals if self.frames else self.L
+        for n in range(1, 34):
+            if level0[n] is not None:
+                out[n] = level0[n]  # type: ignore[assignment]
+        for n in range(100, 1000):
+            v = self.C[n]
+            if v is not None:
+                out[n] = v
+        for n in sorted(self.preset_system | self.written_system):
+            try:
+                v = self.read_system(n)
+            except MacroAlarm:
+                continue
+            if v is not None:
+                out[n] = v
+        return dict(sorted(out.items()))
+
+    def result(self) -> RunResult:
+        return RunResult(self.status, self.alarm, self.blocks, self.variables(), self.moves, self.output, self.notes,
+                         self.message)  # fmt: skip

@@ -1,0 +1,339 @@
+"""The simulated machine's NC side: modal G codes, F/S/T/M, positions, offsets (SEMANTICS.md §8).
+
+``execute_nc`` takes the evaluated words of one block and does what the control would: it
+updates the modal groups and the last F, S, T, M, D, H values; moves the axes (G00–G03 end
+points, G90/G91, and on a lathe U/V/W as incremental X/Y/Z); applies work offsets
+(G54–G59, G54.1 Pn, external), tool offsets (lathe T codes, G43/G44 H) and coordinate
+setting (G92, or G50 on a lathe); handles G04, G10, G28, G31, G53 and canned cycles; and
+records every move. Which modal group a G code belongs to comes from the dialect's table.
+Values arrive already rounded to their address's increment.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+from ..dialects.alarms import ARGUMENT_RANGE
+from .alarms import MacroAlarm
+from .frames import Move
+
+if TYPE_CHECKING:
+    from ..dialects import Dialect
+    from ..library.machine_file import MachineSettings
+
+Value = float | None
+RAPID_RATE = 10000.0  # mm/min, for the simulated clock
+
+WORK_BASE = 5201  # external offset of axis 1; G54 is +20, G55 +40 ... (both dialects)
+G54_1_BASE = 7001  # G54.1 P1 axis 1; each P adds 20 (fanuc)
+LATHE_CYCLES_WITH_PROFILE = (71.0, 72.0, 73.0)
+
+
+class Motion:
+    """The NC part of the machine (a mixin of ``Machine``)."""
+
+    dialect: Dialect
+    settings: MachineSettings
+    S: dict[int, Value]
+    clock: float
+    written_system: set[int]
+
+    def init_motion(self) -> None:
+        axes = self.dialect.axes
+        self.axis_index = {a: i for i, a in enumerate(axes)}
+        self.pos: list[float] = [0.0] * len(axes)
+        self.shift: list[float] = [0.0] * len(axes)
+        self.skip_pos: list[float] = [0.0] * len(axes)
+        self.tool_vector: list[float] = [0.0] * len(axes)
+        self.modal: dict[str, float] = {"motion": 0.0, "distance": 90.0, "units": 21.0, "cutter": 40.0,
+                                        "length": 49.0, "canned": 80.0, "return": 98.0, "macro": 67.0,
+                                        "spindle": 97.0, "wcs": 54.0, "cutting": 64.0, "rotation": 69.0,
+                                        "mirror": 50.1, "scaling": 50.0, "polar": 15.0, "stroke": 22.0}  # fmt: skip
+        self.modal.update(self.dialect.modal_defaults)
+        self.codes: dict[str, Value] = {}
+        self.extra_wcs = 0  # G54.1 Pn
+        self.cycle_start_z: float | None = None
+        self.moves: list[Move] = []
+        self.record_moves = True
+        groups: dict[float, str] = {}
+        for doc in self.dialect.g_codes():
+            try:
+                groups[float(doc.code[1:])] = doc.group
+            except ValueError:
+                continue
+        self.g_groups = groups
+
+    # ---------------------------------------------------------------- positions
+    def work_offset(self, axis: int) -> float:
+        """The work offset of ``axis`` in force: the coordinate system's plus the external."""
+        wcs = self.modal.get("wcs", 54.0)
+        if wcs == 54.1 and self.extra_wcs:
+            n = G54_1_BASE + 20 * (self.extra_wcs - 1) + axis
+        else:
+            n = WORK_BASE + 20 * (int(wcs) - 53) + axis
+        return (self.S.get(n) or 0.0) + (self.S.get(WORK_BASE + axis) or 0.0)
+
+    def machine_position(self, axis: int) -> float:
+        return self.pos[axis] + self.work_offset(axis) + self.shift[axis] + self.tool_vector[axis]
+
+    def position_value(self, which: str, axis: int) -> Value:
+        if axis >= len(self.pos):
+            return 0.0
+        if which in ("end", "current"):
+            return self.pos[axis]
+        if which == "machine":
+            return self.machine_position(axis)
+        if which == "skip":
+            return self.skip_pos[axis]
+        if which == "tool":
+            return self.tool_vector[axis]
+        return 0.0
+
+    # ---------------------------------------------------------------- one block
+    def execute_nc(self, words: list[tuple[str, float]], file: str, line: int) -> tuple[bool, float | None]:
+        """Carry out the NC words of a block. Returns (moved, skip_label): whether an axis
+        moved (for G66 modal calls) and, for a lathe roughing cycle with Q, the label after
+        which the program continues."""
+        gs: list[float] = []
+        axes: dict[int, float] = {}
+        incremental: dict[int, float] = {}
+        other: dict[str, float] = {}
+        axis_index = self.axis_index
+        inc_letters = self.dialect.incremental_letters
+        for letter, v in words:
+            if letter == "G":
+                gs.append(v)
+            elif letter in axis_index:
+                axes[axis_index[letter]] = v
+            elif letter in inc_letters and inc_letters[letter] in axis_index:
+                incremental[axis_index[inc_letters[letter]]] = v
+            else:
+                other[letter] = v
+        one_shot: float | None = None
+        for g in gs:
+            group = self.g_groups.get(g)
+            if group:
+                if group == "macro":
+                    continue  # G66/G67 are handled by the call layer
+                self.modal[group] = g
+                if group == "canned" and g != 80.0:
+                    self.cycle_start_z = None
+                if group == "wcs" and g == 54.1:
+                    self.extra_wcs = int(other.get("P", 1))
+            else:
+                one_shot = g
+        for letter in ("F", "S", "D", "H", "B"):
+            if letter in other:
+                self.codes[letter] = other[letter]
+        if "M" in other:
+            self.codes["M"] = other["M"]
+        if "T" in other:
+            self.select_tool(other["T"])
+        if "H" in other and self.modal.get("length") in (43.0, 44.0):
+            self.apply_length_offset(other["H"])
+        elif not self.dialect.lathe and self.modal.get("length") == 49.0 and "Z" in self.axis_index:
+            self.tool_vector[self.axis_index["Z"]] = 0.0
+
+        if one_shot is not None:
+            return self._one_shot(one_shot, axes, incremental, other, file, line)
+        if not axes and not incremental:
+            return False, None
+        target = self._target(axes, incremental)
+        mode = self.modal.get("motion", 0.0)
+        canned = self.modal.get("canned", 80.0)
+        if not self.dialect.lathe and canned != 80.0:
+            self._drill(canned, target, other, file, line)
+            return True, None
+        if mode in self.dialect.cycle_codes:
+            self._record(file, line, mode, tuple(self.pos), tuple(target))
+            return True, None  # a turning cycle ends where it started
+        self._move(file, line, mode, target)
+        return True, None
+
+    def _target(self, axes: dict[int, float], incremental: dict[int, float]) -> list[float]:
+        target = list(self.pos)
+        absolute = self.dialect.lathe or self.modal.get("distance", 90.0) == 90.0
+        for i, v in axes.items():
+            target[i] = v if absolute else target[i] + v
+        for i, v in incremental.items():
+            target[i] = target[i] + v
+        return target
+
+    def _move(self, file: str, line: int, mode: float, target: list[float]) -> None:
+        start = tuple(self.pos)
+        self._advance_clock(mode, start, target)
+        self.pos[:] = target
+        if self.record_moves:
+            self.moves.append(Move(file, line, mode, start, tuple(target), float(self.codes.get("F") or 0.0)))
+
+    def _record(self, file: str, line: int, mode: float, start: tuple[float, ...], end: tuple[float, ...]) -> None:
+        self._advance_clock(mode, start, end)
+        if self.record_moves:
+            self.moves.append(Move(file, line, mode, start, end, float(self.codes.get("F") or 0.0)))
+
+    def _advance_clock(
+        self, mode: float, start: tuple[float, ...] | list[float], end: tuple[float, ...] | list[float]
+    ) -> None:
+        dist = math.sqrt(sum((b - a) ** 2 for a, b in zip(start, end, strict=False)))
+        if mode == 0.0:
+            self.clock += dist / RAPID_RATE * 60.0
+            return
+        feed = self.codes.get("F") or 0.0
+        if self.modal.get("feed") in (95.0, 99.0) and not (self.modal.get("feed") == 99.0 and not self.dialect.lathe):
+            feed *= self.codes.get("S") or 0.0
+        if feed > 0:
+            self.clock += dist / feed * 60.0
+
+    # ---------------------------------------------------------------- tools
+    def select_tool(self, t: float) -> None:
+        self.codes["T"] = t
+        if not self.dialect.lathe:
+            return
+        n = int(t)
+        offset = n % 100 if n >= 100 else n % 10
+        ix = self.axis_index
+        vec = [0.0] * len(self.pos)
+        if offset:
+            for axis, geometry, wear in (("X", 2700, 2000), ("Z", 2800, 2100), ("Y", 2450, 2400)):
+                if axis in ix:
+                    vec[ix[axis]] = (self.S.get(geometry + offset) or 0.0) + (self.S.get(wear + offset) or 0.0)
+        self.tool_vector = vec
+
+    def apply_length_offset(self, h: float) -> None:
+        n = int(h)
+        value = 0.0
+        if n:
+            value = (self.S.get(11000 + n) or 0.0) + (self.S.get(10000 + n) or 0.0)
+        if self.modal.get("length") == 44.0:
+            value = -value
+        if "Z" in self.axis_index:
+            self.tool_vector[self.axis_index["Z"]] = value
+
+    # ---------------------------------------------------------------- one-shot codes
+    def _one_shot(
+        self, g: float, axes: dict[int, float], inc: dict[int, float], other: dict[str, float], file: str, line: int
+    ) -> tuple[bool, float | None]:
+        lathe = self.dialect.lathe
+        if g == 4.0:  # dwell: X or U in seconds, P in milliseconds
+            secs = other.get("P", 0.0) / 1000.0 if "P" in other else next(iter({**axes, **inc}.values()), 0.0)
+            self.clock += max(0.0, secs)
+            return False, None
+        if g == 10.0:
+            self._g10(axes, inc, other)
+            return False, None
+        if g in (28.0, 30.0):  # through the intermediate point to the reference point
+            if axes or inc:
+                middle = self._target(axes, inc)
+                self._move(file, line, 0.0, middle)
+                home = list(self.pos)
+                for i in set(axes) | set(inc):
+                    home[i] = 0.0 - (self.work_offset(i) + self.shift[i] + self.tool_vector[i]) + 0.0
+                self._move(file, line, 0.0, home)
+                return True, None
+            return False, None
+        if g == 31.0:
+            target = self._target(axes, inc)
+            start = list(self.pos)
+            for letter, fire in self.settings.skip.items():
+                i = self.axis_index.get(letter)
+                if (
+                    i is not None
+                    and min(start[i], target[i]) <= fire <= max(start[i], target[i])
+                    and start[i] != target[i]
+                ):
+                    t = (fire - start[i]) / (target[i] - start[i])
+                    target = [a + (b - a) * t for a, b in zip(start, target, strict=True)]
+                    break
+            self._move(file, line, 31.0, target)
+            self.skip_pos = list(self.pos)
+            return True, None
+        if g == 53.0:
+            target = list(self.pos)
+            for i, v in axes.items():
+                target[i] = v - (self.work_offset(i) + self.shift[i] + self.tool_vector[i])
+            self._move(file, line, self.modal.get("motion", 0.0), target)
+            return bool(axes), None
+        if g == self.dialect.coordinate_setting_code:
+            for i, v in axes.items():
+                self.shift[i] += self.pos[i] - v
+                self.pos[i] = v
+            return False, None
+        if lathe and g in self.dialect.cycle_codes:
+            target = self._target(axes, inc)
+            self._record(file, line, g, tuple(self.pos), tuple(target))
+            if g in LATHE_CYCLES_WITH_PROFILE and "P" in other and "Q" in other:
+                return True, other["Q"]
+            return bool(axes or inc), None
+        if axes or inc:  # any other one-shot code with axis words: move in the modal mode
+            self._move(file, line, self.modal.get("motion", 0.0), self._target(axes, inc))
+            return True, None
+        return False, None
+
+    def _g10(self, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]) -> None:
+        l_value = other.get("L")
+        p = int(other.get("P", 0.0))
+        absolute = self.dialect.lathe or self.modal.get("distance", 90.0) == 90.0
+        if l_value in (2.0, 20.0):
+            if l_value == 2.0:
+                if not 0 <= p <= 6:
+                    raise MacroAlarm(ARGUMENT_RANGE, f"G10 L2 P{p}: P must be 0 (external) to 6 (G59)")
+                base = WORK_BASE + 20 * p
+            else:
+                if not 1 <= p <= 48:
+                    raise MacroAlarm(ARGUMENT_RANGE, f"G10 L20 P{p}: P must be 1 to 48")
+                base = G54_1_BASE + 20 * (p - 1)
+            for i, v in axes.items():
+                n = base + i
+                self.S[n] = v if absolute else (self.S.get(n) or 0.0) + v
+                self.written_system.add(n)
+            for i, v in inc.items():
+                n = base + i
+                self.S[n] = (self.S.get(n) or 0.0) + v
+                self.written_system.add(n)
+            return
+        if self.dialect.lathe:  # G10 P.. X.. Z.. R.. Q..: P < 10000 wear, P 10000+n geometry
+            geometry = p >= 10000
+            n = p % 10000
+            ix = self.axis_index
+            rows = {"X": (2700, 2000), "Z": (2800, 2100), "Y": (2450, 2400)}
+            for letter, (g_base, w_base) in rows.items():
+                if letter not in ix:
+                    continue
+                i = ix[letter]
+                num = (g_base if geometry else w_base) + n
+                if i in axes:
+                    self.S[num] = axes[i]
+                    self.written_system.add(num)
+                if i in inc:
+                    self.S[num] = (self.S.get(num) or 0.0) + inc[i]
+                    self.written_system.add(num)
+            if "R" in other:
+                num = (2900 if geometry else 2200) + n
+                self.S[num] = other["R"]
+                self.written_system.add(num)
+            if "Q" in other:
+                self.S[2300 + n] = other["Q"]
+                self.written_system.add(2300 + n)
+            return
+        bases = {10.0: 11000, 11.0: 10000, 12.0: 13000, 13.0: 12000}
+        if l_value in bases and "R" in other:
+            num = bases[l_value] + p
+            self.S[num] = other["R"] if absolute else (self.S.get(num) or 0.0) + other["R"]
+            self.written_system.add(num)
+
+    # ---------------------------------------------------------------- drilling cycles
+    def _drill(self, cycle: float, target: list[float], other: dict[str, float], file: str, line: int) -> None:
+        ix = self.axis_index
+        z = ix.get("Z")
+        if self.cycle_start_z is None and z is not None:
+            self.cycle_start_z = self.pos[z]
+        end = list(target)
+        if z is not None:
+            r_level = other.get("R")
+            if r_level is not None:
+                self.codes["R"] = r_level
+            retract = self.cycle_start_z if self.modal.get("return") == 98.0 else self.codes.get("R")
+            end[z] = retract if retract is not None else self.pos[z]
+        self._record(file, line, cycle, tuple(self.pos), tuple(target))
+        self.pos[:] = end

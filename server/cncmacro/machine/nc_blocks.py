@@ -1,0 +1,245 @@
+"""NC blocks compiled into closures: motion, calls, returns and ends (SEMANTICS.md §5, §8).
+
+A block of words is one of: a macro call (``G65``/``G66``, or on gsk980tdi ``G65 Hm`` arithmetic),
+``G67``, or an NC block whose M codes may call (``M98``), return (``M99``), end (``M30``,
+``M02``) or pause (``M00``), and whose G, M or T code may be configured to call a program.
+Literal values are rounded once here; only variable values are computed when the block runs.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from ..dialects.alarms import NC_AND_MACRO
+from ..syntax.nodes import Block, Bracket, Number, Var, Word
+from .alarms import MacroAlarm
+from .calls import macro_program_number, map_arguments, program_and_count, repeat_count
+from .hcodes import compile_h_code
+
+if TYPE_CHECKING:
+    from .blocks import CompiledFile, Runner
+
+CONTROL_M = {98.0, 99.0, 30.0, 2.0, 0.0, 198.0}
+
+
+def _raising(number: int, message: str) -> Runner:
+    def run(m: Any, pc: int) -> int:
+        raise MacroAlarm(number, message)
+
+    return run
+
+
+def _literal_g(w: Word) -> float | None:
+    return w.value.value if w.letter == "G" and isinstance(w.value, Number) else None
+
+
+def compile_nc_block(cf: CompiledFile, block: Block, pc: int, nxt: int) -> Runner:
+    words = list(block.words)
+    for i, w in enumerate(words):
+        g = _literal_g(w)
+        if g in (65.0, 66.0):
+            return _macro_call(cf, words, i, g, nxt)
+    if any(_literal_g(w) == 67.0 for w in words):
+        rest = [w for w in words if _literal_g(w) != 67.0]
+        inner = _nc(cf, block, rest, nxt) if rest else None
+
+        def cancel(m: Any, pc: int) -> int:
+            m.cancel_modal_call()
+            return inner(m, pc) if inner is not None else nxt
+
+        return cancel
+    return _nc(cf, block, words, nxt)
+
+
+# ---------------------------------------------------------------- G65 / G66
+
+
+def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int) -> Runner:
+    name = "G65" if g == 65.0 else "G66"
+    for w in words[:at]:
+        return _raising(NC_AND_MACRO, f"{w.letter} before {name}: only N may precede {name} in its block")
+    after = words[at + 1 :]
+    for w in after:
+        if w.letter == "M" or w.letter == "O":
+            return _raising(NC_AND_MACRO, f"{name} may not share its block with an {w.letter} word")
+    dialect = cf.machine.dialect
+    if (
+        g == 65.0
+        and dialect.h_codes
+        and any(w.letter == "H" for w in after)
+        and not any(w.letter == "L" for w in after)
+    ):
+        return compile_h_code(cf, after, nxt)
+    p_word = next((w for w in after if w.letter == "P"), None)
+    l_word = next((w for w in after if w.letter == "L"), None)
+    args = [w for w in after if w.letter not in ("P", "L")]
+    for w in args:
+        if w.letter == "G":
+            return _raising(129, f"G after {name}: a G code cannot be an argument")
+    resolve = _program_resolver(cf, p_word, name)
+    count = _getter(cf, l_word)
+    arg_values = [(w.letter, _getter(cf, w)) for w in args]
+
+    def evaluate(m: Any) -> tuple[Any, Any, int]:
+        found = resolve(m)
+        arguments = map_arguments([(letter, get(m)) for letter, get in arg_values], dialect)
+        notes: list[str] = []
+        repeats = repeat_count(count(m), dialect, notes)
+        for text in notes + arguments.remarks:
+            m.note("call", text)
+        return found, arguments, repeats
+
+    if g == 65.0:
+
+        def g65(m: Any, pc: int) -> int:
+            found, arguments, repeats = evaluate(m)
+            return m.macro_call(found, arguments, repeats, pc, nxt, "G65")
+
+        return g65
+
+    def g66(m: Any, pc: int) -> int:
+        found, arguments, repeats = evaluate(m)
+        m.set_modal_call(found, arguments, repeats)
+        return nxt
+
+    return g66
+
+
+def _getter(cf: CompiledFile, w: Word | None) -> Any:
+    """A closure giving a word's value as written (no address rounding), or None."""
+    if w is None or w.value is None:
+        return lambda m: None
+    return cf.values.value(w.value)
+
+
+def _program_resolver(cf: CompiledFile, p_word: Word | None, name: str) -> Any:
+    """A closure finding the program that ``P`` names (alarm 076 when it is missing)."""
+    dialect = cf.machine.dialect
+    if p_word is None:
+        return _raising_getter(76, f"{name} needs P: the program to call")
+    if p_word.name is not None:
+        text = p_word.name
+        return lambda m: m.find_program_named(text)
+    value = p_word.value
+    if isinstance(value, Bracket) and dialect.bracket_names and isinstance(value.inner, Var):
+        get_bracket = cf.values.value(value.inner)
+        return lambda m: m.find_program(macro_program_number(get_bracket(m), dialect))
+    get = cf.values.value(value)  # type: ignore[arg-type]
+    return lambda m: m.find_program(macro_program_number(get(m), dialect))
+
+
+def _raising_getter(number: int, message: str) -> Any:
+    def fail(m: Any) -> Any:
+        raise MacroAlarm(number, message)
+
+    return fail
+
+
+# ---------------------------------------------------------------- NC blocks
+
+
+def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
+    """An NC block: words evaluated, NC executed, then M98 / M99 / M30 / M00 and call codes."""
+    items: list[tuple[str, float | None, Any]] = []  # (letter, rounded literal, or a getter)
+    for w in words:
+        is_const, v = cf.word_value(w)
+        items.append((w.letter, v, None) if is_const else (w.letter, None, v))
+    all_constant = all(get is None for _, _, get in items)
+    constant = [(letter, v) for letter, v, get in items if get is None]
+    # the program words (P, L, Q) of a call are not NC words
+    m_values = [v for letter, v in constant if letter == "M"]
+    dynamic_m = any(letter == "M" and get is not None for letter, _, get in items)
+    control = [v for v in m_values if v in CONTROL_M]
+    calls = cf.machine.settings.calls
+    call_codes = bool(calls)
+    file_path = cf.file.path
+
+    if all_constant and not control and not dynamic_m and not call_codes:
+        plain = [(letter, v) for letter, v in constant if v is not None]
+
+        def motion(m: Any, pc: int) -> int:
+            moved, skip_to = m.execute_nc(plain, file_path, pc)
+            if moved and m.modal_calls:
+                return m.modal_call(pc, nxt)
+            if skip_to is not None:
+                return m.skip_past_label(pc, skip_to)
+            return nxt
+
+        return motion
+
+    p_text = None
+    for w in words:
+        if w.letter == "P" and isinstance(w.value, Number):
+            p_text = w.value.text
+    p_name = next((w.name for w in words if w.letter == "P" and w.name is not None), None)
+    p_bracket_var = next(
+        (
+            w.value.inner
+            for w in words
+            if w.letter == "P" and isinstance(w.value, Bracket) and isinstance(w.value.inner, Var)
+        ),
+        None,
+    )
+    get_bracket = cf.values.value(p_bracket_var) if p_bracket_var is not None else None
+    dialect = cf.machine.dialect
+
+    def general(m: Any, pc: int) -> int:
+        values: list[tuple[str, float]] = []
+        for letter, const, get in items:
+            v = get(m) if get is not None else const
+            if v is not None:
+                values.append((letter, v))
+        ms = [v for letter, v in values if letter == "M"]
+        mcontrol = [v for v in ms if v in CONTROL_M]
+        call = m.call_code_for(values) if call_codes else None
+        if call is not None and call.call == "macro":
+            return m.code_macro_call(call, values, pc, nxt)
+        nc_words = values
+        if mcontrol and (98.0 in mcontrol or 99.0 in mcontrol or 198.0 in mcontrol):
+            nc_words = [(letter, v) for letter, v in values if letter not in ("P", "L", "Q")]
+        moved, skip_to = m.execute_nc(nc_words, file_path, pc)
+        if call is not None:
+            return m.code_subprogram_call(call, values, pc, nxt)
+        if 98.0 in mcontrol or 198.0 in mcontrol:
+            found, repeats, q = _subprogram_target(m, values, p_text, p_name, get_bracket, dialect)
+            return m.subprogram_call(found, repeats, q, pc, nxt, "M98")
+        if 99.0 in mcontrol:
+            p = next((v for letter, v in values if letter == "P"), None)
+            return m.return_from_call(pc, p)
+        if 30.0 in mcontrol or 2.0 in mcontrol:
+            return m.end_program(pc)
+        if 0.0 in mcontrol:
+            return m.pause("M00 program stop", nxt)
+        if moved and m.modal_calls:
+            return m.modal_call(pc, nxt)
+        if skip_to is not None:
+            return m.skip_past_label(pc, skip_to)
+        return nxt
+
+    return general
+
+
+def _subprogram_target(
+    m: Any, values: list[tuple[str, float]], p_text: str | None, p_name: str | None, get_bracket: Any, dialect: Any
+) -> tuple[Any, int, float | None]:
+    """(program, count, Q label) of an M98 block."""
+    words = dict(values)
+    notes: list[str] = []
+    q = words.get("Q")
+    if p_name is not None:
+        found = m.find_program_named(p_name)
+        repeats = repeat_count(words.get("L"), dialect, notes)
+    elif get_bracket is not None:
+        number, repeats = program_and_count(None, get_bracket(m), words.get("L"), dialect, notes)
+        found = m.find_program(number)
+    elif "P" not in words:
+        if q is None:
+            raise MacroAlarm(76, "M98 needs P (the program), or Q to call the current program")
+        found = m.frame.found
+        repeats = repeat_count(words.get("L"), dialect, notes)
+    else:
+        number, repeats = program_and_count(p_text, words["P"], words.get("L"), dialect, notes)
+        found = m.find_program(number)
+    for text in notes:
+        m.note("call", text)
+    return found, repeats, q

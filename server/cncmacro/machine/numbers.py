@@ -1,0 +1,108 @@
+"""Numbers as the control computes them (SEMANTICS.md §3): FANUC rounding, never Python's.
+
+``round_half_away`` is ROUND (2.5 -> 3, -2.5 -> -3); ``fix`` truncates toward zero and ``fup``
+rounds away from zero. ``to_increment`` rounds an axis value to its least increment (0.001 mm,
+0.0001 inch), deciding ties on the decimal value that was written, so that 1.0005 becomes
+1.001 as on the control and not 1.000 as binary floating point would have it. ``bcd`` and
+``bin_`` convert between binary and binary-coded decimal. Every function raises
+``MacroAlarm`` for a value the control would refuse.
+"""
+
+from __future__ import annotations
+
+import math
+from decimal import ROUND_HALF_UP, Decimal, InvalidOperation
+
+from ..dialects.alarms import ARGUMENT_RANGE, OVERFLOW
+from .alarms import MacroAlarm
+
+# The largest magnitude a variable holds (FANUC: about 10**47); beyond it is alarm 111.
+MAX_VALUE = 1e47
+
+
+def round_half_away(x: float) -> float:
+    """Round to a whole number, halves away from zero (never banker's rounding)."""
+    if x >= 0:
+        f = math.floor(x)
+        return float(f + 1 if x - f >= 0.5 else f)
+    f = math.floor(-x)
+    return -float(f + 1 if -x - f >= 0.5 else f)
+
+
+def to_int(x: float) -> int:
+    """The integer an integer address (M, S, T, H, D, P, L, N) receives."""
+    if not -MAX_VALUE <= x <= MAX_VALUE:
+        raise MacroAlarm(OVERFLOW, f"value {x} is too large for an address")
+    return int(round_half_away(x))
+
+
+def fix(x: float) -> float:
+    """FIX: toward zero (FIX[-1.7] = -1)."""
+    return float(math.trunc(x))
+
+
+def fup(x: float) -> float:
+    """FUP: away from zero (FUP[-1.2] = -2, FUP[1.2] = 2)."""
+    return float(math.ceil(x)) if x >= 0 else float(math.floor(x))
+
+
+def to_increment(x: float, places: int = 3) -> float:
+    """Round ``x`` to ``places`` decimals, halves away from zero, judged on its shortest
+    decimal form (what was written or computed, as the control sees it)."""
+    scaled = x * _SCALE[places]
+    f = math.floor(scaled)
+    frac = scaled - f
+    if abs(frac - 0.5) > 1e-6:  # not near a tie: binary arithmetic decides correctly
+        return (f + 1 if frac > 0.5 else f) / _SCALE[places]
+    try:
+        d = Decimal(repr(x)).quantize(_QUANT[places], rounding=ROUND_HALF_UP)
+    except InvalidOperation:
+        raise MacroAlarm(OVERFLOW, f"value {x} is out of range") from None
+    return float(d)
+
+
+_SCALE = {1: 10.0, 3: 1000.0, 4: 10000.0}
+_QUANT = {1: Decimal("0.1"), 3: Decimal("0.001"), 4: Decimal("0.0001")}
+
+
+def bcd(x: float) -> float:
+    """BCD[x]: a binary number to binary-coded decimal (BCD[25] = 37, i.e. 0x25)."""
+    n = to_int(x)
+    if n < 0:
+        raise MacroAlarm(ARGUMENT_RANGE, f"BCD of a negative number ({n})")
+    return float(int(str(n), 16))
+
+
+def bin_(x: float) -> float:
+    """BIN[x]: binary-coded decimal to binary (BIN[37] = 25); a digit above 9 is alarm 119."""
+    n = to_int(x)
+    if n < 0:
+        raise MacroAlarm(ARGUMENT_RANGE, f"BIN of a negative number ({n})")
+    digits = f"{n:x}"
+    if not digits.isdigit():
+        raise MacroAlarm(ARGUMENT_RANGE, f"BIN[{n}]: {n} is not binary-coded decimal")
+    return float(int(digits))
+
+
+def format_value(x: float | None, digits: int | None, decimals: int | None) -> str:
+    """How DPRNT prints ``#i[ab]``: ``a`` digits before the point and ``b`` after it,
+    rounded; vacant prints as 0. Without a format the value prints as the control shows it."""
+    v = 0.0 if x is None else x
+    if digits is None:
+        return format_plain(v)
+    b = decimals or 0
+    text = f"{abs(v):.{b}f}"
+    whole, _, frac = text.partition(".")
+    whole = whole[-digits:] if digits > 0 else ""
+    sign = "-" if v < 0 and float(text) != 0 else ""
+    return f"{sign}{whole or '0'}" + (f".{frac}" if b else "")
+
+
+def format_plain(v: float | None) -> str:
+    """A value for people: vacant, a whole number without point, or up to 6 decimals."""
+    if v is None:
+        return "<vacant>"
+    if v == int(v) and abs(v) < 1e15:
+        return str(int(v))
+    text = f"{v:.6f}".rstrip("0").rstrip(".")
+    return text if text not in ("-0", "") else "0"

@@ -1,0 +1,68 @@
+"""Keeping ``#500–#999`` between runs: a small JSON file, written atomically.
+
+The file is written to a temporary file in the same folder, flushed and fsynced, then renamed
+over the old one, so that a run killed at any moment leaves either the old file or the new
+one, never a torn one. A missing or unreadable file means every persistent variable is
+vacant; a damaged one is reported and ignored, never half-read.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from pathlib import Path
+
+FIRST, LAST = 500, 999
+
+
+class PersistentFileError(ValueError):
+    """The file exists but does not hold persistent variables."""
+
+
+def load_persistent(path: Path) -> dict[int, float]:
+    """The stored values (vacant ones are absent). ``PersistentFileError`` if damaged."""
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        return {}
+    except OSError as e:
+        raise PersistentFileError(f"{path}: cannot read the persistent variables ({e.strerror or e})") from e
+    try:
+        data = json.loads(text)
+        values = data["variables"] if isinstance(data, dict) and "variables" in data else data
+        out = {int(k): float(v) for k, v in values.items() if v is not None}
+    except (ValueError, TypeError, AttributeError, KeyError) as e:
+        raise PersistentFileError(f"{path}: not a persistent-variable file ({e})") from e
+    return {k: v for k, v in out.items() if FIRST <= k <= LAST}
+
+
+def save_persistent(path: Path, values: dict[int, float]) -> None:
+    """Write the values atomically (temporary file, fsync, rename)."""
+    payload = {"variables": {str(k): values[k] for k in sorted(values) if FIRST <= k <= LAST}}
+    text = json.dumps(payload, indent=1) + "\n"
+    folder = path.parent
+    folder.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as f:
+            f.write(text)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+    try:  # make the rename itself durable
+        dir_fd = os.open(folder, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(dir_fd)
+    except OSError:
+        pass
+    finally:
+        os.close(dir_fd)

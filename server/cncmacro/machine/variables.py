@@ -1,0 +1,169 @@
+"""Reading and writing any variable by number (SEMANTICS.md §2, §6, §8).
+
+``L`` is the current level's locals (index 1–33), ``C`` the commons and persistent variables
+(index 100–999), ``S`` the stored system variables (offsets, counters, signals). Live system
+variables (modal codes, positions, the clock) are computed from the machine state whenever
+they are read; which is which comes from the dialect's table, row by row. Compiled blocks read
+locals and commons directly; everything else comes through here.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+from typing import TYPE_CHECKING
+
+from ..dialects.alarms import OVERFLOW, VARIABLE_NUMBER, WRITE_PROTECTED
+from ..dialects.tables import SystemVariable
+from .alarms import MacroAlarm
+from .numbers import MAX_VALUE, round_half_away
+
+if TYPE_CHECKING:
+    from ..dialects import Dialect
+    from .expressions import VariableKinds
+
+Value = float | None
+
+
+class StopRequest(Exception):
+    """Raised by ``#3006=n(text)``: the run pauses with ``message`` after this block."""
+
+    def __init__(self, message: str) -> None:
+        super().__init__(message)
+        self.message = message
+
+
+class VariableAccess:
+    """The variable part of the machine (a mixin of ``Machine``)."""
+
+    dialect: Dialect
+    kinds: VariableKinds
+    L: list[Value]
+    C: list[Value]
+    S: dict[int, Value]
+    modal: dict[str, float]
+    codes: dict[str, Value]
+    clock: float
+    start_date: int
+    start_time: int
+    written_system: set[int]
+
+    def _row(self, n: int) -> SystemVariable:
+        row = self.dialect.system_variable(n)
+        if row is None:
+            raise MacroAlarm(VARIABLE_NUMBER, f"#{n} does not exist on {self.dialect.title}")
+        return row
+
+    # ---------------------------------------------------------------- any variable
+    def variable_number(self, index: Value) -> int:
+        """The number ``#[index]`` names: rounded half away from zero (vacant is #0)."""
+        if index is None:
+            return 0
+        if not -MAX_VALUE <= index <= MAX_VALUE:
+            raise MacroAlarm(VARIABLE_NUMBER, "variable number out of range")
+        return int(round_half_away(index))
+
+    def read(self, index: Value) -> Value:
+        """The value of ``#[index]``."""
+        n = self.variable_number(index)
+        kind = self.kinds.kind(n)
+        if kind == "local":
+            return self.L[n]
+        if kind in ("common", "persistent"):
+            return self.C[n]
+        if kind == "vacant":
+            return None
+        if kind == "indirect9":
+            return self.read(self.C[n - 9000])
+        if kind == "system":
+            return self.read_system(n)
+        raise MacroAlarm(VARIABLE_NUMBER, f"#{n} does not exist on {self.dialect.title}")
+
+    def write(self, index: Value, value: Value, message: str | None = None) -> None:
+        """``#[index] = value``, with every check the control makes."""
+        n = self.variable_number(index)
+        if value is not None and not -MAX_VALUE <= value <= MAX_VALUE:
+            raise MacroAlarm(OVERFLOW, f"#{n} = {value}: the value is out of range")
+        kind = self.kinds.kind(n)
+        if kind == "local":
+            self.L[n] = value
+        elif kind in ("common", "persistent"):
+            self.C[n] = value
+        elif kind == "vacant":
+            raise MacroAlarm(WRITE_PROTECTED, "#0 is always vacant and cannot be written")
+        elif kind == "indirect9":
+            self.write(self.C[n - 9000], value, message)
+        elif kind == "system":
+            self.write_system(n, value, message)
+        else:
+            raise MacroAlarm(VARIABLE_NUMBER, f"#{n} does not exist on {self.dialect.title}")
+
+    # ---------------------------------------------------------------- system variables
+    def read_system(self, n: int) -> Value:
+        row = self._row(n)
+        if row.access == "w":
+            raise MacroAlarm(VARIABLE_NUMBER, f"#{n} can only be written, not read")
+        source = row.source
+        k = n - row.first
+        if source == "store":
+            return self.S.get(n, row.default)
+        if source == "alias":
+            target = int(row.param) + k
+            target_row = self.dialect.system_variable(target)
+            return self.S.get(target, target_row.default if target_row else 0.0)
+        if source == "modal":
+            return self.modal.get(row.param, row.default)
+        if source == "code":
+            return self.codes.get(row.param, row.default)
+        if source == "position":
+            return self.position_value(row.param, k)
+        if source == "timer":
+            return self.timer_value(n, row.param)
+        if source == "date":
+            return self.S.get(n, float(self.date_time()[0]))
+        if source == "time":
+            return self.S.get(n, float(self.date_time()[1]))
+        return self.S.get(n, row.default)
+
+    def write_system(self, n: int, value: Value, message: str | None = None) -> None:
+        row = self._row(n)
+        if row.access == "r":
+            raise MacroAlarm(WRITE_PROTECTED, f"#{n} is read-only")
+        source = row.source
+        if source == "alarm":
+            number = self.dialect.macro_alarm_base + int(round_half_away(value or 0.0))
+            raise MacroAlarm(number, message or f"macro alarm #{n}={round_half_away(value or 0.0):g}")
+        if source == "stop":
+            raise StopRequest(message or f"#{n}={round_half_away(value or 0.0):g}")
+        self.written_system.add(n)
+        if source == "alias":
+            self.S[int(row.param) + (n - row.first)] = value
+        elif source == "timer":
+            self.set_timer(n, row.param, value or 0.0)
+        else:
+            self.S[n] = value
+
+    # ---------------------------------------------------------------- the clock
+    def timer_value(self, n: int, unit: str) -> float:
+        base = self.S.get(n, 0.0) or 0.0
+        seconds = self.clock - self.timer_marks.get(n, 0.0)
+        scale = {"ms": 1000.0, "s": 1.0, "h": 1.0 / 3600.0}.get(unit, 1.0)
+        return base + seconds * scale
+
+    def set_timer(self, n: int, unit: str, value: float) -> None:
+        self.S[n] = value
+        self.timer_marks[n] = self.clock
+
+    timer_marks: dict[int, float]
+
+    def date_time(self) -> tuple[int, int]:
+        """(YYYYMMDD, HHMMSS) at the current simulated time."""
+        d = self.start_date
+        t = self.start_time
+        start = _dt.datetime(d // 10000, max(1, d // 100 % 100), max(1, d % 100), t // 10000 % 24, t // 100 % 100 % 60,
+                             t % 100 % 60)  # fmt: skip
+        now = start + _dt.timedelta(seconds=self.clock)
+        return now.year * 10000 + now.month * 100 + now.day, now.hour * 10000 + now.minute * 100 + now.second
+
+    if TYPE_CHECKING:
+
+        def position_value(self, which: str, axis: int) -> Value: ...  # provided by ``Motion``
