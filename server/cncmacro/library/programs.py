@@ -14,7 +14,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..syntax.block_parser import BlockCache
+from ..syntax.block_parser import BlockCache, collector_paused
 from ..syntax.document import split_lines
 from ..syntax.program import Program, ProgramUnit, build_program
 from .dialect_choice import dialect_from_text
@@ -56,8 +56,10 @@ class FoundProgram:
 def load_text(path: str, text: str, cache: BlockCache | None = None) -> LoadedFile:
     """Parse a file's text into a ``LoadedFile``."""
     lines = split_lines(text)
-    blocks = (cache or _cache).get_many(lines)
-    return LoadedFile(path, lines, build_program(blocks), dialect_from_text(lines))
+    with collector_paused():
+        blocks = (cache or _cache).get_many(lines)
+        program = build_program(blocks)
+    return LoadedFile(path, lines, program, dialect_from_text(lines))
 
 
 _cache = BlockCache()

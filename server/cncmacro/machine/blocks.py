@@ -10,6 +10,7 @@ lookups in the syntax tree. Jumps are resolved once per (line, label) and cached
 
 from __future__ import annotations
 
+import re
 from bisect import bisect_left, bisect_right
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
@@ -35,6 +36,7 @@ if TYPE_CHECKING:
 Runner = Callable[[Any, int], int]
 
 INTEGER_LETTERS = frozenset("MSTHDNOPLBEQ")
+_ALARM_IN_MESSAGE = re.compile(r"\(alarm (\d+)\)")
 MAX_LOOP_DEPTH = 3
 
 
@@ -82,6 +84,14 @@ class CompiledFile:
         if pc < len(blocks) and not self.skipped(blocks[pc]):
             return pc
         return self.next_line(pc)
+
+    def entry(self, unit: Any) -> int:
+        """The first line a program runs: past its O header unless the header line also
+        holds statements."""
+        block = self.file.program.blocks[unit.start] if unit.start < len(self.file.program.blocks) else None
+        if block is not None and block.program is not None and not (block.words or block.statements):
+            return self.next_line(unit.start)
+        return self.first_line(unit.start)
 
     def runner(self, pc: int) -> Runner:
         c = self.code[pc]
@@ -149,19 +159,19 @@ class CompiledFile:
             return lambda m, pc: nxt
         if block.has_error:
             problem = next(p for p in block.problems if p.severity == "error")
-            return _raising(STATEMENT_FORMAT, f"the block does not parse: {problem.message}")
+            said = _ALARM_IN_MESSAGE.search(problem.message)
+            number = int(said.group(1)) if said else STATEMENT_FORMAT
+            return _raising(number, f"the block does not parse: {problem.message}")
         if block.program is not None:
             return self._header(block, pc, nxt)
         return self._body(block, pc, nxt)
 
     def _header(self, block: Block, pc: int, nxt: int) -> Runner:
         rest = self._body(block, pc, nxt) if (block.words or block.statements or block.label is not None) else None
-        number = float(block.program or 0)
 
         def header(m: Any, pc: int) -> int:
             if m.frame.found.unit.start != pc:
                 return m.end_of_program(pc)  # ran into the next program's header
-            m.codes["O"] = number
             return rest(m, pc) if rest is not None else nxt
 
         return header

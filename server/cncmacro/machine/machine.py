@@ -155,9 +155,9 @@ class Machine(VariableAccess, Motion):
     def start(self, found: FoundProgram) -> None:
         """Make ``found`` the main program (level 0) and get ready to run its first block."""
         cf = self.compiled_file(found.file)
-        first = cf.first_line(found.unit.start)
+        first = cf.entry(found.unit)
         self.frames = [Frame(found, cf, first, "main", self.L, 0, start_pc=first)]
-        self.codes["O"] = float(found.unit.number) if found.unit.number is not None else None
+        self._program_number()
         self.status = READY
 
     def start_file(self, path: str, text: str | None = None) -> FoundProgram:
@@ -324,7 +324,7 @@ class Machine(VariableAccess, Motion):
         caller = self.frames[-1]
         caller.pc = pc
         cf = self.compiled_file(found.file)
-        start = cf.first_line(found.unit.start)
+        start = cf.entry(found.unit)
         local: list[Value] = [None] * 34
         for k, v in arguments.values.items():
             local[k] = v
@@ -332,6 +332,7 @@ class Machine(VariableAccess, Motion):
                       arguments.values, arguments.letters, [], modal)  # fmt: skip
         self.frames.append(frame)
         self.L = local
+        self._program_number()
         return -1
 
     def subprogram_call(self, found: FoundProgram, repeats: int, q: float | None, pc: int, nxt: int, kind: str) -> int:
@@ -340,9 +341,10 @@ class Machine(VariableAccess, Motion):
         caller = self.frames[-1]
         caller.pc = pc
         cf = self.compiled_file(found.file)
-        start = cf.label_from_start(found.unit, int(q)) if q is not None else cf.first_line(found.unit.start)
+        start = cf.label_from_start(found.unit, int(q)) if q is not None else cf.entry(found.unit)
         frame = Frame(found, cf, start, kind, caller.locals, caller.macro_level, pc, nxt, repeats - 1, start)
         self.frames.append(frame)
+        self._program_number()
         return -1
 
     def return_from_call(self, pc: int, p: float | None) -> int:
@@ -368,6 +370,7 @@ class Machine(VariableAccess, Motion):
         self.frames.pop()
         caller = self.frames[-1]
         self.L = caller.locals
+        self._program_number()
         if p is not None:
             target = caller.code.label_in_caller(caller.found.unit, frame.call_line, int(p))
             caller.loops[:] = [d for d in caller.loops if d < target <= caller.code.do_end.get(d, -1)]
@@ -375,6 +378,10 @@ class Machine(VariableAccess, Motion):
         else:
             caller.pc = frame.return_pc
         return -1
+
+    def _program_number(self) -> None:
+        number = self.frames[-1].found.unit.number
+        self.codes["O"] = float(number) if number is not None else None
 
     def end_of_program(self, pc: int) -> int:
         """Ran off the end of a program: a called one returns, the main one ends."""

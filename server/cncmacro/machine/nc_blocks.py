@@ -60,8 +60,8 @@ def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int
         return _raising(NC_AND_MACRO, f"{w.letter} before {name}: only N may precede {name} in its block")
     after = words[at + 1 :]
     for w in after:
-        if w.letter == "M" or w.letter == "O":
-            return _raising(NC_AND_MACRO, f"{name} may not share its block with an {w.letter} word")
+        if w.letter == "O":  # M after G65 is the argument #13; G is alarm 129 below
+            return _raising(NC_AND_MACRO, f"{name} may not share its block with an O word")
     dialect = cf.machine.dialect
     if (
         g == 65.0

@@ -1,0 +1,284 @@
+"""SEMANTICS.md §5 "Calls", run on the interpreter: G65 arguments (specifications I and II),
+L, G66/G67, M98 counts and Q, M99 and M99 Pn, nesting, and finding programs across files."""
+
+from __future__ import annotations
+
+import pytest
+
+from running import alarm, final, lines, run
+
+MACRO_ECHO = lines("O9000", *(f"#{100 + k}=#{k}" for k in range(1, 34)), "M99")
+
+
+def locals_passed(call: str, dialect: str = "fanuc") -> dict[int, float]:
+    """The locals a called macro saw, as {local: value}."""
+    v = final(lines(call, "M30", MACRO_ECHO), dialect)
+    return {k - 100: x for k, x in v.items() if 101 <= k <= 133}
+
+
+def test_argument_specification_i():
+    got = locals_passed("G65 P9000 A1 B2 C3 D7 E8 F9 H11 M13 Q17 R18 S19 T20 U21 V22 W23 X24 Y25 Z26")
+    assert got == {1: 1, 2: 2, 3: 3, 7: 7, 8: 8, 9: 9, 11: 11, 13: 13, 17: 17, 18: 18, 19: 19, 20: 20, 21: 21,
+                   22: 22, 23: 23, 24: 24, 25: 25, 26: 26}  # fmt: skip
+
+
+def test_seed_000_argument_specification_ii():
+    got = locals_passed("G65 P9000 A1 B2 C3 I14 J15 I6 J7 K9 K11 K12 J30", "gsk980tdi")
+    assert got == {1: 1, 2: 2, 3: 3, 4: 14, 5: 15, 7: 6, 8: 7, 6: 9, 9: 11, 12: 12, 11: 30}
+
+
+def test_seed_001_argument_specification_ii():
+    got = locals_passed("G65 P9000 J12 K22 J25 I33 J32", "gsk980tdi")
+    assert got == {5: 12, 6: 22, 8: 25, 4: 33, 11: 32}
+
+
+def test_mixing_specifications_a_later_word_wins():
+    # FANUC example: A1. B2. I-3. I4. D5. -> #4=-3, #7=5 (D after the second I)
+    got = locals_passed("G65 P9000 A1. B2. I-3. I4. D5.")
+    assert got == {1: 1, 2: 2, 4: -3, 7: 5}
+
+
+def test_ten_sets_of_ijk_fill_up_to_33():
+    words = " ".join(f"I{k} J{k} K{k}" for k in range(1, 11))
+    got = locals_passed(f"G65 P9000 {words}")
+    assert got[31] == 10 and got[32] == 10 and got[33] == 10 and got[4] == 1
+
+
+def test_ijk_out_of_order_is_accepted_with_a_note_on_fanuc():
+    m = run(lines("G65 P9000 J1 I2", "M30", MACRO_ECHO))
+    assert m.status == "completed" and m.variables()[104] == 2 and m.variables()[105] == 1
+    assert any("order" in n.message for n in m.notes)
+    m = run(lines("G65 P9000 J1 I2", "M30", MACRO_ECHO), "gsk980tdi")
+    assert not any("order" in n.message for n in m.notes)
+
+
+def test_vacant_argument_values():
+    # fanuc: the argument is not passed (its local stays vacant); gsk: it is 0
+    assert 24 not in locals_passed("G65 P9000 X#1 Y2")
+    assert locals_passed("G65 P9000 X#1 Y2", "gsk980tdi")[24] == 0
+
+
+@pytest.mark.parametrize("word", ["G1", "N5", "O5"])
+def test_g_n_o_are_not_arguments(word):
+    number, line = alarm(lines(f"G65 P9000 A1 {word}", "M30", MACRO_ECHO))
+    assert line == 1 and number in (127, 129)
+
+
+def test_only_n_may_precede_g65():
+    assert alarm(lines("G01 G65 P9000 A1", "M30", MACRO_ECHO))[0] == 127
+    assert alarm(lines("X5 G65 P9000 A1", "M30", MACRO_ECHO))[0] == 127
+    assert alarm(lines("M03 G65 P9000 A1", "M30", MACRO_ECHO))[0] == 127
+    assert locals_passed("G65 P9000 A1 M03")[13] == 3  # after G65, M is the argument #13
+    assert final(lines("N10 G65 P9000 A1", "M30", MACRO_ECHO))[101] == 1
+
+
+def test_locals_are_per_level_and_restored_on_m99():
+    program = lines("#1=5", "#2=6", "G65 P9001 A1", "#100=#1", "#101=#2", "M30", "O9001", "#2=99", "#102=#1", "M99")
+    v = final(program)
+    assert v[100] == 5 and v[101] == 6 and v[102] == 1
+
+
+def test_l_repeats_the_call_with_fresh_arguments():
+    program = lines("G65 P9002 L3 A2", "M30", "O9002", "#100=#100+#1", "#1=#1+10", "M99")
+    assert final(program)[100] == 6
+
+
+def test_l_from_a_variable():
+    program = lines("#5=4", "G65 P9002 L#5 A1", "M30", "O9002", "#100=#100+#1", "M99")
+    assert final(program)[100] == 4
+
+
+def test_l_below_one_is_an_alarm():
+    program = lines("#5=0", "G65 P9002 L#5 A1", "M30", "O9002", "M99")
+    assert alarm(program)[1] == 2
+    assert alarm(program, "gsk980tdi")[1] == 2
+
+
+def test_l_above_9999_is_clamped_on_gsk_and_an_alarm_on_fanuc():
+    program = lines("G65 P9002 L10000", "M30", "O9002", "#100=#100+1", "M99")
+    m = run(program, "gsk980tdi", max_blocks=1_000_000)
+    assert m.status == "completed" and m.variables()[100] == 9999
+    assert any("9999" in n.message for n in m.notes)
+    assert alarm(program)[1] == 1
+
+
+def test_g66_calls_after_every_move_and_g67_cancels():
+    program = lines(
+        "G90 G00 X0 Y0",
+        "G66 P9003 A7",
+        "G00 X10",  # calls
+        "#110=#110",  # no move: no call
+        "G01 Y5 F100",  # calls
+        "G67",
+        "G00 X20",  # no call
+        "M30",
+        "O9003",
+        "#100=#100+1",
+        "#101=#1",
+        "#102=#5001",  # the macro sees the position the move reached
+        "G00 Z1",  # a modally called macro does not call itself
+        "M99",
+    )
+    v = final(program)
+    assert v[100] == 2 and v[101] == 7 and v[102] == 10
+
+
+def test_g66_block_itself_calls_nothing():
+    v = final(lines("G66 P9003 A1 X5", "G67", "M30", "O9003", "#100=#100+1", "M99"))
+    assert 100 not in v
+
+
+def test_m30_cancels_the_modal_call():
+    m = run(lines("G66 P9003", "M30", "O9003", "M99"))
+    assert m.status == "completed" and not m.modal_calls
+
+
+def test_m98_count_in_p():
+    program = lines("M98 P30040", "M30", "O0040", "#100=#100+1", "#1=#1+1", "M99")
+    v = final(program)
+    assert v[100] == 3 and v[1] == 3  # M98 keeps the caller's locals
+
+
+def test_m98_l_and_leading_zeros():
+    assert final(lines("M98 P0040 L4", "M30", "O0040", "#100=#100+1", "M99"))[100] == 4
+    assert final(lines("M98 P00020040", "M30", "O0040", "#100=#100+1", "M99"))[100] == 2
+
+
+def test_m98_count_in_both_p_and_l_is_alarm_293_on_gsk():
+    program = lines("M98 P20040 L3", "M30", "O0040", "M99")
+    assert alarm(program, "gsk980tdi") == (293, 1)
+
+
+def test_m98_q_starts_at_a_label():
+    program = lines("M98 P0040 Q20", "M30", "O0040", "#100=1", "N20 #101=1", "M99")
+    v = final(program)
+    assert 100 not in v and v[101] == 1
+
+
+def test_m98_after_the_motion_of_its_block():
+    m = run(lines("G90 G01 X100 F100 M98 P0040", "M30", "O0040", "#100=#5001", "M99"))
+    assert m.variables()[100] == 100
+
+
+def test_m99_p_returns_to_a_label_in_the_caller():
+    program = lines("M98 P0040", "#100=1", "N30 #101=1", "M30", "O0040", "M99 P30")
+    v = final(program)
+    assert 100 not in v and v[101] == 1
+
+
+@pytest.mark.parametrize(
+    ("before", "after", "expected"),
+    [
+        # seed 002 注2: both before the M98 -> the later one; both after -> the earlier one;
+        # one before and one after -> the later one (the one after)
+        (["N30 #101=1", "GOTO 99", "N30 #101=2", "GOTO 99"], [], 2),
+        ([], ["N30 #101=3", "GOTO 99", "N30 #101=4", "GOTO 99"], 3),
+        (["N30 #101=5", "GOTO 99"], ["N30 #101=6", "GOTO 99"], 6),
+    ],
+)
+def test_seed_002_m99_p_with_duplicate_labels(before, after, expected):
+    head = ["GOTO 5", *before, "N5 M98 P0040", *after, "N99 M30"]
+    program = lines(*head, "O0040", "M99 P30")
+    assert final(program)[101] == expected
+
+
+def test_m99_in_a_main_program_restarts_it():
+    m = run(lines("#100=#100+1", "M99"), max_blocks=100)
+    assert m.status == "limit" and m.C[100] == 50
+
+
+def test_macro_nesting_limit_is_4_levels():
+    def chain(depth: int) -> str:
+        body = [f"G65 P{9101}"]
+        for k in range(depth):
+            body += [f"O{9101 + k}", f"G65 P{9102 + k}" if k + 1 < depth else "#100=1", "M99"]
+        return lines(body[0], "M30", *body[1:])
+
+    assert final(chain(4))[100] == 1
+    assert alarm(chain(5)) == (122, 13)  # the G65 that would open a 5th level
+
+
+@pytest.mark.parametrize(("dialect", "limit"), [("fanuc", 10), ("gsk980tdi", 12)])
+def test_subprogram_nesting_limit(dialect, limit):
+    def chain(depth: int) -> str:
+        body = []
+        for k in range(depth):
+            body += [f"O{100 + k}", f"M98 P{101 + k}" if k + 1 < depth else "#100=1", "M99"]
+        return lines("M98 P100", "M30", *body)
+
+    assert final(chain(limit), dialect)[100] == 1
+    assert alarm(chain(limit + 1), dialect)[0] == 77
+
+
+def test_recursion_stops_at_the_nesting_limit():
+    assert alarm(lines("G65 P9500", "M30", "O9500", "G65 P9500", "M99"))[0] == 122
+    assert alarm(lines("M98 P500", "M30", "O0500", "M98 P500", "M99"))[0] == 77
+
+
+def test_program_not_found_is_alarm_76():
+    assert alarm(lines("G65 P1234", "M30")) == (76, 1)
+    assert alarm(lines("M98 P1234", "M30")) == (76, 1)
+
+
+def test_programs_are_found_across_files(tmp_path):
+    (tmp_path / "O9100.nc").write_text("O9100\n#100=#1\nM99\n")
+    (tmp_path / "9200.NC").write_text("#101=#2\nM99\n")  # named by its file, no header
+    (tmp_path / "lib.nc").write_text("O9300\n#102=#3\nM99\n")  # found by its header
+    (tmp_path / "O9400.CNC").write_text("O9400 (WRONG NAME INSIDE)\nM99\n")
+    v = final(lines("G65 P9100 A1", "G65 P9200 B2", "G65 P9300 C3", "M30"), folder=tmp_path)
+    assert v[100] == 1 and v[101] == 2 and v[102] == 3
+
+
+def test_gsk_bracketed_program_names(tmp_path):
+    (tmp_path / "CUT.CNC").write_text("#100=#1\nM99\n")
+    (tmp_path / "O1004.nc").write_text("O1004\n#101=#101+1\nM99\n")
+    (tmp_path / "螺纹切削.nc").write_text("#102=1\nM99\n".encode("gb18030").decode("gb18030"), encoding="gb18030")
+    program = lines("G65 P[CUT] A5", "M98 P[O1004] L3", "#110=1004", "G65 P[#110]", "G65 P[螺纹切削]", "M30")
+    v = final(program, "gsk980tdi", folder=tmp_path)
+    assert v[100] == 5 and v[101] == 4 and v[102] == 1
+
+
+def test_gsk_p_from_a_variable_with_too_many_digits_is_alarm_291(tmp_path):
+    # seed 001: #100=21234 -> alarm 291
+    assert alarm(lines("#100=21234", "G65 P[#100] L2", "M30"), "gsk980tdi", folder=tmp_path) == (291, 2)
+    assert alarm(lines("#100=21234", "G65 P#100", "M30"), "gsk980tdi")[0] == 291
+
+
+@pytest.mark.parametrize("name", ["../secret", "..", "a/../secret", "/etc/passwd", "sub\\secret"])
+def test_a_path_in_a_program_name_is_never_read(tmp_path, name):
+    from cncmacro.library.programs import ProgramLibrary
+
+    (tmp_path / "secret.nc").write_text("#100=1\nM99\n")
+    inner = tmp_path / "work"
+    inner.mkdir()
+    (inner / "OK.nc").write_text("M99\n")
+    library = ProgramLibrary()
+    near = library.add_text(str(inner / "MAIN.nc"), "M30\n")
+    assert library.find_name(name, near) is None
+    assert library.find_name("secret", near) is None  # not in the caller's folder
+    assert library.find_name("OK", near) is not None
+
+
+def test_macro_call_codes_from_the_machine_file():
+    from cncmacro.library.machine_file import CallCode
+
+    calls = {"G100": CallCode(9010, "macro"), "M50": CallCode(9020, "macro"), "M60": CallCode(9001, "subprogram")}
+    program = lines(
+        "#1=77",
+        "G100 X5 Y6",
+        "M50 A3",
+        "M60",
+        "M30",
+        "O9010",
+        "#100=#24+#25",
+        "G100",  # inside a G-code call a G code is an ordinary code
+        "M99",
+        "O9020",
+        "#101=#1",
+        "M99",
+        "O9001",
+        "#102=#1",  # a subprogram call keeps the caller's locals
+        "M99",
+    )
+    v = final(program, calls=calls)
+    assert v[100] == 11 and v[101] == 3 and v[102] == 77

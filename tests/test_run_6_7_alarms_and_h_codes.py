@@ -1,0 +1,126 @@
+"""SEMANTICS.md §6 "Alarms and messages" and §7 "GSK macro A form: G65 Hm P#i Q#j R#k", run on
+the interpreter."""
+
+from __future__ import annotations
+
+import pytest
+
+from running import alarm, final, lines, machine, run
+
+
+@pytest.mark.parametrize(("dialect", "base"), [("fanuc", 3000), ("gsk980tdi", 5900)])
+def test_3000_numbering_and_message(dialect, base):
+    m = run(lines("#1=0", "IF[#24 EQ #0] THEN #3000=12(X MISSING)", "M30"), dialect)
+    assert m.status == "alarm" and m.alarm.number == base + 12 and m.alarm.message == "X MISSING"
+    assert m.alarm.line == 1
+
+
+def test_alarm_carries_the_call_chain():
+    program = lines("G65 P9100 A1", "M30", "O9100", "M98 P9200", "M99", "O9200", "#3000=1(DEEP)", "M99")
+    m = run(program)
+    assert m.alarm.number == 3001 and m.alarm.line == 6
+    assert [(c.program, c.line, c.how) for c in m.alarm.chain] == [
+        ("MAIN", 0, "main"),
+        ("O9100", 3, "G65"),
+        ("O9200", 6, "M98"),
+    ]
+
+
+def test_3006_pauses_with_its_message_and_resumes():
+    m = machine(lines("#1=1", "#3006=1(CHECK TOOL)", "#2=2", "M30"))
+    assert m.run() == "paused" and m.message == "CHECK TOOL"
+    assert m.frame.pc == 2 and m.L[2] is None
+    m.resume()
+    assert m.run() == "completed" and m.L[2] == 2
+
+
+def test_m00_pauses_and_resumes():
+    m = machine(lines("#1=1", "M00", "#2=2", "M30"))
+    assert m.run() == "paused"
+    m.resume()
+    assert m.run() == "completed" and m.L[2] == 2
+
+
+def test_3000_cannot_be_read_on_gsk():
+    assert alarm(lines("#1=#3000", "M30"), "gsk980tdi")[1] == 1
+
+
+@pytest.mark.parametrize(
+    ("dialect", "number"), [("fanuc", 5001), ("fanuc", 4120), ("gsk980tdi", 4001), ("fanuc", 3011)]
+)
+def test_read_only_system_variables_are_alarm_116(dialect, number):
+    assert alarm(lines(f"#{number}=1", "M30"), dialect) == (116, 1)
+
+
+# ---------------------------------------------------------------- §7 H codes
+
+
+@pytest.mark.parametrize(
+    ("h", "q", "r", "expected"),
+    [
+        ("01", "7", "0", 7),
+        ("02", "7", "5", 12),
+        ("03", "7", "5", 2),
+        ("04", "7", "5", 35),
+        ("05", "35", "5", 7),
+        ("11", "12", "3", 15),
+        ("12", "12", "10", 8),
+        ("13", "12", "10", 6),
+        ("21", "16", "0", 4),
+        ("22", "-4", "0", 4),
+        ("23", "-7", "3", -1),  # j - TRUNC(j/k)*k
+        ("23", "101", "100", 1),
+        ("24", "37", "0", 25),
+        ("25", "25", "0", 37),
+        ("27", "3", "4", 5),
+        ("31", "10", "30", 5),
+        ("32", "10", "60", 5),
+        ("33", "10", "45", 10),
+        ("34", "1", "1", 45),
+    ],
+)
+def test_h_code_arithmetic(h, q, r, expected):
+    v = final(lines(f"G65 H{h} P#100 Q{q} R{r}", "M30"), "gsk980tdi")
+    assert v[100] == pytest.approx(expected, abs=1e-9)
+
+
+def test_h_code_operands_are_variables_or_constants_and_q_may_be_negated():
+    v = final(lines("#101=8", "#102=3", "G65 H02 P#100 Q-#102 R#101", "M30"), "gsk980tdi")
+    assert v[100] == 5
+
+
+def test_h26_scales_the_destination():
+    v = final(lines("#100=10", "G65 H26 P#100 Q6 R4", "M30"), "gsk980tdi")
+    assert v[100] == 15
+
+
+@pytest.mark.parametrize(
+    ("h", "q", "r", "jumps"),
+    [
+        ("80", "0", "0", True),
+        ("81", "5", "5", True),
+        ("81", "5", "6", False),
+        ("82", "5", "6", True),
+        ("83", "6", "5", True),
+        ("83", "5", "5", False),
+        ("84", "5", "6", True),
+        ("85", "5", "5", True),
+        ("86", "6", "5", False),
+    ],
+)
+def test_h_code_branches(h, q, r, jumps):
+    v = final(lines(f"G65 H{h} P50 Q{q} R{r}", "#100=1", "N50 M30"), "gsk980tdi")
+    assert (100 not in v) is jumps
+
+
+def test_seed_000_h99_p15_is_alarm_5915():
+    assert alarm(lines("G65 H99 P15", "M30"), "gsk980tdi") == (5915, 1)
+
+
+def test_h05_by_zero_is_alarm_112():
+    assert alarm(lines("G65 H05 P#100 Q1 R0", "M30"), "gsk980tdi") == (112, 1)
+
+
+def test_h_codes_are_a_gsk_feature():
+    # on fanuc G65 H.. P#100 is a macro call of the program numbered by #100 (vacant: none)
+    assert alarm(lines("G65 H01 P#100 Q1 R0", "M30"))[0] in (76, 291)
