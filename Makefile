@@ -13,8 +13,9 @@ $(VENV)/.installed: pyproject.toml
 
 setup: $(VENV)/.installed
 
-# Check the bundled examples (later: run one on the simulated machine).
+# Run a bundled example on the simulated machine, then check all of them.
 demo: setup
+	$(VENV)/bin/cncmacro run --no-save examples/fanuc/bolt_circle.nc
 	$(VENV)/bin/cncmacro check examples && echo "examples: no problems found"
 	@echo "--- a program with mistakes:"
 	-$(VENV)/bin/cncmacro check tests/data/O0999_broken.nc

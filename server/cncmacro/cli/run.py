@@ -64,7 +64,9 @@ def add_run_parser(sub: Any) -> None:
     run.set_defaults(handler=main_run)
 
 
-def main_run(args: argparse.Namespace, out: TextIO = sys.stdout, err: TextIO = sys.stderr) -> int:
+def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | None = None) -> int:
+    out = out or sys.stdout
+    err = err or sys.stderr
     path = Path(args.file)
     try:
         source = read_program(path)

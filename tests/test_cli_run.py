@@ -1,0 +1,164 @@
+"""``cncmacro run``: DESIGN.md's command-line contract (text, JSON, presets, machine file,
+budget and exit status), and every bundled example runs."""
+
+from __future__ import annotations
+
+import io
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from cncmacro.cli.main import main
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def cli(*args: str) -> tuple[int, str, str]:
+    out, err = io.StringIO(), io.StringIO()
+    old = sys.stdout, sys.stderr
+    sys.stdout, sys.stderr = out, err
+    try:
+        code = main(list(args))
+    except SystemExit as e:  # argparse usage errors
+        code = int(e.code or 0)
+    finally:
+        sys.stdout, sys.stderr = old
+    return code, out.getvalue(), err.getvalue()
+
+
+@pytest.fixture()
+def examples(tmp_path: Path) -> Path:
+    target = tmp_path / "examples"
+    shutil.copytree(ROOT / "examples", target)
+    return target
+
+
+@pytest.mark.parametrize(
+    ("name", "status"),
+    [
+        ("fanuc/bolt_circle.nc", "completed"),
+        ("fanuc/while_loop.nc", "completed"),
+        ("fanuc/subprogram_main.nc", "completed"),
+        ("fanuc/O9100.nc", "alarm"),  # run on its own, the macro misses its arguments: #3000
+        ("fanuc/O0040.nc", "limit"),  # M99 in a main program repeats it
+        ("gsk980tdi/O0100.nc", "completed"),
+        ("gsk980tdi/O9580.nc", "limit"),
+        ("gsk980tdi/ellipse_turning.nc", "completed"),
+        ("gsk980tdi/thread_parabola.nc", "completed"),
+    ],
+)
+def test_every_example_runs(examples, name, status):
+    code, out, err = cli("run", "--json", "--max-blocks", "20000", str(examples / name))
+    result = json.loads(out)
+    assert result["status"] == status, result["alarm"]
+    assert code == {"completed": 0, "alarm": 1, "limit": 3}[status]
+    assert err == ""
+
+
+def test_json_contract(examples):
+    code, out, _ = cli("run", "--json", "--set", "100=5", "--set", "#2001=0.5", str(examples / "fanuc/bolt_circle.nc"))
+    r = json.loads(out)
+    assert code == 0
+    assert set(r) >= {"status", "alarm", "blocks", "variables", "moves"}
+    assert r["status"] == "completed" and r["alarm"] is None and r["blocks"] > 0
+    assert r["variables"]["100"] == 5 and r["variables"]["2001"] == 0.5
+    assert all(v is not None for v in r["variables"].values())
+    first = r["moves"][0]
+    assert set(first) >= {"file", "line", "mode", "from", "to"} and first["line"] >= 1
+
+
+def test_alarm_in_json_and_text(tmp_path):
+    f = tmp_path / "O0001.nc"
+    f.write_text("O0001\n#1=1\nG65 P9000\nM30\nO9000\n#3000=7(NO X GIVEN)\nM99\n", encoding="utf-8")
+    code, out, _ = cli("run", "--json", str(f))
+    r = json.loads(out)
+    assert code == 1 and r["status"] == "alarm"
+    assert r["alarm"]["number"] == 3007 and r["alarm"]["message"] == "NO X GIVEN" and r["alarm"]["line"] == 6
+    assert r["variables"] == {"1": 1.0}
+    code, out, _ = cli("run", str(f))
+    assert code == 1
+    assert "ALARM 3007: NO X GIVEN" in out and f"called from O0001 (main) at {f}:3" in out
+
+
+def test_text_output_shows_moves_and_variables(tmp_path):
+    f = tmp_path / "O0002.nc"
+    f.write_text("O0002\nG90 G01 X10. Y5. F200\n#100=#5001\nDPRNT[X#5001[33]]\nM30\n", encoding="utf-8")
+    code, out, _ = cli("run", str(f))
+    assert code == 0
+    assert "O0002.nc:2     G01  X0.000 Y0.000 -> X10.000 Y5.000  F200" in out
+    assert "DPRNT  X10.000" in out
+    assert "#100 = 10" in out and "status: completed after 4 blocks" in out
+
+
+def test_budget_and_exit_status_3(tmp_path):
+    f = tmp_path / "loop.nc"
+    f.write_text("N1 #1=#1+1\nGOTO 1\n", encoding="utf-8")
+    code, out, _ = cli("run", "--json", "--max-blocks", "500", str(f))
+    r = json.loads(out)
+    assert code == 3 and r["status"] == "limit" and r["blocks"] == 500
+
+
+def test_machine_file_and_persistent_variables(tmp_path):
+    (tmp_path / ".cncmacro.toml").write_text(
+        'dialect = "gsk980tdi"\npersistent_file = "vars.json"\ndate = 20260301\n[variables]\n2001 = 0.25\n',
+        encoding="utf-8",
+    )
+    f = tmp_path / "O0003.nc"
+    f.write_text("#500=#500+1\n#100=#2001\n#101=#3011\nIF[#500==1]THEN #102=1\nM30\n", encoding="utf-8")
+    for expected in (1, 2):
+        code, out, _ = cli("run", "--json", str(f))
+        r = json.loads(out)
+        assert code == 0 and r["variables"]["500"] == expected
+    assert r["variables"]["100"] == 0.25 and r["variables"]["101"] == 20260301
+    assert json.loads((tmp_path / "vars.json").read_text())["variables"] == {"500": 2.0}
+    cli("run", "--no-save", str(f))
+    assert json.loads((tmp_path / "vars.json").read_text())["variables"] == {"500": 2.0}
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--set", "100"], "NUMBER=VALUE"),
+        (["--set", "100=abc"], "not a number"),
+        (["--set", "5001=3"], "computed by the machine"),
+        (["--set", "77=3"], "not a variable"),
+        (["--machine", "missing.toml"], "cannot read the machine file"),
+        (["--max-blocks", "0"], "at least 1"),
+    ],
+)
+def test_bad_usage_exits_2_with_a_message(tmp_path, args, message):
+    f = tmp_path / "O0001.nc"
+    f.write_text("M30\n", encoding="utf-8")
+    code, out, err = cli("run", *args, str(f))
+    assert code == 2 and message in err and out == ""
+
+
+def test_unreadable_and_binary_files_exit_2(tmp_path):
+    b = tmp_path / "blob.nc"
+    b.write_bytes(b"\x00\x01\x02binary")
+    code, _, err = cli("run", str(b))
+    assert code == 2 and "binary" in err
+    code, _, err = cli("run", str(tmp_path / "nope.nc"))
+    assert code == 2 and "nope.nc" in err
+
+
+def test_bad_machine_file_exits_2(tmp_path):
+    (tmp_path / ".cncmacro.toml").write_text("dialect = 'haas'\n", encoding="utf-8")
+    f = tmp_path / "O0001.nc"
+    f.write_text("M30\n", encoding="utf-8")
+    code, _, err = cli("run", str(f))
+    assert code == 2 and "dialect" in err
+
+
+def test_python_dash_m_entry_point(examples):
+    r = subprocess.run(
+        [sys.executable, "-m", "cncmacro", "run", "--no-save", str(examples / "gsk980tdi/O0100.nc")],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert r.returncode == 0 and "status: completed" in r.stdout
