@@ -36,6 +36,7 @@ if TYPE_CHECKING:
 Runner = Callable[[Any, int], int]
 
 INTEGER_LETTERS = frozenset("MSTHDNOPLBEQ")
+AXIS_LETTERS = frozenset("XYZABCUVWIJKR")
 _ALARM_IN_MESSAGE = re.compile(r"\(alarm (\d+)\)")
 MAX_LOOP_DEPTH = 3
 
@@ -341,8 +342,14 @@ class CompiledFile:
     def word_value(self, w: Word) -> tuple[bool, Any]:
         """(is_constant, value or getter) for an NC word, rounded for its address."""
         letter = w.letter
-        if w.value is None:
+        value = w.value
+        if value is None:
             return True, None
+        if value.__class__ is Number and letter in AXIS_LETTERS and self.machine.settings.decimal_point != "increment":
+            text = value.text  # type: ignore[union-attr]
+            dot = text.find(".")
+            if dot < 0 or len(text) - dot <= 4:  # at most 3 decimals: already on the 0.001 grid
+                return True, value.value  # type: ignore[union-attr]
         const, v = self.addresses.constant(w.value)
         point = isinstance(w.value, Number) and w.value.has_point
         if const:

@@ -9,7 +9,7 @@ snapshots, so everything in them is a plain value or a list the snapshot copies.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NamedTuple
 
 from ..library.programs import FoundProgram
 
@@ -61,8 +61,7 @@ class ModalCall:
     level: int
 
 
-@dataclass(frozen=True, slots=True)
-class Move:
+class Move(NamedTuple):
     """One executed motion: where (file, 0-based line), the motion code (0, 1, 2, 3, a cycle
     or 31 for a skip), and the end points in work coordinates before and after, one value
     per axis in the dialect's order."""

@@ -11,6 +11,7 @@ build on. The front ends read ``result()``, ``frames``, and variables through ``
 from __future__ import annotations
 
 import datetime as _dt
+import gc
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
@@ -209,9 +210,22 @@ class Machine(VariableAccess, Motion):
     # ---------------------------------------------------------------- running
     def run(self, max_blocks: int | None = None, *, is_limit: bool = True) -> str:
         """Run until the program ends, alarms, pauses or has run ``max_blocks`` more blocks
-        (status ``limit``, or ``paused`` when ``is_limit`` is False). Returns the status."""
+        (status ``limit``, or ``paused`` when ``is_limit`` is False). Returns the status.
+
+        Python's cycle collector is paused meanwhile: a run creates no garbage cycles, yet
+        the collector would walk every compiled block again and again (a 100k-block
+        program ran 3x slower with it)."""
         if self.status in FINISHED or not self.frames:
             return self.status
+        was_enabled = gc.isenabled()
+        gc.disable()
+        try:
+            return self._run(max_blocks, is_limit)
+        finally:
+            if was_enabled:
+                gc.enable()
+
+    def _run(self, max_blocks: int | None, is_limit: bool) -> str:
         budget = self.settings.max_blocks if max_blocks is None else max_blocks
         limit = self.blocks + budget
         self.status = RUNNING

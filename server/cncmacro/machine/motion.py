@@ -12,7 +12,7 @@ Values arrive already rounded to their address's increment.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
@@ -89,6 +89,80 @@ class Motion:
         if which == "tool":
             return self.tool_vector[axis]
         return 0.0
+
+    # ---------------------------------------------------------------- plain motion
+    def plain_plan(self, words: list[tuple[str, float]]) -> tuple[Any, ...] | None:
+        """For a block of literal words that only sets modal codes, F or S and moves axes:
+        (modal settings, codes, absolute axes, incremental axes), decided once; None for
+        anything else (one-shot G codes, canned cycles, tools), which ``execute_nc`` does."""
+        modal: list[tuple[str, float]] = []
+        codes: list[tuple[str, float]] = []
+        axes: list[tuple[int, float]] = []
+        inc: list[tuple[int, float]] = []
+        axis_index = self.axis_index
+        inc_letters = self.dialect.incremental_letters
+        for letter, v in words:
+            if letter == "G":
+                group = self.g_groups.get(v)
+                if not group or group in ("macro", "canned", "wcs", "length"):
+                    return None
+                modal.append((group, v))
+            elif letter in axis_index:
+                axes.append((axis_index[letter], v))
+            elif letter in inc_letters and inc_letters[letter] in axis_index:
+                inc.append((axis_index[inc_letters[letter]], v))
+            elif letter in ("F", "S"):
+                codes.append((letter, v))
+            else:
+                return None
+        return tuple(modal), tuple(codes), tuple(axes), tuple(inc)
+
+    def run_plain(self, plan: tuple[Any, ...], file: str, line: int) -> bool:
+        """Carry out a ``plain_plan``; returns whether an axis moved."""
+        modal_sets, code_sets, axes, inc = plan
+        modal = self.modal
+        for group, g in modal_sets:
+            modal[group] = g
+        for letter, v in code_sets:
+            self.codes[letter] = v
+        if not axes and not inc:
+            return False
+        mode = modal["motion"]
+        if mode in self.dialect.cycle_codes or (modal.get("canned", 80.0) != 80.0 and not self.dialect.lathe):
+            return self._cycle_fallback(plan, file, line)
+        pos = self.pos
+        target = pos[:]
+        if self.dialect.lathe or modal["distance"] == 90.0:
+            for i, v in axes:
+                target[i] = v
+        else:
+            for i, v in axes:
+                target[i] += v
+        for i, v in inc:
+            target[i] += v
+        start = tuple(pos)
+        end = tuple(target)
+        feed = self.codes.get("F") or 0.0
+        dist = math.dist(start, end)
+        if mode == 0.0:
+            self.clock += dist / RAPID_RATE * 60.0
+        elif feed > 0:
+            rate = feed
+            f = modal.get("feed")
+            if f == 95.0 or (f == 99.0 and self.dialect.lathe):
+                rate *= self.codes.get("S") or 0.0
+            if rate > 0:
+                self.clock += dist / rate * 60.0
+        self.pos = target
+        if self.record_moves:
+            self.moves.append(Move(file, line, mode, start, end, feed))
+        return True
+
+    def _cycle_fallback(self, plan: tuple[Any, ...], file: str, line: int) -> bool:
+        inverse = {v: k for k, v in self.dialect.incremental_letters.items()}
+        words = [(self.dialect.axes[i], v) for i, v in plan[2]]
+        words += [(inverse[self.dialect.axes[i]], v) for i, v in plan[3]]
+        return self.execute_nc(words, file, line)[0]
 
     # ---------------------------------------------------------------- one block
     def execute_nc(self, words: list[tuple[str, float]], file: str, line: int) -> tuple[bool, float | None]:
