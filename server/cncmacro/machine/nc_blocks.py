@@ -67,7 +67,7 @@ def _plain_motion(cf: CompiledFile, block: Block, nxt: int) -> Runner | None:
         letter = w.letter
         if letter == "G" and calls and f"G{value.value:g}" in calls:  # type: ignore[union-attr]
             return None
-        is_const, v = cf.word_value(w)
+        v = cf.word_value(w)[1]
         if v is None:
             continue
         words.append((letter, v))
