@@ -282,3 +282,46 @@ def test_macro_call_codes_from_the_machine_file():
     )
     v = final(program, calls=calls)
     assert v[100] == 11 and v[101] == 3 and v[102] == 77
+
+
+def test_t_code_calls_a_subprogram_with_the_t_value_in_149():
+    from cncmacro.library.machine_file import CallCode
+
+    program = lines("T0505", "M30", "O9000", "#100=#149", "M99")
+    v = final(program, calls={"T": CallCode(9000, "subprogram")})
+    assert v[100] == 505
+
+
+def test_gsk_m98_without_p_calls_the_current_program_at_q():
+    program = lines("#1=0", "M98 Q50", "M30", "N50 #100=#100+1", "M99")
+    v = final(program, "gsk980tdi")
+    assert v[100] == 1  # seed 002 format 3: the call starts at N50 and M99 returns to M30
+
+
+def test_g66_counts_as_a_macro_level():
+    # main -> G65 (1) -> G65 (2) -> G65 (3) -> G66 call (4) works; one more G65 inside is the 5th
+    def program(extra: str) -> str:
+        return lines(
+            "G65 P9101",
+            "M30",
+            "O9101",
+            "G65 P9102",
+            "M99",
+            "O9102",
+            "G65 P9103",
+            "M99",
+            "O9103",
+            "G66 P9104",
+            "G00 X1",
+            "G67",
+            "M99",
+            "O9104",
+            extra,
+            "#100=1",
+            "M99",
+            "O9105",
+            "M99",
+        )
+
+    assert final(program("#1=1"))[100] == 1
+    assert alarm(program("G65 P9105"))[0] == 122

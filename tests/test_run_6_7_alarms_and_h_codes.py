@@ -124,3 +124,10 @@ def test_h05_by_zero_is_alarm_112():
 def test_h_codes_are_a_gsk_feature():
     # on fanuc G65 H.. P#100 is a macro call of the program numbered by #100 (vacant: none)
     assert alarm(lines("G65 H01 P#100 Q1 R0", "M30"))[0] in (76, 291)
+
+
+def test_dprnt_formats_values():
+    from running import run
+
+    m = run(lines("#1=12.3456", "#2=-7", "POPEN", "DPRNT[X#1[53]**Y#2[30]*Z#3[20]]", "PCLOS", "M30"))
+    assert m.output == ["X12.346  Y-7 Z0"]

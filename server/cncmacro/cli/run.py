@@ -182,7 +182,8 @@ def write_text(result: RunResult, machine: Machine, out: TextIO) -> None:
             print(f"  called from {site.program} ({site.how}) at {site.file}:{site.line + 1}", file=out)
     elif result.status == LIMIT:
         print(f"stopped after {result.blocks} blocks: the block budget ran out (an endless loop?)", file=out)
-    print(f"status: {result.status} after {result.blocks} blocks", file=out)
+    noun = "block" if result.blocks == 1 else "blocks"
+    print(f"status: {result.status} after {result.blocks} {noun}", file=out)
     if result.variables:
         print("variables:", file=out)
         for n, v in result.variables.items():
