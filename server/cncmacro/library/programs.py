@@ -158,11 +158,10 @@ class ProgramLibrary:
                     except (OSError, BinaryFileError):
                         continue
                 if header.search(text):
-                    loaded = self.load(p)
-                    if loaded is not None:
-                        unit = loaded.program.unit_numbered(number)
-                        if unit is not None:
-                            return FoundProgram(loaded, unit)
+                    loaded = self._files[str(p)] = load_text(str(p), text, self.cache)  # read once, not twice
+                    unit = loaded.program.unit_numbered(number)
+                    if unit is not None:
+                        return FoundProgram(loaded, unit)
         return None
 
     def find_name(self, name: str, near: LoadedFile | None = None) -> FoundProgram | None:

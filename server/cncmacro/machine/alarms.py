@@ -7,7 +7,9 @@ is what the command line, the diagnostics and the debugger show.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 from ..dialects.alarms import alarm_text
 
@@ -19,6 +21,16 @@ class MacroAlarm(Exception):
         self.number = number
         self.message = message or alarm_text(number)
         super().__init__(f"alarm {number}: {self.message}")
+
+
+def raiser(number: int, message: str) -> Callable[..., Any]:
+    """A closure that raises this alarm whenever it is called: what a block or expression
+    compiles to when its text alone decides that it alarms (it may never be reached)."""
+
+    def fail(*_: Any) -> Any:
+        raise MacroAlarm(number, message)
+
+    return fail
 
 
 @dataclass(frozen=True, slots=True)

@@ -26,7 +26,7 @@ from ..dialects.alarms import (
 )
 from ..library.programs import LoadedFile
 from ..syntax.nodes import Assign, Block, Do, End, Goto, If, IndirectVar, Number, Output, Statement, Var, While, Word
-from .alarms import MacroAlarm
+from .alarms import MacroAlarm, raiser
 from .expressions import ExpressionCompiler, Getter
 from .numbers import MAX_VALUE, format_value, round_half_away, to_increment
 
@@ -39,13 +39,6 @@ INTEGER_LETTERS = frozenset("MSTHDNOPLBEQ")
 AXIS_LETTERS = frozenset("XYZABCUVWIJKR")
 _ALARM_IN_MESSAGE = re.compile(r"\(alarm (\d+)\)")
 MAX_LOOP_DEPTH = 3
-
-
-def _raising(number: int, message: str) -> Runner:
-    def run(m: Any, pc: int) -> int:
-        raise MacroAlarm(number, message)
-
-    return run
 
 
 class CompiledFile:
@@ -162,7 +155,7 @@ class CompiledFile:
             problem = next(p for p in block.problems if p.severity == "error")
             said = _ALARM_IN_MESSAGE.search(problem.message)
             number = int(said.group(1)) if said else STATEMENT_FORMAT
-            return _raising(number, f"the block does not parse: {problem.message}")
+            return raiser(number, f"the block does not parse: {problem.message}")
         if block.program is not None:
             return self._header(block, pc, nxt)
         return self._body(block, pc, nxt)
@@ -182,9 +175,9 @@ class CompiledFile:
         if block.statements:
             if block.words:
                 w = block.words[0]
-                return _raising(NC_AND_MACRO, f"{w.letter} word and a macro statement in one block")
+                return raiser(NC_AND_MACRO, f"{w.letter} word and a macro statement in one block")
             if len(block.statements) > 1:
-                return _raising(STATEMENT_FORMAT, "one macro statement per block")
+                return raiser(STATEMENT_FORMAT, "one macro statement per block")
             run = self.statement(block.statements[0], pc, nxt)
         elif block.words:
             run = self.nc_block(block, pc, nxt)
@@ -233,7 +226,7 @@ class CompiledFile:
             return self.loop_end(s, pc)
         if isinstance(s, Output):
             return self.output(s, nxt)
-        return _raising(STATEMENT_FORMAT, "unknown statement")
+        return raiser(STATEMENT_FORMAT, "unknown statement")
 
     def assign(self, s: Assign, nxt: int) -> Runner:
         value = self.values.value(s.value)
@@ -263,7 +256,7 @@ class CompiledFile:
 
                 return set_common
             if kind == "vacant":
-                return _raising(WRITE_PROTECTED, "#0 is always vacant and cannot be written")
+                return raiser(WRITE_PROTECTED, "#0 is always vacant and cannot be written")
             number = float(n)
 
             def set_other(m: Any, pc: int) -> int:
@@ -287,10 +280,10 @@ class CompiledFile:
     def loop_head(self, s: While | Do, pc: int, nxt: int) -> Runner:
         number = self.loop_number(s.loop)
         if number is None:
-            return _raising(LOOP_NUMBER, f"DO {s.loop.text}: the loop number must be 1, 2 or 3")
+            return raiser(LOOP_NUMBER, f"DO {s.loop.text}: the loop number must be 1, 2 or 3")
         end = self.do_end.get(pc)
         if end is None:
-            return _raising(MISSING_END, f"DO {number} has no END {number}")
+            return raiser(MISSING_END, f"DO {number} has no END {number}")
         after = self.next_line(end)
         test = self.values.condition(s.condition) if isinstance(s, While) else None
 
@@ -310,10 +303,10 @@ class CompiledFile:
     def loop_end(self, s: End, pc: int) -> Runner:
         number = self.loop_number(s.loop)
         if number is None:
-            return _raising(LOOP_NUMBER, f"END {s.loop.text}: the loop number must be 1, 2 or 3")
+            return raiser(LOOP_NUMBER, f"END {s.loop.text}: the loop number must be 1, 2 or 3")
         do = self.end_do.get(pc)
         if do is None:
-            return _raising(LOOP_NUMBER, f"END {number} has no DO {number} before it")
+            return raiser(LOOP_NUMBER, f"END {number} has no DO {number} before it")
 
         def end(m: Any, pc: int) -> int:
             loops = m.frame.loops

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..dialects.alarms import COUNT_TWICE, G_ARGUMENT, P_VALUE_RANGE
+from ..dialects.alarms import ARGUMENT_RANGE, COUNT_TWICE, G_ARGUMENT, P_VALUE_RANGE
 from ..dialects.dialect import ARGUMENTS_I, Dialect
 from .alarms import MacroAlarm
 from .numbers import to_int
@@ -68,13 +68,14 @@ def repeat_count(value: float | None, dialect: Dialect, notes: list[str]) -> int
     n = to_int(value)
     if n < 1:
         raise MacroAlarm(
-            P_VALUE_RANGE if dialect.count_in_p_and_l_alarm else 119, f"L{n}: the repeat count must be 1 to 9999"
+            P_VALUE_RANGE if dialect.count_in_p_and_l_alarm else ARGUMENT_RANGE,
+            f"L{n}: the repeat count must be 1 to 9999",
         )
     if n > MAX_REPEAT:
         if dialect.clamp_repeat_count:
             notes.append(f"L{n} is above 9999; the control runs it 9999 times")
             return MAX_REPEAT
-        raise MacroAlarm(119, f"L{n}: the repeat count must be 1 to 9999")
+        raise MacroAlarm(ARGUMENT_RANGE, f"L{n}: the repeat count must be 1 to 9999")
     return n
 
 

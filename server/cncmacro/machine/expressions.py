@@ -24,8 +24,8 @@ from ..dialects.alarms import (
     VARIABLE_NUMBER,
 )
 from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, Number, Relation, Unary, Var
-from .alarms import MacroAlarm
-from .numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away
+from .alarms import MacroAlarm, raiser
+from .numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away, to_increment
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -35,13 +35,6 @@ Getter = Callable[[Any], Value]
 Test = Callable[[Any], bool]
 
 MAX_BRACKETS = 5
-
-
-def _raiser(number: int, message: str) -> Callable[[Any], Any]:
-    def fail(m: Any) -> Any:
-        raise MacroAlarm(number, message)
-
-    return fail
 
 
 def bracket_depth(node: Expr) -> int:
@@ -108,7 +101,7 @@ class ExpressionCompiler:
         """A closure computing ``node``; brackets nested too deep raise alarm 118."""
         depth = bracket_depth(node)
         if depth > MAX_BRACKETS:
-            return _raiser(BRACKET_NESTING, f"brackets nested {depth} deep (at most {MAX_BRACKETS})")
+            return raiser(BRACKET_NESTING, f"brackets nested {depth} deep (at most {MAX_BRACKETS})")
         return self._value(node)
 
     def constant(self, node: Expr) -> tuple[bool, Value]:
@@ -146,8 +139,8 @@ class ExpressionCompiler:
         if isinstance(node, Call):
             return self._call(node)
         if isinstance(node, Relation):
-            return _raiser(FORMAT, "a relation (EQ, LT, ...) is only allowed in an IF or WHILE condition")
-        return _raiser(FORMAT, "illegal expression")
+            return raiser(FORMAT, "a relation (EQ, LT, ...) is only allowed in an IF or WHILE condition")
+        return raiser(FORMAT, "illegal expression")
 
     def reader(self, n: int) -> Getter:
         """A closure reading ``#n`` (a literal number)."""
@@ -163,7 +156,7 @@ class ExpressionCompiler:
             return lambda m: m.read(m.C[k])
         if kind == "system":
             return lambda m: m.read_system(n)
-        return _raiser(VARIABLE_NUMBER, f"#{n} does not exist on {self.dialect.title}")
+        return raiser(VARIABLE_NUMBER, f"#{n} does not exist on {self.dialect.title}")
 
     def _binary(self, node: Binary) -> Getter:
         op = node.op
@@ -220,7 +213,7 @@ class ExpressionCompiler:
                 return float(bitop(x, y))
 
             return bitwise
-        return _raiser(FORMAT, f"unknown operator {op}")
+        return raiser(FORMAT, f"unknown operator {op}")
 
     def _call(self, node: Call) -> Getter:
         name = node.name
@@ -238,14 +231,12 @@ class ExpressionCompiler:
 
             return atan2
         if len(args) != 1:
-            return _raiser(FORMAT, f"{name} takes one argument")
+            return raiser(FORMAT, f"{name} takes one argument")
         f = _FUNCTIONS.get(name)
         if f is None:
-            return _raiser(FORMAT, f"unknown function {name}")
+            return raiser(FORMAT, f"unknown function {name}")
         arg = args[0]
         if name == "ROUND" and self.in_address:
-            from .numbers import to_increment
-
             return lambda m: to_increment(arg(m) or 0.0)
 
         def call(m: Any) -> Value:
@@ -258,7 +249,7 @@ class ExpressionCompiler:
         """A closure deciding an IF/WHILE condition (which must hold a relation)."""
         depth = bracket_depth(node)
         if depth > MAX_BRACKETS:
-            return _raiser(BRACKET_NESTING, f"brackets nested {depth} deep (at most {MAX_BRACKETS})")
+            return raiser(BRACKET_NESTING, f"brackets nested {depth} deep (at most {MAX_BRACKETS})")
         return self._condition(node)
 
     def _condition(self, node: Expr) -> Test:
@@ -274,11 +265,11 @@ class ExpressionCompiler:
             if node.op == "OR":
                 return lambda m: a(m) or b(m)
             return lambda m: a(m) != b(m)
-        return _raiser(FORMAT, "a condition needs a relation such as [#1 GT 0]")
+        return raiser(FORMAT, "a condition needs a relation such as [#1 GT 0]")
 
     def _relation(self, node: Relation) -> Test:
         if not node.spelling.isalpha() and not self.dialect.c_relations:
-            return _raiser(FORMAT, f"'{node.spelling}' is not a relation on {self.dialect.title}; write {node.op}")
+            return raiser(FORMAT, f"'{node.spelling}' is not a relation on {self.dialect.title}; write {node.op}")
         op = node.op
         rc, rv = self.constant(node.right)
         left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local"

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..dialects.alarms import ARGUMENT_RANGE, DIVISION_BY_ZERO, FORMAT
 from ..syntax.nodes import IndirectVar, Number, Var, Word
-from .alarms import MacroAlarm
+from .alarms import MacroAlarm, raiser
 from .numbers import bcd, bin_, round_half_away
 
 if TYPE_CHECKING:
@@ -82,28 +82,21 @@ BRANCHES: dict[int, Callable[[float, float], bool]] = {
 }
 
 
-def _raising(number: int, message: str) -> Runner:
-    def run(m: Any, pc: int) -> int:
-        raise MacroAlarm(number, message)
-
-    return run
-
-
 def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int) -> Runner:
     """The closure for ``G65 Hm P.. Q.. R..`` (``words`` are those after G65)."""
     by_letter = {w.letter: w for w in words}
     extra = [w.letter for w in words if w.letter not in "HPQR"]
     if extra:
-        return _raising(FORMAT, f"G65 H takes only P, Q and R (found {', '.join(extra)})")
+        return raiser(FORMAT, f"G65 H takes only P, Q and R (found {', '.join(extra)})")
     h_word = by_letter["H"]
     if not isinstance(h_word.value, Number):
-        return _raising(FORMAT, "G65 H needs a literal operation number such as H01")
+        return raiser(FORMAT, "G65 H needs a literal operation number such as H01")
     h = int(h_word.value.value)
     q = _operand(cf, by_letter.get("Q"))
     r = _operand(cf, by_letter.get("R"))
     p_word = by_letter.get("P")
     if p_word is None or p_word.value is None:
-        return _raising(FORMAT, f"G65 H{h:02d} needs P")
+        return raiser(FORMAT, f"G65 H{h:02d} needs P")
     if h in BRANCHES or h == 99:
         target = cf.values.value(p_word.value)
         if h == 99:
@@ -125,7 +118,7 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int) -> Runner:
         return branch
     destination = p_word.value
     if not isinstance(destination, (Var, IndirectVar)):
-        return _raising(FORMAT, f"G65 H{h:02d}: P names the result variable, e.g. P#100")
+        return raiser(FORMAT, f"G65 H{h:02d}: P names the result variable, e.g. P#100")
     if isinstance(destination, Var):
         n = float(destination.number)
         where: Callable[[Any], float | None] = lambda m: n  # noqa: E731
@@ -144,7 +137,7 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int) -> Runner:
         return scale
     op = ARITHMETIC.get(h)
     if op is None:
-        return _raising(FORMAT, f"G65 H{h:02d} is not an operation of this control")
+        return raiser(FORMAT, f"G65 H{h:02d} is not an operation of this control")
 
     def arithmetic(m: Any, pc: int) -> int:
         m.write(where(m), op(q(m), r(m)))

@@ -269,11 +269,6 @@ class Machine(VariableAccess, Motion):
             self.message = e.message
             self.notes.append(Note("message", e.message, f.file, pc))
             return self.status
-        except RecursionError:  # cannot happen with bounded nesting; kept as a last guard
-            self.blocks = n
-            self.alarm = Alarm(MACRO_NESTING, "nesting too deep", self.frames[-1].file, pc, self.chain())
-            self.status = ALARM
-            return self.status
         self.blocks = n
         if pc >= 0:
             self.frames[-1].pc = pc
@@ -451,35 +446,39 @@ class Machine(VariableAccess, Motion):
         args = Arguments(dict(top.arguments), dict(top.letters))
         return self.macro_call(top.found, args, top.repeats, pc, nxt, "G66", modal=top)
 
-    def call_code_for(self, values: list[tuple[str, float]]) -> CallCode | None:
-        """The configured call for a G, M or T code in the block (not inside such a call)."""
+    def call_code_for(self, values: list[tuple[str, float]]) -> tuple[str, CallCode] | None:
+        """The configured call for a G, M or T code in the block, with the code as the
+        machine file names it (``G100``, ``M50``, ``T``); none inside such a call."""
         calls = self.settings.calls
         if any(f.kind[:1] in ("G", "M", "T") and f.kind not in ("G65", "G66", "M98") for f in self.frames):
             return None
         for letter, v in values:
             if letter in ("G", "M"):
-                c = calls.get(f"{letter}{v:g}")
+                code = f"{letter}{v:g}"
+                c = calls.get(code)
                 if c is not None:
-                    return c
+                    return code, c
             elif letter == "T" and "T" in calls:
-                return calls["T"]
+                return "T", calls["T"]
         return None
 
-    def code_macro_call(self, call: CallCode, values: list[tuple[str, float]], pc: int, nxt: int) -> int:
+    def code_macro_call(self, code: str, call: CallCode, values: list[tuple[str, float]], pc: int, nxt: int) -> int:
+        """A code configured as a macro call: like G65, the block's other words the arguments."""
         found = self.find_program(call.program)
-        code_word = next((f"{letter}{v:g}" for letter, v in values if f"{letter}{v:g}" in self.settings.calls), "G")
-        args_words = [(letter, v) for letter, v in values if f"{letter}{v:g}" != code_word and letter != "L"]
+        args_words = [(letter, v) for letter, v in values if f"{letter}{v:g}" != code and letter != "L"]
         notes: list[str] = []
         repeats = repeat_count(dict(values).get("L"), self.dialect, notes)
         arguments = map_arguments(args_words, self.dialect)
-        return self.macro_call(found, arguments, repeats, pc, nxt, code_word)
+        return self.macro_call(found, arguments, repeats, pc, nxt, code)
 
-    def code_subprogram_call(self, call: CallCode, values: list[tuple[str, float]], pc: int, nxt: int) -> int:
+    def code_subprogram_call(
+        self, code: str, call: CallCode, values: list[tuple[str, float]], pc: int, nxt: int
+    ) -> int:
+        """A code configured as a subprogram call: like M98; a T code leaves its value in #149."""
         found = self.find_program(call.program)
         t = dict(values).get("T")
         if t is not None and self.kinds.kind(149) in ("common", "persistent"):
             self.C[149] = t
-        code = next((f"{letter}{v:g}" for letter, v in values if f"{letter}{v:g}" in self.settings.calls), "T")
         return self.subprogram_call(found, 1, None, pc, nxt, code)
 
     # ---------------------------------------------------------------- snapshots

@@ -140,22 +140,8 @@ class Motion:
                 target[i] += v
         for i, v in inc:
             target[i] += v
-        start = tuple(pos)
-        end = tuple(target)
-        feed = self.codes.get("F") or 0.0
-        dist = math.dist(start, end)
-        if mode == 0.0:
-            self.clock += dist / RAPID_RATE * 60.0
-        elif feed > 0:
-            rate = feed
-            f = modal.get("feed")
-            if f == 95.0 or (f == 99.0 and self.dialect.lathe):
-                rate *= self.codes.get("S") or 0.0
-            if rate > 0:
-                self.clock += dist / rate * 60.0
+        self._record(file, line, mode, tuple(pos), tuple(target))
         self.pos = target
-        if self.record_moves:
-            self.moves.append(Move(file, line, mode, start, end, feed))
         return True
 
     def _cycle_fallback(self, plan: tuple[Any, ...], file: str, line: int) -> bool:
@@ -235,29 +221,24 @@ class Motion:
         return target
 
     def _move(self, file: str, line: int, mode: float, target: list[float]) -> None:
-        start = tuple(self.pos)
-        self._advance_clock(mode, start, target)
+        self._record(file, line, mode, tuple(self.pos), tuple(target))
         self.pos[:] = target
-        if self.record_moves:
-            self.moves.append(Move(file, line, mode, start, tuple(target), float(self.codes.get("F") or 0.0)))
 
     def _record(self, file: str, line: int, mode: float, start: tuple[float, ...], end: tuple[float, ...]) -> None:
-        self._advance_clock(mode, start, end)
-        if self.record_moves:
-            self.moves.append(Move(file, line, mode, start, end, float(self.codes.get("F") or 0.0)))
-
-    def _advance_clock(
-        self, mode: float, start: tuple[float, ...] | list[float], end: tuple[float, ...] | list[float]
-    ) -> None:
-        dist = math.sqrt(sum((b - a) ** 2 for a, b in zip(start, end, strict=False)))
+        """Advance the simulated clock by the move's time and record the move."""
+        feed = float(self.codes.get("F") or 0.0)
+        dist = math.dist(start, end)
         if mode == 0.0:
             self.clock += dist / RAPID_RATE * 60.0
-            return
-        feed = self.codes.get("F") or 0.0
-        if self.modal.get("feed") in (95.0, 99.0) and not (self.modal.get("feed") == 99.0 and not self.dialect.lathe):
-            feed *= self.codes.get("S") or 0.0
-        if feed > 0:
-            self.clock += dist / feed * 60.0
+        else:
+            rate = feed
+            per_rev = self.modal.get("feed")
+            if per_rev == 95.0 or (per_rev == 99.0 and self.dialect.lathe):
+                rate *= self.codes.get("S") or 0.0
+            if rate > 0:
+                self.clock += dist / rate * 60.0
+        if self.record_moves:
+            self.moves.append(Move(file, line, mode, start, end, feed))
 
     # ---------------------------------------------------------------- tools
     def select_tool(self, t: float) -> None:

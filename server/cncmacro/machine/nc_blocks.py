@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from ..dialects.alarms import NC_AND_MACRO
+from ..dialects.alarms import G_ARGUMENT, NC_AND_MACRO, PROGRAM_NOT_FOUND
 from ..syntax.nodes import Block, Bracket, Number, Var, Word
-from .alarms import MacroAlarm
+from .alarms import MacroAlarm, raiser
 from .calls import macro_program_number, map_arguments, program_and_count, repeat_count
 from .hcodes import compile_h_code
 
@@ -20,13 +20,6 @@ if TYPE_CHECKING:
     from .blocks import CompiledFile, Runner
 
 CONTROL_M = {98.0, 99.0, 30.0, 2.0, 0.0, 198.0}
-
-
-def _raising(number: int, message: str) -> Runner:
-    def run(m: Any, pc: int) -> int:
-        raise MacroAlarm(number, message)
-
-    return run
 
 
 def _literal_g(w: Word) -> float | None:
@@ -91,11 +84,11 @@ def _plain_motion(cf: CompiledFile, block: Block, nxt: int) -> Runner | None:
 def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int) -> Runner:
     name = "G65" if g == 65.0 else "G66"
     for w in words[:at]:
-        return _raising(NC_AND_MACRO, f"{w.letter} before {name}: only N may precede {name} in its block")
+        return raiser(NC_AND_MACRO, f"{w.letter} before {name}: only N may precede {name} in its block")
     after = words[at + 1 :]
     for w in after:
         if w.letter == "O":  # M after G65 is the argument #13; G is alarm 129 below
-            return _raising(NC_AND_MACRO, f"{name} may not share its block with an O word")
+            return raiser(NC_AND_MACRO, f"{name} may not share its block with an O word")
     dialect = cf.machine.dialect
     if (
         g == 65.0
@@ -109,7 +102,7 @@ def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int
     args = [w for w in after if w.letter not in ("P", "L")]
     for w in args:
         if w.letter == "G":
-            return _raising(129, f"G after {name}: a G code cannot be an argument")
+            return raiser(G_ARGUMENT, f"G after {name}: a G code cannot be an argument")
     resolve = _program_resolver(cf, p_word, name)
     count = _getter(cf, l_word)
     arg_values = [(w.letter, _getter(cf, w)) for w in args]
@@ -150,7 +143,7 @@ def _program_resolver(cf: CompiledFile, p_word: Word | None, name: str) -> Any:
     """A closure finding the program that ``P`` names (alarm 076 when it is missing)."""
     dialect = cf.machine.dialect
     if p_word is None:
-        return _raising_getter(76, f"{name} needs P: the program to call")
+        return raiser(PROGRAM_NOT_FOUND, f"{name} needs P: the program to call")
     if p_word.name is not None:
         text = p_word.name
         return lambda m: m.find_program_named(text)
@@ -160,13 +153,6 @@ def _program_resolver(cf: CompiledFile, p_word: Word | None, name: str) -> Any:
         return lambda m: m.find_program(macro_program_number(get_bracket(m), dialect))
     get = cf.values.value(value)  # type: ignore[arg-type]
     return lambda m: m.find_program(macro_program_number(get(m), dialect))
-
-
-def _raising_getter(number: int, message: str) -> Any:
-    def fail(m: Any) -> Any:
-        raise MacroAlarm(number, message)
-
-    return fail
 
 
 # ---------------------------------------------------------------- NC blocks
@@ -193,11 +179,7 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
 
         def motion(m: Any, pc: int) -> int:
             moved, skip_to = m.execute_nc(plain, file_path, pc)
-            if moved and m.modal_calls:
-                return m.modal_call(pc, nxt)
-            if skip_to is not None:
-                return m.skip_past_label(pc, skip_to)
-            return nxt
+            return _after_nc(m, moved, skip_to, pc, nxt)
 
         return motion
 
@@ -225,15 +207,15 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
                 values.append((letter, v))
         ms = [v for letter, v in values if letter == "M"]
         mcontrol = [v for v in ms if v in CONTROL_M]
-        call = m.call_code_for(values) if call_codes else None
-        if call is not None and call.call == "macro":
-            return m.code_macro_call(call, values, pc, nxt)
+        found_call = m.call_code_for(values) if call_codes else None
+        if found_call is not None and found_call[1].call == "macro":
+            return m.code_macro_call(*found_call, values, pc, nxt)
         nc_words = values
         if mcontrol and (98.0 in mcontrol or 99.0 in mcontrol or 198.0 in mcontrol):
             nc_words = [(letter, v) for letter, v in values if letter not in ("P", "L", "Q")]
         moved, skip_to = m.execute_nc(nc_words, file_path, pc)
-        if call is not None:
-            return m.code_subprogram_call(call, values, pc, nxt)
+        if found_call is not None:
+            return m.code_subprogram_call(*found_call, values, pc, nxt)
         if 98.0 in mcontrol or 198.0 in mcontrol:
             found, repeats, q = _subprogram_target(m, values, p_text, p_name, get_bracket, dialect)
             return m.subprogram_call(found, repeats, q, pc, nxt, "M98")
@@ -244,13 +226,19 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
             return m.end_program(pc)
         if 0.0 in mcontrol:
             return m.pause("M00 program stop", nxt)
-        if moved and m.modal_calls:
-            return m.modal_call(pc, nxt)
-        if skip_to is not None:
-            return m.skip_past_label(pc, skip_to)
-        return nxt
+        return _after_nc(m, moved, skip_to, pc, nxt)
 
     return general
+
+
+def _after_nc(m: Any, moved: bool, skip_to: float | None, pc: int, nxt: int) -> int:
+    """Where a block goes after its NC words ran: a G66 call after a move, past a lathe
+    cycle's profile, or on to the next line."""
+    if moved and m.modal_calls:
+        return m.modal_call(pc, nxt)
+    if skip_to is not None:
+        return m.skip_past_label(pc, skip_to)
+    return nxt
 
 
 def _subprogram_target(
@@ -268,7 +256,7 @@ def _subprogram_target(
         found = m.find_program(number)
     elif "P" not in words:
         if q is None:
-            raise MacroAlarm(76, "M98 needs P (the program), or Q to call the current program")
+            raise MacroAlarm(PROGRAM_NOT_FOUND, "M98 needs P (the program), or Q to call the current program")
         found = m.frame.found
         repeats = repeat_count(words.get("L"), dialect, notes)
     else:
