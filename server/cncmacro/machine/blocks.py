@@ -68,7 +68,7 @@ class CompiledFile:
         blocks = self.file.program.blocks
         n = len(blocks)
         i = pc + 1
-        while i < n and self.skipped(blocks[i]):
+        while i < n and blocks[i].plain is None and self.skipped(blocks[i]):
             i += 1
         return i
 
@@ -149,6 +149,11 @@ class CompiledFile:
     def compile(self, pc: int) -> Runner:
         block = self.file.program.blocks[pc]
         nxt = self.next_line(pc)
+        if block.plain is not None:  # most lines of a CAM program: no label, header or error
+            fast = nc_blocks.compile_plain_line(self, block.plain, nxt)
+            if fast is not None:
+                return fast
+            return self._body(block, pc, nxt)
         if self.skipped(block):
             return lambda m, pc: nxt
         if block.has_error:
@@ -365,10 +370,12 @@ class CompiledFile:
         return to_increment(v, 4 if self.machine.modal.get("units") == 20.0 else 3)
 
     def nc_block(self, block: Block, pc: int, nxt: int) -> Runner:
-        from .nc_blocks import compile_nc_block
-
-        return compile_nc_block(self, block, pc, nxt)
+        return nc_blocks.compile_nc_block(self, block, pc, nxt)
 
 
 def _end_of_file(m: Any, pc: int) -> int:
     return m.end_of_program(pc)
+
+
+# The NC-block compiler imports this module, so it is imported last.
+from . import nc_blocks  # noqa: E402

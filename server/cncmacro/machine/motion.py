@@ -28,6 +28,9 @@ RAPID_RATE = 10000.0  # mm/min, for the simulated clock
 WORK_BASE = 5201  # external offset of axis 1; G54 is +20, G55 +40 ... (both dialects)
 G54_1_BASE = 7001  # G54.1 P1 axis 1; each P adds 20 (fanuc)
 LATHE_CYCLES_WITH_PROFILE = (71.0, 72.0, 73.0)
+_new_move = tuple.__new__  # a Move without the NamedTuple constructor's keyword handling
+_NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length"))
+_CENTRE_LETTERS = frozenset("RIJK")  # arc radius and centre: kept for a canned cycle's R level
 
 
 class Motion:
@@ -63,6 +66,9 @@ class Motion:
             except ValueError:
                 continue
         self.g_groups = groups
+        self._cycle_codes = self.dialect.cycle_codes
+        self._lathe = self.dialect.lathe
+        self._plain_kinds: dict[str, Any] | None = None
 
     # ---------------------------------------------------------------- positions
     def work_offset(self, axis: int) -> float:
@@ -91,20 +97,78 @@ class Motion:
         return 0.0
 
     # ---------------------------------------------------------------- plain motion
-    def plain_plan(self, words: list[tuple[str, float]]) -> tuple[Any, ...] | None:
-        """For a block of literal words that only sets modal codes, F or S and moves axes:
-        (modal settings, codes, absolute axes, incremental axes), decided once; None for
-        anything else (one-shot G codes, canned cycles, tools), which ``execute_nc`` does."""
+    def plain_text_plan(self, text: str) -> tuple[Any, ...] | None:
+        """``plain_plan`` read straight from a ``Block.plain`` line: whitespace-separated
+        address-number words with at most three decimals, so that a literal axis value is
+        already on the grid (SEMANTICS.md §2). None when the line is not plain motion or its
+        values need the general rounding (increment input mode, S with a fraction)."""
+        kinds = self._plain_kinds
+        if kinds is None:
+            kinds = self._plain_kinds = self._plain_letter_kinds()
+        if not kinds:
+            return None
         modal: list[tuple[str, float]] = []
         codes: list[tuple[str, float]] = []
         axes: list[tuple[int, float]] = []
         inc: list[tuple[int, float]] = []
+        extra: list[tuple[str, float]] = []
+        groups = self.g_groups
+        calls = self.settings.calls
+        for word in text.split():
+            kind = kinds.get(word[0])
+            if kind is None:
+                return None
+            v = float(word[1:])
+            if kind.__class__ is int:  # an axis, absolute (>= 0) or incremental (< 0)
+                if kind >= 0:
+                    axes.append((kind, v))
+                else:
+                    inc.append((-1 - kind, v))
+            elif kind == "G":
+                group = groups.get(v)
+                if not group or group in _NOT_PLAIN_GROUPS or (calls and f"G{v:g}" in calls):
+                    return None
+                modal.append((group, v))
+            elif kind == "F":
+                codes.append(("F", v))
+            elif kind == "S":
+                if v % 1:
+                    return None
+                codes.append(("S", v))
+            else:
+                extra.append((kind, v))
+        return tuple(modal), tuple(codes), tuple(axes), tuple(inc), tuple(extra)
+
+    def _plain_letter_kinds(self) -> dict[str, Any]:
+        """Letter (either case) -> axis index, ``-1 - index`` for an incremental letter, or
+        the letter itself for G, F, S and the arc words R, I, J, K. Empty in increment input
+        mode, where a value without a point counts least increments."""
+        if self.settings.decimal_point == "increment":
+            return {}
+        kinds: dict[str, Any] = {"G": "G", "F": "F", "S": "S", **{c: c for c in _CENTRE_LETTERS}}
+        kinds.update(self.axis_index)
+        for letter, axis in self.dialect.incremental_letters.items():
+            if axis in self.axis_index:
+                kinds[letter] = -1 - self.axis_index[axis]
+        kinds.update({k.lower(): v for k, v in kinds.items()})
+        return kinds
+
+    def plain_plan(self, words: list[tuple[str, float]]) -> tuple[Any, ...] | None:
+        """For a block of literal words that only sets modal codes, F or S and moves axes:
+        (modal settings, codes, absolute axes, incremental axes, arc words R I J K), decided
+        once; None for anything else (one-shot G codes, canned cycles, tools), which
+        ``execute_nc`` does."""
+        modal: list[tuple[str, float]] = []
+        codes: list[tuple[str, float]] = []
+        axes: list[tuple[int, float]] = []
+        inc: list[tuple[int, float]] = []
+        extra: list[tuple[str, float]] = []
         axis_index = self.axis_index
         inc_letters = self.dialect.incremental_letters
         for letter, v in words:
             if letter == "G":
                 group = self.g_groups.get(v)
-                if not group or group in ("macro", "canned", "wcs", "length"):
+                if not group or group in _NOT_PLAIN_GROUPS:
                     return None
                 modal.append((group, v))
             elif letter in axis_index:
@@ -113,26 +177,31 @@ class Motion:
                 inc.append((axis_index[inc_letters[letter]], v))
             elif letter in ("F", "S"):
                 codes.append((letter, v))
+            elif letter in _CENTRE_LETTERS:
+                extra.append((letter, v))
             else:
                 return None
-        return tuple(modal), tuple(codes), tuple(axes), tuple(inc)
+        return tuple(modal), tuple(codes), tuple(axes), tuple(inc), tuple(extra)
 
-    def run_plain(self, plan: tuple[Any, ...], file: str, line: int) -> bool:
-        """Carry out a ``plain_plan``; returns whether an axis moved."""
-        modal_sets, code_sets, axes, inc = plan
+    def run_plain(self, plan: tuple[Any, ...], line: int) -> bool:
+        """Carry out a ``plain_plan`` with its file and next line appended; returns whether
+        an axis moved."""
+        modal_sets, code_sets, axes, inc, _, file, _ = plan
         modal = self.modal
         for group, g in modal_sets:
             modal[group] = g
-        for letter, v in code_sets:
-            self.codes[letter] = v
+        if code_sets:
+            codes = self.codes
+            for letter, v in code_sets:
+                codes[letter] = v
         if not axes and not inc:
             return False
         mode = modal["motion"]
-        if mode in self.dialect.cycle_codes or (modal.get("canned", 80.0) != 80.0 and not self.dialect.lathe):
+        if mode in self._cycle_codes or (modal["canned"] != 80.0 and not self._lathe):
             return self._cycle_fallback(plan, file, line)
-        pos = self.pos
-        target = pos[:]
-        if self.dialect.lathe or modal["distance"] == 90.0:
+        start = self.pos
+        target = start[:]
+        if self._lathe or modal["distance"] == 90.0:
             for i, v in axes:
                 target[i] = v
         else:
@@ -140,14 +209,15 @@ class Motion:
                 target[i] += v
         for i, v in inc:
             target[i] += v
-        self._record(file, line, mode, tuple(pos), tuple(target))
         self.pos = target
+        self._record(file, line, mode, tuple(start), tuple(target))
         return True
 
     def _cycle_fallback(self, plan: tuple[Any, ...], file: str, line: int) -> bool:
         inverse = {v: k for k, v in self.dialect.incremental_letters.items()}
         words = [(self.dialect.axes[i], v) for i, v in plan[2]]
         words += [(inverse[self.dialect.axes[i]], v) for i, v in plan[3]]
+        words += plan[4]
         return self.execute_nc(words, file, line)[0]
 
     # ---------------------------------------------------------------- one block
@@ -226,19 +296,18 @@ class Motion:
 
     def _record(self, file: str, line: int, mode: float, start: tuple[float, ...], end: tuple[float, ...]) -> None:
         """Advance the simulated clock by the move's time and record the move."""
-        feed = float(self.codes.get("F") or 0.0)
-        dist = math.dist(start, end)
+        feed = self.codes.get("F") or 0.0
         if mode == 0.0:
-            self.clock += dist / RAPID_RATE * 60.0
+            self.clock += math.dist(start, end) / RAPID_RATE * 60.0
         else:
             rate = feed
             per_rev = self.modal.get("feed")
-            if per_rev == 95.0 or (per_rev == 99.0 and self.dialect.lathe):
+            if per_rev == 95.0 or (per_rev == 99.0 and self._lathe):
                 rate *= self.codes.get("S") or 0.0
             if rate > 0:
-                self.clock += dist / rate * 60.0
+                self.clock += math.dist(start, end) / rate * 60.0
         if self.record_moves:
-            self.moves.append(Move(file, line, mode, start, end, feed))
+            self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed))))
 
     # ---------------------------------------------------------------- tools
     def select_tool(self, t: float) -> None:

@@ -8,6 +8,7 @@ Literal values are rounded once here; only variable values are computed when the
 
 from __future__ import annotations
 
+from functools import partial
 from typing import TYPE_CHECKING, Any
 
 from ..dialects.alarms import G_ARGUMENT, NC_AND_MACRO, PROGRAM_NOT_FOUND
@@ -47,11 +48,17 @@ def compile_nc_block(cf: CompiledFile, block: Block, pc: int, nxt: int) -> Runne
     return _nc(cf, block, words, nxt)
 
 
+def compile_plain_line(cf: CompiledFile, text: str, nxt: int) -> Runner | None:
+    """``_plain_motion`` for a line kept as text (``Block.plain``), read without building
+    syntax nodes; None when the line needs the general path."""
+    plan = cf.machine.plain_text_plan(text)
+    return None if plan is None else _plan_runner(cf, plan, nxt)
+
+
 def _plain_motion(cf: CompiledFile, block: Block, nxt: int) -> Runner | None:
     """The closure for the commonest block of all, literal modal G codes, F, S and axis
     words (``G01 X10.5 Y-3 F200``), or None for anything else."""
-    machine = cf.machine
-    calls = machine.settings.calls
+    calls = cf.machine.settings.calls
     words: list[tuple[str, float]] = []
     for w in block.words:
         value = w.value
@@ -64,18 +71,20 @@ def _plain_motion(cf: CompiledFile, block: Block, nxt: int) -> Runner | None:
         if v is None:
             continue
         words.append((letter, v))
-    plan = machine.plain_plan(words)
-    if plan is None:
-        return None
-    run_plain = machine.__class__.run_plain
-    file_path = cf.file.path
+    plan = cf.machine.plain_plan(words)
+    return None if plan is None else _plan_runner(cf, plan, nxt)
 
-    def plain_motion(m: Any, pc: int) -> int:
-        if run_plain(m, plan, file_path, pc) and m.modal_calls:
-            return m.modal_call(pc, nxt)
-        return nxt
 
-    return plain_motion
+def _plan_runner(cf: CompiledFile, plan: tuple[Any, ...], nxt: int) -> Runner:
+    """The runner of a plain-motion line: the plan (with its file and next line appended)
+    bound to one shared function, which costs far less memory than a closure per line."""
+    return partial(_run_plain_line, (*plan, cf.file.path, nxt))
+
+
+def _run_plain_line(plan: tuple[Any, ...], m: Any, pc: int) -> int:
+    if m.run_plain(plan, pc) and m.modal_calls:
+        return m.modal_call(pc, plan[6])
+    return plan[6]
 
 
 # ---------------------------------------------------------------- G65 / G66

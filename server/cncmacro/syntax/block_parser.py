@@ -8,6 +8,7 @@ after an edit only parses the lines whose text is new.
 from __future__ import annotations
 
 import gc
+import re
 import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -20,6 +21,15 @@ from .grammar import BlockError, make_parser
 from .lines import Prepared, has_special, prepare
 from .messages import describe_error
 from .nodes import Block, Problem
+
+# A line of whitespace-separated address-number words with at most three decimals, not
+# starting with N or O: the CAM norm (``G01 X12.5 Y-3.``). Its ``split()`` gives exactly its
+# words, its axis values are on the 0.001 grid already, and ``assemble_words`` would give it
+# neither a label nor a header; the interpreter compiles it straight from its text.
+_NUMBER = r"[+-]?(?:\d+(?:\.\d{0,3})?|\.\d{1,3})"
+_PLAIN_LINE = re.compile(
+    r"[ \t]*[A-MP-Za-mp-z]" + _NUMBER + r"(?:[ \t]+[A-Za-z]" + _NUMBER + r")*[ \t]*"
+).fullmatch
 
 # Real controls read blocks of at most a few hundred characters; a longer line is reported,
 # not parsed, so that a huge line costs nothing and cannot stall the editor.
@@ -63,7 +73,9 @@ def parse_block(line: str) -> Block:
                 ),
             )
         )
-    if not has_special(line):  # the common case: no comment, ';', '/' or '%'
+    if _PLAIN_LINE(line) is not None:  # the common case
+        return Block(plain=line)
+    if not has_special(line):  # no comment, ';', '/' or '%'
         words = plain_words(line)
         if words is not None and words[0].letter not in ("O", "N"):
             return Block(words=tuple(words))
@@ -112,7 +124,9 @@ def collector_paused() -> Iterator[None]:
 
 
 class BlockCache:
-    """Blocks by line text. Identical lines share one block; the cache is bounded."""
+    """Blocks by line text. Identical lines share one block; the cache is bounded. A plain
+    line of words (``Block.plain``) costs no more to make than to look up, so opening a file
+    makes those afresh and keeps the cache for the lines that take parsing."""
 
     def __init__(self, max_entries: int = 400_000) -> None:
         self._blocks: dict[str, Block] = {}
@@ -136,7 +150,11 @@ class BlockCache:
             blocks.clear()
         out = []
         append = out.append
+        plain = _PLAIN_LINE
         for line in lines:
+            if plain(line) is not None and len(line) <= MAX_BLOCK_CHARS:
+                append(Block(plain=line))  # as cheap as a lookup: not cached
+                continue
             b = blocks.get(line)
             if b is None:
                 b = blocks[line] = parse_block(line)

@@ -226,7 +226,22 @@ class Problem:
     severity: str = "error"
 
 
-@dataclass(slots=True)
+_FIELDS = (
+    "label",
+    "label_span",
+    "program",
+    "program_span",
+    "title",
+    "block_delete",
+    "tape",
+    "words",
+    "statements",
+    "comments",
+    "problems",
+    "structural",
+)
+
+
 class Block:
     """One line of a program.
 
@@ -235,29 +250,77 @@ class Block:
     ``words`` holds the NC words other than those two, in order; ``statements`` the macro
     statements. ``block_delete`` is None, 0 for ``/`` or 1–9 for ``/n``. ``tape`` marks a
     ``%`` line. ``problems`` are the syntax errors and warnings of the line; a block with an
-    error has no words or statements.
+    error has no words or statements. ``structural`` is True when the block has a label, O
+    header, ``%`` mark or loop marker (see program.py).
+
+    A line of whitespace-separated address-number words with at most three decimals
+    (``G01 X12.5 Y-3.``), most of a CAM program, is kept as its text in ``plain`` and its
+    ``words`` are read the first time they are asked for: opening a file then costs one
+    pattern match per such line, and the interpreter compiles these lines straight from
+    ``plain`` (its ``split()`` is its words).
     """
 
-    label: int | None = None
-    label_span: tuple[int, int] | None = None
-    program: int | None = None
-    program_span: tuple[int, int] | None = None
-    title: str | None = None
-    block_delete: int | None = None
-    tape: bool = False
-    words: tuple[Word, ...] = ()
-    statements: tuple[Statement, ...] = ()
-    comments: tuple[Comment, ...] = ()
-    problems: tuple[Problem, ...] = ()
-    structural: bool = False  # has a label, O header, % mark or loop marker: see program.py
+    __slots__ = (*(f for f in _FIELDS if f != "words"), "_words", "plain")
+
+    def __init__(
+        self,
+        label: int | None = None,
+        label_span: tuple[int, int] | None = None,
+        program: int | None = None,
+        program_span: tuple[int, int] | None = None,
+        title: str | None = None,
+        block_delete: int | None = None,
+        tape: bool = False,
+        words: tuple[Word, ...] | None = (),
+        statements: tuple[Statement, ...] = (),
+        comments: tuple[Comment, ...] = (),
+        problems: tuple[Problem, ...] = (),
+        structural: bool = False,
+        plain: str | None = None,
+    ) -> None:
+        self.label = label
+        self.label_span = label_span
+        self.program = program
+        self.program_span = program_span
+        self.title = title
+        self.block_delete = block_delete
+        self.tape = tape
+        self._words = None if plain is not None else words
+        self.statements = statements
+        self.comments = comments
+        self.problems = problems
+        self.structural = structural
+        self.plain = plain
+
+    @property
+    def words(self) -> tuple[Word, ...]:
+        w = self._words
+        if w is None:
+            from .fastpath import plain_words
+
+            w = self._words = tuple(plain_words(self.plain or "") or ())
+        return w
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is not Block:
+            return NotImplemented
+        return all(getattr(self, f) == getattr(other, f) for f in _FIELDS)
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        shown = ", ".join(f"{f}={getattr(self, f)!r}" for f in _FIELDS if getattr(self, f) not in (None, (), False))
+        return f"Block({shown})"
 
     @property
     def has_error(self) -> bool:
-        return any(p.severity == "error" for p in self.problems)
+        return bool(self.problems) and any(p.severity == "error" for p in self.problems)
 
     @property
     def is_empty(self) -> bool:
         """True for a line that does nothing: blank, comments only, or only ``;``."""
+        if self.plain is not None:
+            return False
         return (
             self.label is None
             and self.program is None

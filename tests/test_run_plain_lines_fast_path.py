@@ -1,0 +1,68 @@
+"""Plain motion lines run straight from their text exactly as through the syntax tree.
+
+A line of whitespace-separated words (``G01 X12.5 Y-3.``) is compiled from its text without
+building syntax nodes (SEMANTICS.md §2 rounding, §8 motion). Appending a comment to every line
+sends the same blocks through the general path, so the two runs must leave the same moves,
+clock, modal state and variables, in both dialects and both decimal-point input modes.
+"""
+
+from __future__ import annotations
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from running import lines, run
+
+AXES = {"fanuc": "XYZ", "gsk980tdi": "XZUW"}
+
+
+@st.composite
+def plain_line(draw: st.DrawFn, dialect: str) -> str:
+    letters = AXES[dialect]
+    words = []
+    if draw(st.booleans()):
+        words.append("G" + draw(st.sampled_from(["0", "00", "1", "01", "2", "3", "90", "91", "94", "17", "4"])))
+    for letter in draw(st.lists(st.sampled_from(letters + "FSRIJK"), min_size=1, max_size=5)):
+        whole = draw(st.integers(-500, 500))
+        decimals = draw(st.sampled_from(["", ".", ".5", ".25", ".125", ".0625", ".33333"]))
+        text = f"{whole}{decimals}"
+        if letter == "F":
+            text = text.lstrip("-") or "1"
+        words.append(letter + text)
+    sep = draw(st.sampled_from([" ", "  ", "\t", ""]))
+    text = sep.join(words)
+    return text.lower() if draw(st.booleans()) else text
+
+
+@st.composite
+def program(draw: st.DrawFn) -> tuple[str, list[str], str]:
+    dialect = draw(st.sampled_from(sorted(AXES)))
+    body = draw(st.lists(plain_line(dialect), min_size=1, max_size=25))
+    mode = draw(st.sampled_from(["calculator", "increment"]))
+    return dialect, body, mode
+
+
+def outcome(dialect: str, body: list[str], mode: str) -> tuple[object, ...]:
+    m = run(lines("O0001", *body, "M30"), dialect, decimal_point=mode)
+    alarm = (m.alarm.number, m.alarm.line) if m.alarm else None
+    return m.status, alarm, m.moves, m.clock, dict(m.modal), dict(m.codes), m.variables()
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(program())
+def test_plain_lines_run_as_the_general_path_runs_them(case: tuple[str, list[str], str]) -> None:
+    dialect, body, mode = case
+    commented = [f"{text} (same block)" for text in body]
+    assert outcome(dialect, body, mode) == outcome(dialect, commented, mode)
+
+
+def test_plain_lines_move_and_round_as_written() -> None:
+    m = run(lines("O0001", "G90 G01 X10.5 Y-3. F200", "G91 X1.25 Y1", "X0.0004 Z2.", "M30"))
+    assert m.status == "completed"
+    assert [move.end for move in m.moves] == [(10.5, -3.0, 0.0, 0.0), (11.75, -2.0, 0.0, 0.0), (11.75, -2.0, 2.0, 0.0)]
+    assert m.moves[-1].line == 3
+
+
+def test_plain_lines_in_increment_mode_count_least_increments() -> None:
+    m = run(lines("O0001", "G90 G01 X10 Y2.5 F200", "M30"), decimal_point="increment")
+    assert m.moves[0].end[:2] == (0.01, 2.5)
