@@ -53,6 +53,23 @@ def test_binary_file_is_refused():
         decode_program(bytes(range(1, 32)) * 20)
 
 
+def test_utf16_program_with_bom_is_read():
+    text = "O0100 (刀具磨损补偿)\nG00 X10.\nM30\n"
+    src = decode_program(text.encode("utf-16"))
+    assert src.encoding == "utf-16" and src.text == text
+    assert encode_program(src) == text.encode("utf-16")
+
+
+def test_binary_file_starting_like_utf16_is_refused():
+    """Binary data whose first two bytes happen to be a UTF-16 byte-order mark is still binary."""
+    with pytest.raises(BinaryFileError):
+        decode_program(b"\xff\xfe" + bytes(range(256)) * 4)
+    with pytest.raises(BinaryFileError):
+        decode_program(b"\xff\xfe" + "图像数据".encode("utf-16-le") * 50)
+    with pytest.raises(BinaryFileError):
+        decode_program(b"\xff\xfe\x00\xd8")  # a lone surrogate
+
+
 def test_text_file_is_not_binary():
     assert decode_program(b"G00 X0\tY0\n\x1a").text.startswith("G00")
 

@@ -21,7 +21,7 @@ class BinaryFileError(Exception):
     """The file is not text; ``offset`` is where the first NUL (or the evidence) is."""
 
     def __init__(self, path: str, offset: int) -> None:
-        super().__init__(f"{path}: binary file (NUL byte at offset {offset}), not a program")
+        super().__init__(f"{path}: binary file (byte at offset {offset} is not program text), not a program")
         self.path = path
         self.offset = offset
 
@@ -40,7 +40,7 @@ def decode_program(data: bytes, path: str = "<bytes>") -> SourceText:
     if data.startswith(codecs.BOM_UTF8):
         return SourceText(data[3:].decode("utf-8", errors="surrogateescape"), "utf-8", True)
     if data.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
-        return SourceText(data.decode("utf-16", errors="surrogateescape"), "utf-16", True)
+        return _utf16_program(data, path)
     nul = data.find(b"\0")
     if nul >= 0:
         raise BinaryFileError(path, nul)
@@ -58,6 +58,23 @@ def decode_program(data: bytes, path: str = "<bytes>") -> SourceText:
         return SourceText(data.decode("gb18030"), "gb18030")
     except UnicodeDecodeError:
         return SourceText(data.decode("utf-8", errors="surrogateescape"), "utf-8")
+
+
+def _utf16_program(data: bytes, path: str) -> SourceText:
+    """A file that starts with a UTF-16 byte-order mark. A real program decodes to mostly
+    ASCII text with no NUL or control characters; anything else is binary data that happens
+    to begin with those two bytes."""
+    try:
+        text = data.decode("utf-16")
+    except UnicodeDecodeError as e:
+        raise BinaryFileError(path, e.start) from None
+    sample = text[:4096]
+    for i, ch in enumerate(sample):
+        if ch < " " and ch not in "\t\n\f\r\x1a":
+            raise BinaryFileError(path, 2 + 2 * i)
+    if sample and sum(1 for ch in sample if ch < "\x80") * 2 < len(sample):
+        raise BinaryFileError(path, 2)
+    return SourceText(text, "utf-16", True)
 
 
 def read_program(path: str | Path) -> SourceText:
