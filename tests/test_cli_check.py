@@ -70,6 +70,59 @@ def test_bad_usage_exits_two():
 
 def test_gbk_file_is_checked(tmp_path):
     f = tmp_path / "O0100.nc"
-    f.write_bytes("O0100 (刀具)\nIF[#100<100]GOTO10\nN10 M30\n".encode("gbk"))
+    f.write_bytes("O0100 (刀具)\nIF[#100 LT 100]GOTO10\nN10 M30\n".encode("gbk"))  # fanuc spells LT
     r = run("check", str(f))
     assert r.returncode == 0, r.stdout + r.stderr
+
+
+def test_run_found_error_in_a_called_macro_is_reported_in_its_file(tmp_path):
+    (tmp_path / "MAIN.nc").write_text("O0001\nG65 P9001 A0\nM30\n", encoding="utf-8")
+    (tmp_path / "O9001.nc").write_text("O9001\n#2=1/#1\nM99\n", encoding="utf-8")
+    r = run("check", "--format", "json", str(tmp_path))
+    assert r.returncode == 1, r.stdout + r.stderr
+    found = [(Path(d["file"]).name, d["line"], d["code"]) for d in json.loads(r.stdout)]
+    assert found == [("O9001.nc", 2, "division-by-zero")]
+
+
+def test_max_blocks_and_hints(tmp_path):
+    f = tmp_path / "O0001.nc"
+    f.write_text("O0001\nN1 #1=#1+1\nGOTO1\nM30\n", encoding="utf-8")
+    r = run("check", "--max-blocks", "50", "--hints", str(f))
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "[run-limit]" in r.stdout and "after 50 blocks" in r.stdout
+    assert f"{f}:4:1: hint:" in r.stdout and "[not-executed]" in r.stdout
+    assert "[not-executed]" not in run("check", "--max-blocks", "50", str(f)).stdout
+    assert run("check", "--max-blocks", "0", str(f)).returncode == 2
+
+
+def test_dialect_option_takes_effect(tmp_path):
+    f = tmp_path / "O0001.nc"
+    f.write_text("O0001\n#1=10000\nG65 P9001 L#1\nM30\nO9001\nM99\n", encoding="utf-8")
+    fanuc = json.loads(run("check", "--format", "json", str(f)).stdout)
+    gsk = json.loads(run("check", "--format", "json", "--dialect", "gsk980tdi", str(f)).stdout)
+    assert [(d["line"], d["severity"]) for d in fanuc if d["code"] == "repeat-count-range"] == [(3, "error")]
+    assert [(d["line"], d["severity"]) for d in gsk if d["code"] == "repeat-count-range"] == [(3, "warning")]
+
+
+def test_path_option_finds_called_programs(tmp_path):
+    lib = tmp_path / "lib"
+    lib.mkdir()
+    (lib / "O9001.nc").write_text("O9001\n#2=SQRT[-1]\nM99\n", encoding="utf-8")
+    main = tmp_path / "main"
+    main.mkdir()
+    f = main / "MAIN.nc"
+    f.write_text("O0001\n#1=9001\nG65 P#1\nM30\n", encoding="utf-8")
+    without = json.loads(run("check", "--format", "json", str(f)).stdout)
+    assert [d["code"] for d in without] == ["program-not-found"]
+    found = json.loads(run("check", "--format", "json", "--path", str(lib), str(f)).stdout)
+    assert [(Path(d["file"]).name, d["line"], d["code"]) for d in found] == [("O9001.nc", 2, "argument-range")]
+
+
+def test_locale_and_sarif(tmp_path):
+    f = tmp_path / "O0001.nc"
+    f.write_text("O0001\n#1=0\n#2=5/#1\nM30\n", encoding="utf-8")
+    r = run("check", "--locale", "zh-CN", str(f))
+    assert r.returncode == 1 and "除数为零" in r.stdout
+    sarif = json.loads(run("check", "--format", "sarif", str(f)).stdout)
+    [result] = sarif["runs"][0]["results"]
+    assert result["ruleId"] == "division-by-zero"

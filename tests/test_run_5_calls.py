@@ -284,6 +284,28 @@ def test_macro_call_codes_from_the_machine_file():
     assert v[100] == 11 and v[101] == 3 and v[102] == 77
 
 
+def test_5_calls_a_call_code_with_l_above_9999_is_clamped_with_a_note_on_gsk():
+    from cncmacro.library.machine_file import CallCode
+
+    program = lines("M50 L12000 A3", "M30", "O9020", "#100=#100+#1", "M99")
+    m = run(program, "gsk980tdi", calls={"M50": CallCode(9020, "macro")}, max_blocks=200_000)
+    assert m.status == "completed" and m.variables()[100] == 3 * 9999
+    assert [(n.kind, n.line) for n in m.notes] == [("call", 0)]
+    assert "9999" in m.notes[0].message
+
+
+def test_5_calls_m99_p_in_a_main_program_goes_on_from_that_label():
+    """M99 P5 jumps to N5 of the main program; the plain M99 after it restarts the program."""
+    program = lines("#100=#100+1", "IF[#100 GE 3] GOTO 9", "M99 P5", "N9 M30", "N5 #101=#101+1", "M99")
+    m = run(program, max_blocks=1000)
+    assert m.status == "completed" and m.variables()[100] == 3 and m.variables()[101] == 2
+
+
+def test_5_calls_m99_p_in_a_main_program_to_a_missing_label_alarms():
+    m = run(lines("#1=1", "M99 P77", "M30"))
+    assert m.status == "alarm" and m.alarm.number == 128 and m.alarm.line == 1
+
+
 def test_t_code_calls_a_subprogram_with_the_t_value_in_149():
     from cncmacro.library.machine_file import CallCode
 

@@ -49,6 +49,15 @@ def test_moves_are_recorded_with_line_mode_from_and_to():
     ]
 
 
+def test_8_machine_a_motion_code_cancels_a_drilling_cycle_on_fanuc():
+    """Group 01 (G00-G03) cancels a group 09 drilling cycle: the later moves drill nothing."""
+    for text in ("G00 X30. Y10.", "G00 X30. Y10. (rapid)"):  # the plain-line path and the general path
+        m = run(lines("O0001", "G90 G99 G81 X10. Y10. Z-5. R2. F100.", text, "G01 X40. F200.", "M30"))
+        assert [move.mode for move in m.moves if move.line >= 2] == [0.0, 1.0]
+        assert m.moves[-1].end[:3] == (40.0, 10.0, 2.0)
+        assert m.read(4009) == 80.0
+
+
 def test_work_offsets_shift_the_machine_position():
     presets = {5221: 100.0, 5222: 50.0, 5241: -10.0}
     m = run(lines("G54 G90 G00 X1 Y2", "#100=#5021", "#101=#5022", "G55 X1", "#102=#5021", "#103=#5001", "M30"),

@@ -1,26 +1,55 @@
-"""``cncmacro check``: report the diagnostics of program files, as text or JSON.
+"""``cncmacro check``: report the diagnostics of program files, as text, JSON or SARIF.
 
-Exit status: 0 when no error was found, 1 when one was, 2 on bad usage or unreadable input
-(a missing path, a binary file). Unreadable files are named on standard error; the others
-are still checked.
+The files are opened in a ``WorkspaceAnalysis``: syntax, the static checks, and what bounded
+runs of the machine find (from each program nothing calls; called programs through their
+callers). Hints (``not-executed``) are printed only with ``--hints``. Exit status: 0 when no
+error was found, 1 when one was, 2 on bad usage or unreadable input (a missing path, a binary
+file, a bad machine file). Unreadable files are named on standard error; the others are still
+checked.
 """
 
 from __future__ import annotations
 
+import argparse
 import json
 import sys
 from pathlib import Path
 from typing import TextIO
 
-from ..analysis import Diagnostic, syntax_diagnostics
+from .. import __version__
+from ..analysis import Diagnostic
+from ..analysis.workspace import WorkspaceAnalysis
 from ..library.files import BinaryFileError, find_program_files, read_program
-from ..syntax.document import ParsedDocument
+from ..library.machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
+from .sarif import to_sarif
 
 
-def check_paths(paths: list[str], out: TextIO, err: TextIO, fmt: str = "text") -> int:
+def check_paths(
+    paths: list[str],
+    out: TextIO,
+    err: TextIO,
+    fmt: str = "text",
+    *,
+    dialect: str | None = None,
+    search_paths: list[str] | None = None,
+    locale: str = "en",
+    max_blocks: int | None = None,
+    machine: str | None = None,
+    hints: bool = False,
+) -> int:
     """Check every program file under ``paths``; print the findings; return the exit status."""
-    diagnostics: list[Diagnostic] = []
+    if max_blocks is not None and max_blocks < 1:
+        print("cncmacro check: --max-blocks must be at least 1", file=err)
+        return 2
+    try:
+        settings = _settings(machine, paths)
+        ws = WorkspaceAnalysis(settings=settings, dialect=dialect, search_paths=search_paths or [], locale=locale,
+                               max_blocks=max_blocks, severities=settings.severity)  # fmt: skip
+    except (MachineFileError, ValueError) as e:
+        print(f"cncmacro check: {e}", file=err)
+        return 2
     unreadable = False
+    opened: list[str] = []
     for arg in paths:
         root = Path(arg)
         if not root.exists():
@@ -38,11 +67,22 @@ def check_paths(paths: list[str], out: TextIO, err: TextIO, fmt: str = "text") -
                 print(f"cncmacro: {path}: cannot read: {e.strerror or e}", file=err)
                 unreadable = True
                 continue
-            doc = ParsedDocument(source.text)
-            diagnostics += syntax_diagnostics(doc.program, str(path))
+            ws.open(str(path), source.text, 0)
+            opened.append(str(path))
+    diagnostics: list[Diagnostic] = []
+    if opened:
+        result = ws.analyze(opened[0])
+        assert result is not None  # nothing cancels it
+        for diags in result.diagnostics.values():
+            diagnostics += diags
+    if not hints:
+        diagnostics = [d for d in diagnostics if d.severity != "hint"]
     diagnostics.sort(key=Diagnostic.sort_key)
     if fmt == "json":
         json.dump([_as_json(d) for d in diagnostics], out, ensure_ascii=False, indent=2)
+        out.write("\n")
+    elif fmt == "sarif":
+        json.dump(to_sarif(diagnostics, __version__), out, ensure_ascii=False, indent=2)
         out.write("\n")
     else:
         for d in diagnostics:
@@ -50,6 +90,18 @@ def check_paths(paths: list[str], out: TextIO, err: TextIO, fmt: str = "text") -
     if unreadable:
         return 2
     return 1 if any(d.severity == "error" for d in diagnostics) else 0
+
+
+def _settings(machine: str | None, paths: list[str]) -> MachineSettings:
+    """``--machine``, else the nearest ``.cncmacro.toml`` above the first path, else defaults."""
+    if machine:
+        return load_machine_file(machine)
+    for arg in paths:
+        p = Path(arg)
+        if p.exists():
+            found = find_machine_file(p)
+            return load_machine_file(found) if found is not None else MachineSettings()
+    return MachineSettings()
 
 
 def _as_json(d: Diagnostic) -> dict[str, object]:
@@ -66,5 +118,8 @@ def _as_json(d: Diagnostic) -> dict[str, object]:
     }
 
 
-def main_check(args: object) -> int:
-    return check_paths(args.paths, sys.stdout, sys.stderr, args.format)  # type: ignore[attr-defined]
+def main_check(args: argparse.Namespace) -> int:
+    return check_paths(
+        args.paths, sys.stdout, sys.stderr, args.format, dialect=args.dialect, search_paths=args.path,
+        locale=args.locale, max_blocks=args.max_blocks, machine=args.machine, hints=args.hints,
+    )  # fmt: skip

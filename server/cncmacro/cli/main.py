@@ -27,13 +27,44 @@ def build_parser() -> argparse.ArgumentParser:
     )
     check.add_argument("paths", nargs="+", metavar="PATH", help="program files, or folders to search for them")
     check.add_argument("--dialect", choices=DIALECTS, help="dialect when a file does not name one (default fanuc)")
-    check.add_argument("--format", choices=("text", "json"), default="text", help="output format (default text)")
+    check.add_argument(
+        "--format", choices=("text", "json", "sarif"), default="text", help="output format (default text)"
+    )
     check.add_argument(
         "--path", action="append", default=[], metavar="DIR", help="another folder where called programs are looked up"
     )
+    check.add_argument("--locale", choices=("en", "zh-CN"), default="en", help="language of the messages (default en)")
+    check.add_argument(
+        "--max-blocks", type=int, metavar="N", help="block budget of each analysis run (default 1000000)"
+    )
+    check.add_argument("--machine", metavar="FILE", help="machine settings (default: the nearest .cncmacro.toml)")
+    check.add_argument("--hints", action="store_true", help="also report hints (blocks no analysis run reached)")
     check.set_defaults(handler=main_check)
     add_run_parser(sub)
+    lsp = sub.add_parser(
+        "lsp", help="language server (LSP on stdio)", description="Run the language server on stdio, or on TCP."
+    )
+    lsp.add_argument("--tcp", action="store_true", help="listen on TCP instead of stdio (for debugging)")
+    lsp.add_argument("--host", default="127.0.0.1", help="TCP host (default 127.0.0.1)")
+    lsp.add_argument("--port", type=int, default=2087, help="TCP port (default 2087)")
+    lsp.set_defaults(handler=main_lsp)
+    dap = sub.add_parser(
+        "dap", help="debug adapter (Debug Adapter Protocol on stdio)", description="Run the debug adapter on stdio."
+    )
+    dap.set_defaults(handler=main_dap)
     return parser
+
+
+def main_dap(args: argparse.Namespace) -> int:
+    from ..dap.session import serve
+
+    return serve()
+
+
+def main_lsp(args: argparse.Namespace) -> int:
+    from ..lsp.server import serve
+
+    return serve(tcp=args.tcp, host=args.host, port=args.port)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -24,6 +24,9 @@ Every key is optional (DESIGN.md "Machine settings")::
     [skip]                         # where the G31 skip signal fires
     Z = -12.5
 
+    [severity]                     # diagnostic code = error|warning|information|hint|off
+    macro-alarm = "error"
+
 Errors are reported as ``MachineFileError`` with the file and the key, never as a crash.
 """
 
@@ -39,6 +42,7 @@ from ..dialects import normalise_dialect
 MACHINE_FILE_NAME = ".cncmacro.toml"
 PERSISTENT_FILE_NAME = ".cncmacro-vars.json"
 DEFAULT_MAX_BLOCKS = 1_000_000
+SEVERITY_VALUES = ("error", "warning", "information", "hint", "off")
 
 
 class MachineFileError(ValueError):
@@ -69,6 +73,7 @@ class MachineSettings:
     variables: dict[int, float] = field(default_factory=dict)
     calls: dict[str, CallCode] = field(default_factory=dict)
     skip: dict[str, float] = field(default_factory=dict)
+    severity: dict[str, str] = field(default_factory=dict)
     folder: str | None = None
 
     def with_presets(self, presets: dict[int, float]) -> MachineSettings:
@@ -118,7 +123,7 @@ def settings_from_mapping(
         return MachineFileError(f"{source}: '{key}' {what}")
 
     known = {"dialect", "common", "decimal_point", "block_delete", "persistent_file", "max_blocks", "date", "time",
-             "variables", "calls", "skip"}  # fmt: skip
+             "variables", "calls", "skip", "severity"}  # fmt: skip
     for key in data:
         if key not in known:
             raise fail(key, f"is not a machine setting (known: {', '.join(sorted(known))})")
@@ -160,6 +165,8 @@ def settings_from_mapping(
         if not isinstance(s, dict) or not all(isinstance(v, (int, float)) for v in s.values()):
             raise fail("skip", "must map axis letters to positions")
         kw["skip"] = {str(k).upper(): float(v) for k, v in s.items()}
+    if "severity" in data:
+        kw["severity"] = _severity(data["severity"], fail)
     return MachineSettings(**kw)  # type: ignore[arg-type]
 
 
@@ -195,6 +202,19 @@ def _calls(table: object, fail) -> dict[str, CallCode]:  # type: ignore[no-untyp
             out[_code_key(code)] = CallCode(int(v["program"]), str(call))
         else:
             raise fail(f"calls.{k}", "must be a program number or {program = N, call = ...}")
+    return out
+
+
+def _severity(table: object, fail) -> dict[str, str]:  # type: ignore[no-untyped-def]
+    """``[severity]``: diagnostic code -> a severity or ``off``. Whether each code exists is
+    checked where the diagnostics are made (the analysis layer knows the codes)."""
+    if not isinstance(table, dict):
+        raise fail("severity", "must be a table of diagnostic code = severity")
+    out: dict[str, str] = {}
+    for k, v in table.items():
+        if not isinstance(v, str) or v.strip().lower() not in SEVERITY_VALUES:
+            raise fail(f"severity.{k}", f"must be one of {', '.join(SEVERITY_VALUES)} (not {v!r})")
+        out[str(k)] = v.strip().lower()
     return out
 
 

@@ -17,9 +17,10 @@ from ..dialects.alarms import alarm_text
 class MacroAlarm(Exception):
     """Raised while a block executes. ``message`` defaults to the alarm's standard text."""
 
-    def __init__(self, number: int, message: str | None = None) -> None:
+    def __init__(self, number: int, message: str | None = None, subject: str | None = None) -> None:
         self.number = number
         self.message = message or alarm_text(number)
+        self.subject = subject  # what the alarm is about where one number covers several things
         super().__init__(f"alarm {number}: {self.message}")
 
 
@@ -53,6 +54,7 @@ class Alarm:
     file: str
     line: int
     chain: tuple[CallSite, ...] = ()
+    subject: str | None = None  # e.g. "repeat-count", "label-range", "jump-into-loop"
 
     def describe(self) -> str:
         return f"alarm {self.number}: {self.message}"

@@ -53,8 +53,18 @@ class CompiledFile:
         self.do_end = {p.do_line: p.end_line for p in file.program.loops}
         self.end_do = {p.end_line: p.do_line for p in file.program.loops}
         self._jumps: dict[tuple[int, int], tuple[int, int]] = {}
-        self.values = ExpressionCompiler(machine.kinds)
-        self.addresses = ExpressionCompiler(machine.kinds, in_address=True)
+        self.values = ExpressionCompiler(machine.kinds, watch=machine.watching)
+        self.addresses = ExpressionCompiler(machine.kinds, in_address=True, watch=machine.watching)
+
+    def reset(self) -> None:
+        """Forget every compiled line, loop pair and jump: the file's text changed in place
+        (an edit in the editor), so each line is compiled again when it next runs."""
+        n = len(self.file.lines)
+        self.code = [None] * (n + 1)
+        self.code[n] = _end_of_file
+        self.do_end = {p.do_line: p.end_line for p in self.file.program.loops}
+        self.end_do = {p.end_line: p.do_line for p in self.file.program.loops}
+        self._jumps.clear()
 
     # ---------------------------------------------------------------- lines
     def skipped(self, block: Block) -> bool:
@@ -101,14 +111,14 @@ class CompiledFile:
             raise MacroAlarm(SEQUENCE_NUMBER, "GOTO to a vacant sequence number")
         n = int(round_half_away(label))
         if not 1 <= n <= 99999:
-            raise MacroAlarm(SEQUENCE_NUMBER, f"GOTO {n}: a sequence number must be 1 to 99999")
+            raise MacroAlarm(SEQUENCE_NUMBER, f"GOTO {n}: a sequence number must be 1 to 99999", "label-range")
         key = (pc, n)
         hit = self._jumps.get(key)
         if hit is None:
             hit = self._jumps[key] = self._find_jump(frame, pc, n)
         target, keep = hit
         if keep < 0:
-            raise MacroAlarm(LOOP_NUMBER, f"GOTO {n} jumps into a WHILE/DO loop from outside it")
+            raise MacroAlarm(LOOP_NUMBER, f"GOTO {n} jumps into a WHILE/DO loop from outside it", "jump-into-loop")
         del frame.loops[keep:]
         return target
 
@@ -147,6 +157,34 @@ class CompiledFile:
 
     # ---------------------------------------------------------------- compiling
     def compile(self, pc: int) -> Runner:
+        if not self.machine.watching:
+            return self._compile(pc)
+        self.values.line = self.addresses.line = pc  # the line the watched reads report
+        return self._watched(self.file.program.blocks[pc], self._compile(pc))
+
+    def _watched(self, block: Block, run: Runner) -> Runner:
+        """For the analysis: an assignment to a local or common variable also reports the
+        value it left (``Machine.on_write``), the value an editor shows beside the line."""
+        s = block.statements[0] if len(block.statements) == 1 and not block.words else None
+        if not isinstance(s, Assign) or not isinstance(s.target, Var):
+            return run
+        n = s.target.number
+        kind = self.machine.kinds.kind(n)
+        if kind not in ("local", "common", "persistent"):
+            return run
+        local = kind == "local"
+        path = self.file.path
+
+        def watched(m: Any, pc: int) -> int:
+            nxt = run(m, pc)
+            hook = m.on_write
+            if hook is not None:
+                hook(path, pc, n, m.L[n] if local else m.C[n])
+            return nxt
+
+        return watched
+
+    def _compile(self, pc: int) -> Runner:
         block = self.file.program.blocks[pc]
         nxt = self.next_line(pc)
         if block.plain is not None:  # most lines of a CAM program: no label, header or error

@@ -70,12 +70,13 @@ def repeat_count(value: float | None, dialect: Dialect, notes: list[str]) -> int
         raise MacroAlarm(
             P_VALUE_RANGE if dialect.count_in_p_and_l_alarm else ARGUMENT_RANGE,
             f"L{n}: the repeat count must be 1 to 9999",
+            "repeat-count",
         )
     if n > MAX_REPEAT:
         if dialect.clamp_repeat_count:
             notes.append(f"L{n} is above 9999; the control runs it 9999 times")
             return MAX_REPEAT
-        raise MacroAlarm(ARGUMENT_RANGE, f"L{n}: the repeat count must be 1 to 9999")
+        raise MacroAlarm(ARGUMENT_RANGE, f"L{n}: the repeat count must be 1 to 9999", "repeat-count")
     return n
 
 
@@ -114,3 +115,35 @@ def macro_program_number(value: float | None, dialect: Dialect) -> int:
     if n < 0 or n >= 10**dialect.program_digits:
         raise MacroAlarm(P_VALUE_RANGE, f"P{n}: a program number has at most {dialect.program_digits} digits")
     return n
+
+
+def argument_targets(letters: list[str]) -> list[int | None]:
+    """The local each argument word of a G65/G66 block fills, word by word (specification I,
+    and II for repeated I, J, K: the k-th I fills #(4+3(k-1))); None for a letter that is not
+    an argument or an eleventh I, J or K. Used by editors to label arguments."""
+    counts = {"I": 0, "J": 0, "K": 0}
+    out: list[int | None] = []
+    for letter in letters:
+        letter = letter.upper()
+        if letter in counts:
+            k = counts[letter]
+            counts[letter] = k + 1
+            out.append({"I": 4, "J": 5, "K": 6}[letter] + 3 * k if k < 10 else None)
+        elif letter in NOT_ARGUMENTS:
+            out.append(None)
+        else:
+            out.append(ARGUMENTS_I.get(letter))
+    return out
+
+
+def letters_for_local(number: int) -> tuple[str | None, str | None]:
+    """Which argument fills local ``#number``: (the letter under specification I, the word
+    under specification II such as ``I2`` for the second I), each None when none does."""
+    spec1 = next((letter for letter, n in ARGUMENTS_I.items() if n == number), None)
+    spec2: str | None = None
+    if number in (1, 2, 3):
+        spec2 = "ABC"[number - 1]
+    elif 4 <= number <= 33:
+        k, r = divmod(number - 4, 3)
+        spec2 = f"{'IJK'[r]}{k + 1}"
+    return spec1, spec2

@@ -91,10 +91,14 @@ class VariableKinds:
 class ExpressionCompiler:
     """Compiles expression and condition nodes into closures for one dialect and machine."""
 
-    def __init__(self, kinds: VariableKinds, in_address: bool = False) -> None:
+    def __init__(self, kinds: VariableKinds, in_address: bool = False, watch: bool = False) -> None:
         self.kinds = kinds
         self.dialect = kinds.dialect
         self.in_address = in_address
+        # For the analysis only: local reads that find a vacant local call
+        # ``Machine.vacant_local(n, line)``; ``line`` is set by the block compiler.
+        self.watch = watch
+        self.line = -1
 
     # ---------------------------------------------------------------- values
     def value(self, node: Expr) -> Getter:
@@ -146,6 +150,8 @@ class ExpressionCompiler:
         """A closure reading ``#n`` (a literal number)."""
         kind = self.kinds.kind(n)
         if kind == "local":
+            if self.watch:
+                return self._watched_local(n, self.line)
             return lambda m: m.L[n]
         if kind in ("common", "persistent"):
             return lambda m: m.C[n]
@@ -158,10 +164,20 @@ class ExpressionCompiler:
             return lambda m: m.read_system(n)
         return raiser(VARIABLE_NUMBER, f"#{n} does not exist on {self.dialect.title}")
 
+    @staticmethod
+    def _watched_local(n: int, line: int) -> Getter:
+        def watched(m: Any) -> Value:
+            v = m.L[n]
+            if v is None:
+                m.vacant_local(n, line)
+            return v
+
+        return watched
+
     def _binary(self, node: Binary) -> Getter:
         op = node.op
         rc, rv = self.constant(node.right)
-        left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local"
+        left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local" and not self.watch
         if op in ("+", "-", "*") and left_local and rc:
             n = node.left.number  # type: ignore[union-attr]
             c = rv or 0.0
@@ -271,8 +287,14 @@ class ExpressionCompiler:
         if not node.spelling.isalpha() and not self.dialect.c_relations:
             return raiser(FORMAT, f"'{node.spelling}' is not a relation on {self.dialect.title}; write {node.op}")
         op = node.op
+        if self.watch and op in ("EQ", "NE") and _is_vacant_test(node):
+            self.watch = False  # ``#24 EQ #0`` tests for a missing argument: not a use of it
+            try:
+                return self._relation(node)
+            finally:
+                self.watch = True
         rc, rv = self.constant(node.right)
-        left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local"
+        left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local" and not self.watch
         exact = op in ("EQ", "NE") and self.dialect.vacant_differs_in_eq
         if left_local and rc and not exact:
             n = node.left.number  # type: ignore[union-attr]
@@ -302,6 +324,11 @@ class ExpressionCompiler:
         if op == "GT":
             return lambda m: (a(m) or 0.0) > (b(m) or 0.0)
         return lambda m: (a(m) or 0.0) >= (b(m) or 0.0)
+
+
+def _is_vacant_test(node: Relation) -> bool:
+    """``a EQ #0`` or ``#0 NE a``: a comparison with the always-vacant ``#0``."""
+    return any(isinstance(side, Var) and side.number == 0 for side in (node.left, node.right))
 
 
 def _same(x: Value, y: Value) -> bool:

@@ -83,3 +83,5 @@ class Note:
     message: str
     file: str
     line: int
+    subject: str | None = None  # e.g. "repeat-count" for a clamped L
+    chain: tuple[Any, ...] = ()  # the CallSites that led there, main program first

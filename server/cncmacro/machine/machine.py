@@ -92,6 +92,14 @@ class Machine(VariableAccess, Motion):
         self.library = library or ProgramLibrary()
         self.kinds = VariableKinds(dialect, self.settings.common)
         self.m99_ends_main = m99_ends_main
+        # Analysis hooks, all off for plain runs. ``watching`` (set before the first block
+        # runs) compiles blocks that report vacant argument reads and assigned values;
+        # ``on_first_run(file, line, step)`` hears of each line the first time it is compiled,
+        # which is the first time it runs, so plain runs pay nothing for it.
+        self.watching = False
+        self.on_first_run: Callable[[str, int, int], None] | None = None
+        self.on_vacant_argument: Callable[[int, str, int, tuple[CallSite, ...]], None] | None = None
+        self.on_write: Callable[[str, int, int, Value], None] | None = None
         self.L: list[Value] = [None] * 34
         self.C: list[Value] = [None] * 1000
         self.S: dict[int, Value] = {}
@@ -113,6 +121,7 @@ class Machine(VariableAccess, Motion):
         self.output: list[str] = []
         self.notes: list[Note] = []
         self.cancel_requested = False
+        self.pause_requested = False
         self.apply_presets(self.settings.variables)
 
     # ---------------------------------------------------------------- setting up
@@ -191,19 +200,37 @@ class Machine(VariableAccess, Motion):
         f = self.frames[-1]
         return f.file, f.pc
 
-    def note(self, kind: str, message: str) -> None:
+    def note(self, kind: str, message: str, line: int | None = None, subject: str | None = None) -> None:
+        """Record a remark about the block on ``line`` (the current frame's, by default)."""
         f = self.frames[-1]
-        self.notes.append(Note(kind, message, f.file, f.pc))
+        at = f.pc if line is None else line
+        self.notes.append(Note(kind, message, f.file, at, subject, self.chain(at)))
+
+    def vacant_local(self, n: int, line: int) -> None:
+        """A watched read found local ``#n`` vacant on ``line``: when the macro level that
+        owns the locals was called without the argument that fills ``#n``, tell the
+        analysis (``on_vacant_argument``). Main-level locals have no caller to blame."""
+        hook = self.on_vacant_argument
+        if hook is None:
+            return
+        frames = self.frames
+        k = len(frames) - 1
+        while k > 0 and frames[k - 1].locals is frames[k].locals:
+            k -= 1  # M98 levels share the locals of the level that called them
+        if k == 0 or n in frames[k].arguments:
+            return
+        hook(n, frames[-1].file, line, self.chain(line))
 
     def print_line(self, text: str, pc: int) -> None:
         self.output.append(text)
         self.notes.append(Note("output", text, self.frames[-1].file, pc))
 
-    def chain(self) -> tuple[CallSite, ...]:
-        """Who called whom, from the main program inward (each with the line of its call)."""
+    def chain(self, at: int | None = None) -> tuple[CallSite, ...]:
+        """Who called whom, from the main program inward (each with the line of its call;
+        the innermost with ``at``, or its frame's line)."""
         sites = []
         for k, f in enumerate(self.frames):
-            line = self.frames[k + 1].call_line if k + 1 < len(self.frames) else f.pc
+            line = self.frames[k + 1].call_line if k + 1 < len(self.frames) else (f.pc if at is None else at)
             sites.append(CallSite(f.name, f.file, line, f.kind))
         return tuple(sites)
 
@@ -243,6 +270,8 @@ class Machine(VariableAccess, Motion):
                 c = code[pc]
                 if c is None:
                     c = cf.runner(pc)
+                    if self.on_first_run is not None:
+                        self.on_first_run(cf.file.path, pc, n)
                 n += 1
                 pc = c(self, pc)
                 if pc < 0:
@@ -252,13 +281,17 @@ class Machine(VariableAccess, Motion):
                     cf = frame.code
                     code = cf.code
                     pc = frame.pc
-                if not n % CANCEL_CHECK and self.cancel_requested:
-                    self.status = STOPPED
+                if not n % CANCEL_CHECK and (self.cancel_requested or self.pause_requested):
+                    if self.cancel_requested:
+                        self.status = STOPPED
+                    else:
+                        self.pause_requested = False
+                        self.status = PAUSED
                     break
         except MacroAlarm as e:
             self.blocks = n
             self.frames[-1].pc = pc
-            self.alarm = Alarm(e.number, e.message, self.frames[-1].file, pc, self.chain())
+            self.alarm = Alarm(e.number, e.message, self.frames[-1].file, pc, self.chain(), e.subject)
             self.status = ALARM
             return self.status
         except StopRequest as e:
@@ -301,6 +334,11 @@ class Machine(VariableAccess, Motion):
     def cancel(self) -> None:
         """Ask a running ``run`` (in another thread) to stop soon."""
         self.cancel_requested = True
+
+    def request_pause(self) -> None:
+        """Ask a running ``run`` (in another thread) to pause soon, within ``CANCEL_CHECK``
+        blocks (an endless loop too); it returns ``paused`` and may be run on afterwards."""
+        self.pause_requested = True
 
     # ---------------------------------------------------------------- calls and returns
     def find_program(self, number: int) -> FoundProgram:
@@ -365,6 +403,8 @@ class Machine(VariableAccess, Motion):
                 frame.pc = pc
                 return -1
             frame.loops.clear()
+            if p is not None:  # M99 Pn in a main program: on from its Nn (FANUC 0i)
+                return frame.code.label_from_start(frame.found.unit, int(p))
             return frame.start_pc  # M99 in a main program runs it again
         if frame.repeats > 0 and p is None:
             frame.repeats -= 1
@@ -469,6 +509,10 @@ class Machine(VariableAccess, Motion):
         notes: list[str] = []
         repeats = repeat_count(dict(values).get("L"), self.dialect, notes)
         arguments = map_arguments(args_words, self.dialect)
+        for text in notes:
+            self.note("call", text, pc, "repeat-count")
+        for text in arguments.remarks:
+            self.note("call", text, pc, "argument-order")
         return self.macro_call(found, arguments, repeats, pc, nxt, code)
 
     def code_subprogram_call(

@@ -30,6 +30,7 @@ G54_1_BASE = 7001  # G54.1 P1 axis 1; each P adds 20 (fanuc)
 LATHE_CYCLES_WITH_PROFILE = (71.0, 72.0, 73.0)
 _new_move = tuple.__new__  # a Move without the NamedTuple constructor's keyword handling
 _NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length"))
+_CANCEL_CYCLE = ("canned", 80.0)  # on a mill, G00-G03 cancel a drilling cycle (group 01 over group 09)
 _CENTRE_LETTERS = frozenset("RIJK")  # arc radius and centre: kept for a canned cycle's R level
 
 
@@ -129,6 +130,8 @@ class Motion:
                 if not group or group in _NOT_PLAIN_GROUPS or (calls and f"G{v:g}" in calls):
                     return None
                 modal.append((group, v))
+                if group == "motion" and not self._lathe:
+                    modal.append(_CANCEL_CYCLE)
             elif kind == "F":
                 codes.append(("F", v))
             elif kind == "S":
@@ -171,6 +174,8 @@ class Motion:
                 if not group or group in _NOT_PLAIN_GROUPS:
                     return None
                 modal.append((group, v))
+                if group == "motion" and not self._lathe:
+                    modal.append(_CANCEL_CYCLE)
             elif letter in axis_index:
                 axes.append((axis_index[letter], v))
             elif letter in inc_letters and inc_letters[letter] in axis_index:
@@ -241,8 +246,10 @@ class Motion:
             else:
                 other[letter] = v
         one_shot: float | None = None
-        for g in gs:
-            group = self.g_groups.get(g)
+        groups = [self.g_groups.get(g) for g in gs]
+        if "motion" in groups and "canned" not in groups and not self.dialect.lathe:
+            self.modal["canned"] = 80.0  # G00-G03 cancel a drilling cycle, as G80 does
+        for g, group in zip(gs, groups, strict=True):
             if group:
                 if group == "macro":
                     continue  # G66/G67 are handled by the call layer

@@ -116,25 +116,27 @@ def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int
     count = _getter(cf, l_word)
     arg_values = [(w.letter, _getter(cf, w)) for w in args]
 
-    def evaluate(m: Any) -> tuple[Any, Any, int]:
+    def evaluate(m: Any, pc: int) -> tuple[Any, Any, int]:
         found = resolve(m)
         arguments = map_arguments([(letter, get(m)) for letter, get in arg_values], dialect)
         notes: list[str] = []
         repeats = repeat_count(count(m), dialect, notes)
-        for text in notes + arguments.remarks:
-            m.note("call", text)
+        for text in notes:
+            m.note("call", text, pc, "repeat-count")
+        for text in arguments.remarks:
+            m.note("call", text, pc, "argument-order")
         return found, arguments, repeats
 
     if g == 65.0:
 
         def g65(m: Any, pc: int) -> int:
-            found, arguments, repeats = evaluate(m)
+            found, arguments, repeats = evaluate(m, pc)
             return m.macro_call(found, arguments, repeats, pc, nxt, "G65")
 
         return g65
 
     def g66(m: Any, pc: int) -> int:
-        found, arguments, repeats = evaluate(m)
+        found, arguments, repeats = evaluate(m, pc)
         m.set_modal_call(found, arguments, repeats)
         return nxt
 
@@ -226,7 +228,7 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
         if found_call is not None:
             return m.code_subprogram_call(*found_call, values, pc, nxt)
         if 98.0 in mcontrol or 198.0 in mcontrol:
-            found, repeats, q = _subprogram_target(m, values, p_text, p_name, get_bracket, dialect)
+            found, repeats, q = _subprogram_target(m, values, p_text, p_name, get_bracket, dialect, pc)
             return m.subprogram_call(found, repeats, q, pc, nxt, "M98")
         if 99.0 in mcontrol:
             p = next((v for letter, v in values if letter == "P"), None)
@@ -251,7 +253,13 @@ def _after_nc(m: Any, moved: bool, skip_to: float | None, pc: int, nxt: int) -> 
 
 
 def _subprogram_target(
-    m: Any, values: list[tuple[str, float]], p_text: str | None, p_name: str | None, get_bracket: Any, dialect: Any
+    m: Any,
+    values: list[tuple[str, float]],
+    p_text: str | None,
+    p_name: str | None,
+    get_bracket: Any,
+    dialect: Any,
+    pc: int,
 ) -> tuple[Any, int, float | None]:
     """(program, count, Q label) of an M98 block."""
     words = dict(values)
@@ -272,5 +280,5 @@ def _subprogram_target(
         number, repeats = program_and_count(p_text, words["P"], words.get("L"), dialect, notes)
         found = m.find_program(number)
     for text in notes:
-        m.note("call", text)
+        m.note("call", text, pc, "repeat-count")
     return found, repeats, q

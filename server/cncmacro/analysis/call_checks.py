@@ -1,0 +1,392 @@
+"""Checks of a block of NC words (SEMANTICS.md §5, §7): calls, returns and their words.
+
+The block is read in the interpreter's order (``machine/nc_blocks.py``): a ``G65``/``G66``
+makes the block a macro call (only ``N`` before it and no O word: ``g65-nc-words``, alarm 127);
+on gsk980tdi ``G65 H..`` without L is the macro A form; otherwise a code that the machine
+settings configure as a call, then ``M98``/``M198`` and ``M99``. What is decided is decided by
+the interpreter's own helpers in ``machine/calls.py`` (``map_arguments`` for argument letters,
+``repeat_count`` and ``program_and_count`` for counts, ``macro_program_number`` for P), run on
+the literal values: an alarm they raise becomes an error here, a note a warning. Calls with a
+literal target become ``CallSite`` facts for ``program-not-found``; literal ``H80–H86 P``
+targets ``Jump`` facts; ``M99 Pn`` a ``ReturnJump``.
+"""
+
+from __future__ import annotations
+
+from ..machine.alarms import MacroAlarm
+from ..machine.calls import macro_program_number, map_arguments, program_and_count, repeat_count
+from ..machine.hcodes import ARITHMETIC, BRANCHES
+from ..machine.numbers import round_half_away, to_increment
+from ..syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
+from .line_facts import CallSite, Finding, LineContext, LineFacts, ReturnJump
+from .locale import pick
+from .statement_checks import literal_jump
+from .variable_checks import check_write, scan_value
+
+H_OPERATIONS = frozenset((*ARITHMETIC, *BRANCHES, 26, 99))
+SUBPROGRAM_CALLS = (98.0, 198.0)
+
+
+def check_words(block: Block, ctx: LineContext, facts: LineFacts) -> None:
+    """Findings and facts of a block of NC words (no macro statement)."""
+    words = block.words
+    for i, w in enumerate(words):
+        g = _literal(w) if w.letter == "G" else None
+        if g == 65.0 or g == 66.0:
+            _macro_call(words, i, g, ctx, facts)
+            return
+    _nc_block(words, ctx, facts)
+
+
+def _literal(w: Word) -> float | None:
+    v = w.value
+    return v.value if v.__class__ is Number else None  # type: ignore[union-attr]
+
+
+def _constant(w: Word | None, ctx: LineContext) -> float | None:
+    if w is None or w.value is None:
+        return None
+    is_constant, value = ctx.values.constant(w.value)
+    return value if is_constant else None
+
+
+def _add(facts: LineFacts, w: Word, severity: str, code: str, en: str, zh: str, ctx: LineContext) -> None:
+    facts.findings.append(Finding(w.start, w.end, severity, code, pick(ctx.locale, en, zh)))
+
+
+# ---------------------------------------------------------------- G65 / G66
+
+
+def _macro_call(words: tuple[Word, ...], at: int, g: float, ctx: LineContext, facts: LineFacts) -> None:
+    name = "G65" if g == 65.0 else "G66"
+    if at > 0:
+        w = words[0]
+        _add(facts, w, "error", "g65-nc-words",
+             f"{w.letter} before {name}: only N may precede {name} in its block (alarm 127)",
+             f"{name} 之前只允许出现 N，不能有 {w.letter}（报警 127）", ctx)  # fmt: skip
+        return
+    after = words[at + 1 :]
+    for w in after:
+        if w.letter == "O":
+            _add(facts, w, "error", "g65-nc-words",
+                 f"{name} may not share its block with an O word (alarm 127)",
+                 f"{name} 不能与 O 代码在同一程序段（报警 127）", ctx)  # fmt: skip
+            return
+    dialect = ctx.dialect
+    has_h = any(w.letter == "H" for w in after)
+    has_l = any(w.letter == "L" for w in after)
+    if g == 65.0 and has_h and not has_l:
+        if dialect.h_codes:
+            _h_code(words[at], after, ctx, facts)
+            return
+        if _looks_like_h_code(after):
+            h = after[0]
+            _add(facts, h, "error", "dialect-feature",
+                 f"G65 H{_literal(h):02.0f} (macro A arithmetic and branches) does not exist on {dialect.title}; "
+                 "write it as a macro statement",
+                 f"{dialect.title} 没有 G65 H{_literal(h):02.0f}（宏程序 A 形式的运算与转移），请改写为宏语句",
+                 ctx)  # fmt: skip
+            return
+    for w in after:
+        if w.value is not None:
+            scan_value(w.value, ctx, facts.findings)
+    args = [w for w in after if w.letter not in ("P", "L")]
+    for w in args:
+        if w.letter == "G":
+            _add(facts, w, "error", "argument-address",
+                 f"G after {name}: a G code cannot be an argument (alarm 129)",
+                 f"{name} 之后的 G 代码不能作为自变量（报警 129）", ctx)  # fmt: skip
+            break
+    else:
+        _check_arguments(args, name, ctx, facts)
+    p_word = next((w for w in after if w.letter == "P"), None)
+    l_word = next((w for w in after if w.letter == "L"), None)
+    _macro_target(words[at], p_word, name, ctx, facts)
+    if l_word is not None:
+        _check_count(l_word, ctx, facts)
+
+
+def _looks_like_h_code(after: tuple[Word, ...]) -> bool:
+    """``G65 H01 P#100 Q..`` written for a control with macro A, read on one without it: H
+    right after G65 with an operation number, and P a variable or H a branch or alarm."""
+    h = after[0] if after else None
+    if h is None or h.letter != "H":
+        return False
+    value = _literal(h)
+    if value is None or value != int(value) or int(value) not in H_OPERATIONS:
+        return False
+    p = next((w for w in after if w.letter == "P"), None)
+    p_is_variable = p is not None and isinstance(p.value, (Var, IndirectVar))
+    return p_is_variable or int(value) in BRANCHES or int(value) == 99
+
+
+def _check_arguments(args: list[Word], name: str, ctx: LineContext, facts: LineFacts) -> None:
+    """Argument letters through the interpreter's ``map_arguments`` (values do not matter to
+    what it refuses, so each is given as 0)."""
+    try:
+        map_arguments([(w.letter, 0.0) for w in args], ctx.dialect)
+    except MacroAlarm as alarm:
+        bad = _first_refused(args, ctx)
+        _add(facts, bad, "error", "argument-address",
+             f"{alarm.message} (alarm {alarm.number})",
+             f"地址 {bad.letter} 不能作为 {name} 的自变量（报警 {alarm.number}）", ctx)  # fmt: skip
+
+
+def _first_refused(args: list[Word], ctx: LineContext) -> Word:
+    for k in range(1, len(args) + 1):
+        try:
+            map_arguments([(w.letter, 0.0) for w in args[:k]], ctx.dialect)
+        except MacroAlarm:
+            return args[k - 1]
+    return args[-1]
+
+
+def _macro_target(call: Word, p_word: Word | None, name: str, ctx: LineContext, facts: LineFacts) -> None:
+    dialect = ctx.dialect
+    if p_word is None:
+        _add(facts, call, "error", "program-not-found",
+             f"{name} needs P: the program to call (alarm 76)",
+             f"{name} 需要 P 指定被调用的程序（报警 076）", ctx)  # fmt: skip
+        return
+    if p_word.name is not None:
+        _named_target(p_word, name, ctx, facts)
+        return
+    value = p_word.value
+    if isinstance(value, Bracket) and dialect.bracket_names and isinstance(value.inner, Var):
+        return  # P[#100]: the program is known only when the block runs
+    number = _constant(p_word, ctx)
+    if number is None:
+        return
+    try:
+        program = macro_program_number(number, dialect)
+    except MacroAlarm as alarm:
+        _add(facts, p_word, "error", "program-number",
+             f"{alarm.message} on {dialect.title} (alarm {alarm.number})",
+             f"{dialect.title} 的程序号最多 {dialect.program_digits} 位且不能为负（报警 {alarm.number}）",
+             ctx)  # fmt: skip
+        return
+    facts.calls.append(CallSite(name, program, None, p_word.start, p_word.end))
+
+
+def _named_target(p_word: Word, how: str, ctx: LineContext, facts: LineFacts) -> None:
+    dialect = ctx.dialect
+    if not dialect.bracket_names:
+        _add(facts, p_word, "error", "dialect-feature",
+             f"P[{p_word.name}]: {dialect.title} names programs only by number, e.g. P1234",
+             f"P[{p_word.name}]：{dialect.title} 只能用程序号指定程序，例如 P1234", ctx)  # fmt: skip
+        return
+    facts.calls.append(CallSite(how, None, p_word.name, p_word.start, p_word.end))
+
+
+def _check_count(l_word: Word, ctx: LineContext, facts: LineFacts) -> None:
+    """A literal L through ``repeat_count``: an alarm is an error, a clamp a warning."""
+    value = _constant(l_word, ctx)
+    if value is None:
+        return
+    notes: list[str] = []
+    try:
+        repeat_count(value, ctx.dialect, notes)
+    except MacroAlarm as alarm:
+        _add(facts, l_word, "error", "repeat-count-range",
+             f"{alarm.message} (alarm {alarm.number})",
+             f"L{value:g}：调用次数必须在 1～9999 之间（报警 {alarm.number}）", ctx)  # fmt: skip
+        return
+    if notes:
+        _add(facts, l_word, "warning", "repeat-count-range", notes[0],
+             f"L{value:g} 超过 9999，{ctx.dialect.title} 按 9999 次执行", ctx)  # fmt: skip
+
+
+# ---------------------------------------------------------------- G65 H (macro A, gsk980tdi)
+
+
+def _h_code(g65: Word, after: tuple[Word, ...], ctx: LineContext, facts: LineFacts) -> None:
+    """``G65 Hm P Q R`` as ``machine/hcodes.py`` compiles it."""
+    extra = next((w for w in after if w.letter not in "HPQR"), None)
+    if extra is not None:
+        _add(facts, extra, "error", "argument-address",
+             f"G65 H takes only P, Q and R, not {extra.letter} (alarm 114)",
+             f"G65 H 只能带 P、Q、R，不能带 {extra.letter}（报警 114）", ctx)  # fmt: skip
+        return
+    by_letter = {w.letter: w for w in after}
+    h_word = by_letter["H"]
+    h_value = _literal(h_word)
+    if h_value is None:
+        _add(facts, h_word, "error", "argument-address",
+             "G65 H needs a literal operation number such as H01 (alarm 114)",
+             "G65 H 需要写明运算号，例如 H01（报警 114）", ctx)  # fmt: skip
+        return
+    h = int(h_value)
+    if h not in H_OPERATIONS:
+        _add(facts, h_word, "error", "argument-address",
+             f"G65 H{h:02d} is not an operation of {ctx.dialect.title} (alarm 114)",
+             f"G65 H{h:02d} 不是 {ctx.dialect.title} 的运算指令（报警 114）", ctx)  # fmt: skip
+        return
+    for letter in "QR":
+        w = by_letter.get(letter)
+        if w is not None and w.value is not None:
+            scan_value(w.value, ctx, facts.findings)
+    p_word = by_letter.get("P")
+    if p_word is None or p_word.value is None:
+        _add(facts, h_word, "error", "argument-address",
+             f"G65 H{h:02d} needs P (alarm 114)", f"G65 H{h:02d} 需要 P（报警 114）", ctx)  # fmt: skip
+        return
+    if h in BRANCHES or h == 99:
+        scan_value(p_word.value, ctx, facts.findings)
+        if h in BRANCHES:
+            literal_jump(p_word.value, f"G65 H{h:02d} P", ctx, facts)
+        return
+    destination = p_word.value
+    if not isinstance(destination, (Var, IndirectVar)):
+        _add(facts, p_word, "error", "argument-address",
+             f"G65 H{h:02d}: P names the result variable, e.g. P#100 (alarm 114)",
+             f"G65 H{h:02d}：P 指定存放结果的变量，例如 P#100（报警 114）", ctx)  # fmt: skip
+        return
+    if h == 26:
+        scan_value(destination, ctx, facts.findings)
+    check_write(destination, ctx, facts.findings)
+
+
+# ---------------------------------------------------------------- NC blocks: codes, M98, M99
+
+
+def _code_value(w: Word) -> float | None:
+    """A literal G or M code as the interpreter rounds it."""
+    v = _literal(w)
+    if v is None:
+        return None
+    if w.letter == "G":
+        return to_increment(v, 1) if v != int(v) else v
+    return round_half_away(v)
+
+
+def _nc_block(words: tuple[Word, ...], ctx: LineContext, facts: LineFacts) -> None:
+    simple = True
+    for w in words:
+        if w.value is not None and w.value.__class__ is not Number:
+            simple = False
+            if not ctx.values.constant(w.value)[0]:
+                scan_value(w.value, ctx, facts.findings)
+            else:
+                scan_value(w.value, ctx, facts.findings, depth_checked=False)
+    ms: list[float] = []
+    for w in words:
+        if w.letter == "M":
+            v = _code_value(w)
+            if v is None:
+                if not simple:
+                    return  # an M code known only when the block runs
+            else:
+                ms.append(v)
+    if ctx.calls and _code_call(words, ctx, facts):
+        return
+    if 98.0 in ms or 198.0 in ms:
+        _subprogram_call(words, "M98" if 98.0 in ms else "M198", ctx, facts)
+    elif 99.0 in ms:
+        p = _last(words, "P")
+        value = _constant(p, ctx)
+        if p is not None and value is not None:
+            facts.returns.append(ReturnJump(int(round_half_away(value)), p.start, p.end))
+
+
+def _last(words: tuple[Word, ...], letter: str) -> Word | None:
+    found = None
+    for w in words:
+        if w.letter == letter:
+            found = w
+    return found
+
+
+def _code_call(words: tuple[Word, ...], ctx: LineContext, facts: LineFacts) -> bool:
+    """A G, M or T code that the machine settings make a call (``Machine.call_code_for``)."""
+    calls = ctx.calls
+    for w in words:
+        if w.letter in ("G", "M"):
+            v = _code_value(w)
+            code = f"{w.letter}{v:g}" if v is not None else None
+        elif w.letter == "T" and "T" in calls:
+            code = "T"
+        else:
+            continue
+        call = calls.get(code) if code else None
+        if call is None:
+            continue
+        facts.calls.append(CallSite(code, call.program, None, w.start, w.end))  # type: ignore[arg-type]
+        if call.call == "macro":
+            args = [a for a in words if a is not w and a.letter != "L" and not _same_code(a, code)]  # type: ignore[arg-type]
+            _check_arguments(args, code, ctx, facts)  # type: ignore[arg-type]
+            l_word = next((a for a in words if a.letter == "L"), None)
+            if l_word is not None:
+                _check_count(l_word, ctx, facts)
+        return True
+    return False
+
+
+def _same_code(w: Word, code: str) -> bool:
+    if w.letter not in ("G", "M"):
+        return False
+    v = _code_value(w)
+    return v is not None and f"{w.letter}{v:g}" == code
+
+
+def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts: LineFacts) -> None:
+    """``M98 P<count><program> L Q`` as ``_subprogram_target`` in ``machine/nc_blocks.py``."""
+    dialect = ctx.dialect
+    p_word = _last(words, "P")
+    l_word = _last(words, "L")
+    q_word = _last(words, "Q")
+    q_value = _constant(q_word, ctx)
+    q = int(round_half_away(q_value)) if q_value is not None and abs(q_value) < 1e9 else None
+    q_span = (q_word.start, q_word.end) if q_word is not None else (0, 0)
+    named = next((w for w in words if w.letter == "P" and w.name is not None), None)
+    if named is not None:
+        if not dialect.bracket_names:
+            _named_target(named, how, ctx, facts)
+            return
+        facts.calls.append(CallSite(how, None, named.name, named.start, named.end, q, q_span))
+        if l_word is not None:
+            _check_count(l_word, ctx, facts)
+        return
+    if p_word is None:
+        m = next(w for w in words if w.letter == "M" and _code_value(w) in SUBPROGRAM_CALLS)
+        if q_word is None:
+            _add(facts, m, "error", "program-not-found",
+                 f"{how} needs P (the program), or Q to call the current program (alarm 76)",
+                 f"{how} 需要 P 指定子程序，或用 Q 调用当前程序（报警 076）", ctx)  # fmt: skip
+            return
+        if q is not None:
+            facts.calls.append(CallSite(how, None, None, m.start, m.end, q, q_span))
+        if l_word is not None:
+            _check_count(l_word, ctx, facts)
+        return
+    if isinstance(p_word.value, Bracket) and isinstance(p_word.value.inner, Var):
+        return  # P[#100]: known only when the block runs
+    p_value = _constant(p_word, ctx)
+    if p_value is None:
+        return
+    p_text = p_word.value.text if isinstance(p_word.value, Number) else None
+    try:
+        program, _ = program_and_count(p_text, p_value, None, dialect, [])
+    except MacroAlarm as alarm:
+        _add(facts, p_word, "error", "program-number",
+             f"{alarm.message} (alarm {alarm.number})",
+             f"{how} 的 P 最多 8 位（前 4 位为次数，后 4 位为程序号），且不能为负（报警 {alarm.number}）",
+             ctx)  # fmt: skip
+        return
+    facts.calls.append(CallSite(how, program, None, p_word.start, p_word.end, q, q_span))
+    if l_word is None:
+        return
+    l_value = _constant(l_word, ctx)
+    if l_value is None:
+        return
+    twice: list[str] = []
+    try:
+        program_and_count(p_text, p_value, 1.0, dialect, twice)  # L=1 is always valid: only P against L is judged
+    except MacroAlarm as alarm:
+        _add(facts, l_word, "error", "repeat-count-range",
+             f"{alarm.message} (alarm {alarm.number})",
+             f"P 和 L 同时指定了调用次数（报警 {alarm.number}）", ctx)  # fmt: skip
+        return
+    if twice:
+        _add(facts, l_word, "warning", "repeat-count-range",
+             f"{how}: {twice[0]}", f"{how}：P 和 L 同时指定了调用次数，按 L 执行", ctx)  # fmt: skip
+    _check_count(l_word, ctx, facts)

@@ -1,0 +1,119 @@
+"""What the static checks learn from one line on its own: findings, jumps and calls.
+
+``LineFacts`` is the result of looking at one block with nothing but the dialect and the machine
+settings: the problems it has by itself (``Finding``, columns only, no line or file, so that a
+result can be cached per block and reused wherever the block appears) and the facts that need
+the rest of the file to judge: literal jump targets (``Jump``), calls of other programs
+(``CallSite``) and ``M99 Pn`` returns (``ReturnJump``). ``LineContext`` holds what every line's
+check needs, made once per dialect, settings and locale.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from ..dialects.dialect import BY_NAME, Dialect
+from ..library.machine_file import MachineSettings
+from ..machine.expressions import ExpressionCompiler, VariableKinds
+
+
+@dataclass(frozen=True, slots=True)
+class Finding:
+    """A problem on one block: 0-based columns in the line, a severity, a code and a message."""
+
+    start: int
+    end: int
+    severity: str
+    code: str
+    message: str
+
+
+@dataclass(frozen=True, slots=True)
+class Jump:
+    """A jump to a literal label in the same O program: ``GOTO``, ``IF..GOTO``, ``G65 H80–H86``.
+    ``start``/``end`` is the span of the target as written."""
+
+    label: int
+    start: int
+    end: int
+    how: str  # what is written before the label: "GOTO " or "G65 H81 P"
+
+
+@dataclass(frozen=True, slots=True)
+class CallSite:
+    """A call of another program with a literal target: ``number`` (O number) or ``name``
+    (gsk980tdi ``P[CUT]``), neither for ``M98 Q`` on the current program. ``start``/``end`` is
+    the span of what names the program; ``q`` is the literal ``M98 Q`` label and its span."""
+
+    how: str
+    number: int | None
+    name: str | None
+    start: int
+    end: int
+    q: int | None = None
+    q_span: tuple[int, int] = (0, 0)
+
+
+@dataclass(frozen=True, slots=True)
+class ReturnJump:
+    """``M99 Pn`` with a literal n: a return to label n of the caller."""
+
+    label: int
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class LineFacts:
+    """Everything one block says by itself (see the module docstring)."""
+
+    findings: list[Finding] = field(default_factory=list)
+    jumps: list[Jump] = field(default_factory=list)
+    calls: list[CallSite] = field(default_factory=list)
+    returns: list[ReturnJump] = field(default_factory=list)
+
+    def __bool__(self) -> bool:
+        return bool(self.findings or self.jumps or self.calls or self.returns)
+
+
+# A plain line (``Block.plain``) needs a look only when it holds one of these codes: a macro or
+# subprogram call, or a return that may carry P.
+_PLAIN_CALL = r"(?:^|[ \t])(?:[Gg][+]?0*6[56]|[Mm][+]?0*(?:98|99|198))(?:\.0*)?(?=[ \t]|$)"
+
+
+class LineContext:
+    """The dialect, settings and locale of a check, with what they imply made once."""
+
+    def __init__(self, dialect: Dialect, settings: MachineSettings, locale: str = "en") -> None:
+        self.dialect = dialect
+        self.settings = settings
+        self.locale = locale
+        self.kinds = VariableKinds(dialect, settings.common)
+        self.values = ExpressionCompiler(self.kinds)
+        # the other dialects, to tell a feature this one lacks from a plain mistake
+        self.other_kinds = [VariableKinds(d, settings.common) for d in BY_NAME.values() if d is not dialect]
+        self.calls = settings.calls
+        self.plain_hint = re.compile(_plain_pattern(settings)).search
+
+    def key(self) -> tuple[str, int, str]:
+        return (self.dialect.name, id(self.settings), self.locale)
+
+
+def _plain_pattern(settings: MachineSettings) -> str:
+    """The pattern of a plain line that may need a check: the call codes, and the codes that
+    the machine settings configure as calls."""
+    parts = [_PLAIN_CALL]
+    for code in settings.calls:
+        letter, digits = code[:1], code[1:]
+        if not digits:
+            parts.append(rf"(?:^|[ \t])[{letter.upper()}{letter.lower()}]")
+            continue
+        try:
+            number = float(digits)
+        except ValueError:
+            continue
+        whole, _, frac = f"{number:g}".partition(".")
+        decimals = rf"\.{frac}0*" if frac else r"(?:\.0*)?"
+        parts.append(rf"(?:^|[ \t])[{letter.upper()}{letter.lower()}][+]?0*{whole}{decimals}(?=[ \t]|$)")
+    return "|".join(parts)

@@ -1,0 +1,296 @@
+"""Diagnostics found by running: one bounded, resumable run of the machine from an entry point.
+
+An ``EntryRun`` runs one program on a ``Machine`` with the analysis hooks on (never loading
+or saving ``#500–#999``, never recording moves, ``M99`` at level 0 ending the run). It runs in
+chunks of ``CHUNK`` blocks and keeps a ``Snapshot`` at every chunk boundary, the step at which
+each line first ran, and what the watched blocks reported (vacant argument reads, values
+written), each stamped with the chunk it came from. ``rewind(step)`` restores the last
+checkpoint at or before a step and forgets everything found after it, so that after an edit
+only the part of the run that can differ is run again (see ``workspace.py`` for which step).
+
+``run_diagnostics`` turns the state of a finished run into diagnostics: the alarm it stopped
+with (mapped by ``alarm_codes``), the block budget running out, clamped repeat counts and
+vacant argument reads, each at the block where it happened, in that block's file, naming the
+call chain and the block count in the message and the call sites as ``related`` places.
+"""
+
+from __future__ import annotations
+
+from bisect import bisect_left
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..dialects import Dialect
+from ..dialects.alarms import alarm_text
+from ..library.machine_file import MachineSettings
+from ..library.programs import FoundProgram, ProgramLibrary
+from ..machine import CallSite, Machine, Snapshot
+from ..machine.calls import letters_for_local
+from ..machine.machine import ALARM, FINISHED, LIMIT, PAUSED, READY, STOPPED
+from .alarm_codes import MACRO_ALARM, alarm_code
+from .diagnostics import Diagnostic, Related
+from .locale import pick
+from .severity import CODES
+
+CHUNK = 5000
+
+Value = float | None
+
+
+@dataclass(slots=True)
+class VacantRead:
+    """A macro read local ``#number`` on ``line`` of ``file`` without its caller passing it."""
+
+    stamp: int
+    number: int
+    file: str
+    line: int
+    chain: tuple[CallSite, ...]
+
+
+@dataclass(slots=True)
+class RunState:
+    """What a run found so far, each entry stamped with the step of its chunk's start."""
+
+    first: dict[str, dict[int, int]] = field(default_factory=dict)  # file -> line -> first step
+    order: list[tuple[int, str, int]] = field(default_factory=list)  # (step, file, line), by step
+    file_first: dict[str, int] = field(default_factory=dict)  # file -> the step it first ran at
+    vacant: dict[tuple[str, int, int], VacantRead] = field(default_factory=dict)
+    written: dict[str, dict[int, tuple[int, int, Value]]] = field(default_factory=dict)  # line -> (stamp, #n, v)
+
+
+class EntryRun:
+    """One analysis run from one entry program, resumable after edits."""
+
+    def __init__(
+        self,
+        entry: FoundProgram,
+        dialect: Dialect,
+        settings: MachineSettings,
+        library: ProgramLibrary,
+        max_blocks: int,
+    ) -> None:
+        self.entry = entry
+        self.dialect = dialect
+        self.settings = settings
+        self.library = library
+        self.max_blocks = max(1, max_blocks)
+        self.machine: Machine
+        self.checkpoints: list[Snapshot] = []
+        self.state = RunState()
+        self.stamp = 0
+        self.restart()
+
+    # ---------------------------------------------------------------- running
+    def restart(self) -> None:
+        """Start again from the first block with a fresh machine."""
+        m = Machine(self.dialect, self.settings, self.library, m99_ends_main=True)
+        m.record_moves = False
+        m.watching = True
+        m.on_first_run = self._first_run
+        m.on_vacant_argument = self._vacant
+        m.on_write = self._write
+        m.start(self.entry)
+        self.machine = m
+        self.state = RunState()
+        self.checkpoints = [m.snapshot()]
+        self.stamp = 0
+
+    @property
+    def finished(self) -> bool:
+        return self.machine.status in FINISHED and self.machine.status != STOPPED
+
+    def advance(self, should_cancel: Callable[[], bool] | None = None) -> bool:
+        """Run to the end (or the budget); False when ``should_cancel`` said stop first (the
+        run can be advanced again later)."""
+        m = self.machine
+        while not self.finished:
+            if m.status == STOPPED:  # ``Machine.cancel`` from another thread
+                m.cancel_requested = False
+                m.status = READY
+                return False
+            if should_cancel is not None and should_cancel():
+                return False
+            left = self.max_blocks - m.blocks
+            chunk = min(CHUNK, left)
+            self.stamp = m.blocks
+            status = m.run(chunk, is_limit=chunk >= left)
+            if status == PAUSED:
+                m.resume()  # M00, #3006 and the end of a chunk: a simulation goes on
+                self.checkpoints.append(m.snapshot())
+        return True
+
+    def rewind(self, step: int, avoid_file: str | None = None) -> None:
+        """Go back to the last checkpoint at or before ``step`` (before it, and before any
+        G66 that names ``avoid_file``, when that file's structure changed) and forget what
+        was found after it."""
+        strict = avoid_file is not None
+        keep = 0
+        for k, snap in enumerate(self.checkpoints):
+            if snap.blocks > step or (strict and snap.blocks >= step):
+                break
+            if avoid_file is not None and any(mc.found.file.path == avoid_file for mc in snap.modal_calls):
+                break
+            keep = k
+        snap = self.checkpoints[keep]
+        if (strict and snap.blocks >= step) or (avoid_file is not None and snap.blocks == 0):
+            self.restart()
+            return
+        del self.checkpoints[keep + 1 :]
+        m = self.machine
+        m.restore(snap)
+        at = snap.blocks
+        self._forget(at)
+        if m.status == PAUSED:
+            m.resume()
+
+    def _forget(self, at: int) -> None:
+        m = self.machine
+        st = self.state
+        cut = bisect_left(st.order, (at, "", -1))
+        for _, path, line in st.order[cut:]:
+            del st.first[path][line]
+            cf = m.compiled.get(path)
+            if cf is not None and line < len(cf.code) - 1:
+                cf.code[line] = None  # compiled again, and so recorded again, when it runs
+        del st.order[cut:]
+        for path in [p for p, s in st.file_first.items() if s >= at]:
+            del st.file_first[path]
+        vacant = self.state.vacant
+        for key in [k for k, v in vacant.items() if v.stamp >= at]:
+            del vacant[key]
+        for lines in self.state.written.values():
+            for line in [line for line, w in lines.items() if w[0] >= at]:
+                del lines[line]
+
+    def reset_file(self, path: str) -> None:
+        """The file's text changed in structure or length: compile it afresh when it runs."""
+        cf = self.machine.compiled.get(path)
+        if cf is not None:
+            cf.reset()
+
+    def forget_lines(self, path: str, lines: list[int]) -> None:
+        """These lines of ``path`` changed: compile them afresh when they run."""
+        cf = self.machine.compiled.get(path)
+        if cf is not None:
+            for line in lines:
+                if 0 <= line < len(cf.code) - 1:
+                    cf.code[line] = None
+
+    # ---------------------------------------------------------------- hooks
+    def _first_run(self, file: str, line: int, step: int) -> None:
+        st = self.state
+        lines = st.first.get(file)
+        if lines is None:
+            lines = st.first[file] = {}
+        if file not in st.file_first:
+            st.file_first[file] = step
+        if line not in lines:
+            lines[line] = step
+            st.order.append((step, file, line))
+
+    def _vacant(self, number: int, file: str, line: int, chain: tuple[CallSite, ...]) -> None:
+        key = (file, line, number)
+        if key not in self.state.vacant:
+            self.state.vacant[key] = VacantRead(self.stamp, number, file, line, chain)
+
+    def _write(self, file: str, line: int, number: int, value: Value) -> None:
+        lines = self.state.written.get(file)
+        if lines is None:
+            lines = self.state.written[file] = {}
+        lines[line] = (self.stamp, number, value)
+
+    def first_step(self, path: str, lines: list[int] | None = None) -> int | None:
+        """The first step at which any of ``lines`` (or any line) of ``path`` ran."""
+        recorded = self.state.first.get(path)
+        if not recorded:
+            return None
+        if lines is None:
+            return self.state.file_first.get(path)
+        steps = [s for line in lines if (s := recorded.get(line)) is not None]
+        return min(steps) if steps else None
+
+
+# ---------------------------------------------------------------- diagnostics of a run
+
+
+def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale: str) -> list[Diagnostic]:
+    """The findings of a finished run (see the module docstring)."""
+    m = run.machine
+    out: list[Diagnostic] = []
+    base = run.dialect.macro_alarm_base
+    if m.status == ALARM and m.alarm is not None:
+        a = m.alarm
+        code = alarm_code(a.number, a.subject, base)
+        if code == MACRO_ALARM:
+            en = f"the run reaches macro alarm {a.number}: {a.message}"
+            zh = f"运行到宏程序报警 {a.number}：{a.message}"
+        else:
+            en = f"{a.message} (alarm {a.number})"
+            zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{a.message}"
+        in_loop = bool(m.frames and m.frames[-1].loops)
+        out.append(_diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale))
+    elif m.status == LIMIT and m.frames:
+        f = m.frames[-1]
+        en = f"the analysis run stopped here after {m.blocks} blocks, its budget (an endless loop?)"
+        zh = f"分析运行在 {m.blocks} 个程序段后于此处停止（达到上限，可能是死循环）"
+        out.append(_diagnostic(f.file, f.pc, "run-limit", en, zh, m.chain(), None, False, line_text, locale))
+    for note in m.notes:
+        if note.kind == "call" and note.subject == "repeat-count":
+            en = note.message
+            zh = f"调用次数超出 1–9999：{note.message}"
+            d = _diagnostic(note.file, note.line, "repeat-count-range", en, zh, note.chain, None, False, line_text,
+                            locale, severity="warning")  # fmt: skip
+            out.append(d)
+    for read in run.state.vacant.values():
+        spec1, spec2 = letters_for_local(read.number)
+        letter = spec1 or spec2 or "?"
+        caller = read.chain[-2] if len(read.chain) >= 2 else None
+        how = read.chain[-1].how
+        who = f"{caller.program} line {caller.line + 1} ({how})" if caller else "its caller"
+        who_zh = f"{caller.program} 第 {caller.line + 1} 行（{how}）" if caller else "调用者"
+        en = f"#{read.number} ({letter}) is read, but {who} does not pass {letter}"
+        zh = f"读取了 #{read.number}（{letter}），但 {who_zh} 没有传递 {letter}"
+        out.append(_diagnostic(read.file, read.line, "vacant-argument", en, zh, read.chain, None, False, line_text,
+                               locale))  # fmt: skip
+    return out
+
+
+def _diagnostic(
+    file: str,
+    line: int,
+    code: str,
+    en: str,
+    zh: str,
+    chain: tuple[CallSite, ...],
+    blocks: int | None,
+    in_loop: bool,
+    line_text: Callable[[str, int], str],
+    locale: str,
+    severity: str | None = None,
+) -> Diagnostic:
+    """A run-found diagnostic spanning the block's text, with how it was reached."""
+    callers = chain[:-1]
+    hows = [c.how for c in chain[1:]]  # how each caller called the next level
+    if callers:
+        path = " → ".join(f"{c.program}:{c.line + 1} ({how})" for c, how in zip(callers, hows, strict=True))
+        en += f"; reached from {path}"
+        zh += f"；调用路径 {path}"
+    if blocks is not None and (in_loop or callers):
+        en += f", at block {blocks} of the run" + (" (inside a loop)" if in_loop else "")
+        zh += f"，运行的第 {blocks} 个程序段" + ("（循环中）" if in_loop else "")
+    text = line_text(file, line)
+    start = len(text) - len(text.lstrip())
+    end = max(start + 1, len(text.rstrip()))
+    related = tuple(
+        Related(c.file, c.line, 0, max(1, len(line_text(c.file, c.line).rstrip())),
+                pick(locale, f"called from {c.program} ({how})", f"由 {c.program} 调用（{how}）"))
+        for c, how in reversed(list(zip(callers, hows, strict=True)))
+    )  # fmt: skip
+    return Diagnostic(file, line, start, line, end, severity or CODES[code].severity, code, pick(locale, en, zh),
+                      related)  # fmt: skip
+
+
+def display_name(path: str) -> str:
+    return Path(path).name

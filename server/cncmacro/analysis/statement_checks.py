@@ -1,0 +1,91 @@
+"""Checks of a block's macro statements (SEMANTICS.md §3, §4): what one line decides alone.
+
+A block with a macro statement may hold no NC words (``nc-and-macro``, alarm 127; ``N`` and an O
+header are not words). Each statement's expressions go through ``variable_checks``; an
+assignment's target through ``check_write``. A literal ``GOTO n`` / ``IF..GOTO n`` target is
+rounded as the interpreter rounds it: outside 1–99999 it is ``label-range`` (alarm 128),
+otherwise it becomes a ``Jump`` for the cross-line label checks.
+"""
+
+from __future__ import annotations
+
+from ..machine.numbers import round_half_away
+from ..syntax.nodes import Assign, Block, Expr, Goto, If, Output, Statement, While
+from .line_facts import Finding, Jump, LineContext, LineFacts
+from .locale import pick
+from .variable_checks import check_write, scan_value
+
+MAX_LABEL = 99999
+
+
+def check_statements(block: Block, ctx: LineContext, facts: LineFacts) -> None:
+    """Findings and jumps of a block that holds macro statements."""
+    if block.words:
+        w = block.words[0]
+        facts.findings.append(
+            Finding(
+                w.start,
+                w.end,
+                "error",
+                "nc-and-macro",
+                pick(
+                    ctx.locale,
+                    f"the NC word {w.letter} and a macro statement in one block (alarm 127); "
+                    "only N may precede a macro statement",
+                    f"NC代码 {w.letter} 与宏语句在同一程序段（报警 127）；宏语句之前只允许 N",
+                ),
+            )
+        )
+        return
+    for s in block.statements:
+        _statement(s, ctx, facts)
+
+
+def _statement(s: Statement, ctx: LineContext, facts: LineFacts) -> None:
+    out = facts.findings
+    cls = s.__class__
+    if cls is Assign:
+        check_write(s.target, ctx, out)  # type: ignore[union-attr]
+        scan_value(s.value, ctx, out)  # type: ignore[union-attr]
+    elif cls is If:
+        scan_value(s.condition, ctx, out)  # type: ignore[union-attr]
+        if s.goto is not None:  # type: ignore[union-attr]
+            scan_value(s.goto, ctx, out)  # type: ignore[union-attr]
+            literal_jump(s.goto, "GOTO ", ctx, facts)  # type: ignore[union-attr]
+        elif s.then is not None:  # type: ignore[union-attr]
+            _statement(s.then, ctx, facts)  # type: ignore[union-attr]
+    elif cls is Goto:
+        scan_value(s.target, ctx, out)  # type: ignore[union-attr]
+        literal_jump(s.target, "GOTO ", ctx, facts)  # type: ignore[union-attr]
+    elif cls is While:
+        scan_value(s.condition, ctx, out)  # type: ignore[union-attr]
+    elif cls is Output:
+        for part in s.parts:  # type: ignore[union-attr]
+            if part.variable is not None:
+                scan_value(part.variable, ctx, out)
+
+
+def literal_jump(target: Expr, how: str, ctx: LineContext, facts: LineFacts) -> None:
+    """A jump whose target is a literal: ``label-range`` or a ``Jump`` to judge later.
+    ``how`` is what is written before the label (``"GOTO "``, ``"G65 H81 P"``)."""
+    is_constant, value = ctx.values.constant(target)
+    if not is_constant or value is None:
+        return
+    n = round_half_away(value) if abs(value) < 1e12 else value
+    if not 1 <= n <= MAX_LABEL:
+        shown = f"{n:.0f}" if abs(n) < 1e12 else f"{n:g}"
+        facts.findings.append(
+            Finding(
+                target.start,
+                target.end,
+                "error",
+                "label-range",
+                pick(
+                    ctx.locale,
+                    f"{how}{shown}: a sequence number must be 1 to {MAX_LABEL} (alarm 128)",
+                    f"{how}{shown}：顺序号必须在 1～{MAX_LABEL} 之间（报警 128）",
+                ),
+            )
+        )
+        return
+    facts.jumps.append(Jump(int(n), target.start, target.end, how))

@@ -1,0 +1,103 @@
+"""The static checks: every diagnostic that can be decided without running the program.
+
+``static_diagnostics`` checks a whole parsed file: each line on its own (``line_facts``: the
+statements, the words, the variables; see ``statement_checks``, ``call_checks`` and
+``variable_checks``), then what connects the lines (``loop_checks``, and ``label_checks`` with the
+program lookups of ``call_targets``). The per-line part is a pure function of the block, the
+dialect, the machine settings and the locale, so an incremental analysis may cache it per block
+and call ``block_diagnostics`` for changed lines only. A plain CAM line (``Block.plain``) is
+looked at only when its text holds a call or return code; its words are never built otherwise.
+Syntax errors are ``syntax_check``'s: a block that does not parse is not checked here.
+"""
+
+from __future__ import annotations
+
+from ..dialects.dialect import Dialect
+from ..library.machine_file import MachineSettings
+from ..library.programs import ProgramLibrary
+from ..syntax.nodes import Block
+from ..syntax.program import Program
+from .call_checks import check_words
+from .call_targets import ProgramFinder
+from .diagnostics import Diagnostic
+from .label_checks import LabelChecker
+from .line_facts import LineContext, LineFacts
+from .loop_checks import loop_diagnostics
+from .statement_checks import check_statements
+
+_contexts: dict[tuple[str, int, str], LineContext] = {}
+
+
+def line_context(dialect: Dialect, settings: MachineSettings, locale: str = "en") -> LineContext:
+    """The ``LineContext`` for these settings (made once and reused)."""
+    key = (dialect.name, id(settings), locale)
+    ctx = _contexts.get(key)
+    if ctx is None or ctx.settings is not settings or ctx.dialect is not dialect:
+        if len(_contexts) > 64:
+            _contexts.clear()
+        ctx = _contexts[key] = LineContext(dialect, settings, locale)
+    return ctx
+
+
+def line_facts(block: Block, ctx: LineContext) -> LineFacts | None:
+    """What ``block`` says by itself: findings, jumps, calls, returns (None for nothing)."""
+    plain = block.plain
+    if plain is not None:
+        if ctx.plain_hint(plain) is None:
+            return None
+    elif block.problems and block.has_error:
+        return None
+    facts = LineFacts()
+    if block.statements:
+        check_statements(block, ctx, facts)
+    elif block.words:
+        check_words(block, ctx, facts)
+    return facts if facts else None
+
+
+def block_diagnostics(
+    block: Block, line: int, file: str, dialect: Dialect, settings: MachineSettings, locale: str = "en"
+) -> list[Diagnostic]:
+    """The diagnostics that ``block`` on ``line`` earns by itself (no cross-line checks)."""
+    facts = line_facts(block, line_context(dialect, settings, locale))
+    return _findings(facts, line, file) if facts is not None else []
+
+
+def _findings(facts: LineFacts, line: int, file: str) -> list[Diagnostic]:
+    return [
+        Diagnostic(file, line, f.start, line, max(f.end, f.start + 1), f.severity, f.code, f.message)
+        for f in facts.findings
+    ]
+
+
+def static_diagnostics(
+    program: Program,
+    file: str,
+    dialect: Dialect,
+    settings: MachineSettings,
+    library: ProgramLibrary | None = None,
+    locale: str = "en",
+) -> list[Diagnostic]:
+    """Every static finding in ``program`` (the parsed text of ``file``), in line order.
+    Called programs are looked up in ``library`` near ``file``; without a library only the
+    file's own O programs are known and other targets are not reported."""
+    ctx = line_context(dialect, settings, locale)
+    hint = ctx.plain_hint
+    out: list[Diagnostic] = []
+    collected: list[tuple[int, LineFacts]] = []
+    for line, block in enumerate(program.blocks):
+        plain = block.plain
+        if plain is not None and hint(plain) is None:
+            continue
+        facts = line_facts(block, ctx)
+        if facts is None:
+            continue
+        if facts.findings:
+            out.extend(_findings(facts, line, file))
+        if facts.jumps or facts.calls or facts.returns:
+            collected.append((line, facts))
+    out.extend(loop_diagnostics(program, file, locale))
+    finder = ProgramFinder(program, file, dialect, library)
+    out.extend(LabelChecker(program, file, finder, locale).run(collected))
+    out.sort(key=Diagnostic.sort_key)
+    return out

@@ -1,0 +1,422 @@
+"""The analysis of a workspace of program files, kept up to date across edits.
+
+``WorkspaceAnalysis`` is what the command line and the language server use::
+
+    ws = WorkspaceAnalysis(settings=..., dialect="fanuc", search_paths=[...], locale="en",
+                           max_blocks=None, severities={"macro-alarm": "error"})
+    ws.open(path, text, version)          # editor-owned text wins over the file on disk
+    ws.change(path, l0, c0, l1, c1, text, version)   # an editor change (0-based positions)
+    ws.close(path); ws.file_changed(path)            # closed; created/changed/deleted on disk
+    result = ws.analyze(path, should_cancel)         # None when cancelled
+
+``AnalysisResult`` holds ``version`` (of ``path`` when it was analysed), ``diagnostics`` (file
+-> list, severities applied: syntax, static checks, and what the runs found) and ``values``
+(file -> 0-based line -> ``[(variable number, value)]``, the value each assignment on that
+line left the last time a run executed it; None is vacant).
+
+Which programs run: every O program of the open files that no workspace file calls with a
+literal target (G65/G66/M98/call codes) runs on its own, with vacant arguments, ``M99`` at
+level 0 ending it; a called program is analysed through its callers, with their arguments,
+and its findings appear in its own file. A called program that no run entered is then run on
+its own too, so that its findings are not lost. The dialect of a run is its entry file's:
+a ``(cncmacro: dialect=..)`` comment in the first lines, then the machine file's
+``dialect``, then ``dialect`` given here, then ``fanuc``.
+
+Incremental: parsing is per line (``ParsedDocument``). Each run keeps checkpoints and the
+step at which each line first ran. After an edit that keeps the number of lines and touches
+no label, O header or loop marker, a run resumes from its last checkpoint before the first
+execution of a changed line (or of the nearest line before the change, whose compiled form
+knows which line follows it); a run that never executed them is kept whole. An edit that
+adds or removes lines or changes that structure resumes each run from before the first
+time it entered the edited file. A changed O header, a dialect comment or a file changed on
+disk runs everything again.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..dialects import Dialect, get_dialect
+from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
+from ..library.machine_file import MachineSettings
+from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
+from ..syntax.document import ParsedDocument
+from ..syntax.nodes import Block
+from ..syntax.program import ProgramUnit
+from . import static_checks
+from .diagnostics import UNNECESSARY, Diagnostic
+from .locale import pick
+from .run_checks import EntryRun, run_diagnostics
+from .severity import apply_severities, check_overrides
+from .syntax_check import syntax_diagnostics
+
+Value = float | None
+_DIGITS = re.compile(r"^[Oo]?(\d{1,8})$")
+RUN_ALARM_CODES = frozenset({
+    "program-not-found", "nesting-depth", "division-by-zero", "argument-range", "syntax", "variable-number",
+    "write-protected", "bracket-depth", "loop-mismatch", "loop-number", "nc-and-macro", "undefined-label",
+    "argument-address", "program-number", "repeat-count-range", "label-range", "jump-into-loop",
+})  # fmt: skip
+
+
+@dataclass(slots=True)
+class AnalysisResult:
+    """See the module docstring."""
+
+    version: int | None
+    diagnostics: dict[str, list[Diagnostic]]
+    values: dict[str, dict[int, list[tuple[int, Value]]]]
+
+
+@dataclass(slots=True)
+class _Edit:
+    start: int
+    count: int  # lines of the new text
+    structural: bool
+
+
+@dataclass(slots=True)
+class _Open:
+    """An open document and what is cached about it."""
+
+    path: str
+    doc: ParsedDocument
+    loaded: LoadedFile
+    version: int | None
+    own: list[Diagnostic] | None = None  # syntax + static, until the next change
+    targets: tuple[set[int], set[str]] | None = None  # literal call targets
+    edits: list[_Edit] = field(default_factory=list)
+
+
+class WorkspaceAnalysis:
+    """See the module docstring."""
+
+    def __init__(
+        self,
+        *,
+        settings: MachineSettings | None = None,
+        dialect: str | None = None,
+        search_paths: list[str] = (),  # type: ignore[assignment]
+        locale: str = "en",
+        max_blocks: int | None = None,
+        severities: dict[str, str] | None = None,
+    ) -> None:
+        self.settings = settings or MachineSettings()
+        self.dialect_setting = dialect
+        self.search_paths = [str(p) for p in search_paths]
+        self.locale = locale
+        self.max_blocks = max_blocks if max_blocks is not None else self.settings.max_blocks
+        self.severities = check_overrides(dict(severities or {}))
+        self.docs: dict[str, _Open] = {}
+        self.runs: dict[tuple[str, int], EntryRun] = {}
+        self.stale = True  # every run starts again
+        self.library = ProgramLibrary(self.search_paths)
+
+    # ---------------------------------------------------------------- documents
+    @staticmethod
+    def _key(path: str) -> str:
+        return str(Path(path))
+
+    def open(self, path: str, text: str, version: int | None = None) -> None:
+        key = self._key(path)
+        doc = ParsedDocument(text)
+        loaded = self.library.add_text(key, text)
+        loaded.lines = doc.lines  # the library sees the document as it is edited
+        loaded.program = doc.program
+        self.docs[key] = _Open(key, doc, loaded, version)
+        self.stale = True
+
+    def change(self, path: str, start_line: int, start_col: int, end_line: int, end_col: int, text: str,
+               version: int) -> None:  # fmt: skip
+        d = self.docs[self._key(path)]
+        doc = d.doc
+        n = len(doc.lines)
+        sl = min(max(start_line, 0), n - 1)
+        el = min(max(end_line, sl), n - 1)
+        old = doc.blocks[sl : el + 1]
+        doc.apply_change(start_line, start_col, end_line, end_col, text)
+        delta = len(doc.lines) - n
+        new = doc.blocks[sl : el + 1 + delta]
+        d.version = version
+        d.own = None
+        both = old + new
+        if any(b.program is not None for b in both) or (
+            sl < HEADER_LINES and dialect_from_text(doc.lines) != d.loaded.dialect
+        ):
+            d.loaded.dialect = dialect_from_text(doc.lines)
+            self.stale = True
+        if d.targets is not None and any(self._calls_in(b, d) for b in both):
+            d.targets = None
+        d.edits.append(_Edit(sl, len(new), delta != 0 or any(b.structural for b in both)))
+
+    def close(self, path: str) -> None:
+        self.docs.pop(self._key(path), None)
+        self._reload()
+
+    def file_changed(self, path: str) -> None:
+        self._reload()
+
+    def _reload(self) -> None:
+        """A fresh library (disk files read again), the open documents still in it."""
+        self.library = ProgramLibrary(self.search_paths)
+        for d in self.docs.values():
+            loaded = self.library.add_text(d.path, d.doc.text)
+            loaded.lines = d.doc.lines
+            loaded.program = d.doc.program
+            d.loaded = loaded
+            d.targets = None
+            d.own = None
+        self.stale = True
+
+    def document(self, path: str) -> ParsedDocument | None:
+        d = self.docs.get(self._key(path))
+        return d.doc if d is not None else None
+
+    # ---------------------------------------------------------------- dialects and calls
+    def dialect_of(self, lines: list[str]) -> Dialect:
+        return get_dialect(choose_dialect(lines, self.settings.dialect, self.dialect_setting))
+
+    def _calls_in(self, block: Block, d: _Open) -> bool:
+        ctx = static_checks.line_context(self.dialect_of(d.doc.lines), self.settings, self.locale)
+        if block.plain is not None and ctx.plain_hint(block.plain) is None:
+            return False
+        facts = static_checks.line_facts(block, ctx)
+        return facts is not None and bool(facts.calls)
+
+    def _targets(self, d: _Open) -> tuple[set[int], set[str]]:
+        if d.targets is None:
+            ctx = static_checks.line_context(self.dialect_of(d.doc.lines), self.settings, self.locale)
+            hint = ctx.plain_hint
+            numbers: set[int] = set()
+            names: set[str] = set()
+            for block in d.doc.blocks:
+                if block.plain is not None and hint(block.plain) is None:
+                    continue
+                facts = static_checks.line_facts(block, ctx)
+                if facts is None:
+                    continue
+                for c in facts.calls:
+                    if c.number is not None:
+                        numbers.add(c.number)
+                    elif c.name is not None:
+                        names.add(c.name.strip().lower())
+            d.targets = numbers, names
+        return d.targets
+
+    def _units(self) -> list[tuple[tuple[str, int], FoundProgram, bool]]:
+        """Every runnable O program of the open files: (key, program, whether something calls it)."""
+        numbers: set[int] = set()
+        names: set[str] = set()
+        for d in self.docs.values():
+            n, s = self._targets(d)
+            numbers |= n
+            names |= s
+        out = []
+        for path in sorted(self.docs):
+            d = self.docs[path]
+            program = d.doc.program
+            stem = Path(path).stem
+            m = _DIGITS.match(stem)
+            for k, unit in enumerate(program.units):
+                if not _runnable(program.blocks, unit):
+                    continue
+                called = unit.number in numbers
+                if unit.number is None and k == 0:
+                    called = bool(m and int(m.group(1)) in numbers) or stem.lower() in names
+                out.append(((path, k), FoundProgram(d.loaded, unit), called))
+        return out
+
+    # ---------------------------------------------------------------- analysing
+    def analyze(self, path: str, should_cancel: Callable[[], bool] | None = None) -> AnalysisResult | None:
+        key = self._key(path)
+        version = self.docs[key].version if key in self.docs else None
+        units = self._units()
+        if self.stale:
+            self.runs.clear()
+            self.stale = False
+        else:
+            for d in self.docs.values():
+                if d.edits:
+                    for run in self.runs.values():
+                        self._rewind(run, d)
+        for d in self.docs.values():
+            d.edits.clear()
+        primary = {k: found for k, found, called in units if not called}
+        called = {k: found for k, found, is_called in units if is_called}
+        for k in [k for k in self.runs if k not in primary and k not in called]:
+            del self.runs[k]
+        for k, found in primary.items():
+            if not self._advance(k, found, should_cancel):
+                return None
+        for k, found in called.items():  # called programs that no caller entered run on their own
+            entered = any(_unit_ran(r, found) for kk, r in self.runs.items() if kk in primary)
+            if entered:
+                self.runs.pop(k, None)
+            elif not self._advance(k, found, should_cancel):
+                return None
+        return self._result(version)
+
+    def _advance(self, k: tuple[str, int], found: FoundProgram,
+                 should_cancel: Callable[[], bool] | None) -> bool:  # fmt: skip
+        run = self.runs.get(k)
+        if run is None:
+            dialect = self.dialect_of(found.file.lines)
+            run = self.runs[k] = EntryRun(found, dialect, self.settings, self.library, self.max_blocks)
+        elif run.entry.unit is not found.unit:
+            run.entry = found
+            run.restart()
+        return run.advance(should_cancel)
+
+    def _rewind(self, run: EntryRun, d: _Open) -> None:
+        """Take ``run`` back to before the first step the edits of ``d`` can change."""
+        path = d.path
+        if run.first_step(path) is None:
+            run.reset_file(path)
+            return
+        blocks = d.doc.blocks
+        program = d.doc.program
+        structural = any(e.structural for e in d.edits)
+        lines: list[int] = []
+        if not structural:
+            end_do = {p.end_line: p.do_line for p in program.loops}
+            for e in d.edits:
+                lines.extend(range(e.start, e.start + e.count))
+                p = e.start - 1
+                while p >= 0 and _skipped(blocks[p], self.settings):
+                    p -= 1
+                unit = program.unit_at(e.start)
+                if p < unit.start or (p == unit.start and blocks[p].program is not None):
+                    structural = True  # where the program starts running may have moved
+                    break
+                lines.append(p)
+                if p in end_do:
+                    lines.append(end_do[p])
+        if structural:
+            step = run.first_step(path)
+            assert step is not None
+            run.rewind(step, avoid_file=path)
+            run.reset_file(path)
+            return
+        step = run.first_step(path, lines)
+        if step is not None:
+            run.rewind(step)
+        run.forget_lines(path, lines)
+
+    # ---------------------------------------------------------------- results
+    def _line_text(self, file: str, line: int) -> str:
+        d = self.docs.get(file)
+        lines = d.doc.lines if d is not None else None
+        if lines is None:
+            loaded = self.library.load(file)
+            lines = loaded.lines if loaded is not None else []
+        return lines[line] if 0 <= line < len(lines) else ""
+
+    def _own(self, d: _Open) -> list[Diagnostic]:
+        if d.own is None:
+            program = d.doc.program
+            dialect = self.dialect_of(d.doc.lines)
+            own = syntax_diagnostics(program, d.path)
+            own += static_checks.static_diagnostics(program, d.path, dialect, self.settings, self.library, self.locale)
+            d.own = own
+        return d.own
+
+    def _result(self, version: int | None) -> AnalysisResult:
+        by_file: dict[str, list[Diagnostic]] = {path: list(self._own(d)) for path, d in self.docs.items()}
+        seen: set[tuple[str, int, str]] = set()
+        errors: set[tuple[str, int]] = set()
+        for path, diags in by_file.items():
+            for x in diags:
+                seen.add((path, x.line, x.code))
+                if x.severity == "error":
+                    errors.add((path, x.line))
+        for run in self.runs.values():
+            for x in run_diagnostics(run, self._line_text, self.locale):
+                key = (x.file, x.line, x.code)
+                if key in seen or (x.code in RUN_ALARM_CODES and (x.file, x.line) in errors):
+                    continue
+                seen.add(key)
+                by_file.setdefault(x.file, []).append(x)
+        for x in self._not_executed():
+            by_file.setdefault(x.file, []).append(x)
+        values: dict[str, dict[int, list[tuple[int, Value]]]] = {}
+        for run in self.runs.values():
+            for file, lines in run.state.written.items():
+                per = values.setdefault(file, {})
+                for line, (_, n, v) in lines.items():
+                    per[line] = [(n, v)]
+        out = {}
+        for path, diags in by_file.items():
+            diags.sort(key=Diagnostic.sort_key)
+            out[path] = apply_severities(diags, self.severities)
+        return AnalysisResult(version, out, values)
+
+    def _not_executed(self) -> list[Diagnostic]:
+        """Ranges of blocks that no run reached, in the programs that some run entered."""
+        executed: dict[str, set[int]] = {}
+        for run in self.runs.values():
+            for file, lines in run.state.first.items():
+                executed.setdefault(file, set()).update(lines)
+        out: list[Diagnostic] = []
+        for file, ran in executed.items():
+            loaded = self.docs[file].loaded if file in self.docs else self.library.load(file)
+            if loaded is None:
+                continue
+            blocks = loaded.program.blocks
+            for unit in loaded.program.units:
+                if not _any_in(ran, unit):
+                    continue
+                first = last = -1
+                for i in range(unit.start, min(unit.end, len(blocks))):
+                    if i in ran:
+                        if first >= 0:
+                            out.append(self._unreached(file, loaded.lines, first, last))
+                            first = -1
+                        continue
+                    b = blocks[i]
+                    if b.plain is None and (_skipped(b, self.settings) or b.tape or _header_only(b)):
+                        continue
+                    if first < 0:
+                        first = i
+                    last = i
+                if first >= 0:
+                    out.append(self._unreached(file, loaded.lines, first, last))
+        return out
+
+    def _unreached(self, file: str, lines: list[str], first: int, last: int) -> Diagnostic:
+        n = last - first + 1
+        en = "no analysis run reaches this block" if first == last else f"no analysis run reaches these {n} lines"
+        zh = "分析运行从未执行到此程序段" if first == last else f"分析运行从未执行到这 {n} 行"
+        return Diagnostic(file, first, 0, last, max(1, len(lines[last].rstrip())), "hint", "not-executed",
+                          pick(self.locale, en, zh), (), (UNNECESSARY,))  # fmt: skip
+
+
+def _skipped(b: Block, settings: MachineSettings) -> bool:
+    if b.plain is not None:
+        return False
+    return b.is_empty or (b.block_delete is not None and settings.block_delete)
+
+
+def _header_only(b: Block) -> bool:
+    return b.program is not None and not b.words and not b.statements
+
+
+def _runnable(blocks: list[Block], unit: ProgramUnit) -> bool:
+    for i in range(unit.start, min(unit.end, len(blocks))):
+        b = blocks[i]
+        if b.plain is not None or not (b.is_empty or b.tape or _header_only(b)):
+            return True
+    return False
+
+
+def _any_in(lines: set[int], unit: ProgramUnit) -> bool:
+    if unit.end - unit.start < len(lines):
+        return any(i in lines for i in range(unit.start, unit.end))
+    return any(unit.start <= x < unit.end for x in lines)
+
+
+def _unit_ran(run: EntryRun, found: FoundProgram) -> bool:
+    lines = run.state.first.get(found.file.path)
+    return bool(lines) and _any_in(set(lines), found.unit)

@@ -1,0 +1,174 @@
+"""Static diagnostics of SEMANTICS.md §5 "Calls" and §7 (the GSK macro A form): call words,
+argument addresses, repeat counts, program numbers and programs that do not exist."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from cncmacro.library.machine_file import CallCode, MachineSettings
+from cncmacro.library.programs import ProgramLibrary
+from running import alarm
+from static_helpers import at, check, coded, lines
+
+# ---------------------------------------------------------------- g65-nc-words
+
+
+def test_5_calls_g65_after_another_g_code_is_an_error():
+    text = lines("O1000", "G90 G65 P1000 A1", "M30")
+    found = coded(check(text), "g65-nc-words")
+    assert [at(d) for d in found] == [(2, 0, 3, "error")]
+    assert alarm(text) == (127, 2)
+
+
+def test_5_calls_g66_with_an_o_word_after_it_is_an_error_on_gsk980tdi():
+    found = coded(check(lines("O1000", "G66 P1000 O5", "M30"), "gsk980tdi"), "g65-nc-words")
+    assert [at(d) for d in found] == [(2, 10, 12, "error")]
+
+
+def test_5_calls_only_n_before_g65_and_m_after_it_is_an_argument():
+    assert check(lines("O1000", "N5 G65 P1000 A1 M3", "M30", "O1001", "M99"), file="X.nc") == []
+
+
+# ---------------------------------------------------------------- argument-address
+
+
+def test_5_calls_g_after_g65_is_argument_address_alarm_129():
+    text = lines("O1000", "G65 P1000 A1 G01", "M30")
+    found = coded(check(text), "argument-address")
+    assert [at(d) for d in found] == [(2, 13, 16, "error")]
+    assert alarm(text) == (129, 2)
+
+
+def test_5_calls_n_or_eleven_i_arguments_are_refused():
+    found = coded(check(lines("O1000", "G65 P1000 A1 N5", "M30")), "argument-address")
+    assert [at(d) for d in found] == [(2, 13, 15, "error")]
+    eleven = "G65 P1000 " + " ".join(f"I{k}" for k in range(11))
+    found = coded(check(lines("O1000", eleven, "M30")), "argument-address")
+    assert [at(d) for d in found] == [(2, len(eleven) - 3, len(eleven), "error")]
+
+
+def test_5_calls_argument_specification_ii_is_fine_on_both_dialects():
+    text = lines("O1000", "G65 P1000 A1 B2 C3 I14 J15 I6 J7 K9 K11 K12 J30", "M30")
+    assert coded(check(text), "argument-address") == []
+    assert coded(check(text, "gsk980tdi"), "argument-address") == []
+
+
+def test_5_calls_configured_call_code_takes_arguments_like_g65():
+    settings = MachineSettings(calls={"G100": CallCode(9010)})
+    text = lines("O1000", "G100 A1 P5", "M30", "O9010", "M99")
+    found = coded(check(text, settings=settings), "argument-address")
+    assert [at(d) for d in found] == [(2, 8, 10, "error")]
+    assert check(lines("O1000", "G100 A1 B2", "M30", "O9010", "M99"), settings=settings) == []
+
+
+# ---------------------------------------------------------------- repeat-count-range
+
+
+def test_5_calls_l0_is_an_error_on_both_dialects():
+    text = lines("O1000", "G65 P1000 L0 A1", "M30")
+    for dialect in ("fanuc", "gsk980tdi"):
+        found = coded(check(text, dialect), "repeat-count-range")
+        assert [at(d) for d in found] == [(2, 10, 12, "error")]
+
+
+def test_5_calls_l_above_9999_is_an_error_on_fanuc_and_a_warning_on_gsk980tdi():
+    text = lines("O1000", "M98 P2000 L10000", "M30", "O2000", "M99")
+    assert [at(d) for d in coded(check(text), "repeat-count-range")] == [(2, 10, 16, "error")]
+    assert [at(d) for d in coded(check(text, "gsk980tdi"), "repeat-count-range")] == [(2, 10, 16, "warning")]
+    assert check(lines("O1000", "M98 P2000 L9999", "M30", "O2000", "M99")) == []
+
+
+def test_5_calls_count_in_p_and_l_is_alarm_293_on_gsk980tdi_and_a_warning_on_fanuc():
+    text = lines("O1000", "M98 P32000 L2", "M30", "O2000", "M99")
+    found = coded(check(text, "gsk980tdi"), "repeat-count-range")
+    assert [at(d) for d in found] == [(2, 11, 13, "error")]
+    assert "293" in found[0].message
+    assert alarm(text, "gsk980tdi")[0] == 293
+    assert [at(d) for d in coded(check(text), "repeat-count-range")] == [(2, 11, 13, "warning")]
+
+
+def test_5_calls_count_in_p_alone_is_fine():
+    assert check(lines("O1000", "M98 P32000", "M30", "O2000", "M99")) == []
+
+
+# ---------------------------------------------------------------- program-number
+
+
+def test_5_calls_g65_p_with_five_digits_is_a_program_number_error_on_gsk980tdi_only():
+    text = lines("O1000", "G65 P12345 A1", "M30", "O12345", "M99")
+    found = coded(check(text, "gsk980tdi"), "program-number")
+    assert [at(d) for d in found] == [(2, 4, 10, "error")]
+    assert alarm(text, "gsk980tdi")[0] == 291
+    assert coded(check(text), "program-number") == []
+
+
+def test_5_calls_m98_p_with_more_than_eight_digits_is_a_program_number_error():
+    found = coded(check(lines("O1000", "M98 P123456789", "M30")), "program-number")
+    assert [at(d) for d in found] == [(2, 4, 14, "error")]
+
+
+# ---------------------------------------------------------------- program-not-found
+
+
+def test_5_calls_program_not_found_in_the_file_or_its_folder(tmp_path: Path):
+    (tmp_path / "O9100.nc").write_text("O9100\nM99\n")
+    main = str(tmp_path / "MAIN.nc")
+    text = lines("O1000", "G65 P9100 A1", "G65 P9200 A1", "M98 P9300", "M98 P0040", "M30", "O0040", "M99")
+    found = coded(check(text, file=main, library=ProgramLibrary()), "program-not-found")
+    assert [at(d) for d in found] == [(3, 4, 9, "error"), (4, 4, 9, "error")]
+    assert "O9200" in found[0].message
+
+
+def test_5_calls_program_not_found_by_a_bracketed_name_on_gsk980tdi(tmp_path: Path):
+    (tmp_path / "CUT.CNC").write_text("G00 X1\nM99\n")
+    main = str(tmp_path / "MAIN.CNC")
+    text = lines("O1000", "G65 P[CUT]", "G65 P[CUTS]", "M30")
+    found = coded(check(text, "gsk980tdi", file=main, library=ProgramLibrary()), "program-not-found")
+    assert [at(d) for d in found] == [(3, 4, 11, "error")]
+
+
+def test_5_calls_configured_call_code_to_a_missing_program_is_reported(tmp_path: Path):
+    settings = MachineSettings(calls={"M60": CallCode(9001, "subprogram")})
+    main = str(tmp_path / "MAIN.nc")
+    text = lines("O1000", "G00 X1 M60", "M30")
+    found = coded(check(text, file=main, library=ProgramLibrary(), settings=settings), "program-not-found")
+    assert [at(d) for d in found] == [(2, 7, 10, "error")]
+    (tmp_path / "O9001.nc").write_text("O9001\nM99\n")
+    assert check(text, file=main, library=ProgramLibrary(), settings=settings) == []
+
+
+def test_5_calls_without_a_library_only_the_files_own_programs_are_known():
+    assert check(lines("O1000", "G65 P9100 A1", "M30")) == []
+
+
+def test_5_calls_g65_without_p_is_program_not_found():
+    found = coded(check(lines("O1000", "G65 A1", "M30")), "program-not-found")
+    assert [at(d) for d in found] == [(2, 0, 3, "error")]
+
+
+# ---------------------------------------------------------------- dialect-feature (calls)
+
+
+def test_7_g65_h_codes_are_a_dialect_feature_on_fanuc_only():
+    text = lines("O1000", "G65 H01 P#100 Q5", "M30")
+    found = coded(check(text), "dialect-feature")
+    assert [at(d) for d in found] == [(2, 4, 7, "error")]
+    assert check(text, "gsk980tdi") == []
+
+
+def test_5_calls_bracketed_program_name_is_a_dialect_feature_on_fanuc():
+    text = lines("O1000", "G65 P[CUT] A1", "M30")
+    assert [at(d) for d in coded(check(text), "dialect-feature")] == [(2, 4, 10, "error")]
+    assert coded(check(text, "gsk980tdi"), "dialect-feature") == []
+
+
+def test_7_h_code_with_another_address_or_unknown_operation_is_refused_on_gsk980tdi():
+    found = coded(check(lines("O1000", "G65 H01 P#100 Q5 X1", "M30"), "gsk980tdi"), "argument-address")
+    assert [at(d) for d in found] == [(2, 17, 19, "error")]
+    found = coded(check(lines("O1000", "G65 H07 P#100 Q5", "M30"), "gsk980tdi"), "argument-address")
+    assert [at(d) for d in found] == [(2, 4, 7, "error")]
+
+
+def test_5_calls_plain_cam_lines_with_calls_are_checked():
+    found = check(lines("O1000", "G01 X1. Y2.", "M98 P2000 L0", "M30", "O2000", "M99"))
+    assert [(d.code, *at(d)) for d in found] == [("repeat-count-range", 3, 10, 12, "error")]
