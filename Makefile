@@ -11,7 +11,12 @@ $(VENV)/.installed: pyproject.toml
 	$(PY) -m pip install --quiet -e '.[test]'
 	touch $@
 
-setup: $(VENV)/.installed
+# The DAP client tests' npm packages (pinned in package-lock.json), installed again only when it changes.
+node_modules/.installed: package-lock.json
+	npm ci --silent --no-audit --no-fund
+	touch $@
+
+setup: $(VENV)/.installed node_modules/.installed
 
 # Run a bundled example on the simulated machine, then check all of them.
 demo: setup
@@ -20,7 +25,8 @@ demo: setup
 	@echo "--- a program with mistakes:"
 	-$(VENV)/bin/cncmacro check tests/data/O0999_broken.nc
 
-# Every test: lint, then the Python suite.
+# Every test: lint, then the Python suite, then the debug adapter through a real DAP client.
 test: setup
 	$(VENV)/bin/ruff check server tests benchmarks
 	$(PY) -m pytest
+	node --test tests/dap/

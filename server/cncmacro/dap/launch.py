@@ -1,0 +1,142 @@
+"""Setting up a machine from a debug launch configuration.
+
+The launch arguments are ``program`` (the file to run), ``dialect``, ``stopOnEntry``,
+``machine`` (a machine file; by default the nearest ``.cncmacro.toml``), ``blockDelete``,
+``set`` (presets, ``{"100": 5}`` or ``["100=5"]``), ``maxBlocks``, ``echoMotion`` (each
+executed motion block to the debug console) and ``noSave`` (leave ``#500–#999`` unsaved).
+The machine is set up as ``cncmacro run`` sets it up: the dialect comment in the file wins,
+then the machine file, then the configuration, then fanuc; presets come after the persistent
+variables. Every mistake is a ``LaunchError`` with a message for the person.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Any
+
+from ..dialects import DIALECTS, get_dialect
+from ..library.dialect_choice import dialect_from_text
+from ..library.files import BinaryFileError, read_program
+from ..library.machine_file import (
+    PERSISTENT_FILE_NAME,
+    MachineFileError,
+    MachineSettings,
+    find_machine_file,
+    load_machine_file,
+    parse_preset,
+)
+from ..library.programs import ProgramLibrary
+from ..machine import Machine
+from ..machine.persistence import PersistentFileError, load_persistent, save_persistent
+
+
+class LaunchError(ValueError):
+    """The launch configuration cannot start a run."""
+
+
+@dataclass(slots=True)
+class LaunchConfig:
+    """The launch arguments, checked."""
+
+    program: Path
+    dialect: str | None = None
+    stop_on_entry: bool = False
+    machine_file: Path | None = None
+    block_delete: bool | None = None
+    presets: dict[int, float] | None = None
+    max_blocks: int | None = None
+    echo_motion: bool = False
+    no_save: bool = False
+
+    @classmethod
+    def from_arguments(cls, args: dict[str, Any]) -> LaunchConfig:
+        program = args.get("program")
+        if not isinstance(program, str) or not program:
+            raise LaunchError("the launch configuration needs 'program': the file to run")
+        dialect = args.get("dialect")
+        if dialect is not None and dialect not in DIALECTS:
+            raise LaunchError(f"'dialect' must be one of {', '.join(DIALECTS)}, not {dialect!r}")
+        machine = args.get("machine")
+        if machine is not None and not isinstance(machine, str):
+            raise LaunchError("'machine' must be the path of a machine file")
+        max_blocks = args.get("maxBlocks")
+        if max_blocks is not None and (
+            not isinstance(max_blocks, int) or isinstance(max_blocks, bool) or max_blocks < 1
+        ):
+            raise LaunchError("'maxBlocks' must be a whole number of at least 1")
+        block_delete = args.get("blockDelete")
+        if block_delete is not None and not isinstance(block_delete, bool):
+            raise LaunchError("'blockDelete' must be true or false")
+        return cls(
+            Path(program).resolve(), dialect, bool(args.get("stopOnEntry", False)),
+            Path(machine).resolve() if machine else None, block_delete, _presets(args.get("set")), max_blocks,
+            bool(args.get("echoMotion", False)), bool(args.get("noSave", False)),
+        )  # fmt: skip
+
+
+def _presets(value: Any) -> dict[int, float]:
+    if value is None:
+        return {}
+    items: list[str] = []
+    if isinstance(value, dict):
+        items = [f"{k}={v}" for k, v in value.items()]
+    elif isinstance(value, list) and all(isinstance(v, str) for v in value):
+        items = list(value)
+    else:
+        raise LaunchError('\'set\' must be an object such as {"100": 5} or a list such as ["100=5"]')
+    try:
+        return dict(parse_preset(s) for s in items)
+    except ValueError as e:
+        raise LaunchError(str(e).replace("--set", "set")) from None
+
+
+@dataclass(slots=True)
+class Launched:
+    """A machine ready at the program's first block, and where its persistent variables live."""
+
+    machine: Machine
+    persistent_file: Path
+    config: LaunchConfig
+
+    def save(self) -> str | None:
+        """Write ``#500–#999`` back; an error message when that failed."""
+        if self.config.no_save:
+            return None
+        try:
+            save_persistent(self.persistent_file, self.machine.persistent_values())
+        except OSError as e:
+            return f"could not save the persistent variables to {self.persistent_file}: {e}"
+        return None
+
+
+def launch(config: LaunchConfig) -> Launched:
+    """Read the program and the machine file and start the machine at the first block."""
+    path = config.program
+    try:
+        source = read_program(path)
+    except (OSError, BinaryFileError) as e:
+        raise LaunchError(f"cannot read the program {path}: {e}") from None
+    try:
+        if config.machine_file is not None:
+            settings = load_machine_file(config.machine_file)
+        else:
+            found = find_machine_file(path)
+            settings = load_machine_file(found) if found is not None else MachineSettings()
+    except MachineFileError as e:
+        raise LaunchError(str(e)) from None
+    if config.block_delete is not None:
+        settings = replace(settings, block_delete=config.block_delete)
+    if config.max_blocks is not None:
+        settings = replace(settings, max_blocks=config.max_blocks)
+    lines = source.text.splitlines()[:5]
+    dialect = get_dialect(dialect_from_text(lines) or settings.dialect or config.dialect)
+    machine = Machine(dialect, settings, ProgramLibrary())
+    persistent = settings.persistent_path() or (path.parent / PERSISTENT_FILE_NAME)
+    try:
+        machine.load_persistent(load_persistent(persistent))
+        machine.apply_presets(config.presets or {})
+    except (PersistentFileError, ValueError) as e:
+        raise LaunchError(str(e)) from None
+    machine.start_file(str(path), source.text)
+    return Launched(machine, persistent, config)

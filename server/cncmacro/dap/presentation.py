@@ -1,0 +1,183 @@
+"""How the debugger shows a stopped machine: stack frames, scopes and variables.
+
+One stack frame per program level, innermost first, named like ``O9100 (G65, level 1)``.
+Each frame has six scopes: its locals ``#1–#33`` (``#24 (X)`` where a caller passed the
+argument letter), the volatile commons, the persistent ``#500–#999``, and the system
+variables of the dialect's tables grouped as position, modal state and offsets. A variables
+reference encodes the frame and the scope, so it stays valid for as long as the machine
+stays stopped. Vacant shows as ``<vacant>`` (``<空>`` in a Chinese locale).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from ..analysis.locale import is_chinese, pick
+from ..dialects.tables import SystemVariable
+from ..machine import Machine, MacroAlarm
+from ..machine.frames import Frame
+from ..machine.numbers import format_plain
+
+LOCALS, COMMON, PERSISTENT, POSITION, MODAL, OFFSETS = range(6)
+SCOPES_PER_FRAME = 8
+_NUMBER_NAME = re.compile(r"^\s*#\s*(\d+)")
+WORK_OFFSETS = (2500, 5325)  # the external and G54–G59 offsets (not the 48 additional systems)
+
+
+def vacant_text(locale: str | None) -> str:
+    return pick(locale, "<vacant>", "<空>")
+
+
+def show(value: float | None, locale: str | None) -> str:
+    """A value for the variables pane, the hover and the console."""
+    return vacant_text(locale) if value is None else format_plain(value)
+
+
+def is_vacant_text(text: str) -> bool:
+    return text.strip() in ("", "<vacant>", "<空>", "vacant", "空")
+
+
+def variable_number(name: str) -> int | None:
+    """The number in a variable's shown name (``#24 (X)`` is 24)."""
+    m = _NUMBER_NAME.match(name)
+    return int(m.group(1)) if m else None
+
+
+def frame_name(frames: list[Frame], level: int) -> str:
+    f = frames[level]
+    if level == 0:
+        return f"{f.name} (main)"
+    return f"{f.name} ({f.kind}, level {level})"
+
+
+def stack_frames(machine: Machine) -> list[dict[str, Any]]:
+    """DAP stack frames, innermost first; a frame's id is its level + 1."""
+    out = []
+    for level in range(len(machine.frames) - 1, -1, -1):
+        f = machine.frames[level]
+        line = min(f.pc, max(0, len(f.found.file.lines) - 1))
+        out.append({
+            "id": level + 1, "name": frame_name(machine.frames, level), "line": line + 1, "column": 1,
+            "source": {"name": Path(f.file).name, "path": f.file},
+        })  # fmt: skip
+    return out
+
+
+def reference(level: int, scope: int) -> int:
+    return level * SCOPES_PER_FRAME + scope + 1
+
+
+def decode_reference(ref: int) -> tuple[int, int]:
+    """(level, scope) of a variables reference."""
+    return (ref - 1) // SCOPES_PER_FRAME, (ref - 1) % SCOPES_PER_FRAME
+
+
+def scopes(machine: Machine, level: int, locale: str | None) -> list[dict[str, Any]]:
+    first, last = machine.kinds.common
+    names = {
+        LOCALS: pick(locale, "Locals", "局部变量"),
+        COMMON: pick(locale, f"Common #{first}–#{last}", f"公共变量 #{first}–#{last}"),
+        PERSISTENT: pick(locale, "Persistent #500–#999", "保持型变量 #500–#999"),
+        POSITION: pick(locale, "Position", "位置"),
+        MODAL: pick(locale, "Modal", "模态"),
+        OFFSETS: pick(locale, "Offsets", "偏置"),
+    }
+    out = []
+    for scope, name in names.items():
+        entry: dict[str, Any] = {"name": name, "variablesReference": reference(level, scope), "expensive": False}
+        if scope == LOCALS:
+            entry["presentationHint"] = "locals"
+        elif scope >= POSITION:
+            entry["presentationHint"] = "registers"
+        out.append(entry)
+    return out
+
+
+@dataclass(frozen=True, slots=True)
+class Shown:
+    """One variable as a row of the variables pane."""
+
+    number: int
+    name: str
+    value: float | None
+    detail: str = ""
+
+
+def letters_for(machine: Machine, level: int) -> dict[int, str]:
+    """Argument letters for a level's locals: a subprogram (M98) shares its macro's locals."""
+    frames = machine.frames
+    for k in range(level, -1, -1):
+        if frames[k].locals is not frames[level].locals:
+            break
+        if frames[k].letters:
+            return frames[k].letters
+    return {}
+
+
+def rows(machine: Machine, level: int, scope: int, locale: str | None) -> list[Shown]:
+    if scope == LOCALS:
+        local = machine.frames[level].locals
+        letters = letters_for(machine, level)
+        return [Shown(n, f"#{n} ({letters[n]})" if n in letters else f"#{n}", local[n]) for n in range(1, 34)]
+    if scope == COMMON:
+        first, last = machine.kinds.common
+        return [Shown(n, f"#{n}", machine.C[n]) for n in range(first, last + 1)]
+    if scope == PERSISTENT:
+        return [Shown(n, f"#{n}", machine.C[n]) for n in range(500, 1000)]
+    return _system_rows(machine, scope, locale)
+
+
+def _system_rows(machine: Machine, scope: int, locale: str | None) -> list[Shown]:
+    out = []
+    for row in machine.dialect.system_variables():
+        if not _in_scope(row, scope):
+            continue
+        for n in range(row.first, row.last + 1):
+            try:
+                value = machine.read_system(n)
+            except MacroAlarm:
+                continue
+            if row.group == "tool" and not value and n not in machine.written_system | machine.preset_system:
+                continue  # hundreds of tool offsets: only those that hold something
+            detail = _describe(row, n, machine, locale)
+            short = detail if len(detail) <= 48 else detail[:47] + "…"
+            out.append(Shown(n, f"#{n} ({short})", value, detail))
+    return out
+
+
+def _in_scope(row: SystemVariable, scope: int) -> bool:
+    if scope == POSITION:
+        return row.group == "position"
+    if scope == MODAL:
+        return row.group == "modal"
+    if scope == OFFSETS:
+        if row.group == "tool":
+            return row.source == "store"
+        return (
+            row.group == "work"
+            and row.first >= WORK_OFFSETS[0]
+            and row.last <= WORK_OFFSETS[1]
+            and (row.source == "store")
+        )
+    return False
+
+
+def _describe(row: SystemVariable, n: int, machine: Machine, locale: str | None) -> str:
+    k = n - row.first
+    axes = machine.dialect.axes
+    text = row.zh if is_chinese(locale) else row.en
+    text = text.replace("{axis}", axes[k] if k < len(axes) else str(k + 1)).replace("{index}", str(k + 1))
+    return text.split(";")[0]
+
+
+def variable_json(shown: Shown, locale: str | None) -> dict[str, Any]:
+    out: dict[str, Any] = {
+        "name": shown.name, "value": show(shown.value, locale), "variablesReference": 0,
+        "evaluateName": f"#{shown.number}",
+    }  # fmt: skip
+    if shown.detail:
+        out["type"] = shown.detail
+    return out

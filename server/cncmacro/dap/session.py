@@ -1,0 +1,452 @@
+"""One debug session: each DAP request mapped onto the machine, its breakpoints and history.
+
+The request loop reads from standard input on the main thread; continue and the steps run
+the machine on a worker thread, so pause, threads and the other requests are answered while a
+long run goes on. A request that needs a stopped machine (stack trace, variables, evaluate)
+is refused with a message while it runs. An unknown or malformed request gets
+``success: false`` and the session goes on. Terminate and disconnect save ``#500–#999``.
+"""
+
+from __future__ import annotations
+
+import sys
+import threading
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any, BinaryIO
+
+from ..machine import Machine
+from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
+from . import presentation as show
+from .breakpoints import Breakpoints
+from .history import History
+from .launch import LaunchConfig, Launched, LaunchError, launch
+from .protocol import Event, MessageWriter, ProtocolError, Request, Response, read_message
+from .stepping import CONTINUE, STEP_IN, STEP_OUT, STEP_OVER, Filters, Stepper, Stop
+
+THREAD_ID = 1
+EXCEPTION_FILTERS = [
+    {"filter": "alarms", "label": "All alarms", "default": True,
+     "description": "Stop when the program raises an alarm (#3000, division by zero, ...)"},
+    {"filter": "messages", "label": "#3006 messages", "default": True,
+     "description": "Stop at #3006 operator messages and M00"},
+]  # fmt: skip
+
+
+class RequestFailed(Exception):
+    """A request that cannot be carried out; the message goes back to the client."""
+
+
+class Session:
+    def __init__(self, writer: MessageWriter) -> None:
+        self.writer = writer
+        self.locale: str | None = None
+        self.breakpoints = Breakpoints(log=lambda text: self.output(text + "\n", "console"))
+        self.history = History()
+        self.filters = Filters()
+        self.launched: Launched | None = None
+        self.stepper: Stepper | None = None
+        self.configured = False
+        self.started = False
+        self.worker: threading.Thread | None = None
+        self.busy = False  # the worker is running the machine (not just finishing)
+        self.ended = False
+        self.last_stop: Stop | None = None
+        self.done = False
+        self._after: list[Callable[[], None]] = []
+
+    # ---------------------------------------------------------------- plumbing
+    def output(self, text: str, category: str = "console") -> None:
+        self.writer.send(Event("output", {"category": category, "output": text}))
+
+    def event(self, name: str, body: dict[str, Any] | None = None) -> None:
+        self.writer.send(Event(name, body))
+
+    def handle(self, request: Request) -> None:
+        handler: Callable[[dict[str, Any]], dict[str, Any] | None] | None = getattr(self, "on_" + request.command, None)
+        if handler is None:
+            message = f"unknown request '{request.command}'"
+            self.writer.send(Response(request.seq, request.command, False, message=message))
+            return
+        after: list[Callable[[], None]] = []
+        self._after = after
+        try:
+            body = handler(request.arguments)
+        except RequestFailed as e:
+            self.writer.send(Response(request.seq, request.command, False, message=str(e)))
+            return
+        except Exception as e:  # a bug must not end the session
+            self.writer.send(Response(request.seq, request.command, False, message=f"internal error: {e!r}"))
+            return
+        self.writer.send(Response(request.seq, request.command, True, body))
+        for action in after:
+            action()
+
+    def later(self, action: Callable[[], None]) -> None:
+        """Run ``action`` after the response to the current request has been sent."""
+        self._after.append(action)
+
+    @property
+    def running(self) -> bool:
+        return self.busy
+
+    def machine(self) -> Machine:
+        if self.launched is None:
+            raise RequestFailed("no program is running: launch one first")
+        if self.running:
+            raise RequestFailed("the program is running: pause it first")
+        return self.launched.machine
+
+    # ---------------------------------------------------------------- setting up
+    def on_initialize(self, args: dict[str, Any]) -> dict[str, Any]:
+        locale = args.get("locale")
+        self.locale = locale if isinstance(locale, str) else None
+        self.later(lambda: self.event("initialized"))
+        return {
+            "supportsConfigurationDoneRequest": True,
+            "supportsConditionalBreakpoints": True,
+            "supportsHitConditionalBreakpoints": True,
+            "supportsLogPoints": True,
+            "supportsFunctionBreakpoints": True,
+            "supportsDataBreakpoints": True,
+            "supportsEvaluateForHovers": True,
+            "supportsSetVariable": True,
+            "supportsRestartRequest": True,
+            "supportsTerminateRequest": True,
+            "supportsStepBack": True,
+            "supportsExceptionInfoRequest": True,
+            "exceptionBreakpointFilters": EXCEPTION_FILTERS,
+        }
+
+    def on_launch(self, args: dict[str, Any]) -> None:
+        try:
+            config = LaunchConfig.from_arguments(args)
+            launched = launch(config)
+        except LaunchError as e:
+            raise RequestFailed(str(e)) from None
+        self._use(launched)
+        if self.configured:
+            self.later(self._start)
+
+    def _use(self, launched: Launched) -> None:
+        self.launched = launched
+        m = launched.machine
+        self.breakpoints.bind(m)
+        self.history.reset(m)
+        self.stepper = Stepper(m, self.breakpoints, self.history, self.output, launched.config.echo_motion,
+                               self.filters)  # fmt: skip
+        self.started = False
+        self.ended = False
+        self.last_stop = None
+
+    def on_configurationDone(self, args: dict[str, Any]) -> None:
+        self.configured = True
+        if self.launched is not None:
+            self.later(self._start)
+
+    def _start(self) -> None:
+        if self.started or self.launched is None:
+            return
+        self.started = True
+        self.event("process", {"name": Path(self.launched.config.program).name, "startMethod": "launch"})
+        if self.launched.config.stop_on_entry:
+            self._stopped(Stop("entry"))
+        else:
+            self._go(lambda s: s.run(CONTINUE))
+
+    # ---------------------------------------------------------------- breakpoints
+    def on_setBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
+        source = args.get("source") or {}
+        path = source.get("path") if isinstance(source, dict) else None
+        if not isinstance(path, str):
+            raise RequestFailed("setBreakpoints needs a source with a path")
+        specs = args.get("breakpoints")
+        if specs is None:
+            specs = [{"line": n} for n in args.get("lines") or []]
+        if not isinstance(specs, list) or not all(isinstance(s, dict) for s in specs):
+            raise RequestFailed("'breakpoints' must be a list of objects")
+        made = self.breakpoints.set_lines(path, specs)
+        src = {"name": Path(path).name, "path": path}
+        return {"breakpoints": [bp.json(line=bp.line + 1, source=src) if bp.line is not None else bp.json()
+                                for bp in made]}  # fmt: skip
+
+    def on_setFunctionBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
+        specs = args.get("breakpoints") or []
+        if not isinstance(specs, list) or not all(isinstance(s, dict) for s in specs):
+            raise RequestFailed("'breakpoints' must be a list of objects")
+        return {"breakpoints": [bp.json() for bp in self.breakpoints.set_functions(specs)]}
+
+    def on_setExceptionBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
+        filters = args.get("filters") or []
+        if not isinstance(filters, list):
+            raise RequestFailed("'filters' must be a list")
+        self.filters.alarms = "alarms" in filters
+        self.filters.messages = "messages" in filters
+        return {"breakpoints": [{"verified": True} for _ in filters]}
+
+    def on_dataBreakpointInfo(self, args: dict[str, Any]) -> dict[str, Any]:
+        name = str(args.get("name", ""))
+        number = show.variable_number(name)
+        if number is None:
+            return {"dataId": None, "description": f"{name} is not a # variable"}
+        return {"dataId": f"#{number}", "description": f"when #{number} changes", "accessTypes": ["write"],
+                "canPersist": True}  # fmt: skip
+
+    def on_setDataBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
+        specs = args.get("breakpoints") or []
+        if not isinstance(specs, list) or not all(isinstance(s, dict) for s in specs):
+            raise RequestFailed("'breakpoints' must be a list of objects")
+        return {"breakpoints": [bp.json() for bp in self.breakpoints.set_data(specs)]}
+
+    # ---------------------------------------------------------------- running
+    def _go(self, action: Callable[[Stepper], Stop]) -> None:
+        stepper = self.stepper
+        assert stepper is not None
+
+        def work() -> None:
+            try:
+                stop = action(stepper)
+            except Exception as e:  # never leave the client waiting
+                self.output(f"internal error: {e!r}\n", "stderr")
+                stop = Stop("exception", f"internal error: {e!r}")
+            self.busy = False
+            self._stopped(stop)
+
+        stepper.arm()
+        self.busy = True
+        self.worker = threading.Thread(target=work, name="cncmacro-run", daemon=True)
+        self.worker.start()
+
+    def _stopped(self, stop: Stop) -> None:
+        self.last_stop = stop
+        if stop.finished:
+            self._finish()
+            return
+        body: dict[str, Any] = {"reason": stop.reason, "threadId": THREAD_ID, "allThreadsStopped": True}
+        if stop.description:
+            body["description"] = stop.description
+        if stop.text:
+            body["text"] = stop.text
+        if stop.hit_ids:
+            body["hitBreakpointIds"] = stop.hit_ids
+        self.event("stopped", body)
+
+    def _finish(self) -> None:
+        if self.ended or self.launched is None:
+            return
+        self.ended = True
+        problem = self.launched.save()
+        if problem:
+            self.output(problem + "\n", "stderr")
+        m = self.launched.machine
+        self.output(f"status: {m.status} after {m.blocks} blocks\n", "console")
+        self.event("exited", {"exitCode": {"completed": 0, "alarm": 1, "limit": 3}.get(m.status, 0)})
+        self.event("terminated")
+
+    def _resume(self, action: Callable[[Stepper], Stop]) -> dict[str, Any]:
+        self.machine()
+        if not self.started:
+            raise RequestFailed("the run has not started yet (configurationDone)")
+        self.later(lambda: self._go(action))
+        return {"allThreadsContinued": True}
+
+    def on_continue(self, args: dict[str, Any]) -> dict[str, Any]:
+        return self._resume(lambda s: s.run(CONTINUE))
+
+    def on_next(self, args: dict[str, Any]) -> None:
+        self._resume(lambda s: s.run(STEP_OVER))
+
+    def on_stepIn(self, args: dict[str, Any]) -> None:
+        self._resume(lambda s: s.run(STEP_IN))
+
+    def on_stepOut(self, args: dict[str, Any]) -> None:
+        self._resume(lambda s: s.run(STEP_OUT))
+
+    def on_stepBack(self, args: dict[str, Any]) -> None:
+        self._resume(self._step_back)
+
+    def on_reverseContinue(self, args: dict[str, Any]) -> None:
+        self._resume(self._reverse)
+
+    def _step_back(self, stepper: Stepper) -> Stop:
+        m = stepper.machine
+        reached = self.history.go_to(m, m.blocks - 1)
+        stepper.resync()
+        return Stop("step") if reached else Stop("entry", "the start of the kept history")
+
+    def _reverse(self, stepper: Stepper) -> Stop:
+        m = stepper.machine
+        found = self.history.back_to_stop(m, self.breakpoints.stops_here)
+        stepper.resync()
+        return Stop("breakpoint") if found else Stop("entry", "the start of the kept history")
+
+    def on_pause(self, args: dict[str, Any]) -> None:
+        if self.stepper is not None and self.running:
+            self.stepper.request_pause()
+
+    def on_restart(self, args: dict[str, Any]) -> None:
+        if self.launched is None:
+            raise RequestFailed("no program to restart")
+        self._halt()
+        self._save()
+        new_args = args.get("arguments")
+        try:
+            config = LaunchConfig.from_arguments(new_args) if isinstance(new_args, dict) else self.launched.config
+            launched = launch(config)
+        except LaunchError as e:
+            raise RequestFailed(str(e)) from None
+        self._use(launched)
+        self.later(self._start)
+
+    def _halt(self) -> None:
+        if self.stepper is not None and self.running:
+            self.stepper.request_pause()
+        if self.worker is not None:
+            self.worker.join()
+
+    def _save(self) -> None:
+        if self.launched is not None and not self.ended:
+            problem = self.launched.save()
+            if problem:
+                self.output(problem + "\n", "stderr")
+
+    def on_terminate(self, args: dict[str, Any]) -> None:
+        self._halt()
+        self._save()
+        self.ended = True
+        self.later(lambda: self.event("terminated"))
+
+    def on_disconnect(self, args: dict[str, Any]) -> None:
+        self._halt()
+        self._save()
+        self.ended = True
+        self.done = True
+
+    # ---------------------------------------------------------------- looking at a stopped run
+    def on_threads(self, args: dict[str, Any]) -> dict[str, Any]:
+        name = "main program"
+        if self.launched is not None:
+            name = Path(self.launched.config.program).name
+        return {"threads": [{"id": THREAD_ID, "name": name}]}
+
+    def on_stackTrace(self, args: dict[str, Any]) -> dict[str, Any]:
+        frames = show.stack_frames(self.machine())
+        start = _whole(args, "startFrame", 0)
+        levels = _whole(args, "levels", 0) or len(frames)
+        return {"stackFrames": frames[start : start + levels], "totalFrames": len(frames)}
+
+    def _level(self, frame_id: Any) -> int:
+        m = self.machine()
+        if frame_id is None:
+            return len(m.frames) - 1
+        if not isinstance(frame_id, int) or not 1 <= frame_id <= len(m.frames):
+            raise RequestFailed(f"no stack frame {frame_id}")
+        return frame_id - 1
+
+    def on_scopes(self, args: dict[str, Any]) -> dict[str, Any]:
+        level = self._level(args.get("frameId"))
+        return {"scopes": show.scopes(self.machine(), level, self.locale)}
+
+    def _scope(self, ref: Any) -> tuple[Machine, int, int]:
+        m = self.machine()
+        if not isinstance(ref, int) or ref < 1:
+            raise RequestFailed(f"no variables reference {ref}")
+        level, scope = show.decode_reference(ref)
+        if level >= len(m.frames) or scope > show.OFFSETS:
+            raise RequestFailed(f"no variables reference {ref}")
+        return m, level, scope
+
+    def on_variables(self, args: dict[str, Any]) -> dict[str, Any]:
+        m, level, scope = self._scope(args.get("variablesReference"))
+        rows = show.rows(m, level, scope, self.locale)
+        start = _whole(args, "start", 0)
+        count = _whole(args, "count", 0) or len(rows)
+        return {"variables": [show.variable_json(r, self.locale) for r in rows[start : start + count]]}
+
+    def on_setVariable(self, args: dict[str, Any]) -> dict[str, Any]:
+        m, level, _scope = self._scope(args.get("variablesReference"))
+        name = str(args.get("name", ""))
+        number = show.variable_number(name)
+        if number is None:
+            raise RequestFailed(f"'{name}' is not a # variable")
+        text = str(args.get("value", ""))
+        try:
+            value = set_variable(m, number, "" if show.is_vacant_text(text) else text, level)
+        except EvaluationError as e:
+            raise RequestFailed(f"#{number} = {text}: {e}") from None
+        self.history.mark(m)
+        self.breakpoints.prime()
+        return {"value": show.show(value, self.locale), "variablesReference": 0}
+
+    def on_evaluate(self, args: dict[str, Any]) -> dict[str, Any]:
+        text = args.get("expression")
+        if not isinstance(text, str) or not text.strip():
+            raise RequestFailed("nothing to evaluate")
+        m = self.machine()
+        level = self._level(args.get("frameId"))
+        try:
+            if args.get("context") == "repl" and is_assignment(text):
+                number, value = assign(m, text, level)
+                self.history.mark(m)
+                self.breakpoints.prime()
+                return {"result": f"#{number} = {show.show(value, self.locale)}", "variablesReference": 0}
+            value = evaluate(m, text, level)
+        except EvaluationError as e:
+            raise RequestFailed(str(e)) from None
+        return {"result": show.show(value, self.locale), "variablesReference": 0}
+
+    def on_exceptionInfo(self, args: dict[str, Any]) -> dict[str, Any]:
+        m = self.machine()
+        if m.alarm is None:
+            stop = self.last_stop
+            text = stop.description if stop and stop.description else "no alarm"
+            return {"exceptionId": "stop", "description": text, "breakMode": "always"}
+        a = m.alarm
+        chain = "\n".join(f"{c.program} ({c.how}) at {Path(c.file).name}:{c.line + 1}" for c in reversed(a.chain))
+        return {
+            "exceptionId": f"alarm {a.number}", "description": f"ALARM {a.number}: {a.message}", "breakMode": "always",
+            "details": {"message": a.message, "typeName": f"alarm {a.number}", "stackTrace": chain},
+        }  # fmt: skip
+
+    def on_source(self, args: dict[str, Any]) -> dict[str, Any]:
+        source = args.get("source") or {}
+        path = source.get("path") if isinstance(source, dict) else None
+        if not isinstance(path, str):
+            raise RequestFailed("the source has no path")
+        try:
+            return {"content": Path(path).read_text(encoding="utf-8", errors="replace")}
+        except OSError as e:
+            raise RequestFailed(f"cannot read {path}: {e}") from None
+
+
+def _whole(args: dict[str, Any], name: str, default: int) -> int:
+    value = args.get(name, default)
+    if value is None:
+        return default
+    if not isinstance(value, int) or isinstance(value, bool) or value < 0:
+        raise RequestFailed(f"'{name}' must be a whole number of at least 0")
+    return value
+
+
+def serve(stdin: BinaryIO | None = None, stdout: BinaryIO | None = None) -> int:
+    """Answer requests until the client disconnects or the input ends."""
+    reader = stdin or sys.stdin.buffer
+    writer = MessageWriter(stdout or sys.stdout.buffer)
+    session = Session(writer)
+    while not session.done:
+        try:
+            request = read_message(reader)
+        except ProtocolError as e:
+            if e.seq is not None:
+                writer.send(Response(e.seq, e.command or "", False, message=str(e)))
+            else:
+                session.output(f"cncmacro dap: {e}\n", "stderr")
+            if e.fatal:
+                return 1
+            continue
+        if request is None:
+            break
+        session.handle(request)
+    session._halt()
+    session._save()
+    return 0

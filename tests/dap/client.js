@@ -1,0 +1,86 @@
+// A DAP client for the tests: @vscode/debugadapter-testsupport's DebugClient, starting
+// `.venv/bin/python -m cncmacro dap` from the repository root, and a few scenario helpers.
+'use strict';
+
+const cp = require('node:child_process');
+const path = require('node:path');
+const { DebugClient } = require('@vscode/debugadapter-testsupport');
+
+const ROOT = path.resolve(__dirname, '..', '..');
+const PYTHON = path.join(ROOT, '.venv', 'bin', 'python');
+const PROGRAMS = path.join(__dirname, 'programs');
+
+function program(name) {
+  return path.join(PROGRAMS, name);
+}
+
+class CncMacroClient extends DebugClient {
+  constructor() {
+    super(PYTHON, '-m', 'cncmacro');
+    this.output = '';
+    this.on('output', (e) => { this.output += e.body.output; });
+  }
+
+  // DebugClient spawns `runtime executable`; the adapter needs `python -m cncmacro dap`.
+  start() {
+    return new Promise((resolve, reject) => {
+      this._adapterProcess = cp.spawn(PYTHON, ['-m', 'cncmacro', 'dap'], { cwd: ROOT });
+      this._adapterProcess.on('error', reject);
+      this._adapterProcess.stderr.on('data', (data) => process.stderr.write(data));
+      this.connect(this._adapterProcess.stdout, this._adapterProcess.stdin);
+      resolve();
+    });
+  }
+
+  // initialize, set the breakpoints, configurationDone and launch; resolves with the first stop
+  // (or terminated event) and the initialize response.
+  async begin(launchArgs, { breakpoints = {}, functionBreakpoints, filters, locale, until = 'stopped' } = {}) {
+    const initialized = this.waitForEvent('initialized');
+    const first = this.waitForEvent(until);
+    const init = await this.initializeRequest({
+      adapterID: 'cnc-macro', linesStartAt1: true, columnsStartAt1: true, pathFormat: 'path', locale,
+    });
+    await initialized;
+    const verified = {};
+    for (const [file, specs] of Object.entries(breakpoints)) {
+      const response = await this.setBreakpointsRequest({ source: { path: program(file) }, breakpoints: specs });
+      verified[file] = response.body.breakpoints;
+    }
+    if (functionBreakpoints) {
+      await this.setFunctionBreakpointsRequest({ breakpoints: functionBreakpoints.map((name) => ({ name })) });
+    }
+    if (filters) {
+      await this.setExceptionBreakpointsRequest({ filters });
+    }
+    await this.configurationDoneRequest();
+    await this.launchRequest({ noSave: true, ...launchArgs });
+    return { event: await first, init, verified };
+  }
+
+  async top() {
+    const trace = await this.stackTraceRequest({ threadId: 1 });
+    return trace.body.stackFrames[0];
+  }
+
+  async value(expression, frameId) {
+    const response = await this.evaluateRequest({ expression, context: 'watch', frameId });
+    return response.body.result;
+  }
+
+  // Send a stepping request and wait for the stop it ends with.
+  async step(request, args = { threadId: 1 }) {
+    const stopped = this.waitForEvent('stopped');
+    await this[request](args);
+    return stopped;
+  }
+
+  async scopeVariables(frameId, scopeName) {
+    const scopes = (await this.scopesRequest({ frameId })).body.scopes;
+    const scope = scopes.find((s) => s.name.startsWith(scopeName));
+    if (!scope) throw new Error(`no scope ${scopeName} in ${scopes.map((s) => s.name)}`);
+    const response = await this.variablesRequest({ variablesReference: scope.variablesReference });
+    return { scope, variables: response.body.variables };
+  }
+}
+
+module.exports = { CncMacroClient, program, PROGRAMS, ROOT };

@@ -1,0 +1,5 @@
+O9100 (ADD THE ARGUMENTS)
+(A IS #1, B IS #2)
+#100=#1+#2
+#3=#100*2
+M99
