@@ -1,0 +1,107 @@
+"""What a dialect's tables say about one thing, ready to show a person.
+
+The tables (``fanuc_data``, ``gsk980tdi_data``, ``functions_data``) hold rows that may cover a
+range of numbers with ``{axis}`` and ``{index}`` in their text; the functions here pick the row
+for one variable number, G/M code or function name and fill those in, in English or Chinese.
+The class of a variable (local, common, persistent, system) follows SEMANTICS.md §2 with the
+common range a machine setting. Nothing here runs a program.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .dialect import Dialect
+from .tables import CodeDoc, FunctionDoc
+
+LOCAL = "local"
+COMMON = "common"
+PERSISTENT = "persistent"
+SYSTEM = "system"
+NULL = "null"
+UNDEFINED = "undefined"
+
+
+def variable_class(number: int, common: tuple[int, int] = (100, 199)) -> str:
+    """``local`` (#1–#33), ``common`` (the volatile range), ``persistent`` (#500–#999),
+    ``system`` (#1000 and above), ``null`` (#0) or ``undefined`` (any other number)."""
+    if number == 0:
+        return NULL
+    if 1 <= number <= 33:
+        return LOCAL
+    if common[0] <= number <= common[1] and not 500 <= number <= 999:
+        return COMMON
+    if 500 <= number <= 999:
+        return PERSISTENT
+    if number >= 1000:
+        return SYSTEM
+    return UNDEFINED
+
+
+def _zh(locale: str | None) -> bool:
+    return bool(locale) and str(locale).lower().startswith("zh")
+
+
+def axis_name(dialect: Dialect, k: int) -> str:
+    """The k-th axis (0-based) of the dialect, as the tables' ``{axis}`` means it."""
+    if k < len(dialect.axes):
+        return dialect.axes[k]
+    return f"{k + 1}th"
+
+
+@dataclass(frozen=True, slots=True)
+class VariableDoc:
+    """A system variable described for one number: ``text`` in the chosen language, its
+    ``unit``, ``access`` (``r``, ``w``, ``rw``), ``axis`` (None when the row has none) and the
+    row's ``group``."""
+
+    number: int
+    text: str
+    unit: str
+    access: str
+    axis: str | None
+    group: str
+    first: int
+    last: int
+
+
+def describe_system_variable(dialect: Dialect, number: int, locale: str | None = None) -> VariableDoc | None:
+    """The description of system variable ``#number``, or None when the dialect has none."""
+    row = dialect.system_variable(number)
+    if row is None:
+        return None
+    k = number - row.first
+    template = row.zh if _zh(locale) else row.en
+    axis = axis_name(dialect, k) if "{axis}" in row.en else None
+    text = template.replace("{axis}", axis or "").replace("{index}", str(k + 1))
+    return VariableDoc(number, text, row.unit, row.access, axis, row.group, row.first, row.last)
+
+
+def code_key(letter: str, value: float) -> str:
+    """How the tables spell a code: ``G01``, ``G54.1``, ``M98``."""
+    if value == int(value):
+        return f"{letter}{int(value):02d}"
+    return f"{letter}{int(value):02d}.{round((value - int(value)) * 10)}"
+
+
+def code_doc(dialect: Dialect, letter: str, value: float) -> CodeDoc | None:
+    """The table row of the G or M code ``letter``+``value``, if the dialect has it."""
+    letter = letter.upper()
+    if letter not in ("G", "M"):
+        return None
+    key = code_key(letter, value)
+    for doc in dialect.g_codes() if letter == "G" else dialect.m_codes():
+        if doc.code == key:
+            return doc
+    return None
+
+
+def function_docs(dialect: Dialect, name: str) -> list[FunctionDoc]:
+    """Every documented form of a function, operator or statement keyword (``ATAN`` has two)."""
+    name = name.upper()
+    return [f for f in dialect.functions() if f.name == name]
+
+
+def pick_text(doc: CodeDoc | FunctionDoc, locale: str | None) -> str:
+    """A code's or function's description in the chosen language."""
+    return doc.zh if _zh(locale) else doc.en

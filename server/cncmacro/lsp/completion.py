@@ -1,0 +1,176 @@
+"""Completion: system variables (with their descriptions) after ``#``, N labels after ``GOTO``,
+programs after the ``P`` of a call, G65/G66 argument letters with the locals they fill, and the
+keywords and functions of the dialect. Everything offered comes from the dialect tables, the
+parser's labels and the workspace index."""
+
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING
+
+from lsprotocol import types
+
+from ..dialects import describe
+from ..dialects.dialect import ARGUMENTS_I
+from .call_sites import call_site
+from .cursor import Cursor, cursor_at
+from .semantic_tokens import _name_kinds
+from .texts import t
+
+if TYPE_CHECKING:
+    from .server import CncMacroServer
+
+EXPAND_RANGE = 8  # a table row covering more numbers than this is offered by its first number
+_HASH = re.compile(r"#(\d*)$")
+_GOTO = re.compile(r"GOTO\s*(\d*)$", re.I)
+_P = re.compile(r"P(\[?)([\w\u4e00-\u9fff]*)$", re.I)
+_CALL = re.compile(r"\b(G0*65|G0*66|M0*98)\b|(G0*65|G0*66|M0*98)(?=\s*P)", re.I)
+
+
+def register(server: CncMacroServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_COMPLETION, types.CompletionOptions(trigger_characters=["#", " ", "["]))
+    def completion(ls: CncMacroServer, params: types.CompletionParams) -> types.CompletionList | None:
+        cur = cursor_at(ls, params.text_document.uri, params.position)
+        if cur is None:
+            return None
+        return types.CompletionList(is_incomplete=False, items=complete(ls, cur))
+
+
+def complete(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem]:
+    before = cur.text[: cur.column]
+    m = _HASH.search(before)
+    if m:
+        return system_variable_items(ls, cur, cur.column - len(m.group(0)))
+    m = _GOTO.search(before)
+    if m:
+        return label_items(cur)
+    in_call = _CALL.search(before.upper()) is not None
+    m = _P.search(before)
+    if m and in_call and (m.start() == 0 or not before[m.start() - 1].isalpha()):
+        return program_items(ls, cur, bool(m.group(1)), cur.column - len(m.group(2)))
+    items: list[types.CompletionItem] = []
+    if in_call:
+        items += argument_items(ls, cur)
+    items += keyword_items(ls, cur)
+    return items
+
+
+def system_variable_items(ls: CncMacroServer, cur: Cursor, start: int) -> list[types.CompletionItem]:
+    dialect = cur.doc.dialect
+    loc = ls.locale
+    out: list[types.CompletionItem] = []
+    for row in dialect.system_variables():
+        last = row.last if row.last - row.first < EXPAND_RANGE else row.first
+        for n in range(row.first, last + 1):
+            doc = describe.describe_system_variable(dialect, n, loc)
+            if doc is None:
+                continue
+            detail = f"{t(doc.access, loc)}" + (f", {doc.unit}" if doc.unit else "")
+            out.append(
+                types.CompletionItem(
+                    label=f"#{n}",
+                    kind=types.CompletionItemKind.Variable,
+                    detail=detail,
+                    documentation=types.MarkupContent(kind=types.MarkupKind.Markdown, value=doc.text),
+                    filter_text=f"#{n}",
+                    sort_text=f"{n:08d}",
+                    text_edit=types.TextEdit(cur.range(start, cur.column), f"#{n}"),
+                )
+            )
+    return out
+
+
+def label_items(cur: Cursor) -> list[types.CompletionItem]:
+    program = cur.doc.parsed.program
+    unit = program.unit_at(cur.line)
+    out = []
+    for n, lines in sorted(program.labels.items()):
+        inside = [x for x in lines if x in unit]
+        if not inside:
+            continue
+        out.append(
+            types.CompletionItem(
+                label=str(n),
+                kind=types.CompletionItemKind.Reference,
+                detail=f"N{n}: " + ", ".join(str(x + 1) for x in inside),
+                sort_text=f"{n:08d}",
+            )
+        )
+    return out
+
+
+def program_items(ls: CncMacroServer, cur: Cursor, bracket: bool, start: int) -> list[types.CompletionItem]:
+    out = []
+    seen = set()
+    for p in ls.index.programs():
+        if bracket:
+            if p.number is not None and p.line != 0:
+                continue
+            text = p.name if p.number is None else p.path.rsplit("/", 1)[-1].rsplit(".", 1)[0]
+        else:
+            if p.number is None:
+                continue
+            text = str(p.number)
+        if text in seen:
+            continue
+        seen.add(text)
+        out.append(
+            types.CompletionItem(
+                label=text,
+                kind=types.CompletionItemKind.Module,
+                detail=f"{p.name} {p.title or ''}".strip(),
+                text_edit=types.TextEdit(cur.range(start, cur.column), text),
+            )
+        )
+    return out
+
+
+def argument_items(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem]:
+    loc = ls.locale
+    out = []
+    for letter, n in ARGUMENTS_I.items():
+        out.append(
+            types.CompletionItem(
+                label=letter,
+                kind=types.CompletionItemKind.Field,
+                detail=f"{t('fills', loc)} #{n}",
+                sort_text=f"0{n:02d}",
+            )
+        )
+    site = call_site(cur.block, cur.doc.dialect)
+    if site is not None and (site.number is not None or site.name is not None):
+        reads = ls_reads(ls, cur, site)
+        for item in out:
+            if int(item.detail.split("#")[-1]) in reads:  # type: ignore[union-attr]
+                item.sort_text = "!" + (item.sort_text or "")
+                item.preselect = True
+    return out
+
+
+def ls_reads(ls: CncMacroServer, cur: Cursor, site) -> set[int]:  # type: ignore[no-untyped-def]
+    from .signature_help import locals_read
+
+    found = ls.index.find_program(cur.doc, site.number, site.name)
+    return set(locals_read(found)) if found is not None else set()
+
+
+def keyword_items(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem]:
+    kinds = _name_kinds(cur.doc.dialect.name)
+    out = []
+    seen = set()
+    for f in cur.doc.dialect.functions():
+        if f.name in seen:
+            continue
+        seen.add(f.name)
+        kind = kinds.get(f.name, "keyword")
+        out.append(
+            types.CompletionItem(
+                label=f.name,
+                kind=types.CompletionItemKind.Function if kind == "function" else types.CompletionItemKind.Keyword,
+                detail=f.signature,
+                documentation=describe.pick_text(f, ls.locale),
+                insert_text=f"{f.name}[$1]" if kind == "function" else None,
+                insert_text_format=types.InsertTextFormat.Snippet if kind == "function" else None,
+            )
+        )
+    return out

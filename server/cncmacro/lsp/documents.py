@@ -1,0 +1,135 @@
+"""The open documents: each one a ``ParsedDocument`` kept up to date by incremental edits.
+
+An editor change is applied to the cached parser (only the touched lines are parsed again);
+the document's dialect is chosen again only when an edit touches the first lines, where the
+``(cncmacro: dialect=...)`` comment lives. Requests read single lines and blocks from here and
+never rebuild the text.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from lsprotocol import types
+from pygls.uris import to_fs_path
+
+from ..dialects import get_dialect
+from ..dialects.dialect import Dialect
+from ..library.dialect_choice import HEADER_LINES, choose_dialect
+from ..library.programs import LoadedFile
+from ..syntax.document import ParsedDocument, split_lines
+from ..syntax.nodes import Block
+from .positions import to_code_points
+from .site_index import SiteIndex
+
+
+def uri_to_path(uri: str) -> str:
+    """The file path of a ``file:`` URI (other schemes keep the URI itself)."""
+    return to_fs_path(uri) or uri
+
+
+# an applied edit: (start line, start column, end line, end column, new text) in code points,
+# or the whole new text
+Edit = tuple[int, int, int, int, str] | str
+
+
+@dataclass
+class OpenDocument:
+    """One document open in the editor."""
+
+    uri: str
+    path: str
+    version: int
+    parsed: ParsedDocument
+    dialect: Dialect
+    sites: SiteIndex
+
+    @property
+    def lines(self) -> list[str]:
+        return self.parsed.lines
+
+    def line(self, i: int) -> str:
+        return self.parsed.lines[i] if 0 <= i < len(self.parsed.lines) else ""
+
+    def block(self, i: int) -> Block | None:
+        return self.parsed.blocks[i] if 0 <= i < len(self.parsed.blocks) else None
+
+    def as_loaded(self) -> LoadedFile:
+        """The document as the program library sees a file (no copy of the text is made)."""
+        return LoadedFile(self.path, self.parsed.lines, self.parsed.program, self.dialect.name)
+
+    @property
+    def folder(self) -> Path:
+        return Path(self.path).parent
+
+
+class Documents:
+    """The open documents by URI, and the dialect choice they share."""
+
+    def __init__(self) -> None:
+        self.by_uri: dict[str, OpenDocument] = {}
+        self.workspace_dialect: str | None = None  # from .cncmacro.toml
+        self.setting_dialect: str | None = None  # from the editor's settings
+        self.utf16 = True
+
+    def dialect_for(self, lines: list[str]) -> Dialect:
+        return get_dialect(choose_dialect(lines, self.workspace_dialect, self.setting_dialect))
+
+    def open(self, item: types.TextDocumentItem) -> OpenDocument:
+        parsed = ParsedDocument(item.text)
+        doc = OpenDocument(
+            item.uri,
+            uri_to_path(item.uri),
+            item.version,
+            parsed,
+            self.dialect_for(parsed.lines),
+            SiteIndex(parsed.blocks),
+        )
+        self.by_uri[item.uri] = doc
+        return doc
+
+    def change(self, params: types.DidChangeTextDocumentParams) -> tuple[OpenDocument, list[Edit]] | None:
+        """Apply an editor change; the document and the edits as applied (code-point columns,
+        lines clamped to the text), for the analysis to follow."""
+        doc = self.by_uri.get(params.text_document.uri)
+        if doc is None:
+            return None
+        applied: list[Edit] = []
+        header_touched = False
+        for change in params.content_changes:
+            if isinstance(change, types.TextDocumentContentChangePartial):
+                r = change.range
+                lines = doc.parsed.lines
+                sl = min(max(r.start.line, 0), len(lines) - 1)
+                el = min(max(r.end.line, sl), len(lines) - 1)
+                sc = to_code_points(lines[sl], r.start.character, self.utf16) if r.start.line < len(lines) else 1 << 30
+                ec = to_code_points(lines[el], r.end.character, self.utf16) if r.end.line < len(lines) else 1 << 30
+                sc = min(sc, len(lines[sl]))
+                ec = min(ec, len(lines[el])) if el > sl else max(min(ec, len(lines[el])), sc)
+                applied.append((sl, sc, el, ec, change.text))
+                doc.parsed.apply_change(sl, sc, el, ec, change.text)
+                doc.sites.replaced(doc.parsed.blocks, sl, el + 1, len(split_lines(change.text)))
+                header_touched = header_touched or r.start.line < HEADER_LINES
+            else:
+                applied.append(change.text)
+                doc.parsed.set_text(change.text)
+                doc.sites = SiteIndex(doc.parsed.blocks)
+                header_touched = True
+        doc.version = params.text_document.version
+        if header_touched:
+            doc.dialect = self.dialect_for(doc.parsed.lines)
+        return doc, applied
+
+    def close(self, uri: str) -> OpenDocument | None:
+        return self.by_uri.pop(uri, None)
+
+    def get(self, uri: str) -> OpenDocument:
+        doc = self.by_uri.get(uri)
+        if doc is None:
+            raise KeyError(f"document not open: {uri}")
+        return doc
+
+    def rechoose_dialects(self) -> None:
+        for doc in self.by_uri.values():
+            doc.dialect = self.dialect_for(doc.parsed.lines)

@@ -1,0 +1,58 @@
+"""Folding ranges: WHILE..END loops, O programs up to their M99/M30 (or the next program),
+and runs of comment-only lines, from the parser's ``Program`` and cached blocks."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from lsprotocol import types
+
+from ..syntax.nodes import Number
+
+if TYPE_CHECKING:
+    from .server import CncMacroServer
+
+
+def register(server: CncMacroServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_FOLDING_RANGE)
+    def folding_range(ls: CncMacroServer, params: types.FoldingRangeParams) -> list[types.FoldingRange]:
+        doc = ls.documents.get(params.text_document.uri)
+        program = doc.parsed.program
+        blocks = doc.parsed.blocks
+        out: list[types.FoldingRange] = []
+        for p in program.loops:
+            if p.end_line > p.do_line:
+                out.append(types.FoldingRange(start_line=p.do_line, end_line=p.end_line))
+        for u in program.units:
+            if u.number is None:
+                continue
+            end = u.end - 1
+            while end > u.start and _is_blank(blocks[end]):
+                end -= 1
+            if end > u.start:
+                out.append(types.FoldingRange(start_line=u.start, end_line=end))
+        run_start = None
+        for i, b in enumerate(blocks):
+            comment_only = b.plain is None and bool(b.comments) and b.is_empty
+            if comment_only and run_start is None:
+                run_start = i
+            elif not comment_only and run_start is not None:
+                if i - 1 > run_start:
+                    out.append(
+                        types.FoldingRange(start_line=run_start, end_line=i - 1, kind=types.FoldingRangeKind.Comment)
+                    )
+                run_start = None
+        if run_start is not None and len(blocks) - 1 > run_start:
+            out.append(
+                types.FoldingRange(start_line=run_start, end_line=len(blocks) - 1, kind=types.FoldingRangeKind.Comment)
+            )
+        return out
+
+
+def _is_blank(b) -> bool:  # type: ignore[no-untyped-def]
+    """A line after a program's end: empty, or a ``%`` mark."""
+    if b.plain is not None:
+        return False
+    if b.tape:
+        return True
+    return b.is_empty and not b.comments and not any(w.letter == "M" and isinstance(w.value, Number) for w in b.words)

@@ -1,0 +1,198 @@
+"""Hover: what the thing under the cursor is, in the client's language and the file's dialect.
+
+System variables, G/M codes and functions are described from the dialect tables; a local
+shows the argument letters that fill it (``machine.calls``); a common shows where it is
+written; an N label shows the jumps to it; an O program (or the P of a call) shows its title
+and file. Only the block under the cursor is parsed; searches read cached blocks.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from lsprotocol import types
+
+from ..dialects import describe
+from ..machine.calls import argument_targets, letters_for_local
+from ..syntax.nodes import Call, Number, Var, Word
+from ..syntax.walk import nodes_at
+from .call_sites import call_site
+from .cursor import Cursor, cursor_at
+from .site_index import block_sites, indexed_lines
+from .sites import jump_sites, label_jumps, word_at
+from .texts import t
+
+if TYPE_CHECKING:
+    from .server import CncMacroServer
+
+MAX_PLACES = 8
+
+
+def register(server: CncMacroServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_HOVER)
+    def hover(ls: CncMacroServer, params: types.HoverParams) -> types.Hover | None:
+        cur = cursor_at(ls, params.text_document.uri, params.position)
+        if cur is None:
+            return None
+        found = hover_text(ls, cur)
+        if found is None:
+            return None
+        text, start, end = found
+        return types.Hover(
+            contents=types.MarkupContent(kind=types.MarkupKind.Markdown, value=text), range=cur.range(start, end)
+        )
+
+
+def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
+    """The Markdown for the cursor and the range it describes."""
+    b, col = cur.block, cur.column
+    if b.label_span is not None and b.label_span[0] <= col <= b.label_span[1] and b.label is not None:
+        return label_hover(ls, cur, b.label), *b.label_span
+    if b.program_span is not None and b.program_span[0] <= col <= b.program_span[1] and b.program is not None:
+        return program_hover(ls, cur, b.program, None), *b.program_span
+    for j in jump_sites(b):
+        if j.start <= col <= j.end:
+            return label_hover(ls, cur, j.label), j.start, j.end
+    path = nodes_at(b, col)
+    for node in reversed(path):
+        if isinstance(node, Var):
+            return variable_hover(ls, cur, node.number), node.start, node.end
+        if isinstance(node, Call) and col <= node.start + len(node.name):
+            text = function_hover(ls, cur, node.name)
+            if text:
+                return text, node.start, node.start + len(node.name)
+        if isinstance(node, Word):
+            text = word_hover(ls, cur, node)
+            if text:
+                return text, node.start, node.end
+    w = word_at(cur.text, col)
+    if w is not None:
+        text = function_hover(ls, cur, w[0])
+        if text:
+            return text, w[1], w[2]
+    return None
+
+
+# ---------------------------------------------------------------- variables
+def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
+    loc = ls.locale
+    dialect = cur.doc.dialect
+    kind = describe.variable_class(number, ls.common_range)
+    head = f"**#{number}** — {t(kind, loc)}"
+    lines = [head]
+    if kind == describe.SYSTEM:
+        doc = describe.describe_system_variable(dialect, number, loc)
+        if doc is None:
+            lines = [f"**#{number}** — {t('undefined', loc)}"]
+        else:
+            lines.append("")
+            lines.append(doc.text)
+            lines.append("")
+            facts = [f"{t('access', loc)}: {t(doc.access, loc)}"]
+            if doc.unit:
+                facts.append(f"{t('unit', loc)}: {doc.unit}")
+            if doc.axis:
+                facts.append(f"{t('axis', loc)}: {doc.axis}")
+            lines.append(" · ".join(facts))
+            lines.append("")
+            lines.append(f"*{dialect.title}*")
+    elif kind == describe.LOCAL:
+        spec1, spec2 = letters_for_local(number)
+        lines.append("")
+        if spec1 or spec2:
+            lines.append(f"{t('filled_by', loc)}:")
+            if spec1:
+                lines.append(f"- {t('spec1', loc)}: **{spec1}**")
+            if spec2:
+                lines.append(f"- {t('spec2', loc)}: **{spec2}**")
+        else:
+            lines.append(t("no_argument", loc))
+    elif kind in (describe.COMMON, describe.PERSISTENT):
+        places = write_places(ls, number)
+        lines.append("")
+        if places:
+            lines.append(f"{t('written_at', loc)}:")
+            for path, line in places[:MAX_PLACES]:
+                lines.append(f"- {Path(path).name}:{line + 1}")
+            if len(places) > MAX_PLACES:
+                lines.append(f"- … (+{len(places) - MAX_PLACES} {t('more', loc)})")
+        else:
+            lines.append(t("not_written", loc))
+    return "\n".join(lines)
+
+
+def write_places(ls: CncMacroServer, number: int) -> list[tuple[str, int]]:
+    """Every (file, line) in the workspace that assigns ``#number``."""
+    out: list[tuple[str, int]] = []
+    for path, blocks, lines in indexed_lines(ls):
+        for i in lines:
+            if any(s.write and s.number == number for s in block_sites(blocks[i])[1]):
+                out.append((path, i))
+    return out
+
+
+# ---------------------------------------------------------------- labels and programs
+def label_hover(ls: CncMacroServer, cur: Cursor, label: int) -> str:
+    loc = ls.locale
+    program = cur.doc.parsed.program
+    unit = program.unit_at(cur.line)
+    defined = program.label_lines(label, unit)
+    lines = [f"**N{label}** — {t('label', loc)}"]
+    if defined:
+        lines.append("")
+        lines.append(", ".join(f"{t('line', loc)} {x + 1}" for x in defined))
+    else:
+        lines.append("")
+        lines.append(f"N{label}: {t('not_found', loc)}")
+    jumps = [(i, j.kind) for i, j in label_jumps(cur.doc, unit.start, unit.end, label)]
+    lines.append("")
+    if jumps:
+        lines.append(f"{t('jumps', loc)}:")
+        for i, kind in jumps[:MAX_PLACES]:
+            lines.append(f"- {t('line', loc)} {i + 1} ({kind})")
+        if len(jumps) > MAX_PLACES:
+            lines.append(f"- … (+{len(jumps) - MAX_PLACES} {t('more', loc)})")
+    else:
+        lines.append(t("no_jumps", loc))
+    return "\n".join(lines)
+
+
+def program_hover(ls: CncMacroServer, cur: Cursor, number: int | None, name: str | None) -> str:
+    loc = ls.locale
+    found = ls.index.find_program(cur.doc, number, name)
+    shown = f"O{number:04d}" if number is not None else f"[{name}]"
+    if found is None:
+        return f"**{shown}** — {t('program', loc)}: {t('not_found', loc)}"
+    lines = [f"**{found.label}**" + (f" ({found.unit.title})" if found.unit.title else "")]
+    lines.append("")
+    lines.append(f"{t('file', loc)}: {Path(found.file.path).name}, {t('line', loc)} {found.unit.start + 1}")
+    return "\n".join(lines)
+
+
+# ---------------------------------------------------------------- words and functions
+def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
+    loc = ls.locale
+    dialect = cur.doc.dialect
+    site = call_site(cur.block, dialect)
+    if site is not None and word is site.p:
+        return program_hover(ls, cur, site.number, site.name)
+    if site is not None and word in site.arguments:
+        targets = argument_targets([w.letter for w in site.arguments])
+        k = next(i for i, w in enumerate(site.arguments) if w is word)
+        if targets[k] is not None:
+            return f"**{word.letter}** → **#{targets[k]}** ({t('fills', loc)} #{targets[k]})"
+    if word.letter in ("G", "M") and isinstance(word.value, Number):
+        doc = describe.code_doc(dialect, word.letter, word.value.value)
+        if doc is not None:
+            group = f"{t('modal', loc)}: {doc.group}" if doc.group else t("one_shot", loc)
+            return f"**{doc.code}** — {describe.pick_text(doc, loc)}\n\n{group} · *{dialect.title}*"
+    return None
+
+
+def function_hover(ls: CncMacroServer, cur: Cursor, name: str) -> str | None:
+    docs = describe.function_docs(cur.doc.dialect, name)
+    if not docs:
+        return None
+    parts = [f"```\n{d.signature}\n```\n{describe.pick_text(d, ls.locale)}" for d in docs]
+    return "\n\n".join(parts)

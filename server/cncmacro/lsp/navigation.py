@@ -1,0 +1,212 @@
+"""Navigation: go to definition, find references, and rename N labels.
+
+A jump (``GOTO 10``, ``IF .. GOTO``, ``M99 P``, ``M98 Q``) leads to the N label it lands on
+(``machine.jumps`` says which of duplicate labels); the ``P`` of ``G65``/``G66``/``M98`` leads
+to the called program's file and line, found by the program library. References cover N
+labels (within their program), O programs (every call across the workspace) and variables
+(locals within their program, the others across the workspace). Renaming a label rewrites the
+label and every jump to it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
+
+from lsprotocol import types
+
+from ..dialects import describe
+from ..machine.jumps import first_line, goto_line, return_line
+from ..syntax.nodes import Var
+from ..syntax.walk import nodes_at
+from .call_sites import call_site
+from .cursor import Cursor, cursor_at, doc_range
+from .positions import to_client
+from .site_index import block_sites, indexed_lines
+from .sites import jump_sites, label_jumps
+
+if TYPE_CHECKING:
+    from .server import CncMacroServer
+
+
+def register(server: CncMacroServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_DEFINITION)
+    def definition(ls: CncMacroServer, params: types.DefinitionParams) -> list[types.Location] | None:
+        cur = cursor_at(ls, params.text_document.uri, params.position)
+        return None if cur is None else find_definition(ls, cur)
+
+    @server.feature(types.TEXT_DOCUMENT_REFERENCES)
+    def references(ls: CncMacroServer, params: types.ReferenceParams) -> list[types.Location] | None:
+        cur = cursor_at(ls, params.text_document.uri, params.position)
+        if cur is None:
+            return None
+        return find_references(ls, cur, params.context.include_declaration)
+
+    @server.feature(types.TEXT_DOCUMENT_PREPARE_RENAME)
+    def prepare_rename(ls: CncMacroServer, params: types.PrepareRenameParams) -> types.Range | None:
+        cur = cursor_at(ls, params.text_document.uri, params.position)
+        target = None if cur is None else label_under(cur)
+        if cur is None or target is None:
+            return None
+        return cur.range(target[1], target[2])
+
+    @server.feature(types.TEXT_DOCUMENT_RENAME)
+    def rename(ls: CncMacroServer, params: types.RenameParams) -> types.WorkspaceEdit | None:
+        cur = cursor_at(ls, params.text_document.uri, params.position)
+        if cur is None:
+            return None
+        return rename_label(ls, cur, params.new_name)
+
+
+def _loc(uri: str, line: int, start: int, end: int, text: str, utf16: bool) -> types.Location:
+    return types.Location(
+        uri,
+        types.Range(
+            types.Position(line, to_client(text, start, utf16)), types.Position(line, to_client(text, end, utf16))
+        ),
+    )
+
+
+def label_under(cur: Cursor) -> tuple[int, int, int, str] | None:
+    """(label number, start, end, kind) when the cursor is on an N label or a jump's number."""
+    b = cur.block
+    if b.label is not None and b.label_span and b.label_span[0] <= cur.column <= b.label_span[1]:
+        return b.label, b.label_span[0], b.label_span[1], "N"
+    for j in jump_sites(b):
+        if j.start <= cur.column <= j.end:
+            return j.label, j.start, j.end, j.kind
+    return None
+
+
+def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | None:
+    utf16 = ls.documents.utf16
+    hit = label_under(cur)
+    if hit is not None and hit[3] != "N":
+        label, _, _, kind = hit
+        program = cur.doc.parsed.program
+        unit = program.unit_at(cur.line)
+        lines = program.label_lines(label, unit)
+        target = (
+            return_line(lines, cur.line)
+            if kind == "M99"
+            else first_line(lines)
+            if kind == "M98 Q"
+            else goto_line(lines, cur.line)
+        )
+        if target is None:
+            return None
+        b = cur.doc.block(target)
+        span = b.label_span if b is not None and b.label_span else (0, 0)
+        return [_loc(cur.doc.uri, target, span[0], span[1], cur.doc.line(target), utf16)]
+    site = call_site(cur.block, cur.doc.dialect)
+    if site is not None and site.p.start <= cur.column <= site.p.end:
+        found = ls.index.find_program(cur.doc, site.number, site.name)
+        if found is None:
+            return None
+        line = found.unit.start
+        text = found.file.lines[line] if line < len(found.file.lines) else ""
+        return [_loc(ls.uri_for_path(found.file.path), line, 0, len(text), text, utf16)]
+    return None
+
+
+def find_references(ls: CncMacroServer, cur: Cursor, include_declaration: bool) -> list[types.Location] | None:
+    utf16 = ls.documents.utf16
+    hit = label_under(cur)
+    if hit is not None:
+        return label_references(cur, hit[0], include_declaration, utf16)
+    b = cur.block
+    if b.program is not None and b.program_span and b.program_span[0] <= cur.column <= b.program_span[1]:
+        return program_references(ls, cur.doc.path, b.program, include_declaration, cur)
+    site = call_site(b, cur.doc.dialect)
+    if site is not None and site.p.start <= cur.column <= site.p.end and site.number is not None:
+        found = ls.index.find_program(cur.doc, site.number, None)
+        return program_references(ls, found.file.path if found else None, site.number, include_declaration, cur)
+    for node in reversed(nodes_at(b, cur.column)):
+        if isinstance(node, Var):
+            return variable_references(ls, cur, node.number, include_declaration)
+    return None
+
+
+def label_references(cur: Cursor, label: int, include_declaration: bool, utf16: bool) -> list[types.Location]:
+    doc = cur.doc
+    program = doc.parsed.program
+    unit = program.unit_at(cur.line)
+    out: list[types.Location] = []
+    if include_declaration:
+        for i in program.label_lines(label, unit):
+            b = doc.block(i)
+            if b is not None and b.label_span:
+                out.append(_loc(doc.uri, i, b.label_span[0], b.label_span[1], doc.line(i), utf16))
+    for i, j in label_jumps(doc, unit.start, unit.end, label):
+        out.append(_loc(doc.uri, i, j.start, j.end, doc.line(i), utf16))
+    out.sort(key=lambda x: (x.range.start.line, x.range.start.character))
+    return out
+
+
+def program_references(
+    ls: CncMacroServer, path: str | None, number: int, include_declaration: bool, cur: Cursor
+) -> list[types.Location]:
+    """The calls of O``number`` across the workspace (and its header when asked)."""
+    utf16 = ls.documents.utf16
+    out: list[types.Location] = []
+    for f in ls.index.loaded_files():
+        uri = ls.uri_for_path(f.path)
+        dialect = cur.doc.dialect if f.path == cur.doc.path else ls.documents.dialect_for(f.lines)
+        for i, b in enumerate(f.program.blocks):
+            if include_declaration and b.program == number and b.program_span and (path is None or f.path == path):
+                out.append(_loc(uri, i, b.program_span[0], b.program_span[1], f.lines[i], utf16))
+            if b.plain is not None and "P" not in b.plain.upper():
+                continue
+            site = call_site(b, dialect)
+            if site is not None and site.number == number:
+                out.append(_loc(uri, i, site.p.start, site.p.end, f.lines[i], utf16))
+    return out
+
+
+def variable_references(
+    ls: CncMacroServer, cur: Cursor, number: int, include_declaration: bool
+) -> list[types.Location]:
+    """Where ``#number`` is mentioned: a local within its program, the others everywhere."""
+    utf16 = ls.documents.utf16
+    out: list[types.Location] = []
+    kind = describe.variable_class(number, ls.common_range)
+    if kind == describe.LOCAL:
+        unit = cur.doc.parsed.program.unit_at(cur.line)
+        files: list[tuple[str, list, list[str], Iterable[int]]] = [
+            (cur.doc.path, cur.doc.parsed.blocks, cur.doc.lines, cur.doc.sites.between(unit.start, unit.end))
+        ]
+    else:
+        files = []
+        for path, blocks, lines in indexed_lines(ls):
+            doc = next((d for d in ls.documents.by_uri.values() if d.path == path), None)
+            texts = doc.lines if doc is not None else ls.index.files[path].lines
+            files.append((path, blocks, texts, lines))
+    for path, blocks, texts, lines in files:
+        uri = ls.uri_for_path(path)
+        for i in lines:
+            for s in block_sites(blocks[i])[1]:
+                if s.number == number and (include_declaration or not s.write):
+                    out.append(_loc(uri, i, s.start, s.end, texts[i], utf16))
+    return out
+
+
+def rename_label(ls: CncMacroServer, cur: Cursor, new_name: str) -> types.WorkspaceEdit | None:
+    hit = label_under(cur)
+    if hit is None:
+        return None
+    text = new_name.strip().upper().lstrip("N")
+    if not text.isdigit() or not 1 <= int(text) <= 99999:
+        raise ValueError(f"'{new_name}' is not a sequence number (N1 to N99999)")
+    new = int(text)
+    doc = cur.doc
+    utf16 = ls.documents.utf16
+    program = doc.parsed.program
+    unit = program.unit_at(cur.line)
+    edits: list[types.TextEdit] = []
+    for i in program.label_lines(hit[0], unit):
+        b = doc.block(i)
+        if b is not None and b.label_span:
+            edits.append(types.TextEdit(doc_range(doc, i, b.label_span[0], b.label_span[1], utf16), f"N{new}"))
+    for i, j in label_jumps(doc, unit.start, unit.end, hit[0]):
+        edits.append(types.TextEdit(doc_range(doc, i, j.start, j.end, utf16), str(new)))
+    return types.WorkspaceEdit(changes={doc.uri: edits})

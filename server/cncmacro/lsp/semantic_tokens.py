@@ -1,0 +1,154 @@
+"""Semantic tokens: variables by class (local, common, persistent, system), keywords,
+functions, operators, addresses, numbers, labels, program numbers and comments.
+
+Tokens are found per line by a small scanner that also works on lines that do not parse, with
+the label and program spans taken from the parsed block; a line's tokens are cached by its
+text, so after an edit only new lines are scanned. ``full`` and ``range`` requests are served.
+"""
+
+from __future__ import annotations
+
+import re
+from functools import cache
+from typing import TYPE_CHECKING
+
+from lsprotocol import types
+
+from ..dialects import describe
+from ..dialects.dialect import Dialect
+from ..syntax.nodes import Block
+from .documents import OpenDocument
+from .positions import to_client
+
+if TYPE_CHECKING:
+    from .server import CncMacroServer
+
+TOKEN_TYPES = ["comment", "keyword", "function", "operator", "variable", "property", "number", "label", "namespace"]
+TOKEN_MODIFIERS = ["local", "common", "persistent", "system", "readonly"]
+LEGEND = types.SemanticTokensLegend(token_types=TOKEN_TYPES, token_modifiers=TOKEN_MODIFIERS)
+_T = {name: i for i, name in enumerate(TOKEN_TYPES)}
+_M = {name: 1 << i for i, name in enumerate(TOKEN_MODIFIERS)}
+
+_SCAN = re.compile(
+    r"(?P<comment>\([^)]*\)?)|(?P<end>[;\uff1b].*)|(?P<var>#\d+)|(?P<word>[A-Za-z]+)"
+    r"|(?P<num>\d+\.?\d*|\.\d+)|(?P<op>[-+*/=<>!\[\]#])"
+)
+
+Token = tuple[int, int, int, int]  # start, end (code points), type, modifiers
+
+
+@cache
+def _name_kinds(dialect_name: str) -> dict[str, str]:
+    """keyword / function / operator for each name in the dialect's function table, judged by
+    how its signature is written (``SIN[a]`` a function, ``a AND b`` an operator)."""
+    from ..dialects import get_dialect
+
+    out: dict[str, str] = {}
+    for f in get_dialect(dialect_name).functions():
+        sig = f.signature.strip()
+        if sig.startswith(f.name + "["):
+            out.setdefault(f.name, "function")
+        elif re.search(rf"\s{f.name}\s", f" {sig} ") and not sig.startswith(f.name):
+            out.setdefault(f.name, "operator")
+        else:
+            out.setdefault(f.name, "keyword")
+    return out
+
+
+def line_tokens(text: str, block: Block, dialect: Dialect, common: tuple[int, int]) -> list[Token]:
+    kinds = _name_kinds(dialect.name)
+    label = block.label_span
+    prog = block.program_span
+    out: list[Token] = []
+    for m in _SCAN.finditer(text):
+        kind = m.lastgroup
+        s, e = m.start(), m.end()
+        if label and label[0] <= s < label[1]:
+            if s == label[0]:
+                out.append((label[0], label[1], _T["label"], 0))
+            continue
+        if prog and prog[0] <= s < prog[1]:
+            if s == prog[0]:
+                out.append((prog[0], prog[1], _T["namespace"], 0))
+            continue
+        if kind == "comment":
+            out.append((s, e, _T["comment"], 0))
+        elif kind == "end":
+            for c in re.finditer(r"\([^)]*\)?", m.group(0)):
+                out.append((s + c.start(), s + c.end(), _T["comment"], 0))
+        elif kind == "var":
+            n = int(m.group(0)[1:])
+            cls = describe.variable_class(n, common)
+            mods = _M.get(cls, 0)
+            if cls == describe.SYSTEM:
+                row = dialect.system_variable(n)
+                if row is not None and row.access == "r":
+                    mods |= _M["readonly"]
+            out.append((s, e, _T["variable"], mods))
+        elif kind == "word":
+            word = m.group(0).upper()
+            k = kinds.get(word)
+            if k is not None:
+                out.append((s, e, _T[k], 0))
+            else:
+                for i in range(s, e):
+                    out.append((i, i + 1, _T["property"], 0))
+        elif kind == "num":
+            out.append((s, e, _T["number"], 0))
+    return out
+
+
+class _TokenCache:
+    def __init__(self, limit: int = 200_000) -> None:
+        self.limit = limit
+        self.data: dict[tuple[str, str, tuple[int, int]], list[Token]] = {}
+
+    def get(self, text: str, block: Block, dialect: Dialect, common: tuple[int, int]) -> list[Token]:
+        key = (text, dialect.name, common)
+        hit = self.data.get(key)
+        if hit is None:
+            if len(self.data) >= self.limit:
+                self.data.clear()
+            hit = self.data[key] = line_tokens(text, block, dialect, common)
+        return hit
+
+
+_cache = _TokenCache()
+
+
+def encode(doc: OpenDocument, first: int, last: int, common: tuple[int, int], utf16: bool) -> list[int]:
+    """The LSP integer encoding of the tokens on lines ``first`` to ``last`` (inclusive)."""
+    data: list[int] = []
+    prev_line = 0
+    prev_start = 0
+    lines = doc.parsed.lines
+    blocks = doc.parsed.blocks
+    for i in range(max(first, 0), min(last, len(lines) - 1) + 1):
+        text = lines[i]
+        if not text:
+            continue
+        for s, e, typ, mods in _cache.get(text, blocks[i], doc.dialect, common):
+            cs = to_client(text, s, utf16)
+            length = to_client(text, e, utf16) - cs
+            if i == prev_line:
+                data += (0, cs - prev_start, length, typ, mods)
+            else:
+                data += (i - prev_line, cs, length, typ, mods)
+            prev_line, prev_start = i, cs
+    return data
+
+
+def register(server: CncMacroServer) -> None:
+    @server.feature(
+        types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL,
+        types.SemanticTokensRegistrationOptions(legend=LEGEND, full=True, range=True),
+    )
+    def full(ls: CncMacroServer, params: types.SemanticTokensParams) -> types.SemanticTokens:
+        doc = ls.documents.get(params.text_document.uri)
+        return types.SemanticTokens(data=encode(doc, 0, len(doc.lines) - 1, ls.common_range, ls.documents.utf16))
+
+    @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_RANGE, LEGEND)
+    def range_(ls: CncMacroServer, params: types.SemanticTokensRangeParams) -> types.SemanticTokens:
+        doc = ls.documents.get(params.text_document.uri)
+        r = params.range
+        return types.SemanticTokens(data=encode(doc, r.start.line, r.end.line, ls.common_range, ls.documents.utf16))

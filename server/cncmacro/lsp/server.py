@@ -1,0 +1,214 @@
+"""The language server object: state (documents, workspace index, settings) and wiring.
+
+``CncMacroServer`` holds everything the features read. Document sync is handled here rather
+than by pygls's own text store, so that an edit goes straight to the cached parser and the
+text is never copied. Each LSP method is answered by a function in its own module (hover,
+navigation, symbols, ...), registered in ``build_server``. pygls answers an exception in a
+handler with an error response and keeps serving; the error is also logged here.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import logging
+from typing import Any
+
+from lsprotocol import types
+from pygls.lsp.server import LanguageServer
+from pygls.protocol import LanguageServerProtocol
+from pygls.protocol.language_server import lsp_method
+from pygls.uris import from_fs_path
+
+from .. import __version__
+from ..library.machine_file import MachineSettings
+from .diagnostics import DiagnosticsEngine
+from .documents import Documents, uri_to_path
+from .settings import SECTION, Settings, machine_settings, merged_severities
+from .workspace_index import WorkspaceIndex
+
+log = logging.getLogger(__name__)
+CONFIGURATION_TIMEOUT = 2.0  # seconds to wait for the editor's settings before analysing
+
+
+class CncMacroProtocol(LanguageServerProtocol):
+    """The protocol without pygls's own copy of open documents: the server's ``Documents``
+    keeps them parsed instead."""
+
+    @lsp_method(types.TEXT_DOCUMENT_DID_OPEN)
+    def lsp_text_document__did_open(self, params: types.DidOpenTextDocumentParams):  # type: ignore[override]
+        if (handler := self.fm.features.get(types.TEXT_DOCUMENT_DID_OPEN)) is not None:
+            yield handler, (params,), None
+
+    @lsp_method(types.TEXT_DOCUMENT_DID_CHANGE)
+    def lsp_text_document__did_change(self, params: types.DidChangeTextDocumentParams):  # type: ignore[override]
+        if (handler := self.fm.features.get(types.TEXT_DOCUMENT_DID_CHANGE)) is not None:
+            yield handler, (params,), None
+
+    @lsp_method(types.TEXT_DOCUMENT_DID_CLOSE)
+    def lsp_text_document__did_close(self, params: types.DidCloseTextDocumentParams):  # type: ignore[override]
+        if (handler := self.fm.features.get(types.TEXT_DOCUMENT_DID_CLOSE)) is not None:
+            yield handler, (params,), None
+
+
+class CncMacroServer(LanguageServer):
+    """The cncmacro language server and its state."""
+
+    def __init__(self) -> None:
+        super().__init__("cncmacro", __version__, protocol_cls=CncMacroProtocol)
+        self.documents = Documents()
+        self.index = WorkspaceIndex(self.documents)
+        self.settings = Settings()
+        self.machine: MachineSettings | None = None
+        self.locale: str = "en"
+        self.diagnostics = DiagnosticsEngine(self)
+        self.settings_ready = asyncio.Event()  # set once the editor's settings were asked for
+
+    # ---- settings
+    def severity_overrides(self) -> dict[str, str]:
+        return merged_severities(self.machine, self.settings)
+
+    @property
+    def common_range(self) -> tuple[int, int]:
+        return self.machine.common if self.machine is not None else (100, 199)
+
+    def apply_settings(self, settings: Settings) -> None:
+        self.settings = settings
+        self.documents.setting_dialect = settings.dialect
+        self.documents.rechoose_dialects()
+        self.diagnostics.refresh_all()
+
+    def uri_for_path(self, path: str) -> str:
+        for doc in self.documents.by_uri.values():
+            if doc.path == path:
+                return doc.uri
+        return from_fs_path(path) or path
+
+    def report_server_error(self, error: Exception, source: Any) -> None:
+        log.error("cncmacro language server: %s: %s", type(error).__name__, error)
+
+
+def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
+    server.locale = params.locale or "en"
+    general = params.capabilities.general
+    encodings = general.position_encodings if general is not None else None
+    server.documents.utf16 = not (encodings and types.PositionEncodingKind.Utf32 in encodings)
+    server.settings = Settings.from_mapping(params.initialization_options)
+    server.documents.setting_dialect = server.settings.dialect
+    roots = [uri_to_path(f.uri) for f in params.workspace_folders or []]
+    if not roots and params.root_uri:
+        roots = [uri_to_path(params.root_uri)]
+    elif not roots and params.root_path:
+        roots = [params.root_path]
+    server.machine = machine_settings(roots[0]) if roots else None
+    server.documents.workspace_dialect = server.machine.dialect if server.machine else None
+    server.index.scan(roots)
+
+
+async def _initialized(server: CncMacroServer, params: types.InitializedParams) -> None:
+    try:
+        await asyncio.wait_for(_pull_configuration(server), CONFIGURATION_TIMEOUT)
+    except asyncio.TimeoutError:
+        log.info("workspace/configuration: no answer; using the initialization options")
+    finally:
+        server.settings_ready.set()
+
+
+async def _pull_configuration(server: CncMacroServer) -> None:
+    caps = server.client_capabilities.workspace
+    if caps is None or not caps.configuration:
+        return
+    try:
+        result = await server.workspace_configuration_async(
+            types.ConfigurationParams(items=[types.ConfigurationItem(section=SECTION)])
+        )
+    except Exception as e:  # a client that cannot answer keeps the settings it gave at start
+        log.info("workspace/configuration failed: %s", e)
+        return
+    if result and isinstance(result[0], dict):
+        server.apply_settings(Settings.from_mapping(result[0]))
+
+
+def build_server() -> CncMacroServer:
+    """A server with every feature registered."""
+    from . import (
+        code_actions,
+        completion,
+        folding,
+        hover,
+        inlay_hints,
+        navigation,
+        semantic_tokens,
+        signature_help,
+        symbols,
+    )
+
+    server = CncMacroServer()
+
+    server.feature(types.INITIALIZE)(_initialize)
+    server.feature(types.INITIALIZED)(_initialized)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
+    def did_open(ls: CncMacroServer, params: types.DidOpenTextDocumentParams) -> None:
+        doc = ls.documents.open(params.text_document)
+        ls.diagnostics.opened(doc, params.text_document.text)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
+    def did_change(ls: CncMacroServer, params: types.DidChangeTextDocumentParams) -> None:
+        changed = ls.documents.change(params)
+        if changed is not None:
+            ls.diagnostics.changed(*changed)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
+    def did_close(ls: CncMacroServer, params: types.DidCloseTextDocumentParams) -> None:
+        doc = ls.documents.close(params.text_document.uri)
+        if doc is not None:
+            ls.diagnostics.closed(doc)
+
+    @server.feature(
+        types.TEXT_DOCUMENT_DIAGNOSTIC,
+        types.DiagnosticOptions(identifier="cncmacro", inter_file_dependencies=True, workspace_diagnostics=False),
+    )
+    def pull_diagnostics(ls: CncMacroServer, params: types.DocumentDiagnosticParams) -> types.DocumentDiagnosticReport:
+        return ls.diagnostics.pull(params)
+
+    @server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)
+    async def did_change_configuration(ls: CncMacroServer, params: types.DidChangeConfigurationParams) -> None:
+        if isinstance(params.settings, dict) and params.settings:
+            ls.apply_settings(Settings.from_mapping(params.settings))
+        await _pull_configuration(ls)
+
+    @server.feature(types.WORKSPACE_DID_CHANGE_WATCHED_FILES)
+    def did_change_watched_files(ls: CncMacroServer, params: types.DidChangeWatchedFilesParams) -> None:
+        for change in params.changes:
+            path = uri_to_path(change.uri)
+            if change.type == types.FileChangeType.Deleted:
+                ls.index.drop(path)
+            else:
+                ls.index.reload(path)
+            ls.diagnostics.file_changed(path)
+        ls.diagnostics.refresh_all()
+
+    for module in (
+        hover,
+        navigation,
+        symbols,
+        folding,
+        semantic_tokens,
+        completion,
+        signature_help,
+        code_actions,
+        inlay_hints,
+    ):
+        module.register(server)
+    return server
+
+
+def serve(tcp: bool = False, host: str = "127.0.0.1", port: int = 2087) -> int:
+    """Run the server on stdio (or TCP) until the client says exit."""
+    logging.basicConfig(level=logging.WARNING, format="%(levelname)s %(name)s: %(message)s")
+    server = build_server()
+    if tcp:
+        server.start_tcp(host, port)
+    else:
+        server.start_io()
+    return 0

@@ -1,0 +1,75 @@
+"""The server's settings: the editor's ``cncMacro`` section and the workspace's machine file.
+
+The editor's settings come from ``initializationOptions`` at start and from
+``workspace/configuration`` (section ``cncMacro``) after ``initialized`` and on every
+``workspace/didChangeConfiguration``: ``dialect``, ``severity`` (diagnostic code ->
+``error|warning|information|hint|off``) and ``runBudget`` (blocks per analysis run). The
+workspace's ``.cncmacro.toml`` gives the dialect that the chain of DESIGN.md puts before the
+editor's, and severities that the editor's override.
+"""
+
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from ..dialects import normalise_dialect
+from ..library.machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
+
+SECTION = "cncMacro"
+log = logging.getLogger(__name__)
+
+
+@dataclass
+class Settings:
+    """What the editor set; None or empty where it set nothing."""
+
+    dialect: str | None = None
+    severity: dict[str, str] = field(default_factory=dict)
+    run_budget: int | None = None
+
+    @classmethod
+    def from_mapping(cls, data: Any) -> Settings:
+        """Settings from the ``cncMacro`` object (or an object holding it); bad values are
+        logged and skipped, never fatal."""
+        if not isinstance(data, dict):
+            return cls()
+        if isinstance(data.get(SECTION), dict):
+            data = data[SECTION]
+        out = cls()
+        dialect = data.get("dialect")
+        if isinstance(dialect, str) and dialect:
+            out.dialect = normalise_dialect(dialect)
+            if out.dialect is None:
+                log.warning("cncMacro.dialect: unknown dialect %r", dialect)
+        sev = data.get("severity")
+        if isinstance(sev, dict):
+            out.severity = {str(k): str(v).lower() for k, v in sev.items()}
+        budget = data.get("runBudget")
+        if isinstance(budget, int) and budget > 0:
+            out.run_budget = budget
+        return out
+
+
+def machine_settings(root: str | None) -> MachineSettings | None:
+    """The workspace root's ``.cncmacro.toml``, or None when there is none or it is broken
+    (the problem is logged)."""
+    if not root:
+        return None
+    path = find_machine_file(Path(root))
+    if path is None:
+        return None
+    try:
+        return load_machine_file(path)
+    except (MachineFileError, OSError) as e:
+        log.warning("%s", e)
+        return None
+
+
+def merged_severities(machine: MachineSettings | None, editor: Settings) -> dict[str, str]:
+    """The severity overrides in force: the machine file's, then the editor's on top."""
+    out: dict[str, str] = dict(getattr(machine, "severity", {}) or {}) if machine else {}
+    out.update(editor.severity)
+    return out

@@ -1,0 +1,104 @@
+"""Where things are mentioned on one block: jumps to N labels, variables read and written,
+function and keyword names. Every feature that searches (references, rename, hover's "written
+at", signature help's "reads") asks these questions of cached blocks, one block at a time.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from ..syntax.nodes import Assign, Block, Goto, If, Number, Var
+from ..syntax.walk import iter_nodes
+
+
+@dataclass(frozen=True, slots=True)
+class JumpSite:
+    """A literal label number a block jumps to: ``kind`` is ``GOTO``, ``M99``, ``M98 Q`` or
+    ``H8x``; ``start``/``end`` cover the number."""
+
+    label: int
+    kind: str
+    start: int
+    end: int
+
+
+@dataclass(frozen=True, slots=True)
+class VariableSite:
+    number: int
+    start: int
+    end: int
+    write: bool
+
+
+def _literal_int(node: object) -> int | None:
+    if isinstance(node, Number) and node.value == int(node.value) and node.value > 0:
+        return int(node.value)
+    return None
+
+
+def jump_sites(block: Block) -> list[JumpSite]:
+    """The jumps of a block to literal label numbers."""
+    out: list[JumpSite] = []
+    if block.plain is not None:
+        text = block.plain.upper()
+        if "M9" not in text and "H8" not in text:
+            return out
+    for s in block.statements:
+        target = s.target if isinstance(s, Goto) else s.goto if isinstance(s, If) else None
+        n = _literal_int(target)
+        if n is not None:
+            out.append(JumpSite(n, "GOTO", target.start, target.end))  # type: ignore[union-attr]
+    if block.words:
+        codes = {(w.letter, w.value.value) for w in block.words if isinstance(w.value, Number)}
+        for w in block.words:
+            n = _literal_int(w.value)
+            if n is None:
+                continue
+            if w.letter == "P" and ("M", 99.0) in codes:
+                out.append(JumpSite(n, "M99", w.value.start, w.value.end))  # type: ignore[union-attr]
+            elif w.letter == "Q" and ("M", 98.0) in codes:
+                out.append(JumpSite(n, "M98 Q", w.value.start, w.value.end))  # type: ignore[union-attr]
+            elif w.letter == "P" and ("G", 65.0) in codes and any(("H", float(h)) in codes for h in range(80, 87)):
+                out.append(JumpSite(n, "H8x", w.value.start, w.value.end))  # type: ignore[union-attr]
+    return out
+
+
+def variable_sites(block: Block) -> list[VariableSite]:
+    """Every ``#n`` with a literal number on the block, and whether it is assigned there."""
+    if block.plain is not None and "#" not in block.plain:
+        return []
+    out: list[VariableSite] = []
+    targets = set()
+    for node in iter_nodes(block):
+        if isinstance(node, Assign) and isinstance(node.target, Var):
+            targets.add(id(node.target))
+        elif isinstance(node, Var):
+            out.append(VariableSite(node.number, node.start, node.end, id(node) in targets))
+    return out
+
+
+_WORD = re.compile(r"[A-Za-z]+")
+
+
+def word_at(line: str, column: int) -> tuple[str, int, int] | None:
+    """The run of letters under ``column`` (or ending at it) with its range."""
+    for m in _WORD.finditer(line):
+        if m.start() <= column <= m.end():
+            return m.group(0), m.start(), m.end()
+        if m.start() > column:
+            break
+    return None
+
+
+def label_jumps(doc: object, start: int, end: int, label: int) -> Iterator[tuple[int, JumpSite]]:
+    """(line, jump) for every jump to ``label`` on lines ``start`` to ``end`` of an open
+    document (read from its site index)."""
+    from .site_index import block_sites
+
+    blocks = doc.parsed.blocks  # type: ignore[attr-defined]
+    for i in doc.sites.between(start, end):  # type: ignore[attr-defined]
+        for j in block_sites(blocks[i])[0]:
+            if j.label == label:
+                yield i, j

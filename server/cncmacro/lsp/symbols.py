@@ -1,0 +1,98 @@
+"""Document symbols (O programs, with their N labels and nested loops) and workspace symbols
+(every program in the workspace index), read from the ``Program`` structure of the parser."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from lsprotocol import types
+
+from .cursor import doc_range
+from .documents import OpenDocument
+
+if TYPE_CHECKING:
+    from .server import CncMacroServer
+
+MAX_LABELS = 5000  # a CAM file numbers every block; past this many, labels are left out
+
+
+def register(server: CncMacroServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
+    def document_symbol(ls: CncMacroServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol]:
+        return document_symbols(ls.documents.get(params.text_document.uri), ls.documents.utf16)
+
+    @server.feature(types.WORKSPACE_SYMBOL)
+    def workspace_symbol(ls: CncMacroServer, params: types.WorkspaceSymbolParams) -> list[types.WorkspaceSymbol]:
+        query = params.query.strip().lower()
+        out = []
+        for p in ls.index.programs():
+            text = f"{p.name} {p.title or ''}".lower()
+            if query and query not in text:
+                continue
+            uri = ls.uri_for_path(p.path)
+            out.append(
+                types.WorkspaceSymbol(
+                    name=p.name,
+                    kind=types.SymbolKind.Module,
+                    location=types.Location(uri, types.Range(types.Position(p.line, 0), types.Position(p.line, 0))),
+                    container_name=(p.title or "") + f" — {Path(p.path).name}",
+                )
+            )
+        return out
+
+
+def document_symbols(doc: OpenDocument, utf16: bool) -> list[types.DocumentSymbol]:
+    program = doc.parsed.program
+    labels = sorted((line, n) for n, lines in program.labels.items() for line in lines)
+    if len(labels) > MAX_LABELS:
+        labels = []
+    loops = sorted(program.loops, key=lambda p: p.do_line)
+    out: list[types.DocumentSymbol] = []
+    for unit in program.units:
+        last = max(unit.start, unit.end - 1)
+        if unit.number is None:
+            if unit.end <= unit.start:
+                continue
+            name = Path(doc.path).stem
+        else:
+            name = f"O{unit.number:04d}"
+        sym = types.DocumentSymbol(
+            name=name,
+            detail=unit.title or "",
+            kind=types.SymbolKind.Module,
+            range=types.Range(types.Position(unit.start, 0), types.Position(last, len(doc.line(last)))),
+            selection_range=doc_range(doc, unit.start, 0, len(doc.line(unit.start)), utf16),
+            children=[],
+        )
+        # loops nest by their ranges; labels go into the innermost loop that holds them
+        stack: list[tuple[int, types.DocumentSymbol]] = [(last, sym)]
+        events = sorted(
+            [(p.do_line, 0, p) for p in loops if unit.start <= p.do_line < unit.end]
+            + [(line, 1, n) for line, n in labels if unit.start <= line < unit.end],
+            key=lambda e: (e[0], e[1]),
+        )
+        for line, kind, item in events:
+            while len(stack) > 1 and stack[-1][0] < line:
+                stack.pop()
+            parent = stack[-1][1]
+            if kind == 0:
+                end_line = item.end_line  # type: ignore[union-attr]
+                child = types.DocumentSymbol(
+                    name=f"DO{item.number} … END{item.number}",  # type: ignore[union-attr]
+                    kind=types.SymbolKind.Namespace,
+                    range=types.Range(types.Position(line, 0), types.Position(end_line, len(doc.line(end_line)))),
+                    selection_range=doc_range(doc, line, 0, len(doc.line(line)), utf16),
+                    children=[],
+                )
+                parent.children.append(child)  # type: ignore[union-attr]
+                stack.append((end_line, child))
+            else:
+                b = doc.block(line)
+                span = b.label_span if b is not None and b.label_span else (0, 0)
+                r = doc_range(doc, line, span[0], span[1], utf16)
+                parent.children.append(  # type: ignore[union-attr]
+                    types.DocumentSymbol(name=f"N{item}", kind=types.SymbolKind.Key, range=r, selection_range=r)
+                )
+        out.append(sym)
+    return out

@@ -1,0 +1,43 @@
+"""The words the language server itself shows (hover headings, hint labels), in English and
+simplified Chinese. What a code or variable means comes from the dialect tables, not from here."""
+
+from __future__ import annotations
+
+_TEXTS: dict[str, tuple[str, str]] = {
+    "local": ("Local variable", "局部变量"),
+    "common": ("Common variable (cleared at power-off)", "公共变量（断电清除）"),
+    "persistent": ("Common variable (kept at power-off)", "公共变量（断电保持）"),
+    "system": ("System variable", "系统变量"),
+    "null": ("#0: always vacant, read-only", "#0：总是空，只读"),
+    "undefined": ("No such variable in this dialect (alarm 115)", "该系统中不存在此变量（115号报警）"),
+    "r": ("read-only", "只读"),
+    "w": ("write-only", "只写"),
+    "rw": ("read/write", "可读写"),
+    "unit": ("unit", "单位"),
+    "axis": ("axis", "轴"),
+    "access": ("access", "读写"),
+    "spec1": ("argument specification I", "自变量指定I"),
+    "spec2": ("argument specification II", "自变量指定II"),
+    "filled_by": ("filled by the G65/G66 argument", "由G65/G66自变量赋值"),
+    "no_argument": ("no argument fills it; set it in the macro", "没有自变量对其赋值，需在宏程序中赋值"),
+    "written_at": ("written at", "赋值位置"),
+    "not_written": ("not written in the workspace", "工作区内没有对其赋值"),
+    "label": ("Sequence number", "顺序号"),
+    "jumps": ("jumps to it", "跳转到此处"),
+    "no_jumps": ("no jump names it", "没有跳转指向此处"),
+    "target": ("target", "目标"),
+    "not_found": ("not found", "未找到"),
+    "program": ("Program", "程序"),
+    "file": ("file", "文件"),
+    "line": ("line", "行"),
+    "modal": ("modal group", "模态组"),
+    "one_shot": ("one-shot", "非模态"),
+    "fills": ("fills", "赋值给"),
+    "reads": ("reads", "读取"),
+    "more": ("more", "更多"),
+}
+
+
+def t(key: str, locale: str | None) -> str:
+    en, zh = _TEXTS[key]
+    return zh if locale and locale.lower().startswith("zh") else en

@@ -1,0 +1,105 @@
+"""Helpers for the language-server tests: a real ``cncmacro lsp`` process per test module and
+workspace, driven over stdio by pytest-lsp; opening the workspace's files; waiting for
+diagnostics. The session fixtures are made available to the tests by ``conftest.py``."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Any
+
+import pytest_lsp
+from lsprotocol import types
+from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
+
+HERE = Path(__file__).resolve().parent
+FANUC = HERE / "workspace_fanuc"
+GSK = HERE / "workspace_gsk"
+SERVER = [sys.executable, "-m", "cncmacro", "lsp"]
+
+
+async def start(client: LanguageClient, root: Path, locale: str, settings: dict[str, Any] | None = None) -> None:
+    """Initialise a session on ``root`` in ``locale`` with VS Code's capabilities; the
+    server's capabilities are kept as ``client.server_capabilities``."""
+    if settings is not None:
+        client.set_configuration(settings, section="cncMacro")
+    result = await client.initialize_session(
+        types.InitializeParams(
+            capabilities=client_capabilities("visual-studio-code"),
+            root_uri=root.as_uri(),
+            workspace_folders=[types.WorkspaceFolder(uri=root.as_uri(), name=root.name)],
+            locale=locale,
+        )
+    )
+    client.server_capabilities = result.capabilities  # type: ignore[attr-defined]
+
+
+def open_file(client: LanguageClient, path: Path, text: str | None = None, version: int = 1) -> str:
+    """Open ``path`` in the server (with its text on disk unless ``text`` is given)."""
+    uri = path.as_uri()
+    client.text_document_did_open(
+        types.DidOpenTextDocumentParams(
+            types.TextDocumentItem(
+                uri=uri, language_id="cncmacro", version=version, text=path.read_text("utf-8") if text is None else text
+            )
+        )
+    )
+    return uri
+
+
+def close_file(client: LanguageClient, uri: str) -> None:
+    client.text_document_did_close(types.DidCloseTextDocumentParams(types.TextDocumentIdentifier(uri)))
+
+
+def edit(client: LanguageClient, uri: str, version: int, line: int, start: int, end: int, text: str) -> None:
+    """Replace columns ``start``..``end`` of ``line`` by ``text`` (an incremental change)."""
+    client.text_document_did_change(
+        types.DidChangeTextDocumentParams(
+            types.VersionedTextDocumentIdentifier(uri=uri, version=version),
+            [
+                types.TextDocumentContentChangePartial(
+                    range=types.Range(types.Position(line, start), types.Position(line, end)), text=text
+                )
+            ],
+        )
+    )
+
+
+async def diagnostics_for(client: LanguageClient, uri: str, version: int) -> types.PublishDiagnosticsParams:
+    """Wait for the diagnostics of ``uri`` computed from ``version``; every publish on the way
+    must be for that document's current or an older, not yet superseded, version."""
+    while True:
+        params = await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+        if params.uri == uri and params.version == version:
+            return params
+
+
+async def hover_text(client: LanguageClient, uri: str, line: int, character: int) -> str:
+    result = await client.text_document_hover_async(
+        types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(line, character))
+    )
+    assert result is not None, f"no hover at {line}:{character}"
+    assert isinstance(result.contents, types.MarkupContent)
+    return result.contents.value
+
+
+def config(**kw: Any) -> ClientServerConfig:
+    return ClientServerConfig(server_command=SERVER, **kw)
+
+
+def session_fixture(root: Path, locale: str, settings: dict[str, Any] | None = None):  # type: ignore[no-untyped-def]
+    """A module-wide client for one workspace and locale."""
+
+    @pytest_lsp.fixture(config=config(), scope="module")
+    async def the_client(lsp_client: LanguageClient):  # type: ignore[no-untyped-def]
+        await start(lsp_client, root, locale, settings)
+        yield
+        await lsp_client.shutdown_session()
+
+    return the_client
+
+
+fanuc_en = session_fixture(FANUC, "en")
+fanuc_zh = session_fixture(FANUC, "zh-CN")
+gsk_en = session_fixture(GSK, "en")
+gsk_zh = session_fixture(GSK, "zh-CN")

@@ -1,0 +1,120 @@
+"""Document sync and diagnostics, end to end: incremental edits, versions, push and pull,
+progress on a huge file, severities from settings, and errors answered without dying."""
+
+from __future__ import annotations
+
+import pytest
+import pytest_lsp
+from lsprotocol import types
+from pygls.exceptions import JsonRpcException
+from pytest_lsp import LanguageClient
+
+from .lsp_session import FANUC, GSK, config, diagnostics_for, edit, open_file, start
+
+pytestmark = pytest.mark.asyncio(loop_scope="module")
+
+
+@pytest_lsp.fixture(config=config(), scope="module")
+async def client(lsp_client: LanguageClient):  # type: ignore[no-untyped-def]
+    await start(lsp_client, FANUC, "en", {"severity": {"duplicate-label": "off"}, "dialect": "gsk980tdi"})
+    yield
+    await lsp_client.shutdown_session()
+
+
+@pytest_lsp.fixture(config=config(), scope="module")
+async def client_zh(lsp_client: LanguageClient):  # type: ignore[no-untyped-def]
+    await start(lsp_client, GSK, "zh-CN", {"severity": {"syntax": "warning"}, "dialect": "fanuc"})
+    yield
+    await lsp_client.shutdown_session()
+
+
+async def test_open_publishes_syntax_errors_with_the_version(client: LanguageClient) -> None:
+    uri = open_file(client, FANUC / "broken_1.nc", "O0100\n#1=[2+3\nM30\n", version=7)
+    got = await diagnostics_for(client, uri, 7)
+    assert [(d.range.start.line, d.code, d.severity) for d in got.diagnostics] == [
+        (1, "syntax", types.DiagnosticSeverity.Error)
+    ]
+    assert "]" in got.diagnostics[0].message
+
+
+async def test_incremental_edits_fix_the_error_and_only_the_newest_version_counts(client: LanguageClient) -> None:
+    uri = open_file(client, FANUC / "broken_2.nc", "O0100\n#1=[2+3\nM30\n", version=1)
+    await diagnostics_for(client, uri, 1)
+    seen: list[int] = []
+    edit(client, uri, 2, 1, 7, 7, "]")  # fixed: #1=[2+3]
+    edit(client, uri, 3, 2, 0, 0, "#2=[")  # broken again on line 3
+    edit(client, uri, 4, 2, 4, 4, "1]")  # fixed again: #2=[1]M30 ... is not valid either
+    edit(client, uri, 5, 2, 0, 6, "M30")  # line 3 is M30 again
+    while True:
+        got = await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+        if got.uri == uri:
+            seen.append(got.version)
+            if got.version == 5:
+                break
+    assert seen == sorted(seen)  # never an older version after a newer one
+    assert list(got.diagnostics) == []
+    report = await client.text_document_diagnostic_async(
+        types.DocumentDiagnosticParams(types.TextDocumentIdentifier(uri))
+    )
+    assert isinstance(report, types.RelatedFullDocumentDiagnosticReport)
+    assert list(report.items) == [] and report.result_id == "5"
+    same = await client.text_document_diagnostic_async(
+        types.DocumentDiagnosticParams(types.TextDocumentIdentifier(uri), previous_result_id="5")
+    )
+    assert isinstance(same, types.RelatedUnchangedDocumentDiagnosticReport)
+
+
+async def test_pull_diagnostics_answer_the_current_text(client: LanguageClient) -> None:
+    uri = open_file(client, FANUC / "broken_3.nc", "O0100\nGOTO 20\nM30\n", version=1)
+    report = await client.text_document_diagnostic_async(
+        types.DocumentDiagnosticParams(types.TextDocumentIdentifier(uri))
+    )
+    assert [d.code for d in report.items] == ["undefined-label"]
+
+
+async def test_severity_setting_switches_a_code_off(client: LanguageClient) -> None:
+    text = "O0100\nN5 G00 X0\nN5 G00 X1\nGOTO 5\nM30\n"
+    uri = open_file(client, FANUC / "dup.nc", text, version=1)
+    got = await diagnostics_for(client, uri, 1)
+    assert "duplicate-label" not in [d.code for d in got.diagnostics]
+
+
+async def test_severity_setting_changes_a_code_in_chinese_session(client_zh: LanguageClient) -> None:
+    uri = open_file(client_zh, GSK / "broken.CNC", "O0100\n#1=[2+3\nM30\n", version=1)
+    got = await diagnostics_for(client_zh, uri, 1)
+    assert [(d.code, d.severity) for d in got.diagnostics] == [("syntax", types.DiagnosticSeverity.Warning)]
+
+
+async def test_dialect_setting_applies_where_the_workspace_names_none(client: LanguageClient) -> None:
+    uri = open_file(client, FANUC / "relations.nc", "O0100\nIF[#1>2]GOTO5\nN5 M30\n", version=1)
+    got = await diagnostics_for(client, uri, 1)
+    assert list(got.diagnostics) == []  # the setting says gsk980tdi, where '>' is a relation
+    uri = open_file(client, FANUC / "relations_fanuc.nc", "(cncmacro: dialect=fanuc)\nIF[#1>2]GOTO5\nN5 M30\n")
+    got = await diagnostics_for(client, uri, 1)
+    assert [d.code for d in got.diagnostics] == ["dialect-feature"]  # the file's comment wins
+
+
+async def test_gsk_dialect_from_the_workspace_wins_over_the_setting(client_zh: LanguageClient) -> None:
+    uri = open_file(client_zh, GSK / "MAIN.CNC")
+    got = await diagnostics_for(client_zh, uri, 1)
+    assert [d for d in got.diagnostics if d.severity == types.DiagnosticSeverity.Error] == []
+
+
+async def test_a_huge_file_reports_progress_on_its_first_analysis(client: LanguageClient) -> None:
+    lines = ["O0200 (CAM)"] + [f"G01 X{i % 100}.5 Y{i % 37}.25" for i in range(25_000)] + ["M30"]
+    uri = open_file(client, FANUC / "huge.nc", "\n".join(lines), version=1)
+    await diagnostics_for(client, uri, 1)
+    reports = [r for token, rs in client.progress_reports.items() if "huge.nc" in str(token) for r in rs]
+    kinds = [r.kind for r in reports]
+    assert kinds[0] == "begin" and kinds[-1] == "end"
+
+
+async def test_an_error_in_a_handler_is_an_error_response_and_the_server_keeps_serving(client: LanguageClient) -> None:
+    missing = (FANUC / "never_opened.nc").as_uri()
+    with pytest.raises(JsonRpcException, match="not open"):
+        await client.text_document_hover_async(
+            types.HoverParams(types.TextDocumentIdentifier(missing), types.Position(0, 0))
+        )
+    uri = open_file(client, FANUC / "after_error.nc", "O0100\n#1=[2\n", version=3)
+    got = await diagnostics_for(client, uri, 3)
+    assert [d.code for d in got.diagnostics] == ["syntax"]

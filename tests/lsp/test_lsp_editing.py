@@ -1,0 +1,141 @@
+"""Completion, signature help, code actions, inlay hints and the workspace index, end to end."""
+
+from __future__ import annotations
+
+import pytest
+from lsprotocol import types
+from pytest_lsp import LanguageClient
+
+from .lsp_session import FANUC, GSK, close_file, open_file
+
+pytestmark = pytest.mark.asyncio(loop_scope="module")
+
+
+async def _complete(client: LanguageClient, uri: str, line: int, ch: int) -> list[types.CompletionItem]:
+    result = await client.text_document_completion_async(
+        types.CompletionParams(types.TextDocumentIdentifier(uri), types.Position(line, ch))
+    )
+    assert isinstance(result, types.CompletionList)
+    return list(result.items)
+
+
+async def test_completion_after_hash_offers_system_variables_with_docs(
+    fanuc_en: LanguageClient, gsk_zh: LanguageClient
+) -> None:
+    uri = open_file(fanuc_en, FANUC / "c1.nc", "O0001\n#1=#50\n")
+    items = {i.label: i for i in await _complete(fanuc_en, uri, 1, 6)}
+    close_file(fanuc_en, uri)
+    x = items["#5001"]
+    assert "block end position" in x.documentation.value and x.detail == "read-only, mm"
+    assert x.text_edit is not None and x.text_edit.range.start.character == 3
+    uri = open_file(gsk_zh, GSK / "c1.CNC", "O0001\n#1=#\n")
+    items = {i.label: i for i in await _complete(gsk_zh, uri, 1, 4)}
+    close_file(gsk_zh, uri)
+    assert "程序段终点" in items["#5001"].documentation.value and items["#5001"].detail == "只读, mm"
+
+
+async def test_completion_after_goto_offers_labels_and_after_p_programs(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "c2.nc", "O0001\nN10 #1=1\nN20 #2=2\nGOTO\nG65 P\n")
+    labels = [i.label for i in await _complete(fanuc_en, uri, 3, 4)]
+    programs = {i.label: i.detail for i in await _complete(fanuc_en, uri, 4, 5)}
+    close_file(fanuc_en, uri)
+    assert labels == ["10", "20"]
+    assert programs["9100"] == "O9100 DRILL CYCLE" and "1" in programs
+
+
+async def test_completion_of_g65_arguments_shows_the_local_each_fills(gsk_en: LanguageClient) -> None:
+    uri = open_file(gsk_en, GSK / "c3.CNC", "O0001\nG65 P[CUT] \n")
+    items = {i.label: i for i in await _complete(gsk_en, uri, 1, 11)}
+    close_file(gsk_en, uri)
+    assert items["X"].detail == "fills #24" and items["U"].detail == "fills #21"
+    assert items["U"].preselect and items["W"].preselect and not items["X"].preselect  # CUT reads #21 and #23
+    assert "WHILE" in items and "SQRT" in items
+
+
+async def test_completion_of_keywords_and_functions(fanuc_zh: LanguageClient) -> None:
+    uri = open_file(fanuc_zh, FANUC / "c4.nc", "O0001\n#1=SQ\n")
+    items = {i.label: i for i in await _complete(fanuc_zh, uri, 1, 5)}
+    close_file(fanuc_zh, uri)
+    assert items["SQRT"].detail == "SQRT[a]" and "平方根" in str(items["SQRT"].documentation)
+    assert items["IF"].kind == types.CompletionItemKind.Keyword
+
+
+async def test_signature_help_on_g65_shows_what_the_macro_reads(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "MAIN.nc")
+    result = await fanuc_en.text_document_signature_help_async(
+        types.SignatureHelpParams(types.TextDocumentIdentifier(uri), types.Position(2, 18))  # on Z-2.
+    )
+    close_file(fanuc_en, uri)
+    assert result is not None
+    sig = result.signatures[0]
+    assert sig.label == "O9100(#18 (R), #24 (X), #26 (Z))"
+    assert result.active_parameter == 2
+
+
+async def test_code_actions_split_the_g65_block_and_clamp_l(fanuc_en: LanguageClient, gsk_zh: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "MAIN.nc")
+    actions = await fanuc_en.text_document_code_action_async(
+        types.CodeActionParams(
+            types.TextDocumentIdentifier(uri),
+            types.Range(types.Position(13, 0), types.Position(13, 0)),
+            types.CodeActionContext(diagnostics=[]),
+        )
+    )
+    close_file(fanuc_en, uri)
+    edits = {a.title: a.edit.changes[uri][0].new_text for a in actions}  # type: ignore[union-attr,index]
+    assert edits["Split: move the NC words to a block before the G65"] == "G00\nG65 P9100 X1. L20000"
+    assert edits["Clamp the repeat count to 9999"] == "L9999"
+    uri = open_file(gsk_zh, GSK / "ca.CNC", "O0001\nN5 G01 G65 P[CUT] U1. L0 (切削)\n")
+    actions = await gsk_zh.text_document_code_action_async(
+        types.CodeActionParams(
+            types.TextDocumentIdentifier(uri),
+            types.Range(types.Position(1, 0), types.Position(1, 5)),
+            types.CodeActionContext(diagnostics=[]),
+        )
+    )
+    close_file(gsk_zh, uri)
+    texts = sorted(a.edit.changes[uri][0].new_text for a in actions)  # type: ignore[union-attr,index]
+    assert texts == ["L1", "N5 G01\nG65 P[CUT] U1. L0 (切削)"]
+    assert any("拆分" in a.title for a in actions)
+
+
+async def test_inlay_hints_name_the_local_each_argument_fills(fanuc_en: LanguageClient, gsk_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "hints.nc", "O0001\nG65 P9100 A1 I2 J3 I4 X5\n")
+    hints = await fanuc_en.text_document_inlay_hint_async(
+        types.InlayHintParams(
+            types.TextDocumentIdentifier(uri), types.Range(types.Position(0, 0), types.Position(2, 0))
+        )
+    )
+    close_file(fanuc_en, uri)
+    assert [(h.position.character, h.label) for h in hints] == [
+        (12, "#1"),
+        (15, "#4"),
+        (18, "#5"),
+        (21, "#7"),
+        (24, "#24"),
+    ]
+    uri = open_file(gsk_en, GSK / "MAIN.CNC")
+    hints = await gsk_en.text_document_inlay_hint_async(
+        types.InlayHintParams(
+            types.TextDocumentIdentifier(uri), types.Range(types.Position(0, 0), types.Position(8, 0))
+        )
+    )
+    close_file(gsk_en, uri)
+    assert [(h.position.line, h.label) for h in hints] == [(2, "#21"), (2, "#23")]
+
+
+async def test_watched_file_changes_update_the_program_index(gsk_en: LanguageClient, tmp_path_factory) -> None:  # type: ignore[no-untyped-def]
+    new = GSK / "O0777.CNC"
+    try:
+        new.write_text("O0777 (NEW SUB)\nM99\n", "utf-8")
+        gsk_en.workspace_did_change_watched_files(
+            types.DidChangeWatchedFilesParams([types.FileEvent(new.as_uri(), types.FileChangeType.Created)])
+        )
+        found = await gsk_en.workspace_symbol_async(types.WorkspaceSymbolParams(query="new sub"))
+        assert [s.name for s in found] == ["O0777"]
+    finally:
+        new.unlink()
+    gsk_en.workspace_did_change_watched_files(
+        types.DidChangeWatchedFilesParams([types.FileEvent(new.as_uri(), types.FileChangeType.Deleted)])
+    )
+    assert await gsk_en.workspace_symbol_async(types.WorkspaceSymbolParams(query="new sub")) == []

@@ -1,0 +1,122 @@
+"""Hover, end to end: system variables, locals, commons, G/M codes, functions, N labels and O
+programs, in both dialects and both locales."""
+
+from __future__ import annotations
+
+import pytest
+from pytest_lsp import LanguageClient
+
+from .lsp_session import FANUC, GSK, close_file, hover_text, open_file
+
+pytestmark = pytest.mark.asyncio(loop_scope="module")
+
+
+async def test_hover_5001_is_the_x_block_end_position_in_english(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "MAIN.nc")
+    text = await hover_text(fanuc_en, uri, 12, 4)  # #3=#5001+...
+    close_file(fanuc_en, uri)
+    assert "**#5001**" in text
+    assert "X axis block end position, work coordinates, without tool offset" in text
+    assert "readable while the axis moves" in text
+    assert "unit: mm" in text and "access: read-only" in text and "axis: X" in text
+
+
+async def test_hover_4120_is_the_modal_t_code(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "MAIN.nc")
+    text = await hover_text(fanuc_en, uri, 12, 10)
+    close_file(fanuc_en, uri)
+    assert "**#4120**" in text and "T code" in text
+
+
+async def test_hover_5001_in_chinese(fanuc_zh: LanguageClient) -> None:
+    uri = open_file(fanuc_zh, FANUC / "MAIN.nc")
+    text = await hover_text(fanuc_zh, uri, 12, 4)
+    close_file(fanuc_zh, uri)
+    assert "系统变量" in text
+    assert "程序段终点位置" in text and "不含刀具补偿" in text
+    assert "只读" in text and "轴: X" in text
+
+
+async def test_hover_local_shows_the_argument_letters(fanuc_en: LanguageClient, fanuc_zh: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "O9100.nc")
+    text = await hover_text(fanuc_en, uri, 3, 6)  # X#24
+    close_file(fanuc_en, uri)
+    assert "**#24** — Local variable" in text
+    assert "argument specification I: **X**" in text
+    assert "argument specification II: **K7**" in text
+    uri = open_file(fanuc_zh, FANUC / "O9100.nc")
+    text = await hover_text(fanuc_zh, uri, 3, 12)  # Z#18
+    close_file(fanuc_zh, uri)
+    assert "局部变量" in text and "自变量指定I: **R**" in text and "自变量指定II: **K5**" in text
+
+
+async def test_hover_common_lists_where_it_is_written(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "MAIN.nc")
+    text = await hover_text(fanuc_en, uri, 4, 5)  # IF[#101 LT #100]
+    assert "**#101** — Common variable" in text
+    assert "MAIN.nc:4" in text
+    text = await hover_text(fanuc_en, uri, 1, 1)  # #100=5
+    close_file(fanuc_en, uri)
+    assert "MAIN.nc:2" in text and "O9100.nc:6" in text  # written in both files
+
+
+async def test_hover_g_and_m_codes_come_from_the_dialect(fanuc_en: LanguageClient, gsk_zh: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "MAIN.nc")
+    text = await hover_text(fanuc_en, uri, 11, 1)  # M98
+    close_file(fanuc_en, uri)
+    assert text.startswith("**M98**") and "FANUC" in text
+    uri = open_file(gsk_zh, GSK / "CUT.CNC")
+    text = await hover_text(gsk_zh, uri, 1, 1)  # G01
+    close_file(gsk_zh, uri)
+    assert text.startswith("**G01**") and "直线插补" in text and "GSK980TDi" in text
+
+
+async def test_hover_function_shows_its_signature(fanuc_en: LanguageClient, fanuc_zh: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "MAIN.nc")
+    text = await hover_text(fanuc_en, uri, 12, 16)  # SIN[30]
+    close_file(fanuc_en, uri)
+    assert "SIN[a]" in text and "Sine" in text
+    uri = open_file(fanuc_zh, FANUC / "MAIN.nc")
+    text = await hover_text(fanuc_zh, uri, 4, 0)  # IF
+    close_file(fanuc_zh, uri)
+    assert "IF" in text and "条件" in text
+
+
+async def test_hover_label_lists_the_jumps_to_it(fanuc_en: LanguageClient, gsk_zh: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "MAIN.nc")
+    text = await hover_text(fanuc_en, uri, 3, 1)  # N10
+    close_file(fanuc_en, uri)
+    assert "**N10**" in text and "jumps to it" in text and "line 5 (GOTO)" in text
+    uri = open_file(gsk_zh, GSK / "MAIN.CNC")
+    text = await hover_text(gsk_zh, uri, 4, 18)  # GOTO20 -> N20
+    close_file(gsk_zh, uri)
+    assert "**N20**" in text and "跳转到此处" in text and "行 5" in text
+
+
+async def test_hover_program_shows_title_and_file(fanuc_en: LanguageClient, gsk_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "MAIN.nc")
+    text = await hover_text(fanuc_en, uri, 2, 6)  # P9100
+    close_file(fanuc_en, uri)
+    assert "**O9100** (DRILL CYCLE)" in text and "O9100.nc" in text
+    uri = open_file(gsk_en, GSK / "MAIN.CNC")
+    text = await hover_text(gsk_en, uri, 2, 6)  # P[CUT]
+    assert "CUT" in text and "CUT.CNC" in text
+    text = await hover_text(gsk_en, uri, 6, 4)  # #5001 on the lathe
+    close_file(gsk_en, uri)
+    assert "**#5001**" in text and "System variable" in text and "GSK980TDi" in text
+
+
+async def test_hover_g65_argument_names_the_local_it_fills(gsk_en: LanguageClient) -> None:
+    uri = open_file(gsk_en, GSK / "MAIN.CNC")
+    text = await hover_text(gsk_en, uri, 2, 12)  # U1.
+    close_file(gsk_en, uri)
+    assert "**U** → **#21**" in text
+
+
+async def test_hover_follows_the_dialect_comment_before_the_workspace(fanuc_en: LanguageClient) -> None:
+    text = "(cncmacro: dialect=gsk980tdi)\nO0005\n#1=#5001\nG01 U1.\n"
+    uri = open_file(fanuc_en, FANUC / "lathe.nc", text)
+    variable = await hover_text(fanuc_en, uri, 2, 4)
+    code = await hover_text(fanuc_en, uri, 3, 1)
+    close_file(fanuc_en, uri)
+    assert "GSK980TDi" in variable and "GSK980TDi" in code

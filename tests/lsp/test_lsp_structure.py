@@ -1,0 +1,111 @@
+"""Document and workspace symbols, folding ranges and semantic tokens, end to end."""
+
+from __future__ import annotations
+
+import pytest
+from lsprotocol import types
+from pytest_lsp import LanguageClient
+
+from .lsp_session import FANUC, GSK, close_file, open_file
+
+pytestmark = pytest.mark.asyncio(loop_scope="module")
+
+
+def _tree(symbols: list[types.DocumentSymbol]) -> list[object]:
+    return [(s.name, s.range.start.line, _tree(list(s.children or []))) for s in symbols]
+
+
+async def test_document_symbols_nest_labels_inside_loops(fanuc_en: LanguageClient) -> None:
+    text = "O0001 (MAIN)\nN1 #1=0\nWHILE[#1 LT 3] DO1\nN2 #1=#1+1\nWHILE[#2 LT 2] DO2\nN3 #2=#2+1\nEND2\nEND1\nM30\n"
+    text += "O0002 (SUB)\nN5 M99\n"
+    uri = open_file(fanuc_en, FANUC / "symbols.nc", text)
+    result = await fanuc_en.text_document_document_symbol_async(
+        types.DocumentSymbolParams(types.TextDocumentIdentifier(uri))
+    )
+    close_file(fanuc_en, uri)
+    assert _tree(result) == [
+        ("O0001", 0, [("N1", 1, []), ("DO1 … END1", 2, [("N2", 3, []), ("DO2 … END2", 4, [("N3", 5, [])])])]),
+        ("O0002", 9, [("N5", 10, [])]),
+    ]
+    assert result[0].detail == "MAIN"
+
+
+async def test_workspace_symbols_are_the_programs(fanuc_en: LanguageClient, gsk_zh: LanguageClient) -> None:
+    found = await fanuc_en.workspace_symbol_async(types.WorkspaceSymbolParams(query="drill"))
+    assert [(s.name, s.location.uri.rsplit("/", 1)[-1]) for s in found] == [("O9100", "O9100.nc")]
+    every = await gsk_zh.workspace_symbol_async(types.WorkspaceSymbolParams(query=""))
+    assert sorted(s.name for s in every) == ["CUT", "O0002"]
+
+
+async def test_folding_covers_loops_programs_and_comment_blocks(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "O9100.nc")
+    ranges = await fanuc_en.text_document_folding_range_async(
+        types.FoldingRangeParams(types.TextDocumentIdentifier(uri))
+    )
+    close_file(fanuc_en, uri)
+    got = sorted((r.start_line, r.end_line, r.kind) for r in ranges)
+    assert got == [(0, 6, None), (1, 2, types.FoldingRangeKind.Comment)]
+    uri = open_file(fanuc_en, FANUC / "MAIN.nc")
+    ranges = await fanuc_en.text_document_folding_range_async(
+        types.FoldingRangeParams(types.TextDocumentIdentifier(uri))
+    )
+    close_file(fanuc_en, uri)
+    assert sorted((r.start_line, r.end_line) for r in ranges) == [(0, 14), (5, 10), (6, 8)]
+
+
+def _decode(data: list[int], legend: types.SemanticTokensLegend, lines: list[str]) -> list[tuple[str, str, list[str]]]:
+    out = []
+    line = col = 0
+    for k in range(0, len(data), 5):
+        dl, dc, length, typ, mods = data[k : k + 5]
+        line += dl
+        col = dc if dl else col + dc
+        names = [m for i, m in enumerate(legend.token_modifiers) if mods & (1 << i)]
+        out.append((lines[line][col : col + length], legend.token_types[typ], names))
+    return out
+
+
+async def test_semantic_tokens_classify_variables_keywords_and_comments(fanuc_en: LanguageClient) -> None:
+    text = "O0001 (MAIN)\nN10 #1=#100+#500+#5001\nIF[#1 GT 2] GOTO10\nG65 P9100 X1.\n"
+    uri = open_file(fanuc_en, FANUC / "tokens.nc", text)
+    caps = await _legend(fanuc_en)
+    full = await fanuc_en.text_document_semantic_tokens_full_async(
+        types.SemanticTokensParams(types.TextDocumentIdentifier(uri))
+    )
+    part = await fanuc_en.text_document_semantic_tokens_range_async(
+        types.SemanticTokensRangeParams(
+            types.TextDocumentIdentifier(uri), types.Range(types.Position(2, 0), types.Position(2, 30))
+        )
+    )
+    close_file(fanuc_en, uri)
+    lines = text.split("\n")
+    tokens = _decode(list(full.data), caps, lines)
+    assert ("O0001", "namespace", []) in tokens and ("(MAIN)", "comment", []) in tokens
+    assert ("N10", "label", []) in tokens
+    assert ("#1", "variable", ["local"]) in tokens
+    assert ("#100", "variable", ["common"]) in tokens
+    assert ("#500", "variable", ["persistent"]) in tokens
+    assert ("#5001", "variable", ["system", "readonly"]) in tokens
+    assert ("IF", "keyword", []) in tokens and ("GT", "operator", []) in tokens and ("GOTO", "keyword", []) in tokens
+    assert ("G", "property", []) in tokens and ("65", "number", []) in tokens
+    ranged = _decode(list(part.data), caps, lines)
+    assert [t[0] for t in ranged] == ["IF", "#1", "GT", "2", "GOTO", "10"]
+
+
+async def _legend(client: LanguageClient) -> types.SemanticTokensLegend:
+    caps: types.ServerCapabilities = client.server_capabilities  # type: ignore[attr-defined]
+    provider = caps.semantic_tokens_provider
+    assert isinstance(provider, types.SemanticTokensOptions | types.SemanticTokensRegistrationOptions)
+    return provider.legend
+
+
+async def test_semantic_tokens_on_gsk_mark_the_c_relation(gsk_en: LanguageClient) -> None:
+    uri = open_file(gsk_en, GSK / "MAIN.CNC")
+    full = await gsk_en.text_document_semantic_tokens_full_async(
+        types.SemanticTokensParams(types.TextDocumentIdentifier(uri))
+    )
+    close_file(gsk_en, uri)
+    lines = (GSK / "MAIN.CNC").read_text("utf-8").split("\n")
+    tokens = _decode(list(full.data), await _legend(gsk_en), lines)
+    assert ("(螺纹加工)", "comment", []) in tokens
+    assert ("#100", "variable", ["common"]) in tokens and ("GOTO", "keyword", []) in tokens
