@@ -1,5 +1,6 @@
 """Analysis speed on the 100k-line CAM program of ``camgen.py``: a full check, then
-re-analysis after a one-line edit near the end and near the start.
+re-analysis after a one-line edit near the end and near the start, and after Enter (a line
+added) near the end.
 
 The full check is what ``cncmacro check`` does for the file (parse, syntax and static checks,
 the analysis run, not-executed ranges); the edits are typed into one line, as an editor
@@ -49,6 +50,18 @@ def edit_at(ws: WorkspaceAnalysis, line: int, version: int) -> float:
     return time.perf_counter() - t0
 
 
+def enter_at(ws: WorkspaceAnalysis, line: int, version: int) -> float:
+    """Press Enter at the end of ``line`` (a new empty line after it)."""
+    doc = ws.document(PATH)
+    assert doc is not None
+    col = len(doc.lines[line])
+    t0 = time.perf_counter()
+    ws.change(PATH, line, col, line, col, "\n", version)
+    result = ws.analyze(PATH)
+    assert result is not None and result.version == version
+    return time.perf_counter() - t0
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--lines", type=int, default=100_000)
@@ -63,6 +76,8 @@ def main() -> None:
     n = len(text.splitlines())
     near_end = min(edit_at(ws, n - 200 - k, 10 + k) for k in range(3))
     print(f"one-line edit near the end: {near_end * 1000:.0f} ms (budget 50 ms)")
+    enter = min(enter_at(ws, n - 300 - k, 30 + k) for k in range(3))
+    print(f"Enter near the end: {enter * 1000:.0f} ms")
     near_start = min(edit_at(ws, 10 + k, 20 + k) for k in range(3))
     print(f"one-line edit near the start: {near_start * 1000:.0f} ms")
 

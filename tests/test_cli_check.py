@@ -126,3 +126,18 @@ def test_locale_and_sarif(tmp_path):
     sarif = json.loads(run("check", "--format", "sarif", str(f)).stdout)
     [result] = sarif["runs"][0]["results"]
     assert result["ruleId"] == "division-by-zero"
+
+
+def test_each_file_is_checked_with_its_nearest_machine_file(tmp_path):
+    for name, calls in (("mill", "M60 = 9020"), ("lathe", "M31 = 9020")):
+        folder = tmp_path / name
+        folder.mkdir()
+        (folder / ".cncmacro.toml").write_text(f"[variables]\n100 = 4\n[calls]\n{calls}\n", encoding="utf-8")
+        code = calls.split()[0]
+        (folder / "MAIN.nc").write_text(f"O0001\n{code}\n#1=1/#100\nM30\n", encoding="utf-8")
+        (folder / "O9020.nc").write_text("O9020\n#2=5/[#100-4]\nM99\n", encoding="utf-8")
+    r = run("check", "--format", "json", str(tmp_path / "mill"), str(tmp_path / "lathe"))
+    found = sorted((Path(d["file"]).parent.name, Path(d["file"]).name, d["line"], d["code"])
+                   for d in json.loads(r.stdout))  # fmt: skip
+    assert found == [("lathe", "O9020.nc", 2, "division-by-zero"), ("mill", "O9020.nc", 2, "division-by-zero")]
+    assert r.returncode == 1

@@ -248,12 +248,6 @@ def test_pallet_change_from_pallet_two() -> None:
     assert var(r, 521) == 1 and var(r, 522) == 3
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="cncmacro check reads one machine file for all its paths (none above tests/corpus, so the "
-    "folders' [calls] and [variables] are not used), and runs O9581, whose only call is reached every "
-    "10th part, on its own with vacant arguments: macro-alarm warnings on argument checks",
-)
 def test_check_finds_no_error_or_warning_in_the_corpus_and_examples() -> None:
     out, err = io.StringIO(), io.StringIO()
     status = check_paths([str(CORPUS), str(ROOT / "examples")], out, err, "json")

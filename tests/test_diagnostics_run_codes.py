@@ -159,3 +159,29 @@ def test_messages_in_chinese(tmp_path):
 def test_static_finding_on_the_same_line_is_not_repeated_by_the_run(tmp_path):
     diags = analyse(tmp_path, {"O0001.nc": "O0001\n#2=5/0\nM30\n"})
     assert len([d for d in diags if d.line == 1 and d.severity == "error"]) == 1
+
+
+def test_5_calls_a_called_program_no_caller_reaches_is_not_run_with_vacant_arguments(tmp_path):
+    macro = "O9001\nIF[#20 EQ #0] THEN #3000=1(T MISSING)\n#2=1/#20\nM99\n"
+    files = {"MAIN.nc": "O0001\n#1=1\nIF[#1 EQ 1] GOTO 10\nG65 P9001 T2.\nN10 M30\n", "O9001.nc": macro}
+    diags = analyse(tmp_path, files)
+    assert found(diags, "macro-alarm") == [] and found(diags, "division-by-zero") == []
+    alone = analyse(tmp_path, {"O9001.nc": macro})  # nothing calls it: it runs on its own
+    assert found(alone, "macro-alarm") == [("O9001.nc", 2, "warning")]
+
+
+def test_5_calls_a_local_the_macro_assigned_itself_is_not_a_vacant_argument(tmp_path):
+    files = {"MAIN.nc": "O0001\nG65 P9001 A1.\nM30\n",
+             "O9001.nc": "O9001\n#33=#[3+3*#1]\nG00 Z[#33+2.]\n#100=#32\nM99\n"}  # fmt: skip
+    assert found(analyse(tmp_path, files), "vacant-argument") == [("O9001.nc", 4, "information")]
+
+
+def test_4_control_flow_a_finding_in_a_loop_names_the_iteration_of_the_innermost_loop(tmp_path):
+    text = ("O0001\n#1=0\nWHILE[#1 LT 2] DO1\n#2=5\nWHILE[#2 GE -1] DO2\n#3=10/[#2+#1*10]\n#2=#2-1\nEND2\n"
+            "#1=#1+1\nEND1\nM30\n")  # fmt: skip
+    [d] = [d for d in analyse(tmp_path, {"O0001.nc": text}) if d.code == "division-by-zero"]
+    assert d.line + 1 == 6 and "in iteration 6 of the WHILE loop at line 5" in d.message
+    called = {"MAIN.nc": "O0001\n#1=0\nWHILE[#1 LT 9] DO1\nG65 P9001 A#1\n#1=#1+1\nEND1\nM30\n",
+              "O9001.nc": "O9001\n#2=1/[#1-3]\nM99\n"}  # fmt: skip
+    [d] = [d for d in analyse(tmp_path, called) if d.code == "division-by-zero"]
+    assert "O0001:4 (G65)" in d.message and "iteration" not in d.message  # no loop runs in the macro itself

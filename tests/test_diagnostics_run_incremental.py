@@ -33,7 +33,7 @@ POOL = [
 ]  # fmt: skip
 
 edit = st.tuples(
-    st.sampled_from(["replace", "insert", "delete", "type"]),
+    st.sampled_from(["replace", "insert", "delete", "type", "enter", "join", "paste"]),
     st.sampled_from(["MAIN.nc", "O9001.nc"]),
     st.integers(0, 20),
     st.sampled_from(POOL),
@@ -59,7 +59,7 @@ def fresh(tmp: Path, texts: dict[str, str]) -> WorkspaceAnalysis:
     return ws
 
 
-@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(edits=st.lists(edit, min_size=1, max_size=6), analyse_between=st.booleans())
 def test_incremental_analysis_equals_analysis_from_scratch(tmp_path, monkeypatch, edits, analyse_between):
     monkeypatch.setattr(run_checks, "CHUNK", 7)  # many checkpoints in small programs
@@ -82,6 +82,13 @@ def test_incremental_analysis_equals_analysis_from_scratch(tmp_path, monkeypatch
         elif kind == "type":
             col = len(doc.lines[at]) // 2
             ws.change(path, at, col, at, col, "1", version)
+        elif kind == "enter":  # at the end of the line, or splitting it
+            col = len(doc.lines[at]) if len(line) % 2 else len(doc.lines[at]) // 2
+            ws.change(path, at, col, at, col, "\n", version)
+        elif kind == "join" and at + 1 < n:
+            ws.change(path, at, len(doc.lines[at]), at + 1, 0, "", version)
+        elif kind == "paste":  # two lines over the end of one and the start of the next
+            ws.change(path, at, 0, min(at + 1, n - 1), 0, line + "\n#8=8\n", version)
         if analyse_between:
             snapshot(ws, main)
     got = snapshot(ws, main)
@@ -112,3 +119,25 @@ def test_values_written_on_a_line_are_kept_for_the_editor(tmp_path):
     result = ws.analyze(str(tmp_path / "MAIN.nc"))
     assert result is not None
     assert result.values[str(tmp_path / "MAIN.nc")] == {1: [(1, 2.0)], 2: [(3, 8.0)]}
+
+
+LONG = ["O0001", "#1=0", *[f"G01 X{k}. Y1. F100." for k in range(60)], "WHILE[#1 LT 30] DO1", "#1=#1+1",
+        "G01 X#1", "END1", *[f"#{100 + k}=#1+{k}" for k in range(20)], "M30"]  # fmt: skip
+
+
+def test_4_control_flow_enter_late_in_a_main_program_resumes_the_run(tmp_path, monkeypatch):
+    """A line added after the loop, which runs late, keeps the run before it: the run is not
+    started again, and the result equals an analysis from scratch."""
+    monkeypatch.setattr(run_checks, "CHUNK", 10)
+    ws = fresh(tmp_path, {"MAIN.nc": "\n".join(LONG)})
+    main = str(tmp_path / "MAIN.nc")
+    snapshot(ws, main)
+    restarts = []
+    original = run_checks.EntryRun.restart
+    monkeypatch.setattr(run_checks.EntryRun, "restart", lambda self: (restarts.append(1), original(self))[1])
+    at = len(LONG) - 5
+    ws.change(main, at, len(LONG[at]), at, len(LONG[at]), "\n#150=1/[#1-30]", 1)  # Enter, then a new line
+    got = snapshot(ws, main)
+    assert restarts == []
+    assert ("MAIN.nc", at + 1, "division-by-zero") in [(d[0], d[1], d[6]) for d in got[0]]
+    assert got == snapshot(fresh(tmp_path, {"MAIN.nc": ws.document(main).text}), main)  # type: ignore[union-attr]

@@ -11,7 +11,9 @@ only the part of the run that can differ is run again (see ``workspace.py`` for 
 ``run_diagnostics`` turns the state of a finished run into diagnostics: the alarm it stopped
 with (mapped by ``alarm_codes``), the block budget running out, clamped repeat counts and
 vacant argument reads, each at the block where it happened, in that block's file, naming the
-call chain and the block count in the message and the call sites as ``related`` places.
+call chain, the block count and, inside a loop, which pass of the innermost loop it was
+(counted by the analysis-only ``on_loop_pass`` hook, kept with each checkpoint) in the message
+and the call sites as ``related`` places.
 """
 
 from __future__ import annotations
@@ -56,6 +58,9 @@ class RunState:
     first: dict[str, dict[int, int]] = field(default_factory=dict)  # file -> line -> first step
     order: list[tuple[int, str, int]] = field(default_factory=list)  # (step, file, line), by step
     file_first: dict[str, int] = field(default_factory=dict)  # file -> the step it first ran at
+    # file -> (lines, steps): each line that first ran further into the file than any before it,
+    # and when; both increase, so the first step at or after a line is one bisection away
+    reach: dict[str, tuple[list[int], list[int]]] = field(default_factory=dict)
     vacant: dict[tuple[str, int, int], VacantRead] = field(default_factory=dict)
     written: dict[str, dict[int, tuple[int, int, Value]]] = field(default_factory=dict)  # line -> (stamp, #n, v)
 
@@ -78,7 +83,8 @@ class EntryRun:
         self.max_blocks = max(1, max_blocks)
         self.machine: Machine
         self.checkpoints: list[Snapshot] = []
-        self.state = RunState()
+        self.passes: dict[tuple[int, int], int] = {}  # (level, DO line) -> the pass of the loop running there
+        self.pass_marks: list[dict[tuple[int, int], int]] = []  # ``passes`` at each checkpoint
         self.stamp = 0
         self.restart()
 
@@ -91,10 +97,13 @@ class EntryRun:
         m.on_first_run = self._first_run
         m.on_vacant_argument = self._vacant
         m.on_write = self._write
+        m.on_loop_pass = self._loop_pass
         m.start(self.entry)
         self.machine = m
         self.state = RunState()
         self.checkpoints = [m.snapshot()]
+        self.passes = {}
+        self.pass_marks = [{}]
         self.stamp = 0
 
     @property
@@ -119,6 +128,7 @@ class EntryRun:
             if status == PAUSED:
                 m.resume()  # M00, #3006 and the end of a chunk: a simulation goes on
                 self.checkpoints.append(m.snapshot())
+                self.pass_marks.append(dict(self.passes))
         return True
 
     def rewind(self, step: int, avoid_file: str | None = None) -> None:
@@ -138,6 +148,8 @@ class EntryRun:
             self.restart()
             return
         del self.checkpoints[keep + 1 :]
+        del self.pass_marks[keep + 1 :]
+        self.passes = dict(self.pass_marks[keep])
         m = self.machine
         m.restore(snap)
         at = snap.blocks
@@ -157,6 +169,13 @@ class EntryRun:
         del st.order[cut:]
         for path in [p for p, s in st.file_first.items() if s >= at]:
             del st.file_first[path]
+        for path, (lines, steps) in list(st.reach.items()):
+            k = bisect_left(steps, at)
+            if k == 0:
+                del st.reach[path]
+            else:
+                del lines[k:]
+                del steps[k:]
         vacant = self.state.vacant
         for key in [k for k, v in vacant.items() if v.stamp >= at]:
             del vacant[key]
@@ -189,17 +208,35 @@ class EntryRun:
         if line not in lines:
             lines[line] = step
             st.order.append((step, file, line))
+            reach = st.reach.get(file)
+            if reach is None:
+                st.reach[file] = ([line], [step])
+            elif line > reach[0][-1]:
+                reach[0].append(line)
+                reach[1].append(step)
 
     def _vacant(self, number: int, file: str, line: int, chain: tuple[CallSite, ...]) -> None:
         key = (file, line, number)
         if key not in self.state.vacant:
             self.state.vacant[key] = VacantRead(self.stamp, number, file, line, chain)
 
+    def _loop_pass(self, level: int, do_line: int, again: bool) -> None:
+        key = (level, do_line)
+        self.passes[key] = self.passes.get(key, 0) + 1 if again else 1
+
     def _write(self, file: str, line: int, number: int, value: Value) -> None:
         lines = self.state.written.get(file)
         if lines is None:
             lines = self.state.written[file] = {}
         lines[line] = (self.stamp, number, value)
+
+    def first_reaching(self, path: str, line: int) -> int | None:
+        """The first step at which ``line`` or any later line of ``path`` ran."""
+        reach = self.state.reach.get(path)
+        if reach is None:
+            return None
+        k = bisect_left(reach[0], line)
+        return reach[1][k] if k < len(reach[1]) else None
 
     def first_step(self, path: str, lines: list[int] | None = None) -> int | None:
         """The first step at which any of ``lines`` (or any line) of ``path`` ran."""
@@ -230,6 +267,13 @@ def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale:
             en = f"{a.message} (alarm {a.number})"
             zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{a.message}"
         in_loop = bool(m.frames and m.frames[-1].loops)
+        if in_loop:
+            do_line = m.frames[-1].loops[-1]
+            k = run.passes.get((len(m.frames) - 1, do_line))
+            if k is not None:
+                kind = "WHILE" if "WHILE" in line_text(a.file, do_line).upper() else "DO"
+                en += f", in iteration {k} of the {kind} loop at line {do_line + 1}"
+                zh += f"，第 {do_line + 1} 行 {kind} 循环的第 {k} 次迭代"
         out.append(_diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale))
     elif m.status == LIMIT and m.frames:
         f = m.frames[-1]

@@ -5,7 +5,8 @@ statements, the words, the variables; see ``statement_checks``, ``call_checks`` 
 ``variable_checks``), then what connects the lines (``loop_checks``, and ``label_checks`` with the
 program lookups of ``call_targets``). The per-line part is a pure function of the block, the
 dialect, the machine settings and the locale, so an incremental analysis may cache it per block
-and call ``block_diagnostics`` for changed lines only. A plain CAM line (``Block.plain``) is
+and call ``block_diagnostics`` for changed lines only (``static_lines`` does), then
+``cross_line_diagnostics``. A plain CAM line (``Block.plain``) is
 looked at only when its text holds a call or return code; its words are never built otherwise.
 Syntax errors are ``syntax_check``'s: a block that does not parse is not checked here.
 """
@@ -60,10 +61,10 @@ def block_diagnostics(
 ) -> list[Diagnostic]:
     """The diagnostics that ``block`` on ``line`` earns by itself (no cross-line checks)."""
     facts = line_facts(block, line_context(dialect, settings, locale))
-    return _findings(facts, line, file) if facts is not None else []
+    return findings_of(facts, line, file) if facts is not None else []
 
 
-def _findings(facts: LineFacts, line: int, file: str) -> list[Diagnostic]:
+def findings_of(facts: LineFacts, line: int, file: str) -> list[Diagnostic]:
     return [
         Diagnostic(file, line, f.start, line, max(f.end, f.start + 1), f.severity, f.code, f.message)
         for f in facts.findings
@@ -93,11 +94,25 @@ def static_diagnostics(
         if facts is None:
             continue
         if facts.findings:
-            out.extend(_findings(facts, line, file))
+            out.extend(findings_of(facts, line, file))
         if facts.jumps or facts.calls or facts.returns:
             collected.append((line, facts))
-    out.extend(loop_diagnostics(program, file, locale))
+    out.extend(cross_line_diagnostics(program, file, dialect, library, locale, collected))
+    out.sort(key=Diagnostic.sort_key)
+    return out
+
+
+def cross_line_diagnostics(
+    program: Program,
+    file: str,
+    dialect: Dialect,
+    library: ProgramLibrary | None,
+    locale: str,
+    collected: list[tuple[int, LineFacts]],
+) -> list[Diagnostic]:
+    """What connects the lines: loops, and the labels and call targets of ``collected`` (the
+    lines with jumps, calls or returns, in line order, with their facts)."""
+    out = loop_diagnostics(program, file, locale)
     finder = ProgramFinder(program, file, dialect, library)
     out.extend(LabelChecker(program, file, finder, locale).run(collected))
-    out.sort(key=Diagnostic.sort_key)
     return out

@@ -17,19 +17,24 @@ line left the last time a run executed it; None is vacant).
 Which programs run: every O program of the open files that no workspace file calls with a
 literal target (G65/G66/M98/call codes) runs on its own, with vacant arguments, ``M99`` at
 level 0 ending it; a called program is analysed through its callers, with their arguments,
-and its findings appear in its own file. A called program that no run entered is then run on
-its own too, so that its findings are not lost. The dialect of a run is its entry file's:
+and its findings appear in its own file. A called program that no caller's run entered gets
+the static checks only: run on its own, its argument checks (``IF[#20 EQ #0] THEN #3000=..``)
+and divisions by arguments would report what no real call does. The dialect of a run is its entry file's:
 a ``(cncmacro: dialect=..)`` comment in the first lines, then the machine file's
 ``dialect``, then ``dialect`` given here, then ``fanuc``.
 
-Incremental: parsing is per line (``ParsedDocument``). Each run keeps checkpoints and the
-step at which each line first ran. After an edit that keeps the number of lines and touches
-no label, O header or loop marker, a run resumes from its last checkpoint before the first
-execution of a changed line (or of the nearest line before the change, whose compiled form
-knows which line follows it); a run that never executed them is kept whole. An edit that
-adds or removes lines or changes that structure resumes each run from before the first
-time it entered the edited file. A changed O header, a dialect comment or a file changed on
-disk runs everything again.
+Incremental: parsing is per line (``ParsedDocument``); the per-line static checks are kept
+per line (``StaticLines``), so an edit checks only its lines plus the cross-line part. Each
+run keeps checkpoints and the step at which each line first ran. After an edit that keeps
+the number of lines and touches no label, O header or loop marker, a run resumes from its
+last checkpoint before the first execution of a changed line (or of the nearest line before
+the change, whose compiled form knows which line follows it); a run that never executed them
+is kept whole. An edit that adds or removes lines (Enter) resumes a run from its last
+checkpoint before it first reached the line before the edit or any later line of the file:
+nothing it keeps refers to a moved line, and the file is compiled afresh as it runs. An edit
+that changes labels, loops or '%' resumes each run from before the first time it entered the
+edited file. A changed O header, a dialect comment or a file changed on disk runs everything
+again.
 """
 
 from __future__ import annotations
@@ -43,6 +48,7 @@ from ..dialects import Dialect, get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
 from ..library.machine_file import MachineSettings
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
+from ..machine.machine import LIMIT
 from ..syntax.document import ParsedDocument
 from ..syntax.nodes import Block
 from ..syntax.program import ProgramUnit
@@ -51,7 +57,7 @@ from .diagnostics import UNNECESSARY, Diagnostic
 from .locale import pick
 from .run_checks import EntryRun, run_diagnostics
 from .severity import apply_severities, check_overrides
-from .syntax_check import syntax_diagnostics
+from .static_lines import StaticLines
 
 Value = float | None
 _DIGITS = re.compile(r"^[Oo]?(\d{1,8})$")
@@ -75,7 +81,8 @@ class AnalysisResult:
 class _Edit:
     start: int
     count: int  # lines of the new text
-    structural: bool
+    structural: bool  # a label, O header, '%' or loop marker was changed, added or removed
+    shifted: bool  # lines were added or removed: the lines after the edit moved
 
 
 @dataclass(slots=True)
@@ -87,6 +94,7 @@ class _Open:
     loaded: LoadedFile
     version: int | None
     own: list[Diagnostic] | None = None  # syntax + static, until the next change
+    static: StaticLines | None = None  # the per-line part of ``own``, kept across edits
     targets: tuple[set[int], set[str]] | None = None  # literal call targets
     edits: list[_Edit] = field(default_factory=list)
 
@@ -142,6 +150,8 @@ class WorkspaceAnalysis:
         new = doc.blocks[sl : el + 1 + delta]
         d.version = version
         d.own = None
+        if d.static is not None:
+            d.static.replace(doc.blocks, sl, el + 1 - sl, el + 1 - sl + delta)
         both = old + new
         if any(b.program is not None for b in both) or (
             sl < HEADER_LINES and dialect_from_text(doc.lines) != d.loaded.dialect
@@ -150,7 +160,7 @@ class WorkspaceAnalysis:
             self.stale = True
         if d.targets is not None and any(self._calls_in(b, d) for b in both):
             d.targets = None
-        d.edits.append(_Edit(sl, len(new), delta != 0 or any(b.structural for b in both)))
+        d.edits.append(_Edit(sl, len(new), _changes_structure(old, new), delta != 0))
 
     def close(self, path: str) -> None:
         self.docs.pop(self._key(path), None)
@@ -188,23 +198,14 @@ class WorkspaceAnalysis:
 
     def _targets(self, d: _Open) -> tuple[set[int], set[str]]:
         if d.targets is None:
-            ctx = static_checks.line_context(self.dialect_of(d.doc.lines), self.settings, self.locale)
-            hint = ctx.plain_hint
-            numbers: set[int] = set()
-            names: set[str] = set()
-            for block in d.doc.blocks:
-                if block.plain is not None and hint(block.plain) is None:
-                    continue
-                facts = static_checks.line_facts(block, ctx)
-                if facts is None:
-                    continue
-                for c in facts.calls:
-                    if c.number is not None:
-                        numbers.add(c.number)
-                    elif c.name is not None:
-                        names.add(c.name.strip().lower())
-            d.targets = numbers, names
+            d.targets = self._static(d).call_targets()
         return d.targets
+
+    def _static(self, d: _Open) -> StaticLines:
+        ctx = static_checks.line_context(self.dialect_of(d.doc.lines), self.settings, self.locale)
+        if d.static is None or d.static.ctx is not ctx:
+            d.static = StaticLines(d.doc.blocks, ctx)
+        return d.static
 
     def _units(self) -> list[tuple[tuple[str, int], FoundProgram, bool]]:
         """Every runnable O program of the open files: (key, program, whether something calls it)."""
@@ -245,17 +246,10 @@ class WorkspaceAnalysis:
         for d in self.docs.values():
             d.edits.clear()
         primary = {k: found for k, found, called in units if not called}
-        called = {k: found for k, found, is_called in units if is_called}
-        for k in [k for k in self.runs if k not in primary and k not in called]:
-            del self.runs[k]
+        for k in [k for k in self.runs if k not in primary]:
+            del self.runs[k]  # a called program is analysed only through its callers
         for k, found in primary.items():
             if not self._advance(k, found, should_cancel):
-                return None
-        for k, found in called.items():  # called programs that no caller entered run on their own
-            entered = any(_unit_ran(r, found) for kk, r in self.runs.items() if kk in primary)
-            if entered:
-                self.runs.pop(k, None)
-            elif not self._advance(k, found, should_cancel):
                 return None
         return self._result(version)
 
@@ -279,6 +273,10 @@ class WorkspaceAnalysis:
         blocks = d.doc.blocks
         program = d.doc.program
         structural = any(e.structural for e in d.edits)
+        if not structural and any(e.shifted for e in d.edits):
+            structural = not self._rewind_shifted(run, d)
+            if not structural:
+                return
         lines: list[int] = []
         if not structural:
             end_do = {p.end_line: p.do_line for p in program.loops}
@@ -305,6 +303,30 @@ class WorkspaceAnalysis:
             run.rewind(step)
         run.forget_lines(path, lines)
 
+    def _rewind_shifted(self, run: EntryRun, d: _Open) -> bool:
+        """Lines were added or removed (no structure changed): take ``run`` back to before the
+        first step at which it reached the line before the first edit or any line after it,
+        so that nothing it keeps refers to a line that moved. False when that cannot be told
+        (the edit is at a program's start, or the run stopped at its budget without reaching
+        the edit, its stopping place perhaps moved)."""
+        path = d.path
+        blocks = d.doc.blocks
+        start = min(e.start for e in d.edits)
+        p = start - 1
+        while p >= 0 and _skipped(blocks[p], self.settings):
+            p -= 1
+        unit = d.doc.program.unit_at(start)
+        if p < unit.start or (p == unit.start and blocks[p].program is not None):
+            return False
+        step = run.first_reaching(path, p)
+        if step is None:
+            if run.machine.status == LIMIT or not run.finished:
+                return False
+        else:
+            run.rewind(step, avoid_file=path)
+        run.reset_file(path)
+        return True
+
     # ---------------------------------------------------------------- results
     def _line_text(self, file: str, line: int) -> str:
         d = self.docs.get(file)
@@ -316,11 +338,8 @@ class WorkspaceAnalysis:
 
     def _own(self, d: _Open) -> list[Diagnostic]:
         if d.own is None:
-            program = d.doc.program
-            dialect = self.dialect_of(d.doc.lines)
-            own = syntax_diagnostics(program, d.path)
-            own += static_checks.static_diagnostics(program, d.path, dialect, self.settings, self.library, self.locale)
-            d.own = own
+            static = self._static(d)
+            d.own = static.diagnostics(d.doc.program, d.path, static.ctx.dialect, self.library, self.locale)
         return d.own
 
     def _result(self, version: int | None) -> AnalysisResult:
@@ -399,6 +418,20 @@ def _skipped(b: Block, settings: MachineSettings) -> bool:
     return b.is_empty or (b.block_delete is not None and settings.block_delete)
 
 
+def _changes_structure(old: list[Block], new: list[Block]) -> bool:
+    """Whether replacing ``old`` by ``new`` adds, removes or changes a structural block (the
+    lines both keep unchanged at their ends, as when Enter splits nothing, do not count)."""
+    a, b = 0, 0
+    while a < len(old) and b < len(new) and old[a] is new[b]:
+        a += 1
+        b += 1
+    x, y = len(old), len(new)
+    while x > a and y > b and old[x - 1] is new[y - 1]:
+        x -= 1
+        y -= 1
+    return any(blk.structural for blk in old[a:x]) or any(blk.structural for blk in new[b:y])
+
+
 def _header_only(b: Block) -> bool:
     return b.program is not None and not b.words and not b.statements
 
@@ -415,8 +448,3 @@ def _any_in(lines: set[int], unit: ProgramUnit) -> bool:
     if unit.end - unit.start < len(lines):
         return any(i in lines for i in range(unit.start, unit.end))
     return any(unit.start <= x < unit.end for x in lines)
-
-
-def _unit_ran(run: EntryRun, found: FoundProgram) -> bool:
-    lines = run.state.first.get(found.file.path)
-    return bool(lines) and _any_in(set(lines), found.unit)

@@ -1,6 +1,8 @@
 """``cncmacro check``: report the diagnostics of program files, as text, JSON or SARIF.
 
-The files are opened in a ``WorkspaceAnalysis``: syntax, the static checks, and what bounded
+The files are grouped by their machine settings (``--machine``, else the ``.cncmacro.toml``
+nearest to each file, else the defaults) and each group is opened in a ``WorkspaceAnalysis``
+with its own settings (call codes, presets, severities): syntax, the static checks, and what bounded
 runs of the machine find (from each program nothing calls; called programs through their
 callers). Hints (``not-executed``) are printed only with ``--hints``. Exit status: 0 when no
 error was found, 1 when one was, 2 on bad usage or unreadable input (a missing path, a binary
@@ -41,15 +43,8 @@ def check_paths(
     if max_blocks is not None and max_blocks < 1:
         print("cncmacro check: --max-blocks must be at least 1", file=err)
         return 2
-    try:
-        settings = _settings(machine, paths)
-        ws = WorkspaceAnalysis(settings=settings, dialect=dialect, search_paths=search_paths or [], locale=locale,
-                               max_blocks=max_blocks, severities=settings.severity)  # fmt: skip
-    except (MachineFileError, ValueError) as e:
-        print(f"cncmacro check: {e}", file=err)
-        return 2
     unreadable = False
-    opened: list[str] = []
+    sources: list[tuple[Path, str]] = []
     for arg in paths:
         root = Path(arg)
         if not root.exists():
@@ -67,11 +62,22 @@ def check_paths(
                 print(f"cncmacro: {path}: cannot read: {e.strerror or e}", file=err)
                 unreadable = True
                 continue
-            ws.open(str(path), source.text, 0)
-            opened.append(str(path))
+            sources.append((path, source.text))
+    groups: dict[Path | None, list[tuple[Path, str]]] = {}
+    for path, text in sources:
+        groups.setdefault(Path(machine) if machine else find_machine_file(path), []).append((path, text))
     diagnostics: list[Diagnostic] = []
-    if opened:
-        result = ws.analyze(opened[0])
+    for machine_file, files in groups.items():  # each file with the machine settings nearest to it
+        try:
+            settings = load_machine_file(machine_file) if machine_file is not None else MachineSettings()
+            ws = WorkspaceAnalysis(settings=settings, dialect=dialect, search_paths=search_paths or [],
+                                   locale=locale, max_blocks=max_blocks, severities=settings.severity)  # fmt: skip
+        except (MachineFileError, ValueError) as e:
+            print(f"cncmacro check: {e}", file=err)
+            return 2
+        for path, text in files:
+            ws.open(str(path), text, 0)
+        result = ws.analyze(str(files[0][0]))
         assert result is not None  # nothing cancels it
         for diags in result.diagnostics.values():
             diagnostics += diags
@@ -90,18 +96,6 @@ def check_paths(
     if unreadable:
         return 2
     return 1 if any(d.severity == "error" for d in diagnostics) else 0
-
-
-def _settings(machine: str | None, paths: list[str]) -> MachineSettings:
-    """``--machine``, else the nearest ``.cncmacro.toml`` above the first path, else defaults."""
-    if machine:
-        return load_machine_file(machine)
-    for arg in paths:
-        p = Path(arg)
-        if p.exists():
-            found = find_machine_file(p)
-            return load_machine_file(found) if found is not None else MachineSettings()
-    return MachineSettings()
 
 
 def _as_json(d: Diagnostic) -> dict[str, object]:

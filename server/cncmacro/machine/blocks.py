@@ -164,8 +164,20 @@ class CompiledFile:
 
     def _watched(self, block: Block, run: Runner) -> Runner:
         """For the analysis: an assignment to a local or common variable also reports the
-        value it left (``Machine.on_write``), the value an editor shows beside the line."""
+        value it left (``Machine.on_write``), the value an editor shows beside the line; a
+        loop head reports each pass (``Machine.on_loop_pass``: the level, the DO line, and
+        whether the loop was already running)."""
         s = block.statements[0] if len(block.statements) == 1 and not block.words else None
+        if isinstance(s, (While, Do)):
+
+            def counted(m: Any, line: int) -> int:
+                hook = m.on_loop_pass
+                if hook is not None:
+                    loops = m.frames[-1].loops
+                    hook(len(m.frames) - 1, line, bool(loops) and loops[-1] == line)
+                return run(m, line)
+
+            return counted
         if not isinstance(s, Assign) or not isinstance(s.target, Var):
             return run
         n = s.target.number
@@ -177,6 +189,8 @@ class CompiledFile:
 
         def watched(m: Any, pc: int) -> int:
             nxt = run(m, pc)
+            if local:
+                m.wrote_local(n)
             hook = m.on_write
             if hook is not None:
                 hook(path, pc, n, m.L[n] if local else m.C[n])

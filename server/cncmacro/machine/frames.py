@@ -33,6 +33,7 @@ class Frame:
     letters: dict[int, str] = field(default_factory=dict)  # local number -> argument letter
     loops: list[int] = field(default_factory=list)
     modal: Any = None  # the ModalCall that made this frame, if a G66 did
+    written: set[int] | None = None  # analysis runs: the locals this macro level assigned itself
 
     @property
     def file(self) -> str:
@@ -46,6 +47,7 @@ class Frame:
         f = Frame(
             self.found, self.code, self.pc, self.kind, locals_copy, self.macro_level, self.call_line, self.return_pc,
             self.repeats, self.start_pc, self.arguments, self.letters, list(self.loops), self.modal,
+            None if self.written is None else set(self.written),
         )  # fmt: skip
         return f
 

@@ -100,6 +100,7 @@ class Machine(VariableAccess, Motion):
         self.on_first_run: Callable[[str, int, int], None] | None = None
         self.on_vacant_argument: Callable[[int, str, int, tuple[CallSite, ...]], None] | None = None
         self.on_write: Callable[[str, int, int, Value], None] | None = None
+        self.on_loop_pass: Callable[[int, int, bool], None] | None = None  # (level, DO line, again)
         self.L: list[Value] = [None] * 34
         self.C: list[Value] = [None] * 1000
         self.S: dict[int, Value] = {}
@@ -219,7 +220,24 @@ class Machine(VariableAccess, Motion):
             k -= 1  # M98 levels share the locals of the level that called them
         if k == 0 or n in frames[k].arguments:
             return
+        written = frames[k].written
+        if written is not None and n in written:
+            return  # the macro assigned it itself (perhaps a vacant value): not the caller's doing
         hook(n, frames[-1].file, line, self.chain(line))
+
+    def wrote_local(self, n: int) -> None:
+        """An analysis run saw a macro level assign its local ``#n`` (see ``vacant_local``)."""
+        frames = self.frames
+        k = len(frames) - 1
+        while k > 0 and frames[k - 1].locals is frames[k].locals:
+            k -= 1
+        if k == 0:
+            return
+        f = frames[k]
+        if f.written is None:
+            f.written = {n}
+        else:
+            f.written.add(n)
 
     def print_line(self, text: str, pc: int) -> None:
         self.output.append(text)

@@ -1,0 +1,105 @@
+"""The per-line part of a document's syntax and static checks, kept line by line across edits.
+
+``StaticLines`` holds, for each line that has any, the syntax problems of its block and what
+the block says by itself (``LineFacts``: findings, jumps, calls, returns). Both are pure
+functions of the block and the ``LineContext``, and blocks are shared per line text, so the
+facts are memoised per block as well (a file of repeated lines checks each text once). An
+edit calls ``replace`` with the lines it replaced: only the new lines are looked at, and the
+lines after them are renumbered (a cost in proportion to the lines that have facts, not to
+the file). ``diagnostics`` then adds the cross-line checks (labels, loops, call targets),
+which look only at the lines with facts and at the document's labels and markers.
+"""
+
+from __future__ import annotations
+
+from ..dialects.dialect import Dialect
+from ..library.programs import ProgramLibrary
+from ..syntax.nodes import Block, Problem
+from ..syntax.program import Program
+from .diagnostics import Diagnostic
+from .line_facts import LineContext, LineFacts
+from .static_checks import cross_line_diagnostics, findings_of, line_facts
+
+_MEMO_LIMIT = 200_000
+
+
+class StaticLines:
+    """See the module docstring."""
+
+    def __init__(self, blocks: list[Block], ctx: LineContext) -> None:
+        self.ctx = ctx
+        self.facts: dict[int, LineFacts] = {}  # line -> facts, only lines that have some
+        self.problems: dict[int, tuple[Problem, ...]] = {}  # line -> syntax problems
+        self._memo: dict[int, tuple[Block, LineFacts | None]] = {}  # id(block) -> (block, facts)
+        self._fill(blocks, 0, len(blocks))
+
+    def _facts_of(self, block: Block) -> LineFacts | None:
+        if block.plain is not None:
+            if self.ctx.plain_hint(block.plain) is None:
+                return None
+            return line_facts(block, self.ctx)
+        memo = self._memo
+        hit = memo.get(id(block))
+        if hit is not None and hit[0] is block:
+            return hit[1]
+        facts = line_facts(block, self.ctx)
+        if len(memo) >= _MEMO_LIMIT:
+            memo.clear()
+        memo[id(block)] = (block, facts)
+        return facts
+
+    def _fill(self, blocks: list[Block], start: int, end: int) -> None:
+        facts_of = self._facts_of
+        facts = self.facts
+        problems = self.problems
+        for line in range(start, end):
+            block = blocks[line]
+            if block.problems:
+                problems[line] = block.problems
+            f = facts_of(block)
+            if f is not None:
+                facts[line] = f
+
+    def replace(self, blocks: list[Block], start: int, old_count: int, new_count: int) -> None:
+        """Lines ``start`` .. ``start + old_count`` were replaced by ``new_count`` lines
+        (``blocks`` is the document's new block list)."""
+        end = start + old_count
+        delta = new_count - old_count
+        for table in (self.facts, self.problems):
+            moved = {}
+            for line in [x for x in table if x >= start]:
+                value = table.pop(line)
+                if line >= end:
+                    moved[line + delta] = value
+            table.update(moved)
+        self._fill(blocks, start, start + new_count)
+
+    def call_targets(self) -> tuple[set[int], set[str]]:
+        """The literal program numbers and names that the document's calls name."""
+        numbers: set[int] = set()
+        names: set[str] = set()
+        for f in self.facts.values():
+            for c in f.calls:
+                if c.number is not None:
+                    numbers.add(c.number)
+                elif c.name is not None:
+                    names.add(c.name.strip().lower())
+        return numbers, names
+
+    def diagnostics(self, program: Program, file: str, dialect: Dialect, library: ProgramLibrary | None,
+                    locale: str) -> list[Diagnostic]:  # fmt: skip
+        """Syntax and static diagnostics of the document (``program`` is its current parse)."""
+        out: list[Diagnostic] = []
+        for line in sorted(self.problems):
+            for p in self.problems[line]:
+                out.append(Diagnostic(file, line, p.start, line, max(p.end, p.start + 1), p.severity, "syntax",
+                                      p.message))  # fmt: skip
+        collected: list[tuple[int, LineFacts]] = []
+        for line in sorted(self.facts):
+            facts = self.facts[line]
+            if facts.findings:
+                out.extend(findings_of(facts, line, file))
+            if facts.jumps or facts.calls or facts.returns:
+                collected.append((line, facts))
+        out.extend(cross_line_diagnostics(program, file, dialect, library, locale, collected))
+        return out
