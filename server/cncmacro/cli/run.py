@@ -14,22 +14,11 @@ import sys
 from pathlib import Path
 from typing import Any, TextIO
 
-from ..dialects import get_dialect
-from ..library.dialect_choice import dialect_from_text
-from ..library.files import BinaryFileError, read_program
-from ..library.machine_file import (
-    PERSISTENT_FILE_NAME,
-    MachineFileError,
-    MachineSettings,
-    find_machine_file,
-    load_machine_file,
-    parse_preset,
-)
-from ..library.programs import ProgramLibrary
+from ..library.machine_file import parse_preset
 from ..machine import Machine, RunResult
 from ..machine.machine import ALARM, LIMIT, PAUSED
 from ..machine.numbers import format_plain
-from ..machine.persistence import PersistentFileError, load_persistent, save_persistent
+from ..machine.setup import prepare_run
 
 MAX_TEXT_MOVES = 1000
 MODE_NAMES = {0.0: "G00", 1.0: "G01", 2.0: "G02", 3.0: "G03", 31.0: "G31"}
@@ -68,33 +57,21 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
     out = out or sys.stdout
     err = err or sys.stderr
     path = Path(args.file)
-    try:
-        source = read_program(path)
-    except (OSError, BinaryFileError) as e:
-        print(f"cncmacro run: {e}", file=err)
-        return 2
-    try:
-        settings = _settings(args, path)
-        presets = dict(parse_preset(s) for s in args.set)
-    except (MachineFileError, ValueError) as e:
-        print(f"cncmacro run: {e}", file=err)
-        return 2
     if args.max_blocks is not None and args.max_blocks < 1:
         print("cncmacro run: --max-blocks must be at least 1", file=err)
         return 2
-    lines = source.text.splitlines()[:5]
-    dialect = get_dialect(dialect_from_text(lines) or settings.dialect or args.dialect)
-    library = ProgramLibrary([Path(p) for p in args.path])
-    machine = Machine(dialect, settings, library)
-    persistent = settings.persistent_path() or (path.parent / PERSISTENT_FILE_NAME)
     try:
-        machine.load_persistent(load_persistent(persistent))
-        machine.apply_presets(presets)
-    except (PersistentFileError, ValueError) as e:
+        presets = dict(parse_preset(s) for s in args.set)
+        prepared = prepare_run(
+            path, machine_file=args.machine, dialect=args.dialect, presets=presets,
+            search_paths=[Path(p) for p in args.path],
+        )  # fmt: skip
+    except ValueError as e:
         print(f"cncmacro run: {e}", file=err)
         return 2
-    machine.start_file(str(path), source.text)
-    budget = args.max_blocks if args.max_blocks is not None else settings.max_blocks
+    machine = prepared.machine
+    dialect = machine.dialect
+    budget = args.max_blocks if args.max_blocks is not None else machine.settings.max_blocks
     while True:
         status = machine.run(max(1, budget - machine.blocks))
         if status != PAUSED:
@@ -102,7 +79,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
         machine.resume()  # M00 and #3006 pause a machine; a simulation goes on
     if not args.no_save:
         try:
-            save_persistent(persistent, machine.persistent_values())
+            prepared.save()
         except OSError as e:
             print(f"cncmacro run: could not save the persistent variables: {e}", file=err)
     result = machine.result()
@@ -112,13 +89,6 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
     else:
         write_text(result, machine, out)
     return {ALARM: 1, LIMIT: 3}.get(result.status, 0)
-
-
-def _settings(args: argparse.Namespace, path: Path) -> MachineSettings:
-    if args.machine:
-        return load_machine_file(args.machine)
-    found = find_machine_file(path)
-    return load_machine_file(found) if found is not None else MachineSettings()
 
 
 def result_json(result: RunResult, axes: tuple[str, ...]) -> dict[str, Any]:

@@ -11,24 +11,14 @@ variables. Every mistake is a ``LaunchError`` with a message for the person.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..dialects import DIALECTS, get_dialect
-from ..library.dialect_choice import dialect_from_text
-from ..library.files import BinaryFileError, read_program
-from ..library.machine_file import (
-    PERSISTENT_FILE_NAME,
-    MachineFileError,
-    MachineSettings,
-    find_machine_file,
-    load_machine_file,
-    parse_preset,
-)
-from ..library.programs import ProgramLibrary
+from ..dialects import DIALECTS
+from ..library.machine_file import parse_preset
 from ..machine import Machine
-from ..machine.persistence import PersistentFileError, load_persistent, save_persistent
+from ..machine.setup import PreparedRun, SetupError, prepare_run
 
 
 class LaunchError(ValueError):
@@ -93,50 +83,34 @@ def _presets(value: Any) -> dict[int, float]:
 
 @dataclass(slots=True)
 class Launched:
-    """A machine ready at the program's first block, and where its persistent variables live."""
+    """A machine ready at the program's first block (with where its persistent variables
+    live) and the configuration that launched it."""
 
-    machine: Machine
-    persistent_file: Path
+    prepared: PreparedRun
     config: LaunchConfig
 
+    @property
+    def machine(self) -> Machine:
+        return self.prepared.machine
+
     def save(self) -> str | None:
-        """Write ``#500–#999`` back; an error message when that failed."""
+        """Write ``#500–#999`` back unless ``noSave``; an error message when that failed."""
         if self.config.no_save:
             return None
         try:
-            save_persistent(self.persistent_file, self.machine.persistent_values())
+            self.prepared.save()
         except OSError as e:
-            return f"could not save the persistent variables to {self.persistent_file}: {e}"
+            return f"could not save the persistent variables to {self.prepared.persistent_file}: {e}"
         return None
 
 
 def launch(config: LaunchConfig) -> Launched:
     """Read the program and the machine file and start the machine at the first block."""
-    path = config.program
     try:
-        source = read_program(path)
-    except (OSError, BinaryFileError) as e:
-        raise LaunchError(f"cannot read the program {path}: {e}") from None
-    try:
-        if config.machine_file is not None:
-            settings = load_machine_file(config.machine_file)
-        else:
-            found = find_machine_file(path)
-            settings = load_machine_file(found) if found is not None else MachineSettings()
-    except MachineFileError as e:
+        prepared = prepare_run(
+            config.program, machine_file=config.machine_file, dialect=config.dialect, presets=config.presets,
+            block_delete=config.block_delete, max_blocks=config.max_blocks,
+        )  # fmt: skip
+    except SetupError as e:
         raise LaunchError(str(e)) from None
-    if config.block_delete is not None:
-        settings = replace(settings, block_delete=config.block_delete)
-    if config.max_blocks is not None:
-        settings = replace(settings, max_blocks=config.max_blocks)
-    lines = source.text.splitlines()[:5]
-    dialect = get_dialect(dialect_from_text(lines) or settings.dialect or config.dialect)
-    machine = Machine(dialect, settings, ProgramLibrary())
-    persistent = settings.persistent_path() or (path.parent / PERSISTENT_FILE_NAME)
-    try:
-        machine.load_persistent(load_persistent(persistent))
-        machine.apply_presets(config.presets or {})
-    except (PersistentFileError, ValueError) as e:
-        raise LaunchError(str(e)) from None
-    machine.start_file(str(path), source.text)
-    return Launched(machine, persistent, config)
+    return Launched(prepared, config)

@@ -1,0 +1,88 @@
+"""Setting up a machine to run a program file, as ``cncmacro run`` and the debugger both do.
+
+The machine file is the one given, else the nearest ``.cncmacro.toml`` above the program;
+the dialect follows DESIGN.md's chain (the file's ``(cncmacro: dialect=..)`` comment, then
+the machine file, then the caller's setting, then fanuc); ``#500–#999`` come from the
+persistent file (the machine file's ``persistent_file``, else ``.cncmacro-vars.json`` beside
+the program) and the presets are applied after them. Every mistake a person can make here
+(an unreadable or binary program, a bad machine file, a damaged persistent file, a preset of
+a variable that cannot be preset) is a ``SetupError`` whose message says what is wrong.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+from ..dialects import get_dialect
+from ..library.dialect_choice import HEADER_LINES, choose_dialect
+from ..library.files import BinaryFileError, read_program
+from ..library.machine_file import (
+    PERSISTENT_FILE_NAME,
+    MachineFileError,
+    MachineSettings,
+    find_machine_file,
+    load_machine_file,
+)
+from ..library.programs import ProgramLibrary
+from .machine import Machine
+from .persistence import PersistentFileError, load_persistent, save_persistent
+
+
+class SetupError(ValueError):
+    """The program, machine file, persistent file or presets cannot start a run."""
+
+
+@dataclass(slots=True)
+class PreparedRun:
+    """A machine at the first block of its program, and where its persistent variables live."""
+
+    machine: Machine
+    persistent_file: Path
+
+    def save(self) -> None:
+        """Write ``#500–#999`` back atomically (``OSError`` passes through)."""
+        save_persistent(self.persistent_file, self.machine.persistent_values())
+
+
+def machine_settings(program: Path, machine_file: Path | str | None = None) -> MachineSettings:
+    """The settings of the given machine file, else of the nearest one above ``program``."""
+    try:
+        if machine_file is not None:
+            return load_machine_file(machine_file)
+        found = find_machine_file(program)
+        return load_machine_file(found) if found is not None else MachineSettings()
+    except MachineFileError as e:
+        raise SetupError(str(e)) from None
+
+
+def prepare_run(
+    program: Path,
+    *,
+    machine_file: Path | str | None = None,
+    dialect: str | None = None,
+    presets: dict[int, float] | None = None,
+    search_paths: list[Path] | None = None,
+    block_delete: bool | None = None,
+    max_blocks: int | None = None,
+) -> PreparedRun:
+    """Read ``program`` and its machine settings and start a machine at its first block."""
+    try:
+        source = read_program(program)
+    except (OSError, BinaryFileError) as e:
+        raise SetupError(f"cannot read the program {program}: {e}") from None
+    settings = machine_settings(program, machine_file)
+    if block_delete is not None:
+        settings = replace(settings, block_delete=block_delete)
+    if max_blocks is not None:
+        settings = replace(settings, max_blocks=max_blocks)
+    chosen = choose_dialect(source.text.splitlines()[:HEADER_LINES], settings.dialect, dialect)
+    machine = Machine(get_dialect(chosen), settings, ProgramLibrary(search_paths or []))
+    persistent = settings.persistent_path() or (program.parent / PERSISTENT_FILE_NAME)
+    try:
+        machine.load_persistent(load_persistent(persistent))
+        machine.apply_presets(presets or {})
+    except (PersistentFileError, ValueError) as e:
+        raise SetupError(str(e)) from None
+    machine.start_file(str(program), source.text)
+    return PreparedRun(machine, persistent)
