@@ -261,7 +261,7 @@ describe('alarms, messages and the end of a session', () => {
       assert.equal(event.body.reason, 'pause');
       assert.match(event.body.text, /CHECK THE PART/);
       assert.equal((await dc.top()).line, 5);
-      assert.match(dc.output, /message\.nc:3 G01 X0\.000 -> X10\.000 F100/);
+      assert.match(dc.output, /message\.nc:3 G01\s+X0\.000 -> X10\.000\s+F100/);
       await dc.step('nextRequest');
       await dc.step('nextRequest');
       assert.equal(await dc.value('#500'), '1');

@@ -16,12 +16,12 @@ from typing import Any, TextIO
 
 from ..library.machine_file import parse_preset
 from ..machine import Machine, RunResult
+from ..machine.frames import MODE_NAMES, Move
 from ..machine.machine import ALARM, LIMIT, PAUSED
 from ..machine.numbers import format_plain
 from ..machine.setup import prepare_run
 
 MAX_TEXT_MOVES = 1000
-MODE_NAMES = {0.0: "G00", 1.0: "G01", 2.0: "G02", 3.0: "G03", 31.0: "G31"}
 
 
 def add_run_parser(sub: Any) -> None:
@@ -160,9 +160,5 @@ def write_text(result: RunResult, machine: Machine, out: TextIO) -> None:
             print(f"  #{n} = {format_plain(v)}", file=out)
 
 
-def _move_line(mv: Any, axes: tuple[str, ...], moved: list[int]) -> str:
-    mode = MODE_NAMES.get(mv.mode, f"G{mv.mode:g}")
-    start = " ".join(f"{axes[i]}{mv.start[i]:.3f}" for i in moved)
-    end = " ".join(f"{axes[i]}{mv.end[i]:.3f}" for i in moved)
-    feed = f"  F{format_plain(mv.feed)}" if mv.mode not in (0.0,) and mv.feed else ""
-    return f"  {Path(mv.file).name}:{mv.line + 1:<5} {mode:<4} {start} -> {end}{feed}\n"
+def _move_line(mv: Move, axes: tuple[str, ...], moved: list[int]) -> str:
+    return f"  {Path(mv.file).name}:{mv.line + 1:<5} {mv.text(axes, moved)}\n"

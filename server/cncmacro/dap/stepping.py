@@ -19,12 +19,10 @@ from pathlib import Path
 from ..machine import Machine
 from ..machine.frames import Move
 from ..machine.machine import ALARM, COMPLETED, LIMIT, PAUSED, STOPPED
-from ..machine.numbers import format_plain
 from .breakpoints import Breakpoints
 from .history import History
 
 CONTINUE, STEP_IN, STEP_OVER, STEP_OUT = "continue", "in", "over", "out"
-MODE_NAMES = {0.0: "G00", 1.0: "G01", 2.0: "G02", 3.0: "G03", 31.0: "G31"}
 
 
 @dataclass(slots=True)
@@ -189,9 +187,4 @@ class Stepper:
 
 
 def move_line(mv: Move, axes: tuple[str, ...]) -> str:
-    mode = MODE_NAMES.get(mv.mode, f"G{mv.mode:g}")
-    moved = [i for i in range(len(axes)) if mv.start[i] != mv.end[i]]
-    start = " ".join(f"{axes[i]}{mv.start[i]:.3f}" for i in moved)
-    end = " ".join(f"{axes[i]}{mv.end[i]:.3f}" for i in moved)
-    feed = f" F{format_plain(mv.feed)}" if mv.mode != 0.0 and mv.feed else ""
-    return f"{Path(mv.file).name}:{mv.line + 1} {mode} {start} -> {end}{feed}\n"
+    return f"{Path(mv.file).name}:{mv.line + 1} {mv.text(axes)}\n"

@@ -12,6 +12,9 @@ from dataclasses import dataclass, field
 from typing import Any, NamedTuple
 
 from ..library.programs import FoundProgram
+from .numbers import format_plain
+
+MODE_NAMES = {0.0: "G00", 1.0: "G01", 2.0: "G02", 3.0: "G03", 31.0: "G31"}
 
 
 @dataclass(slots=True)
@@ -74,6 +77,18 @@ class Move(NamedTuple):
     start: tuple[float, ...]
     end: tuple[float, ...]
     feed: float
+
+    def text(self, axes: tuple[str, ...], shown: list[int] | None = None) -> str:
+        """``G01  X0.000 Y0.000 -> X10.000 Y5.000  F200`` for a person: the axes in ``shown``
+        (by default those that moved; every axis when none did, so that a move to where the
+        tool already is still says where that is) and the feed of a cutting move."""
+        if shown is None:
+            shown = [i for i in range(len(axes)) if self.start[i] != self.end[i]] or list(range(len(axes)))
+        mode = MODE_NAMES.get(self.mode, f"G{self.mode:g}")
+        start = " ".join(f"{axes[i]}{self.start[i]:.3f}" for i in shown)
+        end = " ".join(f"{axes[i]}{self.end[i]:.3f}" for i in shown)
+        feed = f"  F{format_plain(self.feed)}" if self.mode != 0.0 and self.feed else ""
+        return f"{mode:<4} {start} -> {end}{feed}"
 
 
 @dataclass(frozen=True, slots=True)
