@@ -141,3 +141,158 @@ def test_4_control_flow_enter_late_in_a_main_program_resumes_the_run(tmp_path, m
     assert restarts == []
     assert ("MAIN.nc", at + 1, "division-by-zero") in [(d[0], d[1], d[6]) for d in got[0]]
     assert got == snapshot(fresh(tmp_path, {"MAIN.nc": ws.document(main).text}), main)  # type: ignore[union-attr]
+
+
+# ---------------------------------------------------------------- converging with the earlier run
+# After an edit the resumed run takes over the rest of the run before it as soon as the machine
+# state is the same again and the edited lines do not run any more (run_convergence.py).
+
+STRAIGHT = ["O0001", "#1=5", *[f"G01 X{k}. Y{k % 7}. F100." for k in range(300)], "#2=#1*2", "M30"]
+LOOPED = ["O0001", "#1=0", "#5=0", "WHILE[#1 LT 40] DO1", "G01 X#1 Y2.", "#5=#5+1", "#1=#1+1", "END1",
+          *[f"G01 X{k}. Y1." for k in range(60)], "#6=10/[#5-40]", "M30"]  # fmt: skip
+CALLED_TWICE = ["O0001", "G65 P9002 A1.", *[f"G01 X{k}. Y1." for k in range(60)], "G65 P9002 A2.",
+                *[f"G01 X{k}. Y2." for k in range(60)], "#7=1/[#100-2]", "M30"]  # fmt: skip
+MACRO_TWICE = ["O9002", "#100=#1", "G01 X#1 Y3.", "M99"]
+CLOCK = ["O0001", "#3001=0", *[f"G01 X{k}. Y1. F100." for k in range(60)], "#8=#3001",
+         *[f"G01 X{k}. Y2. F100." for k in range(60)], "IF[#8 GT 1000000] THEN #9=1/0", "M30"]  # fmt: skip
+INDIRECT = ["O0001", "#3001=0", "#20=3001", *[f"G01 X{k}. Y1. F100." for k in range(60)], "#8=#[#20]",
+            *[f"G01 X{k}. Y2. F100." for k in range(60)], "IF[#8 GT 1000000] THEN #9=1/0", "M30"]  # fmt: skip
+SKIPPED = ["O0001", "#1=1", "IF[#1 EQ 1] GOTO 10", *[f"G01 X{k}. Y3." for k in range(20)], "N10 #2=1",
+           *[f"G01 X{k}. Y1." for k in range(60)], "#3=#2/[#1-1]", "M30"]  # fmt: skip
+PROGRAMS = {"STRAIGHT": STRAIGHT, "LOOPED": LOOPED, "CALLED_TWICE": CALLED_TWICE, "CLOCK": CLOCK,
+            "INDIRECT": INDIRECT, "SKIPPED": SKIPPED}  # fmt: skip
+EDITS = ["G01 X1. Y1.", "G01 X9000. Y1.", "#1=7", "#1=1", "#1=0", "#5=3", "#100=2", "#100=#1+1", "",
+         "G65 P9002 A3.", "#2=0", "G01 X2. Y2. F5.", "IF[#1 EQ 1] GOTO 10", "#20=1", "#3001=500"]  # fmt: skip
+
+
+def _open_program(tmp: Path, name: str, lines: list[str]) -> tuple[WorkspaceAnalysis, str]:
+    texts = {"MAIN.nc": "\n".join(lines), "O9002.nc": "\n".join(MACRO_TWICE)}
+    ws = WorkspaceAnalysis(settings=MachineSettings(date=20261122, time=80000), max_blocks=2000)
+    for file, text in texts.items():
+        (tmp / file).write_text(text)  # on disk too, where G65 looks for the macro (the editor's text wins)
+        ws.open(str(tmp / file), text, 0)
+    return ws, str(tmp / "MAIN.nc")
+
+
+def _same_as_from_scratch(tmp: Path, ws: WorkspaceAnalysis, main: str) -> None:
+    got = snapshot(ws, main)
+    texts = {name: ws.document(str(tmp / name)).text for name in ("MAIN.nc", "O9002.nc")}  # type: ignore[union-attr]
+    scratch = WorkspaceAnalysis(settings=MachineSettings(date=20261122, time=80000), max_blocks=2000)
+    for file, text in texts.items():
+        scratch.open(str(tmp / file), text, 0)
+    assert got == snapshot(scratch, main)
+
+
+@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(name=st.sampled_from(sorted(PROGRAMS)), edits=st.lists(st.tuples(st.integers(1, 200), st.sampled_from(EDITS),
+       st.booleans()), min_size=1, max_size=4), chunk=st.sampled_from([5, 7, 16]))  # fmt: skip
+def test_4_control_flow_converging_runs_equal_runs_from_scratch(tmp_path, monkeypatch, name, edits, chunk):
+    """Line edits in programs where the resumed run converges with the earlier one (a straight
+    line, a loop, a macro called twice) and where it must not (the edited line runs again, the
+    program reads the clock, directly or through indirection): the result is always the same
+    as an analysis from scratch."""
+    monkeypatch.setattr(run_checks, "CHUNK", chunk)
+    ws, main = _open_program(tmp_path, name, PROGRAMS[name])
+    snapshot(ws, main)
+    for version, (at, text, in_macro) in enumerate(edits, start=1):
+        path = str(tmp_path / "O9002.nc") if in_macro and name == "CALLED_TWICE" else main
+        doc = ws.document(path)
+        assert doc is not None
+        at = min(at, len(doc.lines) - 2)
+        ws.change(path, at, 0, at, len(doc.lines[at]), text, version)
+        _same_as_from_scratch(tmp_path, ws, main)
+
+
+def _edit(ws: WorkspaceAnalysis, main: str, line: int, text: str, version: int) -> None:
+    doc = ws.document(main)
+    assert doc is not None
+    ws.change(main, line, 0, line, len(doc.lines[line]), text, version)
+
+
+def _run_of(ws: WorkspaceAnalysis) -> run_checks.EntryRun:
+    return next(iter(ws.runs.values()))
+
+
+def test_4_control_flow_an_edit_near_the_start_of_a_long_program_runs_little_again(tmp_path, monkeypatch):
+    """A coordinate typed near the start of a long straight program: the resumed run converges
+    at its next checkpoint and takes the rest over (a few chunks run again, not the program)."""
+    monkeypatch.setattr(run_checks, "CHUNK", 10)
+    ws, main = _open_program(tmp_path, "STRAIGHT", STRAIGHT)
+    snapshot(ws, main)
+    total = _run_of(ws).machine.blocks
+    _edit(ws, main, 3, "G01 X77. Y2. F100.", 1)
+    _same_as_from_scratch(tmp_path, ws, main)
+    run = _run_of(ws)
+    assert run.machine.blocks == total and run.rerun_blocks <= 20 < total
+    _edit(ws, main, 250, "G01 X78. Y2. F100.", 2)  # later edits still resume and converge
+    _same_as_from_scratch(tmp_path, ws, main)
+    assert _run_of(ws).rerun_blocks <= 20
+
+
+def test_4_control_flow_a_skipped_range_shifts_the_steps_of_the_converged_run(tmp_path, monkeypatch):
+    """An edit that makes the run skip 20 lines converges 20 blocks earlier: the block count
+    of the run and of a finding after it are shifted, and a later edit still resumes right."""
+    monkeypatch.setattr(run_checks, "CHUNK", 10)
+    lines = ["O0001", "#1=0", "IF[#1 EQ 1] GOTO 10", *[f"G01 X{k}. Y3." for k in range(20)], "N10 #2=1",
+             *[f"G01 X{k}. Y1." for k in range(60)], "#3=#2/#1", "M30"]  # fmt: skip
+    ws, main = _open_program(tmp_path, "SKIPPED", lines)
+    snapshot(ws, main)
+    before = _run_of(ws).machine.blocks
+    _edit(ws, main, 2, "GOTO 10", 1)
+    _same_as_from_scratch(tmp_path, ws, main)
+    run = _run_of(ws)
+    assert run.machine.blocks == before - 20 and run.rerun_blocks < 60
+    assert any(d[6] == "division-by-zero" for d in snapshot(ws, main)[0])
+    _edit(ws, main, 70, "G01 X1. Y9.", 2)
+    _same_as_from_scratch(tmp_path, ws, main)
+
+
+def test_4_control_flow_an_edited_line_inside_a_loop_runs_the_loop_again(tmp_path, monkeypatch):
+    """The edited line runs on every pass of the loop: the earlier run is not taken over while
+    the loop runs, and the changed count shows in a finding after the loop."""
+    monkeypatch.setattr(run_checks, "CHUNK", 10)
+    ws, main = _open_program(tmp_path, "LOOPED", LOOPED)
+    assert any(d[6] == "division-by-zero" for d in snapshot(ws, main)[0])  # #5 is 40 after the loop
+    _edit(ws, main, 5, "#5=#5+2", 1)
+    _same_as_from_scratch(tmp_path, ws, main)
+    assert not any(d[6] == "division-by-zero" for d in snapshot(ws, main)[0])
+    _edit(ws, main, 5, "#5=#5+1", 2)
+    _same_as_from_scratch(tmp_path, ws, main)
+    assert any(d[6] == "division-by-zero" for d in snapshot(ws, main)[0])
+    assert _run_of(ws).rerun_blocks >= 4 * 40
+
+
+def test_5_calls_a_macro_called_twice_is_run_again_for_the_second_call(tmp_path, monkeypatch):
+    """An edit in a macro that the program calls twice changes what the second call leaves
+    behind: converging after the first call must not hide the second one's new value."""
+    monkeypatch.setattr(run_checks, "CHUNK", 10)
+    ws, main = _open_program(tmp_path, "CALLED_TWICE", CALLED_TWICE)
+    assert any(d[6] == "division-by-zero" for d in snapshot(ws, main)[0])
+    macro = str(tmp_path / "O9002.nc")
+    ws.change(macro, 1, 0, 1, len("#100=#1"), "#100=#1+1", 1)
+    _same_as_from_scratch(tmp_path, ws, main)
+    assert not any(d[6] == "division-by-zero" for d in snapshot(ws, main)[0])
+
+
+def test_8_machine_a_program_that_reads_the_clock_does_not_converge_on_other_times(tmp_path, monkeypatch):
+    """A faster feed near the start changes the time that ``#3001`` reads later (directly, or
+    through ``#[#20]``): the rest of the earlier run is not taken over with the old time."""
+    monkeypatch.setattr(run_checks, "CHUNK", 10)
+    for name in ("CLOCK", "INDIRECT"):
+        lines = PROGRAMS[name]
+        ws, main = _open_program(tmp_path, name, lines)
+        assert not any(d[6] == "division-by-zero" for d in snapshot(ws, main)[0])
+        at = lines.index("G01 X0. Y1. F100.")
+        _edit(ws, main, at, "G01 X0. Y1. F0.001", 1)  # one very slow move: the timer passes 1000 s
+        _same_as_from_scratch(tmp_path, ws, main)
+        assert any(d[6] == "division-by-zero" for d in snapshot(ws, main)[0]), name
+
+
+def test_8_machine_a_program_that_never_reads_the_clock_converges_on_other_times(tmp_path, monkeypatch):
+    """The same slow move in a program that never reads the clock converges all the same."""
+    monkeypatch.setattr(run_checks, "CHUNK", 10)
+    ws, main = _open_program(tmp_path, "STRAIGHT", STRAIGHT)
+    snapshot(ws, main)
+    _edit(ws, main, 3, "G01 X0. Y1. F0.001", 1)
+    _same_as_from_scratch(tmp_path, ws, main)
+    assert _run_of(ws).rerun_blocks <= 20

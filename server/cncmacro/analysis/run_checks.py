@@ -6,7 +6,11 @@ chunks of ``CHUNK`` blocks and keeps a ``Snapshot`` at every chunk boundary, the
 each line first ran, and what the watched blocks reported (vacant argument reads, values
 written), each stamped with the chunk it came from. ``rewind(step)`` restores the last
 checkpoint at or before a step and forgets everything found after it, so that after an edit
-only the part of the run that can differ is run again (see ``workspace.py`` for which step).
+only the part of the run that can differ is run again (see ``workspace.py`` for which step);
+the run as it was is kept, and as soon as the resumed run reaches a state the earlier run had
+and the edited lines do not run again, the rest of the earlier run is taken over instead of
+being run again (``run_convergence.py``). The machine stamps each line it executes with the
+serial of its chunk (``Machine.last_run``) so that this can be decided.
 
 ``run_diagnostics`` turns the state of a finished run into diagnostics: the alarm it stopped
 with (mapped by ``alarm_codes``), the block budget running out, clamped repeat counts and
@@ -14,10 +18,19 @@ vacant argument reads, each at the block where it happened, in that block's file
 call chain, the block count and, inside a loop, which pass of the innermost loop it was
 (counted by the analysis-only ``on_loop_pass`` hook, kept with each checkpoint) in the message
 and the call sites as ``related`` places.
+
+Limits keep a run bounded in time and memory whatever the program does: the block budget
+(``max_blocks``), a wall-clock limit (``max_seconds``, counted from the start or the last
+rewind, across cancelled and resumed advances) and a cap on what the machine records
+(``max_records`` notes: messages, DPRNT output, call remarks). A run that reaches one stops
+with a ``run-limit`` diagnostic saying which. Checkpoints are kept at chunk boundaries only
+(a ``#3006`` pause in a loop does not add one) and, beyond ``MAX_CHECKPOINTS``, every other
+one is dropped and the interval doubled.
 """
 
 from __future__ import annotations
 
+import time
 from bisect import bisect_left
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -33,9 +46,13 @@ from ..machine.machine import ALARM, FINISHED, LIMIT, PAUSED, READY, STOPPED
 from .alarm_codes import MACRO_ALARM, alarm_code
 from .diagnostics import Diagnostic, Related
 from .locale import pick
+from .run_convergence import Earlier, keep_earlier, try_converge
 from .severity import CODES
 
-CHUNK = 5000
+CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again before converging
+MAX_SECONDS = 30.0  # wall-clock limit of one run
+MAX_RECORDS = 100_000  # notes (messages, DPRNT output, remarks) one run may record
+MAX_CHECKPOINTS = 400  # beyond this, every other checkpoint is dropped
 
 Value = float | None
 
@@ -62,7 +79,9 @@ class RunState:
     # and when; both increase, so the first step at or after a line is one bisection away
     reach: dict[str, tuple[list[int], list[int]]] = field(default_factory=dict)
     vacant: dict[tuple[str, int, int], VacantRead] = field(default_factory=dict)
-    written: dict[str, dict[int, tuple[int, int, Value]]] = field(default_factory=dict)  # line -> (stamp, #n, v)
+    # file -> line -> [(stamp, #n, value)]: the value the line left last in each chunk it assigned
+    # in, oldest first, so that going back to a checkpoint finds the value the line left before it
+    written: dict[str, dict[int, list[tuple[int, int, Value]]]] = field(default_factory=dict)
 
 
 class EntryRun:
@@ -75,17 +94,30 @@ class EntryRun:
         settings: MachineSettings,
         library: ProgramLibrary,
         max_blocks: int,
+        max_seconds: float = MAX_SECONDS,
+        max_records: int = MAX_RECORDS,
     ) -> None:
         self.entry = entry
         self.dialect = dialect
         self.settings = settings
         self.library = library
         self.max_blocks = max(1, max_blocks)
+        self.max_seconds = max_seconds
+        self.max_records = max_records
+        self.interval = CHUNK  # blocks between checkpoints
+        self.elapsed = 0.0  # seconds spent running since the start or the last rewind
+        self.stopped_by: str | None = None  # "time" or "records" when a limit other than the budget ended it
         self.machine: Machine
         self.checkpoints: list[Snapshot] = []
         self.passes: dict[tuple[int, int], int] = {}  # (level, DO line) -> the pass of the loop running there
         self.pass_marks: list[dict[tuple[int, int], int]] = []  # ``passes`` at each checkpoint
         self.stamp = 0
+        self.serial = 0
+        # chunk serial -> (first step of the chunk, True), or (last step it may stand for, False)
+        self.serials: dict[int, tuple[int, bool]] = {}
+        self.earlier: Earlier | None = None  # the run before the edits, until this one converges
+        self.rerun_blocks = 0  # blocks run since the last edit
+        self.reads_clock: Callable[[str], bool] = lambda path: True  # may a program of this file read the clock?
         self.restart()
 
     # ---------------------------------------------------------------- running
@@ -98,6 +130,7 @@ class EntryRun:
         m.on_vacant_argument = self._vacant
         m.on_write = self._write
         m.on_loop_pass = self._loop_pass
+        m.last_run = {}
         m.start(self.entry)
         self.machine = m
         self.state = RunState()
@@ -105,6 +138,11 @@ class EntryRun:
         self.passes = {}
         self.pass_marks = [{}]
         self.stamp = 0
+        self.interval = CHUNK
+        self.elapsed = 0.0
+        self.stopped_by = None
+        self.serials = {}
+        self.earlier = None
 
     @property
     def finished(self) -> bool:
@@ -122,19 +160,63 @@ class EntryRun:
             if should_cancel is not None and should_cancel():
                 return False
             left = self.max_blocks - m.blocks
-            chunk = min(CHUNK, left)
-            self.stamp = m.blocks
+            chunk = min(max(1, self.interval - (m.blocks - self.checkpoints[-1].blocks)), left)
+            self.stamp = before = m.blocks
+            m.track_serial = self.new_serial(m.blocks)
+            began = time.perf_counter()
             status = m.run(chunk, is_limit=chunk >= left)
+            self.elapsed += time.perf_counter() - began
+            self.rerun_blocks += m.blocks - before
             if status == PAUSED:
                 m.resume()  # M00, #3006 and the end of a chunk: a simulation goes on
-                self.checkpoints.append(m.snapshot())
-                self.pass_marks.append(dict(self.passes))
+                if m.blocks - self.checkpoints[-1].blocks >= self.interval:
+                    self.checkpoint()
+                    if self.earlier is not None and self.checkpoints[-1].blocks == m.blocks:
+                        try_converge(self)
+            if not self.finished and (self.elapsed > self.max_seconds or len(m.notes) > self.max_records):
+                self.stopped_by = "time" if self.elapsed > self.max_seconds else "records"
+                m.status = LIMIT
+        self.earlier = None
         return True
+
+    def new_serial(self, step: int, known: bool = True) -> int:
+        """A serial for the chunk starting at ``step`` (or a vague one: ran by ``step`` or never)."""
+        self.serial += 1
+        self.serials[self.serial] = (step, known)
+        return self.serial
+
+    def checkpoint(self) -> None:
+        """Keep the machine's state here; thin the checkpoints out when there are too many."""
+        self.checkpoints.append(self.machine.snapshot())
+        self.pass_marks.append(dict(self.passes))
+        if len(self.checkpoints) > MAX_CHECKPOINTS:
+            self.checkpoints[:] = self.checkpoints[::2]
+            self.pass_marks[:] = self.pass_marks[::2]
+            self.interval *= 2
+
+    def edited(self, path: str, lines: list[int] | None) -> None:
+        """An edit changed ``lines`` of ``path`` (None: its structure or line count) and the
+        run is about to be taken back: keep the run as it was to converge with (see
+        ``run_convergence.py``), unless lines moved."""
+        self.rerun_blocks = 0
+        if lines is None:
+            self.earlier = None
+            return
+        if self.earlier is None and self.finished and self.stopped_by is None:
+            self.earlier = keep_earlier(self)
+        if self.earlier is not None:
+            self.earlier.changed.setdefault(path, set()).update(lines)
 
     def rewind(self, step: int, avoid_file: str | None = None) -> None:
         """Go back to the last checkpoint at or before ``step`` (before it, and before any
         G66 that names ``avoid_file``, when that file's structure changed) and forget what
         was found after it."""
+        if avoid_file is not None:
+            self.earlier = None
+        self.back_to(step, avoid_file)
+
+    def back_to(self, step: int, avoid_file: str | None = None) -> None:
+        """``rewind`` without touching the earlier run kept for converging."""
         strict = avoid_file is not None
         keep = 0
         for k, snap in enumerate(self.checkpoints):
@@ -150,22 +232,42 @@ class EntryRun:
         del self.checkpoints[keep + 1 :]
         del self.pass_marks[keep + 1 :]
         self.passes = dict(self.pass_marks[keep])
+        self.elapsed = 0.0
+        self.stopped_by = None
         m = self.machine
         m.restore(snap)
         at = snap.blocks
         self._forget(at)
+        if self.earlier is not None:
+            self.earlier.resume = min(self.earlier.resume, at)
         if m.status == PAUSED:
             m.resume()
 
     def _forget(self, at: int) -> None:
+        """Forget what was found at or after step ``at``; the lines it ran are reported again
+        (``on_first_run``) when they next run, the machine's floor being raised. When the
+        earlier run kept for converging holds the records, they stay as they are for it."""
         m = self.machine
+        serials = self.serials
+        for s, (step, _) in serials.items():
+            if step >= at:
+                serials[s] = (at - 1, False)  # the line ran before ``at``, or never
+        m.track_floor = self.serial + 1
         st = self.state
         cut = bisect_left(st.order, (at, "", -1))
+        if self.earlier is not None and self.earlier.state is st:
+            if cut < len(st.order) // 2:
+                self.state = _records_before(st, at, cut)
+                return
+            self.state = st = RunState(
+                {f: dict(d) for f, d in st.first.items()}, list(st.order), dict(st.file_first),
+                {f: (list(a), list(b)) for f, (a, b) in st.reach.items()}, dict(st.vacant),
+                {f: {line: list(h) for line, h in d.items()} for f, d in st.written.items()},
+            )  # fmt: skip
         for _, path, line in st.order[cut:]:
-            del st.first[path][line]
-            cf = m.compiled.get(path)
-            if cf is not None and line < len(cf.code) - 1:
-                cf.code[line] = None  # compiled again, and so recorded again, when it runs
+            lines = st.first[path]
+            if lines.get(line, -1) >= at:  # else recorded twice (converging keeps both records)
+                del lines[line]
         del st.order[cut:]
         for path in [p for p, s in st.file_first.items() if s >= at]:
             del st.file_first[path]
@@ -180,14 +282,23 @@ class EntryRun:
         for key in [k for k, v in vacant.items() if v.stamp >= at]:
             del vacant[key]
         for lines in self.state.written.values():
-            for line in [line for line, w in lines.items() if w[0] >= at]:
-                del lines[line]
+            for line in [line for line, h in lines.items() if h[-1][0] >= at]:
+                h = lines[line]
+                del h[bisect_left(h, (at,)) :]
+                if not h:
+                    del lines[line]
 
     def reset_file(self, path: str) -> None:
         """The file's text changed in structure or length: compile it afresh when it runs."""
-        cf = self.machine.compiled.get(path)
+        m = self.machine
+        cf = m.compiled.get(path)
+        if self.earlier is not None and path in self.earlier.last_run:
+            self.earlier = None
         if cf is not None:
             cf.reset()
+            if m.last_run is not None and path in m.last_run:
+                m.last_run[path] = [self.new_serial(m.blocks - 1, known=False)] * len(cf.code)
+                m.track_floor = self.serial + 1
 
     def forget_lines(self, path: str, lines: list[int]) -> None:
         """These lines of ``path`` changed: compile them afresh when they run."""
@@ -228,7 +339,13 @@ class EntryRun:
         lines = self.state.written.get(file)
         if lines is None:
             lines = self.state.written[file] = {}
-        lines[line] = (self.stamp, number, value)
+        h = lines.get(line)
+        if h is None:
+            lines[line] = [(self.stamp, number, value)]
+        elif h[-1][0] == self.stamp:
+            h[-1] = (self.stamp, number, value)
+        else:
+            h.append((self.stamp, number, value))
 
     def first_reaching(self, path: str, line: int) -> int | None:
         """The first step at which ``line`` or any later line of ``path`` ran."""
@@ -247,6 +364,25 @@ class EntryRun:
             return self.state.file_first.get(path)
         steps = [s for line in lines if (s := recorded.get(line)) is not None]
         return min(steps) if steps else None
+
+
+def _records_before(st: RunState, at: int, cut: int) -> RunState:
+    """A new ``RunState`` with what ``st`` found before step ``at`` (``cut`` entries of its order)."""
+    out = RunState(order=st.order[:cut])
+    for step, path, line in out.order:
+        out.first.setdefault(path, {}).setdefault(line, step)
+    out.file_first = {f: s for f, s in st.file_first.items() if s < at}
+    for path, (lines, steps) in st.reach.items():
+        k = bisect_left(steps, at)
+        if k:
+            out.reach[path] = (lines[:k], steps[:k])
+    out.vacant = {key: v for key, v in st.vacant.items() if v.stamp < at}
+    for f, d in st.written.items():
+        kept = out.written[f] = {}
+        for line, h in d.items():
+            if h[0][0] < at:
+                kept[line] = h[:] if h[-1][0] < at else h[: bisect_left(h, (at,))]
+    return out
 
 
 # ---------------------------------------------------------------- diagnostics of a run
@@ -277,8 +413,17 @@ def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale:
         out.append(_diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale))
     elif m.status == LIMIT and m.frames:
         f = m.frames[-1]
-        en = f"the analysis run stopped here after {m.blocks} blocks, its budget (an endless loop?)"
-        zh = f"分析运行在 {m.blocks} 个程序段后于此处停止（达到上限，可能是死循环）"
+        if run.stopped_by == "time":
+            en = f"the analysis run stopped here after {m.blocks} blocks and {run.max_seconds:g} s, its time limit"
+            zh = f"分析运行在 {m.blocks} 个程序段、{run.max_seconds:g} 秒后于此处停止（达到时间上限）"
+        elif run.stopped_by == "records":
+            en = (f"the analysis run stopped here after {m.blocks} blocks: it recorded more than "
+                  f"{run.max_records} messages and outputs, its memory limit")
+            zh = (f"分析运行在 {m.blocks} 个程序段后于此处停止："
+                  f"记录的消息和输出超过 {run.max_records} 条（达到内存上限）")
+        else:
+            en = f"the analysis run stopped here after {m.blocks} blocks, its budget (an endless loop?)"
+            zh = f"分析运行在 {m.blocks} 个程序段后于此处停止（达到上限，可能是死循环）"
         out.append(_diagnostic(f.file, f.pc, "run-limit", en, zh, m.chain(), None, False, line_text, locale))
     for note in m.notes:
         if note.kind == "call" and note.subject == "repeat-count":

@@ -29,7 +29,11 @@ run keeps checkpoints and the step at which each line first ran. After an edit t
 the number of lines and touches no label, O header or loop marker, a run resumes from its
 last checkpoint before the first execution of a changed line (or of the nearest line before
 the change, whose compiled form knows which line follows it); a run that never executed them
-is kept whole. An edit that adds or removes lines (Enter) resumes a run from its last
+is kept whole. The resumed run takes the rest of the run before the edit over as soon as its
+state equals that run's state at one of its checkpoints and the edited lines do not run after
+it (``run_convergence.py``), so that an edit near the start of a long program runs only a few
+chunks again; whether a file may read the simulated clock, which then has to be equal too, is
+counted per open document from its text. An edit that adds or removes lines (Enter) resumes a run from its last
 checkpoint before it first reached the line before the edit or any later line of the file:
 nothing it keeps refers to a moved line, and the file is compiled afresh as it runs. An edit
 that changes labels, loops or '%' resumes each run from before the first time it entered the
@@ -39,6 +43,7 @@ again.
 
 from __future__ import annotations
 
+import gc
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -55,7 +60,7 @@ from ..syntax.program import ProgramUnit
 from . import static_checks
 from .diagnostics import UNNECESSARY, Diagnostic
 from .locale import pick
-from .run_checks import EntryRun, run_diagnostics
+from .run_checks import MAX_RECORDS, MAX_SECONDS, EntryRun, run_diagnostics
 from .severity import apply_severities, check_overrides
 from .static_lines import StaticLines
 
@@ -97,6 +102,7 @@ class _Open:
     static: StaticLines | None = None  # the per-line part of ``own``, kept across edits
     targets: tuple[set[int], set[str]] | None = None  # literal call targets
     edits: list[_Edit] = field(default_factory=list)
+    clock_reads: int | None = None  # how many places may read the clock (``_CLOCK_READ``)
 
 
 class WorkspaceAnalysis:
@@ -117,9 +123,12 @@ class WorkspaceAnalysis:
         self.search_paths = [str(p) for p in search_paths]
         self.locale = locale
         self.max_blocks = max_blocks if max_blocks is not None else self.settings.max_blocks
+        self.max_seconds = MAX_SECONDS  # each run's wall-clock limit and record cap (run_checks.py)
+        self.max_records = MAX_RECORDS
         self.severities = check_overrides(dict(severities or {}))
         self.docs: dict[str, _Open] = {}
         self.runs: dict[tuple[str, int], EntryRun] = {}
+        self._disk_clock: dict[str, tuple[LoadedFile, bool]] = {}  # files not open: can they read the clock?
         self.stale = True  # every run starts again
         self.library = ProgramLibrary(self.search_paths)
 
@@ -145,9 +154,12 @@ class WorkspaceAnalysis:
         sl = min(max(start_line, 0), n - 1)
         el = min(max(end_line, sl), n - 1)
         old = doc.blocks[sl : el + 1]
+        before = _clock_reads(doc.lines[sl : el + 1]) if d.clock_reads is not None else 0
         doc.apply_change(start_line, start_col, end_line, end_col, text)
         delta = len(doc.lines) - n
         new = doc.blocks[sl : el + 1 + delta]
+        if d.clock_reads is not None:
+            d.clock_reads += _clock_reads(doc.lines[sl : el + 1 + delta]) - before
         d.version = version
         d.own = None
         if d.static is not None:
@@ -184,6 +196,20 @@ class WorkspaceAnalysis:
     def document(self, path: str) -> ParsedDocument | None:
         d = self.docs.get(self._key(path))
         return d.doc if d is not None else None
+
+    def configure(self, *, settings: MachineSettings | None = None, dialect: str | None = None,
+                  max_blocks: int | None = None, severities: dict[str, str] | None = None) -> None:  # fmt: skip
+        """New settings (the editor's changed, or the machine file): the severities apply to
+        the next result; another machine file, dialect or budget runs everything again."""
+        severities = check_overrides(dict(severities or {}))
+        settings = settings or MachineSettings()
+        budget = max_blocks if max_blocks is not None else settings.max_blocks
+        if settings != self.settings or dialect != self.dialect_setting or budget != self.max_blocks:
+            self.settings, self.dialect_setting, self.max_blocks = settings, dialect, budget
+            for d in self.docs.values():
+                d.own = d.static = d.targets = None
+            self.stale = True
+        self.severities = severities
 
     # ---------------------------------------------------------------- dialects and calls
     def dialect_of(self, lines: list[str]) -> Dialect:
@@ -232,6 +258,18 @@ class WorkspaceAnalysis:
 
     # ---------------------------------------------------------------- analysing
     def analyze(self, path: str, should_cancel: Callable[[], bool] | None = None) -> AnalysisResult | None:
+        """See the module docstring. Python's cycle collector is paused meanwhile, as during a
+        machine run: the analysis makes no garbage cycles, and a collection walking the
+        compiled blocks and records of a large file cost more than an edit's whole analysis."""
+        was_enabled = gc.isenabled()
+        gc.disable()
+        try:
+            return self._analyze(path, should_cancel)
+        finally:
+            if was_enabled:
+                gc.enable()
+
+    def _analyze(self, path: str, should_cancel: Callable[[], bool] | None) -> AnalysisResult | None:
         key = self._key(path)
         version = self.docs[key].version if key in self.docs else None
         units = self._units()
@@ -258,7 +296,9 @@ class WorkspaceAnalysis:
         run = self.runs.get(k)
         if run is None:
             dialect = self.dialect_of(found.file.lines)
-            run = self.runs[k] = EntryRun(found, dialect, self.settings, self.library, self.max_blocks)
+            run = self.runs[k] = EntryRun(found, dialect, self.settings, self.library, self.max_blocks,
+                                          self.max_seconds, self.max_records)  # fmt: skip
+            run.reads_clock = self._reads_clock
         elif run.entry.unit is not found.unit:
             run.entry = found
             run.restart()
@@ -299,6 +339,8 @@ class WorkspaceAnalysis:
             run.reset_file(path)
             return
         step = run.first_step(path, lines)
+        if step is not None or run.earlier is not None:
+            run.edited(path, lines)
         if step is not None:
             run.rewind(step)
         run.forget_lines(path, lines)
@@ -326,6 +368,22 @@ class WorkspaceAnalysis:
             run.rewind(step, avoid_file=path)
         run.reset_file(path)
         return True
+
+    def _reads_clock(self, path: str) -> bool:
+        """Whether a program of ``path`` may read the simulated clock (a timer, the date or
+        time, or any variable through indirection); a comment mentioning one counts too."""
+        d = self.docs.get(path)
+        if d is not None:
+            if d.clock_reads is None:
+                d.clock_reads = _clock_reads(d.doc.lines)
+            return d.clock_reads > 0
+        loaded = self.library.load(path)
+        if loaded is None:
+            return True
+        cached = self._disk_clock.get(path)
+        if cached is None or cached[0] is not loaded:
+            cached = self._disk_clock[path] = (loaded, _clock_reads(loaded.lines) > 0)
+        return cached[1]
 
     # ---------------------------------------------------------------- results
     def _line_text(self, file: str, line: int) -> str:
@@ -364,7 +422,8 @@ class WorkspaceAnalysis:
         for run in self.runs.values():
             for file, lines in run.state.written.items():
                 per = values.setdefault(file, {})
-                for line, (_, n, v) in lines.items():
+                for line, h in lines.items():
+                    _, n, v = h[-1]
                     per[line] = [(n, v)]
         out = {}
         for path, diags in by_file.items():
@@ -410,6 +469,18 @@ class WorkspaceAnalysis:
         zh = "分析运行从未执行到此程序段" if first == last else f"分析运行从未执行到这 {n} 行"
         return Diagnostic(file, first, 0, last, max(1, len(lines[last].rstrip())), "hint", "not-executed",
                           pick(self.locale, en, zh), (), (UNNECESSARY,))  # fmt: skip
+
+
+_CLOCK_NUMBERS = sorted({
+    str(n) for name in ("fanuc", "gsk980tdi") for row in get_dialect(name).system_variables()
+    if row.source in ("timer", "date", "time") for n in range(row.first, row.last + 1)
+})  # fmt: skip
+# a read of the clock: ``#[``, a clock variable, or a GSK ``#9xxx`` (indirection through a common)
+_CLOCK_READ = re.compile(r"#[ \t]*(?:\[|0*(?:" + "|".join(_CLOCK_NUMBERS) + r"|9\d{3})(?!\d))")
+
+
+def _clock_reads(lines: list[str]) -> int:
+    return len(_CLOCK_READ.findall("\n".join(lines)))
 
 
 def _skipped(b: Block, settings: MachineSettings) -> bool:

@@ -26,6 +26,7 @@ from .calls import Arguments, map_arguments, repeat_count
 from .expressions import VariableKinds
 from .frames import Frame, ModalCall, Move, Note
 from .motion import Motion
+from .tracking import run_tracked
 from .variables import StopRequest, VariableAccess
 
 Value = float | None
@@ -101,6 +102,12 @@ class Machine(VariableAccess, Motion):
         self.on_vacant_argument: Callable[[int, str, int, tuple[CallSite, ...]], None] | None = None
         self.on_write: Callable[[str, int, int, Value], None] | None = None
         self.on_loop_pass: Callable[[int, int, bool], None] | None = None  # (level, DO line, again)
+        # ``last_run`` (file -> per-line serial, -1 never) makes ``run`` stamp each executed
+        # line with ``track_serial`` and report lines not run since ``track_floor`` to
+        # ``on_first_run`` (see tracking.py); None for plain runs.
+        self.last_run: dict[str, list[int]] | None = None
+        self.track_serial = -1
+        self.track_floor = 0
         self.L: list[Value] = [None] * 34
         self.C: list[Value] = [None] * 1000
         self.S: dict[int, Value] = {}
@@ -265,6 +272,8 @@ class Machine(VariableAccess, Motion):
         was_enabled = gc.isenabled()
         gc.disable()
         try:
+            if self.last_run is not None:
+                return run_tracked(self, max_blocks, is_limit)
             return self._run(max_blocks, is_limit)
         finally:
             if was_enabled:

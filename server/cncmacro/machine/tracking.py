@@ -1,0 +1,163 @@
+"""What an analysis run needs from the machine beyond a plain run: which chunk last ran each line,
+and whether two snapshots hold the same state.
+
+``run_tracked`` is ``Machine._run`` with one more store per block: the line about to run is
+stamped with ``Machine.track_serial`` in ``Machine.last_run`` (file path -> one slot per line,
+-1 for never), so that an incremental analysis can tell whether an edited line runs again
+after a given point of an earlier run. A line whose stamp is below ``Machine.track_floor``
+has not run since the analysis last set the floor (after going back to a checkpoint), and
+``on_first_run`` hears of it, instead of hearing of each line when it is compiled: the
+analysis can then go back without compiling every later line again. It is a separate loop
+so that plain runs and the debugger pay nothing for it. ``same_state`` compares two snapshots in everything that can
+influence later execution or findings (variables of every frame, commons, system store,
+frames with their pcs, loops and repeats, modal state, codes, positions, modal calls, the
+status), and the simulated clock only when asked to; block counts and list lengths are not
+compared. Floats compare exactly, and a zero's sign counts (``ATAN[0]/[-0]`` differs).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from typing import TYPE_CHECKING, Any
+
+from .alarms import Alarm, MacroAlarm
+from .frames import Frame, Note
+from .variables import StopRequest
+
+if TYPE_CHECKING:
+    from .machine import Machine, Snapshot
+
+CANCEL_CHECK = 4096
+
+
+def track_list(m: Machine, cf: Any) -> list[int]:
+    """The per-line serials of ``cf``'s file (made, all -1, the first time the file runs)."""
+    path = cf.file.path
+    trk = m.last_run.get(path)
+    if trk is None or len(trk) != len(cf.code):
+        trk = m.last_run[path] = [-1] * len(cf.code)
+    return trk
+
+
+def run_tracked(m: Machine, max_blocks: int | None, is_limit: bool) -> str:
+    """``Machine._run``, stamping each executed line (see the module docstring)."""
+    from .machine import ALARM, LIMIT, PAUSED, RUNNING, STOPPED
+
+    budget = m.settings.max_blocks if max_blocks is None else max_blocks
+    limit = m.blocks + budget
+    m.status = RUNNING
+    m.message = None
+    serial = m.track_serial
+    floor = m.track_floor
+    first = m.on_first_run
+    frame = m.frames[-1]
+    cf = frame.code
+    code = cf.code
+    trk = track_list(m, cf)
+    pc = frame.pc
+    n = m.blocks
+    try:
+        while True:
+            if n >= limit:
+                m.status = LIMIT if is_limit else PAUSED
+                break
+            c = code[pc]
+            if c is None:
+                c = cf.runner(pc)
+            if trk[pc] < floor and first is not None:
+                first(cf.file.path, pc, n)
+            trk[pc] = serial
+            n += 1
+            pc = c(m, pc)
+            if pc < 0:
+                if m.status != RUNNING:
+                    break
+                frame = m.frames[-1]
+                cf = frame.code
+                code = cf.code
+                trk = track_list(m, cf)
+                pc = frame.pc
+            if not n % CANCEL_CHECK and (m.cancel_requested or m.pause_requested):
+                if m.cancel_requested:
+                    m.status = STOPPED
+                else:
+                    m.pause_requested = False
+                    m.status = PAUSED
+                break
+    except MacroAlarm as e:
+        m.blocks = n
+        m.frames[-1].pc = pc
+        m.alarm = Alarm(e.number, e.message, m.frames[-1].file, pc, m.chain(), e.subject)
+        m.status = ALARM
+        return m.status
+    except StopRequest as e:
+        m.blocks = n
+        f = m.frames[-1]
+        f.pc = f.code.next_line(pc)
+        m.status = PAUSED
+        m.message = e.message
+        m.notes.append(Note("message", e.message, f.file, pc))
+        return m.status
+    m.blocks = n
+    if pc >= 0:
+        m.frames[-1].pc = pc
+    return m.status
+
+
+# ---------------------------------------------------------------- comparing states
+
+
+def same_values(a: Iterable[Any], b: Iterable[Any]) -> bool:
+    """Equal sequences of values (floats or vacant), a zero's sign included."""
+    a, b = list(a), list(b)
+    if a != b:
+        return False
+    return all(math.copysign(1.0, x) == math.copysign(1.0, y) for x, y in zip(a, b, strict=True) if x == 0.0)
+
+
+def _same_map(a: dict[Any, Any], b: dict[Any, Any]) -> bool:
+    if a != b:
+        return False
+    return same_values(a.values(), (b[k] for k in a))
+
+
+def position_key(frames: list[Frame]) -> tuple[Any, ...]:
+    """Where a machine is: each frame's program, line, loops and pass count (for lookups;
+    ``same_state`` compares everything)."""
+    return tuple((id(f.found.file), f.found.unit.start, f.pc, f.kind, tuple(f.loops), f.repeats) for f in frames)
+
+
+def _same_frames(a: list[Frame], b: list[Frame]) -> bool:
+    if len(a) != len(b):
+        return False
+    for k, (x, y) in enumerate(zip(a, b, strict=True)):
+        if (x.found.file is not y.found.file or x.found.unit is not y.found.unit or x.code is not y.code
+                or x.pc != y.pc or x.kind != y.kind or x.macro_level != y.macro_level or x.call_line != y.call_line
+                or x.return_pc != y.return_pc or x.repeats != y.repeats or x.start_pc != y.start_pc
+                or x.loops != y.loops or (x.modal is not y.modal and x.modal != y.modal) or x.written != y.written
+                or x.letters != y.letters or not _same_map(x.arguments, y.arguments)):  # fmt: skip
+            return False
+        if k and (x.locals is a[k - 1].locals) != (y.locals is b[k - 1].locals):
+            return False  # an M98 level shares its caller's locals in one and not the other
+        if not same_values(x.locals, y.locals):
+            return False
+    return True
+
+
+def same_state(a: Snapshot, b: Snapshot, *, clock: bool) -> bool:
+    """Whether runs continuing from ``a`` and from ``b`` behave alike (module docstring)."""
+    if (a.status != b.status or a.alarm is not b.alarm or a.message != b.message or a.extra_wcs != b.extra_wcs
+            or a.modal_calls != b.modal_calls or a.written_system != b.written_system):  # fmt: skip
+        return False
+    if not same_values([a.cycle_start_z], [b.cycle_start_z]):
+        return False
+    if clock and (a.clock != b.clock or a.timer_marks != b.timer_marks):
+        return False
+    if not same_values(a.C, b.C) or not _same_map(a.S, b.S) or not _same_map(a.modal, b.modal):
+        return False
+    if not _same_map(a.codes, b.codes):
+        return False
+    if not all(same_values(x, y) for x, y in zip(a.positions, b.positions, strict=True)):
+        return False
+    return _same_frames(a.frames, b.frames)
