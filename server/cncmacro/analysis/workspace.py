@@ -3,7 +3,9 @@
 ``WorkspaceAnalysis`` is what the command line and the language server use::
 
     ws = WorkspaceAnalysis(settings=..., dialect="fanuc", search_paths=[...], locale="en",
-                           max_blocks=None, severities={"macro-alarm": "error"})
+                           max_blocks=None, severities={"macro-alarm": "error"},
+                           workspace_folders=[...])
+    ws.set_workspace_folders([...])       # the editor's workspace folders changed
     ws.open(path, text, version)          # editor-owned text wins over the file on disk
     ws.change(path, l0, c0, l1, c1, text, version)   # an editor change (0-based positions)
     ws.close(path); ws.file_changed(path)            # closed; created/changed/deleted on disk
@@ -19,7 +21,17 @@ literal target (G65/G66/M98/call codes) runs on its own, with vacant arguments, 
 level 0 ending it; a called program is analysed through its callers, with their arguments,
 and its findings appear in its own file. A called program that no caller's run entered gets
 the static checks only: run on its own, its argument checks (``IF[#20 EQ #0] THEN #3000=..``)
-and divisions by arguments would report what no real call does. The dialect of a run is its entry file's:
+and divisions by arguments would report what no real call does.
+
+Callers on disk: an open program that no open file calls is looked for in the program files of
+the workspace folders (``call_index.py``: an index of literal calls, read lazily and kept per
+file by time and size; ``file_changed`` brings it up to date). When a file there calls it (the
+library's lookup from that file reaching it), it is analysed through the programs on disk
+that reach it, callers of callers up to a program nothing calls (``caller_entries.py``, at
+most ``MAX_CALLER_ENTRIES`` of them), loaded from disk; an open file's text always wins over
+its file. Their runs are incremental like any other, and report only what they find in open
+files: a caller that was not opened is run for its arguments, not reported. Only the
+workspace folders and the search paths are ever read. The dialect of a run is its entry file's:
 a ``(cncmacro: dialect=..)`` comment in the first lines, then the machine file's
 ``dialect``, then ``dialect`` given here, then ``fanuc``.
 
@@ -44,6 +56,7 @@ again.
 from __future__ import annotations
 
 import gc
+import logging
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -58,13 +71,18 @@ from ..syntax.document import ParsedDocument
 from ..syntax.nodes import Block
 from ..syntax.program import ProgramUnit
 from . import static_checks
+from .call_index import CallIndex
+from .caller_entries import CallerSearch
 from .diagnostics import UNNECESSARY, Diagnostic
 from .locale import pick
 from .run_checks import MAX_RECORDS, MAX_SECONDS, EntryRun, run_diagnostics
 from .severity import apply_severities, check_overrides
 from .static_lines import StaticLines
 
+log = logging.getLogger(__name__)
+
 Value = float | None
+MAX_CALLER_ENTRIES = 16  # programs on disk run to reach the open ones, at most
 _DIGITS = re.compile(r"^[Oo]?(\d{1,8})$")
 RUN_ALARM_CODES = frozenset({
     "program-not-found", "nesting-depth", "division-by-zero", "argument-range", "syntax", "variable-number",
@@ -117,6 +135,7 @@ class WorkspaceAnalysis:
         locale: str = "en",
         max_blocks: int | None = None,
         severities: dict[str, str] | None = None,
+        workspace_folders: list[str] = (),  # type: ignore[assignment]
     ) -> None:
         self.settings = settings or MachineSettings()
         self.dialect_setting = dialect
@@ -131,6 +150,19 @@ class WorkspaceAnalysis:
         self._disk_clock: dict[str, tuple[LoadedFile, bool]] = {}  # files not open: can they read the clock?
         self.stale = True  # every run starts again
         self.library = ProgramLibrary(self.search_paths)
+        self.workspace_folders = [str(p) for p in workspace_folders]
+        self.index: CallIndex | None = None  # made at the first question (``_find_disk_entries``)
+        self._entries: dict[tuple[str, int], FoundProgram] | None = None  # callers on disk that run
+        self._called_from_disk: set[tuple[str, int]] = set()  # open programs that callers on disk reach
+
+    def set_workspace_folders(self, folders: list[str]) -> None:
+        """The folders whose program files may call the open ones (the editor's workspace
+        folders; for the command line the checked files' folders and the search paths)."""
+        folders = [str(p) for p in folders]
+        if folders != self.workspace_folders:
+            self.workspace_folders = folders
+            self.index = None
+            self._entries = None
 
     # ---------------------------------------------------------------- documents
     @staticmethod
@@ -179,11 +211,14 @@ class WorkspaceAnalysis:
         self._reload()
 
     def file_changed(self, path: str) -> None:
+        if self.index is not None:
+            self.index.changed(self._key(path))
         self._reload()
 
     def _reload(self) -> None:
         """A fresh library (disk files read again), the open documents still in it."""
         self.library = ProgramLibrary(self.search_paths)
+        self._entries = None
         for d in self.docs.values():
             loaded = self.library.add_text(d.path, d.doc.text)
             loaded.lines = d.doc.lines
@@ -208,6 +243,8 @@ class WorkspaceAnalysis:
             self.settings, self.dialect_setting, self.max_blocks = settings, dialect, budget
             for d in self.docs.values():
                 d.own = d.static = d.targets = None
+            self.index = None
+            self._entries = None
             self.stale = True
         self.severities = severities
 
@@ -256,6 +293,40 @@ class WorkspaceAnalysis:
                 out.append(((path, k), FoundProgram(d.loaded, unit), called))
         return out
 
+    # ---------------------------------------------------------------- callers on disk
+    def _find_disk_entries(self, units: list[tuple[tuple[str, int], FoundProgram, bool]]) -> None:
+        """Which open programs that no open file calls are called from files on disk in the
+        workspace folders (``_called_from_disk``), and the programs on disk that runs start
+        from to reach them (``_entries``): the callers' callers, up to a program nothing
+        calls. A call counts when the library's lookup from the calling file reaches the
+        program (``caller_entries.py``)."""
+        self._entries = {}
+        self._called_from_disk = set()
+        if not self.workspace_folders or all(called for _, _, called in units):
+            return
+        if self.index is None:
+            self.index = CallIndex(self.workspace_folders, self.settings, self.dialect_setting, self.locale)
+        targets = {path: self._targets(d) for path, d in self.docs.items()}
+        finder = CallerSearch(self.library, self.index, list(self.docs))
+        for key, found, called in units:
+            if called:
+                continue
+            numbers: set[int] = set()  # what the other open files call: their runs reach those programs
+            names: set[str] = set()
+            for path, (n, s) in targets.items():
+                if path != key[0]:
+                    numbers |= n
+                    names |= s
+            roots = finder.roots(found, numbers, names)
+            if roots is None:
+                continue  # nothing on disk calls it: it runs on its own
+            self._called_from_disk.add(key)
+            for k, entry in roots.items():
+                if k not in self._entries and len(self._entries) >= MAX_CALLER_ENTRIES:
+                    log.info("more than %d programs on disk call the open ones: only the first run", MAX_CALLER_ENTRIES)
+                    break
+                self._entries[k] = entry
+
     # ---------------------------------------------------------------- analysing
     def analyze(self, path: str, should_cancel: Callable[[], bool] | None = None) -> AnalysisResult | None:
         """See the module docstring. Python's cycle collector is paused meanwhile, as during a
@@ -272,7 +343,12 @@ class WorkspaceAnalysis:
     def _analyze(self, path: str, should_cancel: Callable[[], bool] | None) -> AnalysisResult | None:
         key = self._key(path)
         version = self.docs[key].version if key in self.docs else None
+        if self.stale or any(d.targets is None for d in self.docs.values()):
+            self._entries = None
         units = self._units()
+        if self._entries is None:
+            self._find_disk_entries(units)
+        assert self._entries is not None
         if self.stale:
             self.runs.clear()
             self.stale = False
@@ -283,7 +359,8 @@ class WorkspaceAnalysis:
                         self._rewind(run, d)
         for d in self.docs.values():
             d.edits.clear()
-        primary = {k: found for k, found, called in units if not called}
+        primary = {k: found for k, found, called in units if not called and k not in self._called_from_disk}
+        primary.update(self._entries)
         for k in [k for k in self.runs if k not in primary]:
             del self.runs[k]  # a called program is analysed only through its callers
         for k, found in primary.items():
@@ -409,8 +486,12 @@ class WorkspaceAnalysis:
                 seen.add((path, x.line, x.code))
                 if x.severity == "error":
                     errors.add((path, x.line))
-        for run in self.runs.values():
+        entries = self._entries or {}
+        for k, run in self.runs.items():
+            shown = self.docs if k in entries else None  # a caller on disk: findings in open files only
             for x in run_diagnostics(run, self._line_text, self.locale):
+                if shown is not None and x.file not in shown:
+                    continue
                 key = (x.file, x.line, x.code)
                 if key in seen or (x.code in RUN_ALARM_CODES and (x.file, x.line) in errors):
                     continue
@@ -419,8 +500,10 @@ class WorkspaceAnalysis:
         for x in self._not_executed():
             by_file.setdefault(x.file, []).append(x)
         values: dict[str, dict[int, list[tuple[int, Value]]]] = {}
-        for run in self.runs.values():
+        for k, run in self.runs.items():
             for file, lines in run.state.written.items():
+                if k in entries and file not in self.docs:
+                    continue
                 per = values.setdefault(file, {})
                 for line, h in lines.items():
                     _, n, v = h[-1]
@@ -434,11 +517,17 @@ class WorkspaceAnalysis:
     def _not_executed(self) -> list[Diagnostic]:
         """Ranges of blocks that no run reached, in the programs that some run entered."""
         executed: dict[str, set[int]] = {}
-        for run in self.runs.values():
+        shown = set(self.docs)  # the open files, and the files that runs from open files enter
+        entries = self._entries or {}
+        for k, run in self.runs.items():
             for file, lines in run.state.first.items():
                 executed.setdefault(file, set()).update(lines)
+                if k not in entries:
+                    shown.add(file)
         out: list[Diagnostic] = []
         for file, ran in executed.items():
+            if file not in shown:
+                continue
             loaded = self.docs[file].loaded if file in self.docs else self.library.load(file)
             if loaded is None:
                 continue

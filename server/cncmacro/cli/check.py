@@ -4,7 +4,8 @@ The files are grouped by their machine settings (``--machine``, else the ``.cncm
 nearest to each file, else the defaults) and each group is opened in a ``WorkspaceAnalysis``
 with its own settings (call codes, presets, severities): syntax, the static checks, and what bounded
 runs of the machine find (from each program nothing calls; called programs through their
-callers). Hints (``not-executed``) are printed only with ``--hints``. Exit status: 0 when no
+callers, also those on disk in the checked files' folders and the search paths, whose own
+findings are not printed). Hints (``not-executed``) are printed only with ``--hints``. Exit status: 0 when no
 error was found, 1 when one was, 2 on bad usage or unreadable input (a missing path, a binary
 file, a bad machine file). Unreadable files are named on standard error; the others are still
 checked.
@@ -70,8 +71,10 @@ def check_paths(
     for machine_file, files in groups.items():  # each file with the machine settings nearest to it
         try:
             settings = load_machine_file(machine_file) if machine_file is not None else MachineSettings()
+            folders = [*dict.fromkeys(str(path.parent) for path, _ in files), *(search_paths or [])]
             ws = WorkspaceAnalysis(settings=settings, dialect=dialect, search_paths=search_paths or [],
-                                   locale=locale, max_blocks=max_blocks, severities=settings.severity)  # fmt: skip
+                                   locale=locale, max_blocks=max_blocks, severities=settings.severity,
+                                   workspace_folders=folders)  # fmt: skip
         except (MachineFileError, ValueError) as e:
             print(f"cncmacro check: {e}", file=err)
             return 2

@@ -1,0 +1,223 @@
+"""Who calls whom among the program files on disk in the workspace folders.
+
+``CallIndex`` lists the program files under its folders (``library/files.py``'s rules: known
+endings or ``O1234`` names, hidden folders skipped, no link leading out of the folder) and
+records, per file, the calls with a literal target that it makes (``G65/G66 P``, ``M98 P``
+with its count digits, gsk980tdi ``P[NAME]``, the machine settings' call codes), each with
+the O program of the file that makes it. A file is read once and kept by (modification time,
+size); its text is first searched for a call word and parsed (with the shared block cache)
+only when it has one, and only its lines with a call word are looked at. ``callers`` answers
+which files name a number or a name: candidates only, since which file a call reaches is the
+library's lookup (``ProgramLibrary``), decided by the caller of this index.
+
+It is bounded: at most ``MAX_FILES`` files (more, and the index says so in the log and knows
+no callers, so that the analysis behaves as if it had no workspace) and files up to
+``MAX_FILE_BYTES`` (a larger one is logged and left out). It is built lazily, at the first
+question; ``changed(path)`` (a file created, changed or deleted) lists the folders again at the
+next question, reading only the files whose time or size changed.
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..dialects import get_dialect
+from ..library.dialect_choice import choose_dialect
+from ..library.files import BinaryFileError, decode_program, is_program_file, stays_inside
+from ..library.machine_file import MachineSettings
+from ..library.programs import load_text
+from . import static_checks
+
+log = logging.getLogger(__name__)
+
+MAX_FILES = 5_000
+MAX_FILE_BYTES = 8_000_000
+_O_NAME = re.compile(r"^[Oo](\d{1,8})$")
+
+
+@dataclass(frozen=True, slots=True)
+class IndexedCall:
+    """A call with a literal target: the index of the O program (unit) of the file that makes
+    it, and the program number or (gsk980tdi) bracketed name it names."""
+
+    unit: int
+    number: int | None
+    name: str | None
+
+
+@dataclass(slots=True)
+class _Entry:
+    stamp: tuple[int, int]  # (mtime in ns, size)
+    calls: tuple[IndexedCall, ...]
+
+
+class CallIndex:
+    """See the module docstring."""
+
+    def __init__(self, folders: list[str], settings: MachineSettings, dialect: str | None, locale: str = "en",
+                 max_files: int = MAX_FILES, max_bytes: int = MAX_FILE_BYTES) -> None:  # fmt: skip
+        self.folders = [Path(f) for f in dict.fromkeys(str(f) for f in folders)]
+        self.settings = settings
+        self.dialect = dialect
+        self.locale = locale
+        self.max_files = max_files
+        self.max_bytes = max_bytes
+        self.usable = True  # False when there were more files than ``max_files``
+        self.files_read = 0  # files read since the index was made (for tests and benchmarks)
+        self.files_parsed = 0
+        self._entries: dict[str, _Entry] = {}
+        self._listed = False
+        self._numbers: dict[int, set[str]] = {}
+        self._names: dict[str, set[str]] = {}
+        self._word = re.compile(_call_words(settings))
+
+    # ---------------------------------------------------------------- keeping up to date
+    def changed(self, path: str) -> None:
+        """A file was created, changed or deleted: look at the folders again when next asked."""
+        self._listed = False
+
+    @property
+    def size(self) -> int:
+        """How many files the index holds."""
+        self._ensure()
+        return len(self._entries)
+
+    def _ensure(self) -> None:
+        if self._listed:
+            return
+        self._listed = True
+        paths = self._list()
+        if paths is None:
+            self.usable = False
+            self._entries.clear()
+            self._numbers.clear()
+            self._names.clear()
+            return
+        self.usable = True
+        old = self._entries
+        self._entries = {}
+        for path in paths:
+            try:
+                st = os.stat(path)
+            except OSError:
+                continue
+            stamp = (st.st_mtime_ns, st.st_size)
+            entry = old.get(path)
+            if entry is None or entry.stamp != stamp:
+                if st.st_size > self.max_bytes:
+                    log.info("%s: %d bytes, larger than %d: its calls are not indexed", path, st.st_size,
+                             self.max_bytes)  # fmt: skip
+                    entry = _Entry(stamp, ())
+                else:
+                    entry = _Entry(stamp, self._read(path))
+            self._entries[path] = entry
+        self._numbers = {}
+        self._names = {}
+        for path, entry in self._entries.items():
+            for c in entry.calls:
+                if c.number is not None:
+                    self._numbers.setdefault(c.number, set()).add(path)
+                if c.name is not None:
+                    self._names.setdefault(c.name, set()).add(path)
+                    m = _O_NAME.match(c.name)
+                    if m:
+                        self._numbers.setdefault(int(m.group(1)), set()).add(path)
+
+    def _list(self) -> list[str] | None:
+        """The program files under the folders, or None when there are more than allowed."""
+        seen: dict[str, None] = {}
+        for folder in self.folders:
+            for path in _walk(folder):
+                seen[path] = None
+                if len(seen) > self.max_files:
+                    log.warning("more than %d program files under %s: callers on disk are not looked for",
+                                self.max_files, ", ".join(str(f) for f in self.folders))  # fmt: skip
+                    return None
+        return sorted(seen)
+
+    def _read(self, path: str) -> tuple[IndexedCall, ...]:
+        """The literal calls that the file at ``path`` makes."""
+        try:
+            with open(path, "rb") as f:
+                data = f.read(self.max_bytes + 1)
+            text = decode_program(data, path).text
+        except (OSError, BinaryFileError):
+            return ()
+        self.files_read += 1
+        word = self._word.search
+        if word(text) is None:
+            return ()
+        self.files_parsed += 1
+        loaded = load_text(path, text)
+        ctx = static_checks.line_context(
+            get_dialect(choose_dialect(loaded.lines, self.settings.dialect, self.dialect)), self.settings, self.locale
+        )
+        program = loaded.program
+        blocks = program.blocks
+        out: list[IndexedCall] = []
+        for line, text_line in enumerate(loaded.lines):
+            if line >= len(blocks) or word(text_line) is None:
+                continue
+            facts = static_checks.line_facts(blocks[line], ctx)
+            if facts is None or not facts.calls:
+                continue
+            unit = program.units.index(program.unit_at(line))
+            for c in facts.calls:
+                if c.number is not None or c.name is not None:
+                    name = c.name.strip().lower() if c.name is not None else None
+                    out.append(IndexedCall(unit, c.number, name))
+        return tuple(dict.fromkeys(out))
+
+    # ---------------------------------------------------------------- questions
+    def callers(self, number: int | None, name: str | None) -> list[str]:
+        """The files on disk that name program ``number`` or the bracketed ``name`` (lower
+        case) in a call, sorted: candidates, each to be confirmed by the library's lookup."""
+        self._ensure()
+        found: set[str] = set()
+        if number is not None:
+            found |= self._numbers.get(number, set())
+        if name is not None:
+            found |= self._names.get(name, set())
+        return sorted(found)
+
+    def calls_of(self, path: str) -> tuple[IndexedCall, ...]:
+        """The literal calls the indexed file ``path`` makes (none for a file not indexed)."""
+        self._ensure()
+        entry = self._entries.get(path)
+        return entry.calls if entry is not None else ()
+
+    def holds(self, path: str) -> bool:
+        self._ensure()
+        return path in self._entries
+
+
+def _walk(folder: Path) -> Iterator[str]:
+    """Program files under ``folder`` as ``find_program_files`` finds them, lazily (so that
+    counting can stop early), hidden folders skipped, links leading out of ``folder`` left out."""
+    for root, dirs, files in os.walk(folder):
+        dirs[:] = sorted(d for d in dirs if not d.startswith("."))
+        for name in sorted(files):
+            if name.startswith("."):
+                continue
+            p = Path(root) / name
+            if is_program_file(p) and p.is_file() and (not p.is_symlink() or stays_inside(p, folder)):
+                yield str(p)
+
+
+def _call_words(settings: MachineSettings) -> str:
+    """A pattern for the words that may make a call: G65, G66, M98, M198 and the codes the
+    machine settings configure (a file without one calls nothing)."""
+    parts = [r"[GgMm][ \t]*\+?0*(?:65|66|98|198)(?![0-9])"]
+    for code in settings.calls:
+        letter, digits = code[:1], code[1:]
+        whole = digits.split(".")[0].lstrip("0") or "0"
+        if not digits or not whole.isdigit():
+            parts.append(f"[{letter.upper()}{letter.lower()}]")
+        else:
+            parts.append(rf"[{letter.upper()}{letter.lower()}][ \t]*\+?0*{whole}(?![0-9])")
+    return "|".join(parts)
