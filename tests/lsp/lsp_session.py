@@ -4,7 +4,9 @@ diagnostics. The session fixtures are made available to the tests by ``conftest.
 
 from __future__ import annotations
 
+import asyncio
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -72,6 +74,26 @@ async def diagnostics_for(client: LanguageClient, uri: str, version: int) -> typ
         params = await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
         if params.uri == uri and params.version == version:
             return params
+
+
+Accept = Callable[[list[types.Diagnostic]], bool]
+
+
+async def published_where(
+    client: LanguageClient, wanted: dict[str, Accept], timeout: float = 60.0
+) -> dict[str, list[types.Diagnostic]]:
+    """Wait (at most ``timeout`` seconds) until the diagnostics last published for each URI of
+    ``wanted`` are ones its function accepts (for several files published at once, where
+    waiting for one notification after another could miss one)."""
+
+    async def wait() -> dict[str, list[types.Diagnostic]]:
+        while True:
+            got = {uri: list(client.diagnostics.get(uri, [])) for uri in wanted}
+            if all(uri in client.diagnostics and accept(got[uri]) for uri, accept in wanted.items()):
+                return got
+            await asyncio.sleep(0.01)
+
+    return await asyncio.wait_for(wait(), timeout)
 
 
 async def hover_text(client: LanguageClient, uri: str, line: int, character: int) -> str:

@@ -32,7 +32,8 @@ async def test_open_publishes_syntax_errors_with_the_version(client: LanguageCli
     uri = open_file(client, FANUC / "broken_1.nc", "O0100\n#1=[2+3\nM30\n", version=7)
     got = await diagnostics_for(client, uri, 7)
     assert [(d.range.start.line, d.code, d.severity) for d in got.diagnostics] == [
-        (1, "syntax", types.DiagnosticSeverity.Error)
+        (1, "syntax", types.DiagnosticSeverity.Error),
+        (2, "not-executed", types.DiagnosticSeverity.Hint),  # the run stops at the error
     ]
     assert "]" in got.diagnostics[0].message
 
@@ -57,9 +58,9 @@ async def test_incremental_edits_fix_the_error_and_only_the_newest_version_count
         types.DocumentDiagnosticParams(types.TextDocumentIdentifier(uri))
     )
     assert isinstance(report, types.RelatedFullDocumentDiagnosticReport)
-    assert list(report.items) == [] and report.result_id == "5"
+    assert list(report.items) == [] and report.result_id
     same = await client.text_document_diagnostic_async(
-        types.DocumentDiagnosticParams(types.TextDocumentIdentifier(uri), previous_result_id="5")
+        types.DocumentDiagnosticParams(types.TextDocumentIdentifier(uri), previous_result_id=report.result_id)
     )
     assert isinstance(same, types.RelatedUnchangedDocumentDiagnosticReport)
 
@@ -69,7 +70,7 @@ async def test_pull_diagnostics_answer_the_current_text(client: LanguageClient) 
     report = await client.text_document_diagnostic_async(
         types.DocumentDiagnosticParams(types.TextDocumentIdentifier(uri))
     )
-    assert [d.code for d in report.items] == ["undefined-label"]
+    assert [d.code for d in report.items] == ["undefined-label", "not-executed"]
 
 
 async def test_severity_setting_switches_a_code_off(client: LanguageClient) -> None:
@@ -82,7 +83,10 @@ async def test_severity_setting_switches_a_code_off(client: LanguageClient) -> N
 async def test_severity_setting_changes_a_code_in_chinese_session(client_zh: LanguageClient) -> None:
     uri = open_file(client_zh, GSK / "broken.CNC", "O0100\n#1=[2+3\nM30\n", version=1)
     got = await diagnostics_for(client_zh, uri, 1)
-    assert [(d.code, d.severity) for d in got.diagnostics] == [("syntax", types.DiagnosticSeverity.Warning)]
+    assert [(d.code, d.severity) for d in got.diagnostics] == [
+        ("syntax", types.DiagnosticSeverity.Warning),
+        ("not-executed", types.DiagnosticSeverity.Hint),
+    ]
 
 
 async def test_dialect_setting_applies_where_the_workspace_names_none(client: LanguageClient) -> None:
@@ -91,7 +95,7 @@ async def test_dialect_setting_applies_where_the_workspace_names_none(client: La
     assert list(got.diagnostics) == []  # the setting says gsk980tdi, where '>' is a relation
     uri = open_file(client, FANUC / "relations_fanuc.nc", "(cncmacro: dialect=fanuc)\nIF[#1>2]GOTO5\nN5 M30\n")
     got = await diagnostics_for(client, uri, 1)
-    assert [d.code for d in got.diagnostics] == ["dialect-feature"]  # the file's comment wins
+    assert [d.code for d in got.diagnostics] == ["dialect-feature", "not-executed"]  # the file's comment wins
 
 
 async def test_gsk_dialect_from_the_workspace_wins_over_the_setting(client_zh: LanguageClient) -> None:

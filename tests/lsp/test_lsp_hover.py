@@ -120,3 +120,13 @@ async def test_hover_follows_the_dialect_comment_before_the_workspace(fanuc_en: 
     code = await hover_text(fanuc_en, uri, 3, 1)
     close_file(fanuc_en, uri)
     assert "GSK980TDi" in variable and "GSK980TDi" in code
+
+
+async def test_hover_on_a_gsk_h_code_shows_the_command(gsk_en: LanguageClient, gsk_zh: LanguageClient) -> None:
+    text = "O0002\nG65 H02 P#101 Q#102 R5\nG65 H99 P3005\n"
+    uri = open_file(gsk_en, GSK / "hcodes.CNC", text)
+    got = await hover_text(gsk_en, uri, 1, 5)
+    assert "G65 H02 P#i Q#j R#k" in got and "addition" in got
+    assert "alarm" in (await hover_text(gsk_en, uri, 2, 5)).lower()
+    uri = open_file(gsk_zh, GSK / "hcodes_zh.CNC", text)
+    assert "加法" in await hover_text(gsk_zh, uri, 1, 5)

@@ -6,7 +6,7 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, GSK, close_file, open_file
+from .lsp_session import FANUC, GSK, close_file, edit, open_file
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
@@ -109,3 +109,41 @@ async def test_semantic_tokens_on_gsk_mark_the_c_relation(gsk_en: LanguageClient
     tokens = _decode(list(full.data), await _legend(gsk_en), lines)
     assert ("(螺纹加工)", "comment", []) in tokens
     assert ("#100", "variable", ["common"]) in tokens and ("GOTO", "keyword", []) in tokens
+
+
+async def test_an_o_program_folds_exactly_to_its_m99(gsk_en: LanguageClient) -> None:
+    text = "O0100 (A)\n#1=1\nM99\n(NOTES AFTER THE END)\n(MORE NOTES)\nO0200 (B)\n#2=2\nM30\n"
+    uri = open_file(gsk_en, GSK / "folds.CNC", text)
+    ranges = await gsk_en.text_document_folding_range_async(
+        types.FoldingRangeParams(types.TextDocumentIdentifier(uri))
+    )
+    close_file(gsk_en, uri)
+    programs = sorted((r.start_line, r.end_line) for r in ranges if r.kind is None)
+    assert programs == [(0, 2), (5, 7)]
+
+
+async def test_semantic_tokens_delta_turns_the_old_answer_into_the_new_one(fanuc_zh: LanguageClient) -> None:
+    text = "O0100\n#1=5\n#100=#1*2\nM30\n"
+    uri = open_file(fanuc_zh, FANUC / "delta.nc", text)
+    first = await fanuc_zh.text_document_semantic_tokens_full_async(
+        types.SemanticTokensParams(types.TextDocumentIdentifier(uri))
+    )
+    assert first is not None and first.result_id
+    edit(fanuc_zh, uri, 2, 2, 0, 0, "#500=SIN[30]\n")  # a new line before #100=#1*2
+    delta = await fanuc_zh.text_document_semantic_tokens_full_delta_async(
+        types.SemanticTokensDeltaParams(types.TextDocumentIdentifier(uri), previous_result_id=first.result_id)
+    )
+    fresh = await fanuc_zh.text_document_semantic_tokens_full_async(
+        types.SemanticTokensParams(types.TextDocumentIdentifier(uri))
+    )
+    close_file(fanuc_zh, uri)
+    assert isinstance(delta, types.SemanticTokensDelta) and len(delta.edits) == 1
+    data = list(first.data)
+    e = delta.edits[0]
+    data[e.start : e.start + e.delete_count] = list(e.data or [])
+    assert data == list(fresh.data) and data != list(first.data)
+    lines = text.split("\n")
+    lines.insert(2, "#500=SIN[30]")
+    assert ("#500", "variable", ["persistent"]) in _decode(data, await _legend(fanuc_zh), lines)
+    provider = fanuc_zh.server_capabilities.semantic_tokens_provider  # type: ignore[attr-defined]
+    assert provider.full.delta is True

@@ -1,243 +1,271 @@
-"""Diagnostics for the editor: debounced analysis, cancelled by newer versions, pushed and pulled.
+"""Diagnostics for the editor: the workspace analysis on a worker thread, cancelled by newer
+edits, its newest result pushed (and pulled) per file.
 
-Every open/change/close event of a document comes here. After a change the analysis waits a
-short pause (``DEBOUNCE_SECONDS``); a newer edit cancels the waiting run, and a result is
-published only if the document still has the version it was computed from, together with that
-version. The first analysis of a huge file reports work-done progress. ``textDocument/diagnostic``
-(pull) answers from the same cache, keyed by version.
-
-``DiagnosticsEngine.analysis`` is the only thing that knows which analysis runs: today
-``EditorAnalysis`` (the syntax diagnostics and, when the module exists,
-``analysis.static_checks.static_diagnostics``). It receives the open/change/close/file-changed
-events and answers ``analyze(path, should_cancel)`` with the interface of
-``analysis.workspace.WorkspaceAnalysis``, so switching means constructing that instead.
+``DiagnosticsEngine.analysis`` is the ``analysis.workspace.WorkspaceAnalysis`` of the session:
+it holds the open documents (the server's ``Documents`` show its ``ParsedDocument``s, so each
+document is parsed once) and every edit goes through it. The analysis runs on one worker
+thread, so hovers and completion are answered meanwhile; the editor's thread only reads the
+documents, and changes them (open, change, close, settings) inside ``editing()``, which first
+tells a running analysis to stop (it checks between chunks of blocks) and then takes the
+lock that the analysis holds. Each change starts a new generation; a result is published only
+when no change came after the generation it was computed from, each open file with the
+version it was analysed at. A finding in a file that is not open (a macro called from an open
+file) is published without a version, and cleared when a later result no longer has it. The
+first analysis of a huge file reports work-done progress. ``textDocument/diagnostic`` (pull)
+waits for the result of the document's current version.
 """
 
 from __future__ import annotations
 
 import asyncio
 import logging
-from collections.abc import Callable
+import threading
+from collections.abc import Iterator
+from concurrent.futures import ThreadPoolExecutor
+from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..analysis import Diagnostic, syntax_diagnostics
+from ..analysis import Diagnostic
+from ..analysis.workspace import AnalysisResult, Value, WorkspaceAnalysis
 from ..library.machine_file import MachineSettings
-from .documents import Edit, OpenDocument
-from .positions import to_client
-
-try:  # written by the static checks; optional until it lands
-    from ..analysis.static_checks import static_diagnostics as _static_diagnostics
-except ImportError:  # pragma: no cover - depends on the tree
-    _static_diagnostics = None
-
-try:
-    from ..analysis.severity import apply_severities as _apply_severities
-except ImportError:  # pragma: no cover - depends on the tree
-    _apply_severities = None
+from .collector import QUIET_SECONDS, Collector
+from .documents import Edit, OpenDocument, uri_to_path
+from .protocol_diagnostics import to_lsp
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
 
 log = logging.getLogger(__name__)
 
-DEBOUNCE_SECONDS = 0.05
+DEBOUNCE_SECONDS = 0.0  # edits are coalesced by cancelling: a newer one stops the older analysis
 PROGRESS_LINES = 20_000  # a first analysis of a file this long reports progress
-SOURCE = "cncmacro"
-_SEVERITY = {
-    "error": types.DiagnosticSeverity.Error,
-    "warning": types.DiagnosticSeverity.Warning,
-    "information": types.DiagnosticSeverity.Information,
-    "hint": types.DiagnosticSeverity.Hint,
-}
+PULL_TIMEOUT = 60.0  # seconds a pull waits for the analysis of the current version
+
+LineValues = dict[int, list[tuple[int, Value]]]
 
 
 @dataclass(slots=True)
-class Result:
-    """What an analysis gives: the version of the analysed file and diagnostics per file
-    (the shape of ``analysis.workspace.AnalysisResult``)."""
+class Outcome:
+    """One finished analysis, made ready on the worker thread: per file URI the version it
+    was analysed at (None for a file that is not open), its diagnostics, their protocol form,
+    and the values the runs left on its lines."""
 
-    version: int | None
-    diagnostics: dict[str, list[Diagnostic]]
-
-
-class EditorAnalysis:
-    """Today's analysis of open documents: the syntax diagnostics and the static checks,
-    with the severity settings applied. It takes the events and answers ``analyze`` the way
-    ``analysis.workspace.WorkspaceAnalysis`` does, so that one can take its place; the text
-    events are no-ops here because the server's documents are already parsed."""
-
-    def __init__(self, server: CncMacroServer) -> None:
-        self.server = server
-
-    def open(self, path: str, text: str, version: int | None = None) -> None:
-        pass
-
-    def change(
-        self, path: str, start_line: int, start_col: int, end_line: int, end_col: int, text: str, version: int
-    ) -> None:
-        pass
-
-    def close(self, path: str) -> None:
-        pass
-
-    def file_changed(self, path: str) -> None:
-        pass
-
-    def analyze(self, path: str, should_cancel: Callable[[], bool] | None = None) -> Result | None:
-        cancelled = should_cancel or (lambda: False)
-        doc = next((d for d in self.server.documents.by_uri.values() if d.path == path), None)
-        if doc is None:
-            return None
-        version = doc.version
-        found = syntax_diagnostics(doc.parsed.program, doc.path)
-        if _static_diagnostics is not None and not cancelled():
-            found += _call_static(self.server, doc)
-        if cancelled():
-            return None
-        overrides = self.server.severity_overrides()
-        if overrides:
-            found = _override(found, overrides)
-        return Result(version, {path: found})
-
-
-def _call_static(server: CncMacroServer, doc: OpenDocument) -> list[Diagnostic]:
-    assert _static_diagnostics is not None
-    try:
-        return list(
-            _static_diagnostics(
-                doc.parsed.program,
-                doc.path,
-                doc.dialect,
-                server.machine or MachineSettings(),
-                server.index.library(doc),
-                server.locale,
-            )
-        )
-    except Exception:  # a fault in a check must not stop the syntax diagnostics
-        log.exception("static checks failed on %s", doc.path)
-        return []
-
-
-def _override(found: list[Diagnostic], overrides: dict[str, str]) -> list[Diagnostic]:
-    if _apply_severities is not None:
-        try:
-            return _apply_severities(found, overrides)
-        except ValueError as e:
-            log.warning("%s", e)
-            return found
-    from dataclasses import replace
-
-    out = []
-    for d in found:
-        level = overrides.get(d.code)
-        if level == "off":
-            continue
-        out.append(replace(d, severity=level) if level in _SEVERITY else d)
-    return out
-
-
-def to_lsp(d: Diagnostic, doc: OpenDocument, utf16: bool, uri_of: Callable[[str], str]) -> types.Diagnostic:
-    """An analysis diagnostic as the protocol sends it."""
-    start = to_client(doc.line(d.line), d.column, utf16)
-    end = to_client(doc.line(d.end_line), d.end_column, utf16)
-    related = [
-        types.DiagnosticRelatedInformation(
-            types.Location(
-                uri_of(r.file),
-                types.Range(types.Position(r.line, r.column), types.Position(r.line, r.end_column)),
-            ),
-            r.message,
-        )
-        for r in d.related
-    ]
-    tags = [types.DiagnosticTag.Unnecessary] if "unnecessary" in d.tags else None
-    return types.Diagnostic(
-        range=types.Range(types.Position(d.line, start), types.Position(d.end_line, end)),
-        message=d.message,
-        severity=_SEVERITY.get(d.severity, types.DiagnosticSeverity.Error),
-        code=d.code,
-        source=SOURCE,
-        related_information=related or None,
-        tags=tags,
-    )
+    generation: int
+    versions: dict[str, int | None]
+    found: dict[str, list[Diagnostic]]
+    items: dict[str, list[types.Diagnostic]]
+    values: dict[str, LineValues]
 
 
 class DiagnosticsEngine:
-    """Schedules, cancels and publishes the analysis of open documents."""
+    """Schedules, cancels and publishes the analysis of the open documents."""
 
     def __init__(self, server: CncMacroServer, delay: float = DEBOUNCE_SECONDS) -> None:
         self.server = server
-        self.analysis = EditorAnalysis(server)
+        self.analysis = WorkspaceAnalysis()
         self.delay = delay
-        self._tasks: dict[str, asyncio.Task[None]] = {}
-        self._results: dict[str, tuple[int, list[types.Diagnostic]]] = {}
+        self.lock = threading.Lock()  # held by the analysis, and by the editor's thread to change anything
+        self.generation = 0
+        self._executor = ThreadPoolExecutor(max_workers=1, thread_name_prefix="cncmacro-analysis")
+        self._task: asyncio.Task[None] | None = None
+        self._published: dict[str, tuple[int | None, list[Diagnostic], list[types.Diagnostic], int]] = {}
+        self._values: dict[str, tuple[int | None, LineValues]] = {}
         self._analysed_once: set[str] = set()
+        self._cycle = asyncio.Event()  # set and replaced whenever a result was published
+        self._converted: dict[str, tuple[list[Diagnostic], list[types.Diagnostic]]] = {}  # worker's cache
+        self.collector = Collector()
+        self._cleaning = False
+
+    # ---- setting up
+    def start(self, machine: MachineSettings | None, folders: list[str], locale: str) -> None:
+        """A fresh analysis for the session (at ``initialize``, before any document opens)."""
+        with self.editing():
+            self.analysis = WorkspaceAnalysis(settings=machine, search_paths=folders, locale=locale)
+
+    def configure(self, machine: MachineSettings | None, dialect: str | None, budget: int | None,
+                  severities: dict[str, str]) -> None:  # fmt: skip
+        """Settings for the analysis; the open documents are analysed again."""
+        with self.editing():
+            self.analysis.configure(settings=machine, dialect=dialect, max_blocks=budget, severities=severities)
+        self.schedule()
 
     # ---- document events
-    def opened(self, doc: OpenDocument, text: str) -> None:
-        self.analysis.open(doc.path, text, doc.version)
-        self._schedule(doc, 0.0)
+    @contextmanager
+    def editing(self) -> Iterator[None]:
+        """Stop a running analysis, then hold the lock while the caller changes documents or
+        settings; a new generation starts."""
+        self.generation += 1
+        with self.lock:
+            yield
 
-    def changed(self, doc: OpenDocument, edits: list[Edit]) -> None:
-        for e in edits:
-            if isinstance(e, str):
+    def opened(self, item: types.TextDocumentItem) -> OpenDocument:
+        path = uri_to_path(item.uri)
+        with self.editing():
+            self.analysis.open(path, item.text, item.version)
+            parsed = self.analysis.document(path)
+            assert parsed is not None
+            doc = self.server.documents.open(item, parsed)
+        self.schedule()
+        return doc
+
+    def changed(self, params: types.DidChangeTextDocumentParams) -> OpenDocument | None:
+        version = params.text_document.version
+
+        def apply(doc: OpenDocument, edit: Edit) -> None:
+            self.analysis.change(doc.path, *edit, version)
+
+        with self.editing():
+            doc = self.server.documents.change(params, apply)
+        if doc is not None:
+            self.schedule()
+        return doc
+
+    def closed(self, uri: str) -> None:
+        with self.editing():
+            doc = self.server.documents.close(uri)
+            if doc is not None:
                 self.analysis.close(doc.path)
-                self.analysis.open(doc.path, e, doc.version)
-            else:
-                self.analysis.change(doc.path, *e, doc.version)
-        self._schedule(doc, self.delay)
-
-    def file_changed(self, path: str) -> None:
-        self.analysis.file_changed(path)
-
-    def closed(self, doc: OpenDocument) -> None:
-        self.analysis.close(doc.path)
-        uri = doc.uri
-        task = self._tasks.pop(uri, None)
-        if task is not None:
-            task.cancel()
-        self._results.pop(uri, None)
+        self._published.pop(uri, None)
+        self._values.pop(uri, None)
         self._analysed_once.discard(uri)
         self.server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+        self.schedule()
 
-    def refresh_all(self) -> None:
-        """Analyse every open document again (settings or the workspace changed)."""
-        self._results.clear()
-        for doc in list(self.server.documents.by_uri.values()):
-            self._schedule(doc, 0.0)
+    def files_changed(self, paths: list[str]) -> None:
+        """Files changed on disk (created, changed, deleted)."""
+        with self.editing():
+            for path in paths:
+                self.analysis.file_changed(path)
+        self.schedule()
 
     # ---- running
-    def _schedule(self, doc: OpenDocument, delay: float) -> None:
-        old = self._tasks.pop(doc.uri, None)
-        if old is not None:
-            old.cancel()
-        self._tasks[doc.uri] = asyncio.get_event_loop().create_task(self._run(doc.uri, doc.version, delay))
+    def schedule(self) -> None:
+        """Analyse the current state (after the pause), on the worker thread."""
+        loop = asyncio.get_event_loop()
+        self._task = loop.create_task(self._run(self.generation))
 
-    async def _run(self, uri: str, version: int, delay: float) -> None:
-        if delay:
-            await asyncio.sleep(delay)
+    async def _run(self, generation: int) -> None:
+        await asyncio.sleep(self.delay)
         if not self.server.settings_ready.is_set():  # the first analyses wait for the settings
             await self.server.settings_ready.wait()
-        doc = self.server.documents.by_uri.get(uri)
-        if doc is None or doc.version != version:
-            return
-        token = None
-        if uri not in self._analysed_once and len(doc.lines) >= PROGRESS_LINES:
-            token = await self._begin_progress(doc)
+        if generation != self.generation:
+            return  # a newer change scheduled its own run
+        big = [
+            d
+            for d in self.server.documents.by_uri.values()
+            if d.uri not in self._analysed_once and len(d.lines) >= PROGRESS_LINES
+        ]
+        token = await self._begin_progress(big[0]) if big else None
         try:
-            items = self.compute(doc)
+            outcome = await asyncio.get_running_loop().run_in_executor(self._executor, self._analyse, generation)
         finally:
             if token is not None:
                 self.server.work_done_progress.end(token, types.WorkDoneProgressEnd(message="done"))
-        self._analysed_once.add(uri)
-        if items is None or doc.version != version or self.server.documents.by_uri.get(uri) is not doc:
-            return  # a newer edit arrived: its own run publishes
-        self.server.text_document_publish_diagnostics(
-            types.PublishDiagnosticsParams(uri=uri, diagnostics=items, version=version)
-        )
+        if outcome is None or outcome.generation != self.generation:
+            return  # cancelled, or a newer change came: its own run publishes
+        self._publish(outcome)
+        if self.collector.due() and not self._cleaning:
+            self._cleaning = True
+            try:
+                await self._clean_when_quiet()
+            finally:
+                self._cleaning = False
+
+    async def _clean_when_quiet(self) -> None:
+        """Collect the frozen heap once no edit came for a moment (at once when urgent)."""
+        while not self.collector.urgent():
+            generation = self.generation
+            await asyncio.sleep(QUIET_SECONDS)
+            if generation == self.generation:
+                break
+        await asyncio.get_running_loop().run_in_executor(self._executor, self.collector.clean)
+
+    def _analyse(self, generation: int) -> Outcome | None:
+        """On the worker thread: analyse and convert, or None when a newer change came."""
+
+        def cancelled() -> bool:
+            return self.generation != generation
+
+        with self.lock:
+            if cancelled():
+                return None
+            docs = list(self.server.documents.by_uri.values())
+            if not docs:
+                return Outcome(generation, {}, {}, {}, {})
+            new_documents = any(d.uri not in self._analysed_once for d in docs)
+            with self.collector.paused():
+                try:
+                    result = self.analysis.analyze(docs[0].path, cancelled)
+                except Exception:  # a fault in the analysis must not stop the server
+                    log.exception("the analysis failed")
+                    result = None
+                outcome = None if result is None else self._outcome(generation, docs, result)
+                self.collector.settle(new_documents and outcome is not None)  # before the collector runs again
+        return outcome
+
+    def _outcome(self, generation: int, docs: list[OpenDocument], result: AnalysisResult) -> Outcome:
+        ws = self.analysis
+        by_path = {d.path: d for d in docs}
+        versions: dict[str, int | None] = {}
+        found: dict[str, list[Diagnostic]] = {}
+        for path, diags in result.diagnostics.items():
+            uri = by_path[path].uri if path in by_path else self.server.uri_for_path(path)
+            versions[uri] = by_path[path].version if path in by_path else None
+            found[uri] = diags
+        for d in docs:
+            versions.setdefault(d.uri, d.version)
+            found.setdefault(d.uri, [])
+
+        def line_text(file: str, line: int) -> str:
+            parsed = ws.document(file)
+            lines = parsed.lines if parsed is not None else _disk_lines(ws, file)
+            return lines[line] if 0 <= line < len(lines) else ""
+
+        utf16 = self.server.documents.utf16
+        items: dict[str, list[types.Diagnostic]] = {}
+        for uri, diags in found.items():
+            cached = self._converted.get(uri)
+            if cached is not None and cached[0] == diags:
+                items[uri] = cached[1]
+                continue
+            items[uri] = [to_lsp(x, line_text, utf16, self.server.uri_for_path) for x in diags]
+            self._converted[uri] = (diags, items[uri])
+        values = {by_path[p].uri: v for p, v in result.values.items() if p in by_path}
+        return Outcome(generation, versions, found, items, values)
+
+    def _publish(self, outcome: Outcome) -> None:
+        documents = self.server.documents.by_uri
+        for uri, version in outcome.versions.items():
+            doc = documents.get(uri)
+            if doc is not None and doc.version != version:
+                continue
+            if version is not None or doc is not None:
+                self._values[uri] = (version, outcome.values.get(uri, {}))
+            self._analysed_once.add(uri)
+            diags = outcome.found[uri]
+            old = self._published.get(uri)
+            if old is not None and old[0] == version and old[1] == diags:
+                continue
+            self._published[uri] = (version, diags, outcome.items[uri], old[3] + 1 if old else 1)
+            self.server.text_document_publish_diagnostics(
+                types.PublishDiagnosticsParams(uri=uri, diagnostics=outcome.items[uri], version=version)
+            )
+        for uri in [u for u, p in self._published.items() if u not in outcome.versions and u not in documents]:
+            del self._published[uri]  # a file that is not open, no longer with findings
+            self.server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+        self._cycle.set()
+        self._cycle = asyncio.Event()
+        if self.server.settings.inlay_values:
+            self._refresh_inlay_hints()
+
+    def _refresh_inlay_hints(self) -> None:
+        caps = self.server.client_capabilities.workspace
+        hints = caps.inlay_hint if caps is not None else None
+        if hints is not None and hints.refresh_support:
+            self.server.workspace_inlay_hint_refresh(None)
 
     async def _begin_progress(self, doc: OpenDocument) -> str | None:
         caps = self.server.client_capabilities.window
@@ -254,29 +282,35 @@ class DiagnosticsEngine:
                 title="cncmacro", message=f"analysing {len(doc.lines)} lines", cancellable=False
             ),
         )
-        await asyncio.sleep(0)
         return token
 
-    def compute(self, doc: OpenDocument) -> list[types.Diagnostic] | None:
-        """The protocol diagnostics of ``doc``'s current version (cached per version)."""
-        cached = self._results.get(doc.uri)
-        if cached is not None and cached[0] == doc.version:
-            return cached[1]
-        version = doc.version
-        result = self.analysis.analyze(doc.path, lambda: doc.version != version)
-        if result is None or result.version != version:
-            return None
-        found = result.diagnostics.get(doc.path, [])
-        utf16 = self.server.documents.utf16
-        items = [to_lsp(d, doc, utf16, self.server.uri_for_path) for d in found if d.file == doc.path]
-        self._results[doc.uri] = (version, items)
-        return items
+    # ---- reading results
+    def values(self, doc: OpenDocument) -> LineValues:
+        """The values the newest run left on the lines of ``doc``, if it analysed this version."""
+        got = self._values.get(doc.uri)
+        return got[1] if got is not None and got[0] == doc.version else {}
 
-    # ---- pull
-    def pull(self, params: types.DocumentDiagnosticParams) -> types.DocumentDiagnosticReport:
+    async def pull(self, params: types.DocumentDiagnosticParams) -> types.DocumentDiagnosticReport:
         doc = self.server.documents.get(params.text_document.uri)
-        result_id = f"{doc.version}"
-        if params.previous_result_id == result_id and doc.uri in self._results:
+        loop = asyncio.get_running_loop()
+        deadline = loop.time() + PULL_TIMEOUT
+        while True:
+            got = self._published.get(doc.uri)
+            if (got is not None and got[0] == doc.version) or loop.time() >= deadline:
+                break
+            try:
+                await asyncio.wait_for(self._cycle.wait(), deadline - loop.time())
+            except asyncio.TimeoutError:
+                break
+        if got is None:
+            return types.RelatedFullDocumentDiagnosticReport(items=[], result_id=None)
+        result_id = f"{got[0]}.{got[3]}"
+        if params.previous_result_id == result_id:
             return types.RelatedUnchangedDocumentDiagnosticReport(result_id=result_id)
-        items = self.compute(doc) or []
-        return types.RelatedFullDocumentDiagnosticReport(items=items, result_id=result_id)
+        return types.RelatedFullDocumentDiagnosticReport(items=got[2], result_id=result_id)
+
+
+def _disk_lines(ws: WorkspaceAnalysis, path: str) -> list[str]:
+    loaded = ws.library.load(path)
+    return loaded.lines if loaded is not None else []
+

@@ -1,6 +1,8 @@
 """The open documents: each one a ``ParsedDocument`` kept up to date by incremental edits.
 
-An editor change is applied to the cached parser (only the touched lines are parsed again);
+The ``ParsedDocument`` is the analysis's own (``WorkspaceAnalysis.document``), so each open
+document is parsed once. An editor change is applied through the analysis, which edits the
+cached parser in place (only the touched lines are parsed again);
 the document's dialect is chosen again only when an edit touches the first lines, where the
 ``(cncmacro: dialect=...)`` comment lives. Requests read single lines and blocks from here and
 never rebuild the text.
@@ -8,6 +10,7 @@ never rebuild the text.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -29,9 +32,8 @@ def uri_to_path(uri: str) -> str:
     return to_fs_path(uri) or uri
 
 
-# an applied edit: (start line, start column, end line, end column, new text) in code points,
-# or the whole new text
-Edit = tuple[int, int, int, int, str] | str
+# an applied edit: (start line, start column, end line, end column, new text) in code points
+Edit = tuple[int, int, int, int, str]
 
 
 @dataclass
@@ -76,8 +78,9 @@ class Documents:
     def dialect_for(self, lines: list[str]) -> Dialect:
         return get_dialect(choose_dialect(lines, self.workspace_dialect, self.setting_dialect))
 
-    def open(self, item: types.TextDocumentItem) -> OpenDocument:
-        parsed = ParsedDocument(item.text)
+    def open(self, item: types.TextDocumentItem, parsed: ParsedDocument | None = None) -> OpenDocument:
+        """Open ``item``; ``parsed`` is its text already parsed (by the analysis)."""
+        parsed = parsed if parsed is not None else ParsedDocument(item.text)
         doc = OpenDocument(
             item.uri,
             uri_to_path(item.uri),
@@ -89,37 +92,43 @@ class Documents:
         self.by_uri[item.uri] = doc
         return doc
 
-    def change(self, params: types.DidChangeTextDocumentParams) -> tuple[OpenDocument, list[Edit]] | None:
-        """Apply an editor change; the document and the edits as applied (code-point columns,
-        lines clamped to the text), for the analysis to follow."""
+    def change(
+        self, params: types.DidChangeTextDocumentParams, apply: Callable[[OpenDocument, Edit], None] | None = None
+    ) -> OpenDocument | None:
+        """Apply an editor change; each edit (code-point columns, lines clamped to the text; a
+        whole new text is an edit of the whole range) goes through ``apply``, which must edit
+        ``doc.parsed`` (by default it is edited directly)."""
         doc = self.by_uri.get(params.text_document.uri)
         if doc is None:
             return None
-        applied: list[Edit] = []
         header_touched = False
         for change in params.content_changes:
+            lines = doc.parsed.lines
             if isinstance(change, types.TextDocumentContentChangePartial):
                 r = change.range
-                lines = doc.parsed.lines
                 sl = min(max(r.start.line, 0), len(lines) - 1)
                 el = min(max(r.end.line, sl), len(lines) - 1)
                 sc = to_code_points(lines[sl], r.start.character, self.utf16) if r.start.line < len(lines) else 1 << 30
                 ec = to_code_points(lines[el], r.end.character, self.utf16) if r.end.line < len(lines) else 1 << 30
                 sc = min(sc, len(lines[sl]))
                 ec = min(ec, len(lines[el])) if el > sl else max(min(ec, len(lines[el])), sc)
-                applied.append((sl, sc, el, ec, change.text))
-                doc.parsed.apply_change(sl, sc, el, ec, change.text)
-                doc.sites.replaced(doc.parsed.blocks, sl, el + 1, len(split_lines(change.text)))
+                edit: Edit = (sl, sc, el, ec, change.text)
                 header_touched = header_touched or r.start.line < HEADER_LINES
             else:
-                applied.append(change.text)
-                doc.parsed.set_text(change.text)
-                doc.sites = SiteIndex(doc.parsed.blocks)
+                edit = (0, 0, len(lines) - 1, len(lines[-1]), change.text)
                 header_touched = True
+            if apply is None:
+                doc.parsed.apply_change(*edit)
+            else:
+                apply(doc, edit)
+            if isinstance(change, types.TextDocumentContentChangePartial):
+                doc.sites.replaced(doc.parsed.blocks, edit[0], edit[2] + 1, len(split_lines(change.text)))
+            else:
+                doc.sites = SiteIndex(doc.parsed.blocks)
         doc.version = params.text_document.version
         if header_touched:
             doc.dialect = self.dialect_for(doc.parsed.lines)
-        return doc, applied
+        return doc
 
     def close(self, uri: str) -> OpenDocument | None:
         return self.by_uri.pop(uri, None)

@@ -1,13 +1,15 @@
-"""Folding ranges: WHILE..END loops, O programs up to their M99/M30 (or the next program),
-and runs of comment-only lines, from the parser's ``Program`` and cached blocks."""
+"""Folding ranges: WHILE..END loops, O programs up to exactly their last M99/M30/M02 (else up
+to the next program), and runs of comment-only lines, from the parser's ``Program`` and cached
+blocks."""
 
 from __future__ import annotations
 
+import re
 from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..syntax.nodes import Number
+from ..syntax.nodes import Block, Number
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -29,6 +31,10 @@ def register(server: CncMacroServer) -> None:
             end = u.end - 1
             while end > u.start and _is_blank(blocks[end]):
                 end -= 1
+            last = end
+            while last > u.start and not _ends_program(blocks[last]):
+                last -= 1
+            end = last if last > u.start else end
             if end > u.start:
                 out.append(types.FoldingRange(start_line=u.start, end_line=end))
         run_start = None
@@ -47,6 +53,16 @@ def register(server: CncMacroServer) -> None:
                 types.FoldingRange(start_line=run_start, end_line=len(blocks) - 1, kind=types.FoldingRangeKind.Comment)
             )
         return out
+
+
+_END = re.compile(r"M0*(?:99|30|2)(?!\d)", re.IGNORECASE)
+
+
+def _ends_program(b: Block) -> bool:
+    """A block with M99, M30 or M02 (words outside comments)."""
+    if b.plain is not None:
+        return _END.search(b.plain) is not None
+    return any(w.letter == "M" and isinstance(w.value, Number) and w.value.value in (99, 30, 2) for w in b.words)
 
 
 def _is_blank(b) -> bool:  # type: ignore[no-untyped-def]

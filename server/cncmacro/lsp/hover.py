@@ -1,6 +1,7 @@
 """Hover: what the thing under the cursor is, in the client's language and the file's dialect.
 
-System variables, G/M codes and functions are described from the dialect tables; a local
+System variables, G/M codes, functions and the GSK ``G65 Hm`` commands are described from the
+dialect tables; a local
 shows the argument letters that fill it (``machine.calls``); a common shows where it is
 written; an N label shows the jumps to it; an O program (or the P of a call) shows its title
 and file. Only the block under the cursor is parsed; searches read cached blocks.
@@ -14,6 +15,7 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 
 from ..dialects import describe
+from ..dialects.functions_data import GSK_H_CODES
 from ..machine.calls import argument_targets, letters_for_local
 from ..syntax.nodes import Call, Number, Var, Word
 from ..syntax.walk import nodes_at
@@ -27,6 +29,7 @@ if TYPE_CHECKING:
     from .server import CncMacroServer
 
 MAX_PLACES = 8
+_H_CODES = {h.name: h for h in GSK_H_CODES}  # the GSK ``G65 Hm`` macro commands
 
 
 def register(server: CncMacroServer) -> None:
@@ -182,12 +185,20 @@ def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
         k = next(i for i, w in enumerate(site.arguments) if w is word)
         if targets[k] is not None:
             return f"**{word.letter}** → **#{targets[k]}** ({t('fills', loc)} #{targets[k]})"
+    if word.letter == "H" and dialect.h_codes and isinstance(word.value, Number) and _is_g65(cur.block.words):
+        h = _H_CODES.get(f"H{int(word.value.value):02d}")
+        if h is not None:
+            return f"```\n{h.signature}\n```\n{describe.pick_text(h, loc)}\n\n*{dialect.title}*"
     if word.letter in ("G", "M") and isinstance(word.value, Number):
         doc = describe.code_doc(dialect, word.letter, word.value.value)
         if doc is not None:
             group = f"{t('modal', loc)}: {doc.group}" if doc.group else t("one_shot", loc)
             return f"**{doc.code}** — {describe.pick_text(doc, loc)}\n\n{group} · *{dialect.title}*"
     return None
+
+
+def _is_g65(words: tuple[Word, ...] | list[Word]) -> bool:
+    return any(w.letter == "G" and isinstance(w.value, Number) and w.value.value == 65 for w in words)
 
 
 def function_hover(ls: CncMacroServer, cur: Cursor, name: str) -> str | None:

@@ -1,5 +1,8 @@
 """Inlay hints: after each G65/G66 argument, the local it fills (``X10`` shows ``#24``), by the
-argument specifications of ``machine.calls``. Only the lines of the requested range are read."""
+argument specifications of ``machine.calls``; and, with the setting ``cncMacro.inlayHints.values``,
+at the end of an assignment the value it left the last time the analysis run passed the line
+(``#10=360/#1`` shows ``= 60``), from the newest analysis of the document's current version.
+Only the lines of the requested range are read."""
 
 from __future__ import annotations
 
@@ -7,7 +10,9 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..analysis.locale import pick
 from ..machine.calls import argument_targets
+from ..machine.numbers import format_plain
 from .call_sites import call_site
 from .positions import to_client
 
@@ -22,7 +27,14 @@ def register(server: CncMacroServer) -> None:
         utf16 = ls.documents.utf16
         out: list[types.InlayHint] = []
         r = params.range
-        for line in range(r.start.line, min(r.end.line, len(doc.lines) - 1) + 1):
+        last = min(r.end.line, len(doc.lines) - 1)
+        if ls.settings.inlay_values:
+            values = ls.diagnostics.values(doc)
+            for line in range(r.start.line, last + 1):
+                written = values.get(line)
+                if written:
+                    out.append(_value_hint(doc.line(line), line, written, ls.locale, utf16))
+        for line in range(r.start.line, last + 1):
             block = doc.block(line)
             if block is None or (block.plain is not None and "65" not in block.plain and "66" not in block.plain):
                 continue
@@ -42,3 +54,16 @@ def register(server: CncMacroServer) -> None:
                     )
                 )
         return out
+
+
+def _value_hint(text: str, line: int, written: list[tuple[int, float | None]], locale: str,
+                utf16: bool) -> types.InlayHint:  # fmt: skip
+    """``= 60`` at the end of the line's code (before a comment)."""
+    end = len(text.split("(", 1)[0].split(";", 1)[0].rstrip())
+    shown = ", ".join(pick(locale, "<vacant>", "<空>") if v is None else format_plain(v) for _, v in written)
+    return types.InlayHint(
+        position=types.Position(line, to_client(text, end, utf16)),
+        label=f"= {shown}",
+        padding_left=True,
+        tooltip=", ".join(f"#{n}" for n, _ in written),
+    )

@@ -12,6 +12,12 @@ import re
 _ASTRAL = re.compile("[\U00010000-\U0010ffff]")
 
 
+def has_astral(line: str) -> bool:
+    """True when ``line`` has a character outside the Basic Multilingual Plane (its UTF-16
+    columns then differ from its code-point columns)."""
+    return _ASTRAL.search(line) is not None
+
+
 def to_code_points(line: str, column: int, utf16: bool = True) -> int:
     """The code-point column of a client column on ``line``."""
     if not utf16 or _ASTRAL.search(line) is None:

@@ -3,11 +3,14 @@ functions, operators, addresses, numbers, labels, program numbers and comments.
 
 Tokens are found per line by a small scanner that also works on lines that do not parse, with
 the label and program spans taken from the parsed block; a line's tokens are cached by its
-text, so after an edit only new lines are scanned. ``full`` and ``range`` requests are served.
+text, so after an edit only new lines are scanned. ``full``, ``full/delta`` (one edit: what changed
+between the common start and end of the previous answer and this one) and ``range`` requests
+are served.
 """
 
 from __future__ import annotations
 
+import itertools
 import re
 from functools import cache
 from typing import TYPE_CHECKING
@@ -16,9 +19,10 @@ from lsprotocol import types
 
 from ..dialects import describe
 from ..dialects.dialect import Dialect
+from ..syntax.block_parser import MAX_BLOCK_CHARS
 from ..syntax.nodes import Block
 from .documents import OpenDocument
-from .positions import to_client
+from .positions import has_astral, to_client
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -125,11 +129,12 @@ def encode(doc: OpenDocument, first: int, last: int, common: tuple[int, int], ut
     blocks = doc.parsed.blocks
     for i in range(max(first, 0), min(last, len(lines) - 1) + 1):
         text = lines[i]
-        if not text:
-            continue
+        if not text or len(text) > MAX_BLOCK_CHARS:
+            continue  # a line too long to be a block is not read, so not coloured either
+        wide = utf16 and has_astral(text)  # looked at once per line, not once per token
         for s, e, typ, mods in _cache.get(text, blocks[i], doc.dialect, common):
-            cs = to_client(text, s, utf16)
-            length = to_client(text, e, utf16) - cs
+            cs = to_client(text, s, wide)
+            length = to_client(text, e, wide) - cs
             if i == prev_line:
                 data += (0, cs - prev_start, length, typ, mods)
             else:
@@ -141,14 +146,56 @@ def encode(doc: OpenDocument, first: int, last: int, common: tuple[int, int], ut
 def register(server: CncMacroServer) -> None:
     @server.feature(
         types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL,
-        types.SemanticTokensRegistrationOptions(legend=LEGEND, full=True, range=True),
+        types.SemanticTokensRegistrationOptions(
+            legend=LEGEND, full=types.SemanticTokensFullDelta(delta=True), range=True
+        ),
     )
     def full(ls: CncMacroServer, params: types.SemanticTokensParams) -> types.SemanticTokens:
         doc = ls.documents.get(params.text_document.uri)
-        return types.SemanticTokens(data=encode(doc, 0, len(doc.lines) - 1, ls.common_range, ls.documents.utf16))
+        data = encode(doc, 0, len(doc.lines) - 1, ls.common_range, ls.documents.utf16)
+        return types.SemanticTokens(data=data, result_id=_remember(doc.uri, data))
+
+    @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL_DELTA)
+    def full_delta(
+        ls: CncMacroServer, params: types.SemanticTokensDeltaParams
+    ) -> types.SemanticTokens | types.SemanticTokensDelta:
+        doc = ls.documents.get(params.text_document.uri)
+        data = encode(doc, 0, len(doc.lines) - 1, ls.common_range, ls.documents.utf16)
+        old = _previous.get(doc.uri)
+        result_id = _remember(doc.uri, data)
+        if old is None or old[0] != params.previous_result_id:
+            return types.SemanticTokens(data=data, result_id=result_id)
+        return types.SemanticTokensDelta(edits=delta_edits(old[1], data), result_id=result_id)
 
     @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_RANGE, LEGEND)
     def range_(ls: CncMacroServer, params: types.SemanticTokensRangeParams) -> types.SemanticTokens:
         doc = ls.documents.get(params.text_document.uri)
         r = params.range
         return types.SemanticTokens(data=encode(doc, r.start.line, r.end.line, ls.common_range, ls.documents.utf16))
+
+
+_previous: dict[str, tuple[str, list[int]]] = {}  # URI -> the last full answer's result id and data
+_PREVIOUS_LIMIT = 32
+_ids = itertools.count(1)
+
+
+def _remember(uri: str, data: list[int]) -> str:
+    if uri not in _previous and len(_previous) >= _PREVIOUS_LIMIT:
+        del _previous[next(iter(_previous))]
+    result_id = str(next(_ids))
+    _previous[uri] = (result_id, data)
+    return result_id
+
+
+def delta_edits(old: list[int], new: list[int]) -> list[types.SemanticTokensEdit]:
+    """One edit turning ``old`` into ``new``: what lies between their common start and end."""
+    n = min(len(old), len(new))
+    p = 0
+    while p < n and old[p] == new[p]:
+        p += 1
+    q = 0
+    while q < n - p and old[len(old) - 1 - q] == new[len(new) - 1 - q]:
+        q += 1
+    if p == len(old) == len(new):
+        return []
+    return [types.SemanticTokensEdit(start=p, delete_count=len(old) - p - q, data=new[p : len(new) - q])]

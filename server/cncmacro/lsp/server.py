@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import asyncio
 import logging
+from pathlib import Path
 from typing import Any
 
 from lsprotocol import types
@@ -20,10 +21,10 @@ from pygls.protocol.language_server import lsp_method
 from pygls.uris import from_fs_path
 
 from .. import __version__
-from ..library.machine_file import MachineSettings
+from ..library.machine_file import MACHINE_FILE_NAME, MachineSettings
 from .diagnostics import DiagnosticsEngine
 from .documents import Documents, uri_to_path
-from .settings import SECTION, Settings, machine_settings, merged_severities
+from .settings import SECTION, Settings, machine_settings, merged_severities, valid_severities
 from .workspace_index import WorkspaceIndex
 
 log = logging.getLogger(__name__)
@@ -62,6 +63,7 @@ class CncMacroServer(LanguageServer):
         self.locale: str = "en"
         self.diagnostics = DiagnosticsEngine(self)
         self.settings_ready = asyncio.Event()  # set once the editor's settings were asked for
+        self.roots: list[str] = []
 
     # ---- settings
     def severity_overrides(self) -> dict[str, str]:
@@ -72,10 +74,14 @@ class CncMacroServer(LanguageServer):
         return self.machine.common if self.machine is not None else (100, 199)
 
     def apply_settings(self, settings: Settings) -> None:
+        """The editor's settings (or the machine file) changed: analyse again with them."""
         self.settings = settings
         self.documents.setting_dialect = settings.dialect
+        self.documents.workspace_dialect = self.machine.dialect if self.machine else None
         self.documents.rechoose_dialects()
-        self.diagnostics.refresh_all()
+        self.diagnostics.configure(
+            self.machine, settings.dialect, settings.run_budget, valid_severities(self.severity_overrides())
+        )
 
     def uri_for_path(self, path: str) -> str:
         for doc in self.documents.by_uri.values():
@@ -101,7 +107,10 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
         roots = [params.root_path]
     server.machine = machine_settings(roots[0]) if roots else None
     server.documents.workspace_dialect = server.machine.dialect if server.machine else None
+    server.roots = roots
     server.index.scan(roots)
+    server.diagnostics.start(server.machine, roots, server.locale)
+    server.apply_settings(server.settings)
 
 
 async def _initialized(server: CncMacroServer, params: types.InitializedParams) -> None:
@@ -149,27 +158,24 @@ def build_server() -> CncMacroServer:
 
     @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
     def did_open(ls: CncMacroServer, params: types.DidOpenTextDocumentParams) -> None:
-        doc = ls.documents.open(params.text_document)
-        ls.diagnostics.opened(doc, params.text_document.text)
+        ls.diagnostics.opened(params.text_document)
 
     @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
     def did_change(ls: CncMacroServer, params: types.DidChangeTextDocumentParams) -> None:
-        changed = ls.documents.change(params)
-        if changed is not None:
-            ls.diagnostics.changed(*changed)
+        ls.diagnostics.changed(params)
 
     @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
     def did_close(ls: CncMacroServer, params: types.DidCloseTextDocumentParams) -> None:
-        doc = ls.documents.close(params.text_document.uri)
-        if doc is not None:
-            ls.diagnostics.closed(doc)
+        ls.diagnostics.closed(params.text_document.uri)
 
     @server.feature(
         types.TEXT_DOCUMENT_DIAGNOSTIC,
         types.DiagnosticOptions(identifier="cncmacro", inter_file_dependencies=True, workspace_diagnostics=False),
     )
-    def pull_diagnostics(ls: CncMacroServer, params: types.DocumentDiagnosticParams) -> types.DocumentDiagnosticReport:
-        return ls.diagnostics.pull(params)
+    async def pull_diagnostics(
+        ls: CncMacroServer, params: types.DocumentDiagnosticParams
+    ) -> types.DocumentDiagnosticReport:
+        return await ls.diagnostics.pull(params)
 
     @server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)
     async def did_change_configuration(ls: CncMacroServer, params: types.DidChangeConfigurationParams) -> None:
@@ -179,14 +185,20 @@ def build_server() -> CncMacroServer:
 
     @server.feature(types.WORKSPACE_DID_CHANGE_WATCHED_FILES)
     def did_change_watched_files(ls: CncMacroServer, params: types.DidChangeWatchedFilesParams) -> None:
+        paths = []
+        machine_file = False
         for change in params.changes:
             path = uri_to_path(change.uri)
+            paths.append(path)
+            machine_file = machine_file or Path(path).name == MACHINE_FILE_NAME
             if change.type == types.FileChangeType.Deleted:
                 ls.index.drop(path)
             else:
                 ls.index.reload(path)
-            ls.diagnostics.file_changed(path)
-        ls.diagnostics.refresh_all()
+        if machine_file:  # the workspace's .cncmacro.toml: its settings and dialect
+            ls.machine = machine_settings(ls.roots[0]) if ls.roots else None
+            ls.apply_settings(ls.settings)
+        ls.diagnostics.files_changed(paths)
 
     for module in (
         hover,

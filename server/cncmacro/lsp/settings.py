@@ -3,7 +3,8 @@
 The editor's settings come from ``initializationOptions`` at start and from
 ``workspace/configuration`` (section ``cncMacro``) after ``initialized`` and on every
 ``workspace/didChangeConfiguration``: ``dialect``, ``severity`` (diagnostic code ->
-``error|warning|information|hint|off``) and ``runBudget`` (blocks per analysis run). The
+``error|warning|information|hint|off``), ``runBudget`` (blocks per analysis run) and
+``inlayHints.values`` (show the value each assignment left in the analysis run; off). The
 workspace's ``.cncmacro.toml`` gives the dialect that the chain of DESIGN.md puts before the
 editor's, and severities that the editor's override.
 """
@@ -15,6 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from ..analysis.severity import check_overrides
 from ..dialects import normalise_dialect
 from ..library.machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
 
@@ -29,6 +31,7 @@ class Settings:
     dialect: str | None = None
     severity: dict[str, str] = field(default_factory=dict)
     run_budget: int | None = None
+    inlay_values: bool = False
 
     @classmethod
     def from_mapping(cls, data: Any) -> Settings:
@@ -48,8 +51,11 @@ class Settings:
         if isinstance(sev, dict):
             out.severity = {str(k): str(v).lower() for k, v in sev.items()}
         budget = data.get("runBudget")
-        if isinstance(budget, int) and budget > 0:
+        if isinstance(budget, int) and not isinstance(budget, bool) and budget > 0:
             out.run_budget = budget
+        hints = data.get("inlayHints")
+        values = hints.get("values") if isinstance(hints, dict) else data.get("inlayHints.values")
+        out.inlay_values = values is True
         return out
 
 
@@ -72,4 +78,15 @@ def merged_severities(machine: MachineSettings | None, editor: Settings) -> dict
     """The severity overrides in force: the machine file's, then the editor's on top."""
     out: dict[str, str] = dict(getattr(machine, "severity", {}) or {}) if machine else {}
     out.update(editor.severity)
+    return out
+
+
+def valid_severities(overrides: dict[str, str]) -> dict[str, str]:
+    """``overrides`` without the entries that name no code or no severity (each one logged)."""
+    out = {}
+    for code, level in overrides.items():
+        try:
+            out.update(check_overrides({code: level}, "cncMacro.severity"))
+        except ValueError as e:
+            log.warning("%s", e)
     return out

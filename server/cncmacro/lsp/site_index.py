@@ -39,20 +39,31 @@ def block_sites(block: Block) -> Sites:
 
 
 class SiteIndex:
-    """The sorted lines of one document whose blocks have sites."""
+    """The sorted lines of one document whose blocks have sites, found the first time they
+    are asked for (not while a document is being opened)."""
 
     def __init__(self, blocks: list[Block]) -> None:
-        self.lines: list[int] = [i for i, b in enumerate(blocks) if block_sites(b) != _EMPTY]
+        self._blocks = blocks
+        self._lines: list[int] | None = None
+
+    @property
+    def lines(self) -> list[int]:
+        if self._lines is None:
+            self._lines = [i for i, b in enumerate(self._blocks) if block_sites(b) != _EMPTY]
+        return self._lines
 
     def replaced(self, blocks: list[Block], start: int, old_end: int, new_count: int) -> None:
         """Lines ``start``..``old_end`` (exclusive) became ``new_count`` lines (now in ``blocks``)."""
-        lines = self.lines
+        if self._lines is None:
+            self._blocks = blocks
+            return
+        lines = self._lines
         lo = bisect_left(lines, start)
         hi = bisect_left(lines, old_end)
         delta = new_count - (old_end - start)
         fresh = [start + k for k in range(new_count) if block_sites(blocks[start + k]) != _EMPTY]
         tail = [x + delta for x in lines[hi:]] if delta else lines[hi:]
-        self.lines = lines[:lo] + fresh + tail
+        self._lines = lines[:lo] + fresh + tail
 
     def between(self, start: int, end: int) -> list[int]:
         """The indexed lines in ``start``..``end`` (exclusive)."""
