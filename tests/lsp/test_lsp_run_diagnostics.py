@@ -143,3 +143,26 @@ async def test_run_findings_follow_the_severity_setting(fanuc_en: LanguageClient
     fanuc_en.set_configuration({}, section="cncMacro")
     fanuc_en.workspace_did_change_configuration(types.DidChangeConfigurationParams(settings=None))
     await published_where(fanuc_en, {uri: lambda items: len(items) == 2})
+
+
+async def test_5_calls_a_macro_opened_alone_is_analysed_through_its_caller_on_disk(fanuc_en: LanguageClient) -> None:
+    """Only the macro is open; its caller is a file of the workspace folder. The macro's own
+    argument check does not fire (the caller passes H), and what only the caller's arguments
+    cause (H6: a division by zero) is reported in the macro, with the call site related."""
+    caller = FANUC / "ring_caller.nc"
+    macro = FANUC / "O9277.nc"
+    caller.write_text("O0277 (RING OF HOLES)\nG65 P9277 H6 R40.\nM30\n", "utf-8")
+    created = types.FileEvent(uri=caller.as_uri(), type=types.FileChangeType.Created)
+    fanuc_en.workspace_did_change_watched_files(types.DidChangeWatchedFilesParams(changes=[created]))
+    try:
+        uri = open_saved(
+            fanuc_en, macro, "O9277 (RING)\nIF[#11 EQ #0] THEN #3000=1(H MISSING)\n#10=360/[#11-6]\nM99\n"
+        )
+        got = (await published_where(fanuc_en, {uri: has("division-by-zero")}))[uri]
+        assert [c for c in codes(got) if c[1] != "not-executed"] == [(2, "division-by-zero")]
+        related = next(d for d in got if d.code == "division-by-zero").related_information or []
+        assert [Path(r.location.uri).name for r in related] == ["ring_caller.nc"]
+        close_file(fanuc_en, uri)
+    finally:
+        caller.unlink()
+        macro.unlink()

@@ -83,7 +83,9 @@ class DiagnosticsEngine:
     def start(self, machine: MachineSettings | None, folders: list[str], locale: str) -> None:
         """A fresh analysis for the session (at ``initialize``, before any document opens)."""
         with self.editing():
-            self.analysis = WorkspaceAnalysis(settings=machine, search_paths=folders, locale=locale)
+            self.analysis = WorkspaceAnalysis(
+                settings=machine, search_paths=folders, workspace_folders=folders, locale=locale
+            )
 
     def configure(self, machine: MachineSettings | None, dialect: str | None, budget: int | None,
                   severities: dict[str, str]) -> None:  # fmt: skip
@@ -139,6 +141,12 @@ class DiagnosticsEngine:
         with self.editing():
             for path in paths:
                 self.analysis.file_changed(path)
+        self.schedule()
+
+    def folders_changed(self, folders: list[str]) -> None:
+        """The editor's workspace folders changed: callers are looked for in the new ones."""
+        with self.editing():
+            self.analysis.set_workspace_folders(folders)
         self.schedule()
 
     # ---- running

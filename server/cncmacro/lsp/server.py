@@ -200,6 +200,13 @@ def build_server() -> CncMacroServer:
             ls.apply_settings(ls.settings)
         ls.diagnostics.files_changed(paths)
 
+    @server.feature(types.WORKSPACE_DID_CHANGE_WORKSPACE_FOLDERS)
+    def did_change_workspace_folders(ls: CncMacroServer, params: types.DidChangeWorkspaceFoldersParams) -> None:
+        gone = {uri_to_path(f.uri) for f in params.event.removed}
+        ls.roots = [r for r in ls.roots if r not in gone] + [uri_to_path(f.uri) for f in params.event.added]
+        ls.index.scan(ls.roots)
+        ls.diagnostics.folders_changed(ls.roots)
+
     for module in (
         hover,
         navigation,
