@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
 
-.PHONY: demo test setup
+.PHONY: demo test setup package
 
 $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -11,22 +11,32 @@ $(VENV)/.installed: pyproject.toml
 	$(PY) -m pip install --quiet -e '.[test]'
 	touch $@
 
-# The DAP client tests' npm packages (pinned in package-lock.json), installed again only when it changes.
-node_modules/.installed: package-lock.json
-	npm ci --silent --no-audit --no-fund
+# The npm packages pinned in package-lock.json (the extension's build, the DAP client, grammar and
+# editor tests, code-server) and the Debian packages the editor tests need (chromium, ripgrep,
+# libkrb5-dev), installed again only when the lock file or the script changes.
+node_modules/.installed: package-lock.json client/scripts/setup-editor
+	bash client/scripts/setup-editor
 	touch $@
 
 setup: $(VENV)/.installed node_modules/.installed
 
-# Run a bundled example on the simulated machine, then check all of them.
-demo: setup
+# Run a bundled example on the simulated machine, then check all of them (needs only Python).
+demo: $(VENV)/.installed
 	$(VENV)/bin/cncmacro run --no-save examples/fanuc/bolt_circle.nc
 	$(VENV)/bin/cncmacro check examples && echo "examples: no problems found"
 	@echo "--- a program with mistakes:"
 	-$(VENV)/bin/cncmacro check tests/data/O0999_broken.nc
 
-# Every test: lint, then the Python suite, then the debug adapter through a real DAP client.
+# Every test: lint, the Python suite, the debug adapter through a real DAP client, the grammar,
+# then the .vsix is built and tested in a real VS Code (screenshots in test-output/editor/).
 test: setup
 	$(VENV)/bin/ruff check server tests benchmarks
 	$(PY) -m pytest
 	node --test tests/dap/
+	npm run --silent test:grammar
+	PYTHON=$(PY) npm run --silent package
+	timeout 600 node --test --test-concurrency=1 tests/editor/
+
+# The VS Code extension: cncmacro.vsix (needs only Python >= 3.10 where it is installed).
+package: setup
+	PYTHON=$(PY) npm run --silent package

@@ -1,0 +1,42 @@
+/**
+ * The extension's entry point: output channels, the language server, the debugger, the
+ * commands and the dialect status-bar item, and the reaction to settings changes.
+ */
+import * as vscode from 'vscode';
+import { registerCommands } from './commands';
+import { registerDebugger } from './debugAdapter';
+import { ServerController } from './languageClient';
+import { SECTION } from './settings';
+import { DialectStatus } from './statusBar';
+
+let controller: ServerController | undefined;
+
+export async function activate(context: vscode.ExtensionContext): Promise<void> {
+  const log = vscode.window.createOutputChannel('CNC Macro Server', { log: true });
+  const output = vscode.window.createOutputChannel('CNC Macro');
+  const server = new ServerController(context, log);
+  controller = server;
+  context.subscriptions.push(log, output, server, new DialectStatus());
+  registerCommands(context, server, output);
+  registerDebugger(context, server);
+  context.subscriptions.push(
+    vscode.workspace.onDidChangeConfiguration(async (e) => {
+      if (e.affectsConfiguration(`${SECTION}.python.path`)) {
+        log.info('cncMacro.python.path changed: restarting the language server');
+        await server.restart();
+      } else if (
+        e.affectsConfiguration(`${SECTION}.dialect`) ||
+        e.affectsConfiguration(`${SECTION}.diagnostics`) ||
+        e.affectsConfiguration(`${SECTION}.analysis`)
+      ) {
+        await server.settingsChanged();
+      }
+    }),
+  );
+  void server.start();
+}
+
+export async function deactivate(): Promise<void> {
+  await controller?.stop();
+  controller = undefined;
+}

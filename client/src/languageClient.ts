@@ -1,0 +1,167 @@
+/**
+ * The language client: starts `python -m cncmacro lsp` over stdio and keeps it in step with
+ * the settings.
+ *
+ * The server asks for the section `cncMacro` through `workspace/configuration`; the middleware
+ * answers it with `serverSettings` (the names the server reads). A change of the dialect,
+ * severities or budget is pushed with `workspace/didChangeConfiguration`; a change of the Python
+ * path restarts the server. Diagnostics are taken as pushed (see `PushDiagnosticsClient`). Its
+ * log goes to the "CNC Macro Server" output channel.
+ */
+import * as vscode from 'vscode';
+import {
+  type DynamicFeature,
+  DocumentDiagnosticRequest,
+  LanguageClient,
+  type LanguageClientOptions,
+  type ServerOptions,
+  type StaticFeature,
+} from 'vscode-languageclient/node';
+import { findPython, type FoundPython } from './python';
+import { cncmacroCommand, serverEnvironment, serverLayout } from './serverProcess';
+import { SECTION, serverSettings } from './settings';
+
+export const LANGUAGE_ID = 'cnc-macro';
+
+/**
+ * A client that takes diagnostics only as the server pushes them. The server publishes every
+ * analysis result, for open files and for the macros they call, and after a settings change;
+ * pulling as well would show each finding twice and keep a stale copy after the settings change.
+ * Without this feature the client does not announce pull support.
+ */
+class PushDiagnosticsClient extends LanguageClient {
+  override registerFeature(feature: StaticFeature | DynamicFeature<unknown>): void {
+    if ('registrationType' in feature && feature.registrationType.method === DocumentDiagnosticRequest.method) {
+      return;
+    }
+    super.registerFeature(feature);
+  }
+}
+
+export class ServerController implements vscode.Disposable {
+  private client: LanguageClient | undefined;
+  private starting: Promise<void> | undefined;
+  python: FoundPython | undefined;
+
+  constructor(
+    private readonly context: vscode.ExtensionContext,
+    readonly log: vscode.LogOutputChannel,
+  ) {}
+
+  get running(): boolean {
+    return this.client?.isRunning() ?? false;
+  }
+
+  /** Find Python (telling the user when there is none that fits) and start the server. */
+  start(): Promise<void> {
+    this.starting ??= this.doStart().finally(() => {
+      this.starting = undefined;
+    });
+    return this.starting;
+  }
+
+  async restart(): Promise<void> {
+    await this.stop();
+    await this.start();
+  }
+
+  async stop(): Promise<void> {
+    await this.starting;
+    const client = this.client;
+    this.client = undefined;
+    if (client) {
+      try {
+        await client.stop(5000);
+      } catch (e) {
+        this.log.warn(`stopping the language server: ${String(e)}`);
+      }
+      await client.dispose();
+    }
+  }
+
+  /** Push the settings the server reads (it asks for them again as well). */
+  async settingsChanged(): Promise<void> {
+    if (this.client?.isRunning()) {
+      await this.client.sendNotification('workspace/didChangeConfiguration', { settings: null });
+    }
+  }
+
+  /** The interpreter to use, found again each time (the settings may have changed). */
+  async resolvePython(resource?: vscode.Uri): Promise<FoundPython | undefined> {
+    const found = await findPython(resource);
+    for (const line of found.log) {
+      this.log.info(`python: ${line}`);
+    }
+    if (!found.ok) {
+      this.log.error(found.message);
+      const open = vscode.l10n.t('Open Settings');
+      void vscode.window.showErrorMessage(found.message, open).then((choice) => {
+        if (choice === open) {
+          void vscode.commands.executeCommand('workbench.action.openSettings', `${SECTION}.python.path`);
+        }
+      });
+      return undefined;
+    }
+    return found.python;
+  }
+
+  private async doStart(): Promise<void> {
+    const python = await this.resolvePython();
+    this.python = python;
+    if (!python) {
+      return;
+    }
+    const layout = serverLayout(this.context.extensionPath);
+    const { command, args } = cncmacroCommand(python, ['lsp']);
+    this.log.info(
+      `starting the language server: ${command} ${args.join(' ')} (Python ${python.version.join('.')}, ${layout.kind} server, PYTHONPATH ${layout.pythonPath.join(', ')})`,
+    );
+    const serverOptions: ServerOptions = {
+      command,
+      args,
+      options: { env: serverEnvironment(layout) },
+    };
+    const clientOptions: LanguageClientOptions = {
+      documentSelector: [
+        { scheme: 'file', language: LANGUAGE_ID },
+        { scheme: 'untitled', language: LANGUAGE_ID },
+      ],
+      outputChannel: this.log,
+      initializationOptions: serverSettings(),
+      synchronize: {
+        fileEvents: vscode.workspace.createFileSystemWatcher('**/{*.nc,*.NC,*.cnc,*.CNC,*.mac,*.MAC,*.prg,*.PRG,*.tap,*.TAP,*.eia,*.EIA,O[0-9]*,.cncmacro.toml}'),
+      },
+      middleware: {
+        workspace: {
+          configuration: async (params, token, next) => {
+            const answer = await next(params, token);
+            if (!Array.isArray(answer)) {
+              return answer;
+            }
+            return params.items.map((item, i) =>
+              item.section === SECTION
+                ? serverSettings(item.scopeUri ? vscode.Uri.parse(item.scopeUri) : undefined)
+                : answer[i],
+            );
+          },
+        },
+      },
+    };
+    const client = new PushDiagnosticsClient(SECTION, 'CNC Macro Language Server', serverOptions, clientOptions);
+    try {
+      await client.start();
+      this.client = client;
+      this.log.info('the language server is running');
+    } catch (e) {
+      this.log.error(`the language server did not start: ${String(e)}`);
+      void vscode.window.showErrorMessage(
+        vscode.l10n.t('The CNC Macro language server did not start: {0}. See the output channel "CNC Macro Server".', String(e)),
+      );
+      await client.dispose().catch(() => undefined);
+    }
+  }
+
+  dispose(): void {
+    void this.stop();
+  }
+}

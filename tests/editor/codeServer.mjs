@@ -1,0 +1,243 @@
+// A throw-away code-server (the real VS Code workbench and extension host) with the built .vsix
+// installed, and Debian's Chromium driving it through playwright-core. Everything lives in one
+// temporary run folder (its own HOME, TMPDIR, XDG folders, user data and extensions), and
+// code-server runs in its own process group, which `stop()` kills whole, so that the extension
+// host, the language server and the debug adapter go with it.
+import { spawn, spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import net from 'node:net';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+
+export const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+export const OUTPUT = path.join(ROOT, 'test-output', 'editor');
+const CODE_SERVER = path.join(ROOT, 'node_modules', '.bin', 'code-server');
+const VSIX = path.join(ROOT, 'cncmacro.vsix');
+const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
+const EXTENSION_ID = 'cncmacro.cncmacro';
+
+function freePort() {
+  return new Promise((resolve, reject) => {
+    const server = net.createServer();
+    server.once('error', reject);
+    server.listen(0, '127.0.0.1', () => {
+      const { port } = server.address();
+      server.close(() => resolve(port));
+    });
+  });
+}
+
+async function waitHealthy(url, child, timeoutMs) {
+  const end = Date.now() + timeoutMs;
+  while (Date.now() < end) {
+    if (child.exitCode !== null) throw new Error(`code-server exited with status ${child.exitCode}`);
+    try {
+      const res = await fetch(`${url}/healthz`);
+      if (res.ok) return;
+    } catch {
+      // not listening yet
+    }
+    await new Promise((r) => setTimeout(r, 200));
+  }
+  throw new Error(`code-server did not answer ${url}/healthz within ${timeoutMs / 1000} s`);
+}
+
+function copyTree(from, to) {
+  fs.mkdirSync(to, { recursive: true });
+  fs.cpSync(from, to, { recursive: true });
+}
+
+/** A Python with nothing installed: a fresh venv without pip and without site-packages. */
+function barePython(dir) {
+  const made = spawnSync('python3', ['-m', 'venv', '--without-pip', dir], { encoding: 'utf8', timeout: 60000 });
+  if (made.status !== 0) throw new Error(`python3 -m venv failed: ${made.stderr}`);
+  const python = path.join(dir, 'bin', 'python');
+  const probe = spawnSync(python, ['-c', 'import pygls'], { encoding: 'utf8' });
+  if (probe.status === 0) throw new Error('the bare venv can import pygls: the check would prove nothing');
+  return python;
+}
+
+export class CodeServer {
+  constructor() {
+    for (const [what, file] of [
+      ['the .vsix (npm run package)', VSIX],
+      ['code-server (npm ci)', CODE_SERVER],
+      ['chromium (apt-get install chromium)', CHROMIUM],
+    ]) {
+      if (!fs.existsSync(file)) throw new Error(`missing ${what}: ${path.relative(ROOT, file) || file}`);
+    }
+    this.dir = fs.mkdtempSync(path.join(os.tmpdir(), 'cncmacro-editor-'));
+    this.workspace = path.join(this.dir, 'workspace');
+    this.child = undefined;
+    this.context = undefined;
+    this.onExit = () => this.killGroup('SIGKILL');
+    this.onSignal = (signal) => {
+      this.killGroup('SIGKILL');
+      this.removeRunFolder();
+      process.exit(signal === 'SIGINT' ? 130 : 143);
+    };
+  }
+
+  get extensionPath() {
+    return path.join(this.dir, 'extensions', `${EXTENSION_ID}-${this.version}`);
+  }
+
+  /** Workspace, settings, the extension installed from the .vsix, code-server, Chromium. */
+  async start() {
+    const d = (...p) => path.join(this.dir, ...p);
+    for (const sub of ['home', 'tmp', 'config', 'data', 'cache', 'user-data/User', 'extensions', 'chromium']) {
+      fs.mkdirSync(d(sub), { recursive: true });
+    }
+    copyTree(path.join(ROOT, 'examples', 'fanuc'), this.workspace);
+    copyTree(path.join(ROOT, 'tests', 'editor', 'workspace'), this.workspace);
+    this.python = barePython(d('bare-python'));
+    this.version = JSON.parse(fs.readFileSync(path.join(ROOT, 'package.json'), 'utf8')).version;
+
+    this.port = await freePort();
+    this.url = `http://127.0.0.1:${this.port}`;
+    fs.writeFileSync(d('config.yaml'), `bind-addr: 127.0.0.1:${this.port}\nauth: none\ncert: false\n`);
+    fs.writeFileSync(
+      d('user-data', 'User', 'settings.json'),
+      JSON.stringify(
+        {
+          'security.workspace.trust.enabled': false,
+          'workbench.startupEditor': 'none',
+          'workbench.tips.enabled': false,
+          'workbench.enableExperiments': false,
+          'update.mode': 'none',
+          'extensions.autoUpdate': false,
+          'extensions.ignoreRecommendations': true,
+          'telemetry.telemetryLevel': 'off',
+          'editor.minimap.enabled': false,
+          'editor.hover.delay': 200,
+          'chat.commandCenter.enabled': false,
+          'window.restoreWindows': 'none',
+        },
+        null,
+        2,
+      ),
+    );
+    // The interpreter is a setting of the machine the extension host runs on (code-server's
+    // Machine settings): the web client's own user settings do not carry it.
+    fs.mkdirSync(d('user-data', 'Machine'), { recursive: true });
+    fs.writeFileSync(d('user-data', 'Machine', 'settings.json'), JSON.stringify({ 'cncMacro.python.path': this.python }));
+    const { PYTHONPATH: _p, VSCODE_IPC_HOOK_CLI: _v, ...base } = process.env;
+    this.env = {
+      ...base,
+      HOME: d('home'),
+      TMPDIR: d('tmp'),
+      XDG_CONFIG_HOME: d('config'),
+      XDG_DATA_HOME: d('data'),
+      XDG_CACHE_HOME: d('cache'),
+    };
+    const common = ['--config', d('config.yaml'), '--user-data-dir', d('user-data'), '--extensions-dir', d('extensions')];
+    const installed = spawnSync(CODE_SERVER, [...common, '--install-extension', VSIX], {
+      env: this.env,
+      encoding: 'utf8',
+      timeout: 120000,
+    });
+    if (installed.status !== 0 || !fs.existsSync(this.extensionPath)) {
+      throw new Error(`installing the .vsix failed: ${installed.stdout}\n${installed.stderr}`);
+    }
+
+    const log = fs.openSync(path.join(OUTPUT, 'code-server.log'), 'w');
+    this.child = spawn(
+      CODE_SERVER,
+      [...common, '--disable-telemetry', '--disable-update-check', '--disable-workspace-trust', this.workspace],
+      { env: this.env, detached: true, stdio: ['ignore', log, log] },
+    );
+    fs.closeSync(log);
+    process.on('exit', this.onExit);
+    process.once('SIGTERM', this.onSignal);
+    process.once('SIGINT', this.onSignal);
+    await waitHealthy(this.url, this.child, 60000);
+
+    this.context = await chromium.launchPersistentContext(d('chromium'), {
+      executablePath: CHROMIUM,
+      headless: true,
+      viewport: { width: 1600, height: 1000 },
+      env: this.env,
+      timeout: 60000,
+      args: [
+        '--no-sandbox',
+        '--disable-gpu',
+        '--disable-quic',
+        '--no-first-run',
+        '--disable-background-networking',
+        '--disable-component-update',
+        '--disable-sync',
+      ],
+    });
+  }
+
+  /** The workbench on the test workspace. */
+  async openWorkbench() {
+    const page = await this.context.newPage();
+    await page.goto(`${this.url}/?folder=${encodeURIComponent(this.workspace)}`);
+    await page.locator('.monaco-workbench').waitFor({ timeout: 60000 });
+    await page.locator('.explorer-folders-view .monaco-list-row').first().waitFor({ timeout: 60000 });
+    return page;
+  }
+
+  /**
+   * Run `api/index.js` in the extension host through the payload URL, with the installed
+   * extension as the development extension; resolves with the exit code and console lines.
+   */
+  async runExtensionTests(timeoutMs) {
+    const page = await this.context.newPage();
+    const lines = [];
+    page.on('console', (message) => lines.push(message.text()));
+    const remote = (p) => `vscode-remote://127.0.0.1:${this.port}${p}`;
+    const payload = [
+      ['extensionDevelopmentPath', remote(this.extensionPath)],
+      ['extensionTestsPath', remote(path.join(ROOT, 'tests', 'editor', 'api', 'index.js'))],
+    ];
+    let timer;
+    const exit = new Promise((resolve, reject) => {
+      page.exposeFunction('codeAutomationExit', (code) => resolve(code)).catch(reject);
+      timer = setTimeout(() => reject(new Error('the extension-host tests did not finish in time')), timeoutMs);
+    });
+    await page.goto(
+      `${this.url}/?folder=${encodeURIComponent(this.workspace)}&payload=${encodeURIComponent(JSON.stringify(payload))}`,
+    );
+    try {
+      const code = await exit;
+      return { code, lines, page };
+    } finally {
+      clearTimeout(timer);
+    }
+  }
+
+  killGroup(signal) {
+    if (this.child?.pid === undefined) return;
+    try {
+      process.kill(-this.child.pid, signal);
+    } catch {
+      // already gone
+    }
+  }
+
+  /** Close Chromium, kill code-server's whole process group, remove the run folder. */
+  async stop() {
+    if (this.context) {
+      await Promise.race([this.context.close(), new Promise((r) => setTimeout(r, 10000))]).catch(() => undefined);
+    }
+    if (this.child) {
+      this.killGroup('SIGTERM');
+      const gone = new Promise((r) => (this.child.exitCode !== null ? r() : this.child.once('exit', r)));
+      await Promise.race([gone, new Promise((r) => setTimeout(r, 5000))]);
+      this.killGroup('SIGKILL');
+      process.off('exit', this.onExit);
+      process.off('SIGTERM', this.onSignal);
+      process.off('SIGINT', this.onSignal);
+    }
+    this.removeRunFolder();
+  }
+
+  /** The run folder goes unless CNCMACRO_KEEP_EDITOR_RUN is set (to read its logs). */
+  removeRunFolder() {
+    if (!process.env.CNCMACRO_KEEP_EDITOR_RUN) fs.rmSync(this.dir, { recursive: true, force: true, maxRetries: 3 });
+  }
+}

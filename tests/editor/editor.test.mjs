@@ -1,0 +1,192 @@
+// The extension in a real VS Code: the built .vsix installed into a fresh code-server, driven
+// through Chromium as a user would (colours, Problems, hover, breakpoint and step into a G65
+// macro, Run Program), then the extension-host tests of api/index.js. Screenshots go to
+// test-output/editor/. Run: node --test tests/editor/ (after npm run package).
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { after, before, test as nodeTest } from 'node:test';
+import { CodeServer, OUTPUT } from './codeServer.mjs';
+
+const STEP = 60000; // ms for one test (most take 1-5 s)
+const WAIT = 20000; // ms for one thing to appear
+let server;
+let page;
+
+async function shot(name) {
+  await page.waitForTimeout(300); // let hovers and panels finish fading in
+  await page.screenshot({ path: path.join(OUTPUT, `${name}.png`) });
+}
+
+// Monaco renders spaces as no-break spaces: a space in `text` matches either.
+const exact = (text) =>
+  new RegExp(`^${text.replace(/[.*+?^${}()|[\]\\]/g, '\\$&').replace(/ /g, '[ \\u00a0]')}$`);
+
+/** Open a workspace file by clicking its row in the Explorer (shown first, if another view is). */
+async function openFile(name) {
+  if (!(await page.locator('.explorer-folders-view').isVisible())) {
+    await page.keyboard.press('Control+Shift+E');
+  }
+  const row = page
+    .locator('.explorer-folders-view .monaco-list-row')
+    .filter({ has: page.locator('.label-name', { hasText: exact(name) }) });
+  await row.click();
+  await page.locator('.tabs-container .tab.active', { hasText: name }).waitFor();
+  await page.locator('.editor-instance .view-lines .view-line').first().waitFor();
+}
+
+/** The computed colour of the first token span in the editor whose text is `text`. */
+async function tokenColour(text) {
+  const span = page.locator('.editor-instance .view-lines span span', { hasText: exact(text) }).first();
+  await span.waitFor();
+  return span.evaluate((el) => getComputedStyle(el).color);
+}
+
+/** A test that, when it fails, leaves a picture of the workbench as it was. */
+function test(name, options, fn) {
+  nodeTest(name, options, async (t) => {
+    try {
+      await fn(t);
+    } catch (e) {
+      const file = `failed-${name.replace(/[^A-Za-z0-9]+/g, '-').slice(0, 50)}.png`;
+      await page?.screenshot({ path: path.join(OUTPUT, file) }).catch(() => undefined);
+      throw e;
+    }
+  });
+}
+
+before(async () => {
+  fs.rmSync(OUTPUT, { recursive: true, force: true });
+  fs.mkdirSync(OUTPUT, { recursive: true });
+  server = new CodeServer();
+  await server.start();
+  page = await server.openWorkbench();
+  page.setDefaultTimeout(WAIT);
+}, { timeout: 180000 });
+
+after(async () => {
+  await server?.stop();
+});
+
+test('a macro program is CNC Macro, coloured by kind, with the dialect in the status bar', { timeout: STEP }, async () => {
+  await openFile('O9100.nc');
+  await page.locator('.statusbar-item', { hasText: exact('CNC Macro') }).waitFor();
+  await page.locator('.statusbar-item', { hasText: 'FANUC 0i' }).waitFor();
+  const colours = {
+    keyword: await tokenColour('WHILE'),
+    variable: await tokenColour('#30'),
+    number: await tokenColour('360.'),
+    comment: await tokenColour('(HOLE COUNT MISSING)'),
+  };
+  await shot('1-colours');
+  assert.equal(new Set(Object.values(colours)).size, 4, `four different colours: ${JSON.stringify(colours)}`);
+});
+
+test('hovering #5001 shows its documentation', { timeout: STEP }, async () => {
+  // The mouse goes to where #5001 is drawn now: inlay hints that arrive late move text sideways.
+  const target = page.locator('.editor-instance .view-lines span span', { hasText: /^#5001$/ }).first();
+  const hover = page.locator('.monaco-hover', { hasText: 'block end position' });
+  for (let attempt = 1; ; attempt++) {
+    await target.scrollIntoViewIfNeeded();
+    const box = await target.boundingBox();
+    assert.ok(box, '#5001 is on screen');
+    await page.mouse.move(box.x + 2, box.y + box.height / 2);
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2, { steps: 4 });
+    try {
+      // The answer can wait behind an analysis run on a busy machine.
+      await hover.waitFor({ state: 'visible', timeout: 10000 });
+      break;
+    } catch (e) {
+      if (attempt === 3) throw e;
+      await page.mouse.move(5, 500);
+      await page.keyboard.press('Escape');
+    }
+  }
+  assert.match(await hover.innerText(), /#5001/);
+  await shot('2-hover-5001');
+  await page.mouse.move(5, 500);
+});
+
+test('the Problems panel lists the planted undefined-label error', { timeout: STEP }, async () => {
+  await openFile('planted_goto.nc');
+  await page.locator('.editor-instance .squiggly-error').first().waitFor();
+  await page.keyboard.press('Control+Shift+M');
+  const row = page.locator('.markers-panel .monaco-list-row', { hasText: 'there is no N99' }).first();
+  await row.waitFor();
+  assert.match(await row.innerText(), /undefined-label/);
+  assert.equal(await page.locator('.markers-panel .monaco-list-row', { hasText: 'there is no N99' }).count(), 1);
+  await shot('3-problems');
+});
+
+test('F9 then F5 stops at a breakpoint, F11 steps into the G65 macro, Variables shows #24 (X)', { timeout: 2 * STEP }, async () => {
+  await openFile('bolt_circle.nc');
+  await page.locator('.editor-instance .view-lines').click();
+  await page.keyboard.press('Control+G');
+  await page.keyboard.type('12');
+  await page.keyboard.press('Enter');
+  await page.keyboard.press('F9');
+  await page.locator('.codicon-debug-breakpoint').first().waitFor();
+  await page.keyboard.press('F5');
+  await page.locator('.debug-toolbar').waitFor({ state: 'visible' });
+  await page.locator('.debug-top-stack-frame-line').first().waitFor();
+  const frames = page.locator('.debug-call-stack .monaco-list-row');
+  await frames.filter({ hasText: 'bolt_circle.nc' }).filter({ hasText: '12' }).first().waitFor();
+  await shot('4-breakpoint');
+
+  await page.keyboard.press('F11');
+  await page.locator('.tabs-container .tab.active', { hasText: 'O9100.nc' }).waitFor();
+  await frames.filter({ hasText: 'O9100' }).first().waitFor();
+  // Locals lists #1-#33; scroll the Variables view down to #24.
+  const variables = page.locator('.pane', { has: page.locator('.pane-header', { hasText: /variables/i }) });
+  await variables.locator('.monaco-list-row', { hasText: /^#1 \(A\)/ }).first().waitFor();
+  const argument = variables.locator('.monaco-list-row', { hasText: '#24 (X)' }).first();
+  for (let i = 0; i < 30 && !(await argument.isVisible()); i++) {
+    await variables.locator('.monaco-list').first().hover();
+    await page.mouse.wheel(0, 60);
+    await page.waitForTimeout(100);
+  }
+  await argument.waitFor();
+  assert.match(await argument.innerText(), /#24 \(X\)\s*[:=]?\s*0/);
+  await shot('5-stepped-into-O9100');
+
+  await page.keyboard.press('Shift+F5');
+  await page.locator('.debug-toolbar').waitFor({ state: 'hidden' });
+});
+
+test('Run Program shows the run in the "CNC Macro" output channel', { timeout: STEP }, async () => {
+  await openFile('bolt_circle.nc');
+  await page.keyboard.press('F1');
+  await page.keyboard.type('CNC Macro: Run Program');
+  await page.locator('.quick-input-list .monaco-list-row', { hasText: 'Run Program' }).first().waitFor();
+  await page.keyboard.press('Enter');
+  await page.locator('.panel .view-lines', { hasText: 'status: completed after 205 blocks' }).waitFor();
+  await shot('6-run-program');
+});
+
+test('clicking the dialect in the status bar picks another and writes cncMacro.dialect', { timeout: STEP }, async () => {
+  const settingsFile = path.join(server.workspace, '.vscode', 'settings.json');
+  const pick = async (from, to) => {
+    await page.locator('.statusbar-item', { hasText: from }).click();
+    await page.locator('.quick-input-list .monaco-list-row', { hasText: to }).first().click();
+    await page.locator('.statusbar-item', { hasText: to }).waitFor();
+  };
+  await pick('FANUC 0i', 'GSK980TDi');
+  await shot('7-dialect-gsk980tdi');
+  assert.equal(JSON.parse(fs.readFileSync(settingsFile, 'utf8'))['cncMacro.dialect'], 'gsk980tdi');
+  await pick('GSK980TDi', 'FANUC 0i');
+  assert.equal(JSON.parse(fs.readFileSync(settingsFile, 'utf8'))['cncMacro.dialect'], 'fanuc');
+});
+
+test('extension-host API tests pass in the same VS Code', { timeout: 3 * STEP }, async () => {
+  await page.close();
+  const { code, lines, page: apiPage } = await server.runExtensionTests(2 * STEP);
+  page = apiPage;
+  await shot('8-extension-host-tests');
+  const results = lines.map((l) => /\b(PASS|FAIL) .*/s.exec(l)?.[0]).filter(Boolean);
+  for (const line of results) console.log(`  ${line.split('\n')[0]}`);
+  assert.ok(results.some((l) => l.startsWith('PASS')), `test results arrived: ${lines.slice(-20).join('\n')}`);
+  assert.deepEqual(results.filter((l) => l.startsWith('FAIL')), []);
+  assert.equal(code, 0);
+  // The bad cncMacro.python.path of one API test left the user an error that says what to do.
+  await page.locator('.notifications-toasts', { hasText: 'cncMacro.python.path (/nonexistent/python3) does not run' }).waitFor();
+});
