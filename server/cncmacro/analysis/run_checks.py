@@ -424,7 +424,11 @@ def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale:
         else:
             en = f"the analysis run stopped here after {m.blocks} blocks, its budget (an endless loop?)"
             zh = f"分析运行在 {m.blocks} 个程序段后于此处停止（达到上限，可能是死循环）"
-        out.append(_diagnostic(f.file, f.pc, "run-limit", en, zh, m.chain(), None, False, line_text, locale))
+        line = f.pc
+        cf = m.compiled.get(f.file)
+        if cf is not None and line >= len(cf.code) - 1:  # stopped as it ran off the program's end
+            line = max(0, len(cf.code) - 2)
+        out.append(_diagnostic(f.file, line, "run-limit", en, zh, m.chain(), None, False, line_text, locale))
     for note in m.notes:
         if note.kind == "call" and note.subject == "repeat-count":
             en = note.message

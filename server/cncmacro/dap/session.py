@@ -15,6 +15,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any, BinaryIO
 
+from ..library.files import is_program_file
 from ..machine import Machine
 from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
 from . import presentation as show
@@ -413,6 +414,8 @@ class Session:
         path = source.get("path") if isinstance(source, dict) else None
         if not isinstance(path, str):
             raise RequestFailed("the source has no path")
+        if not is_program_file(Path(path)):  # the adapter shows program files, never any other file
+            raise RequestFailed(f"{path} is not a program file")
         try:
             return {"content": Path(path).read_text(encoding="utf-8", errors="replace")}
         except OSError as e:

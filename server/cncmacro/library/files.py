@@ -102,13 +102,23 @@ def is_program_file(path: Path) -> bool:
 
 
 def find_program_files(root: Path) -> list[Path]:
-    """Program files under ``root`` (itself, if it is a file), sorted, hidden folders skipped."""
+    """Program files under ``root`` (itself, if it is a file), sorted, hidden folders skipped;
+    a link that leads out of ``root`` is skipped too."""
     if root.is_file():
         return [root]
     found = []
     for p in sorted(root.rglob("*")):
         if any(part.startswith(".") for part in p.relative_to(root).parts):
             continue
-        if p.is_file() and is_program_file(p):
+        if p.is_file() and is_program_file(p) and stays_inside(p, root):
             found.append(p)
     return found
+
+
+def stays_inside(path: Path, folder: Path) -> bool:
+    """True when ``path``, its links followed, is ``folder`` or inside it (with its links
+    followed): a link in a workspace that leads elsewhere on the disk is not read."""
+    try:
+        return path.resolve().is_relative_to(folder.resolve())
+    except (OSError, RuntimeError):  # a link loop
+        return False

@@ -6,7 +6,7 @@ Every key is optional (DESIGN.md "Machine settings")::
     common = [100, 499]            # the volatile common range (default 100-199)
     decimal_point = "increment"    # or "calculator" (default): how X10 without a point is read
     block_delete = true            # skip blocks that start with '/'
-    persistent_file = ".cncmacro-vars.json"   # keeps #500-#999 between runs
+    persistent_file = ".cncmacro-vars.json"   # keeps #500-#999 between runs (a path inside this folder)
     max_blocks = 1000000           # the analysis budget per run
     date = 20261122                # the clock (#3011, #3012) when runs must be repeatable
     time = 153000
@@ -33,7 +33,7 @@ Errors are reported as ``MachineFileError`` with the file and the key, never as 
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from pathlib import Path
+from pathlib import Path, PureWindowsPath
 
 import tomllib
 
@@ -149,7 +149,10 @@ def settings_from_mapping(
             raise fail("block_delete", "must be true or false")
         kw["block_delete"] = data["block_delete"]
     if "persistent_file" in data:
-        kw["persistent_file"] = str(data["persistent_file"])
+        pf = str(data["persistent_file"])
+        if not pf or Path(pf).is_absolute() or PureWindowsPath(pf).is_absolute() or ".." in Path(pf).parts:
+            raise fail("persistent_file", "must be a file name or a path inside the machine file's folder")
+        kw["persistent_file"] = pf
     for key in ("max_blocks", "date", "time"):
         if key in data:
             v = data[key]

@@ -5,7 +5,8 @@ up first among the O programs of the calling file, then in the calling file's fo
 extra folder, in order: a file named after the number (``O9100.nc``, ``O9100.CNC``,
 ``9100.nc``, ``O9100``), then any program file whose text has an ``O9100`` header. A bracketed
 name is a file name (``CUT.CNC``), or an O number when it looks like one (``P[O1004]``).
-Only files inside those folders are ever read: a name with a path in it is never found.
+Only files inside those folders are ever read: a name with a path in it is never found, and a
+link in a folder that leads out of it (and out of every extra folder) is not followed.
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ from ..syntax.block_parser import BlockCache, collector_paused
 from ..syntax.document import split_lines
 from ..syntax.program import Program, ProgramUnit, build_program
 from .dialect_choice import dialect_from_text
-from .files import BinaryFileError, is_program_file, read_program
+from .files import BinaryFileError, is_program_file, read_program, stays_inside
 
 _NAME_OK = re.compile(r"^[\w+\-.\u4e00-\u9fff]+$")
 _O_NAME = re.compile(r"^[Oo](\d{1,8})$")
@@ -111,7 +112,12 @@ class ProgramLibrary:
         files = self._listing.get(folder)
         if files is None:
             try:
-                files = sorted(p for p in folder.iterdir() if p.is_file() and is_program_file(p))
+                allowed = [folder, *self.folders]
+                files = sorted(
+                    p
+                    for p in folder.iterdir()
+                    if p.is_file() and is_program_file(p) and any(stays_inside(p, f) for f in allowed)
+                )
             except OSError:
                 files = []
             self._listing[folder] = files

@@ -110,12 +110,12 @@ class ExpressionCompiler:
 
     def constant(self, node: Expr) -> tuple[bool, Value]:
         """(True, value) when ``node`` is a literal number (possibly negated)."""
+        while isinstance(node, Bracket):  # a loop, not recursion: brackets may nest 1,000 deep
+            node = node.inner
         if isinstance(node, Number):
             return True, node.value
         if isinstance(node, Unary) and isinstance(node.operand, Number):
             return True, -node.operand.value if node.op == "-" else node.operand.value
-        if isinstance(node, Bracket):
-            return self.constant(node.inner)
         return False, None
 
     def _value(self, node: Expr) -> Getter:

@@ -3,17 +3,22 @@
 The file is written to a temporary file in the same folder, flushed and fsynced, then renamed
 over the old one, so that a run killed at any moment leaves either the old file or the new
 one, never a torn one. A missing or unreadable file means every persistent variable is
-vacant; a damaged one is reported and ignored, never half-read.
+vacant; a damaged one is reported and ignored, never half-read. A run killed while writing
+leaves its temporary file behind; the next save removes those older than ``STALE_SECONDS``
+(a younger one may belong to a run still writing).
 """
 
 from __future__ import annotations
 
+import glob
 import json
 import os
 import tempfile
+import time
 from pathlib import Path
 
 FIRST, LAST = 500, 999
+STALE_SECONDS = 60.0
 
 
 class PersistentFileError(ValueError):
@@ -56,6 +61,7 @@ def save_persistent(path: Path, values: dict[int, float]) -> None:
         except OSError:
             pass
         raise
+    _remove_stale_temporaries(path)
     try:  # make the rename itself durable
         dir_fd = os.open(folder, os.O_RDONLY)
     except OSError:
@@ -66,3 +72,14 @@ def save_persistent(path: Path, values: dict[int, float]) -> None:
         pass
     finally:
         os.close(dir_fd)
+
+
+def _remove_stale_temporaries(path: Path) -> None:
+    """Delete the temporary files that killed runs left beside ``path``."""
+    now = time.time()
+    for tmp in path.parent.glob(f".{glob.escape(path.name)}.*.tmp"):
+        try:
+            if now - tmp.stat().st_mtime > STALE_SECONDS:
+                tmp.unlink()
+        except OSError:
+            pass

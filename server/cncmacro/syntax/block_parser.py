@@ -152,7 +152,7 @@ class BlockCache:
         append = out.append
         plain = _PLAIN_LINE
         for line in lines:
-            if plain(line) is not None and len(line) <= MAX_BLOCK_CHARS:
+            if len(line) <= MAX_BLOCK_CHARS and plain(line) is not None:
                 append(Block(plain=line))  # as cheap as a lookup: not cached
                 continue
             b = blocks.get(line)

@@ -65,7 +65,7 @@ _TOKEN = re.compile(
     r"[ \t]*(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|(" + _KEYWORDS + r")|(==|!=|<=|>=|[-+*/\[\]=<>#])|([A-Za-z]))",
     re.I,
 )
-_BRACKET_NAME = re.compile(r"\[(?=[^\[\]#()\s]*[^\[\]#()\s\d.+\-*/])[^\[\]#()\s.][^\[\]#()\s]*\]")
+_BRACKET_NAME = re.compile(r"\[(?=[^\[\]#()\s]*[^\[\]#()\s\d.+\-*/])(?:[^\[\]#()\s.]|\.(?=[./\\]))[^\[\]#()\s]*\]")
 _FUNCS = frozenset("SIN COS TAN ASIN ACOS SQRT ABS LN EXP ROUND FIX FUP BIN BCD".split())
 _RELOPS = frozenset("EQ NE GT GE LT LE == != <= >= < >".split())
 _MULOPS = frozenset(("*", "/", "AND", "MOD"))
