@@ -73,7 +73,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
     dialect = machine.dialect
     budget = args.max_blocks if args.max_blocks is not None else machine.settings.max_blocks
     while True:
-        status = machine.run(max(1, budget - machine.blocks))
+        status = machine.run(budget - machine.blocks)  # 0 left (a pause on the last block): limit
         if status != PAUSED:
             break
         machine.resume()  # M00 and #3006 pause a machine; a simulation goes on

@@ -43,6 +43,7 @@ class Collector:
     def __init__(self) -> None:
         self.baseline = resident_bytes() or 0
         self.analyses = 0
+        self.since_clean = 0  # analyses since the last real collection
 
     @contextmanager
     def paused(self) -> Iterator[None]:
@@ -61,6 +62,7 @@ class Collector:
         a clean-up worth it is counted from there."""
         gc.freeze()
         self.analyses += 1
+        self.since_clean += 1
         if new_documents:
             self._rebase()
 
@@ -71,8 +73,10 @@ class Collector:
         return now > self.baseline * factor + SLACK_BYTES
 
     def due(self) -> bool:
-        """Whether memory has grown enough to be worth a clean-up at a quiet moment."""
-        return self._grown(GROWTH)
+        """Whether memory has grown enough to be worth a clean-up at a quiet moment, or
+        ``ANALYSES`` analyses went by without one (each new document moves the baseline, so
+        growth alone would never call for a clean-up while documents keep being opened)."""
+        return self._grown(GROWTH) or self.since_clean >= ANALYSES
 
     def urgent(self) -> bool:
         """Whether it has grown so much that the clean-up cannot wait."""
@@ -83,6 +87,7 @@ class Collector:
         gc.unfreeze()
         gc.collect()
         gc.freeze()
+        self.since_clean = 0
         self._rebase()
 
     def _rebase(self) -> None:

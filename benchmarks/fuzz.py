@@ -1,0 +1,100 @@
+"""Long fuzz runs: random and mutated programs through parse, check, run and every LSP handler.
+
+    .venv/bin/python benchmarks/fuzz.py --minutes 30 [--seed N] [--crashes DIR]
+
+Each case is checked against the invariants of ``fuzzing.py`` (no uncaught exception, every
+run within its budget, every diagnostic range inside the document). A case that breaks one is
+saved to the crashes folder (``crash-<n>.nc`` with the traceback beside it as ``.txt``) and
+the run goes on. Every few hundred cases one oversized input is tried too (long lines, deep
+brackets, many lines). At the end it prints the cases run, the crashes, the largest inputs
+tried and the slowest case; SIGINT or SIGTERM ends the run early with the same figures.
+"""
+
+from __future__ import annotations
+
+import argparse
+import random
+import signal
+import sys
+import time
+import traceback
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from fuzzing import DIALECTS, LspTarget, cases, corpus_texts, random_program, run_case
+
+
+def oversized(rnd: random.Random, k: int) -> str:
+    """A large input of one of several shapes, growing with ``k``."""
+    size = min(200_000, 2_000 * (1 + k))
+    shape = k % 5
+    if shape == 0:
+        return "G01 " + "X1.5 " * (size // 5) + "\n"
+    if shape == 1:
+        depth = min(5_000, size // 10)
+        return "#1=" + "[" * depth + "1" + "]" * depth + "\nIF[" + "[" * depth + "\n"
+    if shape == 4:
+        depth = min(5_000, size // 10)
+        return "O0001\nG01 X" + "[" * depth + "1.5" + "]" * depth + " Y#[" * depth + "1" + "]" * depth + "\nM30\n"
+    if shape == 2:
+        return "\n".join(random_program(rnd, 40) for _ in range(size // 2_000))
+    return "O0001\nWHILE[1 EQ 1]DO1\n" + "#100=#100+1\n" * (size // 12) + "END1\nM30\n"
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--minutes", type=float, default=1.0)
+    ap.add_argument("--seed", type=int, default=int(time.time()))
+    ap.add_argument("--crashes", default="fuzz-crashes", help="folder for the inputs that break an invariant")
+    args = ap.parse_args(argv)
+    rnd = random.Random(args.seed)
+    lsp = LspTarget()
+    seeds = corpus_texts()
+    crashes_dir = Path(args.crashes)
+    deadline = time.monotonic() + args.minutes * 60
+    n = crashes = big = 0
+    largest_chars = largest_lines = 0
+    slowest = (0.0, "")
+    source = cases(rnd, seeds)
+    print(f"seed {args.seed}, {len(seeds)} corpus programs, {args.minutes:g} minutes", flush=True)
+    report = time.monotonic() + 60
+    stop: list[int] = []  # SIGINT or SIGTERM: finish the case and print the figures
+    signal.signal(signal.SIGINT, lambda sig, frame: stop.append(sig))
+    signal.signal(signal.SIGTERM, lambda sig, frame: stop.append(sig))
+    while time.monotonic() < deadline and not stop:
+        if n % 500 == 499:
+            text = oversized(rnd, big)
+            big += 1
+        else:
+            text = next(source)
+        dialect = rnd.choice(DIALECTS)
+        t0 = time.perf_counter()
+        try:
+            run_case(text, dialect, lsp, rnd)
+        except Exception:
+            crashes += 1
+            crashes_dir.mkdir(parents=True, exist_ok=True)
+            stem = crashes_dir / f"crash-{crashes}"
+            stem.with_suffix(".nc").write_text(text, "utf-8", errors="surrogatepass")
+            stem.with_suffix(".txt").write_text(f"dialect {dialect}\n{traceback.format_exc()}", "utf-8")
+            print(f"crash {crashes}: {traceback.format_exc().strip().splitlines()[-1]} -> {stem}.nc", flush=True)
+            lsp = LspTarget()  # a fresh server after a failure
+        took = time.perf_counter() - t0
+        if took > slowest[0]:
+            slowest = (took, f"{len(text)} chars, {text.count(chr(10)) + 1} lines")
+        n += 1
+        largest_chars = max(largest_chars, len(text))
+        largest_lines = max(largest_lines, text.count("\n") + 1)
+        if time.monotonic() > report:
+            print(f"  {n} cases, {crashes} crashes", flush=True)
+            report = time.monotonic() + 60
+    print(f"cases run: {n}")
+    print(f"crashes: {crashes}" + (f" (inputs in {crashes_dir}/)" if crashes else ""))
+    print(f"oversized inputs: {big}; largest input: {largest_chars} characters; most lines: {largest_lines}")
+    print(f"slowest case: {slowest[0]:.2f} s ({slowest[1]})")
+    return 1 if crashes else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,378 @@
+"""The fuzzing targets and invariants shared by ``benchmarks/fuzz.py`` and ``tests/hardening/``.
+
+A case is a program text and a dialect. ``run_case`` sends it through every layer a user can
+reach: the parser, ``WorkspaceAnalysis`` (the static checks and the bounded runs), a bounded
+``Machine`` run (as ``cncmacro run`` does, without touching a persistent file), and every
+request handler of the language server, called in-process on a server that holds the text as
+an open document. The invariants: no exception escapes; every run ends within its block
+budget; every diagnostic range lies inside the document (in the protocol strictly; an analysis
+diagnostic may mark the one column just past a line's end, where a block ends too early). A broken
+invariant raises ``InvariantError`` naming it. ``random_program`` writes programs from macro
+fragments and noise, ``mutate`` damages a text the way hands and tools do (deleted, doubled
+and swapped characters, bracket runs, control bytes, CJK text, line-break changes).
+"""
+
+from __future__ import annotations
+
+import asyncio
+import inspect
+import random
+import tempfile
+from collections.abc import Iterator
+from pathlib import Path
+
+from lsprotocol import types
+
+from cncmacro.analysis.workspace import WorkspaceAnalysis
+from cncmacro.dialects import get_dialect
+from cncmacro.library.machine_file import MachineSettings
+from cncmacro.library.programs import ProgramLibrary
+from cncmacro.lsp.server import CncMacroServer, build_server
+from cncmacro.machine import Machine
+from cncmacro.machine.machine import PAUSED
+from cncmacro.syntax.document import ParsedDocument, split_lines
+
+ROOT = Path(__file__).resolve().parent.parent
+DIALECTS = ("fanuc", "gsk980tdi")
+REQUEST_SECONDS = 60.0  # a request or analysis still unanswered after this is a hang
+RUN_BUDGET = 3000  # blocks per fuzzed run: enough to loop and call, small enough to stay fast
+_FOLDER = Path(tempfile.gettempdir()) / "cncmacro-fuzz-workspace"
+
+
+class InvariantError(AssertionError):
+    """A fuzzed case broke an invariant; the message says which."""
+
+
+# ---------------------------------------------------------------- generating programs
+
+_ATOMS = ["1", "0", "2.5", "-3", ".5", "1.", "#1", "#24", "#100", "#500", "#0", "#3000", "#5021", "#[#1]", "#9100"]
+_OPS = ["+", "-", "*", "/", " AND ", " OR ", " XOR ", " MOD "]
+_FUNCS = ["SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "LN", "EXP", "ROUND", "FIX", "FUP", "BIN", "BCD"]
+_RELS = [" EQ ", " NE ", " GT ", " GE ", " LT ", " LE ", "==", "<", ">="]
+_NC = ["G00", "G01", "G02", "G03", "G90", "G91", "G54", "G43 H1", "G81 R2 Z-5", "G80", "M03 S1000", "M05", "T0101"]
+_NOISE = ["", "(", ")", "[", "]", "#", "=", ";", "%", "/", "\t", "  ", "O", "N", "P[", "G65", "\x00", "\x1b", "中文",
+          "（注释）", "\ufeff", "\r", "..", "/../"]  # fmt: skip
+
+
+def _expr(rnd: random.Random, depth: int = 0) -> str:
+    k = rnd.random()
+    if depth > 4 or k < 0.35:
+        return rnd.choice(_ATOMS)
+    if k < 0.6:
+        return _expr(rnd, depth + 1) + rnd.choice(_OPS) + _expr(rnd, depth + 1)
+    if k < 0.75:
+        return f"[{_expr(rnd, depth + 1)}]"
+    if k < 0.9:
+        f = rnd.choice(_FUNCS)
+        if f == "ATAN" and rnd.random() < 0.5:
+            return f"ATAN[{_expr(rnd, depth + 1)}]/[{_expr(rnd, depth + 1)}]"
+        return f"{f}[{_expr(rnd, depth + 1)}]"
+    return f"#[{_expr(rnd, depth + 1)}]"
+
+
+def _cond(rnd: random.Random) -> str:
+    one = f"{_expr(rnd, 2)}{rnd.choice(_RELS)}{_expr(rnd, 2)}"
+    if rnd.random() < 0.2:
+        return f"[{one}] {rnd.choice(['AND', 'OR'])} [{_expr(rnd, 3)}{rnd.choice(_RELS)}{_expr(rnd, 3)}]"
+    return one
+
+
+def _var(rnd: random.Random) -> str:
+    return rnd.choice(["#1", "#2", "#24", "#26", "#100", "#101", "#150", "#500", "#999", "#3000", "#3006", "#[#100]"])
+
+
+def _statement(rnd: random.Random, labels: list[int], programs: list[int]) -> str:
+    k = rnd.randrange(16)
+    label = rnd.choice(labels) if labels else rnd.randint(1, 99)
+    if k < 4:
+        return f"{_var(rnd)}={_expr(rnd)}"
+    if k == 4:
+        return f"IF[{_cond(rnd)}]GOTO{label}"
+    if k == 5:
+        return f"IF[{_cond(rnd)}]THEN{_var(rnd)}={_expr(rnd)}"
+    if k == 6:
+        return f"GOTO{rnd.choice([str(label), '#1', '[#100+1]', '0', '100000'])}"
+    if k == 7:
+        n = rnd.randint(1, 4)
+        return f"WHILE[{_cond(rnd)}]DO{n}\n#100=#100+1\nEND{n}"
+    if k == 8:
+        p = rnd.choice(programs) if programs else rnd.randint(1, 9999)
+        return f"G65 P{p} L{rnd.choice(['', '2', '0', '99999', '#1'])} A{_expr(rnd, 3)} X{_expr(rnd, 3)}"
+    if k == 9:
+        p = rnd.choice(programs) if programs else rnd.randint(1, 9999)
+        return f"M98 P{p}{rnd.choice(['', ' L3', ' Q5'])}"
+    if k == 10:
+        return f"G66 P{rnd.choice(programs) if programs else 9} A1"
+    if k == 11:
+        return rnd.choice(["M99", "M30", "M02", "G67", "M00", f"M99 P{label}", "#3000=1(ALARM)", "DPRNT[X#1[53]]"])
+    if k == 12:
+        return f"G65 H{rnd.randint(1, 99):02d} P#{rnd.randint(100, 199)} Q{rnd.randint(-9, 9)} R{rnd.randint(0, 9)}"
+    if k == 13:
+        return f"{rnd.choice(_NC)} X{_expr(rnd, 3)} Z{rnd.choice(['#1', '-2.5', '[#24+1]'])}"
+    if k == 14:
+        return f"G65 P[{rnd.choice(['CUT', '切削', '../../etc/passwd', '/etc/passwd', 'O1004', '..'])}]"
+    return rnd.choice(_NOISE) * rnd.randint(1, 3)
+
+
+def random_program(rnd: random.Random, max_lines: int = 40) -> str:
+    """A program of O units with labels, loops, calls, alarms and some noise."""
+    programs = [rnd.randint(1, 9999) for _ in range(rnd.randint(1, 3))]
+    out: list[str] = []
+    for number in programs:
+        out.append(f"O{number:04d} ({rnd.choice(['MAIN', '主程序', 'SUB'])})")
+        labels: list[int] = [rnd.randint(1, 200) for _ in range(rnd.randint(0, 4))]
+        for _ in range(rnd.randint(1, max(1, max_lines // len(programs)))):
+            prefix = f"N{labels.pop()} " if labels and rnd.random() < 0.3 else ""
+            out.append(prefix + _statement(rnd, labels or [rnd.randint(1, 200)], programs))
+        out.append(rnd.choice(["M30", "M99", "M02", ""]))
+    if rnd.random() < 0.3:
+        out.insert(0, "(cncmacro: dialect=gsk980tdi)")
+    sep = rnd.choice(["\n", "\n", "\r\n", "\r"])
+    return sep.join(out) + rnd.choice(["", sep])
+
+
+def mutate(text: str, rnd: random.Random, rounds: int = 3) -> str:
+    """``text`` damaged a few times."""
+    for _ in range(rnd.randint(1, rounds)):
+        if not text:
+            text = rnd.choice(_NOISE)
+            continue
+        i = rnd.randrange(len(text) + 1)
+        j = min(len(text), i + rnd.randint(0, 12))
+        k = rnd.randrange(9)
+        if k == 0:
+            text = text[:i] + text[j:]
+        elif k == 1:
+            text = text[:i] + text[i:j] * rnd.randint(2, 5) + text[j:]
+        elif k == 2:
+            text = text[:i] + rnd.choice(_NOISE) + text[i:]
+        elif k == 3:
+            n = rnd.randint(1, 40)
+            text = text[:i] + "[" * n + "1" + "]" * rnd.randint(0, n) + text[i:]
+        elif k == 4:
+            text = text[:i] + chr(rnd.randint(0, 0x3000)) + text[i:]
+        elif k == 5:
+            text = text.replace("\n", rnd.choice(["\r\n", "\r", "\n\n"]))
+        elif k == 6:
+            text = text[:i] + str(rnd.choice([0, -1, 1e308, 99999999, 1e-300, 10**30])) + text[j:]
+        elif k == 7:
+            text = text[:i] + text[j:] + text[i:j]
+        else:
+            text = text[:i] + rnd.choice(["#", "G65 P", "GOTO", "END1", "DO1", "WHILE[", "IF[", "M98 P"]) + text[i:]
+    return text
+
+
+def corpus_texts() -> list[str]:
+    """The example programs and the test corpus, as seeds for mutation."""
+    out = []
+    for folder in (ROOT / "examples", ROOT / "tests" / "corpus"):
+        for p in sorted(folder.rglob("*")):
+            if p.is_file() and p.suffix.lower() in (".nc", ".cnc", ".mac"):
+                out.append(p.read_text("utf-8", errors="replace"))
+    return out
+
+
+def cases(rnd: random.Random, seeds: list[str]) -> Iterator[str]:
+    """An endless mix of generated programs, mutated corpus programs and mutated generated ones."""
+    while True:
+        k = rnd.random()
+        if k < 0.4 or not seeds:
+            yield random_program(rnd)
+        elif k < 0.8:
+            yield mutate(rnd.choice(seeds), rnd)
+        else:
+            yield mutate(random_program(rnd), rnd, rounds=6)
+
+
+# ---------------------------------------------------------------- the invariants
+
+
+def _inside(lines: list[str], line: int, col: int, end_line: int, end_col: int, what: str) -> None:
+    n = len(lines)
+    if not (0 <= line <= end_line < n):
+        raise InvariantError(f"{what}: lines {line}..{end_line} outside a document of {n} lines")
+    # a mark right after a line's last character (a block that ends too early) is one column wide
+    if not (0 <= col <= len(lines[line]) and 0 <= end_col <= len(lines[end_line]) + 1):
+        raise InvariantError(f"{what}: columns {col}..{end_col} outside lines {line}/{end_line}")
+    if (line, col) > (end_line, end_col):
+        raise InvariantError(f"{what}: range ends before it starts")
+
+
+def check_analysis(text: str, dialect: str, path: str, budget: int = RUN_BUDGET) -> int:
+    """Analyse ``text`` as the checker does; return the number of diagnostics."""
+    ws = WorkspaceAnalysis(dialect=dialect, max_blocks=budget)
+    ws.open(path, text, 1)
+    result = ws.analyze(path)
+    if result is None:
+        raise InvariantError("analysis returned no result without being cancelled")
+    lines = split_lines(text)
+    count = 0
+    for file, diags in result.diagnostics.items():
+        for d in diags:
+            count += 1
+            if file == path:
+                _inside(lines, d.line, d.column, d.end_line, d.end_column, f"diagnostic {d.code}")
+    for run in ws.runs.values():
+        if run.machine.blocks > budget:
+            raise InvariantError(f"an analysis run executed {run.machine.blocks} blocks, over its budget {budget}")
+    return count
+
+
+def check_run(text: str, dialect: str, path: str, budget: int = RUN_BUDGET) -> str:
+    """Run ``text`` on the machine as ``cncmacro run`` does (no persistent file); its status."""
+    m = Machine(get_dialect(dialect), MachineSettings(), ProgramLibrary([]))
+    m.start_file(path, text)
+    while True:
+        status = m.run(budget - m.blocks)
+        if status != PAUSED:
+            break
+        m.resume()
+    if m.blocks > budget:
+        raise InvariantError(f"a run executed {m.blocks} blocks, over its budget {budget}")
+    return status
+
+
+class LspTarget:
+    """A language server in this process, driven through its registered handlers: documents
+    are opened, edited and closed by the notification handlers (the analysis runs as it does
+    in the editor), every request handler is called at a few positions, and what the server
+    publishes is caught instead of sent and checked against the document it is for."""
+
+    def __init__(self) -> None:
+        self.server: CncMacroServer = build_server()
+        self.server.settings_ready.set()
+        self.features = self.server.protocol.fm.features
+        self.published: list[types.PublishDiagnosticsParams] = []
+        self.server.text_document_publish_diagnostics = self.published.append  # type: ignore[method-assign]
+        self.loop = asyncio.new_event_loop()
+
+    def close(self) -> None:
+        self.loop.close()
+
+    def check(self, text: str, uri: str, positions: list[tuple[int, int]]) -> int:
+        """Open ``text``, ask every request at ``positions``, edit at each, check what was
+        published; close it. The number of requests answered."""
+        return self.loop.run_until_complete(self._check(text, uri, positions))
+
+    async def _call(self, method: str, params: object) -> object:
+        handler = self.features.get(method)
+        if handler is None:
+            return None
+        got = handler(params)
+        if inspect.isawaitable(got):
+            got = await asyncio.wait_for(got, REQUEST_SECONDS)
+        return got
+
+    async def _settle(self) -> None:
+        """Let the scheduled analyses finish."""
+        for _ in range(1000):
+            await asyncio.sleep(0)
+            pending = [t for t in asyncio.all_tasks(self.loop) if t is not asyncio.current_task()]
+            if not pending:
+                return
+            await asyncio.wait(pending, timeout=REQUEST_SECONDS)
+        raise InvariantError("the server's analysis tasks never settled")
+
+    def _check_published(self, uri: str, lines: list[str], version: int) -> None:
+        """Everything published for ``uri`` since the last check is for ``version`` (no edit
+        let an analysis run in between) and lies inside its ``lines``."""
+        for p in self.published:
+            if p.uri != uri:
+                continue
+            if p.version is not None and p.version != version:
+                raise InvariantError(f"diagnostics of version {p.version} published after version {version}")
+            for d in p.diagnostics:
+                r = d.range
+                _inside_client(lines, r.start.line, r.start.character, r.end.line, r.end.character, d.code)
+        self.published.clear()
+
+    async def _check(self, text: str, uri: str, positions: list[tuple[int, int]]) -> int:
+        ident = types.TextDocumentIdentifier(uri)
+        item = types.TextDocumentItem(uri=uri, language_id="cncmacro", version=1, text=text)
+        await self._call(types.TEXT_DOCUMENT_DID_OPEN, types.DidOpenTextDocumentParams(text_document=item))
+        calls = 0
+        try:
+            await self._settle()
+            doc = self.server.documents.get(uri)
+            self._check_published(uri, doc.lines, 1)
+            whole = types.Range(types.Position(0, 0), types.Position(len(doc.lines), 0))
+            refs = types.ReferenceContext(include_declaration=True)
+            requests: list[tuple[str, object]] = [
+                (types.TEXT_DOCUMENT_DOCUMENT_SYMBOL, types.DocumentSymbolParams(text_document=ident)),
+                (types.TEXT_DOCUMENT_FOLDING_RANGE, types.FoldingRangeParams(text_document=ident)),
+                (types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL, types.SemanticTokensParams(text_document=ident)),
+                (types.TEXT_DOCUMENT_SEMANTIC_TOKENS_RANGE,
+                 types.SemanticTokensRangeParams(text_document=ident, range=whole)),
+                (types.TEXT_DOCUMENT_INLAY_HINT, types.InlayHintParams(text_document=ident, range=whole)),
+                (types.WORKSPACE_SYMBOL, types.WorkspaceSymbolParams(query="O")),
+                (types.TEXT_DOCUMENT_DIAGNOSTIC, types.DocumentDiagnosticParams(text_document=ident)),
+            ]  # fmt: skip
+            for line, col in positions:
+                pos = types.Position(line, col)
+                ctx = types.CodeActionContext(diagnostics=[])
+                requests += [
+                    (types.TEXT_DOCUMENT_HOVER, types.HoverParams(text_document=ident, position=pos)),
+                    (types.TEXT_DOCUMENT_DEFINITION, types.DefinitionParams(text_document=ident, position=pos)),
+                    (types.TEXT_DOCUMENT_REFERENCES,
+                     types.ReferenceParams(text_document=ident, position=pos, context=refs)),
+                    (types.TEXT_DOCUMENT_PREPARE_RENAME, types.PrepareRenameParams(text_document=ident, position=pos)),
+                    (types.TEXT_DOCUMENT_RENAME,
+                     types.RenameParams(text_document=ident, position=pos, new_name="N77")),
+                    (types.TEXT_DOCUMENT_COMPLETION, types.CompletionParams(text_document=ident, position=pos)),
+                    (types.TEXT_DOCUMENT_SIGNATURE_HELP, types.SignatureHelpParams(text_document=ident, position=pos)),
+                    (types.TEXT_DOCUMENT_CODE_ACTION,
+                     types.CodeActionParams(text_document=ident, range=types.Range(pos, pos), context=ctx)),
+                ]  # fmt: skip
+            for method, params in requests:
+                await self._call(method, params)
+                calls += 1
+            for version, (line, col) in enumerate(positions, start=2):  # an edit at each position
+                change = types.DidChangeTextDocumentParams(
+                    text_document=types.VersionedTextDocumentIdentifier(uri=uri, version=version),
+                    content_changes=[types.TextDocumentContentChangePartial(
+                        range=types.Range(types.Position(line, col), types.Position(line, col + 3)), text="#1=[")],
+                )  # fmt: skip
+                await self._call(types.TEXT_DOCUMENT_DID_CHANGE, change)
+                where = types.Position(line, col)
+                await self._call(types.TEXT_DOCUMENT_HOVER, types.HoverParams(text_document=ident, position=where))
+                calls += 1
+            await self._settle()
+            doc = self.server.documents.get(uri)
+            self._check_published(uri, doc.lines, doc.version)
+        finally:
+            await self._call(types.TEXT_DOCUMENT_DID_CLOSE,
+                             types.DidCloseTextDocumentParams(text_document=ident))  # fmt: skip
+            await self._settle()
+            self.published.clear()
+        return calls
+
+
+def _inside_client(lines: list[str], line: int, col: int, end_line: int, end_col: int, what: object) -> None:
+    """A protocol range (UTF-16 columns) inside the document."""
+    wide = [len(x.encode("utf-16-le")) // 2 for x in lines]
+    n = len(lines)
+    if not (0 <= line <= end_line < n):
+        raise InvariantError(f"protocol diagnostic {what}: lines {line}..{end_line} outside {n} lines")
+    if not (0 <= col <= wide[line] and 0 <= end_col <= wide[end_line]):
+        raise InvariantError(f"protocol diagnostic {what}: columns {col}..{end_col} outside the line")
+
+
+def positions_in(text: str, rnd: random.Random, count: int = 4) -> list[tuple[int, int]]:
+    """Cursor positions in ``text``: inside lines, at their ends and past them."""
+    lines = split_lines(text) or [""]
+    out = []
+    for _ in range(count):
+        line = rnd.randrange(len(lines) + 1)  # one past the end too
+        width = len(lines[line]) if line < len(lines) else 0
+        out.append((line, rnd.randint(0, width + 2)))
+    return out
+
+
+def run_case(text: str, dialect: str, lsp: LspTarget, rnd: random.Random) -> None:
+    """Every target on one case; raises on a broken invariant or an uncaught exception."""
+    _FOLDER.mkdir(exist_ok=True)
+    path = str(_FOLDER / "O0001.nc")
+    ParsedDocument(text)
+    check_analysis(text, dialect, path)
+    check_run(text, dialect, path)
+    lsp.check(text, (_FOLDER / "O0001.nc").as_uri(), positions_in(text, rnd))

@@ -1,0 +1,85 @@
+"""The analysis is bounded in blocks, time and memory whatever the program does: a run stops
+at its block budget, at its wall-clock limit and when it has recorded too many messages, each
+time with a ``run-limit`` diagnostic that says which limit it was; and its checkpoints stay
+few (a ``#3006`` pause in a loop used to add one per pass)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from cncmacro.analysis import run_checks
+from cncmacro.analysis.workspace import WorkspaceAnalysis
+
+
+def analysed(tmp_path: Path, text: str, **limits: float) -> tuple[WorkspaceAnalysis, list[tuple[str, str]]]:
+    path = str(tmp_path / "O0001.nc")
+    ws = WorkspaceAnalysis(max_blocks=int(limits.pop("max_blocks", 1_000_000)))
+    for name, value in limits.items():
+        setattr(ws, name, value)
+    ws.open(path, text, 1)
+    result = ws.analyze(path)
+    assert result is not None
+    return ws, [(d.code, d.message) for d in result.diagnostics[path] if d.code != "not-executed"]
+
+
+def test_an_endless_loop_stops_at_the_wall_clock_limit_with_run_limit(tmp_path: Path) -> None:
+    ws, found = analysed(tmp_path, "O0001\nN1 #100=#100+1\nGOTO1\nM30\n", max_blocks=10**12, max_seconds=0.3)
+    [(code, message)] = found
+    assert code == "run-limit" and "time limit" in message
+    [run] = ws.runs.values()
+    assert run.machine.blocks < 10**12
+
+
+def test_a_run_that_prints_without_end_stops_at_its_record_limit(tmp_path: Path) -> None:
+    text = "O0001\nWHILE[1 EQ 1]DO1\nDPRNT[X#100[53]]\n#100=#100+1\nEND1\nM30\n"
+    ws, found = analysed(tmp_path, text, max_records=2_000)
+    [(code, message)] = found
+    assert code == "run-limit" and "memory limit" in message and "2000" in message
+    [run] = ws.runs.values()
+    assert len(run.machine.notes) <= 2_000 + run_checks.CHUNK  # checked between chunks
+
+
+def test_a_pause_in_a_loop_adds_no_checkpoint_of_its_own(tmp_path: Path) -> None:
+    text = "O0001\nWHILE[1 EQ 1]DO1\n#3006=1(CHECK)\nEND1\nM30\n"
+    ws, found = analysed(tmp_path, text, max_blocks=200_000)
+    assert [code for code, _ in found] == ["run-limit"]
+    [run] = ws.runs.values()
+    assert run.machine.blocks == 200_000
+    assert len(run.checkpoints) <= 200_000 // run_checks.CHUNK + 1  # was one per pause: 66,667
+
+
+def test_a_long_run_keeps_at_most_max_checkpoints(tmp_path: Path) -> None:
+    ws, found = analysed(tmp_path, "O0001\nN1 #100=#100+1\nGOTO1\nM30\n", max_blocks=3_000_000)
+    assert [code for code, _ in found] == ["run-limit"]
+    [run] = ws.runs.values()
+    assert len(run.checkpoints) <= run_checks.MAX_CHECKPOINTS
+    blocks = [c.blocks for c in run.checkpoints]
+    assert blocks == sorted(blocks) and blocks[0] == 0
+
+
+def test_an_edit_after_thinned_checkpoints_still_gives_the_right_result(tmp_path: Path) -> None:
+    path = str(tmp_path / "O0001.nc")
+    ws = WorkspaceAnalysis(max_blocks=3_000_000)
+    ws.open(path, "O0001\n#1=0\nWHILE[#1 LT 700000]DO1\n#1=#1+1\nEND1\n#2=1/[#1-700000]\nM30\n", 1)
+    first = ws.analyze(path)  # 2.1 million blocks: the checkpoints were thinned
+    assert first is not None and [d.code for d in first.diagnostics[path]][:1] == ["division-by-zero"]
+    [run] = ws.runs.values()
+    assert run.interval > run_checks.CHUNK
+    ws.change(path, 5, 0, 5, 100, "#2=1/[#1-699999]", 2)
+    second = ws.analyze(path)
+    assert second is not None and [d.code for d in second.diagnostics[path]] == []  # 1/1 now
+
+
+def test_a_run_stopped_as_a_macro_runs_off_its_end_is_reported_on_its_last_line(tmp_path: Path) -> None:
+    """Found by the fuzzer: a budget that ran out just as a called program ran past its last
+    line (no M99) put ``run-limit`` on the line after the end of the file."""
+    text = "O0001\nG65 P2 L9999\nM30\nO0002\n#100=#100+1"
+    for budget in (2, 4, 6):
+        ws, _ = analysed(tmp_path, text, max_blocks=budget)
+        [run] = ws.runs.values()
+        assert run.machine.frames[-1].pc == 5  # the place after the last line
+        path = str(tmp_path / "O0001.nc")
+        result = ws.analyze(path)
+        assert result is not None
+        [limit] = [d for d in result.diagnostics[path] if d.code == "run-limit"]
+        assert (limit.line, limit.end_line) == (4, 4)
