@@ -3,6 +3,7 @@
 // macro, Run Program), then the extension-host tests of api/index.js. Screenshots go to
 // test-output/editor/. Run: node --test tests/editor/ (after npm run package).
 import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test as nodeTest } from 'node:test';
@@ -116,6 +117,33 @@ test('the Problems panel lists the planted undefined-label error', { timeout: ST
   assert.match(await row.innerText(), /undefined-label/);
   assert.equal(await page.locator('.markers-panel .monaco-list-row', { hasText: 'there is no N99' }).count(), 1);
   await shot('3-problems');
+});
+
+/** The process ids of the language servers code-server's extension host started. */
+function languageServers() {
+  const found = spawnSync('pgrep', ['-g', String(server.child.pid), '-f', 'cncmacro lsp'], { encoding: 'utf8' });
+  return found.stdout.split('\n').filter(Boolean).map(Number);
+}
+
+test('a language server killed mid-session is started again and the diagnostics come back', { timeout: STEP }, async () => {
+  const before = languageServers();
+  assert.ok(before.length > 0, 'no language server is running');
+  for (const pid of before) process.kill(pid, 'SIGKILL');
+  await openFile('planted_goto.nc');
+  await page.keyboard.press('Control+G');
+  await page.keyboard.type('7');
+  await page.keyboard.press('Enter');
+  await page.keyboard.press('End');
+  await page.keyboard.press('Backspace');
+  await page.keyboard.type('8'); // GOTO 99 becomes GOTO 98: only a new server can report that
+  await page.keyboard.press('Control+Shift+M');
+  const row = page.locator('.markers-panel .monaco-list-row', { hasText: 'there is no N98' }).first();
+  await row.waitFor({ timeout: 45000 });
+  const now = languageServers();
+  assert.ok(now.length > 0 && now.every((pid) => !before.includes(pid)), `servers before ${before}, now ${now}`);
+  await shot('3b-server-restarted');
+  await page.keyboard.press('Control+Z');
+  await page.keyboard.press('Control+Z');
 });
 
 test('F9 then F5 stops at a breakpoint, F11 steps into the G65 macro, Variables shows #24 (X)', { timeout: 2 * STEP }, async () => {
