@@ -309,26 +309,39 @@ class Machine(VariableAccess, Motion):
                     code = cf.code
                     pc = frame.pc
                 if not n % CANCEL_CHECK and (self.cancel_requested or self.pause_requested):
-                    if self.cancel_requested:
-                        self.status = STOPPED
-                    else:
-                        self.pause_requested = False
-                        self.status = PAUSED
+                    self.take_request()
                     break
-        except MacroAlarm as e:
-            self.blocks = n
-            self.frames[-1].pc = pc
-            self.alarm = Alarm(e.number, e.message, self.frames[-1].file, pc, self.chain(), e.subject)
+        except (MacroAlarm, StopRequest) as e:
+            return self.interrupted(e, n, pc)
+        return self.stopped_at(n, pc)
+
+    # The run loops (``_run`` and the analysis's ``tracking.run_tracked``) end through these.
+    def take_request(self) -> None:
+        """Honour a cancel or pause request from another thread (seen every ``CANCEL_CHECK`` blocks)."""
+        if self.cancel_requested:
+            self.status = STOPPED
+        else:
+            self.pause_requested = False
+            self.status = PAUSED
+
+    def interrupted(self, e: MacroAlarm | StopRequest, n: int, pc: int) -> str:
+        """A run stopped inside block ``pc``, the ``n``-th: by an alarm, or by ``M00``/``#3006``
+        (paused, to go on with the next block)."""
+        self.blocks = n
+        f = self.frames[-1]
+        if isinstance(e, MacroAlarm):
+            f.pc = pc
+            self.alarm = Alarm(e.number, e.message, f.file, pc, self.chain(), e.subject)
             self.status = ALARM
-            return self.status
-        except StopRequest as e:
-            self.blocks = n
-            f = self.frames[-1]
+        else:
             f.pc = f.code.next_line(pc)
             self.status = PAUSED
             self.message = e.message
             self.notes.append(Note("message", e.message, f.file, pc))
-            return self.status
+        return self.status
+
+    def stopped_at(self, n: int, pc: int) -> str:
+        """A run loop left after ``n`` blocks with ``pc`` next (negative: the frames say)."""
         self.blocks = n
         if pc >= 0:
             self.frames[-1].pc = pc

@@ -21,8 +21,8 @@ import math
 from collections.abc import Iterable
 from typing import TYPE_CHECKING, Any
 
-from .alarms import Alarm, MacroAlarm
-from .frames import Frame, Note
+from .alarms import MacroAlarm
+from .frames import Frame
 from .variables import StopRequest
 
 if TYPE_CHECKING:
@@ -42,7 +42,7 @@ def track_list(m: Machine, cf: Any) -> list[int]:
 
 def run_tracked(m: Machine, max_blocks: int | None, is_limit: bool) -> str:
     """``Machine._run``, stamping each executed line (see the module docstring)."""
-    from .machine import ALARM, LIMIT, PAUSED, RUNNING, STOPPED
+    from .machine import LIMIT, PAUSED, RUNNING
 
     budget = m.settings.max_blocks if max_blocks is None else max_blocks
     limit = m.blocks + budget
@@ -79,30 +79,11 @@ def run_tracked(m: Machine, max_blocks: int | None, is_limit: bool) -> str:
                 trk = track_list(m, cf)
                 pc = frame.pc
             if not n % CANCEL_CHECK and (m.cancel_requested or m.pause_requested):
-                if m.cancel_requested:
-                    m.status = STOPPED
-                else:
-                    m.pause_requested = False
-                    m.status = PAUSED
+                m.take_request()
                 break
-    except MacroAlarm as e:
-        m.blocks = n
-        m.frames[-1].pc = pc
-        m.alarm = Alarm(e.number, e.message, m.frames[-1].file, pc, m.chain(), e.subject)
-        m.status = ALARM
-        return m.status
-    except StopRequest as e:
-        m.blocks = n
-        f = m.frames[-1]
-        f.pc = f.code.next_line(pc)
-        m.status = PAUSED
-        m.message = e.message
-        m.notes.append(Note("message", e.message, f.file, pc))
-        return m.status
-    m.blocks = n
-    if pc >= 0:
-        m.frames[-1].pc = pc
-    return m.status
+    except (MacroAlarm, StopRequest) as e:
+        return m.interrupted(e, n, pc)
+    return m.stopped_at(n, pc)
 
 
 # ---------------------------------------------------------------- comparing states
