@@ -185,3 +185,8 @@ def test_4_control_flow_a_finding_in_a_loop_names_the_iteration_of_the_innermost
               "O9001.nc": "O9001\n#2=1/[#1-3]\nM99\n"}  # fmt: skip
     [d] = [d for d in analyse(tmp_path, called) if d.code == "division-by-zero"]
     assert "O0001:4 (G65)" in d.message and "iteration" not in d.message  # no loop runs in the macro itself
+
+
+def test_5_calls_a_program_that_only_calls_itself_still_runs_and_reports_its_nesting(tmp_path):
+    files = {"SELF.nc": "O0001\n#100=#100+1\nM98 P0001\nM30\n"}
+    assert found(analyse(tmp_path, files), "nesting-depth") == [("SELF.nc", 3, "error")]

@@ -86,6 +86,15 @@ class StaticLines:
                     names.add(c.name.strip().lower())
         return numbers, names
 
+    def call_sites(self) -> list[tuple[int, int | None, str | None]]:
+        """(line, program number, lower-case name) of each call with a literal target."""
+        out: list[tuple[int, int | None, str | None]] = []
+        for line, f in self.facts.items():
+            for c in f.calls:
+                if c.number is not None or c.name is not None:
+                    out.append((line, c.number, None if c.number is not None else c.name.strip().lower()))
+        return out
+
     def diagnostics(self, program: Program, file: str, dialect: Dialect, library: ProgramLibrary | None,
                     locale: str) -> list[Diagnostic]:  # fmt: skip
         """Syntax and static diagnostics of the document (``program`` is its current parse)."""

@@ -271,13 +271,16 @@ class WorkspaceAnalysis:
         return d.static
 
     def _units(self) -> list[tuple[tuple[str, int], FoundProgram, bool]]:
-        """Every runnable O program of the open files: (key, program, whether something calls it)."""
-        numbers: set[int] = set()
-        names: set[str] = set()
-        for d in self.docs.values():
-            n, s = self._targets(d)
-            numbers |= n
-            names |= s
+        """Every runnable O program of the open files: (key, program, whether another
+        program calls it; a program that only calls itself still runs on its own)."""
+        by_number: dict[int, list[tuple[str, int]]] = {}
+        by_name: dict[str, list[tuple[str, int]]] = {}
+        for path, d in self.docs.items():
+            for line, number, name in self._static(d).call_sites():
+                if number is not None:
+                    by_number.setdefault(number, []).append((path, line))
+                elif name is not None:
+                    by_name.setdefault(name, []).append((path, line))
         out = []
         for path in sorted(self.docs):
             d = self.docs[path]
@@ -287,9 +290,11 @@ class WorkspaceAnalysis:
             for k, unit in enumerate(program.units):
                 if not _runnable(program.blocks, unit):
                     continue
-                called = unit.number in numbers
+                sites = list(by_number.get(unit.number, ())) if unit.number is not None else []
                 if unit.number is None and k == 0:
-                    called = bool(m and int(m.group(1)) in numbers) or stem.lower() in names
+                    sites = list(by_number.get(int(m.group(1)), ())) if m else []
+                    sites += by_name.get(stem.lower(), ())
+                called = any(p != path or not unit.start <= line < unit.end for p, line in sites)
                 out.append(((path, k), FoundProgram(d.loaded, unit), called))
         return out
 
