@@ -172,9 +172,7 @@ class WorkspaceAnalysis:
     def open(self, path: str, text: str, version: int | None = None) -> None:
         key = self._key(path)
         doc = ParsedDocument(text)
-        loaded = self.library.add_text(key, text)
-        loaded.lines = doc.lines  # the library sees the document as it is edited
-        loaded.program = doc.program
+        loaded = self.library.add_parsed(key, doc.lines, doc.program)  # it sees the document as it is edited
         self.docs[key] = _Open(key, doc, loaded, version)
         self.stale = True
 
@@ -220,10 +218,7 @@ class WorkspaceAnalysis:
         self.library = ProgramLibrary(self.search_paths)
         self._entries = None
         for d in self.docs.values():
-            loaded = self.library.add_text(d.path, d.doc.text)
-            loaded.lines = d.doc.lines
-            loaded.program = d.doc.program
-            d.loaded = loaded
+            d.loaded = self.library.add_parsed(d.path, d.doc.lines, d.doc.program)
             d.targets = None
             d.own = None
         self.stale = True

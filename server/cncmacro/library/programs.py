@@ -108,6 +108,13 @@ class ProgramLibrary:
         assert loaded is not None
         return loaded
 
+    def add_parsed(self, path: str, lines: list[str], program: Program) -> LoadedFile:
+        """Register a file that the caller keeps parsed (a document open in an editor): it
+        replaces the file on disk, and nothing is read or parsed again."""
+        self.texts.pop(path, None)
+        loaded = self._files[path] = LoadedFile(path, lines, program, dialect_from_text(lines))
+        return loaded
+
     def _folder_files(self, folder: Path) -> list[Path]:
         files = self._listing.get(folder)
         if files is None:
