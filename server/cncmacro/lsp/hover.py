@@ -116,13 +116,18 @@ def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
         lines.append("")
         if places:
             lines.append(f"{t('written_at', loc)}:")
-            for path, line in places[:MAX_PLACES]:
-                lines.append(f"- {Path(path).name}:{line + 1}")
-            if len(places) > MAX_PLACES:
-                lines.append(f"- … (+{len(places) - MAX_PLACES} {t('more', loc)})")
+            lines += _bulleted([f"{Path(path).name}:{line + 1}" for path, line in places], loc)
         else:
             lines.append(t("not_written", loc))
     return "\n".join(lines)
+
+
+def _bulleted(entries: list[str], loc: str) -> list[str]:
+    """At most ``MAX_PLACES`` entries as a Markdown list, then how many more there are."""
+    out = [f"- {e}" for e in entries[:MAX_PLACES]]
+    if len(entries) > MAX_PLACES:
+        out.append(f"- … (+{len(entries) - MAX_PLACES} {t('more', loc)})")
+    return out
 
 
 def write_places(ls: CncMacroServer, number: int) -> list[tuple[str, int]]:
@@ -152,10 +157,7 @@ def label_hover(ls: CncMacroServer, cur: Cursor, label: int) -> str:
     lines.append("")
     if jumps:
         lines.append(f"{t('jumps', loc)}:")
-        for i, kind in jumps[:MAX_PLACES]:
-            lines.append(f"- {t('line', loc)} {i + 1} ({kind})")
-        if len(jumps) > MAX_PLACES:
-            lines.append(f"- … (+{len(jumps) - MAX_PLACES} {t('more', loc)})")
+        lines += _bulleted([f"{t('line', loc)} {i + 1} ({kind})" for i, kind in jumps], loc)
     else:
         lines.append(t("no_jumps", loc))
     return "\n".join(lines)
