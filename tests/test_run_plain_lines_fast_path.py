@@ -1,9 +1,12 @@
 """Plain motion lines run straight from their text exactly as through the syntax tree.
 
-A line of whitespace-separated words (``G01 X12.5 Y-3.``) is compiled from its text without
-building syntax nodes (SEMANTICS.md §2 rounding, §8 motion). Appending a comment to every line
-sends the same blocks through the general path, so the two runs must leave the same moves,
-clock, modal state and variables, in both dialects and both decimal-point input modes.
+A line of whitespace-separated words (``G01 X12.5 Y-3.``) is read from its text without
+building syntax nodes, and runs of such lines are carried out in one pass (SEMANTICS.md §2
+rounding, §8 motion). Appending a comment to every line sends the same blocks through the
+general path, so the two runs must leave the same moves, clock, modal state and variables, in
+both dialects and both decimal-point input modes, with blank lines, comments, canned cycles
+and M codes between them. A run stopped every few blocks (as the debugger steps) must end
+where one uninterrupted run ends.
 """
 
 from __future__ import annotations
@@ -11,7 +14,7 @@ from __future__ import annotations
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from running import lines, run
+from running import lines, machine, run
 
 AXES = {"fanuc": "XYZ", "gsk980tdi": "XZUW"}
 
@@ -34,10 +37,19 @@ def plain_line(draw: st.DrawFn, dialect: str) -> str:
     return text.lower() if draw(st.booleans()) else text
 
 
+# Lines that are not plain, placed between plain ones: the one-pass run must stop before
+# them and go on after them, and a cycle they start must take over the plain lines that follow.
+OTHERS = {
+    "fanuc": ["", "(a comment)", "G81 Z-2. R1. F100", "G80", "M03 S500", "G83 Z-4. R1. Q1. F80", "G00 X1 (x)"],
+    "gsk980tdi": ["", "(a comment)", "G90 X20. Z-5. F0.2", "M03 S500", "G71 U1. R0.5", "G00 X1 (x)"],
+}
+
+
 @st.composite
 def program(draw: st.DrawFn) -> tuple[str, list[str], str]:
     dialect = draw(st.sampled_from(sorted(AXES)))
-    body = draw(st.lists(plain_line(dialect), min_size=1, max_size=25))
+    line = st.one_of(plain_line(dialect), plain_line(dialect), st.sampled_from(OTHERS[dialect]))
+    body = draw(st.lists(line, min_size=1, max_size=25))
     mode = draw(st.sampled_from(["calculator", "increment"]))
     return dialect, body, mode
 
@@ -52,8 +64,39 @@ def outcome(dialect: str, body: list[str], mode: str) -> tuple[object, ...]:
 @given(program())
 def test_plain_lines_run_as_the_general_path_runs_them(case: tuple[str, list[str], str]) -> None:
     dialect, body, mode = case
-    commented = [f"{text} (same block)" for text in body]
+    commented = [f"{text} (same block)" if text.strip() else text for text in body]
     assert outcome(dialect, body, mode) == outcome(dialect, commented, mode)
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(program(), st.integers(1, 7))
+def test_plain_lines_run_in_short_steps_end_as_one_run(case: tuple[str, list[str], str], chunk: int) -> None:
+    dialect, body, mode = case
+    text = lines("O0001", *body, "M30")
+    whole = run(text, dialect, decimal_point=mode)
+    stepped = machine(text, dialect, decimal_point=mode)
+    stops = []
+    while True:
+        status = stepped.run(chunk, is_limit=False)
+        if status == "paused" and stepped.message is None and not stepped.finished:
+            stops.append((stepped.blocks, stepped.frames[-1].pc))
+            continue
+        if status == "paused":
+            stepped.resume()
+            continue
+        break
+    assert all(blocks % chunk == 0 for blocks, _ in stops)  # never more than asked for
+    assert all(does_something(text, pc) for _, pc in stops)  # never on a blank or comment line
+    assert stepped.status == whole.status
+    assert stepped.blocks == whole.blocks
+    assert stepped.moves == whole.moves
+    assert stepped.clock == whole.clock
+    assert dict(stepped.modal) == dict(whole.modal)
+
+
+def does_something(text: str, pc: int) -> bool:
+    line = text.split("\n")[pc].strip()
+    return bool(line) and not line.startswith("(")
 
 
 def test_plain_lines_move_and_round_as_written() -> None:

@@ -26,6 +26,7 @@ from .calls import Arguments, map_arguments, repeat_count
 from .expressions import VariableKinds
 from .frames import Frame, ModalCall, Move, Note
 from .motion import Motion
+from .straight_runs import run_straight
 from .tracking import run_tracked
 from .variables import StopRequest, VariableAccess
 
@@ -289,6 +290,7 @@ class Machine(VariableAccess, Motion):
         code = cf.code
         pc = frame.pc
         n = self.blocks
+        straight = self.on_first_run is None  # lines run without being compiled are not heard of
         try:
             while True:
                 if n >= limit:
@@ -296,6 +298,14 @@ class Machine(VariableAccess, Motion):
                     break
                 c = code[pc]
                 if c is None:
+                    if straight and not self.modal_calls:
+                        done, pc = run_straight(self, cf, pc, min(limit - n, CANCEL_CHECK - n % CANCEL_CHECK))
+                        if done:
+                            n += done
+                            if not n % CANCEL_CHECK and (self.cancel_requested or self.pause_requested):
+                                self.take_request()
+                                break
+                            continue
                     c = cf.runner(pc)
                     if self.on_first_run is not None:
                         self.on_first_run(cf.file.path, pc, n)

@@ -70,6 +70,7 @@ class Motion:
         self._cycle_codes = self.dialect.cycle_codes
         self._lathe = self.dialect.lathe
         self._plain_kinds: dict[str, Any] | None = None
+        self._plain_groups: dict[float, str] | None = None
 
     # ---------------------------------------------------------------- positions
     def work_offset(self, axis: int) -> float:
@@ -103,9 +104,7 @@ class Motion:
         address-number words with at most three decimals, so that a literal axis value is
         already on the grid (SEMANTICS.md §2). None when the line is not plain motion or its
         values need the general rounding (increment input mode, S with a fraction)."""
-        kinds = self._plain_kinds
-        if kinds is None:
-            kinds = self._plain_kinds = self._plain_letter_kinds()
+        kinds = self.plain_kinds()
         if not kinds:
             return None
         modal: list[tuple[str, float]] = []
@@ -113,8 +112,7 @@ class Motion:
         axes: list[tuple[int, float]] = []
         inc: list[tuple[int, float]] = []
         extra: list[tuple[str, float]] = []
-        groups = self.g_groups
-        calls = self.settings.calls
+        groups = self.plain_g_groups()
         for word in text.split():
             kind = kinds.get(word[0])
             if kind is None:
@@ -127,7 +125,7 @@ class Motion:
                     inc.append((-1 - kind, v))
             elif kind == "G":
                 group = groups.get(v)
-                if not group or group in _NOT_PLAIN_GROUPS or (calls and f"G{v:g}" in calls):
+                if group is None:
                     return None
                 modal.append((group, v))
                 if group == "motion" and not self._lathe:
@@ -142,18 +140,36 @@ class Motion:
                 extra.append((kind, v))
         return tuple(modal), tuple(codes), tuple(axes), tuple(inc), tuple(extra)
 
-    def _plain_letter_kinds(self) -> dict[str, Any]:
+    def plain_g_groups(self) -> dict[float, str]:
+        """G code -> modal group, for the G codes a plain line may carry: those of a modal
+        group without side effects beyond the group, and not configured to call a program."""
+        groups = self._plain_groups
+        if groups is None:
+            calls = self.settings.calls
+            groups = self._plain_groups = {
+                g: group
+                for g, group in self.g_groups.items()
+                if group and group not in _NOT_PLAIN_GROUPS and f"G{g:g}" not in calls
+            }
+        return groups
+
+    def plain_kinds(self) -> dict[str, Any]:
         """Letter (either case) -> axis index, ``-1 - index`` for an incremental letter, or
         the letter itself for G, F, S and the arc words R, I, J, K. Empty in increment input
         mode, where a value without a point counts least increments."""
+        kinds = self._plain_kinds
+        if kinds is not None:
+            return kinds
         if self.settings.decimal_point == "increment":
-            return {}
-        kinds: dict[str, Any] = {"G": "G", "F": "F", "S": "S", **{c: c for c in _CENTRE_LETTERS}}
+            kinds = self._plain_kinds = {}
+            return kinds
+        kinds = {"G": "G", "F": "F", "S": "S", **{c: c for c in _CENTRE_LETTERS}}
         kinds.update(self.axis_index)
         for letter, axis in self.dialect.incremental_letters.items():
             if axis in self.axis_index:
                 kinds[letter] = -1 - self.axis_index[axis]
         kinds.update({k.lower(): v for k, v in kinds.items()})
+        self._plain_kinds = kinds
         return kinds
 
     def plain_plan(self, words: list[tuple[str, float]]) -> tuple[Any, ...] | None:

@@ -26,10 +26,11 @@ from .nodes import Block, Problem
 # starting with N or O: the CAM norm (``G01 X12.5 Y-3.``). Its ``split()`` gives exactly its
 # words, its axis values are on the 0.001 grid already, and ``assemble_words`` would give it
 # neither a label nor a header; the interpreter compiles it straight from its text.
-_NUMBER = r"[+-]?(?:\d+(?:\.\d{0,3})?|\.\d{1,3})"
-_PLAIN_LINE = re.compile(
-    r"[ \t]*[A-MP-Za-mp-z]" + _NUMBER + r"(?:[ \t]+[A-Za-z]" + _NUMBER + r")*[ \t]*"
-).fullmatch
+# The quantifiers are possessive: a word that fails can never match with fewer characters
+# (what would be left is a digit or a point, where a blank or the end must follow), and not
+# backtracking into it makes the match a fifth faster.
+_NUMBER = r"[+-]?+(?:\d++(?:\.\d{0,3}+)?+|\.\d{1,3}+)"
+_PLAIN_LINE = re.compile(r"[ \t]*+[A-MP-Za-mp-z]" + _NUMBER + r"(?:[ \t]++[A-Za-z]" + _NUMBER + r")*+[ \t]*+").fullmatch
 
 # Real controls read blocks of at most a few hundred characters; a longer line is reported,
 # not parsed, so that a huge line costs nothing and cannot stall the editor.
@@ -74,7 +75,7 @@ def parse_block(line: str) -> Block:
             )
         )
     if _PLAIN_LINE(line) is not None:  # the common case
-        return Block(plain=line)
+        return Block.of_plain(line)
     if not has_special(line):  # no comment, ';', '/' or '%'
         words = plain_words(line)
         if words is not None and words[0].letter not in ("O", "N"):
@@ -151,9 +152,10 @@ class BlockCache:
         out = []
         append = out.append
         plain = _PLAIN_LINE
+        of_plain = Block.of_plain
         for line in lines:
             if len(line) <= MAX_BLOCK_CHARS and plain(line) is not None:
-                append(Block(plain=line))  # as cheap as a lookup: not cached
+                append(of_plain(line))  # as cheap as a lookup: not cached
                 continue
             b = blocks.get(line)
             if b is None:

@@ -11,6 +11,7 @@ grammar build the same tree.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 # ---------------------------------------------------------------- expressions
 
@@ -312,6 +313,17 @@ class Block:
         shown = ", ".join(f"{f}={getattr(self, f)!r}" for f in _FIELDS if getattr(self, f) not in (None, (), False))
         return f"Block({shown})"
 
+    @classmethod
+    def of_plain(cls, line: str, _new: Any = object.__new__) -> Block:
+        """``Block(plain=line)`` without the keyword handling: opening a file makes one for
+        nearly every line of a CAM program."""
+        b = _new(cls)
+        b.label = b.label_span = b.program = b.program_span = b.title = b.block_delete = b._words = None
+        b.tape = b.structural = False
+        b.statements = b.comments = b.problems = ()
+        b.plain = line
+        return b
+
     @property
     def has_error(self) -> bool:
         return bool(self.problems) and any(p.severity == "error" for p in self.problems)
@@ -354,4 +366,3 @@ class Block:
             if isinstance(s, End):
                 return ("END", s.loop)
         return None
-

@@ -1,0 +1,152 @@
+"""Consecutive plain motion lines run in one pass, read and carried out together.
+
+A CAM program is mostly lines like ``G01 X12.5 Y-3.`` one after another (``Block.plain``).
+Compiling each into a runner and then calling it costs more than reading it: most run once.
+``run_straight`` reads such a line's words and applies them in one loop over the lines, with
+the machine's modal state, position and clock held in locals, until a line that is not
+plain motion, a line the general path must decide (a canned cycle in force, a G code of a
+group with side effects, an address with its own rounding), or the block budget. It does
+exactly what ``Motion.plain_text_plan`` and ``Motion.run_plain`` do for one line (SEMANTICS.md
+§8), and a line it declines is left untouched for the compiled path. It is used only by the
+plain run loop, when no modal call (G66) is in force and no analysis is tracking lines.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+from .frames import Move
+from .motion import RAPID_RATE
+
+if TYPE_CHECKING:
+    from .blocks import CompiledFile
+    from .machine import Machine
+
+_new_move = tuple.__new__
+_SECONDS_PER_MINUTE = 60.0
+
+
+def run_straight(m: Machine, cf: CompiledFile, pc: int, budget: int) -> tuple[int, int]:
+    """Run at most ``budget`` plain motion lines of ``cf`` from line ``pc``; returns how many
+    ran and the line to run next (``pc`` itself when the first line is declined)."""
+    kinds = m.plain_kinds()
+    if not kinds:
+        return 0, pc
+    blocks = cf.file.program.blocks
+    n_blocks = len(blocks)
+    groups = m.plain_g_groups()
+    lathe = m._lathe
+    cycles = m._cycle_codes
+    modal = m.modal
+    codes = m.codes
+    pos = m.pos
+    clock = m.clock
+    dist = math.dist
+    append = m.moves.append if m.record_moves else None
+    path = cf.file.path
+    skipped = cf.skipped
+    # The modal state every line reads, kept in locals and written back as lines change it.
+    mode = modal["motion"]
+    canned = modal["canned"]
+    absolute = lathe or modal["distance"] == 90.0
+    per_rev = modal.get("feed") == 95.0 or (lathe and modal.get("feed") == 99.0)
+    f = codes.get("F") or 0.0
+    start = tuple(pos)
+    done = 0
+    while done < budget and pc < n_blocks:
+        text = blocks[pc].plain
+        if text is None:
+            if done and skipped(blocks[pc]):  # a blank or comment line between two plain ones
+                pc += 1
+                continue
+            break
+        line_absolute = absolute
+        target = pos[:]
+        moved = False
+        inc: list[tuple[int, float]] | None = None
+        others: list[tuple[str, float]] | None = None
+        new_mode: float | None = None
+        feed: float | None = None
+        speed: float | None = None
+        for word in text.split():
+            kind = kinds.get(word[0])
+            if kind is None:
+                break
+            v = float(word[1:])
+            if kind.__class__ is int:
+                moved = True
+                if kind < 0:  # an incremental letter (U, V, W): added after the absolute ones
+                    if inc is None:
+                        inc = [(-1 - kind, v)]
+                    else:
+                        inc.append((-1 - kind, v))
+                elif line_absolute:
+                    target[kind] = v
+                else:
+                    target[kind] += v
+            elif kind == "G":
+                group = groups.get(v)
+                if group is None:
+                    break
+                if group == "motion":
+                    new_mode = v
+                    continue
+                if group == "distance":
+                    if moved:  # G90/G91 after an axis word still governs it: the general path
+                        break
+                    line_absolute = lathe or v == 90.0
+                if others is None:
+                    others = [(group, v)]
+                else:
+                    others.append((group, v))
+            elif kind == "F":
+                feed = v
+            elif kind == "S":
+                if v % 1:
+                    break
+                speed = v
+        else:
+            if new_mode is not None:
+                if moved and new_mode in cycles:
+                    break  # a cycle decides this line: the compiled path runs it
+                mode = modal["motion"] = new_mode
+                if not lathe:
+                    canned = modal["canned"] = 80.0
+            elif moved and (mode in cycles or (canned != 80.0 and not lathe)):
+                break
+            if others is not None:
+                for group, g in others:
+                    modal[group] = g
+                absolute = lathe or modal["distance"] == 90.0
+                per_rev = modal.get("feed") == 95.0 or (lathe and modal.get("feed") == 99.0)
+            if feed is not None:
+                codes["F"] = feed
+                f = feed or 0.0
+            if speed is not None:
+                codes["S"] = speed
+            if moved:
+                if inc is not None:
+                    for i, v in inc:
+                        target[i] += v
+                end = tuple(target)
+                pos = target
+                if mode == 0.0:
+                    clock += dist(start, end) / RAPID_RATE * _SECONDS_PER_MINUTE
+                else:
+                    rate = f * (codes.get("S") or 0.0) if per_rev else f
+                    if rate > 0:
+                        clock += dist(start, end) / rate * _SECONDS_PER_MINUTE
+                if append is not None:
+                    append(_new_move(Move, (path, pc, mode, start, end, f)))
+                start = end
+            done += 1
+            pc += 1
+            continue
+        break  # a word the general path must read
+    if done:  # stop on a line that does something, as ``CompiledFile.next_line`` does
+        while pc < n_blocks and blocks[pc].plain is None and skipped(blocks[pc]):
+            pc += 1
+    m.pos = pos
+    m.clock = clock
+    return done, pc
