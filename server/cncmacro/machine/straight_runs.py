@@ -7,8 +7,9 @@ the machine's modal state, position and clock held in locals, until a line that 
 plain motion, a line the general path must decide (a canned cycle in force, a G code of a
 group with side effects, an address with its own rounding), or the block budget. It does
 exactly what ``Motion.plain_text_plan`` and ``Motion.run_plain`` do for one line (SEMANTICS.md
-§8), and a line it declines is left untouched for the compiled path. It is used only by the
-plain run loop, when no modal call (G66) is in force and no analysis is tracking lines.
+§8), and a line it declines is left untouched for the compiled path. Both run loops use it for
+a line not compiled yet, when no modal call (G66) is in force; such a line stays uncompiled,
+which also spares an analysis the memory of a runner per line.
 """
 
 from __future__ import annotations
@@ -27,9 +28,13 @@ _new_move = tuple.__new__
 _SECONDS_PER_MINUTE = 60.0
 
 
-def run_straight(m: Machine, cf: CompiledFile, pc: int, budget: int) -> tuple[int, int]:
+def run_straight(
+    m: Machine, cf: CompiledFile, pc: int, budget: int, trk: list[int] | None = None, step: int = 0
+) -> tuple[int, int]:
     """Run at most ``budget`` plain motion lines of ``cf`` from line ``pc``; returns how many
-    ran and the line to run next (``pc`` itself when the first line is declined)."""
+    ran and the line to run next (``pc`` itself when the first line is declined). With
+    ``trk`` (an analysis run, see tracking.py), each line run is stamped there as
+    ``run_tracked`` stamps it, ``step`` being the number of blocks run before ``pc``."""
     kinds = m.plain_kinds()
     if not kinds:
         return 0, pc
@@ -50,6 +55,7 @@ def run_straight(m: Machine, cf: CompiledFile, pc: int, budget: int) -> tuple[in
     mode = modal["motion"]
     canned = modal["canned"]
     absolute = lathe or modal["distance"] == 90.0
+    serial, floor, first = m.track_serial, m.track_floor, m.on_first_run
     per_rev = modal.get("feed") == 95.0 or (lathe and modal.get("feed") == 99.0)
     f = codes.get("F") or 0.0
     start = tuple(pos)
@@ -115,6 +121,10 @@ def run_straight(m: Machine, cf: CompiledFile, pc: int, budget: int) -> tuple[in
                     canned = modal["canned"] = 80.0
             elif moved and (mode in cycles or (canned != 80.0 and not lathe)):
                 break
+            if trk is not None:
+                if trk[pc] < floor and first is not None:
+                    first(path, pc, step + done)
+                trk[pc] = serial
             if others is not None:
                 for group, g in others:
                     modal[group] = g

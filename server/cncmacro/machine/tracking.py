@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING, Any
 
 from .alarms import MacroAlarm
 from .frames import Frame
+from .straight_runs import run_straight
 from .variables import StopRequest
 
 if TYPE_CHECKING:
@@ -64,6 +65,14 @@ def run_tracked(m: Machine, max_blocks: int | None, is_limit: bool) -> str:
                 break
             c = code[pc]
             if c is None:
+                if not m.modal_calls:
+                    done, pc = run_straight(m, cf, pc, min(limit - n, CANCEL_CHECK - n % CANCEL_CHECK), trk, n)
+                    if done:
+                        n += done
+                        if not n % CANCEL_CHECK and (m.cancel_requested or m.pause_requested):
+                            m.take_request()
+                            break
+                        continue
                 c = cf.runner(pc)
             if trk[pc] < floor and first is not None:
                 first(cf.file.path, pc, n)
