@@ -71,6 +71,15 @@ def test_json_contract(examples):
     assert set(first) >= {"file", "line", "mode", "from", "to"} and first["line"] >= 1
 
 
+def test_json_moves_one_to_a_line(examples):
+    _code, out, _ = cli("run", "--json", str(examples / "fanuc/bolt_circle.nc"))
+    r = json.loads(out)
+    move_lines = [line for line in out.splitlines() if line.lstrip().startswith('{"file"')]
+    assert len(move_lines) == len(r["moves"]) > 10  # a move is one line a person can read or diff
+    assert json.loads(move_lines[0].strip().rstrip(",")) == r["moves"][0]
+    assert out.splitlines()[1] == ' "status": "completed",'  # the rest stays indented
+
+
 def test_alarm_in_json_and_text(tmp_path):
     f = tmp_path / "O0001.nc"
     f.write_text("O0001\n#1=1\nG65 P9000\nM30\nO9000\n#3000=7(NO X GIVEN)\nM99\n", encoding="utf-8")

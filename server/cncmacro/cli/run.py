@@ -84,8 +84,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
             print(f"cncmacro run: could not save the persistent variables: {e}", file=err)
     result = machine.result()
     if args.json:
-        json.dump(result_json(result, dialect.axes), out, ensure_ascii=False, indent=1)
-        out.write("\n")
+        write_json(result_json(result, dialect.axes), out)
     else:
         write_text(result, machine, out)
     return {ALARM: 1, LIMIT: 3}.get(result.status, 0)
@@ -121,6 +120,24 @@ def result_json(result: RunResult, axes: tuple[str, ...]) -> dict[str, Any]:
         "output": result.output,
         "messages": [n.message for n in result.notes if n.kind in ("message", "call")],
     }
+
+
+def write_json(result: dict[str, Any], out: TextIO) -> None:
+    """``result`` as indented JSON, but one move to a line: a long run's moves stay readable
+    (and diffable) and are written by the fast compact encoder (100k moves in a fraction of a
+    second instead of seconds)."""
+    out.write("{\n")
+    items = list(result.items())
+    for k, (key, value) in enumerate(items):
+        out.write(f" {json.dumps(key)}: ")
+        if key == "moves" and value:
+            out.write("[\n")
+            out.write(",\n".join("  " + json.dumps(mv, ensure_ascii=False) for mv in value))
+            out.write("\n ]")
+        else:
+            out.write(json.dumps(value, ensure_ascii=False, indent=1).replace("\n", "\n "))
+        out.write(",\n" if k < len(items) - 1 else "\n")
+    out.write("}\n")
 
 
 def write_text(result: RunResult, machine: Machine, out: TextIO) -> None:
