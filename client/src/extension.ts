@@ -1,12 +1,14 @@
 /**
  * The extension's entry point: output channels, the language server, the debugger, the
- * commands and the dialect status-bar item, and the reaction to settings changes.
+ * commands and the dialect status-bar item, and the reaction to settings changes and to another
+ * interpreter picked in the Python extension.
  */
 import * as vscode from 'vscode';
 import { registerCommands } from './commands';
 import { registerDebugger } from './debugAdapter';
 import { ServerController } from './languageClient';
-import { SECTION } from './settings';
+import { onDidChangePythonExtensionEnvironment } from './python';
+import { pythonPath, SECTION } from './settings';
 import { DialectStatus } from './statusBar';
 
 let controller: ServerController | undefined;
@@ -31,6 +33,13 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
       ) {
         await server.settingsChanged();
       }
+    }),
+    onDidChangePythonExtensionEnvironment(async () => {
+      if (pythonPath()) {
+        return; // cncMacro.python.path wins over the Python extension's choice
+      }
+      log.info("the Python extension's interpreter changed: restarting the language server");
+      await server.restart();
     }),
   );
   void server.start();

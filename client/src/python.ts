@@ -4,7 +4,8 @@
  * The order is: the `cncMacro.python.path` setting; the active environment of the Python
  * extension, when that extension is installed (it is never required); then `python3`, `py -3`
  * (Windows) and `python` on the PATH. An interpreter older than 3.10 is skipped with a note, and
- * when none fits the user is told plainly what to do.
+ * when none fits the user is told plainly what to do. Once the Python extension has been asked,
+ * `onDidChangePythonExtensionEnvironment` fires whenever the user picks another interpreter there.
  */
 import { execFile } from 'node:child_process';
 import * as os from 'node:os';
@@ -82,8 +83,15 @@ interface PythonExtensionApi {
   environments?: {
     getActiveEnvironmentPath(resource?: vscode.Uri): { path: string } | undefined;
     resolveEnvironment(env: { path: string } | string): Promise<{ executable?: { uri?: vscode.Uri } } | undefined>;
+    onDidChangeActiveEnvironmentPath?: vscode.Event<unknown>;
   };
 }
+
+const environmentChanged = new vscode.EventEmitter<void>();
+let watchingPythonExtension = false;
+
+/** Fires when the user picks another interpreter in the Python extension (once it was asked). */
+export const onDidChangePythonExtensionEnvironment: vscode.Event<void> = environmentChanged.event;
 
 async function fromPythonExtension(resource?: vscode.Uri): Promise<string | undefined> {
   const extension = vscode.extensions.getExtension<PythonExtensionApi>('ms-python.python');
@@ -93,6 +101,10 @@ async function fromPythonExtension(resource?: vscode.Uri): Promise<string | unde
   try {
     const api = extension.isActive ? extension.exports : await extension.activate();
     const environments = api?.environments;
+    if (environments?.onDidChangeActiveEnvironmentPath && !watchingPythonExtension) {
+      watchingPythonExtension = true;
+      environments.onDidChangeActiveEnvironmentPath(() => environmentChanged.fire());
+    }
     const active = environments?.getActiveEnvironmentPath(resource);
     if (!environments || !active) {
       return undefined;

@@ -15,6 +15,7 @@ export const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '
 export const OUTPUT = path.join(ROOT, 'test-output', 'editor');
 const CODE_SERVER = path.join(ROOT, 'node_modules', '.bin', 'code-server');
 const VSIX = path.join(ROOT, 'cncmacro.vsix');
+const VSCE = path.join(ROOT, 'node_modules', '.bin', 'vsce');
 const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
 const EXTENSION_ID = 'cncmacro.cncmacro';
 
@@ -141,6 +142,7 @@ export class CodeServer {
     if (installed.status !== 0 || !fs.existsSync(this.extensionPath)) {
       throw new Error(`installing the .vsix failed: ${installed.stdout}\n${installed.stderr}`);
     }
+    this.installStandIn(common, d('python-extension.vsix'));
 
     const log = fs.openSync(path.join(OUTPUT, 'code-server.log'), 'w');
     this.child = spawn(
@@ -170,6 +172,25 @@ export class CodeServer {
         '--disable-sync',
       ],
     });
+  }
+
+  /**
+   * The stand-in for the Python extension (`tests/editor/python-extension`), packaged and
+   * installed beside CNC Macro, so that a test can pick an interpreter "in the Python extension".
+   */
+  installStandIn(common, vsix) {
+    const packaged = spawnSync(
+      VSCE,
+      ['package', '--no-dependencies', '--allow-missing-repository', '--skip-license', '-o', vsix],
+      { cwd: path.join(ROOT, 'tests', 'editor', 'python-extension'), encoding: 'utf8', timeout: 60000 },
+    );
+    if (packaged.status !== 0) throw new Error(`packaging the Python extension stand-in failed: ${packaged.stderr}`);
+    const installed = spawnSync(CODE_SERVER, [...common, '--install-extension', vsix], {
+      env: this.env,
+      encoding: 'utf8',
+      timeout: 120000,
+    });
+    if (installed.status !== 0) throw new Error(`installing the stand-in failed: ${installed.stdout}\n${installed.stderr}`);
   }
 
   /** The workbench on the test workspace. */

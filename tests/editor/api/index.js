@@ -5,6 +5,8 @@
  * one failed, which the workbench reports as exit code 1.
  */
 const assert = require('node:assert/strict');
+const fs = require('node:fs');
+const os = require('node:os');
 const path = require('node:path');
 const vscode = require('vscode');
 
@@ -130,6 +132,50 @@ const tests = {
     await waitFor('the server to answer again', async () => (await hoverText()).includes('5001'));
     await vscode.commands.executeCommand('cncMacro.restartServer');
     await waitFor('the restarted server to answer', async () => (await hoverText()).includes('block end position'));
+  },
+
+  async "with cncMacro.python.path empty, the interpreter picked in the Python extension runs the server"() {
+    const standIn = vscode.extensions.getExtension('ms-python.python');
+    assert.ok(standIn, 'the Python extension stand-in is installed');
+    const pythonExtension = standIn.isActive ? standIn.exports : await standIn.activate();
+    const config = vscode.workspace.getConfiguration('cncMacro');
+    const bare = config.get('python.path'); // the test machine's Python without packages
+    assert.ok(bare, 'the machine setting names a Python');
+    // Two interpreters that note each run in a log file, then run that Python. The extension
+    // runs the one it finds to ask its version and executable, then starts the server with it.
+    const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'cncmacro-pick-'));
+    const wrapper = (name) => {
+      const file = path.join(dir, name);
+      fs.writeFileSync(file, `#!/bin/sh\necho "$*" >> "${file}.log"\nexec "${bare}" "$@"\n`, { mode: 0o755 });
+      return file;
+    };
+    const first = wrapper('first-python');
+    const second = wrapper('second-python');
+    const runs = (file) => (fs.existsSync(`${file}.log`) ? fs.readFileSync(`${file}.log`, 'utf8').split('\n').length - 1 : 0);
+    const uri = workspaceFile('O9100.nc');
+    const doc = await vscode.workspace.openTextDocument(uri);
+    const position = doc.positionAt(doc.getText().indexOf('#5001') + 2);
+    const answers = async () => {
+      const hovers = await vscode.commands.executeCommand('vscode.executeHoverProvider', uri, position);
+      return (hovers ?? []).some((h) => h.contents.some((c) => (typeof c === 'string' ? c : c.value).includes('5001')));
+    };
+    pythonExtension.selectForTest(first);
+    await config.update('python.path', '', vscode.ConfigurationTarget.Workspace);
+    try {
+      await waitFor('the Python extension\'s interpreter to be asked', () => runs(first) > 0, 60000);
+      await waitFor('that server to answer', answers);
+      pythonExtension.selectForTest(second); // the user picks another interpreter there
+      await waitFor('a restart with the newly picked interpreter', () => runs(second) > 0, 60000);
+      await waitFor('the restarted server to answer', answers);
+    } finally {
+      await config.update('python.path', undefined, vscode.ConfigurationTarget.Workspace);
+    }
+    await waitFor('the server to answer with the set interpreter', answers);
+    const before = runs(first);
+    pythonExtension.selectForTest(first); // the setting wins again: no restart with this one
+    await new Promise((r) => setTimeout(r, 1500));
+    assert.equal(runs(first), before, 'a pick in the Python extension is ignored while cncMacro.python.path is set');
+    await waitFor('the server to answer with the set interpreter', answers);
   },
 };
 
