@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 import asyncio
 import random
+import re
 import statistics
 import sys
 import tempfile
@@ -31,6 +32,36 @@ from camgen import cam_program
 
 # lines -> (open ms, edit p95 ms); and for every size hover p95 <= 10 ms; peak RSS at 100k <= 300 MB
 BUDGETS = {2_000: (100, 30), 20_000: (600, 50), 100_000: (3_000, 100)}
+KINDS = ("system variable", "common", "label", "plain word")
+SYSTEM_READ = "#150=#5001+#4001"
+_COMMON = re.compile(r"#1\d\d(?!\d)")
+
+
+def with_system_reads(text: str) -> str:
+    """``text`` with every 1000th plain motion line (``X.. Y..``) replaced by ``SYSTEM_READ``."""
+    lines = text.split("\n")
+    for i in range(500, len(lines), 1000):
+        while i < len(lines) - 5 and not lines[i].startswith("X"):
+            i += 1
+        lines[i] = SYSTEM_READ
+    return "\n".join(lines)
+
+
+def hover_places(doc_lines: list[str], kind: str) -> list[tuple[int, int]]:
+    """(line, column) of every place of ``kind`` in the program."""
+    out = []
+    for i, line in enumerate(doc_lines):
+        if kind == "system variable" and line == SYSTEM_READ:
+            out.append((i, line.index("#5001") + 2))
+        elif kind == "common" and line.startswith("#") and line != SYSTEM_READ:
+            m = _COMMON.search(line)
+            if m is not None:
+                out.append((i, m.start() + 2))
+        elif kind == "label" and line.startswith("N"):
+            out.append((i, 1))
+        elif kind == "plain word" and line.startswith("X"):
+            out.append((i, 1))
+    return out
 
 
 @dataclass
@@ -40,6 +71,7 @@ class Figures:
     edits_ms: list[float]
     tail_edits_ms: list[float]
     hovers_ms: list[float]
+    kinds_ms: dict[str, list[float]]
     peak_mb: float | None
 
 
@@ -68,7 +100,7 @@ class Session:
 
 
 async def measure(lines: int, edits: int, hovers: int) -> Figures:
-    text = cam_program(lines)
+    text = with_system_reads(cam_program(lines))
     folder = Path(tempfile.mkdtemp(prefix="cncmacro-lsp-bench-"))
     path = folder / "O0001.nc"
     path.write_text(text, "utf-8")
@@ -118,15 +150,21 @@ async def measure(lines: int, edits: int, hovers: int) -> Figures:
     everywhere = [await edit_at(rnd.randrange(5, n - 10)) for _ in range(edits)]
     tail = [await edit_at(rnd.randrange(n - n // 10, n - 10)) for _ in range(edits)]
 
-    hover_ms = []
-    for _ in range(hovers):
-        line = rnd.randrange(0, n - 1)
-        col = rnd.randrange(0, max(1, len(doc_lines[line])))
+    async def hover_at(line: int, col: int) -> float:
         t0 = time.perf_counter()
         await client.text_document_hover_async(
             types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(line, col))
         )
-        hover_ms.append((time.perf_counter() - t0) * 1000)
+        return (time.perf_counter() - t0) * 1000
+
+    hover_ms = []
+    for _ in range(hovers):
+        line = rnd.randrange(0, n - 1)
+        hover_ms.append(await hover_at(line, rnd.randrange(0, max(1, len(doc_lines[line])))))
+    kinds_ms: dict[str, list[float]] = {}
+    for kind in KINDS:
+        places = hover_places(doc_lines, kind)
+        kinds_ms[kind] = [await hover_at(*rnd.choice(places)) for _ in range(hovers // 2)] if places else []
 
     peak = None
     server = client._server  # the subprocess
@@ -138,7 +176,7 @@ async def measure(lines: int, edits: int, hovers: int) -> Figures:
     await client.stop()
     path.unlink()
     folder.rmdir()
-    return Figures(lines, open_ms, everywhere, tail, hover_ms, peak)
+    return Figures(lines, open_ms, everywhere, tail, hover_ms, kinds_ms, peak)
 
 
 def report(figures: list[Figures]) -> None:
@@ -155,6 +193,15 @@ def report(figures: list[Figures]) -> None:
             f"| {statistics.median(f.tail_edits_ms):.1f} / {pct(f.tail_edits_ms, 0.95):.1f} ms{eb} "
             f"| {pct(f.hovers_ms, 0.95):.2f} ms (<= 10) | {rss} |"
         )
+    print()
+    print("| lines | " + " | ".join(f"hover {k} p50 / p95" for k in KINDS) + " |")
+    print("| ---: |" + " ---: |" * len(KINDS))
+    for f in figures:
+        cells = [
+            f"{statistics.median(ms):.2f} / {pct(ms, 0.95):.2f} ms" if ms else "-"
+            for ms in (f.kinds_ms[k] for k in KINDS)
+        ]
+        print(f"| {f.lines:,} | " + " | ".join(cells) + " |")
 
 
 def main() -> int:

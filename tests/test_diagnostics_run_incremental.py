@@ -8,7 +8,7 @@ from pathlib import Path
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from cncmacro.analysis import run_checks
+from cncmacro.analysis import run_checks, unreached
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.library.machine_file import MachineSettings
 
@@ -63,6 +63,7 @@ def fresh(tmp: Path, texts: dict[str, str]) -> WorkspaceAnalysis:
 @given(edits=st.lists(edit, min_size=1, max_size=6), analyse_between=st.booleans())
 def test_incremental_analysis_equals_analysis_from_scratch(tmp_path, monkeypatch, edits, analyse_between):
     monkeypatch.setattr(run_checks, "CHUNK", 7)  # many checkpoints in small programs
+    monkeypatch.setattr(unreached, "_WHOLE_FILE_SHARE", 0)  # not-executed ranges kept, never scanned whole
     texts = {"MAIN.nc": "\n".join(MAIN), "O9001.nc": "\n".join(MACRO)}
     ws = fresh(tmp_path, texts)
     main = str(tmp_path / "MAIN.nc")
@@ -94,6 +95,38 @@ def test_incremental_analysis_equals_analysis_from_scratch(tmp_path, monkeypatch
     got = snapshot(ws, main)
     final = {name: ws.document(str(tmp_path / name)).text for name in texts}  # type: ignore[union-attr]
     assert got == snapshot(fresh(tmp_path, final), main)
+
+
+SKIPPING = [
+    "O0001", "#1=0", "IF[#1 EQ 0] GOTO 10", "G01 X1.", "", "G01 X2.", "N10 G00 X0", "WHILE[#1 LT 2] DO1",
+    "#1=#1+1", "IF[#1 GT 5] GOTO 30", "G01 Y1.", "END1", "GOTO 40", "N30 G01 Z1.", "(NOTE)", "G01 Z2.",
+    "N40 M30", "O0002", "G01 X9.", "M99",
+]  # fmt: skip
+SKIP_POOL = ["#1=1", "#1=7", "", "G01 X5.", "(NOTE)", "GOTO 40", "IF[#1 EQ 1] GOTO 30", "/G01 X3.", "%", "M30"]
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(edits=st.lists(st.tuples(st.integers(1, 19), st.sampled_from(SKIP_POOL), st.booleans()), min_size=1,
+                      max_size=8))  # fmt: skip
+def test_not_executed_ranges_after_edits_equal_ranges_from_scratch(tmp_path, monkeypatch, edits):
+    """SEMANTICS.md §4 (control flow decides what runs): the blocks that jumps and loops skip
+    are reported as not executed, and after any typing (lines replaced in place, so that the
+    ranges are kept and updated around the changed lines) exactly as a fresh analysis would."""
+    monkeypatch.setattr(run_checks, "CHUNK", 5)
+    monkeypatch.setattr(unreached, "_WHOLE_FILE_SHARE", 0)
+    ws = fresh(tmp_path, {"MAIN.nc": "\n".join(SKIPPING)})
+    main = str(tmp_path / "MAIN.nc")
+    first = snapshot(ws, main)[0]
+    assert any(d[6] == "not-executed" for d in first)  # type: ignore[union-attr]
+    for version, (at, line, analyse) in enumerate(edits, start=1):
+        doc = ws.document(main)
+        assert doc is not None
+        at = min(at, len(doc.lines) - 1)
+        ws.change(main, at, 0, at, len(doc.lines[at]), line, version)
+        if analyse:
+            snapshot(ws, main)
+    final = ws.document(main).text  # type: ignore[union-attr]
+    assert snapshot(ws, main) == snapshot(fresh(tmp_path, {"MAIN.nc": final}), main)
 
 
 def test_result_carries_the_version_it_came_from(tmp_path):

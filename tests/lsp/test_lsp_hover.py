@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, GSK, close_file, hover_text, open_file
+from .lsp_session import FANUC, GSK, close_file, edit, hover_text, open_file
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
@@ -130,3 +130,25 @@ async def test_hover_on_a_gsk_h_code_shows_the_command(gsk_en: LanguageClient, g
     assert "alarm" in (await hover_text(gsk_en, uri, 2, 5)).lower()
     uri = open_file(gsk_zh, GSK / "hcodes_zh.CNC", text)
     assert "加法" in await hover_text(gsk_zh, uri, 1, 5)
+
+
+async def test_hover_places_follow_edits_to_writes_and_jumps(fanuc_en: LanguageClient) -> None:
+    text = "O0001\n#150=1\nN10 #151=#150\nIF[#151 GT 2] GOTO10\nGOTO10\nM30\n"
+    uri = open_file(fanuc_en, FANUC / "moving.nc", text)
+    assert "moving.nc:2" in await hover_text(fanuc_en, uri, 2, 10)  # #150 read on N10's line
+    assert "line 4 (GOTO)" in await hover_text(fanuc_en, uri, 2, 1)  # N10
+    edit(fanuc_en, uri, 2, 1, 0, 0, "G00 X0\nG00 Y0\n")  # two lines above the write of #150
+    common = await hover_text(fanuc_en, uri, 4, 10)
+    assert "moving.nc:2" not in common and "moving.nc:4" in common
+    label = await hover_text(fanuc_en, uri, 4, 1)
+    assert "line 6 (GOTO)" in label and "line 7 (GOTO)" in label
+    edit(fanuc_en, uri, 3, 3, 3, 4, "2")  # #150=1 -> #152=1
+    assert "not written" in (await hover_text(fanuc_en, uri, 4, 10)).lower()
+    assert "moving.nc:4" in await hover_text(fanuc_en, uri, 3, 2)
+    edit(fanuc_en, uri, 4, 5, 0, 20, "")  # IF[#151 GT 2] GOTO10 -> an empty line
+    label = await hover_text(fanuc_en, uri, 4, 1)
+    assert "line 6" not in label and "line 7 (GOTO)" in label
+    edit(fanuc_en, uri, 5, 4, 0, 3, "")  # the label goes: N10 #151=#150 -> #151=#150
+    jump = await hover_text(fanuc_en, uri, 6, 5)  # GOTO10
+    close_file(fanuc_en, uri)
+    assert "N10: not found" in jump and "line 7 (GOTO)" in jump

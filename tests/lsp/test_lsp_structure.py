@@ -53,6 +53,20 @@ async def test_folding_covers_loops_programs_and_comment_blocks(fanuc_en: Langua
     assert sorted((r.start_line, r.end_line) for r in ranges) == [(0, 14), (5, 10), (6, 8)]
 
 
+
+async def test_folding_of_a_program_whose_m99_is_inside_a_loop_nests_the_loop(fanuc_en: LanguageClient) -> None:
+    text = "O0001 (LOOP RETURN)\n#1=0\nWHILE[#1 LT 3] DO1\n#1=#1+1\nM99\nEND1\nG00 X0\n"
+    uri = open_file(fanuc_en, FANUC / "loop_m99.nc", text)
+    ranges = await fanuc_en.text_document_folding_range_async(
+        types.FoldingRangeParams(types.TextDocumentIdentifier(uri))
+    )
+    close_file(fanuc_en, uri)
+    got = sorted((r.start_line, r.end_line) for r in ranges)
+    assert got == [(0, 5), (2, 5)]  # the program's range holds the loop's, up to END1
+    for a, b in got:  # no two ranges cross
+        assert all(not (a < c <= b < d) for c, d in got)
+
+
 def _decode(data: list[int], legend: types.SemanticTokensLegend, lines: list[str]) -> list[tuple[str, str, list[str]]]:
     out = []
     line = col = 0

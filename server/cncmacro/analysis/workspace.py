@@ -78,6 +78,7 @@ from .locale import pick
 from .run_checks import MAX_RECORDS, MAX_SECONDS, EntryRun, run_diagnostics
 from .severity import apply_severities, check_overrides
 from .static_lines import StaticLines
+from .unreached import UnreachedRanges
 
 log = logging.getLogger(__name__)
 
@@ -154,6 +155,7 @@ class WorkspaceAnalysis:
         self.index: CallIndex | None = None  # made at the first question (``_find_disk_entries``)
         self._entries: dict[tuple[str, int], FoundProgram] | None = None  # callers on disk that run
         self._called_from_disk: set[tuple[str, int]] = set()  # open programs that callers on disk reach
+        self._unreached = UnreachedRanges(self._unreachable_skips)  # the not-executed ranges, kept across edits
 
     def set_workspace_folders(self, folders: list[str]) -> None:
         """The folders whose program files may call the open ones (the editor's workspace
@@ -238,6 +240,7 @@ class WorkspaceAnalysis:
             self.settings, self.dialect_setting, self.max_blocks = settings, dialect, budget
             for d in self.docs.values():
                 d.own = d.static = d.targets = None
+            self._unreached.forget()
             self.index = None
             self._entries = None
             self.stale = True
@@ -358,6 +361,8 @@ class WorkspaceAnalysis:
                     for run in self.runs.values():
                         self._rewind(run, d)
         for d in self.docs.values():
+            for e in d.edits:
+                self._unreached.edited(d.path, e.start, e.count, e.shifted or e.structural)
             d.edits.clear()
         primary = {k: found for k, found, called in units if not called and k not in self._called_from_disk}
         primary.update(self._entries)
@@ -379,6 +384,7 @@ class WorkspaceAnalysis:
         elif run.entry.unit is not found.unit:
             run.entry = found
             run.restart()
+            self._unreached.rewound(run)
         return run.advance(should_cancel)
 
     def _rewind(self, run: EntryRun, d: _Open) -> None:
@@ -413,6 +419,7 @@ class WorkspaceAnalysis:
             step = run.first_step(path)
             assert step is not None
             run.rewind(step, avoid_file=path)
+            self._unreached.rewound(run)
             run.reset_file(path)
             return
         step = run.first_step(path, lines)
@@ -420,6 +427,7 @@ class WorkspaceAnalysis:
             run.edited(path, lines)
         if step is not None:
             run.rewind(step)
+            self._unreached.rewound(run)
         run.forget_lines(path, lines)
 
     def _rewind_shifted(self, run: EntryRun, d: _Open) -> bool:
@@ -443,6 +451,7 @@ class WorkspaceAnalysis:
                 return False
         else:
             run.rewind(step, avoid_file=path)
+            self._unreached.rewound(run)
         run.reset_file(path)
         return True
 
@@ -515,44 +524,29 @@ class WorkspaceAnalysis:
         return AnalysisResult(version, out, values)
 
     def _not_executed(self) -> list[Diagnostic]:
-        """Ranges of blocks that no run reached, in the programs that some run entered."""
-        executed: dict[str, set[int]] = {}
-        shown = set(self.docs)  # the open files, and the files that runs from open files enter
+        """Ranges of blocks that no run reached, in the programs that some run entered, in the
+        open files and the files that runs from open files enter (``unreached.py`` keeps them
+        up to date across edits)."""
+        shown = set(self.docs)
         entries = self._entries or {}
         for k, run in self.runs.items():
-            for file, lines in run.state.first.items():
-                executed.setdefault(file, set()).update(lines)
-                if k not in entries:
-                    shown.add(file)
+            if k not in entries:
+                shown.update(run.state.first)
         out: list[Diagnostic] = []
-        for file, ran in executed.items():
-            if file not in shown:
-                continue
-            loaded = self.docs[file].loaded if file in self.docs else self.library.load(file)
-            if loaded is None:
-                continue
-            blocks = loaded.program.blocks
-            for unit in loaded.program.units:
-                if not _any_in(ran, unit):
-                    continue
-                first = last = -1
-                for i in range(unit.start, min(unit.end, len(blocks))):
-                    if i in ran:
-                        if first >= 0:
-                            out.append(self._unreached(file, loaded.lines, first, last))
-                            first = -1
-                        continue
-                    b = blocks[i]
-                    if b.plain is None and (_skipped(b, self.settings) or b.tape or _header_only(b)):
-                        continue
-                    if first < 0:
-                        first = i
-                    last = i
-                if first >= 0:
-                    out.append(self._unreached(file, loaded.lines, first, last))
+        found = self._unreached.ranges(self.runs, self._loaded, sorted(shown))
+        for file, ranges in found.items():
+            lines = self._loaded(file).lines  # type: ignore[union-attr]
+            out += [self._unreached_diagnostic(file, lines, first, last) for first, last in ranges]
         return out
 
-    def _unreached(self, file: str, lines: list[str], first: int, last: int) -> Diagnostic:
+    def _loaded(self, file: str) -> LoadedFile | None:
+        return self.docs[file].loaded if file in self.docs else self.library.load(file)
+
+    def _unreachable_skips(self, b: Block) -> bool:
+        """Whether a block neither starts nor ends a not-executed range."""
+        return b.plain is None and (_skipped(b, self.settings) or b.tape or _header_only(b))
+
+    def _unreached_diagnostic(self, file: str, lines: list[str], first: int, last: int) -> Diagnostic:
         n = last - first + 1
         en = "no analysis run reaches this block" if first == last else f"no analysis run reaches these {n} lines"
         zh = "分析运行从未执行到此程序段" if first == last else f"分析运行从未执行到这 {n} 行"
@@ -603,8 +597,3 @@ def _runnable(blocks: list[Block], unit: ProgramUnit) -> bool:
             return True
     return False
 
-
-def _any_in(lines: set[int], unit: ProgramUnit) -> bool:
-    if unit.end - unit.start < len(lines):
-        return any(i in lines for i in range(unit.start, unit.end))
-    return any(unit.start <= x < unit.end for x in lines)

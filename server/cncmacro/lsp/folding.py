@@ -1,6 +1,8 @@
 """Folding ranges: WHILE..END loops, O programs up to exactly their last M99/M30/M02 (else up
 to the next program), and runs of comment-only lines, from the parser's ``Program`` and cached
-blocks."""
+blocks. A program's range never ends inside one of its loops (an ``M99`` in a loop body is
+not the program's end there): it reaches the loop's END, so that the two nest, as editors
+that pair ranges by their lines need."""
 
 from __future__ import annotations
 
@@ -10,6 +12,7 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 
 from ..syntax.nodes import Block, Number
+from ..syntax.program import LoopPair
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -35,6 +38,7 @@ def register(server: CncMacroServer) -> None:
             while last > u.start and not _ends_program(blocks[last]):
                 last -= 1
             end = last if last > u.start else end
+            end = _past_loops(program.loops, u.start, end)
             if end > u.start:
                 out.append(types.FoldingRange(start_line=u.start, end_line=end))
         run_start = None
@@ -53,6 +57,18 @@ def register(server: CncMacroServer) -> None:
                 types.FoldingRange(start_line=run_start, end_line=len(blocks) - 1, kind=types.FoldingRangeKind.Comment)
             )
         return out
+
+
+def _past_loops(loops: list[LoopPair], start: int, end: int) -> int:
+    """``end``, moved to the END of every loop that starts in ``start``..``end`` and ends after it."""
+    moved = True
+    while moved:
+        moved = False
+        for p in loops:
+            if start <= p.do_line <= end < p.end_line:
+                end = p.end_line
+                moved = True
+    return end
 
 
 _END = re.compile(r"M0*(?:99|30|2)(?!\d)", re.IGNORECASE)

@@ -4,7 +4,8 @@ System variables, G/M codes, functions and the GSK ``G65 Hm`` commands are descr
 dialect tables; a local
 shows the argument letters that fill it (``machine.calls``); a common shows where it is
 written; an N label shows the jumps to it; an O program (or the P of a call) shows its title
-and file. Only the block under the cursor is parsed; searches read cached blocks.
+and file. Only the block under the cursor is parsed; the places come from each file's
+site index (``site_index.py``), in time proportional to how many there are.
 """
 
 from __future__ import annotations
@@ -21,7 +22,7 @@ from ..syntax.nodes import Call, Number, Var, Word
 from ..syntax.walk import nodes_at
 from .call_sites import call_site
 from .cursor import Cursor, cursor_at
-from .site_index import block_sites, indexed_lines
+from .site_index import workspace_sites
 from .sites import jump_sites, label_jumps, word_at
 from .texts import t
 
@@ -116,28 +117,27 @@ def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
         lines.append("")
         if places:
             lines.append(f"{t('written_at', loc)}:")
-            lines += _bulleted([f"{Path(path).name}:{line + 1}" for path, line in places], loc)
+            shown = [f"{Path(path).name}:{line + 1}" for path, line in places[:MAX_PLACES]]
+            lines += _bulleted(shown, loc, len(places))
         else:
             lines.append(t("not_written", loc))
     return "\n".join(lines)
 
 
-def _bulleted(entries: list[str], loc: str) -> list[str]:
-    """At most ``MAX_PLACES`` entries as a Markdown list, then how many more there are."""
+def _bulleted(entries: list[str], loc: str, total: int | None = None) -> list[str]:
+    """At most ``MAX_PLACES`` entries as a Markdown list, then how many more there are (of
+    ``total`` places, when only the first entries were formatted)."""
+    total = len(entries) if total is None else total
     out = [f"- {e}" for e in entries[:MAX_PLACES]]
-    if len(entries) > MAX_PLACES:
-        out.append(f"- … (+{len(entries) - MAX_PLACES} {t('more', loc)})")
+    if total > MAX_PLACES:
+        out.append(f"- … (+{total - MAX_PLACES} {t('more', loc)})")
     return out
 
 
 def write_places(ls: CncMacroServer, number: int) -> list[tuple[str, int]]:
-    """Every (file, line) in the workspace that assigns ``#number``."""
-    out: list[tuple[str, int]] = []
-    for path, blocks, lines in indexed_lines(ls):
-        for i in lines:
-            if any(s.write and s.number == number for s in block_sites(blocks[i])[1]):
-                out.append((path, i))
-    return out
+    """Every (file, line) in the workspace that assigns ``#number`` (from each file's map of
+    the lines that write each variable)."""
+    return [(f.path, i) for f in workspace_sites(ls) for i in f.sites.writes(number)]
 
 
 # ---------------------------------------------------------------- labels and programs
@@ -157,7 +157,8 @@ def label_hover(ls: CncMacroServer, cur: Cursor, label: int) -> str:
     lines.append("")
     if jumps:
         lines.append(f"{t('jumps', loc)}:")
-        lines += _bulleted([f"{t('line', loc)} {i + 1} ({kind})" for i, kind in jumps], loc)
+        shown = [f"{t('line', loc)} {i + 1} ({kind})" for i, kind in jumps[:MAX_PLACES]]
+        lines += _bulleted(shown, loc, len(jumps))
     else:
         lines.append(t("no_jumps", loc))
     return "\n".join(lines)

@@ -10,7 +10,6 @@ label and every jump to it.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 from lsprotocol import types
@@ -22,7 +21,7 @@ from ..syntax.walk import nodes_at
 from .call_sites import call_site
 from .cursor import Cursor, cursor_at, doc_range
 from .positions import to_client
-from .site_index import block_sites, indexed_lines
+from .site_index import FileSites, workspace_sites
 from .sites import jump_sites, label_jumps
 
 if TYPE_CHECKING:
@@ -172,21 +171,17 @@ def variable_references(
     kind = describe.variable_class(number, ls.common_range)
     if kind == describe.LOCAL:
         unit = cur.doc.parsed.program.unit_at(cur.line)
-        files: list[tuple[str, list, list[str], Iterable[int]]] = [
-            (cur.doc.path, cur.doc.parsed.blocks, cur.doc.lines, cur.doc.sites.between(unit.start, unit.end))
+        files: list[tuple[FileSites, int, int | None]] = [
+            (FileSites(cur.doc.path, cur.doc.lines, cur.doc.sites), unit.start, unit.end)
         ]
     else:
-        files = []
-        for path, blocks, lines in indexed_lines(ls):
-            doc = next((d for d in ls.documents.by_uri.values() if d.path == path), None)
-            texts = doc.lines if doc is not None else ls.index.files[path].lines
-            files.append((path, blocks, texts, lines))
-    for path, blocks, texts, lines in files:
-        uri = ls.uri_for_path(path)
-        for i in lines:
-            for s in block_sites(blocks[i])[1]:
+        files = [(f, 0, None) for f in workspace_sites(ls)]
+    for f, start, end in files:
+        uri = ls.uri_for_path(f.path)
+        for i in f.sites.mentions(number, start, end):
+            for s in f.sites.sites_at(i)[1]:
                 if s.number == number and (include_declaration or not s.write):
-                    out.append(_loc(uri, i, s.start, s.end, texts[i], utf16))
+                    out.append(_loc(uri, i, s.start, s.end, f.lines[i], utf16))
     return out
 
 

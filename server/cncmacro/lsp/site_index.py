@@ -1,15 +1,22 @@
-"""Which lines of an open document mention jumps or variables, kept up to date by edits.
+"""Which lines of a document mention jumps or variables, and where each label and variable is,
+kept up to date by edits.
 
 Hover ("where is #100 written", "which jumps land on N10"), references and rename look only at
 these lines. The sites of a block are computed once per block object (blocks are shared by
-line text), and an edit only re-examines the lines it replaced and shifts the others, so a
-question about a 100k-line file costs time in proportion to its macro lines, not its length.
+line text). A ``SiteIndex`` keeps the sorted lines that have sites and, from the first
+question on, maps from a variable number to the lines that write it and that mention it, and
+from a label number to the lines that jump to it; an edit only re-examines the lines it
+replaced and shifts the others. So the answer to a question costs time in proportion to the
+answer, not to the file, and an edit in proportion to the macro lines at most. Files on disk
+get one index each, made at the first question and kept until the workspace index loads the
+file again.
 """
 
 from __future__ import annotations
 
-from bisect import bisect_left
-from collections.abc import Iterable, Iterator
+from bisect import bisect_left, insort
+from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import Any
 
 from ..syntax.nodes import Block
@@ -38,45 +45,169 @@ def block_sites(block: Block) -> Sites:
     return sites
 
 
+Lines = dict[int, list[int]]  # a label or variable number -> its sorted lines
+
+
+class _Maps:
+    """Label -> jumping lines, variable -> writing lines, variable -> mentioning lines."""
+
+    def __init__(self) -> None:
+        self.jumps: Lines = {}
+        self.writes: Lines = {}
+        self.mentions: Lines = {}
+
+    def _keyed(self, sites: Sites) -> Iterator[tuple[Lines, int]]:
+        for key in {j.label for j in sites[0]}:
+            yield self.jumps, key
+        for key in {s.number for s in sites[1]}:
+            yield self.mentions, key
+        for key in {s.number for s in sites[1] if s.write}:
+            yield self.writes, key
+
+    def add(self, line: int, sites: Sites, at_end: bool = False) -> None:
+        for table, key in self._keyed(sites):
+            lines = table.get(key)
+            if lines is None:
+                table[key] = [line]
+            elif at_end:
+                lines.append(line)
+            else:
+                insort(lines, line)
+
+    def remove(self, line: int, sites: Sites) -> None:
+        for table, key in self._keyed(sites):
+            lines = table[key]
+            k = bisect_left(lines, line)
+            del lines[k]
+            if not lines:
+                del table[key]
+
+    def shift(self, at: int, delta: int) -> None:
+        """Lines from ``at`` on move by ``delta``."""
+        for table in (self.jumps, self.writes, self.mentions):
+            for lines in table.values():
+                k = bisect_left(lines, at)
+                if k < len(lines):
+                    lines[k:] = [x + delta for x in lines[k:]]
+
+
 class SiteIndex:
     """The sorted lines of one document whose blocks have sites, found the first time they
-    are asked for (not while a document is being opened)."""
+    are asked for (not while a document is being opened), and the maps of ``_Maps`` made from
+    them the first time one is asked for."""
 
     def __init__(self, blocks: list[Block]) -> None:
         self._blocks = blocks
         self._lines: list[int] | None = None
+        self._sites: list[Sites] = []  # the sites of each of ``_lines``, as they were indexed
+        self._maps: _Maps | None = None
 
     @property
     def lines(self) -> list[int]:
         if self._lines is None:
-            self._lines = [i for i, b in enumerate(self._blocks) if block_sites(b) != _EMPTY]
+            lines: list[int] = []
+            sites: list[Sites] = []
+            for i, b in enumerate(self._blocks):
+                s = block_sites(b)
+                if s[0] or s[1]:
+                    lines.append(i)
+                    sites.append(s)
+            self._lines, self._sites = lines, sites
         return self._lines
+
+    @property
+    def maps(self) -> _Maps:
+        if self._maps is None:
+            maps = _Maps()
+            for line, sites in zip(self.lines, self._sites, strict=True):
+                maps.add(line, sites, at_end=True)
+            self._maps = maps
+        return self._maps
 
     def replaced(self, blocks: list[Block], start: int, old_end: int, new_count: int) -> None:
         """Lines ``start``..``old_end`` (exclusive) became ``new_count`` lines (now in ``blocks``)."""
+        self._blocks = blocks
         if self._lines is None:
-            self._blocks = blocks
             return
         lines = self._lines
         lo = bisect_left(lines, start)
         hi = bisect_left(lines, old_end)
         delta = new_count - (old_end - start)
-        fresh = [start + k for k in range(new_count) if block_sites(blocks[start + k]) != _EMPTY]
-        tail = [x + delta for x in lines[hi:]] if delta else lines[hi:]
-        self._lines = lines[:lo] + fresh + tail
+        fresh_lines: list[int] = []
+        fresh_sites: list[Sites] = []
+        for k in range(new_count):
+            s = block_sites(blocks[start + k])
+            if s[0] or s[1]:
+                fresh_lines.append(start + k)
+                fresh_sites.append(s)
+        maps = self._maps
+        if maps is not None:
+            for line, sites in zip(lines[lo:hi], self._sites[lo:hi], strict=True):
+                maps.remove(line, sites)
+            if delta:
+                maps.shift(old_end, delta)
+            for line, sites in zip(fresh_lines, fresh_sites, strict=True):
+                maps.add(line, sites)
+        if delta:
+            lines[hi:] = [x + delta for x in lines[hi:]]
+        lines[lo:hi] = fresh_lines
+        self._sites[lo:hi] = fresh_sites
 
     def between(self, start: int, end: int) -> list[int]:
         """The indexed lines in ``start``..``end`` (exclusive)."""
-        return self.lines[bisect_left(self.lines, start) : bisect_left(self.lines, end)]
+        return _within(self.lines, start, end)
+
+    def jumps_to(self, label: int, start: int = 0, end: int | None = None) -> list[int]:
+        """The lines (in ``start``..``end``) that jump to N``label``."""
+        return _within(self.maps.jumps.get(label, []), start, end)
+
+    def writes(self, number: int, start: int = 0, end: int | None = None) -> list[int]:
+        """The lines (in ``start``..``end``) that assign ``#number``."""
+        return _within(self.maps.writes.get(number, []), start, end)
+
+    def mentions(self, number: int, start: int = 0, end: int | None = None) -> list[int]:
+        """The lines (in ``start``..``end``) that mention ``#number``."""
+        return _within(self.maps.mentions.get(number, []), start, end)
+
+    def sites_at(self, line: int) -> Sites:
+        """The sites of an indexed ``line`` (none for another line)."""
+        lines = self.lines
+        k = bisect_left(lines, line)
+        return self._sites[k] if k < len(lines) and lines[k] == line else _EMPTY
 
 
-def indexed_lines(server: Any) -> Iterator[tuple[str, list[Block], Iterable[int]]]:
-    """(path, blocks, lines worth reading) for every workspace file: an open document's
-    indexed lines, every line of a file on disk."""
+def _within(lines: list[int], start: int, end: int | None) -> list[int]:
+    if start <= 0 and end is None:
+        return list(lines)
+    return lines[bisect_left(lines, start) : len(lines) if end is None else bisect_left(lines, end)]
+
+
+@dataclass(frozen=True, slots=True)
+class FileSites:
+    """One workspace file as searches see it: its path, line texts and site index."""
+
+    path: str
+    lines: list[str]
+    sites: SiteIndex
+
+
+_disk: dict[str, tuple[object, SiteIndex]] = {}  # path -> (the loaded file it was made from, index)
+
+
+def workspace_sites(server: Any) -> Iterator[FileSites]:
+    """Every workspace file: open documents as the editor has them (their own index), the
+    others as on disk (an index per loaded file, kept while the workspace index keeps it)."""
     open_paths = set()
     for doc in server.documents.by_uri.values():
         open_paths.add(doc.path)
-        yield doc.path, doc.parsed.blocks, doc.sites.lines
-    for path, loaded in server.index.files.items():
-        if path not in open_paths:
-            yield path, loaded.program.blocks, range(len(loaded.program.blocks))
+        yield FileSites(doc.path, doc.lines, doc.sites)
+    files = server.index.files
+    for path in [p for p, (loaded, _) in _disk.items() if files.get(p) is not loaded]:
+        del _disk[path]
+    for path, loaded in files.items():
+        if path in open_paths:
+            continue
+        hit = _disk.get(path)
+        if hit is None:
+            hit = _disk[path] = (loaded, SiteIndex(loaded.program.blocks))
+        yield FileSites(path, loaded.lines, hit[1])

@@ -94,11 +94,9 @@ def word_at(line: str, column: int) -> tuple[str, int, int] | None:
 
 def label_jumps(doc: object, start: int, end: int, label: int) -> Iterator[tuple[int, JumpSite]]:
     """(line, jump) for every jump to ``label`` on lines ``start`` to ``end`` of an open
-    document (read from its site index)."""
-    from .site_index import block_sites
-
-    blocks = doc.parsed.blocks  # type: ignore[attr-defined]
-    for i in doc.sites.between(start, end):  # type: ignore[attr-defined]
-        for j in block_sites(blocks[i])[0]:
+    document (read from its site index: the lines that jump there, not every line)."""
+    sites = doc.sites  # type: ignore[attr-defined]
+    for i in sites.jumps_to(label, start, end):
+        for j in sites.sites_at(i)[0]:
             if j.label == label:
                 yield i, j
