@@ -17,6 +17,7 @@ from ..machine.alarms import MacroAlarm
 from ..machine.calls import macro_program_number, map_arguments, program_and_count, repeat_count
 from ..machine.hcodes import ARITHMETIC, BRANCHES
 from ..machine.numbers import round_half_away, to_increment
+from ..machine.texts import in_language
 from ..syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
 from .line_facts import CallSite, Finding, LineContext, LineFacts, ReturnJump
 from .locale import pick
@@ -98,7 +99,7 @@ def _macro_call(words: tuple[Word, ...], at: int, g: float, ctx: LineContext, fa
                  f"{name} 之后的 G 代码不能作为自变量（报警 129）", ctx)  # fmt: skip
             break
     else:
-        _check_arguments(args, name, ctx, facts)
+        _check_arguments(args, ctx, facts)
     p_word = next((w for w in after if w.letter == "P"), None)
     l_word = next((w for w in after if w.letter == "L"), None)
     _macro_target(words[at], p_word, name, ctx, facts)
@@ -120,7 +121,7 @@ def _looks_like_h_code(after: tuple[Word, ...]) -> bool:
     return p_is_variable or int(value) in BRANCHES or int(value) == 99
 
 
-def _check_arguments(args: list[Word], name: str, ctx: LineContext, facts: LineFacts) -> None:
+def _check_arguments(args: list[Word], ctx: LineContext, facts: LineFacts) -> None:
     """Argument letters through the interpreter's ``map_arguments`` (values do not matter to
     what it refuses, so each is given as 0)."""
     try:
@@ -129,7 +130,7 @@ def _check_arguments(args: list[Word], name: str, ctx: LineContext, facts: LineF
         bad = _first_refused(args, ctx)
         _add(facts, bad, "error", "argument-address",
              f"{alarm.message} (alarm {alarm.number})",
-             f"地址 {bad.letter} 不能作为 {name} 的自变量（报警 {alarm.number}）", ctx)  # fmt: skip
+             f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
 
 
 def _first_refused(args: list[Word], ctx: LineContext) -> Word:
@@ -162,8 +163,7 @@ def _macro_target(call: Word, p_word: Word | None, name: str, ctx: LineContext, 
     except MacroAlarm as alarm:
         _add(facts, p_word, "error", "program-number",
              f"{alarm.message} on {dialect.title} (alarm {alarm.number})",
-             f"{dialect.title} 的程序号最多 {dialect.program_digits} 位且不能为负（报警 {alarm.number}）",
-             ctx)  # fmt: skip
+             f"{in_language(alarm.message, True)}（{dialect.title}，报警 {alarm.number}）", ctx)  # fmt: skip
         return
     facts.calls.append(CallSite(name, program, None, p_word.start, p_word.end))
 
@@ -189,11 +189,11 @@ def _check_count(l_word: Word, ctx: LineContext, facts: LineFacts) -> None:
     except MacroAlarm as alarm:
         _add(facts, l_word, "error", "repeat-count-range",
              f"{alarm.message} (alarm {alarm.number})",
-             f"L{value:g}：调用次数必须在 1～9999 之间（报警 {alarm.number}）", ctx)  # fmt: skip
+             f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
         return
     if notes:
-        _add(facts, l_word, "warning", "repeat-count-range", notes[0],
-             f"L{value:g} 超过 9999，{ctx.dialect.title} 按 9999 次执行", ctx)  # fmt: skip
+        _add(facts, l_word, "warning", "repeat-count-range", in_language(notes[0], False), in_language(notes[0], True),
+             ctx)  # fmt: skip
 
 
 # ---------------------------------------------------------------- G65 H (macro A, gsk980tdi)
@@ -313,7 +313,7 @@ def _code_call(words: tuple[Word, ...], ctx: LineContext, facts: LineFacts) -> b
         facts.calls.append(CallSite(code, call.program, None, w.start, w.end))  # type: ignore[arg-type]
         if call.call == "macro":
             args = [a for a in words if a is not w and a.letter != "L" and not _same_code(a, code)]  # type: ignore[arg-type]
-            _check_arguments(args, code, ctx, facts)  # type: ignore[arg-type]
+            _check_arguments(args, ctx, facts)
             l_word = next((a for a in words if a.letter == "L"), None)
             if l_word is not None:
                 _check_count(l_word, ctx, facts)
@@ -369,8 +369,7 @@ def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts:
     except MacroAlarm as alarm:
         _add(facts, p_word, "error", "program-number",
              f"{alarm.message} (alarm {alarm.number})",
-             f"{how} 的 P 最多 8 位（前 4 位为次数，后 4 位为程序号），且不能为负（报警 {alarm.number}）",
-             ctx)  # fmt: skip
+             f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
         return
     facts.calls.append(CallSite(how, program, None, p_word.start, p_word.end, q, q_span))
     if l_word is None:
@@ -384,9 +383,9 @@ def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts:
     except MacroAlarm as alarm:
         _add(facts, l_word, "error", "repeat-count-range",
              f"{alarm.message} (alarm {alarm.number})",
-             f"P 和 L 同时指定了调用次数（报警 {alarm.number}）", ctx)  # fmt: skip
+             f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
         return
     if twice:
         _add(facts, l_word, "warning", "repeat-count-range",
-             f"{how}: {twice[0]}", f"{how}：P 和 L 同时指定了调用次数，按 L 执行", ctx)  # fmt: skip
+             f"{how}: {twice[0]}", f"{how}：{in_language(twice[0], True)}", ctx)  # fmt: skip
     _check_count(l_word, ctx, facts)

@@ -43,6 +43,7 @@ from ..library.programs import FoundProgram, ProgramLibrary
 from ..machine import CallSite, Machine, Snapshot
 from ..machine.calls import letters_for_local
 from ..machine.machine import ALARM, FINISHED, LIMIT, PAUSED, READY, STOPPED
+from ..machine.texts import in_language
 from .alarm_codes import MACRO_ALARM, alarm_code
 from .diagnostics import Diagnostic, Related
 from .locale import pick
@@ -398,10 +399,10 @@ def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale:
         code = alarm_code(a.number, a.subject, base)
         if code == MACRO_ALARM:
             en = f"the run reaches macro alarm {a.number}: {a.message}"
-            zh = f"运行到宏程序报警 {a.number}：{a.message}"
+            zh = f"运行到宏程序报警 {a.number}：{in_language(a.message, True)}"
         else:
             en = f"{a.message} (alarm {a.number})"
-            zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{a.message}"
+            zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{in_language(a.message, True)}"
         in_loop = bool(m.frames and m.frames[-1].loops)
         if in_loop:
             do_line = m.frames[-1].loops[-1]
@@ -431,8 +432,8 @@ def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale:
         out.append(_diagnostic(f.file, line, "run-limit", en, zh, m.chain(), None, False, line_text, locale))
     for note in m.notes:
         if note.kind == "call" and note.subject == "repeat-count":
-            en = note.message
-            zh = f"调用次数超出 1–9999：{note.message}"
+            en = in_language(note.message, False)
+            zh = in_language(note.message, True)
             d = _diagnostic(note.file, note.line, "repeat-count-range", en, zh, note.chain, None, False, line_text,
                             locale, severity="warning")  # fmt: skip
             out.append(d)

@@ -2,8 +2,10 @@
 
 The text output is for a machinist: the moves, anything the program printed or stopped
 with, the alarm and where it came from, and the final variables. ``--json`` prints DESIGN.md's
-object. Exit status: 0 when the program completed, 1 on an alarm, 3 when the block budget
-ran out (a likely endless loop), 2 on bad usage or an unreadable file or machine file.
+object. ``--locale zh-CN`` shows the interpreter's alarm details and notes in Chinese (in the
+JSON too; without it the JSON keeps English). Exit status: 0 when the program completed, 1 on
+an alarm, 3 when the block budget ran out (a likely endless loop), 2 on bad usage or an
+unreadable file or machine file.
 """
 
 from __future__ import annotations
@@ -14,12 +16,14 @@ import sys
 from pathlib import Path
 from typing import Any, TextIO
 
+from ..analysis.locale import is_chinese
 from ..library.machine_file import parse_preset
 from ..machine import Machine, RunResult
 from ..machine.frames import MODE_NAMES, Move
 from ..machine.machine import ALARM, LIMIT, PAUSED
 from ..machine.numbers import format_plain
 from ..machine.setup import prepare_run
+from ..machine.texts import in_language
 
 MAX_TEXT_MOVES = 1000
 
@@ -47,6 +51,9 @@ def add_run_parser(sub: Any) -> None:
     run.add_argument("--machine", metavar="FILE", help="machine settings (default: the nearest .cncmacro.toml)")
     run.add_argument("--max-blocks", type=int, metavar="N", help="stop after N blocks (default 1000000)")
     run.add_argument("--json", action="store_true", help="print the result as JSON")
+    run.add_argument(
+        "--locale", choices=("en", "zh-CN"), default="en", help="language of alarm details and notes (default en)"
+    )
     run.add_argument(
         "--no-save", action="store_true", help="do not write #500-#999 back to the persistent-variable file"
     )
@@ -84,19 +91,20 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
             print(f"cncmacro run: could not save the persistent variables: {e}", file=err)
     result = machine.result()
     if args.json:
-        write_json(result_json(result, dialect.axes), out)
+        write_json(result_json(result, dialect.axes, args.locale), out)
     else:
-        write_text(result, machine, out)
+        write_text(result, machine, out, args.locale)
     return {ALARM: 1, LIMIT: 3}.get(result.status, 0)
 
 
-def result_json(result: RunResult, axes: tuple[str, ...]) -> dict[str, Any]:
+def result_json(result: RunResult, axes: tuple[str, ...], locale: str | None = None) -> dict[str, Any]:
+    chinese = is_chinese(locale)
     alarm = None
     if result.alarm is not None:
         a = result.alarm
         alarm = {
             "number": a.number,
-            "message": a.message,
+            "message": in_language(a.message, chinese),
             "file": a.file,
             "line": a.line + 1,
             "chain": [{"program": c.program, "file": c.file, "line": c.line + 1, "how": c.how} for c in a.chain],
@@ -118,7 +126,7 @@ def result_json(result: RunResult, axes: tuple[str, ...]) -> dict[str, Any]:
             for mv in result.moves
         ],
         "output": result.output,
-        "messages": [n.message for n in result.notes if n.kind in ("message", "call")],
+        "messages": [in_language(n.message, chinese) for n in result.notes if n.kind in ("message", "call")],
     }
 
 
@@ -140,7 +148,8 @@ def write_json(result: dict[str, Any], out: TextIO) -> None:
     out.write("}\n")
 
 
-def write_text(result: RunResult, machine: Machine, out: TextIO) -> None:
+def write_text(result: RunResult, machine: Machine, out: TextIO, locale: str | None = None) -> None:
+    chinese = is_chinese(locale)
     axes = machine.dialect.axes
     moved = [i for i in range(len(axes)) if any(mv.start[i] != mv.end[i] or mv.end[i] for mv in result.moves)]
     if result.moves:
@@ -158,12 +167,12 @@ def write_text(result: RunResult, machine: Machine, out: TextIO) -> None:
         if note.kind == "output":
             print(f"DPRNT  {note.message}", file=out)
         elif note.kind == "message":
-            print(f"stop at {where}: {note.message}", file=out)
+            print(f"stop at {where}: {in_language(note.message, chinese)}", file=out)
         elif note.kind == "call":
-            print(f"note at {where}: {note.message}", file=out)
+            print(f"note at {where}: {in_language(note.message, chinese)}", file=out)
     if result.alarm is not None:
         a = result.alarm
-        print(f"ALARM {a.number}: {a.message}", file=out)
+        print(f"ALARM {a.number}: {in_language(a.message, chinese)}", file=out)
         print(f"  at {a.file}:{a.line + 1}", file=out)
         for site in reversed(a.chain[:-1]):
             print(f"  called from {site.program} ({site.how}) at {site.file}:{site.line + 1}", file=out)

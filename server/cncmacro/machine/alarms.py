@@ -12,14 +12,16 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..dialects.alarms import alarm_text
+from .texts import detail
 
 
 class MacroAlarm(Exception):
-    """Raised while a block executes. ``message`` defaults to the alarm's standard text."""
+    """Raised while a block executes. ``message`` is a ``texts.Detail`` (English, with its
+    Chinese) where the interpreter writes it, and defaults to the alarm's standard text."""
 
     def __init__(self, number: int, message: str | None = None, subject: str | None = None) -> None:
         self.number = number
-        self.message = message or alarm_text(number)
+        self.message = message or detail(alarm_text(number), alarm_text(number, "zh"))
         self.subject = subject  # what the alarm is about where one number covers several things
         super().__init__(f"alarm {number}: {self.message}")
 

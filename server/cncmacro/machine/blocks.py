@@ -29,6 +29,7 @@ from ..syntax.nodes import Assign, Block, Do, End, Goto, If, IndirectVar, Number
 from .alarms import MacroAlarm, raiser
 from .expressions import ExpressionCompiler, Getter
 from .numbers import MAX_VALUE, format_value, round_half_away, to_increment
+from .texts import detail
 
 if TYPE_CHECKING:
     from .machine import Machine
@@ -108,17 +109,28 @@ class CompiledFile:
         """The line a GOTO on line ``pc`` lands on, leaving loops it jumps out of
         (SEMANTICS.md §4: forward to the end of the program, then from its start)."""
         if label is None:
-            raise MacroAlarm(SEQUENCE_NUMBER, "GOTO to a vacant sequence number")
+            raise MacroAlarm(SEQUENCE_NUMBER, detail("GOTO to a vacant sequence number", "GOTO 的顺序号为空变量"))
         n = int(round_half_away(label))
         if not 1 <= n <= 99999:
-            raise MacroAlarm(SEQUENCE_NUMBER, f"GOTO {n}: a sequence number must be 1 to 99999", "label-range")
+            raise MacroAlarm(
+                SEQUENCE_NUMBER,
+                detail(f"GOTO {n}: a sequence number must be 1 to 99999", f"GOTO {n}：顺序号必须在 1～99999 之间"),
+                "label-range",
+            )
         key = (pc, n)
         hit = self._jumps.get(key)
         if hit is None:
             hit = self._jumps[key] = self._find_jump(frame, pc, n)
         target, keep = hit
         if keep < 0:
-            raise MacroAlarm(LOOP_NUMBER, f"GOTO {n} jumps into a WHILE/DO loop from outside it", "jump-into-loop")
+            raise MacroAlarm(
+                LOOP_NUMBER,
+                detail(
+                    f"GOTO {n} jumps into a WHILE/DO loop from outside it",
+                    f"GOTO {n} 从循环外转入 WHILE/DO 循环内",
+                ),
+                "jump-into-loop",
+            )
         del frame.loops[keep:]
         return target
 
@@ -126,7 +138,10 @@ class CompiledFile:
         unit = frame.found.unit
         lines = self.file.program.label_lines(n, unit)
         if not lines:
-            raise MacroAlarm(SEQUENCE_NUMBER, f"N{n} not found in {frame.found.label}")
+            raise MacroAlarm(
+                SEQUENCE_NUMBER,
+                detail(f"N{n} not found in {frame.found.label}", f"{frame.found.label} 中未找到 N{n}"),
+            )
         k = bisect_right(lines, pc)
         target = lines[k] if k < len(lines) else lines[0]
         keep = 0
@@ -144,7 +159,10 @@ class CompiledFile:
         line, else the last one before it."""
         lines = self.file.program.label_lines(n, unit)
         if not lines:
-            raise MacroAlarm(SEQUENCE_NUMBER, f"M99 P{n}: N{n} not found in the calling program")
+            raise MacroAlarm(
+                SEQUENCE_NUMBER,
+                detail(f"M99 P{n}: N{n} not found in the calling program", f"M99 P{n}：调用程序中未找到 N{n}"),
+            )
         k = bisect_right(lines, call_line)
         return lines[k] if k < len(lines) else lines[k - 1]
 
@@ -152,7 +170,10 @@ class CompiledFile:
         """The first Nn of a program (``M98 Q``), searching from its start."""
         lines = self.file.program.label_lines(n, unit)
         if not lines:
-            raise MacroAlarm(SEQUENCE_NUMBER, f"N{n} not found in the called program")
+            raise MacroAlarm(
+                SEQUENCE_NUMBER,
+                detail(f"N{n} not found in the called program", f"被调用的程序中未找到 N{n}"),
+            )
         return lines[bisect_left(lines, unit.start)]
 
     # ---------------------------------------------------------------- compiling
@@ -163,9 +184,10 @@ class CompiledFile:
         return self._watched(self.file.program.blocks[pc], self._compile(pc))
 
     def _watched(self, block: Block, run: Runner) -> Runner:
-        """For the analysis: an assignment to a local or common variable also reports the
-        value it left (``Machine.on_write``), the value an editor shows beside the line; a
-        loop head reports each pass (``Machine.on_loop_pass``: the level, the DO line, and
+        """For the analysis: an assignment to a local or common variable (a statement, the
+        THEN of an IF when it runs, or a gsk980tdi ``G65 Hm P#n`` arithmetic block) also
+        reports the value it left (``Machine.on_write``), the value an editor shows beside the
+        line; a loop head reports each pass (``Machine.on_loop_pass``: the level, the DO line, and
         whether the loop was already running)."""
         s = block.statements[0] if len(block.statements) == 1 and not block.words else None
         if isinstance(s, (While, Do)):
@@ -178,9 +200,20 @@ class CompiledFile:
                 return run(m, line)
 
             return counted
-        if not isinstance(s, Assign) or not isinstance(s.target, Var):
+        if isinstance(s, Assign):
+            return self._reporting(s, run)
+        if s is None and self.machine.dialect.h_codes:
+            return self._reporting(_h_code_result(block), run)
+        return run  # an IF..THEN assignment reports itself, when it runs (``statement``)
+
+    def _reporting(self, written: Assign | int | None, run: Runner) -> Runner:
+        """``run``, then the value left in the variable it assigns (an assignment statement,
+        or the number of the variable a ``G65 Hm P#n`` writes), for a local or common one."""
+        if isinstance(written, Assign):
+            written = written.target.number if isinstance(written.target, Var) else None
+        if written is None:
             return run
-        n = s.target.number
+        n = written
         kind = self.machine.kinds.kind(n)
         if kind not in ("local", "common", "persistent"):
             return run
@@ -212,7 +245,10 @@ class CompiledFile:
             problem = next(p for p in block.problems if p.severity == "error")
             said = _ALARM_IN_MESSAGE.search(problem.message)
             number = int(said.group(1)) if said else STATEMENT_FORMAT
-            return raiser(number, f"the block does not parse: {problem.message}")
+            return raiser(
+                number,
+                detail(f"the block does not parse: {problem.message}", f"程序段无法解析：{problem.message}"),
+            )
         if block.program is not None:
             return self._header(block, pc, nxt)
         return self._body(block, pc, nxt)
@@ -232,9 +268,15 @@ class CompiledFile:
         if block.statements:
             if block.words:
                 w = block.words[0]
-                return raiser(NC_AND_MACRO, f"{w.letter} word and a macro statement in one block")
+                return raiser(
+                    NC_AND_MACRO,
+                    detail(
+                        f"{w.letter} word and a macro statement in one block",
+                        f"{w.letter} 代码与宏语句在同一程序段",
+                    ),
+                )
             if len(block.statements) > 1:
-                return raiser(STATEMENT_FORMAT, "one macro statement per block")
+                return raiser(STATEMENT_FORMAT, detail("one macro statement per block", "一个程序段只能有一条宏语句"))
             run = self.statement(block.statements[0], pc, nxt)
         elif block.words:
             run = self.nc_block(block, pc, nxt)
@@ -268,6 +310,8 @@ class CompiledFile:
                 return if_goto
             assert s.then is not None
             then = self.statement(s.then, pc, nxt)
+            if self.machine.watching and isinstance(s.then, Assign):
+                then = self._reporting(s.then, then)
 
             def if_then(m: Any, pc: int) -> int:
                 return then(m, pc) if test(m) else nxt
@@ -283,7 +327,7 @@ class CompiledFile:
             return self.loop_end(s, pc)
         if isinstance(s, Output):
             return self.output(s, nxt)
-        return raiser(STATEMENT_FORMAT, "unknown statement")
+        return raiser(STATEMENT_FORMAT, detail("unknown statement", "未知的语句"))
 
     def assign(self, s: Assign, nxt: int) -> Runner:
         value = self.values.value(s.value)
@@ -297,7 +341,10 @@ class CompiledFile:
                 def set_local(m: Any, pc: int) -> int:
                     v = value(m)
                     if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
-                        raise MacroAlarm(OVERFLOW, f"#{n} = {v}: the value is out of range")
+                        raise MacroAlarm(
+                            OVERFLOW,
+                            detail(f"#{n} = {v}: the value is out of range", f"#{n} = {v}：数值超出范围"),
+                        )
                     m.L[n] = v
                     return nxt
 
@@ -307,13 +354,19 @@ class CompiledFile:
                 def set_common(m: Any, pc: int) -> int:
                     v = value(m)
                     if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
-                        raise MacroAlarm(OVERFLOW, f"#{n} = {v}: the value is out of range")
+                        raise MacroAlarm(
+                            OVERFLOW,
+                            detail(f"#{n} = {v}: the value is out of range", f"#{n} = {v}：数值超出范围"),
+                        )
                     m.C[n] = v
                     return nxt
 
                 return set_common
             if kind == "vacant":
-                return raiser(WRITE_PROTECTED, "#0 is always vacant and cannot be written")
+                return raiser(
+                    WRITE_PROTECTED,
+                    detail("#0 is always vacant and cannot be written", "#0 总是空变量，不能写入"),
+                )
             number = float(n)
 
             def set_other(m: Any, pc: int) -> int:
@@ -337,10 +390,19 @@ class CompiledFile:
     def loop_head(self, s: While | Do, pc: int, nxt: int) -> Runner:
         number = self.loop_number(s.loop)
         if number is None:
-            return raiser(LOOP_NUMBER, f"DO {s.loop.text}: the loop number must be 1, 2 or 3")
+            return raiser(
+                LOOP_NUMBER,
+                detail(
+                    f"DO {s.loop.text}: the loop number must be 1, 2 or 3",
+                    f"DO {s.loop.text}：循环号必须为 1、2 或 3",
+                ),
+            )
         end = self.do_end.get(pc)
         if end is None:
-            return raiser(MISSING_END, f"DO {number} has no END {number}")
+            return raiser(
+                MISSING_END,
+                detail(f"DO {number} has no END {number}", f"DO {number} 没有对应的 END {number}"),
+            )
         after = self.next_line(end)
         test = self.values.condition(s.condition) if isinstance(s, While) else None
 
@@ -348,7 +410,10 @@ class CompiledFile:
             loops = m.frame.loops
             if not loops or loops[-1] != pc:
                 if len(loops) >= MAX_LOOP_DEPTH:
-                    raise MacroAlarm(LOOP_NUMBER, f"loops nested more than {MAX_LOOP_DEPTH} deep")
+                    raise MacroAlarm(
+                        LOOP_NUMBER,
+                        detail(f"loops nested more than {MAX_LOOP_DEPTH} deep", f"循环嵌套超过 {MAX_LOOP_DEPTH} 层"),
+                    )
                 loops.append(pc)
             if test is None or test(m):
                 return nxt
@@ -360,15 +425,30 @@ class CompiledFile:
     def loop_end(self, s: End, pc: int) -> Runner:
         number = self.loop_number(s.loop)
         if number is None:
-            return raiser(LOOP_NUMBER, f"END {s.loop.text}: the loop number must be 1, 2 or 3")
+            return raiser(
+                LOOP_NUMBER,
+                detail(
+                    f"END {s.loop.text}: the loop number must be 1, 2 or 3",
+                    f"END {s.loop.text}：循环号必须为 1、2 或 3",
+                ),
+            )
         do = self.end_do.get(pc)
         if do is None:
-            return raiser(LOOP_NUMBER, f"END {number} has no DO {number} before it")
+            return raiser(
+                LOOP_NUMBER,
+                detail(f"END {number} has no DO {number} before it", f"END {number} 之前没有对应的 DO {number}"),
+            )
 
         def end(m: Any, pc: int) -> int:
             loops = m.frame.loops
             if not loops or loops[-1] != do:
-                raise MacroAlarm(LOOP_NUMBER, f"END {number} reached outside its loop (loops may not cross)")
+                raise MacroAlarm(
+                    LOOP_NUMBER,
+                    detail(
+                        f"END {number} reached outside its loop (loops may not cross)",
+                        f"在循环之外执行到 END {number}（循环不能交叉）",
+                    ),
+                )
             return do
 
         return end
@@ -430,4 +510,19 @@ def _end_of_file(m: Any, pc: int) -> int:
 
 
 # The NC-block compiler imports this module, so it is imported last.
-from . import nc_blocks  # noqa: E402
+def _h_code_result(block: Block) -> int | None:
+    """The variable a gsk980tdi ``G65 Hm P#n Q.. R..`` arithmetic block writes (``P#n``), or None
+    (another block, a jump H code, an indirect P)."""
+    words = block.words
+    if len(words) < 3 or words[0].letter != "G" or not isinstance(words[0].value, Number):
+        return None
+    if words[0].value.value != 65.0:
+        return None
+    by_letter = {w.letter: w.value for w in words[1:]}
+    h, p = by_letter.get("H"), by_letter.get("P")
+    if not isinstance(h, Number) or not isinstance(p, Var):
+        return None
+    return p.number if int(h.value) in hcodes.ARITHMETIC or int(h.value) == 26 else None
+
+
+from . import hcodes, nc_blocks  # noqa: E402

@@ -14,6 +14,7 @@ from ..dialects.alarms import ARGUMENT_RANGE, COUNT_TWICE, G_ARGUMENT, P_VALUE_R
 from ..dialects.dialect import ARGUMENTS_I, Dialect
 from .alarms import MacroAlarm
 from .numbers import to_int
+from .texts import detail
 
 NOT_ARGUMENTS = frozenset("GLNOP")
 MAX_REPEAT = 9999
@@ -37,11 +38,17 @@ def map_arguments(words: list[tuple[str, float | None]], dialect: Dialect) -> Ar
     out_of_order = False
     for letter, value in words:
         if letter in NOT_ARGUMENTS:
-            raise MacroAlarm(G_ARGUMENT, f"address {letter} cannot be an argument of a macro call")
+            raise MacroAlarm(
+                G_ARGUMENT,
+                detail(
+                    f"address {letter} cannot be an argument of a macro call",
+                    f"地址 {letter} 不能作为宏程序调用的自变量",
+                ),
+            )
         if letter in counts:
             k = counts[letter]
             if k >= 10:
-                raise MacroAlarm(G_ARGUMENT, f"more than 10 {letter} arguments")
+                raise MacroAlarm(G_ARGUMENT, detail(f"more than 10 {letter} arguments", f"自变量 {letter} 超过 10 个"))
             counts[letter] = k + 1
             number = {"I": 4, "J": 5, "K": 6}[letter] + 3 * k
             here = (k, "IJK".index(letter))
@@ -50,13 +57,24 @@ def map_arguments(words: list[tuple[str, float | None]], dialect: Dialect) -> Ar
         else:
             number = ARGUMENTS_I.get(letter, 0)
             if not number:
-                raise MacroAlarm(G_ARGUMENT, f"address {letter} cannot be an argument of a macro call")
+                raise MacroAlarm(
+                    G_ARGUMENT,
+                    detail(
+                        f"address {letter} cannot be an argument of a macro call",
+                        f"地址 {letter} 不能作为宏程序调用的自变量",
+                    ),
+                )
         if value is None and not dialect.vacant_address_is_zero:
             continue  # a vacant argument is not passed (fanuc)
         out.values[number] = 0.0 if value is None else value
         out.letters[number] = letter if letter not in counts else f"{letter}{counts[letter]}"
     if out_of_order and dialect.ijk_order_matters:
-        out.remarks.append("I, J and K arguments should come in the order I, J, K within each set")
+        out.remarks.append(
+            detail(
+                "I, J and K arguments should come in the order I, J, K within each set",
+                "每组自变量应按 I、J、K 的顺序指定",
+            ),
+        )
     return out
 
 
@@ -69,14 +87,20 @@ def repeat_count(value: float | None, dialect: Dialect, notes: list[str]) -> int
     if n < 1:
         raise MacroAlarm(
             P_VALUE_RANGE if dialect.count_in_p_and_l_alarm else ARGUMENT_RANGE,
-            f"L{n}: the repeat count must be 1 to 9999",
+            detail(f"L{n}: the repeat count must be 1 to 9999", f"L{n}：重复次数必须在 1～9999 之间"),
             "repeat-count",
         )
     if n > MAX_REPEAT:
         if dialect.clamp_repeat_count:
-            notes.append(f"L{n} is above 9999; the control runs it 9999 times")
+            notes.append(
+                detail(f"L{n} is above 9999; the control runs it 9999 times", f"L{n} 超过 9999，系统按 9999 次执行"),
+            )
             return MAX_REPEAT
-        raise MacroAlarm(ARGUMENT_RANGE, f"L{n}: the repeat count must be 1 to 9999", "repeat-count")
+        raise MacroAlarm(
+            ARGUMENT_RANGE,
+            detail(f"L{n}: the repeat count must be 1 to 9999", f"L{n}：重复次数必须在 1～9999 之间"),
+            "repeat-count",
+        )
     return n
 
 
@@ -86,13 +110,19 @@ def program_and_count(
     """``M98 P<count><program> L<count>``: (program number, repeat count). More than four
     digits in P: the last four are the program and the ones before them the count."""
     if p_value is None:
-        raise MacroAlarm(P_VALUE_RANGE, "M98 needs P: the program to call")
+        raise MacroAlarm(P_VALUE_RANGE, detail("M98 needs P: the program to call", "M98 需要用 P 指定被调用的程序"))
     n = to_int(p_value)
     if n < 0:
-        raise MacroAlarm(P_VALUE_RANGE, f"P{n}: a program number cannot be negative")
+        raise MacroAlarm(P_VALUE_RANGE, detail(f"P{n}: a program number cannot be negative", f"P{n}：程序号不能为负数"))
     digits = p_text.lstrip("+") if p_text and p_text.lstrip("+").isdigit() else str(n)
     if len(digits) > 8:
-        raise MacroAlarm(P_VALUE_RANGE, f"P{digits}: at most 8 digits (4 for the count, 4 for the program)")
+        raise MacroAlarm(
+            P_VALUE_RANGE,
+            detail(
+                f"P{digits}: at most 8 digits (4 for the count, 4 for the program)",
+                f"P{digits}：最多 8 位（前 4 位为调用次数，后 4 位为程序号）",
+            ),
+        )
     count_in_p = 0
     program = n
     if len(digits) > 4:
@@ -100,8 +130,14 @@ def program_and_count(
         count_in_p = int(digits[:-4])
     if count_in_p and l_value is not None:
         if dialect.count_in_p_and_l_alarm:
-            raise MacroAlarm(COUNT_TWICE, f"P{digits} L{to_int(l_value)}: the count is given in both P and L")
-        notes.append("the count is given in both P and L; L is used")
+            raise MacroAlarm(
+                COUNT_TWICE,
+                detail(
+                    f"P{digits} L{to_int(l_value)}: the count is given in both P and L",
+                    f"P{digits} L{to_int(l_value)}：P 和 L 同时指定了调用次数",
+                ),
+            )
+        notes.append(detail("the count is given in both P and L; L is used", "P 和 L 同时指定了调用次数，按 L 执行"))
     if l_value is not None:
         return program, repeat_count(l_value, dialect, notes)
     return program, max(1, count_in_p) if len(digits) > 4 else 1
@@ -110,10 +146,19 @@ def program_and_count(
 def macro_program_number(value: float | None, dialect: Dialect) -> int:
     """The program a G65/G66 P names: at most 4 digits on gsk980tdi (alarm 291), 8 on fanuc."""
     if value is None:
-        raise MacroAlarm(P_VALUE_RANGE, "the call needs P: the program to call")
+        raise MacroAlarm(
+            P_VALUE_RANGE,
+            detail("the call needs P: the program to call", "调用需要用 P 指定被调用的程序"),
+        )
     n = to_int(value)
     if n < 0 or n >= 10**dialect.program_digits:
-        raise MacroAlarm(P_VALUE_RANGE, f"P{n}: a program number has at most {dialect.program_digits} digits")
+        raise MacroAlarm(
+            P_VALUE_RANGE,
+            detail(
+                f"P{n}: a program number has at most {dialect.program_digits} digits",
+                f"P{n}：程序号最多 {dialect.program_digits} 位",
+            ),
+        )
     return n
 
 

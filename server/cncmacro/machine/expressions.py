@@ -26,6 +26,7 @@ from ..dialects.alarms import (
 from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, Number, Relation, Unary, Var
 from .alarms import MacroAlarm, raiser
 from .numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away, to_increment
+from .texts import detail
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -105,7 +106,13 @@ class ExpressionCompiler:
         """A closure computing ``node``; brackets nested too deep raise alarm 118."""
         depth = bracket_depth(node)
         if depth > MAX_BRACKETS:
-            return raiser(BRACKET_NESTING, f"brackets nested {depth} deep (at most {MAX_BRACKETS})")
+            return raiser(
+                BRACKET_NESTING,
+                detail(
+                    f"brackets nested {depth} deep (at most {MAX_BRACKETS})",
+                    f"括号嵌套 {depth} 层（最多 {MAX_BRACKETS} 层）",
+                ),
+            )
         return self._value(node)
 
     def constant(self, node: Expr) -> tuple[bool, Value]:
@@ -143,8 +150,14 @@ class ExpressionCompiler:
         if isinstance(node, Call):
             return self._call(node)
         if isinstance(node, Relation):
-            return raiser(FORMAT, "a relation (EQ, LT, ...) is only allowed in an IF or WHILE condition")
-        return raiser(FORMAT, "illegal expression")
+            return raiser(
+                FORMAT,
+                detail(
+                    "a relation (EQ, LT, ...) is only allowed in an IF or WHILE condition",
+                    "关系运算（EQ、LT 等）只能用在 IF 或 WHILE 的条件中",
+                ),
+            )
+        return raiser(FORMAT, detail("illegal expression", "非法的表达式"))
 
     def reader(self, n: int) -> Getter:
         """A closure reading ``#n`` (a literal number)."""
@@ -162,7 +175,10 @@ class ExpressionCompiler:
             return lambda m: m.read(m.C[k])
         if kind == "system":
             return lambda m: m.read_system(n)
-        return raiser(VARIABLE_NUMBER, f"#{n} does not exist on {self.dialect.title}")
+        return raiser(
+            VARIABLE_NUMBER,
+            detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
+        )
 
     @staticmethod
     def _watched_local(n: int, line: int) -> Getter:
@@ -206,7 +222,10 @@ class ExpressionCompiler:
                 d = b(m)
                 if not d:
                     raise MacroAlarm(
-                        DIVISION_BY_ZERO, "division by zero" + (" (the divisor is vacant)" if d is None else "")
+                        DIVISION_BY_ZERO,
+                        detail("division by zero (the divisor is vacant)", "除数为零（除数为空变量）")
+                        if d is None
+                        else detail("division by zero", "除数为零"),
                     )
                 return (a(m) or 0.0) / d
 
@@ -216,7 +235,7 @@ class ExpressionCompiler:
             def modulo(m: Any) -> Value:
                 d = b(m)
                 if not d:
-                    raise MacroAlarm(DIVISION_BY_ZERO, "MOD by zero")
+                    raise MacroAlarm(DIVISION_BY_ZERO, detail("MOD by zero", "MOD 的除数为零"))
                 return math.fmod(a(m) or 0.0, d)
 
             return modulo
@@ -229,7 +248,7 @@ class ExpressionCompiler:
                 return float(bitop(x, y))
 
             return bitwise
-        return raiser(FORMAT, f"unknown operator {op}")
+        return raiser(FORMAT, detail(f"unknown operator {op}", f"未知的运算符 {op}"))
 
     def _call(self, node: Call) -> Getter:
         name = node.name
@@ -241,16 +260,16 @@ class ExpressionCompiler:
                 a = y(m) or 0.0
                 b = x(m) or 0.0
                 if a == 0 and b == 0:
-                    raise MacroAlarm(ARGUMENT_RANGE, "ATAN[0]/[0] has no angle")
+                    raise MacroAlarm(ARGUMENT_RANGE, detail("ATAN[0]/[0] has no angle", "ATAN[0]/[0] 无法求出角度"))
                 r = math.degrees(math.atan2(a, b))
                 return r + 360.0 if r < 0 else r
 
             return atan2
         if len(args) != 1:
-            return raiser(FORMAT, f"{name} takes one argument")
+            return raiser(FORMAT, detail(f"{name} takes one argument", f"{name} 只能有一个自变量"))
         f = _FUNCTIONS.get(name)
         if f is None:
-            return raiser(FORMAT, f"unknown function {name}")
+            return raiser(FORMAT, detail(f"unknown function {name}", f"未知的函数 {name}"))
         arg = args[0]
         if name == "ROUND" and self.in_address:
             return lambda m: to_increment(arg(m) or 0.0)
@@ -265,7 +284,13 @@ class ExpressionCompiler:
         """A closure deciding an IF/WHILE condition (which must hold a relation)."""
         depth = bracket_depth(node)
         if depth > MAX_BRACKETS:
-            return raiser(BRACKET_NESTING, f"brackets nested {depth} deep (at most {MAX_BRACKETS})")
+            return raiser(
+                BRACKET_NESTING,
+                detail(
+                    f"brackets nested {depth} deep (at most {MAX_BRACKETS})",
+                    f"括号嵌套 {depth} 层（最多 {MAX_BRACKETS} 层）",
+                ),
+            )
         return self._condition(node)
 
     def _condition(self, node: Expr) -> Test:
@@ -281,11 +306,20 @@ class ExpressionCompiler:
             if node.op == "OR":
                 return lambda m: a(m) or b(m)
             return lambda m: a(m) != b(m)
-        return raiser(FORMAT, "a condition needs a relation such as [#1 GT 0]")
+        return raiser(
+            FORMAT,
+            detail("a condition needs a relation such as [#1 GT 0]", "条件中需要关系运算，例如 [#1 GT 0]"),
+        )
 
     def _relation(self, node: Relation) -> Test:
         if not node.spelling.isalpha() and not self.dialect.c_relations:
-            return raiser(FORMAT, f"'{node.spelling}' is not a relation on {self.dialect.title}; write {node.op}")
+            return raiser(
+                FORMAT,
+                detail(
+                    f"'{node.spelling}' is not a relation on {self.dialect.title}; write {node.op}",
+                    f"'{node.spelling}' 在 {self.dialect.title} 上不是关系运算符，请写作 {node.op}",
+                ),
+            )
         op = node.op
         if self.watch and op in ("EQ", "NE") and _is_vacant_test(node):
             self.watch = False  # ``#24 EQ #0`` tests for a missing argument: not a use of it
@@ -349,7 +383,7 @@ def _has_relation(node: Expr) -> bool:
 
 def _whole(x: float) -> int:
     if not -MAX_VALUE <= x <= MAX_VALUE:
-        raise MacroAlarm(OVERFLOW, "value out of range for a bitwise operation")
+        raise MacroAlarm(OVERFLOW, detail("value out of range for a bitwise operation", "位运算的数值超出范围"))
     return int(round_half_away(x))
 
 
@@ -362,25 +396,28 @@ _BITWISE: dict[str, Callable[[int, int], int]] = {
 
 def _sqrt(x: float) -> float:
     if x < 0:
-        raise MacroAlarm(ARGUMENT_RANGE, f"SQRT of a negative number ({x:g})")
+        raise MacroAlarm(ARGUMENT_RANGE, detail(f"SQRT of a negative number ({x:g})", f"SQRT 的自变量为负数（{x:g}）"))
     return math.sqrt(x)
 
 
 def _asin(x: float) -> float:
     if not -1.0 <= x <= 1.0:
-        raise MacroAlarm(ARGUMENT_RANGE, f"ASIN[{x:g}] is outside -1..1")
+        raise MacroAlarm(ARGUMENT_RANGE, detail(f"ASIN[{x:g}] is outside -1..1", f"ASIN[{x:g}] 超出 -1～1 的范围"))
     return math.degrees(math.asin(x))
 
 
 def _acos(x: float) -> float:
     if not -1.0 <= x <= 1.0:
-        raise MacroAlarm(ARGUMENT_RANGE, f"ACOS[{x:g}] is outside -1..1")
+        raise MacroAlarm(ARGUMENT_RANGE, detail(f"ACOS[{x:g}] is outside -1..1", f"ACOS[{x:g}] 超出 -1～1 的范围"))
     return math.degrees(math.acos(x))
 
 
 def _ln(x: float) -> float:
     if x <= 0:
-        raise MacroAlarm(ARGUMENT_RANGE, f"LN of {x:g} (it must be above 0)")
+        raise MacroAlarm(
+            ARGUMENT_RANGE,
+            detail(f"LN of {x:g} (it must be above 0)", f"LN 的自变量为 {x:g}（必须大于 0）"),
+        )
     return math.log(x)
 
 
@@ -388,13 +425,13 @@ def _exp(x: float) -> float:
     try:
         return math.exp(x)
     except OverflowError:
-        raise MacroAlarm(OVERFLOW, f"EXP[{x:g}] is too large") from None
+        raise MacroAlarm(OVERFLOW, detail(f"EXP[{x:g}] is too large", f"EXP[{x:g}] 的结果太大")) from None
 
 
 def _tan(x: float) -> float:
     r = math.fmod(x, 180.0)
     if abs(abs(r) - 90.0) < 1e-12:
-        raise MacroAlarm(ARGUMENT_RANGE, f"TAN[{x:g}] is infinite")
+        raise MacroAlarm(ARGUMENT_RANGE, detail(f"TAN[{x:g}] is infinite", f"TAN[{x:g}] 为无穷大"))
     return math.tan(math.radians(x))
 
 

@@ -16,6 +16,7 @@ from ..dialects.alarms import ARGUMENT_RANGE, DIVISION_BY_ZERO, FORMAT
 from ..syntax.nodes import IndirectVar, Number, Var, Word
 from .alarms import MacroAlarm, raiser
 from .numbers import bcd, bin_, round_half_away
+from .texts import detail
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile, Runner
@@ -23,25 +24,31 @@ if TYPE_CHECKING:
 
 def _div(j: float, k: float) -> float:
     if k == 0:
-        raise MacroAlarm(DIVISION_BY_ZERO, "G65 H05: division by zero (R is 0)")
+        raise MacroAlarm(DIVISION_BY_ZERO, detail("G65 H05: division by zero (R is 0)", "G65 H05：除数为零（R 为 0）"))
     return j / k
 
 
 def _rem(j: float, k: float) -> float:
     if k == 0:
-        raise MacroAlarm(DIVISION_BY_ZERO, "G65 H23: remainder of a division by zero (R is 0)")
+        raise MacroAlarm(
+            DIVISION_BY_ZERO,
+            detail("G65 H23: remainder of a division by zero (R is 0)", "G65 H23：求余的除数为零（R 为 0）"),
+        )
     return j - math.trunc(j / k) * k
 
 
 def _sqrt(j: float, k: float) -> float:
     if j < 0:
-        raise MacroAlarm(ARGUMENT_RANGE, f"G65 H21: square root of a negative number ({j:g})")
+        raise MacroAlarm(
+            ARGUMENT_RANGE,
+            detail(f"G65 H21: square root of a negative number ({j:g})", f"G65 H21：负数不能开平方（{j:g}）"),
+        )
     return math.sqrt(j)
 
 
 def _atan(j: float, k: float) -> float:
     if j == 0 and k == 0:
-        raise MacroAlarm(ARGUMENT_RANGE, "G65 H34: the angle of 0/0")
+        raise MacroAlarm(ARGUMENT_RANGE, detail("G65 H34: the angle of 0/0", "G65 H34：0/0 无法求出角度"))
     r = math.degrees(math.atan2(j, k))
     return r + 360.0 if r < 0 else r
 
@@ -87,16 +94,25 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int) -> Runner:
     by_letter = {w.letter: w for w in words}
     extra = [w.letter for w in words if w.letter not in "HPQR"]
     if extra:
-        return raiser(FORMAT, f"G65 H takes only P, Q and R (found {', '.join(extra)})")
+        return raiser(
+            FORMAT,
+            detail(
+                f"G65 H takes only P, Q and R (found {', '.join(extra)})",
+                f"G65 H 只能指定 P、Q 和 R（多余的地址：{', '.join(extra)}）",
+            ),
+        )
     h_word = by_letter["H"]
     if not isinstance(h_word.value, Number):
-        return raiser(FORMAT, "G65 H needs a literal operation number such as H01")
+        return raiser(
+            FORMAT,
+            detail("G65 H needs a literal operation number such as H01", "G65 H 需要直接写出运算号，例如 H01"),
+        )
     h = int(h_word.value.value)
     q = _operand(cf, by_letter.get("Q"))
     r = _operand(cf, by_letter.get("R"))
     p_word = by_letter.get("P")
     if p_word is None or p_word.value is None:
-        return raiser(FORMAT, f"G65 H{h:02d} needs P")
+        return raiser(FORMAT, detail(f"G65 H{h:02d} needs P", f"G65 H{h:02d} 需要 P"))
     if h in BRANCHES or h == 99:
         target = cf.values.value(p_word.value)
         if h == 99:
@@ -104,7 +120,10 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int) -> Runner:
 
             def alarm(m: Any, pc: int) -> int:
                 n = _int(target(m) or 0.0)
-                raise MacroAlarm(base + n, f"G65 H99 P{n}: user alarm {base + n}")
+                raise MacroAlarm(
+                    base + n,
+                    detail(f"G65 H99 P{n}: user alarm {base + n}", f"G65 H99 P{n}：用户报警 {base + n}"),
+                )
 
             return alarm
         test = BRANCHES[h]
@@ -118,7 +137,13 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int) -> Runner:
         return branch
     destination = p_word.value
     if not isinstance(destination, (Var, IndirectVar)):
-        return raiser(FORMAT, f"G65 H{h:02d}: P names the result variable, e.g. P#100")
+        return raiser(
+            FORMAT,
+            detail(
+                f"G65 H{h:02d}: P names the result variable, e.g. P#100",
+                f"G65 H{h:02d}：P 指定存放结果的变量，例如 P#100",
+            ),
+        )
     if isinstance(destination, Var):
         n = float(destination.number)
         where: Callable[[Any], float | None] = lambda m: n  # noqa: E731
@@ -130,14 +155,20 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int) -> Runner:
         def scale(m: Any, pc: int) -> int:
             k = r(m)
             if k == 0:
-                raise MacroAlarm(DIVISION_BY_ZERO, "G65 H26: division by zero (R is 0)")
+                raise MacroAlarm(
+                    DIVISION_BY_ZERO,
+                    detail("G65 H26: division by zero (R is 0)", "G65 H26：除数为零（R 为 0）"),
+                )
             m.write(where(m), (dest_value(m) or 0.0) * q(m) / k)
             return nxt
 
         return scale
     op = ARITHMETIC.get(h)
     if op is None:
-        return raiser(FORMAT, f"G65 H{h:02d} is not an operation of this control")
+        return raiser(
+            FORMAT,
+            detail(f"G65 H{h:02d} is not an operation of this control", f"G65 H{h:02d} 不是本系统的运算命令"),
+        )
 
     def arithmetic(m: Any, pc: int) -> int:
         m.write(where(m), op(q(m), r(m)))

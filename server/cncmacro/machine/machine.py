@@ -27,6 +27,7 @@ from .expressions import VariableKinds
 from .frames import Frame, ModalCall, Move, Note
 from .motion import Motion
 from .straight_runs import run_straight
+from .texts import detail
 from .tracking import run_tracked
 from .variables import StopRequest, VariableAccess
 
@@ -395,23 +396,41 @@ class Machine(VariableAccess, Motion):
         near = self.frames[-1].found.file if self.frames else None
         found = self.library.find_number(number, near)
         if found is None:
-            raise MacroAlarm(PROGRAM_NOT_FOUND, f"program O{number:04d} not found")
+            raise MacroAlarm(PROGRAM_NOT_FOUND, detail(f"program O{number:04d} not found", f"未找到程序 O{number:04d}"))
         return found
 
     def find_program_named(self, name: str) -> FoundProgram:
         if not self.dialect.bracket_names:
-            raise MacroAlarm(PROGRAM_NOT_FOUND, f"P[{name}]: {self.dialect.title} names programs only by number")
+            raise MacroAlarm(
+                PROGRAM_NOT_FOUND,
+                detail(
+                    f"P[{name}]: {self.dialect.title} names programs only by number",
+                    f"P[{name}]：{self.dialect.title} 只能用程序号指定程序",
+                ),
+            )
         near = self.frames[-1].found.file if self.frames else None
         found = self.library.find_name(name, near)
         if found is None:
-            raise MacroAlarm(PROGRAM_NOT_FOUND, f"program {name} not found")
+            raise MacroAlarm(PROGRAM_NOT_FOUND, detail(f"program {name} not found", f"未找到程序 {name}"))
         return found
 
     def _check_depth(self, macro: bool) -> None:
         if len(self.frames) > self.dialect.subprogram_levels:
-            raise MacroAlarm(SUBPROGRAM_NESTING, f"more than {self.dialect.subprogram_levels} nested program calls")
+            raise MacroAlarm(
+                SUBPROGRAM_NESTING,
+                detail(
+                    f"more than {self.dialect.subprogram_levels} nested program calls",
+                    f"程序调用嵌套超过 {self.dialect.subprogram_levels} 层",
+                ),
+            )
         if macro and self.frames[-1].macro_level >= self.dialect.macro_levels:
-            raise MacroAlarm(MACRO_NESTING, f"more than {self.dialect.macro_levels} nested macro calls (G65/G66)")
+            raise MacroAlarm(
+                MACRO_NESTING,
+                detail(
+                    f"more than {self.dialect.macro_levels} nested macro calls (G65/G66)",
+                    f"宏程序调用（G65/G66）嵌套超过 {self.dialect.macro_levels} 层",
+                ),
+            )
 
     def macro_call(
         self, found: FoundProgram, arguments: Arguments, repeats: int, pc: int, nxt: int, kind: str, modal: Any = None

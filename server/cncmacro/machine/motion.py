@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
 from .frames import Move
+from .texts import detail
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -424,11 +425,20 @@ class Motion:
         if l_value in (2.0, 20.0):
             if l_value == 2.0:
                 if not 0 <= p <= 6:
-                    raise MacroAlarm(ARGUMENT_RANGE, f"G10 L2 P{p}: P must be 0 (external) to 6 (G59)")
+                    raise MacroAlarm(
+                        ARGUMENT_RANGE,
+                        detail(
+                            f"G10 L2 P{p}: P must be 0 (external) to 6 (G59)",
+                            f"G10 L2 P{p}：P 必须为 0（外部偏置）～6（G59）",
+                        ),
+                    )
                 base = WORK_BASE + 20 * p
             else:
                 if not 1 <= p <= 48:
-                    raise MacroAlarm(ARGUMENT_RANGE, f"G10 L20 P{p}: P must be 1 to 48")
+                    raise MacroAlarm(
+                        ARGUMENT_RANGE,
+                        detail(f"G10 L20 P{p}: P must be 1 to 48", f"G10 L20 P{p}：P 必须在 1～48 之间"),
+                    )
                 base = G54_1_BASE + 20 * (p - 1)
             for i, v in axes.items():
                 n = base + i

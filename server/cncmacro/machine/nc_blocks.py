@@ -16,6 +16,7 @@ from ..syntax.nodes import Block, Bracket, Number, Var, Word
 from .alarms import MacroAlarm, raiser
 from .calls import macro_program_number, map_arguments, program_and_count, repeat_count
 from .hcodes import compile_h_code
+from .texts import detail
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile, Runner
@@ -93,11 +94,20 @@ def _run_plain_line(plan: tuple[Any, ...], m: Any, pc: int) -> int:
 def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int) -> Runner:
     name = "G65" if g == 65.0 else "G66"
     for w in words[:at]:
-        return raiser(NC_AND_MACRO, f"{w.letter} before {name}: only N may precede {name} in its block")
+        return raiser(
+            NC_AND_MACRO,
+            detail(
+                f"{w.letter} before {name}: only N may precede {name} in its block",
+                f"{name} 之前有 {w.letter}：程序段中 {name} 之前只允许出现 N",
+            ),
+        )
     after = words[at + 1 :]
     for w in after:
         if w.letter == "O":  # M after G65 is the argument #13; G is alarm 129 below
-            return raiser(NC_AND_MACRO, f"{name} may not share its block with an O word")
+            return raiser(
+                NC_AND_MACRO,
+                detail(f"{name} may not share its block with an O word", f"{name} 不能与 O 代码在同一程序段"),
+            )
     dialect = cf.machine.dialect
     if (
         g == 65.0
@@ -111,7 +121,10 @@ def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int
     args = [w for w in after if w.letter not in ("P", "L")]
     for w in args:
         if w.letter == "G":
-            return raiser(G_ARGUMENT, f"G after {name}: a G code cannot be an argument")
+            return raiser(
+                G_ARGUMENT,
+                detail(f"G after {name}: a G code cannot be an argument", f"{name} 之后有 G：G 代码不能作为自变量"),
+            )
     resolve = _program_resolver(cf, p_word, name)
     count = _getter(cf, l_word)
     arg_values = [(w.letter, _getter(cf, w)) for w in args]
@@ -154,7 +167,10 @@ def _program_resolver(cf: CompiledFile, p_word: Word | None, name: str) -> Any:
     """A closure finding the program that ``P`` names (alarm 076 when it is missing)."""
     dialect = cf.machine.dialect
     if p_word is None:
-        return raiser(PROGRAM_NOT_FOUND, f"{name} needs P: the program to call")
+        return raiser(
+            PROGRAM_NOT_FOUND,
+            detail(f"{name} needs P: the program to call", f"{name} 需要用 P 指定被调用的程序"),
+        )
     if p_word.name is not None:
         text = p_word.name
         return lambda m: m.find_program_named(text)
@@ -236,7 +252,7 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
         if 30.0 in mcontrol or 2.0 in mcontrol:
             return m.end_program(pc)
         if 0.0 in mcontrol:
-            return m.pause("M00 program stop", nxt)
+            return m.pause(detail("M00 program stop", "M00 程序停止"), nxt)
         return _after_nc(m, moved, skip_to, pc, nxt)
 
     return general
@@ -273,7 +289,13 @@ def _subprogram_target(
         found = m.find_program(number)
     elif "P" not in words:
         if q is None:
-            raise MacroAlarm(PROGRAM_NOT_FOUND, "M98 needs P (the program), or Q to call the current program")
+            raise MacroAlarm(
+                PROGRAM_NOT_FOUND,
+                detail(
+                    "M98 needs P (the program), or Q to call the current program",
+                    "M98 需要用 P 指定子程序，或用 Q 调用当前程序",
+                ),
+            )
         found = m.frame.found
         repeats = repeat_count(words.get("L"), dialect, notes)
     else:

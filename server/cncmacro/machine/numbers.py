@@ -15,6 +15,7 @@ from decimal import ROUND_HALF_UP, Decimal, InvalidOperation
 
 from ..dialects.alarms import ARGUMENT_RANGE, OVERFLOW
 from .alarms import MacroAlarm
+from .texts import detail
 
 # The largest magnitude a variable holds (FANUC: about 10**47); beyond it is alarm 111.
 MAX_VALUE = 1e47
@@ -32,7 +33,7 @@ def round_half_away(x: float) -> float:
 def to_int(x: float) -> int:
     """The integer an integer address (M, S, T, H, D, P, L, N) receives."""
     if not -MAX_VALUE <= x <= MAX_VALUE:
-        raise MacroAlarm(OVERFLOW, f"value {x} is too large for an address")
+        raise MacroAlarm(OVERFLOW, detail(f"value {x} is too large for an address", f"数值 {x} 超出地址的允许范围"))
     return int(round_half_away(x))
 
 
@@ -57,7 +58,7 @@ def to_increment(x: float, places: int = 3) -> float:
     try:
         d = Decimal(repr(x)).quantize(_QUANT[places], rounding=ROUND_HALF_UP)
     except InvalidOperation:
-        raise MacroAlarm(OVERFLOW, f"value {x} is out of range") from None
+        raise MacroAlarm(OVERFLOW, detail(f"value {x} is out of range", f"数值 {x} 超出范围")) from None
     return float(d)
 
 
@@ -69,7 +70,7 @@ def bcd(x: float) -> float:
     """BCD[x]: a binary number to binary-coded decimal (BCD[25] = 37, i.e. 0x25)."""
     n = to_int(x)
     if n < 0:
-        raise MacroAlarm(ARGUMENT_RANGE, f"BCD of a negative number ({n})")
+        raise MacroAlarm(ARGUMENT_RANGE, detail(f"BCD of a negative number ({n})", f"BCD 的自变量为负数（{n}）"))
     return float(int(str(n), 16))
 
 
@@ -77,10 +78,13 @@ def bin_(x: float) -> float:
     """BIN[x]: binary-coded decimal to binary (BIN[37] = 25); a digit above 9 is alarm 119."""
     n = to_int(x)
     if n < 0:
-        raise MacroAlarm(ARGUMENT_RANGE, f"BIN of a negative number ({n})")
+        raise MacroAlarm(ARGUMENT_RANGE, detail(f"BIN of a negative number ({n})", f"BIN 的自变量为负数（{n}）"))
     digits = f"{n:x}"
     if not digits.isdigit():
-        raise MacroAlarm(ARGUMENT_RANGE, f"BIN[{n}]: {n} is not binary-coded decimal")
+        raise MacroAlarm(
+            ARGUMENT_RANGE,
+            detail(f"BIN[{n}]: {n} is not binary-coded decimal", f"BIN[{n}]：{n} 不是 BCD 码"),
+        )
     return float(int(digits))
 
 

@@ -16,6 +16,7 @@ from ..dialects.alarms import OVERFLOW, VARIABLE_NUMBER, WRITE_PROTECTED
 from ..dialects.tables import SystemVariable
 from .alarms import MacroAlarm
 from .numbers import MAX_VALUE, round_half_away
+from .texts import detail
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -50,7 +51,10 @@ class VariableAccess:
     def _row(self, n: int) -> SystemVariable:
         row = self.dialect.system_variable(n)
         if row is None:
-            raise MacroAlarm(VARIABLE_NUMBER, f"#{n} does not exist on {self.dialect.title}")
+            raise MacroAlarm(
+                VARIABLE_NUMBER,
+                detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
+            )
         return row
 
     # ---------------------------------------------------------------- any variable
@@ -59,7 +63,7 @@ class VariableAccess:
         if index is None:
             return 0
         if not -MAX_VALUE <= index <= MAX_VALUE:
-            raise MacroAlarm(VARIABLE_NUMBER, "variable number out of range")
+            raise MacroAlarm(VARIABLE_NUMBER, detail("variable number out of range", "变量号超出范围"))
         return int(round_half_away(index))
 
     def read(self, index: Value) -> Value:
@@ -76,32 +80,44 @@ class VariableAccess:
             return self.read(self.C[n - 9000])
         if kind == "system":
             return self.read_system(n)
-        raise MacroAlarm(VARIABLE_NUMBER, f"#{n} does not exist on {self.dialect.title}")
+        raise MacroAlarm(
+            VARIABLE_NUMBER,
+            detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
+        )
 
     def write(self, index: Value, value: Value, message: str | None = None) -> None:
         """``#[index] = value``, with every check the control makes."""
         n = self.variable_number(index)
         if value is not None and not -MAX_VALUE <= value <= MAX_VALUE:
-            raise MacroAlarm(OVERFLOW, f"#{n} = {value}: the value is out of range")
+            raise MacroAlarm(
+                OVERFLOW,
+                detail(f"#{n} = {value}: the value is out of range", f"#{n} = {value}：数值超出范围"),
+            )
         kind = self.kinds.kind(n)
         if kind == "local":
             self.L[n] = value
         elif kind in ("common", "persistent"):
             self.C[n] = value
         elif kind == "vacant":
-            raise MacroAlarm(WRITE_PROTECTED, "#0 is always vacant and cannot be written")
+            raise MacroAlarm(
+                WRITE_PROTECTED,
+                detail("#0 is always vacant and cannot be written", "#0 总是空变量，不能写入"),
+            )
         elif kind == "indirect9":
             self.write(self.C[n - 9000], value, message)
         elif kind == "system":
             self.write_system(n, value, message)
         else:
-            raise MacroAlarm(VARIABLE_NUMBER, f"#{n} does not exist on {self.dialect.title}")
+            raise MacroAlarm(
+                VARIABLE_NUMBER,
+                detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
+            )
 
     # ---------------------------------------------------------------- system variables
     def read_system(self, n: int) -> Value:
         row = self._row(n)
         if row.access == "w":
-            raise MacroAlarm(VARIABLE_NUMBER, f"#{n} can only be written, not read")
+            raise MacroAlarm(VARIABLE_NUMBER, detail(f"#{n} can only be written, not read", f"#{n} 只能写不能读"))
         source = row.source
         k = n - row.first
         if source == "store":
@@ -127,11 +143,17 @@ class VariableAccess:
     def write_system(self, n: int, value: Value, message: str | None = None) -> None:
         row = self._row(n)
         if row.access == "r":
-            raise MacroAlarm(WRITE_PROTECTED, f"#{n} is read-only")
+            raise MacroAlarm(WRITE_PROTECTED, detail(f"#{n} is read-only", f"#{n} 是只读变量，不能写入"))
         source = row.source
         if source == "alarm":
             number = self.dialect.macro_alarm_base + int(round_half_away(value or 0.0))
-            raise MacroAlarm(number, message or f"macro alarm #{n}={round_half_away(value or 0.0):g}")
+            raise MacroAlarm(
+                number,
+                message or detail(
+                    f"macro alarm #{n}={round_half_away(value or 0.0):g}",
+                    f"宏程序报警 #{n}={round_half_away(value or 0.0):g}",
+                ),
+            )
         if source == "stop":
             raise StopRequest(message or f"#{n}={round_half_away(value or 0.0):g}")
         self.written_system.add(n)

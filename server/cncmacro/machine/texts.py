@@ -1,0 +1,43 @@
+"""The interpreter's own texts in two languages: English, with simplified Chinese beside it.
+
+An alarm's detail or a note that the interpreter writes is a ``Detail``: a ``str`` whose value
+is the English text (so everything that stores, compares or prints the message sees English,
+as before) and whose ``zh`` attribute holds the Chinese. ``detail(en, zh)`` makes one, written
+at the place that raises the alarm so that both texts are read and changed together; the front
+ends choose with ``in_language``, which gives back a text the program wrote itself (a ``#3000``
+message) unchanged. A ``Detail`` survives copying and pickling; string operations on it (an
+f-string, ``+``) give a plain English ``str``.
+"""
+
+from __future__ import annotations
+
+
+class Detail(str):
+    """English text (the ``str`` value) that also knows its Chinese (``zh``)."""
+
+    zh: str
+
+    def __new__(cls, en: str, zh: str) -> Detail:
+        text = super().__new__(cls, en)
+        text.zh = zh
+        return text
+
+    def __getnewargs__(self) -> tuple[str, str]:  # type: ignore[override]
+        return str(self), self.zh
+
+    def __repr__(self) -> str:
+        return f"detail({str(self)!r}, {self.zh!r})"
+
+
+def detail(en: str, zh: str) -> Detail:
+    """The same text in English and in Chinese (numbers, codes and ``#`` variables as in ``en``)."""
+    return Detail(en, zh)
+
+
+def in_language(text: str, chinese: bool) -> str:
+    """``text`` in Chinese when ``chinese`` and it has a translation, else as it is (a plain ``str``)."""
+    if chinese:
+        zh = getattr(text, "zh", None)
+        if zh is not None:
+            return zh
+    return str(text)
