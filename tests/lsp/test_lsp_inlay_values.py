@@ -45,3 +45,22 @@ async def test_gsk_values_in_chinese_show_vacant_as_kong(gsk_values_zh: Language
     uri = open_file(gsk_values_zh, GSK / "values.CNC", text)
     await diagnostics_for(gsk_values_zh, uri, 1)
     assert await value_hints(gsk_values_zh, uri, 5) == [(1, 4, "= 8"), (2, 10, "= 45"), (3, 5, "= <空>")]
+
+
+async def test_an_if_then_assignment_shows_its_value_only_when_it_ran(fanuc_values: LanguageClient) -> None:
+    text = "O0100\n#1=2\nIF[#1 GT 1]THEN #5=#1*10\nIF[#1 GT 9]THEN #6=1\nM30\n"
+    uri = open_file(fanuc_values, FANUC / "if_then.nc", text)
+    await diagnostics_for(fanuc_values, uri, 1)
+    hints = await value_hints(fanuc_values, uri, 5)
+    assert (2, 24, "= 20") in hints  # SEMANTICS.md §4: the THEN ran
+    assert not any(line == 3 for line, _, _ in hints)  # the condition was false: nothing assigned
+
+
+async def test_a_gsk_g65_h_code_shows_the_value_it_left(gsk_values_zh: LanguageClient) -> None:
+    text = "O0003\n#1=8\nG65 H02 P#101 Q#1 R5\nG65 H04 P#102 Q#101 R3 (乘)\nG65 H81 P9 Q1 R1\nN9 M30\n"
+    uri = open_file(gsk_values_zh, GSK / "hcodes.CNC", text)
+    await diagnostics_for(gsk_values_zh, uri, 1)
+    hints = await value_hints(gsk_values_zh, uri, 6)
+    assert (2, 20, "= 13") in hints  # SEMANTICS.md §7: H02 is addition
+    assert (3, 22, "= 39") in hints  # H04 is multiplication
+    assert not any(line == 4 for line, _, _ in hints)  # H81 jumps: P is a label, not a variable
