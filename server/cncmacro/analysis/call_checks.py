@@ -13,11 +13,11 @@ targets ``Jump`` facts; ``M99 Pn`` a ``ReturnJump``.
 
 from __future__ import annotations
 
+from ..bilingual import in_language
 from ..machine.alarms import MacroAlarm
 from ..machine.calls import macro_program_number, map_arguments, program_and_count, repeat_count
 from ..machine.hcodes import ARITHMETIC, BRANCHES
 from ..machine.numbers import round_half_away, to_increment
-from ..machine.texts import in_language
 from ..syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
 from .line_facts import CallSite, Finding, LineContext, LineFacts, ReturnJump
 from .locale import pick

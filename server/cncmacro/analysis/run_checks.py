@@ -36,6 +36,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..bilingual import in_language
 from ..dialects import Dialect
 from ..dialects.alarms import alarm_text
 from ..library.machine_file import MachineSettings
@@ -43,7 +44,6 @@ from ..library.programs import FoundProgram, ProgramLibrary
 from ..machine import CallSite, Machine, Snapshot
 from ..machine.calls import letters_for_local
 from ..machine.machine import ALARM, FINISHED, LIMIT, PAUSED, READY, STOPPED
-from ..machine.texts import in_language
 from .alarm_codes import MACRO_ALARM, alarm_code
 from .diagnostics import Diagnostic, Related
 from .locale import pick

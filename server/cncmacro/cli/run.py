@@ -17,13 +17,13 @@ from pathlib import Path
 from typing import Any, TextIO
 
 from ..analysis.locale import is_chinese
+from ..bilingual import in_language
 from ..library.machine_file import parse_preset
 from ..machine import Machine, RunResult
 from ..machine.frames import MODE_NAMES, Move
 from ..machine.machine import ALARM, LIMIT, PAUSED
 from ..machine.numbers import format_plain
 from ..machine.setup import prepare_run
-from ..machine.texts import in_language
 
 MAX_TEXT_MOVES = 1000
 

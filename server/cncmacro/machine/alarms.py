@@ -11,8 +11,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
+from ..bilingual import detail
 from ..dialects.alarms import alarm_text
-from .texts import detail
 
 
 class MacroAlarm(Exception):

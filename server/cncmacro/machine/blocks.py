@@ -15,6 +15,7 @@ from bisect import bisect_left, bisect_right
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
+from ..bilingual import detail
 from ..dialects.alarms import (
     LOOP_NUMBER,
     MISSING_END,
@@ -29,7 +30,6 @@ from ..syntax.nodes import Assign, Block, Do, End, Goto, If, IndirectVar, Number
 from .alarms import MacroAlarm, raiser
 from .expressions import ExpressionCompiler, Getter
 from .numbers import MAX_VALUE, format_value, round_half_away, to_increment
-from .texts import detail
 
 if TYPE_CHECKING:
     from .machine import Machine

@@ -10,11 +10,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, COUNT_TWICE, G_ARGUMENT, P_VALUE_RANGE
 from ..dialects.dialect import ARGUMENTS_I, Dialect
 from .alarms import MacroAlarm
 from .numbers import to_int
-from .texts import detail
 
 NOT_ARGUMENTS = frozenset("GLNOP")
 MAX_REPEAT = 9999

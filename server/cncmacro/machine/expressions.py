@@ -15,6 +15,7 @@ import math
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
+from ..bilingual import detail
 from ..dialects.alarms import (
     ARGUMENT_RANGE,
     BRACKET_NESTING,
@@ -26,7 +27,6 @@ from ..dialects.alarms import (
 from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, Number, Relation, Unary, Var
 from .alarms import MacroAlarm, raiser
 from .numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away, to_increment
-from .texts import detail
 
 if TYPE_CHECKING:
     from ..dialects import Dialect

@@ -12,11 +12,11 @@ import math
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
+from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, DIVISION_BY_ZERO, FORMAT
 from ..syntax.nodes import IndirectVar, Number, Var, Word
 from .alarms import MacroAlarm, raiser
 from .numbers import bcd, bin_, round_half_away
-from .texts import detail
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile, Runner

@@ -16,6 +16,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
+from ..bilingual import detail
 from ..dialects import Dialect, get_dialect
 from ..dialects.alarms import MACRO_NESTING, PROGRAM_NOT_FOUND, SUBPROGRAM_NESTING
 from ..library.machine_file import CallCode, MachineSettings
@@ -27,7 +28,6 @@ from .expressions import VariableKinds
 from .frames import Frame, ModalCall, Move, Note
 from .motion import Motion
 from .straight_runs import run_straight
-from .texts import detail
 from .tracking import run_tracked
 from .variables import StopRequest, VariableAccess
 

@@ -11,12 +11,12 @@ from __future__ import annotations
 from functools import partial
 from typing import TYPE_CHECKING, Any
 
+from ..bilingual import detail
 from ..dialects.alarms import G_ARGUMENT, NC_AND_MACRO, PROGRAM_NOT_FOUND
 from ..syntax.nodes import Block, Bracket, Number, Var, Word
 from .alarms import MacroAlarm, raiser
 from .calls import macro_program_number, map_arguments, program_and_count, repeat_count
 from .hcodes import compile_h_code
-from .texts import detail
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile, Runner

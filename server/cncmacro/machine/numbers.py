@@ -13,9 +13,9 @@ from __future__ import annotations
 import math
 from decimal import ROUND_HALF_UP, Decimal, InvalidOperation
 
+from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, OVERFLOW
 from .alarms import MacroAlarm
-from .texts import detail
 
 # The largest magnitude a variable holds (FANUC: about 10**47); beyond it is alarm 111.
 MAX_VALUE = 1e47

@@ -12,11 +12,11 @@ from __future__ import annotations
 import datetime as _dt
 from typing import TYPE_CHECKING
 
+from ..bilingual import detail
 from ..dialects.alarms import OVERFLOW, VARIABLE_NUMBER, WRITE_PROTECTED
 from ..dialects.tables import SystemVariable
 from .alarms import MacroAlarm
 from .numbers import MAX_VALUE, round_half_away
-from .texts import detail
 
 if TYPE_CHECKING:
     from ..dialects import Dialect

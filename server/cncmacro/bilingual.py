@@ -1,12 +1,13 @@
-"""The interpreter's own texts in two languages: English, with simplified Chinese beside it.
+"""Texts in two languages: English, with simplified Chinese beside it.
 
-An alarm's detail or a note that the interpreter writes is a ``Detail``: a ``str`` whose value
-is the English text (so everything that stores, compares or prints the message sees English,
-as before) and whose ``zh`` attribute holds the Chinese. ``detail(en, zh)`` makes one, written
-at the place that raises the alarm so that both texts are read and changed together; the front
-ends choose with ``in_language``, which gives back a text the program wrote itself (a ``#3000``
-message) unchanged. A ``Detail`` survives copying and pickling; string operations on it (an
-f-string, ``+``) give a plain English ``str``.
+A message that the parser or the interpreter writes (a syntax problem, an alarm's detail, a
+note) is a ``Detail``: a ``str`` whose value is the English text (so everything that stores,
+compares or prints the message sees English) and whose ``zh`` attribute holds the Chinese.
+``detail(en, zh)`` makes one, written at the place that reports the problem so that both texts
+are read and changed together; the front ends choose with ``in_language``, which gives back a
+text the program wrote itself (a ``#3000`` message) unchanged. A ``Detail`` survives copying
+and pickling; string operations on it (an f-string, ``+``) give a plain English ``str``. This
+module imports nothing of the package, so that every layer may use it.
 """
 
 from __future__ import annotations
