@@ -118,7 +118,16 @@ def test_reverse_continue_finds_the_last_earlier_stop():
     for _ in range(40):
         m.step()
         history.record(m)
-    assert history.back_to_stop(m, lambda mm: mm.frames[-1].pc == 3 and mm.L[1] == 4)
+    now = m.blocks
+    looked = []
+
+    def look(mm, first, arrival, change, entered):
+        looked.append(mm.blocks)
+        return arrival and mm.frames[-1].pc == 3 and mm.L[1] == 4
+
+    found = next(block for block, here in history.past(m, look) if here and block < now)
+    assert sorted(set(looked))[-1] == now and found < now  # the past is walked from the present back
+    assert history.go_to(m, found)
     assert m.frames[-1].pc == 3 and m.L[1] == 4 and m.C[104] is None
 
 

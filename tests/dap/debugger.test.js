@@ -78,12 +78,10 @@ describe('starting and breakpoints', () => {
   });
 
   test('a log point writes its message and does not stop', async () => {
-    const terminated = dc.waitForEvent('terminated');
-    await dc.begin(
-      { program: program('loop.nc') },
-      { breakpoints: { 'loop.nc': [{ line: 8, logMessage: 'sum is {#100}' }] }, until: 'process' },
+    const { event } = await dc.begin(
+      { program: program('loop.nc') }, { breakpoints: { 'loop.nc': [{ line: 8, logMessage: 'sum is {#100}' }] } },
     );
-    await terminated;
+    assert.deepEqual([event.body.reason, event.body.description], ['step', 'program end (M30)']); // the first stop
     assert.match(dc.output, /sum is 55\n/);
   });
 
@@ -275,8 +273,8 @@ describe('alarms, messages and the end of a session', () => {
     }
   });
 
-  test('a program that runs to its end terminates the session', async () => {
-    const { event } = await dc.begin({ program: program('main.nc') }, { until: 'terminated' });
+  test('with stopAtEnd false a program that runs to its end terminates the session', async () => {
+    const { event } = await dc.begin({ program: program('main.nc'), stopAtEnd: false }, { until: 'terminated' });
     assert.equal(event.event, 'terminated');
     assert.match(dc.output, /status: completed after 13 blocks/);
   });

@@ -3,10 +3,20 @@ function breakpoints on ``N100`` or ``O9100``, and data breakpoints on ``#`` var
 
 A line breakpoint may be set in any program file, also one the run has not loaded yet. It is
 verified at the line where the run will really stop: one on a blank or comment line, or on
-an O header that holds nothing else, moves to the next block. Conditions and log-message
-expressions are macro text, compiled by the interpreter (``machine.evaluate``) once per
-machine. ``check`` is asked before each block: it counts hits, writes log messages and says
-whether to stop and why.
+an O header that holds nothing else, moves to the next block; one on a ``/`` block while the
+machine's block delete switch is on is not verified (the run skips that block). Conditions
+and log-message expressions are macro text, compiled by the interpreter
+(``machine.evaluate``) once per machine. ``check`` is asked before each block: it counts
+hits, writes log messages and says whether to stop and why.
+
+A hit is a visit at which the condition holds: the run arriving at the breakpoint's block
+(a line or ``N`` breakpoint), entering the program (``O``), or a block changing the variable
+(a data breakpoint, met right after that block). Every visit is counted, also those a step
+arrives at, from the moment the breakpoint was set (``since``; at a launch, from the first
+block). For going backwards, ``look`` tells which breakpoints an earlier point of the run
+visits, ``stop_back`` whether the forward run stopped (or would have stopped) there, and
+``rewind`` sets the counts back: the hit number of a visit is the count the forward run had
+just after it, that is the count now less the visits after it.
 """
 
 from __future__ import annotations
@@ -17,6 +27,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
+from ..analysis.locale import pick
 from ..library.files import BinaryFileError, read_program
 from ..library.programs import load_text
 from ..machine import Machine, MacroAlarm
@@ -32,16 +43,27 @@ def real_path(path: str) -> str:
     return os.path.normcase(os.path.realpath(path))
 
 
-def stop_line(blocks: list[Block], line: int) -> int | None:
-    """The first line at or after ``line`` (0-based) where a run can stop."""
+def stop_line(blocks: list[Block], line: int, block_delete: bool = False) -> int | None:
+    """The first line at or after ``line`` (0-based) where a run can stop (with the block
+    delete switch on, ``/`` blocks are passed over like comments)."""
     for k in range(max(0, line), len(blocks)):
         b = blocks[k]
-        if b.is_empty or b.tape:
+        if b.is_empty or b.tape or (block_delete and b.block_delete is not None):
             continue
         if b.plain is None and b.program is not None and not (b.words or b.statements or b.label is not None):
             continue  # an O header alone: a run starts after it
         return k
     return None
+
+
+def place(blocks: list[Block], line: int, block_delete: bool, locale: str | None) -> tuple[int | None, str | None]:
+    """Where a breakpoint asked for on ``line`` (0-based) stops, or why it never can."""
+    if block_delete and 0 <= line < len(blocks) and blocks[line].block_delete is not None:
+        return None, pick(locale, "this block is skipped: block delete is on", "此程序段会被跳过：跳段开关已打开")
+    k = stop_line(blocks, line, block_delete)
+    if k is None:
+        return None, pick(locale, "no block to stop at on or after this line", "此行及其后没有可停止的程序段")
+    return k, None
 
 
 def hit_test(text: str | None) -> Callable[[int], bool] | None:
@@ -73,6 +95,16 @@ class Hit:
 
 
 @dataclass(slots=True)
+class Visit:
+    """The breakpoints one earlier point of the run visits (for going backwards): each with
+    None when its condition held (a hit), or the reason it could not be evaluated."""
+
+    block: int
+    met: list[tuple[Breakpoint, str | None]]
+    changes: dict[int, str] = field(default_factory=dict)  # data breakpoint id -> what changed
+
+
+@dataclass(slots=True)
 class Breakpoint:
     """What every kind shares: an id, a condition, a hit count, a log message."""
 
@@ -85,12 +117,20 @@ class Breakpoint:
     verified: bool = True
     compiled: CompiledText | None = None
     hit_ok: Callable[[int], bool] | None = None
+    since: int = -1  # hits count the visits after this block count
+
+    reason = "breakpoint"
 
     def prepare(self) -> None:
         try:
             self.hit_ok = hit_test(self.hit_condition)
         except ValueError as e:
             self.verified, self.message = False, str(e)
+
+    def same(self, other: Breakpoint) -> bool:
+        """The same breakpoint asked for again (its count goes on)."""
+        return (self.condition, self.hit_condition, self.log_message) == (
+            other.condition, other.hit_condition, other.log_message)  # fmt: skip
 
     def json(self, **more: Any) -> dict[str, Any]:
         out: dict[str, Any] = {"id": self.id, "verified": self.verified, **more}
@@ -103,6 +143,12 @@ class Breakpoint:
 class LineBreakpoint(Breakpoint):
     path: str = ""
     line: int | None = None  # 0-based, where it really stops
+    asked: int | None = None  # 0-based, where it was set
+    shown_path: str = ""  # the path as the client gave it
+    placement: str | None = None  # why it cannot stop where it was set
+
+    def same(self, other: Breakpoint) -> bool:
+        return isinstance(other, LineBreakpoint) and other.asked == self.asked and Breakpoint.same(self, other)
 
 
 @dataclass(slots=True)
@@ -110,12 +156,23 @@ class FunctionBreakpoint(Breakpoint):
     letter: str = "N"
     number: int = 0
 
+    reason = "function breakpoint"
+
+    def same(self, other: Breakpoint) -> bool:
+        return isinstance(other, FunctionBreakpoint) and (other.letter, other.number) == (self.letter, self.number) \
+            and Breakpoint.same(self, other)  # fmt: skip
+
 
 @dataclass(slots=True)
 class DataBreakpoint(Breakpoint):
     number: int = 0
     last: float | None = None
     known: bool = False
+
+    reason = "data breakpoint"
+
+    def same(self, other: Breakpoint) -> bool:
+        return isinstance(other, DataBreakpoint) and other.number == self.number and Breakpoint.same(self, other)
 
 
 @dataclass(slots=True)
@@ -130,6 +187,10 @@ class Breakpoints:
     next_id: int = 1
     machine: Machine | None = None
     log: Callable[[str], None] = field(default=lambda _text: None)
+    locale: str | None = None
+    block_delete: bool = False  # the switch the line breakpoints were placed for
+    files: dict[str, list[Block] | None] = field(default_factory=dict)
+    counted_to: int = -1  # the visits up to this block count are counted
 
     @property
     def empty(self) -> bool:
@@ -138,6 +199,14 @@ class Breakpoints:
     def _id(self) -> int:
         self.next_id += 1
         return self.next_id - 1
+
+    def _carry(self, bp: Breakpoint, old: list[Breakpoint]) -> None:
+        """A new breakpoint counts from now, one asked for again goes on counting."""
+        bp.since = self.counted_to
+        for was in old:
+            if bp.same(was):
+                bp.hits, bp.since = was.hits, was.since
+                return
 
     # ---------------------------------------------------------------- setting
     def set_lines(self, path: str, specs: list[dict[str, Any]]) -> list[LineBreakpoint]:
@@ -149,21 +218,24 @@ class Breakpoints:
             blocks = load_text(path, read_program(path).text).program.blocks
         except (OSError, BinaryFileError) as e:
             problem = f"cannot read {path}: {e}"
+        self.files[key] = blocks
+        old: list[Breakpoint] = list(self.lines.get(key, ()))
         made = []
         for spec in specs:
             bp = LineBreakpoint(self._id(), spec.get("condition"), spec.get("hitCondition"), spec.get("logMessage"),
-                                path=key)  # fmt: skip
+                                path=key, shown_path=path)  # fmt: skip
             line = spec.get("line")
-            if not isinstance(line, int):
+            if not isinstance(line, int) or isinstance(line, bool):
                 bp.verified, bp.message = False, "a breakpoint needs a line number"
             elif blocks is None:
                 bp.verified, bp.message = False, problem
             else:
-                bp.line = stop_line(blocks, line - 1)
-                if bp.line is None:
-                    bp.verified, bp.message = False, "no block to stop at on or after this line"
+                bp.asked = line - 1
+                bp.line, bp.placement = place(blocks, bp.asked, self.block_delete, self.locale)
+                bp.message, bp.verified = bp.placement, bp.line is not None
             bp.prepare()
             self._compile(bp)
+            self._carry(bp, old)
             made.append(bp)
         self.lines[key] = made
         self._index()
@@ -171,6 +243,7 @@ class Breakpoints:
 
     def set_functions(self, specs: list[dict[str, Any]]) -> list[FunctionBreakpoint]:
         made = []
+        old: list[Breakpoint] = list(self.functions)
         for spec in specs:
             name = str(spec.get("name", ""))
             bp = FunctionBreakpoint(self._id(), spec.get("condition"), spec.get("hitCondition"))
@@ -181,12 +254,14 @@ class Breakpoints:
                 bp.letter, bp.number = m.group(1).upper(), int(m.group(2))
             bp.prepare()
             self._compile(bp)
+            self._carry(bp, old)
             made.append(bp)
         self.functions = [b for b in made if b.verified]
         return made
 
     def set_data(self, specs: list[dict[str, Any]]) -> list[DataBreakpoint]:
         made = []
+        old: list[Breakpoint] = list(self.data)
         for spec in specs:
             data_id = str(spec.get("dataId", ""))
             bp = DataBreakpoint(self._id(), spec.get("condition"), spec.get("hitCondition"))
@@ -197,6 +272,7 @@ class Breakpoints:
                 bp.number = number
             bp.prepare()
             self._compile(bp)
+            self._carry(bp, old)
             made.append(bp)
         self.data = [b for b in made if b.verified]
         self.prime()
@@ -210,14 +286,35 @@ class Breakpoints:
                     self.at.setdefault((bp.path, bp.line), []).append(bp)
 
     # ---------------------------------------------------------------- a machine to stop
-    def bind(self, machine: Machine) -> None:
-        """Use these breakpoints with ``machine`` (a new launch or a restart)."""
+    def bind(self, machine: Machine) -> list[LineBreakpoint]:
+        """Use these breakpoints with ``machine`` (a new launch or a restart); the line
+        breakpoints whose place changed with the machine's block delete switch."""
         self.machine = machine
+        self.counted_to = -1
+        moved = self._replace(bool(machine.settings.block_delete))
         for bp in self._all():
-            bp.hits = 0
+            bp.hits, bp.since = 0, -1
             self._compile(bp)
         self._index()
         self.prime()
+        return moved
+
+    def _replace(self, block_delete: bool) -> list[LineBreakpoint]:
+        """Place the line breakpoints again for another block delete switch."""
+        if block_delete == self.block_delete:
+            return []
+        self.block_delete = block_delete
+        moved = []
+        for key, bps in self.lines.items():
+            blocks = self.files.get(key)
+            for bp in bps:
+                if blocks is None or bp.asked is None or bp.message != bp.placement:
+                    continue  # not verified for another reason
+                line, message = place(blocks, bp.asked, block_delete, self.locale)
+                if (line, message) != (bp.line, bp.message):
+                    bp.line, bp.message, bp.placement, bp.verified = line, message, message, line is not None
+                    moved.append(bp)
+        return moved
 
     def _all(self) -> list[Breakpoint]:
         return [*(b for bps in self.lines.values() for b in bps), *self.functions, *self.data]
@@ -253,23 +350,27 @@ class Breakpoints:
             return False, None
         return True, None
 
-    def check(self, m: Machine, entered: bool) -> Hit | None:
-        """Before the block at the machine's pc runs: stop here? ``entered`` is True right
-        after a call opened a new program level."""
-        frame = m.frames[-1]
-        pc = frame.pc
-        raw = frame.file
+    def _key(self, raw: str) -> str:
         key = self.paths.get(raw)
         if key is None:
             key = self.paths[raw] = real_path(raw)
-        for bp in self.at.get((key, pc), ()):
+        return key
+
+    def check(self, m: Machine, entered: bool) -> Hit | None:
+        """Before the block at the machine's pc runs: stop here? ``entered`` is True right
+        after a call opened a new program level. Every visit is counted, whatever the answer."""
+        self.counted_to = m.blocks
+        frame = m.frames[-1]
+        pc = frame.pc
+        stop: Hit | None = None
+        for bp in self.at.get((self._key(frame.file), pc), ()):
             ok, problem = self._passes(bp, m)
             if not ok:
                 continue
             if bp.log_message is not None and problem is None:
                 self.log(interpolate(m, bp.log_message))
                 continue
-            return Hit("breakpoint", [bp.id], problem)
+            stop = stop or Hit("breakpoint", [bp.id], problem)
         if self.functions:
             blocks = frame.found.file.program.blocks
             label = blocks[pc].label if pc < len(blocks) else None
@@ -279,7 +380,7 @@ class Breakpoints:
                 ):
                     ok, problem = self._passes(fb, m)
                     if ok:
-                        return Hit("function breakpoint", [fb.id], problem)
+                        stop = stop or Hit("function breakpoint", [fb.id], problem)
         for db in self.data:
             value, known = _read(m, db.number)
             if known and (not db.known or value != db.last):
@@ -287,27 +388,87 @@ class Breakpoints:
                 db.last, db.known = value, known
                 ok, problem = self._passes(db, m)
                 if ok:
-                    shown = "vacant" if before is None else f"{before:g}"
-                    now = "vacant" if value is None else f"{value:g}"
-                    return Hit("data breakpoint", [db.id], problem or f"#{db.number} changed: {shown} -> {now}")
-        return None
+                    stop = stop or Hit("data breakpoint", [db.id], problem or _change(db.number, before, value))
+        return stop
 
-    def stops_here(self, m: Machine) -> bool:
-        """For reverse continue: a line or N breakpoint whose condition holds at this block
-        (hit counts and log messages are for forward runs only)."""
+    # ---------------------------------------------------------------- going backwards
+    def look(self, m: Machine, first: bool, arrival: bool, change: bool, entered: bool) -> Visit | None:
+        """Which breakpoints this earlier point of the run visits, without counting. The
+        history replays a stretch of the past block by block: ``first`` at its start (data
+        breakpoints take their values from there), ``arrival`` where the run arrives at the
+        block (line, ``N``), ``change`` where the block before it belongs to the stretch
+        (data, ``O``: ``entered`` when that block opened a program level)."""
+        if first:
+            self.prime()
+        if m.finished:
+            return None
+        met: list[tuple[Breakpoint, str | None]] = []
+        changes: dict[int, str] = {}
         frame = m.frames[-1]
-        key = self.paths.get(frame.file) or real_path(frame.file)
-        for bp in self.at.get((key, frame.pc), ()):
+        pc = frame.pc
+        if arrival:
+            for bp in self.at.get((self._key(frame.file), pc), ()):
+                self._meet(bp, m, met)
+        if self.functions:
+            blocks = frame.found.file.program.blocks
+            label = blocks[pc].label if pc < len(blocks) else None
+            opened = entered and (change or (arrival and m.blocks == 0))
+            for fb in self.functions:
+                if (fb.letter == "N" and arrival and label == fb.number) or (
+                    fb.letter == "O" and opened and frame.found.unit.number == fb.number
+                ):
+                    self._meet(fb, m, met)
+        if change:
+            for db in self.data:
+                value, known = _read(m, db.number)
+                if known and (not db.known or value != db.last):
+                    changes[db.id] = _change(db.number, db.last, value)
+                    db.last, db.known = value, known
+                    self._meet(db, m, met)
+        return Visit(m.blocks, met, changes) if met else None
+
+    @staticmethod
+    def _meet(bp: Breakpoint, m: Machine, met: list[tuple[Breakpoint, str | None]]) -> None:
+        if bp.compiled is None:
+            met.append((bp, None))
+            return
+        try:
+            if holds(m, bp.compiled):
+                met.append((bp, None))
+        except EvaluationError as e:
+            met.append((bp, f"the condition '{bp.condition}' could not be evaluated: {e}"))
+
+    def stop_back(self, visit: Visit, after: dict[int, int]) -> Hit | None:
+        """Whether the forward run stopped (or would have stopped) at this earlier visit;
+        ``after`` counts each breakpoint's hits between it and now. A visit from before a
+        breakpoint with a hit count was set has no number, so it is no stop for it."""
+        for bp, problem in visit.met:
+            if problem is not None:
+                return Hit(bp.reason, [bp.id], problem)
             if bp.log_message is not None:
                 continue
-            try:
-                if bp.compiled is None or holds(m, bp.compiled):
-                    return True
-            except EvaluationError:
-                return True
-        blocks = frame.found.file.program.blocks
-        label = blocks[frame.pc].label if frame.pc < len(blocks) else None
-        return any(fb.letter == "N" and fb.number == label for fb in self.functions)
+            if bp.hit_ok is None or (visit.block > bp.since and bp.hit_ok(bp.hits - after.get(bp.id, 0))):
+                return Hit(bp.reason, [bp.id], visit.changes.get(bp.id))
+        return None
+
+    def count(self, visit: Visit, after: dict[int, int]) -> None:
+        """Add this visit's hits to ``after`` (walking backwards)."""
+        for bp, problem in visit.met:
+            if problem is None and visit.block > bp.since:
+                after[bp.id] = after.get(bp.id, 0) + 1
+
+    def rewind(self, block: int, after: dict[int, int]) -> None:
+        """The run went back to ``block``: take away the hits it had after it."""
+        for bp in self._all():
+            bp.hits = max(0, bp.hits - after.get(bp.id, 0))
+            bp.since = min(bp.since, block)
+        self.counted_to = block
+
+
+def _change(number: int, before: float | None, now: float | None) -> str:
+    shown = "vacant" if before is None else f"{before:g}"
+    after = "vacant" if now is None else f"{now:g}"
+    return f"#{number} changed: {shown} -> {after}"
 
 
 def data_number(text: str) -> int | None:

@@ -6,15 +6,19 @@ at most ``keep`` of them: with the defaults, the last 1,000,000 blocks at about 
 Going back to block count *b* restores the last checkpoint at or before *b* and runs forward
 to *b*; at most ``interval`` blocks are replayed. Checkpoints after *b* are dropped, because
 the run may now take another path (a person may change a variable before going on).
+Reverse continue walks the past latest first (``past``), replaying one stretch between two
+checkpoints at a time, until the breakpoints say the forward run stopped there.
 """
 
 from __future__ import annotations
 
 from collections import deque
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from typing import TypeVar
 
 from ..machine import Machine, Snapshot
 
+T = TypeVar("T")
 INTERVAL = 500
 KEEP = 2000
 
@@ -55,27 +59,32 @@ class History:
         _replay(m, target)
         return True
 
-    def back_to_stop(self, m: Machine, stops_here: Callable[[Machine], bool]) -> bool:
-        """Go back to the latest earlier block where ``stops_here`` holds; False (and at the
-        earliest point kept) when there is none."""
-        current = m.blocks
-        cps = [c for c in self.checkpoints if c.blocks < current]
+    def past(self, m: Machine, look: Callable[[Machine, bool, bool, bool, bool], T]) -> Iterator[tuple[int, T]]:
+        """The run's earlier points, latest first, each as its block count and what ``look``
+        says there: from now back to the earliest checkpoint kept. Each stretch between two
+        checkpoints is replayed block by block (the machine is left somewhere in the past: put
+        it where it should be with ``go_to``). ``look(machine, first, arrival, change,
+        entered)`` is asked at every point: ``first`` at the start of a stretch, ``arrival``
+        for each point but a stretch's last (which is the next stretch's first), and the
+        present, and ``change`` for each point but a stretch's first (the block that led there
+        was replayed; ``entered`` when it opened a program level)."""
+        now = m.blocks
+        cps = [c for c in self.checkpoints if c.blocks < now]
         for i in range(len(cps) - 1, -1, -1):
-            end = cps[i + 1].blocks if i + 1 < len(cps) else current
+            end = cps[i + 1].blocks if i + 1 < len(cps) else now
             m.restore(cps[i])
-            found = None
+            start = m.blocks
+            seen: list[tuple[int, T]] = []
+            entered = start == 0
             while True:
-                if m.blocks >= end:
+                b = m.blocks
+                seen.append((b, look(m, b == start, b < end or b == now, b > start, entered)))
+                if b >= end or m.finished:
                     break
-                if stops_here(m):
-                    found = m.blocks
+                depth = len(m.frames)
                 m.step()
-                if m.finished:
-                    break
-            if found is not None:
-                return self.go_to(m, found)
-        self.go_to(m, self.earliest)
-        return False
+                entered = len(m.frames) > depth
+            yield from reversed(seen)
 
 
 def _replay(m: Machine, target: int) -> None:

@@ -3,7 +3,10 @@
 The launch arguments are ``program`` (the file to run), ``dialect``, ``stopOnEntry``,
 ``machine`` (a machine file; by default the nearest ``.cncmacro.toml``), ``blockDelete``,
 ``set`` (presets, ``{"100": 5}`` or ``["100=5"]``), ``maxBlocks``, ``echoMotion`` (each
-executed motion block to the debug console) and ``noSave`` (leave ``#500–#999`` unsaved).
+executed motion block to the debug console), ``noSave`` (leave ``#500–#999`` unsaved),
+``stopAtEnd`` (stop once more where the program ends, ``M30``/``M02`` or its last block, so its
+final state can be looked at and stepped back from; default true) and ``noDebug`` ("Run
+Without Debugging": no stop at all, neither on entry, at breakpoints, alarms nor the end).
 The machine is set up as ``cncmacro run`` sets it up: the dialect comment in the file wins,
 then the machine file, then the configuration, then fanuc; presets come after the persistent
 variables. Every mistake is a ``LaunchError`` with a message for the person.
@@ -38,6 +41,8 @@ class LaunchConfig:
     max_blocks: int | None = None
     echo_motion: bool = False
     no_save: bool = False
+    stop_at_end: bool = True
+    no_debug: bool = False
 
     @classmethod
     def from_arguments(cls, args: dict[str, Any]) -> LaunchConfig:
@@ -58,10 +63,15 @@ class LaunchConfig:
         block_delete = args.get("blockDelete")
         if block_delete is not None and not isinstance(block_delete, bool):
             raise LaunchError("'blockDelete' must be true or false")
+        stop_at_end = args.get("stopAtEnd", True)
+        if not isinstance(stop_at_end, bool):
+            raise LaunchError("'stopAtEnd' must be true or false")
+        no_debug = bool(args.get("noDebug", False))
         return cls(
             Path(program).resolve(), dialect, bool(args.get("stopOnEntry", False)),
             Path(machine).resolve() if machine else None, block_delete, _presets(args.get("set")), max_blocks,
-            bool(args.get("echoMotion", False)), bool(args.get("noSave", False)),
+            bool(args.get("echoMotion", False)), bool(args.get("noSave", False)), stop_at_end and not no_debug,
+            no_debug,
         )  # fmt: skip
 
 

@@ -5,7 +5,8 @@ Each frame has six scopes: its locals ``#1–#33`` (``#24 (X)`` where a caller p
 argument letter), the volatile commons, the persistent ``#500–#999``, and the system
 variables of the dialect's tables grouped as position, modal state and offsets. A variables
 reference encodes the frame and the scope, so it stays valid for as long as the machine
-stays stopped. Vacant shows as ``<vacant>`` (``<空>`` in a Chinese locale).
+stays stopped. Vacant shows as ``<vacant>`` (``<空>`` in a Chinese locale), and the
+interpreter's alarm details and notes are shown in Chinese there too (``detail_text``).
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from ..analysis.locale import is_chinese, pick
+from ..bilingual import in_language
 from ..dialects.tables import SystemVariable
 from ..machine import Machine, MacroAlarm
 from ..machine.frames import Frame
@@ -29,6 +31,11 @@ WORK_OFFSETS = (2500, 5325)  # the external and G54–G59 offsets (not the 48 ad
 
 def vacant_text(locale: str | None) -> str:
     return pick(locale, "<vacant>", "<空>")
+
+
+def detail_text(text: str, locale: str | None) -> str:
+    """An alarm's detail or a note in the client's language (the program's own texts as written)."""
+    return in_language(text, is_chinese(locale))
 
 
 def show(value: float | None, locale: str | None) -> str:

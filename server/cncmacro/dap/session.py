@@ -18,12 +18,13 @@ from typing import Any, BinaryIO
 from ..library.files import is_program_file
 from ..machine import Machine
 from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
+from ..machine.machine import COMPLETED
 from . import presentation as show
-from .breakpoints import Breakpoints
+from .breakpoints import Breakpoints, LineBreakpoint
 from .history import History
 from .launch import LaunchConfig, Launched, LaunchError, launch
 from .protocol import Event, MessageWriter, ProtocolError, Request, Response, read_message
-from .stepping import CONTINUE, STEP_IN, STEP_OUT, STEP_OVER, Filters, Stepper, Stop
+from .stepping import CONTINUE, STEP_IN, STEP_OUT, STEP_OVER, Filters, Stepper, Stop, last_line_run
 
 THREAD_ID = 1
 EXCEPTION_FILTERS = [
@@ -102,6 +103,7 @@ class Session:
     def on_initialize(self, args: dict[str, Any]) -> dict[str, Any]:
         locale = args.get("locale")
         self.locale = locale if isinstance(locale, str) else None
+        self.breakpoints.locale = self.locale
         self.later(lambda: self.event("initialized"))
         return {
             "supportsConfigurationDoneRequest": True,
@@ -132,10 +134,20 @@ class Session:
     def _use(self, launched: Launched) -> None:
         self.launched = launched
         m = launched.machine
-        self.breakpoints.bind(m)
+        moved = self.breakpoints.bind(m)
+        for bp in moved:  # the block delete switch of this launch decides whether a / block can stop
+            self.later(lambda bp=bp: self.event("breakpoint", {"reason": "changed", "breakpoint": _line_json(bp)}))
         self.history.reset(m)
-        self.stepper = Stepper(m, self.breakpoints, self.history, self.output, launched.config.echo_motion,
-                               self.filters)  # fmt: skip
+        config = launched.config
+        if config.no_debug:  # Run Without Debugging: nothing stops the run
+            self.stepper = Stepper(m, Breakpoints(), self.history, self.output, config.echo_motion,
+                                   Filters(alarms=False, messages=False))  # fmt: skip
+            self.stepper.never_stop = True
+        else:
+            self.stepper = Stepper(m, self.breakpoints, self.history, self.output, config.echo_motion,
+                                   self.filters)  # fmt: skip
+            self.stepper.stop_at_end = config.stop_at_end
+        self.stepper.locale = self.locale
         self.started = False
         self.ended = False
         self.last_stop = None
@@ -150,7 +162,7 @@ class Session:
             return
         self.started = True
         self.event("process", {"name": Path(self.launched.config.program).name, "startMethod": "launch"})
-        if self.launched.config.stop_on_entry:
+        if self.launched.config.stop_on_entry and not self.launched.config.no_debug:
             self._stopped(Stop("entry"))
         else:
             self._go(lambda s: s.run(CONTINUE))
@@ -166,10 +178,7 @@ class Session:
             specs = [{"line": n} for n in args.get("lines") or []]
         if not isinstance(specs, list) or not all(isinstance(s, dict) for s in specs):
             raise RequestFailed("'breakpoints' must be a list of objects")
-        made = self.breakpoints.set_lines(path, specs)
-        src = {"name": Path(path).name, "path": path}
-        return {"breakpoints": [bp.json(line=bp.line + 1, source=src) if bp.line is not None else bp.json()
-                                for bp in made]}  # fmt: skip
+        return {"breakpoints": [_line_json(bp) for bp in self.breakpoints.set_lines(path, specs)]}
 
     def on_setFunctionBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
         specs = args.get("breakpoints") or []
@@ -270,16 +279,10 @@ class Session:
         self._resume(self._reverse)
 
     def _step_back(self, stepper: Stepper) -> Stop:
-        m = stepper.machine
-        reached = self.history.go_to(m, m.blocks - 1)
-        stepper.resync()
-        return Stop("step") if reached else Stop("entry", "the start of the kept history")
+        return stepper.step_back()
 
     def _reverse(self, stepper: Stepper) -> Stop:
-        m = stepper.machine
-        found = self.history.back_to_stop(m, self.breakpoints.stops_here)
-        stepper.resync()
-        return Stop("breakpoint") if found else Stop("entry", "the start of the kept history")
+        return stepper.reverse()
 
     def on_pause(self, args: dict[str, Any]) -> None:
         if self.stepper is not None and self.running:
@@ -331,7 +334,10 @@ class Session:
         return {"threads": [{"id": THREAD_ID, "name": name}]}
 
     def on_stackTrace(self, args: dict[str, Any]) -> dict[str, Any]:
-        frames = show.stack_frames(self.machine())
+        m = self.machine()
+        frames = show.stack_frames(m)
+        if m.status == COMPLETED and frames:  # stopped at the end: show the block that ended the run
+            frames[0]["line"] = last_line_run(m) + 1
         start = _whole(args, "startFrame", 0)
         levels = _whole(args, "levels", 0) or len(frames)
         return {"stackFrames": frames[start : start + levels], "totalFrames": len(frames)}
@@ -403,10 +409,11 @@ class Session:
             text = stop.description if stop and stop.description else "no alarm"
             return {"exceptionId": "stop", "description": text, "breakMode": "always"}
         a = m.alarm
+        message = show.detail_text(a.message, self.locale)
         chain = "\n".join(f"{c.program} ({c.how}) at {Path(c.file).name}:{c.line + 1}" for c in reversed(a.chain))
         return {
-            "exceptionId": f"alarm {a.number}", "description": f"ALARM {a.number}: {a.message}", "breakMode": "always",
-            "details": {"message": a.message, "typeName": f"alarm {a.number}", "stackTrace": chain},
+            "exceptionId": f"alarm {a.number}", "description": f"ALARM {a.number}: {message}", "breakMode": "always",
+            "details": {"message": message, "typeName": f"alarm {a.number}", "stackTrace": chain},
         }  # fmt: skip
 
     def on_source(self, args: dict[str, Any]) -> dict[str, Any]:
@@ -420,6 +427,13 @@ class Session:
             return {"content": Path(path).read_text(encoding="utf-8", errors="replace")}
         except OSError as e:
             raise RequestFailed(f"cannot read {path}: {e}") from None
+
+
+def _line_json(bp: LineBreakpoint) -> dict[str, Any]:
+    """A line breakpoint as DAP shows it: where it really stops (1-based), or why not."""
+    if bp.line is None:
+        return bp.json()
+    return bp.json(line=bp.line + 1, source={"name": Path(bp.shown_path).name, "path": bp.shown_path})
 
 
 def _whole(args: dict[str, Any], name: str, default: int) -> int:

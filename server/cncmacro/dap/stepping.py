@@ -3,10 +3,14 @@
 One step is one block. Step in runs one block (into a call). Step over runs blocks until the
 program level is back where it started (a G65, M98 or G66 call runs to completion). Step out
 runs until the level is above where it started (past the M99). Any of them stops at a
-breakpoint, an alarm, an ``M00``/``#3006`` pause, the block budget, or a pause request from
-another thread. A continue with no breakpoints and no motion echo runs the interpreter at
-full speed in chunks and is paused by ``Machine.request_pause``; otherwise it runs block by
-block. Output (DPRNT, messages, the echoed motion) goes to ``output`` as it happens.
+breakpoint, an alarm, an ``M00``/``#3006`` pause, the block budget, the end of the program
+(``stop_at_end``: the final state stays to be looked at and stepped back from; the next run
+from there ends the session), or a pause request from another thread. Every block a run
+arrives at is shown to the breakpoints, so their hit counts are the run's. Step back and
+reverse continue walk the history backwards and set the hit counts back with it. A continue
+with no breakpoints and no motion echo runs the interpreter at full speed in chunks and is
+paused by ``Machine.request_pause``; otherwise it runs block by block. Output (DPRNT,
+messages, the echoed motion) goes to ``output`` as it happens.
 """
 
 from __future__ import annotations
@@ -16,11 +20,14 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..analysis.locale import pick
 from ..machine import Machine
 from ..machine.frames import Move
 from ..machine.machine import ALARM, COMPLETED, LIMIT, PAUSED, STOPPED
-from .breakpoints import Breakpoints
+from ..syntax.nodes import Number
+from .breakpoints import Breakpoints, Hit
 from .history import History
+from .presentation import detail_text
 
 CONTINUE, STEP_IN, STEP_OVER, STEP_OUT = "continue", "in", "over", "out"
 
@@ -60,10 +67,13 @@ class Stepper:
         self.output = output
         self.echo_motion = echo_motion
         self.filters = filters or Filters()
+        self.locale: str | None = None  # the client's (set by the session): alarm details and notes in it
         self.pause_requested = False
         self.notes_sent = len(machine.notes)
         self.moves_sent = len(machine.moves)
         self.fresh = True  # nothing has run yet: a breakpoint on the first block counts
+        self.stop_at_end = False  # stop where the program ends (set by the session)
+        self.never_stop = False  # "Run Without Debugging": the block budget ends the run too
 
     def arm(self) -> None:
         """Before a run starts (on the requesting thread): forget pause requests of earlier runs,
@@ -89,16 +99,20 @@ class Stepper:
         self.breakpoints.prime()
         if self.fresh:
             self.fresh = False
-            hit = self.breakpoints.check(m, True) if mode == CONTINUE and not self.breakpoints.empty else None
-            if hit is not None:
+            hit = self.breakpoints.check(m, True) if not self.breakpoints.empty else None
+            if hit is not None and mode == CONTINUE:
                 return Stop(hit.reason, hit.description, None, hit.ids)
         was_enabled = gc.isenabled()
         gc.disable()
         try:
             if mode == CONTINUE and self.breakpoints.empty and not self.echo_motion:
-                return self._run_fast()
+                stop = self._run_fast()
+                self.breakpoints.counted_to = m.blocks  # no breakpoint to count for, so far
+                return stop
             return self._run_blocks(mode)
         finally:
+            if m.finished:  # no visit is left to count
+                self.breakpoints.counted_to = m.blocks
             if was_enabled:
                 gc.enable()
 
@@ -134,13 +148,15 @@ class Stepper:
             self.history.record(m)
             if len(m.notes) != self.notes_sent or len(m.moves) != self.moves_sent:
                 self._flush()
+            if m.finished:
+                return self._ended()
+            now = len(m.frames)
+            hit = self.breakpoints.check(m, now > before)  # counts the visit, also when a step lands here
             stop = self._status_stop()
             if stop is not None:
                 return stop
-            now = len(m.frames)
             if mode == STEP_IN:
                 return Stop("step")
-            hit = self.breakpoints.check(m, now > before)
             if hit is not None:
                 return Stop(hit.reason, hit.description, None, hit.ids)
             if (mode == STEP_OVER and now <= depth) or (mode == STEP_OUT and now < depth):
@@ -150,7 +166,8 @@ class Stepper:
         m = self.machine
         if m.status == PAUSED and m.message is not None:
             if self.filters.messages:
-                return Stop("pause", m.message, m.message)
+                text = detail_text(m.message, self.locale)
+                return Stop("pause", text, text)
             return None
         if m.status in (COMPLETED, ALARM, LIMIT, STOPPED):
             return self._ended()
@@ -160,14 +177,64 @@ class Stepper:
         m = self.machine
         if m.status == ALARM and m.alarm is not None:
             a = m.alarm
-            text = f"ALARM {a.number}: {a.message}"
+            text = f"ALARM {a.number}: {detail_text(a.message, self.locale)}"
             if self.filters.alarms:
                 return Stop("exception", text, text)
             self.output(text + "\n", "stderr")
         elif m.status == LIMIT:
             text = f"stopped after {m.blocks} blocks: the block budget ran out (an endless loop?)"
-            return Stop("exception", text, text)
+            if not self.never_stop:
+                return Stop("exception", text, text)
+            self.output(text + "\n", "stderr")
+        elif m.status == COMPLETED and self.stop_at_end:
+            return Stop("step", end_text(m, self.locale))
         return Stop("exited", finished=True)
+
+    # ---------------------------------------------------------------- going back
+    def step_back(self) -> Stop:
+        """Back one block (to the start of the kept history at most)."""
+        m = self.machine
+        if self._back(m.blocks - 1) is None:
+            return Stop("step")
+        return Stop("entry", pick(self.locale, "the start of the kept history", "保留的历史的起点"))
+
+    def reverse(self) -> Stop:
+        """Back to the latest earlier point where a forward run stopped or would have stopped
+        at a breakpoint (``Breakpoints.stop_back``), or to the start of the kept history."""
+        hit = self._back(None)
+        if isinstance(hit, Hit):
+            return Stop(hit.reason, hit.description, None, hit.ids)
+        return Stop("entry", pick(self.locale, "the start of the kept history", "保留的历史的起点"))
+
+    def _back(self, target: int | None) -> Hit | bool | None:
+        """Walk the past to block count ``target`` (None: to a breakpoint's stop). Returns the
+        stop's Hit, None when ``target`` was reached, True when the history ended first."""
+        m, bps = self.machine, self.breakpoints
+        now = m.blocks
+        floor = self.history.earliest
+        goal = floor if target is None else max(target, floor)
+        counted_now = bps.counted_to >= now
+        after: dict[int, int] = {}
+        found: Hit | None = None
+        at = min(goal, now)
+        for block, visit in self.history.past(m, bps.look):
+            if visit is not None and target is None and block < now:
+                found = bps.stop_back(visit, after)
+                if found is not None:
+                    at = block
+                    break
+            if block <= goal:
+                break
+            if visit is not None and (block < now or counted_now):
+                bps.count(visit, after)
+        self.history.go_to(m, at)
+        bps.rewind(at, after)
+        if at != now:
+            self.fresh = False
+        self.resync()
+        if found is not None:
+            return found
+        return None if target is not None and at == target else True
 
     def _flush(self) -> None:
         m = self.machine
@@ -180,10 +247,44 @@ class Stepper:
             if note.kind == "output":
                 self.output(note.message + "\n", "stdout")
             elif note.kind == "message":
-                self.output(f"stop at {where}: {note.message}\n", "console")
+                self.output(f"stop at {where}: {detail_text(note.message, self.locale)}\n", "console")
             else:
-                self.output(f"note at {where}: {note.message}\n", "console")
+                self.output(f"note at {where}: {detail_text(note.message, self.locale)}\n", "console")
         self.notes_sent = len(m.notes)
+
+
+def _end_code(m: Machine) -> str | None:
+    """``M30``, ``M02`` or ``M99`` when the block the main level stands on ended the run."""
+    frame = m.frames[-1]
+    blocks = frame.found.file.program.blocks
+    if frame.pc < len(blocks):
+        for w in blocks[frame.pc].words or ():
+            if w.letter == "M" and isinstance(w.value, Number) and w.value.value in (2.0, 30.0, 99.0):
+                return f"M{int(w.value.value):02d}"
+    return None
+
+
+def end_text(m: Machine, locale: str | None) -> str:
+    """Why the run is over: ``program end (M30)`` (``M02``, ``M99`` in a main program) or
+    ``program end`` after its last block."""
+    code = _end_code(m)
+    if code is None:
+        return pick(locale, "program end", "程序结束")
+    return pick(locale, f"program end ({code})", f"程序结束 ({code})")
+
+
+def last_line_run(m: Machine) -> int:
+    """The 0-based line of the block that ended a completed run: the M30/M02 itself, or the
+    last block before the end of the file (or the next program's O header) it ran off."""
+    frame = m.frames[-1]
+    if _end_code(m) is not None:
+        return frame.pc
+    blocks = frame.found.file.program.blocks
+    skip_deleted = bool(m.settings.block_delete)
+    k = min(frame.pc, len(blocks)) - 1
+    while k > 0 and (blocks[k].is_empty or blocks[k].tape or (skip_deleted and blocks[k].block_delete is not None)):
+        k -= 1
+    return max(k, 0)
 
 
 def move_line(mv: Move, axes: tuple[str, ...]) -> str:
