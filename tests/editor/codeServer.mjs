@@ -61,7 +61,9 @@ function barePython(dir) {
 }
 
 export class CodeServer {
-  constructor() {
+  /** `locale`: the display language code-server gives the workbench (`--locale`), e.g. `zh-cn`. */
+  constructor({ locale } = {}) {
+    this.locale = locale;
     for (const [what, file] of [
       ['the .vsix (npm run package)', VSIX],
       ['code-server (npm ci)', CODE_SERVER],
@@ -143,11 +145,19 @@ export class CodeServer {
       throw new Error(`installing the .vsix failed: ${installed.stdout}\n${installed.stderr}`);
     }
     this.installStandIn(common, d('python-extension.vsix'));
+    if (this.locale) this.registerDisplayLanguage(this.locale);
 
     const log = fs.openSync(path.join(OUTPUT, 'code-server.log'), 'w');
     this.child = spawn(
       CODE_SERVER,
-      [...common, '--disable-telemetry', '--disable-update-check', '--disable-workspace-trust', this.workspace],
+      [
+        ...common,
+        '--disable-telemetry',
+        '--disable-update-check',
+        '--disable-workspace-trust',
+        ...(this.locale ? ['--locale', this.locale] : []),
+        this.workspace,
+      ],
       { env: this.env, detached: true, stdio: ['ignore', log, log] },
     );
     fs.closeSync(log);
@@ -191,6 +201,27 @@ export class CodeServer {
       timeout: 120000,
     });
     if (installed.status !== 0) throw new Error(`installing the stand-in failed: ${installed.stdout}\n${installed.stderr}`);
+  }
+
+  /**
+   * code-server honours `--locale` only for a display language that a language pack registered
+   * in the user data's `languagepacks.json`; no language pack can be downloaded here. This entry
+   * points to an empty translation file: the workbench's own texts stay English (their fallback),
+   * while VS Code runs in `locale`, so extensions get their strings for it (`package.nls.zh-cn.json`,
+   * `l10n/bundle.l10n.zh-cn.json`) and `vscode.env.language` — what a user with the language pack
+   * sees of CNC Macro.
+   */
+  registerDisplayLanguage(locale) {
+    const translation = path.join(this.dir, 'display-language', 'main.i18n.json');
+    fs.mkdirSync(path.dirname(translation), { recursive: true });
+    fs.writeFileSync(translation, JSON.stringify({ version: '1.0.0', contents: {} }));
+    const pack = {
+      hash: 'cncmacro-tests',
+      extensions: [{ extensionIdentifier: { id: 'cncmacro-tests.display-language' }, version: '0.0.1' }],
+      translations: { vscode: translation },
+      label: locale,
+    };
+    fs.writeFileSync(path.join(this.dir, 'user-data', 'languagepacks.json'), JSON.stringify({ [locale]: pack }));
   }
 
   /** The workbench on the test workspace. */

@@ -8,6 +8,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test as nodeTest } from 'node:test';
 import { CodeServer, OUTPUT } from './codeServer.mjs';
+import { exact, hoverOver, openFile as openIn, tokenColour as colourIn } from './workbench.mjs';
 
 const STEP = 60000; // ms for one test (most take 1-5 s)
 const WAIT = 20000; // ms for one thing to appear
@@ -19,29 +20,8 @@ async function shot(name) {
   await page.screenshot({ path: path.join(OUTPUT, `${name}.png`) });
 }
 
-// Monaco renders spaces as no-break spaces: a space in `text` matches either.
-const exact = (text) =>
-  new RegExp(`^${text.replace(/[.*+?^${}()|[\]\\]/g, '\\$&').replace(/ /g, '[ \\u00a0]')}$`);
-
-/** Open a workspace file by clicking its row in the Explorer (shown first, if another view is). */
-async function openFile(name) {
-  if (!(await page.locator('.explorer-folders-view').isVisible())) {
-    await page.keyboard.press('Control+Shift+E');
-  }
-  const row = page
-    .locator('.explorer-folders-view .monaco-list-row')
-    .filter({ has: page.locator('.label-name', { hasText: exact(name) }) });
-  await row.click();
-  await page.locator('.tabs-container .tab.active', { hasText: name }).waitFor();
-  await page.locator('.editor-instance .view-lines .view-line').first().waitFor();
-}
-
-/** The computed colour of the first token span in the editor whose text is `text`. */
-async function tokenColour(text) {
-  const span = page.locator('.editor-instance .view-lines span span', { hasText: exact(text) }).first();
-  await span.waitFor();
-  return span.evaluate((el) => getComputedStyle(el).color);
-}
+const openFile = (name) => openIn(page, name);
+const tokenColour = (text) => colourIn(page, text);
 
 /** A test that, when it fails, leaves a picture of the workbench as it was. */
 function test(name, options, fn) {
@@ -84,25 +64,7 @@ test('a macro program is CNC Macro, coloured by kind, with the dialect in the st
 });
 
 test('hovering #5001 shows its documentation', { timeout: STEP }, async () => {
-  // The mouse goes to where #5001 is drawn now: inlay hints that arrive late move text sideways.
-  const target = page.locator('.editor-instance .view-lines span span', { hasText: /^#5001$/ }).first();
-  const hover = page.locator('.monaco-hover', { hasText: 'block end position' });
-  for (let attempt = 1; ; attempt++) {
-    await target.scrollIntoViewIfNeeded();
-    const box = await target.boundingBox();
-    assert.ok(box, '#5001 is on screen');
-    await page.mouse.move(box.x + 2, box.y + box.height / 2);
-    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2, { steps: 4 });
-    try {
-      // The answer can wait behind an analysis run on a busy machine.
-      await hover.waitFor({ state: 'visible', timeout: 10000 });
-      break;
-    } catch (e) {
-      if (attempt === 3) throw e;
-      await page.mouse.move(5, 500);
-      await page.keyboard.press('Escape');
-    }
-  }
+  const hover = await hoverOver(page, /^#5001$/, 'block end position');
   assert.match(await hover.innerText(), /#5001/);
   await shot('2-hover-5001');
   await page.mouse.move(5, 500);

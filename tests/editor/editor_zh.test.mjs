@@ -1,0 +1,68 @@
+// The extension in a VS Code whose display language is Chinese (code-server --locale zh-cn):
+// what a Chinese-reading user sees of CNC Macro — the command titles, a hover and the Problems
+// panel in Chinese. Screenshots go to test-output/editor/zh-*.png. Run with the other editor
+// tests: node --test tests/editor/ (after npm run package).
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { after, before, test } from 'node:test';
+import { CodeServer, OUTPUT } from './codeServer.mjs';
+import { hoverOver, openFile } from './workbench.mjs';
+
+const STEP = 60000;
+let server;
+let page;
+
+async function shot(name) {
+  await page.waitForTimeout(300);
+  await page.screenshot({ path: path.join(OUTPUT, `zh-${name}.png`) });
+}
+
+before(async () => {
+  fs.mkdirSync(OUTPUT, { recursive: true });
+  server = new CodeServer({ locale: 'zh-cn' });
+  await server.start();
+  page = await server.openWorkbench();
+  page.setDefaultTimeout(20000);
+}, { timeout: 180000 });
+
+after(async () => {
+  await server?.stop();
+});
+
+test('hovering #5001 describes it in Chinese', { timeout: STEP }, async () => {
+  await openFile(page, 'O9100.nc');
+  const hover = await hoverOver(page, /^#5001$/, '程序段终点位置');
+  assert.match(await hover.innerText(), /工件坐标系/);
+  await shot('1-hover-5001');
+  await page.mouse.move(5, 500);
+});
+
+test('the Problems panel reports the planted GOTO in Chinese', { timeout: STEP }, async () => {
+  await openFile(page, 'planted_goto.nc');
+  await page.locator('.editor-instance .squiggly-error').first().waitFor();
+  await page.keyboard.press('Control+Shift+M');
+  const row = page.locator('.markers-panel .monaco-list-row', { hasText: 'O0998 中没有 N99' }).first();
+  await row.waitFor();
+  assert.match(await row.innerText(), /报警 128/);
+  await shot('2-problems');
+});
+
+test('the commands are named in Chinese', { timeout: STEP }, async () => {
+  const rows = page.locator('.quick-input-list .monaco-list-row');
+  for (let attempt = 1; ; attempt++) {
+    await page.locator('.editor-instance .view-lines').first().click();
+    await page.keyboard.press('Control+Shift+P');
+    await page.keyboard.type('CNC Macro');
+    try {
+      await rows.filter({ hasText: 'CNC Macro: 重启服务器' }).first().waitFor({ timeout: 10000 });
+      break;
+    } catch (e) {
+      if (attempt === 3) throw e; // the palette opened before the workbench had the keyboard
+      await page.keyboard.press('Escape');
+    }
+  }
+  await rows.filter({ hasText: 'CNC Macro: 选择方言' }).first().waitFor();
+  await shot('3-commands');
+  await page.keyboard.press('Escape');
+});
