@@ -7,13 +7,13 @@ timers and date/time (§4.5), automatic operation control #3003/#3004 (§4.6), p
 (§4.7), modal information #4001–#4130 (§4.8), positions for four axes (§4.9) and work zero
 offsets including G54.1 P1–P48 and the #2500–#2806 short numbers (§4.10). ``G_CODES`` and
 ``M_CODES`` describe the codes of a 0i milling control; a code's ``group`` is its name in
-``MODAL_GROUPS``, or empty for a one-shot (group 00) code.
+``MODAL_GROUPS``, or empty for a one-shot (group 00) code. Rows and texts that the GSK980TDi
+shares come from ``shared_data``.
 """
 
 from __future__ import annotations
 
-import re
-
+from . import shared_data as shared
 from .tables import CodeDoc, SystemVariable
 
 # ---------------------------------------------------------------------------------------------
@@ -271,13 +271,6 @@ _MODAL_GROUPS_0I: dict[int, tuple[str, str]] = {
 }
 
 
-def _reads(codes: str) -> tuple[str, str]:
-    """An example for a modal row's hover: the group's second code and the number it reads as."""
-    found = re.findall(r"G\d+(?:\.\d)?", codes)
-    code = found[1] if len(found) > 1 else found[0]
-    return code, code[1:].lstrip("0") or "0"
-
-
 def _modal_row(group: int) -> SystemVariable:
     number = 4000 + group
     if group not in _MODAL_GROUPS_0I:
@@ -291,7 +284,7 @@ def _modal_row(group: int) -> SystemVariable:
             default=None,
         )
     name, codes = _MODAL_GROUPS_0I[group]
-    code, value = _reads(codes)
+    code, value = shared.modal_example(codes)
     return SystemVariable(
         number,
         number,
@@ -305,15 +298,11 @@ def _modal_row(group: int) -> SystemVariable:
     )
 
 
+# the code letters of a mill beside those both controls have (shared_data.CODE_LETTERS)
 _CODE_LETTERS: tuple[tuple[int, str, str, str], ...] = (
     (4102, "B", "B code (second auxiliary function) last commanded", "最近指令的B代码（第2辅助功能）"),
     (4107, "D", "D code (cutter radius offset number) in effect", "当前的D代码（刀具半径补偿号）"),
-    (4109, "F", "F code (feedrate) in effect", "当前的F代码（进给速度）"),
     (4111, "H", "H code (tool length offset number) in effect", "当前的H代码（刀具长度补偿号）"),
-    (4113, "M", "M code last commanded", "最近指令的M代码"),
-    (4114, "N", "Sequence number (N) of the last numbered block", "顺序号（最近的N号）"),
-    (4115, "O", "Program number (O) of the program being run", "正在运行的程序号（O号）"),
-    (4119, "S", "S code (spindle speed or surface speed) in effect", "当前的S代码（主轴转速或线速度）"),
     (4120, "T", "T code (tool number) last commanded", "最近指令的T代码（刀具号）"),
     (
         4130,
@@ -325,49 +314,14 @@ _CODE_LETTERS: tuple[tuple[int, str, str, str], ...] = (
 
 _MODAL: tuple[SystemVariable, ...] = (
     *(_modal_row(group) for group in range(1, 23)),
-    *(
-        SystemVariable(number, number, "r", "modal", en, zh, source="code", param=letter)
-        for number, letter, en, zh in _CODE_LETTERS
-    ),
+    *shared.code_letter_rows((*shared.CODE_LETTERS, *_CODE_LETTERS)),
 )
 
 # ---------------------------------------------------------------------------------------------
 # §4.9 positions (axes 1-4); read only
 
 _POSITIONS: tuple[SystemVariable, ...] = (
-    SystemVariable(
-        5001,
-        5004,
-        "r",
-        "position",
-        "{axis} axis block end position, work coordinates, without tool offset; readable while the axis moves",
-        "第{index}轴（{axis}）程序段终点位置（工件坐标系，不含刀具补偿，移动中可读）",
-        "mm",
-        "position",
-        "end",
-    ),
-    SystemVariable(
-        5021,
-        5024,
-        "r",
-        "position",
-        "{axis} axis current position, machine coordinates, with tool offset; not readable while moving",
-        "第{index}轴（{axis}）当前位置（机床坐标系，含刀具补偿，移动中不可读）",
-        "mm",
-        "position",
-        "machine",
-    ),
-    SystemVariable(
-        5041,
-        5044,
-        "r",
-        "position",
-        "{axis} axis current position, work coordinates, with tool offset; not readable while moving",
-        "第{index}轴（{axis}）当前位置（工件坐标系，含刀具补偿，移动中不可读）",
-        "mm",
-        "position",
-        "current",
-    ),
+    *shared.axis_position_rows(4),
     SystemVariable(
         5061,
         5064,
@@ -409,15 +363,6 @@ _POSITIONS: tuple[SystemVariable, ...] = (
 # ---------------------------------------------------------------------------------------------
 # §4.10 work zero offsets, G54.1 P1-P48 and the #2500-#2806 short numbers
 
-_WCS_NAMES: tuple[tuple[str, str], ...] = (
-    ("external work zero offset", "外部工件零点偏移值"),
-    ("G54 work zero offset", "G54工件零点偏移值"),
-    ("G55 work zero offset", "G55工件零点偏移值"),
-    ("G56 work zero offset", "G56工件零点偏移值"),
-    ("G57 work zero offset", "G57工件零点偏移值"),
-    ("G58 work zero offset", "G58工件零点偏移值"),
-    ("G59 work zero offset", "G59工件零点偏移值"),
-)
 _AXIS_NAMES: tuple[tuple[str, str], ...] = (
     ("X", "第1轴（X）"),
     ("Y", "第2轴（Y）"),
@@ -436,7 +381,7 @@ _WORK_OFFSETS: tuple[SystemVariable, ...] = (
             f"第{{index}}轴（{{axis}}）{zh}；也可用G10 L2 P{i}设定",
             "mm",
         )
-        for i, (en, zh) in enumerate(_WCS_NAMES)
+        for i, (en, zh) in enumerate(shared.WCS_NAMES)
     ),
     *(
         SystemVariable(
@@ -464,7 +409,7 @@ _WORK_OFFSETS: tuple[SystemVariable, ...] = (
             str(5201 + 20 * i + axis),
         )
         for axis in range(4)
-        for i, (en, zh) in enumerate(_WCS_NAMES)
+        for i, (en, zh) in enumerate(shared.WCS_NAMES)
     ),
 )
 
@@ -481,8 +426,7 @@ SYSTEM_VARIABLES: tuple[SystemVariable, ...] = (
 # G and M codes of a FANUC 0i milling control
 
 G_CODES: tuple[CodeDoc, ...] = (
-    CodeDoc("G00", "motion", "Rapid positioning", "快速定位"),
-    CodeDoc("G01", "motion", "Linear interpolation at feedrate F", "直线插补（以进给速度F切削）"),
+    *shared.codes("G00", "G01"),
     CodeDoc(
         "G02", "motion", "Circular/helical interpolation clockwise (R or I J K)", "顺时针圆弧/螺旋线插补（R或I J K）"
     ),
@@ -512,11 +456,9 @@ G_CODES: tuple[CodeDoc, ...] = (
         "Polar coordinate command: the first axis word is the radius, the second the angle",
         "极坐标指令：平面第1轴地址为半径，第2轴地址为角度",
     ),
-    CodeDoc("G17", "plane", "XY plane selection", "XY平面选择"),
+    *shared.codes("G17"),
     CodeDoc("G18", "plane", "ZX plane selection", "ZX平面选择"),
-    CodeDoc("G19", "plane", "YZ plane selection", "YZ平面选择"),
-    CodeDoc("G20", "units", "Input in inches", "英制输入"),
-    CodeDoc("G21", "units", "Input in millimetres", "公制输入"),
+    *shared.codes("G19", "G20", "G21"),
     CodeDoc("G22", "stroke", "Stored stroke check on", "存储行程检查功能有效"),
     CodeDoc("G23", "stroke", "Stored stroke check off", "存储行程检查功能无效"),
     CodeDoc("G27", "", "Reference position return check", "返回参考点检查"),
@@ -578,12 +520,7 @@ G_CODES: tuple[CodeDoc, ...] = (
         "Move in machine coordinates for this block only (offsets ignored)",
         "机床坐标系选择（仅本程序段，以机床坐标移动）",
     ),
-    CodeDoc("G54", "wcs", "Work coordinate system 1 (offsets #5221-#5224)", "工件坐标系1（偏移值#5221～#5224）"),
-    CodeDoc("G55", "wcs", "Work coordinate system 2 (offsets #5241-#5244)", "工件坐标系2（偏移值#5241～#5244）"),
-    CodeDoc("G56", "wcs", "Work coordinate system 3 (offsets #5261-#5264)", "工件坐标系3（偏移值#5261～#5264）"),
-    CodeDoc("G57", "wcs", "Work coordinate system 4 (offsets #5281-#5284)", "工件坐标系4（偏移值#5281～#5284）"),
-    CodeDoc("G58", "wcs", "Work coordinate system 5 (offsets #5301-#5304)", "工件坐标系5（偏移值#5301～#5304）"),
-    CodeDoc("G59", "wcs", "Work coordinate system 6 (offsets #5321-#5324)", "工件坐标系6（偏移值#5321～#5324）"),
+    *shared.work_coordinate_codes(4),
     CodeDoc(
         "G54.1",
         "wcs",
@@ -600,13 +537,7 @@ G_CODES: tuple[CodeDoc, ...] = (
         "Macro call: G65 P(program) L(repeat count) arguments; opens a new level of local variables",
         "宏程序非模态调用：G65 P（程序号）L（重复次数）自变量；局部变量进入新的一级",
     ),
-    CodeDoc(
-        "G66",
-        "macro",
-        "Modal macro call: G66 P L arguments; the macro is called after every later block that moves an axis",
-        "宏程序模态调用：G66 P L 自变量；之后每个有轴移动的程序段执行后调用宏程序",
-    ),
-    CodeDoc("G67", "macro", "Modal macro call cancel", "宏程序模态调用取消"),
+    *shared.codes("G66", "G67"),
     CodeDoc(
         "G68",
         "rotation",
@@ -646,36 +577,24 @@ G_CODES: tuple[CodeDoc, ...] = (
     CodeDoc(
         "G92",
         "",
-        "Set the work coordinate system so that the current position has the given coordinates",
+        shared.SET_COORDINATES_EN,
         "设定工件坐标系（使当前位置成为指定的坐标值）",
     ),
-    CodeDoc("G94", "feed", "Feed per minute (F in mm/min)", "每分钟进给（F单位mm/min）"),
-    CodeDoc("G95", "feed", "Feed per revolution (F in mm/rev)", "每转进给（F单位mm/r）"),
-    CodeDoc("G96", "spindle", "Constant surface speed control (S in m/min)", "恒线速度控制（S单位m/min）"),
-    CodeDoc("G97", "spindle", "Constant surface speed control cancel (S in rev/min)", "恒线速度控制取消（S单位r/min）"),
+    CodeDoc("G94", "feed", *shared.FEED_PER_MINUTE),
+    CodeDoc("G95", "feed", *shared.FEED_PER_REVOLUTION),
+    *shared.codes("G96", "G97"),
     CodeDoc("G98", "return", "Canned cycle: return to the initial level", "固定循环返回初始平面"),
     CodeDoc("G99", "return", "Canned cycle: return to the R point level", "固定循环返回R点平面"),
 )
 
 M_CODES: tuple[CodeDoc, ...] = (
     CodeDoc("M00", "", "Program stop; cycle start resumes", "程序暂停，按循环启动继续"),
-    CodeDoc(
-        "M01", "", "Optional stop (only when the optional stop switch is on)", "选择停止（选择停止开关打开时有效）"
-    ),
-    CodeDoc("M02", "", "End of program; modal macro calls are cleared", "程序结束，清除模态宏调用"),
-    CodeDoc("M03", "", "Spindle on clockwise", "主轴正转"),
-    CodeDoc("M04", "", "Spindle on counterclockwise", "主轴反转"),
-    CodeDoc("M05", "", "Spindle stop", "主轴停止"),
+    *shared.codes("M01", "M02", "M03", "M04", "M05"),
     CodeDoc("M06", "", "Tool change (the tool chosen by T)", "换刀（换上T指定的刀具）"),
     CodeDoc("M08", "", "Coolant on", "切削液开"),
     CodeDoc("M09", "", "Coolant off", "切削液关"),
     CodeDoc("M19", "", "Spindle orientation", "主轴定向"),
-    CodeDoc(
-        "M30",
-        "",
-        "End of program and return to its start; modal macro calls are cleared",
-        "程序结束并返回程序开头，清除模态宏调用",
-    ),
+    *shared.codes("M30"),
     CodeDoc(
         "M98",
         "",
@@ -686,8 +605,7 @@ M_CODES: tuple[CodeDoc, ...] = (
     CodeDoc(
         "M99",
         "",
-        "Return from a subprogram or macro to the block after the call (M99 Pn: to block Nn); "
-        "in a main program it restarts the program",
+        shared.M99_EN,
         "从子程序或宏程序返回调用程序段的下一段（M99 Pn返回到Nn段）；在主程序中则从头重复执行",
     ),
     CodeDoc(

@@ -7,13 +7,13 @@ direction), parts counters, the X/Z work coordinate shift, the macro alarm #3000
 five axes (X, Y, Z, 4th, 5th), manual pulse interrupt amounts and work zero offsets. ``G_CODES``
 and ``M_CODES`` describe the lathe's codes; a code's ``group`` is its name in ``MODAL_GROUPS``, or
 empty for a one-shot code. On this lathe G98/G99 are feed per minute/per revolution and
-G90/G92/G94 are single turning, thread and facing cycles in the motion group.
+G90/G92/G94 are single turning, thread and facing cycles in the motion group. Rows and texts
+that the FANUC 0i shares come from ``shared_data``.
 """
 
 from __future__ import annotations
 
-import re
-
+from . import shared_data as shared
 from .tables import CodeDoc, SystemVariable
 
 # ---------------------------------------------------------------------------------------------
@@ -166,12 +166,8 @@ _MODAL_ROWS: tuple[tuple[int, str, str, str, str], ...] = (
     (4016, "plane", "16", "G17, G18, G19", "G17、G18、G19"),
 )
 
+# the lathe's T code beside the code letters both controls have (shared_data.CODE_LETTERS)
 _CODE_LETTERS: tuple[tuple[int, str, str, str], ...] = (
-    (4109, "F", "F code (feedrate) in effect", "当前的F代码（进给速度）"),
-    (4113, "M", "M code last commanded", "最近指令的M代码"),
-    (4114, "N", "Sequence number (N) of the last numbered block", "顺序号（最近的N号）"),
-    (4115, "O", "Program number (O) of the program being run", "正在运行的程序号（O号）"),
-    (4119, "S", "S code (spindle speed or surface speed) in effect", "当前的S代码（主轴转速或线速度）"),
     (
         4120,
         "T",
@@ -179,13 +175,6 @@ _CODE_LETTERS: tuple[tuple[int, str, str, str], ...] = (
         "最近指令的T代码：刀具号×100+刀补号（T0101读出101）",
     ),
 )
-
-
-def _reads(codes: str) -> tuple[str, str]:
-    """An example for a modal row's hover: the group's second code and the number it reads as."""
-    found = re.findall(r"G\d+(?:\.\d)?", codes)
-    code = found[1] if len(found) > 1 else found[0]
-    return code, code[1:].lstrip("0") or "0"
 
 
 _MODAL: tuple[SystemVariable, ...] = (
@@ -201,51 +190,16 @@ _MODAL: tuple[SystemVariable, ...] = (
             param=name,
         )
         for number, name, group, codes, zh_codes in _MODAL_ROWS
-        for code, value in (_reads(codes),)
+        for code, value in (shared.modal_example(codes),)
     ),
-    *(
-        SystemVariable(number, number, "r", "modal", en, zh, source="code", param=letter)
-        for number, letter, en, zh in _CODE_LETTERS
-    ),
+    *shared.code_letter_rows((*shared.CODE_LETTERS, *_CODE_LETTERS)),
 )
 
 # ---------------------------------------------------------------------------------------------
 # 9)-11) positions, manual pulse interrupt, work zero offsets: readable (axes X, Y, Z, 4th, 5th)
 
 _POSITIONS: tuple[SystemVariable, ...] = (
-    SystemVariable(
-        5001,
-        5005,
-        "r",
-        "position",
-        "{axis} axis block end position, work coordinates, without tool offset; readable while the axis moves",
-        "第{index}轴（{axis}）程序段终点位置（工件坐标系，不含刀具补偿，移动中可读）",
-        "mm",
-        "position",
-        "end",
-    ),
-    SystemVariable(
-        5021,
-        5025,
-        "r",
-        "position",
-        "{axis} axis current position, machine coordinates, with tool offset; not readable while moving",
-        "第{index}轴（{axis}）当前位置（机床坐标系，含刀具补偿，移动中不可读）",
-        "mm",
-        "position",
-        "machine",
-    ),
-    SystemVariable(
-        5041,
-        5045,
-        "r",
-        "position",
-        "{axis} axis current position, work coordinates, with tool offset; not readable while moving",
-        "第{index}轴（{axis}）当前位置（工件坐标系，含刀具补偿，移动中不可读）",
-        "mm",
-        "position",
-        "current",
-    ),
+    *shared.axis_position_rows(5),
     SystemVariable(
         5121,
         5125,
@@ -260,16 +214,6 @@ _POSITIONS: tuple[SystemVariable, ...] = (
     ),
 )
 
-_WCS_NAMES: tuple[tuple[str, str], ...] = (
-    ("external work zero offset", "外部工件零点偏移值"),
-    ("G54 work zero offset", "G54工件零点偏移值"),
-    ("G55 work zero offset", "G55工件零点偏移值"),
-    ("G56 work zero offset", "G56工件零点偏移值"),
-    ("G57 work zero offset", "G57工件零点偏移值"),
-    ("G58 work zero offset", "G58工件零点偏移值"),
-    ("G59 work zero offset", "G59工件零点偏移值"),
-)
-
 _WORK_OFFSETS: tuple[SystemVariable, ...] = tuple(
     SystemVariable(
         5201 + 20 * i,
@@ -280,7 +224,7 @@ _WORK_OFFSETS: tuple[SystemVariable, ...] = tuple(
         f"第{{index}}轴（{{axis}}）{zh}（只读；用G10 L2 P{i}或在偏置页面设定）",
         "mm",
     )
-    for i, (en, zh) in enumerate(_WCS_NAMES)
+    for i, (en, zh) in enumerate(shared.WCS_NAMES)
 )
 
 SYSTEM_VARIABLES: tuple[SystemVariable, ...] = (
@@ -296,8 +240,7 @@ SYSTEM_VARIABLES: tuple[SystemVariable, ...] = (
 # G and M codes of the GSK980TDi lathe
 
 G_CODES: tuple[CodeDoc, ...] = (
-    CodeDoc("G00", "motion", "Rapid positioning", "快速定位"),
-    CodeDoc("G01", "motion", "Linear interpolation at feedrate F", "直线插补（以进给速度F切削）"),
+    *shared.codes("G00", "G01"),
     CodeDoc("G02", "motion", "Circular interpolation clockwise (R or I K)", "顺时针圆弧插补（R或I K）"),
     CodeDoc("G03", "motion", "Circular interpolation counterclockwise (R or I K)", "逆时针圆弧插补（R或I K）"),
     CodeDoc("G04", "", "Dwell: G04 P_ (milliseconds) or G04 X_/U_ (seconds)", "暂停：G04 P_（毫秒）或G04 X_/U_（秒）"),
@@ -309,11 +252,9 @@ G_CODES: tuple[CodeDoc, ...] = (
     ),
     CodeDoc("G07.1", "", "Cylindrical interpolation on/off", "圆柱插补开/关"),
     CodeDoc("G10", "", "Programmable data input (work and tool offsets)", "可编程数据输入（工件及刀具偏置）"),
-    CodeDoc("G17", "plane", "XY plane selection", "XY平面选择"),
+    *shared.codes("G17"),
     CodeDoc("G18", "plane", "ZX plane selection (the lathe's usual plane)", "ZX平面选择（车床常用平面）"),
-    CodeDoc("G19", "plane", "YZ plane selection", "YZ平面选择"),
-    CodeDoc("G20", "units", "Input in inches", "英制输入"),
-    CodeDoc("G21", "units", "Input in millimetres", "公制输入"),
+    *shared.codes("G19", "G20", "G21"),
     CodeDoc(
         "G28",
         "",
@@ -341,15 +282,10 @@ G_CODES: tuple[CodeDoc, ...] = (
     CodeDoc(
         "G50",
         "",
-        "Set the work coordinate system so that the current position has the given coordinates",
+        shared.SET_COORDINATES_EN,
         "坐标系设定（使当前位置成为指定的坐标值）",
     ),
-    CodeDoc("G54", "wcs", "Work coordinate system 1 (offsets #5221-#5225)", "工件坐标系1（偏移值#5221～#5225）"),
-    CodeDoc("G55", "wcs", "Work coordinate system 2 (offsets #5241-#5245)", "工件坐标系2（偏移值#5241～#5245）"),
-    CodeDoc("G56", "wcs", "Work coordinate system 3 (offsets #5261-#5265)", "工件坐标系3（偏移值#5261～#5265）"),
-    CodeDoc("G57", "wcs", "Work coordinate system 4 (offsets #5281-#5285)", "工件坐标系4（偏移值#5281～#5285）"),
-    CodeDoc("G58", "wcs", "Work coordinate system 5 (offsets #5301-#5305)", "工件坐标系5（偏移值#5301～#5305）"),
-    CodeDoc("G59", "wcs", "Work coordinate system 6 (offsets #5321-#5325)", "工件坐标系6（偏移值#5321～#5325）"),
+    *shared.work_coordinate_codes(5),
     CodeDoc(
         "G65",
         "",
@@ -357,13 +293,7 @@ G_CODES: tuple[CodeDoc, ...] = (
         "or macro arithmetic/branch G65 Hm P#i Q#j R#k",
         "宏程序非模态调用G65 P_ L_ 自变量（局部变量进入新的一级），或宏运算/转移命令G65 Hm P#i Q#j R#k",
     ),
-    CodeDoc(
-        "G66",
-        "macro",
-        "Modal macro call: G66 P L arguments; the macro is called after every later block that moves an axis",
-        "宏程序模态调用：G66 P L 自变量；之后每个有轴移动的程序段执行后调用宏程序",
-    ),
-    CodeDoc("G67", "macro", "Modal macro call cancel", "宏程序模态调用取消"),
+    *shared.codes("G66", "G67"),
     CodeDoc("G70", "", "Finishing cycle: G70 P(ns) Q(nf)", "精加工循环：G70 P(ns) Q(nf)"),
     CodeDoc("G71", "", "Axial rough turning cycle (outer/inner diameter)", "轴向粗车循环（外圆/内孔）"),
     CodeDoc("G72", "", "Radial rough facing cycle", "径向粗车循环（端面）"),
@@ -379,31 +309,19 @@ G_CODES: tuple[CodeDoc, ...] = (
     CodeDoc("G90", "motion", "Outer/inner diameter turning cycle (single pass)", "外圆/内孔切削循环（单一固定循环）"),
     CodeDoc("G92", "motion", "Thread cutting cycle (single pass)", "螺纹切削循环（单一固定循环）"),
     CodeDoc("G94", "motion", "Facing cycle (single pass)", "端面切削循环（单一固定循环）"),
-    CodeDoc("G96", "spindle", "Constant surface speed control (S in m/min)", "恒线速度控制（S单位m/min）"),
-    CodeDoc("G97", "spindle", "Constant surface speed control cancel (S in rev/min)", "恒线速度控制取消（S单位r/min）"),
-    CodeDoc("G98", "feed", "Feed per minute (F in mm/min)", "每分钟进给（F单位mm/min）"),
-    CodeDoc("G99", "feed", "Feed per revolution (F in mm/rev)", "每转进给（F单位mm/r）"),
+    *shared.codes("G96", "G97"),
+    CodeDoc("G98", "feed", *shared.FEED_PER_MINUTE),
+    CodeDoc("G99", "feed", *shared.FEED_PER_REVOLUTION),
 )
 
 M_CODES: tuple[CodeDoc, ...] = (
     CodeDoc("M00", "", "Program pause; cycle start resumes", "程序暂停，按循环启动继续"),
-    CodeDoc(
-        "M01", "", "Optional stop (only when the optional stop switch is on)", "选择停止（选择停止开关打开时有效）"
-    ),
-    CodeDoc("M02", "", "End of program; modal macro calls are cleared", "程序结束，清除模态宏调用"),
-    CodeDoc("M03", "", "Spindle on clockwise", "主轴正转"),
-    CodeDoc("M04", "", "Spindle on counterclockwise", "主轴反转"),
-    CodeDoc("M05", "", "Spindle stop", "主轴停止"),
+    *shared.codes("M01", "M02", "M03", "M04", "M05"),
     CodeDoc("M08", "", "Coolant on", "冷却液开"),
     CodeDoc("M09", "", "Coolant off", "冷却液关"),
     CodeDoc("M10", "", "Tailstock forward (standard PLC)", "尾座进（标准PLC）"),
     CodeDoc("M11", "", "Tailstock back (standard PLC)", "尾座退（标准PLC）"),
-    CodeDoc(
-        "M30",
-        "",
-        "End of program and return to its start; modal macro calls are cleared",
-        "程序结束并返回程序开头，清除模态宏调用",
-    ),
+    *shared.codes("M30"),
     CodeDoc("M32", "", "Lubrication on (standard PLC)", "润滑开（标准PLC）"),
     CodeDoc("M33", "", "Lubrication off (standard PLC)", "润滑关（标准PLC）"),
     CodeDoc(
@@ -418,8 +336,7 @@ M_CODES: tuple[CodeDoc, ...] = (
     CodeDoc(
         "M99",
         "",
-        "Return from a subprogram or macro to the block after the call (M99 Pn: to block Nn); "
-        "in a main program it restarts the program",
+        shared.M99_EN,
         "从子程序或宏程序返回调用程序段的下一段（M99 Pn返回到Nn段）；在主程序中则反复执行当前程序",
     ),
     CodeDoc(

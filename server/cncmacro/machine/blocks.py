@@ -11,7 +11,6 @@ lookups in the syntax tree. Jumps are resolved once per (line, label) and cached
 from __future__ import annotations
 
 import re
-from bisect import bisect_left, bisect_right
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
@@ -27,6 +26,7 @@ from ..dialects.alarms import (
 )
 from ..library.programs import LoadedFile
 from ..syntax.nodes import Assign, Block, Do, End, Goto, If, IndirectVar, Number, Output, Statement, Var, While, Word
+from . import jumps
 from .alarms import MacroAlarm, raiser
 from .expressions import ExpressionCompiler, Getter
 from .numbers import MAX_VALUE, format_value, round_half_away, to_increment
@@ -135,46 +135,38 @@ class CompiledFile:
         return target
 
     def _find_jump(self, frame: Any, pc: int, n: int) -> tuple[int, int]:
-        unit = frame.found.unit
-        lines = self.file.program.label_lines(n, unit)
-        if not lines:
+        """(target line, loops kept) of ``GOTO n`` on line ``pc``, by the rules of ``jumps``;
+        ``loops kept`` is -1 for a jump into a loop from outside."""
+        target = jumps.goto_line(self.file.program.label_lines(n, frame.found.unit), pc)
+        if target is None:
             raise MacroAlarm(
                 SEQUENCE_NUMBER,
                 detail(f"N{n} not found in {frame.found.label}", f"{frame.found.label} 中未找到 N{n}"),
             )
-        k = bisect_right(lines, pc)
-        target = lines[k] if k < len(lines) else lines[0]
-        keep = 0
-        for d, e in self.do_end.items():
-            inside_target = d < target <= e
-            inside_here = d < pc <= e
-            if inside_target and not inside_here:
-                return target, -1
-            if inside_target and inside_here:
-                keep += 1
-        return target, keep
+        if jumps.entered_loop(self.do_end, pc, target) is not None:
+            return target, -1
+        return target, jumps.loops_kept(self.do_end, pc, target)
 
     def label_in_caller(self, unit: Any, call_line: int, n: int) -> int:
         """Where ``M99 Pn`` returns in the caller (seed 002): the first Nn after the call
         line, else the last one before it."""
-        lines = self.file.program.label_lines(n, unit)
-        if not lines:
+        target = jumps.return_line(self.file.program.label_lines(n, unit), call_line)
+        if target is None:
             raise MacroAlarm(
                 SEQUENCE_NUMBER,
                 detail(f"M99 P{n}: N{n} not found in the calling program", f"M99 P{n}：调用程序中未找到 N{n}"),
             )
-        k = bisect_right(lines, call_line)
-        return lines[k] if k < len(lines) else lines[k - 1]
+        return target
 
     def label_from_start(self, unit: Any, n: int) -> int:
         """The first Nn of a program (``M98 Q``), searching from its start."""
-        lines = self.file.program.label_lines(n, unit)
-        if not lines:
+        target = jumps.first_line(self.file.program.label_lines(n, unit))
+        if target is None:
             raise MacroAlarm(
                 SEQUENCE_NUMBER,
                 detail(f"N{n} not found in the called program", f"被调用的程序中未找到 N{n}"),
             )
-        return lines[bisect_left(lines, unit.start)]
+        return target
 
     # ---------------------------------------------------------------- compiling
     def compile(self, pc: int) -> Runner:
