@@ -1,9 +1,19 @@
-"""Shared helpers for the tests: parse a line and look at its block."""
+"""Shared helpers for the tests: parse a line and look at its block; and the property tests'
+settings: the same examples on every run (``derandomize``), so that a red test is a change in
+the code, never a new random draw. ``HYPOTHESIS_PROFILE=explore`` draws new examples, with the
+example database, to look for failures on purpose."""
 
 from __future__ import annotations
 
+import os
 import sys
 from pathlib import Path
+
+from hypothesis import settings
+
+settings.register_profile("repeatable", derandomize=True, database=None)
+settings.register_profile("explore")
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "repeatable"))
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "benchmarks"))  # the CAM program generator
