@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from bisect import bisect_right
 
-from ..machine.jumps import goto_line
+from ..machine.jumps import entered_loop, goto_line
 from ..syntax.program import LoopPair, Program, ProgramUnit
 from .call_targets import UNKNOWN, ProgramFinder, not_found
 from .diagnostics import Diagnostic, Related
@@ -175,11 +175,9 @@ class LabelChecker:
 
 def _loop_entered(loops: list[LoopPair], line: int, target: int) -> LoopPair | None:
     """The loop that a jump from ``line`` to ``target`` enters from outside, if any (the
-    rule of ``CompiledFile._find_jump``: the target is after the DO and up to the END)."""
-    for p in loops:
-        if p.do_line < target <= p.end_line and not p.do_line < line <= p.end_line:
-            return p
-    return None
+    interpreter's rule, ``machine.jumps.entered_loop``)."""
+    do = entered_loop({p.do_line: p.end_line for p in loops}, line, target)
+    return None if do is None else next(p for p in loops if p.do_line == do)
 
 
 def _label_span(program: Program, line: int) -> tuple[int, int]:
