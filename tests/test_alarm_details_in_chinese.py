@@ -85,9 +85,16 @@ def _literal_parts(expr: ast.expr) -> tuple[str, set[str]] | None:
         return expr.value, set()
     if isinstance(expr, ast.JoinedStr):
         text = "".join(v.value for v in expr.values if isinstance(v, ast.Constant))
-        holes = {ast.unparse(v.value) for v in expr.values if isinstance(v, ast.FormattedValue)}
+        holes = {_shown(v.value) for v in expr.values if isinstance(v, ast.FormattedValue)}
         return text, holes
     return None
+
+
+def _shown(value: ast.expr) -> str:
+    """The value a hole interpolates; ``in_language(x, True)`` shows ``x`` (in its Chinese)."""
+    if isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and value.func.id == "in_language":
+        return ast.unparse(value.args[0])
+    return ast.unparse(value)
 
 
 def detail_problems(call: ast.Call) -> list[str]:
@@ -328,8 +335,8 @@ def test_6_alarms_run_with_locale_zh_cn_shows_the_alarm_and_notes_in_chinese(tmp
                  "O9001\nM99\n", encoding="utf-8")  # fmt: skip
     text = cli("run", "--no-save", "--max-blocks", "100000", "--locale", "zh-CN", str(f))
     assert text.returncode == 1
-    assert "note at O0001.nc:4: L12000 超过 9999，系统按 9999 次执行\n" in text.stdout
-    assert "ALARM 112: 除数为零\n" in text.stdout
+    assert "提示（O0001.nc:4）：L12000 超过 9999，系统按 9999 次执行\n" in text.stdout
+    assert "报警 112：除数为零\n" in text.stdout
     plain = cli("run", "--no-save", "--max-blocks", "100000", "--json", str(f))
     result = json.loads(plain.stdout)
     assert result["alarm"]["message"] == "division by zero"
@@ -343,8 +350,9 @@ def test_6_alarms_run_with_locale_zh_cn_shows_the_alarm_and_notes_in_chinese(tmp
 # ---------------------------------------------------------------- the debugger
 
 
-def debug(program: Path, locale: str) -> tuple[list[dict], dict]:
-    """Run ``program`` in a debug session with ``locale``: the events, and the exception info."""
+def debug(program: Path, locale: str, *then: tuple[str, dict]) -> tuple[list[dict], dict]:
+    """Run ``program`` in a debug session with ``locale`` until it stops, then send the requests
+    ``then``: all the messages, and the exception info."""
     out = io.BytesIO()
     session = Session(MessageWriter(out))
     session.handle(Request(1, "initialize", {"locale": locale}))
@@ -353,6 +361,8 @@ def debug(program: Path, locale: str) -> tuple[list[dict], dict]:
     assert session.worker is not None
     session.worker.join(timeout=60)
     session.handle(Request(4, "exceptionInfo", {"threadId": 1}))
+    for seq, (command, arguments) in enumerate(then, start=5):
+        session.handle(Request(seq, command, arguments))
     messages = []
     data = out.getvalue()
     while data:
@@ -375,3 +385,24 @@ def test_6_alarms_the_debugger_stops_on_an_alarm_with_its_detail_in_the_client_l
     assert info["details"]["message"] == "L0：重复次数必须在 1～9999 之间"
     _, english = debug(f, "en")
     assert english["description"] == "ALARM 119: L0: the repeat count must be 1 to 9999"
+
+
+def test_6_alarms_the_debugger_console_answers_in_the_client_language(tmp_path: Path) -> None:
+    f = tmp_path / "O0001.nc"
+    f.write_text("O0001\n#1=0\nG65 P9001 L#1\nM30\nO9001\nM99\n", encoding="utf-8")
+    asked = [("evaluate", {"expression": text, "context": "repl"}) for text in ("10/#1", "1+[2", "#5001=1")]
+
+    def answers(locale: str) -> list[str]:
+        messages, _ = debug(f, locale, *asked)
+        return [m["message"] for m in messages if m.get("command") == "evaluate"]
+
+    assert answers("zh-CN") == [
+        "报警 112：除数为零",
+        "缺少 ']'：第 3 列的 '[' 没有闭合",
+        "报警 116：#5001 是只读变量，不能写入",
+    ]
+    assert answers("en") == [
+        "alarm 112: division by zero",
+        "expected ']' to close the '[' at column 3",
+        "alarm 116: #5001 is read-only",
+    ]

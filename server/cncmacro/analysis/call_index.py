@@ -32,6 +32,7 @@ from ..library.files import BinaryFileError, decode_program, is_program_file, st
 from ..library.machine_file import MachineSettings
 from ..library.programs import load_text
 from . import static_checks
+from .locale import pick
 
 log = logging.getLogger(__name__)
 
@@ -135,8 +136,10 @@ class CallIndex:
             for path in _walk(folder):
                 seen[path] = None
                 if len(seen) > self.max_files:
-                    log.warning("more than %d program files under %s: callers on disk are not looked for",
-                                self.max_files, ", ".join(str(f) for f in self.folders))  # fmt: skip
+                    where = ", ".join(str(f) for f in self.folders)
+                    en = f"more than {self.max_files} program files under {where}: callers on disk are not looked for"
+                    zh = f"{where} 下的程序文件超过 {self.max_files} 个：不查找磁盘上调用它们的程序"
+                    log.warning("%s", pick(self.locale, en, zh))
                     return None
         return sorted(seen)
 

@@ -12,12 +12,14 @@ which look only at the lines with facts and at the document's labels and markers
 
 from __future__ import annotations
 
+from ..bilingual import in_language
 from ..dialects.dialect import Dialect
 from ..library.programs import ProgramLibrary
 from ..syntax.nodes import Block, Problem
 from ..syntax.program import Program
 from .diagnostics import Diagnostic
 from .line_facts import LineContext, LineFacts
+from .locale import is_chinese
 from .static_checks import cross_line_diagnostics, findings_of, line_facts
 
 _MEMO_LIMIT = 200_000
@@ -99,10 +101,11 @@ class StaticLines:
                     locale: str) -> list[Diagnostic]:  # fmt: skip
         """Syntax and static diagnostics of the document (``program`` is its current parse)."""
         out: list[Diagnostic] = []
+        chinese = is_chinese(locale)
         for line in sorted(self.problems):
             for p in self.problems[line]:
                 out.append(Diagnostic(file, line, p.start, line, max(p.end, p.start + 1), p.severity, "syntax",
-                                      p.message))  # fmt: skip
+                                      in_language(p.message, chinese)))  # fmt: skip
         collected: list[tuple[int, LineFacts]] = []
         for line in sorted(self.facts):
             facts = self.facts[line]

@@ -8,7 +8,9 @@ callers, also those on disk in the checked files' folders and the search paths, 
 findings are not printed). Hints (``not-executed``) are printed only with ``--hints``. Exit status: 0 when no
 error was found, 1 when one was, 2 on bad usage or unreadable input (a missing path, a binary
 file, a bad machine file). Unreadable files are named on standard error; the others are still
-checked.
+checked. ``--locale zh-CN`` writes the messages and what goes to standard error in Chinese; the
+format around them (``file:line:col: severity: message [code]``, the JSON and SARIF keys and
+values other than the message) is a contract and stays as it is.
 """
 
 from __future__ import annotations
@@ -21,7 +23,9 @@ from typing import TextIO
 
 from .. import __version__
 from ..analysis import Diagnostic
+from ..analysis.locale import is_chinese, pick
 from ..analysis.workspace import WorkspaceAnalysis
+from ..bilingual import in_language
 from ..library.files import BinaryFileError, find_program_files, read_program
 from ..library.machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
 from .sarif import to_sarif
@@ -41,26 +45,31 @@ def check_paths(
     hints: bool = False,
 ) -> int:
     """Check every program file under ``paths``; print the findings; return the exit status."""
+    chinese = is_chinese(locale)
     if max_blocks is not None and max_blocks < 1:
-        print("cncmacro check: --max-blocks must be at least 1", file=err)
+        print(pick(locale, "cncmacro check: --max-blocks must be at least 1", "cncmacro check：--max-blocks 至少为 1"),
+              file=err)  # fmt: skip
         return 2
     unreadable = False
     sources: list[tuple[Path, str]] = []
     for arg in paths:
         root = Path(arg)
         if not root.exists():
-            print(f"cncmacro: {arg}: no such file or folder", file=err)
+            print(pick(locale, f"cncmacro: {arg}: no such file or folder", f"cncmacro：{arg}：文件或文件夹不存在"),
+                  file=err)  # fmt: skip
             unreadable = True
             continue
         for path in find_program_files(root):
             try:
                 source = read_program(path)
             except BinaryFileError as e:
-                print(f"cncmacro: {e}", file=err)
+                print(f"cncmacro：{e.message.zh}" if chinese else f"cncmacro: {e}", file=err)
                 unreadable = True
                 continue
             except OSError as e:
-                print(f"cncmacro: {path}: cannot read: {e.strerror or e}", file=err)
+                reason = e.strerror or e
+                print(pick(locale, f"cncmacro: {path}: cannot read: {reason}", f"cncmacro：{path}：无法读取：{reason}"),
+                      file=err)  # fmt: skip
                 unreadable = True
                 continue
             sources.append((path, source.text))
@@ -76,7 +85,8 @@ def check_paths(
                                    locale=locale, max_blocks=max_blocks, severities=settings.severity,
                                    workspace_folders=folders)  # fmt: skip
         except (MachineFileError, ValueError) as e:
-            print(f"cncmacro check: {e}", file=err)
+            reason = in_language(e.args[0], True) if chinese and e.args else e
+            print(f"cncmacro check：{reason}" if chinese else f"cncmacro check: {e}", file=err)
             return 2
         for path, text in files:
             ws.open(str(path), text, 0)

@@ -2,8 +2,9 @@
 
 The text output is for a machinist: the moves, anything the program printed or stopped
 with, the alarm and where it came from, and the final variables. ``--json`` prints DESIGN.md's
-object. ``--locale zh-CN`` shows the interpreter's alarm details and notes in Chinese (in the
-JSON too; without it the JSON keeps English). Exit status: 0 when the program completed, 1 on
+object. ``--locale zh-CN`` writes the text output in Chinese, its fixed words and the
+interpreter's alarm details and notes alike (in the JSON only the details and notes: its keys
+and status words are a contract and stay English). Exit status: 0 when the program completed, 1 on
 an alarm, 3 when the block budget ran out (a likely endless loop), 2 on bad usage or an
 unreadable file or machine file.
 """
@@ -16,7 +17,7 @@ import sys
 from pathlib import Path
 from typing import Any, TextIO
 
-from ..analysis.locale import is_chinese
+from ..analysis.locale import is_chinese, pick
 from ..bilingual import in_language
 from ..library.machine_file import parse_preset
 from ..machine import Machine, RunResult
@@ -26,6 +27,8 @@ from ..machine.numbers import format_plain
 from ..machine.setup import prepare_run
 
 MAX_TEXT_MOVES = 1000
+STATUS_ZH = {"completed": "完成", "alarm": "报警", "limit": "达到程序段数上限", "stopped": "停止"}
+CALLED_HOW_ZH = {"main": "主程序"}
 
 
 def add_run_parser(sub: Any) -> None:
@@ -52,8 +55,9 @@ def add_run_parser(sub: Any) -> None:
     run.add_argument("--max-blocks", type=int, metavar="N", help="stop after N blocks (default 1000000)")
     run.add_argument("--json", action="store_true", help="print the result as JSON")
     run.add_argument(
-        "--locale", choices=("en", "zh-CN"), default="en", help="language of alarm details and notes (default en)"
-    )
+        "--locale", choices=("en", "zh-CN"), default="en",
+        help="language of the text output, alarm details and notes (default en)",
+    )  # fmt: skip
     run.add_argument(
         "--no-save", action="store_true", help="do not write #500-#999 back to the persistent-variable file"
     )
@@ -65,7 +69,8 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
     err = err or sys.stderr
     path = Path(args.file)
     if args.max_blocks is not None and args.max_blocks < 1:
-        print("cncmacro run: --max-blocks must be at least 1", file=err)
+        print(pick(args.locale, "cncmacro run: --max-blocks must be at least 1", "cncmacro run：--max-blocks 至少为 1"),
+              file=err)  # fmt: skip
         return 2
     try:
         presets = dict(parse_preset(s) for s in args.set)
@@ -74,7 +79,10 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
             search_paths=[Path(p) for p in args.path],
         )  # fmt: skip
     except ValueError as e:
-        print(f"cncmacro run: {e}", file=err)
+        if is_chinese(args.locale) and e.args:
+            print(f"cncmacro run：{in_language(e.args[0], True)}", file=err)
+        else:
+            print(f"cncmacro run: {e}", file=err)
         return 2
     machine = prepared.machine
     dialect = machine.dialect
@@ -88,7 +96,8 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
         try:
             prepared.save()
         except OSError as e:
-            print(f"cncmacro run: could not save the persistent variables: {e}", file=err)
+            print(pick(args.locale, f"cncmacro run: could not save the persistent variables: {e}",
+                       f"cncmacro run：无法保存断电保持的公共变量（#500–#999）：{e}"), file=err)  # fmt: skip
     result = machine.result()
     if args.json:
         write_json(result_json(result, dialect.axes, args.locale), out)
@@ -149,39 +158,52 @@ def write_json(result: dict[str, Any], out: TextIO) -> None:
 
 
 def write_text(result: RunResult, machine: Machine, out: TextIO, locale: str | None = None) -> None:
+    """The run for a machinist, in English or (``zh`` locale) in Chinese: codes, file names,
+    numbers and the texts the program itself wrote stay as they are."""
     chinese = is_chinese(locale)
     axes = machine.dialect.axes
     moved = [i for i in range(len(axes)) if any(mv.start[i] != mv.end[i] or mv.end[i] for mv in result.moves)]
     if result.moves:
-        print(f"moves ({len(result.moves)}):", file=out)
+        count = len(result.moves)
+        print(f"运动（{count} 段）：" if chinese else f"moves ({count}):", file=out)
         shown = result.moves if len(result.moves) <= MAX_TEXT_MOVES else result.moves[: MAX_TEXT_MOVES // 2]
         for mv in shown:
             out.write(_move_line(mv, axes, moved))
         if len(shown) < len(result.moves):
             rest = result.moves[-MAX_TEXT_MOVES // 2 :]
-            print(f"  ... {len(result.moves) - len(shown) - len(rest)} more moves ...", file=out)
+            more = len(result.moves) - len(shown) - len(rest)
+            print(f"  …… 另有 {more} 段运动 ……" if chinese else f"  ... {more} more moves ...", file=out)
             for mv in rest:
                 out.write(_move_line(mv, axes, moved))
     for note in result.notes:
         where = f"{Path(note.file).name}:{note.line + 1}"
+        text = in_language(note.message, chinese)
         if note.kind == "output":
             print(f"DPRNT  {note.message}", file=out)
         elif note.kind == "message":
-            print(f"stop at {where}: {in_language(note.message, chinese)}", file=out)
+            print(f"停止（{where}）：{text}" if chinese else f"stop at {where}: {text}", file=out)
         elif note.kind == "call":
-            print(f"note at {where}: {in_language(note.message, chinese)}", file=out)
+            print(f"提示（{where}）：{text}" if chinese else f"note at {where}: {text}", file=out)
     if result.alarm is not None:
         a = result.alarm
-        print(f"ALARM {a.number}: {in_language(a.message, chinese)}", file=out)
-        print(f"  at {a.file}:{a.line + 1}", file=out)
+        text = in_language(a.message, chinese)
+        print(f"报警 {a.number}：{text}" if chinese else f"ALARM {a.number}: {text}", file=out)
+        print(f"  位置 {a.file}:{a.line + 1}" if chinese else f"  at {a.file}:{a.line + 1}", file=out)
         for site in reversed(a.chain[:-1]):
-            print(f"  called from {site.program} ({site.how}) at {site.file}:{site.line + 1}", file=out)
+            at = f"{site.file}:{site.line + 1}"
+            how = CALLED_HOW_ZH.get(site.how, site.how)
+            print(f"  调用自 {site.program}（{how}），位置 {at}" if chinese
+                  else f"  called from {site.program} ({site.how}) at {at}", file=out)  # fmt: skip
     elif result.status == LIMIT:
-        print(f"stopped after {result.blocks} blocks: the block budget ran out (an endless loop?)", file=out)
-    noun = "block" if result.blocks == 1 else "blocks"
-    print(f"status: {result.status} after {result.blocks} {noun}", file=out)
+        print(pick(locale, f"stopped after {result.blocks} blocks: the block budget ran out (an endless loop?)",
+                   f"执行 {result.blocks} 个程序段后停止：已达到程序段数上限（是否有死循环？）"), file=out)  # fmt: skip
+    if chinese:
+        print(f"状态：{STATUS_ZH.get(result.status, result.status)}，共执行 {result.blocks} 个程序段", file=out)
+    else:
+        noun = "block" if result.blocks == 1 else "blocks"
+        print(f"status: {result.status} after {result.blocks} {noun}", file=out)
     if result.variables:
-        print("variables:", file=out)
+        print("变量：" if chinese else "variables:", file=out)
         for n, v in result.variables.items():
             print(f"  #{n} = {format_plain(v)}", file=out)
 

@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..analysis.locale import pick
+from ..bilingual import in_language
 from ..library.files import BinaryFileError, read_program
 from ..library.programs import load_text
 from ..machine import Machine, MacroAlarm
@@ -326,7 +327,19 @@ class Breakpoints:
         try:
             bp.compiled = compile_condition(self.machine, bp.condition)
         except EvaluationError as e:
-            bp.verified, bp.message = False, f"condition '{bp.condition}': {e}"
+            bp.verified, bp.message = False, pick(
+                self.locale,
+                f"condition '{bp.condition}': {e}",
+                f"条件 '{bp.condition}'：{in_language(e.args[0], True)}",
+            )
+
+    def _unevaluated(self, bp: Breakpoint, e: EvaluationError) -> str:
+        """Why a breakpoint stopped although its condition could not be evaluated."""
+        return pick(
+            self.locale,
+            f"the condition '{bp.condition}' could not be evaluated: {e}",
+            f"条件 '{bp.condition}' 无法求值：{in_language(e.args[0], True)}",
+        )
 
     def prime(self) -> None:
         """Remember the values data breakpoints compare against (before a run goes on)."""
@@ -344,7 +357,7 @@ class Breakpoints:
                 if not holds(m, bp.compiled):
                     return False, None
             except EvaluationError as e:
-                return True, f"the condition '{bp.condition}' could not be evaluated: {e}"
+                return True, self._unevaluated(bp, e)
         bp.hits += 1
         if bp.hit_ok is not None and not bp.hit_ok(bp.hits):
             return False, None
@@ -427,8 +440,7 @@ class Breakpoints:
                     self._meet(db, m, met)
         return Visit(m.blocks, met, changes) if met else None
 
-    @staticmethod
-    def _meet(bp: Breakpoint, m: Machine, met: list[tuple[Breakpoint, str | None]]) -> None:
+    def _meet(self, bp: Breakpoint, m: Machine, met: list[tuple[Breakpoint, str | None]]) -> None:
         if bp.compiled is None:
             met.append((bp, None))
             return
@@ -436,7 +448,7 @@ class Breakpoints:
             if holds(m, bp.compiled):
                 met.append((bp, None))
         except EvaluationError as e:
-            met.append((bp, f"the condition '{bp.condition}' could not be evaluated: {e}"))
+            met.append((bp, self._unevaluated(bp, e)))
 
     def stop_back(self, visit: Visit, after: dict[int, int]) -> Hit | None:
         """Whether the forward run stopped (or would have stopped) at this earlier visit;

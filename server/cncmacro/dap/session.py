@@ -380,7 +380,7 @@ class Session:
         try:
             value = set_variable(m, number, "" if show.is_vacant_text(text) else text, level)
         except EvaluationError as e:
-            raise RequestFailed(f"#{number} = {text}: {e}") from None
+            raise RequestFailed(f"#{number} = {text}: {show.detail_text(e.args[0], self.locale)}") from None
         self.history.mark(m)
         self.breakpoints.prime()
         return {"value": show.show(value, self.locale), "variablesReference": 0}
@@ -399,7 +399,7 @@ class Session:
                 return {"result": f"#{number} = {show.show(value, self.locale)}", "variablesReference": 0}
             value = evaluate(m, text, level)
         except EvaluationError as e:
-            raise RequestFailed(str(e)) from None
+            raise RequestFailed(show.detail_text(e.args[0], self.locale)) from None
         return {"result": show.show(value, self.locale), "variablesReference": 0}
 
     def on_exceptionInfo(self, args: dict[str, Any]) -> dict[str, Any]:

@@ -13,15 +13,22 @@ import codecs
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..bilingual import detail
+
 # Program files are found by these endings (any case), or by an O-number name without one.
 PROGRAM_SUFFIXES = frozenset({".nc", ".cnc", ".mac", ".prg", ".tap", ".eia"})
 
 
 class BinaryFileError(Exception):
-    """The file is not text; ``offset`` is where the first NUL (or the evidence) is."""
+    """The file is not text; ``offset`` is where the first NUL (or the evidence) is. ``message``
+    says so in English and in Chinese (``str`` of the error is the English)."""
 
     def __init__(self, path: str, offset: int) -> None:
-        super().__init__(f"{path}: binary file (byte at offset {offset} is not program text), not a program")
+        self.message = detail(
+            f"{path}: binary file (byte at offset {offset} is not program text), not a program",
+            f"{path}：二进制文件（偏移 {offset} 处的字节不是程序文本），不是程序",
+        )
+        super().__init__(self.message)
         self.path = path
         self.offset = offset
 

@@ -14,7 +14,7 @@ import re
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
-from ..bilingual import detail
+from ..bilingual import detail, in_language
 from ..dialects.alarms import (
     LOOP_NUMBER,
     MISSING_END,
@@ -239,7 +239,10 @@ class CompiledFile:
             number = int(said.group(1)) if said else STATEMENT_FORMAT
             return raiser(
                 number,
-                detail(f"the block does not parse: {problem.message}", f"程序段无法解析：{problem.message}"),
+                detail(
+                    f"the block does not parse: {problem.message}",
+                    f"程序段无法解析：{in_language(problem.message, True)}",
+                ),
             )
         if block.program is not None:
             return self._header(block, pc, nxt)

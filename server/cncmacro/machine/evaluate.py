@@ -17,6 +17,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from ..bilingual import Detail, detail, in_language
 from ..syntax.block_parser import parse_block
 from ..syntax.nodes import Assign, Block, If, Var
 from .alarms import MacroAlarm
@@ -29,6 +30,7 @@ if TYPE_CHECKING:
 Value = float | None
 
 _COLUMN = re.compile(r"column (\d+)")
+_COLUMN_ZH = re.compile(r"第 (\d+) 列")
 _ASSIGNMENT = re.compile(r"^\s*#[^=]*?(?<![=!<>])=(?!=)")
 MAX_TEXT = 1000
 
@@ -48,16 +50,29 @@ class CompiledText:
 
 def _block(text: str, prefix: str, suffix: str) -> Block:
     if len(text) > MAX_TEXT:
-        raise EvaluationError(f"the text is too long ({len(text)} characters, at most {MAX_TEXT})")
+        raise EvaluationError(
+            detail(
+                f"the text is too long ({len(text)} characters, at most {MAX_TEXT})",
+                f"文本过长（{len(text)} 个字符，最多 {MAX_TEXT} 个）",
+            )
+        )
     if "\n" in text or "\r" in text:
-        raise EvaluationError("one line of macro text only")
+        raise EvaluationError(detail("one line of macro text only", "只能输入一行宏语句"))
     block = parse_block(prefix + text + suffix)
     error = next((p for p in block.problems if p.severity == "error"), None)
     if error is not None:
-        shift = len(prefix)
-        message = _COLUMN.sub(lambda m: f"column {max(1, int(m.group(1)) - shift)}", error.message)
-        raise EvaluationError(message)
+        raise EvaluationError(_shifted(error.message, len(prefix)))
     return block
+
+
+def _shifted(message: str, shift: int) -> str:
+    """A syntax message about the line built around the text, with its columns counted from
+    the text as typed, in both languages."""
+    en = _COLUMN.sub(lambda m: f"column {max(1, int(m.group(1)) - shift)}", message)
+    zh = getattr(message, "zh", None)
+    if zh is None:
+        return en
+    return Detail(en, _COLUMN_ZH.sub(lambda m: f"第 {max(1, int(m.group(1)) - shift)} 列", zh))
 
 
 def is_assignment(text: str) -> bool:
@@ -69,7 +84,7 @@ def compile_expression(machine: Machine, text: str) -> CompiledText:
     """``text`` as a value (``#1+#2*2``, ``#[#100]``, ``SIN[30]``)."""
     block = _block(text.strip(), "#1=", "")
     if len(block.statements) != 1 or block.words or not isinstance(block.statements[0], Assign):
-        raise EvaluationError(f"'{text.strip()}' is not an expression")
+        raise EvaluationError(detail(f"'{text.strip()}' is not an expression", f"'{text.strip()}' 不是表达式"))
     return CompiledText(text, value=ExpressionCompiler(machine.kinds).value(block.statements[0].value))
 
 
@@ -84,7 +99,7 @@ def compile_condition(machine: Machine, text: str) -> CompiledText:
         block = _block(stripped, "IF", "GOTO1")
     statement = block.statements[0] if len(block.statements) == 1 else None
     if not isinstance(statement, If) or block.words:
-        raise EvaluationError(f"'{stripped}' is not a condition")
+        raise EvaluationError(detail(f"'{stripped}' is not a condition", f"'{stripped}' 不是条件"))
     return CompiledText(text, test=ExpressionCompiler(machine.kinds).condition(statement.condition))
 
 
@@ -105,9 +120,16 @@ def _guarded(machine: Machine, level: int | None, action: Callable[[], object]) 
         try:
             return action()
         except MacroAlarm as e:
-            raise EvaluationError(f"alarm {e.number}: {e.message}") from None
+            raise EvaluationError(
+                detail(f"alarm {e.number}: {e.message}", f"报警 {e.number}：{in_language(e.message, True)}")
+            ) from None
         except StopRequest as e:
-            raise EvaluationError(f"the text stops the run ({e.message}); it was not run") from None
+            raise EvaluationError(
+                detail(
+                    f"the text stops the run ({e.message}); it was not run",
+                    f"这段文本会停止运行（{in_language(e.message, True)}），未执行",
+                )
+            ) from None
 
 
 def value_of(machine: Machine, compiled: CompiledText, level: int | None = None) -> Value:
@@ -135,7 +157,12 @@ def assign(machine: Machine, text: str, level: int | None = None) -> tuple[int, 
     block = _block(text.strip(), "", "")
     statement = block.statements[0] if len(block.statements) == 1 else None
     if not isinstance(statement, Assign) or block.words or block.label is not None:
-        raise EvaluationError(f"'{text.strip()}' is not an assignment such as #100=5")
+        raise EvaluationError(
+            detail(
+                f"'{text.strip()}' is not an assignment such as #100=5",
+                f"'{text.strip()}' 不是赋值语句（例如 #100=5）",
+            )
+        )
     compiler = ExpressionCompiler(machine.kinds)
     value = compiler.value(statement.value)
     target = statement.target

@@ -53,7 +53,7 @@ def machine_settings(program: Path, machine_file: Path | str | None = None) -> M
         found = find_machine_file(program)
         return load_machine_file(found) if found is not None else MachineSettings()
     except MachineFileError as e:
-        raise SetupError(str(e)) from None
+        raise SetupError(e.args[0]) from None  # its text, with the Chinese beside it
 
 
 def prepare_run(
@@ -83,6 +83,6 @@ def prepare_run(
         machine.load_persistent(load_persistent(persistent))
         machine.apply_presets(presets or {})
     except (PersistentFileError, ValueError) as e:
-        raise SetupError(str(e)) from None
+        raise SetupError(e.args[0] if e.args else str(e)) from None  # keeps a Chinese text
     machine.start_file(str(program), source.text)
     return PreparedRun(machine, persistent)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from ..bilingual import Detail, detail
 from .lines import Prepared
 from .nodes import Assign, Block, Comment, Do, End, If, Number, Problem, While, Word
 
@@ -22,14 +23,14 @@ def assemble(items: Sequence[object], prep: Prepared) -> Block:
     n = len(items)
     if n and _is_word(items[0], "O"):
         w = items[0]
-        number = _whole_literal(w, "a program number", problems)  # type: ignore[arg-type]
+        number = _whole_literal(w, *_PROGRAM_NUMBER, problems)  # type: ignore[arg-type]
         if number is not None:
             program, program_span = number, (w.start, w.end)  # type: ignore[union-attr]
             title = _first_comment_text(prep.comments)
         i = 1
     if i < n and _is_word(items[i], "N"):
         w = items[i]
-        number = _whole_literal(w, "a sequence number", problems)  # type: ignore[arg-type]
+        number = _whole_literal(w, *_SEQUENCE_NUMBER, problems)  # type: ignore[arg-type]
         if number is not None:
             label, label_span = number, (w.start, w.end)  # type: ignore[union-attr]
         i += 1
@@ -79,14 +80,31 @@ def _is_word(item: object, letter: str) -> bool:
     return isinstance(item, Word) and item.letter == letter
 
 
-def _whole_literal(w: Word, what: str, problems: list[Problem]) -> int | None:
-    """The value of an O or N word, which must be a whole literal number."""
+_PROGRAM_NUMBER = (
+    detail(
+        "a program number must be written as a number, not a variable or expression",
+        "程序号必须直接写成数字，不能使用变量或表达式",
+    ),
+    detail("a program number must be a whole number", "程序号必须是整数"),
+)
+_SEQUENCE_NUMBER = (
+    detail(
+        "a sequence number must be written as a number, not a variable or expression",
+        "顺序号必须直接写成数字，不能使用变量或表达式",
+    ),
+    detail("a sequence number must be a whole number", "顺序号必须是整数"),
+)
+
+
+def _whole_literal(w: Word, not_literal: Detail, not_whole: Detail, problems: list[Problem]) -> int | None:
+    """The value of an O or N word, which must be a whole literal number (what to say when it
+    is not a literal, and when it is not whole)."""
     v = w.value
     if not isinstance(v, Number):
-        problems.append(Problem(f"{what} must be written as a number, not a variable or expression", w.start, w.end))
+        problems.append(Problem(not_literal, w.start, w.end))
         return None
     if v.value != int(v.value) or v.value < 0:
-        problems.append(Problem(f"{what} must be a whole number", w.start, w.end))
+        problems.append(Problem(not_whole, w.start, w.end))
         return None
     return int(v.value)
 

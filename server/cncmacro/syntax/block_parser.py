@@ -15,6 +15,7 @@ from contextlib import contextmanager
 
 from lark.exceptions import UnexpectedInput
 
+from ..bilingual import detail
 from .assemble import assemble, assemble_words
 from .fastpath import plain_words, read_items
 from .grammar import BlockError, make_parser
@@ -57,7 +58,8 @@ def parse_with_grammar(code: str, prep: Prepared) -> Block:
     except BlockError as err:
         return _failed(prep, Problem(err.message, err.start, err.end))
     except RecursionError:
-        return _failed(prep, Problem("the block is nested too deeply to read", 0, len(code)))
+        return _failed(prep, Problem(detail("the block is nested too deeply to read", "程序段嵌套过深，无法读取"), 0,
+                                     len(code)))  # fmt: skip
     return assemble(items, prep)
 
 
@@ -67,8 +69,11 @@ def parse_block(line: str) -> Block:
         return Block(
             problems=(
                 Problem(
-                    f"block of {len(line)} characters is too long to be a program line "
-                    f"(at most {MAX_BLOCK_CHARS}); not read",
+                    detail(
+                        f"block of {len(line)} characters is too long to be a program line "
+                        f"(at most {MAX_BLOCK_CHARS}); not read",
+                        f"程序段长 {len(line)} 个字符，超出一行程序的上限（最多 {MAX_BLOCK_CHARS} 个字符），未读取",
+                    ),
                     0,
                     len(line),
                 ),

@@ -3,7 +3,8 @@
 The grammar lives in ``block.lark``. Nodes are built inside the parse (lark's inline
 transformer), so no intermediate parse tree is made. Rules the language imposes on top of the
 grammar (comparisons only in IF/WHILE conditions, ``AND``/``OR`` joining bracketed
-conditions, whole loop numbers) raise ``BlockError`` with a plain-words message.
+conditions, whole loop numbers) raise ``BlockError`` with a plain-words message (English, with
+its Chinese beside it).
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from importlib import resources
 
 from lark import Lark, Token, Transformer, Tree
 
+from ..bilingual import Detail, detail
 from .nodes import (
     Assign,
     Binary,
@@ -40,7 +42,7 @@ RELATION_NAMES = {"==": "EQ", "!=": "NE", ">": "GT", ">=": "GE", "<": "LT", "<="
 class BlockError(Exception):
     """A rule of the language broken by a line that the grammar itself accepts."""
 
-    def __init__(self, message: str, start: int, end: int) -> None:
+    def __init__(self, message: Detail, start: int, end: int) -> None:
         super().__init__(message)
         self.message = message
         self.start = start
@@ -217,7 +219,10 @@ def _has_relation(expr: Expr) -> bool:
 def _relation_error(expr: Expr) -> BlockError:
     rel = _find_relation(expr)
     return BlockError(
-        f"the comparison '{rel.spelling}' is allowed only in an IF or WHILE condition (alarm 114)",
+        detail(
+            f"the comparison '{rel.spelling}' is allowed only in an IF or WHILE condition (alarm 114)",
+            f"关系运算符 '{rel.spelling}' 只能用在 IF 或 WHILE 的条件中（报警 114）",
+        ),
         rel.start,
         rel.end,
     )
@@ -257,13 +262,18 @@ def _check_condition(cond: Bracket) -> None:
             continue
         if _has_relation(inner):
             raise BlockError(
-                "conditions are joined with AND/OR only when each side is bracketed: "
-                "[[#1 EQ 0] OR [#2 LT 0]]",
+                detail(
+                    "conditions are joined with AND/OR only when each side is bracketed: [[#1 EQ 0] OR [#2 LT 0]]",
+                    "用 AND/OR 连接条件时，每个条件都要加方括号：[[#1 EQ 0] OR [#2 LT 0]]",
+                ),
                 b.start,
                 b.end,
             )
         raise BlockError(
-            "the condition needs a comparison such as [#1 GT 0] (EQ NE GT GE LT LE)",
+            detail(
+                "the condition needs a comparison such as [#1 GT 0] (EQ NE GT GE LT LE)",
+                "条件中需要关系运算，例如 [#1 GT 0]（EQ NE GT GE LT LE）",
+            ),
             b.start,
             b.end,
         )

@@ -12,10 +12,13 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from ..bilingual import detail
 from .nodes import Comment, Problem
 
 _BLOCK_DELETE = re.compile(r"[ \t]*/[ \t]*([1-9](?![0-9.]))?")
 _SPECIAL = re.compile("[(;\uff1b/%]")
+_UNCLOSED_COMMENT = detail("comment not closed: ')' is missing", "注释没有结束：缺少 ')'")
+_FULL_WIDTH_END = detail("full-width '；' read as the end-of-block ';'", "全角 '；' 按程序段结束符 ';' 处理")
 
 
 @dataclass(slots=True)
@@ -58,7 +61,7 @@ def prepare(line: str) -> Prepared:
             close = line.find(")", i + 1)
             if close < 0:
                 comments.append(Comment(line[i + 1 :], False, i, n))
-                problems.append(Problem("comment not closed: ')' is missing", i, n, "warning"))
+                problems.append(Problem(_UNCLOSED_COMMENT, i, n, "warning"))
                 pieces.append(" " * (n - i))
                 break
             comments.append(Comment(line[i + 1 : close], True, i, close + 1))
@@ -67,7 +70,7 @@ def prepare(line: str) -> Prepared:
             continue
         # an end-of-block mark: the rest may hold only comments, blanks and more marks
         if ch == "\uff1b":
-            problems.append(Problem("full-width '；' read as the end-of-block ';'", i, i + 1, "warning"))
+            problems.append(Problem(_FULL_WIDTH_END, i, i + 1, "warning"))
         pieces.append(" " * (n - i))
         _scan_after_end(line, i + 1, comments, problems)
         break
@@ -104,14 +107,16 @@ def _scan_after_end(line: str, pos: int, comments: list[Comment], problems: list
             end = n if close < 0 else close + 1
             comments.append(Comment(line[pos + 1 : end - 1 if close >= 0 else n], close >= 0, pos, end))
             if close < 0:
-                problems.append(Problem("comment not closed: ')' is missing", pos, n, "warning"))
+                problems.append(Problem(_UNCLOSED_COMMENT, pos, n, "warning"))
             pos = end
         else:
             end = len(line.rstrip())
             problems.append(
                 Problem(
-                    "text after the end-of-block ';': one line holds one block, "
-                    "so this text is not read",
+                    detail(
+                        "text after the end-of-block ';': one line holds one block, so this text is not read",
+                        "程序段结束符 ';' 之后还有内容：一行只能写一个程序段，这些内容不会被读取",
+                    ),
                     pos,
                     end,
                 )

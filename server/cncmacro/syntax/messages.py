@@ -1,31 +1,35 @@
-"""Plain-words messages for lines the grammar rejects.
+"""Plain-words messages for lines the grammar rejects, in English and in Chinese.
 
 Lark reports an unexpected character or token with the names of the terminals it expected.
 A CNC programmer wants to read "expected ']' to close the '[' at column 5" or "expected a
-value after 'X'", so this module turns lark's exceptions into a ``Problem`` with a range.
+value after 'X'", so this module turns lark's exceptions into a ``Problem`` with a range and a
+message that carries its Chinese (``bilingual.Detail``) for the front ends to choose.
 """
 
 from __future__ import annotations
 
+import re
+
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 
+from ..bilingual import Detail, detail, in_language
 from .nodes import Problem
 
-_NAMES = {
-    "NUMBER": "a number",
-    "VARNUM": "a variable such as #1",
+_NAMES: dict[str, str] = {
+    "NUMBER": detail("a number", "数值"),
+    "VARNUM": detail("a variable such as #1", "变量（如 #1）"),
     "HASH": "'#'",
     "LSQB": "'['",
     "RSQB": "']'",
-    "LETTER": "an address such as X or G",
-    "P_LETTER": "an address such as X or G",
-    "BRACKET_NAME": "a program name in brackets",
-    "SIGN": "'+' or '-'",
-    "ADDOP": "OR or XOR",
-    "MULOP": "'*', '/', AND or MOD",
-    "RELOP": "a comparison (EQ NE GT GE LT LE)",
+    "LETTER": detail("an address such as X or G", "地址（如 X 或 G）"),
+    "P_LETTER": detail("an address such as X or G", "地址（如 X 或 G）"),
+    "BRACKET_NAME": detail("a program name in brackets", "方括号中的程序名"),
+    "SIGN": detail("'+' or '-'", "'+' 或 '-'"),
+    "ADDOP": detail("OR or XOR", "OR 或 XOR"),
+    "MULOP": detail("'*', '/', AND or MOD", "'*'、'/'、AND 或 MOD"),
+    "RELOP": detail("a comparison (EQ NE GT GE LT LE)", "关系运算符（EQ NE GT GE LT LE）"),
     "EQUALS": "'='",
-    "FUNC": "a function such as SIN",
+    "FUNC": detail("a function such as SIN", "函数（如 SIN）"),
     "ATAN": "ATAN",
     "ATAN_SEP": "'/'",
     "IF": "IF",
@@ -38,9 +42,13 @@ _NAMES = {
     "PCLOS": "PCLOS",
     "DPRNT": "DPRNT",
     "BPRNT": "BPRNT",
-    "DPRNT_ARGS": "'[' with the text to print",
-    "$END": "the end of the block",
+    "DPRNT_ARGS": detail("'[' with the text to print", "'[' 及要输出的内容"),
+    "$END": detail("the end of the block", "程序段结束"),
 }
+_ANOTHER_ITEM = detail("another word or statement", "其他代码字或宏语句")
+_A_VALUE = detail("a value (a number, #variable or [expression])", "数值（数字、#变量或 [表达式]）")
+_NOTHING_EXPECTED = Detail("", "")
+_CJK = re.compile("[\u4e00-\u9fff]")
 
 # What a bare value looks like, to say "expected a value" instead of listing six terminals.
 _VALUE_START = {"NUMBER", "VARNUM", "HASH", "LSQB", "SIGN"}
@@ -58,12 +66,15 @@ def describe_error(code: str, err: UnexpectedInput) -> Problem:
         pos = err.pos_in_stream
         ch = code[pos] if pos < len(code) else ""
         if ch == "]" and unclosed is None:
-            return Problem("']' without a matching '['", pos, pos + 1)
+            return Problem(detail("']' without a matching '['", "']' 没有与之配对的 '['"), pos, pos + 1)
         if unclosed is not None and ch not in "[]":
             return _unclosed_problem(code, unclosed, pos)
         expected = _expected_text(set(err.allowed or ()))
-        what = f"'{ch}'" if ch.isprintable() else f"character U+{ord(ch):04X}"
-        return Problem(f"unexpected {what}{expected}", pos, pos + 1)
+        if ch.isprintable():
+            return Problem(detail(f"unexpected '{ch}'{expected}", f"此处不应出现 '{ch}'{expected.zh}"), pos, pos + 1)
+        point = f"U+{ord(ch):04X}"
+        message = detail(f"unexpected character {point}{expected}", f"此处不应出现字符 {point}{expected.zh}")
+        return Problem(message, pos, pos + 1)
     if isinstance(err, UnexpectedToken):
         tok = err.token
         expected_set = set(err.expected or ())
@@ -72,34 +83,47 @@ def describe_error(code: str, err: UnexpectedInput) -> Problem:
             if unclosed is not None:
                 return _unclosed_problem(code, unclosed, end)
             start = max(0, end - 1)
-            return Problem(f"the block ends too early{_expected_text(expected_set)}", start, end)
+            expected = _expected_text(expected_set)
+            return Problem(detail(f"the block ends too early{expected}", f"程序段提前结束{expected.zh}"), start, end)
         start = tok.start_pos if tok.start_pos is not None else 0
         end = tok.end_pos if tok.end_pos is not None else start + 1
         if tok.type == "RSQB" and unclosed is None and "RSQB" not in expected_set:
-            return Problem("']' without a matching '['", start, end)
+            return Problem(detail("']' without a matching '['", "']' 没有与之配对的 '['"), start, end)
         if tok.type == "RELOP" and "RELOP" not in expected_set:
             if _open_bracket_before(code, start):
-                msg = f"unexpected comparison '{tok}': join conditions as [[a EQ b] AND [c EQ d]]"
+                message = detail(
+                    f"unexpected comparison '{tok}': join conditions as [[a EQ b] AND [c EQ d]]",
+                    f"此处不应出现关系运算符 '{tok}'：多个条件应写成 [[a EQ b] AND [c EQ d]]",
+                )
             else:
-                msg = f"the comparison '{tok}' is allowed only inside the [ ] of an IF or WHILE condition"
-            return Problem(msg, start, end)
+                message = detail(
+                    f"the comparison '{tok}' is allowed only inside the [ ] of an IF or WHILE condition",
+                    f"关系运算符 '{tok}' 只能用在 IF 或 WHILE 条件的 [ ] 中",
+                )
+            return Problem(message, start, end)
         if tok.type == "NUMBER" and "NUMBER" not in expected_set:
             return Problem(
-                f"unexpected number '{tok}': an address letter such as X must come before a value",
+                detail(
+                    f"unexpected number '{tok}': an address letter such as X must come before a value",
+                    f"此处不应出现数值 '{tok}'：数值之前必须有地址字母，如 X",
+                ),
                 start,
                 end,
             )
         if unclosed is not None and "RSQB" in expected_set and tok.type not in ("LSQB",):
             return _unclosed_problem(code, unclosed, start)
-        return Problem(f"unexpected '{tok}'{_expected_text(expected_set)}", start, end)
+        expected = _expected_text(expected_set)
+        return Problem(detail(f"unexpected '{tok}'{expected}", f"此处不应出现 '{tok}'{expected.zh}"), start, end)
     pos = getattr(err, "pos_in_stream", 0) or 0
-    return Problem("the block does not parse", pos, pos + 1)
+    return Problem(detail("the block does not parse", "程序段无法解析"), pos, pos + 1)
 
 
 def _unclosed_problem(code: str, bracket: int, at: int) -> Problem:
     at = min(at, len(code))
     end = max(at, len(code.rstrip()))
-    return Problem(f"expected ']' to close the '[' at column {bracket + 1}", at, max(end, at + 1))
+    column = bracket + 1
+    message = detail(f"expected ']' to close the '[' at column {column}", f"缺少 ']'：第 {column} 列的 '[' 没有闭合")
+    return Problem(message, at, max(end, at + 1))
 
 
 def _open_bracket_before(code: str, pos: int) -> bool:
@@ -118,20 +142,24 @@ def _unclosed_bracket(code: str) -> int | None:
     return stack[-1] if stack else None
 
 
-def _expected_text(expected: set[str]) -> str:
+def _expected_text(expected: set[str]) -> Detail:
+    """"; expected a, b" (and its Chinese) for the terminals lark expected, or nothing."""
     if not expected:
-        return ""
+        return _NOTHING_EXPECTED
     names: list[str] = []
     if len(expected & _ITEM_START) >= 5:
-        names.append("another word or statement")
+        names.append(_ANOTHER_ITEM)
         expected = expected - _ITEM_START
     if {"NUMBER", "VARNUM", "LSQB"} <= expected:
-        names.append("a value (a number, #variable or [expression])")
+        names.append(_A_VALUE)
         expected = expected - _VALUE_START - {"FUNC", "ATAN"}
     names += _names(expected)
     if len(names) > 5:
         names = [*names[:5], "..."]
-    return "; expected " + ", ".join(names)
+    shown = [in_language(n, True) for n in names if n != "..."]
+    chinese = "、".join(shown) + ("等" if len(shown) < len(names) else "")  # "..." reads "等" in Chinese
+    listed = Detail(", ".join(names), chinese if _CJK.match(chinese) else " " + chinese)  # "应为数值", "应为 '['"
+    return detail(f"; expected {listed}", f"；应为{listed.zh}")
 
 
 def _names(terms: set[str]) -> list[str]:
