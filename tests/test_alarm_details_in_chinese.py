@@ -406,3 +406,16 @@ def test_6_alarms_the_debugger_console_answers_in_the_client_language(tmp_path: 
         "expected ']' to close the '[' at column 3",
         "alarm 116: #5001 is read-only",
     ]
+
+
+def test_6_alarms_the_debugger_console_names_a_pause_in_the_client_language(tmp_path: Path) -> None:
+    f = tmp_path / "O0001.nc"
+    f.write_text("O0001\n#3006=1(MEASURE)\nM30\n", encoding="utf-8")
+
+    def console(locale: str) -> list[str]:
+        messages, _ = debug(f, locale)
+        return [m["body"]["output"] for m in messages if m.get("event") == "output"
+                and m["body"].get("category") == "console" and "MEASURE" in m["body"]["output"]]  # fmt: skip
+
+    assert console("zh-CN") == ["停止（O0001.nc:2）：MEASURE\n"]  # the program's own text as written
+    assert console("en") == ["stop at O0001.nc:2: MEASURE\n"]

@@ -142,6 +142,18 @@ def test_the_end_of_the_program_is_a_stop_and_the_next_run_ends_the_session(tmp_
     assert stepper.run(CONTINUE).finished
 
 
+def test_a_step_back_from_the_end_of_a_file_without_m30_lands_on_its_last_block(tmp_path):
+    # running off the end of the file counts as a block, but there is nothing there to show
+    stepper, _bps, _path = session(tmp_path, lines("O0001", "#100=1", "#101=2", "", "(END OF PART)"))
+    stop = stepper.run(CONTINUE)
+    assert (stop.reason, stop.description) == ("step", "program end")
+    stepper.step_back()
+    m = stepper.machine
+    assert (m.frames[-1].pc + 1, m.C[100], m.C[101]) == (3, 1.0, None)  # before #101=2, not past the end
+    stepper.step_back()
+    assert (m.frames[-1].pc + 1, m.C[100]) == (2, None)
+
+
 def test_an_alarm_still_stops_as_an_exception_at_the_end(tmp_path):
     stepper, _bps, _path = session(tmp_path, lines("#100=1", "#3000=5(TOO DEEP)", "M30"))
     stop = stepper.run(CONTINUE)

@@ -194,7 +194,10 @@ class Stepper:
     def step_back(self) -> Stop:
         """Back one block (to the start of the kept history at most)."""
         m = self.machine
-        if self._back(m.blocks - 1) is None:
+        back = 1
+        if m.status == COMPLETED and _end_code(m) is None:
+            back = 2  # running off the file's end (or into the next O header) counted as a block
+        if self._back(m.blocks - back) is None:
             return Stop("step")
         return Stop("entry", pick(self.locale, "the start of the kept history", "保留的历史的起点"))
 
@@ -247,9 +250,11 @@ class Stepper:
             if note.kind == "output":
                 self.output(note.message + "\n", "stdout")
             elif note.kind == "message":
-                self.output(f"stop at {where}: {detail_text(note.message, self.locale)}\n", "console")
+                text = detail_text(note.message, self.locale)
+                self.output(pick(self.locale, f"stop at {where}: {text}\n", f"停止（{where}）：{text}\n"), "console")
             else:
-                self.output(f"note at {where}: {detail_text(note.message, self.locale)}\n", "console")
+                text = detail_text(note.message, self.locale)
+                self.output(pick(self.locale, f"note at {where}: {text}\n", f"提示（{where}）：{text}\n"), "console")
         self.notes_sent = len(m.notes)
 
 
