@@ -80,6 +80,21 @@ def test_json_moves_one_to_a_line(examples):
     assert out.splitlines()[1] == ' "status": "completed",'  # the rest stays indented
 
 
+def test_json_arc_moves_carry_their_centre(tmp_path):
+    """A G02/G03 move gets ``centre`` (axis letters as in ``from``/``to``); no other move has
+    the key, and the text output shows moves as before."""
+    f = tmp_path / "O0003.nc"
+    f.write_text("O0003\nG90 G17 G00 X10. Y0\nG03 X0 Y10. I-10. F100\nG02 X10. Y0 R-10.\nG01 X0\nM30\n")
+    code, out, _ = cli("run", "--json", str(f))
+    moves = json.loads(out)["moves"]
+    assert code == 0 and [mv["mode"] for mv in moves] == ["G00", "G03", "G02", "G01"]
+    assert moves[1]["centre"] == {"X": 0.0, "Y": 0.0, "Z": 0.0, "A": 0.0}
+    assert moves[2]["centre"] == {"X": 10.0, "Y": 10.0, "Z": 0.0, "A": 0.0}  # R-10: the longer arc
+    assert "centre" not in moves[0] and "centre" not in moves[3]
+    code, out, _ = cli("run", str(f))
+    assert code == 0 and "G03  X10.000 Y0.000 -> X0.000 Y10.000  F100" in out
+
+
 def test_alarm_in_json_and_text(tmp_path):
     f = tmp_path / "O0001.nc"
     f.write_text("O0001\n#1=1\nG65 P9000\nM30\nO9000\n#3000=7(NO X GIVEN)\nM99\n", encoding="utf-8")

@@ -24,7 +24,8 @@ def plain_line(draw: st.DrawFn, dialect: str) -> str:
     letters = AXES[dialect]
     words = []
     if draw(st.booleans()):
-        words.append("G" + draw(st.sampled_from(["0", "00", "1", "01", "2", "3", "90", "91", "94", "17", "4"])))
+        codes = ["0", "00", "1", "01", "2", "3", "90", "91", "94", "17", "18", "19", "4"]
+        words.append("G" + draw(st.sampled_from(codes)))
     for letter in draw(st.lists(st.sampled_from(letters + "FSRIJK"), min_size=1, max_size=5)):
         whole = draw(st.integers(-500, 500))
         decimals = draw(st.sampled_from(["", ".", ".5", ".25", ".125", ".0625", ".33333"]))

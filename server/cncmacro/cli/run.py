@@ -123,20 +123,25 @@ def result_json(result: RunResult, axes: tuple[str, ...], locale: str | None = N
         "alarm": alarm,
         "blocks": result.blocks,
         "variables": {str(k): v for k, v in result.variables.items()},
-        "moves": [
-            {
-                "file": mv.file,
-                "line": mv.line + 1,
-                "mode": MODE_NAMES.get(mv.mode, f"G{mv.mode:g}"),
-                "from": dict(zip(axes, mv.start, strict=True)),
-                "to": dict(zip(axes, mv.end, strict=True)),
-                "feed": mv.feed,
-            }
-            for mv in result.moves
-        ],
+        "moves": [_move_json(mv, axes) for mv in result.moves],
         "output": result.output,
         "messages": [in_language(n.message, chinese) for n in result.notes if n.kind in ("message", "call")],
     }
+
+
+def _move_json(mv: Move, axes: tuple[str, ...]) -> dict[str, Any]:
+    """A move for ``--json``; an arc (G02/G03) also gets its ``centre``, axis by axis."""
+    move = {
+        "file": mv.file,
+        "line": mv.line + 1,
+        "mode": MODE_NAMES.get(mv.mode, f"G{mv.mode:g}"),
+        "from": dict(zip(axes, mv.start, strict=True)),
+        "to": dict(zip(axes, mv.end, strict=True)),
+        "feed": mv.feed,
+    }
+    if mv.centre is not None:
+        move["centre"] = dict(zip(axes, mv.centre, strict=True))
+    return move
 
 
 def write_json(result: dict[str, Any], out: TextIO) -> None:

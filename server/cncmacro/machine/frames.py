@@ -68,8 +68,10 @@ class ModalCall:
 
 class Move(NamedTuple):
     """One executed motion: where (file, 0-based line), the motion code (0, 1, 2, 3, a cycle
-    or 31 for a skip), and the end points in work coordinates before and after, one value
-    per axis in the dialect's order."""
+    or 31 for a skip), the end points in work coordinates before and after, one value per
+    axis in the dialect's order, the feed, and for a G02/G03 arc its centre (arcs.py): one
+    value per axis like the end points (X a diameter on a lathe), the axes off the arc's
+    plane keeping their start values; None for every other move."""
 
     file: str
     line: int
@@ -77,6 +79,7 @@ class Move(NamedTuple):
     start: tuple[float, ...]
     end: tuple[float, ...]
     feed: float
+    centre: tuple[float, ...] | None
 
     def text(self, axes: tuple[str, ...], shown: list[int] | None = None) -> str:
         """``G01  X0.000 Y0.000 -> X10.000 Y5.000  F200`` for a person: the axes in ``shown``

@@ -5,18 +5,21 @@ updates the modal groups and the last F, S, T, M, D, H values; moves the axes (G
 points, G90/G91, and on a lathe U/V/W as incremental X/Y/Z); applies work offsets
 (G54–G59, G54.1 Pn, external), tool offsets (lathe T codes, G43/G44 H) and coordinate
 setting (G92, or G50 on a lathe); handles G04, G10, G28, G31, G53 and canned cycles; and
-records every move. Which modal group a G code belongs to comes from the dialect's table.
+records every move, a G02/G03 arc with its centre (arcs.py). Which modal group a G code
+belongs to comes from the dialect's table.
 Values arrive already rounded to their address's increment.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
+from .arcs import ARC_MODES, arc_centre, arc_planes
 from .frames import Move
 
 if TYPE_CHECKING:
@@ -72,6 +75,8 @@ class Motion:
         self._lathe = self.dialect.lathe
         self._plain_kinds: dict[str, Any] | None = None
         self._plain_groups: dict[float, str] | None = None
+        self._arc_planes = arc_planes(self.axis_index)
+        self._diameter = self.axis_index.get("X", -1) if self._lathe else -1
 
     # ---------------------------------------------------------------- positions
     def work_offset(self, axis: int) -> float:
@@ -217,6 +222,8 @@ class Motion:
             for letter, v in code_sets:
                 codes[letter] = v
         if not axes and not inc:
+            if plan[4] and modal["motion"] in ARC_MODES:  # I, J, K alone may be a full circle
+                return self._cycle_fallback(plan, file, line)
             return False
         mode = modal["motion"]
         if mode in self._cycle_codes or (modal["canned"] != 80.0 and not self._lathe):
@@ -232,7 +239,9 @@ class Motion:
         for i, v in inc:
             target[i] += v
         self.pos = target
-        self._record(file, line, mode, tuple(start), tuple(target))
+        extra = plan[4]
+        centre = self.arc_centre(mode, start, target, dict(extra)) if extra and mode in ARC_MODES else None
+        self._record(file, line, mode, tuple(start), tuple(target), centre)
         return True
 
     def _cycle_fallback(self, plan: tuple[Any, ...], file: str, line: int) -> bool:
@@ -291,19 +300,47 @@ class Motion:
 
         if one_shot is not None:
             return self._one_shot(one_shot, axes, incremental, other, file, line)
-        if not axes and not incremental:
-            return False, None
-        target = self._target(axes, incremental)
         mode = self.modal.get("motion", 0.0)
         canned = self.modal.get("canned", 80.0)
+        if not axes and not incremental:
+            return self._full_circle(mode, canned, other, file, line), None
+        target = self._target(axes, incremental)
         if not self.dialect.lathe and canned != 80.0:
             self._drill(canned, target, other, file, line)
             return True, None
         if mode in self.dialect.cycle_codes:
             self._record(file, line, mode, tuple(self.pos), tuple(target))
             return True, None  # a turning cycle ends where it started
-        self._move(file, line, mode, target)
+        self._move(file, line, mode, target, self._block_arc(mode, target, other))
         return True, None
+
+    def arc_centre(
+        self, mode: float, start: Sequence[float], end: Sequence[float], words: dict[str, float]
+    ) -> tuple[float, ...] | None:
+        """The centre of a G02 (``mode`` 2) or G03 arc from ``start`` to ``end`` in the plane in
+        force, from the block's R, I, J, K ``words`` (arcs.py); None when they name none."""
+        plane = self._arc_planes.get(self.modal.get("plane", 17.0))
+        if plane is None:
+            return None
+        return arc_centre(mode == 2.0, plane, self._diameter, start, end, words)
+
+    def _block_arc(self, mode: float, target: list[float], other: dict[str, float]) -> tuple[float, ...] | None:
+        """The centre of the move to ``target`` when ``mode`` is an arc, else None."""
+        if mode not in ARC_MODES:
+            return None
+        return self.arc_centre(mode, self.pos, target, other)
+
+    def _full_circle(self, mode: float, canned: float, other: dict[str, float], file: str, line: int) -> bool:
+        """A G02/G03 block with I, J or K but no axis word: a full circle back to the start
+        (with R instead, an arc of 0° that moves nothing). Returns whether it moved."""
+        if mode not in ARC_MODES or "R" in other or (canned != 80.0 and not self._lathe):
+            return False
+        centre = self.arc_centre(mode, self.pos, self.pos, other)
+        if centre is None:
+            return False
+        here = tuple(self.pos)
+        self._record(file, line, mode, here, here, centre)
+        return True
 
     def _target(self, axes: dict[int, float], incremental: dict[int, float]) -> list[float]:
         target = list(self.pos)
@@ -314,12 +351,23 @@ class Motion:
             target[i] = target[i] + v
         return target
 
-    def _move(self, file: str, line: int, mode: float, target: list[float]) -> None:
-        self._record(file, line, mode, tuple(self.pos), tuple(target))
+    def _move(
+        self, file: str, line: int, mode: float, target: list[float], centre: tuple[float, ...] | None = None
+    ) -> None:
+        self._record(file, line, mode, tuple(self.pos), tuple(target), centre)
         self.pos[:] = target
 
-    def _record(self, file: str, line: int, mode: float, start: tuple[float, ...], end: tuple[float, ...]) -> None:
-        """Advance the simulated clock by the move's time and record the move."""
+    def _record(
+        self,
+        file: str,
+        line: int,
+        mode: float,
+        start: tuple[float, ...],
+        end: tuple[float, ...],
+        centre: tuple[float, ...] | None = None,
+    ) -> None:
+        """Advance the simulated clock by the move's time and record the move (with an arc's
+        centre)."""
         feed = self.codes.get("F") or 0.0
         if mode == 0.0:
             self.clock += math.dist(start, end) / RAPID_RATE * 60.0
@@ -331,7 +379,7 @@ class Motion:
             if rate > 0:
                 self.clock += math.dist(start, end) / rate * 60.0
         if self.record_moves:
-            self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed))))
+            self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre)))
 
     # ---------------------------------------------------------------- tools
     def select_tool(self, t: float) -> None:
@@ -414,7 +462,9 @@ class Motion:
                 return True, other["Q"]
             return bool(axes or inc), None
         if axes or inc:  # any other one-shot code with axis words: move in the modal mode
-            self._move(file, line, self.modal.get("motion", 0.0), self._target(axes, inc))
+            mode = self.modal.get("motion", 0.0)
+            target = self._target(axes, inc)
+            self._move(file, line, mode, target, self._block_arc(mode, target, other))
             return True, None
         return False, None
 

@@ -7,9 +7,10 @@ the machine's modal state, position and clock held in locals, until a line that 
 plain motion, a line the general path must decide (a canned cycle in force, a G code of a
 group with side effects, an address with its own rounding), or the block budget. It does
 exactly what ``Motion.plain_text_plan`` and ``Motion.run_plain`` do for one line (SEMANTICS.md
-§8), and a line it declines is left untouched for the compiled path. Both run loops use it for
-a line not compiled yet, when no modal call (G66) is in force; such a line stays uncompiled,
-which also spares an analysis the memory of a runner per line.
+§8), an arc's centre from its R, I, J, K words included, and a line it declines is left
+untouched for the compiled path. Both run loops use it for a line not compiled yet, when no
+modal call (G66) is in force; such a line stays uncompiled, which also spares an analysis the
+memory of a runner per line.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+from .arcs import ARC_MODES
 from .frames import Move
 from .motion import RAPID_RATE
 
@@ -75,6 +77,7 @@ def run_straight(
         new_mode: float | None = None
         feed: float | None = None
         speed: float | None = None
+        arc: dict[str, float] | None = None  # R, I, J, K
         for word in text.split():
             kind = kinds.get(word[0])
             if kind is None:
@@ -112,7 +115,13 @@ def run_straight(
                 if v % 1:
                     break
                 speed = v
+            elif arc is None:
+                arc = {kind: v}
+            else:
+                arc[kind] = v
         else:
+            if arc is not None and not moved and (mode if new_mode is None else new_mode) in ARC_MODES:
+                break  # I, J, K alone are a full circle, R alone no move: the compiled path decides
             if new_mode is not None:
                 if moved and new_mode in cycles:
                     break  # a cycle decides this line: the compiled path runs it
@@ -148,7 +157,8 @@ def run_straight(
                     if rate > 0:
                         clock += dist(start, end) / rate * _SECONDS_PER_MINUTE
                 if append is not None:
-                    append(_new_move(Move, (path, pc, mode, start, end, f)))
+                    centre = m.arc_centre(mode, start, end, arc) if arc is not None and mode in ARC_MODES else None
+                    append(_new_move(Move, (path, pc, mode, start, end, f, centre)))
                 start = end
             done += 1
             pc += 1

@@ -1,0 +1,84 @@
+"""The centre of a G02/G03 arc, as the control finds it from R or from I, J, K (SEMANTICS.md §8).
+
+The plane decides which two axes the arc turns in and which offset words give its centre:
+G17 X,Y with I,J; G18 Z,X with K,I; G19 Y,Z with J,K. G02 turns clockwise and G03
+counterclockwise as seen from the positive end of the third axis. I, J, K are incremental
+from the start point whatever G90/G91 says. R names the radius instead: R > 0 the arc of at
+most 180°, R < 0 the longer one; R wins over I, J, K in the same block. On a lathe X is a
+diameter while I is a radius value (the GSK980 convention: I is the centre's X distance from
+the start "用半径表示"), so the geometry is worked in radius terms and the centre's X is given
+back as a diameter, like the end points. The seed manuals say nothing about arcs; these are
+this project's decisions where they are silent: a radius shorter than half the chord puts the
+centre at the chord's midpoint (a half circle, no alarm); R with the end at the start is an
+arc of 0° (the tool does not move; the centre is the start); I, J, K with the end at the
+start (or no axis word at all) is a full circle; an arc without R or an offset word of its
+plane has no centre (None). The axes off the plane (the helical axis too) keep their start
+values.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+
+ARC_MODES = (2.0, 3.0)
+
+# plane code -> (first axis, second axis, first offset word, second offset word)
+PLANES: dict[float, tuple[str, str, str, str]] = {
+    17.0: ("X", "Y", "I", "J"),
+    18.0: ("Z", "X", "K", "I"),
+    19.0: ("Y", "Z", "J", "K"),
+}
+
+Plane = tuple[int, int, str, str]
+
+
+def arc_planes(axis_index: Mapping[str, int]) -> dict[float, Plane]:
+    """The planes whose two axes this machine has, with the axes as indexes."""
+    return {
+        code: (axis_index[a], axis_index[b], off_a, off_b)
+        for code, (a, b, off_a, off_b) in PLANES.items()
+        if a in axis_index and b in axis_index
+    }
+
+
+def arc_centre(
+    clockwise: bool,
+    plane: Plane,
+    diameter: int,
+    start: Sequence[float],
+    end: Sequence[float],
+    words: Mapping[str, float],
+) -> tuple[float, ...] | None:
+    """The centre of the arc from ``start`` to ``end`` in ``plane`` given the block's R, I,
+    J, K ``words``; ``diameter`` is the index of the axis programmed as a diameter (-1 for
+    none). None when the block names no centre for this plane."""
+    a, b, off_a, off_b = plane
+    scale_a = 0.5 if a == diameter else 1.0
+    scale_b = 0.5 if b == diameter else 1.0
+    sa = start[a] * scale_a
+    sb = start[b] * scale_b
+    r = words.get("R")
+    if r is not None:
+        da = end[a] * scale_a - sa
+        db = end[b] * scale_b - sb
+        d2 = da * da + db * db
+        if d2 == 0.0:
+            return tuple(start)  # an arc of 0°: nothing moves
+        # the centre is off the chord's midpoint by h along the chord's normal: h/d = k
+        k2 = r * r / d2 - 0.25
+        k = k2**0.5 if k2 > 0.0 else 0.0  # a radius shorter than half the chord: the midpoint
+        if clockwise != (r > 0.0):  # G02 R+ and G03 R- lie right of the chord, the others left
+            k = -k
+        ca = sa + 0.5 * da + k * db
+        cb = sb + 0.5 * db - k * da
+    else:
+        ia = words.get(off_a)
+        ib = words.get(off_b)
+        if ia is None and ib is None:
+            return None
+        ca = sa + ia if ia is not None else sa
+        cb = sb + ib if ib is not None else sb
+    centre = list(start)
+    centre[a] = ca / scale_a
+    centre[b] = cb / scale_b
+    return tuple(centre)
