@@ -1,7 +1,7 @@
 /**
  * The extension's entry point: output channels, the language server, the debugger, the
- * commands and the dialect status-bar item, and the reaction to settings changes and to another
- * interpreter picked in the Python extension.
+ * commands, the toolpath view and the dialect status-bar item, and the reaction to settings
+ * changes and to another interpreter picked in the Python extension.
  */
 import * as vscode from 'vscode';
 import { registerCommands } from './commands';
@@ -10,6 +10,7 @@ import { ServerController } from './languageClient';
 import { onDidChangePythonExtensionEnvironment } from './python';
 import { pythonPath, SECTION } from './settings';
 import { DialectStatus } from './statusBar';
+import { registerToolpath } from './toolpath';
 
 let controller: ServerController | undefined;
 
@@ -20,6 +21,7 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
   controller = server;
   context.subscriptions.push(log, output, server, new DialectStatus());
   registerCommands(context, server, output);
+  registerToolpath(context, server);
   registerDebugger(context, server);
   context.subscriptions.push(
     vscode.workspace.onDidChangeConfiguration(async (e) => {

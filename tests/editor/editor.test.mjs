@@ -7,7 +7,7 @@ import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test as nodeTest } from 'node:test';
-import { CodeServer, OUTPUT } from './codeServer.mjs';
+import { CodeServer, OUTPUT, ROOT } from './codeServer.mjs';
 import { exact, hoverOver, openFile as openIn, tokenColour as colourIn } from './workbench.mjs';
 
 const STEP = 60000; // ms for one test (most take 1-5 s)
@@ -165,6 +165,115 @@ test('clicking the dialect in the status bar picks another and writes cncMacro.d
   assert.equal(JSON.parse(fs.readFileSync(settingsFile, 'utf8'))['cncMacro.dialect'], 'gsk980tdi');
   await pick('GSK980TDi', 'FANUC 0i');
   assert.equal(JSON.parse(fs.readFileSync(settingsFile, 'utf8'))['cncMacro.dialect'], 'fanuc');
+});
+
+/** The moves `cncmacro run --json` makes for an example program: what the toolpath view must draw. */
+function movesOf(folder, name) {
+  const cncmacro = path.join(ROOT, '.venv', 'bin', 'cncmacro');
+  const run = spawnSync(cncmacro, ['run', '--json', '--no-save', name], { cwd: folder, encoding: 'utf8' });
+  assert.ok(run.stdout, `cncmacro run printed nothing: ${run.stderr}`);
+  return JSON.parse(run.stdout).moves;
+}
+
+test('Show Toolpath draws each move of the run, and a click on a move goes to its line', { timeout: 2 * STEP }, async () => {
+  const moves = movesOf(path.join(ROOT, 'examples', 'fanuc'), 'bolt_circle.nc');
+  assert.ok(moves.length > 20, `bolt_circle.nc makes ${moves.length} moves`);
+  await openFile('bolt_circle.nc');
+  if (await page.locator('.part.panel').isVisible()) await page.keyboard.press('Control+J'); // room for the drawing
+  await page.keyboard.press('F1');
+  await page.keyboard.type('CNC Macro: Show Toolpath');
+  await page.locator('.quick-input-list .monaco-list-row', { hasText: 'Show Toolpath' }).first().waitFor();
+  await page.keyboard.press('Enter');
+  // The webview's page sits in an iframe (the active frame) inside the workbench's webview iframe.
+  const view = page.frameLocator('iframe.webview.ready').frameLocator('iframe#active-frame');
+  const drawn = view.locator('#plot g.move');
+  await drawn.first().waitFor({ state: 'attached', timeout: 45000 }); // the first moves have no length in XY
+  assert.equal(await drawn.count(), moves.length, 'one <g class="move"> per move of the run');
+  const status = await view.locator('#status').innerText();
+  assert.match(status, new RegExp(`Completed.*\\b${moves.length} moves`), status);
+  assert.match(status, /extents X -60 … 60, Y -60 … 60, Z -15 … 100/, status);
+  assert.equal(await view.locator('#plot g.move.cycle .hole').count(), moves.filter((m) => m.mode === 'G81').length);
+  assert.match(await view.locator('#legend').innerText(), /rapid \(G00\)[\s\S]*canned cycle/);
+  await page.locator('.tab', { hasText: 'Toolpath: bolt_circle.nc' }).waitFor();
+  await shot('9-toolpath');
+
+  // The first drilled hole is made by the G81 block of the macro O9100: its move goes there.
+  const index = moves.findIndex((m) => m.mode === 'G81');
+  const target = moves[index];
+  assert.equal(path.basename(target.file), 'O9100.nc');
+  const move = view.locator(`#plot g.move[data-index="${index}"]`);
+  assert.match(await move.locator('title').textContent(), new RegExp(`^O9100\\.nc:${target.line}  G81 `));
+  // Click a point on the move's positioning line (the middle of its box could miss a thin line).
+  const at = await move.locator('path.hit').evaluate((el) => {
+    const p = el.getPointAtLength(el.getTotalLength() / 4);
+    const screen = new DOMPoint(p.x, p.y).matrixTransform(el.getScreenCTM());
+    const box = el.ownerSVGElement.getBoundingClientRect();
+    return { x: screen.x - box.left, y: screen.y - box.top };
+  });
+  await view.locator('#plot').click({ position: at });
+  await page.locator('.tabs-container .tab.active', { hasText: 'O9100.nc' }).waitFor();
+  await page.locator('.statusbar-item', { hasText: `Ln ${target.line}, Col 1` }).waitFor();
+  await shot('9b-toolpath-click');
+});
+
+test('Show Toolpath draws a GSK lathe program with Z across and X halved, the radius', { timeout: 2 * STEP }, async () => {
+  const folder = path.join(ROOT, 'examples', 'gsk980tdi');
+  const moves = movesOf(folder, 'ellipse_turning.nc');
+  fs.copyFileSync(path.join(folder, 'ellipse_turning.nc'), path.join(server.workspace, 'ellipse_turning.nc'));
+  await page.locator('.explorer-folders-view .label-name', { hasText: exact('ellipse_turning.nc') }).waitFor();
+  await openFile('ellipse_turning.nc');
+  await page.keyboard.press('F1');
+  await page.keyboard.type('CNC Macro: Show Toolpath');
+  await page.locator('.quick-input-list .monaco-list-row', { hasText: 'Show Toolpath' }).first().waitFor();
+  await page.keyboard.press('Enter');
+  await page.locator('.tab', { hasText: 'Toolpath: ellipse_turning.nc' }).waitFor();
+  const view = page.frameLocator('iframe.webview.ready').frameLocator('iframe#active-frame');
+  const status = view.locator('#status', { hasText: `${moves.length} moves` });
+  await status.waitFor({ timeout: 45000 });
+  assert.equal(await view.locator('#plot g.move').count(), moves.length);
+  assert.equal(await view.locator('#plot g.move.feed').count(), moves.filter((m) => m.mode === 'G01').length);
+  assert.match(await view.locator('#legend').innerText(), /X is a diameter: it is drawn at X\/2, the radius/);
+  assert.match(await status.innerText(), /extents X 0 … 100, Z -45 … 100/);
+  await shot('9c-toolpath-lathe');
+
+  // Saving the program draws it again: twice the depth of cut per roughing layer, fewer passes.
+  await page.locator('.editor-instance .view-lines').click();
+  await page.keyboard.press('Control+G');
+  await page.keyboard.type('9');
+  await page.keyboard.press('Enter');
+  await page.keyboard.press('Home');
+  for (let i = 0; i < 5; i++) await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('Shift+ArrowRight');
+  await page.keyboard.type('6'); // #104=3 becomes #104=6
+  await page.keyboard.press('Control+S');
+  const saved = path.join(server.workspace, 'ellipse_turning.nc');
+  for (let i = 0; i < 100 && !fs.readFileSync(saved, 'utf8').includes('#104=6'); i++) await page.waitForTimeout(100);
+  const fewer = movesOf(server.workspace, 'ellipse_turning.nc');
+  assert.ok(fewer.length < moves.length, `${fewer.length} moves after the edit, ${moves.length} before`);
+  await view.locator('#status', { hasText: `${fewer.length} moves` }).waitFor({ timeout: 45000 });
+  assert.equal(await view.locator('#plot g.move').count(), fewer.length);
+});
+
+test('Show Toolpath of a program that alarms draws the moves before the alarm and names it', { timeout: 2 * STEP }, async () => {
+  const program = ['O0010 (ALARM AFTER TWO CUTS)', 'G90 G00 X0 Y0', 'G01 X20. F100.', 'G01 Y20.'];
+  program.push('#3000=1(TOOL BROKEN)', 'G01 X0', 'M30', '');
+  fs.writeFileSync(path.join(server.workspace, 'alarm_after_cuts.nc'), program.join('\n'));
+  const moves = movesOf(server.workspace, 'alarm_after_cuts.nc');
+  await page.locator('.explorer-folders-view .label-name', { hasText: exact('alarm_after_cuts.nc') }).waitFor();
+  await openFile('alarm_after_cuts.nc');
+  await page.keyboard.press('F1');
+  await page.keyboard.type('CNC Macro: Show Toolpath');
+  await page.locator('.quick-input-list .monaco-list-row', { hasText: 'Show Toolpath' }).first().waitFor();
+  await page.keyboard.press('Enter');
+  await page.locator('.tab', { hasText: 'Toolpath: alarm_after_cuts.nc' }).waitFor();
+  const view = page.frameLocator('iframe.webview.ready').frameLocator('iframe#active-frame');
+  const status = view.locator('#status', { hasText: 'Alarm 3001: TOOL BROKEN (alarm_after_cuts.nc:5)' });
+  await status.waitFor({ timeout: 45000 });
+  assert.match(await status.innerText(), new RegExp(`\\b${moves.length} moves`));
+  assert.equal(await view.locator('#plot g.move').count(), moves.length);
+  assert.equal(await view.locator('#plot g.move.feed').count(), 2, 'the two cuts before the alarm');
+  await view.locator('#plot g.end').waitFor(); // where the tool stopped
+  await shot('9d-toolpath-alarm');
 });
 
 test('extension-host API tests pass in the same VS Code', { timeout: 3 * STEP }, async () => {

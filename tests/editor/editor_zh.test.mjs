@@ -1,6 +1,6 @@
 // The extension in a VS Code whose display language is Chinese (code-server --locale zh-cn):
-// what a Chinese-reading user sees of CNC Macro — the command titles, a hover and the Problems
-// panel in Chinese. Screenshots go to test-output/editor/zh-*.png. Run with the other editor
+// what a Chinese-reading user sees of CNC Macro — the command titles, a hover, the Problems
+// panel and the toolpath view in Chinese. Screenshots go to test-output/editor/zh-*.png. Run with the other editor
 // tests: node --test tests/editor/ (after npm run package).
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -65,4 +65,19 @@ test('the commands are named in Chinese', { timeout: STEP }, async () => {
   await rows.filter({ hasText: 'CNC Macro: 选择方言' }).first().waitFor();
   await shot('3-commands');
   await page.keyboard.press('Escape');
+});
+
+test('the toolpath view speaks Chinese: its status line and legend', { timeout: 2 * STEP }, async () => {
+  await openFile(page, 'bolt_circle.nc');
+  await page.keyboard.press('F1');
+  await page.keyboard.type('CNC Macro: 显示刀具路径');
+  await page.locator('.quick-input-list .monaco-list-row', { hasText: '显示刀具路径' }).first().waitFor();
+  await page.keyboard.press('Enter');
+  await page.locator('.tab', { hasText: '刀具路径：bolt_circle.nc' }).waitFor();
+  const view = page.frameLocator('iframe.webview.ready').frameLocator('iframe#active-frame');
+  const status = view.locator('#status', { hasText: '完成' });
+  await status.waitFor({ timeout: 45000 });
+  assert.match(await status.innerText(), /个程序段，\d+ 段运动/);
+  assert.match(await view.locator('#legend').innerText(), /快速定位 \(G00\)[\s\S]*固定循环/);
+  await shot('4-toolpath');
 });

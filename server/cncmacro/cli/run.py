@@ -100,7 +100,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
                        f"cncmacro run：无法保存断电保持的公共变量（#500–#999）：{e}"), file=err)  # fmt: skip
     result = machine.result()
     if args.json:
-        write_json(result_json(result, dialect.axes, args.locale), out)
+        write_json({"dialect": dialect.name, **result_json(result, dialect.axes, args.locale)}, out)
     else:
         write_text(result, machine, out, args.locale)
     return {ALARM: 1, LIMIT: 3}.get(result.status, 0)

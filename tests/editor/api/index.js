@@ -49,9 +49,23 @@ const tests = {
 
   async 'the commands are registered'() {
     const all = await vscode.commands.getCommands(true);
-    for (const id of ['cncMacro.runProgram', 'cncMacro.selectDialect', 'cncMacro.restartServer']) {
+    for (const id of ['cncMacro.runProgram', 'cncMacro.selectDialect', 'cncMacro.restartServer', 'cncMacro.showToolpath']) {
       assert.ok(all.includes(id), `${id} is registered`);
     }
+  },
+
+  async 'Show Toolpath opens one panel per file and reuses it when run again'() {
+    const toolpaths = () =>
+      vscode.window.tabGroups.all
+        .flatMap((g) => g.tabs)
+        .filter((t) => t.input instanceof vscode.TabInputWebview && t.input.viewType.endsWith('cncMacro.toolpath'));
+    const before = toolpaths().length;
+    for (const name of ['bolt_circle.nc', 'while_loop.nc', 'bolt_circle.nc']) {
+      await vscode.commands.executeCommand('cncMacro.showToolpath', workspaceFile(name));
+    }
+    const opened = toolpaths().slice(before);
+    assert.deepEqual(opened.map((t) => t.label).sort(), ['Toolpath: bolt_circle.nc', 'Toolpath: while_loop.nc']);
+    await vscode.window.tabGroups.close(opened);
   },
 
   async 'the planted GOTO 99 is reported as undefined-label'() {

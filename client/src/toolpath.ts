@@ -1,0 +1,345 @@
+/**
+ * The Show Toolpath command: runs the active program on the simulated machine
+ * (`python -m cncmacro run --no-save --json FILE`, the saved file, as Run Program does) and draws
+ * its moves in a webview panel beside the editor, one panel per file. The panel is drawn again
+ * when the file or a program it called is saved, and on its Refresh button; clicking a move opens
+ * the file it was made in (a called program's too) at its line. The run cannot read the editor's
+ * unsaved text, so the view says that it shows the last saved version.
+ */
+import { type ChildProcess, spawn } from 'node:child_process';
+import * as path from 'node:path';
+import * as vscode from 'vscode';
+import { LANGUAGE_ID, type ServerController } from './languageClient';
+import { cncmacroCommand, serverEnvironment, serverLayout } from './serverProcess';
+import * as settings from './settings';
+import {
+  formatNumber,
+  isLatheRun,
+  parseRunResult,
+  type Plane,
+  PLANES,
+  plot,
+  type RunResult,
+  viewFor,
+} from './toolpathGeometry';
+import { MAX_DRAWN_MOVES, nonce, type Texts, toolpathHtml } from './toolpathView';
+
+const VIEW_TYPE = 'cncMacro.toolpath';
+const MAX_OUTPUT_BYTES = 256 * 1024 * 1024; // a run that prints more is stopped
+
+type Outcome = { result: RunResult } | { error: string };
+
+class ToolpathPanel implements vscode.Disposable {
+  private readonly panel: vscode.WebviewPanel;
+  private readonly subscriptions: vscode.Disposable[] = [];
+  private child: ChildProcess | undefined;
+  private result: RunResult | undefined;
+  private plane: Plane = 'XY';
+  private runs = 0;
+  private dirtyWhenRun = false;
+  private disposed = false;
+
+  constructor(
+    private readonly context: vscode.ExtensionContext,
+    private readonly server: ServerController,
+    readonly uri: vscode.Uri,
+    private editorColumn: vscode.ViewColumn,
+    private readonly onDispose: () => void,
+  ) {
+    this.panel = vscode.window.createWebviewPanel(
+      VIEW_TYPE,
+      vscode.l10n.t('Toolpath: {0}', path.basename(uri.fsPath)),
+      { viewColumn: vscode.ViewColumn.Beside, preserveFocus: true },
+      { enableScripts: true, localResourceRoots: [] },
+    );
+    this.subscriptions.push(
+      this.panel.onDidDispose(() => this.dispose()),
+      this.panel.webview.onDidReceiveMessage((m: unknown) => this.onMessage(m)),
+    );
+  }
+
+  reveal(column: vscode.ViewColumn | undefined): void {
+    if (column !== undefined) this.editorColumn = column;
+    this.panel.reveal(undefined, true);
+  }
+
+  /** Whether saving `uri` changes what is drawn: the program itself or a file a move came from. */
+  drawsFrom(uri: vscode.Uri): boolean {
+    if (uri.fsPath === this.uri.fsPath) return true;
+    const folder = path.dirname(this.uri.fsPath);
+    return this.result?.moves.some((m) => path.resolve(folder, m.file) === uri.fsPath) ?? false;
+  }
+
+  async refresh(): Promise<void> {
+    if (this.disposed) return;
+    const run = ++this.runs;
+    this.child?.kill();
+    this.child = undefined;
+    const name = path.basename(this.uri.fsPath);
+    if (this.result === undefined) {
+      this.show({ status: vscode.l10n.t('Running {0} on the simulated machine…', name), statusKind: 'running' });
+    }
+    const python = await this.server.resolvePython(this.uri);
+    if (run !== this.runs) return;
+    if (!python) {
+      this.show({ status: vscode.l10n.t('No Python to run the program: see the message.'), statusKind: 'error' });
+      return;
+    }
+    const document = vscode.workspace.textDocuments.find((d) => d.uri.toString() === this.uri.toString());
+    this.dirtyWhenRun = document?.isDirty ?? false;
+    const dialect = document ? settings.dialect(document.uri) : settings.dialect(this.uri);
+    const locale = vscode.env.language.toLowerCase().startsWith('zh') ? 'zh-CN' : 'en';
+    const file = this.uri.fsPath;
+    const { command, args } = cncmacroCommand(python, [
+      'run',
+      '--no-save',
+      '--json',
+      '--locale',
+      locale,
+      '--dialect',
+      dialect,
+      file,
+    ]);
+    const outcome = await this.execute(command, args, path.dirname(file));
+    if (run !== this.runs) return; // a newer run took over
+    if ('error' in outcome) {
+      this.result = undefined;
+      this.show({ status: outcome.error, statusKind: 'error' });
+      return;
+    }
+    this.result = outcome.result;
+    this.draw();
+  }
+
+  private execute(command: string, args: string[], cwd: string): Promise<Outcome> {
+    return new Promise((resolve) => {
+      const child = spawn(command, args, {
+        cwd,
+        env: serverEnvironment(serverLayout(this.context.extensionPath)),
+        windowsHide: true,
+      });
+      this.child = child;
+      const out: Buffer[] = [];
+      const err: Buffer[] = [];
+      let size = 0;
+      let tooLarge = false;
+      child.stdout.on('data', (chunk: Buffer) => {
+        size += chunk.length;
+        if (size > MAX_OUTPUT_BYTES) {
+          tooLarge = true;
+          child.kill();
+          return;
+        }
+        out.push(chunk);
+      });
+      child.stderr.on('data', (chunk: Buffer) => err.push(chunk));
+      child.on('error', (e) => resolve({ error: vscode.l10n.t('Could not run the program: {0}', e.message) }));
+      child.on('close', (code) => {
+        if (this.child === child) this.child = undefined;
+        if (tooLarge) {
+          resolve({ error: vscode.l10n.t('The run made too many moves to draw.') });
+          return;
+        }
+        const stderr = Buffer.concat(err).toString('utf8').trim();
+        if (code !== 0 && code !== 1 && code !== 3) {
+          const why = stderr || vscode.l10n.t('[exit status {0}]', String(code));
+          resolve({ error: vscode.l10n.t('The run failed: {0}', why) });
+          return;
+        }
+        const parsed = parseRunResult(Buffer.concat(out).toString('utf8'));
+        resolve(typeof parsed === 'string' ? { error: vscode.l10n.t('The run failed: {0}', parsed) } : { result: parsed });
+      });
+    });
+  }
+
+  private source(): string {
+    const name = path.basename(this.uri.fsPath);
+    return this.dirtyWhenRun
+      ? vscode.l10n.t('Drawn from the last saved version of {0}: the unsaved changes are not drawn.', name)
+      : vscode.l10n.t('Drawn from the last saved version of {0}.', name);
+  }
+
+  private texts(status: string, statusKind: Texts['statusKind'], verticalAxis: string, plane: string, note?: string): Texts {
+    return {
+      refresh: vscode.l10n.t('Refresh'),
+      fit: vscode.l10n.t('Fit'),
+      source: this.source(),
+      status,
+      statusKind,
+      note,
+      hint: vscode.l10n.t('Hover over a move to see its block; click it to go to its line. Wheel: zoom; drag: pan.'),
+      legend: {
+        rapid: vscode.l10n.t('rapid (G00)'),
+        feed: vscode.l10n.t('feed (G01)'),
+        arc: vscode.l10n.t('arc (G02/G03)'),
+        cycle: vscode.l10n.t('canned cycle'),
+        hole: vscode.l10n.t('hole of a drilling cycle'),
+        origin: vscode.l10n.t('origin (program zero)'),
+        alarm: vscode.l10n.t('where the alarm stopped the tool'),
+      },
+      plane,
+      planeButton: vscode.l10n.t('Draw the moves in this plane'),
+      verticalAxis,
+    };
+  }
+
+  private show(state: { status: string; statusKind: Texts['statusKind'] }): void {
+    const texts = this.texts(state.status, state.statusKind, '', '');
+    this.panel.webview.html = toolpathHtml(
+      { cspSource: this.panel.webview.cspSource, language: vscode.env.language, texts, planes: false },
+      nonce(),
+    );
+  }
+
+  private draw(): void {
+    const result = this.result;
+    if (!result) return;
+    const lathe = isLatheRun(result);
+    const view = viewFor(lathe, this.plane);
+    const moves = result.moves.length > MAX_DRAWN_MOVES ? result.moves.slice(0, MAX_DRAWN_MOVES) : result.moves;
+    const drawn = plot(moves, view, result.status === 'alarm');
+    const status = [this.statusText(result)];
+    status.push(vscode.l10n.t('{0} blocks, {1} moves', String(result.blocks), String(result.moves.length)));
+    if (moves.length > 0) {
+      const extents = drawn.extents.map((e) => `${e.axis} ${formatNumber(e.min)} … ${formatNumber(e.max)}`).join(', ');
+      status.push(vscode.l10n.t('extents {0}', extents));
+    }
+    let note: string | undefined;
+    if (moves.length < result.moves.length) {
+      note = vscode.l10n.t('Only the first {0} of {1} moves are drawn.', String(moves.length), String(result.moves.length));
+    } else if (moves.length === 0) {
+      note = vscode.l10n.t('The run made no moves.');
+    }
+    const plane = lathe
+      ? vscode.l10n.t('Lathe: Z across, X up. X is a diameter: it is drawn at X/2, the radius.')
+      : vscode.l10n.t('The {0} plane, {1} across and {2} up, equal scales.', view.plane, view.h, view.v);
+    const texts = this.texts(status.join(' · '), this.statusKind(result), lathe ? 'X/2' : view.v, plane, note);
+    this.panel.webview.html = toolpathHtml(
+      { cspSource: this.panel.webview.cspSource, language: vscode.env.language, texts, plot: drawn, moves, view, planes: !lathe },
+      nonce(),
+    );
+  }
+
+  private statusKind(result: RunResult): Texts['statusKind'] {
+    return result.status === 'alarm' ? 'alarm' : result.status === 'limit' ? 'limit' : 'completed';
+  }
+
+  private statusText(result: RunResult): string {
+    switch (result.status) {
+      case 'completed':
+        return vscode.l10n.t('Completed');
+      case 'alarm': {
+        const a = result.alarm;
+        if (!a) return vscode.l10n.t('Alarm');
+        return vscode.l10n.t('Alarm {0}: {1} ({2}:{3})', String(a.number), a.message, path.basename(a.file), String(a.line));
+      }
+      case 'limit':
+        return vscode.l10n.t('Stopped: the block budget ran out (an endless loop?)');
+      default:
+        return result.status;
+    }
+  }
+
+  private onMessage(message: unknown): void {
+    if (message === null || typeof message !== 'object') return;
+    const m = message as { type?: unknown; index?: unknown; plane?: unknown };
+    if (m.type === 'refresh') {
+      void this.refresh();
+    } else if (m.type === 'plane' && typeof m.plane === 'string' && (PLANES as readonly string[]).includes(m.plane)) {
+      this.plane = m.plane as Plane;
+      this.draw();
+    } else if (m.type === 'reveal' && typeof m.index === 'number') {
+      void this.revealMove(m.index);
+    }
+  }
+
+  /** Open the file a move was made in at its line, in the editor column the program was in. */
+  private async revealMove(index: number): Promise<void> {
+    const move = this.result?.moves[index];
+    if (!move) return;
+    const uri = vscode.Uri.file(path.resolve(path.dirname(this.uri.fsPath), move.file));
+    try {
+      const document = await vscode.workspace.openTextDocument(uri);
+      const line = Math.min(Math.max(move.line - 1, 0), Math.max(document.lineCount - 1, 0));
+      const visible = vscode.window.visibleTextEditors.find((e) => e.document.uri.toString() === uri.toString());
+      const position = new vscode.Position(line, 0);
+      await vscode.window.showTextDocument(document, {
+        viewColumn: visible?.viewColumn ?? this.editorColumn,
+        selection: new vscode.Selection(position, position),
+        preserveFocus: false,
+      });
+      const editor = vscode.window.activeTextEditor;
+      editor?.revealRange(new vscode.Range(position, position), vscode.TextEditorRevealType.InCenterIfOutsideViewport);
+    } catch (e) {
+      void vscode.window.showErrorMessage(vscode.l10n.t('Could not open {0}: {1}', uri.fsPath, (e as Error).message));
+    }
+  }
+
+  dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
+    this.runs++;
+    this.child?.kill();
+    this.child = undefined;
+    for (const s of this.subscriptions.splice(0)) s.dispose();
+    this.panel.dispose();
+    this.onDispose();
+  }
+}
+
+async function showToolpath(
+  context: vscode.ExtensionContext,
+  server: ServerController,
+  panels: Map<string, ToolpathPanel>,
+  uri?: vscode.Uri,
+): Promise<void> {
+  const editor = vscode.window.activeTextEditor;
+  const document = uri !== undefined ? await vscode.workspace.openTextDocument(uri) : editor?.document;
+  if (!document || document.languageId !== LANGUAGE_ID) {
+    void vscode.window.showInformationMessage(vscode.l10n.t('Open a CNC macro program to draw its toolpath.'));
+    return;
+  }
+  if (document.isUntitled) {
+    void vscode.window.showInformationMessage(vscode.l10n.t('Save the program to a file before running it.'));
+    return;
+  }
+  const column = editor?.document === document ? editor.viewColumn : undefined;
+  const key = document.uri.toString();
+  let panel = panels.get(key);
+  if (panel) {
+    panel.reveal(column);
+  } else {
+    panel = new ToolpathPanel(context, server, document.uri, column ?? vscode.ViewColumn.One, () => panels.delete(key));
+    panels.set(key, panel);
+  }
+  await panel.refresh();
+}
+
+export function registerToolpath(context: vscode.ExtensionContext, server: ServerController): void {
+  const panels = new Map<string, ToolpathPanel>();
+  const pending = new Map<ToolpathPanel, NodeJS.Timeout>();
+  context.subscriptions.push(
+    vscode.commands.registerCommand('cncMacro.showToolpath', (uri?: vscode.Uri) =>
+      showToolpath(context, server, panels, uri instanceof vscode.Uri ? uri : undefined),
+    ),
+    vscode.workspace.onDidSaveTextDocument((document) => {
+      for (const panel of panels.values()) {
+        if (!panel.drawsFrom(document.uri)) continue;
+        clearTimeout(pending.get(panel));
+        pending.set(
+          panel,
+          setTimeout(() => {
+            pending.delete(panel);
+            void panel.refresh();
+          }, 150),
+        );
+      }
+    }),
+    {
+      dispose: () => {
+        for (const timer of pending.values()) clearTimeout(timer);
+        for (const panel of [...panels.values()]) panel.dispose();
+      },
+    },
+  );
+}

@@ -1,0 +1,417 @@
+/**
+ * The geometry of a toolpath plot: the result of `cncmacro run --json` read and checked, the
+ * plane it is drawn in (XY for a mill, Z across and X up for a lathe, where X is a diameter and
+ * is drawn at half its value, as the radius), each move turned into SVG path data in that
+ * plane (rapids, feeds, arcs as arcs when the move names its centre and as a chord when it does
+ * not, canned cycles with their positioning and cutting legs), the extents, and grid lines at
+ * round numbers. Nothing here knows VS Code; the webview's page is built from what it returns.
+ */
+
+export type Axes = Record<string, number>;
+
+export interface RunMove {
+  file: string;
+  line: number;
+  mode: string;
+  from: Axes;
+  to: Axes;
+  feed: number;
+  centre?: Axes;
+}
+
+export interface RunAlarm {
+  number: number;
+  message: string;
+  file: string;
+  line: number;
+}
+
+export interface RunResult {
+  status: string;
+  alarm: RunAlarm | null;
+  blocks: number;
+  moves: RunMove[];
+  dialect?: string;
+}
+
+export type Plane = 'XY' | 'ZX' | 'YZ';
+export const PLANES: readonly Plane[] = ['XY', 'ZX', 'YZ'];
+export type MoveKind = 'rapid' | 'feed' | 'arc' | 'cycle';
+
+/** How the run is drawn: the horizontal and vertical axes, and whether it is a lathe (X halved). */
+export interface View {
+  plane: Plane;
+  h: string;
+  v: string;
+  lathe: boolean;
+}
+
+/** One leg of a move: SVG path data in screen units, dashed for the rapid part of a cycle. */
+export interface Leg {
+  d: string;
+  dashed: boolean;
+}
+
+export interface DrawnMove {
+  index: number;
+  kind: MoveKind;
+  legs: Leg[];
+  /** a hole of a drilling cycle: where the marker goes, in screen units */
+  hole?: [number, number];
+}
+
+export interface Tick {
+  value: number;
+  at: number; // screen units
+}
+
+export interface Plot {
+  width: number; // screen units of the drawing, margins excluded
+  height: number;
+  moves: DrawnMove[];
+  origin: [number, number];
+  end?: [number, number]; // where the tool stopped (marked when the run ended in an alarm)
+  xTicks: Tick[];
+  yTicks: Tick[];
+  holeRadius: number;
+  /** the extents of the moves in program units, per axis X, Y, Z (X as written: a diameter on a lathe) */
+  extents: { axis: string; min: number; max: number }[];
+}
+
+const isNumber = (v: unknown): v is number => typeof v === 'number' && Number.isFinite(v);
+
+function axesOf(v: unknown): Axes | undefined {
+  if (v === null || typeof v !== 'object' || Array.isArray(v)) return undefined;
+  const out: Axes = {};
+  for (const [k, x] of Object.entries(v as Record<string, unknown>)) {
+    if (!isNumber(x)) return undefined;
+    out[k] = x;
+  }
+  return out;
+}
+
+/** The run's JSON, checked field by field; a string says what is wrong with it. */
+export function parseRunResult(text: string): RunResult | string {
+  let raw: unknown;
+  try {
+    raw = JSON.parse(text);
+  } catch (e) {
+    return `the run did not print JSON: ${(e as Error).message}`;
+  }
+  if (raw === null || typeof raw !== 'object') return 'the run printed no result object';
+  const r = raw as Record<string, unknown>;
+  if (typeof r.status !== 'string' || !Array.isArray(r.moves)) return 'the run result has no status or moves';
+  const moves: RunMove[] = [];
+  for (const m of r.moves as unknown[]) {
+    const o = (m ?? {}) as Record<string, unknown>;
+    const from = axesOf(o.from);
+    const to = axesOf(o.to);
+    if (typeof o.file !== 'string' || !isNumber(o.line) || typeof o.mode !== 'string' || !from || !to) {
+      return `a move of the run is malformed: ${JSON.stringify(m).slice(0, 200)}`;
+    }
+    const move: RunMove = { file: o.file, line: o.line, mode: o.mode, from, to, feed: isNumber(o.feed) ? o.feed : 0 };
+    const centre = axesOf(o.centre);
+    if (centre) move.centre = centre;
+    moves.push(move);
+  }
+  let alarm: RunAlarm | null = null;
+  if (r.alarm !== null && typeof r.alarm === 'object') {
+    const a = r.alarm as Record<string, unknown>;
+    alarm = {
+      number: isNumber(a.number) ? a.number : 0,
+      message: typeof a.message === 'string' ? a.message : '',
+      file: typeof a.file === 'string' ? a.file : '',
+      line: isNumber(a.line) ? a.line : 0,
+    };
+  }
+  const result: RunResult = { status: r.status, alarm, blocks: isNumber(r.blocks) ? r.blocks : 0, moves };
+  if (typeof r.dialect === 'string') result.dialect = r.dialect;
+  return result;
+}
+
+/**
+ * Whether the machine that ran is a lathe: the result's `dialect` when it names one, else the
+ * axes the run reports, which are the dialect's (GSK980TDi: X Y Z C B; FANUC 0i: X Y Z A).
+ */
+export function isLatheRun(result: RunResult): boolean {
+  if (result.dialect !== undefined) return result.dialect.toLowerCase().startsWith('gsk');
+  const first = result.moves[0];
+  return first !== undefined && 'C' in first.from && 'B' in first.from && !('A' in first.from);
+}
+
+export function viewFor(lathe: boolean, plane: Plane = 'XY'): View {
+  if (lathe) return { plane: 'ZX', h: 'Z', v: 'X', lathe: true };
+  const [h, v] = plane === 'XY' ? ['X', 'Y'] : plane === 'ZX' ? ['Z', 'X'] : ['Y', 'Z'];
+  return { plane, h, v, lathe: false };
+}
+
+export function kindOf(mode: string): MoveKind {
+  const n = Number(mode.replace(/^G/i, ''));
+  if (n === 0) return 'rapid';
+  if (n === 2 || n === 3) return 'arc';
+  if (n === 1 || n === 31 || n === 32 || n === 33 || n === 34) return 'feed';
+  return 'cycle';
+}
+
+type P3 = Axes;
+
+/** A point as drawn: X halved on a lathe (a diameter drawn as the radius). */
+function display(p: Axes, lathe: boolean): P3 {
+  return lathe && 'X' in p ? { ...p, X: (p.X ?? 0) / 2 } : p;
+}
+
+/** The arc planes (G17, G18, G19), each with its third axis, ordered so that G03 turns from `a` toward `b`. */
+const ARC_PLANES: { a: string; b: string; third: string }[] = [
+  { a: 'X', b: 'Y', third: 'Z' },
+  { a: 'Z', b: 'X', third: 'Y' },
+  { a: 'Y', b: 'Z', third: 'X' },
+];
+
+interface Arc {
+  a: string; // the arc plane's axes
+  b: string;
+  ca: number; // centre
+  cb: number;
+  r: number;
+  start: number; // angle of the start point, radians
+  sweep: number; // signed: positive counter-clockwise (G03)
+}
+
+const get = (p: Axes, k: string): number => p[k] ?? 0;
+
+/**
+ * The arc a G02/G03 move makes, from its `centre` (every axis; the axes off the arc's plane keep
+ * the start's values; on a lathe X is a diameter, like the end points). The run does not say
+ * which plane was selected: it is the first plane, the usual one first (XY on a mill, ZX on a
+ * lathe), where the centre keeps the start's third axis, lies off the start and is as far from
+ * the end as from the start. None without a centre or when no plane fits: drawn as a chord.
+ */
+function arcOf(move: RunMove, lathe: boolean): Arc | undefined {
+  if (!move.centre) return undefined;
+  const c = display(move.centre, lathe);
+  const s = display(move.from, lathe);
+  const e = display(move.to, lathe);
+  const planes = lathe ? [ARC_PLANES[1], ARC_PLANES[0], ARC_PLANES[2]] : ARC_PLANES;
+  for (const plane of planes) {
+    if (!plane || !(plane.a in c) || !(plane.b in c)) continue;
+    const { a, b, third } = plane;
+    if (Math.abs(get(c, third) - get(s, third)) > 1e-6) continue;
+    const ca = get(c, a);
+    const cb = get(c, b);
+    const rs = Math.hypot(get(s, a) - ca, get(s, b) - cb);
+    const re = Math.hypot(get(e, a) - ca, get(e, b) - cb);
+    if (rs < 1e-6 || Math.abs(rs - re) > Math.max(0.005, rs * 0.005)) continue;
+    const t0 = Math.atan2(get(s, b) - cb, get(s, a) - ca);
+    const t1 = Math.atan2(get(e, b) - cb, get(e, a) - ca);
+    const ccw = Number(move.mode.replace(/^G/i, '')) === 3;
+    const twoPi = 2 * Math.PI;
+    let sweep = ccw ? (t1 - t0 + twoPi) % twoPi : (t0 - t1 + twoPi) % twoPi;
+    if (sweep < 1e-9) sweep = twoPi; // the end is the start: a full circle
+    return { a, b, ca, cb, r: (rs + re) / 2, start: t0, sweep: ccw ? sweep : -sweep };
+  }
+  return undefined;
+}
+
+/** Points along an arc (in display units, every axis: the others move linearly, as in a helix). */
+function arcPoints(move: RunMove, arc: Arc, lathe: boolean, steps: number): P3[] {
+  const s = display(move.from, lathe);
+  const e = display(move.to, lathe);
+  const out: P3[] = [];
+  for (let i = 0; i <= steps; i++) {
+    const f = i / steps;
+    const p: P3 = {};
+    for (const k of new Set([...Object.keys(s), ...Object.keys(e)])) p[k] = get(s, k) + (get(e, k) - get(s, k)) * f;
+    const t = arc.start + arc.sweep * f;
+    p[arc.a] = arc.ca + arc.r * Math.cos(t);
+    p[arc.b] = arc.cb + arc.r * Math.sin(t);
+    out.push(p);
+  }
+  out[0] = s;
+  out[steps] = e;
+  return out;
+}
+
+/** The 3-D legs of a move (before projection), each with whether it is a rapid leg. */
+function legsOf(move: RunMove, lathe: boolean): { points: P3[]; dashed: boolean }[] {
+  const s = display(move.from, lathe);
+  const e = display(move.to, lathe);
+  const kind = kindOf(move.mode);
+  if (kind === 'arc') {
+    const arc = arcOf(move, lathe);
+    if (arc) {
+      const steps = Math.max(8, Math.ceil((Math.abs(arc.sweep) / (2 * Math.PI)) * 96));
+      return [{ points: arcPoints(move, arc, lathe, steps), dashed: false }];
+    }
+    return [{ points: [s, e], dashed: false }];
+  }
+  if (kind !== 'cycle') return [{ points: [s, e], dashed: kind === 'rapid' }];
+  const code = Number(move.mode.replace(/^G/i, ''));
+  if (lathe && (code === 90 || code === 92 || code === 94)) {
+    // the single fixed cycles: G90/G92 go in along X first, G94 along Z first, and come back
+    const first = code === 94 ? 'Z' : 'X';
+    const a = { ...s, [first]: get(e, first) };
+    const b = { ...e, [first]: get(s, first) };
+    return [
+      { points: [s, a], dashed: true },
+      { points: [a, e], dashed: false },
+      { points: [e, b], dashed: code === 92 },
+      { points: [b, s], dashed: true },
+    ];
+  }
+  if (!lathe) {
+    // a drilling cycle: position over the hole at the start level, then down to its bottom
+    const above = { ...e, Z: get(s, 'Z') };
+    return [
+      { points: [s, above], dashed: true },
+      { points: [above, e], dashed: false },
+    ];
+  }
+  return [{ points: [s, e], dashed: false }];
+}
+
+/** A round step (1, 2 or 5 times a power of ten) that cuts `span` into about `count` parts. */
+export function niceStep(span: number, count: number): number {
+  const raw = span / count;
+  if (!(raw > 0)) return 1;
+  const power = 10 ** Math.floor(Math.log10(raw));
+  return [1, 2, 5, 10].map((m) => m * power).find((s) => s >= raw * (1 - 1e-9)) ?? 10 * power;
+}
+
+/** The multiples of `step` in [lo, hi]. */
+export function ticksBetween(lo: number, hi: number, step: number): number[] {
+  const out: number[] = [];
+  for (let i = Math.ceil(lo / step - 1e-9); i * step <= hi + step * 1e-9; i++) {
+    out.push(Number((i * step).toPrecision(12)) || 0);
+  }
+  return out;
+}
+
+/** A number as a machinist writes it: up to three decimals, no trailing zeros. */
+export function formatNumber(n: number): string {
+  const s = n.toFixed(3).replace(/\.?0+$/, '');
+  return s === '-0' ? '0' : s;
+}
+
+/** The plot of `moves` in `view`, `size` screen units across the longer side. */
+export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000): Plot {
+  const legs = moves.map((m) => legsOf(m, view.lathe));
+  const project = (p: P3): [number, number] => [get(p, view.h), get(p, view.v)];
+  let x0 = 0;
+  let x1 = 0;
+  let y0 = 0;
+  let y1 = 0; // the origin is always in the picture
+  for (const move of legs) {
+    for (const leg of move) {
+      for (const p of leg.points) {
+        const [x, y] = project(p);
+        x0 = Math.min(x0, x);
+        x1 = Math.max(x1, x);
+        y0 = Math.min(y0, y);
+        y1 = Math.max(y1, y);
+      }
+    }
+  }
+  let w = x1 - x0;
+  let h = y1 - y0;
+  const span = Math.max(w, h, 1e-3);
+  // a flat picture (all moves on one line) still gets some room across
+  if (w < span * 0.05) {
+    x0 -= (span * 0.05 - w) / 2;
+    w = span * 0.05;
+  }
+  if (h < span * 0.05) {
+    y0 -= (span * 0.05 - h) / 2;
+    h = span * 0.05;
+  }
+  const pad = span * 0.04;
+  x0 -= pad;
+  y0 -= pad;
+  w += 2 * pad;
+  h += 2 * pad;
+  const k = size / Math.max(w, h);
+  const sx = (x: number): number => (x - x0) * k;
+  const sy = (y: number): number => (y0 + h - y) * k; // screen y grows downward
+  const r2 = (n: number): string => (Math.round(n * 100) / 100).toString();
+  const pt = (p: P3): string => {
+    const [x, y] = project(p);
+    return `${r2(sx(x))} ${r2(sy(y))}`;
+  };
+  const drawn: DrawnMove[] = moves.map((move, index) => {
+    const kind = kindOf(move.mode);
+    const arc = kind === 'arc' ? arcOf(move, view.lathe) : undefined;
+    let out: Leg[];
+    if (arc && arc.a === planeAxes(view)[0] && arc.b === planeAxes(view)[1]) {
+      out = [{ d: svgArc(move, arc, view, pt, k), dashed: false }];
+    } else {
+      out = (legs[index] ?? []).map((leg) => ({
+        d: leg.points.map((p, i) => `${i === 0 ? 'M' : 'L'}${pt(p)}`).join(' '),
+        dashed: leg.dashed,
+      }));
+    }
+    const d: DrawnMove = { index, kind, legs: out };
+    if (kind === 'cycle' && !view.lathe) {
+      const [x, y] = project(display(move.to, false));
+      d.hole = [sx(x), sy(y)];
+    }
+    return d;
+  });
+  const step = niceStep(Math.max(w, h), 8); // one step on both axes: the scales are equal
+  const ticks = (lo: number, hi: number, at: (v: number) => number): Tick[] =>
+    ticksBetween(lo, hi, step).map((value) => ({ value, at: at(value) }));
+  const last = moves[moves.length - 1];
+  const extents = ['X', 'Y', 'Z'].flatMap((axis) => {
+    let min = Infinity;
+    let max = -Infinity;
+    for (const m of moves) {
+      for (const p of [m.from, m.to]) {
+        if (!(axis in p)) continue;
+        min = Math.min(min, get(p, axis));
+        max = Math.max(max, get(p, axis));
+      }
+    }
+    // an axis the program never used (a lathe's Y) is left out
+    return min <= max && (min !== 0 || max !== 0) ? [{ axis, min, max }] : [];
+  });
+  const result: Plot = {
+    width: w * k,
+    height: h * k,
+    moves: drawn,
+    origin: [sx(0), sy(0)],
+    xTicks: ticks(x0, x0 + w, sx),
+    yTicks: ticks(y0, y0 + h, sy),
+    holeRadius: Math.max(3, Math.min(10, size * 0.006)),
+    extents,
+  };
+  if (ended && last) {
+    const [x, y] = project(display(last.to, view.lathe));
+    result.end = [sx(x), sy(y)];
+  }
+  return result;
+}
+
+/** The arc plane's axes in the order that makes G03 counter-clockwise on the screen. */
+function planeAxes(view: View): [string, string] {
+  return [view.h, view.v];
+}
+
+/**
+ * An arc drawn in its own plane, as SVG arc commands. With screen y downward, sweep-flag 1
+ * turns clockwise on the screen: G02 seen from the plane's third axis (G17 XY, G18 ZX with X
+ * up, G19 YZ). A full circle is drawn as two halves.
+ */
+function svgArc(move: RunMove, arc: Arc, view: View, pt: (p: P3) => string, k: number): string {
+  const s = display(move.from, view.lathe);
+  const r = Math.round(arc.r * k * 100) / 100;
+  const clockwise = arc.sweep < 0 ? 1 : 0;
+  const parts = [`M${pt(s)}`];
+  const sweeps = Math.abs(arc.sweep) > Math.PI * 1.999 ? [arc.sweep / 2, arc.sweep] : [arc.sweep];
+  let done = 0;
+  for (const until of sweeps) {
+    const t = arc.start + until;
+    const p: P3 = { [arc.a]: arc.ca + arc.r * Math.cos(t), [arc.b]: arc.cb + arc.r * Math.sin(t) };
+    const large = Math.abs(until - done) > Math.PI ? 1 : 0;
+    parts.push(`A${r} ${r} 0 ${large} ${clockwise} ${until === arc.sweep ? pt(display(move.to, view.lathe)) : pt(p)}`);
+    done = until;
+  }
+  return parts.join(' ');
+}

@@ -1,0 +1,306 @@
+/**
+ * The toolpath webview's page: one SVG drawing of a run's moves (a `<g class="move">` per move,
+ * with a `<title>` naming its file, line and block, over grid lines with their coordinates, the
+ * origin marked), a legend and a status line, under a strict Content-Security-Policy where the
+ * one style sheet and the one script carry a nonce and nothing is loaded from anywhere. The
+ * script posts `reveal` (a move was clicked), `refresh` and `plane` to the extension, and zooms
+ * (mouse wheel) and pans (drag) by changing the SVG's viewBox. The texts arrive translated.
+ */
+import * as path from 'node:path';
+import { type Axes, formatNumber, type Plot, type RunMove, type View, PLANES } from './toolpathGeometry';
+
+export interface Texts {
+  refresh: string;
+  fit: string;
+  source: string; // "drawn from the last saved version of ..."
+  status: string; // the run's status, moves and extents
+  statusKind: 'completed' | 'alarm' | 'limit' | 'error' | 'running';
+  note?: string; // e.g. only the first N moves are drawn
+  hint: string;
+  legend: { rapid: string; feed: string; arc: string; cycle: string; hole: string; origin: string; alarm: string };
+  plane: string; // what the drawing shows: the plane, or the lathe's Z/X with X halved
+  planeButton: string; // tooltip of the plane buttons
+  verticalAxis: string; // the name on the vertical axis ("Y", "X/2")
+}
+
+const MARGIN = { left: 64, right: 24, top: 30, bottom: 44 };
+export const MAX_DRAWN_MOVES = 50000;
+
+export function escapeHtml(s: string): string {
+  return s.replace(/[&<>"']/g, (c) => `&#${c.charCodeAt(0)};`);
+}
+
+export function nonce(): string {
+  const chars = 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789';
+  let out = '';
+  for (let i = 0; i < 32; i++) out += chars.charAt(Math.floor(Math.random() * chars.length));
+  return out;
+}
+
+/** `G01  X0 Y0 -> X10 Y5  F200`: the axes that moved (all of them when none did). */
+export function moveText(move: RunMove): string {
+  const names = [...new Set([...Object.keys(move.from), ...Object.keys(move.to)])];
+  let shown = names.filter((k) => (move.from[k] ?? 0) !== (move.to[k] ?? 0));
+  if (shown.length === 0) shown = names.filter((k) => ['X', 'Y', 'Z'].includes(k));
+  const at = (p: Axes): string => shown.map((k) => `${k}${formatNumber(p[k] ?? 0)}`).join(' ');
+  const feed = move.mode !== 'G00' && move.feed ? `  F${formatNumber(move.feed)}` : '';
+  const centre = move.centre
+    ? `  (${Object.entries(move.centre)
+        .map(([k, v]) => `${k}${formatNumber(v)}`)
+        .join(' ')})`
+    : '';
+  return `${move.mode}  ${at(move.from)} → ${at(move.to)}${feed}${centre}`;
+}
+
+const STYLE = `
+:root { --rapid: #ffa94d; --feed: #74c0fc; --arc: #63e6be; --cycle: #e599f7; --alarm: #ff6b6b;
+  --grid: rgba(128,128,128,0.16); --axis: rgba(160,160,160,0.75); }
+body.vscode-light { --rapid: #d9480f; --feed: #1864ab; --arc: #087f5b; --cycle: #ae3ec9; --alarm: #c92a2a;
+  --grid: rgba(0,0,0,0.09); --axis: rgba(0,0,0,0.5); }
+body { margin: 0; padding: 0; color: var(--vscode-foreground); background: var(--vscode-editor-background);
+  font-family: var(--vscode-font-family); font-size: var(--vscode-font-size); height: 100vh;
+  display: flex; flex-direction: column; overflow: hidden; }
+header { display: flex; gap: 6px; align-items: center; padding: 6px 10px; flex-wrap: wrap;
+  border-bottom: 1px solid var(--vscode-panel-border, rgba(128,128,128,0.3)); }
+button { color: var(--vscode-button-secondaryForeground); background: var(--vscode-button-secondaryBackground);
+  border: none; padding: 3px 10px; cursor: pointer; font: inherit; }
+button:hover { background: var(--vscode-button-secondaryHoverBackground); }
+button.on { color: var(--vscode-button-foreground); background: var(--vscode-button-background); }
+.source { opacity: 0.8; margin-left: 8px; }
+#status { padding: 4px 10px; font-family: var(--vscode-editor-font-family); }
+#status.alarm, #status.error { color: var(--alarm); font-weight: bold; }
+#status.limit { color: var(--rapid); font-weight: bold; }
+.note { padding: 0 10px 4px; opacity: 0.8; }
+main { position: relative; flex: 1; min-height: 0; }
+svg#plot { width: 100%; height: 100%; display: block; user-select: none; cursor: grab; --u: 1; }
+svg#plot.dragging { cursor: grabbing; }
+.grid line { stroke: var(--grid); stroke-width: 1; vector-effect: non-scaling-stroke; }
+.axes line { stroke: var(--axis); stroke-width: 1; vector-effect: non-scaling-stroke; }
+text { fill: var(--vscode-foreground); font-family: var(--vscode-editor-font-family); opacity: 0.85;
+  font-size: calc(var(--u) * 11px); }
+text.axis-name { font-weight: bold; font-size: calc(var(--u) * 13px); opacity: 1; }
+.move { cursor: pointer; }
+.move .leg { fill: none; stroke-width: 1.6; vector-effect: non-scaling-stroke; stroke-linecap: round; }
+.move .leg.dashed { stroke-dasharray: 5 4; stroke-width: 1.2; }
+.move .hit { fill: none; stroke: transparent; stroke-width: 10; vector-effect: non-scaling-stroke; pointer-events: stroke; }
+.move.rapid .leg { stroke: var(--rapid); }
+.move.feed .leg { stroke: var(--feed); }
+.move.arc .leg { stroke: var(--arc); }
+.move.cycle .leg, .move .hole { stroke: var(--cycle); }
+.move .hole { fill: none; stroke-width: 1.4; vector-effect: non-scaling-stroke; }
+.move:hover .leg, .move.selected .leg { stroke-width: 3.5; }
+.move.selected .leg { stroke: var(--vscode-editor-foreground); }
+.origin { fill: var(--vscode-foreground); stroke: var(--vscode-foreground); stroke-width: 1.2; vector-effect: non-scaling-stroke; }
+.origin circle { fill: none; }
+.end { stroke: var(--alarm); stroke-width: 3; vector-effect: non-scaling-stroke; }
+#legend { display: flex; flex-wrap: wrap; gap: 2px 16px; list-style: none; margin: 0; padding: 2px 10px 6px; }
+#legend li { display: flex; align-items: center; gap: 6px; }
+#legend svg { width: 36px; height: 12px; flex: none; }
+#legend .plane { opacity: 0.85; }
+.hint { opacity: 0.7; margin-left: auto; }
+`;
+
+/** The page's script: clicks to the extension, wheel zoom and drag pan on the SVG's viewBox. */
+const SCRIPT = `
+const vscode = acquireVsCodeApi();
+const svg = document.getElementById('plot');
+for (const b of document.querySelectorAll('button[data-post]')) {
+  b.addEventListener('click', () => vscode.postMessage({ type: b.dataset.post, plane: b.dataset.plane }));
+}
+if (svg) {
+  const base = svg.getAttribute('viewBox');
+  const parse = (s) => s.split(/\\s+/).map(Number);
+  let saved = vscode.getState();
+  let vb = saved && saved.base === base ? saved.vb : parse(base);
+  const apply = () => {
+    svg.setAttribute('viewBox', vb.join(' '));
+    const r = svg.getBoundingClientRect();
+    if (r.width > 0 && r.height > 0) svg.style.setProperty('--u', String(Math.max(vb[2] / r.width, vb[3] / r.height)));
+    vscode.setState({ base, vb });
+  };
+  const toSvg = (e) => {
+    const m = svg.getScreenCTM();
+    const p = new DOMPoint(e.clientX, e.clientY).matrixTransform(m.inverse());
+    return [p.x, p.y];
+  };
+  svg.addEventListener('wheel', (e) => {
+    e.preventDefault();
+    const [px, py] = toSvg(e);
+    const f = e.deltaY > 0 ? 1.2 : 1 / 1.2;
+    vb = [px - (px - vb[0]) * f, py - (py - vb[1]) * f, vb[2] * f, vb[3] * f];
+    apply();
+  }, { passive: false });
+  let drag = null;
+  let dragged = false;
+  svg.addEventListener('pointerdown', (e) => {
+    if (e.button !== 0) return;
+    drag = { x: e.clientX, y: e.clientY, vb: vb.slice() };
+    dragged = false;
+  });
+  svg.addEventListener('pointermove', (e) => {
+    if (!drag) return;
+    const dx = e.clientX - drag.x;
+    const dy = e.clientY - drag.y;
+    if (!dragged && Math.hypot(dx, dy) < 4) return;
+    if (!dragged) { dragged = true; svg.setPointerCapture(e.pointerId); svg.classList.add('dragging'); }
+    const r = svg.getBoundingClientRect();
+    const u = Math.max(drag.vb[2] / r.width, drag.vb[3] / r.height);
+    vb = [drag.vb[0] - dx * u, drag.vb[1] - dy * u, drag.vb[2], drag.vb[3]];
+    apply();
+  });
+  const end = () => { drag = null; svg.classList.remove('dragging'); };
+  svg.addEventListener('pointerup', end);
+  svg.addEventListener('pointercancel', end);
+  svg.addEventListener('click', (e) => {
+    if (dragged) { dragged = false; return; }
+    const g = e.target.closest('.move');
+    if (!g) return;
+    for (const s of svg.querySelectorAll('.move.selected')) s.classList.remove('selected');
+    g.classList.add('selected');
+    vscode.postMessage({ type: 'reveal', index: Number(g.dataset.index) });
+  });
+  document.getElementById('fit').addEventListener('click', () => { vb = parse(base); apply(); });
+  window.addEventListener('resize', apply);
+  apply();
+}
+`;
+
+export interface Page {
+  cspSource: string;
+  language: string;
+  texts: Texts;
+  plot?: Plot;
+  moves?: RunMove[];
+  view?: View;
+  planes: boolean; // offer the XY / ZX / YZ buttons (a mill)
+}
+
+function legendLine(cls: string, dashed: boolean): string {
+  const dash = dashed ? ' dashed' : '';
+  return `<svg viewBox="0 0 36 12"><g class="move ${cls}"><path class="leg${dash}" d="M2 6 L34 6"/></g></svg>`;
+}
+
+function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts): string {
+  const w = plot.width;
+  const h = plot.height;
+  const n = (v: number): string => (Math.round(v * 100) / 100).toString();
+  const out: string[] = [];
+  const vb = [-MARGIN.left, -MARGIN.top, w + MARGIN.left + MARGIN.right, h + MARGIN.top + MARGIN.bottom];
+  out.push(`<svg id="plot" xmlns="http://www.w3.org/2000/svg" viewBox="${vb.map(n).join(' ')}" preserveAspectRatio="xMidYMid meet">`);
+  out.push('<g class="grid">');
+  for (const t of plot.xTicks) out.push(`<line x1="${n(t.at)}" y1="0" x2="${n(t.at)}" y2="${n(h)}"/>`);
+  for (const t of plot.yTicks) out.push(`<line x1="0" y1="${n(t.at)}" x2="${n(w)}" y2="${n(t.at)}"/>`);
+  out.push('</g><g class="labels">');
+  for (const t of plot.xTicks) {
+    out.push(`<text x="${n(t.at)}" y="${n(h + 16)}" text-anchor="middle">${formatNumber(t.value)}</text>`);
+  }
+  for (const t of plot.yTicks) {
+    out.push(`<text x="-6" y="${n(t.at + 4)}" text-anchor="end">${formatNumber(t.value)}</text>`);
+  }
+  out.push(`<text class="axis-name" x="${n(w)}" y="${n(h + 36)}" text-anchor="end">${escapeHtml(view.h)} →</text>`);
+  out.push(`<text class="axis-name" x="-6" y="-14" text-anchor="start">↑ ${escapeHtml(texts.verticalAxis)}</text>`);
+  const [ox, oy] = plot.origin;
+  out.push('</g><g class="axes">');
+  out.push(`<line x1="0" y1="${n(oy)}" x2="${n(w)}" y2="${n(oy)}"/><line x1="${n(ox)}" y1="0" x2="${n(ox)}" y2="${n(h)}"/>`);
+  out.push('</g><g class="moves">');
+  const hr = n(plot.holeRadius);
+  for (const m of plot.moves) {
+    const move = moves[m.index];
+    if (!move) continue;
+    const title = `${path.basename(move.file)}:${move.line}  ${moveText(move)}`;
+    const d = m.legs.map((l) => l.d).join(' ');
+    out.push(`<g class="move ${m.kind}" data-index="${m.index}" data-line="${move.line}"><title>${escapeHtml(title)}</title>`);
+    for (const leg of m.legs) out.push(`<path class="leg${leg.dashed ? ' dashed' : ''}" d="${leg.d}"/>`);
+    if (m.hole) {
+      const [x, y] = m.hole;
+      out.push(`<circle class="hole" cx="${n(x)}" cy="${n(y)}" r="${hr}"/>`);
+    }
+    out.push(`<path class="hit" d="${d}${m.hole ? ` M${n(m.hole[0])} ${n(m.hole[1])} h0.01` : ''}"/></g>`);
+  }
+  out.push('</g>');
+  // the origin: a datum symbol, two quarters filled
+  const r = 8;
+  out.push(
+    `<g class="origin"><title>${escapeHtml(texts.legend.origin)}</title><circle cx="${n(ox)}" cy="${n(oy)}" r="${r}"/>` +
+      `<path d="M${n(ox)} ${n(oy)} L${n(ox + r)} ${n(oy)} A${r} ${r} 0 0 0 ${n(ox)} ${n(oy - r)} Z` +
+      ` M${n(ox)} ${n(oy)} L${n(ox - r)} ${n(oy)} A${r} ${r} 0 0 0 ${n(ox)} ${n(oy + r)} Z"/></g>`,
+  );
+  if (plot.end) {
+    const [x, y] = plot.end;
+    const s = 7;
+    out.push(
+      `<g class="end"><title>${escapeHtml(texts.legend.alarm)}</title>` +
+        `<path d="M${n(x - s)} ${n(y - s)} L${n(x + s)} ${n(y + s)} M${n(x - s)} ${n(y + s)} L${n(x + s)} ${n(y - s)}"/></g>`,
+    );
+  }
+  out.push('</svg>');
+  return out.join('\n');
+}
+
+function legend(texts: Texts, plot: Plot): string {
+  const l = texts.legend;
+  const drawn = new Set(plot.moves.map((m) => m.kind));
+  const items = [
+    `<li>${legendLine('rapid', true)}${escapeHtml(l.rapid)}</li>`,
+    `<li>${legendLine('feed', false)}${escapeHtml(l.feed)}</li>`,
+  ];
+  if (drawn.has('arc')) items.push(`<li>${legendLine('arc', false)}${escapeHtml(l.arc)}</li>`);
+  if (drawn.has('cycle')) items.push(`<li>${legendLine('cycle', false)}${escapeHtml(l.cycle)}</li>`);
+  if (plot.moves.some((m) => m.hole)) {
+    items.push(
+      `<li><svg viewBox="0 0 36 12"><g class="move cycle"><circle class="hole" cx="18" cy="6" r="4.5"/></g></svg>${escapeHtml(l.hole)}</li>`,
+    );
+  }
+  items.push(
+    `<li><svg viewBox="0 0 36 12"><g class="origin"><circle cx="18" cy="6" r="5"/><path d="M18 6 L23 6 A5 5 0 0 0 18 1 Z M18 6 L13 6 A5 5 0 0 0 18 11 Z"/></g></svg>${escapeHtml(l.origin)}</li>`,
+  );
+  if (plot.end) {
+    items.push(`<li><svg viewBox="0 0 36 12"><g class="end"><path d="M14 2 L22 10 M14 10 L22 2"/></g></svg>${escapeHtml(l.alarm)}</li>`);
+  }
+  items.push(`<li class="plane">${escapeHtml(texts.plane)}</li>`);
+  return `<ul id="legend">${items.join('')}</ul>`;
+}
+
+export function toolpathHtml(page: Page, nonceValue: string): string {
+  const t = page.texts;
+  const csp = [
+    "default-src 'none'",
+    `style-src 'nonce-${nonceValue}'`,
+    `script-src 'nonce-${nonceValue}'`,
+    `img-src ${page.cspSource} data:`,
+    `font-src ${page.cspSource}`,
+  ].join('; ');
+  const planeButtons =
+    page.planes && page.view
+      ? PLANES.map(
+          (p) =>
+            `<button data-post="plane" data-plane="${p}" title="${escapeHtml(t.planeButton)}"${p === page.view?.plane ? ' class="on"' : ''}>${p}</button>`,
+        ).join('')
+      : '';
+  const body: string[] = [
+    `<header><button id="refresh" data-post="refresh">${escapeHtml(t.refresh)}</button>`,
+    page.plot ? `<button id="fit">${escapeHtml(t.fit)}</button>${planeButtons}` : '',
+    `<span class="source">${escapeHtml(t.source)}</span>`,
+    page.plot ? `<span class="hint">${escapeHtml(t.hint)}</span>` : '',
+    '</header>',
+    `<div id="status" class="${t.statusKind}">${escapeHtml(t.status)}</div>`,
+    t.note ? `<div class="note">${escapeHtml(t.note)}</div>` : '',
+    page.plot ? legend(t, page.plot) : '',
+    '<main>',
+    page.plot && page.moves && page.view ? drawing(page.plot, page.moves, page.view, t) : '',
+    '</main>',
+  ];
+  return `<!DOCTYPE html>
+<html lang="${escapeHtml(page.language)}">
+<head>
+<meta charset="UTF-8">
+<meta http-equiv="Content-Security-Policy" content="${csp}">
+<meta name="viewport" content="width=device-width, initial-scale=1.0">
+<style nonce="${nonceValue}">${STYLE}</style>
+</head>
+<body>
+${body.join('\n')}
+<script nonce="${nonceValue}">${SCRIPT}</script>
+</body>
+</html>`;
+}
