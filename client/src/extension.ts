@@ -19,7 +19,7 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
   const output = vscode.window.createOutputChannel('CNC Macro');
   const server = new ServerController(context, log);
   controller = server;
-  context.subscriptions.push(log, output, server, new DialectStatus());
+  context.subscriptions.push(log, output, server, new DialectStatus(server));
   registerCommands(context, server, output);
   registerToolpath(context, server);
   registerDebugger(context, server);

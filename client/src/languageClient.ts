@@ -38,6 +38,13 @@ class PushDiagnosticsClient extends LanguageClient {
   }
 }
 
+/** The server's answer to `cncmacro/documentDialect`. */
+export interface DocumentDialect {
+  dialect: string;
+  title: string;
+  source: 'file' | 'workspace' | 'setting' | 'default';
+}
+
 export class ServerController implements vscode.Disposable {
   private client: LanguageClient | undefined;
   private starting: Promise<void> | undefined;
@@ -76,6 +83,24 @@ export class ServerController implements vscode.Disposable {
         this.log.warn(`stopping the language server: ${String(e)}`);
       }
       await client.dispose();
+    }
+  }
+
+  /**
+   * The dialect the server reads an open document in and what decided it (`file`, `workspace`,
+   * `setting` or `default`); undefined while the server is not running or the document is not open.
+   */
+  async documentDialect(uri: vscode.Uri): Promise<DocumentDialect | undefined> {
+    if (!this.client?.isRunning()) {
+      return undefined;
+    }
+    try {
+      const answer = await this.client.sendRequest<DocumentDialect | null>('cncmacro/documentDialect', {
+        uri: this.client.code2ProtocolConverter.asUri(uri),
+      });
+      return answer ?? undefined;
+    } catch {
+      return undefined;
     }
   }
 

@@ -167,6 +167,16 @@ test('clicking the dialect in the status bar picks another and writes cncMacro.d
   assert.equal(JSON.parse(fs.readFileSync(settingsFile, 'utf8'))['cncMacro.dialect'], 'fanuc');
 });
 
+test("the status bar shows the dialect a file is read in: its own comment wins over the setting", { timeout: STEP }, async () => {
+  await openFile('lathe_part.nc'); // (cncmacro: dialect=gsk980tdi), the setting is fanuc
+  const item = page.locator('.statusbar-item', { hasText: 'GSK980TDi' });
+  await item.waitFor();
+  await shot('7b-dialect-from-the-file');
+  await openFile('O9100.nc');
+  await page.locator('.statusbar-item', { hasText: 'FANUC 0i' }).waitFor();
+  assert.equal(await item.count(), 0);
+});
+
 /** The moves `cncmacro run --json` makes for an example program: what the toolpath view must draw. */
 function movesOf(folder, name) {
   const cncmacro = path.join(ROOT, '.venv', 'bin', 'cncmacro');

@@ -25,4 +25,14 @@ def dialect_from_text(lines: list[str]) -> str | None:
 
 def choose_dialect(lines: list[str], workspace: str | None = None, setting: str | None = None) -> str:
     """The file's dialect by the chain: file comment, workspace, setting, default."""
-    return dialect_from_text(lines) or normalise_dialect(workspace) or normalise_dialect(setting) or DEFAULT_DIALECT
+    return dialect_and_source(lines, workspace, setting)[0]
+
+
+def dialect_and_source(lines: list[str], workspace: str | None = None, setting: str | None = None) -> tuple[str, str]:
+    """``choose_dialect`` and which link of the chain decided: ``file`` (its comment),
+    ``workspace`` (``.cncmacro.toml``), ``setting`` or ``default``."""
+    for source, name in (("file", dialect_from_text(lines)), ("workspace", normalise_dialect(workspace)),
+                         ("setting", normalise_dialect(setting))):  # fmt: skip
+        if name:
+            return name, source
+    return DEFAULT_DIALECT, "default"

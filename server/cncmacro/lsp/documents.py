@@ -19,7 +19,7 @@ from pygls.uris import to_fs_path
 
 from ..dialects import get_dialect
 from ..dialects.dialect import Dialect
-from ..library.dialect_choice import HEADER_LINES, choose_dialect
+from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_and_source
 from ..library.programs import LoadedFile
 from ..syntax.document import ParsedDocument, split_lines
 from ..syntax.nodes import Block
@@ -77,6 +77,10 @@ class Documents:
 
     def dialect_for(self, lines: list[str]) -> Dialect:
         return get_dialect(choose_dialect(lines, self.workspace_dialect, self.setting_dialect))
+
+    def dialect_source(self, lines: list[str]) -> str:
+        """Which link of the dialect chain decided for these lines (``dialect_and_source``)."""
+        return dialect_and_source(lines, self.workspace_dialect, self.setting_dialect)[1]
 
     def open(self, item: types.TextDocumentItem, parsed: ParsedDocument | None = None) -> OpenDocument:
         """Open ``item``; ``parsed`` is its text already parsed (by the analysis)."""

@@ -30,6 +30,7 @@ from .workspace_index import WorkspaceIndex
 
 log = logging.getLogger(__name__)
 CONFIGURATION_TIMEOUT = 2.0  # seconds to wait for the editor's settings before analysing
+DOCUMENT_DIALECT = "cncmacro/documentDialect"  # {"uri"} -> {"dialect", "title", "source"} or null
 
 
 class CncMacroProtocol(LanguageServerProtocol):
@@ -207,6 +208,16 @@ def build_server() -> CncMacroServer:
         ls.roots = [r for r in ls.roots if r not in gone] + [uri_to_path(f.uri) for f in params.event.added]
         ls.index.scan(ls.roots)
         ls.diagnostics.folders_changed(ls.roots)
+
+    @server.feature(DOCUMENT_DIALECT)
+    def document_dialect(ls: CncMacroServer, params: Any) -> dict[str, str] | None:
+        """The dialect an open document is read in and what decided it (the status bar)."""
+        uri = params.get("uri") if isinstance(params, dict) else getattr(params, "uri", None)
+        doc = ls.documents.by_uri.get(uri) if isinstance(uri, str) else None
+        if doc is None:
+            return None
+        source = ls.documents.dialect_source(doc.parsed.lines)
+        return {"dialect": doc.dialect.name, "title": doc.dialect.title, "source": source}
 
     for module in (
         hover,
