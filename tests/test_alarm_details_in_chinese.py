@@ -19,6 +19,7 @@ from pathlib import Path
 import pytest
 
 import cncmacro.machine
+from bilingual_checks import CJK, PROSE, called_name, detail_problems
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.bilingual import detail, in_language
 from cncmacro.dap.protocol import MessageWriter, Request
@@ -28,8 +29,6 @@ from cncmacro.library.machine_file import MachineSettings
 from running import run
 
 MACHINE_DIR = Path(cncmacro.machine.__file__).parent
-CJK = re.compile(r"[\u4e00-\u9fff]")
-PROSE = re.compile(r"[a-z]{2,}")  # English prose is lower case; codes (G65, L0, N10, #100) are not
 TITLES = tuple(get_dialect(name).title for name in ("fanuc", "gsk980tdi"))  # product names stay as they are
 
 # ---------------------------------------------------------------- every site has its Chinese
@@ -38,17 +37,12 @@ MESSAGE_ARGUMENT = {"MacroAlarm": 1, "raiser": 1, "Note": 1, "note": 1, "pause":
 NOTE_LISTS = ("notes", "remarks")  # lists whose items the machine turns into notes
 
 
-def _name(call: ast.Call) -> str | None:
-    f = call.func
-    return f.id if isinstance(f, ast.Name) else f.attr if isinstance(f, ast.Attribute) else None
-
-
 def message_sites(tree: ast.AST) -> Iterator[tuple[str, int, ast.expr]]:
     """(what, line, message expression) of every alarm and note the code constructs."""
     for node in ast.walk(tree):
         if not isinstance(node, ast.Call):
             continue
-        name = _name(node)
+        name = called_name(node)
         if name in MESSAGE_ARGUMENT:
             k = MESSAGE_ARGUMENT[name]
             given = [kw.value for kw in node.keywords if kw.arg == "message"]
@@ -59,7 +53,7 @@ def message_sites(tree: ast.AST) -> Iterator[tuple[str, int, ast.expr]]:
             owner = node.func.value
             owner_name = owner.id if isinstance(owner, ast.Name) else getattr(owner, "attr", None)
             arg = node.args[0]
-            if owner_name in NOTE_LISTS and not (isinstance(arg, ast.Call) and _name(arg) == "Note"):
+            if owner_name in NOTE_LISTS and not (isinstance(arg, ast.Call) and called_name(arg) == "Note"):
                 yield f"{owner_name}.append", node.lineno, arg
 
 
@@ -68,7 +62,7 @@ def english_outside_detail(expr: ast.expr) -> list[str]:
     found: list[str] = []
 
     def visit(n: ast.AST) -> None:
-        if isinstance(n, ast.Call) and _name(n) == "detail":
+        if isinstance(n, ast.Call) and called_name(n) == "detail":
             return
         if isinstance(n, ast.Constant) and isinstance(n.value, str) and re.search(r"[A-Za-z]{2,}", n.value):
             found.append(n.value)
@@ -77,45 +71,6 @@ def english_outside_detail(expr: ast.expr) -> list[str]:
 
     visit(expr)
     return found
-
-
-def _literal_parts(expr: ast.expr) -> tuple[str, set[str]] | None:
-    """The literal text of a string or f-string and the expressions it interpolates."""
-    if isinstance(expr, ast.Constant) and isinstance(expr.value, str):
-        return expr.value, set()
-    if isinstance(expr, ast.JoinedStr):
-        text = "".join(v.value for v in expr.values if isinstance(v, ast.Constant))
-        holes = {_shown(v.value) for v in expr.values if isinstance(v, ast.FormattedValue)}
-        return text, holes
-    return None
-
-
-def _shown(value: ast.expr) -> str:
-    """The value a hole interpolates; ``in_language(x, True)`` shows ``x`` (in its Chinese)."""
-    if isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and value.func.id == "in_language":
-        return ast.unparse(value.args[0])
-    return ast.unparse(value)
-
-
-def detail_problems(call: ast.Call) -> list[str]:
-    """What is wrong with one ``detail(en, zh)``: no Chinese, English prose left in the Chinese,
-    or a number, code or variable of the English missing from the Chinese (or added)."""
-    if len(call.args) != 2 or call.keywords:
-        return ["detail takes the English and the Chinese"]
-    en, zh = call.args
-    if isinstance(zh, ast.Call) and _name(zh) == "alarm_text":
-        return []  # an alarm's standard text: both languages come from the dialect's alarm table
-    en_parts, zh_parts = _literal_parts(en), _literal_parts(zh)
-    if en_parts is None or zh_parts is None:
-        return ["both texts must be written out (a string or an f-string)"]
-    problems = []
-    if not CJK.search(zh_parts[0]):
-        problems.append(f"no Chinese in {ast.unparse(zh)}")
-    if PROSE.search(zh_parts[0]):
-        problems.append(f"English words left in {ast.unparse(zh)}")
-    if en_parts[1] != zh_parts[1]:
-        problems.append(f"{ast.unparse(en)} and {ast.unparse(zh)} show different values")
-    return problems
 
 
 def problems_in(source: str, file: str) -> tuple[int, list[str]]:
@@ -127,7 +82,7 @@ def problems_in(source: str, file: str) -> tuple[int, list[str]]:
         for text in english_outside_detail(expr):
             out.append(f"{file}:{line}: {what} message {text!r} has no Chinese (write detail(en, zh))")
     for node in ast.walk(tree):
-        if isinstance(node, ast.Call) and _name(node) == "detail":
+        if isinstance(node, ast.Call) and called_name(node) == "detail":
             out += [f"{file}:{node.lineno}: {p}" for p in detail_problems(node)]
     return sites, out
 

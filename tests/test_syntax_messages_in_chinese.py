@@ -18,6 +18,7 @@ from pathlib import Path
 import pytest
 
 import cncmacro.syntax
+from bilingual_checks import CJK, PROSE, QUOTED, called_name, detail_problems, literal_parts
 from cncmacro.analysis.call_index import CallIndex
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.bilingual import in_language
@@ -27,55 +28,10 @@ from cncmacro.syntax.block_parser import parse_block
 from cncmacro.syntax.nodes import Block, Problem
 
 SYNTAX_DIR = Path(cncmacro.syntax.__file__).parent
-CJK = re.compile(r"[\u4e00-\u9fff]")
-PROSE = re.compile(r"[a-z]{2,}")  # English prose is lower case; codes (G01, X, #1, U+DCFF) are not
-QUOTED = re.compile(r"'[^']*'")  # source text quoted in a message stays as it was written
 
 # ---------------------------------------------------------------- every message has its Chinese
 
 MAKERS = {"Problem": 0, "BlockError": 0}  # what takes a message, and the position of the message
-
-
-def _name(node: ast.AST) -> str | None:
-    if isinstance(node, ast.Call):
-        node = node.func
-    return node.id if isinstance(node, ast.Name) else node.attr if isinstance(node, ast.Attribute) else None
-
-
-def _literal(expr: ast.expr) -> tuple[str, set[str]] | None:
-    """The literal text of a string or f-string and the values it shows (``x.zh`` counts as ``x``:
-    the Chinese shows the Chinese of the same value)."""
-    if isinstance(expr, ast.Constant) and isinstance(expr.value, str):
-        return expr.value, set()
-    if isinstance(expr, ast.JoinedStr):
-        text = "".join(v.value for v in expr.values if isinstance(v, ast.Constant))
-        holes = set()
-        for v in expr.values:
-            if isinstance(v, ast.FormattedValue):
-                value = v.value
-                if isinstance(value, ast.Attribute) and value.attr == "zh":
-                    value = value.value
-                holes.add(ast.unparse(value))
-        return text, holes
-    return None
-
-
-def detail_problems(call: ast.Call) -> list[str]:
-    """What is wrong with one ``detail(en, zh)``: prose without Chinese, English words left in
-    the Chinese, or a value of the English missing from the Chinese (or added)."""
-    if len(call.args) != 2 or call.keywords:
-        return ["detail takes the English and the Chinese"]
-    en, zh = (_literal(a) for a in call.args)
-    if en is None or zh is None:
-        return ["both texts must be written out (a string or an f-string)"]
-    out = []
-    if PROSE.search(en[0]) and not CJK.search(zh[0]):
-        out.append(f"no Chinese in {ast.unparse(call.args[1])}")
-    if PROSE.search(QUOTED.sub("", zh[0])):
-        out.append(f"English words left in {ast.unparse(call.args[1])}")
-    if en[1] != zh[1]:
-        out.append(f"{ast.unparse(call.args[0])} and {ast.unparse(call.args[1])} show different values")
-    return out
 
 
 def _detail_names(tree: ast.Module) -> set[str]:
@@ -88,7 +44,7 @@ def _detail_names(tree: ast.Module) -> set[str]:
             parts = v.elts if isinstance(v, ast.Tuple) else [v]
             for target in node.targets:
                 if isinstance(target, ast.Name):
-                    ok = all(_name(p) in ("detail", "Detail") for p in parts)
+                    ok = all(called_name(p) in ("detail", "Detail") for p in parts)
                     made[target.id] = made.get(target.id, True) and ok
     names = {name for name, ok in made.items() if ok}
     for node in ast.walk(tree):
@@ -116,23 +72,23 @@ def problems_in(source: str, file: str) -> tuple[int, list[str]]:
     for line, arg in message_sites(tree):
         sites += 1
         ok = (
-            _name(arg) == "detail"
+            called_name(arg) == "detail"
             or (isinstance(arg, ast.Name) and arg.id in held)
             or (isinstance(arg, ast.Attribute) and arg.attr == "message")  # a BlockError's, checked below
         )
         if not ok:
             out.append(f"{file}:{line}: message {ast.unparse(arg)} has no Chinese (write detail(en, zh))")
     for node in ast.walk(tree):
-        if isinstance(node, ast.Call) and _name(node) == "detail":
+        if isinstance(node, ast.Call) and called_name(node) == "detail":
             out += [f"{file}:{node.lineno}: {p}" for p in detail_problems(node)]
-        elif isinstance(node, ast.Call) and _name(node) == "Detail":
+        elif isinstance(node, ast.Call) and called_name(node) == "Detail":
             for a in node.args:
-                lit = _literal(a)
+                lit = literal_parts(a)
                 if lit is not None and PROSE.search(lit[0]):
                     out.append(f"{file}:{node.lineno}: write detail(en, zh) for {ast.unparse(a)}")
         elif isinstance(node, ast.Dict):  # a table of names, such as the terminals lark expects
             for v in node.values:
-                lit = _literal(v) if v is not None else None
+                lit = literal_parts(v) if v is not None else None
                 if lit is not None and PROSE.search(lit[0]):
                     out.append(f"{file}:{v.lineno}: {ast.unparse(v)} has no Chinese (write detail(en, zh))")
         elif isinstance(node, ast.ClassDef) and node.name == "BlockError":
