@@ -187,3 +187,11 @@ def test_python_dash_m_entry_point(examples):
         timeout=120,
     )
     assert r.returncode == 0 and "status: completed" in r.stdout
+
+
+def test_a_missing_program_is_named_plainly_in_both_languages(tmp_path):
+    missing = str(tmp_path / "O0404.nc")
+    code, out, err = cli("run", "--no-save", missing)
+    assert (code, out, err.strip()) == (2, "", f"cncmacro run: there is no file {missing}")
+    code, _out, err = cli("run", "--no-save", "--locale", "zh-CN", missing)
+    assert (code, err.strip()) == (2, f"cncmacro run：文件 {missing} 不存在")

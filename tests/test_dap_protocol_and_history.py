@@ -142,4 +142,4 @@ def test_a_session_answers_unknown_and_early_requests_with_failures():
     assert [(r["request_seq"], r["success"]) for r in replies] == [(1, False), (2, False), (3, False)]
     assert "unknown request 'fly'" in replies[0]["message"]
     assert "launch one first" in replies[1]["message"]
-    assert "cannot read the program" in replies[2]["message"]
+    assert "there is no file /no/such/file.nc" in replies[2]["message"]

@@ -122,5 +122,5 @@ def launch(config: LaunchConfig) -> Launched:
             block_delete=config.block_delete, max_blocks=config.max_blocks,
         )  # fmt: skip
     except SetupError as e:
-        raise LaunchError(str(e)) from None
+        raise LaunchError(e.args[0] if e.args else str(e)) from None  # a Detail keeps its Chinese
     return Launched(prepared, config)

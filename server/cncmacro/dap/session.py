@@ -126,7 +126,7 @@ class Session:
             config = LaunchConfig.from_arguments(args)
             launched = launch(config)
         except LaunchError as e:
-            raise RequestFailed(str(e)) from None
+            raise RequestFailed(show.detail_text(e.args[0], self.locale)) from None
         self._use(launched)
         if self.configured:
             self.later(self._start)
@@ -298,7 +298,7 @@ class Session:
             config = LaunchConfig.from_arguments(new_args) if isinstance(new_args, dict) else self.launched.config
             launched = launch(config)
         except LaunchError as e:
-            raise RequestFailed(str(e)) from None
+            raise RequestFailed(show.detail_text(e.args[0], self.locale)) from None
         self._use(launched)
         self.later(self._start)
 

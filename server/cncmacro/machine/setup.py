@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from pathlib import Path
 
+from ..bilingual import detail, in_language
 from ..dialects import get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect
 from ..library.files import BinaryFileError, read_program
@@ -70,7 +71,12 @@ def prepare_run(
     try:
         source = read_program(program)
     except (OSError, BinaryFileError) as e:
-        raise SetupError(f"cannot read the program {program}: {e}") from None
+        if isinstance(e, FileNotFoundError):
+            raise SetupError(detail(f"there is no file {program}", f"文件 {program} 不存在")) from None
+        why = e.args[0] if isinstance(e, BinaryFileError) and e.args else str(e)
+        raise SetupError(
+            detail(f"cannot read the program {program}: {why}", f"无法读取程序 {program}：{in_language(why, True)}")
+        ) from None
     settings = machine_settings(program, machine_file)
     if block_delete is not None:
         settings = replace(settings, block_delete=block_delete)
