@@ -195,3 +195,17 @@ def test_a_missing_program_is_named_plainly_in_both_languages(tmp_path):
     assert (code, out, err.strip()) == (2, "", f"cncmacro run: there is no file {missing}")
     code, _out, err = cli("run", "--no-save", "--locale", "zh-CN", missing)
     assert (code, err.strip()) == (2, f"cncmacro run：文件 {missing} 不存在")
+
+
+def test_stdin_runs_an_editors_unsaved_text_under_the_files_name(tmp_path):
+    # the file on disk says #1=3; the editor's text says #1=7 and calls O9001 beside the file
+    (tmp_path / "O0001.nc").write_text("O0001\n#1=3\nM30\n", encoding="utf-8")
+    (tmp_path / "O9001.nc").write_text("O9001\n#100=#24*2\nM99\n", encoding="utf-8")
+    unsaved = "O0001\n#1=7\nG65 P9001 X#1\nM30\n"
+    done = subprocess.run(
+        [sys.executable, "-m", "cncmacro", "run", "--no-save", "--json", "--stdin", str(tmp_path / "O0001.nc")],
+        input=unsaved.encode("gbk"), capture_output=True, check=False, timeout=60,
+    )  # fmt: skip
+    result = json.loads(done.stdout)
+    assert (done.returncode, result["status"]) == (0, "completed")
+    assert result["variables"] == {"1": 7.0, "100": 14.0}

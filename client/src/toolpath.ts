@@ -1,10 +1,11 @@
 /**
  * The Show Toolpath command: runs the active program on the simulated machine
- * (`python -m cncmacro run --no-save --json FILE`, the saved file, as Run Program does) and draws
- * its moves in a webview panel beside the editor, one panel per file. The panel is drawn again
- * when the file or a program it called is saved, and on its Refresh button; clicking a move opens
- * the file it was made in (a called program's too) at its line. The run cannot read the editor's
- * unsaved text, so the view says that it shows the last saved version.
+ * (`python -m cncmacro run --no-save --json --stdin FILE`, the editor's text, unsaved changes
+ * included, under the file's name) and draws its moves in a webview panel beside the editor, one
+ * panel per file. The panel is drawn again a moment after the program is edited, when a program
+ * it called is saved, and on its Refresh button; clicking a move opens the file it was made in
+ * (a called program's too) at its line. A program that is not open in the editor is run from its
+ * file.
  */
 import { type ChildProcess, spawn } from 'node:child_process';
 import * as path from 'node:path';
@@ -26,6 +27,7 @@ import { MAX_DRAWN_MOVES, nonce, type Texts, toolpathHtml } from './toolpathView
 
 const VIEW_TYPE = 'cncMacro.toolpath';
 const MAX_OUTPUT_BYTES = 256 * 1024 * 1024; // a run that prints more is stopped
+const EDIT_QUIET_MS = 800; // an edit is drawn once typing pauses this long
 
 type Outcome = { result: RunResult } | { error: string };
 
@@ -36,7 +38,7 @@ class ToolpathPanel implements vscode.Disposable {
   private result: RunResult | undefined;
   private plane: Plane = 'XY';
   private runs = 0;
-  private dirtyWhenRun = false;
+  private fromEditor = false; // the last run read the editor's text, not the file
   private disposed = false;
 
   constructor(
@@ -86,7 +88,7 @@ class ToolpathPanel implements vscode.Disposable {
       return;
     }
     const document = vscode.workspace.textDocuments.find((d) => d.uri.toString() === this.uri.toString());
-    this.dirtyWhenRun = document?.isDirty ?? false;
+    this.fromEditor = document !== undefined;
     const dialect = document ? settings.dialect(document.uri) : settings.dialect(this.uri);
     const locale = vscode.env.language.toLowerCase().startsWith('zh') ? 'zh-CN' : 'en';
     const file = this.uri.fsPath;
@@ -98,9 +100,10 @@ class ToolpathPanel implements vscode.Disposable {
       locale,
       '--dialect',
       dialect,
+      ...(document ? ['--stdin'] : []),
       file,
     ]);
-    const outcome = await this.execute(command, args, path.dirname(file));
+    const outcome = await this.execute(command, args, path.dirname(file), document?.getText());
     if (run !== this.runs) return; // a newer run took over
     if ('error' in outcome) {
       this.result = undefined;
@@ -111,7 +114,8 @@ class ToolpathPanel implements vscode.Disposable {
     this.draw();
   }
 
-  private execute(command: string, args: string[], cwd: string): Promise<Outcome> {
+  /** Run `command`, with `input` on its standard input (the program's text), and read its JSON. */
+  private execute(command: string, args: string[], cwd: string, input?: string): Promise<Outcome> {
     return new Promise((resolve) => {
       const child = spawn(command, args, {
         cwd,
@@ -119,6 +123,8 @@ class ToolpathPanel implements vscode.Disposable {
         windowsHide: true,
       });
       this.child = child;
+      child.stdin.on('error', () => undefined); // a run that ends before reading it all
+      child.stdin.end(input ?? '', 'utf8');
       const out: Buffer[] = [];
       const err: Buffer[] = [];
       let size = 0;
@@ -154,9 +160,9 @@ class ToolpathPanel implements vscode.Disposable {
 
   private source(): string {
     const name = path.basename(this.uri.fsPath);
-    return this.dirtyWhenRun
-      ? vscode.l10n.t('Drawn from the last saved version of {0}: the unsaved changes are not drawn.', name)
-      : vscode.l10n.t('Drawn from the last saved version of {0}.', name);
+    return this.fromEditor
+      ? vscode.l10n.t("Drawn from the editor's text of {0}, unsaved changes included.", name)
+      : vscode.l10n.t('Drawn from the saved file {0}.', name);
   }
 
   private texts(status: string, statusKind: Texts['statusKind'], verticalAxis: string, plane: string, note?: string): Texts {
@@ -318,22 +324,28 @@ async function showToolpath(
 export function registerToolpath(context: vscode.ExtensionContext, server: ServerController): void {
   const panels = new Map<string, ToolpathPanel>();
   const pending = new Map<ToolpathPanel, NodeJS.Timeout>();
+  /** Draw again the panels `document` feeds, `delayMs` after the last such event; an edit only
+   * redraws the panel of the edited program (a called program is read from its file). */
+  const redraw = (document: vscode.TextDocument, delayMs: number, ownOnly = false): void => {
+    for (const panel of panels.values()) {
+      if (ownOnly ? panel.uri.toString() !== document.uri.toString() : !panel.drawsFrom(document.uri)) continue;
+      clearTimeout(pending.get(panel));
+      pending.set(
+        panel,
+        setTimeout(() => {
+          pending.delete(panel);
+          void panel.refresh();
+        }, delayMs),
+      );
+    }
+  };
   context.subscriptions.push(
     vscode.commands.registerCommand('cncMacro.showToolpath', (uri?: vscode.Uri) =>
       showToolpath(context, server, panels, uri instanceof vscode.Uri ? uri : undefined),
     ),
-    vscode.workspace.onDidSaveTextDocument((document) => {
-      for (const panel of panels.values()) {
-        if (!panel.drawsFrom(document.uri)) continue;
-        clearTimeout(pending.get(panel));
-        pending.set(
-          panel,
-          setTimeout(() => {
-            pending.delete(panel);
-            void panel.refresh();
-          }, 150),
-        );
-      }
+    vscode.workspace.onDidSaveTextDocument((document) => redraw(document, 150)),
+    vscode.workspace.onDidChangeTextDocument((e) => {
+      if (e.contentChanges.length > 0) redraw(e.document, EDIT_QUIET_MS, true);
     }),
     {
       dispose: () => {

@@ -12,7 +12,7 @@ import { type Axes, formatNumber, type Plot, type RunMove, type View, PLANES } f
 export interface Texts {
   refresh: string;
   fit: string;
-  source: string; // "drawn from the last saved version of ..."
+  source: string; // "drawn from the editor's text of ..."
   status: string; // the run's status, moves and extents
   statusKind: 'completed' | 'alarm' | 'limit' | 'error' | 'running';
   note?: string; // e.g. only the first N moves are drawn

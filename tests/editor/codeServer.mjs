@@ -117,6 +117,7 @@ export class CodeServer {
           'editor.hover.delay': 200,
           'chat.commandCenter.enabled': false,
           'window.restoreWindows': 'none',
+          'files.autoSave': 'off', // the web workbench saves after a second by default; desktop VS Code does not
         },
         null,
         2,

@@ -246,22 +246,24 @@ test('Show Toolpath draws a GSK lathe program with Z across and X halved, the ra
   assert.match(await status.innerText(), /extents X 0 … 100, Z -45 … 100/);
   await shot('9c-toolpath-lathe');
 
-  // Saving the program draws it again: twice the depth of cut per roughing layer, fewer passes.
+  // An edit draws it again, unsaved: twice the depth of cut per roughing layer, fewer passes.
   await page.locator('.editor-instance .view-lines').click();
   await page.keyboard.press('Control+G');
-  await page.keyboard.type('9');
+  await page.keyboard.type('9:6'); // line 9, before the 3 of #104=3
   await page.keyboard.press('Enter');
-  await page.keyboard.press('Home');
-  for (let i = 0; i < 5; i++) await page.keyboard.press('ArrowRight');
+  await page.locator('.statusbar-item', { hasText: 'Ln 9, Col 6' }).waitFor();
   await page.keyboard.press('Shift+ArrowRight');
-  await page.keyboard.type('6'); // #104=3 becomes #104=6
-  await page.keyboard.press('Control+S');
-  const saved = path.join(server.workspace, 'ellipse_turning.nc');
-  for (let i = 0; i < 100 && !fs.readFileSync(saved, 'utf8').includes('#104=6'); i++) await page.waitForTimeout(100);
-  const fewer = movesOf(server.workspace, 'ellipse_turning.nc');
+  await page.keyboard.type('6'); // #104=3 becomes #104=6, not saved
+  const edited = fs.mkdtempSync(path.join(server.dir, 'edited-'));
+  const text = fs.readFileSync(path.join(folder, 'ellipse_turning.nc'), 'utf8').replace('#104=3', '#104=6');
+  fs.writeFileSync(path.join(edited, 'ellipse_turning.nc'), text);
+  const fewer = movesOf(edited, 'ellipse_turning.nc');
   assert.ok(fewer.length < moves.length, `${fewer.length} moves after the edit, ${moves.length} before`);
   await view.locator('#status', { hasText: `${fewer.length} moves` }).waitFor({ timeout: 45000 });
   assert.equal(await view.locator('#plot g.move').count(), fewer.length);
+  assert.match(await view.locator('body').innerText(), /unsaved changes included/);
+  assert.ok(!fs.readFileSync(path.join(server.workspace, 'ellipse_turning.nc'), 'utf8').includes('#104=6'));
+  await page.keyboard.press('Control+S');
 });
 
 test('Show Toolpath of a program that alarms draws the moves before the alarm and names it', { timeout: 2 * STEP }, async () => {

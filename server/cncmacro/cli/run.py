@@ -61,6 +61,10 @@ def add_run_parser(sub: Any) -> None:
     run.add_argument(
         "--no-save", action="store_true", help="do not write #500-#999 back to the persistent-variable file"
     )
+    run.add_argument(
+        "--stdin", action="store_true",
+        help="read the program from standard input (an editor's unsaved text); FILE still names it",
+    )  # fmt: skip
     run.set_defaults(handler=main_run)
 
 
@@ -76,7 +80,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
         presets = dict(parse_preset(s) for s in args.set)
         prepared = prepare_run(
             path, machine_file=args.machine, dialect=args.dialect, presets=presets,
-            search_paths=[Path(p) for p in args.path],
+            search_paths=[Path(p) for p in args.path], data=sys.stdin.buffer.read() if args.stdin else None,
         )  # fmt: skip
     except ValueError as e:
         if is_chinese(args.locale) and e.args:

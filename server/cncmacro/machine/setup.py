@@ -17,7 +17,7 @@ from pathlib import Path
 from ..bilingual import detail, in_language
 from ..dialects import get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect
-from ..library.files import BinaryFileError, read_program
+from ..library.files import BinaryFileError, decode_program, read_program
 from ..library.machine_file import (
     PERSISTENT_FILE_NAME,
     MachineFileError,
@@ -66,10 +66,13 @@ def prepare_run(
     search_paths: list[Path] | None = None,
     block_delete: bool | None = None,
     max_blocks: int | None = None,
+    data: bytes | None = None,
 ) -> PreparedRun:
-    """Read ``program`` and its machine settings and start a machine at its first block."""
+    """Read ``program`` and its machine settings and start a machine at its first block.
+    ``data`` is the program's content when it does not come from the file (an editor's unsaved
+    text): the file's path still names it and says where its called programs are."""
     try:
-        source = read_program(program)
+        source = read_program(program) if data is None else decode_program(data, str(program))
     except (OSError, BinaryFileError) as e:
         if isinstance(e, FileNotFoundError):
             raise SetupError(detail(f"there is no file {program}", f"文件 {program} 不存在")) from None
