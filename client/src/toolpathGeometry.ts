@@ -311,6 +311,11 @@ export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000):
       }
     }
   }
+  if (x1 - x0 === 0 && y1 - y0 === 0) {
+    // no move left the origin (an alarm before the first one): a 10 x 10 picture around it
+    x0 = y0 = -5;
+    x1 = y1 = 5;
+  }
   let w = x1 - x0;
   let h = y1 - y0;
   const span = Math.max(w, h, 1e-3);

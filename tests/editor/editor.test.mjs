@@ -286,6 +286,16 @@ test('Show Toolpath of a program that alarms draws the moves before the alarm an
   assert.equal(await view.locator('#plot g.move.feed').count(), 2, 'the two cuts before the alarm');
   await view.locator('#plot g.end').waitFor(); // where the tool stopped
   await shot('9d-toolpath-alarm');
+
+  // Typed over so that it alarms before any move: an empty picture with readable coordinates.
+  await page.locator('.editor-instance .view-lines').click();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.type('O0011\n#3000=2(NO STOCK)\nM30\n');
+  await view.locator('#status', { hasText: 'Alarm 3002: NO STOCK' }).waitFor({ timeout: 45000 });
+  assert.equal(await view.locator('#plot g.move').count(), 0);
+  const labels = await view.locator('#plot g.labels text').allTextContents();
+  assert.ok(new Set(labels).size > 4, `distinct grid labels: ${labels.join(' ')}`);
+  await page.keyboard.press('Control+S');
 });
 
 test('extension-host API tests pass in the same VS Code', { timeout: 3 * STEP }, async () => {
