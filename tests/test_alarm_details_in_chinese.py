@@ -19,13 +19,12 @@ from pathlib import Path
 import pytest
 
 import cncmacro.machine
+from analysis_helpers import analyse_files
 from bilingual_checks import CJK, PROSE, called_name, detail_problems
-from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.bilingual import detail, in_language
 from cncmacro.dap.protocol import MessageWriter, Request
 from cncmacro.dap.session import Session
 from cncmacro.dialects import get_dialect
-from cncmacro.library.machine_file import MachineSettings
 from running import run
 
 MACHINE_DIR = Path(cncmacro.machine.__file__).parent
@@ -133,16 +132,7 @@ def test_6_alarms_a_detail_is_english_wherever_it_goes_and_keeps_its_chinese():
 
 def analyse(tmp_path: Path, files: dict[str, str], dialect: str, locale: str) -> list[tuple[str, int, str]]:
     """(code, 1-based line, message) of each error and warning the analysis finds."""
-    ws = WorkspaceAnalysis(settings=MachineSettings(date=20261122, time=80000), dialect=dialect, locale=locale)
-    paths = []
-    for name, text in files.items():
-        p = tmp_path / name
-        p.write_text(text, encoding="utf-8")
-        ws.open(str(p), text, 1)
-        paths.append(str(p))
-    result = ws.analyze(paths[0])
-    assert result is not None
-    found = [d for diags in result.diagnostics.values() for d in diags]
+    found = analyse_files(tmp_path, files, dialect, locale=locale)
     return [(d.code, d.line + 1, d.message) for d in found if d.severity in ("error", "warning")]
 
 

@@ -5,23 +5,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from analysis_helpers import analyse_files as analyse
 from cncmacro.analysis.diagnostics import Diagnostic
-from cncmacro.analysis.workspace import WorkspaceAnalysis
-from cncmacro.library.machine_file import MachineSettings
-
-
-def analyse(tmp_path: Path, files: dict[str, str], dialect: str = "fanuc", **kw: object) -> list[Diagnostic]:
-    ws = WorkspaceAnalysis(settings=MachineSettings(date=20261122, time=80000), dialect=dialect, **kw)  # type: ignore[arg-type]
-    paths = []
-    for name, text in files.items():
-        p = tmp_path / name
-        p.write_text(text, encoding="utf-8")
-        ws.open(str(p), text, 1)
-        paths.append(str(p))
-    result = ws.analyze(paths[0])
-    assert result is not None
-    return [d for diags in result.diagnostics.values() for d in diags]
-
 
 def found(diags: list[Diagnostic], code: str) -> list[tuple[str, int, str]]:
     """(file name, 1-based line, severity) of each diagnostic with ``code``."""
