@@ -8,6 +8,7 @@ from pathlib import Path
 from analysis_helpers import analyse_files as analyse
 from cncmacro.analysis.diagnostics import Diagnostic
 
+
 def found(diags: list[Diagnostic], code: str) -> list[tuple[str, int, str]]:
     """(file name, 1-based line, severity) of each diagnostic with ``code``."""
     return [(Path(d.file).name, d.line + 1, d.severity) for d in diags if d.code == code]
