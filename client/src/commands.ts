@@ -11,22 +11,33 @@ import { cncmacroCommand, serverEnvironment, serverLayout } from './serverProces
 import * as settings from './settings';
 import { DIALECT_NAMES } from './statusBar';
 
+/**
+ * The program a command acts on: the file it was given (an Explorer or editor-title click) or the
+ * active editor's, when it is a CNC macro program saved to a file; otherwise the user is told
+ * (`notAProgram` says what the command needs) and the answer is undefined.
+ */
+export async function programDocument(uri: vscode.Uri | undefined, notAProgram: string): Promise<vscode.TextDocument | undefined> {
+  const document =
+    uri !== undefined ? await vscode.workspace.openTextDocument(uri) : vscode.window.activeTextEditor?.document;
+  if (!document || document.languageId !== LANGUAGE_ID) {
+    void vscode.window.showInformationMessage(notAProgram);
+    return undefined;
+  }
+  if (document.isUntitled) {
+    void vscode.window.showInformationMessage(vscode.l10n.t('Save the program to a file before running it.'));
+    return undefined;
+  }
+  return document;
+}
+
 async function runProgram(
   context: vscode.ExtensionContext,
   server: ServerController,
   output: vscode.OutputChannel,
   uri?: vscode.Uri,
 ): Promise<void> {
-  const document =
-    uri !== undefined
-      ? await vscode.workspace.openTextDocument(uri)
-      : vscode.window.activeTextEditor?.document;
-  if (!document || document.languageId !== LANGUAGE_ID) {
-    void vscode.window.showInformationMessage(vscode.l10n.t('Open a CNC macro program to run it.'));
-    return;
-  }
-  if (document.isUntitled) {
-    void vscode.window.showInformationMessage(vscode.l10n.t('Save the program to a file before running it.'));
+  const document = await programDocument(uri, vscode.l10n.t('Open a CNC macro program to run it.'));
+  if (!document) {
     return;
   }
   if (document.isDirty && !(await document.save())) {

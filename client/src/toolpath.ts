@@ -10,7 +10,8 @@
 import { type ChildProcess, spawn } from 'node:child_process';
 import * as path from 'node:path';
 import * as vscode from 'vscode';
-import { LANGUAGE_ID, type ServerController } from './languageClient';
+import { programDocument } from './commands';
+import type { ServerController } from './languageClient';
 import { cncmacroCommand, serverEnvironment, serverLayout } from './serverProcess';
 import * as settings from './settings';
 import {
@@ -300,13 +301,8 @@ async function showToolpath(
   uri?: vscode.Uri,
 ): Promise<void> {
   const editor = vscode.window.activeTextEditor;
-  const document = uri !== undefined ? await vscode.workspace.openTextDocument(uri) : editor?.document;
-  if (!document || document.languageId !== LANGUAGE_ID) {
-    void vscode.window.showInformationMessage(vscode.l10n.t('Open a CNC macro program to draw its toolpath.'));
-    return;
-  }
-  if (document.isUntitled) {
-    void vscode.window.showInformationMessage(vscode.l10n.t('Save the program to a file before running it.'));
+  const document = await programDocument(uri, vscode.l10n.t('Open a CNC macro program to draw its toolpath.'));
+  if (!document) {
     return;
   }
   const column = editor?.document === document ? editor.viewColumn : undefined;
