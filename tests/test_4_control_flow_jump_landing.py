@@ -1,4 +1,4 @@
-"""SEMANTICS.md §4 "Control flow": where a jump lands and which loops it leaves, on the
+"""docs/semantics.md §4 "Control flow": where a jump lands and which loops it leaves, on the
 interpreter (``GOTO``, ``IF..GOTO``, gsk980tdi ``G65 H80``–``H86``) and in the static check,
 which must agree: a jump stays in the loops that hold both its line and its target (a loop
 holds the lines after its DO up to its END), leaves the others, and may not enter one."""

@@ -1,4 +1,4 @@
-"""Alarm details and notes in Chinese (SEMANTICS.md §6 "Alarms and messages"): every text the
+"""Alarm details and notes in Chinese (docs/semantics.md §6 "Alarms and messages"): every text the
 interpreter writes for an alarm or a note has its Chinese beside it, and ``cncmacro check``,
 ``cncmacro run``, the analysis and the debugger show the Chinese under a Chinese locale while
 English stays exactly as it was. Named after the section each alarm belongs to."""
@@ -145,7 +145,7 @@ def assert_chinese(text: str) -> None:
     assert not PROSE.search(rest), text
 
 
-# SEMANTICS.md section and what: (dialect, files, code, line, English message, Chinese title or None, Chinese detail)
+# semantics.md section and what: (dialect, files, code, line, English message, Chinese title or None, Chinese detail)
 CASES = {
     "5_calls_l0_repeat_count_found_by_running": (
         "fanuc", {"O0001.nc": "O0001\n#1=0\nG65 P9001 L#1\nM30\nO9001\nM99\n"},

@@ -1,4 +1,4 @@
-"""``cncmacro check``: DESIGN.md's command-line contract (formats and exit status)."""
+"""``cncmacro check``: docs/design.md's command-line contract (formats and exit status)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""``cncmacro run``: DESIGN.md's command-line contract (text, JSON, presets, machine file,
+"""``cncmacro run``: docs/design.md's command-line contract (text, JSON, presets, machine file,
 budget and exit status), and every bundled example runs."""
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """The debug adapter's parts below the wire tests in ``tests/dap/``: Content-Length framing,
 where a breakpoint is verified, hit counts, and step back by checkpoints plus replay giving
-exactly the state the run had (DESIGN.md "The debugger")."""
+exactly the state the run had (docs/design.md "The debugger")."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""SEMANTICS.md §5 Calls, DESIGN.md "Entry points": a program opened or checked alone is
+"""docs/semantics.md §5 Calls, docs/design.md "Entry points": a program opened or checked alone is
 analysed through its callers on disk in the workspace folders, with their arguments; a program
 nothing calls runs on its own; nothing outside the workspace folders and search paths is read."""
 

@@ -1,4 +1,4 @@
-"""Diagnostics found by running (DESIGN.md "Diagnostic codes"): each run-found code at the
+"""Diagnostics found by running (docs/design.md "Diagnostic codes"): each run-found code at the
 right file and line with the right severity, and a near miss that does not trigger it."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""DESIGN.md "How the analysis stays incremental": after random edits, the incremental
+"""docs/design.md "How the analysis stays incremental": after random edits, the incremental
 analysis equals an analysis from scratch (diagnostics and the values shown per line)."""
 
 from __future__ import annotations
@@ -112,7 +112,7 @@ SKIP_POOL = ["#1=1", "#1=7", "", "G01 X5.", "(NOTE)", "GOTO 40", "IF[#1 EQ 1] GO
 @given(edits=st.lists(st.tuples(st.integers(1, 20), st.sampled_from(SKIP_POOL), st.booleans()), min_size=1,
                       max_size=8))  # fmt: skip
 def test_not_executed_ranges_after_edits_equal_ranges_from_scratch(tmp_path, monkeypatch, edits):
-    """SEMANTICS.md §4 (control flow decides what runs): the blocks that jumps and loops skip
+    """docs/semantics.md §4 (control flow decides what runs): the blocks that jumps and loops skip
     are reported as not executed, and after any typing (lines replaced in place, so that the
     ranges are kept and updated around the changed lines) exactly as a fresh analysis would."""
     monkeypatch.setattr(run_checks, "CHUNK", 5)

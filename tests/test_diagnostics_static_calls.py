@@ -1,4 +1,4 @@
-"""Static diagnostics of SEMANTICS.md §5 "Calls" and §7 (the GSK macro A form): call words,
+"""Static diagnostics of docs/semantics.md §5 "Calls" and §7 (the GSK macro A form): call words,
 argument addresses, repeat counts, program numbers and programs that do not exist."""
 
 from __future__ import annotations

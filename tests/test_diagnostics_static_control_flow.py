@@ -1,4 +1,4 @@
-"""Static diagnostics of SEMANTICS.md §4 "Control flow" (and the M98 Q / M99 P labels of §5):
+"""Static diagnostics of docs/semantics.md §4 "Control flow" (and the M98 Q / M99 P labels of §5):
 labels, loops and jumps, checked without running the program, and in agreement with the run."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Static diagnostics of SEMANTICS.md §2 "Values and variables", §3 "Expressions" and the block
+"""Static diagnostics of docs/semantics.md §2 "Values and variables", §3 "Expressions" and the block
 rule of §4 (NC words and a macro statement), plus the whole-file promises: the bundled examples
 are clean, messages come in Chinese, and the per-line part can be asked for one block."""
 

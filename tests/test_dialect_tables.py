@@ -1,7 +1,7 @@
 """The dialect data tables: consistent rows, the seeds' numbers, codes and functions.
 
 The spot checks quote the seed manuals: seed 000 (GSK980TDi §3.28.1 system-variable tables,
-§3.28.2 ``G65 Hm``) and seed 003 (FANUC-0i thesis, chapter 4 "系统变量"). SEMANTICS.md §3
+§3.28.2 ``G65 Hm``) and seed 003 (FANUC-0i thesis, chapter 4 "系统变量"). docs/semantics.md §3
 "Expressions" lists the functions and operators, §7 "GSK macro A form" the H codes.
 """
 
@@ -449,7 +449,7 @@ def test_code_groups_match_the_modal_tables():
 
 
 # ---------------------------------------------------------------------------------------------
-# functions (SEMANTICS.md §3 "Expressions") and the GSK H codes (§7 "GSK macro A form")
+# functions (docs/semantics.md §3 "Expressions") and the GSK H codes (§7 "GSK macro A form")
 
 SECTION_3 = "SIN COS TAN ASIN ACOS ATAN SQRT ABS LN EXP ROUND FIX FUP BIN BCD AND OR XOR MOD EQ NE GT GE LT LE".split()
 STATEMENTS = "IF GOTO THEN WHILE DO END POPEN PCLOS DPRNT BPRNT".split()

@@ -1,5 +1,5 @@
 """The small pure functions the editor features ask of the lower layers: which local an
-argument fills (SEMANTICS.md §5), where a jump lands (§4), a variable's class (§2) and a
+argument fills (docs/semantics.md §5), where a jump lands (§4), a variable's class (§2) and a
 system variable's description with its axis."""
 
 from __future__ import annotations

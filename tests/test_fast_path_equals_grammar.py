@@ -1,6 +1,6 @@
 """The hand-written fast path builds exactly the lark grammar's tree, or leaves the line to it.
 
-SEMANTICS.md §1–§7 are defined by the grammar in ``block.lark``; the fast path only exists
+docs/semantics.md §1–§7 are defined by the grammar in ``block.lark``; the fast path only exists
 for speed, so on every line it accepts it must agree with the grammar to the last column.
 """
 

@@ -1,6 +1,6 @@
 """After any sequence of edits, the incrementally kept document equals a fresh parse.
 
-DESIGN.md "How the analysis stays incremental": an edit re-parses only its own lines and the
+docs/design.md "How the analysis stays incremental": an edit re-parses only its own lines and the
 cross-line structure (units, labels, loops) is patched or rebuilt; this must never differ
 from parsing the final text from scratch.
 """

@@ -1,4 +1,4 @@
-"""SEMANTICS.md §1 "Text and blocks": files in UTF-8 or GBK/GB18030, with BOM and CRLF, and
+"""docs/semantics.md §1 "Text and blocks": files in UTF-8 or GBK/GB18030, with BOM and CRLF, and
 binary files reported rather than parsed."""
 
 from __future__ import annotations

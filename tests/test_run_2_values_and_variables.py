@@ -1,4 +1,4 @@
-"""SEMANTICS.md §2 "Values and variables", run on the interpreter, in both dialects."""
+"""docs/semantics.md §2 "Values and variables", run on the interpreter, in both dialects."""
 
 from __future__ import annotations
 

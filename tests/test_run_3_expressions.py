@@ -1,4 +1,4 @@
-"""SEMANTICS.md §3 "Expressions", run on the interpreter: precedence, functions, rounding,
+"""docs/semantics.md §3 "Expressions", run on the interpreter: precedence, functions, rounding,
 bitwise operators and the alarms for bad values."""
 
 from __future__ import annotations

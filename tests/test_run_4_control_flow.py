@@ -1,4 +1,4 @@
-"""SEMANTICS.md §4 "Control flow", run on the interpreter: GOTO search order, IF, WHILE/DO/END,
+"""docs/semantics.md §4 "Control flow", run on the interpreter: GOTO search order, IF, WHILE/DO/END,
 jumping out of and into loops, and NC words beside a macro statement."""
 
 from __future__ import annotations

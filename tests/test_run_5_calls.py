@@ -1,4 +1,4 @@
-"""SEMANTICS.md §5 "Calls", run on the interpreter: G65 arguments (specifications I and II),
+"""docs/semantics.md §5 "Calls", run on the interpreter: G65 arguments (specifications I and II),
 L, G66/G67, M98 counts and Q, M99 and M99 Pn, nesting, and finding programs across files."""
 
 from __future__ import annotations

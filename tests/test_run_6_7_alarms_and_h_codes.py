@@ -1,4 +1,4 @@
-"""SEMANTICS.md §6 "Alarms and messages" and §7 "GSK macro A form: G65 Hm P#i Q#j R#k", run on
+"""docs/semantics.md §6 "Alarms and messages" and §7 "GSK macro A form: G65 Hm P#i Q#j R#k", run on
 the interpreter."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""SEMANTICS.md §8 The simulated machine: a G02/G03 move carries its arc's centre.
+"""docs/semantics.md §8 The simulated machine: a G02/G03 move carries its arc's centre.
 
 The centre is in work coordinates, one value per axis like the move's end points; the axes
 off the arc's plane keep their start values. I, J, K are incremental from the start; R > 0 is

@@ -1,4 +1,4 @@
-"""SEMANTICS.md §8 "The simulated machine": modal state and codes in #4001.., positions in
+"""docs/semantics.md §8 "The simulated machine": modal state and codes in #4001.., positions in
 #5001.., work and tool offsets, G10, G31, the clock, and the persistent variables; plus the
 seed 000 tool-wear pair O0100 / O9580 run with presets."""
 

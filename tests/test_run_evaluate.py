@@ -1,5 +1,5 @@
 """Macro text typed while a run is stopped (``machine.evaluate``): the debugger's watch, hover,
-console and breakpoint conditions follow the same rules as a program line (SEMANTICS.md §2,
+console and breakpoint conditions follow the same rules as a program line (docs/semantics.md §2,
 §3, §6), and asking for a pause stops even an endless loop."""
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """Plain motion lines run straight from their text exactly as through the syntax tree.
 
 A line of whitespace-separated words (``G01 X12.5 Y-3.``) is read from its text without
-building syntax nodes, and runs of such lines are carried out in one pass (SEMANTICS.md §2
+building syntax nodes, and runs of such lines are carried out in one pass (docs/semantics.md §2
 rounding, §8 motion). Appending a comment to every line sends the same blocks through the
 general path, so the two runs must leave the same moves, clock, modal state and variables, in
 both dialects and both decimal-point input modes, with blank lines, comments, canned cycles

@@ -1,4 +1,4 @@
-"""DESIGN.md "How the analysis stays incremental": two machine states are the same when every
+"""docs/design.md "How the analysis stays incremental": two machine states are the same when every
 part that can change what a run does next is equal (``machine.tracking.same_state``), which is
 when an analysis run resumed after an edit may take over the rest of the earlier run."""
 

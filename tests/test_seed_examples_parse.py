@@ -1,4 +1,4 @@
-"""Every concrete example in the seed manuals parses without error (SEMANTICS.md §1–§7).
+"""Every concrete example in the seed manuals parses without error (docs/semantics.md §1–§7).
 
 Blocks are parsed as printed. A few examples are not blocks but pieces of one (a variable
 ``#105``, a condition ``#1 EQ #0``); they are parsed where the manual uses them, inside an

@@ -1,4 +1,4 @@
-"""SEMANTICS.md §1 "Text and blocks": lines, comments, spaces, block delete, N and O."""
+"""docs/semantics.md §1 "Text and blocks": lines, comments, spaces, block delete, N and O."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""SEMANTICS.md §2 "Values and variables" and §3 "Expressions": how they are read."""
+"""docs/semantics.md §2 "Values and variables" and §3 "Expressions": how they are read."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""SEMANTICS.md §4 "Control flow": GOTO, IF, WHILE/DO/END, as read and paired."""
+"""docs/semantics.md §4 "Control flow": GOTO, IF, WHILE/DO/END, as read and paired."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""SEMANTICS.md §5 "Calls", §6 "Alarms and messages" and §7 "GSK macro A form": as read."""
+"""docs/semantics.md §5 "Calls", §6 "Alarms and messages" and §7 "GSK macro A form": as read."""
 
 from __future__ import annotations
 

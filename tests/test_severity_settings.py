@@ -1,5 +1,5 @@
 """Severity settings: the ``[severity]`` table of ``.cncmacro.toml`` and ``apply_severities``
-(DESIGN.md "Every code's severity can be changed or switched off in settings")."""
+(docs/design.md "Every code's severity can be changed or switched off in settings")."""
 
 from __future__ import annotations
 

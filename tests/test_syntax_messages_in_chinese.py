@@ -1,4 +1,4 @@
-"""Syntax problems and the command line's own words in Chinese (SEMANTICS.md §1 "Text and
+"""Syntax problems and the command line's own words in Chinese (docs/semantics.md §1 "Text and
 blocks"): every message the parser writes for a line it cannot read has its Chinese beside it;
 ``cncmacro check --locale zh-CN`` and the analysis in a Chinese locale show it, ``cncmacro run
 --locale zh-CN`` writes its whole text output in Chinese, and English stays exactly as it was."""

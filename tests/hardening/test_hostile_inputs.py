@@ -135,7 +135,7 @@ def test_recursion_in_cncmacro_run_stops_with_its_alarm(tmp_path: Path) -> None:
 
 def test_a_constant_address_in_1000_brackets_runs_without_a_recursion_error(tmp_path: Path) -> None:
     """A literal in brackets in an NC address is taken as the literal (no alarm 118, as
-    SEMANTICS.md's constant addresses); 1,000 of them used to overflow the interpreter."""
+    docs/semantics.md's constant addresses); 1,000 of them used to overflow the interpreter."""
     text = f"O0001\nG01 X{'[' * DEEP}1.5{']' * DEEP} F100\nM30\n"
     assert check_run(text, "fanuc", str(tmp_path / "O0001.nc")) == "completed"
     assert codes(analyse(text, tmp_path)) == []

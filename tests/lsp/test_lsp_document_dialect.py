@@ -1,4 +1,4 @@
-"""The dialect each open document is read in, and what decided it (DESIGN.md "Dialect
+"""The dialect each open document is read in, and what decided it (docs/design.md "Dialect
 selection": the file's comment, the workspace's ``.cncmacro.toml``, the editor setting, fanuc),
 asked for by the editor's status bar with ``cncmacro/documentDialect``."""
 

@@ -52,7 +52,7 @@ async def test_an_if_then_assignment_shows_its_value_only_when_it_ran(fanuc_valu
     uri = open_file(fanuc_values, FANUC / "if_then.nc", text)
     await diagnostics_for(fanuc_values, uri, 1)
     hints = await value_hints(fanuc_values, uri, 5)
-    assert (2, 24, "= 20") in hints  # SEMANTICS.md §4: the THEN ran
+    assert (2, 24, "= 20") in hints  # docs/semantics.md §4: the THEN ran
     assert not any(line == 3 for line, _, _ in hints)  # the condition was false: nothing assigned
 
 
@@ -61,6 +61,6 @@ async def test_a_gsk_g65_h_code_shows_the_value_it_left(gsk_values_zh: LanguageC
     uri = open_file(gsk_values_zh, GSK / "hcodes.CNC", text)
     await diagnostics_for(gsk_values_zh, uri, 1)
     hints = await value_hints(gsk_values_zh, uri, 6)
-    assert (2, 20, "= 13") in hints  # SEMANTICS.md §7: H02 is addition
+    assert (2, 20, "= 13") in hints  # docs/semantics.md §7: H02 is addition
     assert (3, 22, "= 39") in hints  # H04 is multiplication
     assert not any(line == 4 for line, _, _ in hints)  # H81 jumps: P is a label, not a variable

@@ -1,4 +1,4 @@
-"""SEMANTICS.md §1 "Text and blocks" in the editor: a line that does not parse gets its
+"""docs/semantics.md §1 "Text and blocks" in the editor: a line that does not parse gets its
 ``syntax`` diagnostic in the client's language (VS Code's ``initialize`` locale)."""
 
 from __future__ import annotations

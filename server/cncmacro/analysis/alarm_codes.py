@@ -1,4 +1,4 @@
-"""Which diagnostic code an alarm found by running becomes (DESIGN.md "Diagnostic codes").
+"""Which diagnostic code an alarm found by running becomes (docs/design.md "Diagnostic codes").
 
 Each alarm number maps to one code. Where the interpreter names the subject of an alarm
 whose number covers several things (``L`` out of range is alarm 119 on fanuc and 291 on

@@ -1,4 +1,4 @@
-"""Checks of a block of NC words (SEMANTICS.md §5, §7): calls, returns and their words.
+"""Checks of a block of NC words (docs/semantics.md §5, §7): calls, returns and their words.
 
 The block is read in the interpreter's order (``machine/nc_blocks.py``): a ``G65``/``G66``
 makes the block a macro call (only ``N`` before it and no O word: ``g65-nc-words``, alarm 127);

@@ -1,4 +1,4 @@
-"""Finding the programs that calls name, for ``program-not-found`` (SEMANTICS.md §5).
+"""Finding the programs that calls name, for ``program-not-found`` (docs/semantics.md §5).
 
 A call's literal target is looked up as the interpreter looks it up: among the O programs of
 the calling file first, then through the ``ProgramLibrary`` near the file (``find_number``,

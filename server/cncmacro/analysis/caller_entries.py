@@ -1,4 +1,4 @@
-"""The programs on disk through which an open program is analysed (DESIGN.md "Entry points").
+"""The programs on disk through which an open program is analysed (docs/design.md "Entry points").
 
 An open program that no open file calls may still be called from a file on disk in the
 workspace folders, and through it from that file's callers: a main program that calls a macro

@@ -1,4 +1,4 @@
-"""Diagnostics: what the analysis reports, with the stable codes of DESIGN.md.
+"""Diagnostics: what the analysis reports, with the stable codes of docs/design.md.
 
 Lines and columns are 0-based here, as in the syntax tree; the command line prints them
 1-based and the language server sends them as they are. ``related`` points at other places

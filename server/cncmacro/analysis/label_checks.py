@@ -1,4 +1,4 @@
-"""Label checks across lines (SEMANTICS.md §4, §5): where jumps, ``M98 Q`` and ``M99 P`` land.
+"""Label checks across lines (docs/semantics.md §4, §5): where jumps, ``M98 Q`` and ``M99 P`` land.
 
 A literal ``GOTO n`` (also ``IF..GOTO`` and gsk980tdi ``G65 H80–H86 P n``) looks for ``Nn`` in its
 own O program, forward from the jump and then from the program's start, as the interpreter's

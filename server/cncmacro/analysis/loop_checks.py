@@ -1,4 +1,4 @@
-"""Loop checks across lines (SEMANTICS.md §4): ``loop-number`` and ``loop-mismatch``.
+"""Loop checks across lines (docs/semantics.md §4): ``loop-number`` and ``loop-mismatch``.
 
 The pairs and the unpaired markers come from ``syntax/program.py``. A DO or END number must be
 a whole 1, 2 or 3, and loops may nest at most 3 deep (``loop-number``, alarm 126, as the

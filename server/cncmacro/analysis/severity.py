@@ -1,6 +1,6 @@
 """Diagnostic codes, their default severities, and the user's changes to them.
 
-``CODES`` is DESIGN.md's table of stable diagnostic codes: each code's default severity and a
+``CODES`` is docs/design.md's table of stable diagnostic codes: each code's default severity and a
 one-line description (the SARIF output's rules use both). ``apply_severities`` applies a
 ``[severity]`` table from ``.cncmacro.toml`` (or an editor setting) to a list of diagnostics:
 each listed code gets the severity given, and ``off`` drops its diagnostics. An unknown code or

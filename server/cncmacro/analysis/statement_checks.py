@@ -1,4 +1,4 @@
-"""Checks of a block's macro statements (SEMANTICS.md §3, §4): what one line decides alone.
+"""Checks of a block's macro statements (docs/semantics.md §3, §4): what one line decides alone.
 
 A block with a macro statement may hold no NC words (``nc-and-macro``, alarm 127; ``N`` and an O
 header are not words). Each statement's expressions go through ``variable_checks``; an

@@ -1,6 +1,6 @@
 """Checks of one expression: variable numbers and access, bracket depth, relation spelling.
 
-``scan_value`` walks an expression the way the interpreter compiles it (SEMANTICS.md §2, §3):
+``scan_value`` walks an expression the way the interpreter compiles it (docs/semantics.md §2, §3):
 a literal ``#n`` (or ``#[constant]``) whose number the dialect lacks is ``variable-number``
 (alarm 115), reading a write-only system variable is ``write-only``, more than five nested
 brackets in what the interpreter compiles as one value is ``bracket-depth`` (alarm 118), and a

@@ -1,6 +1,6 @@
 """The ``cncmacro`` command: parses the command line and hands each subcommand to its module.
 
-Usage mistakes exit with status 2 (argparse's own convention, which DESIGN.md's contract
+Usage mistakes exit with status 2 (argparse's own convention, which docs/design.md's contract
 shares).
 """
 

@@ -1,7 +1,7 @@
 """``cncmacro run``: run a program on the simulated machine and show what it did.
 
 The text output is for a machinist: the moves, anything the program printed or stopped
-with, the alarm and where it came from, and the final variables. ``--json`` prints DESIGN.md's
+with, the alarm and where it came from, and the final variables. ``--json`` prints docs/design.md's
 object. ``--locale zh-CN`` writes the text output in Chinese, its fixed words and the
 interpreter's alarm details and notes alike (in the JSON only the details and notes: its keys
 and status words are a contract and stay English). Exit status: 0 when the program completed, 1 on

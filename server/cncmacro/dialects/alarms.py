@@ -1,4 +1,4 @@
-"""Alarm numbers and their texts, in English and Chinese (SEMANTICS.md §6).
+"""Alarm numbers and their texts, in English and Chinese (docs/semantics.md §6).
 
 The numbers are FANUC 0i's where the manuals give no other (both dialects share them); the
 GSK-only numbers (291, 293) come from seeds 001 and 002. A macro alarm raised by ``#3000``

@@ -3,7 +3,7 @@
 The tables (``fanuc_data``, ``gsk980tdi_data``, ``functions_data``) hold rows that may cover a
 range of numbers with ``{axis}`` and ``{index}`` in their text; the functions here pick the row
 for one variable number, G/M code or function name and fill those in, in English or Chinese.
-The class of a variable (local, common, persistent, system) follows SEMANTICS.md §2 with the
+The class of a variable (local, common, persistent, system) follows docs/semantics.md §2 with the
 common range a machine setting. Nothing here runs a program.
 """
 

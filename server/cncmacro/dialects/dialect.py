@@ -1,4 +1,4 @@
-"""A dialect as one object: its switches (SEMANTICS.md's per-dialect rules) and its tables.
+"""A dialect as one object: its switches (docs/semantics.md's per-dialect rules) and its tables.
 
 The interpreter never asks "is this gsk?"; it reads a switch or a table from here. Adding a
 dialect means adding a data module and one ``Dialect`` value, not a code path.
@@ -13,7 +13,7 @@ from functools import cache
 
 from .tables import CodeDoc, FunctionDoc, SystemVariable
 
-# G65 argument specification I (SEMANTICS.md §5): letter -> local variable number.
+# G65 argument specification I (docs/semantics.md §5): letter -> local variable number.
 ARGUMENTS_I = {
     "A": 1, "B": 2, "C": 3, "I": 4, "J": 5, "K": 6, "D": 7, "E": 8, "F": 9, "H": 11, "M": 13,
     "Q": 17, "R": 18, "S": 19, "T": 20, "U": 21, "V": 22, "W": 23, "X": 24, "Y": 25, "Z": 26,

@@ -3,9 +3,9 @@
 ``FUNCTIONS`` documents what a programmer writes in a macro expression or statement: the
 functions (angles in degrees), the binary operators AND OR XOR MOD, the relations EQ NE GT GE LT
 LE, and the statements IF GOTO THEN WHILE DO END and the external output commands POPEN PCLOS
-DPRNT BPRNT, following chapters 5 and 7 of seed 003 and SEMANTICS.md §3-§5. ``GSK_H_CODES``
+DPRNT BPRNT, following chapters 5 and 7 of seed 003 and docs/semantics.md §3-§5. ``GSK_H_CODES``
 documents the GSK980TDi macro arithmetic and branch commands ``G65 Hm P#i Q#j R#k`` of seed 000
-§3.28.2 (SEMANTICS.md §7): P is the destination variable (or the sequence number for H80-H86 and
+§3.28.2 (docs/semantics.md §7): P is the destination variable (or the sequence number for H80-H86 and
 the alarm number for H99), Q and R are variables or constants written without ``#``.
 """
 

@@ -1,4 +1,4 @@
-"""Which dialect a file is read in: DESIGN.md's chain, first match wins.
+"""Which dialect a file is read in: docs/design.md's chain, first match wins.
 
 A comment in the first lines of the file ``(cncmacro: dialect=gsk980tdi)``; then the workspace
 setting (``.cncmacro.toml``), then the editor or command-line setting, then ``fanuc``.

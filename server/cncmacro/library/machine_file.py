@@ -1,6 +1,6 @@
 """Machine settings: the workspace's ``.cncmacro.toml``, read with ``tomllib``.
 
-Every key is optional (DESIGN.md "Machine settings")::
+Every key is optional (docs/design.md "Machine settings")::
 
     dialect = "gsk980tdi"
     common = [100, 499]            # the volatile common range (default 100-199)

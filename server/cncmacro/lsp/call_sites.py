@@ -42,7 +42,7 @@ def call_site(block: Block, dialect: Dialect) -> CallSite | None:
         if kind is None:
             continue
         if kind == "G65" and dialect.h_codes and any(x.letter == "H" for x in words):
-            return None  # G65 Hm P Q R: macro arithmetic and branches (SEMANTICS.md §7), not a call
+            return None  # G65 Hm P Q R: macro arithmetic and branches (docs/semantics.md §7), not a call
         p = next((x for x in words if x.letter == "P"), None)
         if p is None:
             return None

@@ -1,6 +1,6 @@
 """Code actions: split a G65/G66 block that also holds NC words, and clamp an out-of-range L.
 
-SEMANTICS.md §5: only N may precede G65/G66 and no other G or M code or O word may share its
+docs/semantics.md §5: only N may precede G65/G66 and no other G or M code or O word may share its
 block; the split moves those words (with the label) to a block of their own just before the
 call, so they run first as before. L must be 1..9999; the clamp writes the nearest allowed
 count. Both are offered for the blocks in the requested range, and carry the matching

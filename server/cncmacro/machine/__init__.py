@@ -1,4 +1,4 @@
-"""The machine layer: the interpreter of the macro language (DESIGN.md "machine").
+"""The machine layer: the interpreter of the macro language (docs/design.md "machine").
 
 ``Machine`` runs a program block by block on a simulated control; ``run_program`` is the
 one-call form that the command line uses.

@@ -1,4 +1,4 @@
-"""The centre of a G02/G03 arc, as the control finds it from R or from I, J, K (SEMANTICS.md §8).
+"""The centre of a G02/G03 arc, as the control finds it from R or from I, J, K (docs/semantics.md §8).
 
 The plane decides which two axes the arc turns in and which offset words give its centre:
 G17 X,Y with I,J; G18 Z,X with K,I; G19 Y,Z with J,K. G02 turns clockwise and G03

@@ -1,4 +1,4 @@
-"""Blocks compiled once into closures that run them (SEMANTICS.md §1, §4, §5).
+"""Blocks compiled once into closures that run them (docs/semantics.md §1, §4, §5).
 
 ``CompiledFile`` holds, for one program file, a list with one slot per line: the closure that
 runs the line, made the first time the line runs. A closure takes the machine and its own
@@ -107,7 +107,7 @@ class CompiledFile:
     # ---------------------------------------------------------------- jumps
     def jump(self, frame: Any, pc: int, label: float | None) -> int:
         """The line a GOTO on line ``pc`` lands on, leaving loops it jumps out of
-        (SEMANTICS.md §4: forward to the end of the program, then from its start)."""
+        (docs/semantics.md §4: forward to the end of the program, then from its start)."""
         if label is None:
             raise MacroAlarm(SEQUENCE_NUMBER, detail("GOTO to a vacant sequence number", "GOTO 的顺序号为空变量"))
         n = int(round_half_away(label))

@@ -1,4 +1,4 @@
-"""What the call words mean (SEMANTICS.md §5): G65/G66 arguments, P and L, M98 counts.
+"""What the call words mean (docs/semantics.md §5): G65/G66 arguments, P and L, M98 counts.
 
 ``map_arguments`` applies argument specifications I and II word by word, left to right, a
 later word winning on a shared variable; ``program_and_count`` splits ``M98 P30040`` into

@@ -1,4 +1,4 @@
-"""Expressions compiled once into Python closures (SEMANTICS.md §2 and §3).
+"""Expressions compiled once into Python closures (docs/semantics.md §2 and §3).
 
 A block's syntax tree is turned into nested closures the first time the block runs; after
 that, executing it never looks at the tree again. Each closure takes the machine and returns

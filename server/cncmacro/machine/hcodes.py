@@ -1,8 +1,8 @@
-"""GSK980TDi macro A: ``G65 Hm P#i Q#j R#k`` (SEMANTICS.md §7, seed 000 §3.28.2).
+"""GSK980TDi macro A: ``G65 Hm P#i Q#j R#k`` (docs/semantics.md §7, seed 000 §3.28.2).
 
 P names the destination variable (for H80–H86 and H99 a sequence number or alarm number);
 Q and R are variables or constants, and ``Q-#102`` negates. The table of operations is
-SEMANTICS.md's; vacant counts as 0 as everywhere on this control. Compiled once per block,
+docs/semantics.md's; vacant counts as 0 as everywhere on this control. Compiled once per block,
 like every other block.
 """
 

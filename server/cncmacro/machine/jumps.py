@@ -1,4 +1,4 @@
-"""Where a jump lands and which loops it leaves, as pure functions of line numbers (SEMANTICS.md §4, seed 002).
+"""Where a jump lands and which loops it leaves, as pure functions of line numbers (docs/semantics.md §4, seed 002).
 
 ``GOTO n`` (also ``IF .. GOTO n`` and the gsk980tdi ``G65 H80``–``H86`` branches) searches forward
 from the jumping block to the end of the program, then from its start; ``M99 Pn`` returns to the

@@ -42,7 +42,7 @@ CANCEL_CHECK = 4096
 
 @dataclass(slots=True)
 class RunResult:
-    """What a run ended with, in DESIGN.md's terms (``cncmacro run --json``)."""
+    """What a run ended with, in docs/design.md's terms (``cncmacro run --json``)."""
 
     status: str
     alarm: Alarm | None
@@ -642,7 +642,7 @@ class Machine(VariableAccess, Motion):
 
     # ---------------------------------------------------------------- results
     def variables(self) -> dict[int, float]:
-        """DESIGN.md's ``variables``: non-vacant level-0 locals, commons and persistent, and
+        """docs/design.md's ``variables``: non-vacant level-0 locals, commons and persistent, and
         the system variables that were preset or written (vacant ones are absent)."""
         out: dict[int, float] = {}
         level0 = self.frames[0].locals if self.frames else self.L

@@ -1,4 +1,4 @@
-"""The simulated machine's NC side: modal G codes, F/S/T/M, positions, offsets (SEMANTICS.md §8).
+"""The simulated machine's NC side: modal G codes, F/S/T/M, positions, offsets (docs/semantics.md §8).
 
 ``execute_nc`` takes the evaluated words of one block and does what the control would: it
 updates the modal groups and the last F, S, T, M, D, H values; moves the axes (G00–G03 end
@@ -108,7 +108,7 @@ class Motion:
     def plain_text_plan(self, text: str) -> tuple[Any, ...] | None:
         """``plain_plan`` read straight from a ``Block.plain`` line: whitespace-separated
         address-number words with at most three decimals, so that a literal axis value is
-        already on the grid (SEMANTICS.md §2). None when the line is not plain motion or its
+        already on the grid (docs/semantics.md §2). None when the line is not plain motion or its
         values need the general rounding (increment input mode, S with a fraction)."""
         kinds = self.plain_kinds()
         if not kinds:

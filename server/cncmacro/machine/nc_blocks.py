@@ -1,4 +1,4 @@
-"""NC blocks compiled into closures: motion, calls, returns and ends (SEMANTICS.md §5, §8).
+"""NC blocks compiled into closures: motion, calls, returns and ends (docs/semantics.md §5, §8).
 
 A block of words is one of: a macro call (``G65``/``G66``, or on gsk980tdi ``G65 Hm`` arithmetic),
 ``G67``, or an NC block whose M codes may call (``M98``), return (``M99``), end (``M30``,

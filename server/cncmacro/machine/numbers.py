@@ -1,4 +1,4 @@
-"""Numbers as the control computes them (SEMANTICS.md §3): FANUC rounding, never Python's.
+"""Numbers as the control computes them (docs/semantics.md §3): FANUC rounding, never Python's.
 
 ``round_half_away`` is ROUND (2.5 -> 3, -2.5 -> -3); ``fix`` truncates toward zero and ``fup``
 rounds away from zero. ``to_increment`` rounds an axis value to its least increment (0.001 mm,

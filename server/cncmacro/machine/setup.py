@@ -1,7 +1,7 @@
 """Setting up a machine to run a program file, as ``cncmacro run`` and the debugger both do.
 
 The machine file is the one given, else the nearest ``.cncmacro.toml`` above the program;
-the dialect follows DESIGN.md's chain (the file's ``(cncmacro: dialect=..)`` comment, then
+the dialect follows docs/design.md's chain (the file's ``(cncmacro: dialect=..)`` comment, then
 the machine file, then the caller's setting, then fanuc); ``#500–#999`` come from the
 persistent file (the machine file's ``persistent_file``, else ``.cncmacro-vars.json`` beside
 the program) and the presets are applied after them. Every mistake a person can make here

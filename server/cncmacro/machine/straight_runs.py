@@ -6,7 +6,7 @@ Compiling each into a runner and then calling it costs more than reading it: mos
 the machine's modal state, position and clock held in locals, until a line that is not
 plain motion, a line the general path must decide (a canned cycle in force, a G code of a
 group with side effects, an address with its own rounding), or the block budget. It does
-exactly what ``Motion.plain_text_plan`` and ``Motion.run_plain`` do for one line (SEMANTICS.md
+exactly what ``Motion.plain_text_plan`` and ``Motion.run_plain`` do for one line (docs/semantics.md
 §8), an arc's centre from its R, I, J, K words included, and a line it declines is left
 untouched for the compiled path. Both run loops use it for a line not compiled yet, when no
 modal call (G66) is in force; such a line stays uncompiled, which also spares an analysis the

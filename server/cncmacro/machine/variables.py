@@ -1,4 +1,4 @@
-"""Reading and writing any variable by number (SEMANTICS.md §2, §6, §8).
+"""Reading and writing any variable by number (docs/semantics.md §2, §6, §8).
 
 ``L`` is the current level's locals (index 1–33), ``C`` the commons and persistent variables
 (index 100–999), ``S`` the stored system variables (offsets, counters, signals). Live system
