@@ -62,9 +62,10 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..dialects import Dialect, get_dialect
+from ..dialects import DIALECTS, Dialect, get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
 from ..library.machine_file import MachineSettings
+from ..library.profiles import machine_profile
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..machine.machine import LIMIT
 from ..syntax.document import ParsedDocument
@@ -248,7 +249,7 @@ class WorkspaceAnalysis:
 
     # ---------------------------------------------------------------- dialects and calls
     def dialect_of(self, lines: list[str]) -> Dialect:
-        return get_dialect(choose_dialect(lines, self.settings.dialect, self.dialect_setting))
+        return machine_profile(choose_dialect(lines, self.settings.dialect, self.dialect_setting), self.settings)
 
     def _calls_in(self, block: Block, d: _Open) -> bool:
         ctx = static_checks.line_context(self.dialect_of(d.doc.lines), self.settings, self.locale)
@@ -555,7 +556,7 @@ class WorkspaceAnalysis:
 
 
 _CLOCK_NUMBERS = sorted({
-    str(n) for name in ("fanuc", "gsk980tdi") for row in get_dialect(name).system_variables()
+    str(n) for name in DIALECTS for row in get_dialect(name).system_variables()
     if row.source in ("timer", "date", "time") for n in range(row.first, row.last + 1)
 })  # fmt: skip
 # a read of the clock: ``#[``, a clock variable, or a GSK ``#9xxx`` (indirection through a common)

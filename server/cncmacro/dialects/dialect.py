@@ -1,17 +1,19 @@
-"""A dialect as one object: its switches (docs/semantics.md's per-dialect rules) and its tables.
+"""A control profile as one object: its switches (docs/semantics.md's per-profile rules) and its tables.
 
-The interpreter never asks "is this gsk?"; it reads a switch or a table from here. Adding a
-dialect means adding a data module and one ``Dialect`` value, not a code path.
+The interpreter never asks "is this gsk?"; it reads a switch or a table from here. Each built-in
+profile is one module in ``dialects/profiles/`` that defines a ``Dialect`` value; a machine file
+narrows or extends it (``Dialect.configured``). Adding a control means adding a profile module
+(and its data), not a code path: see docs/profiles.md.
 """
 
 from __future__ import annotations
 
 import importlib
 from bisect import bisect_right
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cache
 
-from .tables import CodeDoc, FunctionDoc, SystemVariable
+from .tables import CodeDoc, CommonRange, FunctionDoc, SystemVariable
 
 # G65 argument specification I (docs/semantics.md §5): letter -> local variable number.
 ARGUMENTS_I = {
@@ -64,6 +66,44 @@ class Dialect:
     cycle_codes: frozenset[float] = frozenset()
     # §5 fanuc wants I, J, K in that order within each set (a warning otherwise)
     ijk_order_matters: bool = False
+    # other names the profile answers to (``fanuc`` for ``fanuc-0i``), in machine files, file
+    # comments, settings and on the command line
+    aliases: tuple[str, ...] = ()
+    # one line on what the profile is, for a programmer choosing one (English, Chinese)
+    summary: str = ""
+    summary_zh: str = ""
+    # §2 the common variables: every range the control can have, the default in force unless a
+    # machine file names fewer (docs/semantics.md §2 "Common variables")
+    common_ranges: tuple[CommonRange, ...] = (CommonRange(100, 499, False), CommonRange(500, 999, True))
+    # §5 M98 P: digits of a program number; a P with more digits carries the repeat count before them
+    m98_program_digits: int = 4
+    # system variables a machine file adds or describes anew; they win over the profile's rows
+    extra_rows: tuple[SystemVariable, ...] = ()
+    # programs kept on the control rather than in the workspace (a machine file's
+    # ``programs_on_control``): a call to one is a call that returns at once
+    programs_on_control: tuple[tuple[int, int], ...] = ()
+
+    def configured(self, **changes: object) -> Dialect:
+        """This profile as one machine has it (a machine file's commons, digits and variables)."""
+        return replace(self, **changes)  # type: ignore[arg-type]
+
+    def on_control(self, number: int) -> bool:
+        """Whether program ``number`` lives on the control (a machine file says so)."""
+        return any(first <= number <= last for first, last in self.programs_on_control)
+
+    def common_range_of(self, number: int) -> CommonRange | None:
+        """The common range ``#number`` is in, or None."""
+        for r in self.common_ranges:
+            if r.first <= number <= r.last:
+                return r
+        return None
+
+    def allows_common(self, first: int, last: int) -> CommonRange | None:
+        """The profile's common range that holds ``#first``–``#last``, or None."""
+        for r in self.common_ranges:
+            if r.first <= first <= last <= r.last:
+                return r
+        return None
 
     @property
     def incremental_letters(self) -> dict[str, str]:
@@ -73,10 +113,13 @@ class Dialect:
         return {"U": "X", "V": "Y", "W": "Z", "H": "C"}
 
     def system_variables(self) -> tuple[SystemVariable, ...]:
-        return _tables(self.data_module)[0]
+        return self.extra_rows + _tables(self.data_module)[0]
 
     def system_variable(self, number: int) -> SystemVariable | None:
         """The table row that describes ``#number``, or None when it does not exist."""
+        for row in self.extra_rows:
+            if row.first <= number <= row.last:
+                return row
         rows, firsts = _tables(self.data_module)[:2]
         k = bisect_right(firsts, number) - 1
         if k >= 0 and number <= rows[k].last:
@@ -104,55 +147,3 @@ def _tables(module: str) -> tuple[tuple[SystemVariable, ...], list[int], tuple[C
 def _functions() -> tuple[FunctionDoc, ...]:
     mod = importlib.import_module(f"{__package__}.functions_data")
     return tuple(mod.FUNCTIONS)
-
-
-FANUC = Dialect(
-    name="fanuc",
-    title="FANUC 0i Custom Macro B",
-    data_module="fanuc_data",
-    vacant_differs_in_eq=True,
-    vacant_address_is_zero=False,
-    nine_indirection=False,
-    c_relations=False,
-    macro_alarm_base=3000,
-    h_codes=False,
-    bracket_names=False,
-    program_digits=8,
-    macro_levels=4,
-    subprogram_levels=10,
-    clamp_repeat_count=False,
-    count_in_p_and_l_alarm=False,
-    lathe=False,
-    axes=("X", "Y", "Z", "A"),
-    modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0}),
-    modal_defaults={"plane": 17.0, "feed": 94.0},
-    coordinate_setting_code=92.0,
-    cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
-    ijk_order_matters=True,
-)
-
-GSK980TDI = Dialect(
-    name="gsk980tdi",
-    title="GSK980TDi",
-    data_module="gsk980tdi_data",
-    vacant_differs_in_eq=False,
-    vacant_address_is_zero=True,
-    nine_indirection=True,
-    c_relations=True,
-    macro_alarm_base=5900,
-    h_codes=True,
-    bracket_names=True,
-    program_digits=4,
-    macro_levels=4,
-    subprogram_levels=12,
-    clamp_repeat_count=True,
-    count_in_p_and_l_alarm=True,
-    lathe=True,
-    axes=("X", "Y", "Z", "C", "B"),
-    modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0, 5.0}),
-    modal_defaults={"plane": 18.0, "feed": 98.0},
-    coordinate_setting_code=50.0,
-    cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0, 83.0, 84.0, 87.0, 88.0}),
-)
-
-BY_NAME = {d.name: d for d in (FANUC, GSK980TDI)}

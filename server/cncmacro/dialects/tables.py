@@ -77,6 +77,22 @@ class SystemVariable:
 
 
 @dataclass(frozen=True, slots=True)
+class CommonRange:
+    """A range of common variables ``#first``–``#last``; ``persistent`` ones keep their values
+    when the power is off (FANUC #500–#999), the others are cleared (#100–#499)."""
+
+    first: int
+    last: int
+    persistent: bool
+
+    def __contains__(self, number: int) -> bool:
+        return self.first <= number <= self.last
+
+    def text(self) -> str:
+        return f"#{self.first}-#{self.last}"
+
+
+@dataclass(frozen=True, slots=True)
 class CodeDoc:
     """A G or M code: ``code`` as written (``G01``, ``M98``), its modal group (empty for a
     one-shot code) and what it does."""

@@ -82,7 +82,7 @@ def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
 def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
     loc = ls.locale
     dialect = cur.doc.dialect
-    kind = describe.variable_class(number, ls.common_range)
+    kind = describe.variable_class(number, cur.doc.dialect)
     head = f"**#{number}** — {t(kind, loc)}"
     lines = [head]
     if kind == describe.SYSTEM:

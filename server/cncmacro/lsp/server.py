@@ -71,15 +71,12 @@ class CncMacroServer(LanguageServer):
     def severity_overrides(self) -> dict[str, str]:
         return merged_severities(self.machine, self.settings)
 
-    @property
-    def common_range(self) -> tuple[int, int]:
-        return self.machine.common if self.machine is not None else (100, 199)
-
     def apply_settings(self, settings: Settings) -> None:
         """The editor's settings (or the machine file) changed: analyse again with them."""
         self.settings = settings
         self.documents.setting_dialect = settings.dialect
         self.documents.workspace_dialect = self.machine.dialect if self.machine else None
+        self.documents.machine = self.machine
         self.documents.rechoose_dialects()
         self.diagnostics.configure(
             self.machine, settings.dialect, settings.run_budget, valid_severities(self.severity_overrides())
@@ -109,6 +106,7 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
         roots = [params.root_path]
     server.machine = machine_settings(roots[0]) if roots else None
     server.documents.workspace_dialect = server.machine.dialect if server.machine else None
+    server.documents.machine = server.machine
     server.roots = roots
     server.index.scan(roots)
     server.diagnostics.start(server.machine, roots, server.locale)

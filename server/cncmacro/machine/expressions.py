@@ -30,6 +30,7 @@ from .numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away, to_increme
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
+    from ..dialects.tables import CommonRange
 
 Value = float | None
 Getter = Callable[[Any], Value]
@@ -64,29 +65,45 @@ def bracket_depth(node: Expr) -> int:
 
 
 class VariableKinds:
-    """Sorts variable numbers into local, common, system or nonexistent, for one dialect and
-    one common range (a machine setting)."""
+    """Sorts variable numbers into local, common, system or nonexistent, for one profile as a
+    machine has it (its common ranges come from the profile or the machine file)."""
 
-    def __init__(self, dialect: Dialect, common: tuple[int, int]) -> None:
+    def __init__(self, dialect: Dialect) -> None:
         self.dialect = dialect
-        self.common = common
+        self.ranges = dialect.common_ranges
+
+    @property
+    def volatile(self) -> tuple[CommonRange, ...]:
+        """The common ranges cleared at power-off (the debugger's "Common" scope)."""
+        return tuple(r for r in self.ranges if not r.persistent)
+
+    @property
+    def persistent(self) -> tuple[CommonRange, ...]:
+        """The common ranges kept at power-off (#500–#999 and the like)."""
+        return tuple(r for r in self.ranges if r.persistent)
 
     def kind(self, n: int) -> str:
-        """``vacant`` (#0), ``local``, ``common``, ``persistent``, ``indirect9`` (gsk #9xxx),
+        """``vacant`` (#0), ``local``, ``common``, ``persistent`` (both below #1000, kept in
+        ``Machine.C``), ``extended`` (a common variable from #1000 up, such as the 30i's
+        #98000–#98499, kept with the stored system values), ``indirect9`` (gsk #9xxx),
         ``system`` or ``none``."""
         if n == 0:
             return "vacant"
         if 1 <= n <= 33:
             return "local"
-        if self.common[0] <= n <= self.common[1]:
-            return "common"
-        if 500 <= n <= 999:
-            return "persistent"
+        for r in self.ranges:
+            if r.first <= n <= r.last:
+                if n >= 1000:
+                    return "extended"
+                return "persistent" if r.persistent else "common"
         if self.dialect.nine_indirection and 9000 <= n <= 9999 and self.kind(n - 9000) in ("common", "persistent"):
             return "indirect9"
         if n >= 1000 and self.dialect.system_variable(n) is not None:
             return "system"
         return "none"
+
+    def persistent_numbers(self) -> list[int]:
+        return [n for r in self.persistent for n in range(r.first, r.last + 1)]
 
 
 class ExpressionCompiler:
@@ -175,6 +192,8 @@ class ExpressionCompiler:
             return lambda m: m.read(m.C[k])
         if kind == "system":
             return lambda m: m.read_system(n)
+        if kind == "extended":
+            return lambda m: m.S.get(n)
         return raiser(
             VARIABLE_NUMBER,
             detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),

@@ -20,6 +20,7 @@ from ..bilingual import detail
 from ..dialects import Dialect, get_dialect
 from ..dialects.alarms import MACRO_NESTING, PROGRAM_NOT_FOUND, SUBPROGRAM_NESTING
 from ..library.machine_file import CallCode, MachineSettings
+from ..library.profiles import machine_profile
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from .alarms import Alarm, CallSite, MacroAlarm
 from .blocks import CompiledFile
@@ -91,9 +92,10 @@ class Machine(VariableAccess, Motion):
         self.settings = settings or MachineSettings()
         if dialect is None or isinstance(dialect, str):
             dialect = get_dialect(dialect or self.settings.dialect)
+        dialect = machine_profile(dialect, self.settings)
         self.dialect = dialect
         self.library = library or ProgramLibrary()
-        self.kinds = VariableKinds(dialect, self.settings.common)
+        self.kinds = VariableKinds(dialect)
         self.m99_ends_main = m99_ends_main
         # Analysis hooks, all off for plain runs. ``watching`` (set before the first block
         # runs) compiles blocks that report vacant argument reads and assigned values;
@@ -145,6 +147,8 @@ class Machine(VariableAccess, Motion):
                 self.L[n] = v
             elif kind in ("common", "persistent"):
                 self.C[n] = v
+            elif kind == "extended":
+                self.S[n] = v
             elif kind == "system":
                 row = self.dialect.system_variable(n)
                 assert row is not None
@@ -159,12 +163,21 @@ class Machine(VariableAccess, Motion):
                 raise ValueError(f"#{n} is not a variable of {self.dialect.title} that can be preset")
 
     def load_persistent(self, values: dict[int, float]) -> None:
+        """Put back the values kept at power-off (the machine's persistent common ranges)."""
         for n, v in values.items():
-            if 500 <= n <= 999:
+            kind = self.kinds.kind(n)
+            if kind == "persistent":
                 self.C[n] = v
+            elif kind == "extended" and any(n in r for r in self.kinds.persistent):
+                self.S[n] = v
 
     def persistent_values(self) -> dict[int, float]:
-        return {n: v for n in range(500, 1000) if (v := self.C[n]) is not None}
+        out: dict[int, float] = {}
+        for n in self.kinds.persistent_numbers():
+            v = self.C[n] if n < 1000 else self.S.get(n)
+            if v is not None:
+                out[n] = v
+        return out
 
     def compiled_file(self, file: LoadedFile) -> CompiledFile:
         cf = self.compiled.get(file.path)
@@ -649,10 +662,11 @@ class Machine(VariableAccess, Motion):
         for n in range(1, 34):
             if level0[n] is not None:
                 out[n] = level0[n]  # type: ignore[assignment]
-        for n in range(100, 1000):
-            v = self.C[n]
-            if v is not None:
-                out[n] = v
+        for r in self.kinds.ranges:
+            for n in range(r.first, r.last + 1):
+                v = self.C[n] if n < 1000 else self.S.get(n)
+                if v is not None:
+                    out[n] = v
         for n in sorted(self.preset_system | self.written_system):
             try:
                 v = self.read_system(n)

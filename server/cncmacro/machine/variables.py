@@ -80,6 +80,8 @@ class VariableAccess:
             return self.read(self.C[n - 9000])
         if kind == "system":
             return self.read_system(n)
+        if kind == "extended":
+            return self.S.get(n)
         raise MacroAlarm(
             VARIABLE_NUMBER,
             detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
@@ -107,6 +109,8 @@ class VariableAccess:
             self.write(self.C[n - 9000], value, message)
         elif kind == "system":
             self.write_system(n, value, message)
+        elif kind == "extended":
+            self.S[n] = value
         else:
             raise MacroAlarm(
                 VARIABLE_NUMBER,
