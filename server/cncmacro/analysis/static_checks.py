@@ -97,7 +97,7 @@ def static_diagnostics(
             out.extend(findings_of(facts, line, file))
         if facts.jumps or facts.calls or facts.returns:
             collected.append((line, facts))
-    out.extend(cross_line_diagnostics(program, file, dialect, library, locale, collected))
+    out.extend(cross_line_diagnostics(program, file, ctx.dialect, library, locale, collected))
     out.sort(key=Diagnostic.sort_key)
     return out
 

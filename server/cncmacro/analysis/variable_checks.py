@@ -158,11 +158,8 @@ def _missing(number: int, start: int, end: int, ctx: LineContext) -> Finding:
             f"#{number}：在 {d.title} 上 #9 后接公共变量号表示变量置换，而 #{number - 9000} 不是公共变量（报警 115）",
         )
     else:
-        message = pick(
-            loc,
-            f"#{number} does not exist on {d.title} (alarm 115)",
-            f"#{number} 在 {d.title} 上不存在（报警 115）",
-        )
+        said = d.missing_variable(number)
+        message = pick(loc, f"{said} (alarm 115)", f"{said.zh}（报警 115）")
     return Finding(start, end, "error", "variable-number", message)
 
 

@@ -13,6 +13,7 @@ from bisect import bisect_right
 from dataclasses import dataclass, field, replace
 from functools import cache
 
+from ..bilingual import Detail, detail
 from .tables import CodeDoc, CommonRange, FunctionDoc, SystemVariable
 
 # G65 argument specification I (docs/semantics.md §5): letter -> local variable number.
@@ -97,6 +98,17 @@ class Dialect:
             if r.first <= number <= r.last:
                 return r
         return None
+
+    def missing_variable(self, number: int) -> Detail:
+        """What to tell a programmer about ``#number`` when it does not exist (English, Chinese):
+        below #1000 it names the machine's common ranges, which a machine file may widen."""
+        if 100 <= number < 1000:
+            ranges = ", ".join(r.text() for r in self.common_ranges)
+            return detail(f"#{number} is not a common variable of this machine ({self.title}: {ranges}; "
+                          "a machine with more sets 'common' in .cncmacro.toml)",
+                          f"#{number} 不是本机床的公共变量（{self.title}：{ranges}；"
+                          "机床有更多公共变量时，请在机床设置文件中设定）")  # fmt: skip
+        return detail(f"#{number} does not exist on {self.title}", f"{self.title} 没有变量 #{number}")
 
     def allows_common(self, first: int, last: int) -> CommonRange | None:
         """The profile's common range that holds ``#first``–``#last``, or None."""

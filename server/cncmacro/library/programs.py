@@ -21,6 +21,7 @@ from ..syntax.program import Program, ProgramUnit, build_program
 from .dialect_choice import dialect_from_text
 from .files import BinaryFileError, is_program_file, read_program, stays_inside
 
+ON_CONTROL = "(on the control)"  # the path suffix of a program kept on the control
 _NAME_OK = re.compile(r"^[\w+\-.\u4e00-\u9fff]+$")
 _O_NAME = re.compile(r"^[Oo](\d{1,8})$")
 
@@ -33,6 +34,7 @@ class LoadedFile:
     lines: list[str]
     program: Program
     dialect: str | None
+    on_control: bool = False  # a program kept on the control (``control_program``), not a file
 
     @property
     def name(self) -> str:
@@ -146,7 +148,7 @@ class ProgramLibrary:
             unit = near.program.unit_numbered(number)
             if unit is not None:
                 return FoundProgram(near, unit)
-        names = {f"o{number:04d}", f"o{number}", f"{number:04d}", f"{number}"}
+        names = {f"o{number:04d}", f"o{number}", f"{number:04d}", f"{number}", f"o{number:08d}"}
         folders = self._search_folders(near)
         for folder in folders:
             for p in self._folder_files(folder):
@@ -176,6 +178,21 @@ class ProgramLibrary:
                     if unit is not None:
                         return FoundProgram(loaded, unit)
         return None
+
+    def control_program(self, number: int) -> FoundProgram:
+        """O``number`` as a program kept on the control (a machine file's
+        ``programs_on_control``) and found in no folder: a program that returns at once. A file
+        in the workspace with that number (a stub that sets what the callers read) wins over it,
+        because ``find_number`` finds it first."""
+        path = f"O{number:04d} {ON_CONTROL}"
+        loaded = self._files.get(path)
+        if loaded is None:
+            loaded = load_text(path, f"O{number:04d}\nM99\n", self.cache)
+            loaded.on_control = True
+            self._files[path] = loaded
+        unit = loaded.program.unit_numbered(number)
+        assert unit is not None
+        return FoundProgram(loaded, unit)
 
     def find_name(self, name: str, near: LoadedFile | None = None) -> FoundProgram | None:
         """A program named by a bracketed name (``P[CUT]``): a file name, or ``O1004``."""

@@ -196,7 +196,7 @@ class ExpressionCompiler:
             return lambda m: m.S.get(n)
         return raiser(
             VARIABLE_NUMBER,
-            detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
+            self.dialect.missing_variable(n),
         )
 
     @staticmethod

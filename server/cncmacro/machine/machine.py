@@ -408,6 +408,8 @@ class Machine(VariableAccess, Motion):
     def find_program(self, number: int) -> FoundProgram:
         near = self.frames[-1].found.file if self.frames else None
         found = self.library.find_number(number, near)
+        if found is None and self.dialect.on_control(number):
+            return self.library.control_program(number)
         if found is None:
             raise MacroAlarm(PROGRAM_NOT_FOUND, detail(f"program O{number:04d} not found", f"未找到程序 O{number:04d}"))
         return found

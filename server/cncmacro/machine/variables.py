@@ -53,7 +53,7 @@ class VariableAccess:
         if row is None:
             raise MacroAlarm(
                 VARIABLE_NUMBER,
-                detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
+                self.dialect.missing_variable(n),
             )
         return row
 
@@ -84,7 +84,7 @@ class VariableAccess:
             return self.S.get(n)
         raise MacroAlarm(
             VARIABLE_NUMBER,
-            detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
+            self.dialect.missing_variable(n),
         )
 
     def write(self, index: Value, value: Value, message: str | None = None) -> None:
@@ -114,7 +114,7 @@ class VariableAccess:
         else:
             raise MacroAlarm(
                 VARIABLE_NUMBER,
-                detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
+                self.dialect.missing_variable(n),
             )
 
     # ---------------------------------------------------------------- system variables
