@@ -31,6 +31,7 @@ CODES: dict[str, CodeInfo] = {
     "bracket-depth": CodeInfo("error", "More than 5 nested brackets (alarm 118)."),
     "undefined-label": CodeInfo("error", "A GOTO, M99 P, M98 Q or H80-H86 target has no N label."),
     "duplicate-label": CodeInfo("warning", "An N number is used twice where it is a jump target."),
+    "duplicate-program": CodeInfo("warning", "An O number used twice in a file: the control keeps the first program."),
     "label-range": CodeInfo("error", "A GOTO target is outside 1-99999."),
     "loop-mismatch": CodeInfo("error", "DO without END, END without DO, or crossing loops (alarms 124/126)."),
     "loop-number": CodeInfo("error", "A DO/END number outside 1-3, or loops nested deeper than 3 (alarm 126)."),

@@ -193,6 +193,15 @@ class Machine(VariableAccess, Motion):
                 unit = program.units[1]
         found = FoundProgram(loaded, unit)
         self.start(found)
+        for u in program.units:
+            if u.duplicate and u.number is not None:
+                kept = program.unit_numbered(u.number)
+                first = kept.start + 1 if kept is not None else 0
+                self.notes.append(Note("call", detail(
+                    f"O{u.number:04d} repeats the program number of line {first}: the control keeps the first "
+                    "program and ignores this one",
+                    f"O{u.number:04d} 与第 {first} 行的程序号重复：系统只保留前一个程序，忽略此处的程序",
+                ), path, u.start, "duplicate-program"))  # fmt: skip
         return found
 
     # ---------------------------------------------------------------- state for the front ends
