@@ -7,17 +7,44 @@ from pathlib import Path
 
 from cncmacro.library.machine_file import CallCode, MachineSettings
 from cncmacro.library.programs import ProgramLibrary
-from running import alarm
+from running import alarm, final
 from static_helpers import at, check, coded, lines
 
 # ---------------------------------------------------------------- g65-nc-words
 
 
-def test_5_calls_g65_after_another_g_code_is_an_error():
-    text = lines("O1000", "G90 G65 P1000 A1", "M30")
-    found = coded(check(text), "g65-nc-words")
-    assert [at(d) for d in found] == [(2, 0, 3, "error")]
-    assert alarm(text) == (127, 2)
+def test_5_calls_a_modal_g_code_before_g65_is_alarm_127_on_gsk980tdi():
+    text = lines("O1000", "G54 G65 P1001 A1", "M30", "O1001", "M99")
+    [d] = coded(check(text, "gsk980tdi"), "g65-nc-words")
+    assert at(d) == (2, 0, 3, "error")
+    assert "G54 before G65" in d.message and "alarm 127" in d.message
+    assert alarm(text, "gsk980tdi") == (127, 2)
+
+
+def test_5_calls_a_modal_g_code_before_g65_is_a_warning_on_fanuc_that_says_what_the_control_does():
+    text = lines("O1000", "G90 G54 G65 P1001 A1", "M30", "O1001", "M99")
+    [d] = coded(check(text), "g65-nc-words")
+    assert at(d) == (2, 0, 7, "warning")
+    assert "sets G90 G54 (it stays in force) and then G65 calls the macro" in d.message
+    [zh] = coded(check(text, locale="zh-CN"), "g65-nc-words")
+    assert "先执行 G90 G54" in zh.message
+    g66 = lines("O1000", "G54 G66 P1001 A1", "G67", "M30", "O1001", "M99")
+    assert [at(d) for d in coded(check(g66), "g65-nc-words")] == [(2, 0, 3, "warning")]
+
+
+def test_5_calls_a_modal_g_code_before_g65_takes_effect_and_the_macro_is_called_on_fanuc():
+    text = lines("G55 G65 P1001 A7", "#101=#4014", "M30", "O1001", "#100=#1", "#102=#4014", "M99")
+    assert final(text) == {100: 7, 101: 55, 102: 55}
+    modal = lines("G91 G66 P1001 A2", "G00 X5", "G67", "#101=#4003", "M30", "O1001", "#100=#1", "M99")
+    assert final(modal) == {100: 2, 101: 91}
+
+
+def test_5_calls_other_words_before_g65_are_alarm_127_on_fanuc_too():
+    for before in ("X10", "M03", "G04", "G67"):
+        text = lines("O1000", f"{before} G65 P1001 A1", "M30", "O1001", "M99")
+        [d] = coded(check(text), "g65-nc-words")
+        assert at(d)[3] == "error", before
+        assert alarm(text) == (127, 2), before
 
 
 def test_5_calls_g66_with_an_o_word_after_it_is_an_error_on_gsk980tdi():

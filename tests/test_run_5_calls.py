@@ -65,7 +65,8 @@ def test_g_n_o_are_not_arguments(word):
 
 
 def test_only_n_may_precede_g65():
-    assert alarm(lines("G01 G65 P9000 A1", "M30", MACRO_ECHO))[0] == 127
+    assert alarm(lines("G01 G65 P9000 A1", "M30", MACRO_ECHO), "gsk980tdi")[0] == 127
+    assert final(lines("G01 G65 P9000 A1", "M30", MACRO_ECHO))[101] == 1  # fanuc: a modal G code, then the call
     assert alarm(lines("X5 G65 P9000 A1", "M30", MACRO_ECHO))[0] == 127
     assert alarm(lines("M03 G65 P9000 A1", "M30", MACRO_ECHO))[0] == 127
     assert locals_passed("G65 P9000 A1 M03")[13] == 3  # after G65, M is the argument #13

@@ -1,7 +1,8 @@
 """Checks of a block of NC words (docs/semantics.md §5, §7): calls, returns and their words.
 
 The block is read in the interpreter's order (``machine/nc_blocks.py``): a ``G65``/``G66``
-makes the block a macro call (only ``N`` before it and no O word: ``g65-nc-words``, alarm 127);
+makes the block a macro call (only ``N`` before it and no O word: ``g65-nc-words``, alarm 127; a
+modal G code before it is a warning where the dialect's control sets it and calls, FANUC);
 on gsk980tdi ``G65 H..`` without L is the macro A form; otherwise a code that the machine
 settings configure as a call, then ``M98``/``M198`` and ``M99``. What is decided is decided by
 the interpreter's own helpers in ``machine/calls.py`` (``map_arguments`` for argument letters,
@@ -15,7 +16,13 @@ from __future__ import annotations
 
 from ..bilingual import in_language
 from ..machine.alarms import MacroAlarm
-from ..machine.calls import macro_program_number, map_arguments, program_and_count, repeat_count
+from ..machine.calls import (
+    codes_before_call,
+    macro_program_number,
+    map_arguments,
+    program_and_count,
+    repeat_count,
+)
 from ..machine.hcodes import ARITHMETIC, BRANCHES
 from ..machine.numbers import round_half_away, to_increment
 from ..syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
@@ -60,11 +67,7 @@ def _add(facts: LineFacts, w: Word, severity: str, code: str, en: str, zh: str, 
 
 def _macro_call(words: tuple[Word, ...], at: int, g: float, ctx: LineContext, facts: LineFacts) -> None:
     name = "G65" if g == 65.0 else "G66"
-    if at > 0:
-        w = words[0]
-        _add(facts, w, "error", "g65-nc-words",
-             f"{w.letter} before {name}: only N may precede {name} in its block (alarm 127)",
-             f"{name} 之前只允许出现 N，不能有 {w.letter}（报警 127）", ctx)  # fmt: skip
+    if at > 0 and not _words_before_call(words[:at], name, ctx, facts):
         return
     after = words[at + 1 :]
     for w in after:
@@ -105,6 +108,41 @@ def _macro_call(words: tuple[Word, ...], at: int, g: float, ctx: LineContext, fa
     _macro_target(words[at], p_word, name, ctx, facts)
     if l_word is not None:
         _check_count(l_word, ctx, facts)
+
+
+def _words_before_call(before: tuple[Word, ...], name: str, ctx: LineContext, facts: LineFacts) -> bool:
+    """Words before G65/G66 through the interpreter's ``codes_before_call``: what the control does
+    with them decides the severity (``Dialect.modal_g_before_call``). An alarm is an error and ends
+    the checks of the block (False); modal G codes that the control sets before it calls are a
+    warning that says so (True: the call is checked on)."""
+    codes = codes_before_call([(w.letter, _code_value(w) if w.letter == "G" else None) for w in before], ctx.dialect)
+    title = ctx.dialect.title
+    if codes is None:
+        w = before[0]
+        word = _g_name(_code_value(w)) if w.letter == "G" and _code_value(w) is not None else w.letter
+        _add(facts, w, "error", "g65-nc-words",
+             f"{word} before {name}: only N may precede {name} in its block; {title} stops with alarm 127",
+             f"{name} 之前只允许出现 N，不能有 {word}：{title} 报警 127（停止运行）", ctx)  # fmt: skip
+        return False
+    shown = " ".join(_g_name(c) for c in codes)
+    w = before[0]
+    facts.findings.append(Finding(w.start, before[-1].end, _SEVERITY_BEFORE_CALL[ctx.dialect.modal_g_before_call],
+                                  "g65-nc-words", pick(ctx.locale,
+        f"{shown} before {name}: {title} sets {shown} (it stays in force) and then {name} calls the macro; "
+        f"controls that allow only N before {name} (GSK) stop with alarm 127, so {shown} is better on a block "
+        "of its own",
+        f"{name} 之前的 {shown}：{title} 先执行 {shown}（模态保持有效），再由 {name} 调用宏程序；"
+        f"{name} 之前只允许 N 的系统（GSK）会报警 127，建议把 {shown} 单独写一段")))  # fmt: skip
+    return True
+
+
+def _g_name(code: float | None) -> str:
+    if code is None:
+        return "G"
+    return f"G{int(code):02d}" if code == int(code) else f"G{code:g}"
+
+
+_SEVERITY_BEFORE_CALL = {"alarm": "error", "execute": "warning"}  # Dialect.modal_g_before_call -> severity
 
 
 def _looks_like_h_code(after: tuple[Word, ...]) -> bool:

@@ -64,6 +64,9 @@ class Dialect:
     cycle_codes: frozenset[float] = frozenset()
     # §5 fanuc wants I, J, K in that order within each set (a warning otherwise)
     ijk_order_matters: bool = False
+    # §5 a modal G code before G65/G66 in its block: "alarm" (only N may precede the call, alarm 127)
+    # or "execute" (the G code takes effect and stays in force, then the macro is called)
+    modal_g_before_call: str = "alarm"
 
     @property
     def incremental_letters(self) -> dict[str, str]:
@@ -129,6 +132,7 @@ FANUC = Dialect(
     coordinate_setting_code=92.0,
     cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
     ijk_order_matters=True,
+    modal_g_before_call="execute",
 )
 
 GSK980TDI = Dialect(

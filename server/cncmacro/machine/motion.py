@@ -20,6 +20,7 @@ from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
 from .arcs import ARC_MODES, arc_centre, arc_planes
+from .calls import g_code_groups
 from .frames import Move
 
 if TYPE_CHECKING:
@@ -64,13 +65,7 @@ class Motion:
         self.cycle_start_z: float | None = None
         self.moves: list[Move] = []
         self.record_moves = True
-        groups: dict[float, str] = {}
-        for doc in self.dialect.g_codes():
-            try:
-                groups[float(doc.code[1:])] = doc.group
-            except ValueError:
-                continue
-        self.g_groups = groups
+        self.g_groups = g_code_groups(self.dialect)
         self._cycle_codes = self.dialect.cycle_codes
         self._lathe = self.dialect.lathe
         self._plain_kinds: dict[str, Any] | None = None

@@ -15,7 +15,7 @@ from ..bilingual import detail
 from ..dialects.alarms import G_ARGUMENT, NC_AND_MACRO, PROGRAM_NOT_FOUND
 from ..syntax.nodes import Block, Bracket, Number, Var, Word
 from .alarms import MacroAlarm, raiser
-from .calls import macro_program_number, map_arguments, program_and_count, repeat_count
+from .calls import codes_before_call, macro_program_number, map_arguments, program_and_count, repeat_count
 from .hcodes import compile_h_code
 
 if TYPE_CHECKING:
@@ -93,14 +93,20 @@ def _run_plain_line(plan: tuple[Any, ...], m: Any, pc: int) -> int:
 
 def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int) -> Runner:
     name = "G65" if g == 65.0 else "G66"
-    for w in words[:at]:
-        return raiser(
-            NC_AND_MACRO,
-            detail(
-                f"{w.letter} before {name}: only N may precede {name} in its block",
-                f"{name} 之前有 {w.letter}：程序段中 {name} 之前只允许出现 N",
-            ),
-        )
+    dialect = cf.machine.dialect
+    before: list[tuple[str, float]] = []
+    if at > 0:
+        codes = codes_before_call([(w.letter, _literal_g(w)) for w in words[:at]], dialect)
+        if codes is None:
+            w = words[0]
+            return raiser(
+                NC_AND_MACRO,
+                detail(
+                    f"{w.letter} before {name}: only N may precede {name} in its block",
+                    f"{name} 之前有 {w.letter}：程序段中 {name} 之前只允许出现 N",
+                ),
+            )
+        before = [("G", c) for c in codes]  # modal G codes the control sets before it calls
     after = words[at + 1 :]
     for w in after:
         if w.letter == "O":  # M after G65 is the argument #13; G is alarm 129 below
@@ -108,7 +114,6 @@ def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int
                 NC_AND_MACRO,
                 detail(f"{name} may not share its block with an O word", f"{name} 不能与 O 代码在同一程序段"),
             )
-    dialect = cf.machine.dialect
     if (
         g == 65.0
         and dialect.h_codes
@@ -129,7 +134,11 @@ def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int
     count = _getter(cf, l_word)
     arg_values = [(w.letter, _getter(cf, w)) for w in args]
 
+    path = cf.file.path
+
     def evaluate(m: Any, pc: int) -> tuple[Any, Any, int]:
+        if before:
+            m.execute_nc(before, path, pc)
         found = resolve(m)
         arguments = map_arguments([(letter, get(m)) for letter, get in arg_values], dialect)
         notes: list[str] = []
