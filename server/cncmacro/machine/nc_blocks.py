@@ -36,7 +36,7 @@ def compile_nc_block(cf: CompiledFile, block: Block, pc: int, nxt: int) -> Runne
     for i, w in enumerate(words):
         g = _literal_g(w)
         if g in (65.0, 66.0):
-            return _macro_call(cf, words, i, g, nxt)
+            return _macro_call(cf, block, words, i, g, nxt)
     if any(_literal_g(w) == 67.0 for w in words):
         rest = [w for w in words if _literal_g(w) != 67.0]
         inner = _nc(cf, block, rest, nxt) if rest else None
@@ -91,7 +91,7 @@ def _run_plain_line(plan: tuple[Any, ...], m: Any, pc: int) -> int:
 # ---------------------------------------------------------------- G65 / G66
 
 
-def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int) -> Runner:
+def _macro_call(cf: CompiledFile, block: Block, words: list[Word], at: int, g: float, nxt: int) -> Runner:
     name = "G65" if g == 65.0 else "G66"
     dialect = cf.machine.dialect
     before: list[tuple[str, float]] = []
@@ -120,7 +120,7 @@ def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int
         and any(w.letter == "H" for w in after)
         and not any(w.letter == "L" for w in after)
     ):
-        return compile_h_code(cf, after, nxt)
+        return compile_h_code(cf, after, nxt, block)
     p_word = next((w for w in after if w.letter == "P"), None)
     l_word = next((w for w in after if w.letter == "L"), None)
     args = [w for w in after if w.letter not in ("P", "L")]
