@@ -124,6 +124,31 @@ def test_g66_calls_after_every_move_and_g67_cancels():
     assert v[100] == 2 and v[101] == 7 and v[102] == 10
 
 
+def test_5_g66_seed_001_example_a_block_without_movement_calls_nothing_on_gsk980tdi():
+    # seed 001 G66 example O0002 and its note 3: "G0 U0 W0" has no amount of movement, no call
+    program = lines(
+        "G00 X100 Z50",
+        "G66 P0100 L2 A2 B20 C20 I30 J20 K20",
+        "G01 X80 Z50",  # calls O0100 twice
+        "G0 U0 W0",  # no call
+        "G01 X80 Z50",  # already there: no call either
+        "G01 U1",  # calls twice
+        "G67",
+        "G01 X20 Z50",  # no call
+        "M30",
+        "O0100",
+        "#100=#100+1",
+        "M99",
+    )
+    assert final(program, "gsk980tdi")[100] == 4
+
+
+def test_5_g66_a_move_command_to_where_the_tool_is_calls_on_fanuc():
+    # fanuc: the macro is called after a block with a move command (seed 003 §8.3, seed 004)
+    program = lines("G90 G00 X10", "G66 P9003", "G01 X10 F100", "G91 X0", "G67", "M30", "O9003", "#100=#100+1", "M99")
+    assert final(program)[100] == 2
+
+
 def test_g66_block_itself_calls_nothing():
     v = final(lines("G66 P9003 A1 X5", "G67", "M30", "O9003", "#100=#100+1", "M99"))
     assert 100 not in v

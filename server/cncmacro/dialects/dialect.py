@@ -67,6 +67,9 @@ class Dialect:
     # §5 a modal G code before G65/G66 in its block: "alarm" (only N may precede the call, alarm 127)
     # or "execute" (the G code takes effect and stays in force, then the macro is called)
     modal_g_before_call: str = "alarm"
+    # §5 G66 calls after a block that moves some distance (True: ``G0 U0 W0`` calls nothing) or
+    # after any block with a move command (False)
+    modal_call_needs_distance: bool = False
 
     @property
     def incremental_letters(self) -> dict[str, str]:
@@ -157,6 +160,7 @@ GSK980TDI = Dialect(
     modal_defaults={"plane": 18.0, "feed": 98.0},
     coordinate_setting_code=50.0,
     cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0, 83.0, 84.0, 87.0, 88.0}),
+    modal_call_needs_distance=True,
 )
 
 BY_NAME = {d.name: d for d in (FANUC, GSK980TDI)}
