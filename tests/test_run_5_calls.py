@@ -154,6 +154,26 @@ def test_g66_block_itself_calls_nothing():
     assert 100 not in v
 
 
+@pytest.mark.parametrize("dialect", ["fanuc", "gsk980tdi"])
+def test_5_g66_sets_modal_group_12_to_66_and_g67_back_to_67(dialect):
+    # seed 000 system variable table (#4012: G66, G67, group 12), seed 003 §4.8
+    program = lines(
+        "#101=#4012",
+        "G66 P9003",
+        "#102=#4012",
+        "G66 P9003",  # nested modal calls: still 66 until the last one is cancelled
+        "G67",
+        "#103=#4012",
+        "G67",
+        "#104=#4012",
+        "M30",
+        "O9003",
+        "M99",
+    )
+    v = final(program, dialect)
+    assert (v[101], v[102], v[103], v[104]) == (67, 66, 66, 67)
+
+
 def test_m30_cancels_the_modal_call():
     m = run(lines("G66 P9003", "M30", "O9003", "M99"))
     assert m.status == "completed" and not m.modal_calls

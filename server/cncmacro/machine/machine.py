@@ -521,6 +521,7 @@ class Machine(VariableAccess, Motion):
     def end_program(self, pc: int) -> int:
         """M30 / M02: the run is complete; modal calls are cancelled."""
         self.modal_calls.clear()
+        self.modal["macro"] = 67.0
         self.status = COMPLETED
         self.frames[-1].pc = pc
         return -1
@@ -542,6 +543,7 @@ class Machine(VariableAccess, Motion):
 
     # ---------------------------------------------------------------- modal and code calls
     def set_modal_call(self, found: FoundProgram, arguments: Arguments, repeats: int) -> None:
+        """G66: the macro is called after each later move; modal group 12 (#4012) reads 66."""
         self.modal_calls.append(
             ModalCall(
                 found,
@@ -551,10 +553,14 @@ class Machine(VariableAccess, Motion):
                 self.frames[-1].macro_level,
             )
         )
+        self.modal["macro"] = 66.0
 
     def cancel_modal_call(self) -> None:
+        """G67: the innermost G66 ends; group 12 reads 67 once none is left."""
         if self.modal_calls:
             self.modal_calls.pop()
+        if not self.modal_calls:
+            self.modal["macro"] = 67.0
 
     def modal_call(self, pc: int, nxt: int) -> int:
         """After a move while G66 is in force: call the macro, unless it is that macro moving."""
