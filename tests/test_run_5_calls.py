@@ -290,6 +290,15 @@ def test_gsk_p_from_a_variable_with_too_many_digits_is_alarm_291(tmp_path):
     assert alarm(lines("#100=21234", "G65 P#100", "M30"), "gsk980tdi")[0] == 291
 
 
+def test_5_gsk_m98_p_bracket_variable_is_a_program_name_only_alarm_291(tmp_path):
+    # seed 002 M98 format two: in P[#100] the variable names the program; 21234 is alarm 291
+    assert alarm(lines("#100=21234", "M98 P[#100] L3", "M30"), "gsk980tdi", folder=tmp_path) == (291, 2)
+    called = lines("#100=23.34", "M98 P[#100] L3", "M30", "O0023", "#101=#101+1", "M99")
+    assert final(called, "gsk980tdi")[101] == 3  # O0023, three times
+    # on fanuc the brackets are only an expression: P[#100] is P#100, count and program
+    assert final(lines("#100=30040", "M98 P[#100]", "M30", "O0040", "#101=#101+1", "M99"))[101] == 3
+
+
 @pytest.mark.parametrize("name", ["../secret", "..", "a/../secret", "/etc/passwd", "sub\\secret"])
 def test_a_path_in_a_program_name_is_never_read(tmp_path, name):
     from cncmacro.library.programs import ProgramLibrary

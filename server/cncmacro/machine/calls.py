@@ -180,7 +180,8 @@ def program_and_count(
 
 
 def macro_program_number(value: float | None, dialect: Dialect) -> int:
-    """The program a G65/G66 P names: at most 4 digits on gsk980tdi (alarm 291), 8 on fanuc."""
+    """The program a G65/G66 P (or a gsk980tdi ``M98 P[#100]``) names: at most 4 digits on
+    gsk980tdi (alarm 291), 8 on fanuc."""
     if value is None:
         raise MacroAlarm(
             P_VALUE_RANGE,

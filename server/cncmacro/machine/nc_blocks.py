@@ -224,6 +224,7 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
         if w.letter == "P" and isinstance(w.value, Number):
             p_text = w.value.text
     p_name = next((w.name for w in words if w.letter == "P" and w.name is not None), None)
+    dialect = cf.machine.dialect
     p_bracket_var = next(
         (
             w.value.inner
@@ -232,8 +233,8 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
         ),
         None,
     )
-    get_bracket = cf.values.value(p_bracket_var) if p_bracket_var is not None else None
-    dialect = cf.machine.dialect
+    # P[#100] names a program on a dialect with bracketed names; elsewhere it is P#100
+    get_bracket = cf.values.value(p_bracket_var) if p_bracket_var is not None and dialect.bracket_names else None
 
     def general(m: Any, pc: int) -> int:
         values: list[tuple[str, float]] = []
@@ -293,8 +294,9 @@ def _subprogram_target(
     if p_name is not None:
         found = m.find_program_named(p_name)
         repeats = repeat_count(words.get("L"), dialect, notes)
-    elif get_bracket is not None:
-        number, repeats = program_and_count(None, get_bracket(m), words.get("L"), dialect, notes)
+    elif get_bracket is not None:  # P[#100]: the variable holds a program name only, never a count (seed 002)
+        number = macro_program_number(get_bracket(m), dialect)
+        repeats = repeat_count(words.get("L"), dialect, notes)
         found = m.find_program(number)
     elif "P" not in words:
         if q is None:
