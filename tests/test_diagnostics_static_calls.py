@@ -134,6 +134,18 @@ def test_5_calls_m98_p_with_more_than_eight_digits_is_a_program_number_error():
     assert [at(d) for d in found] == [(2, 4, 14, "error")]
 
 
+def test_5_calls_a_bracketed_name_with_a_character_outside_the_name_set_is_program_number(tmp_path: Path):
+    # seed 001 P[] format two: letters, digits and + - _ . only; any other character is an alarm
+    text = lines("O1000", "G65 P[A*B] L2", "M98 P[X=1]", "G66 P[CUT+1_A.B]", "G67", "M30")
+    found = check(text, "gsk980tdi", file=str(tmp_path / "MAIN.nc"), library=ProgramLibrary())
+    bad = coded(found, "program-number")
+    assert [at(d) for d in bad] == [(2, 4, 10, "error"), (3, 4, 10, "error")]
+    assert "P[A*B]: a program name may hold only letters, digits and + - _ ." in bad[0].message
+    assert [at(d)[0] for d in coded(found, "program-not-found")] == [4]  # a good name, only missing
+    assert alarm(lines("G65 P[A*B] L2", "M30"), "gsk980tdi", folder=tmp_path) == (291, 1)
+    assert alarm(lines("M98 P[A*B]", "M30"), "gsk980tdi", folder=tmp_path) == (291, 1)
+
+
 # ---------------------------------------------------------------- program-not-found
 
 

@@ -15,8 +15,11 @@ targets ``Jump`` facts; ``M99 Pn`` a ``ReturnJump``.
 from __future__ import annotations
 
 from ..bilingual import in_language
+from ..dialects.alarms import P_VALUE_RANGE
+from ..library.programs import is_program_name
 from ..machine.alarms import MacroAlarm
 from ..machine.calls import (
+    bad_name_detail,
     codes_before_call,
     macro_program_number,
     map_arguments,
@@ -206,14 +209,24 @@ def _macro_target(call: Word, p_word: Word | None, name: str, ctx: LineContext, 
     facts.calls.append(CallSite(name, program, None, p_word.start, p_word.end))
 
 
-def _named_target(p_word: Word, how: str, ctx: LineContext, facts: LineFacts) -> None:
+def _named_target(p_word: Word, how: str, ctx: LineContext, facts: LineFacts) -> bool:
+    """``P[CUT]``: a dialect without bracketed names, or a name the control refuses, is an
+    error (False); otherwise the name is for ``program-not-found`` to look up (True)."""
     dialect = ctx.dialect
+    name = p_word.name or ""
     if not dialect.bracket_names:
         _add(facts, p_word, "error", "dialect-feature",
-             f"P[{p_word.name}]: {dialect.title} names programs only by number, e.g. P1234",
-             f"P[{p_word.name}]：{dialect.title} 只能用程序号指定程序，例如 P1234", ctx)  # fmt: skip
-        return
-    facts.calls.append(CallSite(how, None, p_word.name, p_word.start, p_word.end))
+             f"P[{name}]: {dialect.title} names programs only by number, e.g. P1234",
+             f"P[{name}]：{dialect.title} 只能用程序号指定程序，例如 P1234", ctx)  # fmt: skip
+        return False
+    if not is_program_name(name):
+        text = bad_name_detail(name)
+        _add(facts, p_word, "error", "program-number",
+             f"{in_language(text, False)} (alarm {P_VALUE_RANGE})",
+             f"{in_language(text, True)}（报警 {P_VALUE_RANGE}）", ctx)  # fmt: skip
+        return False
+    facts.calls.append(CallSite(how, None, name, p_word.start, p_word.end))
+    return True
 
 
 def _check_count(l_word: Word, ctx: LineContext, facts: LineFacts) -> None:
@@ -377,10 +390,9 @@ def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts:
     q_span = (q_word.start, q_word.end) if q_word is not None else (0, 0)
     named = next((w for w in words if w.letter == "P" and w.name is not None), None)
     if named is not None:
-        if not dialect.bracket_names:
-            _named_target(named, how, ctx, facts)
+        if not _named_target(named, how, ctx, facts):
             return
-        facts.calls.append(CallSite(how, None, named.name, named.start, named.end, q, q_span))
+        facts.calls[-1] = CallSite(how, None, named.name, named.start, named.end, q, q_span)
         if l_word is not None:
             _check_count(l_word, ctx, facts)
         return

@@ -199,6 +199,15 @@ def macro_program_number(value: float | None, dialect: Dialect) -> int:
     return n
 
 
+def bad_name_detail(name: str) -> str:
+    """The text of the alarm for a bracketed program name the control refuses
+    (``library.programs.is_program_name``)."""
+    return detail(
+        f"P[{name}]: a program name may hold only letters, digits and + - _ . and may not start with '.'",
+        f"P[{name}]：程序名只能由字母（含中文）、数字及 + - _ . 组成，且不能以 . 开头",
+    )
+
+
 def argument_targets(letters: list[str]) -> list[int | None]:
     """The local each argument word of a G65/G66 block fills, word by word (specification I,
     and II for repeated I, J, K: the k-th I fills #(4+3(k-1))); None for a letter that is not

@@ -18,12 +18,12 @@ from typing import Any
 
 from ..bilingual import detail
 from ..dialects import Dialect, get_dialect
-from ..dialects.alarms import MACRO_NESTING, PROGRAM_NOT_FOUND, SUBPROGRAM_NESTING
+from ..dialects.alarms import MACRO_NESTING, P_VALUE_RANGE, PROGRAM_NOT_FOUND, SUBPROGRAM_NESTING
 from ..library.machine_file import CallCode, MachineSettings
-from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
+from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary, is_program_name
 from .alarms import Alarm, CallSite, MacroAlarm
 from .blocks import CompiledFile
-from .calls import Arguments, map_arguments, repeat_count
+from .calls import Arguments, bad_name_detail, map_arguments, repeat_count
 from .expressions import VariableKinds
 from .frames import Frame, ModalCall, Move, Note
 from .motion import Motion
@@ -417,6 +417,8 @@ class Machine(VariableAccess, Motion):
                     f"P[{name}]：{self.dialect.title} 只能用程序号指定程序",
                 ),
             )
+        if not is_program_name(name):
+            raise MacroAlarm(P_VALUE_RANGE, bad_name_detail(name))
         near = self.frames[-1].found.file if self.frames else None
         found = self.library.find_name(name, near)
         if found is None:
