@@ -80,6 +80,23 @@ def test_5_calls_argument_specification_ii_is_fine_on_both_dialects():
     assert coded(check(text, "gsk980tdi"), "argument-address") == []
 
 
+def test_5_calls_j_before_i_in_a_set_is_an_argument_order_warning_on_fanuc():
+    # docs/semantics.md §5, seed 004: "J_I_" is wrong; the value still goes where the letter says
+    text = lines("O1000", "G65 P1001 B1. A2. D3. J4. I5.", "M30", "O1001", "M99")
+    [d] = coded(check(text), "argument-order")
+    assert at(d) == (2, 26, 29, "warning")
+    assert "I after J" in d.message and "#4" in d.message
+    assert "系统仍把它赋给 #4" in coded(check(text, locale="zh-CN"), "argument-order")[0].message
+    second_set = lines("O1000", "G65 P1001 I1. J2. K3. I4. K5. J6.", "M30", "O1001", "M99")
+    assert [at(d)[:2] for d in coded(check(second_set), "argument-order")] == [(2, 30)]
+    assert coded(check(text, "gsk980tdi"), "argument-order") == []  # GSK's manuals ask for no order
+
+
+def test_5_calls_i_before_j_gives_no_argument_order_warning():
+    text = lines("O1000", "G65 P1001 B1. A2. D3. I5. J4.", "G65 P1001 I1 J2 K3 I4 J5 K6", "M30", "O1001", "M99")
+    assert coded(check(text), "argument-order") == []
+
+
 def test_5_calls_configured_call_code_takes_arguments_like_g65():
     settings = MachineSettings(calls={"G100": CallCode(9010)})
     text = lines("O1000", "G100 A1 P5", "M30", "O9010", "M99")

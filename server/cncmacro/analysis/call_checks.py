@@ -19,6 +19,7 @@ from ..dialects.alarms import P_VALUE_RANGE
 from ..library.programs import is_program_name
 from ..machine.alarms import MacroAlarm
 from ..machine.calls import (
+    argument_targets,
     bad_name_detail,
     codes_before_call,
     macro_program_number,
@@ -164,14 +165,28 @@ def _looks_like_h_code(after: tuple[Word, ...]) -> bool:
 
 def _check_arguments(args: list[Word], ctx: LineContext, facts: LineFacts) -> None:
     """Argument letters through the interpreter's ``map_arguments`` (values do not matter to
-    what it refuses, so each is given as 0)."""
+    what it refuses or remarks on, so each is given as 0): an alarm is an ``argument-address``
+    error, a remark (I, J, K out of order on fanuc) an ``argument-order`` warning on the first
+    word out of order."""
     try:
-        map_arguments([(w.letter, 0.0) for w in args], ctx.dialect)
+        mapped = map_arguments([(w.letter, 0.0) for w in args], ctx.dialect)
     except MacroAlarm as alarm:
         bad = _first_refused(args, ctx)
         _add(facts, bad, "error", "argument-address",
              f"{alarm.message} (alarm {alarm.number})",
              f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
+        return
+    if mapped.remarks:
+        k = next(k for k in range(1, len(args) + 1) if map_arguments([(w.letter, 0.0) for w in args[:k]],
+                                                                      ctx.dialect).remarks)  # fmt: skip
+        w = args[k - 1]
+        before = next(a.letter for a in reversed(args[: k - 1]) if a.letter in "IJK")
+        n = argument_targets([a.letter for a in args[:k]])[-1]
+        remark = mapped.remarks[0]
+        _add(facts, w, "warning", "argument-order",
+             f"{w.letter} after {before} in its set: {in_language(remark, False)}; the control still puts it in #{n}",
+             f"{w.letter} 写在同组的 {before} 之后：{in_language(remark, True)}；系统仍把它赋给 #{n}",
+             ctx)  # fmt: skip
 
 
 def _first_refused(args: list[Word], ctx: LineContext) -> Word:

@@ -41,6 +41,7 @@ CODES: dict[str, CodeInfo] = {
         "before it is a warning where the control sets it and calls)."
     ),
     "argument-address": CodeInfo("error", "G, L, N, O or P used as a macro argument (alarm 129)."),
+    "argument-order": CodeInfo("warning", "I, J, K arguments out of their I, J, K order within a set (fanuc)."),
     "repeat-count-range": CodeInfo("error", "A repeat count (L, or the count in P) is outside 1-9999."),
     "program-not-found": CodeInfo("error", "A call names a program that is not in the workspace."),
     "program-number": CodeInfo("error", "A program number has too many digits, or a program name is not allowed."),
