@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -13,6 +14,7 @@ from cncmacro.analysis.severity import CODES, apply_severities
 from cncmacro.library.machine_file import MachineFileError, load_machine_file
 from cncmacro.syntax.document import ParsedDocument
 
+ROOT = Path(__file__).resolve().parent.parent
 BROKEN = "O0001\n#1=[2+3\nG01 X10. F100.\nIF[#1 GT] GOTO5\nM30\n"
 
 
@@ -29,7 +31,10 @@ def test_every_design_code_has_a_default_severity() -> None:
     assert CODES["vacant-argument"].severity == "information"
     assert CODES["not-executed"].severity == "hint"
     assert all(info.severity in ("error", "warning", "information", "hint") for info in CODES.values())
-    assert len(CODES) == 25
+    table = (ROOT / "docs" / "design.md").read_text(encoding="utf-8").split("### Diagnostic codes")[1]
+    documented = {m.group(1): m.group(2) for m in re.finditer(r"^\| `([a-z0-9-]+)` \| ([a-z /]+) \|", table, re.M)}
+    assert set(documented) == set(CODES)
+    assert all(CODES[code].severity in levels.split(" / ") for code, levels in documented.items())
 
 
 def test_a_code_can_be_given_another_severity() -> None:

@@ -2,11 +2,11 @@
 
 ``static_diagnostics`` checks a whole parsed file: each line on its own (``line_facts``: the
 statements, the words, the variables; see ``statement_checks``, ``call_checks`` and
-``variable_checks``), then what connects the lines (``loop_checks``, and ``label_checks`` with the
-program lookups of ``call_targets``). The per-line part is a pure function of the block, the
-dialect, the machine settings and the locale, so an incremental analysis may cache it per block
-and call ``block_diagnostics`` for changed lines only (``static_lines`` does), then
-``cross_line_diagnostics``. A plain CAM line (``Block.plain``) is
+``variable_checks``), then what connects the lines (``unit_checks`` for repeated O numbers,
+``loop_checks``, and ``label_checks`` with the program lookups of ``call_targets``). The per-line
+part is a pure function of the block, the dialect, the machine settings and the locale, so an
+incremental analysis may cache it per block and call ``block_diagnostics`` for changed lines only
+(``static_lines`` does), then ``cross_line_diagnostics``. A plain CAM line (``Block.plain``) is
 looked at only when its text holds a call or return code; its words are never built otherwise.
 Syntax errors are ``syntax_check``'s: a block that does not parse is not checked here.
 """
@@ -25,6 +25,7 @@ from .label_checks import LabelChecker
 from .line_facts import LineContext, LineFacts
 from .loop_checks import loop_diagnostics
 from .statement_checks import check_statements
+from .unit_checks import duplicate_program_diagnostics
 
 _contexts: dict[tuple[str, int, str], LineContext] = {}
 
@@ -110,9 +111,10 @@ def cross_line_diagnostics(
     locale: str,
     collected: list[tuple[int, LineFacts]],
 ) -> list[Diagnostic]:
-    """What connects the lines: loops, and the labels and call targets of ``collected`` (the
-    lines with jumps, calls or returns, in line order, with their facts)."""
-    out = loop_diagnostics(program, file, locale)
+    """What connects the lines: repeated O numbers, loops, and the labels and call targets of
+    ``collected`` (the lines with jumps, calls or returns, in line order, with their facts)."""
+    out = duplicate_program_diagnostics(program, file, locale)
+    out.extend(loop_diagnostics(program, file, locale))
     finder = ProgramFinder(program, file, dialect, library)
     out.extend(LabelChecker(program, file, finder, locale).run(collected))
     return out

@@ -16,7 +16,8 @@
 (file -> 0-based line -> ``[(variable number, value)]``, the value each assignment on that
 line left the last time a run executed it; None is vacant).
 
-Which programs run: every O program of the open files that no workspace file calls with a
+Which programs run: every O program of the open files (but a repeated O number's later copy,
+which the control does not keep: ``ProgramUnit.duplicate``) that no workspace file calls with a
 literal target (G65/G66/M98/call codes) runs on its own, with vacant arguments, ``M99`` at
 level 0 ending it; a called program is analysed through its callers, with their arguments,
 and its findings appear in its own file. A called program that no caller's run entered gets
@@ -275,7 +276,10 @@ class WorkspaceAnalysis:
         by_number: dict[int, list[tuple[str, int]]] = {}
         by_name: dict[str, list[tuple[str, int]]] = {}
         for path, d in self.docs.items():
+            ignored = [u for u in d.doc.program.units if u.duplicate]
             for line, number, name in self._static(d).call_sites():
+                if ignored and any(line in u for u in ignored):
+                    continue  # a copy the control does not keep calls nothing
                 if number is not None:
                     by_number.setdefault(number, []).append((path, line))
                 elif name is not None:
@@ -287,7 +291,7 @@ class WorkspaceAnalysis:
             stem = Path(path).stem
             m = _DIGITS.match(stem)
             for k, unit in enumerate(program.units):
-                if not _runnable(program.blocks, unit):
+                if unit.duplicate or not _runnable(program.blocks, unit):
                     continue
                 sites = list(by_number.get(unit.number, ())) if unit.number is not None else []
                 if unit.number is None and k == 0:

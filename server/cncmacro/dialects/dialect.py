@@ -84,6 +84,13 @@ class Dialect:
     # ``programs_on_control``): a call to one is a call that returns at once
     programs_on_control: tuple[tuple[int, int], ...] = ()
 
+    # §5 a modal G code before G65/G66 in its block: "alarm" (only N may precede the call, alarm 127)
+    # or "execute" (the G code takes effect and stays in force, then the macro is called)
+    modal_g_before_call: str = "alarm"
+    # §5 G66 calls after a block that moves some distance (True: ``G0 U0 W0`` calls nothing) or
+    # after any block with a move command (False)
+    modal_call_needs_distance: bool = False
+
     def configured(self, **changes: object) -> Dialect:
         """This profile as one machine has it (a machine file's commons, digits and variables)."""
         return replace(self, **changes)  # type: ignore[arg-type]

@@ -26,6 +26,15 @@ _NAME_OK = re.compile(r"^[\w+\-.\u4e00-\u9fff]+$")
 _O_NAME = re.compile(r"^[Oo](\d{1,8})$")
 
 
+def is_program_name(name: str) -> bool:
+    """Whether a bracketed name (``P[CUT]``) is one the control accepts: letters (Chinese
+    too), digits, ``+ - _ .``, not starting with ``.`` (seed 001 P[] format two, seed 000
+    §3.28.3); any other character is an alarm (291 here, the seeds give no number). A name
+    with ``..`` or a path in it is never one."""
+    name = name.strip()
+    return bool(_NAME_OK.match(name)) and not name.startswith(".") and ".." not in name
+
+
 @dataclass(slots=True)
 class LoadedFile:
     """A program file, parsed: its path (as given), lines, structure and dialect comment."""
@@ -200,7 +209,7 @@ class ProgramLibrary:
         m = _O_NAME.match(name)
         if m:
             return self.find_number(int(m.group(1)), near)
-        if not _NAME_OK.match(name) or ".." in name:
+        if not is_program_name(name):
             return None
         wanted = name.lower()
         for folder in self._search_folders(near):

@@ -18,6 +18,42 @@ from .numbers import to_int
 
 NOT_ARGUMENTS = frozenset("GLNOP")
 MAX_REPEAT = 9999
+_G_GROUPS: dict[str, dict[float, str]] = {}
+
+
+def g_code_groups(dialect: Dialect) -> dict[float, str]:
+    """G code -> the name of its modal group in the dialect's code table (one-shot codes are
+    absent): what a G word in a block sets."""
+    groups = _G_GROUPS.get(dialect.data_module)
+    if groups is None:
+        groups = {}
+        for doc in dialect.g_codes():
+            try:
+                code = float(doc.code[1:])
+            except ValueError:
+                continue
+            if doc.group:
+                groups[code] = doc.group
+        _G_GROUPS[dialect.data_module] = groups
+    return groups
+
+
+def codes_before_call(words: list[tuple[str, float | None]], dialect: Dialect) -> list[float] | None:
+    """The words written before ``G65``/``G66`` in its block (N apart), as (letter, literal
+    value or None): the G codes the control carries out before it calls, or None when the block
+    is alarm 127. Only N may precede the call (seed 001 注3, seed 000 §3.28.3); a dialect whose
+    ``modal_g_before_call`` is ``"execute"`` (FANUC) sets modal G codes there and then calls, as
+    programs that run in production show. Any other word, a one-shot G code or G66/G67 is 127."""
+    if dialect.modal_g_before_call != "execute":
+        return None
+    groups = g_code_groups(dialect)
+    codes: list[float] = []
+    for letter, value in words:
+        group = groups.get(value) if letter == "G" and value is not None else None
+        if group is None or group == "macro":
+            return None
+        codes.append(value)  # type: ignore[arg-type]
+    return codes
 
 
 @dataclass(slots=True)
@@ -150,7 +186,8 @@ def program_and_count(
 
 
 def macro_program_number(value: float | None, dialect: Dialect) -> int:
-    """The program a G65/G66 P names: at most 4 digits on gsk980tdi (alarm 291), 8 on fanuc."""
+    """The program a G65/G66 P (or a gsk980tdi ``M98 P[#100]``) names: at most 4 digits on
+    gsk980tdi (alarm 291), 8 on fanuc."""
     if value is None:
         raise MacroAlarm(
             P_VALUE_RANGE,
@@ -166,6 +203,15 @@ def macro_program_number(value: float | None, dialect: Dialect) -> int:
             ),
         )
     return n
+
+
+def bad_name_detail(name: str) -> str:
+    """The text of the alarm for a bracketed program name the control refuses
+    (``library.programs.is_program_name``)."""
+    return detail(
+        f"P[{name}]: a program name may hold only letters, digits and + - _ . and may not start with '.'",
+        f"P[{name}]：程序名只能由字母（含中文）、数字及 + - _ . 组成，且不能以 . 开头",
+    )
 
 
 def argument_targets(letters: list[str]) -> list[int | None]:

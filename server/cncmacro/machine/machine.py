@@ -18,13 +18,13 @@ from typing import Any
 
 from ..bilingual import detail
 from ..dialects import Dialect, get_dialect
-from ..dialects.alarms import MACRO_NESTING, PROGRAM_NOT_FOUND, SUBPROGRAM_NESTING
+from ..dialects.alarms import MACRO_NESTING, P_VALUE_RANGE, PROGRAM_NOT_FOUND, SUBPROGRAM_NESTING
 from ..library.machine_file import CallCode, MachineSettings
 from ..library.profiles import machine_profile
-from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
+from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary, is_program_name
 from .alarms import Alarm, CallSite, MacroAlarm
 from .blocks import CompiledFile
-from .calls import Arguments, map_arguments, repeat_count
+from .calls import Arguments, bad_name_detail, map_arguments, repeat_count
 from .expressions import VariableKinds
 from .frames import Frame, ModalCall, Move, Note
 from .motion import Motion
@@ -206,6 +206,15 @@ class Machine(VariableAccess, Motion):
                 unit = program.units[1]
         found = FoundProgram(loaded, unit)
         self.start(found)
+        for u in program.units:
+            if u.duplicate and u.number is not None:
+                kept = program.unit_numbered(u.number)
+                first = kept.start + 1 if kept is not None else 0
+                self.notes.append(Note("call", detail(
+                    f"O{u.number:04d} repeats the program number of line {first}: the control keeps the first "
+                    "program and ignores this one",
+                    f"O{u.number:04d} 与第 {first} 行的程序号重复：系统只保留前一个程序，忽略此处的程序",
+                ), path, u.start, "duplicate-program"))  # fmt: skip
         return found
 
     # ---------------------------------------------------------------- state for the front ends
@@ -423,6 +432,8 @@ class Machine(VariableAccess, Motion):
                     f"P[{name}]：{self.dialect.title} 只能用程序号指定程序",
                 ),
             )
+        if not is_program_name(name):
+            raise MacroAlarm(P_VALUE_RANGE, bad_name_detail(name))
         near = self.frames[-1].found.file if self.frames else None
         found = self.library.find_name(name, near)
         if found is None:
@@ -527,6 +538,7 @@ class Machine(VariableAccess, Motion):
     def end_program(self, pc: int) -> int:
         """M30 / M02: the run is complete; modal calls are cancelled."""
         self.modal_calls.clear()
+        self.modal["macro"] = 67.0
         self.status = COMPLETED
         self.frames[-1].pc = pc
         return -1
@@ -548,6 +560,7 @@ class Machine(VariableAccess, Motion):
 
     # ---------------------------------------------------------------- modal and code calls
     def set_modal_call(self, found: FoundProgram, arguments: Arguments, repeats: int) -> None:
+        """G66: the macro is called after each later move; modal group 12 (#4012) reads 66."""
         self.modal_calls.append(
             ModalCall(
                 found,
@@ -557,10 +570,14 @@ class Machine(VariableAccess, Motion):
                 self.frames[-1].macro_level,
             )
         )
+        self.modal["macro"] = 66.0
 
     def cancel_modal_call(self) -> None:
+        """G67: the innermost G66 ends; group 12 reads 67 once none is left."""
         if self.modal_calls:
             self.modal_calls.pop()
+        if not self.modal_calls:
+            self.modal["macro"] = 67.0
 
     def modal_call(self, pc: int, nxt: int) -> int:
         """After a move while G66 is in force: call the macro, unless it is that macro moving."""

@@ -217,6 +217,14 @@ class Comment:
     end: int
 
 
+def comment_after(comments: tuple[Comment, ...], column: int) -> str | None:
+    """The text of the first of ``comments`` that starts at or after ``column``."""
+    for c in comments:
+        if c.start >= column:
+            return c.text
+    return None
+
+
 @dataclass(slots=True)
 class Problem:
     """A syntax problem on one block, ready to become a diagnostic."""
@@ -341,6 +349,11 @@ class Block:
             and not self.statements
             and not self.has_error
         )
+
+    def comment_after(self, column: int) -> str | None:
+        """The text of the first comment that starts at or after ``column``: the message of
+        ``#3000=n(text)`` (``Assign.message``) and of gsk980tdi ``G65 H99 Pn(/text)``."""
+        return comment_after(self.comments, column)
 
     def word(self, letter: str) -> Word | None:
         """The first NC word with this address letter, if any."""

@@ -35,6 +35,7 @@ PROFILE = Dialect(
     coordinate_setting_code=92.0,
     cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
     ijk_order_matters=True,
+    modal_g_before_call="execute",
     common_ranges=(CommonRange(100, 499, False), CommonRange(500, 999, True)),
     m98_program_digits=4,
 )

@@ -37,4 +37,5 @@ PROFILE = Dialect(
     cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0, 83.0, 84.0, 87.0, 88.0}),
     common_ranges=(CommonRange(100, 199, False), CommonRange(500, 999, True)),
     m98_program_digits=4,
+    modal_call_needs_distance=True,
 )
