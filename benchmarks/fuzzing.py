@@ -33,7 +33,7 @@ from cncmacro.machine.machine import PAUSED
 from cncmacro.syntax.document import ParsedDocument, split_lines
 
 ROOT = Path(__file__).resolve().parent.parent
-DIALECTS = ("fanuc", "gsk980tdi")
+DIALECTS = ("fanuc", "gsk980tdi", "fanuc-30i")
 REQUEST_SECONDS = 60.0  # a request or analysis still unanswered after this is a hang
 RUN_BUDGET = 3000  # blocks per fuzzed run: enough to loop and call, small enough to stay fast
 _FOLDER = Path(tempfile.gettempdir()) / "cncmacro-fuzz-workspace"

@@ -62,7 +62,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..dialects import Dialect, get_dialect
+from ..dialects import DIALECTS, Dialect, get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
 from ..library.machine_file import MachineSettings
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
@@ -555,11 +555,19 @@ class WorkspaceAnalysis:
 
 
 _CLOCK_NUMBERS = sorted({
-    str(n) for name in ("fanuc", "gsk980tdi") for row in get_dialect(name).system_variables()
+    str(n) for name in DIALECTS for row in get_dialect(name).system_variables()
     if row.source in ("timer", "date", "time") for n in range(row.first, row.last + 1)
 })  # fmt: skip
-# a read of the clock: ``#[``, a clock variable, or a GSK ``#9xxx`` (indirection through a common)
-_CLOCK_READ = re.compile(r"#[ \t]*(?:\[|0*(?:" + "|".join(_CLOCK_NUMBERS) + r"|9\d{3})(?!\d))")
+_CLOCK_NAMES = sorted({
+    v.name for name in DIALECTS for v in get_dialect(name).system_variable_names()
+    if any(str(n) in _CLOCK_NUMBERS for n in range(v.first, v.last + 1))
+})  # fmt: skip
+# a read of the clock: ``#[``, a clock variable (by number or 30i name), or a GSK ``#9xxx``
+# (indirection through a common)
+_CLOCK_READ = re.compile(
+    r"#[ \t]*(?:\[|0*(?:" + "|".join(_CLOCK_NUMBERS) + r"|9\d{3})(?!\d)|_(?:" + "|".join(_CLOCK_NAMES) + r")(?!\w))",
+    re.I,
+)
 
 
 def _clock_reads(lines: list[str]) -> int:

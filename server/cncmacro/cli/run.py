@@ -19,6 +19,7 @@ from typing import Any, TextIO
 
 from ..analysis.locale import is_chinese, pick
 from ..bilingual import in_language
+from ..dialects import DIALECTS
 from ..library.machine_file import parse_preset
 from ..machine import Machine, RunResult
 from ..machine.frames import MODE_NAMES, Move
@@ -39,7 +40,7 @@ def add_run_parser(sub: Any) -> None:
     )
     run.add_argument("file", metavar="FILE", help="the program to run")
     run.add_argument(
-        "--dialect", choices=("fanuc", "gsk980tdi"), help="dialect when neither the file nor the machine file names one"
+        "--dialect", choices=DIALECTS, help="dialect when neither the file nor the machine file names one"
     )
     run.add_argument(
         "--path", action="append", default=[], metavar="DIR", help="another folder where called programs are looked up"

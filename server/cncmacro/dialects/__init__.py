@@ -1,6 +1,7 @@
 """The dialects: data (variable ranges, tables, alarm numbers, switches), never code paths.
 
-Two dialects exist: ``fanuc`` (FANUC 0i Custom Macro B, the default) and ``gsk980tdi``.
+Three dialects exist: ``fanuc`` (FANUC 0i Custom Macro B, the default), ``gsk980tdi`` and
+``fanuc-30i`` (FANUC 30i-B Custom Macro).
 """
 
 from __future__ import annotations
@@ -8,8 +9,11 @@ from __future__ import annotations
 from .dialect import BY_NAME, Dialect
 
 DEFAULT_DIALECT = "fanuc"
-DIALECTS = ("fanuc", "gsk980tdi")
-_ALIASES = {"fanuc": "fanuc", "fanuc0i": "fanuc", "gsk": "gsk980tdi", "gsk980tdi": "gsk980tdi", "gsk980": "gsk980tdi"}
+DIALECTS = ("fanuc", "gsk980tdi", "fanuc-30i")
+_ALIASES = {
+    "fanuc": "fanuc", "fanuc0i": "fanuc", "gsk": "gsk980tdi", "gsk980tdi": "gsk980tdi", "gsk980": "gsk980tdi",
+    "fanuc30i": "fanuc-30i", "30i": "fanuc-30i", "fanuc-30i": "fanuc-30i",
+}  # fmt: skip
 
 
 def normalise_dialect(name: str | None) -> str | None:

@@ -11,7 +11,7 @@ from bisect import bisect_right
 from dataclasses import dataclass, field
 from functools import cache
 
-from .tables import CodeDoc, FunctionDoc, SystemVariable
+from .tables import CodeDoc, FunctionDoc, SystemVariable, SystemVariableName
 
 # G65 argument specification I (docs/semantics.md §5): letter -> local variable number.
 ARGUMENTS_I = {
@@ -64,6 +64,13 @@ class Dialect:
     cycle_codes: frozenset[float] = frozenset()
     # §5 fanuc wants I, J, K in that order within each set (a warning otherwise)
     ijk_order_matters: bool = False
+    # §2 system variable names [#_NAME] and [#_NAME[n]] (the data module's SYSTEM_VARIABLE_NAMES)
+    variable_names: bool = False
+    # §3 functions beyond the common set: names (POW, ADP, PRM) and extra forms by signature (ATAN[a,b])
+    extra_functions: frozenset[str] = frozenset()
+    # §5 M98 P with more than 4 digits: the digits before the last four are the count (False: P is
+    # the whole program number and only L counts)
+    m98_count_in_p: bool = True
 
     @property
     def incremental_letters(self) -> dict[str, str]:
@@ -89,21 +96,37 @@ class Dialect:
     def m_codes(self) -> tuple[CodeDoc, ...]:
         return _tables(self.data_module)[3]
 
+    def system_variable_names(self) -> tuple[SystemVariableName, ...]:
+        """The ``[#_NAME]`` names, empty for a dialect without them."""
+        return tuple(_tables(self.data_module)[4].values()) if self.variable_names else ()
+
+    def variable_name(self, name: str) -> SystemVariableName | None:
+        """The row of ``[#_NAME]`` (``name`` without ``#_``, any case), or None."""
+        return _tables(self.data_module)[4].get(name.upper()) if self.variable_names else None
+
     def functions(self) -> tuple[FunctionDoc, ...]:
-        return _functions()
+        """The common functions, then the forms ``extra_functions`` adds (by name or signature)."""
+        return _functions(self.extra_functions)
+
+
+_Tables = tuple[
+    tuple[SystemVariable, ...], list[int], tuple[CodeDoc, ...], tuple[CodeDoc, ...], dict[str, SystemVariableName]
+]
 
 
 @cache
-def _tables(module: str) -> tuple[tuple[SystemVariable, ...], list[int], tuple[CodeDoc, ...], tuple[CodeDoc, ...]]:
+def _tables(module: str) -> _Tables:
     mod = importlib.import_module(f"{__package__}.{module}")
     rows = tuple(sorted(mod.SYSTEM_VARIABLES, key=lambda r: r.first))
-    return rows, [r.first for r in rows], tuple(mod.G_CODES), tuple(mod.M_CODES)
+    names = {n.name: n for n in getattr(mod, "SYSTEM_VARIABLE_NAMES", ())}
+    return rows, [r.first for r in rows], tuple(mod.G_CODES), tuple(mod.M_CODES), names
 
 
 @cache
-def _functions() -> tuple[FunctionDoc, ...]:
+def _functions(extra: frozenset[str]) -> tuple[FunctionDoc, ...]:
     mod = importlib.import_module(f"{__package__}.functions_data")
-    return tuple(mod.FUNCTIONS)
+    added = tuple(f for f in mod.EXTRA_FUNCTIONS if f.name in extra or f.signature in extra)
+    return (*mod.FUNCTIONS, *added)
 
 
 FANUC = Dialect(
@@ -155,4 +178,32 @@ GSK980TDI = Dialect(
     cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0, 83.0, 84.0, 87.0, 88.0}),
 )
 
-BY_NAME = {d.name: d for d in (FANUC, GSK980TDI)}
+FANUC_30I = Dialect(
+    name="fanuc-30i",
+    title="FANUC 30i-B Custom Macro",
+    data_module="fanuc30i_data",
+    vacant_differs_in_eq=True,
+    vacant_address_is_zero=False,
+    nine_indirection=False,
+    c_relations=False,
+    macro_alarm_base=3000,
+    h_codes=False,
+    bracket_names=False,
+    program_digits=8,
+    macro_levels=4,
+    subprogram_levels=10,
+    clamp_repeat_count=False,
+    count_in_p_and_l_alarm=False,
+    lathe=False,
+    axes=("X", "Y", "Z", "A"),
+    modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0}),
+    modal_defaults={"plane": 17.0, "feed": 94.0},
+    coordinate_setting_code=92.0,
+    cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
+    ijk_order_matters=True,
+    variable_names=True,
+    extra_functions=frozenset({"POW", "ADP", "PRM", "ATAN[a,b]"}),
+    m98_count_in_p=False,
+)
+
+BY_NAME = {d.name: d for d in (FANUC, GSK980TDI, FANUC_30I)}

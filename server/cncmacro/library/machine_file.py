@@ -38,7 +38,7 @@ from pathlib import Path, PureWindowsPath
 import tomllib
 
 from ..bilingual import Detail, detail
-from ..dialects import normalise_dialect
+from ..dialects import DIALECTS, normalise_dialect
 
 MACHINE_FILE_NAME = ".cncmacro.toml"
 PERSISTENT_FILE_NAME = ".cncmacro-vars.json"
@@ -137,7 +137,8 @@ def settings_from_mapping(
     if "dialect" in data:
         d = normalise_dialect(str(data["dialect"]))
         if d is None:
-            raise fail("dialect", detail("must be fanuc or gsk980tdi", "必须是 fanuc 或 gsk980tdi"))
+            names = ", ".join(DIALECTS)
+            raise fail("dialect", detail(f"must be one of {names}", f"必须是 {names} 之一"))
         kw["dialect"] = d
     if "common" in data:
         c = data["common"]

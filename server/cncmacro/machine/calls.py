@@ -108,12 +108,17 @@ def program_and_count(
     p_text: str | None, p_value: float | None, l_value: float | None, dialect: Dialect, notes: list[str]
 ) -> tuple[int, int]:
     """``M98 P<count><program> L<count>``: (program number, repeat count). More than four
-    digits in P: the last four are the program and the ones before them the count."""
+    digits in P: the last four are the program and the ones before them the count. Where the
+    dialect reads P as the whole program number (``m98_count_in_p`` False, 8-digit program
+    numbers), only L counts."""
     if p_value is None:
         raise MacroAlarm(P_VALUE_RANGE, detail("M98 needs P: the program to call", "M98 需要用 P 指定被调用的程序"))
     n = to_int(p_value)
     if n < 0:
         raise MacroAlarm(P_VALUE_RANGE, detail(f"P{n}: a program number cannot be negative", f"P{n}：程序号不能为负数"))
+    if not dialect.m98_count_in_p:
+        program = macro_program_number(p_value, dialect)
+        return program, repeat_count(l_value, dialect, notes) if l_value is not None else 1
     digits = p_text.lstrip("+") if p_text and p_text.lstrip("+").isdigit() else str(n)
     if len(digits) > 8:
         raise MacroAlarm(
@@ -144,7 +149,8 @@ def program_and_count(
 
 
 def macro_program_number(value: float | None, dialect: Dialect) -> int:
-    """The program a G65/G66 P names: at most 4 digits on gsk980tdi (alarm 291), 8 on fanuc."""
+    """The program a G65/G66 P (or a 30i M98 P) names: at most 4 digits on gsk980tdi (alarm 291),
+    8 on fanuc."""
     if value is None:
         raise MacroAlarm(
             P_VALUE_RANGE,
