@@ -563,8 +563,16 @@ _CLOCK_NUMBERS = sorted({
     str(n) for name in DIALECTS for row in get_dialect(name).system_variables()
     if row.source in ("timer", "date", "time") for n in range(row.first, row.last + 1)
 })  # fmt: skip
-# a read of the clock: ``#[``, a clock variable, or a GSK ``#9xxx`` (indirection through a common)
-_CLOCK_READ = re.compile(r"#[ \t]*(?:\[|0*(?:" + "|".join(_CLOCK_NUMBERS) + r"|9\d{3})(?!\d))")
+_CLOCK_NAMES = sorted({
+    v.name for name in DIALECTS for v in get_dialect(name).system_variable_names()
+    if any(str(n) in _CLOCK_NUMBERS for n in range(v.first, v.last + 1))
+})  # fmt: skip
+# a read of the clock: ``#[``, a clock variable (by number or 30i name), or a GSK ``#9xxx``
+# (indirection through a common)
+_CLOCK_READ = re.compile(
+    r"#[ \t]*(?:\[|0*(?:" + "|".join(_CLOCK_NUMBERS) + r"|9\d{3})(?!\d)|_(?:" + "|".join(_CLOCK_NAMES) + r")(?!\w))",
+    re.I,
+)
 
 
 def _clock_reads(lines: list[str]) -> int:

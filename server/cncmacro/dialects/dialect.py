@@ -14,7 +14,7 @@ from dataclasses import dataclass, field, replace
 from functools import cache
 
 from ..bilingual import Detail, detail
-from .tables import CodeDoc, CommonRange, FunctionDoc, SystemVariable
+from .tables import CodeDoc, CommonRange, FunctionDoc, SystemVariable, SystemVariableName
 
 # G65 argument specification I (docs/semantics.md §5): letter -> local variable number.
 ARGUMENTS_I = {
@@ -91,6 +91,11 @@ class Dialect:
     # after any block with a move command (False)
     modal_call_needs_distance: bool = False
 
+    # §2 system variable names [#_NAME] and [#_NAME[n]] (the data module's SYSTEM_VARIABLE_NAMES)
+    variable_names: bool = False
+    # §3 functions beyond the common set: names (POW, ADP, PRM) and extra forms by signature (ATAN[a,b])
+    extra_functions: frozenset[str] = frozenset()
+
     def configured(self, **changes: object) -> Dialect:
         """This profile as one machine has it (a machine file's commons, digits and variables)."""
         return replace(self, **changes)  # type: ignore[arg-type]
@@ -151,18 +156,35 @@ class Dialect:
     def m_codes(self) -> tuple[CodeDoc, ...]:
         return _tables(self.data_module)[3]
 
+    def system_variable_names(self) -> tuple[SystemVariableName, ...]:
+        """The ``[#_NAME]`` names, empty for a dialect without them."""
+        return tuple(_tables(self.data_module)[4].values()) if self.variable_names else ()
+
+    def variable_name(self, name: str) -> SystemVariableName | None:
+        """The row of ``[#_NAME]`` (``name`` without ``#_``, any case), or None."""
+        return _tables(self.data_module)[4].get(name.upper()) if self.variable_names else None
+
     def functions(self) -> tuple[FunctionDoc, ...]:
-        return _functions()
+        """The common functions, then the forms ``extra_functions`` adds (by name or signature)."""
+        return _functions(self.extra_functions)
+
+
+_Tables = tuple[
+    tuple[SystemVariable, ...], list[int], tuple[CodeDoc, ...], tuple[CodeDoc, ...], dict[str, SystemVariableName]
+]
 
 
 @cache
-def _tables(module: str) -> tuple[tuple[SystemVariable, ...], list[int], tuple[CodeDoc, ...], tuple[CodeDoc, ...]]:
+def _tables(module: str) -> _Tables:
     mod = importlib.import_module(f"{__package__}.{module}")
     rows = tuple(sorted(mod.SYSTEM_VARIABLES, key=lambda r: r.first))
-    return rows, [r.first for r in rows], tuple(mod.G_CODES), tuple(mod.M_CODES)
+    names = {n.name: n for n in getattr(mod, "SYSTEM_VARIABLE_NAMES", ())}
+    return rows, [r.first for r in rows], tuple(mod.G_CODES), tuple(mod.M_CODES), names
 
 
 @cache
-def _functions() -> tuple[FunctionDoc, ...]:
+def _functions(extra: frozenset[str]) -> tuple[FunctionDoc, ...]:
     mod = importlib.import_module(f"{__package__}.functions_data")
-    return tuple(mod.FUNCTIONS)
+    added = tuple(f for f in mod.EXTRA_FUNCTIONS if f.name in extra or f.signature in extra)
+    return (*mod.FUNCTIONS, *added)
+

@@ -34,7 +34,7 @@ _T = {name: i for i, name in enumerate(TOKEN_TYPES)}
 _M = {name: 1 << i for i, name in enumerate(TOKEN_MODIFIERS)}
 
 _SCAN = re.compile(
-    r"(?P<comment>\([^)]*\)?)|(?P<end>[;\uff1b].*)|(?P<var>#\d+)|(?P<word>[A-Za-z]+)"
+    r"(?P<comment>\([^)]*\)?)|(?P<end>[;\uff1b].*)|(?P<var>#\d+)|(?P<named>#_[A-Za-z0-9_]+)|(?P<word>[A-Za-z]+)"
     r"|(?P<num>\d+\.?\d*|\.\d+)|(?P<op>[-+*/=<>!\[\]#])"
 )
 
@@ -89,6 +89,8 @@ def line_tokens(text: str, block: Block, dialect: Dialect) -> list[Token]:
                 if row is not None and row.access == "r":
                     mods |= _M["readonly"]
             out.append((s, e, _T["variable"], mods))
+        elif kind == "named":  # a FANUC 30i system variable name
+            out.append((s, e, _T["variable"], _M["system"]))
         elif kind == "word":
             word = m.group(0).upper()
             k = kinds.get(word)

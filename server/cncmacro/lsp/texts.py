@@ -10,6 +10,8 @@ _TEXTS: dict[str, tuple[str, str]] = {
     "system": ("System variable", "系统变量"),
     "null": ("#0: always vacant, read-only", "#0：总是空，只读"),
     "undefined": ("No such variable in this dialect (alarm 115)", "该系统中不存在此变量（115号报警）"),
+    "name": ("System variable name", "系统变量名"),
+    "no_names": ("This dialect has no system variable names (alarm 114)", "该系统不支持系统变量名（114号报警）"),
     "r": ("read-only", "只读"),
     "w": ("write-only", "只写"),
     "rw": ("read/write", "可读写"),

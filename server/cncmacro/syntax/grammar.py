@@ -26,6 +26,7 @@ from .nodes import (
     Goto,
     If,
     IndirectVar,
+    NamedVar,
     Number,
     Output,
     OutputPart,
@@ -107,11 +108,18 @@ class _Builder(Transformer):
         return Unary(str(sign), x, sign.start_pos, x.end)
 
     def assign(self, c):
+        if len(c) == 5:  # [#_NAME] = value
+            lb, target, _rb, _eq, value = c
+            if self.relations and _has_relation(value):
+                raise _relation_error(value)
+            if self.relations and _has_relation(target):
+                raise _relation_error(target)
+            return Assign(target, value, None, lb.start_pos, value.end)
         target, _eq, value = c
         if self.relations and _has_relation(value):
             raise _relation_error(value)
-        if self.relations and isinstance(target, IndirectVar) and _has_relation(target.index):
-            raise _relation_error(target.index)
+        if self.relations and isinstance(target, (IndirectVar, NamedVar)) and _has_relation(target):
+            raise _relation_error(target)
         return Assign(target, value, None, target.start, value.end)
 
     def if_stmt(self, c):
@@ -179,20 +187,30 @@ class _Builder(Transformer):
                 raise _relation_error(side)
         return Relation(RELATION_NAMES.get(spelling, spelling), spelling, left, right, left.start, right.end)
 
+    def named(self, c):
+        head = c[0]
+        name = head[head.index("_") + 1 :].upper()
+        index = c[1] if len(c) > 1 else None
+        return NamedVar(name, index, head.start_pos, index.end if index is not None else head.end_pos)
+
     def variable(self, c):
+        head = c[0]
+        if isinstance(head, NamedVar):
+            return head
         if len(c) == 1:
-            return _varnum(c[0])
+            return _varnum(head)
         hash_, index = c
         return IndirectVar(index, hash_.start_pos, index.end)
 
     def call(self, c):
         name = c[0].upper()
-        args = tuple(c[i] for i in range(2, len(c), 4))
+        args = tuple(x for x in c[1:] if not isinstance(x, Token))
         if self.relations:
             for a in args:
                 if _has_relation(a):
                     raise _relation_error(a)
-        return Call(name, args, c[0].start_pos, c[-1].end_pos)
+        comma = any(isinstance(x, Token) and x.type == "COMMA" for x in c)
+        return Call(name, args, c[0].start_pos, c[-1].end_pos, comma)
 
 
 def _has_relation(expr: Expr) -> bool:
@@ -212,6 +230,8 @@ def _has_relation(expr: Expr) -> bool:
         elif isinstance(e, Call):
             stack.extend(e.args)
         elif isinstance(e, IndirectVar):
+            stack.append(e.index)
+        elif isinstance(e, NamedVar) and e.index is not None:
             stack.append(e.index)
     return False
 
