@@ -17,6 +17,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
+from ..dialects import BY_NAME
 from ..dialects.alarms import (
     ARGUMENT_RANGE,
     BRACKET_NESTING,
@@ -25,7 +26,6 @@ from ..dialects.alarms import (
     OVERFLOW,
     VARIABLE_NUMBER,
 )
-from ..dialects import BY_NAME
 from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, NamedVar, Number, Relation, Unary, Var
 from .alarms import MacroAlarm, raiser
 from .numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away, to_increment
