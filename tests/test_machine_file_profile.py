@@ -140,3 +140,14 @@ def test_machine_file_old_common_form_still_names_the_volatile_range() -> None:
     assert s.common == ((100, 299), (500, 999))
     assert final(lines("#299=1", "#500=2", "M30"), common=s.common)[299] == 1
     assert alarm(lines("#300=1", "M30"), common=s.common)[0] == 115
+
+
+def test_machine_file_a_preset_the_profile_lacks_stops_run_but_not_check(workspace: Path) -> None:
+    toml = workspace / ".cncmacro.toml"
+    toml.write_text(toml.read_text(encoding="utf-8") + "98000 = 1\n", encoding="utf-8")  # under [variables]
+    found = [(Path(str(d["file"])).name, d["code"]) for d in check_json(workspace)]
+    assert ("O1001.nc", "variable-number") in found  # check still reports the other findings
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        status, out = cli("run", "--no-save", str(workspace / "O1000.nc"))
+    assert status == 2 and "#98000 is not a variable of FANUC 0i Custom Macro B" in err.getvalue()

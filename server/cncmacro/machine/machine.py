@@ -134,7 +134,14 @@ class Machine(VariableAccess, Motion):
         self.notes: list[Note] = []
         self.cancel_requested = False
         self.pause_requested = False
-        self.apply_presets(self.settings.variables)
+        # presets of the machine file that this profile cannot take (a variable it lacks): the
+        # run refuses to start with them (``setup.prepare_run``), the analysis runs without them
+        self.preset_problems: list[str] = []
+        for n, v in self.settings.variables.items():
+            try:
+                self.apply_presets({n: v})
+            except ValueError as e:
+                self.preset_problems.append(e.args[0] if e.args else str(e))
 
     # ---------------------------------------------------------------- setting up
     def apply_presets(self, presets: dict[int, float]) -> None:
