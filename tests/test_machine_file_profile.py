@@ -149,5 +149,5 @@ def test_machine_file_a_preset_the_profile_lacks_stops_run_but_not_check(workspa
     assert ("O1001.nc", "variable-number") in found  # check still reports the other findings
     err = io.StringIO()
     with contextlib.redirect_stderr(err):
-        status, out = cli("run", "--no-save", str(workspace / "O1000.nc"))
+        status, _ = cli("run", "--no-save", str(workspace / "O1000.nc"))
     assert status == 2 and "#98000 is not a variable of FANUC 0i Custom Macro B" in err.getvalue()

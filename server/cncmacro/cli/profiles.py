@@ -8,7 +8,8 @@ import json
 import sys
 from typing import Any
 
-from ..dialects import DEFAULT_DIALECT, DIALECTS, get_dialect, normalise_dialect
+from ..dialects import DEFAULT_DIALECT, DIALECTS, normalise_dialect
+from ..dialects.registry import profile_facts
 
 
 def profile_argument(text: str) -> str:
@@ -24,19 +25,6 @@ def add_dialect_option(parser: argparse.ArgumentParser, when: str) -> None:
         "--dialect", type=profile_argument, metavar="PROFILE",
         help=f"control profile {when}: {', '.join(DIALECTS)} (default {DEFAULT_DIALECT}; see 'cncmacro profiles')",
     )  # fmt: skip
-
-
-def profile_facts() -> list[dict[str, Any]]:
-    """Each profile as the client and the command line show it."""
-    out = []
-    for name in DIALECTS:
-        d = get_dialect(name)
-        out.append({
-            "name": d.name, "title": d.title, "summary": d.summary, "summaryZh": d.summary_zh,
-            "aliases": list(d.aliases), "lathe": d.lathe, "axes": list(d.axes),
-            "common": [[r.first, r.last] for r in d.common_ranges], "default": d.name == DEFAULT_DIALECT,
-        })  # fmt: skip
-    return out
 
 
 def add_profiles_parser(sub: Any) -> None:

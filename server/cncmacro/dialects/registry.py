@@ -10,6 +10,7 @@ from __future__ import annotations
 import importlib
 import pkgutil
 from functools import cache
+from typing import Any
 
 from . import profiles
 from .dialect import Dialect
@@ -43,3 +44,16 @@ def names_and_aliases() -> dict[str, str]:
             if table.setdefault(key, d.name) != d.name:
                 raise RuntimeError(f"{spelling!r} names both {table[key]} and {d.name}")
     return table
+
+
+def profile_facts() -> list[dict[str, Any]]:
+    """Each profile as a client shows it (the language server's ``cncmacro/profiles`` answer and
+    ``cncmacro profiles --json``): name, title, summaries, aliases, lathe or mill, axes, commons."""
+    return [
+        {
+            "name": d.name, "title": d.title, "summary": d.summary, "summaryZh": d.summary_zh,
+            "aliases": list(d.aliases), "lathe": d.lathe, "axes": list(d.axes),
+            "common": [[r.first, r.last] for r in d.common_ranges], "default": d.name == DEFAULT_PROFILE,
+        }
+        for d in all_profiles()
+    ]

@@ -22,6 +22,7 @@ from pygls.protocol.language_server import lsp_method
 from pygls.uris import from_fs_path
 
 from .. import __version__
+from ..dialects.registry import profile_facts
 from ..library.machine_file import MACHINE_FILE_NAME, MachineSettings
 from .diagnostics import DiagnosticsEngine
 from .documents import Documents, uri_to_path
@@ -30,7 +31,8 @@ from .workspace_index import WorkspaceIndex
 
 log = logging.getLogger(__name__)
 CONFIGURATION_TIMEOUT = 2.0  # seconds to wait for the editor's settings before analysing
-DOCUMENT_DIALECT = "cncmacro/documentDialect"  # {"uri"} -> {"dialect", "title", "source"} or null
+DOCUMENT_DIALECT = "cncmacro/documentDialect"  # {"uri"} -> {"dialect", "title", "lathe", "source"} or null
+PROFILES = "cncmacro/profiles"  # {} -> [{"name", "title", "summary", "summaryZh", "aliases", "lathe", ...}]
 
 
 class CncMacroProtocol(LanguageServerProtocol):
@@ -208,14 +210,19 @@ def build_server() -> CncMacroServer:
         ls.diagnostics.folders_changed(ls.roots)
 
     @server.feature(DOCUMENT_DIALECT)
-    def document_dialect(ls: CncMacroServer, params: Any) -> dict[str, str] | None:
+    def document_dialect(ls: CncMacroServer, params: Any) -> dict[str, Any] | None:
         """The dialect an open document is read in and what decided it (the status bar)."""
         uri = params.get("uri") if isinstance(params, dict) else getattr(params, "uri", None)
         doc = ls.documents.by_uri.get(uri) if isinstance(uri, str) else None
         if doc is None:
             return None
         source = ls.documents.dialect_source(doc.parsed.lines)
-        return {"dialect": doc.dialect.name, "title": doc.dialect.title, "source": source}
+        return {"dialect": doc.dialect.name, "title": doc.dialect.title, "lathe": doc.dialect.lathe, "source": source}
+
+    @server.feature(PROFILES)
+    def profiles(ls: CncMacroServer, params: Any) -> list[dict[str, Any]]:
+        """The control profiles this server knows (the client's picker and status bar)."""
+        return profile_facts()
 
     for module in (
         hover,
