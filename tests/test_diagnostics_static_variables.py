@@ -165,3 +165,18 @@ def test_1_text_and_blocks_block_diagnostics_checks_one_line_alone():
     found = block_diagnostics(parse_block("G90 G65 P9100 A1"), 7, "A.nc", fanuc, MachineSettings())
     assert [(d.line, d.code) for d in found] == [(7, "g65-nc-words")]
     assert block_diagnostics(parse_block("G01 X1. Y2."), 0, "A.nc", fanuc, MachineSettings()) == []
+
+
+def test_2_profile_suggestion_names_the_control_a_file_reads_cleanly_on():
+    from cncmacro.analysis.profile_suggestion import suggested_profile
+    from cncmacro.dialects import get_dialect
+    from cncmacro.syntax.document import ParsedDocument
+
+    def suggested(text: str, dialect: str) -> str | None:
+        found = suggested_profile(ParsedDocument(text).program, "MAIN.nc", get_dialect(dialect), MachineSettings())
+        return None if found is None else found.name
+
+    assert suggested(lines("O1", "#1=[#_ABSIO[1]]", "M30"), "fanuc-0i") == "fanuc-30i"
+    assert suggested(lines("O1", "G65 H01 P#101 Q5", "IF[#101==5]GOTO9", "N9 M30"), "fanuc-0i") == "gsk980tdi"
+    assert suggested(lines("O1", "#1=POW[2,3]", "G65 H01 P#101 Q5", "M30"), "fanuc-0i") is None  # no one has both
+    assert suggested(lines("O1", "#1=[#_ABSIO[1]]", "M30"), "gsk980tdi") == "fanuc-30i"

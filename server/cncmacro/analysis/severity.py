@@ -50,6 +50,7 @@ CODES: dict[str, CodeInfo] = {
     "write-only": CodeInfo("error", "A write-only system variable is read."),
     "nc-and-macro": CodeInfo("error", "NC words and a macro statement in one block (alarm 127)."),
     "dialect-feature": CodeInfo("error", "Syntax that the selected dialect lacks."),
+    "profile-suggestion": CodeInfo("information", "The file reads cleanly as another profile: likely written for it."),
     "nesting-depth": CodeInfo("error", "Macro or subprogram nesting is exceeded when the program runs."),
     "division-by-zero": CodeInfo("error", "A division by zero found by running the program (alarm 112)."),
     "argument-range": CodeInfo("error", "A SQRT, ASIN, ACOS or LN argument out of range, found by running (119)."),

@@ -77,6 +77,7 @@ from .call_index import CallIndex
 from .caller_entries import CallerSearch
 from .diagnostics import UNNECESSARY, Diagnostic
 from .locale import pick
+from .profile_suggestion import suggestion
 from .run_checks import MAX_RECORDS, MAX_SECONDS, EntryRun, run_diagnostics
 from .severity import apply_severities, check_overrides
 from .static_lines import StaticLines
@@ -489,6 +490,11 @@ class WorkspaceAnalysis:
         if d.own is None:
             static = self._static(d)
             d.own = static.diagnostics(d.doc.program, d.path, static.ctx.dialect, self.library, self.locale)
+            chosen = dialect_from_text(d.doc.lines[:HEADER_LINES])  # a file that names its profile is not asked
+            hint = None if chosen else suggestion(d.own, d.doc.program, d.path, static.ctx.dialect, self.settings,
+                                                  self.locale)  # fmt: skip
+            if hint is not None:
+                d.own.append(hint)
         return d.own
 
     def _result(self, version: int | None) -> AnalysisResult:
