@@ -66,9 +66,12 @@ def stack_frames(machine: Machine) -> list[dict[str, Any]]:
     for level in range(len(machine.frames) - 1, -1, -1):
         f = machine.frames[level]
         line = min(f.pc, max(0, len(f.found.file.lines) - 1))
+        source: dict[str, Any] = {"name": Path(f.file).name, "path": f.file}
+        if f.found.file.on_control:  # kept on the control: no file to show
+            source = {"name": f.file, "presentationHint": "deemphasize"}
         out.append({
             "id": level + 1, "name": frame_name(machine.frames, level), "line": line + 1, "column": 1,
-            "source": {"name": Path(f.file).name, "path": f.file},
+            "source": source,
         })  # fmt: skip
     return out
 
