@@ -264,21 +264,17 @@ def _find_relation(expr: Expr) -> Relation:
 
 
 def _check_condition(cond: Bracket) -> None:
-    """A condition is ``[a op b]`` or bracketed conditions joined by AND, OR or XOR."""
+    """A condition is ``[a op b]`` or bracketed conditions joined by AND, OR or XOR, as many as
+    the line holds (``[[a] AND [b] AND [c]]`` is read left to right, as every other operator)."""
     stack: list[Bracket] = [cond]
     while stack:
         b = stack.pop()
         inner = b.inner
         if isinstance(inner, Relation):
             continue
-        if (
-            isinstance(inner, Binary)
-            and inner.op in ("AND", "OR", "XOR")
-            and _is_bracketed_condition(inner.left)
-            and _is_bracketed_condition(inner.right)
-        ):
-            stack.append(inner.left)  # type: ignore[arg-type]
-            stack.append(inner.right)  # type: ignore[arg-type]
+        sides = _joined_conditions(inner)
+        if sides is not None:
+            stack.extend(sides)
             continue
         if _has_relation(inner):
             raise BlockError(
@@ -297,6 +293,26 @@ def _check_condition(cond: Bracket) -> None:
             b.start,
             b.end,
         )
+
+
+def _joined_conditions(e: Expr) -> list[Bracket] | None:
+    """The bracketed conditions that AND, OR and XOR join in ``e`` (``[a] AND [b] OR [c]``), or
+    None when ``e`` is not such a chain. A loop, not recursion: a chain may be long."""
+    out: list[Bracket] = []
+    pending: list[Expr] = [e]
+    while pending:
+        x = pending.pop()
+        if isinstance(x, Binary) and x.op in ("AND", "OR", "XOR"):
+            for side in (x.right, x.left):
+                if isinstance(side, Bracket) and _is_bracketed_condition(side):
+                    out.append(side)
+                elif isinstance(side, Binary) and side.op in ("AND", "OR", "XOR"):
+                    pending.append(side)
+                else:
+                    return None
+        else:
+            return None
+    return out
 
 
 def _is_bracketed_condition(e: Expr) -> bool:
