@@ -228,3 +228,8 @@ def test_2_30i_extended_commons_are_kept_at_power_off():
     assert kinds.kind(98000) == "extended" and 98000 in kinds.persistent_numbers()
     m = run(lines("#98000=7", "#500=8", "#100=9", "M30"), D30)
     assert m.persistent_values() == {500: 8.0, 98000: 7.0}
+
+
+def test_5_an_8_digit_file_name_without_header_is_found(tmp_path):
+    (tmp_path / "O00012345.nc").write_text("#100=5\nM99\n", encoding="utf-8")
+    assert final(lines("O00001000", "M98 P00012345", "M30"), D30, folder=tmp_path)[100] == 5
