@@ -39,7 +39,9 @@ MAX_BRACKETS = 5
 
 
 def bracket_depth(node: Expr) -> int:
-    """The deepest nesting of ``[ ]`` in ``node``, function brackets included."""
+    """The deepest nesting of ``[ ]`` in ``node``: every pair counts once, whether it is a plain
+    bracket, a function's, an IF/WHILE condition's or the one of an indirection ``#[..]`` (whose
+    index is a ``Bracket`` node: the ``#`` adds no level of its own)."""
     best = 0
     stack: list[tuple[Expr, int]] = [(node, 0)]
     while stack:
@@ -58,8 +60,7 @@ def bracket_depth(node: Expr) -> int:
         elif isinstance(n, Unary):
             stack.append((n.operand, d))
         elif isinstance(n, IndirectVar):
-            best = max(best, d + 1)
-            stack.append((n.index, d + 1))
+            stack.append((n.index, d))
     return best
 
 
