@@ -35,3 +35,27 @@ def test_3_expressions_indirection_inside_an_assignment_counts_once():
     text = lines("O1000", "#1=#[#[#[#[#[#[1]]]]]]", "M30")
     assert [d.code for d in check(text)] == ["bracket-depth"]
     assert alarm(text) == (118, 2)
+
+
+# ---------------------------------------------------------------- §3 long expressions
+
+CHAIN = "#1=1" + "+1" * 500  # a generated line: 500 operators in a row
+SIGNS = "#1=" + "-" * 1000 + "1"  # 1,000 unary minus signs
+
+
+def test_3_expressions_500_chained_operators_evaluate_without_recursion():
+    text = lines("O1000", CHAIN, "#2=2*3-1/2*4+7-3*2+1" + "-1+2" * 40, "M30")
+    assert check(text) == []
+    got = final(text)
+    assert got[1] == 501 and got[2] == 2 * 3 - 1 / 2 * 4 + 7 - 3 * 2 + 1 + 40
+
+
+def test_3_expressions_1000_unary_signs_evaluate_without_recursion():
+    text = lines("O1000", SIGNS, "#2=" + "-" * 999 + "#0", "#3=" + "-+" * 300 + "2", "M30")
+    assert check(text) == []
+    got = final(text)
+    assert got[1] == 1 and got[2] == 0 and got[3] == 2
+
+
+def test_3_expressions_a_long_chain_still_divides_by_zero_as_alarm_112():
+    assert alarm(lines("O1000", "#1=1" + "+1" * 40 + "/#5", "M30")) == (112, 2)

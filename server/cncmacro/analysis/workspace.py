@@ -74,6 +74,7 @@ from . import static_checks
 from .call_index import CallIndex
 from .caller_entries import CallerSearch
 from .diagnostics import UNNECESSARY, Diagnostic
+from .faults import RUN, internal_error
 from .locale import pick
 from .run_checks import MAX_RECORDS, MAX_SECONDS, EntryRun, run_diagnostics
 from .severity import apply_severities, check_overrides
@@ -156,6 +157,7 @@ class WorkspaceAnalysis:
         self._entries: dict[tuple[str, int], FoundProgram] | None = None  # callers on disk that run
         self._called_from_disk: set[tuple[str, int]] = set()  # open programs that callers on disk reach
         self._unreached = UnreachedRanges(self._unreachable_skips)  # the not-executed ranges, kept across edits
+        self._failed: dict[tuple[str, int], Diagnostic] = {}  # runs that failed by a fault of the checker
 
     def set_workspace_folders(self, folders: list[str]) -> None:
         """The folders whose program files may call the open ones (the editor's workspace
@@ -358,8 +360,12 @@ class WorkspaceAnalysis:
         else:
             for d in self.docs.values():
                 if d.edits:
-                    for run in self.runs.values():
-                        self._rewind(run, d)
+                    for k, run in list(self.runs.items()):
+                        try:
+                            self._rewind(run, d)
+                        except Exception:  # a bug: run that program again from its start
+                            log.exception("taking an analysis run back failed")
+                            del self.runs[k]
         for d in self.docs.values():
             for e in d.edits:
                 self._unreached.edited(d.path, e.start, e.count, e.shifted or e.structural)
@@ -368,9 +374,14 @@ class WorkspaceAnalysis:
         primary.update(self._entries)
         for k in [k for k in self.runs if k not in primary]:
             del self.runs[k]  # a called program is analysed only through its callers
+        self._failed = {}
         for k, found in primary.items():
-            if not self._advance(k, found, should_cancel):
-                return None
+            try:
+                if not self._advance(k, found, should_cancel):
+                    return None
+            except Exception as e:  # a bug in one run must not cost the others and the static findings
+                self.runs.pop(k, None)
+                self._failed[k] = internal_error(found.file.path, found.unit.start, RUN, e, self.locale)
         return self._result(version)
 
     def _advance(self, k: tuple[str, int], found: FoundProgram,
@@ -496,9 +507,16 @@ class WorkspaceAnalysis:
                 if x.severity == "error":
                     errors.add((path, x.line))
         entries = self._entries or {}
+        for k, x in self._failed.items():
+            if k not in entries or x.file in self.docs:
+                by_file.setdefault(x.file, []).append(x)
         for k, run in self.runs.items():
             shown = self.docs if k in entries else None  # a caller on disk: findings in open files only
-            for x in run_diagnostics(run, self._line_text, self.locale):
+            try:
+                found = run_diagnostics(run, self._line_text, self.locale)
+            except Exception as e:  # a bug: say so where the run started
+                found = [internal_error(run.entry.file.path, run.entry.unit.start, RUN, e, self.locale)]
+            for x in found:
                 if shown is not None and x.file not in shown:
                     continue
                 key = (x.file, x.line, x.code)
@@ -506,7 +524,12 @@ class WorkspaceAnalysis:
                     continue
                 seen.add(key)
                 by_file.setdefault(x.file, []).append(x)
-        for x in self._not_executed():
+        try:
+            unreached = self._not_executed()
+        except Exception:  # only hints are lost
+            log.exception("finding the blocks no run reached failed")
+            unreached = []
+        for x in unreached:
             by_file.setdefault(x.file, []).append(x)
         values: dict[str, dict[int, list[tuple[int, Value]]]] = {}
         for k, run in self.runs.items():
