@@ -133,3 +133,12 @@ async def test_3_expressions_a_500_operator_line_keeps_the_server_answering(clie
         types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(1, 1))
     )
     assert hover is not None and "#1" in str(hover.contents)
+
+
+async def test_1_text_and_blocks_text_after_the_closing_percent_is_only_a_hint(client: LanguageClient) -> None:
+    text = "%\nO0100\n#1=1\nM30\n%\n\x1a\nJUNK [[[\n"
+    uri = open_file(client, FANUC / "tape_end.nc", text, version=1)
+    got = await diagnostics_for(client, uri, 1)
+    assert [(d.range.start.line, d.code, d.severity) for d in got.diagnostics] == [
+        (4, "after-tape-end", types.DiagnosticSeverity.Hint)
+    ]

@@ -52,6 +52,7 @@ CODES: dict[str, CodeInfo] = {
     "vacant-argument": CodeInfo("information", "A macro reads an argument that a caller never passes."),
     "run-limit": CodeInfo("information", "The analysis run stopped at its block budget (a possible endless loop)."),
     "not-executed": CodeInfo("hint", "Blocks that the analysis runs never reached."),
+    "after-tape-end": CodeInfo("hint", "Text after the closing % (the end of the tape), which is not read."),
     "internal-error": CodeInfo("error", "The checker itself failed on this line, program or file (a bug to report)."),
 }
 

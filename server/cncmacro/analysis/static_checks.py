@@ -26,6 +26,7 @@ from .label_checks import LabelChecker
 from .line_facts import LineContext, LineFacts
 from .loop_checks import loop_diagnostics
 from .statement_checks import check_statements
+from .tape_checks import tape_diagnostics
 
 _contexts: dict[tuple[str, int, str], LineContext] = {}
 
@@ -95,7 +96,8 @@ def static_diagnostics(
     hint = ctx.plain_hint
     out: list[Diagnostic] = []
     collected: list[tuple[int, LineFacts]] = []
-    for line, block in enumerate(program.blocks):
+    for line in range(program.read_end):  # nothing after the closing '%' is read
+        block = program.blocks[line]
         plain = block.plain
         if plain is not None and hint(plain) is None:
             continue
@@ -124,6 +126,7 @@ def cross_line_diagnostics(
     here is one ``internal-error`` on the file's first line (faults.py)."""
     try:
         out = loop_diagnostics(program, file, locale)
+        out.extend(tape_diagnostics(program, file, locale))
         finder = ProgramFinder(program, file, dialect, library)
         out.extend(LabelChecker(program, file, finder, locale).run(collected))
     except Exception as e:  # a bug must not cost the per-line findings

@@ -261,7 +261,7 @@ class WorkspaceAnalysis:
 
     def _targets(self, d: _Open) -> tuple[set[int], set[str]]:
         if d.targets is None:
-            d.targets = self._static(d).call_targets()
+            d.targets = self._static(d).call_targets(d.doc.program.read_end)
         return d.targets
 
     def _static(self, d: _Open) -> StaticLines:
@@ -276,7 +276,7 @@ class WorkspaceAnalysis:
         by_number: dict[int, list[tuple[str, int]]] = {}
         by_name: dict[str, list[tuple[str, int]]] = {}
         for path, d in self.docs.items():
-            for line, number, name in self._static(d).call_sites():
+            for line, number, name in self._static(d).call_sites(d.doc.program.read_end):
                 if number is not None:
                     by_number.setdefault(number, []).append((path, line))
                 elif name is not None:

@@ -224,6 +224,8 @@ class CompiledFile:
         return watched
 
     def _compile(self, pc: int) -> Runner:
+        if pc == self.file.program.tape_end:
+            return _end_of_file  # the closing '%': the tape ends, what follows is never read
         block = self.file.program.blocks[pc]
         nxt = self.next_line(pc)
         if block.plain is not None:  # most lines of a CAM program: no label, header or error
