@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.dap.breakpoints import Breakpoints
+from cncmacro.library.machine_file import CallCode, MachineSettings
 from running import alarm, final
 from static_helpers import at, check, coded, lines
 
@@ -116,3 +117,57 @@ def test_1_text_and_blocks_the_checker_passes_over_what_follows_the_tape(tmp_pat
         ("not-executed", 4),
         ("after-tape-end", 5),
     ]
+
+
+# ---------------------------------------------------------------- §8 words a control refuses
+
+
+def test_8_the_simulated_machine_an_m_code_with_a_decimal_point_is_alarm_007():
+    text = lines("O1000", "G00 X0", "M30.")
+    [d] = check(text)
+    assert (d.code, *at(d)) == ("decimal-point", 3, 0, 4, "error")
+    assert "write M30" in d.message
+    assert alarm(text) == (7, 3)
+
+
+def test_8_the_simulated_machine_an_unknown_g_code_is_alarm_010_not_a_move():
+    text = lines("O1000", "G229 X10", "M30")
+    [d] = check(text)
+    assert (d.code, *at(d)) == ("unknown-g-code", 2, 0, 4, "error")
+    assert alarm(text) == (10, 2)
+    assert alarm(lines("O1000", "#1=229", "G#1 X10", "M30")) == (10, 3)  # known only when it runs
+
+
+def test_8_the_simulated_machine_g_codes_real_programs_use_are_known():
+    codes = (
+        "G05.1 Q1", "G05.1 Q0", "G07.1 C20.", "G07.1 C0", "G10.6 X5.", "G12.1", "G13.1", "G43.4 H1", "G43.5 H1",
+        "G49.1", "G50.1 X0", "G51.1 X0", "G50.1", "G53.1", "G54.1 P2", "G54.2 P1", "G61", "G62", "G63", "G64",
+        "G68 X0 Y0 R10.", "G69", "G68.2 X0 Y0 Z0 I0 J0 K0", "G69", "G91.1", "G90", "G98", "G99", "G98",
+        "G70 P10 Q20", "G71 U1. R0.5", "G72 W1. R0.5", "G75 X10.", "G77 X1.", "G78 X1.", "G79 X1.", "G80",
+        "G32 Z-10. F1.5", "G00 X0", "G107 C0", "G112", "G113", "G06.2 X1. K0", "G00 X0",
+    )  # fmt: skip
+    text = lines("O1000", *codes, "M30")
+    assert check(text) == []
+    assert final(text) is not None
+
+
+def test_8_the_simulated_machine_a_g_code_the_machine_maps_to_a_macro_is_not_unknown():
+    settings = MachineSettings(calls={"G100": CallCode(9010)})
+    text = lines("O1000", "G100 X1. M3.5", "M30", "O9010", "#100=#24", "M99")
+    assert check(text, settings=settings) == []  # M3.5 is an argument of the call, not an M code
+    assert final(text, calls={"G100": CallCode(9010)})[100] == 1
+    assert [d.code for d in check(text)] == ["unknown-g-code", "decimal-point"]  # without the mapping
+    assert alarm(text) == (10, 2)
+
+
+def test_8_the_simulated_machine_macro_arguments_may_have_decimal_points():
+    assert check(lines("O1000", "G65 P9010 M3.5 S1.5", "M30", "O9010", "M99")) == []
+
+
+def test_8_the_simulated_machine_on_gsk980tdi_the_same_words_are_warnings_and_the_run_goes_on():
+    text = lines("O1000", "G229 X10", "M30.")
+    assert [(d.code, d.severity) for d in check(text, "gsk980tdi")] == [
+        ("unknown-g-code", "warning"),
+        ("decimal-point", "warning"),
+    ]
+    assert final(text, "gsk980tdi") is not None

@@ -89,7 +89,8 @@ _DIGITS = re.compile(r"^[Oo]?(\d{1,8})$")
 RUN_ALARM_CODES = frozenset({
     "program-not-found", "nesting-depth", "division-by-zero", "argument-range", "syntax", "variable-number",
     "write-protected", "bracket-depth", "loop-mismatch", "loop-number", "nc-and-macro", "undefined-label",
-    "argument-address", "program-number", "repeat-count-range", "label-range", "jump-into-loop",
+    "argument-address", "program-number", "repeat-count-range", "label-range", "jump-into-loop", "decimal-point",
+    "unknown-g-code",
 })  # fmt: skip
 
 

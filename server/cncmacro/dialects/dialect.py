@@ -64,6 +64,10 @@ class Dialect:
     cycle_codes: frozenset[float] = frozenset()
     # §5 fanuc wants I, J, K in that order within each set (a warning otherwise)
     ijk_order_matters: bool = False
+    # §8 the G-code table lists every code of the control and its alarms for a refused word are
+    # known: a G code outside the table and the machine's call codes is alarm 010, a decimal point
+    # in an M code alarm 007; without this switch both are warnings and a run goes on
+    word_format_alarms: bool = False
 
     @property
     def incremental_letters(self) -> dict[str, str]:
@@ -129,6 +133,7 @@ FANUC = Dialect(
     coordinate_setting_code=92.0,
     cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
     ijk_order_matters=True,
+    word_format_alarms=True,
 )
 
 GSK980TDI = Dialect(

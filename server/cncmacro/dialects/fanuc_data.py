@@ -437,6 +437,27 @@ G_CODES: tuple[CodeDoc, ...] = (
         "逆时针圆弧/螺旋线插补（R或I J K）",
     ),
     CodeDoc("G04", "", "Dwell: G04 X_ (seconds) or G04 P_ (milliseconds)", "暂停：G04 X_（秒）或G04 P_（毫秒）"),
+    CodeDoc(
+        "G05",
+        "",
+        "High-speed cycle machining; G05 P10000 / G05 P0: AI contour control on / off",
+        "高速循环加工；G05 P10000 / G05 P0：AI轮廓控制开/关",
+    ),
+    CodeDoc(
+        "G05.1",
+        "",
+        "AI contour control / smooth interpolation: G05.1 Q1 on, G05.1 Q0 off",
+        "AI轮廓控制/平滑插补：G05.1 Q1开，G05.1 Q0关",
+    ),
+    CodeDoc("G06.2", "motion", "NURBS interpolation", "NURBS曲线插补"),
+    CodeDoc("G07", "", "Hypothetical axis interpolation", "假想轴插补"),
+    CodeDoc(
+        "G07.1",
+        "",
+        "Cylindrical interpolation: G07.1 C_ (the cylinder's radius) on, G07.1 C0 off",
+        "圆柱插补：G07.1 C_（圆柱半径）开，G07.1 C0关",
+    ),
+    CodeDoc("G08", "", "AI look-ahead control: G08 P1 on, G08 P0 off", "AI先行控制：G08 P1开，G08 P0关"),
     CodeDoc("G09", "", "Exact stop check for this block only", "准确停止（仅本程序段）"),
     CodeDoc(
         "G10",
@@ -447,8 +468,16 @@ G_CODES: tuple[CodeDoc, ...] = (
         "G10 L20 Pn（G54.1 Pn），G10 L50（参数）",
     ),
     CodeDoc(
+        "G10.6",
+        "",
+        "Tool retract and recover: the retract distance for a later retract signal",
+        "刀具退回和返回：指定退刀信号到来时的退刀量",
+    ),
+    CodeDoc(
         "G11", "", "End the programmable parameter input mode started by G10 L50", "取消G10 L50开始的可编程参数输入方式"
     ),
+    CodeDoc("G12.1", "", "Polar coordinate interpolation mode", "极坐标插补方式"),
+    CodeDoc("G13.1", "", "Polar coordinate interpolation cancel", "极坐标插补取消"),
     CodeDoc("G15", "polar", "Polar coordinate command cancel", "极坐标指令取消"),
     CodeDoc(
         "G16",
@@ -461,6 +490,8 @@ G_CODES: tuple[CodeDoc, ...] = (
     *shared.codes("G19", "G20", "G21"),
     CodeDoc("G22", "stroke", "Stored stroke check on", "存储行程检查功能有效"),
     CodeDoc("G23", "stroke", "Stored stroke check off", "存储行程检查功能无效"),
+    CodeDoc("G25", "", "Spindle speed fluctuation detection off", "主轴速度波动检测无效"),
+    CodeDoc("G26", "", "Spindle speed fluctuation detection on", "主轴速度波动检测有效"),
     CodeDoc("G27", "", "Reference position return check", "返回参考点检查"),
     CodeDoc(
         "G28",
@@ -477,23 +508,46 @@ G_CODES: tuple[CodeDoc, ...] = (
         "Return to the 2nd, 3rd or 4th reference position (P2, P3, P4; P2 if omitted)",
         "返回第2、第3或第4参考点（P2、P3、P4；省略时为P2）",
     ),
+    CodeDoc("G30.1", "", "Floating reference position return", "浮动参考点返回"),
     CodeDoc(
         "G31",
         "",
         "Skip function: linear move that stops when the skip signal comes on; the position is stored in #5061-#5064",
         "跳转功能：直线移动，跳转信号接通时停止，该位置存入#5061～#5064",
     ),
+    CodeDoc("G32", "motion", "Thread cutting (lathe)", "螺纹切削（车床）"),
     CodeDoc("G33", "motion", "Thread cutting", "螺纹切削"),
+    CodeDoc("G34", "", "Variable-lead thread cutting (lathe)", "变螺距螺纹切削（车床）"),
+    CodeDoc(
+        "G37",
+        "",
+        "Automatic tool length measurement (mill) / automatic tool offset (lathe)",
+        "刀具长度自动测量（铣床）/自动刀具补偿（车床）",
+    ),
+    CodeDoc("G39", "", "Corner offset circular interpolation", "拐角偏移圆弧插补"),
     CodeDoc("G40", "cutter", "Cutter radius compensation cancel", "刀具半径补偿取消"),
     CodeDoc("G41", "cutter", "Cutter radius compensation left (D offset number)", "刀具半径补偿左侧（D为补偿号）"),
     CodeDoc("G42", "cutter", "Cutter radius compensation right (D offset number)", "刀具半径补偿右侧（D为补偿号）"),
+    CodeDoc("G40.1", "", "Normal direction control cancel", "法线方向控制取消"),
+    CodeDoc("G41.1", "", "Normal direction control, left", "法线方向控制（左侧）"),
+    CodeDoc("G42.1", "", "Normal direction control, right", "法线方向控制（右侧）"),
+    CodeDoc("G41.2", "cutter", "3-D cutter compensation, left (5-axis)", "三维刀具半径补偿（左侧，五轴）"),
+    CodeDoc("G42.2", "cutter", "3-D cutter compensation, right (5-axis)", "三维刀具半径补偿（右侧，五轴）"),
     CodeDoc(
         "G43", "length", "Tool length compensation + direction (H offset number)", "刀具长度补偿正方向（H为补偿号）"
     ),
     CodeDoc(
         "G44", "length", "Tool length compensation - direction (H offset number)", "刀具长度补偿负方向（H为补偿号）"
     ),
+    CodeDoc("G43.1", "length", "Tool length compensation in the tool axis direction", "刀具轴向的刀具长度补偿"),
+    CodeDoc("G43.4", "length", "Tool centre point control, type 1 (5-axis)", "刀具中心点控制类型1（五轴）"),
+    CodeDoc("G43.5", "length", "Tool centre point control, type 2 (5-axis)", "刀具中心点控制类型2（五轴）"),
+    CodeDoc("G45", "", "Tool position offset: increase by the offset", "刀具位置偏置：伸长一个偏置量"),
+    CodeDoc("G46", "", "Tool position offset: decrease by the offset", "刀具位置偏置：缩短一个偏置量"),
+    CodeDoc("G47", "", "Tool position offset: increase by twice the offset", "刀具位置偏置：伸长两倍偏置量"),
+    CodeDoc("G48", "", "Tool position offset: decrease by twice the offset", "刀具位置偏置：缩短两倍偏置量"),
     CodeDoc("G49", "length", "Tool length compensation cancel", "刀具长度补偿取消"),
+    CodeDoc("G49.1", "length", "Tool length compensation cancel (30i series)", "刀具长度补偿取消（30i系列）"),
     CodeDoc("G50", "scaling", "Scaling cancel", "比例缩放取消"),
     CodeDoc(
         "G51",
@@ -520,6 +574,7 @@ G_CODES: tuple[CodeDoc, ...] = (
         "Move in machine coordinates for this block only (offsets ignored)",
         "机床坐标系选择（仅本程序段，以机床坐标移动）",
     ),
+    CodeDoc("G53.1", "", "Tool axis direction control (after G68.2)", "刀具轴向控制（在G68.2之后）"),
     *shared.work_coordinate_codes(4),
     CodeDoc(
         "G54.1",
@@ -527,6 +582,8 @@ G_CODES: tuple[CodeDoc, ...] = (
         "Additional work coordinate system G54.1 Pn, n = 1-48 (offsets #7001 + 20(n-1) onwards; #4130 reads n)",
         "追加工件坐标系G54.1 Pn，n=1～48（偏移值从#7001+20(n-1)起；#4130读出n）",
     ),
+    CodeDoc("G54.2", "", "Rotary table dynamic fixture offset: G54.2 Pn", "旋转工作台动态夹具偏置：G54.2 Pn"),
+    CodeDoc("G60", "", "Single direction positioning", "单方向定位"),
     CodeDoc("G61", "cutting", "Exact stop mode", "准确停止方式"),
     CodeDoc("G62", "cutting", "Automatic corner override mode", "自动拐角倍率方式"),
     CodeDoc("G63", "cutting", "Tapping mode (override and feed hold ignored)", "攻丝方式（倍率和进给暂停无效）"),
@@ -539,19 +596,53 @@ G_CODES: tuple[CodeDoc, ...] = (
     ),
     *shared.codes("G66", "G67"),
     CodeDoc(
+        "G66.1",
+        "macro",
+        "Modal macro call of every block: G66.1 P_ (known, not simulated)",
+        "每个程序段都调用的模态宏程序调用：G66.1 P_（可识别，不作仿真）",
+    ),
+    CodeDoc(
         "G68",
         "rotation",
         "Coordinate system rotation: G68 X_ Y_ (centre) R_ (angle, degrees)",
         "坐标系旋转：G68 X_ Y_（中心）R_（角度，度）",
     ),
+    CodeDoc("G68.2", "rotation", "Tilted working plane command", "倾斜工作平面指令"),
+    CodeDoc(
+        "G68.3", "rotation", "Tilted working plane command by the tool axis direction", "按刀具轴向的倾斜工作平面指令"
+    ),
+    CodeDoc("G68.4", "rotation", "Tilted working plane command, incremental", "倾斜工作平面指令（增量方式）"),
     CodeDoc("G69", "rotation", "Coordinate system rotation cancel", "坐标系旋转取消"),
+    CodeDoc("G70", "", "Finishing cycle (lathe)", "精加工循环（车床）"),
+    CodeDoc("G71", "", "Stock removal in turning (lathe)", "外圆粗车循环（车床）"),
+    CodeDoc("G72", "", "Stock removal in facing (lathe)", "端面粗车循环（车床）"),
+    CodeDoc("G72.1", "", "Figure copy by rotation", "图形复制（旋转）"),
+    CodeDoc("G72.2", "", "Figure copy by parallel shift", "图形复制（平移）"),
     CodeDoc("G73", "canned", "High-speed peck drilling cycle", "高速深孔钻循环"),
     CodeDoc("G74", "canned", "Left-hand (counter) tapping cycle", "左旋攻丝循环"),
+    CodeDoc(
+        "G75",
+        "motion",
+        "Plunge grinding cycle (grinding machine); grooving cycle in X (lathe)",
+        "切入式磨削循环（磨床）；X向切槽循环（车床）",
+    ),
     CodeDoc(
         "G76",
         "canned",
         "Fine boring cycle (spindle orients and shifts before retract)",
         "精镗循环（孔底主轴定向并偏移后退刀）",
+    ),
+    CodeDoc(
+        "G77",
+        "motion",
+        "Direct constant-dimension plunge grinding cycle (grinding machine)",
+        "直接定尺寸切入式磨削循环（磨床）",
+    ),
+    CodeDoc(
+        "G78", "motion", "Continuous-feed surface grinding cycle (grinding machine)", "连续进给平面磨削循环（磨床）"
+    ),
+    CodeDoc(
+        "G79", "motion", "Intermittent-feed surface grinding cycle (grinding machine)", "间歇进给平面磨削循环（磨床）"
     ),
     CodeDoc("G80", "canned", "Canned cycle cancel", "固定循环取消"),
     CodeDoc("G81", "canned", "Drilling cycle, spot drilling", "钻孔循环、点钻循环"),
@@ -560,6 +651,8 @@ G_CODES: tuple[CodeDoc, ...] = (
     ),
     CodeDoc("G83", "canned", "Peck drilling cycle (full retract each peck)", "深孔钻循环（每次退到R点）"),
     CodeDoc("G84", "canned", "Tapping cycle", "攻丝循环"),
+    CodeDoc("G84.2", "canned", "Rigid tapping cycle (FS15 format)", "刚性攻丝循环（FS15格式）"),
+    CodeDoc("G84.3", "canned", "Left-hand rigid tapping cycle (FS15 format)", "左旋刚性攻丝循环（FS15格式）"),
     CodeDoc("G85", "canned", "Boring cycle (feed in, feed out)", "镗孔循环（切削进给退刀）"),
     CodeDoc(
         "G86", "canned", "Boring cycle (spindle stops at the bottom, rapid out)", "镗孔循环（孔底主轴停止，快速退刀）"
@@ -574,17 +667,23 @@ G_CODES: tuple[CodeDoc, ...] = (
     CodeDoc("G89", "canned", "Boring cycle (dwell at the bottom, feed out)", "镗孔循环（孔底暂停，切削进给退刀）"),
     CodeDoc("G90", "distance", "Absolute programming", "绝对值编程"),
     CodeDoc("G91", "distance", "Incremental programming", "增量值编程"),
+    CodeDoc("G91.1", "", "Maximum incremental amount check", "最大增量值检查"),
     CodeDoc(
         "G92",
         "",
         shared.SET_COORDINATES_EN,
         "设定工件坐标系（使当前位置成为指定的坐标值）",
     ),
+    CodeDoc("G92.1", "", "Workpiece coordinate system preset", "工件坐标系预置"),
+    CodeDoc("G93", "feed", "Inverse time feed", "反比时间进给"),
     CodeDoc("G94", "feed", *shared.FEED_PER_MINUTE),
     CodeDoc("G95", "feed", *shared.FEED_PER_REVOLUTION),
     *shared.codes("G96", "G97"),
     CodeDoc("G98", "return", "Canned cycle: return to the initial level", "固定循环返回初始平面"),
     CodeDoc("G99", "return", "Canned cycle: return to the R point level", "固定循环返回R点平面"),
+    CodeDoc("G107", "", "Cylindrical interpolation (the same as G07.1)", "圆柱插补（同G07.1）"),
+    CodeDoc("G112", "", "Polar coordinate interpolation mode (the same as G12.1)", "极坐标插补方式（同G12.1）"),
+    CodeDoc("G113", "", "Polar coordinate interpolation cancel (the same as G13.1)", "极坐标插补取消（同G13.1）"),
 )
 
 M_CODES: tuple[CodeDoc, ...] = (
