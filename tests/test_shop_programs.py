@@ -6,9 +6,14 @@ Each test names the docs/semantics.md section whose rule it proves.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
+from cncmacro.analysis.static_checks import static_diagnostics
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.dap.breakpoints import Breakpoints
+from cncmacro.dialects import get_dialect
 from cncmacro.library.machine_file import CallCode, MachineSettings
+from cncmacro.syntax.document import ParsedDocument
 from running import alarm, final
 from static_helpers import at, check, coded, lines
 
@@ -171,3 +176,83 @@ def test_8_the_simulated_machine_on_gsk980tdi_the_same_words_are_warnings_and_th
         ("decimal-point", "warning"),
     ]
     assert final(text, "gsk980tdi") is not None
+
+
+# ---------------------------------------------------------------- §1 abbreviated macro words
+
+SHORT = lines(
+    "O1000",
+    "#1=0",
+    "WH[#1LT3]DO1",
+    "#1=#1+1",
+    "EN1",
+    "#2=AT[1]/[1]+RO[1.4]+SQ[16]",
+    "IF[#1GT2]TH#3=7",
+    "IF[#1EQ3]GO10",
+    "M30",
+    "N10 #4=#1 AN 1 XO 4",
+    "M30",
+)
+LONG = lines(
+    "O1000",
+    "#1=0",
+    "WHILE[#1LT3]DO1",
+    "#1=#1+1",
+    "END1",
+    "#2=ATAN[1]/[1]+ROUND[1.4]+SQRT[16]",
+    "IF[#1GT2]THEN#3=7",
+    "IF[#1EQ3]GOTO10",
+    "M30",
+    "N10 #4=#1 AND 1 XOR 4",
+    "M30",
+)
+
+
+def test_1_text_and_blocks_fanuc_reads_the_first_two_letters_of_a_macro_word_as_the_word():
+    assert final(SHORT) == final(LONG) == {1: 3, 2: 50, 3: 7, 4: 5}
+    hints = check(SHORT)
+    assert {d.severity for d in hints} == {"hint"} and {d.code for d in hints} == {"keyword-abbreviation"}
+    assert [(d.line + 1, d.column, d.end_column, d.message) for d in hints][:2] == [
+        (3, 0, 2, "'WH' is short for WHILE"),
+        (5, 0, 2, "'EN' is short for END"),
+    ]
+    assert len(hints) == 9
+    assert check(LONG) == []
+
+
+def test_1_text_and_blocks_three_letters_and_lower_case_are_abbreviations_too():
+    text = lines("O1000", "#1=0", "whi[#1 lt 2] do1", "#1=#1+1", "end1", "#2=ata[1]/[1]", "M30")
+    assert final(text) == {1: 2, 2: 45}
+
+
+def test_1_text_and_blocks_abbreviations_are_a_dialect_feature_on_gsk980tdi():
+    found = check(SHORT, "gsk980tdi")
+    assert {(d.code, d.severity) for d in found} == {("dialect-feature", "error")}
+    assert "'WH' for WHILE" in found[0].message and "write WHILE" in found[0].message
+    assert alarm(SHORT, "gsk980tdi") == (114, 3)
+
+
+def test_1_text_and_blocks_nc_words_never_read_as_abbreviations():
+    # a value never starts with a letter: these stay NC words (or are the errors they were)
+    assert check(lines("O1000", "G01 X10. Y5. F100", "T0101", "E1. M08", "M30")) == []
+    assert [d.code for d in check(lines("O1000", "GO1 X10.", "M30"))] == ["keyword-abbreviation", "nc-and-macro"]
+
+
+# ---------------------------------------------------------------- §4 IF without THEN
+
+
+def test_4_control_flow_if_without_then_is_alarm_114_on_fanuc_and_gsk980tdi():
+    text = lines("O1000", "#1=20", "IF[#1GT10]#2=5", "M30")
+    for dialect in ("fanuc", "gsk980tdi"):
+        [d] = check(text, dialect)
+        assert (d.code, *at(d)) == ("dialect-feature", 3, 10, 14, "error")
+        assert "THEN is missing" in d.message and "alarm 114" in d.message
+        assert alarm(text, dialect) == (114, 3)
+
+
+def test_4_control_flow_if_without_then_runs_the_statement_where_the_control_accepts_it():
+    haas_like = replace(get_dialect("fanuc"), if_without_then=True)
+    text = lines("O1000", "#1=20", "IF[#1GT10]#2=5", "IF[#1LT10]#3=5", "M30")
+    assert final(text, haas_like) == {1: 20, 2: 5}
+    found = static_diagnostics(ParsedDocument(text).program, "MAIN.nc", haas_like, MachineSettings())
+    assert found == []

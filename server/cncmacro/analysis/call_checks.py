@@ -300,11 +300,11 @@ def _refused_words(words: tuple[Word, ...], ctx: LineContext, facts: LineFacts) 
             v = _code_value(w)
             if v is not None and not g_code_known(v, dialect, ctx.calls):
                 message = unknown_g_code(w.value.text, dialect)  # type: ignore[union-attr]
-                _add(facts, w, severity, "unknown-g-code", message, message.zh, ctx)
+                _add(facts, w, severity, "unknown-g-code", str(message), message.zh, ctx)
         elif w.letter == "M":
             point = m_decimal_point(w)
             if point is not None:
-                _add(facts, w, severity, "decimal-point", point, point.zh, ctx)
+                _add(facts, w, severity, "decimal-point", str(point), point.zh, ctx)
 
 
 def _last(words: tuple[Word, ...], letter: str) -> Word | None:

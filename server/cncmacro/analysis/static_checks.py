@@ -25,7 +25,7 @@ from .faults import FILE, internal_error, line_fault
 from .label_checks import LabelChecker
 from .line_facts import LineContext, LineFacts
 from .loop_checks import loop_diagnostics
-from .statement_checks import check_statements
+from .statement_checks import check_abbreviations, check_statements
 from .tape_checks import tape_diagnostics
 
 _contexts: dict[tuple[str, int, str], LineContext] = {}
@@ -63,6 +63,8 @@ def _line_facts(block: Block, ctx: LineContext) -> LineFacts | None:
         check_statements(block, ctx, facts)
     elif block.words:
         check_words(block, ctx, facts)
+    if block.abbreviations:
+        check_abbreviations(block, ctx, facts)
     return facts if facts else None
 
 

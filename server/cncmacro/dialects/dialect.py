@@ -68,6 +68,10 @@ class Dialect:
     # known: a G code outside the table and the machine's call codes is alarm 010, a decimal point
     # in an M code alarm 007; without this switch both are warnings and a run goes on
     word_format_alarms: bool = False
+    # §1 the first two or more letters of a macro word stand for the word (WH for WHILE)
+    keyword_abbreviations: bool = False
+    # §4 IF [cond] <statement> without THEN runs the statement (Haas); elsewhere alarm 114
+    if_without_then: bool = False
 
     @property
     def incremental_letters(self) -> dict[str, str]:
@@ -134,6 +138,7 @@ FANUC = Dialect(
     cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
     ijk_order_matters=True,
     word_format_alarms=True,
+    keyword_abbreviations=True,
 )
 
 GSK980TDI = Dialect(

@@ -1,4 +1,5 @@
-"""Words a control refuses (docs/semantics.md §8): a G code it lacks, a decimal point in an M code.
+"""Words and forms a control refuses: a G code it lacks, a decimal point in an M code (docs/semantics.md
+§8), an abbreviated macro word (§1) and IF without THEN (§4) where the dialect has none of them.
 
 A G code is known when the dialect's table lists it (``G_CODES`` of its data module, codes of
 both the milling and the turning series, the 30i's and the grinding cycles) or when the machine
@@ -6,8 +7,12 @@ settings make it a call (``[calls]``, e.g. ``G100 = 9010``). On a dialect with
 ``word_format_alarms`` (FANUC) any other G code is alarm 010 "improper G code", and an M code
 written with a decimal point (``M30.``) is alarm 007 "illegal use of decimal point". Elsewhere
 (GSK980TDi, whose manuals at hand give neither a complete code list nor those alarms) both are
-only warnings and a run goes on as if the word were a one-shot code. The interpreter
-(``nc_blocks.py``) and the static checks (``analysis/call_checks.py``) both ask here.
+only warnings and a run goes on as if the word were a one-shot code.
+
+``WH`` for WHILE is read by FANUC (``Dialect.keyword_abbreviations``) and ``IF[..] #1=2`` without
+THEN by Haas (``Dialect.if_without_then``); a dialect without the switch stops with alarm 114 at
+such a block. The interpreter (``blocks.py``, ``nc_blocks.py``) and the static checks
+(``analysis/call_checks.py``, ``analysis/statement_checks.py``) take their messages from here.
 """
 
 from __future__ import annotations
@@ -68,6 +73,27 @@ def m_decimal_point(word: Word) -> Detail | None:
     return detail(
         f"M{text}: an M code takes no decimal point (alarm 007 illegal use of decimal point); write M{whole}",
         f"M{text}：M代码不能带小数点（报警 007 小数点使用不当）；请写作 M{whole}",
+    )
+
+
+def abbreviation_refused(text: str, word: str, dialect: Dialect) -> Detail:
+    """What to say of a macro word written shortened (``text`` for ``word``) on a dialect that
+    does not read abbreviations."""
+    return detail(
+        f"'{text}' for {word}: abbreviated macro words are a FANUC feature that {dialect.title} does not "
+        f"have; the control stops here with alarm 114; write {word}",
+        f"'{text}' 表示 {word}：宏语句关键字的缩写是 FANUC 的功能，{dialect.title} 不支持；"
+        f"系统执行到此处报警 114；请写作 {word}",
+    )
+
+
+def missing_then(dialect: Dialect) -> Detail:
+    """What to say of ``IF [cond] <statement>`` without THEN on a dialect that needs THEN."""
+    return detail(
+        f"THEN is missing: {dialect.title} runs only IF[...] GOTO n and IF[...] THEN <statement>, and "
+        "stops at this block with alarm 114; write THEN before the statement (Haas controls run it without)",
+        f"缺少 THEN：{dialect.title} 只接受 IF[...] GOTO n 和 IF[...] THEN <语句>，执行到此程序段时报警 114；"
+        "请在语句前写 THEN（哈斯系统可以省略）",
     )
 
 

@@ -11,7 +11,18 @@ from collections.abc import Sequence
 
 from ..bilingual import Detail, detail
 from .lines import Prepared
-from .nodes import Assign, Block, Comment, Do, End, If, Number, Problem, While, Word
+from .nodes import Abbreviation, Assign, Block, Comment, Do, End, If, Number, Problem, While, Word
+
+
+class Items(list):  # type: ignore[type-arg]
+    """The items read from a line, with the macro words written shortened among them (both
+    readers, the grammar and the fast path, hand them over so)."""
+
+    __slots__ = ("abbreviations",)
+
+    def __init__(self, items: Sequence[object], abbreviations: Sequence[Abbreviation]) -> None:
+        super().__init__(items)
+        self.abbreviations = tuple(sorted(abbreviations, key=lambda a: a.start))
 
 
 def assemble(items: Sequence[object], prep: Prepared) -> Block:
@@ -65,6 +76,7 @@ def assemble(items: Sequence[object], prep: Prepared) -> Block:
         comments=prep.comments,
         problems=tuple(problems),
         structural=structural,
+        abbreviations=getattr(items, "abbreviations", ()),
     )
 
 

@@ -15,8 +15,11 @@ from __future__ import annotations
 
 import re
 
+from .assemble import Items
 from .grammar import RELATION_NAMES, BlockError, _check_condition, _has_relation
+from .keywords import FULL_WORD, pattern
 from .nodes import (
+    Abbreviation,
     Assign,
     Binary,
     Bracket,
@@ -57,9 +60,14 @@ def plain_words(code: str) -> list[Word] | None:
 
 # ---------------------------------------------------------------- statements
 
-_KEYWORDS = (
-    "ATAN|ASIN|ACOS|SQRT|ROUND|WHILE|GOTO|THEN|POPEN|PCLOS|DPRNT|BPRNT|"
-    "SIN|COS|TAN|ABS|EXP|FIX|FUP|BIN|BCD|AND|MOD|XOR|END|LN|OR|EQ|NE|GT|GE|LT|LE|IF|DO"
+# every macro word with its abbreviations (keywords.py): two words never share their first
+# two letters, so the order of the alternatives does not matter
+_KEYWORDS = "|".join(
+    pattern(w)
+    for w in (
+        "ATAN ASIN ACOS SQRT ROUND WHILE GOTO THEN POPEN PCLOS DPRNT BPRNT SIN COS TAN ABS EXP FIX FUP BIN BCD "
+        "AND MOD XOR END LN OR EQ NE GT GE LT LE IF DO"
+    ).split()
 )
 _TOKEN = re.compile(
     r"[ \t]*(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|(" + _KEYWORDS + r")|(==|!=|<=|>=|[-+*/\[\]=<>#])|([A-Za-z]))",
@@ -84,16 +92,19 @@ def read_items(code: str) -> list[object] | None:
     """The items of a block of common statement forms, or None to defer to the grammar."""
     if code.count("[") > 12:  # deep nesting is rare; the grammar reads it without recursion
         return None
-    toks = _tokenize(code)
+    shortened: list[Abbreviation] = []
+    toks = _tokenize(code, shortened)
     if toks is None:
         return None
     try:
-        return _Reader(toks, code).items()
+        return Items(_Reader(toks, code).items(), shortened)
     except (_Decline, BlockError):
         return None
 
 
-def _tokenize(code: str) -> list[tuple[int, str, int, int]] | None:
+def _tokenize(code: str, shortened: list[Abbreviation]) -> list[tuple[int, str, int, int]] | None:
+    """The tokens of ``code``; a macro word stands for its whole word, and each one written
+    shortened is added to ``shortened``."""
     toks: list[tuple[int, str, int, int]] = []
     pos = 0
     n = len(code)
@@ -108,7 +119,11 @@ def _tokenize(code: str) -> list[tuple[int, str, int, int]] | None:
         s, e = m.span(m.lastindex)  # type: ignore[arg-type]
         text = m.group(m.lastindex)  # type: ignore[arg-type]
         if kind == _KW or kind == _LETTER:
+            written = text
             text = text.upper()
+            if kind == _KW and text in FULL_WORD:
+                text = FULL_WORD[text]
+                shortened.append(Abbreviation(s, e, written, text))
         toks.append((kind, text, s, e))
         pos = m.end()
         if len(toks) > _MAX_TOKENS:
@@ -170,6 +185,10 @@ class _Reader:
                 if k2[0] == _KW and k2[1] == "THEN":
                     then = self.assign()
                     return If(cond, None, then, s, then.end)
+                if k2[0] == _VAR or (k2[0] == _OP and k2[1] == "#"):  # THEN left out
+                    self.i -= 1
+                    then = self.assign()
+                    return If(cond, None, then, s, then.end, True)
                 raise _Decline
             if text == "WHILE":
                 cond = self.condition()
