@@ -13,7 +13,9 @@ from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.dap.breakpoints import Breakpoints
 from cncmacro.dialects import get_dialect
 from cncmacro.library.machine_file import CallCode, MachineSettings
+from cncmacro.lsp.semantic_tokens import TOKEN_TYPES, line_tokens
 from cncmacro.syntax.document import ParsedDocument
+from conftest import block
 from running import alarm, final
 from static_helpers import at, check, coded, lines
 
@@ -256,3 +258,12 @@ def test_4_control_flow_if_without_then_runs_the_statement_where_the_control_acc
     assert final(text, haas_like) == {1: 20, 2: 5}
     found = static_diagnostics(ParsedDocument(text).program, "MAIN.nc", haas_like, MachineSettings())
     assert found == []
+
+
+def test_1_text_and_blocks_an_abbreviated_word_is_coloured_as_its_whole_word():
+    text = "WH[#1LT3]DO1"
+    tokens = line_tokens(text, block(text), get_dialect("fanuc"), (100, 199))
+    assert (0, 2, TOKEN_TYPES.index("keyword"), 0) in tokens
+    text = "#2=AT[1]/[2]"
+    tokens = line_tokens(text, block(text), get_dialect("fanuc"), (100, 199))
+    assert (3, 5, TOKEN_TYPES.index("function"), 0) in tokens

@@ -17,7 +17,7 @@ import re
 
 from .assemble import Items
 from .grammar import RELATION_NAMES, BlockError, _check_condition, _has_relation
-from .keywords import FULL_WORD, pattern
+from .keywords import FULL_WORD
 from .nodes import (
     Abbreviation,
     Assign,
@@ -60,19 +60,17 @@ def plain_words(code: str) -> list[Word] | None:
 
 # ---------------------------------------------------------------- statements
 
-# every macro word with its abbreviations (keywords.py): two words never share their first
-# two letters, so the order of the alternatives does not matter
-_KEYWORDS = "|".join(
-    pattern(w)
-    for w in (
+# A run of two letters or more is one macro word (a value never starts with a letter, so two
+# letters are never an address and its value): the word itself or an abbreviation of it
+# (keywords.py). Any other run is left to the grammar.
+_MACRO_WORDS = {
+    **{w: w for w in (
         "ATAN ASIN ACOS SQRT ROUND WHILE GOTO THEN POPEN PCLOS DPRNT BPRNT SIN COS TAN ABS EXP FIX FUP BIN BCD "
         "AND MOD XOR END LN OR EQ NE GT GE LT LE IF DO"
-    ).split()
-)
-_TOKEN = re.compile(
-    r"[ \t]*(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|(" + _KEYWORDS + r")|(==|!=|<=|>=|[-+*/\[\]=<>#])|([A-Za-z]))",
-    re.I,
-)
+    ).split()},
+    **FULL_WORD,
+}  # fmt: skip
+_TOKEN = re.compile(r"[ \t]*(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|([A-Za-z]{2,})|(==|!=|<=|>=|[-+*/\[\]=<>#])|([A-Za-z]))")
 _BRACKET_NAME = re.compile(r"\[(?=[^\[\]#()\s]*[^\[\]#()\s\d.+\-*/])(?:[^\[\]#()\s.]|\.(?=[./\\]))[^\[\]#()\s]*\]")
 _FUNCS = frozenset("SIN COS TAN ASIN ACOS SQRT ABS LN EXP ROUND FIX FUP BIN BCD".split())
 _RELOPS = frozenset("EQ NE GT GE LT LE == != <= >= < >".split())
@@ -118,12 +116,16 @@ def _tokenize(code: str, shortened: list[Abbreviation]) -> list[tuple[int, str, 
         kind = m.lastindex - 1  # type: ignore[operator]
         s, e = m.span(m.lastindex)  # type: ignore[arg-type]
         text = m.group(m.lastindex)  # type: ignore[arg-type]
-        if kind == _KW or kind == _LETTER:
-            written = text
+        if kind == _KW:
+            up = text.upper()
+            word = _MACRO_WORDS.get(up)
+            if word is None:
+                return None
+            if word != up:
+                shortened.append(Abbreviation(s, e, text, word))
+            text = word
+        elif kind == _LETTER:
             text = text.upper()
-            if kind == _KW and text in FULL_WORD:
-                text = FULL_WORD[text]
-                shortened.append(Abbreviation(s, e, written, text))
         toks.append((kind, text, s, e))
         pos = m.end()
         if len(toks) > _MAX_TOKENS:
