@@ -199,9 +199,7 @@ def update_program(program: Program, start: int, old_blocks: list[Block], new_bl
     if delta:
         for j in range(lo + len(new_markers), len(markers)):
             markers[j] += delta
-    # text added or removed before the first '%' decides whether that '%' starts or ends the tape
-    before_first_mark = bool(program.tape_marks) and start <= program.tape_marks[0]
-    if changed or new_markers or before_first_mark:
+    if changed or new_markers or first_mark_turned(program, start, delta):
         _derive_from_markers(program)
     elif delta:
         program.shift(end, delta)
@@ -250,6 +248,16 @@ def _derive_from_markers(program: Program) -> None:
     program.loop_problems = problems
     program.tape_marks = tape_marks
     program.tape_end = tape_end
+
+
+def first_mark_turned(program: Program, start: int, delta: int) -> bool:
+    """Whether an edit at ``start`` (no marker changed) turned the first '%' from the tape's start
+    into its end or back: text was added before it where there was none, or the last removed."""
+    marks = program.tape_marks
+    if not marks or start > marks[0]:
+        return False
+    was_end = program.tape_end == marks[0]
+    return was_end != _text_before(program.blocks, marks[0] + delta)
 
 
 def _text_before(blocks: list[Block], line: int) -> bool:
