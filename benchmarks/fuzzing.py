@@ -24,6 +24,7 @@ from pathlib import Path
 from lsprotocol import types
 
 from cncmacro.analysis.workspace import WorkspaceAnalysis
+from cncmacro.dialects import DIALECTS as ALL_PROFILES
 from cncmacro.dialects import get_dialect
 from cncmacro.library.machine_file import MachineSettings
 from cncmacro.library.programs import ProgramLibrary
@@ -33,7 +34,7 @@ from cncmacro.machine.machine import PAUSED
 from cncmacro.syntax.document import ParsedDocument, split_lines
 
 ROOT = Path(__file__).resolve().parent.parent
-DIALECTS = ("fanuc", "gsk980tdi")
+DIALECTS = ALL_PROFILES
 REQUEST_SECONDS = 60.0  # a request or analysis still unanswered after this is a hang
 RUN_BUDGET = 3000  # blocks per fuzzed run: enough to loop and call, small enough to stay fast
 _FOLDER = Path(tempfile.gettempdir()) / "cncmacro-fuzz-workspace"

@@ -77,8 +77,9 @@ def test_json_moves_one_to_a_line(examples):
     move_lines = [line for line in out.splitlines() if line.lstrip().startswith('{"file"')]
     assert len(move_lines) == len(r["moves"]) > 10  # a move is one line a person can read or diff
     assert json.loads(move_lines[0].strip().rstrip(",")) == r["moves"][0]
-    assert out.splitlines()[1] == ' "dialect": "fanuc",'  # the rest stays indented
-    assert r["dialect"] == "fanuc"  # the machine the run was made on (a plot draws a lathe otherwise)
+    assert out.splitlines()[1] == ' "dialect": "fanuc-0i",'  # the rest stays indented
+    # the machine the run was made on (a plot draws a lathe otherwise)
+    assert r["dialect"] == "fanuc-0i" and r["lathe"] is False
 
 
 def test_json_arc_moves_carry_their_centre(tmp_path):

@@ -20,7 +20,7 @@ from cncmacro.cli.main import main
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "tests" / "corpus"
-FANUC = CORPUS / "fanuc"
+FANUC = CORPUS / "fanuc-0i"
 GSK = CORPUS / "gsk980tdi"
 
 

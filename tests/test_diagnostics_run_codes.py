@@ -72,6 +72,9 @@ def test_7_h_codes_h99_is_a_macro_alarm_on_gsk980tdi(tmp_path):
     diags = analyse(tmp_path, {"O0001.nc": "O0001\nG65 H99 P15\nM30\n"}, dialect="gsk980tdi")
     [d] = [d for d in diags if d.code == "macro-alarm"]
     assert d.line == 1 and "5915" in d.message
+    text = "O0001\nG65 H99 P15(/用户自定义报警)\nM30\n"
+    [d] = [d for d in analyse(tmp_path, {"O0001.nc": text}, dialect="gsk980tdi") if d.code == "macro-alarm"]
+    assert d.message == "the run reaches macro alarm 5915: 用户自定义报警"
 
 
 def test_5_calls_vacant_argument_names_the_letter_and_the_caller(tmp_path):

@@ -7,17 +7,44 @@ from pathlib import Path
 
 from cncmacro.library.machine_file import CallCode, MachineSettings
 from cncmacro.library.programs import ProgramLibrary
-from running import alarm
+from running import alarm, final
 from static_helpers import at, check, coded, lines
 
 # ---------------------------------------------------------------- g65-nc-words
 
 
-def test_5_calls_g65_after_another_g_code_is_an_error():
-    text = lines("O1000", "G90 G65 P1000 A1", "M30")
-    found = coded(check(text), "g65-nc-words")
-    assert [at(d) for d in found] == [(2, 0, 3, "error")]
-    assert alarm(text) == (127, 2)
+def test_5_calls_a_modal_g_code_before_g65_is_alarm_127_on_gsk980tdi():
+    text = lines("O1000", "G54 G65 P1001 A1", "M30", "O1001", "M99")
+    [d] = coded(check(text, "gsk980tdi"), "g65-nc-words")
+    assert at(d) == (2, 0, 3, "error")
+    assert "G54 before G65" in d.message and "alarm 127" in d.message
+    assert alarm(text, "gsk980tdi") == (127, 2)
+
+
+def test_5_calls_a_modal_g_code_before_g65_is_a_warning_on_fanuc_that_says_what_the_control_does():
+    text = lines("O1000", "G90 G54 G65 P1001 A1", "M30", "O1001", "M99")
+    [d] = coded(check(text), "g65-nc-words")
+    assert at(d) == (2, 0, 7, "warning")
+    assert "sets G90 G54 (it stays in force) and then G65 calls the macro" in d.message
+    [zh] = coded(check(text, locale="zh-CN"), "g65-nc-words")
+    assert "先执行 G90 G54" in zh.message
+    g66 = lines("O1000", "G54 G66 P1001 A1", "G67", "M30", "O1001", "M99")
+    assert [at(d) for d in coded(check(g66), "g65-nc-words")] == [(2, 0, 3, "warning")]
+
+
+def test_5_calls_a_modal_g_code_before_g65_takes_effect_and_the_macro_is_called_on_fanuc():
+    text = lines("G55 G65 P1001 A7", "#101=#4014", "M30", "O1001", "#100=#1", "#102=#4014", "M99")
+    assert final(text) == {100: 7, 101: 55, 102: 55}
+    modal = lines("G91 G66 P1001 A2", "G00 X5", "G67", "#101=#4003", "M30", "O1001", "#100=#1", "M99")
+    assert final(modal) == {100: 2, 101: 91}
+
+
+def test_5_calls_other_words_before_g65_are_alarm_127_on_fanuc_too():
+    for before in ("X10", "M03", "G04", "G67"):
+        text = lines("O1000", f"{before} G65 P1001 A1", "M30", "O1001", "M99")
+        [d] = coded(check(text), "g65-nc-words")
+        assert at(d)[3] == "error", before
+        assert alarm(text) == (127, 2), before
 
 
 def test_5_calls_g66_with_an_o_word_after_it_is_an_error_on_gsk980tdi():
@@ -51,6 +78,23 @@ def test_5_calls_argument_specification_ii_is_fine_on_both_dialects():
     text = lines("O1000", "G65 P1000 A1 B2 C3 I14 J15 I6 J7 K9 K11 K12 J30", "M30")
     assert coded(check(text), "argument-address") == []
     assert coded(check(text, "gsk980tdi"), "argument-address") == []
+
+
+def test_5_calls_j_before_i_in_a_set_is_an_argument_order_warning_on_fanuc():
+    # docs/semantics.md §5, seed 004: "J_I_" is wrong; the value still goes where the letter says
+    text = lines("O1000", "G65 P1001 B1. A2. D3. J4. I5.", "M30", "O1001", "M99")
+    [d] = coded(check(text), "argument-order")
+    assert at(d) == (2, 26, 29, "warning")
+    assert "I after J" in d.message and "#4" in d.message
+    assert "系统仍把它赋给 #4" in coded(check(text, locale="zh-CN"), "argument-order")[0].message
+    second_set = lines("O1000", "G65 P1001 I1. J2. K3. I4. K5. J6.", "M30", "O1001", "M99")
+    assert [at(d)[:2] for d in coded(check(second_set), "argument-order")] == [(2, 30)]
+    assert coded(check(text, "gsk980tdi"), "argument-order") == []  # GSK's manuals ask for no order
+
+
+def test_5_calls_i_before_j_gives_no_argument_order_warning():
+    text = lines("O1000", "G65 P1001 B1. A2. D3. I5. J4.", "G65 P1001 I1 J2 K3 I4 J5 K6", "M30", "O1001", "M99")
+    assert coded(check(text), "argument-order") == []
 
 
 def test_5_calls_configured_call_code_takes_arguments_like_g65():
@@ -105,6 +149,18 @@ def test_5_calls_g65_p_with_five_digits_is_a_program_number_error_on_gsk980tdi_o
 def test_5_calls_m98_p_with_more_than_eight_digits_is_a_program_number_error():
     found = coded(check(lines("O1000", "M98 P123456789", "M30")), "program-number")
     assert [at(d) for d in found] == [(2, 4, 14, "error")]
+
+
+def test_5_calls_a_bracketed_name_with_a_character_outside_the_name_set_is_program_number(tmp_path: Path):
+    # seed 001 P[] format two: letters, digits and + - _ . only; any other character is an alarm
+    text = lines("O1000", "G65 P[A*B] L2", "M98 P[X=1]", "G66 P[CUT+1_A.B]", "G67", "M30")
+    found = check(text, "gsk980tdi", file=str(tmp_path / "MAIN.nc"), library=ProgramLibrary())
+    bad = coded(found, "program-number")
+    assert [at(d) for d in bad] == [(2, 4, 10, "error"), (3, 4, 10, "error")]
+    assert "P[A*B]: a program name may hold only letters, digits and + - _ ." in bad[0].message
+    assert [at(d)[0] for d in coded(found, "program-not-found")] == [4]  # a good name, only missing
+    assert alarm(lines("G65 P[A*B] L2", "M30"), "gsk980tdi", folder=tmp_path) == (291, 1)
+    assert alarm(lines("M98 P[A*B]", "M30"), "gsk980tdi", folder=tmp_path) == (291, 1)
 
 
 # ---------------------------------------------------------------- program-not-found

@@ -29,8 +29,10 @@ def test_2_values_and_variables_a_variable_the_dialect_lacks_is_an_error():
 
 def test_2_values_and_variables_common_range_is_a_machine_setting():
     text = lines("O1000", "#300=1", "M30")
-    assert [at(d) for d in coded(check(text), "variable-number")] == [(2, 0, 4, "error")]
-    assert check(text, settings=MachineSettings(common=(100, 499))) == []
+    assert check(text) == []  # fanuc-0i: #100-#499 unless the machine file names fewer
+    narrow = MachineSettings(common=((100, 199), (500, 999)))
+    assert [at(d) for d in coded(check(text, settings=narrow), "variable-number")] == [(2, 0, 4, "error")]
+    assert [at(d) for d in coded(check(text, "gsk980tdi"), "variable-number")] == [(2, 0, 4, "error")]
 
 
 def test_2_values_and_variables_nine_indirection_exists_on_gsk980tdi_only():
@@ -163,3 +165,18 @@ def test_1_text_and_blocks_block_diagnostics_checks_one_line_alone():
     found = block_diagnostics(parse_block("G90 G65 P9100 A1"), 7, "A.nc", fanuc, MachineSettings())
     assert [(d.line, d.code) for d in found] == [(7, "g65-nc-words")]
     assert block_diagnostics(parse_block("G01 X1. Y2."), 0, "A.nc", fanuc, MachineSettings()) == []
+
+
+def test_2_profile_suggestion_names_the_control_a_file_reads_cleanly_on():
+    from cncmacro.analysis.profile_suggestion import suggested_profile
+    from cncmacro.dialects import get_dialect
+    from cncmacro.syntax.document import ParsedDocument
+
+    def suggested(text: str, dialect: str) -> str | None:
+        found = suggested_profile(ParsedDocument(text).program, "MAIN.nc", get_dialect(dialect), MachineSettings())
+        return None if found is None else found.name
+
+    assert suggested(lines("O1", "#1=[#_ABSIO[1]]", "M30"), "fanuc-0i") == "fanuc-30i"
+    assert suggested(lines("O1", "G65 H01 P#101 Q5", "IF[#101==5]GOTO9", "N9 M30"), "fanuc-0i") == "gsk980tdi"
+    assert suggested(lines("O1", "#1=POW[2,3]", "G65 H01 P#101 Q5", "M30"), "fanuc-0i") is None  # no one has both
+    assert suggested(lines("O1", "#1=[#_ABSIO[1]]", "M30"), "gsk980tdi") == "fanuc-30i"

@@ -181,6 +181,8 @@ def test_aliases_point_at_stored_variables_of_the_same_access(dialect):
         (5064, "r", "position", "skip"),
         (5081, "r", "position", "tool"),
         (5104, "r", "position", "servo"),
+        (5121, "r", "position", "handle"),
+        (5124, "r", "position", "handle"),
         (5201, "rw", "store", ""),
         (5324, "rw", "store", ""),
         (7001, "rw", "store", ""),
@@ -195,8 +197,10 @@ def test_fanuc_spot_checks(number, access, source, param):
 
 
 @pytest.mark.parametrize(
-    "number", [1016, 1031, 1116, 1134, 2401, 2499, 2507, 3005, 4023, 4101, 4131, 5005, 5205, 5325, 7005, 7945, 10401]
-)
+    "number",
+    [1016, 1031, 1116, 1134, 2401, 2499, 2507, 3005, 3101, 4000, 4023, 4101, 4131, 4201, 5005, 5125, 5205, 5325, 7005,
+     7945, 10401, 14001, 100001],
+)  # fmt: skip
 def test_fanuc_numbers_that_do_not_exist(number):
     assert find("fanuc", number) is None
 
@@ -209,12 +213,13 @@ def spans(*pairs: tuple[int, int]) -> set[int]:
     return {number for first, last in pairs for number in range(first, last + 1)}
 
 
-def test_fanuc_covers_exactly_chapter_4():
+def test_fanuc_covers_exactly_chapter_4_and_the_handle_interruption():
     expected = spans((1000, 1015), (1032, 1032), (1100, 1115), (1132, 1133))  # §4.1, MIF = 0
     expected |= spans((10001, 10400), (11001, 11400), (12001, 12400), (13001, 13400), (2001, 2400))  # §4.2
     expected |= {3000, 3006, 3001, 3002, 3011, 3012, 3003, 3004, 3901, 3902}  # §4.3-§4.7
     expected |= spans((4001, 4022)) | {4102, 4107, 4109, 4111, 4113, 4114, 4115, 4119, 4120, 4130}  # §4.8
     expected |= spans(*((first, first + 3) for first in range(5001, 5102, 20)))  # §4.9
+    expected |= spans((5121, 5124))  # manual handle interruption: a 0i has it, the seed leaves it out
     expected |= spans(*((first, first + 3) for first in range(5201, 5322, 20)))  # §4.10
     expected |= spans(*((first, first + 3) for first in range(7001, 7942, 20)))
     expected |= spans((2500, 2506), (2600, 2606), (2700, 2706), (2800, 2806))

@@ -1,8 +1,9 @@
 """The dialect tables say today exactly what they said when ``data/dialect_tables.json`` was frozen.
 
 Every system-variable row (its numbers, access, group, English and Chinese text, unit, source,
-default), every G and M code and every function of both dialects is compared with the frozen
-copy, so a change to one description (or to a row both controls share) is caught. The hover a
+default), every system variable name, every G and M code and every function of every dialect is
+compared with the frozen copy, so a change to one description (or to a row several controls
+share) is caught. The hover a
 user sees for a number comes from the row the dialect finds for it, so every number of every
 frozen row must find that row, and no other number any. After a change to the tables that is
 meant, write the fixture again with ``python tests/test_dialect_tables_frozen.py`` and review
@@ -22,7 +23,7 @@ from cncmacro.dialects import DIALECTS, get_dialect
 from cncmacro.dialects.functions_data import GSK_H_CODES
 
 FIXTURE = Path(__file__).parent / "data" / "dialect_tables.json"
-HIGHEST = 20_000  # above every system variable of both dialects
+HIGHEST = 100_400  # above every system variable of every dialect
 
 
 def current() -> dict[str, Any]:
@@ -32,6 +33,7 @@ def current() -> dict[str, Any]:
         d = get_dialect(name)
         tables[name] = {
             "system_variables": [dataclasses.asdict(r) for r in d.system_variables()],
+            "system_variable_names": [dataclasses.asdict(r) for r in d.system_variable_names()],
             "g_codes": [dataclasses.asdict(c) for c in d.g_codes()],
             "m_codes": [dataclasses.asdict(c) for c in d.m_codes()],
             "functions": [dataclasses.asdict(f) for f in d.functions()],
@@ -45,7 +47,7 @@ def frozen() -> dict[str, Any]:
 
 
 @pytest.mark.parametrize("dialect", DIALECTS)
-@pytest.mark.parametrize("table", ["system_variables", "g_codes", "m_codes", "functions"])
+@pytest.mark.parametrize("table", ["system_variables", "system_variable_names", "g_codes", "m_codes", "functions"])
 def test_dialect_table_matches_the_frozen_copy(dialect: str, table: str) -> None:
     now, then = current()[dialect][table], frozen()[dialect][table]
     changed = [(a, b) for a, b in zip(now, then, strict=False) if a != b]

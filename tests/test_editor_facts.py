@@ -40,10 +40,11 @@ def test_4_control_flow_goto_searches_forward_then_from_the_start() -> None:
 
 
 def test_2_values_and_variables_classes_follow_the_common_range_setting() -> None:
-    assert [variable_class(n) for n in (0, 1, 33, 50, 100, 199, 300, 500, 999, 1000)] == [
+    gsk = get_dialect("gsk980tdi")
+    assert [variable_class(n, gsk) for n in (0, 1, 33, 50, 100, 199, 300, 500, 999, 1000)] == [
         "null", "local", "local", "undefined", "common", "common", "undefined", "persistent", "persistent", "system"
     ]  # fmt: skip
-    assert variable_class(300, (100, 499)) == "common"
+    assert variable_class(300, get_dialect("fanuc")) == "common"
 
 
 def test_system_variable_description_fills_in_the_axis_in_both_languages() -> None:

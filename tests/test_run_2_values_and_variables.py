@@ -50,15 +50,16 @@ def test_zero_is_vacant_and_read_only():
     assert alarm(lines("#1=1", "#0=5", "M30")) == (116, 2)
 
 
-@pytest.mark.parametrize("number", [34, 99, 200, 499, 1020, 4200])
+@pytest.mark.parametrize("number", [34, 99, 1020, 4200])
 def test_numbers_outside_the_ranges_are_alarm_115(number):
     assert alarm(lines(f"#{number}=1", "M30"))[0] == 115
     assert alarm(lines(f"#1=#{number}", "M30"))[0] == 115
 
 
-def test_common_range_is_a_machine_setting():
-    assert alarm(lines("#300=1", "M30"))[0] == 115
-    assert final(lines("#300=1", "M30"), common=(100, 499))[300] == 1
+def test_2_common_range_is_a_machine_setting():
+    assert final(lines("#300=1", "M30"))[300] == 1  # fanuc-0i: #100-#499 by default
+    assert alarm(lines("#300=1", "M30"), common=((100, 199), (500, 999)))[0] == 115
+    assert alarm(lines("#200=1", "M30"), "gsk980tdi")[0] == 115  # seed 000: #100-#199 only
 
 
 def test_locals_commons_and_persistent_ranges():

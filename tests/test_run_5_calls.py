@@ -65,7 +65,8 @@ def test_g_n_o_are_not_arguments(word):
 
 
 def test_only_n_may_precede_g65():
-    assert alarm(lines("G01 G65 P9000 A1", "M30", MACRO_ECHO))[0] == 127
+    assert alarm(lines("G01 G65 P9000 A1", "M30", MACRO_ECHO), "gsk980tdi")[0] == 127
+    assert final(lines("G01 G65 P9000 A1", "M30", MACRO_ECHO))[101] == 1  # fanuc: a modal G code, then the call
     assert alarm(lines("X5 G65 P9000 A1", "M30", MACRO_ECHO))[0] == 127
     assert alarm(lines("M03 G65 P9000 A1", "M30", MACRO_ECHO))[0] == 127
     assert locals_passed("G65 P9000 A1 M03")[13] == 3  # after G65, M is the argument #13
@@ -123,9 +124,54 @@ def test_g66_calls_after_every_move_and_g67_cancels():
     assert v[100] == 2 and v[101] == 7 and v[102] == 10
 
 
+def test_5_g66_seed_001_example_a_block_without_movement_calls_nothing_on_gsk980tdi():
+    # seed 001 G66 example O0002 and its note 3: "G0 U0 W0" has no amount of movement, no call
+    program = lines(
+        "G00 X100 Z50",
+        "G66 P0100 L2 A2 B20 C20 I30 J20 K20",
+        "G01 X80 Z50",  # calls O0100 twice
+        "G0 U0 W0",  # no call
+        "G01 X80 Z50",  # already there: no call either
+        "G01 U1",  # calls twice
+        "G67",
+        "G01 X20 Z50",  # no call
+        "M30",
+        "O0100",
+        "#100=#100+1",
+        "M99",
+    )
+    assert final(program, "gsk980tdi")[100] == 4
+
+
+def test_5_g66_a_move_command_to_where_the_tool_is_calls_on_fanuc():
+    # fanuc: the macro is called after a block with a move command (seed 003 §8.3, seed 004)
+    program = lines("G90 G00 X10", "G66 P9003", "G01 X10 F100", "G91 X0", "G67", "M30", "O9003", "#100=#100+1", "M99")
+    assert final(program)[100] == 2
+
+
 def test_g66_block_itself_calls_nothing():
     v = final(lines("G66 P9003 A1 X5", "G67", "M30", "O9003", "#100=#100+1", "M99"))
     assert 100 not in v
+
+
+@pytest.mark.parametrize("dialect", ["fanuc", "gsk980tdi"])
+def test_5_g66_sets_modal_group_12_to_66_and_g67_back_to_67(dialect):
+    # seed 000 system variable table (#4012: G66, G67, group 12), seed 003 §4.8
+    program = lines(
+        "#101=#4012",
+        "G66 P9003",
+        "#102=#4012",
+        "G66 P9003",  # nested modal calls: still 66 until the last one is cancelled
+        "G67",
+        "#103=#4012",
+        "G67",
+        "#104=#4012",
+        "M30",
+        "O9003",
+        "M99",
+    )
+    v = final(program, dialect)
+    assert (v[101], v[102], v[103], v[104]) == (67, 66, 66, 67)
 
 
 def test_m30_cancels_the_modal_call():
@@ -242,6 +288,15 @@ def test_gsk_p_from_a_variable_with_too_many_digits_is_alarm_291(tmp_path):
     # seed 001: #100=21234 -> alarm 291
     assert alarm(lines("#100=21234", "G65 P[#100] L2", "M30"), "gsk980tdi", folder=tmp_path) == (291, 2)
     assert alarm(lines("#100=21234", "G65 P#100", "M30"), "gsk980tdi")[0] == 291
+
+
+def test_5_gsk_m98_p_bracket_variable_is_a_program_name_only_alarm_291(tmp_path):
+    # seed 002 M98 format two: in P[#100] the variable names the program; 21234 is alarm 291
+    assert alarm(lines("#100=21234", "M98 P[#100] L3", "M30"), "gsk980tdi", folder=tmp_path) == (291, 2)
+    called = lines("#100=23.34", "M98 P[#100] L3", "M30", "O0023", "#101=#101+1", "M99")
+    assert final(called, "gsk980tdi")[101] == 3  # O0023, three times
+    # on fanuc the brackets are only an expression: P[#100] is P#100, count and program
+    assert final(lines("#100=30040", "M98 P[#100]", "M30", "O0040", "#101=#101+1", "M99"))[101] == 3
 
 
 @pytest.mark.parametrize("name", ["../secret", "..", "a/../secret", "/etc/passwd", "sub\\secret"])

@@ -117,6 +117,16 @@ def test_seed_000_h99_p15_is_alarm_5915():
     assert alarm(lines("G65 H99 P15", "M30"), "gsk980tdi") == (5915, 1)
 
 
+def test_7_h99_carries_the_comment_text_like_3000():
+    # seed 000 §3.28.2: G65 H99 P15(/用户自定义报警) is alarm 5915 with the text 用户自定义报警
+    m = run(lines("G65 H99 P15(/用户自定义报警);", "M30"), "gsk980tdi")
+    assert (m.alarm.number, m.alarm.message) == (5915, "用户自定义报警")
+    m = run(lines("#1=3", "G65 H99 P#1 (TOOL BROKEN)", "M30"), "gsk980tdi")
+    assert (m.alarm.number, m.alarm.message) == (5903, "TOOL BROKEN")
+    m = run(lines("G65 H99 P15", "M30"), "gsk980tdi")  # no text: the alarm has none of its own
+    assert m.alarm.message == "G65 H99 P15: user alarm 5915"
+
+
 def test_h05_by_zero_is_alarm_112():
     assert alarm(lines("G65 H05 P#100 Q1 R0", "M30"), "gsk980tdi") == (112, 1)
 

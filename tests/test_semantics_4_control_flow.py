@@ -82,3 +82,12 @@ def test_labels_keep_duplicates_in_order():
 
 def test_goto_statement_kinds():
     assert isinstance(block("N5 GOTO 5").statements[0], Goto)
+
+
+def test_4_control_flow_three_bracketed_conditions_joined_by_and_or_read_left_to_right():
+    from running import final, lines
+
+    text = lines("#7=82", "IF[[#7 NE 81] AND [#7 NE 82] AND [#7 NE 83]] GOTO 5", "#1=1",
+                 "N5 IF[[#7 EQ 1] OR [#7 EQ 2] OR [#7 EQ 82]] THEN #2=9", "M30")  # fmt: skip
+    got = final(text)
+    assert got[1] == 1 and got[2] == 9

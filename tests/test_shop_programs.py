@@ -243,17 +243,28 @@ def test_1_text_and_blocks_nc_words_never_read_as_abbreviations():
 # ---------------------------------------------------------------- §4 IF without THEN
 
 
-def test_4_control_flow_if_without_then_is_alarm_114_on_fanuc_and_gsk980tdi():
+def test_4_control_flow_if_without_then_is_alarm_114_on_gsk980tdi():
     text = lines("O1000", "#1=20", "IF[#1GT10]#2=5", "M30")
-    for dialect in ("fanuc", "gsk980tdi"):
-        [d] = check(text, dialect)
-        assert (d.code, *at(d)) == ("dialect-feature", 3, 10, 14, "error")
-        assert "THEN is missing" in d.message and "alarm 114" in d.message
-        assert alarm(text, dialect) == (114, 3)
+    [d] = check(text, "gsk980tdi")
+    assert (d.code, *at(d)) == ("dialect-feature", 3, 10, 14, "error")
+    assert "THEN is missing" in d.message and "alarm 114" in d.message
+    assert alarm(text, "gsk980tdi") == (114, 3)
+
+
+def test_4_control_flow_if_without_then_runs_the_statement_on_the_fanuc_profiles():
+    # a production FANUC grinder program uses it and no FANUC manual forbids it
+    text = lines("O1000", "#1=20", "IF[#1GT10]#2=5", "IF[#1LT10]#3=5", "M30")
+    for name in ("fanuc-0i", "fanuc-30i"):
+        dialect = get_dialect(name)
+        assert dialect.if_without_then
+        assert final(text, dialect) == {1: 20, 2: 5}
+        found = static_diagnostics(ParsedDocument(text).program, "MAIN.nc", dialect, MachineSettings())
+        assert found == []
+    assert not get_dialect("gsk980tdi").if_without_then
 
 
 def test_4_control_flow_if_without_then_runs_the_statement_where_the_control_accepts_it():
-    haas_like = replace(get_dialect("fanuc"), if_without_then=True)
+    haas_like = replace(get_dialect("gsk980tdi"), if_without_then=True)
     text = lines("O1000", "#1=20", "IF[#1GT10]#2=5", "IF[#1LT10]#3=5", "M30")
     assert final(text, haas_like) == {1: 20, 2: 5}
     found = static_diagnostics(ParsedDocument(text).program, "MAIN.nc", haas_like, MachineSettings())
@@ -262,8 +273,8 @@ def test_4_control_flow_if_without_then_runs_the_statement_where_the_control_acc
 
 def test_1_text_and_blocks_an_abbreviated_word_is_coloured_as_its_whole_word():
     text = "WH[#1LT3]DO1"
-    tokens = line_tokens(text, block(text), get_dialect("fanuc"), (100, 199))
+    tokens = line_tokens(text, block(text), get_dialect("fanuc"))
     assert (0, 2, TOKEN_TYPES.index("keyword"), 0) in tokens
     text = "#2=AT[1]/[2]"
-    tokens = line_tokens(text, block(text), get_dialect("fanuc"), (100, 199))
+    tokens = line_tokens(text, block(text), get_dialect("fanuc"))
     assert (3, 5, TOKEN_TYPES.index("function"), 0) in tokens

@@ -9,7 +9,6 @@ import * as vscode from 'vscode';
 import { LANGUAGE_ID, type ServerController } from './languageClient';
 import { cncmacroCommand, serverEnvironment, serverLayout } from './serverProcess';
 import * as settings from './settings';
-import { DIALECT_NAMES } from './statusBar';
 
 /**
  * The program a command acts on: the file it was given (an Explorer or editor-title click) or the
@@ -77,14 +76,24 @@ async function runProgram(
   });
 }
 
-async function selectDialect(): Promise<void> {
+async function selectDialect(server: ServerController): Promise<void> {
   const current = settings.dialect(vscode.window.activeTextEditor?.document.uri);
-  const items: (vscode.QuickPickItem & { dialect: settings.Dialect })[] = [
-    { dialect: 'fanuc', label: DIALECT_NAMES.fanuc, description: vscode.l10n.t('FANUC 0i Custom Macro B') },
-    { dialect: 'gsk980tdi', label: DIALECT_NAMES.gsk980tdi, description: vscode.l10n.t('GSK980TDi lathe control') },
-  ];
+  const profiles = await server.profiles();
+  if (profiles.length === 0) {
+    void vscode.window.showWarningMessage(
+      vscode.l10n.t('The CNC Macro language server is not running, so the control profiles are not known yet.'),
+    );
+    return;
+  }
+  const chinese = vscode.env.language.toLowerCase().startsWith('zh');
+  const items: (vscode.QuickPickItem & { dialect: settings.Dialect })[] = profiles.map((p) => ({
+    dialect: p.name,
+    label: p.title,
+    description: `${p.name} · ${chinese && p.summaryZh ? p.summaryZh : p.summary}`,
+  }));
   for (const item of items) {
-    if (item.dialect === current) {
+    const profile = profiles.find((p) => p.name === item.dialect);
+    if (item.dialect === current || profile?.aliases.includes(current)) {
       item.detail = vscode.l10n.t('current');
     }
   }
@@ -105,7 +114,7 @@ export function registerCommands(
     vscode.commands.registerCommand('cncMacro.runProgram', (uri?: vscode.Uri) =>
       runProgram(context, server, output, uri instanceof vscode.Uri ? uri : undefined),
     ),
-    vscode.commands.registerCommand('cncMacro.selectDialect', selectDialect),
+    vscode.commands.registerCommand('cncMacro.selectDialect', () => selectDialect(server)),
     vscode.commands.registerCommand('cncMacro.restartServer', async () => {
       server.log.info('restarting the language server');
       await server.restart();

@@ -42,7 +42,19 @@ class PushDiagnosticsClient extends LanguageClient {
 export interface DocumentDialect {
   dialect: string;
   title: string;
+  lathe?: boolean;
   source: 'file' | 'workspace' | 'setting' | 'default';
+}
+
+/** One control profile, as the server's `cncmacro/profiles` describes it. */
+export interface Profile {
+  name: string;
+  title: string;
+  summary: string;
+  summaryZh: string;
+  aliases: string[];
+  lathe: boolean;
+  default: boolean;
 }
 
 export class ServerController implements vscode.Disposable {
@@ -101,6 +113,19 @@ export class ServerController implements vscode.Disposable {
       return answer ?? undefined;
     } catch {
       return undefined;
+    }
+  }
+
+  /** The control profiles the server knows (empty while it is not running). */
+  async profiles(): Promise<Profile[]> {
+    if (!this.client?.isRunning()) {
+      return [];
+    }
+    try {
+      const answer = await this.client.sendRequest<Profile[] | null>('cncmacro/profiles', {});
+      return Array.isArray(answer) ? answer : [];
+    } catch {
+      return [];
     }
   }
 

@@ -9,8 +9,10 @@
 import * as vscode from 'vscode';
 
 export const SECTION = 'cncMacro';
-export const DIALECTS = ['fanuc', 'gsk980tdi'] as const;
-export type Dialect = (typeof DIALECTS)[number];
+/** A control profile's name (`fanuc-0i`, `fanuc-30i`, `gsk980tdi`, ...): the server knows the list. */
+export type Dialect = string;
+/** The profile when nothing names one: the server's default, also the setting's default. */
+export const DEFAULT_DIALECT = 'fanuc-0i';
 export const SEVERITIES = ['error', 'warning', 'information', 'hint', 'off'] as const;
 
 /** The settings the language server reads, under the names it reads them by. */
@@ -24,14 +26,10 @@ function config(scope?: vscode.ConfigurationScope): vscode.WorkspaceConfiguratio
   return vscode.workspace.getConfiguration(SECTION, scope);
 }
 
-export function isDialect(value: unknown): value is Dialect {
-  return typeof value === 'string' && (DIALECTS as readonly string[]).includes(value);
-}
-
-/** The dialect setting (`fanuc` when unset or not a known dialect). */
+/** The dialect setting as written (the server reads names and aliases such as `fanuc`), or the default. */
 export function dialect(scope?: vscode.ConfigurationScope): Dialect {
   const value = config(scope).get<string>('dialect');
-  return isDialect(value) ? value : 'fanuc';
+  return typeof value === 'string' && value.trim() !== '' ? value.trim() : DEFAULT_DIALECT;
 }
 
 /** The Python interpreter the user chose, or undefined when the setting is empty. */

@@ -8,11 +8,6 @@ import * as vscode from 'vscode';
 import { LANGUAGE_ID, type DocumentDialect, type ServerController } from './languageClient';
 import * as settings from './settings';
 
-export const DIALECT_NAMES: Record<settings.Dialect, string> = {
-  fanuc: 'FANUC 0i',
-  gsk980tdi: 'GSK980TDi',
-};
-
 const HEADER_LINES = 5; // the lines where the server looks for the dialect comment
 
 export class DialectStatus implements vscode.Disposable {
@@ -70,7 +65,7 @@ export class DialectStatus implements vscode.Disposable {
   }
 
   private show(answer: DocumentDialect | undefined, setting: settings.Dialect): void {
-    const title = answer?.title ?? DIALECT_NAMES[setting];
+    const title = answer?.title ?? setting;
     this.item.text = `$(tools) ${title}`;
     const why: Record<DocumentDialect['source'], string> = {
       file: vscode.l10n.t("from the file's (cncmacro: dialect=...) comment"),

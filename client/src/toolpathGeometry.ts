@@ -32,6 +32,8 @@ export interface RunResult {
   blocks: number;
   moves: RunMove[];
   dialect?: string;
+  /** whether the run's profile is a lathe (X a diameter), as `cncmacro run --json` says */
+  lathe?: boolean;
 }
 
 export type Plane = 'XY' | 'ZX' | 'YZ';
@@ -126,15 +128,16 @@ export function parseRunResult(text: string): RunResult | string {
   }
   const result: RunResult = { status: r.status, alarm, blocks: isNumber(r.blocks) ? r.blocks : 0, moves };
   if (typeof r.dialect === 'string') result.dialect = r.dialect;
+  if (typeof r.lathe === 'boolean') result.lathe = r.lathe;
   return result;
 }
 
 /**
- * Whether the machine that ran is a lathe: the result's `dialect` when it names one, else the
- * axes the run reports, which are the dialect's (GSK980TDi: X Y Z C B; FANUC 0i: X Y Z A).
+ * Whether the machine that ran is a lathe: the run says so (`lathe`, from its profile), else
+ * the axes the run reports, which are the profile's (GSK980TDi: X Y Z C B; FANUC: X Y Z A).
  */
 export function isLatheRun(result: RunResult): boolean {
-  if (result.dialect !== undefined) return result.dialect.toLowerCase().startsWith('gsk');
+  if (result.lathe !== undefined) return result.lathe;
   const first = result.moves[0];
   return first !== undefined && 'C' in first.from && 'B' in first.from && !('A' in first.from);
 }

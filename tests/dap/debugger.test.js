@@ -169,14 +169,14 @@ describe('variables, evaluate and data breakpoints', () => {
   test('each scope shows its variables; vacant is <vacant>', async () => {
     await dc.begin({ program: program('main.nc') }, { breakpoints: { 'O9100.nc': [{ line: 4 }] } });
     const scopes = (await dc.scopesRequest({ frameId: 2 })).body.scopes.map((s) => s.name);
-    assert.deepEqual(scopes, ['Locals', 'Common #100–#199', 'Persistent #500–#999', 'Position', 'Modal', 'Offsets']);
+    assert.deepEqual(scopes, ['Locals', 'Common #100–#499', 'Persistent #500–#999', 'Position', 'Modal', 'Offsets']);
     const locals = (await dc.scopeVariables(2, 'Locals')).variables;
     assert.equal(locals.length, 33);
     assert.deepEqual(locals.slice(0, 3).map((v) => [v.name, v.value]), [['#1 (A)', '2.5'], ['#2 (B)', '4'], ['#3', '<vacant>']]);
     const mainLocals = (await dc.scopeVariables(1, 'Locals')).variables;
     assert.deepEqual([mainLocals[0].name, mainLocals[0].value], ['#1', '3']);
     const common = (await dc.scopeVariables(2, 'Common')).variables;
-    assert.deepEqual([common.length, common[0].name, common[0].value, common[1].value], [100, '#100', '6.5', '<vacant>']);
+    assert.deepEqual([common.length, common[0].name, common[0].value, common[1].value], [400, '#100', '6.5', '<vacant>']);
     const persistent = (await dc.scopeVariables(2, 'Persistent')).variables;
     assert.deepEqual([persistent.length, persistent[0].name, persistent[499].name], [500, '#500', '#999']);
     const position = (await dc.scopeVariables(2, 'Position')).variables;

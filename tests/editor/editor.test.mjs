@@ -153,7 +153,7 @@ test('Run Program shows the run in the "CNC Macro" output channel', { timeout: S
   await shot('6-run-program');
 });
 
-test('clicking the dialect in the status bar picks another and writes cncMacro.dialect', { timeout: STEP }, async () => {
+test('clicking the dialect in the status bar offers the server\'s profiles and writes cncMacro.dialect', { timeout: STEP }, async () => {
   const settingsFile = path.join(server.workspace, '.vscode', 'settings.json');
   const pick = async (from, to) => {
     await page.locator('.statusbar-item', { hasText: from }).click();
@@ -163,12 +163,15 @@ test('clicking the dialect in the status bar picks another and writes cncMacro.d
   await pick('FANUC 0i', 'GSK980TDi');
   await shot('7-dialect-gsk980tdi');
   assert.equal(JSON.parse(fs.readFileSync(settingsFile, 'utf8'))['cncMacro.dialect'], 'gsk980tdi');
-  await pick('GSK980TDi', 'FANUC 0i');
-  assert.equal(JSON.parse(fs.readFileSync(settingsFile, 'utf8'))['cncMacro.dialect'], 'fanuc');
+  await pick('GSK980TDi', 'FANUC 30i');
+  await shot('7a-dialect-fanuc-30i');
+  assert.equal(JSON.parse(fs.readFileSync(settingsFile, 'utf8'))['cncMacro.dialect'], 'fanuc-30i');
+  await pick('FANUC 30i', 'FANUC 0i');
+  assert.equal(JSON.parse(fs.readFileSync(settingsFile, 'utf8'))['cncMacro.dialect'], 'fanuc-0i');
 });
 
 test("the status bar shows the dialect a file is read in: its own comment wins over the setting", { timeout: STEP }, async () => {
-  await openFile('lathe_part.nc'); // (cncmacro: dialect=gsk980tdi), the setting is fanuc
+  await openFile('lathe_part.nc'); // (cncmacro: dialect=gsk980tdi), the setting is fanuc-0i
   const item = page.locator('.statusbar-item', { hasText: 'GSK980TDi' });
   await item.waitFor();
   await shot('7b-dialect-from-the-file');

@@ -84,3 +84,20 @@ def test_the_debugger_documents_every_launch_attribute_the_adapter_reads() -> No
     assert read and read <= attributes.keys()
     assert all(a.get("description") for a in attributes.values())
     assert debugger["initialConfigurations"][0]["type"] == "cnc-macro"
+
+
+def test_the_manifest_offers_exactly_the_profiles_the_server_knows() -> None:
+    """The dialect setting's and the debugger's enum are the server's profile list
+    (``dialects/registry.py``), in its order, with the server's default; the client itself
+    learns the list from ``cncmacro/profiles``."""
+    from cncmacro.dialects import DEFAULT_DIALECT, DIALECTS
+
+    manifest = _manifest()
+    setting = manifest["contributes"]["configuration"]["properties"]["cncMacro.dialect"]
+    assert setting["enum"] == list(DIALECTS) and setting["default"] == DEFAULT_DIALECT
+    assert len(setting["enumDescriptions"]) == len(DIALECTS)
+    launch = manifest["contributes"]["debuggers"][0]["configurationAttributes"]["launch"]["properties"]
+    assert launch["dialect"]["enum"] == list(DIALECTS)
+    client = (ROOT / "client" / "src").glob("*.ts")
+    hard_coded = [p.name for p in client if re.search(r"'gsk980tdi'|'fanuc'", p.read_text(encoding="utf-8"))]
+    assert hard_coded == [], "the client names profiles itself instead of asking the server"

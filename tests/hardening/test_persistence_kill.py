@@ -16,7 +16,9 @@ from pathlib import Path
 import pytest
 
 from cncmacro.cli.main import main
-from cncmacro.machine.persistence import FIRST, LAST, load_persistent, save_persistent
+from cncmacro.machine.persistence import load_persistent, save_persistent
+
+FIRST, LAST = 500, 999  # the persistent commons of every profile
 
 ROUNDS = 40
 PROGRAM = """O0001 (EVERY PERSISTENT VARIABLE ONE MORE)

@@ -80,6 +80,26 @@ async def test_severity_setting_switches_a_code_off(client: LanguageClient) -> N
     assert "duplicate-label" not in [d.code for d in got.diagnostics]
 
 
+async def test_1_duplicate_program_is_a_warning_on_the_ignored_header(client: LanguageClient) -> None:
+    text = "O0100\nM30\nO0100 (OLD COPY)\n#100=1/0\nM30\n"
+    uri = open_file(client, FANUC / "twice.nc", text, version=1)
+    got = await diagnostics_for(client, uri, 1)
+    found = [(d.range.start.line, d.range.start.character, d.range.end.character, d.code) for d in got.diagnostics]
+    assert found == [(2, 0, 5, "duplicate-program")]
+    assert got.diagnostics[0].severity == types.DiagnosticSeverity.Warning
+    [d] = got.diagnostics
+    assert d.related_information is not None
+    assert [(r.location.uri, r.location.range.start.line) for r in d.related_information] == [(uri, 0)]
+
+
+async def test_5_argument_order_warning_reaches_the_editor_with_its_code(client: LanguageClient) -> None:
+    text = "(cncmacro: dialect=fanuc)\nO0100\nG65 P9001 B1. A2. D3. J4. I5.\nG65 P9001 I5. J4.\nM30\nO9001\nM99\n"
+    uri = open_file(client, FANUC / "order.nc", text, version=1)
+    got = await diagnostics_for(client, uri, 1)
+    found = [(d.range.start.line, d.range.start.character, d.code, d.severity) for d in got.diagnostics]
+    assert found == [(2, 26, "argument-order", types.DiagnosticSeverity.Warning)]
+
+
 async def test_severity_setting_changes_a_code_in_chinese_session(client_zh: LanguageClient) -> None:
     uri = open_file(client_zh, GSK / "broken.CNC", "O0100\n#1=[2+3\nM30\n", version=1)
     got = await diagnostics_for(client_zh, uri, 1)

@@ -23,7 +23,7 @@ async def test_a_file_comment_decides_over_the_setting_and_an_edit_of_it_is_seen
     answer = await dialect_of(fanuc_en, marked)
     assert (answer.dialect, answer.title, answer.source) == ("gsk980tdi", "GSK980TDi", "file")
     answer = await dialect_of(fanuc_en, plain)
-    assert (answer.dialect, answer.source) == ("fanuc", "default")
+    assert (answer.dialect, answer.source) == ("fanuc-0i", "default")
     edit(fanuc_en, marked, 2, 0, 0, 30, "(LATHE PART)")  # the comment goes: the chain goes on
     await diagnostics_for(fanuc_en, marked, 2)
     assert (await dialect_of(fanuc_en, marked)).source == "default"

@@ -173,3 +173,31 @@ async def test_1_hover_on_an_abbreviated_macro_word_shows_the_whole_word(
     text_gsk = await hover_text(gsk_en, uri, 2, 0)
     close_file(gsk_en, uri)
     assert "short for **WHILE**" in text_gsk and "does not read abbreviations" in text_gsk
+
+
+async def test_hover_on_a_30i_name_shows_its_number_and_description(
+    fanuc_en: LanguageClient, fanuc_zh: LanguageClient
+) -> None:
+    text = "(cncmacro: dialect=fanuc-30i)\nO0001\n#1=[#_ABSIO[1]]\n#2=[#_DATE]+[#_ABSIO[#9]]\n[#_NOPE]=1\nM30\n"
+    uri = open_file(fanuc_en, FANUC / "names30i.nc", text)
+    absio = await hover_text(fanuc_en, uri, 2, 7)  # ABSIO
+    date = await hover_text(fanuc_en, uri, 3, 6)
+    any_axis = await hover_text(fanuc_en, uri, 3, 17)  # #_ABSIO[#9]: n known when it runs
+    unknown = await hover_text(fanuc_en, uri, 4, 3)
+    close_file(fanuc_en, uri)
+    assert absio.startswith("**#_ABSIO[1]** = **#5001**") and "X axis block end position" in absio
+    assert "access: read-only" in absio and "FANUC 30i-B" in absio
+    assert "**#_DATE** = **#3011**" in date and "YYYYMMDD" in date
+    assert "#5001 … #5004 (n = 1 … 4)" in any_axis and "block end position of axis n" in any_axis
+    assert "#_NOPE" in unknown and "(1098)" in unknown
+    uri = open_file(fanuc_zh, FANUC / "names30i_zh.nc", text)
+    zh = await hover_text(fanuc_zh, uri, 2, 7)
+    close_file(fanuc_zh, uri)
+    assert "#5001" in zh and "程序段终点位置" in zh and "只读" in zh
+
+
+async def test_hover_on_a_name_in_a_0i_file_says_the_dialect_has_none(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "names0i.nc", "O0001\n#1=[#_ABSIO[1]]\nM30\n")
+    text = await hover_text(fanuc_en, uri, 1, 7)
+    close_file(fanuc_en, uri)
+    assert "no system variable names" in text and "FANUC 0i" in text

@@ -21,7 +21,9 @@ from ..dialects.alarms import (
     LOOP_NUMBER,
     MACRO_NESTING,
     MISSING_END,
+    NAME_SUBSCRIPT,
     NC_AND_MACRO,
+    NO_VARIABLE_NAME,
     OVERFLOW,
     P_VALUE_RANGE,
     PROGRAM_NOT_FOUND,
@@ -55,6 +57,8 @@ ALARM_CODES: dict[int, str] = {
     G_ARGUMENT: "argument-address",
     P_VALUE_RANGE: "program-number",
     COUNT_TWICE: "repeat-count-range",
+    NO_VARIABLE_NAME: "variable-number",
+    NAME_SUBSCRIPT: "variable-number",
 }
 
 SUBJECT_CODES: dict[str, str] = {

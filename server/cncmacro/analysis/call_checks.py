@@ -1,7 +1,8 @@
 """Checks of a block of NC words (docs/semantics.md §5, §7): calls, returns and their words.
 
 The block is read in the interpreter's order (``machine/nc_blocks.py``): a ``G65``/``G66``
-makes the block a macro call (only ``N`` before it and no O word: ``g65-nc-words``, alarm 127);
+makes the block a macro call (only ``N`` before it and no O word: ``g65-nc-words``, alarm 127; a
+modal G code before it is a warning where the dialect's control sets it and calls, FANUC);
 on gsk980tdi ``G65 H..`` without L is the macro A form; otherwise a code that the machine
 settings configure as a call, then ``M98``/``M198`` and ``M99``. What is decided is decided by
 the interpreter's own helpers in ``machine/calls.py`` (``map_arguments`` for argument letters,
@@ -14,8 +15,18 @@ targets ``Jump`` facts; ``M99 Pn`` a ``ReturnJump``.
 from __future__ import annotations
 
 from ..bilingual import in_language
+from ..dialects.alarms import P_VALUE_RANGE
+from ..library.programs import is_program_name
 from ..machine.alarms import MacroAlarm
-from ..machine.calls import macro_program_number, map_arguments, program_and_count, repeat_count
+from ..machine.calls import (
+    argument_targets,
+    bad_name_detail,
+    codes_before_call,
+    macro_program_number,
+    map_arguments,
+    program_and_count,
+    repeat_count,
+)
 from ..machine.hcodes import ARITHMETIC, BRANCHES
 from ..machine.numbers import round_half_away, to_increment
 from ..machine.words import g_code_known, m_decimal_point, unknown_g_code
@@ -61,11 +72,7 @@ def _add(facts: LineFacts, w: Word, severity: str, code: str, en: str, zh: str, 
 
 def _macro_call(words: tuple[Word, ...], at: int, g: float, ctx: LineContext, facts: LineFacts) -> None:
     name = "G65" if g == 65.0 else "G66"
-    if at > 0:
-        w = words[0]
-        _add(facts, w, "error", "g65-nc-words",
-             f"{w.letter} before {name}: only N may precede {name} in its block (alarm 127)",
-             f"{name} 之前只允许出现 N，不能有 {w.letter}（报警 127）", ctx)  # fmt: skip
+    if at > 0 and not _words_before_call(words[:at], name, ctx, facts):
         return
     after = words[at + 1 :]
     for w in after:
@@ -108,6 +115,41 @@ def _macro_call(words: tuple[Word, ...], at: int, g: float, ctx: LineContext, fa
         _check_count(l_word, ctx, facts)
 
 
+def _words_before_call(before: tuple[Word, ...], name: str, ctx: LineContext, facts: LineFacts) -> bool:
+    """Words before G65/G66 through the interpreter's ``codes_before_call``: what the control does
+    with them decides the severity (``Dialect.modal_g_before_call``). An alarm is an error and ends
+    the checks of the block (False); modal G codes that the control sets before it calls are a
+    warning that says so (True: the call is checked on)."""
+    codes = codes_before_call([(w.letter, _code_value(w) if w.letter == "G" else None) for w in before], ctx.dialect)
+    title = ctx.dialect.title
+    if codes is None:
+        w = before[0]
+        word = _g_name(_code_value(w)) if w.letter == "G" and _code_value(w) is not None else w.letter
+        _add(facts, w, "error", "g65-nc-words",
+             f"{word} before {name}: only N may precede {name} in its block; {title} stops with alarm 127",
+             f"{name} 之前只允许出现 N，不能有 {word}：{title} 报警 127（停止运行）", ctx)  # fmt: skip
+        return False
+    shown = " ".join(_g_name(c) for c in codes)
+    w = before[0]
+    facts.findings.append(Finding(w.start, before[-1].end, _SEVERITY_BEFORE_CALL[ctx.dialect.modal_g_before_call],
+                                  "g65-nc-words", pick(ctx.locale,
+        f"{shown} before {name}: {title} sets {shown} (it stays in force) and then {name} calls the macro; "
+        f"controls that allow only N before {name} (GSK) stop with alarm 127, so {shown} is better on a block "
+        "of its own",
+        f"{name} 之前的 {shown}：{title} 先执行 {shown}（模态保持有效），再由 {name} 调用宏程序；"
+        f"{name} 之前只允许 N 的系统（GSK）会报警 127，建议把 {shown} 单独写一段")))  # fmt: skip
+    return True
+
+
+def _g_name(code: float | None) -> str:
+    if code is None:
+        return "G"
+    return f"G{int(code):02d}" if code == int(code) else f"G{code:g}"
+
+
+_SEVERITY_BEFORE_CALL = {"alarm": "error", "execute": "warning"}  # Dialect.modal_g_before_call -> severity
+
+
 def _looks_like_h_code(after: tuple[Word, ...]) -> bool:
     """``G65 H01 P#100 Q..`` written for a control with macro A, read on one without it: H
     right after G65 with an operation number, and P a variable or H a branch or alarm."""
@@ -124,14 +166,28 @@ def _looks_like_h_code(after: tuple[Word, ...]) -> bool:
 
 def _check_arguments(args: list[Word], ctx: LineContext, facts: LineFacts) -> None:
     """Argument letters through the interpreter's ``map_arguments`` (values do not matter to
-    what it refuses, so each is given as 0)."""
+    what it refuses or remarks on, so each is given as 0): an alarm is an ``argument-address``
+    error, a remark (I, J, K out of order on fanuc) an ``argument-order`` warning on the first
+    word out of order."""
     try:
-        map_arguments([(w.letter, 0.0) for w in args], ctx.dialect)
+        mapped = map_arguments([(w.letter, 0.0) for w in args], ctx.dialect)
     except MacroAlarm as alarm:
         bad = _first_refused(args, ctx)
         _add(facts, bad, "error", "argument-address",
              f"{alarm.message} (alarm {alarm.number})",
              f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
+        return
+    if mapped.remarks:
+        k = next(k for k in range(1, len(args) + 1) if map_arguments([(w.letter, 0.0) for w in args[:k]],
+                                                                      ctx.dialect).remarks)  # fmt: skip
+        w = args[k - 1]
+        before = next(a.letter for a in reversed(args[: k - 1]) if a.letter in "IJK")
+        n = argument_targets([a.letter for a in args[:k]])[-1]
+        remark = mapped.remarks[0]
+        _add(facts, w, "warning", "argument-order",
+             f"{w.letter} after {before} in its set: {in_language(remark, False)}; the control still puts it in #{n}",
+             f"{w.letter} 写在同组的 {before} 之后：{in_language(remark, True)}；系统仍把它赋给 #{n}",
+             ctx)  # fmt: skip
 
 
 def _first_refused(args: list[Word], ctx: LineContext) -> Word:
@@ -169,14 +225,24 @@ def _macro_target(call: Word, p_word: Word | None, name: str, ctx: LineContext, 
     facts.calls.append(CallSite(name, program, None, p_word.start, p_word.end))
 
 
-def _named_target(p_word: Word, how: str, ctx: LineContext, facts: LineFacts) -> None:
+def _named_target(p_word: Word, how: str, ctx: LineContext, facts: LineFacts) -> bool:
+    """``P[CUT]``: a dialect without bracketed names, or a name the control refuses, is an
+    error (False); otherwise the name is for ``program-not-found`` to look up (True)."""
     dialect = ctx.dialect
+    name = p_word.name or ""
     if not dialect.bracket_names:
         _add(facts, p_word, "error", "dialect-feature",
-             f"P[{p_word.name}]: {dialect.title} names programs only by number, e.g. P1234",
-             f"P[{p_word.name}]：{dialect.title} 只能用程序号指定程序，例如 P1234", ctx)  # fmt: skip
-        return
-    facts.calls.append(CallSite(how, None, p_word.name, p_word.start, p_word.end))
+             f"P[{name}]: {dialect.title} names programs only by number, e.g. P1234",
+             f"P[{name}]：{dialect.title} 只能用程序号指定程序，例如 P1234", ctx)  # fmt: skip
+        return False
+    if not is_program_name(name):
+        text = bad_name_detail(name)
+        _add(facts, p_word, "error", "program-number",
+             f"{in_language(text, False)} (alarm {P_VALUE_RANGE})",
+             f"{in_language(text, True)}（报警 {P_VALUE_RANGE}）", ctx)  # fmt: skip
+        return False
+    facts.calls.append(CallSite(how, None, name, p_word.start, p_word.end))
+    return True
 
 
 def _check_count(l_word: Word, ctx: LineContext, facts: LineFacts) -> None:
@@ -358,10 +424,9 @@ def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts:
     q_span = (q_word.start, q_word.end) if q_word is not None else (0, 0)
     named = next((w for w in words if w.letter == "P" and w.name is not None), None)
     if named is not None:
-        if not dialect.bracket_names:
-            _named_target(named, how, ctx, facts)
+        if not _named_target(named, how, ctx, facts):
             return
-        facts.calls.append(CallSite(how, None, named.name, named.start, named.end, q, q_span))
+        facts.calls[-1] = CallSite(how, None, named.name, named.start, named.end, q, q_span)
         if l_word is not None:
             _check_count(l_word, ctx, facts)
         return

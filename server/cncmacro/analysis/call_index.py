@@ -26,10 +26,10 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..dialects import get_dialect
 from ..library.dialect_choice import choose_dialect
 from ..library.files import BinaryFileError, decode_program, is_program_file, stays_inside
 from ..library.machine_file import MachineSettings
+from ..library.profiles import machine_profile
 from ..library.programs import load_text
 from . import static_checks
 from .locale import pick
@@ -158,7 +158,9 @@ class CallIndex:
         self.files_parsed += 1
         loaded = load_text(path, text)
         ctx = static_checks.line_context(
-            get_dialect(choose_dialect(loaded.lines, self.settings.dialect, self.dialect)), self.settings, self.locale
+            machine_profile(choose_dialect(loaded.lines, self.settings.dialect, self.dialect), self.settings),
+            self.settings,
+            self.locale,
         )
         program = loaded.program
         blocks = program.blocks

@@ -22,6 +22,7 @@ class ProgramFinder:
     """Looks up call targets for one file, each target once."""
 
     def __init__(self, program: Program, file: str, dialect: Dialect, library: ProgramLibrary | None) -> None:
+        self.dialect = dialect
         self.program = program
         self.near = LoadedFile(file, [], program, dialect.name)
         self.library = library
@@ -42,7 +43,10 @@ class ProgramFinder:
                 elif self.library is None:
                     return UNKNOWN
                 else:
-                    self._numbers[number] = self.library.find_number(number, self.near)
+                    found = self.library.find_number(number, self.near)
+                    if found is None and self.dialect.on_control(number):
+                        found = self.library.control_program(number)
+                    self._numbers[number] = found
             return self._numbers[number]
         name = site.name or ""
         if self.library is None:

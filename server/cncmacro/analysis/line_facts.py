@@ -14,8 +14,9 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from ..dialects.dialect import BY_NAME, Dialect
+from ..dialects import BY_NAME, Dialect
 from ..library.machine_file import MachineSettings
+from ..library.profiles import machine_profile
 from ..machine.expressions import ExpressionCompiler, VariableKinds
 from ..machine.words import plain_line_pattern
 
@@ -88,13 +89,14 @@ class LineContext:
     """The dialect, settings and locale of a check, with what they imply made once."""
 
     def __init__(self, dialect: Dialect, settings: MachineSettings, locale: str = "en") -> None:
+        dialect = machine_profile(dialect, settings)
         self.dialect = dialect
         self.settings = settings
         self.locale = locale
-        self.kinds = VariableKinds(dialect, settings.common)
+        self.kinds = VariableKinds(dialect)
         self.values = ExpressionCompiler(self.kinds)
         # the other dialects, to tell a feature this one lacks from a plain mistake
-        self.other_kinds = [VariableKinds(d, settings.common) for d in BY_NAME.values() if d is not dialect]
+        self.other_kinds = [VariableKinds(d) for d in BY_NAME.values() if d.name != dialect.name]
         self.calls = settings.calls
         self.plain_hint = _plain_hint(settings, dialect)
 

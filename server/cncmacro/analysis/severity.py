@@ -31,12 +31,17 @@ CODES: dict[str, CodeInfo] = {
     "bracket-depth": CodeInfo("error", "More than 5 nested brackets (alarm 118)."),
     "undefined-label": CodeInfo("error", "A GOTO, M99 P, M98 Q or H80-H86 target has no N label."),
     "duplicate-label": CodeInfo("warning", "An N number is used twice where it is a jump target."),
+    "duplicate-program": CodeInfo("warning", "An O number used twice in a file: the control keeps the first program."),
     "label-range": CodeInfo("error", "A GOTO target is outside 1-99999."),
     "loop-mismatch": CodeInfo("error", "DO without END, END without DO, or crossing loops (alarms 124/126)."),
     "loop-number": CodeInfo("error", "A DO/END number outside 1-3, or loops nested deeper than 3 (alarm 126)."),
     "jump-into-loop": CodeInfo("error", "A jump into a DO range from outside it."),
-    "g65-nc-words": CodeInfo("error", "G65/G66 shares its block with another G or M code, an O word or a prior word."),
+    "g65-nc-words": CodeInfo(
+        "error", "G65/G66 shares its block with another G or M code, an O word or a prior word (a modal G code "
+        "before it is a warning where the control sets it and calls)."
+    ),
     "argument-address": CodeInfo("error", "G, L, N, O or P used as a macro argument (alarm 129)."),
+    "argument-order": CodeInfo("warning", "I, J, K arguments out of their I, J, K order within a set (fanuc)."),
     "repeat-count-range": CodeInfo("error", "A repeat count (L, or the count in P) is outside 1-9999."),
     "program-not-found": CodeInfo("error", "A call names a program that is not in the workspace."),
     "program-number": CodeInfo("error", "A program number has too many digits, or a program name is not allowed."),
@@ -45,6 +50,7 @@ CODES: dict[str, CodeInfo] = {
     "write-only": CodeInfo("error", "A write-only system variable is read."),
     "nc-and-macro": CodeInfo("error", "NC words and a macro statement in one block (alarm 127)."),
     "dialect-feature": CodeInfo("error", "Syntax that the selected dialect lacks."),
+    "profile-suggestion": CodeInfo("information", "The file reads cleanly as another profile: likely written for it."),
     "nesting-depth": CodeInfo("error", "Macro or subprogram nesting is exceeded when the program runs."),
     "division-by-zero": CodeInfo("error", "A division by zero found by running the program (alarm 112)."),
     "argument-range": CodeInfo("error", "A SQRT, ASIN, ACOS or LN argument out of range, found by running (119)."),

@@ -2,11 +2,11 @@
 
 ``static_diagnostics`` checks a whole parsed file: each line on its own (``line_facts``: the
 statements, the words, the variables; see ``statement_checks``, ``call_checks`` and
-``variable_checks``), then what connects the lines (``loop_checks``, and ``label_checks`` with the
-program lookups of ``call_targets``). The per-line part is a pure function of the block, the
-dialect, the machine settings and the locale, so an incremental analysis may cache it per block
-and call ``block_diagnostics`` for changed lines only (``static_lines`` does), then
-``cross_line_diagnostics``. A plain CAM line (``Block.plain``) is
+``variable_checks``), then what connects the lines (``unit_checks`` for repeated O numbers,
+``loop_checks``, and ``label_checks`` with the program lookups of ``call_targets``). The per-line
+part is a pure function of the block, the dialect, the machine settings and the locale, so an
+incremental analysis may cache it per block and call ``block_diagnostics`` for changed lines only
+(``static_lines`` does), then ``cross_line_diagnostics``. A plain CAM line (``Block.plain``) is
 looked at only when its text holds a call or return code; its words are never built otherwise.
 Syntax errors are ``syntax_check``'s: a block that does not parse is not checked here.
 """
@@ -27,6 +27,7 @@ from .line_facts import LineContext, LineFacts
 from .loop_checks import loop_diagnostics
 from .statement_checks import check_abbreviations, check_statements
 from .tape_checks import tape_diagnostics
+from .unit_checks import duplicate_program_diagnostics
 
 _contexts: dict[tuple[str, int, str], LineContext] = {}
 
@@ -110,7 +111,7 @@ def static_diagnostics(
             out.extend(findings_of(facts, line, file))
         if facts.jumps or facts.calls or facts.returns:
             collected.append((line, facts))
-    out.extend(cross_line_diagnostics(program, file, dialect, library, locale, collected))
+    out.extend(cross_line_diagnostics(program, file, ctx.dialect, library, locale, collected))
     out.sort(key=Diagnostic.sort_key)
     return out
 
@@ -123,11 +124,12 @@ def cross_line_diagnostics(
     locale: str,
     collected: list[tuple[int, LineFacts]],
 ) -> list[Diagnostic]:
-    """What connects the lines: loops, and the labels and call targets of ``collected`` (the
-    lines with jumps, calls or returns, in line order, with their facts). A fault of the checker
-    here is one ``internal-error`` on the file's first line (faults.py)."""
+    """What connects the lines: repeated O numbers, loops, and the labels and call targets of
+    ``collected`` (the lines with jumps, calls or returns, in line order, with their facts). A
+    fault of the checker here is one ``internal-error`` on the file's first line (faults.py)."""
     try:
-        out = loop_diagnostics(program, file, locale)
+        out = duplicate_program_diagnostics(program, file, locale)
+        out.extend(loop_diagnostics(program, file, locale))
         out.extend(tape_diagnostics(program, file, locale))
         finder = ProgramFinder(program, file, dialect, library)
         out.extend(LabelChecker(program, file, finder, locale).run(collected))

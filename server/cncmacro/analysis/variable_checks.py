@@ -5,7 +5,11 @@ a literal ``#n`` (or ``#[constant]``) whose number the dialect lacks is ``variab
 (alarm 115), reading a write-only system variable is ``write-only``, more than five nested
 brackets in what the interpreter compiles as one value is ``bracket-depth`` (alarm 118), and a
 C-style relation (``==``, ``<``) where the dialect has none is ``dialect-feature``, and so is
-gsk980tdi's ``#9xxx`` indirection on a dialect without it.
+gsk980tdi's ``#9xxx`` indirection on a dialect without it. A name ``[#_NAME[n]]`` is judged
+by the interpreter's ``named_number`` (an unknown name or a bad literal subscript is
+``variable-number``, alarm 1098/1099), and is ``dialect-feature`` where the dialect has no names;
+a function call by ``call_problem`` (a form no dialect has is ``syntax``, a FANUC 30i function
+elsewhere ``dialect-feature``, alarm 114).
 ``check_write`` judges the target of an assignment: ``#0`` and read-only system variables are
 ``write-protected`` (alarm 116). Variable classes come from the interpreter's ``VariableKinds``
 and access rights from the dialect tables, never from a list of our own.
@@ -13,9 +17,12 @@ and access rights from the dialect tables, never from a list of our own.
 
 from __future__ import annotations
 
-from ..machine.expressions import MAX_BRACKETS, bracket_depth
+from ..bilingual import in_language
+from ..machine.alarms import MacroAlarm
+from ..machine.expressions import MAX_BRACKETS, bracket_depth, call_problem
 from ..machine.numbers import round_half_away
-from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, Number, Relation, Unary, Var
+from ..machine.variables import named_number
+from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, NamedVar, Number, Relation, Unary, Var
 from .line_facts import Finding, LineContext
 from .locale import pick
 
@@ -46,6 +53,7 @@ def scan_value(node: Expr, ctx: LineContext, out: list[Finding], depth_checked: 
         elif cls is Bracket:
             push(n.inner)  # type: ignore[union-attr]
         elif cls is Call:
+            _check_call(n, ctx, out)  # type: ignore[arg-type]
             stack.extend(n.args)  # type: ignore[union-attr]
         elif cls is Unary:
             push(n.operand)  # type: ignore[union-attr]
@@ -58,6 +66,12 @@ def scan_value(node: Expr, ctx: LineContext, out: list[Finding], depth_checked: 
             _check_relation(n, ctx, out)  # type: ignore[arg-type]
             push(n.left)  # type: ignore[union-attr]
             push(n.right)  # type: ignore[union-attr]
+        elif cls is NamedVar:
+            number = named_variable_number(n, ctx, out)  # type: ignore[arg-type]
+            if number is not None:
+                _check_read(number, n.start, n.end, ctx, out)
+            if n.index is not None:  # type: ignore[union-attr]
+                push(n.index)  # type: ignore[union-attr]
 
 
 def constant_index(node: IndirectVar, ctx: LineContext) -> int | None:
@@ -68,9 +82,62 @@ def constant_index(node: IndirectVar, ctx: LineContext) -> int | None:
     return int(round_half_away(value))
 
 
-def check_write(target: Var | IndirectVar, ctx: LineContext, out: list[Finding]) -> None:
+def named_variable_number(node: NamedVar, ctx: LineContext, out: list[Finding]) -> int | None:
+    """The number ``[#_NAME[n]]`` stands for when the text decides it (no subscript, or a literal
+    one), else None; a finding when the dialect has no names or the name or subscript is wrong."""
+    d = ctx.dialect
+    if not d.variable_names:
+        other = next((k.dialect for k in ctx.other_kinds if k.dialect.variable_name(node.name) is not None), None)
+        feature = f"a {other.title} feature" if other else "not a feature of this control"
+        feature_zh = f"是 {other.title} 的功能" if other else "不是本系统的功能"
+        out.append(
+            Finding(
+                node.start,
+                node.end,
+                "error",
+                "dialect-feature",
+                pick(
+                    ctx.locale,
+                    f"{node.text}: system variable names are {feature}; on {d.title} write the variable number "
+                    "(alarm 114)",
+                    f"{node.text}：系统变量名{feature_zh}；在 {d.title} 上请写变量号（报警 114）",
+                ),
+            )
+        )
+        return None
+    subscript: float | None = None
+    if node.index is not None:
+        is_constant, subscript = ctx.values.constant(node.index)
+        if not is_constant or subscript is None:
+            if d.variable_name(node.name) is not None:
+                return None  # the subscript is known when the block runs
+            subscript = 1.0  # an unknown name is wrong whatever the subscript
+    try:
+        return named_number(d, node.name, subscript, node.index is not None)
+    except MacroAlarm as alarm:
+        out.append(
+            Finding(
+                node.start,
+                node.end,
+                "error",
+                "variable-number",
+                pick(ctx.locale, f"{alarm.message} (alarm {alarm.number})",
+                     f"{in_language(alarm.message, True)}（报警 {alarm.number}）"),
+            )
+        )  # fmt: skip
+        return None
+
+
+def check_write(target: Var | IndirectVar | NamedVar, ctx: LineContext, out: list[Finding]) -> None:
     """The target of ``#n = ...`` (or a G65 H destination ``P#n``)."""
-    if isinstance(target, IndirectVar):
+    if isinstance(target, NamedVar):
+        if target.index is not None:
+            scan_value(target.index, ctx, out)
+        found = named_variable_number(target, ctx, out)
+        if found is None:
+            return
+        number = found
+    elif isinstance(target, IndirectVar):
         scan_value(target.index, ctx, out)
         number = constant_index(target, ctx)
         if number is None:
@@ -158,12 +225,25 @@ def _missing(number: int, start: int, end: int, ctx: LineContext) -> Finding:
             f"#{number}：在 {d.title} 上 #9 后接公共变量号表示变量置换，而 #{number - 9000} 不是公共变量（报警 115）",
         )
     else:
-        message = pick(
-            loc,
-            f"#{number} does not exist on {d.title} (alarm 115)",
-            f"#{number} 在 {d.title} 上不存在（报警 115）",
-        )
+        said = d.missing_variable(number)
+        message = pick(loc, f"{said} (alarm 115)", f"{said.zh}（报警 115）")
     return Finding(start, end, "error", "variable-number", message)
+
+
+def _check_call(node: Call, ctx: LineContext, out: list[Finding]) -> None:
+    problem = call_problem(node, ctx.dialect)
+    if problem is None:
+        return
+    code, message = problem
+    out.append(
+        Finding(
+            node.start,
+            node.end,
+            "error",
+            code,
+            pick(ctx.locale, f"{message} (alarm 114)", f"{in_language(message, True)}（报警 114）"),
+        )
+    )
 
 
 def _check_relation(node: Relation, ctx: LineContext, out: list[Finding]) -> None:

@@ -16,7 +16,8 @@
 (file -> 0-based line -> ``[(variable number, value)]``, the value each assignment on that
 line left the last time a run executed it; None is vacant).
 
-Which programs run: every O program of the open files that no workspace file calls with a
+Which programs run: every O program of the open files (but a repeated O number's later copy,
+which the control does not keep: ``ProgramUnit.duplicate``) that no workspace file calls with a
 literal target (G65/G66/M98/call codes) runs on its own, with vacant arguments, ``M99`` at
 level 0 ending it; a called program is analysed through its callers, with their arguments,
 and its findings appear in its own file. A called program that no caller's run entered gets
@@ -62,9 +63,10 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..dialects import Dialect, get_dialect
+from ..dialects import DIALECTS, Dialect, get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
 from ..library.machine_file import MachineSettings
+from ..library.profiles import machine_profile
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..machine.machine import LIMIT
 from ..syntax.document import ParsedDocument
@@ -76,6 +78,7 @@ from .caller_entries import CallerSearch
 from .diagnostics import UNNECESSARY, Diagnostic
 from .faults import RUN, internal_error
 from .locale import pick
+from .profile_suggestion import suggestion
 from .run_checks import MAX_RECORDS, MAX_SECONDS, EntryRun, run_diagnostics
 from .severity import apply_severities, check_overrides
 from .static_lines import StaticLines
@@ -251,7 +254,7 @@ class WorkspaceAnalysis:
 
     # ---------------------------------------------------------------- dialects and calls
     def dialect_of(self, lines: list[str]) -> Dialect:
-        return get_dialect(choose_dialect(lines, self.settings.dialect, self.dialect_setting))
+        return machine_profile(choose_dialect(lines, self.settings.dialect, self.dialect_setting), self.settings)
 
     def _calls_in(self, block: Block, d: _Open) -> bool:
         ctx = static_checks.line_context(self.dialect_of(d.doc.lines), self.settings, self.locale)
@@ -277,7 +280,10 @@ class WorkspaceAnalysis:
         by_number: dict[int, list[tuple[str, int]]] = {}
         by_name: dict[str, list[tuple[str, int]]] = {}
         for path, d in self.docs.items():
+            ignored = [u for u in d.doc.program.units if u.duplicate]
             for line, number, name in self._static(d).call_sites(d.doc.program.read_end):
+                if ignored and any(line in u for u in ignored):
+                    continue  # a copy the control does not keep calls nothing
                 if number is not None:
                     by_number.setdefault(number, []).append((path, line))
                 elif name is not None:
@@ -289,7 +295,7 @@ class WorkspaceAnalysis:
             stem = Path(path).stem
             m = _DIGITS.match(stem)
             for k, unit in enumerate(program.units):
-                if not _runnable(program.blocks, unit):
+                if unit.duplicate or not _runnable(program.blocks, unit):
                     continue
                 sites = list(by_number.get(unit.number, ())) if unit.number is not None else []
                 if unit.number is None and k == 0:
@@ -496,6 +502,11 @@ class WorkspaceAnalysis:
         if d.own is None:
             static = self._static(d)
             d.own = static.diagnostics(d.doc.program, d.path, static.ctx.dialect, self.library, self.locale)
+            chosen = dialect_from_text(d.doc.lines[:HEADER_LINES])  # a file that names its profile is not asked
+            hint = None if chosen else suggestion(d.own, d.doc.program, d.path, static.ctx.dialect, self.settings,
+                                                  self.locale)  # fmt: skip
+            if hint is not None:
+                d.own.append(hint)
         return d.own
 
     def _result(self, version: int | None) -> AnalysisResult:
@@ -579,11 +590,19 @@ class WorkspaceAnalysis:
 
 
 _CLOCK_NUMBERS = sorted({
-    str(n) for name in ("fanuc", "gsk980tdi") for row in get_dialect(name).system_variables()
+    str(n) for name in DIALECTS for row in get_dialect(name).system_variables()
     if row.source in ("timer", "date", "time") for n in range(row.first, row.last + 1)
 })  # fmt: skip
-# a read of the clock: ``#[``, a clock variable, or a GSK ``#9xxx`` (indirection through a common)
-_CLOCK_READ = re.compile(r"#[ \t]*(?:\[|0*(?:" + "|".join(_CLOCK_NUMBERS) + r"|9\d{3})(?!\d))")
+_CLOCK_NAMES = sorted({
+    v.name for name in DIALECTS for v in get_dialect(name).system_variable_names()
+    if any(str(n) in _CLOCK_NUMBERS for n in range(v.first, v.last + 1))
+})  # fmt: skip
+# a read of the clock: ``#[``, a clock variable (by number or 30i name), or a GSK ``#9xxx``
+# (indirection through a common)
+_CLOCK_READ = re.compile(
+    r"#[ \t]*(?:\[|0*(?:" + "|".join(_CLOCK_NUMBERS) + r"|9\d{3})(?!\d)|_(?:" + "|".join(_CLOCK_NAMES) + r")(?!\w))",
+    re.I,
+)
 
 
 def _clock_reads(lines: list[str]) -> int:

@@ -9,15 +9,15 @@ from __future__ import annotations
 import argparse
 import sys
 
-from ..dialects import DIALECTS
 from .check import main_check
+from .profiles import add_dialect_option, add_profiles_parser
 from .run import add_run_parser
 
 
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="cncmacro",
-        description="Check CNC custom-macro programs (FANUC 0i Macro B, GSK980TDi) "
+        description="Check CNC custom-macro programs (FANUC 0i and 30i Macro B, GSK980TDi) "
         "before they reach a machine.",
     )
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
@@ -26,7 +26,7 @@ def build_parser() -> argparse.ArgumentParser:
         "check", help="report problems in program files", description="Report problems in program files."
     )
     check.add_argument("paths", nargs="+", metavar="PATH", help="program files, or folders to search for them")
-    check.add_argument("--dialect", choices=DIALECTS, help="dialect when a file does not name one (default fanuc)")
+    add_dialect_option(check, "when neither the file nor the machine file names one")
     check.add_argument(
         "--format", choices=("text", "json", "sarif"), default="text", help="output format (default text)"
     )
@@ -41,6 +41,7 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--hints", action="store_true", help="also report hints (blocks no analysis run reached)")
     check.set_defaults(handler=main_check)
     add_run_parser(sub)
+    add_profiles_parser(sub)
     lsp = sub.add_parser(
         "lsp", help="language server (LSP on stdio)", description="Run the language server on stdio, or on TCP."
     )

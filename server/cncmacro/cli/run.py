@@ -25,6 +25,7 @@ from ..machine.frames import MODE_NAMES, Move
 from ..machine.machine import ALARM, LIMIT, PAUSED
 from ..machine.numbers import format_plain
 from ..machine.setup import prepare_run
+from .profiles import add_dialect_option
 
 MAX_TEXT_MOVES = 1000
 STATUS_ZH = {"completed": "完成", "alarm": "报警", "limit": "达到程序段数上限", "stopped": "停止"}
@@ -38,9 +39,7 @@ def add_run_parser(sub: Any) -> None:
         description="Run a program on the simulated machine: the moves it makes, its alarms and its final variables.",
     )
     run.add_argument("file", metavar="FILE", help="the program to run")
-    run.add_argument(
-        "--dialect", choices=("fanuc", "gsk980tdi"), help="dialect when neither the file nor the machine file names one"
-    )
+    add_dialect_option(run, "when neither the file nor the machine file names one")
     run.add_argument(
         "--path", action="append", default=[], metavar="DIR", help="another folder where called programs are looked up"
     )
@@ -104,7 +103,8 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
                        f"cncmacro run：无法保存断电保持的公共变量（#500–#999）：{e}"), file=err)  # fmt: skip
     result = machine.result()
     if args.json:
-        write_json({"dialect": dialect.name, **result_json(result, dialect.axes, args.locale)}, out)
+        head = {"dialect": dialect.name, "lathe": dialect.lathe}
+        write_json({**head, **result_json(result, dialect.axes, args.locale)}, out)
     else:
         write_text(result, machine, out, args.locale)
     return {ALARM: 1, LIMIT: 3}.get(result.status, 0)

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..dialects import DIALECTS
+from ..dialects import DIALECTS, normalise_dialect
 from ..library.machine_file import parse_preset
 from ..machine import Machine
 from ..machine.setup import PreparedRun, SetupError, prepare_run
@@ -50,8 +50,11 @@ class LaunchConfig:
         if not isinstance(program, str) or not program:
             raise LaunchError("the launch configuration needs 'program': the file to run")
         dialect = args.get("dialect")
-        if dialect is not None and dialect not in DIALECTS:
-            raise LaunchError(f"'dialect' must be one of {', '.join(DIALECTS)}, not {dialect!r}")
+        if dialect is not None:
+            named = normalise_dialect(dialect) if isinstance(dialect, str) else None
+            if named is None:
+                raise LaunchError(f"'dialect' must be one of {', '.join(DIALECTS)}, not {dialect!r}")
+            dialect = named
         machine = args.get("machine")
         if machine is not None and not isinstance(machine, str):
             raise LaunchError("'machine' must be the path of a machine file")

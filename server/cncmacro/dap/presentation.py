@@ -66,9 +66,12 @@ def stack_frames(machine: Machine) -> list[dict[str, Any]]:
     for level in range(len(machine.frames) - 1, -1, -1):
         f = machine.frames[level]
         line = min(f.pc, max(0, len(f.found.file.lines) - 1))
+        source: dict[str, Any] = {"name": Path(f.file).name, "path": f.file}
+        if f.found.file.on_control:  # kept on the control: no file to show
+            source = {"name": f.file, "presentationHint": "deemphasize"}
         out.append({
             "id": level + 1, "name": frame_name(machine.frames, level), "line": line + 1, "column": 1,
-            "source": {"name": Path(f.file).name, "path": f.file},
+            "source": source,
         })  # fmt: skip
     return out
 
@@ -83,11 +86,12 @@ def decode_reference(ref: int) -> tuple[int, int]:
 
 
 def scopes(machine: Machine, level: int, locale: str | None) -> list[dict[str, Any]]:
-    first, last = machine.kinds.common
+    volatile = ", ".join(r.text().replace("-", "–") for r in machine.kinds.volatile)
+    kept = ", ".join(r.text().replace("-", "–") for r in machine.kinds.persistent)
     names = {
         LOCALS: pick(locale, "Locals", "局部变量"),
-        COMMON: pick(locale, f"Common #{first}–#{last}", f"公共变量 #{first}–#{last}"),
-        PERSISTENT: pick(locale, "Persistent #500–#999", "保持型变量 #500–#999"),
+        COMMON: pick(locale, f"Common {volatile}", f"公共变量 {volatile}"),
+        PERSISTENT: pick(locale, f"Persistent {kept}", f"保持型变量 {kept}"),
         POSITION: pick(locale, "Position", "位置"),
         MODAL: pick(locale, "Modal", "模态"),
         OFFSETS: pick(locale, "Offsets", "偏置"),
@@ -129,11 +133,9 @@ def rows(machine: Machine, level: int, scope: int, locale: str | None) -> list[S
         local = machine.frames[level].locals
         letters = letters_for(machine, level)
         return [Shown(n, f"#{n} ({letters[n]})" if n in letters else f"#{n}", local[n]) for n in range(1, 34)]
-    if scope == COMMON:
-        first, last = machine.kinds.common
-        return [Shown(n, f"#{n}", machine.C[n]) for n in range(first, last + 1)]
-    if scope == PERSISTENT:
-        return [Shown(n, f"#{n}", machine.C[n]) for n in range(500, 1000)]
+    if scope in (COMMON, PERSISTENT):
+        ranges = machine.kinds.volatile if scope == COMMON else machine.kinds.persistent
+        return [Shown(n, f"#{n}", machine.read(n)) for r in ranges for n in range(r.first, r.last + 1)]
     return _system_rows(machine, scope, locale)
 
 

@@ -155,7 +155,7 @@ class Stepper:
             stop = self._status_stop()
             if stop is not None:
                 return stop
-            if mode == STEP_IN:
+            if mode == STEP_IN and not m.frames[-1].found.file.on_control:  # no source to step through
                 return Stop("step")
             if hit is not None:
                 return Stop(hit.reason, hit.description, None, hit.ids)

@@ -1,27 +1,40 @@
-"""The dialects: data (variable ranges, tables, alarm numbers, switches), never code paths.
+"""The control profiles (dialects): data (variable ranges, tables, alarm numbers, switches), never
+code paths.
 
-Two dialects exist: ``fanuc`` (FANUC 0i Custom Macro B, the default) and ``gsk980tdi``.
+The built-in profiles are the modules of ``dialects/profiles/`` (``fanuc-0i``, the default, once
+named ``fanuc``; ``fanuc-30i``; ``gsk980tdi``); ``registry`` lists them. docs/profiles.md says
+what each covers and how to add one.
 """
 
 from __future__ import annotations
 
-from .dialect import BY_NAME, Dialect
+from .dialect import Dialect
+from .registry import DEFAULT_PROFILE, all_profiles, names_and_aliases
 
-DEFAULT_DIALECT = "fanuc"
-DIALECTS = ("fanuc", "gsk980tdi")
-_ALIASES = {"fanuc": "fanuc", "fanuc0i": "fanuc", "gsk": "gsk980tdi", "gsk980tdi": "gsk980tdi", "gsk980": "gsk980tdi"}
+DEFAULT_DIALECT = DEFAULT_PROFILE
+DIALECTS: tuple[str, ...] = tuple(d.name for d in all_profiles())
+BY_NAME: dict[str, Dialect] = {d.name: d for d in all_profiles()}
 
 
 def normalise_dialect(name: str | None) -> str | None:
-    """The dialect's canonical name, or None for None or an unknown name."""
+    """The profile's canonical name, or None for None or an unknown name."""
     if not name:
         return None
-    return _ALIASES.get(name.strip().lower().replace(" ", ""))
+    return names_and_aliases().get(name.strip().lower().replace(" ", "").replace("_", "-"))
 
 
 def get_dialect(name: str | None = None) -> Dialect:
     """The ``Dialect`` for a name or alias (the default for None); ``ValueError`` if unknown."""
     canonical = normalise_dialect(name) if name else DEFAULT_DIALECT
     if canonical is None:
-        raise ValueError(f"unknown dialect {name!r}; choose one of {', '.join(DIALECTS)}")
+        raise ValueError(f"unknown profile {name!r}; choose one of {', '.join(DIALECTS)}")
     return BY_NAME[canonical]
+
+
+def choices_text(zh: bool = False) -> str:
+    """The profiles as a user reads them in a message: ``fanuc-0i, fanuc-30i or gsk980tdi``
+    (``fanuc-0i、fanuc-30i 或 gsk980tdi`` in Chinese)."""
+    names = list(DIALECTS)
+    if len(names) == 1:
+        return names[0]
+    return ("、".join(names[:-1]) + " 或 " if zh else ", ".join(names[:-1]) + " or ") + names[-1]

@@ -1,7 +1,8 @@
 """Alarm numbers and their texts, in English and Chinese (docs/semantics.md §6).
 
-The numbers are FANUC 0i's where the manuals give no other (both dialects share them); the
-GSK-only numbers (291, 293) come from seeds 001 and 002. A macro alarm raised by ``#3000``
+The numbers are FANUC 0i's where the manuals give no other (every dialect shares them); the
+GSK-only numbers (291, 293) come from seeds 001 and 002, the FANUC 30i's for variable names
+(1098, 1099) from its alarm list (docs/profiles.md). A macro alarm raised by ``#3000``
 (3000+n on fanuc, 5900+n on gsk980tdi) or ``G65 H99`` carries the program's own text instead.
 """
 
@@ -29,6 +30,8 @@ SEQUENCE_NUMBER = 128
 G_ARGUMENT = 129
 P_VALUE_RANGE = 291
 COUNT_TWICE = 293
+NO_VARIABLE_NAME = 1098
+NAME_SUBSCRIPT = 1099
 
 ALARMS: dict[int, AlarmDoc] = {
     a.number: a
@@ -53,6 +56,8 @@ ALARMS: dict[int, AlarmDoc] = {
         AlarmDoc(G_ARGUMENT, "illegal address in the argument list", "自变量中使用了非法地址"),
         AlarmDoc(P_VALUE_RANGE, "P value out of range", "P值超出范围"),
         AlarmDoc(COUNT_TWICE, "repeat count given in both P and L", "P和L同时指定了调用次数"),
+        AlarmDoc(NO_VARIABLE_NAME, "no such variable name", "没有该变量名"),
+        AlarmDoc(NAME_SUBSCRIPT, "illegal subscript [ ] of a variable name", "变量名的下标[ ]错误"),
     )
 }
 

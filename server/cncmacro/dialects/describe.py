@@ -22,17 +22,17 @@ NULL = "null"
 UNDEFINED = "undefined"
 
 
-def variable_class(number: int, common: tuple[int, int] = (100, 199)) -> str:
-    """``local`` (#1–#33), ``common`` (the volatile range), ``persistent`` (#500–#999),
-    ``system`` (#1000 and above), ``null`` (#0) or ``undefined`` (any other number)."""
+def variable_class(number: int, dialect: Dialect) -> str:
+    """``local`` (#1–#33), ``common`` (a volatile common range of the profile as the machine has
+    it), ``persistent`` (a kept one, #500–#999), ``system`` (#1000 and above), ``null`` (#0) or
+    ``undefined`` (any other number)."""
     if number == 0:
         return NULL
     if 1 <= number <= 33:
         return LOCAL
-    if common[0] <= number <= common[1] and not 500 <= number <= 999:
-        return COMMON
-    if 500 <= number <= 999:
-        return PERSISTENT
+    common = dialect.common_range_of(number)
+    if common is not None:
+        return PERSISTENT if common.persistent else COMMON
     if number >= 1000:
         return SYSTEM
     return UNDEFINED

@@ -1,17 +1,20 @@
-"""A dialect as one object: its switches (docs/semantics.md's per-dialect rules) and its tables.
+"""A control profile as one object: its switches (docs/semantics.md's per-profile rules) and its tables.
 
-The interpreter never asks "is this gsk?"; it reads a switch or a table from here. Adding a
-dialect means adding a data module and one ``Dialect`` value, not a code path.
+The interpreter never asks "is this gsk?"; it reads a switch or a table from here. Each built-in
+profile is one module in ``dialects/profiles/`` that defines a ``Dialect`` value; a machine file
+narrows or extends it (``Dialect.configured``). Adding a control means adding a profile module
+(and its data), not a code path: see docs/profiles.md.
 """
 
 from __future__ import annotations
 
 import importlib
 from bisect import bisect_right
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cache
 
-from .tables import CodeDoc, FunctionDoc, SystemVariable
+from ..bilingual import Detail, detail
+from .tables import CodeDoc, CommonRange, FunctionDoc, SystemVariable, SystemVariableName
 
 # G65 argument specification I (docs/semantics.md §5): letter -> local variable number.
 ARGUMENTS_I = {
@@ -70,8 +73,70 @@ class Dialect:
     word_format_alarms: bool = False
     # §1 the first two or more letters of a macro word stand for the word (WH for WHILE)
     keyword_abbreviations: bool = False
-    # §4 IF [cond] <statement> without THEN runs the statement (Haas); elsewhere alarm 114
+    # §4 IF [cond] <statement> without THEN runs the statement (FANUC profiles, Haas); elsewhere
+    # alarm 114
     if_without_then: bool = False
+    # other names the profile answers to (``fanuc`` for ``fanuc-0i``), in machine files, file
+    # comments, settings and on the command line
+    aliases: tuple[str, ...] = ()
+    # one line on what the profile is, for a programmer choosing one (English, Chinese)
+    summary: str = ""
+    summary_zh: str = ""
+    # §2 the common variables: every range the control can have, the default in force unless a
+    # machine file names fewer (docs/semantics.md §2 "Common variables")
+    common_ranges: tuple[CommonRange, ...] = (CommonRange(100, 499, False), CommonRange(500, 999, True))
+    # §5 M98 P: digits of a program number; a P with more digits carries the repeat count before them
+    m98_program_digits: int = 4
+    # system variables a machine file adds or describes anew; they win over the profile's rows
+    extra_rows: tuple[SystemVariable, ...] = ()
+    # programs kept on the control rather than in the workspace (a machine file's
+    # ``programs_on_control``): a call to one is a call that returns at once
+    programs_on_control: tuple[tuple[int, int], ...] = ()
+
+    # §5 a modal G code before G65/G66 in its block: "alarm" (only N may precede the call, alarm 127)
+    # or "execute" (the G code takes effect and stays in force, then the macro is called)
+    modal_g_before_call: str = "alarm"
+    # §5 G66 calls after a block that moves some distance (True: ``G0 U0 W0`` calls nothing) or
+    # after any block with a move command (False)
+    modal_call_needs_distance: bool = False
+
+    # §2 system variable names [#_NAME] and [#_NAME[n]] (the data module's SYSTEM_VARIABLE_NAMES)
+    variable_names: bool = False
+    # §3 functions beyond the common set: names (POW, ADP, PRM) and extra forms by signature (ATAN[a,b])
+    extra_functions: frozenset[str] = frozenset()
+
+    def configured(self, **changes: object) -> Dialect:
+        """This profile as one machine has it (a machine file's commons, digits and variables)."""
+        return replace(self, **changes)  # type: ignore[arg-type]
+
+    def on_control(self, number: int) -> bool:
+        """Whether program ``number`` lives on the control (a machine file says so)."""
+        return any(first <= number <= last for first, last in self.programs_on_control)
+
+    def common_range_of(self, number: int) -> CommonRange | None:
+        """The common range ``#number`` is in, or None."""
+        for r in self.common_ranges:
+            if r.first <= number <= r.last:
+                return r
+        return None
+
+    def missing_variable(self, number: int) -> Detail:
+        """What to tell a programmer about ``#number`` when it does not exist (English, Chinese):
+        below #1000 it names the machine's common ranges, which a machine file may widen."""
+        if 100 <= number < 1000:
+            ranges = ", ".join(r.text() for r in self.common_ranges)
+            return detail(f"#{number} is not a common variable of this machine ({self.title}: {ranges}; "
+                          "a machine with more sets 'common' in .cncmacro.toml)",
+                          f"#{number} 不是本机床的公共变量（{self.title}：{ranges}；"
+                          "机床有更多公共变量时，请在机床设置文件中设定）")  # fmt: skip
+        return detail(f"#{number} does not exist on {self.title}", f"{self.title} 没有变量 #{number}")
+
+    def allows_common(self, first: int, last: int) -> CommonRange | None:
+        """The profile's common range that holds ``#first``–``#last``, or None."""
+        for r in self.common_ranges:
+            if r.first <= first <= last <= r.last:
+                return r
+        return None
 
     @property
     def incremental_letters(self) -> dict[str, str]:
@@ -81,10 +146,13 @@ class Dialect:
         return {"U": "X", "V": "Y", "W": "Z", "H": "C"}
 
     def system_variables(self) -> tuple[SystemVariable, ...]:
-        return _tables(self.data_module)[0]
+        return self.extra_rows + _tables(self.data_module)[0]
 
     def system_variable(self, number: int) -> SystemVariable | None:
         """The table row that describes ``#number``, or None when it does not exist."""
+        for row in self.extra_rows:
+            if row.first <= number <= row.last:
+                return row
         rows, firsts = _tables(self.data_module)[:2]
         k = bisect_right(firsts, number) - 1
         if k >= 0 and number <= rows[k].last:
@@ -97,72 +165,34 @@ class Dialect:
     def m_codes(self) -> tuple[CodeDoc, ...]:
         return _tables(self.data_module)[3]
 
+    def system_variable_names(self) -> tuple[SystemVariableName, ...]:
+        """The ``[#_NAME]`` names, empty for a dialect without them."""
+        return tuple(_tables(self.data_module)[4].values()) if self.variable_names else ()
+
+    def variable_name(self, name: str) -> SystemVariableName | None:
+        """The row of ``[#_NAME]`` (``name`` without ``#_``, any case), or None."""
+        return _tables(self.data_module)[4].get(name.upper()) if self.variable_names else None
+
     def functions(self) -> tuple[FunctionDoc, ...]:
-        return _functions()
+        """The common functions, then the forms ``extra_functions`` adds (by name or signature)."""
+        return _functions(self.extra_functions)
+
+
+_Tables = tuple[
+    tuple[SystemVariable, ...], list[int], tuple[CodeDoc, ...], tuple[CodeDoc, ...], dict[str, SystemVariableName]
+]
 
 
 @cache
-def _tables(module: str) -> tuple[tuple[SystemVariable, ...], list[int], tuple[CodeDoc, ...], tuple[CodeDoc, ...]]:
+def _tables(module: str) -> _Tables:
     mod = importlib.import_module(f"{__package__}.{module}")
     rows = tuple(sorted(mod.SYSTEM_VARIABLES, key=lambda r: r.first))
-    return rows, [r.first for r in rows], tuple(mod.G_CODES), tuple(mod.M_CODES)
+    names = {n.name: n for n in getattr(mod, "SYSTEM_VARIABLE_NAMES", ())}
+    return rows, [r.first for r in rows], tuple(mod.G_CODES), tuple(mod.M_CODES), names
 
 
 @cache
-def _functions() -> tuple[FunctionDoc, ...]:
+def _functions(extra: frozenset[str]) -> tuple[FunctionDoc, ...]:
     mod = importlib.import_module(f"{__package__}.functions_data")
-    return tuple(mod.FUNCTIONS)
-
-
-FANUC = Dialect(
-    name="fanuc",
-    title="FANUC 0i Custom Macro B",
-    data_module="fanuc_data",
-    vacant_differs_in_eq=True,
-    vacant_address_is_zero=False,
-    nine_indirection=False,
-    c_relations=False,
-    macro_alarm_base=3000,
-    h_codes=False,
-    bracket_names=False,
-    program_digits=8,
-    macro_levels=4,
-    subprogram_levels=10,
-    clamp_repeat_count=False,
-    count_in_p_and_l_alarm=False,
-    lathe=False,
-    axes=("X", "Y", "Z", "A"),
-    modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0}),
-    modal_defaults={"plane": 17.0, "feed": 94.0},
-    coordinate_setting_code=92.0,
-    cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
-    ijk_order_matters=True,
-    word_format_alarms=True,
-    keyword_abbreviations=True,
-)
-
-GSK980TDI = Dialect(
-    name="gsk980tdi",
-    title="GSK980TDi",
-    data_module="gsk980tdi_data",
-    vacant_differs_in_eq=False,
-    vacant_address_is_zero=True,
-    nine_indirection=True,
-    c_relations=True,
-    macro_alarm_base=5900,
-    h_codes=True,
-    bracket_names=True,
-    program_digits=4,
-    macro_levels=4,
-    subprogram_levels=12,
-    clamp_repeat_count=True,
-    count_in_p_and_l_alarm=True,
-    lathe=True,
-    axes=("X", "Y", "Z", "C", "B"),
-    modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0, 5.0}),
-    modal_defaults={"plane": 18.0, "feed": 98.0},
-    coordinate_setting_code=50.0,
-    cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0, 83.0, 84.0, 87.0, 88.0}),
-)
-
-BY_NAME = {d.name: d for d in (FANUC, GSK980TDI)}
+    added = tuple(f for f in mod.EXTRA_FUNCTIONS if f.name in extra or f.signature in extra)
+    return (*mod.FUNCTIONS, *added)

@@ -5,7 +5,9 @@ signals with parameter 6001#0 (MIF) = 0 (§4.1), tool offsets for tool compensat
 the #2001–#2400 short numbers (§4.2), the macro alarm and message stop #3000/#3006 (§4.3, §4.4),
 timers and date/time (§4.5), automatic operation control #3003/#3004 (§4.6), parts counters
 (§4.7), modal information #4001–#4130 (§4.8), positions for four axes (§4.9) and work zero
-offsets including G54.1 P1–P48 and the #2500–#2806 short numbers (§4.10). ``G_CODES`` and
+offsets including G54.1 P1–P48 and the #2500–#2806 short numbers (§4.10). Beside chapter 4 it has
+the manual handle interruption #5121–#5124, which the seed leaves out but a 0i control has
+(docs/profiles.md). ``G_CODES`` and
 ``M_CODES`` describe the codes of a 0i milling control; a code's ``group`` is its name in
 ``MODAL_GROUPS``, or empty for a one-shot (group 00) code. Rows and texts that the GSK980TDi
 shares come from ``shared_data``.
@@ -249,7 +251,8 @@ _CONTROL: tuple[SystemVariable, ...] = (
 # ---------------------------------------------------------------------------------------------
 # §4.8 modal information: the modal state up to the block before the one being processed
 
-_MODAL_GROUPS_0I: dict[int, tuple[str, str]] = {
+# group number -> (name in MODAL_GROUPS, the codes of the group)
+MODAL_GROUP_CODES: dict[int, tuple[str, str]] = {
     1: ("motion", "G00, G01, G02, G03, G33, G75, G77, G78, G79"),
     2: ("plane", "G17, G18, G19"),
     3: ("distance", "G90, G91"),
@@ -273,7 +276,7 @@ _MODAL_GROUPS_0I: dict[int, tuple[str, str]] = {
 
 def _modal_row(group: int) -> SystemVariable:
     number = 4000 + group
-    if group not in _MODAL_GROUPS_0I:
+    if group not in MODAL_GROUP_CODES:
         return SystemVariable(
             number,
             number,
@@ -283,7 +286,7 @@ def _modal_row(group: int) -> SystemVariable:
             f"第{group}组G代码的模态信息；机床未预设时为空",
             default=None,
         )
-    name, codes = _MODAL_GROUPS_0I[group]
+    name, codes = MODAL_GROUP_CODES[group]
     code, value = shared.modal_example(codes)
     return SystemVariable(
         number,
@@ -299,7 +302,7 @@ def _modal_row(group: int) -> SystemVariable:
 
 
 # the code letters of a mill beside those both controls have (shared_data.CODE_LETTERS)
-_CODE_LETTERS: tuple[tuple[int, str, str, str], ...] = (
+MILL_CODE_LETTERS: tuple[tuple[int, str, str, str], ...] = (
     (4102, "B", "B code (second auxiliary function) last commanded", "最近指令的B代码（第2辅助功能）"),
     (4107, "D", "D code (cutter radius offset number) in effect", "当前的D代码（刀具半径补偿号）"),
     (4111, "H", "H code (tool length offset number) in effect", "当前的H代码（刀具长度补偿号）"),
@@ -314,11 +317,26 @@ _CODE_LETTERS: tuple[tuple[int, str, str, str], ...] = (
 
 _MODAL: tuple[SystemVariable, ...] = (
     *(_modal_row(group) for group in range(1, 23)),
-    *shared.code_letter_rows((*shared.CODE_LETTERS, *_CODE_LETTERS)),
+    *shared.code_letter_rows((*shared.CODE_LETTERS, *MILL_CODE_LETTERS)),
 )
 
 # ---------------------------------------------------------------------------------------------
 # §4.9 positions (axes 1-4); read only
+
+# Not in seed 003: the distance the manual handle added during automatic operation (manual
+# handle interruption); 0 on the simulated machine, which has no handle.
+HANDLE_INTERRUPTION = SystemVariable(
+    5121,
+    5124,
+    "r",
+    "position",
+    "{axis} axis manual handle interruption: the distance the handle moved the axis during automatic "
+    "operation (0 here: the simulated machine has no handle)",
+    "第{index}轴（{axis}）手轮中断量：自动运行中用手轮插入移动的距离（模拟机床没有手轮，读出为0）",
+    "mm",
+    "position",
+    "handle",
+)
 
 _POSITIONS: tuple[SystemVariable, ...] = (
     *shared.axis_position_rows(4),
@@ -358,6 +376,7 @@ _POSITIONS: tuple[SystemVariable, ...] = (
         "position",
         "servo",
     ),
+    HANDLE_INTERRUPTION,
 )
 
 # ---------------------------------------------------------------------------------------------

@@ -7,6 +7,9 @@ DPRNT BPRNT, following chapters 5 and 7 of seed 003 and docs/semantics.md §3-§
 documents the GSK980TDi macro arithmetic and branch commands ``G65 Hm P#i Q#j R#k`` of seed 000
 §3.28.2 (docs/semantics.md §7): P is the destination variable (or the sequence number for H80-H86 and
 the alarm number for H99), Q and R are variables or constants written without ``#``.
+``EXTRA_FUNCTIONS`` documents the functions and forms a dialect adds to the common set (the
+FANUC 30i's POW, ADP, PRM and ATAN[a,b]); a dialect names the ones it has in
+``Dialect.extra_functions`` (docs/profiles.md).
 """
 
 from __future__ import annotations
@@ -211,6 +214,54 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
         "Outputs text as characters and variable values in binary; #i[c] sends #i as a 32-bit binary "
         "integer with c digits after the decimal point",
         "输出字符和二进制的变量值；#i[c]表示#i按小数部分c位转换为32位二进制整数输出",
+    ),
+)
+
+EXTRA_FUNCTIONS: tuple[FunctionDoc, ...] = (
+    FunctionDoc(
+        "ATAN",
+        "ATAN[a,b]",
+        "Arc tangent of a/b written with a comma: the same as ATAN[a]/[b], the angle of the point (b, a), "
+        "0 to 360 degrees",
+        "反正切a/b的逗号写法：与ATAN[a]/[b]相同，点(b, a)的角度，结果为0～360度",
+    ),
+    FunctionDoc(
+        "POW",
+        "POW[a,b]",
+        "a to the power b (POW[2,3] = 8); a negative a with a fractional b, or 0 to a negative power, is alarm 119",
+        "a的b次方（POW[2,3]=8）；a为负数而b不是整数，或0的负数次方时为119号报警",
+    ),
+    FunctionDoc(
+        "ADP",
+        "ADP[a]",
+        "Adds the decimal point to an argument written without one, as if X10 had been X10. (not 10 least "
+        "increments); the simulated machine passes arguments as written, so the value stays as it is",
+        "为不带小数点指定的自变量补上小数点，使X10按X10.读取（而不是10个最小设定单位）；"
+        "模拟机床按原样传递自变量，因此数值不变",
+    ),
+    FunctionDoc(
+        "PRM",
+        "PRM[n]",
+        "Reads parameter n (the simulated machine has no parameters: it reads 0)",
+        "读取参数n（模拟机床没有参数，读出为0）",
+    ),
+    FunctionDoc(
+        "PRM",
+        "PRM[n,axis]",
+        "Reads axis-type parameter n for the axis numbered axis (1 is the first axis); 0 on the simulated machine",
+        "读取轴型参数n中第axis轴的值（1为第1轴）；模拟机床读出为0",
+    ),
+    FunctionDoc(
+        "PRM",
+        "PRM[n]/[bit]",
+        "Reads bit bit (0-7) of bit-type parameter n; 0 on the simulated machine",
+        "读取位型参数n的第bit位（0～7）；模拟机床读出为0",
+    ),
+    FunctionDoc(
+        "PRM",
+        "PRM[n,axis]/[bit]",
+        "Reads bit bit of axis-type bit parameter n for the axis numbered axis; 0 on the simulated machine",
+        "读取轴型位参数n中第axis轴的第bit位；模拟机床读出为0",
     ),
 )
 

@@ -1,7 +1,7 @@
 """The shape of a dialect's data: system variables, G/M codes, functions and alarms.
 
-Every dialect module (``fanuc_data``, ``gsk980tdi_data``) fills these records; nothing here
-runs a program. A ``SystemVariable`` row covers one number or a range of consecutive numbers
+Every dialect module (``fanuc_data``, ``gsk980tdi_data``, ``profiles/fanuc_30i``) fills these records;
+nothing here runs a program. A ``SystemVariable`` row covers one number or a range of consecutive numbers
 with the same meaning, says who may read and write it, and names the ``source`` the machine
 takes its value from. The sources form a small fixed vocabulary that the machine layer
 understands (see ``SOURCES``); descriptions are written in English and Chinese for a
@@ -24,6 +24,8 @@ SOURCES = {
     "code": "the last F, S, T, M, D, H, B, N, O or P value (param: the letter)",
     "position": "an axis position (param: 'end', 'machine', 'current', 'skip', 'tool', 'servo', 'handle'); axis k+1",
     "alias": "another number for a stored variable (param: the number that k = 0 maps to)",
+    "constant": "a fixed value that nothing changes: the row's default (vacant for #3100, π, e)",
+    "main": "the number of the main program (the O number the run started in)",
 }
 
 # The modal groups a ``modal`` row may name, with the code each holds at power-on.
@@ -74,6 +76,45 @@ class SystemVariable:
 
     def __contains__(self, number: int) -> bool:
         return self.first <= number <= self.last
+
+
+@dataclass(frozen=True, slots=True)
+class CommonRange:
+    """A range of common variables ``#first``–``#last``; ``persistent`` ones keep their values
+    when the power is off (FANUC #500–#999), the others are cleared (#100–#499)."""
+
+    first: int
+    last: int
+    persistent: bool
+
+    def __contains__(self, number: int) -> bool:
+        return self.first <= number <= self.last
+
+    def text(self) -> str:
+        return f"#{self.first}-#{self.last}"
+
+
+@dataclass(frozen=True, slots=True)
+class SystemVariableName:
+    """A system variable name (FANUC 30i): ``[#_NAME]`` is ``#first``. A name that covers
+    several numbers takes a subscript: ``[#_NAME[n]]`` is ``#(first + n - 1)`` for n from 1 to
+    ``last - first + 1``. ``name`` is written without ``#_`` (``ABSIO``); ``en`` and ``zh`` say
+    in a few words what the name stands for."""
+
+    name: str
+    first: int
+    last: int
+    en: str
+    zh: str
+
+    @property
+    def indexed(self) -> bool:
+        """True when the name needs a subscript ``[n]``."""
+        return self.last > self.first
+
+    @property
+    def count(self) -> int:
+        return self.last - self.first + 1
 
 
 @dataclass(frozen=True, slots=True)

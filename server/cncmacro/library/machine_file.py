@@ -24,6 +24,12 @@ Every key is optional (docs/design.md "Machine settings")::
     [skip]                         # where the G31 skip signal fires
     Z = -12.5
 
+    [[system_variables]]           # variables this machine adds or describes anew
+    number = 1100                  # or numbers = [1100, 1115]
+    access = "r"                   # r, w or rw (default rw)
+    en = "Pallet clamped (PMC signal)"
+    zh = "托盘已夹紧（PMC 信号）"
+
     [severity]                     # diagnostic code = error|warning|information|hint|off
     macro-alarm = "error"
 
@@ -32,13 +38,15 @@ Errors are reported as ``MachineFileError`` with the file and the key, never as 
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass, field, replace
 from pathlib import Path, PureWindowsPath
 
 import tomllib
 
 from ..bilingual import Detail, detail
-from ..dialects import normalise_dialect
+from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect
+from ..dialects.tables import SystemVariable
 
 MACHINE_FILE_NAME = ".cncmacro.toml"
 PERSISTENT_FILE_NAME = ".cncmacro-vars.json"
@@ -65,7 +73,11 @@ class MachineSettings:
     """The settings of the simulated machine. ``folder`` is where relative paths start."""
 
     dialect: str | None = None
-    common: tuple[int, int] = (100, 199)
+    # the machine's common ranges (None: every range the profile allows)
+    common: tuple[tuple[int, int], ...] | None = None
+    program_digits: int | None = None
+    programs_on_control: tuple[tuple[int, int], ...] = ()
+    system_variables: tuple[SystemVariable, ...] = ()
     decimal_point: str = "calculator"
     block_delete: bool = False
     persistent_file: str | None = None
@@ -126,7 +138,8 @@ def settings_from_mapping(
     def fail(key: str, what: Detail) -> MachineFileError:
         return MachineFileError(detail(f"{source}: '{key}' {what}", f"{source}：'{key}' {what.zh}"))
 
-    known = {"dialect", "common", "decimal_point", "block_delete", "persistent_file", "max_blocks", "date", "time",
+    known = {"base", "dialect", "common", "program_digits", "programs_on_control", "system_variables",
+             "decimal_point", "block_delete", "persistent_file", "max_blocks", "date", "time",
              "variables", "calls", "skip", "severity"}  # fmt: skip
     for key in data:
         if key not in known:
@@ -134,19 +147,27 @@ def settings_from_mapping(
             raise fail(key, detail(f"is not a machine setting (known: {names})",
                                    f"不是机床设置项（可用的有：{names}）"))  # fmt: skip
     kw: dict[str, object] = {"folder": folder}
-    if "dialect" in data:
-        d = normalise_dialect(str(data["dialect"]))
-        if d is None:
-            raise fail("dialect", detail("must be fanuc or gsk980tdi", "必须是 fanuc 或 gsk980tdi"))
-        kw["dialect"] = d
+    if "base" in data and "dialect" in data:
+        raise fail("dialect", detail("names the profile as 'base' does: keep one of them",
+                                     "与 'base' 一样指定系统类型，只保留其中一个"))  # fmt: skip
+    for key in ("base", "dialect"):
+        if key in data:
+            d = normalise_dialect(str(data[key]))
+            if d is None:
+                raise fail(key, detail(f"must be {choices_text()} (not {data[key]!r})",
+                                       f"必须是 {choices_text(zh=True)}（不能是 {data[key]!r}）"))  # fmt: skip
+            kw["dialect"] = d
     if "common" in data:
-        c = data["common"]
-        if not (
-            isinstance(c, list) and len(c) == 2 and all(isinstance(x, int) for x in c) and 100 <= c[0] <= c[1] < 500
-        ):
-            raise fail("common", detail("must be two numbers such as [100, 199] (within #100-#499)",
-                                        "必须是两个数，如 [100, 199]（在 #100-#499 之内）"))  # fmt: skip
-        kw["common"] = (c[0], c[1])
+        kw["common"] = _common(data["common"], str(kw.get("dialect") or DEFAULT_DIALECT), fail)
+    if "program_digits" in data:
+        v = data["program_digits"]
+        if not isinstance(v, int) or isinstance(v, bool) or not 4 <= v <= 8:
+            raise fail("program_digits", detail("must be a whole number from 4 to 8", "必须是 4 到 8 之间的整数"))
+        kw["program_digits"] = v
+    if "programs_on_control" in data:
+        kw["programs_on_control"] = _program_ranges(data["programs_on_control"], fail)
+    if "system_variables" in data:
+        kw["system_variables"] = _system_variables(data["system_variables"], fail)
     if "decimal_point" in data:
         if data["decimal_point"] not in ("calculator", "increment"):
             raise fail("decimal_point", detail('must be "calculator" or "increment"',
@@ -180,6 +201,110 @@ def settings_from_mapping(
     if "severity" in data:
         kw["severity"] = _severity(data["severity"], fail)
     return MachineSettings(**kw)  # type: ignore[arg-type]
+
+
+def _common(value: object, profile: str, fail) -> tuple[tuple[int, int], ...]:  # type: ignore[no-untyped-def]
+    """``common``: a list of ``[first, last]`` ranges the profile allows, or the older single
+    ``[first, last]`` below #500 (the volatile range; the profile's #500-#999 stay)."""
+    dialect = get_dialect(profile)
+    allowed = ", ".join(r.text() for r in dialect.common_ranges)
+    bad = detail(f"must be a list of ranges such as [[100, 499], [500, 999]] within {allowed} ({dialect.name})",
+                 f"必须是变量号范围的列表，如 [[100, 499], [500, 999]]，"
+                 f"且在 {allowed} 之内（{dialect.name}）")  # fmt: skip
+
+    def pair(x: object) -> tuple[int, int] | None:
+        if isinstance(x, list) and len(x) == 2 and all(isinstance(v, int) and not isinstance(v, bool) for v in x):
+            return (x[0], x[1]) if x[0] <= x[1] else None
+        return None
+
+    if not isinstance(value, list) or not value:
+        raise fail("common", bad)
+    single = pair(value)
+    if single is not None:
+        if single[1] >= 500:
+            raise fail("common", bad)
+        ranges = [single, *((r.first, r.last) for r in dialect.common_ranges if r.persistent)]
+    else:
+        ranges = []
+        for x in value:
+            p = pair(x)
+            if p is None:
+                raise fail("common", bad)
+            ranges.append(p)
+    for first, last in ranges:
+        if dialect.allows_common(first, last) is None and not (single and (first, last) == single):
+            raise fail("common", bad)
+    if single is not None and not 100 <= single[0]:
+        raise fail("common", bad)
+    ordered = sorted(ranges)
+    for (_, a_last), (b_first, _) in itertools.pairwise(ordered):
+        if b_first <= a_last:
+            raise fail("common", detail("has ranges that overlap", "中的范围有重叠"))
+    return tuple(ordered)
+
+
+def _program_ranges(value: object, fail) -> tuple[tuple[int, int], ...]:  # type: ignore[no-untyped-def]
+    """``programs_on_control``: ``"O9000-O9999"``, ``"O8000"`` or a number, in a list."""
+    bad = detail('must be a list of program numbers or ranges such as ["O9000-O9999", "O8000"]',
+                 '必须是程序号或程序号范围的列表，如 ["O9000-O9999", "O8000"]')  # fmt: skip
+    if not isinstance(value, list):
+        raise fail("programs_on_control", bad)
+    out: list[tuple[int, int]] = []
+    for item in value:
+        if isinstance(item, int) and not isinstance(item, bool):
+            first = last = item
+        elif isinstance(item, str):
+            parts = [s.strip().upper().lstrip("O") for s in item.split("-")]
+            if len(parts) not in (1, 2) or not all(s.isdigit() and len(s) <= 8 for s in parts):
+                raise fail("programs_on_control", bad)
+            first, last = int(parts[0]), int(parts[-1])
+        else:
+            raise fail("programs_on_control", bad)
+        if not 0 <= first <= last <= 99_999_999:
+            raise fail("programs_on_control", bad)
+        out.append((first, last))
+    return tuple(out)
+
+
+_ACCESS = ("r", "w", "rw")
+
+
+def _system_variables(value: object, fail) -> tuple[SystemVariable, ...]:  # type: ignore[no-untyped-def]
+    """``[[system_variables]]``: ``number`` (or ``numbers = [first, last]``), ``access``,
+    ``en``, ``zh``, and optionally ``unit``."""
+    if not isinstance(value, list) or not all(isinstance(x, dict) for x in value):
+        raise fail("system_variables", detail("must be a list of tables ([[system_variables]])",
+                                              "必须是表的列表（[[system_variables]]）"))  # fmt: skip
+    out: list[SystemVariable] = []
+    for k, row in enumerate(value, start=1):
+        where = f"system_variables[{k}]"
+        unknown = sorted(set(row) - {"number", "numbers", "access", "en", "zh", "unit"})
+        if unknown:
+            keys = "number, numbers, access, en, zh, unit"
+            raise fail(f"{where}.{unknown[0]}", detail(f"is not a key of a system variable ({keys})",
+                                                       f"不是系统变量的设置项（{keys}）"))  # fmt: skip
+        if "number" in row and isinstance(row["number"], int) and not isinstance(row["number"], bool):
+            first = last = row["number"]
+        elif ("numbers" in row and isinstance(row["numbers"], list) and len(row["numbers"]) == 2
+              and all(isinstance(v, int) and not isinstance(v, bool) for v in row["numbers"])):  # fmt: skip
+            first, last = row["numbers"]
+        else:
+            raise fail(where, detail("needs number = N or numbers = [first, last]",
+                                     "需要 number = 变量号 或 numbers = [起始号, 结束号]"))  # fmt: skip
+        if not 1000 <= first <= last <= 99_999_999:
+            raise fail(where, detail("system variables are numbered from #1000 up", "系统变量号从 #1000 开始"))
+        access = row.get("access", "rw")
+        if access not in _ACCESS:
+            raise fail(f"{where}.access", detail('must be "r", "w" or "rw"', '必须是 "r"、"w" 或 "rw"'))
+        en = row.get("en")
+        if not isinstance(en, str) or not en.strip():
+            raise fail(f"{where}.en", detail("must say what the variable is, in English", "必须用英文说明该变量"))
+        zh = row.get("zh", en)
+        unit = row.get("unit", "")
+        if not isinstance(zh, str) or not isinstance(unit, str):
+            raise fail(where, detail("zh and unit must be text", "zh 和 unit 必须是文字"))
+        out.append(SystemVariable(first, last, access, "signals", en.strip(), zh.strip() or en.strip(), unit))
+    return tuple(out)
 
 
 def _variables(table: object, fail) -> dict[int, float]:  # type: ignore[no-untyped-def]

@@ -21,8 +21,18 @@ from ..syntax.program import Program, ProgramUnit, build_program
 from .dialect_choice import dialect_from_text
 from .files import BinaryFileError, is_program_file, read_program, stays_inside
 
+ON_CONTROL = "(on the control)"  # the path suffix of a program kept on the control
 _NAME_OK = re.compile(r"^[\w+\-.\u4e00-\u9fff]+$")
 _O_NAME = re.compile(r"^[Oo](\d{1,8})$")
+
+
+def is_program_name(name: str) -> bool:
+    """Whether a bracketed name (``P[CUT]``) is one the control accepts: letters (Chinese
+    too), digits, ``+ - _ .``, not starting with ``.`` (seed 001 P[] format two, seed 000
+    §3.28.3); any other character is an alarm (291 here, the seeds give no number). A name
+    with ``..`` or a path in it is never one."""
+    name = name.strip()
+    return bool(_NAME_OK.match(name)) and not name.startswith(".") and ".." not in name
 
 
 @dataclass(slots=True)
@@ -33,6 +43,7 @@ class LoadedFile:
     lines: list[str]
     program: Program
     dialect: str | None
+    on_control: bool = False  # a program kept on the control (``control_program``), not a file
 
     @property
     def name(self) -> str:
@@ -146,7 +157,7 @@ class ProgramLibrary:
             unit = near.program.unit_numbered(number)
             if unit is not None:
                 return FoundProgram(near, unit)
-        names = {f"o{number:04d}", f"o{number}", f"{number:04d}", f"{number}"}
+        names = {f"o{number:04d}", f"o{number}", f"{number:04d}", f"{number}", f"o{number:08d}"}
         folders = self._search_folders(near)
         for folder in folders:
             for p in self._folder_files(folder):
@@ -177,13 +188,28 @@ class ProgramLibrary:
                         return FoundProgram(loaded, unit)
         return None
 
+    def control_program(self, number: int) -> FoundProgram:
+        """O``number`` as a program kept on the control (a machine file's
+        ``programs_on_control``) and found in no folder: a program that returns at once. A file
+        in the workspace with that number (a stub that sets what the callers read) wins over it,
+        because ``find_number`` finds it first."""
+        path = f"O{number:04d} {ON_CONTROL}"
+        loaded = self._files.get(path)
+        if loaded is None:
+            loaded = load_text(path, f"O{number:04d}\nM99\n", self.cache)
+            loaded.on_control = True
+            self._files[path] = loaded
+        unit = loaded.program.unit_numbered(number)
+        assert unit is not None
+        return FoundProgram(loaded, unit)
+
     def find_name(self, name: str, near: LoadedFile | None = None) -> FoundProgram | None:
         """A program named by a bracketed name (``P[CUT]``): a file name, or ``O1004``."""
         name = name.strip()
         m = _O_NAME.match(name)
         if m:
             return self.find_number(int(m.group(1)), near)
-        if not _NAME_OK.match(name) or ".." in name:
+        if not is_program_name(name):
             return None
         wanted = name.lower()
         for folder in self._search_folders(near):

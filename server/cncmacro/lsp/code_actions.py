@@ -1,5 +1,6 @@
-"""Code actions: split a G65/G66 block that also holds NC words, clamp an out-of-range L, and
-write out a macro word written shortened (``WH`` → ``WHILE``).
+"""Code actions: split a G65/G66 block that also holds NC words, clamp an out-of-range L,
+write out a macro word written shortened (``WH`` → ``WHILE``), and name the profile a file was
+written for (``profile-suggestion``: its dialect comment, or the machine file's ``base``).
 
 docs/semantics.md §5: only N may precede G65/G66 and no other G or M code or O word may share its
 block; the split moves those words (with the label) to a block of their own just before the
@@ -13,10 +14,13 @@ when the client sent them.
 from __future__ import annotations
 
 import re
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..analysis.profile_suggestion import CODE, suggested_profile
+from ..library.machine_file import MACHINE_FILE_NAME, MachineSettings, find_machine_file
 from ..machine.calls import MAX_REPEAT
 from ..syntax.nodes import Number, Word
 from .call_sites import call_site
@@ -27,6 +31,10 @@ if TYPE_CHECKING:
     from .server import CncMacroServer
 
 _TITLES = {
+    "comment": ("Read this file as {title}: add (cncmacro: dialect={name})",
+                "按 {title} 读取此文件：加上 (cncmacro: dialect={name})"),
+    "machine": ('Set base = "{name}" in .cncmacro.toml (every file of the workspace)',
+                '在 .cncmacro.toml 中设定 base = "{name}"（对工作区所有文件生效）'),
     "split": ("Split: move the NC words to a block before the G65", "拆分：把NC代码移到G65之前的单独程序段"),
     "clamp": ("Clamp the repeat count to {value}", "把重复次数改为{value}"),
     "expand": ("Write {word} in full", "把{text}写全为{word}"),
@@ -122,7 +130,61 @@ def register(server: CncMacroServer) -> None:
                 mine = [d for d in diags if d.range.start.character == start]
                 code = "keyword-abbreviation" if doc.dialect.keyword_abbreviations else "dialect-feature"
                 out.append(_action(doc, _title("expand", ls.locale, text=text, word=word), expand, mine, code))
+        out.extend(profile_actions(ls, doc, params.context.diagnostics))
         return out
+
+
+def profile_actions(ls: CncMacroServer, doc: OpenDocument, diags: list[types.Diagnostic]) -> list[types.CodeAction]:
+    """For a ``profile-suggestion``: write the file's dialect comment, or the machine file's
+    ``base`` (created beside the workspace's first folder when there is none)."""
+    asked = [d for d in diags if d.code == CODE]
+    if not asked:
+        return []
+    other = suggested_profile(doc.parsed.program, doc.path, doc.dialect, ls.machine or MachineSettings())
+    if other is None:
+        return []
+    utf16 = ls.documents.utf16
+    at = 1 if doc.lines and doc.lines[0].strip().startswith("%") else 0
+    comment = types.TextEdit(doc_range(doc, at, 0, 0, utf16), f"(cncmacro: dialect={other.name})\n")
+    title = _title("comment", ls.locale, title=other.title, name=other.name)
+    out = [_action(doc, title, comment, asked, CODE)]
+    machine = find_machine_file(doc.path)
+    if machine is None and ls.roots:
+        machine = Path(ls.roots[0]) / MACHINE_FILE_NAME
+    if machine is not None:
+        out.append(types.CodeAction(
+            title=_title("machine", ls.locale, name=other.name), kind=types.CodeActionKind.QuickFix,
+            diagnostics=asked, edit=machine_file_edit(machine, other.name),
+        ))  # fmt: skip
+    return out
+
+
+def machine_file_edit(path: Path, name: str) -> types.WorkspaceEdit:
+    """``base = "name"`` in the machine file at ``path``: the ``base`` or ``dialect`` line
+    replaced, else written first; the file is created when it does not exist."""
+    uri = path.as_uri()
+    line = f'base = "{name}"'
+    start = types.Range(types.Position(0, 0), types.Position(0, 0))
+    if not path.is_file():
+        return types.WorkspaceEdit(document_changes=[
+            types.CreateFile(uri=uri, options=types.CreateFileOptions(ignore_if_exists=True)),
+            types.TextDocumentEdit(types.OptionalVersionedTextDocumentIdentifier(uri=uri, version=None),
+                                   [types.TextEdit(start, line + "\n")]),
+        ])  # fmt: skip
+    try:
+        lines = path.read_text(encoding="utf-8").split("\n")
+    except (OSError, UnicodeDecodeError):
+        lines = []
+    for k, text in enumerate(lines):
+        if re.match(r"\s*(base|dialect)\s*=", text):
+            edit = types.TextEdit(types.Range(types.Position(k, 0), types.Position(k, len(text))), line)
+            break
+        if re.match(r"\s*\[", text):  # keys after a table header belong to it: write before it
+            edit = types.TextEdit(types.Range(types.Position(k, 0), types.Position(k, 0)), line + "\n")
+            break
+    else:
+        edit = types.TextEdit(types.Range(types.Position(0, 0), types.Position(0, 0)), line + "\n")
+    return types.WorkspaceEdit(changes={uri: [edit]})
 
 
 def _action(

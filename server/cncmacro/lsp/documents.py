@@ -17,9 +17,10 @@ from pathlib import Path
 from lsprotocol import types
 from pygls.uris import to_fs_path
 
-from ..dialects import get_dialect
 from ..dialects.dialect import Dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_and_source
+from ..library.machine_file import MachineSettings
+from ..library.profiles import machine_profile
 from ..library.programs import LoadedFile
 from ..syntax.document import ParsedDocument, split_lines
 from ..syntax.nodes import Block
@@ -72,11 +73,12 @@ class Documents:
     def __init__(self) -> None:
         self.by_uri: dict[str, OpenDocument] = {}
         self.workspace_dialect: str | None = None  # from .cncmacro.toml
+        self.machine: MachineSettings | None = None  # the workspace's .cncmacro.toml
         self.setting_dialect: str | None = None  # from the editor's settings
         self.utf16 = True
 
     def dialect_for(self, lines: list[str]) -> Dialect:
-        return get_dialect(choose_dialect(lines, self.workspace_dialect, self.setting_dialect))
+        return machine_profile(choose_dialect(lines, self.workspace_dialect, self.setting_dialect), self.machine)
 
     def dialect_source(self, lines: list[str]) -> str:
         """Which link of the dialect chain decided for these lines (``dialect_and_source``)."""

@@ -1,7 +1,8 @@
 """Hover: what the thing under the cursor is, in the client's language and the file's dialect.
 
-System variables, G/M codes, functions and the GSK ``G65 Hm`` commands are described from the
-dialect tables; a macro word written shortened (``WH``) shows the whole word; a local
+System variables (also by their FANUC 30i names ``[#_ABSIO[1]]``, with the number a name stands
+for), G/M codes, functions and the GSK ``G65 Hm`` commands are described from the dialect
+tables; a macro word written shortened (``WH``) shows the whole word; a local
 shows the argument letters that fill it (``machine.calls``); a common shows where it is
 written; an N label shows the jumps to it; an O program (or the P of a call) shows its title
 and file. Only the block under the cursor is parsed; the places come from each file's
@@ -16,10 +17,13 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 
 from ..analysis.locale import pick
+from ..bilingual import in_language
 from ..dialects import describe
 from ..dialects.functions_data import GSK_H_CODES
+from ..machine.alarms import MacroAlarm
 from ..machine.calls import argument_targets, letters_for_local
-from ..syntax.nodes import Abbreviation, Call, Number, Var, Word
+from ..machine.variables import named_number
+from ..syntax.nodes import Abbreviation, Bracket, Call, NamedVar, Number, Unary, Var, Word
 from ..syntax.walk import nodes_at
 from .call_sites import call_site
 from .cursor import Cursor, cursor_at
@@ -66,6 +70,8 @@ def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
     for node in reversed(path):
         if isinstance(node, Var):
             return variable_hover(ls, cur, node.number), node.start, node.end
+        if isinstance(node, NamedVar):
+            return named_hover(ls, cur, node), node.start, node.end
         if isinstance(node, Call) and col <= node.start + len(node.name):
             text = function_hover(ls, cur, node.name)
             if text:
@@ -86,7 +92,7 @@ def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
 def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
     loc = ls.locale
     dialect = cur.doc.dialect
-    kind = describe.variable_class(number, ls.common_range)
+    kind = describe.variable_class(number, cur.doc.dialect)
     head = f"**#{number}** — {t(kind, loc)}"
     lines = [head]
     if kind == describe.SYSTEM:
@@ -126,6 +132,38 @@ def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
         else:
             lines.append(t("not_written", loc))
     return "\n".join(lines)
+
+
+def named_hover(ls: CncMacroServer, cur: Cursor, node: NamedVar) -> str:
+    """``[#_NAME[n]]``: the number it stands for and that variable's description; with a
+    subscript known only when the block runs, the numbers the name covers."""
+    loc = ls.locale
+    dialect = cur.doc.dialect
+    head = f"**{node.text}**"
+    if not dialect.variable_names:
+        return f"{head} — {t('no_names', loc)}\n\n*{dialect.title}*"
+    row = dialect.variable_name(node.name)
+    subscript = _literal(node.index.inner) if node.index is not None else None
+    if row is not None and node.index is not None and subscript is None:
+        text = row.zh if loc.lower().startswith("zh") else row.en
+        return f"**{node.text}[n]** = #{row.first} … #{row.last} (n = 1 … {row.count}) — {t('name', loc)}\n\n{text}"
+    try:
+        number = named_number(dialect, node.name, subscript, node.index is not None)
+    except MacroAlarm as alarm:
+        return f"{head} — {in_language(alarm.message, loc.lower().startswith('zh'))} ({alarm.number})"
+    shown = f"{node.text}[{subscript:g}]" if node.index is not None and subscript is not None else node.text
+    return f"**{shown}** = **#{number}**\n\n" + variable_hover(ls, cur, number)
+
+
+def _literal(node: object) -> float | None:
+    """The value of a literal number (possibly bracketed or signed), else None."""
+    while isinstance(node, Bracket):
+        node = node.inner
+    if isinstance(node, Number):
+        return node.value
+    if isinstance(node, Unary) and isinstance(node.operand, Number):
+        return -node.operand.value if node.op == "-" else node.operand.value
+    return None
 
 
 def _bulleted(entries: list[str], loc: str, total: int | None = None) -> list[str]:
@@ -172,6 +210,8 @@ def program_hover(ls: CncMacroServer, cur: Cursor, number: int | None, name: str
     loc = ls.locale
     found = ls.index.find_program(cur.doc, number, name)
     shown = f"O{number:04d}" if number is not None else f"[{name}]"
+    if found is None and number is not None and cur.doc.dialect.on_control(number):
+        return f"**{shown}** — {t('program', loc)}: {t('on_control', loc)}"
     if found is None:
         return f"**{shown}** — {t('program', loc)}: {t('not_found', loc)}"
     lines = [f"**{found.label}**" + (f" ({found.unit.title})" if found.unit.title else "")]

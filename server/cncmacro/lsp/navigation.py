@@ -168,7 +168,7 @@ def variable_references(
     """Where ``#number`` is mentioned: a local within its program, the others everywhere."""
     utf16 = ls.documents.utf16
     out: list[types.Location] = []
-    kind = describe.variable_class(number, ls.common_range)
+    kind = describe.variable_class(number, cur.doc.dialect)
     if kind == describe.LOCAL:
         unit = cur.doc.parsed.program.unit_at(cur.line)
         files: list[tuple[FileSites, int, int | None]] = [

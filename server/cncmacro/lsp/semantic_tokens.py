@@ -34,7 +34,7 @@ _T = {name: i for i, name in enumerate(TOKEN_TYPES)}
 _M = {name: 1 << i for i, name in enumerate(TOKEN_MODIFIERS)}
 
 _SCAN = re.compile(
-    r"(?P<comment>\([^)]*\)?)|(?P<end>[;\uff1b].*)|(?P<var>#\d+)|(?P<word>[A-Za-z]+)"
+    r"(?P<comment>\([^)]*\)?)|(?P<end>[;\uff1b].*)|(?P<var>#\d+)|(?P<named>#_[A-Za-z0-9_]+)|(?P<word>[A-Za-z]+)"
     r"|(?P<num>\d+\.?\d*|\.\d+)|(?P<op>[-+*/=<>!\[\]#])"
 )
 
@@ -59,7 +59,7 @@ def _name_kinds(dialect_name: str) -> dict[str, str]:
     return out
 
 
-def line_tokens(text: str, block: Block, dialect: Dialect, common: tuple[int, int]) -> list[Token]:
+def line_tokens(text: str, block: Block, dialect: Dialect) -> list[Token]:
     kinds = _name_kinds(dialect.name)
     shortened = {a.start: a for a in block.abbreviations}  # ``WH`` is coloured as WHILE
     label = block.label_span
@@ -83,13 +83,15 @@ def line_tokens(text: str, block: Block, dialect: Dialect, common: tuple[int, in
                 out.append((s + c.start(), s + c.end(), _T["comment"], 0))
         elif kind == "var":
             n = int(m.group(0)[1:])
-            cls = describe.variable_class(n, common)
+            cls = describe.variable_class(n, dialect)
             mods = _M.get(cls, 0)
             if cls == describe.SYSTEM:
                 row = dialect.system_variable(n)
                 if row is not None and row.access == "r":
                     mods |= _M["readonly"]
             out.append((s, e, _T["variable"], mods))
+        elif kind == "named":  # a FANUC 30i system variable name
+            out.append((s, e, _T["variable"], _M["system"]))
         elif kind == "word":
             word = m.group(0).upper()
             a = shortened.get(s)
@@ -109,22 +111,22 @@ def line_tokens(text: str, block: Block, dialect: Dialect, common: tuple[int, in
 class _TokenCache:
     def __init__(self, limit: int = 200_000) -> None:
         self.limit = limit
-        self.data: dict[tuple[str, str, tuple[int, int]], list[Token]] = {}
+        self.data: dict[tuple[object, ...], list[Token]] = {}
 
-    def get(self, text: str, block: Block, dialect: Dialect, common: tuple[int, int]) -> list[Token]:
-        key = (text, dialect.name, common)
+    def get(self, text: str, block: Block, dialect: Dialect) -> list[Token]:
+        key = (text, dialect.name, dialect.common_ranges, dialect.extra_rows)
         hit = self.data.get(key)
         if hit is None:
             if len(self.data) >= self.limit:
                 self.data.clear()
-            hit = self.data[key] = line_tokens(text, block, dialect, common)
+            hit = self.data[key] = line_tokens(text, block, dialect)
         return hit
 
 
 _cache = _TokenCache()
 
 
-def encode(doc: OpenDocument, first: int, last: int, common: tuple[int, int], utf16: bool) -> list[int]:
+def encode(doc: OpenDocument, first: int, last: int, utf16: bool) -> list[int]:
     """The LSP integer encoding of the tokens on lines ``first`` to ``last`` (inclusive)."""
     data: list[int] = []
     prev_line = 0
@@ -136,7 +138,7 @@ def encode(doc: OpenDocument, first: int, last: int, common: tuple[int, int], ut
         if not text or len(text) > MAX_BLOCK_CHARS:
             continue  # a line too long to be a block is not read, so not coloured either
         wide = utf16 and has_astral(text)  # looked at once per line, not once per token
-        for s, e, typ, mods in _cache.get(text, blocks[i], doc.dialect, common):
+        for s, e, typ, mods in _cache.get(text, blocks[i], doc.dialect):
             cs = to_client(text, s, wide)
             length = to_client(text, e, wide) - cs
             if i == prev_line:
@@ -156,7 +158,7 @@ def register(server: CncMacroServer) -> None:
     )
     def full(ls: CncMacroServer, params: types.SemanticTokensParams) -> types.SemanticTokens:
         doc = ls.documents.get(params.text_document.uri)
-        data = encode(doc, 0, len(doc.lines) - 1, ls.common_range, ls.documents.utf16)
+        data = encode(doc, 0, len(doc.lines) - 1, ls.documents.utf16)
         return types.SemanticTokens(data=data, result_id=_remember(doc.uri, data))
 
     @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL_DELTA)
@@ -164,7 +166,7 @@ def register(server: CncMacroServer) -> None:
         ls: CncMacroServer, params: types.SemanticTokensDeltaParams
     ) -> types.SemanticTokens | types.SemanticTokensDelta:
         doc = ls.documents.get(params.text_document.uri)
-        data = encode(doc, 0, len(doc.lines) - 1, ls.common_range, ls.documents.utf16)
+        data = encode(doc, 0, len(doc.lines) - 1, ls.documents.utf16)
         old = _previous.get(doc.uri)
         result_id = _remember(doc.uri, data)
         if old is None or old[0] != params.previous_result_id:
@@ -175,7 +177,7 @@ def register(server: CncMacroServer) -> None:
     def range_(ls: CncMacroServer, params: types.SemanticTokensRangeParams) -> types.SemanticTokens:
         doc = ls.documents.get(params.text_document.uri)
         r = params.range
-        return types.SemanticTokens(data=encode(doc, r.start.line, r.end.line, ls.common_range, ls.documents.utf16))
+        return types.SemanticTokens(data=encode(doc, r.start.line, r.end.line, ls.documents.utf16))
 
 
 _previous: dict[str, tuple[str, list[int]]] = {}  # URI -> the last full answer's result id and data

@@ -22,6 +22,7 @@ from pygls.protocol.language_server import lsp_method
 from pygls.uris import from_fs_path
 
 from .. import __version__
+from ..dialects.registry import profile_facts
 from ..library.machine_file import MACHINE_FILE_NAME, MachineSettings
 from .diagnostics import DiagnosticsEngine
 from .documents import Documents, uri_to_path
@@ -30,7 +31,8 @@ from .workspace_index import WorkspaceIndex
 
 log = logging.getLogger(__name__)
 CONFIGURATION_TIMEOUT = 2.0  # seconds to wait for the editor's settings before analysing
-DOCUMENT_DIALECT = "cncmacro/documentDialect"  # {"uri"} -> {"dialect", "title", "source"} or null
+DOCUMENT_DIALECT = "cncmacro/documentDialect"  # {"uri"} -> {"dialect", "title", "lathe", "source"} or null
+PROFILES = "cncmacro/profiles"  # {} -> [{"name", "title", "summary", "summaryZh", "aliases", "lathe", ...}]
 
 
 class CncMacroProtocol(LanguageServerProtocol):
@@ -71,15 +73,12 @@ class CncMacroServer(LanguageServer):
     def severity_overrides(self) -> dict[str, str]:
         return merged_severities(self.machine, self.settings)
 
-    @property
-    def common_range(self) -> tuple[int, int]:
-        return self.machine.common if self.machine is not None else (100, 199)
-
     def apply_settings(self, settings: Settings) -> None:
         """The editor's settings (or the machine file) changed: analyse again with them."""
         self.settings = settings
         self.documents.setting_dialect = settings.dialect
         self.documents.workspace_dialect = self.machine.dialect if self.machine else None
+        self.documents.machine = self.machine
         self.documents.rechoose_dialects()
         self.diagnostics.configure(
             self.machine, settings.dialect, settings.run_budget, valid_severities(self.severity_overrides())
@@ -109,6 +108,7 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
         roots = [params.root_path]
     server.machine = machine_settings(roots[0]) if roots else None
     server.documents.workspace_dialect = server.machine.dialect if server.machine else None
+    server.documents.machine = server.machine
     server.roots = roots
     server.index.scan(roots)
     server.diagnostics.start(server.machine, roots, server.locale)
@@ -210,14 +210,19 @@ def build_server() -> CncMacroServer:
         ls.diagnostics.folders_changed(ls.roots)
 
     @server.feature(DOCUMENT_DIALECT)
-    def document_dialect(ls: CncMacroServer, params: Any) -> dict[str, str] | None:
+    def document_dialect(ls: CncMacroServer, params: Any) -> dict[str, Any] | None:
         """The dialect an open document is read in and what decided it (the status bar)."""
         uri = params.get("uri") if isinstance(params, dict) else getattr(params, "uri", None)
         doc = ls.documents.by_uri.get(uri) if isinstance(uri, str) else None
         if doc is None:
             return None
         source = ls.documents.dialect_source(doc.parsed.lines)
-        return {"dialect": doc.dialect.name, "title": doc.dialect.title, "source": source}
+        return {"dialect": doc.dialect.name, "title": doc.dialect.title, "lathe": doc.dialect.lathe, "source": source}
+
+    @server.feature(PROFILES)
+    def profiles(ls: CncMacroServer, params: Any) -> list[dict[str, Any]]:
+        """The control profiles this server knows (the client's picker and status bar)."""
+        return profile_facts()
 
     for module in (
         hover,

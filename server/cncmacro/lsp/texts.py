@@ -10,6 +10,8 @@ _TEXTS: dict[str, tuple[str, str]] = {
     "system": ("System variable", "系统变量"),
     "null": ("#0: always vacant, read-only", "#0：总是空，只读"),
     "undefined": ("No such variable in this dialect (alarm 115)", "该系统中不存在此变量（115号报警）"),
+    "name": ("System variable name", "系统变量名"),
+    "no_names": ("This dialect has no system variable names (alarm 114)", "该系统不支持系统变量名（114号报警）"),
     "r": ("read-only", "只读"),
     "w": ("write-only", "只写"),
     "rw": ("read/write", "可读写"),
@@ -27,6 +29,12 @@ _TEXTS: dict[str, tuple[str, str]] = {
     "no_jumps": ("no jump names it", "没有跳转指向此处"),
     "target": ("target", "目标"),
     "not_found": ("not found", "未找到"),
+    "on_control": (
+        "kept on the control (the machine file's programs_on_control); the run returns from it at once. "
+        "A file with this number in the workspace would be run in its place, to set what the caller reads.",
+        "存放在数控系统内（机床设置文件的 programs_on_control）；分析运行时调用后立即返回。"
+        "若工作区中有同号的程序文件，则运行该文件，用它设定调用者要读取的变量。",
+    ),
     "program": ("Program", "程序"),
     "file": ("file", "文件"),
     "line": ("line", "行"),

@@ -26,7 +26,22 @@ from ..dialects.alarms import (
     WRITE_PROTECTED,
 )
 from ..library.programs import LoadedFile
-from ..syntax.nodes import Assign, Block, Do, End, Goto, If, IndirectVar, Number, Output, Statement, Var, While, Word
+from ..syntax.nodes import (
+    Assign,
+    Block,
+    Do,
+    End,
+    Goto,
+    If,
+    IndirectVar,
+    NamedVar,
+    Number,
+    Output,
+    Statement,
+    Var,
+    While,
+    Word,
+)
 from . import jumps
 from .alarms import MacroAlarm, raiser
 from .expressions import ExpressionCompiler, Getter
@@ -379,6 +394,14 @@ class CompiledFile:
                 return nxt
 
             return set_other
+        if isinstance(target, NamedVar):
+            named = self.values.named(target, write=True)
+
+            def set_named(m: Any, pc: int) -> int:
+                m.write(float(named(m)), value(m), message)
+                return nxt
+
+            return set_named
         assert isinstance(target, IndirectVar)
         index = self.values.value(target.index)
 

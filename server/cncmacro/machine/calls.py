@@ -18,6 +18,42 @@ from .numbers import to_int
 
 NOT_ARGUMENTS = frozenset("GLNOP")
 MAX_REPEAT = 9999
+_G_GROUPS: dict[str, dict[float, str]] = {}
+
+
+def g_code_groups(dialect: Dialect) -> dict[float, str]:
+    """G code -> the name of its modal group in the dialect's code table (one-shot codes are
+    absent): what a G word in a block sets."""
+    groups = _G_GROUPS.get(dialect.data_module)
+    if groups is None:
+        groups = {}
+        for doc in dialect.g_codes():
+            try:
+                code = float(doc.code[1:])
+            except ValueError:
+                continue
+            if doc.group:
+                groups[code] = doc.group
+        _G_GROUPS[dialect.data_module] = groups
+    return groups
+
+
+def codes_before_call(words: list[tuple[str, float | None]], dialect: Dialect) -> list[float] | None:
+    """The words written before ``G65``/``G66`` in its block (N apart), as (letter, literal
+    value or None): the G codes the control carries out before it calls, or None when the block
+    is alarm 127. Only N may precede the call (seed 001 注3, seed 000 §3.28.3); a dialect whose
+    ``modal_g_before_call`` is ``"execute"`` (FANUC) sets modal G codes there and then calls, as
+    programs that run in production show. Any other word, a one-shot G code or G66/G67 is 127."""
+    if dialect.modal_g_before_call != "execute":
+        return None
+    groups = g_code_groups(dialect)
+    codes: list[float] = []
+    for letter, value in words:
+        group = groups.get(value) if letter == "G" and value is not None else None
+        if group is None or group == "macro":
+            return None
+        codes.append(value)  # type: ignore[arg-type]
+    return codes
 
 
 @dataclass(slots=True)
@@ -107,27 +143,33 @@ def repeat_count(value: float | None, dialect: Dialect, notes: list[str]) -> int
 def program_and_count(
     p_text: str | None, p_value: float | None, l_value: float | None, dialect: Dialect, notes: list[str]
 ) -> tuple[int, int]:
-    """``M98 P<count><program> L<count>``: (program number, repeat count). More than four
-    digits in P: the last four are the program and the ones before them the count."""
+    """``M98 P<count><program> L<count>``: (program number, repeat count). A P with more
+    digits than a program number has (``Dialect.m98_program_digits``: 4, or up to 8 on a
+    machine with longer program numbers) carries the count in the digits before them."""
     if p_value is None:
         raise MacroAlarm(P_VALUE_RANGE, detail("M98 needs P: the program to call", "M98 需要用 P 指定被调用的程序"))
     n = to_int(p_value)
     if n < 0:
         raise MacroAlarm(P_VALUE_RANGE, detail(f"P{n}: a program number cannot be negative", f"P{n}：程序号不能为负数"))
     digits = p_text.lstrip("+") if p_text and p_text.lstrip("+").isdigit() else str(n)
+    k = dialect.m98_program_digits
     if len(digits) > 8:
+        count_digits = 8 - k
         raise MacroAlarm(
             P_VALUE_RANGE,
             detail(
-                f"P{digits}: at most 8 digits (4 for the count, 4 for the program)",
-                f"P{digits}：最多 8 位（前 4 位为调用次数，后 4 位为程序号）",
+                f"P{digits}: at most 8 digits ({count_digits} for the count, {k} for the program)",
+                f"P{digits}：最多 8 位（前 {count_digits} 位为调用次数，后 {k} 位为程序号）",
+            ) if count_digits else detail(
+                f"P{digits}: a program number has at most 8 digits (the count goes in L)",
+                f"P{digits}：程序号最多 8 位（调用次数用 L 指定）",
             ),
         )
     count_in_p = 0
     program = n
-    if len(digits) > 4:
-        program = int(digits[-4:])
-        count_in_p = int(digits[:-4])
+    if len(digits) > k:
+        program = int(digits[-k:])
+        count_in_p = int(digits[:-k])
     if count_in_p and l_value is not None:
         if dialect.count_in_p_and_l_alarm:
             raise MacroAlarm(
@@ -140,11 +182,12 @@ def program_and_count(
         notes.append(detail("the count is given in both P and L; L is used", "P 和 L 同时指定了调用次数，按 L 执行"))
     if l_value is not None:
         return program, repeat_count(l_value, dialect, notes)
-    return program, max(1, count_in_p) if len(digits) > 4 else 1
+    return program, max(1, count_in_p) if len(digits) > k else 1
 
 
 def macro_program_number(value: float | None, dialect: Dialect) -> int:
-    """The program a G65/G66 P names: at most 4 digits on gsk980tdi (alarm 291), 8 on fanuc."""
+    """The program a G65/G66 P (or a gsk980tdi ``M98 P[#100]``) names: at most 4 digits on
+    gsk980tdi (alarm 291), 8 on fanuc."""
     if value is None:
         raise MacroAlarm(
             P_VALUE_RANGE,
@@ -160,6 +203,15 @@ def macro_program_number(value: float | None, dialect: Dialect) -> int:
             ),
         )
     return n
+
+
+def bad_name_detail(name: str) -> str:
+    """The text of the alarm for a bracketed program name the control refuses
+    (``library.programs.is_program_name``)."""
+    return detail(
+        f"P[{name}]: a program name may hold only letters, digits and + - _ . and may not start with '.'",
+        f"P[{name}]：程序名只能由字母（含中文）、数字及 + - _ . 组成，且不能以 . 开头",
+    )
 
 
 def argument_targets(letters: list[str]) -> list[int | None]:

@@ -6,7 +6,8 @@ a float, or None for vacant. The common shapes (a local variable, a constant, a 
 constant joined by ``+ - * /``) get closures of their own, because they are most of what
 loops execute. Errors that the text alone decides (a relation outside a condition, ``==`` on
 fanuc, brackets nested too deep) compile to a closure that raises the alarm when the block
-runs, since a program may well never reach the block.
+runs, since a program may well never reach the block. ``call_problem`` judges a function call
+(its arguments, and whether the dialect has the function) for the interpreter and the checks alike.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
+from ..dialects import BY_NAME
 from ..dialects.alarms import (
     ARGUMENT_RANGE,
     BRACKET_NESTING,
@@ -24,12 +26,14 @@ from ..dialects.alarms import (
     OVERFLOW,
     VARIABLE_NUMBER,
 )
-from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, Number, Relation, Unary, Var
+from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, NamedVar, Number, Relation, Unary, Var
 from .alarms import MacroAlarm, raiser
 from .numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away, to_increment
+from .variables import named_number
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
+    from ..dialects.tables import CommonRange
 
 Value = float | None
 Getter = Callable[[Any], Value]
@@ -67,33 +71,51 @@ def bracket_depth(node: Expr) -> int:
             stack.append((n.operand, d))
         elif isinstance(n, IndirectVar):
             stack.append((n.index, d))
+        elif isinstance(n, NamedVar) and n.index is not None:
+            stack.append((n.index, d))  # the subscript's brackets count once
     return best
 
 
 class VariableKinds:
-    """Sorts variable numbers into local, common, system or nonexistent, for one dialect and
-    one common range (a machine setting)."""
+    """Sorts variable numbers into local, common, system or nonexistent, for one profile as a
+    machine has it (its common ranges come from the profile or the machine file)."""
 
-    def __init__(self, dialect: Dialect, common: tuple[int, int]) -> None:
+    def __init__(self, dialect: Dialect) -> None:
         self.dialect = dialect
-        self.common = common
+        self.ranges = dialect.common_ranges
+
+    @property
+    def volatile(self) -> tuple[CommonRange, ...]:
+        """The common ranges cleared at power-off (the debugger's "Common" scope)."""
+        return tuple(r for r in self.ranges if not r.persistent)
+
+    @property
+    def persistent(self) -> tuple[CommonRange, ...]:
+        """The common ranges kept at power-off (#500–#999 and the like)."""
+        return tuple(r for r in self.ranges if r.persistent)
 
     def kind(self, n: int) -> str:
-        """``vacant`` (#0), ``local``, ``common``, ``persistent``, ``indirect9`` (gsk #9xxx),
+        """``vacant`` (#0), ``local``, ``common``, ``persistent`` (both below #1000, kept in
+        ``Machine.C``), ``extended`` (a common variable from #1000 up, such as the 30i's
+        #98000–#98499, kept with the stored system values), ``indirect9`` (gsk #9xxx),
         ``system`` or ``none``."""
         if n == 0:
             return "vacant"
         if 1 <= n <= 33:
             return "local"
-        if self.common[0] <= n <= self.common[1]:
-            return "common"
-        if 500 <= n <= 999:
-            return "persistent"
+        for r in self.ranges:
+            if r.first <= n <= r.last:
+                if n >= 1000:
+                    return "extended"
+                return "persistent" if r.persistent else "common"
         if self.dialect.nine_indirection and 9000 <= n <= 9999 and self.kind(n - 9000) in ("common", "persistent"):
             return "indirect9"
         if n >= 1000 and self.dialect.system_variable(n) is not None:
             return "system"
         return "none"
+
+    def persistent_numbers(self) -> list[int]:
+        return [n for r in self.persistent for n in range(r.first, r.last + 1)]
 
 
 class ExpressionCompiler:
@@ -145,6 +167,8 @@ class ExpressionCompiler:
                 return m.read(index(m))
 
             return indirect
+        if isinstance(node, NamedVar):
+            return self.named(node, write=False)  # type: ignore[return-value]
         if isinstance(node, Bracket):
             while isinstance(node, Bracket):  # nested brackets need no closure each
                 node = node.inner
@@ -188,10 +212,37 @@ class ExpressionCompiler:
             return lambda m: m.read(m.C[k])
         if kind == "system":
             return lambda m: m.read_system(n)
+        if kind == "extended":
+            return lambda m: m.S.get(n)
         return raiser(
             VARIABLE_NUMBER,
-            detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
+            self.dialect.missing_variable(n),
         )
+
+    def named(self, node: NamedVar, write: bool) -> Callable[[Any], Any]:
+        """For a read (``write`` False): a closure giving the value of ``[#_NAME[n]]``. For a
+        write: a closure giving the variable number it stands for. A dialect without names
+        compiles it to alarm 114; the number itself is decided by ``named_number``."""
+        dialect = self.dialect
+        if not dialect.variable_names:
+            return raiser(
+                FORMAT,
+                detail(
+                    f"{node.text}: system variable names are not a feature of {dialect.title}; write the number",
+                    f"{node.text}：{dialect.title} 不支持系统变量名，请写变量号",
+                ),
+            )
+        name = node.name
+        if node.index is None:
+            try:
+                number = named_number(dialect, name, None, False)
+            except MacroAlarm as alarm:
+                return raiser(alarm.number, alarm.message)
+            return (lambda m: number) if write else self.reader(number)
+        index = self._value(node.index)
+        if write:
+            return lambda m: named_number(dialect, name, index(m), True)
+        return lambda m: m.read(named_number(dialect, name, index(m), True))
 
     @staticmethod
     def _watched_local(n: int, line: int) -> Getter:
@@ -307,7 +358,12 @@ class ExpressionCompiler:
 
     def _call(self, node: Call) -> Getter:
         name = node.name
+        problem = call_problem(node, self.dialect)
+        if problem is not None:
+            return raiser(FORMAT, problem[1])
         args = [self._value(a) for a in node.args]
+        if name in _EXTRA:
+            return _EXTRA[name](args, node.comma)
         if name == "ATAN" and len(args) == 2:
             y, x = args
 
@@ -320,11 +376,7 @@ class ExpressionCompiler:
                 return r + 360.0 if r < 0 else r
 
             return atan2
-        if len(args) != 1:
-            return raiser(FORMAT, detail(f"{name} takes one argument", f"{name} 只能有一个自变量"))
-        f = _FUNCTIONS.get(name)
-        if f is None:
-            return raiser(FORMAT, detail(f"unknown function {name}", f"未知的函数 {name}"))
+        f = _FUNCTIONS[name]
         arg = args[0]
         if name == "ROUND" and self.in_address:
             return lambda m: to_increment(arg(m) or 0.0)
@@ -413,6 +465,86 @@ class ExpressionCompiler:
         if op == "GT":
             return lambda m: (a(m) or 0.0) > (b(m) or 0.0)
         return lambda m: (a(m) or 0.0) >= (b(m) or 0.0)
+
+
+# The forms of each function: (number of arguments, comma between the first two). ``None`` for
+# the forms every dialect has; else the key a dialect's ``extra_functions`` must hold.
+_FORMS: dict[str, dict[tuple[int, bool], str | None]] = {
+    **{name: {(1, False): None} for name in ("SIN", "COS", "TAN", "ASIN", "ACOS", "SQRT", "ABS", "LN", "EXP",
+                                               "ROUND", "FIX", "FUP", "BIN", "BCD")},
+    "ATAN": {(1, False): None, (2, False): None, (2, True): "ATAN[a,b]"},
+    "POW": {(2, True): "POW"},
+    "ADP": {(1, False): "ADP"},
+    "PRM": {(1, False): "PRM", (2, True): "PRM", (2, False): "PRM", (3, True): "PRM"},
+}  # fmt: skip
+_SHAPES = {
+    (1, False): "[a]",
+    (2, True): "[a,b]",
+    (2, False): "[a]/[b]",
+    (3, True): "[a,b]/[c]",
+}
+
+
+def call_problem(node: Call, dialect: Dialect) -> tuple[str, str] | None:
+    """Why a call cannot run on ``dialect`` (docs/semantics.md §3), or None: (``dialect-feature``
+    when the function or form is another dialect's, ``syntax`` when no dialect has it, with a
+    bilingual message). Either is alarm 114 when the block runs."""
+    forms = _FORMS.get(node.name, {})
+    shape = (len(node.args), node.comma)
+    written = f"{node.name}{_SHAPES.get(shape, '[...]')}"
+    if shape not in forms:
+        allowed = ", ".join(f"{node.name}{_SHAPES[s]}" for s in forms)
+        return "syntax", detail(
+            f"{written} is not a form of {node.name}; write {allowed}",
+            f"{written} 不是 {node.name} 的写法，应写作 {allowed}",
+        )
+    key = forms[shape]
+    if key is not None and key not in dialect.extra_functions:
+        has = " / ".join(d.title for d in BY_NAME.values() if key in d.extra_functions)
+        return "dialect-feature", detail(
+            f"{written} is not a function on {dialect.title} ({has} has it)",
+            f"{dialect.title} 没有 {written} 这个函数（{has} 才有）",
+        )
+    return None
+
+
+def _pow(args: list[Getter], comma: bool) -> Getter:
+    base, exponent = args
+
+    def power(m: Any) -> Value:
+        a = base(m) or 0.0
+        b = exponent(m) or 0.0
+        if (a < 0 and b != int(b)) or (a == 0 and b < 0):
+            raise MacroAlarm(
+                ARGUMENT_RANGE,
+                detail(f"POW[{a:g},{b:g}] has no real value", f"POW[{a:g},{b:g}] 没有实数值"),
+            )
+        try:
+            r = math.pow(a, b)
+        except OverflowError:
+            r = math.inf
+        if not -MAX_VALUE <= r <= MAX_VALUE:
+            raise MacroAlarm(OVERFLOW, detail(f"POW[{a:g},{b:g}] is too large", f"POW[{a:g},{b:g}] 的结果太大"))
+        return r
+
+    return power
+
+
+def _adp(args: list[Getter], comma: bool) -> Getter:
+    # ADP undoes the least-increment reading of an argument written without a point (X10 as
+    # 0.010). The simulated machine passes G65/G66 arguments as written in both input modes
+    # (machine/calls.py ``map_arguments``), so there is nothing to undo: the value is kept.
+    # Should arguments ever be scaled, ADP must multiply by the same factor.
+    arg = args[0]
+    return lambda m: arg(m) or 0.0
+
+
+def _prm(args: list[Getter], comma: bool) -> Getter:
+    # the simulated machine has no parameters: every parameter (and bit) reads 0
+    return lambda m: 0.0
+
+
+_EXTRA: dict[str, Callable[[list[Getter], bool], Getter]] = {"POW": _pow, "ADP": _adp, "PRM": _prm}
 
 
 def _is_vacant_test(node: Relation) -> bool:

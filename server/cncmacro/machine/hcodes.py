@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, DIVISION_BY_ZERO, FORMAT
-from ..syntax.nodes import IndirectVar, Number, Var, Word
+from ..syntax.nodes import Block, IndirectVar, Number, Var, Word
 from .alarms import MacroAlarm, raiser
 from .numbers import bcd, bin_, round_half_away
 
@@ -89,8 +89,9 @@ BRANCHES: dict[int, Callable[[float, float], bool]] = {
 }
 
 
-def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int) -> Runner:
-    """The closure for ``G65 Hm P.. Q.. R..`` (``words`` are those after G65)."""
+def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int, block: Block | None = None) -> Runner:
+    """The closure for ``G65 Hm P.. Q.. R..`` (``words`` are those after G65, ``block`` the
+    whole block, whose comment after ``H99 Pn`` is the alarm's text)."""
     by_letter = {w.letter: w for w in words}
     extra = [w.letter for w in words if w.letter not in "HPQR"]
     if extra:
@@ -117,12 +118,13 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int) -> Runner:
         target = cf.values.value(p_word.value)
         if h == 99:
             base = cf.machine.dialect.macro_alarm_base
+            text = h99_message(block.comment_after(p_word.end)) if block is not None else None
 
             def alarm(m: Any, pc: int) -> int:
                 n = _int(target(m) or 0.0)
                 raise MacroAlarm(
                     base + n,
-                    detail(f"G65 H99 P{n}: user alarm {base + n}", f"G65 H99 P{n}：用户报警 {base + n}"),
+                    text or detail(f"G65 H99 P{n}: user alarm {base + n}", f"G65 H99 P{n}：用户报警 {base + n}"),
                 )
 
             return alarm
@@ -175,6 +177,18 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int) -> Runner:
         return nxt
 
     return arithmetic
+
+
+def h99_message(comment: str | None) -> str | None:
+    """The alarm text of ``G65 H99 Pn(/text)``: the comment after P without its leading ``/``
+    (seed 000 §3.28.2 writes ``P15(/用户自定义报警)``, whose text is 用户自定义报警); None when
+    there is none, and then the alarm has no text of its own, as the seed's note 1 says."""
+    if comment is None:
+        return None
+    text = comment.strip()
+    if text.startswith("/"):
+        text = text[1:].strip()
+    return text or None
 
 
 def _operand(cf: CompiledFile, w: Word | None) -> Callable[[Any], float]:

@@ -18,12 +18,13 @@ from typing import Any
 
 from ..bilingual import detail
 from ..dialects import Dialect, get_dialect
-from ..dialects.alarms import MACRO_NESTING, PROGRAM_NOT_FOUND, SUBPROGRAM_NESTING
+from ..dialects.alarms import MACRO_NESTING, P_VALUE_RANGE, PROGRAM_NOT_FOUND, SUBPROGRAM_NESTING
 from ..library.machine_file import CallCode, MachineSettings
-from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
+from ..library.profiles import machine_profile
+from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary, is_program_name
 from .alarms import Alarm, CallSite, MacroAlarm
 from .blocks import CompiledFile
-from .calls import Arguments, map_arguments, repeat_count
+from .calls import Arguments, bad_name_detail, map_arguments, repeat_count
 from .expressions import VariableKinds
 from .frames import Frame, ModalCall, Move, Note
 from .motion import Motion
@@ -91,9 +92,10 @@ class Machine(VariableAccess, Motion):
         self.settings = settings or MachineSettings()
         if dialect is None or isinstance(dialect, str):
             dialect = get_dialect(dialect or self.settings.dialect)
+        dialect = machine_profile(dialect, self.settings)
         self.dialect = dialect
         self.library = library or ProgramLibrary()
-        self.kinds = VariableKinds(dialect, self.settings.common)
+        self.kinds = VariableKinds(dialect)
         self.m99_ends_main = m99_ends_main
         # Analysis hooks, all off for plain runs. ``watching`` (set before the first block
         # runs) compiles blocks that report vacant argument reads and assigned values;
@@ -132,7 +134,14 @@ class Machine(VariableAccess, Motion):
         self.notes: list[Note] = []
         self.cancel_requested = False
         self.pause_requested = False
-        self.apply_presets(self.settings.variables)
+        # presets of the machine file that this profile cannot take (a variable it lacks): the
+        # run refuses to start with them (``setup.prepare_run``), the analysis runs without them
+        self.preset_problems: list[str] = []
+        for n, v in self.settings.variables.items():
+            try:
+                self.apply_presets({n: v})
+            except ValueError as e:
+                self.preset_problems.append(e.args[0] if e.args else str(e))
 
     # ---------------------------------------------------------------- setting up
     def apply_presets(self, presets: dict[int, float]) -> None:
@@ -145,6 +154,8 @@ class Machine(VariableAccess, Motion):
                 self.L[n] = v
             elif kind in ("common", "persistent"):
                 self.C[n] = v
+            elif kind == "extended":
+                self.S[n] = v
             elif kind == "system":
                 row = self.dialect.system_variable(n)
                 assert row is not None
@@ -159,12 +170,21 @@ class Machine(VariableAccess, Motion):
                 raise ValueError(f"#{n} is not a variable of {self.dialect.title} that can be preset")
 
     def load_persistent(self, values: dict[int, float]) -> None:
+        """Put back the values kept at power-off (the machine's persistent common ranges)."""
         for n, v in values.items():
-            if 500 <= n <= 999:
+            kind = self.kinds.kind(n)
+            if kind == "persistent":
                 self.C[n] = v
+            elif kind == "extended" and any(n in r for r in self.kinds.persistent):
+                self.S[n] = v
 
     def persistent_values(self) -> dict[int, float]:
-        return {n: v for n in range(500, 1000) if (v := self.C[n]) is not None}
+        out: dict[int, float] = {}
+        for n in self.kinds.persistent_numbers():
+            v = self.C[n] if n < 1000 else self.S.get(n)
+            if v is not None:
+                out[n] = v
+        return out
 
     def compiled_file(self, file: LoadedFile) -> CompiledFile:
         cf = self.compiled.get(file.path)
@@ -193,6 +213,15 @@ class Machine(VariableAccess, Motion):
                 unit = program.units[1]
         found = FoundProgram(loaded, unit)
         self.start(found)
+        for u in program.units:
+            if u.duplicate and u.number is not None:
+                kept = program.unit_numbered(u.number)
+                first = kept.start + 1 if kept is not None else 0
+                self.notes.append(Note("call", detail(
+                    f"O{u.number:04d} repeats the program number of line {first}: the control keeps the first "
+                    "program and ignores this one",
+                    f"O{u.number:04d} 与第 {first} 行的程序号重复：系统只保留前一个程序，忽略此处的程序",
+                ), path, u.start, "duplicate-program"))  # fmt: skip
         return found
 
     # ---------------------------------------------------------------- state for the front ends
@@ -395,6 +424,8 @@ class Machine(VariableAccess, Motion):
     def find_program(self, number: int) -> FoundProgram:
         near = self.frames[-1].found.file if self.frames else None
         found = self.library.find_number(number, near)
+        if found is None and self.dialect.on_control(number):
+            return self.library.control_program(number)
         if found is None:
             raise MacroAlarm(PROGRAM_NOT_FOUND, detail(f"program O{number:04d} not found", f"未找到程序 O{number:04d}"))
         return found
@@ -408,6 +439,8 @@ class Machine(VariableAccess, Motion):
                     f"P[{name}]：{self.dialect.title} 只能用程序号指定程序",
                 ),
             )
+        if not is_program_name(name):
+            raise MacroAlarm(P_VALUE_RANGE, bad_name_detail(name))
         near = self.frames[-1].found.file if self.frames else None
         found = self.library.find_name(name, near)
         if found is None:
@@ -512,6 +545,7 @@ class Machine(VariableAccess, Motion):
     def end_program(self, pc: int) -> int:
         """M30 / M02: the run is complete; modal calls are cancelled."""
         self.modal_calls.clear()
+        self.modal["macro"] = 67.0
         self.status = COMPLETED
         self.frames[-1].pc = pc
         return -1
@@ -533,6 +567,7 @@ class Machine(VariableAccess, Motion):
 
     # ---------------------------------------------------------------- modal and code calls
     def set_modal_call(self, found: FoundProgram, arguments: Arguments, repeats: int) -> None:
+        """G66: the macro is called after each later move; modal group 12 (#4012) reads 66."""
         self.modal_calls.append(
             ModalCall(
                 found,
@@ -542,10 +577,14 @@ class Machine(VariableAccess, Motion):
                 self.frames[-1].macro_level,
             )
         )
+        self.modal["macro"] = 66.0
 
     def cancel_modal_call(self) -> None:
+        """G67: the innermost G66 ends; group 12 reads 67 once none is left."""
         if self.modal_calls:
             self.modal_calls.pop()
+        if not self.modal_calls:
+            self.modal["macro"] = 67.0
 
     def modal_call(self, pc: int, nxt: int) -> int:
         """After a move while G66 is in force: call the macro, unless it is that macro moving."""
@@ -649,10 +688,11 @@ class Machine(VariableAccess, Motion):
         for n in range(1, 34):
             if level0[n] is not None:
                 out[n] = level0[n]  # type: ignore[assignment]
-        for n in range(100, 1000):
-            v = self.C[n]
-            if v is not None:
-                out[n] = v
+        for r in self.kinds.ranges:
+            for n in range(r.first, r.last + 1):
+                v = self.C[n] if n < 1000 else self.S.get(n)
+                if v is not None:
+                    out[n] = v
         for n in sorted(self.preset_system | self.written_system):
             try:
                 v = self.read_system(n)

@@ -20,6 +20,7 @@ from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
 from .arcs import ARC_MODES, arc_centre, arc_planes
+from .calls import g_code_groups
 from .frames import Move
 
 if TYPE_CHECKING:
@@ -64,15 +65,10 @@ class Motion:
         self.cycle_start_z: float | None = None
         self.moves: list[Move] = []
         self.record_moves = True
-        groups: dict[float, str] = {}
-        for doc in self.dialect.g_codes():
-            try:
-                groups[float(doc.code[1:])] = doc.group
-            except ValueError:
-                continue
-        self.g_groups = groups
+        self.g_groups = g_code_groups(self.dialect)
         self._cycle_codes = self.dialect.cycle_codes
         self._lathe = self.dialect.lathe
+        self._call_needs_distance = self.dialect.modal_call_needs_distance
         self._plain_kinds: dict[str, Any] | None = None
         self._plain_groups: dict[float, str] | None = None
         self._arc_planes = arc_planes(self.axis_index)
@@ -212,7 +208,7 @@ class Motion:
 
     def run_plain(self, plan: tuple[Any, ...], line: int) -> bool:
         """Carry out a ``plain_plan`` with its file and next line appended; returns whether
-        an axis moved."""
+        the block counts as a move for a G66 call (``execute_nc``)."""
         modal_sets, code_sets, axes, inc, _, file, _ = plan
         modal = self.modal
         for group, g in modal_sets:
@@ -242,7 +238,7 @@ class Motion:
         extra = plan[4]
         centre = self.arc_centre(mode, start, target, dict(extra)) if extra and mode in ARC_MODES else None
         self._record(file, line, mode, tuple(start), tuple(target), centre)
-        return True
+        return not self._call_needs_distance or target != start or centre is not None
 
     def _cycle_fallback(self, plan: tuple[Any, ...], file: str, line: int) -> bool:
         inverse = {v: k for k, v in self.dialect.incremental_letters.items()}
@@ -253,9 +249,10 @@ class Motion:
 
     # ---------------------------------------------------------------- one block
     def execute_nc(self, words: list[tuple[str, float]], file: str, line: int) -> tuple[bool, float | None]:
-        """Carry out the NC words of a block. Returns (moved, skip_label): whether an axis
-        moved (for G66 modal calls) and, for a lathe roughing cycle with Q, the label after
-        which the program continues."""
+        """Carry out the NC words of a block. Returns (moved, skip_label): whether the block
+        counts as a move for G66 modal calls (a move command; on a dialect whose
+        ``modal_call_needs_distance`` is set, one that goes somewhere or draws an arc) and, for a
+        lathe roughing cycle with Q, the label after which the program continues."""
         gs: list[float] = []
         axes: dict[int, float] = {}
         incremental: dict[int, float] = {}
@@ -311,8 +308,10 @@ class Motion:
         if mode in self.dialect.cycle_codes:
             self._record(file, line, mode, tuple(self.pos), tuple(target))
             return True, None  # a turning cycle ends where it started
-        self._move(file, line, mode, target, self._block_arc(mode, target, other))
-        return True, None
+        centre = self._block_arc(mode, target, other)
+        moved = not self._call_needs_distance or target != self.pos or centre is not None
+        self._move(file, line, mode, target, centre)
+        return moved, None
 
     def arc_centre(
         self, mode: float, start: Sequence[float], end: Sequence[float], words: dict[str, float]

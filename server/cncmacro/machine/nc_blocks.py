@@ -15,7 +15,7 @@ from ..bilingual import detail
 from ..dialects.alarms import DECIMAL_POINT, G_ARGUMENT, IMPROPER_G_CODE, NC_AND_MACRO, PROGRAM_NOT_FOUND
 from ..syntax.nodes import Block, Bracket, Number, Var, Word
 from .alarms import MacroAlarm, raiser
-from .calls import macro_program_number, map_arguments, program_and_count, repeat_count
+from .calls import codes_before_call, macro_program_number, map_arguments, program_and_count, repeat_count
 from .hcodes import compile_h_code
 from .words import g_code_known, m_decimal_point, unknown_g_code
 
@@ -37,7 +37,7 @@ def compile_nc_block(cf: CompiledFile, block: Block, pc: int, nxt: int) -> Runne
     for i, w in enumerate(words):
         g = _literal_g(w)
         if g in (65.0, 66.0):
-            return _macro_call(cf, words, i, g, nxt)
+            return _macro_call(cf, block, words, i, g, nxt)
     if any(_literal_g(w) == 67.0 for w in words):
         rest = [w for w in words if _literal_g(w) != 67.0]
         inner = _nc(cf, block, rest, nxt) if rest else None
@@ -92,16 +92,22 @@ def _run_plain_line(plan: tuple[Any, ...], m: Any, pc: int) -> int:
 # ---------------------------------------------------------------- G65 / G66
 
 
-def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int) -> Runner:
+def _macro_call(cf: CompiledFile, block: Block, words: list[Word], at: int, g: float, nxt: int) -> Runner:
     name = "G65" if g == 65.0 else "G66"
-    for w in words[:at]:
-        return raiser(
-            NC_AND_MACRO,
-            detail(
-                f"{w.letter} before {name}: only N may precede {name} in its block",
-                f"{name} 之前有 {w.letter}：程序段中 {name} 之前只允许出现 N",
-            ),
-        )
+    dialect = cf.machine.dialect
+    before: list[tuple[str, float]] = []
+    if at > 0:
+        codes = codes_before_call([(w.letter, _literal_g(w)) for w in words[:at]], dialect)
+        if codes is None:
+            w = words[0]
+            return raiser(
+                NC_AND_MACRO,
+                detail(
+                    f"{w.letter} before {name}: only N may precede {name} in its block",
+                    f"{name} 之前有 {w.letter}：程序段中 {name} 之前只允许出现 N",
+                ),
+            )
+        before = [("G", c) for c in codes]  # modal G codes the control sets before it calls
     after = words[at + 1 :]
     for w in after:
         if w.letter == "O":  # M after G65 is the argument #13; G is alarm 129 below
@@ -109,14 +115,13 @@ def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int
                 NC_AND_MACRO,
                 detail(f"{name} may not share its block with an O word", f"{name} 不能与 O 代码在同一程序段"),
             )
-    dialect = cf.machine.dialect
     if (
         g == 65.0
         and dialect.h_codes
         and any(w.letter == "H" for w in after)
         and not any(w.letter == "L" for w in after)
     ):
-        return compile_h_code(cf, after, nxt)
+        return compile_h_code(cf, after, nxt, block)
     p_word = next((w for w in after if w.letter == "P"), None)
     l_word = next((w for w in after if w.letter == "L"), None)
     args = [w for w in after if w.letter not in ("P", "L")]
@@ -130,7 +135,11 @@ def _macro_call(cf: CompiledFile, words: list[Word], at: int, g: float, nxt: int
     count = _getter(cf, l_word)
     arg_values = [(w.letter, _getter(cf, w)) for w in args]
 
+    path = cf.file.path
+
     def evaluate(m: Any, pc: int) -> tuple[Any, Any, int]:
+        if before:
+            m.execute_nc(before, path, pc)
         found = resolve(m)
         arguments = map_arguments([(letter, get(m)) for letter, get in arg_values], dialect)
         notes: list[str] = []
@@ -232,7 +241,8 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
         ),
         None,
     )
-    get_bracket = cf.values.value(p_bracket_var) if p_bracket_var is not None else None
+    # P[#100] names a program on a dialect with bracketed names; elsewhere it is P#100
+    get_bracket = cf.values.value(p_bracket_var) if p_bracket_var is not None and dialect.bracket_names else None
     check_g = strict and any(letter == "G" and get is not None for letter, _, get in items)
 
     def general(m: Any, pc: int) -> int:
@@ -320,8 +330,9 @@ def _subprogram_target(
     if p_name is not None:
         found = m.find_program_named(p_name)
         repeats = repeat_count(words.get("L"), dialect, notes)
-    elif get_bracket is not None:
-        number, repeats = program_and_count(None, get_bracket(m), words.get("L"), dialect, notes)
+    elif get_bracket is not None:  # P[#100]: the variable holds a program name only, never a count (seed 002)
+        number = macro_program_number(get_bracket(m), dialect)
+        repeats = repeat_count(words.get("L"), dialect, notes)
         found = m.find_program(number)
     elif "P" not in words:
         if q is None:

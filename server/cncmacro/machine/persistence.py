@@ -1,4 +1,6 @@
-"""Keeping ``#500–#999`` between runs: a small JSON file, written atomically.
+"""Keeping the persistent commons (``#500–#999``, and e.g. the 30i's ``#98000–#98499``) between runs:
+a small JSON file, written atomically. Which numbers persist is the machine's to say
+(``Machine.persistent_values``, ``Machine.load_persistent``); this module only keeps them.
 
 The file is written to a temporary file in the same folder, flushed and fsynced, then renamed
 over the old one, so that a run killed at any moment leaves either the old file or the new
@@ -17,7 +19,6 @@ import tempfile
 import time
 from pathlib import Path
 
-FIRST, LAST = 500, 999
 STALE_SECONDS = 60.0
 
 
@@ -39,12 +40,12 @@ def load_persistent(path: Path) -> dict[int, float]:
         out = {int(k): float(v) for k, v in values.items() if v is not None}
     except (ValueError, TypeError, AttributeError, KeyError) as e:
         raise PersistentFileError(f"{path}: not a persistent-variable file ({e})") from e
-    return {k: v for k, v in out.items() if FIRST <= k <= LAST}
+    return out
 
 
 def save_persistent(path: Path, values: dict[int, float]) -> None:
     """Write the values atomically (temporary file, fsync, rename)."""
-    payload = {"variables": {str(k): values[k] for k in sorted(values) if FIRST <= k <= LAST}}
+    payload = {"variables": {str(k): values[k] for k in sorted(values)}}
     text = json.dumps(payload, indent=1) + "\n"
     folder = path.parent
     folder.mkdir(parents=True, exist_ok=True)

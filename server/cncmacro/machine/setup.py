@@ -87,6 +87,8 @@ def prepare_run(
         settings = replace(settings, max_blocks=max_blocks)
     chosen = choose_dialect(source.text.splitlines()[:HEADER_LINES], settings.dialect, dialect)
     machine = Machine(get_dialect(chosen), settings, ProgramLibrary(search_paths or []))
+    if machine.preset_problems:
+        raise SetupError(machine.preset_problems[0])
     persistent = settings.persistent_path() or (program.parent / PERSISTENT_FILE_NAME)
     try:
         machine.load_persistent(load_persistent(persistent))

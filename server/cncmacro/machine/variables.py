@@ -4,16 +4,17 @@
 (index 100–999), ``S`` the stored system variables (offsets, counters, signals). Live system
 variables (modal codes, positions, the clock) are computed from the machine state whenever
 they are read; which is which comes from the dialect's table, row by row. Compiled blocks read
-locals and commons directly; everything else comes through here.
+locals and commons directly; everything else comes through here. ``named_number`` says which
+number a FANUC 30i name ``[#_NAME[n]]`` stands for.
 """
 
 from __future__ import annotations
 
 import datetime as _dt
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
-from ..dialects.alarms import OVERFLOW, VARIABLE_NUMBER, WRITE_PROTECTED
+from ..dialects.alarms import NAME_SUBSCRIPT, NO_VARIABLE_NAME, OVERFLOW, VARIABLE_NUMBER, WRITE_PROTECTED
 from ..dialects.tables import SystemVariable
 from .alarms import MacroAlarm
 from .numbers import MAX_VALUE, round_half_away
@@ -23,6 +24,55 @@ if TYPE_CHECKING:
     from .expressions import VariableKinds
 
 Value = float | None
+
+
+def named_number(dialect: Dialect, name: str, subscript: Value, has_subscript: bool) -> int:
+    """The number ``[#_NAME]`` or ``[#_NAME[subscript]]`` stands for on ``dialect``
+    (docs/semantics.md §2): ``[#_NAME]`` is the name's first number, ``[#_NAME[n]]`` the n-th
+    from it. A name the dialect does not have is alarm 1098; a subscript that is missing where
+    the name covers several numbers, given where it covers one, vacant, or outside 1 to their
+    count is alarm 1099. The subscript is rounded as a variable number is."""
+    row = dialect.variable_name(name)
+    if row is None:
+        raise MacroAlarm(
+            NO_VARIABLE_NAME,
+            detail(f"#_{name}: {dialect.title} has no variable of that name",
+                   f"#_{name}：{dialect.title} 没有这个变量名"),
+        )  # fmt: skip
+    if not row.indexed:
+        if has_subscript:
+            raise MacroAlarm(
+                NAME_SUBSCRIPT,
+                detail(f"#_{name} is the single variable #{row.first}: it takes no subscript [n]",
+                       f"#_{name} 即单个变量 #{row.first}，不能带下标 [n]"),
+            )  # fmt: skip
+        return row.first
+    if not has_subscript:
+        raise MacroAlarm(
+            NAME_SUBSCRIPT,
+            detail(f"#_{name} needs a subscript: #_{name}[n] with n from 1 to {row.count}",
+                   f"#_{name} 需要下标：#_{name}[n]，n 为 1～{row.count}"),
+        )  # fmt: skip
+    if subscript is None:
+        raise MacroAlarm(
+            NAME_SUBSCRIPT,
+            detail(f"#_{name}[]: the subscript is vacant; it must be 1 to {row.count}",
+                   f"#_{name}[]：下标为空，必须为 1～{row.count}"),
+        )  # fmt: skip
+    if not -MAX_VALUE <= subscript <= MAX_VALUE:
+        raise MacroAlarm(
+            NAME_SUBSCRIPT,
+            detail(f"#_{name}[{subscript:g}]: the subscript must be 1 to {row.count}",
+                   f"#_{name}[{subscript:g}]：下标必须为 1～{row.count}"),
+        )  # fmt: skip
+    n = int(round_half_away(subscript))
+    if not 1 <= n <= row.count:
+        raise MacroAlarm(
+            NAME_SUBSCRIPT,
+            detail(f"#_{name}[{n}]: the subscript must be 1 to {row.count}",
+                   f"#_{name}[{n}]：下标必须为 1～{row.count}"),
+        )  # fmt: skip
+    return row.first + n - 1
 
 
 class StopRequest(Exception):
@@ -47,13 +97,14 @@ class VariableAccess:
     start_date: int
     start_time: int
     written_system: set[int]
+    frames: list[Any]
 
     def _row(self, n: int) -> SystemVariable:
         row = self.dialect.system_variable(n)
         if row is None:
             raise MacroAlarm(
                 VARIABLE_NUMBER,
-                detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
+                self.dialect.missing_variable(n),
             )
         return row
 
@@ -80,9 +131,11 @@ class VariableAccess:
             return self.read(self.C[n - 9000])
         if kind == "system":
             return self.read_system(n)
+        if kind == "extended":
+            return self.S.get(n)
         raise MacroAlarm(
             VARIABLE_NUMBER,
-            detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
+            self.dialect.missing_variable(n),
         )
 
     def write(self, index: Value, value: Value, message: str | None = None) -> None:
@@ -107,10 +160,12 @@ class VariableAccess:
             self.write(self.C[n - 9000], value, message)
         elif kind == "system":
             self.write_system(n, value, message)
+        elif kind == "extended":
+            self.S[n] = value
         else:
             raise MacroAlarm(
                 VARIABLE_NUMBER,
-                detail(f"#{n} does not exist on {self.dialect.title}", f"{self.dialect.title} 没有变量 #{n}"),
+                self.dialect.missing_variable(n),
             )
 
     # ---------------------------------------------------------------- system variables
@@ -134,6 +189,11 @@ class VariableAccess:
             return self.position_value(row.param, k)
         if source == "timer":
             return self.timer_value(n, row.param)
+        if source == "constant":
+            return row.default
+        if source == "main":
+            number = self.frames[0].found.unit.number if self.frames else None
+            return float(number) if number is not None else None
         if source == "date":
             return self.S.get(n, float(self.date_time()[0]))
         if source == "time":

@@ -10,8 +10,8 @@ written with a decimal point (``M30.``) is alarm 007 "illegal use of decimal poi
 only warnings and a run goes on as if the word were a one-shot code.
 
 ``WH`` for WHILE is read by FANUC (``Dialect.keyword_abbreviations``) and ``IF[..] #1=2`` without
-THEN by Haas (``Dialect.if_without_then``); a dialect without the switch stops with alarm 114 at
-such a block. The interpreter (``blocks.py``, ``nc_blocks.py``) and the static checks
+THEN by the FANUC profiles and Haas (``Dialect.if_without_then``); a dialect without the switch
+stops with alarm 114 at such a block. The interpreter (``blocks.py``, ``nc_blocks.py``) and the static checks
 (``analysis/call_checks.py``, ``analysis/statement_checks.py``) take their messages from here.
 """
 
@@ -91,9 +91,9 @@ def missing_then(dialect: Dialect) -> Detail:
     """What to say of ``IF [cond] <statement>`` without THEN on a dialect that needs THEN."""
     return detail(
         f"THEN is missing: {dialect.title} runs only IF[...] GOTO n and IF[...] THEN <statement>, and "
-        "stops at this block with alarm 114; write THEN before the statement (Haas controls run it without)",
+        "stops at this block with alarm 114; write THEN before the statement (FANUC and Haas controls run it without)",
         f"缺少 THEN：{dialect.title} 只接受 IF[...] GOTO n 和 IF[...] THEN <语句>，执行到此程序段时报警 114；"
-        "请在语句前写 THEN（哈斯系统可以省略）",
+        "请在语句前写 THEN（FANUC 与哈斯系统可以省略）",
     )
 
 

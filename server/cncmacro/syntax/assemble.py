@@ -2,7 +2,8 @@
 
 Both the lark grammar and the fast path for plain NC blocks end here, so whatever reads the
 line, a leading ``O`` word becomes the program header, a leading ``N`` word the sequence
-number, and a comment right after ``#3000=n`` its message in exactly the same way.
+number, and a comment right after ``#3000=n`` its message (``nodes.comment_after``, which also
+finds the text of a gsk980tdi ``G65 H99 Pn(/text)``) in exactly the same way.
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from collections.abc import Sequence
 
 from ..bilingual import Detail, detail
 from .lines import Prepared
-from .nodes import Abbreviation, Assign, Block, Comment, Do, End, If, Number, Problem, While, Word
+from .nodes import Abbreviation, Assign, Block, Comment, Do, End, If, Number, Problem, While, Word, comment_after
 
 
 class Items(list):  # type: ignore[type-arg]
@@ -54,7 +55,7 @@ def assemble(items: Sequence[object], prep: Prepared) -> Block:
             if prep.comments:
                 target = item.then if isinstance(item, If) else item
                 if isinstance(target, Assign):
-                    target.message = _comment_after(prep.comments, target.end)
+                    target.message = comment_after(prep.comments, target.end)
             statements.append(item)
     stmts = tuple(statements)
     structural = (
@@ -123,11 +124,3 @@ def _whole_literal(w: Word, not_literal: Detail, not_whole: Detail, problems: li
 
 def _first_comment_text(comments: tuple[Comment, ...]) -> str | None:
     return comments[0].text.strip() if comments else None
-
-
-def _comment_after(comments: tuple[Comment, ...], column: int) -> str | None:
-    """The text of the first comment that starts at or after ``column``."""
-    for c in comments:
-        if c.start >= column:
-            return c.text
-    return None

@@ -29,6 +29,7 @@ from .nodes import (
     Goto,
     If,
     IndirectVar,
+    NamedVar,
     Number,
     Output,
     OutputPart,
@@ -120,11 +121,18 @@ class _Builder(Transformer):
         return Unary(str(sign), x, sign.start_pos, x.end)
 
     def assign(self, c):
+        if len(c) == 5:  # [#_NAME] = value
+            lb, target, _rb, _eq, value = c
+            if self.relations and _has_relation(value):
+                raise _relation_error(value)
+            if self.relations and _has_relation(target):
+                raise _relation_error(target)
+            return Assign(target, value, None, lb.start_pos, value.end)
         target, _eq, value = c
         if self.relations and _has_relation(value):
             raise _relation_error(value)
-        if self.relations and isinstance(target, IndirectVar) and _has_relation(target.index):
-            raise _relation_error(target.index)
+        if self.relations and isinstance(target, (IndirectVar, NamedVar)) and _has_relation(target):
+            raise _relation_error(target)
         return Assign(target, value, None, target.start, value.end)
 
     def if_stmt(self, c):
@@ -200,20 +208,30 @@ class _Builder(Transformer):
                 raise _relation_error(side)
         return Relation(RELATION_NAMES.get(spelling, spelling), spelling, left, right, left.start, right.end)
 
+    def named(self, c):
+        head = c[0]
+        name = head[head.index("_") + 1 :].upper()
+        index = c[1] if len(c) > 1 else None
+        return NamedVar(name, index, head.start_pos, index.end if index is not None else head.end_pos)
+
     def variable(self, c):
+        head = c[0]
+        if isinstance(head, NamedVar):
+            return head
         if len(c) == 1:
-            return _varnum(c[0])
+            return _varnum(head)
         hash_, index = c
         return IndirectVar(index, hash_.start_pos, index.end)
 
     def call(self, c):
         name = self._word(c[0])
-        args = tuple(c[i] for i in range(2, len(c), 4))
+        args = tuple(x for x in c[1:] if not isinstance(x, Token))
         if self.relations:
             for a in args:
                 if _has_relation(a):
                     raise _relation_error(a)
-        return Call(name, args, c[0].start_pos, c[-1].end_pos)
+        comma = any(isinstance(x, Token) and x.type == "COMMA" for x in c)
+        return Call(name, args, c[0].start_pos, c[-1].end_pos, comma)
 
 
 def _has_relation(expr: Expr) -> bool:
@@ -233,6 +251,8 @@ def _has_relation(expr: Expr) -> bool:
         elif isinstance(e, Call):
             stack.extend(e.args)
         elif isinstance(e, IndirectVar):
+            stack.append(e.index)
+        elif isinstance(e, NamedVar) and e.index is not None:
             stack.append(e.index)
     return False
 
@@ -265,21 +285,17 @@ def _find_relation(expr: Expr) -> Relation:
 
 
 def _check_condition(cond: Bracket) -> None:
-    """A condition is ``[a op b]`` or bracketed conditions joined by AND, OR or XOR."""
+    """A condition is ``[a op b]`` or bracketed conditions joined by AND, OR or XOR, as many as
+    the line holds (``[[a] AND [b] AND [c]]`` is read left to right, as every other operator)."""
     stack: list[Bracket] = [cond]
     while stack:
         b = stack.pop()
         inner = b.inner
         if isinstance(inner, Relation):
             continue
-        if (
-            isinstance(inner, Binary)
-            and inner.op in ("AND", "OR", "XOR")
-            and _is_bracketed_condition(inner.left)
-            and _is_bracketed_condition(inner.right)
-        ):
-            stack.append(inner.left)  # type: ignore[arg-type]
-            stack.append(inner.right)  # type: ignore[arg-type]
+        sides = _joined_conditions(inner)
+        if sides is not None:
+            stack.extend(sides)
             continue
         if _has_relation(inner):
             raise BlockError(
@@ -298,6 +314,26 @@ def _check_condition(cond: Bracket) -> None:
             b.start,
             b.end,
         )
+
+
+def _joined_conditions(e: Expr) -> list[Bracket] | None:
+    """The bracketed conditions that AND, OR and XOR join in ``e`` (``[a] AND [b] OR [c]``), or
+    None when ``e`` is not such a chain. A loop, not recursion: a chain may be long."""
+    out: list[Bracket] = []
+    pending: list[Expr] = [e]
+    while pending:
+        x = pending.pop()
+        if isinstance(x, Binary) and x.op in ("AND", "OR", "XOR"):
+            for side in (x.right, x.left):
+                if isinstance(side, Bracket) and _is_bracketed_condition(side):
+                    out.append(side)
+                elif isinstance(side, Binary) and side.op in ("AND", "OR", "XOR"):
+                    pending.append(side)
+                else:
+                    return None
+        else:
+            return None
+    return out
 
 
 def _is_bracketed_condition(e: Expr) -> bool:

@@ -19,6 +19,7 @@ _NAMES: dict[str, str] = {
     "NUMBER": detail("a number", "数值"),
     "VARNUM": detail("a variable such as #1", "变量（如 #1）"),
     "HASH": "'#'",
+    "NAMED_VAR": detail("a variable name such as #_DATE", "变量名（如 #_DATE）"),
     "LSQB": "'['",
     "RSQB": "']'",
     "LETTER": detail("an address such as X or G", "地址（如 X 或 G）"),
@@ -31,6 +32,8 @@ _NAMES: dict[str, str] = {
     "EQUALS": "'='",
     "FUNC": detail("a function such as SIN", "函数（如 SIN）"),
     "ATAN": "ATAN",
+    "PRM": "PRM",
+    "COMMA": "','",
     "ATAN_SEP": "'/'",
     "IF": "IF",
     "THEN": "THEN",
@@ -51,10 +54,11 @@ _NOTHING_EXPECTED = Detail("", "")
 _CJK = re.compile("[\u4e00-\u9fff]")
 
 # What a bare value looks like, to say "expected a value" instead of listing six terminals.
-_VALUE_START = {"NUMBER", "VARNUM", "HASH", "LSQB", "SIGN"}
-# What may start a word or a statement, to say "another word or statement" likewise.
+_VALUE_START = {"NUMBER", "VARNUM", "HASH", "NAMED_VAR", "LSQB", "SIGN"}
+# What may start a word or a statement, to say "another word or statement" likewise ('[' starts
+# an assignment to a name, [#_UO[1]]=1).
 _ITEM_START = {
-    "LETTER", "P_LETTER", "VARNUM", "HASH", "IF", "WHILE", "DO", "END", "GOTO",
+    "LETTER", "P_LETTER", "VARNUM", "HASH", "NAMED_VAR", "LSQB", "IF", "WHILE", "DO", "END", "GOTO",
     "POPEN", "PCLOS", "DPRNT", "BPRNT",
 }
 
@@ -101,7 +105,7 @@ def describe_error(code: str, err: UnexpectedInput) -> Problem:
                     f"关系运算符 '{tok}' 只能用在 IF 或 WHILE 条件的 [ ] 中",
                 )
             return Problem(message, start, end)
-        if tok.type == "NUMBER" and "NUMBER" not in expected_set:
+        if tok.type == "NUMBER" and "NUMBER" not in expected_set and expected_set != {"NAMED_VAR"}:
             return Problem(
                 detail(
                     f"unexpected number '{tok}': an address letter such as X must come before a value",
@@ -152,7 +156,7 @@ def _expected_text(expected: set[str]) -> Detail:
         expected = expected - _ITEM_START
     if {"NUMBER", "VARNUM", "LSQB"} <= expected:
         names.append(_A_VALUE)
-        expected = expected - _VALUE_START - {"FUNC", "ATAN"}
+        expected = expected - _VALUE_START - {"FUNC", "ATAN", "PRM"}
     names += _names(expected)
     if len(names) > 5:
         names = [*names[:5], "..."]

@@ -50,6 +50,23 @@ class IndirectVar:
 
 
 @dataclass(slots=True)
+class NamedVar:
+    """``#_NAME`` or ``#_NAME[n]``: a system variable by its name (FANUC 30i). ``name`` is upper
+    case without ``#_``; ``index`` is the bracketed subscript, None when there is none. Which
+    number a name stands for is the dialect's business (its ``SYSTEM_VARIABLE_NAMES``)."""
+
+    name: str
+    index: Bracket | None
+    start: int
+    end: int
+
+    @property
+    def text(self) -> str:
+        """The name as a programmer writes it, without the subscript: ``#_ABSIO``."""
+        return f"#_{self.name}"
+
+
+@dataclass(slots=True)
 class Unary:
     """``-x`` or ``+x``."""
 
@@ -94,16 +111,19 @@ class Bracket:
 
 @dataclass(slots=True)
 class Call:
-    """A function: ``SIN[x]`` has one argument, ``ATAN[a]/[b]`` two. ``name`` is upper case."""
+    """A function: ``SIN[x]`` has one argument, ``ATAN[a]/[b]`` two. ``name`` is upper case.
+    ``comma`` is True when the first brackets hold two arguments separated by a comma
+    (``POW[a,b]``, ``ATAN[a,b]``, ``PRM[n,axis]``); a ``/[b]`` after them adds one more."""
 
     name: str
     args: tuple[Expr, ...]
     start: int
     end: int
+    comma: bool = False
 
 
-Expr = Number | Var | IndirectVar | Unary | Binary | Relation | Bracket | Call
-Variable = Var | IndirectVar
+Expr = Number | Var | IndirectVar | NamedVar | Unary | Binary | Relation | Bracket | Call
+Variable = Var | IndirectVar | NamedVar
 
 # ---------------------------------------------------------------- words and statements
 
@@ -218,6 +238,14 @@ class Comment:
     closed: bool
     start: int
     end: int
+
+
+def comment_after(comments: tuple[Comment, ...], column: int) -> str | None:
+    """The text of the first of ``comments`` that starts at or after ``column``."""
+    for c in comments:
+        if c.start >= column:
+            return c.text
+    return None
 
 
 @dataclass(slots=True, frozen=True)
@@ -359,6 +387,11 @@ class Block:
             and not self.statements
             and not self.has_error
         )
+
+    def comment_after(self, column: int) -> str | None:
+        """The text of the first comment that starts at or after ``column``: the message of
+        ``#3000=n(text)`` (``Assign.message``) and of gsk980tdi ``G65 H99 Pn(/text)``."""
+        return comment_after(self.comments, column)
 
     def word(self, letter: str) -> Word | None:
         """The first NC word with this address letter, if any."""

@@ -50,12 +50,18 @@ class ProgramUnit:
     A file that does not start with an O header has a first unit with ``number`` None
     covering the lines before the first header (GSK programs are often named by their
     file).
+
+    ``duplicate`` marks a header that repeats the number of an earlier program in the same
+    file. The control keeps one program per number, the first one it reads (loading the second
+    copy is FANUC alarm 073, docs/semantics.md §1), so nothing calls or runs a duplicate: every
+    lookup of a number (``Program.unit_numbered``) and every choice of programs to run skips it.
     """
 
     number: int | None
     title: str | None
     start: int
     end: int
+    duplicate: bool = False
 
     def __contains__(self, line: int) -> bool:
         return self.start <= line < self.end
@@ -119,9 +125,10 @@ class Program:
         return self.units[max(0, bisect_right(starts, line) - 1)]
 
     def unit_numbered(self, number: int) -> ProgramUnit | None:
-        """The unit whose header is ``O<number>``, if the file has one."""
+        """The program ``O<number>`` of the file, if it has one: the first unit with that
+        header (a later one is a ``duplicate`` that the control does not keep)."""
         for u in self.units:
-            if u.number == number:
+            if u.number == number and not u.duplicate:
                 return u
         return None
 
@@ -216,6 +223,7 @@ def _derive_from_markers(program: Program) -> None:
     problems: list[LoopProblem] = []
     tape_marks: list[int] = []
     open_loops: list[tuple[int, int]] = []  # (number, DO line)
+    numbers: set[int] = set()
     unit = units[0]
     tape_end = None
     for i in program.markers:
@@ -232,7 +240,8 @@ def _derive_from_markers(program: Program) -> None:
                 units.pop()
             else:
                 unit.end = i
-            unit = ProgramUnit(b.program, b.title, i, n)
+            unit = ProgramUnit(b.program, b.title, i, n, b.program in numbers)
+            numbers.add(b.program)
             units.append(unit)
         marker = b.loop_marker() if b.statements else None
         if marker is not None:

@@ -19,6 +19,7 @@ from .nodes import (
     Goto,
     If,
     IndirectVar,
+    NamedVar,
     Number,
     Output,
     Relation,
@@ -37,6 +38,8 @@ def children(node: Node) -> tuple[Node, ...]:
         return ()
     if isinstance(node, IndirectVar):
         return (node.index,)
+    if isinstance(node, NamedVar):
+        return (node.index,) if node.index is not None else ()
     if isinstance(node, Unary):
         return (node.operand,)
     if isinstance(node, (Binary, Relation)):

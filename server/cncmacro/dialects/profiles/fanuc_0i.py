@@ -1,0 +1,44 @@
+"""FANUC 0i Custom Macro B (0i-MD/0i-MF mills): the default profile, once named ``fanuc``.
+
+Tables: ``dialects/fanuc_data.py`` (seed 003 chapter 4). Commons: #100–#499 (the 0i's optional
+extension of #100–#199; a machine file narrows it) and #500–#999 kept at power-off.
+"""
+
+from __future__ import annotations
+
+from ..dialect import Dialect
+from ..tables import CommonRange
+
+PROFILE = Dialect(
+    name="fanuc-0i",
+    title="FANUC 0i Custom Macro B",
+    summary="FANUC 0i-D/0i-F mills and lathes, Custom Macro B",
+    summary_zh="FANUC 0i-D/0i-F 铣床与车床，用户宏程序 B",
+    aliases=("fanuc", "fanuc0i", "0i", "fanuc-0i-mf", "fanuc-0i-md"),
+    data_module="fanuc_data",
+    vacant_differs_in_eq=True,
+    vacant_address_is_zero=False,
+    nine_indirection=False,
+    c_relations=False,
+    macro_alarm_base=3000,
+    h_codes=False,
+    bracket_names=False,
+    program_digits=8,
+    macro_levels=4,
+    subprogram_levels=10,
+    clamp_repeat_count=False,
+    count_in_p_and_l_alarm=False,
+    lathe=False,
+    axes=("X", "Y", "Z", "A"),
+    modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0}),
+    modal_defaults={"plane": 17.0, "feed": 94.0},
+    coordinate_setting_code=92.0,
+    cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
+    ijk_order_matters=True,
+    word_format_alarms=True,
+    keyword_abbreviations=True,
+    if_without_then=True,
+    modal_g_before_call="execute",
+    common_ranges=(CommonRange(100, 499, False), CommonRange(500, 999, True)),
+    m98_program_digits=4,
+)

@@ -1,0 +1,44 @@
+"""GSK980TDi lathe control (seeds 000, 001, 002).
+
+Tables: ``dialects/gsk980tdi_data.py``. A lathe: X is a diameter, U and W move incrementally.
+Commons #100–#199 and #500–#999 (seed 000 "变量的类型"); H-code arithmetic, C-style relations,
+bracketed program names and ``#9xxx`` indirection.
+"""
+
+from __future__ import annotations
+
+from ..dialect import Dialect
+from ..tables import CommonRange
+
+PROFILE = Dialect(
+    name="gsk980tdi",
+    title="GSK980TDi",
+    summary="GSK980TDi lathe control",
+    summary_zh="广数 GSK980TDi 车床数控系统",
+    aliases=("gsk", "gsk980", "gsk980td"),
+    data_module="gsk980tdi_data",
+    vacant_differs_in_eq=False,
+    vacant_address_is_zero=True,
+    nine_indirection=True,
+    c_relations=True,
+    macro_alarm_base=5900,
+    h_codes=True,
+    bracket_names=True,
+    program_digits=4,
+    macro_levels=4,
+    subprogram_levels=12,
+    clamp_repeat_count=True,
+    count_in_p_and_l_alarm=True,
+    lathe=True,
+    axes=("X", "Y", "Z", "C", "B"),
+    modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0, 5.0}),
+    modal_defaults={"plane": 18.0, "feed": 98.0},
+    coordinate_setting_code=50.0,
+    cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0, 83.0, 84.0, 87.0, 88.0}),
+    common_ranges=(CommonRange(100, 199, False), CommonRange(500, 999, True)),
+    m98_program_digits=4,
+    modal_call_needs_distance=True,
+    word_format_alarms=False,
+    keyword_abbreviations=False,
+    if_without_then=False,
+)

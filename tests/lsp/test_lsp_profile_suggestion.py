@@ -1,0 +1,51 @@
+"""Auto-detection (docs/profiles.md): a file that uses what another profile has gets one
+``profile-suggestion`` naming it, with quick fixes that write the dialect comment or the machine
+file's ``base``; nothing switches by itself."""
+
+from __future__ import annotations
+
+import pytest
+from lsprotocol import types
+from pytest_lsp import LanguageClient
+
+from .lsp_session import FANUC, diagnostics_for, open_file
+
+pytestmark = pytest.mark.asyncio(loop_scope="module")
+
+NAMED = "%\nO0001 (PROBE REPORT)\n#1=[#_ABSIO[1]]\n#2=POW[#1,2]\n#3=[#_ABSKP[3]]\nM30\n%\n"
+
+
+async def actions_for(client: LanguageClient, uri: str, diag: types.Diagnostic) -> list[types.CodeAction]:
+    got = await client.text_document_code_action_async(
+        types.CodeActionParams(types.TextDocumentIdentifier(uri), diag.range, types.CodeActionContext([diag]))
+    )
+    return [a for a in got or [] if isinstance(a, types.CodeAction)]
+
+
+async def test_30i_names_under_fanuc_0i_suggest_fanuc_30i_once(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "probe_30i.nc", NAMED)
+    diags = (await diagnostics_for(fanuc_en, uri, 1)).diagnostics
+    features = [d for d in diags if d.code == "dialect-feature"]
+    [hint] = [d for d in diags if d.code == "profile-suggestion"]
+    assert len(features) == 3 and hint.severity == types.DiagnosticSeverity.Information
+    assert "FANUC 30i-B Custom Macro" in hint.message and "lines 3, 4, 5" in hint.message
+    assert hint.range.start.line == 2
+    actions = await actions_for(fanuc_en, uri, hint)
+    comment = next(a for a in actions if "(cncmacro: dialect=fanuc-30i)" in a.title)
+    [edit] = comment.edit.changes[uri]  # type: ignore[index, union-attr]
+    assert (edit.range.start.line, edit.new_text) == (1, "(cncmacro: dialect=fanuc-30i)\n")  # after the %
+    base = next(a for a in actions if 'base = "fanuc-30i"' in a.title)
+    assert base.edit is not None
+
+
+async def test_the_suggested_comment_makes_the_file_clean(fanuc_en: LanguageClient) -> None:
+    text = NAMED.replace("%\n", "%\n(cncmacro: dialect=fanuc-30i)\n", 1)
+    uri = open_file(fanuc_en, FANUC / "probe_30i_marked.nc", text)
+    diags = (await diagnostics_for(fanuc_en, uri, 1)).diagnostics
+    assert [d.code for d in diags if d.severity is not None and d.severity <= 3] == []
+
+
+async def test_a_plain_mistake_suggests_nothing(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "plain_mistake.nc", "O0002\n#1=#50\nM30\n")
+    diags = (await diagnostics_for(fanuc_en, uri, 1)).diagnostics
+    assert [d.code for d in diags if d.code != "not-executed"] == ["variable-number"]
