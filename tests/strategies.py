@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from hypothesis import strategies as st
 
+from cncmacro.syntax.keywords import ABBREVIABLE
+
 SPACE = st.sampled_from(["", "", " ", "  ", "\t"])
 FUNCS = ["SIN", "COS", "TAN", "ASIN", "ACOS", "SQRT", "ABS", "LN", "EXP", "ROUND", "FIX", "FUP", "BIN", "BCD"]
 RELOPS = ["EQ", "NE", "GT", "GE", "LT", "LE", "==", "!=", "<", ">", "<=", ">="]
@@ -12,6 +14,10 @@ BINOPS = ["+", "-", "*", "/", "AND", "OR", "XOR", "MOD"]
 
 @st.composite
 def _case(draw, word: str) -> str:
+    """A macro word as programs write it: mostly whole, sometimes lower case or shortened to its
+    first two or more letters (the FANUC abbreviations, keywords.py)."""
+    if word in ABBREVIABLE and draw(st.integers(0, 3)) == 0:
+        word = word[: draw(st.integers(2, len(word) - 1))]
     return word.lower() if draw(st.integers(0, 5)) == 0 else word
 
 
@@ -40,14 +46,14 @@ def expr(max_leaves: int = 8) -> st.SearchStrategy[str]:
 
     def extend(inner: st.SearchStrategy[str]) -> st.SearchStrategy[str]:
         return st.one_of(
-            st.tuples(inner, st.sampled_from(BINOPS), inner, SPACE, SPACE).map(
+            st.tuples(inner, st.sampled_from(BINOPS).flatmap(_case), inner, SPACE, SPACE).map(
                 lambda t: f"{t[0]}{t[3]}{t[1]}{t[4]}{t[2]}"
             ),
             inner.map(lambda e: f"[{e}]"),
             inner.map(lambda e: f"-{e}"),
             inner.map(lambda e: f"#[{e}]"),
-            st.tuples(st.sampled_from(FUNCS), inner).map(lambda t: f"{t[0]}[{t[1]}]"),
-            st.tuples(inner, inner).map(lambda t: f"ATAN[{t[0]}]/[{t[1]}]"),
+            st.tuples(st.sampled_from(FUNCS).flatmap(_case), inner).map(lambda t: f"{t[0]}[{t[1]}]"),
+            st.tuples(_case("ATAN"), inner, inner).map(lambda t: f"{t[0]}[{t[1]}]/[{t[2]}]"),
             st.tuples(inner, st.sampled_from(RELOPS), inner).map(lambda t: f"[{t[0]} {t[1]} {t[2]}]"),
         )
 
@@ -86,7 +92,7 @@ def word(draw) -> str:
 
 @st.composite
 def statement(draw) -> str:
-    kind = draw(st.integers(0, 6))
+    kind = draw(st.integers(0, 7))
     var = draw(st.sampled_from(["#1", "#100", "#[#2+1]", "#3000", "#9100"]))
     if kind == 0:
         return _join(draw, [var, "=", draw(expr())])
@@ -98,10 +104,14 @@ def statement(draw) -> str:
     if kind == 3:
         return _join(draw, [draw(_case("WHILE")), draw(condition()), draw(_case("DO")), str(draw(st.integers(0, 4)))])
     if kind == 4:
-        return _join(draw, [draw(st.sampled_from(["DO", "END"])), str(draw(st.integers(1, 3)))])
+        return _join(draw, [draw(st.sampled_from(["DO", "END"]).flatmap(_case)), str(draw(st.integers(1, 3)))])
     if kind == 5:
         return _join(draw, [draw(_case("GOTO")), draw(st.sampled_from(["10", "#1", "[#2*10]"]))])
-    return draw(st.sampled_from(["POPEN", "PCLOS", "DPRNT[X#2[53]**Y#5[53]]"]))
+    if kind == 6:  # THEN left out (docs/semantics.md §4)
+        return _join(draw, [draw(_case("IF")), draw(condition()), var, "=", draw(expr(4))])
+    return draw(_case(draw(st.sampled_from(["POPEN", "PCLOS", "DPRNT"])))) + (
+        "[X#2[53]**Y#5[53]]" if draw(st.booleans()) else ""
+    )
 
 
 @st.composite

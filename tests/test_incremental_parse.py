@@ -17,7 +17,7 @@ from strategies import line
 
 POOL = [
     "O1000 (MAIN)", "N10 G00 X0 Y0", "WHILE[#1 LT 3]DO1", "END1", "DO2", "END2", "N20 #1=#1+1",
-    "IF[#1 LT 3]GOTO10", "%", "O2000", "M99", "G01 X10. F100", "N10 M30", "(COMMENT)", "", "#100=5",
+    "IF[#1 LT 3]GOTO10", "%", "O2000", "M99", "G01 X10. F100", "N10 M30", "(COMMENT)", "", "#100=5", "\x1a",
 ]
 
 pool_line = st.one_of(st.sampled_from(POOL), line())
@@ -62,3 +62,14 @@ def test_edit_positions_past_the_end_are_clamped():
     doc = ParsedDocument("G00 X0\nG01 X1")
     doc.apply_change(5, 99, 9, 99, "\nM30")
     assert doc.lines == ["G00 X0", "G01 X1", "M30"]
+
+
+def test_text_typed_above_a_leading_percent_makes_it_the_end_of_the_tape():
+    """docs/semantics.md §1: a '%' before any program text starts the tape, one after text ends it;
+    a one-line edit that changes nothing else must still move the end."""
+    doc = ParsedDocument("\n%\nO1\n#1=1\n%\nJUNK\n", BlockCache())
+    assert doc.program.tape_end == 4
+    doc.apply_change(0, 0, 0, 0, "G00 X0")
+    assert doc.program.tape_end == 1 == build_program(doc.blocks).tape_end
+    doc.apply_change(0, 0, 0, 6, "")
+    assert doc.program.tape_end == 4 == build_program(doc.blocks).tape_end

@@ -142,3 +142,23 @@ async def test_an_error_in_a_handler_is_an_error_response_and_the_server_keeps_s
     uri = open_file(client, FANUC / "after_error.nc", "O0100\n#1=[2\n", version=3)
     got = await diagnostics_for(client, uri, 3)
     assert [d.code for d in got.diagnostics] == ["syntax"]
+
+
+async def test_3_expressions_a_500_operator_line_keeps_the_server_answering(client: LanguageClient) -> None:
+    text = "O0100\n#1=1" + "+1" * 500 + "\n#2=" + "-" * 1000 + "1\nGOTO 20\nM30\n"
+    uri = open_file(client, FANUC / "long_chain.nc", text, version=1)
+    got = await diagnostics_for(client, uri, 1)
+    assert [(d.range.start.line, d.code) for d in got.diagnostics] == [(3, "undefined-label"), (4, "not-executed")]
+    hover = await client.text_document_hover_async(
+        types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(1, 1))
+    )
+    assert hover is not None and "#1" in str(hover.contents)
+
+
+async def test_1_text_and_blocks_text_after_the_closing_percent_is_only_a_hint(client: LanguageClient) -> None:
+    text = "%\nO0100\n#1=1\nM30\n%\n\x1a\nJUNK [[[\n"
+    uri = open_file(client, FANUC / "tape_end.nc", text, version=1)
+    got = await diagnostics_for(client, uri, 1)
+    assert [(d.range.start.line, d.code, d.severity) for d in got.diagnostics] == [
+        (4, "after-tape-end", types.DiagnosticSeverity.Hint)
+    ]

@@ -6,7 +6,7 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, GSK, close_file, open_file
+from .lsp_session import FANUC, GSK, close_file, diagnostics_for, open_file
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
@@ -139,3 +139,26 @@ async def test_watched_file_changes_update_the_program_index(gsk_en: LanguageCli
         types.DidChangeWatchedFilesParams([types.FileEvent(new.as_uri(), types.FileChangeType.Deleted)])
     )
     assert await gsk_en.workspace_symbol_async(types.WorkspaceSymbolParams(query="new sub")) == []
+
+
+async def test_1_quick_fix_writes_an_abbreviated_macro_word_in_full(fanuc_en: LanguageClient) -> None:
+    text = "O0001\n#1=0\nWH[#1LT3]DO1\n#1=#1+1\nEN1\nM30\n"
+    uri = open_file(fanuc_en, FANUC / "expand.nc", text, version=1)
+    published = await diagnostics_for(fanuc_en, uri, 1)
+    hints = [d for d in published.diagnostics if d.code == "keyword-abbreviation"]
+    assert [(d.range.start.line, d.severity) for d in hints] == [(2, types.DiagnosticSeverity.Hint),
+                                                                  (4, types.DiagnosticSeverity.Hint)]  # fmt: skip
+    actions = await fanuc_en.text_document_code_action_async(
+        types.CodeActionParams(
+            types.TextDocumentIdentifier(uri),
+            types.Range(types.Position(2, 0), types.Position(2, 0)),
+            types.CodeActionContext(diagnostics=hints),
+        )
+    )
+    close_file(fanuc_en, uri)
+    [action] = actions  # type: ignore[misc]
+    assert action.title == "Write WHILE in full" and action.kind == types.CodeActionKind.QuickFix
+    [change] = action.edit.changes[uri]  # type: ignore[union-attr,index]
+    assert (change.range.start.line, change.range.start.character, change.range.end.character) == (2, 0, 2)
+    assert change.new_text == "WHILE"
+    assert [d.code for d in action.diagnostics or []] == ["keyword-abbreviation"]

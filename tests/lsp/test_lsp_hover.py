@@ -154,6 +154,27 @@ async def test_hover_places_follow_edits_to_writes_and_jumps(fanuc_en: LanguageC
     assert "N10: not found" in jump and "line 7 (GOTO)" in jump
 
 
+async def test_1_hover_on_an_abbreviated_macro_word_shows_the_whole_word(
+    fanuc_en: LanguageClient, fanuc_zh: LanguageClient, gsk_en: LanguageClient
+) -> None:
+    text = "O0001\n#1=0\nWH[#1LT3]DO1\n#1=#1+1\nEN1\n#2=AT[1]/[2]\nM30\n"
+    uri = open_file(fanuc_en, FANUC / "short.nc", text)
+    text_wh = await hover_text(fanuc_en, uri, 2, 1)
+    text_at = await hover_text(fanuc_en, uri, 5, 4)
+    close_file(fanuc_en, uri)
+    assert text_wh.startswith("**WH** — short for **WHILE**")
+    assert "WHILE [" in text_wh  # the statement's own description follows
+    assert text_at.startswith("**AT** — short for **ATAN**") and "ATAN[" in text_at
+    uri = open_file(fanuc_zh, FANUC / "short.nc", text)
+    text_en = await hover_text(fanuc_zh, uri, 4, 0)
+    close_file(fanuc_zh, uri)
+    assert text_en.startswith("**EN** — **END** 的缩写")
+    uri = open_file(gsk_en, GSK / "short.nc", text)
+    text_gsk = await hover_text(gsk_en, uri, 2, 0)
+    close_file(gsk_en, uri)
+    assert "short for **WHILE**" in text_gsk and "does not read abbreviations" in text_gsk
+
+
 async def test_hover_on_a_30i_name_shows_its_number_and_description(
     fanuc_en: LanguageClient, fanuc_zh: LanguageClient
 ) -> None:

@@ -13,9 +13,11 @@ from ..dialects.alarms import (
     ARGUMENT_RANGE,
     BRACKET_NESTING,
     COUNT_TWICE,
+    DECIMAL_POINT,
     DIVISION_BY_ZERO,
     FORMAT,
     G_ARGUMENT,
+    IMPROPER_G_CODE,
     LOOP_NUMBER,
     MACRO_NESTING,
     MISSING_END,
@@ -35,6 +37,8 @@ from ..dialects.alarms import (
 MACRO_ALARM = "macro-alarm"
 
 ALARM_CODES: dict[int, str] = {
+    DECIMAL_POINT: "decimal-point",
+    IMPROPER_G_CODE: "unknown-g-code",
     PROGRAM_NOT_FOUND: "program-not-found",
     SUBPROGRAM_NESTING: "nesting-depth",
     OVERFLOW: "argument-range",

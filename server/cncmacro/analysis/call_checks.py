@@ -29,6 +29,7 @@ from ..machine.calls import (
 )
 from ..machine.hcodes import ARITHMETIC, BRANCHES
 from ..machine.numbers import round_half_away, to_increment
+from ..machine.words import g_code_known, m_decimal_point, unknown_g_code
 from ..syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
 from .line_facts import CallSite, Finding, LineContext, LineFacts, ReturnJump
 from .locale import pick
@@ -345,6 +346,7 @@ def _nc_block(words: tuple[Word, ...], ctx: LineContext, facts: LineFacts) -> No
                 ms.append(v)
     if ctx.calls and _code_call(words, ctx, facts):
         return
+    _refused_words(words, ctx, facts)
     if 98.0 in ms or 198.0 in ms:
         _subprogram_call(words, "M98" if 98.0 in ms else "M198", ctx, facts)
     elif 99.0 in ms:
@@ -352,6 +354,23 @@ def _nc_block(words: tuple[Word, ...], ctx: LineContext, facts: LineFacts) -> No
         value = _constant(p, ctx)
         if p is not None and value is not None:
             facts.returns.append(ReturnJump(int(round_half_away(value)), p.start, p.end))
+
+
+def _refused_words(words: tuple[Word, ...], ctx: LineContext, facts: LineFacts) -> None:
+    """A literal G code that neither the dialect nor the machine has, an M code with a decimal
+    point (``machine/words.py``): errors where the dialect's alarms for them are known."""
+    dialect = ctx.dialect
+    severity = "error" if dialect.word_format_alarms else "warning"
+    for w in words:
+        if w.letter == "G":
+            v = _code_value(w)
+            if v is not None and not g_code_known(v, dialect, ctx.calls):
+                message = unknown_g_code(w.value.text, dialect)  # type: ignore[union-attr]
+                _add(facts, w, severity, "unknown-g-code", str(message), message.zh, ctx)
+        elif w.letter == "M":
+            point = m_decimal_point(w)
+            if point is not None:
+                _add(facts, w, severity, "decimal-point", str(point), point.zh, ctx)
 
 
 def _last(words: tuple[Word, ...], letter: str) -> Word | None:

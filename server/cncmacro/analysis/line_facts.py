@@ -11,12 +11,14 @@ check needs, made once per dialect, settings and locale.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from ..dialects import BY_NAME, Dialect
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..machine.expressions import ExpressionCompiler, VariableKinds
+from ..machine.words import plain_line_pattern
 
 
 @dataclass(frozen=True, slots=True)
@@ -96,16 +98,29 @@ class LineContext:
         # the other dialects, to tell a feature this one lacks from a plain mistake
         self.other_kinds = [VariableKinds(d) for d in BY_NAME.values() if d.name != dialect.name]
         self.calls = settings.calls
-        self.plain_hint = re.compile(_plain_pattern(settings)).search
+        self.plain_hint = _plain_hint(settings, dialect)
 
     def key(self) -> tuple[str, int, str]:
         return (self.dialect.name, id(self.settings), self.locale)
 
 
-def _plain_pattern(settings: MachineSettings) -> str:
-    """The pattern of a plain line that may need a check: the call codes, and the codes that
-    the machine settings configure as calls."""
-    parts = [_PLAIN_CALL]
+def _plain_hint(settings: MachineSettings, dialect: Dialect) -> Callable[[str], object]:
+    """The search for ``_plain_pattern`` in a plain line, passing over at once the lines without
+    a letter that the pattern starts with (nearly every line of a CAM program: axis words)."""
+    letters = {"G", "M", *(code[:1].upper() for code in settings.calls if code[:1])}
+    first = re.compile("[" + "".join(sorted(letters | {x.lower() for x in letters})) + "]").search
+    full = re.compile(_plain_pattern(settings, dialect)).search
+
+    def hint(line: str) -> object:
+        return first(line) and full(line)
+
+    return hint
+
+
+def _plain_pattern(settings: MachineSettings, dialect: Dialect) -> str:
+    """The pattern of a plain line that may need a check: the call codes, the codes that the
+    machine settings configure as calls, and words a control may refuse (``machine/words.py``)."""
+    parts = [_PLAIN_CALL, plain_line_pattern(dialect.name, settings.calls)]
     for code in settings.calls:
         letter, digits = code[:1], code[1:]
         if not digits:

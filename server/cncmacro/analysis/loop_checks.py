@@ -34,6 +34,8 @@ def loop_diagnostics(program: Program, file: str, locale: str) -> list[Diagnosti
     blocks = program.blocks
     bad_lines: set[int] = set()
     for line in program.markers:
+        if program.after_tape(line):
+            break  # past the closing '%': not read
         marker = blocks[line].loop_marker()
         if marker is None or _valid_number(marker[1]):
             continue

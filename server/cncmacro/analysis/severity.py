@@ -58,6 +58,11 @@ CODES: dict[str, CodeInfo] = {
     "vacant-argument": CodeInfo("information", "A macro reads an argument that a caller never passes."),
     "run-limit": CodeInfo("information", "The analysis run stopped at its block budget (a possible endless loop)."),
     "not-executed": CodeInfo("hint", "Blocks that the analysis runs never reached."),
+    "decimal-point": CodeInfo("error", "An M code written with a decimal point (alarm 007)."),
+    "unknown-g-code": CodeInfo("error", "A G code the control lacks and the machine does not map to a call (010)."),
+    "keyword-abbreviation": CodeInfo("hint", "A macro word written shortened (WH for WHILE), read as the whole word."),
+    "after-tape-end": CodeInfo("hint", "Text after the closing % (the end of the tape), which is not read."),
+    "internal-error": CodeInfo("error", "The checker itself failed on this line, program or file (a bug to report)."),
 }
 
 

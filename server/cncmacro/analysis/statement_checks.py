@@ -9,10 +9,12 @@ otherwise it becomes a ``Jump`` for the cross-line label checks.
 
 from __future__ import annotations
 
+from ..bilingual import in_language
 from ..machine.numbers import round_half_away
+from ..machine.words import abbreviation_refused, missing_then
 from ..syntax.nodes import Assign, Block, Expr, Goto, If, Output, Statement, While
 from .line_facts import Finding, Jump, LineContext, LineFacts
-from .locale import pick
+from .locale import is_chinese, pick
 from .variable_checks import check_write, scan_value
 
 MAX_LABEL = 99999
@@ -49,6 +51,10 @@ def _statement(s: Statement, ctx: LineContext, facts: LineFacts) -> None:
         scan_value(s.value, ctx, out)  # type: ignore[union-attr]
     elif cls is If:
         scan_value(s.condition, ctx, out)  # type: ignore[union-attr]
+        if s.implicit_then and not ctx.dialect.if_without_then:  # type: ignore[union-attr]
+            then = s.then  # type: ignore[union-attr]
+            message = in_language(missing_then(ctx.dialect), is_chinese(ctx.locale))
+            out.append(Finding(then.start, then.end, "error", "dialect-feature", message))
         if s.goto is not None:  # type: ignore[union-attr]
             scan_value(s.goto, ctx, out)  # type: ignore[union-attr]
             literal_jump(s.goto, "GOTO ", ctx, facts)  # type: ignore[union-attr]
@@ -63,6 +69,19 @@ def _statement(s: Statement, ctx: LineContext, facts: LineFacts) -> None:
         for part in s.parts:  # type: ignore[union-attr]
             if part.variable is not None:
                 scan_value(part.variable, ctx, out)
+
+
+def check_abbreviations(block: Block, ctx: LineContext, facts: LineFacts) -> None:
+    """Macro words written shortened (``WH`` for WHILE): a hint with the whole word where the
+    dialect reads them (the editor offers to write it out), ``dialect-feature`` where it does not."""
+    dialect = ctx.dialect
+    for a in block.abbreviations:
+        if dialect.keyword_abbreviations:
+            message = pick(ctx.locale, f"'{a.text}' is short for {a.word}", f"'{a.text}' 是 {a.word} 的缩写")
+            facts.findings.append(Finding(a.start, a.end, "hint", "keyword-abbreviation", message))
+        else:
+            refused = in_language(abbreviation_refused(a.text, a.word, dialect), is_chinese(ctx.locale))
+            facts.findings.append(Finding(a.start, a.end, "error", "dialect-feature", refused))
 
 
 def literal_jump(target: Expr, how: str, ctx: LineContext, facts: LineFacts) -> None:

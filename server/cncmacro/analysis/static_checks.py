@@ -21,10 +21,12 @@ from ..syntax.program import Program
 from .call_checks import check_words
 from .call_targets import ProgramFinder
 from .diagnostics import Diagnostic
+from .faults import FILE, internal_error, line_fault
 from .label_checks import LabelChecker
 from .line_facts import LineContext, LineFacts
 from .loop_checks import loop_diagnostics
-from .statement_checks import check_statements
+from .statement_checks import check_abbreviations, check_statements
+from .tape_checks import tape_diagnostics
 from .unit_checks import duplicate_program_diagnostics
 
 _contexts: dict[tuple[str, int, str], LineContext] = {}
@@ -42,7 +44,15 @@ def line_context(dialect: Dialect, settings: MachineSettings, locale: str = "en"
 
 
 def line_facts(block: Block, ctx: LineContext) -> LineFacts | None:
-    """What ``block`` says by itself: findings, jumps, calls, returns (None for nothing)."""
+    """What ``block`` says by itself: findings, jumps, calls, returns (None for nothing). A
+    fault of the checker on the block is an ``internal-error`` finding of its own (faults.py)."""
+    try:
+        return _line_facts(block, ctx)
+    except Exception as e:  # a bug must cost one line, not the file
+        return line_fault(e, ctx.locale)
+
+
+def _line_facts(block: Block, ctx: LineContext) -> LineFacts | None:
     plain = block.plain
     if plain is not None:
         if ctx.plain_hint(plain) is None:
@@ -54,6 +64,8 @@ def line_facts(block: Block, ctx: LineContext) -> LineFacts | None:
         check_statements(block, ctx, facts)
     elif block.words:
         check_words(block, ctx, facts)
+    if block.abbreviations:
+        check_abbreviations(block, ctx, facts)
     return facts if facts else None
 
 
@@ -87,7 +99,8 @@ def static_diagnostics(
     hint = ctx.plain_hint
     out: list[Diagnostic] = []
     collected: list[tuple[int, LineFacts]] = []
-    for line, block in enumerate(program.blocks):
+    for line in range(program.read_end):  # nothing after the closing '%' is read
+        block = program.blocks[line]
         plain = block.plain
         if plain is not None and hint(plain) is None:
             continue
@@ -112,9 +125,14 @@ def cross_line_diagnostics(
     collected: list[tuple[int, LineFacts]],
 ) -> list[Diagnostic]:
     """What connects the lines: repeated O numbers, loops, and the labels and call targets of
-    ``collected`` (the lines with jumps, calls or returns, in line order, with their facts)."""
-    out = duplicate_program_diagnostics(program, file, locale)
-    out.extend(loop_diagnostics(program, file, locale))
-    finder = ProgramFinder(program, file, dialect, library)
-    out.extend(LabelChecker(program, file, finder, locale).run(collected))
+    ``collected`` (the lines with jumps, calls or returns, in line order, with their facts). A
+    fault of the checker here is one ``internal-error`` on the file's first line (faults.py)."""
+    try:
+        out = duplicate_program_diagnostics(program, file, locale)
+        out.extend(loop_diagnostics(program, file, locale))
+        out.extend(tape_diagnostics(program, file, locale))
+        finder = ProgramFinder(program, file, dialect, library)
+        out.extend(LabelChecker(program, file, finder, locale).run(collected))
+    except Exception as e:  # a bug must not cost the per-line findings
+        return [internal_error(file, 0, FILE, e, locale)]
     return out

@@ -76,11 +76,14 @@ class StaticLines:
             table.update(moved)
         self._fill(blocks, start, start + new_count)
 
-    def call_targets(self) -> tuple[set[int], set[str]]:
-        """The literal program numbers and names that the document's calls name."""
+    def call_targets(self, read_end: int) -> tuple[set[int], set[str]]:
+        """The literal program numbers and names that the document's calls name (on the lines
+        before ``read_end``, the end of the tape)."""
         numbers: set[int] = set()
         names: set[str] = set()
-        for f in self.facts.values():
+        for line, f in self.facts.items():
+            if line >= read_end:
+                continue
             for c in f.calls:
                 if c.number is not None:
                     numbers.add(c.number)
@@ -88,10 +91,13 @@ class StaticLines:
                     names.add(c.name.strip().lower())
         return numbers, names
 
-    def call_sites(self) -> list[tuple[int, int | None, str | None]]:
-        """(line, program number, lower-case name) of each call with a literal target."""
+    def call_sites(self, read_end: int) -> list[tuple[int, int | None, str | None]]:
+        """(line, program number, lower-case name) of each call with a literal target (on the
+        lines before ``read_end``, the end of the tape)."""
         out: list[tuple[int, int | None, str | None]] = []
         for line, f in self.facts.items():
+            if line >= read_end:
+                continue
             for c in f.calls:
                 if c.number is not None or c.name is not None:
                     out.append((line, c.number, None if c.number is not None else c.name.strip().lower()))
@@ -102,12 +108,17 @@ class StaticLines:
         """Syntax and static diagnostics of the document (``program`` is its current parse)."""
         out: list[Diagnostic] = []
         chinese = is_chinese(locale)
+        read_end = program.read_end  # nothing after the closing '%' is read
         for line in sorted(self.problems):
+            if line >= read_end:
+                break
             for p in self.problems[line]:
                 out.append(Diagnostic(file, line, p.start, line, max(p.end, p.start + 1), p.severity, "syntax",
                                       in_language(p.message, chinese)))  # fmt: skip
         collected: list[tuple[int, LineFacts]] = []
         for line in sorted(self.facts):
+            if line >= read_end:
+                break
             facts = self.facts[line]
             if facts.findings:
                 out.extend(findings_of(facts, line, file))

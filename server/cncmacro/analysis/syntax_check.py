@@ -13,8 +13,8 @@ def syntax_diagnostics(program: Program, file: str, locale: str | None = None) -
     """One diagnostic for each problem on each block of ``program``."""
     chinese = is_chinese(locale)
     out: list[Diagnostic] = []
-    for line, block in enumerate(program.blocks):
-        for p in block.problems:
+    for line in range(program.read_end):  # nothing after the closing '%' is read
+        for p in program.blocks[line].problems:
             message = in_language(p.message, chinese)
             out.append(Diagnostic(file, line, p.start, line, max(p.end, p.start + 1), p.severity, "syntax", message))
     return out

@@ -76,6 +76,7 @@ from . import static_checks
 from .call_index import CallIndex
 from .caller_entries import CallerSearch
 from .diagnostics import UNNECESSARY, Diagnostic
+from .faults import RUN, internal_error
 from .locale import pick
 from .profile_suggestion import suggestion
 from .run_checks import MAX_RECORDS, MAX_SECONDS, EntryRun, run_diagnostics
@@ -91,7 +92,8 @@ _DIGITS = re.compile(r"^[Oo]?(\d{1,8})$")
 RUN_ALARM_CODES = frozenset({
     "program-not-found", "nesting-depth", "division-by-zero", "argument-range", "syntax", "variable-number",
     "write-protected", "bracket-depth", "loop-mismatch", "loop-number", "nc-and-macro", "undefined-label",
-    "argument-address", "program-number", "repeat-count-range", "label-range", "jump-into-loop",
+    "argument-address", "program-number", "repeat-count-range", "label-range", "jump-into-loop", "decimal-point",
+    "unknown-g-code",
 })  # fmt: skip
 
 
@@ -159,6 +161,7 @@ class WorkspaceAnalysis:
         self._entries: dict[tuple[str, int], FoundProgram] | None = None  # callers on disk that run
         self._called_from_disk: set[tuple[str, int]] = set()  # open programs that callers on disk reach
         self._unreached = UnreachedRanges(self._unreachable_skips)  # the not-executed ranges, kept across edits
+        self._failed: dict[tuple[str, int], Diagnostic] = {}  # runs that failed by a fault of the checker
 
     def set_workspace_folders(self, folders: list[str]) -> None:
         """The folders whose program files may call the open ones (the editor's workspace
@@ -262,7 +265,7 @@ class WorkspaceAnalysis:
 
     def _targets(self, d: _Open) -> tuple[set[int], set[str]]:
         if d.targets is None:
-            d.targets = self._static(d).call_targets()
+            d.targets = self._static(d).call_targets(d.doc.program.read_end)
         return d.targets
 
     def _static(self, d: _Open) -> StaticLines:
@@ -278,7 +281,7 @@ class WorkspaceAnalysis:
         by_name: dict[str, list[tuple[str, int]]] = {}
         for path, d in self.docs.items():
             ignored = [u for u in d.doc.program.units if u.duplicate]
-            for line, number, name in self._static(d).call_sites():
+            for line, number, name in self._static(d).call_sites(d.doc.program.read_end):
                 if ignored and any(line in u for u in ignored):
                     continue  # a copy the control does not keep calls nothing
                 if number is not None:
@@ -364,8 +367,12 @@ class WorkspaceAnalysis:
         else:
             for d in self.docs.values():
                 if d.edits:
-                    for run in self.runs.values():
-                        self._rewind(run, d)
+                    for k, run in list(self.runs.items()):
+                        try:
+                            self._rewind(run, d)
+                        except Exception:  # a bug: run that program again from its start
+                            log.exception("taking an analysis run back failed")
+                            del self.runs[k]
         for d in self.docs.values():
             for e in d.edits:
                 self._unreached.edited(d.path, e.start, e.count, e.shifted or e.structural)
@@ -374,9 +381,14 @@ class WorkspaceAnalysis:
         primary.update(self._entries)
         for k in [k for k in self.runs if k not in primary]:
             del self.runs[k]  # a called program is analysed only through its callers
+        self._failed = {}
         for k, found in primary.items():
-            if not self._advance(k, found, should_cancel):
-                return None
+            try:
+                if not self._advance(k, found, should_cancel):
+                    return None
+            except Exception as e:  # a bug in one run must not cost the others and the static findings
+                self.runs.pop(k, None)
+                self._failed[k] = internal_error(found.file.path, found.unit.start, RUN, e, self.locale)
         return self._result(version)
 
     def _advance(self, k: tuple[str, int], found: FoundProgram,
@@ -507,9 +519,16 @@ class WorkspaceAnalysis:
                 if x.severity == "error":
                     errors.add((path, x.line))
         entries = self._entries or {}
+        for k, x in self._failed.items():
+            if k not in entries or x.file in self.docs:
+                by_file.setdefault(x.file, []).append(x)
         for k, run in self.runs.items():
             shown = self.docs if k in entries else None  # a caller on disk: findings in open files only
-            for x in run_diagnostics(run, self._line_text, self.locale):
+            try:
+                found = run_diagnostics(run, self._line_text, self.locale)
+            except Exception as e:  # a bug: say so where the run started
+                found = [internal_error(run.entry.file.path, run.entry.unit.start, RUN, e, self.locale)]
+            for x in found:
                 if shown is not None and x.file not in shown:
                     continue
                 key = (x.file, x.line, x.code)
@@ -517,7 +536,12 @@ class WorkspaceAnalysis:
                     continue
                 seen.add(key)
                 by_file.setdefault(x.file, []).append(x)
-        for x in self._not_executed():
+        try:
+            unreached = self._not_executed()
+        except Exception:  # only hints are lost
+            log.exception("finding the blocks no run reached failed")
+            unreached = []
+        for x in unreached:
             by_file.setdefault(x.file, []).append(x)
         values: dict[str, dict[int, list[tuple[int, Value]]]] = {}
         for k, run in self.runs.items():

@@ -17,18 +17,24 @@ from __future__ import annotations
 
 import argparse
 import json
+import logging
 import sys
+from collections.abc import Callable
+from functools import partial
 from pathlib import Path
 from typing import TextIO
 
 from .. import __version__
 from ..analysis import Diagnostic
+from ..analysis.faults import FILE, internal_error
 from ..analysis.locale import is_chinese, pick
 from ..analysis.workspace import WorkspaceAnalysis
 from ..bilingual import in_language
 from ..library.files import BinaryFileError, find_program_files, read_program
 from ..library.machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
 from .sarif import to_sarif
+
+log = logging.getLogger(__name__)
 
 
 def check_paths(
@@ -81,19 +87,15 @@ def check_paths(
         try:
             settings = load_machine_file(machine_file) if machine_file is not None else MachineSettings()
             folders = [*dict.fromkeys(str(path.parent) for path, _ in files), *(search_paths or [])]
-            ws = WorkspaceAnalysis(settings=settings, dialect=dialect, search_paths=search_paths or [],
-                                   locale=locale, max_blocks=max_blocks, severities=settings.severity,
-                                   workspace_folders=folders)  # fmt: skip
+            workspace = partial(WorkspaceAnalysis, settings=settings, dialect=dialect, search_paths=search_paths or [],
+                                locale=locale, max_blocks=max_blocks, severities=settings.severity,
+                                workspace_folders=folders)  # fmt: skip
+            ws = workspace()
         except (MachineFileError, ValueError) as e:
             reason = in_language(e.args[0], True) if chinese and e.args else e
             print(f"cncmacro check：{reason}" if chinese else f"cncmacro check: {e}", file=err)
             return 2
-        for path, text in files:
-            ws.open(str(path), text, 0)
-        result = ws.analyze(str(files[0][0]))
-        assert result is not None  # nothing cancels it
-        for diags in result.diagnostics.values():
-            diagnostics += diags
+        diagnostics += _analyse(ws, files, workspace, locale)
     if not hints:
         diagnostics = [d for d in diagnostics if d.severity != "hint"]
     diagnostics.sort(key=Diagnostic.sort_key)
@@ -109,6 +111,33 @@ def check_paths(
     if unreadable:
         return 2
     return 1 if any(d.severity == "error" for d in diagnostics) else 0
+
+
+def _analyse(ws: WorkspaceAnalysis, files: list[tuple[Path, str]], workspace: Callable[[], WorkspaceAnalysis],
+             locale: str) -> list[Diagnostic]:  # fmt: skip
+    """The diagnostics of ``files`` analysed together in ``ws``. Should the checker itself fail
+    there (a bug, not a mistake in a program), each file is analysed again on its own in a fresh
+    workspace from ``workspace``, so that one file that trips the checker costs only its own
+    findings: it gets an ``internal-error`` diagnostic, the others are reported as usual."""
+    try:
+        for path, text in files:
+            ws.open(str(path), text, 0)
+        result = ws.analyze(str(files[0][0]))
+        assert result is not None  # nothing cancels it
+        return [d for diags in result.diagnostics.values() for d in diags]
+    except Exception:
+        log.exception("checking %d files together failed: checking them one by one", len(files))
+    found: list[Diagnostic] = []
+    for path, text in files:
+        try:
+            alone = workspace()
+            alone.open(str(path), text, 0)
+            result = alone.analyze(str(path))
+            assert result is not None
+            found += [d for diags in result.diagnostics.values() for d in diags]
+        except Exception as e:
+            found.append(internal_error(str(path), 0, FILE, e, locale))
+    return found
 
 
 def _as_json(d: Diagnostic) -> dict[str, object]:

@@ -216,7 +216,8 @@ class Breakpoints:
         blocks: list[Block] | None = None
         problem = None
         try:
-            blocks = load_text(path, read_program(path).text).program.blocks
+            program = load_text(path, read_program(path).text).program
+            blocks = program.blocks[: program.read_end]  # no stop after the closing '%'
         except (OSError, BinaryFileError) as e:
             problem = f"cannot read {path}: {e}"
         self.files[key] = blocks

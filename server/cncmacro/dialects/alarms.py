@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from .tables import AlarmDoc
 
+DECIMAL_POINT = 7
+IMPROPER_G_CODE = 10
 PROGRAM_NOT_FOUND = 76
 SUBPROGRAM_NESTING = 77
 OVERFLOW = 111
@@ -34,6 +36,8 @@ NAME_SUBSCRIPT = 1099
 ALARMS: dict[int, AlarmDoc] = {
     a.number: a
     for a in (
+        AlarmDoc(DECIMAL_POINT, "illegal use of decimal point", "小数点使用不当"),
+        AlarmDoc(IMPROPER_G_CODE, "improper G code", "G代码不当"),
         AlarmDoc(PROGRAM_NOT_FOUND, "program not found", "未找到程序"),
         AlarmDoc(SUBPROGRAM_NESTING, "subprogram nesting too deep", "子程序嵌套过深"),
         AlarmDoc(OVERFLOW, "calculated value out of range", "运算结果超出范围"),

@@ -67,6 +67,15 @@ class Dialect:
     cycle_codes: frozenset[float] = frozenset()
     # §5 fanuc wants I, J, K in that order within each set (a warning otherwise)
     ijk_order_matters: bool = False
+    # §8 the G-code table lists every code of the control and its alarms for a refused word are
+    # known: a G code outside the table and the machine's call codes is alarm 010, a decimal point
+    # in an M code alarm 007; without this switch both are warnings and a run goes on
+    word_format_alarms: bool = False
+    # §1 the first two or more letters of a macro word stand for the word (WH for WHILE)
+    keyword_abbreviations: bool = False
+    # §4 IF [cond] <statement> without THEN runs the statement (FANUC profiles, Haas); elsewhere
+    # alarm 114
+    if_without_then: bool = False
     # other names the profile answers to (``fanuc`` for ``fanuc-0i``), in machine files, file
     # comments, settings and on the command line
     aliases: tuple[str, ...] = ()
@@ -187,4 +196,3 @@ def _functions(extra: frozenset[str]) -> tuple[FunctionDoc, ...]:
     mod = importlib.import_module(f"{__package__}.functions_data")
     added = tuple(f for f in mod.EXTRA_FUNCTIONS if f.name in extra or f.signature in extra)
     return (*mod.FUNCTIONS, *added)
-

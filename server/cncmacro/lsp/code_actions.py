@@ -1,12 +1,14 @@
-"""Code actions: split a G65/G66 block that also holds NC words, clamp an out-of-range L, and
-name the profile a file was written for (``profile-suggestion``: its dialect comment, or the
-machine file's ``base``).
+"""Code actions: split a G65/G66 block that also holds NC words, clamp an out-of-range L,
+write out a macro word written shortened (``WH`` → ``WHILE``), and name the profile a file was
+written for (``profile-suggestion``: its dialect comment, or the machine file's ``base``).
 
 docs/semantics.md §5: only N may precede G65/G66 and no other G or M code or O word may share its
 block; the split moves those words (with the label) to a block of their own just before the
 call, so they run first as before. L must be 1..9999; the clamp writes the nearest allowed
-count. Both are offered for the blocks in the requested range, and carry the matching
-diagnostics (``g65-nc-words``, ``repeat-count-range``) when the client sent them.
+count. An abbreviated macro word (docs/semantics.md §1) is replaced by the whole word. Each is
+offered for the blocks in the requested range, and carries the matching diagnostics
+(``g65-nc-words``, ``repeat-count-range``, ``keyword-abbreviation`` or ``dialect-feature``)
+when the client sent them.
 """
 
 from __future__ import annotations
@@ -35,6 +37,7 @@ _TITLES = {
                 '在 .cncmacro.toml 中设定 base = "{name}"（对工作区所有文件生效）'),
     "split": ("Split: move the NC words to a block before the G65", "拆分：把NC代码移到G65之前的单独程序段"),
     "clamp": ("Clamp the repeat count to {value}", "把重复次数改为{value}"),
+    "expand": ("Write {word} in full", "把{text}写全为{word}"),
 }
 
 
@@ -94,6 +97,15 @@ def clamp_edit(doc: OpenDocument, line: int, utf16: bool) -> tuple[types.TextEdi
     return None
 
 
+def expand_edits(doc: OpenDocument, line: int, utf16: bool) -> list[tuple[types.TextEdit, str, str]]:
+    """(edit, written text, whole word) for each macro word written shortened on ``line``."""
+    block = doc.block(line)
+    if block is None:
+        return []
+    return [(types.TextEdit(doc_range(doc, line, a.start, a.end, utf16), a.word), a.text, a.word)
+            for a in block.abbreviations]  # fmt: skip
+
+
 def register(server: CncMacroServer) -> None:
     @server.feature(
         types.TEXT_DOCUMENT_CODE_ACTION, types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix])
@@ -113,6 +125,11 @@ def register(server: CncMacroServer) -> None:
                 out.append(
                     _action(doc, _title("clamp", ls.locale, value=clamp[1]), clamp[0], diags, "repeat-count-range")
                 )
+            for expand, text, word in expand_edits(doc, line, utf16):
+                start = expand.range.start.character
+                mine = [d for d in diags if d.range.start.character == start]
+                code = "keyword-abbreviation" if doc.dialect.keyword_abbreviations else "dialect-feature"
+                out.append(_action(doc, _title("expand", ls.locale, text=text, word=word), expand, mine, code))
         out.extend(profile_actions(ls, doc, params.context.diagnostics))
         return out
 

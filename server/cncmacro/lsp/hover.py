@@ -2,7 +2,7 @@
 
 System variables (also by their FANUC 30i names ``[#_ABSIO[1]]``, with the number a name stands
 for), G/M codes, functions and the GSK ``G65 Hm`` commands are described from the dialect
-tables; a local
+tables; a macro word written shortened (``WH``) shows the whole word; a local
 shows the argument letters that fill it (``machine.calls``); a common shows where it is
 written; an N label shows the jumps to it; an O program (or the P of a call) shows its title
 and file. Only the block under the cursor is parsed; the places come from each file's
@@ -16,13 +16,14 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..analysis.locale import pick
 from ..bilingual import in_language
 from ..dialects import describe
 from ..dialects.functions_data import GSK_H_CODES
 from ..machine.alarms import MacroAlarm
 from ..machine.calls import argument_targets, letters_for_local
 from ..machine.variables import named_number
-from ..syntax.nodes import Bracket, Call, NamedVar, Number, Unary, Var, Word
+from ..syntax.nodes import Abbreviation, Bracket, Call, NamedVar, Number, Unary, Var, Word
 from ..syntax.walk import nodes_at
 from .call_sites import call_site
 from .cursor import Cursor, cursor_at
@@ -62,6 +63,9 @@ def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
     for j in jump_sites(b):
         if j.start <= col <= j.end:
             return label_hover(ls, cur, j.label), j.start, j.end
+    for a in b.abbreviations:
+        if a.start <= col <= a.end:
+            return abbreviation_hover(ls, cur, a), a.start, a.end
     path = nodes_at(b, col)
     for node in reversed(path):
         if isinstance(node, Var):
@@ -238,6 +242,16 @@ def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
             group = f"{t('modal', loc)}: {doc.group}" if doc.group else t("one_shot", loc)
             return f"**{doc.code}** — {describe.pick_text(doc, loc)}\n\n{group} · *{dialect.title}*"
     return None
+
+
+def abbreviation_hover(ls: CncMacroServer, cur: Cursor, a: Abbreviation) -> str:
+    """A macro word written shortened: the whole word it stands for, then the word's own doc."""
+    loc = ls.locale
+    head = pick(loc, f"**{a.text}** — short for **{a.word}**", f"**{a.text}** — **{a.word}** 的缩写")
+    if not cur.doc.dialect.keyword_abbreviations:
+        head += f" ({t('not_here', loc)}: *{cur.doc.dialect.title}*)"
+    doc = function_hover(ls, cur, a.word)
+    return f"{head}\n\n{doc}" if doc else head
 
 
 def _is_g65(words: tuple[Word, ...] | list[Word]) -> bool:

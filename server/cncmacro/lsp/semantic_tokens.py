@@ -61,6 +61,7 @@ def _name_kinds(dialect_name: str) -> dict[str, str]:
 
 def line_tokens(text: str, block: Block, dialect: Dialect) -> list[Token]:
     kinds = _name_kinds(dialect.name)
+    shortened = {a.start: a for a in block.abbreviations}  # ``WH`` is coloured as WHILE
     label = block.label_span
     prog = block.program_span
     out: list[Token] = []
@@ -93,6 +94,9 @@ def line_tokens(text: str, block: Block, dialect: Dialect) -> list[Token]:
             out.append((s, e, _T["variable"], _M["system"]))
         elif kind == "word":
             word = m.group(0).upper()
+            a = shortened.get(s)
+            if a is not None and a.end == e:
+                word = a.word
             k = kinds.get(word)
             if k is not None:
                 out.append((s, e, _T[k], 0))

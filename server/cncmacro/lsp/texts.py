@@ -43,6 +43,7 @@ _TEXTS: dict[str, tuple[str, str]] = {
     "fills": ("fills", "赋值给"),
     "reads": ("reads", "读取"),
     "more": ("more", "更多"),
+    "not_here": ("this dialect does not read abbreviations", "本系统不支持关键字缩写"),
 }
 
 

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail, in_language
 from ..dialects.alarms import (
+    FORMAT,
     LOOP_NUMBER,
     MISSING_END,
     NC_AND_MACRO,
@@ -45,6 +46,7 @@ from . import jumps
 from .alarms import MacroAlarm, raiser
 from .expressions import ExpressionCompiler, Getter
 from .numbers import MAX_VALUE, format_value, round_half_away, to_increment
+from .words import abbreviation_refused, missing_then
 
 if TYPE_CHECKING:
     from .machine import Machine
@@ -239,6 +241,8 @@ class CompiledFile:
         return watched
 
     def _compile(self, pc: int) -> Runner:
+        if pc == self.file.program.tape_end:
+            return _end_of_file  # the closing '%': the tape ends, what follows is never read
         block = self.file.program.blocks[pc]
         nxt = self.next_line(pc)
         if block.plain is not None:  # most lines of a CAM program: no label, header or error
@@ -275,6 +279,10 @@ class CompiledFile:
 
     def _body(self, block: Block, pc: int, nxt: int) -> Runner:
         label = block.label
+        dialect = self.machine.dialect
+        if block.abbreviations and not dialect.keyword_abbreviations:
+            a = block.abbreviations[0]
+            return raiser(FORMAT, abbreviation_refused(a.text, a.word, dialect))
         if block.statements:
             if block.words:
                 w = block.words[0]
@@ -307,6 +315,8 @@ class CompiledFile:
         if isinstance(s, Assign):
             return self.assign(s, nxt)
         if isinstance(s, If):
+            if s.implicit_then and not self.machine.dialect.if_without_then:
+                return raiser(FORMAT, missing_then(self.machine.dialect))
             test = self.values.condition(s.condition)
             if s.goto is not None:
                 target = self.values.value(s.goto)

@@ -40,10 +40,18 @@ Getter = Callable[[Any], Value]
 Test = Callable[[Any], bool]
 
 MAX_BRACKETS = 5
+# A chain of more binary operators than this (``1+1+1+...``) is compiled as a loop over its
+# operands instead of one closure per operator, so that neither compiling nor running it nests
+# Python calls as deep as the chain is long. Shorter chains keep the nested closures, which
+# run faster; both evaluate left to right, except that a short chain's division evaluates its
+# divisor first.
+LONG_CHAIN = 16
 
 
 def bracket_depth(node: Expr) -> int:
-    """The deepest nesting of ``[ ]`` in ``node``, function brackets included."""
+    """The deepest nesting of ``[ ]`` in ``node``: every pair counts once, whether it is a plain
+    bracket, a function's, an IF/WHILE condition's or the one of an indirection ``#[..]`` (whose
+    index is a ``Bracket`` node: the ``#`` adds no level of its own)."""
     best = 0
     stack: list[tuple[Expr, int]] = [(node, 0)]
     while stack:
@@ -62,8 +70,7 @@ def bracket_depth(node: Expr) -> int:
         elif isinstance(n, Unary):
             stack.append((n.operand, d))
         elif isinstance(n, IndirectVar):
-            best = max(best, d + 1)
-            stack.append((n.index, d + 1))
+            stack.append((n.index, d))
         elif isinstance(n, NamedVar) and n.index is not None:
             stack.append((n.index, d))  # the subscript's brackets count once
     return best
@@ -163,13 +170,19 @@ class ExpressionCompiler:
         if isinstance(node, NamedVar):
             return self.named(node, write=False)  # type: ignore[return-value]
         if isinstance(node, Bracket):
-            return self._value(node.inner)
+            while isinstance(node, Bracket):  # nested brackets need no closure each
+                node = node.inner
+            return self._value(node)
         if isinstance(node, Unary):
+            if isinstance(node.operand, Unary):
+                return self._signs(node)
             inner = self._value(node.operand)
             if node.op == "-":
                 return lambda m: -(inner(m) or 0.0)
             return lambda m: inner(m) or 0.0
         if isinstance(node, Binary):
+            if isinstance(node.left, Binary) and _spine_length(node) > LONG_CHAIN:
+                return self._chain(node)
             return self._binary(node)
         if isinstance(node, Call):
             return self._call(node)
@@ -240,6 +253,48 @@ class ExpressionCompiler:
             return v
 
         return watched
+
+    def _signs(self, node: Unary) -> Getter:
+        """A run of signs (``--#1``, a thousand of them in a generated line): one closure that
+        applies them in a loop, innermost first, each exactly as a single sign does."""
+        negate: list[bool] = []
+        x: Expr = node
+        while isinstance(x, Unary):
+            negate.append(x.op == "-")
+            x = x.operand
+        inner = self._value(x)
+        order = tuple(reversed(negate))
+
+        def signs(m: Any) -> Value:
+            v = inner(m)
+            for neg in order:
+                v = -(v or 0.0) if neg else (v or 0.0)
+            return v
+
+        return signs
+
+    def _chain(self, node: Binary) -> Getter:
+        """A long left-to-right chain of binary operators (``1+1+1+...``, ``a*b-c/d...``): the
+        tree leans left, so its spine is walked in a loop and the operators applied one after
+        another, each as ``_binary`` would; no closure nests deeper than one step."""
+        steps: list[tuple[str, Getter]] = []
+        x: Expr = node
+        while isinstance(x, Binary):
+            steps.append((x.op, self._value(x.right)))
+            x = x.left
+        first = self._value(x)
+        apply = tuple((_STEP.get(op), op, b) for op, b in reversed(steps))
+        for fn, op, _b in apply:
+            if fn is None:
+                return raiser(FORMAT, detail(f"unknown operator {op}", f"未知的运算符 {op}"))
+
+        def chain(m: Any) -> Value:
+            v = first(m)
+            for fn, _op, b in apply:
+                v = fn(v, b(m))  # type: ignore[misc]
+            return v
+
+        return chain
 
     def _binary(self, node: Binary) -> Getter:
         op = node.op
@@ -346,8 +401,8 @@ class ExpressionCompiler:
         return self._condition(node)
 
     def _condition(self, node: Expr) -> Test:
-        if isinstance(node, Bracket):
-            return self._condition(node.inner)
+        while isinstance(node, Bracket):
+            node = node.inner
         if isinstance(node, Relation):
             return self._relation(node)
         if isinstance(node, Binary) and node.op in ("AND", "OR", "XOR") and _has_relation(node):
@@ -504,13 +559,64 @@ def _same(x: Value, y: Value) -> bool:
 
 
 def _has_relation(node: Expr) -> bool:
-    if isinstance(node, Relation):
-        return True
-    if isinstance(node, Bracket):
-        return _has_relation(node.inner)
-    if isinstance(node, Binary):
-        return _has_relation(node.left) or _has_relation(node.right)
+    """Whether a comparison hides in ``node`` outside functions and indirections (walked
+    without recursion: a condition may join hundreds of comparisons)."""
+    stack: list[Expr] = [node]
+    while stack:
+        n = stack.pop()
+        if isinstance(n, Relation):
+            return True
+        if isinstance(n, Bracket):
+            stack.append(n.inner)
+        elif isinstance(n, Binary):
+            stack.append(n.right)
+            stack.append(n.left)
     return False
+
+
+def _spine_length(node: Binary) -> int:
+    """How many binary operators a left-leaning chain ``a op b op c ...`` starting at ``node``
+    holds (counted up to ``LONG_CHAIN + 1``)."""
+    n = 0
+    x: Expr = node
+    while isinstance(x, Binary) and n <= LONG_CHAIN:
+        n += 1
+        x = x.left
+    return n
+
+
+def _add(a: Value, b: Value) -> Value:
+    return (a or 0.0) + (b or 0.0)
+
+
+def _sub(a: Value, b: Value) -> Value:
+    return (a or 0.0) - (b or 0.0)
+
+
+def _mul(a: Value, b: Value) -> Value:
+    return (a or 0.0) * (b or 0.0)
+
+
+def _div(a: Value, d: Value) -> Value:
+    if not d:
+        raise MacroAlarm(
+            DIVISION_BY_ZERO,
+            detail("division by zero (the divisor is vacant)", "除数为零（除数为空变量）")
+            if d is None
+            else detail("division by zero", "除数为零"),
+        )
+    return (a or 0.0) / d
+
+
+def _mod(a: Value, d: Value) -> Value:
+    if not d:
+        raise MacroAlarm(DIVISION_BY_ZERO, detail("MOD by zero", "MOD 的除数为零"))
+    return math.fmod(a or 0.0, d)
+
+
+def _bitwise(op: str) -> Callable[[Value, Value], Value]:
+    bitop = _BITWISE[op]
+    return lambda a, b: float(bitop(_whole(a or 0.0), _whole(b or 0.0)))
 
 
 def _whole(x: float) -> int:
@@ -523,6 +629,17 @@ _BITWISE: dict[str, Callable[[int, int], int]] = {
     "AND": lambda x, y: x & y,
     "OR": lambda x, y: x | y,
     "XOR": lambda x, y: x ^ y,
+}
+
+
+# one step of a long chain of binary operators (``_chain``): the left value so far and the right one
+_STEP: dict[str, Callable[[Value, Value], Value]] = {
+    "+": _add,
+    "-": _sub,
+    "*": _mul,
+    "/": _div,
+    "MOD": _mod,
+    **{op: _bitwise(op) for op in _BITWISE},
 }
 
 

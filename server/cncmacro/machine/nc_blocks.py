@@ -12,11 +12,12 @@ from functools import partial
 from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
-from ..dialects.alarms import G_ARGUMENT, NC_AND_MACRO, PROGRAM_NOT_FOUND
+from ..dialects.alarms import DECIMAL_POINT, G_ARGUMENT, IMPROPER_G_CODE, NC_AND_MACRO, PROGRAM_NOT_FOUND
 from ..syntax.nodes import Block, Bracket, Number, Var, Word
 from .alarms import MacroAlarm, raiser
 from .calls import codes_before_call, macro_program_number, map_arguments, program_and_count, repeat_count
 from .hcodes import compile_h_code
+from .words import g_code_known, m_decimal_point, unknown_g_code
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile, Runner
@@ -197,9 +198,17 @@ def _program_resolver(cf: CompiledFile, p_word: Word | None, name: str) -> Any:
 def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
     """An NC block: words evaluated, NC executed, then M98 / M99 / M30 / M00 and call codes."""
     items: list[tuple[str, float | None, Any]] = []  # (letter, rounded literal, or a getter)
+    dialect = cf.machine.dialect
+    calls = cf.machine.settings.calls
     for w in words:
         is_const, v = cf.word_value(w)
         items.append((w.letter, v, None) if is_const else (w.letter, None, v))
+    strict = dialect.word_format_alarms and not _code_called(items, calls)
+    if strict:
+        for w, (_, v, _get) in zip(words, items, strict=True):
+            refused = _refused(w, v, dialect, calls)
+            if refused is not None:
+                return refused
     all_constant = all(get is None for _, _, get in items)
     constant = [(letter, v) for letter, v, get in items if get is None]
     # the program words (P, L, Q) of a call are not NC words
@@ -224,7 +233,6 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
         if w.letter == "P" and isinstance(w.value, Number):
             p_text = w.value.text
     p_name = next((w.name for w in words if w.letter == "P" and w.name is not None), None)
-    dialect = cf.machine.dialect
     p_bracket_var = next(
         (
             w.value.inner
@@ -235,6 +243,7 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
     )
     # P[#100] names a program on a dialect with bracketed names; elsewhere it is P#100
     get_bracket = cf.values.value(p_bracket_var) if p_bracket_var is not None and dialect.bracket_names else None
+    check_g = strict and any(letter == "G" and get is not None for letter, _, get in items)
 
     def general(m: Any, pc: int) -> int:
         values: list[tuple[str, float]] = []
@@ -242,6 +251,10 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
             v = get(m) if get is not None else const
             if v is not None:
                 values.append((letter, v))
+        if check_g:  # a G code from a variable: known only now
+            for letter, v in values:
+                if letter == "G" and not g_code_known(v, dialect, calls):
+                    raise MacroAlarm(IMPROPER_G_CODE, unknown_g_code(f"{v:g}", dialect))
         ms = [v for letter, v in values if letter == "M"]
         mcontrol = [v for v in ms if v in CONTROL_M]
         found_call = m.call_code_for(values) if call_codes else None
@@ -266,6 +279,29 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
         return _after_nc(m, moved, skip_to, pc, nxt)
 
     return general
+
+
+def _code_called(items: list[tuple[str, float | None, Any]], calls: Any) -> bool:
+    """Whether a literal G, M or T word of the block (its rounded value) is a code that the
+    machine settings make a call (``Machine.call_code_for``): the block is then a call, and its
+    other words are arguments, not NC words."""
+    if not calls:
+        return False
+    for letter, v, _get in items:
+        if letter == "T" and "T" in calls:
+            return True
+        if letter in ("G", "M") and v is not None and f"{letter}{v:g}" in calls:
+            return True
+    return False
+
+
+def _refused(w: Word, value: float | None, dialect: Any, calls: Any) -> Runner | None:
+    """The closure raising the alarm for a literal word the control refuses (words.py), or None."""
+    if w.letter == "G" and value is not None and not g_code_known(value, dialect, calls):
+        shown = w.value.text if isinstance(w.value, Number) else f"{value:g}"
+        return raiser(IMPROPER_G_CODE, unknown_g_code(shown, dialect))
+    point = m_decimal_point(w)
+    return raiser(DECIMAL_POINT, point) if point is not None else None
 
 
 def _after_nc(m: Any, moved: bool, skip_to: float | None, pc: int, nxt: int) -> int:

@@ -12,7 +12,18 @@ from collections.abc import Sequence
 
 from ..bilingual import Detail, detail
 from .lines import Prepared
-from .nodes import Assign, Block, Comment, Do, End, If, Number, Problem, While, Word, comment_after
+from .nodes import Abbreviation, Assign, Block, Comment, Do, End, If, Number, Problem, While, Word, comment_after
+
+
+class Items(list):  # type: ignore[type-arg]
+    """The items read from a line, with the macro words written shortened among them (both
+    readers, the grammar and the fast path, hand them over so)."""
+
+    __slots__ = ("abbreviations",)
+
+    def __init__(self, items: Sequence[object], abbreviations: Sequence[Abbreviation]) -> None:
+        super().__init__(items)
+        self.abbreviations = tuple(sorted(abbreviations, key=lambda a: a.start))
 
 
 def assemble(items: Sequence[object], prep: Prepared) -> Block:
@@ -66,6 +77,7 @@ def assemble(items: Sequence[object], prep: Prepared) -> Block:
         comments=prep.comments,
         problems=tuple(problems),
         structural=structural,
+        abbreviations=getattr(items, "abbreviations", ()),
     )
 
 
@@ -112,4 +124,3 @@ def _whole_literal(w: Word, not_literal: Detail, not_whole: Detail, problems: li
 
 def _first_comment_text(comments: tuple[Comment, ...]) -> str | None:
     return comments[0].text.strip() if comments else None
-

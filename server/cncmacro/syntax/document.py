@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from .block_parser import BlockCache, collector_paused
 from .nodes import Block
-from .program import Program, build_program, update_program
+from .program import Program, build_program, first_mark_turned, update_program
 
 _shared_cache = BlockCache()
 
@@ -56,8 +56,10 @@ class ParsedDocument:
         self.lines[start:end] = new_lines
         self.blocks[start:end] = new_blocks
         self._structural[start:end] = [b.structural for b in new_blocks]
-        if len(new_blocks) == len(old_blocks) and all(
-            o.structure_key() == b.structure_key() for o, b in zip(old_blocks, new_blocks, strict=True)
+        if (
+            len(new_blocks) == len(old_blocks)
+            and all(o.structure_key() == b.structure_key() for o, b in zip(old_blocks, new_blocks, strict=True))
+            and not first_mark_turned(self.program, start, 0)
         ):
             return  # the program (which holds self.blocks) is unchanged
         update_program(self.program, start, old_blocks, new_blocks)

@@ -15,8 +15,11 @@ from __future__ import annotations
 
 import re
 
+from .assemble import Items
 from .grammar import RELATION_NAMES, BlockError, _check_condition, _has_relation
+from .keywords import FULL_WORD
 from .nodes import (
+    Abbreviation,
     Assign,
     Binary,
     Bracket,
@@ -57,14 +60,17 @@ def plain_words(code: str) -> list[Word] | None:
 
 # ---------------------------------------------------------------- statements
 
-_KEYWORDS = (
-    "ATAN|ASIN|ACOS|SQRT|ROUND|WHILE|GOTO|THEN|POPEN|PCLOS|DPRNT|BPRNT|"
-    "SIN|COS|TAN|ABS|EXP|FIX|FUP|BIN|BCD|AND|MOD|XOR|END|LN|OR|EQ|NE|GT|GE|LT|LE|IF|DO"
-)
-_TOKEN = re.compile(
-    r"[ \t]*(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|(" + _KEYWORDS + r")|(==|!=|<=|>=|[-+*/\[\]=<>#])|([A-Za-z]))",
-    re.I,
-)
+# A run of two letters or more is one macro word (a value never starts with a letter, so two
+# letters are never an address and its value): the word itself or an abbreviation of it
+# (keywords.py). Any other run is left to the grammar.
+_MACRO_WORDS = {
+    **{w: w for w in (
+        "ATAN ASIN ACOS SQRT ROUND WHILE GOTO THEN POPEN PCLOS DPRNT BPRNT SIN COS TAN ABS EXP FIX FUP BIN BCD "
+        "AND MOD XOR END LN OR EQ NE GT GE LT LE IF DO"
+    ).split()},
+    **FULL_WORD,
+}  # fmt: skip
+_TOKEN = re.compile(r"[ \t]*(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|([A-Za-z]{2,})|(==|!=|<=|>=|[-+*/\[\]=<>#])|([A-Za-z]))")
 _BRACKET_NAME = re.compile(r"\[(?=[^\[\]#()\s]*[^\[\]#()\s\d.+\-*/])(?:[^\[\]#()\s.]|\.(?=[./\\]))[^\[\]#()\s]*\]")
 _FUNCS = frozenset("SIN COS TAN ASIN ACOS SQRT ABS LN EXP ROUND FIX FUP BIN BCD".split())
 _RELOPS = frozenset("EQ NE GT GE LT LE == != <= >= < >".split())
@@ -84,16 +90,19 @@ def read_items(code: str) -> list[object] | None:
     """The items of a block of common statement forms, or None to defer to the grammar."""
     if code.count("[") > 12:  # deep nesting is rare; the grammar reads it without recursion
         return None
-    toks = _tokenize(code)
+    shortened: list[Abbreviation] = []
+    toks = _tokenize(code, shortened)
     if toks is None:
         return None
     try:
-        return _Reader(toks, code).items()
+        return Items(_Reader(toks, code).items(), shortened)
     except (_Decline, BlockError):
         return None
 
 
-def _tokenize(code: str) -> list[tuple[int, str, int, int]] | None:
+def _tokenize(code: str, shortened: list[Abbreviation]) -> list[tuple[int, str, int, int]] | None:
+    """The tokens of ``code``; a macro word stands for its whole word, and each one written
+    shortened is added to ``shortened``."""
     toks: list[tuple[int, str, int, int]] = []
     pos = 0
     n = len(code)
@@ -107,7 +116,15 @@ def _tokenize(code: str) -> list[tuple[int, str, int, int]] | None:
         kind = m.lastindex - 1  # type: ignore[operator]
         s, e = m.span(m.lastindex)  # type: ignore[arg-type]
         text = m.group(m.lastindex)  # type: ignore[arg-type]
-        if kind == _KW or kind == _LETTER:
+        if kind == _KW:
+            up = text.upper()
+            word = _MACRO_WORDS.get(up)
+            if word is None:
+                return None
+            if word != up:
+                shortened.append(Abbreviation(s, e, text, word))
+            text = word
+        elif kind == _LETTER:
             text = text.upper()
         toks.append((kind, text, s, e))
         pos = m.end()
@@ -170,6 +187,10 @@ class _Reader:
                 if k2[0] == _KW and k2[1] == "THEN":
                     then = self.assign()
                     return If(cond, None, then, s, then.end)
+                if k2[0] == _VAR or (k2[0] == _OP and k2[1] == "#"):  # THEN left out
+                    self.i -= 1
+                    then = self.assign()
+                    return If(cond, None, then, s, then.end, True)
                 raise _Decline
             if text == "WHILE":
                 cond = self.condition()

@@ -15,7 +15,10 @@ from importlib import resources
 from lark import Lark, Token, Transformer, Tree
 
 from ..bilingual import Detail, detail
+from .assemble import Items
+from .keywords import full_word, pattern
 from .nodes import (
+    Abbreviation,
     Assign,
     Binary,
     Bracket,
@@ -74,19 +77,29 @@ class _Builder(Transformer):
 
     ``relations`` counts the comparisons built since ``reset``: while it is 0, no expression
     of the line can hide one, and the checks that walk expressions are skipped.
+    ``abbreviations`` collects the macro words written shortened (keywords.py).
     """
 
     relations = 0
+    abbreviations: list[Abbreviation]
 
     def reset(self) -> None:
         self.relations = 0
+        self.abbreviations = []
+
+    def _word(self, tok: Token) -> str:
+        """The whole word a keyword token stands for; an abbreviation is noted."""
+        word = full_word(tok)
+        if len(tok) != len(word):
+            self.abbreviations.append(Abbreviation(tok.start_pos, tok.end_pos, str(tok), word))  # type: ignore[arg-type]
+        return word
 
     def __default__(self, data, children, meta):  # lark's helper rules (item*) stay trees
         return Tree(data, children, meta)
 
     # ---- items
     def start(self, children):
-        return children
+        return Items(children, self.abbreviations)
 
     def word(self, c):
         letter = c[0]
@@ -123,8 +136,13 @@ class _Builder(Transformer):
         return Assign(target, value, None, target.start, value.end)
 
     def if_stmt(self, c):
+        if len(c) == 3:  # IF [cond] statement: THEN left out
+            kw, cond, rest = c
+            _check_condition(cond)
+            return If(cond, None, rest, kw.start_pos, rest.end, True)
         kw, cond, kw2, rest = c
         _check_condition(cond)
+        self._word(kw2)
         if kw2.type == "GOTO":
             return If(cond, rest, None, kw.start_pos, rest.end)
         return If(cond, None, rest, kw.start_pos, rest.end)
@@ -132,6 +150,7 @@ class _Builder(Transformer):
     def while_stmt(self, c):
         kw, cond, _do, num = c
         _check_condition(cond)
+        self._word(kw)
         return While(cond, _number(num), kw.start_pos, num.end_pos)
 
     def do_stmt(self, c):
@@ -140,10 +159,12 @@ class _Builder(Transformer):
 
     def end_stmt(self, c):
         kw, num = c
+        self._word(kw)
         return End(_number(num), kw.start_pos, num.end_pos)
 
     def goto_stmt(self, c):
         kw, target = c
+        self._word(kw)
         return Goto(target, kw.start_pos, target.end)
 
     def target(self, c):
@@ -156,7 +177,7 @@ class _Builder(Transformer):
 
     def output_stmt(self, c):
         kw = c[0]
-        name = kw.upper()
+        name = self._word(kw)
         if len(c) == 1:
             return Output(name, (), kw.start_pos, kw.end_pos)
         args = c[1]
@@ -165,7 +186,7 @@ class _Builder(Transformer):
     # ---- expressions
     def binary(self, c):
         left, op, right = c
-        return Binary(op.upper(), left, right, left.start, right.end)
+        return Binary(self._word(op), left, right, left.start, right.end)
 
     def unary(self, c):
         sign, x = c
@@ -203,7 +224,7 @@ class _Builder(Transformer):
         return IndirectVar(index, hash_.start_pos, index.end)
 
     def call(self, c):
-        name = c[0].upper()
+        name = self._word(c[0])
         args = tuple(x for x in c[1:] if not isinstance(x, Token))
         if self.relations:
             for a in args:
@@ -350,7 +371,9 @@ def _output_parts(tok: Token) -> tuple[OutputPart, ...]:
 
 
 def _load_grammar() -> str:
-    return resources.files(__package__).joinpath("block.lark").read_text(encoding="utf-8")
+    """``block.lark`` with each ``@WORD@`` spelled out as the word or its abbreviations."""
+    text = resources.files(__package__).joinpath("block.lark").read_text(encoding="utf-8")
+    return re.sub(r"@([A-Z]+)@", lambda m: pattern(m.group(1)), text)
 
 
 def make_parser() -> tuple[Lark, _Builder]:

@@ -1,7 +1,8 @@
 """Splitting a line into the part the grammar reads and the parts it does not.
 
 Before a line reaches the block grammar, its comments ``( ... )``, the end-of-block ``;`` (and
-whatever follows it), a leading block delete ``/`` or ``/n`` and a ``%`` tape mark are taken out
+whatever follows it), a leading block delete ``/`` or ``/n`` and a ``%`` tape mark (or a DOS
+end-of-file character 0x1A at the start of the line, read as one) are taken out
 and replaced by spaces, so the remaining code keeps the columns of the original line. The
 result also carries the comments themselves and the problems found on the way (an unclosed
 comment is a warning; a second block after ``;`` on the same line is an error).
@@ -16,7 +17,7 @@ from ..bilingual import detail
 from .nodes import Comment, Problem
 
 _BLOCK_DELETE = re.compile(r"[ \t]*/[ \t]*([1-9](?![0-9.]))?")
-_SPECIAL = re.compile("[(;\uff1b/%]")
+_SPECIAL = re.compile("[(;\uff1b/%\x1a]")
 _UNCLOSED_COMMENT = detail("comment not closed: ')' is missing", "注释没有结束：缺少 ')'")
 _FULL_WIDTH_END = detail("full-width '；' read as the end-of-block ';'", "全角 '；' 按程序段结束符 ';' 处理")
 
@@ -42,7 +43,7 @@ def prepare(line: str) -> Prepared:
     if _SPECIAL.search(line) is None:
         return Prepared(line)
     stripped = line.lstrip(" \t")
-    if stripped.startswith("%"):
+    if stripped.startswith(("%", "\x1a")):  # a tape mark, or DOS's end of file: see program.py
         return Prepared("", tape=True)
 
     comments: list[Comment] = []

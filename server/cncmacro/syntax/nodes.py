@@ -154,13 +154,16 @@ class Assign:
 
 @dataclass(slots=True)
 class If:
-    """``IF [cond] GOTO n`` (``goto`` set) or ``IF [cond] THEN statement`` (``then`` set)."""
+    """``IF [cond] GOTO n`` (``goto`` set) or ``IF [cond] THEN statement`` (``then`` set).
+    ``implicit_then`` is True when the statement follows the condition without THEN
+    (``IF[#1GT10]#2=5``, a form some controls accept, docs/semantics.md §4)."""
 
     condition: Bracket
     goto: Expr | None
     then: Statement | None
     start: int
     end: int
+    implicit_then: bool = False
 
 
 @dataclass(slots=True)
@@ -245,6 +248,17 @@ def comment_after(comments: tuple[Comment, ...], column: int) -> str | None:
     return None
 
 
+@dataclass(slots=True, frozen=True)
+class Abbreviation:
+    """A macro word written shortened (``WH`` for WHILE, keywords.py): its columns, the text as
+    written and the whole word."""
+
+    start: int
+    end: int
+    text: str
+    word: str
+
+
 @dataclass(slots=True)
 class Problem:
     """A syntax problem on one block, ready to become a diagnostic."""
@@ -268,6 +282,7 @@ _FIELDS = (
     "comments",
     "problems",
     "structural",
+    "abbreviations",
 )
 
 
@@ -280,7 +295,8 @@ class Block:
     statements. ``block_delete`` is None, 0 for ``/`` or 1–9 for ``/n``. ``tape`` marks a
     ``%`` line. ``problems`` are the syntax errors and warnings of the line; a block with an
     error has no words or statements. ``structural`` is True when the block has a label, O
-    header, ``%`` mark or loop marker (see program.py).
+    header, ``%`` mark or loop marker (see program.py). ``abbreviations`` lists the macro
+    words written shortened (``WH[..]DO1``), in column order.
 
     A line of whitespace-separated address-number words with at most three decimals
     (``G01 X12.5 Y-3.``), most of a CAM program, is kept as its text in ``plain`` and its
@@ -306,6 +322,7 @@ class Block:
         problems: tuple[Problem, ...] = (),
         structural: bool = False,
         plain: str | None = None,
+        abbreviations: tuple[Abbreviation, ...] = (),
     ) -> None:
         self.label = label
         self.label_span = label_span
@@ -320,6 +337,7 @@ class Block:
         self.problems = problems
         self.structural = structural
         self.plain = plain
+        self.abbreviations = abbreviations
 
     @property
     def words(self) -> tuple[Word, ...]:
@@ -348,7 +366,7 @@ class Block:
         b = _new(cls)
         b.label = b.label_span = b.program = b.program_span = b.title = b.block_delete = b._words = None
         b.tape = b.structural = False
-        b.statements = b.comments = b.problems = ()
+        b.statements = b.comments = b.problems = b.abbreviations = ()
         b.plain = line
         return b
 

@@ -1,17 +1,23 @@
-"""The cross-line structure of a document: O programs, N labels and DO/END pairs.
+"""The cross-line structure of a document: O programs, N labels, DO/END pairs and the tape's end.
 
 A ``Program`` is built from the blocks of a whole file by one linear pass that visits only
 the blocks marked ``structural`` (a label, an O header, a ``%`` mark, a WHILE/DO/END), so that
 rebuilding it after an edit costs time in proportion to those blocks, not to the file.
 The pass finds facts; judging them (a duplicate label, a DO without END) is the analysis
 layer's job.
+
+The tape ends at its closing ``%`` (docs/semantics.md §1): a ``%`` line before any program text
+starts the tape, the next one ends it, and a ``%`` after program text ends it at once (a line
+that starts with the DOS end-of-file character reads as such a mark). What follows the end
+(``tape_end``) is not part of the program: no unit, loop or tape mark is taken from it, and
+every layer above passes it over (``Program.read_end``).
 """
 
 from __future__ import annotations
 
 from bisect import bisect_left, bisect_right, insort
 from dataclasses import dataclass
-from itertools import compress
+from itertools import compress, islice
 
 from .nodes import Block
 
@@ -72,6 +78,16 @@ class Program:
     loop_problems: list[LoopProblem]
     tape_marks: list[int]
     markers: list[int]  # lines with an O header, a '%' or a loop marker, in order
+    tape_end: int | None = None  # the line of the closing '%': the lines after it are not read
+
+    @property
+    def read_end(self) -> int:
+        """One past the last line that the control reads: the closing ``%``, or the file's end."""
+        return len(self.blocks) if self.tape_end is None else self.tape_end + 1
+
+    def after_tape(self, line: int) -> bool:
+        """True for a line after the closing ``%`` (not part of the program)."""
+        return self.tape_end is not None and line > self.tape_end
 
     def shift(self, at: int, delta: int) -> None:
         """Move the line numbers of units, loops and tape marks at or after ``at`` by
@@ -92,6 +108,8 @@ class Program:
             if q.other_line is not None and q.other_line >= at:
                 q.other_line += delta
         self.tape_marks = [x + delta if x >= at else x for x in self.tape_marks]
+        if self.tape_end is not None and self.tape_end >= at:
+            self.tape_end += delta
 
     def label_lines(self, label: int, unit: ProgramUnit | None = None) -> list[int]:
         """The lines labelled N``label``, in order (duplicates kept), optionally only those
@@ -188,12 +206,12 @@ def update_program(program: Program, start: int, old_blocks: list[Block], new_bl
     if delta:
         for j in range(lo + len(new_markers), len(markers)):
             markers[j] += delta
-    if changed or new_markers:
+    if changed or new_markers or first_mark_turned(program, start, delta):
         _derive_from_markers(program)
     elif delta:
         program.shift(end, delta)
     else:
-        program.units[-1].end = len(program.blocks)
+        program.units[-1].end = program.read_end
 
 
 def _derive_from_markers(program: Program) -> None:
@@ -207,8 +225,15 @@ def _derive_from_markers(program: Program) -> None:
     open_loops: list[tuple[int, int]] = []  # (number, DO line)
     numbers: set[int] = set()
     unit = units[0]
+    tape_end = None
     for i in program.markers:
         b = blocks[i]
+        if b.tape:
+            tape_marks.append(i)
+            if len(tape_marks) > 1 or _text_before(blocks, i):
+                tape_end = i  # the closing '%': nothing after it is read
+                unit.end = i + 1
+                break
         if b.program is not None:
             _close_unit(open_loops, problems)
             if unit.start == i:  # the header is the file's first line: replace the implicit unit
@@ -218,8 +243,6 @@ def _derive_from_markers(program: Program) -> None:
             unit = ProgramUnit(b.program, b.title, i, n, b.program in numbers)
             numbers.add(b.program)
             units.append(unit)
-        if b.tape:
-            tape_marks.append(i)
         marker = b.loop_marker() if b.statements else None
         if marker is not None:
             kind, num = marker
@@ -233,6 +256,25 @@ def _derive_from_markers(program: Program) -> None:
     program.loops = loops
     program.loop_problems = problems
     program.tape_marks = tape_marks
+    program.tape_end = tape_end
+
+
+def first_mark_turned(program: Program, start: int, delta: int) -> bool:
+    """Whether an edit at ``start`` (no marker changed) turned the first '%' from the tape's start
+    into its end or back: text was added before it where there was none, or the last removed."""
+    marks = program.tape_marks
+    if not marks or start > marks[0]:
+        return False
+    was_end = program.tape_end == marks[0]
+    return was_end != _text_before(program.blocks, marks[0] + delta)
+
+
+def _text_before(blocks: list[Block], line: int) -> bool:
+    """Whether any line before ``line`` holds program text (the first '%' after program text
+    ends the tape rather than starting it). Stops at the first such line: near the top."""
+    return any(not (b.is_empty or b.tape) for b in islice(blocks, line))
+
+
 def _close_loop(
     number: int,
     line: int,

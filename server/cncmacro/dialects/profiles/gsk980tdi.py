@@ -38,4 +38,7 @@ PROFILE = Dialect(
     common_ranges=(CommonRange(100, 199, False), CommonRange(500, 999, True)),
     m98_program_digits=4,
     modal_call_needs_distance=True,
+    word_format_alarms=False,
+    keyword_abbreviations=False,
+    if_without_then=False,
 )

@@ -1,0 +1,117 @@
+"""Words and forms a control refuses: a G code it lacks, a decimal point in an M code (docs/semantics.md
+§8), an abbreviated macro word (§1) and IF without THEN (§4) where the dialect has none of them.
+
+A G code is known when the dialect's table lists it (``G_CODES`` of its data module, codes of
+both the milling and the turning series, the 30i's and the grinding cycles) or when the machine
+settings make it a call (``[calls]``, e.g. ``G100 = 9010``). On a dialect with
+``word_format_alarms`` (FANUC) any other G code is alarm 010 "improper G code", and an M code
+written with a decimal point (``M30.``) is alarm 007 "illegal use of decimal point". Elsewhere
+(GSK980TDi, whose manuals at hand give neither a complete code list nor those alarms) both are
+only warnings and a run goes on as if the word were a one-shot code.
+
+``WH`` for WHILE is read by FANUC (``Dialect.keyword_abbreviations``) and ``IF[..] #1=2`` without
+THEN by the FANUC profiles and Haas (``Dialect.if_without_then``); a dialect without the switch
+stops with alarm 114 at such a block. The interpreter (``blocks.py``, ``nc_blocks.py``) and the static checks
+(``analysis/call_checks.py``, ``analysis/statement_checks.py``) take their messages from here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from functools import cache
+from typing import TYPE_CHECKING
+
+from ..bilingual import Detail, detail
+from ..dialects import get_dialect
+from ..syntax.nodes import Number, Word
+
+if TYPE_CHECKING:
+    from ..dialects import Dialect
+
+
+@cache
+def known_g_codes(dialect: str) -> frozenset[float]:
+    """The G codes that the dialect's table lists, as the interpreter rounds them (5.1, 54.0)."""
+    out = set()
+    for doc in get_dialect(dialect).g_codes():
+        try:
+            out.add(float(doc.code[1:]))
+        except ValueError:
+            continue
+    return frozenset(out)
+
+
+def g_code_known(value: float, dialect: Dialect, calls: Mapping[str, object]) -> bool:
+    """Whether ``G<value>`` (rounded as an address value) exists for the dialect or the machine."""
+    return value in known_g_codes(dialect.name) or f"G{value:g}" in calls
+
+
+def unknown_g_code(shown: str, dialect: Dialect) -> Detail:
+    """What to say of ``G<shown>`` that the dialect's table and the machine's call codes lack."""
+    if dialect.word_format_alarms:
+        return detail(
+            f"G{shown}: {dialect.title} has no such G code (alarm 010 improper G code); a code that the "
+            "machine maps to a macro belongs in the machine file's [calls]",
+            f"G{shown}：{dialect.title} 没有这个G代码（报警 010 G代码不当）；若机床把它设为宏程序调用，"
+            "请写入机床文件的 '[calls]' 表",
+        )
+    return detail(
+        f"G{shown} is not in the {dialect.title} G-code table: the control alarms on a G code it does not have; "
+        "a code that the machine maps to a macro belongs in the machine file's [calls]",
+        f"G{shown} 不在 {dialect.title} 的G代码表中：系统没有的G代码会报警；若机床把它设为宏程序调用，"
+        "请写入机床文件的 '[calls]' 表",
+    )
+
+
+def m_decimal_point(word: Word) -> Detail | None:
+    """What to say of an M code written with a decimal point (``M30.``), or None."""
+    value = word.value
+    if word.letter != "M" or value.__class__ is not Number or not value.has_point:  # type: ignore[union-attr]
+        return None
+    text = value.text  # type: ignore[union-attr]
+    whole = text.split(".")[0] or "0"
+    return detail(
+        f"M{text}: an M code takes no decimal point (alarm 007 illegal use of decimal point); write M{whole}",
+        f"M{text}：M代码不能带小数点（报警 007 小数点使用不当）；请写作 M{whole}",
+    )
+
+
+def abbreviation_refused(text: str, word: str, dialect: Dialect) -> Detail:
+    """What to say of a macro word written shortened (``text`` for ``word``) on a dialect that
+    does not read abbreviations."""
+    return detail(
+        f"'{text}' for {word}: abbreviated macro words are a FANUC feature that {dialect.title} does not "
+        f"have; the control stops here with alarm 114; write {word}",
+        f"'{text}' 表示 {word}：宏语句关键字的缩写是 FANUC 的功能，{dialect.title} 不支持；"
+        f"系统执行到此处报警 114；请写作 {word}",
+    )
+
+
+def missing_then(dialect: Dialect) -> Detail:
+    """What to say of ``IF [cond] <statement>`` without THEN on a dialect that needs THEN."""
+    return detail(
+        f"THEN is missing: {dialect.title} runs only IF[...] GOTO n and IF[...] THEN <statement>, and "
+        "stops at this block with alarm 114; write THEN before the statement (FANUC and Haas controls run it without)",
+        f"缺少 THEN：{dialect.title} 只接受 IF[...] GOTO n 和 IF[...] THEN <语句>，执行到此程序段时报警 114；"
+        "请在语句前写 THEN（FANUC 与哈斯系统可以省略）",
+    )
+
+
+def plain_line_pattern(dialect: str, calls: Mapping[str, object]) -> str:
+    """A pattern that finds, in a line of plain words, a word that may be refused: a G code
+    outside ``known_g_codes`` and the call codes, or an M code with a decimal point. The G codes
+    0 to 3 (most of a CAM program) are passed over first, at little cost."""
+    spellings = []
+    codes = set(known_g_codes(dialect))
+    for code in calls:
+        if code[:1] in "Gg" and code[1:]:
+            try:
+                codes.add(float(code[1:]))
+            except ValueError:
+                continue
+    for value in sorted(codes):
+        whole, _, frac = f"{value:g}".partition(".")
+        spellings.append(rf"{whole}\.{frac}0*" if frac else rf"{whole}(?:\.0*)?")
+    end = r"(?=[ \t]|$)"
+    g = rf"[Gg]\+?(?!0*[0-3](?:\.0*)?{end})(?!0*(?:{'|'.join(spellings)}){end})[\d.]"
+    return rf"(?:^|[ \t])(?:{g}|[Mm][+-]?\d*\.)"
