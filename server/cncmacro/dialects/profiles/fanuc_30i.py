@@ -27,8 +27,8 @@ from dataclasses import replace
 
 from .. import fanuc_data as fanuc
 from .. import shared_data as shared
-from ..dialect import Dialect
 from ..tables import CodeDoc, CommonRange, SystemVariable, SystemVariableName
+from .fanuc_0i import PROFILE as FANUC_0I
 
 AXES = 4
 
@@ -347,40 +347,17 @@ M_CODES: tuple[CodeDoc, ...] = tuple(_m98() if c.code == "M98" else c for c in f
 
 
 # ---------------------------------------------------------------------------------------------
-# the profile: switches as the 0i's, with names, the 30i functions, 8-digit program numbers in
+# the profile: the 0i's switches, with names, the 30i functions, 8-digit program numbers in
 # M98 P, and the common ranges the 30i can have (#100-#499 and #500-#999 with the option that
 # adds commons, #98000-#98499 extended; docs/profiles.md)
 
-PROFILE = Dialect(
+PROFILE = FANUC_0I.configured(
     name="fanuc-30i",
     title="FANUC 30i-B Custom Macro",
     summary="FANUC 30i/31i/32i-B (and 30i-class horizontal machining centres): names, 8-digit programs",
     summary_zh="FANUC 30i/31i/32i-B（及同级卧式加工中心）：系统变量名、8 位程序号",
     aliases=("fanuc30i", "30i", "31i", "32i", "fanuc-31i", "fanuc-32i", "fanuc-30i-b"),
     data_module="profiles.fanuc_30i",
-    vacant_differs_in_eq=True,
-    vacant_address_is_zero=False,
-    nine_indirection=False,
-    c_relations=False,
-    macro_alarm_base=3000,
-    h_codes=False,
-    bracket_names=False,
-    program_digits=8,
-    macro_levels=4,
-    subprogram_levels=10,
-    clamp_repeat_count=False,
-    count_in_p_and_l_alarm=False,
-    lathe=False,
-    axes=("X", "Y", "Z", "A"),
-    modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0}),
-    modal_defaults={"plane": 17.0, "feed": 94.0},
-    coordinate_setting_code=92.0,
-    cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
-    ijk_order_matters=True,
-    word_format_alarms=True,
-    keyword_abbreviations=True,
-    if_without_then=True,
-    modal_g_before_call="execute",
     variable_names=True,
     extra_functions=frozenset({"POW", "ADP", "PRM", "ATAN[a,b]"}),
     m98_program_digits=8,
