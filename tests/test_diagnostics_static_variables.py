@@ -180,3 +180,5 @@ def test_2_profile_suggestion_names_the_control_a_file_reads_cleanly_on():
     assert suggested(lines("O1", "G65 H01 P#101 Q5", "IF[#101==5]GOTO9", "N9 M30"), "fanuc-0i") == "gsk980tdi"
     assert suggested(lines("O1", "#1=POW[2,3]", "G65 H01 P#101 Q5", "M30"), "fanuc-0i") is None  # no one has both
     assert suggested(lines("O1", "#1=[#_ABSIO[1]]", "M30"), "gsk980tdi") == "fanuc-30i"
+    mill = lines("O1", "G21 G17 G40 G49 G80 G90", "G43 Z50. H01", "G81 X10 Y10 Z-5 R2 F100", "M30")
+    assert suggested(mill, "gsk980tdi") == "fanuc-0i"  # G codes the lathe does not have

@@ -2,7 +2,7 @@
 
 A file read as ``fanuc-0i`` that writes ``[#_ABSIO[1]]`` or ``POW[..]``, or a FANUC file with
 ``G65 H01`` arithmetic, gets ``dialect-feature`` errors. When another built-in profile would read
-the same file without any, that is a strong sign the file was written for that control: the
+the same file without any (nor a G code it does not know), that is a strong sign the file was written for that control: the
 file gets one ``profile-suggestion`` (information) that names it, with quick fixes that write the
 ``(cncmacro: dialect=...)`` comment or the machine file's ``base``. Nothing switches by itself.
 """
@@ -17,11 +17,13 @@ from .diagnostics import Diagnostic
 from .locale import pick
 
 CODE = "profile-suggestion"
+# the findings that say "this control lacks it": syntax or G codes another control has
+FEATURE_CODES = ("dialect-feature", "unknown-g-code")
 
 
 def suggested_profile(program: Program, file: str, dialect: Dialect, settings: MachineSettings) -> Dialect | None:
-    """The first other profile under which ``program`` has no ``dialect-feature`` finding,
-    or None when the file has none under ``dialect`` or no profile reads it all."""
+    """The first other profile under which ``program`` has no ``dialect-feature`` or
+    ``unknown-g-code`` finding, or None when no profile reads it all."""
     from .static_checks import static_diagnostics  # the checks of every line, once per profile tried
 
     for name in DIALECTS:
@@ -29,7 +31,7 @@ def suggested_profile(program: Program, file: str, dialect: Dialect, settings: M
             continue
         other = machine_profile(name, settings)
         found = static_diagnostics(program, file, other, settings, None, "en")
-        if not any(d.code == "dialect-feature" for d in found):
+        if not any(d.code in FEATURE_CODES for d in found):
             return other
     return None
 
@@ -39,7 +41,7 @@ def suggestion(
 ) -> Diagnostic | None:
     """The ``profile-suggestion`` for a file whose findings are ``own``, placed on its first
     ``dialect-feature`` finding; None when there is nothing to suggest."""
-    features = [d for d in own if d.code == "dialect-feature"]
+    features = [d for d in own if d.code in FEATURE_CODES]
     if not features:
         return None
     other = suggested_profile(program, file, dialect, settings)
