@@ -3,8 +3,9 @@
 A file read as ``fanuc-0i`` that writes ``[#_ABSIO[1]]`` or ``POW[..]``, or a FANUC file with
 ``G65 H01`` arithmetic, gets ``dialect-feature`` errors. When another built-in profile would read
 the same file without any (nor a G code it does not know), that is a strong sign the file was
-written for that control: the file gets one ``profile-suggestion`` (information) that names it, with quick fixes that write the
-``(cncmacro: dialect=...)`` comment or the machine file's ``base``. Nothing switches by itself.
+written for that control: the file gets one ``profile-suggestion`` (information) that names it,
+with quick fixes that write the ``(cncmacro: dialect=...)`` comment or the machine file's
+``base``. Nothing switches by itself.
 """
 
 from __future__ import annotations
