@@ -173,7 +173,7 @@ def test_2_profile_suggestion_names_the_control_a_file_reads_cleanly_on():
     from cncmacro.syntax.document import ParsedDocument
 
     def suggested(text: str, dialect: str) -> str | None:
-        found = suggested_profile(ParsedDocument(text).program, "MAIN.nc", get_dialect(dialect), MachineSettings())
+        found = suggested_profile(ParsedDocument(text).program, get_dialect(dialect), MachineSettings())
         return None if found is None else found.name
 
     assert suggested(lines("O1", "#1=[#_ABSIO[1]]", "M30"), "fanuc-0i") == "fanuc-30i"

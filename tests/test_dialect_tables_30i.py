@@ -1,4 +1,5 @@
-"""The FANUC 30i table (``dialects/profiles/fanuc_30i.py``): consistent rows, names that resolve, the 0i rows it reuses.
+"""The FANUC 30i table (``dialects/profiles/fanuc_30i.py``): names that resolve, the 0i rows it
+reuses, what sets it apart (the checks every profile's rows pass are in test_dialect_tables.py).
 
 docs/profiles.md "fanuc-30i: sources and decisions" says where each row comes from; the checks
 here hold the table to its own rules: every row and name is described in English and Chinese,
@@ -8,16 +9,14 @@ variables, and where the 30i reads a number the way the 0i does the row is the 0
 
 from __future__ import annotations
 
-import itertools
 import math
 import re
-import string
 
 import pytest
 
 from cncmacro.dialects import fanuc_data, functions_data, get_dialect
 from cncmacro.dialects.profiles import fanuc_30i as data
-from cncmacro.dialects.tables import MODAL_GROUPS, SOURCES, SystemVariable
+from cncmacro.dialects.tables import SystemVariable
 
 CJK = re.compile(r"[\u4e00-\u9fff]")
 GROUPS = {"signals", "tool", "work", "alarm", "time", "control", "counters", "modal", "position"}
@@ -34,49 +33,6 @@ def row(number: int) -> SystemVariable:
     hits = [r for r in ROWS if number in r]
     assert len(hits) == 1, f"#{number} is in {len(hits)} rows"
     return hits[0]
-
-
-def test_30i_rows_do_not_overlap() -> None:
-    ordered = sorted(ROWS, key=lambda r: r.first)
-    for before, after in itertools.pairwise(ordered):
-        assert before.last < after.first, f"#{before.first}-#{before.last} overlaps #{after.first}-#{after.last}"
-
-
-def test_30i_every_row_is_well_formed_and_bilingual() -> None:
-    for r in ROWS:
-        where = f"#{r.first}-#{r.last}"
-        assert 1000 <= r.first <= r.last and r.access in {"r", "w", "rw"} and r.group in GROUPS, where
-        assert r.source in SOURCES, where
-        if r.source == "modal":
-            assert r.param in MODAL_GROUPS, where
-        elif r.source in PARAMS:
-            assert r.param in PARAMS[r.source], where
-        elif r.source == "alias":
-            assert r.param.isdigit(), where
-        else:
-            assert r.param == "", where
-        assert r.en.strip() and CJK.search(r.zh) and not CJK.search(r.en), where
-        names = {n for desc in (r.en, r.zh) for _, n, _, _ in string.Formatter().parse(desc) if n is not None}
-        assert names <= {"axis", "index"}, where
-        if "axis" in names:
-            assert r.last - r.first < data.AXES, where
-        if r.first != r.last:
-            assert "{" in r.en and "{" in r.zh, f"{where} names its numbers alike"
-
-
-def test_30i_read_only_sources_are_read_only() -> None:
-    for r in ROWS:
-        if r.source in {"modal", "code", "position", "constant", "main"}:
-            assert r.access == "r", f"#{r.first}"
-
-
-def test_30i_aliases_point_at_stored_variables_of_the_same_access() -> None:
-    for r in ROWS:
-        if r.source != "alias":
-            continue
-        for number in (r.first, r.last):
-            target = row(int(r.param) + number - r.first)
-            assert target.source == "store" and (target.access, target.group) == (r.access, r.group), f"#{number}"
 
 
 def test_30i_reuses_the_0i_rows_where_the_30i_reads_a_number_alike() -> None:

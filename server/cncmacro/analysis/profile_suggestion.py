@@ -22,17 +22,28 @@ CODE = "profile-suggestion"
 FEATURE_CODES = ("dialect-feature", "unknown-g-code")
 
 
-def suggested_profile(program: Program, file: str, dialect: Dialect, settings: MachineSettings) -> Dialect | None:
+def suggested_profile(
+    program: Program, dialect: Dialect, settings: MachineSettings, lines: list[int] | None = None
+) -> Dialect | None:
     """The first other profile under which ``program`` has no ``dialect-feature`` or
-    ``unknown-g-code`` finding, or None when no profile reads it all."""
-    from .static_checks import static_diagnostics  # the checks of every line, once per profile tried
+    ``unknown-g-code`` finding, or None when no profile reads it all. Both findings belong to
+    one block, so only ``lines`` (the blocks that have them under ``dialect``) are checked again;
+    without ``lines`` every block is."""
+    from .static_checks import line_context, line_facts  # the per-block checks, once per profile tried
 
+    blocks = program.blocks
+    wanted = range(len(blocks)) if lines is None else lines
     for name in DIALECTS:
         if name == dialect.name:
             continue
         other = machine_profile(name, settings)
-        found = static_diagnostics(program, file, other, settings, None, "en")
-        if not any(d.code in FEATURE_CODES for d in found):
+        ctx = line_context(other, settings)
+        if not any(
+            f.code in FEATURE_CODES
+            for k in wanted
+            if (facts := line_facts(blocks[k], ctx)) is not None
+            for f in facts.findings
+        ):
             return other
     return None
 
@@ -45,7 +56,7 @@ def suggestion(
     features = [d for d in own if d.code in FEATURE_CODES]
     if not features:
         return None
-    other = suggested_profile(program, file, dialect, settings)
+    other = suggested_profile(program, dialect, settings, sorted({d.line for d in features}))
     if other is None:
         return None
     first = features[0]

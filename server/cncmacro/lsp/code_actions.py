@@ -140,7 +140,7 @@ def profile_actions(ls: CncMacroServer, doc: OpenDocument, diags: list[types.Dia
     asked = [d for d in diags if d.code == CODE]
     if not asked:
         return []
-    other = suggested_profile(doc.parsed.program, doc.path, doc.dialect, ls.machine or MachineSettings())
+    other = suggested_profile(doc.parsed.program, doc.dialect, ls.machine or MachineSettings())
     if other is None:
         return []
     utf16 = ls.documents.utf16
