@@ -111,3 +111,11 @@ def test_4_control_flow_loops_a_jump_leaves_and_enters(from_line, target, entere
     assert entered_loop(NESTED, from_line, target) == entered
     if entered is None:
         assert loops_kept(NESTED, from_line, target) == kept
+
+
+def test_4_control_flow_goto_lands_on_a_label_whose_block_does_not_parse():
+    """``N20`` stays a label on a line the control cannot read: the GOTO lands there and the run
+    stops on that line with the format alarm, not at the GOTO with "no N20" (alarm 128)."""
+    program = lines("O0001", "#1=1", "IF[#1 EQ 1] GOTO 20", "#2=5", "N20 G01 X1-2.", "M30")
+    assert alarm(program) == (125, 5)
+    assert coded(check(program), "undefined-label") == []

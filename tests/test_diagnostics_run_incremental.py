@@ -195,10 +195,16 @@ INDIRECT = ["O0001", "#3001=0", "#20=3001", *[f"G01 X{k}. Y1. F100." for k in ra
             *[f"G01 X{k}. Y2. F100." for k in range(60)], "IF[#8 GT 1000000] THEN #9=1/0", "M30"]  # fmt: skip
 SKIPPED = ["O0001", "#1=1", "IF[#1 EQ 1] GOTO 10", *[f"G01 X{k}. Y3." for k in range(20)], "N10 #2=1",
            *[f"G01 X{k}. Y1." for k in range(60)], "#3=#2/[#1-1]", "M30"]  # fmt: skip
+# a CAM program with a sequence number every tenth line and a jump over some of them
+LABELLED = ["O0001", "#1=1", "IF[#1 EQ 1] GOTO 40",
+            *[f"N{k} G01 X{k}. Y1." if k % 10 == 0 else f"G01 X{k}. Y2." for k in range(1, 150)],
+            "#3=#1/[#1-1]", "M30"]  # fmt: skip
 PROGRAMS = {"STRAIGHT": STRAIGHT, "LOOPED": LOOPED, "CALLED_TWICE": CALLED_TWICE, "CLOCK": CLOCK,
-            "INDIRECT": INDIRECT, "SKIPPED": SKIPPED}  # fmt: skip
+            "INDIRECT": INDIRECT, "SKIPPED": SKIPPED, "LABELLED": LABELLED}  # fmt: skip
+# the label lines are typed into too, keeping their label, also while unfinished (``X1-2.``)
 EDITS = ["G01 X1. Y1.", "G01 X9000. Y1.", "#1=7", "#1=1", "#1=0", "#5=3", "#100=2", "#100=#1+1", "",
-         "G65 P9002 A3.", "#2=0", "G01 X2. Y2. F5.", "IF[#1 EQ 1] GOTO 10", "#20=1", "#3001=500"]  # fmt: skip
+         "G65 P9002 A3.", "#2=0", "G01 X2. Y2. F5.", "IF[#1 EQ 1] GOTO 10", "#20=1", "#3001=500",
+         "N10 #2=2", "N40 G01 X1-2.", "N40 G01 X12. Y1.", "N10 G01 X5. Y5."]  # fmt: skip
 
 
 def _open_program(tmp: Path, name: str, lines: list[str]) -> tuple[WorkspaceAnalysis, str]:
@@ -332,3 +338,54 @@ def test_8_machine_a_program_that_never_reads_the_clock_converges_on_other_times
     _edit(ws, main, 3, "G01 X0. Y1. F0.001", 1)
     _same_as_from_scratch(tmp_path, ws, main)
     assert _run_of(ws).rerun_blocks <= 20
+
+
+def test_4_control_flow_typing_into_a_label_line_resumes_the_run(tmp_path, monkeypatch):
+    """A digit typed into the coordinates of ``N40 G01 X40. Y1.`` leaves the program's labels as
+    they were: the run resumes and converges instead of starting again, also while the line
+    does not parse (``X1-40.``: the run stops there with the syntax alarm, the GOTO still lands
+    on N40)."""
+    monkeypatch.setattr(run_checks, "CHUNK", 10)
+    ws, main = _open_program(tmp_path, "LABELLED", LABELLED)
+    snapshot(ws, main)
+    total = _run_of(ws).machine.blocks
+    restarts = []
+    original = run_checks.EntryRun.restart
+    monkeypatch.setattr(run_checks.EntryRun, "restart", lambda self: (restarts.append(1), original(self))[1])
+    n100 = LABELLED.index("N100 G01 X100. Y1.")
+    _edit(ws, main, n100, "N100 G01 X1100. Y1.", 1)
+    snapshot(ws, main)
+    assert restarts == [] and _run_of(ws).rerun_blocks <= 30 < total
+    _same_as_from_scratch(tmp_path, ws, main)
+    n40 = LABELLED.index("N40 G01 X40. Y1.")
+    _edit(ws, main, n40, "N40 G01 X1-40. Y1.", 2)
+    restarts.clear()
+    got = snapshot(ws, main)[0]
+    assert restarts == []
+    assert [(d[1], d[6]) for d in got if d[5] == "error"] == [(n40, "syntax")]  # not "no N40" at the GOTO
+    _same_as_from_scratch(tmp_path, ws, main)
+
+
+def test_4_control_flow_cross_line_findings_follow_the_edits_that_change_them(tmp_path):
+    """The label and call checks are kept while only coordinates are typed, and found again
+    when a jump, a label or a file on disk changes."""
+    lines = ["O0001", "#1=1", "IF[#1 EQ 1] GOTO 30", "G01 X1. Y1.", "N30 G01 X2. Y2.", "M98 P9002", "M30"]
+    ws, main = _open_program(tmp_path, "MAIN", lines)
+
+    def undefined() -> list[tuple[int, str]]:
+        return [(d[1], d[6]) for d in snapshot(ws, main)[0] if d[6] in ("undefined-label", "program-not-found")]
+
+    assert undefined() == []
+    _edit(ws, main, 3, "G01 X5. Y1.", 1)
+    assert undefined() == []
+    _edit(ws, main, 2, "IF[#1 EQ 1] GOTO 31", 2)  # the jump changed
+    assert undefined() == [(2, "undefined-label")]
+    _edit(ws, main, 3, "G01 X6. Y1.", 3)  # typing elsewhere keeps it
+    assert undefined() == [(2, "undefined-label")]
+    _edit(ws, main, 4, "N31 G01 X2. Y2.", 4)  # the label changed
+    assert undefined() == []
+    macro = tmp_path / "O9002.nc"
+    ws.close(str(macro))
+    macro.unlink()
+    ws.file_changed(str(macro))  # the called program is gone from the folder
+    assert undefined() == [(5, "program-not-found")]

@@ -293,7 +293,7 @@ class EntryRun:
         """The file's text changed in structure or length: compile it afresh when it runs."""
         m = self.machine
         cf = m.compiled.get(path)
-        if self.earlier is not None and path in self.earlier.last_run:
+        if self.earlier is not None and path in self.earlier.files:
             self.earlier = None
         if cf is not None:
             cf.reset()
@@ -311,6 +311,8 @@ class EntryRun:
 
     # ---------------------------------------------------------------- hooks
     def _first_run(self, file: str, line: int, step: int) -> None:
+        if self.earlier is not None:
+            self.earlier.overwriting(file, line)
         st = self.state
         lines = st.first.get(file)
         if lines is None:

@@ -49,12 +49,39 @@ class Earlier:
     notes: list[Note]
     output: list[str]
     state: RunState
-    last_run: dict[str, list[int]]
+    # the machine's live per-line stamps (``Machine.last_run``), the files it held then, and
+    # the stamp each line had before the resumed run first overwrote it: the earlier run's
+    # stamps are read through ``stamp`` without copying a slot per line of every file
+    live: dict[str, list[int]]
+    files: frozenset[str]
     serials: Serials
     resume: int  # the step the resumed run went back to (the earliest, over several rewinds)
     changed: dict[str, set[int]] = field(default_factory=dict)  # file -> edited lines
     reads_clock: bool | None = None  # decided at the first comparison
     by_key: dict[tuple[Any, ...], list[int]] = field(default_factory=dict)
+    overwritten: dict[str, dict[int, int]] = field(default_factory=dict)  # file -> line -> stamp before
+
+    def stamp(self, path: str, line: int) -> int:
+        """The serial the earlier run left on ``line`` of ``path`` (-1: it never ran it)."""
+        if path not in self.files:
+            return -1
+        before = self.overwritten.get(path)
+        if before is not None:
+            s = before.get(line)
+            if s is not None:
+                return s
+        arr = self.live.get(path)
+        return arr[line] if arr is not None and 0 <= line < len(arr) else -1
+
+    def overwriting(self, path: str, line: int) -> None:
+        """The resumed run is about to stamp ``line`` of ``path`` for the first time since it
+        went back (``EntryRun._first_run``): keep the earlier stamp."""
+        if path in self.files:
+            before = self.overwritten.get(path)
+            if before is None:
+                before = self.overwritten[path] = {}
+            if line not in before:
+                before[line] = self.live[path][line]
 
 
 def keep_earlier(run: EntryRun) -> Earlier:
@@ -63,7 +90,7 @@ def keep_earlier(run: EntryRun) -> Earlier:
     m = run.machine
     assert m.last_run is not None
     earlier = Earlier(list(run.checkpoints), list(run.pass_marks), m.snapshot(), dict(run.passes), list(m.notes),
-                      list(m.output), run.state, {f: list(a) for f, a in m.last_run.items()}, dict(run.serials),
+                      list(m.output), run.state, m.last_run, frozenset(m.last_run), dict(run.serials),
                       m.blocks)  # fmt: skip
     for j, snap in enumerate(earlier.checkpoints):
         earlier.by_key.setdefault(position_key(snap.frames), []).append(j)
@@ -80,7 +107,7 @@ def try_converge(run: EntryRun) -> bool:
     if not candidates:
         return False
     if e.reads_clock is None:
-        e.reads_clock = any(run.reads_clock(path) for path in e.last_run)
+        e.reads_clock = any(run.reads_clock(path) for path in e.files)
     m = run.machine
     running = {(k, d) for k, f in enumerate(m.frames) for d in f.loops}
     mine = {key: v for key, v in run.passes.items() if key in running}
@@ -99,8 +126,7 @@ def try_converge(run: EntryRun) -> bool:
 
 def _ran_from(e: Earlier, path: str, line: int, step: int) -> bool | None:
     """Whether the earlier run executed ``line`` of ``path`` at or after ``step`` (None: cannot tell)."""
-    arr = e.last_run.get(path)
-    s = arr[line] if arr is not None and 0 <= line < len(arr) else -1
+    s = e.stamp(path, line)
     if s < 0:
         return False
     at, known = e.serials[s]
@@ -232,21 +258,21 @@ def _merge_stamps(run: EntryRun, e: Earlier, bj: int, delta: int) -> None:
     convergence point (which is the one after it, when there is one)."""
     m = run.machine
     assert m.last_run is not None
-    remap: dict[int, int] = {}
-    vague = -1
+    later: set[int] = set()  # the earlier run's serials after the convergence point
+    vague = m.blocks + (e.final.blocks - bj)  # ran by the end of the merged run, or never
     for s, (at, known) in e.serials.items():
-        if known and at >= bj:
-            remap[s] = s
-            run.serials[s] = (at + delta, True)
-        elif not known and at >= bj:
-            if vague < 0:
-                vague = run.new_serial(m.blocks + (e.final.blocks - bj), known=False)
-            remap[s] = vague
-    if not remap:
+        if at >= bj:
+            later.add(s)
+            run.serials[s] = (at + delta, True) if known else (vague, False)
+    if not later:
         return
-    get = remap.get
-    for path, old in e.last_run.items():
+    # A line the resumed run did not reach still holds the earlier stamp, whose serial now
+    # means what it means after the convergence point; a line it reached holds the later of
+    # the two stamps.
+    for path, before in e.overwritten.items():
         cur = m.last_run.get(path)
-        if cur is None or len(cur) != len(old):
-            cur = [-1] * len(old)
-        m.last_run[path] = [get(o, c) for o, c in zip(old, cur, strict=True)]
+        if cur is None:
+            continue
+        for line, s in before.items():
+            if s in later and line < len(cur):
+                cur[line] = s

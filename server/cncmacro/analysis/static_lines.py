@@ -7,7 +7,11 @@ facts are memoised per block as well (a file of repeated lines checks each text 
 edit calls ``replace`` with the lines it replaced: only the new lines are looked at, and the
 lines after them are renumbered (a cost in proportion to the lines that have facts, not to
 the file). ``diagnostics`` then adds the cross-line checks (labels, loops, call targets),
-which look only at the lines with facts and at the document's labels and markers.
+which look only at the lines with facts and at the document's labels and markers. Their
+result is kept until an edit could change it: lines added or removed, a structural block
+changed (a label, header, ``%`` or loop marker), a line with a jump, call or return before or
+after the edit, or another program library (files on disk changed). Typing into the
+coordinates of a 100k-line program so costs no label check at all.
 """
 
 from __future__ import annotations
@@ -33,6 +37,8 @@ class StaticLines:
         self.facts: dict[int, LineFacts] = {}  # line -> facts, only lines that have some
         self.problems: dict[int, tuple[Problem, ...]] = {}  # line -> syntax problems
         self._memo: dict[int, tuple[Block, LineFacts | None]] = {}  # id(block) -> (block, facts)
+        # the cross-line findings, with the program and library they were found with
+        self._cross: tuple[Program, ProgramLibrary | None, list[Diagnostic]] | None = None
         self._fill(blocks, 0, len(blocks))
 
     def _facts_of(self, block: Block) -> LineFacts | None:
@@ -62,11 +68,14 @@ class StaticLines:
             if f is not None:
                 facts[line] = f
 
-    def replace(self, blocks: list[Block], start: int, old_count: int, new_count: int) -> None:
+    def replace(self, blocks: list[Block], start: int, old_count: int, new_count: int, structural: bool = True) -> None:
         """Lines ``start`` .. ``start + old_count`` were replaced by ``new_count`` lines
-        (``blocks`` is the document's new block list)."""
+        (``blocks`` is the document's new block list; ``structural``: the edit changed a
+        label, header, ``%`` or loop marker)."""
         end = start + old_count
         delta = new_count - old_count
+        if structural or delta or self._connects(start, end):
+            self._cross = None
         for table in (self.facts, self.problems):
             moved = {}
             for line in [x for x in table if x >= start]:
@@ -75,6 +84,17 @@ class StaticLines:
                     moved[line + delta] = value
             table.update(moved)
         self._fill(blocks, start, start + new_count)
+        if self._connects(start, start + new_count):
+            self._cross = None
+
+    def _connects(self, start: int, end: int) -> bool:
+        """Whether a line of ``start`` .. ``end`` has a jump, a call or a return."""
+        facts = self.facts
+        for line in range(start, end):
+            f = facts.get(line)
+            if f is not None and (f.jumps or f.calls or f.returns):
+                return True
+        return False
 
     def call_targets(self, read_end: int) -> tuple[set[int], set[str]]:
         """The literal program numbers and names that the document's calls name (on the lines
@@ -124,5 +144,9 @@ class StaticLines:
                 out.extend(findings_of(facts, line, file))
             if facts.jumps or facts.calls or facts.returns:
                 collected.append((line, facts))
-        out.extend(cross_line_diagnostics(program, file, dialect, library, locale, collected))
+        kept = self._cross
+        if kept is None or kept[0] is not program or kept[1] is not library:
+            kept = self._cross = (program, library, cross_line_diagnostics(program, file, dialect, library, locale,
+                                                                           collected))  # fmt: skip
+        out.extend(kept[2])
         return out

@@ -200,8 +200,9 @@ class WorkspaceAnalysis:
             d.clock_reads += _clock_reads(doc.lines[sl : el + 1 + delta]) - before
         d.version = version
         d.own = None
+        structural = _changes_structure(old, new)
         if d.static is not None:
-            d.static.replace(doc.blocks, sl, el + 1 - sl, el + 1 - sl + delta)
+            d.static.replace(doc.blocks, sl, el + 1 - sl, el + 1 - sl + delta, structural)
         both = old + new
         if any(b.program is not None for b in both) or (
             sl < HEADER_LINES and dialect_from_text(doc.lines) != d.loaded.dialect
@@ -210,7 +211,7 @@ class WorkspaceAnalysis:
             self.stale = True
         if d.targets is not None and any(self._calls_in(b, d) for b in both):
             d.targets = None
-        d.edits.append(_Edit(sl, len(new), _changes_structure(old, new), delta != 0))
+        d.edits.append(_Edit(sl, len(new), structural, delta != 0))
 
     def close(self, path: str) -> None:
         self.docs.pop(self._key(path), None)
@@ -617,7 +618,8 @@ def _skipped(b: Block, settings: MachineSettings) -> bool:
 
 def _changes_structure(old: list[Block], new: list[Block]) -> bool:
     """Whether replacing ``old`` by ``new`` adds, removes or changes a structural block (the
-    lines both keep unchanged at their ends, as when Enter splits nothing, do not count)."""
+    lines both keep unchanged at their ends, as when Enter splits nothing, do not count; a
+    block replaced by one with the same ``structure_key`` changes nothing)."""
     a, b = 0, 0
     while a < len(old) and b < len(new) and old[a] is new[b]:
         a += 1
@@ -626,6 +628,8 @@ def _changes_structure(old: list[Block], new: list[Block]) -> bool:
     while x > a and y > b and old[x - 1] is new[y - 1]:
         x -= 1
         y -= 1
+    if x - a == y - b and all(o.structure_key() == n.structure_key() for o, n in zip(old[a:x], new[b:y], strict=True)):
+        return False  # the same labels, headers and loop markers in the same places (a label line's X typed)
     return any(blk.structural for blk in old[a:x]) or any(blk.structural for blk in new[b:y])
 
 

@@ -15,7 +15,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..syntax.block_parser import BlockCache, collector_paused
+from ..syntax.block_parser import BlockCache, collector_paused, shared_cache
 from ..syntax.document import split_lines
 from ..syntax.program import Program, ProgramUnit, build_program
 from .dialect_choice import dialect_from_text
@@ -69,12 +69,10 @@ def load_text(path: str, text: str, cache: BlockCache | None = None) -> LoadedFi
     """Parse a file's text into a ``LoadedFile``."""
     lines = split_lines(text)
     with collector_paused():
-        blocks = (cache or _cache).get_many(lines)
+        blocks = (cache if cache is not None else shared_cache).get_many(lines)
         program = build_program(blocks)
     return LoadedFile(path, lines, program, dialect_from_text(lines))
 
-
-_cache = BlockCache()
 
 
 class ProgramLibrary:
@@ -89,7 +87,7 @@ class ProgramLibrary:
     ) -> None:
         self.folders = [Path(f) for f in folders or []]
         self.texts = dict(texts or {})
-        self.cache = cache or _cache
+        self.cache = cache if cache is not None else shared_cache
         self._files: dict[str, LoadedFile | None] = {}
         self._listing: dict[Path, list[Path]] = {}
 

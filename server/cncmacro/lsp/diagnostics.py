@@ -24,7 +24,7 @@ from collections.abc import Iterator
 from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 from lsprotocol import types
 
@@ -36,7 +36,7 @@ from .documents import Edit, OpenDocument, uri_to_path
 from .protocol_diagnostics import to_lsp
 
 if TYPE_CHECKING:
-    from .server import CncMacroServer
+    from .server import CncMacroProtocol, CncMacroServer
 
 log = logging.getLogger(__name__)
 
@@ -58,6 +58,7 @@ class Outcome:
     found: dict[str, list[Diagnostic]]
     items: dict[str, list[types.Diagnostic]]
     values: dict[str, LineValues]
+    payloads: dict[str, list[dict[str, object]]]  # the items in their JSON form, as published
 
 
 class DiagnosticsEngine:
@@ -75,7 +76,10 @@ class DiagnosticsEngine:
         self._values: dict[str, tuple[int | None, LineValues]] = {}
         self._analysed_once: set[str] = set()
         self._cycle = asyncio.Event()  # set and replaced whenever a result was published
-        self._converted: dict[str, tuple[list[Diagnostic], list[types.Diagnostic]]] = {}  # worker's cache
+        # the worker's caches: per file the diagnostics last converted, and per diagnostic (with
+        # the text of its lines) its protocol form and JSON form
+        self._converted: dict[str, tuple[list[Diagnostic], list[types.Diagnostic], list[dict[str, object]]]] = {}
+        self._forms: dict[tuple[object, ...], tuple[types.Diagnostic, dict[str, object]]] = {}
         self.collector = Collector()
         self._cleaning = False
 
@@ -202,7 +206,7 @@ class DiagnosticsEngine:
                 return None
             docs = list(self.server.documents.by_uri.values())
             if not docs:
-                return Outcome(generation, {}, {}, {}, {})
+                return Outcome(generation, {}, {}, {}, {}, {})
             new_documents = any(d.uri not in self._analysed_once for d in docs)
             with self.collector.paused():
                 try:
@@ -233,16 +237,36 @@ class DiagnosticsEngine:
             return lines[line] if 0 <= line < len(lines) else ""
 
         utf16 = self.server.documents.utf16
+        protocol = cast("CncMacroProtocol", self.server.protocol)
+        unstructure = protocol.to_json
+        uri_of = self.server.uri_for_path
+        forms = self._forms
+        used: dict[tuple[object, ...], tuple[types.Diagnostic, dict[str, object]]] = {}
         items: dict[str, list[types.Diagnostic]] = {}
+        payloads: dict[str, list[dict[str, object]]] = {}
         for uri, diags in found.items():
             cached = self._converted.get(uri)
             if cached is not None and cached[0] == diags:
-                items[uri] = cached[1]
+                items[uri], payloads[uri] = cached[1], cached[2]
                 continue
-            items[uri] = [to_lsp(x, line_text, utf16, self.server.uri_for_path) for x in diags]
-            self._converted[uri] = (diags, items[uri])
+            converted, payload = [], []
+            for x in diags:
+                # an edit changes a few findings: the others keep their converted forms
+                key = (x, utf16, line_text(x.file, x.line), line_text(x.file, x.end_line),
+                       *(line_text(r.file, r.line) for r in x.related))  # fmt: skip
+                form = used.get(key) or forms.get(key)
+                if form is None:
+                    item = to_lsp(x, line_text, utf16, uri_of)
+                    form = (item, unstructure(item))
+                used[key] = form
+                converted.append(form[0])
+                payload.append(form[1])
+            items[uri], payloads[uri] = converted, payload
+            self._converted[uri] = (diags, converted, payload)
+        if used:  # only the forms of the findings of now are kept
+            self._forms = used
         values = {by_path[p].uri: v for p, v in result.values.items() if p in by_path}
-        return Outcome(generation, versions, found, items, values)
+        return Outcome(generation, versions, found, items, values, payloads)
 
     def _publish(self, outcome: Outcome) -> None:
         documents = self.server.documents.by_uri
@@ -258,8 +282,9 @@ class DiagnosticsEngine:
             if old is not None and old[0] == version and old[1] == diags:
                 continue
             self._published[uri] = (version, diags, outcome.items[uri], old[3] + 1 if old else 1)
-            self.server.text_document_publish_diagnostics(
-                types.PublishDiagnosticsParams(uri=uri, diagnostics=outcome.items[uri], version=version)
+            cast("CncMacroProtocol", self.server.protocol).send_prepared(
+                types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS,
+                {"uri": uri, "diagnostics": outcome.payloads[uri], **({} if version is None else {"version": version})},
             )
         for uri in [u for u, p in self._published.items() if u not in outcome.versions and u not in documents]:
             del self._published[uri]  # a file that is not open, no longer with findings

@@ -12,18 +12,20 @@ from __future__ import annotations
 import asyncio
 import logging
 import sys
+import threading
 from pathlib import Path
 from typing import Any
 
 from lsprotocol import types
 from pygls.lsp.server import LanguageServer
-from pygls.protocol import LanguageServerProtocol
+from pygls.protocol import JsonRPCProtocol, LanguageServerProtocol
 from pygls.protocol.language_server import lsp_method
 from pygls.uris import from_fs_path
 
 from .. import __version__
 from ..dialects.registry import profile_facts
 from ..library.machine_file import MACHINE_FILE_NAME, MachineSettings
+from ..syntax.block_parser import warm_up
 from .diagnostics import DiagnosticsEngine
 from .documents import Documents, uri_to_path
 from .settings import SECTION, Settings, machine_settings, merged_severities, valid_severities
@@ -38,6 +40,16 @@ PROFILES = "cncmacro/profiles"  # {} -> [{"name", "title", "summary", "summaryZh
 class CncMacroProtocol(LanguageServerProtocol):
     """The protocol without pygls's own copy of open documents: the server's ``Documents``
     keeps them parsed instead."""
+
+    def send_prepared(self, method: str, params: dict[str, Any]) -> None:
+        """Send a notification whose parameters are already in their JSON form (the
+        diagnostics of a large file, converted once per finding on the analysis thread rather
+        than all again on each publish)."""
+        self._send_data({"jsonrpc": JsonRPCProtocol.VERSION, "method": method, "params": params})
+
+    def to_json(self, value: Any) -> Any:
+        """``value`` (a protocol type) in its JSON form, as this protocol sends it."""
+        return self._converter.unstructure(value)
 
     @lsp_method(types.TEXT_DOCUMENT_DID_OPEN)
     def lsp_text_document__did_open(self, params: types.DidOpenTextDocumentParams):  # type: ignore[override]
@@ -111,6 +123,8 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
     server.documents.machine = server.machine
     server.roots = roots
     server.index.scan(roots)
+    # the grammar parser is built meanwhile, so the first unfinished line typed does not wait for it
+    threading.Thread(target=warm_up, name="cncmacro-grammar", daemon=True).start()
     server.diagnostics.start(server.machine, roots, server.locale)
     server.apply_settings(server.settings)
 

@@ -12,6 +12,7 @@ import re
 import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
+from typing import Any
 
 from lark.exceptions import UnexpectedInput
 
@@ -33,34 +34,57 @@ from .nodes import Block, Problem
 _NUMBER = r"[+-]?+(?:\d++(?:\.\d{0,3}+)?+|\.\d{1,3}+)"
 _PLAIN_LINE = re.compile(r"[ \t]*+[A-MP-Za-mp-z]" + _NUMBER + r"(?:[ \t]++[A-Za-z]" + _NUMBER + r")*+[ \t]*+").fullmatch
 
+
+
 # Real controls read blocks of at most a few hundred characters; a longer line is reported,
 # not parsed, so that a huge line costs nothing and cannot stall the editor.
 MAX_BLOCK_CHARS = 4096
 
-_local = threading.local()
+_idle: list[tuple[Any, Any]] = []  # built parsers (lark, node builder) no thread is using
+_idle_lock = threading.Lock()
 
 
-def _parser():
-    p = getattr(_local, "parser", None)
+@contextmanager
+def _parser() -> Iterator[tuple[Any, Any]]:
+    """A grammar parser for this thread's use: an idle one, or a new one (building one takes
+    a few hundred milliseconds, so they are kept and shared between threads, one at a time)."""
+    with _idle_lock:
+        p = _idle.pop() if _idle else None
     if p is None:
-        p = _local.parser = make_parser()
-    return p
+        p = make_parser()
+    try:
+        yield p
+    finally:
+        with _idle_lock:
+            _idle.append(p)
+
+
+def warm_up() -> None:
+    """Build a grammar parser now (on a background thread, say) so that the first line that
+    needs the grammar, often the first keystroke that leaves a line unfinished, does not wait
+    for it."""
+    with _idle_lock:
+        if _idle:
+            return
+    p = make_parser()
+    with _idle_lock:
+        _idle.append(p)
 
 
 def parse_with_grammar(code: str, prep: Prepared) -> Block:
     """Parse prepared code with the lark grammar only (no fast path)."""
-    lark, builder = _parser()
-    builder.reset()
-    try:
-        items = lark.parse(code)
-    except UnexpectedInput as err:
-        return _failed(prep, describe_error(code, err))
-    except BlockError as err:
-        return _failed(prep, Problem(err.message, err.start, err.end))
-    except RecursionError:
-        return _failed(prep, Problem(detail("the block is nested too deeply to read", "程序段嵌套过深，无法读取"), 0,
-                                     len(code)))  # fmt: skip
-    return assemble(items, prep)
+    with _parser() as (lark, builder):
+        builder.reset()
+        try:
+            items = lark.parse(code)
+        except UnexpectedInput as err:
+            return _failed(prep, describe_error(code, err))
+        except BlockError as err:
+            return _failed(prep, Problem(err.message, err.start, err.end))
+        except RecursionError:
+            too_deep = detail("the block is nested too deeply to read", "程序段嵌套过深，无法读取")
+            return _failed(prep, Problem(too_deep, 0, len(code)))
+        return assemble(items, prep)
 
 
 def parse_block(line: str) -> Block:
@@ -83,8 +107,10 @@ def parse_block(line: str) -> Block:
         return Block.of_plain(line)
     if not has_special(line):  # no comment, ';', '/' or '%'
         words = plain_words(line)
-        if words is not None and words[0].letter not in ("O", "N"):
-            return Block(words=tuple(words))
+        if words is not None:
+            if words[0].letter not in ("O", "N"):
+                return Block(words=tuple(words))
+            return assemble_words(words, Prepared(line))  # a label or header: read once, not again
     prep = prepare(line)
     code = prep.code
     if not code or code.isspace():
@@ -98,14 +124,28 @@ def parse_block(line: str) -> Block:
     return assemble(items, prep)
 
 
+# A sequence number at the start of a line, ended by a blank, a letter, '#' or '[' (not by a
+# digit or a point): it stays the line's label when the rest of the line does not parse.
+_LEADING_LABEL = re.compile(r"[ \t]*[Nn](\d{1,9})(?![\d.])")
+
+
 def _failed(prep: Prepared, problem: Problem) -> Block:
-    """The block of a line that does not parse: only its comments and the problem remain."""
+    """The block of a line that does not parse: only its comments, the problem and a leading
+    sequence number before the problem remain. A control searching for ``N2387`` finds it on
+    such a line and stops there with the syntax alarm, so a ``GOTO2387`` still lands on it
+    (and typing into the coordinates of a label line leaves the program's labels alone)."""
+    label = label_span = None
+    m = _LEADING_LABEL.match(prep.code)
+    if m is not None and m.end() <= problem.start:
+        label, label_span = int(m.group(1)), (m.start(1) - 1, m.end())
     return Block(
+        label=label,
+        label_span=label_span,
         block_delete=prep.block_delete,
         tape=prep.tape,
         comments=prep.comments,
         problems=(*prep.problems, problem),
-        structural=prep.tape,
+        structural=prep.tape or label is not None,
     )
 
 
@@ -171,3 +211,9 @@ class BlockCache:
 
     def __len__(self) -> int:
         return len(self._blocks)
+
+
+# The one cache of a process: the documents an editor opens and the files read from disk (the
+# workspace index, the program library) share it, so a file already read from its folder costs
+# lookups, not a second parse, when it is opened.
+shared_cache = BlockCache()

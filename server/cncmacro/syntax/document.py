@@ -9,11 +9,9 @@ pass over the blocks.
 
 from __future__ import annotations
 
-from .block_parser import BlockCache, collector_paused
+from .block_parser import BlockCache, collector_paused, shared_cache
 from .nodes import Block
 from .program import Program, build_program, first_mark_turned, update_program
-
-_shared_cache = BlockCache()
 
 
 def split_lines(text: str) -> list[str]:
@@ -27,7 +25,7 @@ class ParsedDocument:
     """The lines, blocks and program of one document, updated in place by edits."""
 
     def __init__(self, text: str, cache: BlockCache | None = None) -> None:
-        self.cache = cache if cache is not None else _shared_cache
+        self.cache = cache if cache is not None else shared_cache
         self.lines: list[str] = []
         self.blocks: list[Block] = []
         self._structural: list[bool] = []
