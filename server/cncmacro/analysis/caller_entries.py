@@ -14,6 +14,7 @@ taken from disk: their text is the editor's.
 from __future__ import annotations
 
 import os
+from collections.abc import Container
 from pathlib import Path
 
 from ..library.programs import FoundProgram, ProgramLibrary
@@ -24,16 +25,19 @@ _Key = tuple[str, int]  # (file, index of the O program in it)
 
 
 class CallerSearch:
-    """See the module docstring. ``open_paths`` are the open documents' paths."""
+    """See the module docstring. ``open_paths`` maps the open documents' paths to their
+    paths with links resolved."""
 
-    def __init__(self, library: ProgramLibrary, index: CallIndex, open_paths: list[str]) -> None:
+    def __init__(self, library: ProgramLibrary, index: CallIndex, open_paths: dict[str, str]) -> None:
         self.library = library
         self.index = index
         self.open_paths = set(open_paths)
-        self.open_real = {os.path.realpath(p) for p in open_paths}
+        self.open_real = set(open_paths.values())
         self._callers: dict[_Key, list[tuple[_Key, FoundProgram]]] = {}
 
-    def roots(self, found: FoundProgram, numbers: set[int], names: set[str]) -> dict[_Key, FoundProgram] | None:
+    def roots(
+        self, found: FoundProgram, numbers: Container[int], names: Container[str]
+    ) -> dict[_Key, FoundProgram] | None:
         """The entry programs on disk whose runs reach ``found``: None when nothing on disk
         calls it, or when its callers only call each other (no program that nothing calls
         reaches it). ``numbers`` and ``names`` are what the other open files' calls name: a
@@ -126,11 +130,11 @@ def _identity(found: FoundProgram, k: int) -> tuple[set[int], set[str]]:
     return numbers, names
 
 
-def _named(found: FoundProgram, numbers: set[int], names: set[str]) -> bool:
+def _named(found: FoundProgram, numbers: Container[int], names: Container[str]) -> bool:
     """Whether an open file's literal calls name ``found`` (then an open file's run reaches it)."""
     k = found.file.program.units.index(found.unit)
     own_numbers, own_names = _identity(found, k)
-    return bool(own_numbers & numbers) or bool(own_names & names)
+    return any(n in numbers for n in own_numbers) or any(x in names for x in own_names)
 
 
 def _same_file(a: str, b: str) -> bool:

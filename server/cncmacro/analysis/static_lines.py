@@ -27,6 +27,7 @@ from .locale import is_chinese
 from .static_checks import cross_line_diagnostics, findings_of, line_facts
 
 _MEMO_LIMIT = 200_000
+_MEMO_MIN = 2_000  # entries kept while a document is edited, at least (twice its lines)
 
 
 class StaticLines:
@@ -39,6 +40,7 @@ class StaticLines:
         self._memo: dict[int, tuple[Block, LineFacts | None]] = {}  # id(block) -> (block, facts)
         # the cross-line findings, with the program and library they were found with
         self._cross: tuple[Program, ProgramLibrary | None, list[Diagnostic]] | None = None
+        self._memo_limit = _MEMO_LIMIT
         self._fill(blocks, 0, len(blocks))
 
     def _facts_of(self, block: Block) -> LineFacts | None:
@@ -51,7 +53,7 @@ class StaticLines:
         if hit is not None and hit[0] is block:
             return hit[1]
         facts = line_facts(block, self.ctx)
-        if len(memo) >= _MEMO_LIMIT:
+        if len(memo) >= self._memo_limit:  # it holds its blocks: lines typed over must not stay for good
             memo.clear()
         memo[id(block)] = (block, facts)
         return facts
@@ -74,6 +76,7 @@ class StaticLines:
         label, header, ``%`` or loop marker)."""
         end = start + old_count
         delta = new_count - old_count
+        self._memo_limit = max(_MEMO_MIN, min(_MEMO_LIMIT, 2 * len(blocks)))
         if structural or delta or self._connects(start, end):
             self._cross = None
         for table in (self.facts, self.problems):

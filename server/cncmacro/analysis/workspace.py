@@ -58,10 +58,13 @@ from __future__ import annotations
 
 import gc
 import logging
+import os
 import re
+from collections import Counter
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Generic, TypeVar
 
 from ..dialects import DIALECTS, Dialect, get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
@@ -89,6 +92,7 @@ log = logging.getLogger(__name__)
 Value = float | None
 MAX_CALLER_ENTRIES = 16  # programs on disk run to reach the open ones, at most
 _DIGITS = re.compile(r"^[Oo]?(\d{1,8})$")
+_T = TypeVar("_T")
 RUN_ALARM_CODES = frozenset({
     "program-not-found", "nesting-depth", "division-by-zero", "argument-range", "syntax", "variable-number",
     "write-protected", "bracket-depth", "loop-mismatch", "loop-number", "nc-and-macro", "undefined-label",
@@ -127,6 +131,7 @@ class _Open:
     targets: tuple[set[int], set[str]] | None = None  # literal call targets
     edits: list[_Edit] = field(default_factory=list)
     clock_reads: int | None = None  # how many places may read the clock (``_CLOCK_READ``)
+    real: str = ""  # the path with links resolved, found once
 
 
 class WorkspaceAnalysis:
@@ -181,7 +186,7 @@ class WorkspaceAnalysis:
         key = self._key(path)
         doc = ParsedDocument(text)
         loaded = self.library.add_parsed(key, doc.lines, doc.program)  # it sees the document as it is edited
-        self.docs[key] = _Open(key, doc, loaded, version)
+        self.docs[key] = _Open(key, doc, loaded, version, real=os.path.realpath(key))
         self.stale = True
 
     def change(self, path: str, start_line: int, start_col: int, end_line: int, end_col: int, text: str,
@@ -320,16 +325,21 @@ class WorkspaceAnalysis:
         if self.index is None:
             self.index = CallIndex(self.workspace_folders, self.settings, self.dialect_setting, self.locale)
         targets = {path: self._targets(d) for path, d in self.docs.items()}
-        finder = CallerSearch(self.library, self.index, list(self.docs))
+        # how many open files call each program number and name: what the files other than a
+        # unit's own call is then one look-up away (not a union over every open file per unit)
+        number_calls: Counter[int] = Counter()
+        name_calls: Counter[str] = Counter()
+        for n, s in targets.values():
+            number_calls.update(n)
+            name_calls.update(s)
+        finder = CallerSearch(self.library, self.index, {path: d.real for path, d in self.docs.items()})
         for key, found, called in units:
             if called:
                 continue
-            numbers: set[int] = set()  # what the other open files call: their runs reach those programs
-            names: set[str] = set()
-            for path, (n, s) in targets.items():
-                if path != key[0]:
-                    numbers |= n
-                    names |= s
+            own_numbers, own_names = targets[key[0]]
+            # what the other open files call: their runs reach those programs
+            numbers = _CalledElsewhere(number_calls, own_numbers)
+            names = _CalledElsewhere(name_calls, own_names)
             roots = finder.roots(found, numbers, names)
             if roots is None:
                 continue  # nothing on disk calls it: it runs on its own
@@ -604,6 +614,19 @@ _CLOCK_READ = re.compile(
     r"#[ \t]*(?:\[|0*(?:" + "|".join(_CLOCK_NUMBERS) + r"|9\d{3})(?!\d)|_(?:" + "|".join(_CLOCK_NAMES) + r")(?!\w))",
     re.I,
 )
+
+
+class _CalledElsewhere(Generic[_T]):
+    """The program numbers (or names) that open files other than one call."""
+
+    __slots__ = ("counts", "own")
+
+    def __init__(self, counts: Counter[_T], own: set[_T]) -> None:
+        self.counts = counts
+        self.own = own
+
+    def __contains__(self, item: object) -> bool:
+        return self.counts.get(item, 0) > (1 if item in self.own else 0)  # type: ignore[call-overload]
 
 
 def _clock_reads(lines: list[str]) -> int:

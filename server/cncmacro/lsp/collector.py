@@ -11,6 +11,12 @@ first analysed (reference cycles the edits left behind are freed only then), onc
 came for ``QUIET_SECONDS``, or at once when it has grown by ``MAX_GROWTH``. Memory is read
 from ``/proc/self/statm`` (counting frozen objects would walk them all); where that is
 missing, every ``ANALYSES`` analyses count as due.
+
+A closed document leaves its whole working set behind as garbage, and the runs of an analysis
+hold reference cycles, so once frozen it would stay for good: a closed document makes a clean-up
+due (a new document's baseline does not hide it), and ``CLOSES`` closed documents or
+``URGENT_ANALYSES`` analyses without one make it urgent, quiet or not. An editor that opens and
+closes thousands of files, or types for hours without a pause, so keeps its memory.
 """
 
 from __future__ import annotations
@@ -20,11 +26,15 @@ import os
 from collections.abc import Iterator
 from contextlib import contextmanager
 
+from ..syntax.block_parser import shared_cache
+
 GROWTH = 1.15
 MAX_GROWTH = 1.6
 SLACK_BYTES = 32 << 20  # growth below this is never worth a collection
 QUIET_SECONDS = 0.5
 ANALYSES = 200
+URGENT_ANALYSES = 400
+CLOSES = 32
 _PAGE = os.sysconf("SC_PAGE_SIZE") if hasattr(os, "sysconf") else 4096
 
 
@@ -44,6 +54,7 @@ class Collector:
         self.baseline = resident_bytes() or 0
         self.analyses = 0
         self.since_clean = 0  # analyses since the last real collection
+        self.closes = 0  # documents closed since the last real collection
 
     @contextmanager
     def paused(self) -> Iterator[None]:
@@ -63,8 +74,12 @@ class Collector:
         gc.freeze()
         self.analyses += 1
         self.since_clean += 1
-        if new_documents:
+        if new_documents and not self.closes:
             self._rebase()
+
+    def closed(self) -> None:
+        """A document was closed: what its analysis held is garbage now."""
+        self.closes += 1
 
     def _grown(self, factor: float) -> bool:
         now = resident_bytes()
@@ -76,18 +91,20 @@ class Collector:
         """Whether memory has grown enough to be worth a clean-up at a quiet moment, or
         ``ANALYSES`` analyses went by without one (each new document moves the baseline, so
         growth alone would never call for a clean-up while documents keep being opened)."""
-        return self._grown(GROWTH) or self.since_clean >= ANALYSES
+        return self._grown(GROWTH) or self.since_clean >= ANALYSES or self.closes > 0
 
     def urgent(self) -> bool:
         """Whether it has grown so much that the clean-up cannot wait."""
-        return self._grown(MAX_GROWTH)
+        return self._grown(MAX_GROWTH) or self.closes >= CLOSES or self.since_clean >= URGENT_ANALYSES
 
     def clean(self) -> None:
         """Collect everything (frozen included), then freeze the survivors again."""
         gc.unfreeze()
         gc.collect()
+        shared_cache.sweep()  # the blocks of lines no document has any more
         gc.freeze()
         self.since_clean = 0
+        self.closes = 0
         self._rebase()
 
     def _rebase(self) -> None:

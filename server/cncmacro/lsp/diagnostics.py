@@ -20,6 +20,7 @@ from __future__ import annotations
 import asyncio
 import logging
 import threading
+import time
 from collections.abc import Iterator
 from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
@@ -41,6 +42,10 @@ if TYPE_CHECKING:
 log = logging.getLogger(__name__)
 
 DEBOUNCE_SECONDS = 0.0  # edits are coalesced by cancelling: a newer one stops the older analysis
+# Documents opened or closed in a burst (an editor restoring a session, a client opening a whole
+# folder, "close all") are analysed once the burst pauses for this long: each analysis looks at every open document,
+# so analysing after each of 2,000 opens would cost the square of the count.
+BURST_SECONDS = 0.05
 PROGRESS_LINES = 20_000  # a first analysis of a file this long reports progress
 PULL_TIMEOUT = 60.0  # seconds a pull waits for the analysis of the current version
 
@@ -82,6 +87,7 @@ class DiagnosticsEngine:
         self._forms: dict[tuple[object, ...], tuple[types.Diagnostic, dict[str, object]]] = {}
         self.collector = Collector()
         self._cleaning = False
+        self._opened_at = (0.0, 0.0)  # when the last two documents were opened or closed (monotonic)
 
     # ---- setting up
     def start(self, machine: MachineSettings | None, folders: list[str], locale: str) -> None:
@@ -114,6 +120,7 @@ class DiagnosticsEngine:
             parsed = self.analysis.document(path)
             assert parsed is not None
             doc = self.server.documents.open(item, parsed)
+        self._opened_at = (self._opened_at[1], time.monotonic())
         self.schedule()
         return doc
 
@@ -134,10 +141,12 @@ class DiagnosticsEngine:
             doc = self.server.documents.close(uri)
             if doc is not None:
                 self.analysis.close(doc.path)
+                self.collector.closed()
         self._published.pop(uri, None)
         self._values.pop(uri, None)
         self._analysed_once.discard(uri)
         self.server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+        self._opened_at = (self._opened_at[1], time.monotonic())
         self.schedule()
 
     def files_changed(self, paths: list[str]) -> None:
@@ -161,6 +170,10 @@ class DiagnosticsEngine:
 
     async def _run(self, generation: int) -> None:
         await asyncio.sleep(self.delay)
+        while self._in_burst():
+            await asyncio.sleep(BURST_SECONDS)
+            if generation != self.generation:
+                return  # the burst went on: the run after its last document analyses them all
         if not self.server.settings_ready.is_set():  # the first analyses wait for the settings
             await self.server.settings_ready.wait()
         if generation != self.generation:
@@ -185,6 +198,13 @@ class DiagnosticsEngine:
                 await self._clean_when_quiet()
             finally:
                 self._cleaning = False
+
+    def _in_burst(self) -> bool:
+        """Whether documents are being opened or closed in a burst: the last two came close
+        together, and the last one just now."""
+        before, last = self._opened_at
+        now = time.monotonic()
+        return last - before < BURST_SECONDS and now - last < BURST_SECONDS
 
     async def _clean_when_quiet(self) -> None:
         """Collect the frozen heap once no edit came for a moment (at once when urgent)."""
@@ -265,6 +285,8 @@ class DiagnosticsEngine:
             self._converted[uri] = (diags, converted, payload)
         if used:  # only the forms of the findings of now are kept
             self._forms = used
+        for uri in [u for u in self._converted if u not in found]:
+            del self._converted[uri]  # a closed document, or a file without findings now
         values = {by_path[p].uri: v for p, v in result.values.items() if p in by_path}
         return Outcome(generation, versions, found, items, values, payloads)
 

@@ -41,6 +41,19 @@ class CncMacroProtocol(LanguageServerProtocol):
     """The protocol without pygls's own copy of open documents: the server's ``Documents``
     keeps them parsed instead."""
 
+    def _execute_handler(self, msg_id: Any, handler: Any, callback: Any, args: Any = None, kwargs: Any = None) -> None:
+        """pygls keeps the future of a notification handled by a generator (didOpen, didChange,
+        didClose, ...) among the requests' futures, where nothing ever removes it: one per
+        message, for good. Nothing answers a notification, so its future goes when it is done."""
+        if callback == self._check_handler_result:
+            report = callback
+
+            def callback(future: Any) -> None:
+                self._request_futures.pop(msg_id, None)
+                report(future)
+
+        super()._execute_handler(msg_id, handler, callback, args, kwargs)
+
     def send_prepared(self, method: str, params: dict[str, Any]) -> None:
         """Send a notification whose parameters are already in their JSON form (the
         diagnostics of a large file, converted once per finding on the analysis thread rather

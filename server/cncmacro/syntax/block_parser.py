@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import gc
 import re
+import sys
 import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -170,13 +171,17 @@ def collector_paused() -> Iterator[None]:
 
 
 class BlockCache:
-    """Blocks by line text. Identical lines share one block; the cache is bounded. A plain
-    line of words (``Block.plain``) costs no more to make than to look up, so opening a file
-    makes those afresh and keeps the cache for the lines that take parsing."""
+    """Blocks by line text: identical lines share one block, and a line typed again is not
+    parsed again. Now and then (before a file is opened, after half as many new entries as it
+    held; at the editor's quiet moments) the blocks that nothing but the cache holds any more
+    are dropped, so that what no document uses goes (an hour of
+    typing leaves nothing behind) at a cost in proportion to what was added. A plain line of
+    words (``Block.plain``) costs no more to make than to look up, so opening a file makes those
+    afresh and caches the lines that take parsing."""
 
-    def __init__(self, max_entries: int = 400_000) -> None:
+    def __init__(self) -> None:
         self._blocks: dict[str, Block] = {}
-        self.max_entries = max_entries
+        self._added = 0  # entries added since the last sweep
         self.parsed = 0  # lines actually parsed (cache misses), for tests and benchmarks
 
     def get(self, line: str) -> Block:
@@ -184,20 +189,18 @@ class BlockCache:
         if b is None:
             b = parse_block(line)
             self.parsed += 1
-            if len(self._blocks) >= self.max_entries:
-                self._blocks.clear()
-            self._blocks[line] = b
+            self._add(line, b)
         return b
 
     def get_many(self, lines: list[str]) -> list[Block]:
         """The blocks of many lines at once (a file being opened)."""
+        self._sweep_if_due()
         blocks = self._blocks
-        if len(blocks) + len(lines) > self.max_entries:
-            blocks.clear()
         out = []
         append = out.append
         plain = _PLAIN_LINE
         of_plain = Block.of_plain
+        added = 0
         for line in lines:
             if len(line) <= MAX_BLOCK_CHARS and plain(line) is not None:
                 append(of_plain(line))  # as cheap as a lookup: not cached
@@ -205,12 +208,41 @@ class BlockCache:
             b = blocks.get(line)
             if b is None:
                 b = blocks[line] = parse_block(line)
-                self.parsed += 1
+                added += 1
             append(b)
+        self.parsed += added
+        self._added += added
         return out
+
+    def _add(self, line: str, b: Block) -> None:
+        if self._added >= max(SWEEP_LATEST, len(self._blocks)):  # a one-line edit rarely pays for a sweep
+            self.sweep()
+        self._blocks[line] = b
+        self._added += 1
+
+    def _sweep_if_due(self) -> None:
+        if self._added >= max(SWEEP_MIN, len(self._blocks) // 2):
+            self.sweep()
+
+    def sweep(self) -> None:
+        """Drop the blocks that only the cache holds (another thread may add meanwhile: it
+        only loses the sharing of a block it took just now)."""
+        blocks = self._blocks
+        getrefcount = sys.getrefcount
+        for line, b in list(blocks.items()):
+            if getrefcount(b) <= _ONLY_CACHED:
+                blocks.pop(line, None)
+        self._added = 0
 
     def __len__(self) -> int:
         return len(self._blocks)
+
+
+SWEEP_MIN = 20_000  # new entries before a file being opened sweeps first
+SWEEP_LATEST = 200_000  # new entries before a line typed sweeps (the editor sweeps at quiet moments)
+# references to a block that only the cache holds, as ``sweep`` counts them: the dict, the item
+# tuple of its copy, the loop variable and ``getrefcount``'s argument
+_ONLY_CACHED = 4
 
 
 # The one cache of a process: the documents an editor opens and the files read from disk (the
