@@ -29,6 +29,7 @@ from ..syntax.block_parser import warm_up
 from .diagnostics import DiagnosticsEngine
 from .documents import Documents, uri_to_path
 from .settings import SECTION, Settings, machine_settings, merged_severities, valid_severities
+from .stdio import serve_stdio
 from .workspace_index import WorkspaceIndex
 
 log = logging.getLogger(__name__)
@@ -275,6 +276,5 @@ def serve(tcp: bool = False, host: str = "127.0.0.1", port: int = 2087) -> int:
     server = build_server()
     if tcp:
         server.start_tcp(host, port)
-    else:
-        server.start_io()
-    return 0
+        return 0
+    return serve_stdio(server, sys.stdin.buffer, sys.stdout.buffer)

@@ -1,0 +1,128 @@
+"""The language server's stdio transport: JSON-RPC messages framed by ``Content-Length`` headers.
+
+pygls's own loop is replaced here so that no message can break the session:
+
+- a header is found wherever it starts on its line, so a body shorter than its ``Content-Length``
+  said (whose tail runs into the next header) costs that message, not every message after it;
+- a body longer than ``MAX_BODY`` is read past in pieces, never held, and answered with an error
+  (a header met on the way, the length having been wrong, is where reading goes on);
+- a body that is not JSON is answered with a parse error (-32700), and a request whose
+  parameters do not fit the method with an invalid-params error (-32602) for its id;
+- a request after ``shutdown`` is answered with an invalid-request error (-32600), as the
+  specification asks, instead of silence;
+- ``exit`` ends the process with 0 after ``shutdown`` and 1 without it.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import logging
+import re
+import threading
+from typing import TYPE_CHECKING, Any, BinaryIO
+
+from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
+from pygls.io_ import StdinAsyncReader, StdoutWriter
+
+if TYPE_CHECKING:
+    from .server import CncMacroServer
+
+log = logging.getLogger(__name__)
+
+MAX_BODY = 512 << 20  # bytes: far beyond any program an editor sends (a 1M-line file is ~35 MB)
+_PIECE = 1 << 20
+_CONTENT_LENGTH = re.compile(rb"Content-Length:[ \t]*(\d{1,20})", re.IGNORECASE)
+PARSE_ERROR = -32700
+INVALID_REQUEST = -32600
+INVALID_PARAMS = -32602
+
+
+def serve_stdio(server: CncMacroServer, stdin: BinaryIO, stdout: BinaryIO) -> int:
+    """Serve until the client says exit or closes the stream; the process's exit code."""
+    server._stop_event = stop = threading.Event()
+    reader = StdinAsyncReader(stdin, server.thread_pool)
+    server.protocol.set_writer(StdoutWriter(stdout))
+    try:
+        asyncio.run(_read_messages(server, reader, stop))
+    except BrokenPipeError:
+        log.error("the client went away")
+    except SystemExit as e:  # ``exit``: 0 after ``shutdown``, 1 without
+        return e.code if isinstance(e.code, int) else 0
+    except KeyboardInterrupt:
+        pass
+    finally:
+        server.shutdown()
+    return 0
+
+
+async def _read_messages(server: CncMacroServer, reader: StdinAsyncReader, stop: threading.Event) -> None:
+    def line_of_at_most(n: int) -> Any:
+        return reader.loop.run_in_executor(reader.executor, reader.stdin.readline, n)
+
+    carried: int | None = None  # a header found while reading past a body that was too long
+    while not stop.is_set():
+        length, carried = carried, None
+        while True:  # the headers, up to the empty line
+            line = await line_of_at_most(_PIECE)
+            if not line:
+                return  # the client closed the stream
+            m = _CONTENT_LENGTH.search(line)
+            if m is not None:
+                length = int(m.group(1))
+            elif not line.strip() and length is not None:
+                break
+        if length > MAX_BODY:
+            # Read past it a line (at most a piece) at a time; a header on the way (the length
+            # was wrong, and the next message follows) is where reading goes on.
+            left = length
+            while left > 0:
+                piece = await line_of_at_most(min(left, _PIECE))
+                if not piece:
+                    return
+                left -= len(piece)
+                m = _CONTENT_LENGTH.search(piece)
+                if m is not None:
+                    carried = int(m.group(1))
+                    break
+            _answer_error(server, None, INVALID_REQUEST, f"message of {length} bytes is too long (at most {MAX_BODY})")
+            continue
+        body = await reader.readexactly(length)
+        if len(body) < length:
+            return
+        try:
+            data = json.loads(body)
+        except ValueError as e:  # not JSON (or not UTF-8)
+            _answer_error(server, None, PARSE_ERROR, f"not a JSON message: {e}")
+            continue
+        _handle(server, data)
+        await asyncio.sleep(0)  # let the handlers' tasks run between messages
+
+
+def _handle(server: CncMacroServer, data: Any) -> None:
+    protocol = server.protocol
+    request_id = data.get("id") if isinstance(data, dict) else None
+    is_request = isinstance(data, dict) and "method" in data and request_id is not None
+    if is_request and protocol._shutdown and data.get("method") != "exit":
+        _answer_error(server, request_id, INVALID_REQUEST, "the server is shutting down")
+        return
+    try:
+        message = protocol.structure_message(data) if isinstance(data, dict) else data
+    except JsonRpcException as e:
+        if is_request:
+            code = INVALID_PARAMS if isinstance(e, JsonRpcInvalidParams) else e.code
+            _answer_error(server, request_id, code, f"the parameters of {data.get('method')} do not fit it")
+        else:
+            log.warning("message not understood: %s", e)
+        return
+    try:
+        protocol.handle_message(message)
+    except Exception as e:  # a fault in one message must not end the session
+        log.exception("handling a message failed")
+        server.report_server_error(e, JsonRpcException)
+
+
+def _answer_error(server: CncMacroServer, request_id: Any, code: int, message: str) -> None:
+    server.protocol._send_data(
+        {"jsonrpc": "2.0", "id": request_id, "error": {"code": code, "message": message}}
+    )

@@ -1,0 +1,93 @@
+"""The language server at the edges of the protocol, spoken to over stdio byte for byte (a
+client library cannot send what these tests send): a wrong ``Content-Length`` costs one
+message, not the session; a body that is not JSON, a request whose parameters do not fit and a
+request after ``shutdown`` are answered with the errors JSON-RPC and LSP prescribe; ``exit``
+without ``shutdown`` ends the process with 1."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import time
+from typing import Any
+
+INIT = {"jsonrpc": "2.0", "id": 1, "method": "initialize", "params": {"capabilities": {}, "rootUri": None}}
+INITIALIZED = {"jsonrpc": "2.0", "method": "initialized", "params": {}}
+SHUTDOWN = {"jsonrpc": "2.0", "id": 90, "method": "shutdown"}
+EXIT = {"jsonrpc": "2.0", "method": "exit"}
+HOVER_PARAMS = {"textDocument": {"uri": "file:///nowhere/O1.nc"}, "position": {"line": 0, "character": 0}}
+
+
+def frame(message: dict[str, Any]) -> bytes:
+    body = json.dumps(message).encode()
+    return b"Content-Length: %d\r\n\r\n" % len(body) + body
+
+
+def session(*messages: bytes | dict[str, Any]) -> tuple[int, list[dict[str, Any]]]:
+    """Send ``messages`` (dicts are framed; bytes go as they are), then close the stream; the exit
+    code and every message the server sent."""
+    p = subprocess.Popen([sys.executable, "-m", "cncmacro", "lsp"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                         stderr=subprocess.DEVNULL)  # fmt: skip
+    assert p.stdin is not None and p.stdout is not None
+    for m in messages:
+        p.stdin.write(m if isinstance(m, bytes) else frame(m))
+        p.stdin.flush()
+        time.sleep(0.1)
+    p.stdin.close()
+    code = p.wait(30)
+    out = p.stdout.read()
+    sent = []
+    while out:
+        head, _, rest = out.partition(b"\r\n\r\n")
+        length = int(head.split(b"Content-Length:")[1].split(b"\r\n")[0])
+        sent.append(json.loads(rest[:length]))
+        out = rest[length:]
+    return code, sent
+
+
+def answer(sent: list[dict[str, Any]], request_id: int) -> dict[str, Any]:
+    found = [m for m in sent if m.get("id") == request_id and "method" not in m]
+    assert len(found) == 1, f"no single answer to request {request_id}: {sent}"
+    return found[0]
+
+
+def test_a_body_shorter_than_its_content_length_costs_that_message_only():
+    short = b'Content-Length: 5\r\n\r\n{"jsonrpc": "2.0", "id": 5, "method": "shutdown"}'
+    code, sent = session(INIT, INITIALIZED, short, SHUTDOWN, EXIT)
+    assert answer(sent, 90)["result"] is None  # the stream is in step again
+    assert code == 0
+
+
+def test_a_content_length_beyond_any_message_is_refused_and_reading_goes_on():
+    huge = b"Content-Length: 99999999999999999999\r\n\r\n{}"
+    code, sent = session(INIT, INITIALIZED, huge, SHUTDOWN, EXIT)
+    assert any(m.get("error", {}).get("code") == -32600 and m.get("id") is None for m in sent)
+    assert answer(sent, 90)["result"] is None
+    assert code == 0
+
+
+def test_a_body_that_is_not_json_is_answered_with_a_parse_error():
+    code, sent = session(INIT, INITIALIZED, b"Content-Length: 9\r\n\r\n{not json", SHUTDOWN, EXIT)
+    assert code == 0
+    assert any(m.get("error", {}).get("code") == -32700 for m in sent)
+    assert answer(sent, 90)["result"] is None
+
+
+def test_a_request_whose_parameters_do_not_fit_gets_an_invalid_params_error():
+    bad = {"jsonrpc": "2.0", "id": 7, "method": "textDocument/hover", "params": {"textDocument": 5}}
+    code, sent = session(INIT, INITIALIZED, bad, SHUTDOWN, EXIT)
+    assert answer(sent, 7)["error"]["code"] == -32602
+    assert code == 0
+
+
+def test_a_request_after_shutdown_gets_an_invalid_request_error():
+    late = {"jsonrpc": "2.0", "id": 8, "method": "textDocument/hover", "params": HOVER_PARAMS}
+    code, sent = session(INIT, INITIALIZED, SHUTDOWN, late, EXIT)
+    assert answer(sent, 8)["error"]["code"] == -32600
+    assert code == 0
+
+
+def test_exit_without_shutdown_ends_the_process_with_1():
+    code, _ = session(INIT, INITIALIZED, EXIT)
+    assert code == 1
