@@ -113,6 +113,8 @@ def read_message(stream: BinaryIO) -> Request | None:
         data = json.loads(body.decode("utf-8"))
     except (UnicodeDecodeError, ValueError) as e:
         raise ProtocolError(f"the message is not JSON: {e}") from None
+    except RecursionError:
+        raise ProtocolError("the message is nested too deeply to read") from None
     return Request.from_json(data)
 
 

@@ -15,6 +15,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any, BinaryIO
 
+from ..bilingual import detail
 from ..library.files import is_program_file
 from ..machine import Machine
 from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
@@ -124,6 +125,10 @@ class Session:
     def on_launch(self, args: dict[str, Any]) -> None:
         try:
             config = LaunchConfig.from_arguments(args)
+            if self.launched is not None and not self.ended:  # the first would be out of reach
+                raise LaunchError(detail(
+                    "a program is already running in this session: stop it (or restart) before launching another",
+                    "本次调试已有程序在运行：请先停止（或重新启动）再启动另一个程序"))  # fmt: skip
             launched = launch(config)
         except LaunchError as e:
             raise RequestFailed(show.detail_text(e.args[0], self.locale)) from None

@@ -256,6 +256,9 @@ class Stepper:
                 text = detail_text(note.message, self.locale)
                 self.output(pick(self.locale, f"note at {where}: {text}\n", f"提示（{where}）：{text}\n"), "console")
         self.notes_sent = len(m.notes)
+        if self.never_stop:  # Run Without Debugging never goes back: what was shown need not stay
+            del m.notes[:], m.output[:], m.moves[:]
+            self.notes_sent = self.moves_sent = 0
 
 
 def _end_code(m: Machine) -> str | None:
