@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 from lsprotocol import types
+from pygls.exceptions import JsonRpcException
 from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, GSK, close_file, open_file
@@ -84,3 +85,10 @@ async def test_rename_a_label_updates_every_jump(fanuc_en: LanguageClient, gsk_e
     close_file(gsk_en, uri)
     assert result is not None and result.changes is not None
     assert sorted((e.range.start.line, e.new_text) for e in result.changes[uri]) == [(3, "N30"), (4, "30")]
+
+
+async def test_rename_onto_a_label_the_program_has_is_refused(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "RENAME.nc", "O0001\n#1=1\nIF[#1 EQ 1] GOTO 20\nN10 #2=1\nN20 #3=1\nM30\n")
+    with pytest.raises(JsonRpcException, match="N20 is already a label"):
+        await fanuc_en.text_document_rename_async(types.RenameParams(*_pos(uri, 3, 1), new_name="N20"))
+    close_file(fanuc_en, uri)

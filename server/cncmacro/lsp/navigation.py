@@ -197,6 +197,9 @@ def rename_label(ls: CncMacroServer, cur: Cursor, new_name: str) -> types.Worksp
     utf16 = ls.documents.utf16
     program = doc.parsed.program
     unit = program.unit_at(cur.line)
+    if new != hit[0] and program.label_lines(new, unit):
+        # two N20 in one program: every jump to N20 would land on the first, wherever it was
+        raise ValueError(f"N{new} is already a label in this program: renaming onto it would change where jumps land")
     edits: list[types.TextEdit] = []
     for i in program.label_lines(hit[0], unit):
         b = doc.block(i)
