@@ -32,7 +32,7 @@ from .nodes import Block, Problem
 # The quantifiers are possessive: a word that fails can never match with fewer characters
 # (what would be left is a digit or a point, where a blank or the end must follow), and not
 # backtracking into it makes the match a fifth faster.
-_NUMBER = r"[+-]?+(?:\d++(?:\.\d{0,3}+)?+|\.\d{1,3}+)"
+_NUMBER = r"[+-]?+(?:\d{1,15}+(?:\.\d{0,3}+)?+|\.\d{1,3}+)"
 _PLAIN_LINE = re.compile(r"[ \t]*+[A-MP-Za-mp-z]" + _NUMBER + r"(?:[ \t]++[A-Za-z]" + _NUMBER + r")*+[ \t]*+").fullmatch
 
 

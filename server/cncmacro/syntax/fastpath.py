@@ -16,7 +16,7 @@ from __future__ import annotations
 import re
 
 from .assemble import Items
-from .grammar import RELATION_NAMES, BlockError, _check_condition, _has_relation
+from .grammar import MAX_NUMBER_CHARS, RELATION_NAMES, BlockError, _check_condition, _has_relation
 from .keywords import FULL_WORD
 from .nodes import (
     Abbreviation,
@@ -49,6 +49,8 @@ def plain_words(code: str) -> list[Word] | None:
     words = []
     pos = 0
     for gap, letter, text in _WORDS.findall(code):
+        if len(text) > MAX_NUMBER_CHARS:
+            return None  # the grammar says why
         pos += len(gap)
         end = pos + 1 + len(text)
         words.append(Word(letter.upper(), Number(float(text), text, pos + 1, end), None, pos, end))
@@ -116,6 +118,8 @@ def _tokenize(code: str, shortened: list[Abbreviation]) -> list[tuple[int, str, 
         kind = m.lastindex - 1  # type: ignore[operator]
         s, e = m.span(m.lastindex)  # type: ignore[arg-type]
         text = m.group(m.lastindex)  # type: ignore[arg-type]
+        if (kind == _NUM or kind == _VAR) and len(text) > MAX_NUMBER_CHARS:
+            return None  # the grammar says why
         if kind == _KW:
             up = text.upper()
             word = _MACRO_WORDS.get(up)

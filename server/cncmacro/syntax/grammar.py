@@ -61,11 +61,31 @@ def _end(x: object) -> int:
     return x.end_pos if isinstance(x, Token) else x.end  # type: ignore[attr-defined,return-value]
 
 
+# No control reads a number this long (FANUC: alarm 003, too many digits), and a float cannot
+# hold one of 309 digits: the line is not read.
+MAX_NUMBER_CHARS = 24
+
+
+def _literal(text: str, start: int, end: int) -> Number:
+    digits = sum(ch.isdigit() for ch in text)
+    if digits > MAX_NUMBER_CHARS:
+        raise BlockError(
+            detail(
+                f"a number of {digits} digits is too long to read (at most {MAX_NUMBER_CHARS}; alarm 003)",
+                f"数字有 {digits} 位，太长无法读取（最多 {MAX_NUMBER_CHARS} 位；报警 003）",
+            ),
+            start,
+            end,
+        )
+    return Number(float(text), text, start, end)
+
+
 def _number(tok: Token) -> Number:
-    return Number(float(tok), str(tok), tok.start_pos, tok.end_pos)  # type: ignore[arg-type]
+    return _literal(str(tok), tok.start_pos, tok.end_pos)  # type: ignore[arg-type]
 
 
 def _varnum(tok: Token) -> Var:
+    _literal(tok[1:].strip(), tok.start_pos, tok.end_pos)  # type: ignore[arg-type]  # its length is checked
     return Var(int(tok[1:].strip()), tok.start_pos, tok.end_pos)  # type: ignore[arg-type]
 
 
@@ -117,7 +137,7 @@ class _Builder(Transformer):
         sign, x = c
         if isinstance(x, Token):  # a signed literal is one number
             text = sign + x
-            return Number(float(text), text, sign.start_pos, x.end_pos)
+            return _literal(text, sign.start_pos, x.end_pos)
         return Unary(str(sign), x, sign.start_pos, x.end)
 
     def assign(self, c):

@@ -1,0 +1,50 @@
+"""A 309-digit number (more than a float holds) after N, O, GOTO, G, M, T, P, an axis or ``#``
+is a syntax error on its line, at the number: the checker reads every other line and file, the
+language server keeps the document open (later edits apply) and answers hovers elsewhere."""
+
+from __future__ import annotations
+
+import io
+import json
+from pathlib import Path
+
+import pytest
+from lsprotocol import types
+from pytest_lsp import LanguageClient
+
+from cncmacro.cli.check import check_paths
+from lsp.lsp_session import FANUC, close_file, diagnostics_for, edit, fanuc_en, hover_text, open_file
+
+__all__ = ["fanuc_en"]
+
+BIG = "9" * 309
+LINES = [f"N{BIG} X1.", f"O{BIG}", f"GOTO{BIG}", f"G{BIG}", f"M{BIG}", f"T{BIG}", f"M98 P{BIG}", f"X1.{BIG}",
+         f"#1={BIG}", f"#{BIG}=1"]  # fmt: skip
+
+
+@pytest.mark.parametrize("line", LINES, ids=[line[:5] for line in LINES])
+def test_a_309_digit_number_is_a_syntax_error_and_the_rest_is_checked(tmp_path: Path, line: str) -> None:
+    (tmp_path / "O0001.nc").write_text(f"O0001\n#5=1\n{line}\nM30\n", encoding="utf-8")
+    (tmp_path / "O0002.nc").write_text("O0002\n#1=1/0\nM30\n", encoding="utf-8")
+    out, err = io.StringIO(), io.StringIO()
+    check_paths([str(tmp_path)], out, err, "json")
+    found = [(Path(str(d["file"])).name, d["line"], d["code"]) for d in json.loads(out.getvalue())]
+    assert ("O0001.nc", 3, "syntax") in found
+    assert not any(code == "internal-error" for _, _, code in found)
+    assert ("O0002.nc", 2, "division-by-zero") in found
+
+
+@pytest.mark.asyncio(loop_scope="module")
+async def test_a_document_with_a_309_digit_label_stays_open_and_hovers_go_on(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "HUGE.nc", f"O0001\nN{BIG} X1.\nGOTO{BIG}\n#1=2\nM30\n")
+    first = await diagnostics_for(fanuc_en, uri, 1)
+    errors = [(d.range.start.line, d.code) for d in first.diagnostics if d.severity == types.DiagnosticSeverity.Error]
+    assert errors == [(1, "syntax"), (2, "syntax")]
+    edit(fanuc_en, uri, 2, 1, 0, 400, "N10 X1.")  # the document is open: the edit applies
+    edit(fanuc_en, uri, 3, 2, 0, 400, "GOTO10")
+    later = await diagnostics_for(fanuc_en, uri, 3)
+    assert not [d for d in later.diagnostics if d.severity == types.DiagnosticSeverity.Error]
+    other = open_file(fanuc_en, FANUC / "OTHER.nc", "O0002\n#100=1\nM30\n")
+    assert "#100" in await hover_text(fanuc_en, other, 1, 2)
+    close_file(fanuc_en, other)
+    close_file(fanuc_en, uri)
