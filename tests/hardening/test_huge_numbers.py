@@ -48,3 +48,17 @@ async def test_a_document_with_a_309_digit_label_stays_open_and_hovers_go_on(fan
     assert "#100" in await hover_text(fanuc_en, other, 1, 2)
     close_file(fanuc_en, other)
     close_file(fanuc_en, uri)
+
+
+@pytest.mark.asyncio(loop_scope="module")
+async def test_a_document_uri_with_a_nul_is_analysed_and_stops_nothing(fanuc_en: LanguageClient) -> None:
+    odd = (FANUC / "NUL.nc").as_uri().replace("NUL.nc", "N%00L.nc")
+    fanuc_en.text_document_did_open(
+        types.DidOpenTextDocumentParams(types.TextDocumentItem(odd, "cncmacro", 1, "O0001\n#1=1/0\nM30\n"))
+    )
+    found = await diagnostics_for(fanuc_en, odd, 1)
+    assert "division-by-zero" in [d.code for d in found.diagnostics]
+    other = open_file(fanuc_en, FANUC / "OTHER2.nc", "O0002\n#2=1/0\nM30\n")
+    assert "division-by-zero" in [d.code for d in (await diagnostics_for(fanuc_en, other, 1)).diagnostics]
+    close_file(fanuc_en, other)
+    close_file(fanuc_en, odd)

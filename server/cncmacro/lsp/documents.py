@@ -29,8 +29,10 @@ from .site_index import SiteIndex
 
 
 def uri_to_path(uri: str) -> str:
-    """The file path of a ``file:`` URI (other schemes keep the URI itself)."""
-    return to_fs_path(uri) or uri
+    """The file path of a ``file:`` URI (other schemes keep the URI itself). A NUL (``%00``)
+    cannot be in a real file's path, and the system refuses every call with one: it stays
+    written as ``%00``, so the document is analysed as the unsaved text it is."""
+    return (to_fs_path(uri) or uri).replace("\x00", "%00")
 
 
 # an applied edit: (start line, start column, end line, end column, new text) in code points
