@@ -5,6 +5,8 @@ few (a ``#3006`` pause in a loop used to add one per pass)."""
 
 from __future__ import annotations
 
+import subprocess
+import sys
 from pathlib import Path
 
 from cncmacro.analysis import run_checks
@@ -83,3 +85,63 @@ def test_a_run_stopped_as_a_macro_runs_off_its_end_is_reported_on_its_last_line(
         assert result is not None
         [limit] = [d for d in result.diagnostics[path] if d.code == "run-limit"]
         assert (limit.line, limit.end_line) == (4, 4)
+
+
+def _endless_programs(count: int, then: str = "") -> str:
+    out = ["%"]
+    for k in range(count):
+        out += [f"O{1000 + k}", "WHILE[#1000 EQ 0]DO1", "#1=#1+1", "END1", "M99"]
+    out += [then, "%"] if then else ["%"]
+    return "\n".join(out) + "\n"
+
+
+def test_a_file_of_many_endless_programs_is_analysed_within_the_file_budget(tmp_path: Path) -> None:
+    """A file of 100 programs that each loop for ever took 100 runs of a full budget to check;
+    the runs of one file now share FILE_BUDGETS budgets, and the programs left out are named."""
+    ws, found = analysed(tmp_path, _endless_programs(100), max_blocks=2_000)
+    limits = [message for code, message in found if code == "run-limit" and "stopped here" in message]
+    left_out = [message for code, message in found if code == "run-limit" and "was not run" in message]
+    assert len(limits) == run_checks.FILE_BUDGETS
+    assert len(left_out) == 100 - run_checks.FILE_BUDGETS
+    assert left_out[0].startswith(f"O{1000 + run_checks.FILE_BUDGETS} was not run")
+    assert sum(run.machine.blocks for run in ws.runs.values()) <= run_checks.FILE_BUDGETS * 2_000
+
+
+def test_a_program_after_an_endless_one_in_the_same_file_is_still_run(tmp_path: Path) -> None:
+    text = _endless_programs(1, then="O2000\n#3000=7(SECOND PROGRAM REACHED)\nM99")
+    _, found = analysed(tmp_path, text, max_blocks=2_000)
+    assert [code for code, _ in found] == ["run-limit", "macro-alarm"]
+    assert "SECOND PROGRAM REACHED" in found[1][1]
+
+
+def test_the_file_budget_follows_edits_that_end_an_endless_program(tmp_path: Path) -> None:
+    """Once the first program ends, the program that was left out runs; the result is the one a
+    fresh analysis gives."""
+    path = str(tmp_path / "O0001.nc")
+    text = _endless_programs(run_checks.FILE_BUDGETS + 1)
+    ws = WorkspaceAnalysis(max_blocks=2_000)
+    ws.open(path, text, 1)
+    before = ws.analyze(path)
+    assert before is not None and any("was not run" in d.message for d in before.diagnostics[path])
+    ws.change(path, 2, 0, 2, len("WHILE[#1000 EQ 0]DO1"), "WHILE[#1 LT 3]DO1", 2)
+    after = ws.analyze(path)
+    assert after is not None
+    assert not any("was not run" in d.message for d in after.diagnostics[path])
+    fresh = WorkspaceAnalysis(max_blocks=2_000)
+    fresh.open(path, text.replace("WHILE[#1000 EQ 0]DO1", "WHILE[#1 LT 3]DO1", 1), 2)
+    again = fresh.analyze(path)
+    assert again is not None
+    assert after.diagnostics[path] == again.diagnostics[path]
+
+
+def test_check_of_a_file_of_endless_programs_names_those_it_did_not_run(tmp_path: Path) -> None:
+    f = tmp_path / "many.nc"
+    f.write_text(_endless_programs(30), encoding="utf-8")
+    r = subprocess.run([sys.executable, "-m", "cncmacro", "check", "--max-blocks", "20000", str(f)],
+                       capture_output=True, text=True, timeout=120)  # fmt: skip
+    assert r.returncode == 0, r.stderr
+    lines = r.stdout.splitlines()
+    assert len([x for x in lines if "stopped here after 20000 blocks" in x]) == run_checks.FILE_BUDGETS
+    assert len([x for x in lines if "was not run" in x]) == 30 - run_checks.FILE_BUDGETS
+    first_left_out = run_checks.FILE_BUDGETS
+    assert f"{f}:{5 * first_left_out + 2}:1: information: O{1000 + first_left_out} was not run" in r.stdout

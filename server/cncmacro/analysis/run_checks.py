@@ -20,7 +20,9 @@ call chain, the block count and, inside a loop, which pass of the innermost loop
 and the call sites as ``related`` places.
 
 Limits keep a run bounded in time and memory whatever the program does: the block budget
-(``max_blocks``), a wall-clock limit (``max_seconds``, counted from the start or the last
+(``max_blocks``; lowered by ``workspace.py`` when the other runs from the same file have used up
+most of the file's share, ``FILE_BUDGETS`` budgets, so that a file of many programs that each
+loop for ever is analysed in bounded time too), a wall-clock limit (``max_seconds``, counted from the start or the last
 rewind, across cancelled and resumed advances) and a cap on what the machine records
 (``max_records`` notes: messages, DPRNT output, call remarks). A run that reaches one stops
 with a ``run-limit`` diagnostic saying which. Checkpoints are kept at chunk boundaries only
@@ -54,6 +56,7 @@ CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again 
 MAX_SECONDS = 30.0  # wall-clock limit of one run
 MAX_RECORDS = 100_000  # notes (messages, DPRNT output, remarks) one run may record
 MAX_CHECKPOINTS = 400  # beyond this, every other checkpoint is dropped
+FILE_BUDGETS = 3  # the runs from the programs of one file together run at most this many block budgets
 
 Value = float | None
 
@@ -103,6 +106,7 @@ class EntryRun:
         self.settings = settings
         self.library = library
         self.max_blocks = max(1, max_blocks)
+        self.file_budget: int | None = None  # set when the file's share, not the run's own budget, is the limit
         self.max_seconds = max_seconds
         self.max_records = max_records
         self.interval = CHUNK  # blocks between checkpoints
@@ -424,6 +428,11 @@ def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale:
                   f"{run.max_records} messages and outputs, its memory limit")
             zh = (f"分析运行在 {m.blocks} 个程序段后于此处停止："
                   f"记录的消息和输出超过 {run.max_records} 条（达到内存上限）")
+        elif run.file_budget is not None:
+            en = (f"the analysis run stopped here after {m.blocks} blocks: the programs of this file together "
+                  f"ran {run.file_budget} blocks, the budget of one file's analysis (an endless loop?)")
+            zh = (f"分析运行在 {m.blocks} 个程序段后于此处停止：本文件各程序共运行了 {run.file_budget} 个程序段，"
+                  f"达到一个文件的分析上限（可能是死循环）")
         else:
             en = f"the analysis run stopped here after {m.blocks} blocks, its budget (an endless loop?)"
             zh = f"分析运行在 {m.blocks} 个程序段后于此处停止（达到上限，可能是死循环）"
@@ -451,6 +460,22 @@ def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale:
         out.append(_diagnostic(read.file, read.line, "vacant-argument", en, zh, read.chain, None, False, line_text,
                                locale))  # fmt: skip
     return out
+
+
+def not_run_diagnostic(entry: FoundProgram, file_budget: int, locale: str) -> Diagnostic:
+    """The program ``entry`` was not run: the runs before it in its file used up the file's
+    budget. Marked on its first line, where a run would have started."""
+    number = entry.unit.number
+    name = f"O{number:04d}" if number is not None else display_name(entry.file.path)
+    en = (f"{name} was not run: the programs before it in this file together ran {file_budget} blocks, "
+          "the budget of one file's analysis (are they endless loops?)")
+    zh = f"{name} 未运行：本文件中它之前的程序共运行了 {file_budget} 个程序段，达到一个文件的分析上限（是否有死循环？）"
+    line = entry.unit.start
+    text = entry.file.lines[line] if line < len(entry.file.lines) else ""
+    start = len(text) - len(text.lstrip())
+    end = max(start + 1, len(text.rstrip()))
+    return Diagnostic(entry.file.path, line, start, line, end, CODES["run-limit"].severity, "run-limit",
+                      pick(locale, en, zh))  # fmt: skip
 
 
 def _diagnostic(

@@ -82,7 +82,7 @@ from .diagnostics import UNNECESSARY, Diagnostic
 from .faults import RUN, internal_error
 from .locale import pick
 from .profile_suggestion import suggestion
-from .run_checks import MAX_RECORDS, MAX_SECONDS, EntryRun, run_diagnostics
+from .run_checks import FILE_BUDGETS, MAX_RECORDS, MAX_SECONDS, EntryRun, not_run_diagnostic, run_diagnostics
 from .severity import apply_severities, check_overrides
 from .static_lines import StaticLines
 from .unreached import UnreachedRanges
@@ -167,6 +167,7 @@ class WorkspaceAnalysis:
         self._called_from_disk: set[tuple[str, int]] = set()  # open programs that callers on disk reach
         self._unreached = UnreachedRanges(self._unreachable_skips)  # the not-executed ranges, kept across edits
         self._failed: dict[tuple[str, int], Diagnostic] = {}  # runs that failed by a fault of the checker
+        self._not_run: dict[tuple[str, int], FoundProgram] = {}  # entries left out: their file's budget was spent
 
     def set_workspace_folders(self, folders: list[str]) -> None:
         """The folders whose program files may call the open ones (the editor's workspace
@@ -393,27 +394,46 @@ class WorkspaceAnalysis:
         for k in [k for k in self.runs if k not in primary]:
             del self.runs[k]  # a called program is analysed only through its callers
         self._failed = {}
+        self._not_run = {}
+        file_budget = FILE_BUDGETS * self.max_blocks
+        spent: dict[str, int] = {}  # blocks run by the runs from each file so far
         for k, found in primary.items():
+            file = found.file.path
+            left = file_budget - spent.get(file, 0)
+            if left <= 0:  # the runs before it used up the file's share: it is not run
+                self.runs.pop(k, None)
+                self._not_run[k] = found
+                continue
             try:
-                if not self._advance(k, found, should_cancel):
+                if not self._advance(k, found, should_cancel, min(self.max_blocks, left), file_budget):
                     return None
+                spent[file] = spent.get(file, 0) + self.runs[k].machine.blocks
             except Exception as e:  # a bug in one run must not cost the others and the static findings
                 self.runs.pop(k, None)
                 self._failed[k] = internal_error(found.file.path, found.unit.start, RUN, e, self.locale)
         return self._result(version)
 
-    def _advance(self, k: tuple[str, int], found: FoundProgram,
-                 should_cancel: Callable[[], bool] | None) -> bool:  # fmt: skip
+    def _advance(self, k: tuple[str, int], found: FoundProgram, should_cancel: Callable[[], bool] | None,
+                 budget: int, file_budget: int) -> bool:  # fmt: skip
         run = self.runs.get(k)
         if run is None:
             dialect = self.dialect_of(found.file.lines)
-            run = self.runs[k] = EntryRun(found, dialect, self.settings, self.library, self.max_blocks,
+            run = self.runs[k] = EntryRun(found, dialect, self.settings, self.library, budget,
                                           self.max_seconds, self.max_records)  # fmt: skip
             run.reads_clock = self._reads_clock
         elif run.entry.unit is not found.unit:
             run.entry = found
+            run.max_blocks = budget
             run.restart()
             self._unreached.rewound(run)
+        elif run.max_blocks != budget:  # the runs before it in its file now run more or fewer blocks
+            m = run.machine
+            grown = budget > run.max_blocks and m.status == LIMIT and run.stopped_by is None
+            run.max_blocks = budget
+            if m.blocks > budget or grown:
+                run.back_to(min(m.blocks, budget) - 1)
+                self._unreached.rewound(run)
+        run.file_budget = file_budget if budget < self.max_blocks else None
         return run.advance(should_cancel)
 
     def _rewind(self, run: EntryRun, d: _Open) -> None:
@@ -533,6 +553,10 @@ class WorkspaceAnalysis:
         for k, x in self._failed.items():
             if k not in entries or x.file in self.docs:
                 by_file.setdefault(x.file, []).append(x)
+        for found_entry in self._not_run.values():
+            if found_entry.file.path in self.docs:
+                by_file.setdefault(found_entry.file.path, []).append(
+                    not_run_diagnostic(found_entry, FILE_BUDGETS * self.max_blocks, self.locale))
         for k, run in self.runs.items():
             shown = self.docs if k in entries else None  # a caller on disk: findings in open files only
             try:
