@@ -128,6 +128,8 @@ class EntryRun:
     # ---------------------------------------------------------------- running
     def restart(self) -> None:
         """Start again from the first block with a fresh machine."""
+        if hasattr(self, "machine"):
+            self.machine.discard()
         m = Machine(self.dialect, self.settings, self.library, m99_ends_main=True)
         m.record_moves = False
         m.watching = True
@@ -147,6 +149,12 @@ class EntryRun:
         self.elapsed = 0.0
         self.stopped_by = None
         self.serials = {}
+        self.earlier = None
+
+    def discard(self) -> None:
+        """This run is dropped: free its machine at once (``Machine.discard``)."""
+        self.machine.discard()
+        self.checkpoints = []
         self.earlier = None
 
     @property

@@ -374,6 +374,8 @@ class WorkspaceAnalysis:
             self._find_disk_entries(units)
         assert self._entries is not None
         if self.stale:
+            for run in self.runs.values():
+                run.discard()
             self.runs.clear()
             self.stale = False
         else:
@@ -384,7 +386,7 @@ class WorkspaceAnalysis:
                             self._rewind(run, d)
                         except Exception:  # a bug: run that program again from its start
                             log.exception("taking an analysis run back failed")
-                            del self.runs[k]
+                            self._drop(k)
         for d in self.docs.values():
             for e in d.edits:
                 self._unreached.edited(d.path, e.start, e.count, e.shifted or e.structural)
@@ -392,7 +394,7 @@ class WorkspaceAnalysis:
         primary = {k: found for k, found, called in units if not called and k not in self._called_from_disk}
         primary.update(self._entries)
         for k in [k for k in self.runs if k not in primary]:
-            del self.runs[k]  # a called program is analysed only through its callers
+            self._drop(k)  # a called program is analysed only through its callers
         self._failed = {}
         self._not_run = {}
         file_budget = FILE_BUDGETS * self.max_blocks
@@ -401,7 +403,7 @@ class WorkspaceAnalysis:
             file = found.file.path
             left = file_budget - spent.get(file, 0)
             if left <= 0:  # the runs before it used up the file's share: it is not run
-                self.runs.pop(k, None)
+                self._drop(k)
                 self._not_run[k] = found
                 continue
             try:
@@ -409,9 +411,14 @@ class WorkspaceAnalysis:
                     return None
                 spent[file] = spent.get(file, 0) + self.runs[k].machine.blocks
             except Exception as e:  # a bug in one run must not cost the others and the static findings
-                self.runs.pop(k, None)
+                self._drop(k)
                 self._failed[k] = internal_error(found.file.path, found.unit.start, RUN, e, self.locale)
         return self._result(version)
+
+    def _drop(self, k: tuple[str, int]) -> None:
+        run = self.runs.pop(k, None)
+        if run is not None:
+            run.discard()
 
     def _advance(self, k: tuple[str, int], found: FoundProgram, should_cancel: Callable[[], bool] | None,
                  budget: int, file_budget: int) -> bool:  # fmt: skip

@@ -186,6 +186,16 @@ class Machine(VariableAccess, Motion):
                 out[n] = v
         return out
 
+    def discard(self) -> None:
+        """Break the reference cycles of a machine nobody will run again (its compiled files
+        and frames point back at it), so that reference counting frees it at once: the
+        language server freezes what survives each analysis (``lsp/collector.py``), and a
+        dropped machine left to the cycle collector would stay until the next clean-up."""
+        self.compiled.clear()
+        self.frames.clear()
+        self.modal_calls.clear()
+        self.on_first_run = self.on_vacant_argument = self.on_write = self.on_loop_pass = None
+
     def compiled_file(self, file: LoadedFile) -> CompiledFile:
         cf = self.compiled.get(file.path)
         if cf is None or cf.file is not file:
