@@ -26,6 +26,7 @@ from ..syntax.nodes import Number, Word
 from .call_sites import call_site
 from .cursor import doc_range
 from .documents import OpenDocument
+from .positions import Encoding
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -65,7 +66,7 @@ def nc_words(doc: OpenDocument, line: int) -> list[Word]:
     return out
 
 
-def split_edit(doc: OpenDocument, line: int, utf16: bool) -> types.TextEdit | None:
+def split_edit(doc: OpenDocument, line: int, encoding: Encoding) -> types.TextEdit | None:
     words = nc_words(doc, line)
     if not words:
         return None
@@ -81,10 +82,10 @@ def split_edit(doc: OpenDocument, line: int, utf16: bool) -> types.TextEdit | No
     rest.append(text[pos:])
     indent = text[: len(text) - len(text.lstrip())]
     second = re.sub(r"[ \t]{2,}", " ", "".join(rest).strip())
-    return types.TextEdit(doc_range(doc, line, 0, len(text), utf16), f"{indent}{first}\n{indent}{second}")
+    return types.TextEdit(doc_range(doc, line, 0, len(text), encoding), f"{indent}{first}\n{indent}{second}")
 
 
-def clamp_edit(doc: OpenDocument, line: int, utf16: bool) -> tuple[types.TextEdit, int] | None:
+def clamp_edit(doc: OpenDocument, line: int, encoding: Encoding) -> tuple[types.TextEdit, int] | None:
     block = doc.block(line)
     if block is None or call_site(block, doc.dialect) is None:
         return None
@@ -93,16 +94,16 @@ def clamp_edit(doc: OpenDocument, line: int, utf16: bool) -> tuple[types.TextEdi
             n = w.value.value
             if n < 1 or n > MAX_REPEAT:
                 value = 1 if n < 1 else MAX_REPEAT
-                return types.TextEdit(doc_range(doc, line, w.start, w.end, utf16), f"L{value}"), value
+                return types.TextEdit(doc_range(doc, line, w.start, w.end, encoding), f"L{value}"), value
     return None
 
 
-def expand_edits(doc: OpenDocument, line: int, utf16: bool) -> list[tuple[types.TextEdit, str, str]]:
+def expand_edits(doc: OpenDocument, line: int, encoding: Encoding) -> list[tuple[types.TextEdit, str, str]]:
     """(edit, written text, whole word) for each macro word written shortened on ``line``."""
     block = doc.block(line)
     if block is None:
         return []
-    return [(types.TextEdit(doc_range(doc, line, a.start, a.end, utf16), a.word), a.text, a.word)
+    return [(types.TextEdit(doc_range(doc, line, a.start, a.end, encoding), a.word), a.text, a.word)
             for a in block.abbreviations]  # fmt: skip
 
 
@@ -112,20 +113,20 @@ def register(server: CncMacroServer) -> None:
     )
     def code_action(ls: CncMacroServer, params: types.CodeActionParams) -> list[types.CodeAction]:
         doc = ls.documents.get(params.text_document.uri)
-        utf16 = ls.documents.utf16
+        encoding = ls.documents.encoding
         out: list[types.CodeAction] = []
         r = params.range
         for line in range(r.start.line, min(r.end.line, len(doc.lines) - 1) + 1):
             diags = [d for d in params.context.diagnostics if d.range.start.line == line]
-            edit = split_edit(doc, line, utf16)
+            edit = split_edit(doc, line, encoding)
             if edit is not None:
                 out.append(_action(doc, _title("split", ls.locale), edit, diags, "g65-nc-words"))
-            clamp = clamp_edit(doc, line, utf16)
+            clamp = clamp_edit(doc, line, encoding)
             if clamp is not None:
                 out.append(
                     _action(doc, _title("clamp", ls.locale, value=clamp[1]), clamp[0], diags, "repeat-count-range")
                 )
-            for expand, text, word in expand_edits(doc, line, utf16):
+            for expand, text, word in expand_edits(doc, line, encoding):
                 start = expand.range.start.character
                 mine = [d for d in diags if d.range.start.character == start]
                 code = "keyword-abbreviation" if doc.dialect.keyword_abbreviations else "dialect-feature"
@@ -143,9 +144,9 @@ def profile_actions(ls: CncMacroServer, doc: OpenDocument, diags: list[types.Dia
     other = suggested_profile(doc.parsed.program, doc.dialect, ls.machine or MachineSettings())
     if other is None:
         return []
-    utf16 = ls.documents.utf16
+    encoding = ls.documents.encoding
     at = 1 if doc.lines and doc.lines[0].strip().startswith("%") else 0
-    comment = types.TextEdit(doc_range(doc, at, 0, 0, utf16), f"(cncmacro: dialect={other.name})\n")
+    comment = types.TextEdit(doc_range(doc, at, 0, 0, encoding), f"(cncmacro: dialect={other.name})\n")
     title = _title("comment", ls.locale, title=other.title, name=other.name)
     out = [_action(doc, title, comment, asked, CODE)]
     machine = find_machine_file(doc.path)
@@ -154,12 +155,12 @@ def profile_actions(ls: CncMacroServer, doc: OpenDocument, diags: list[types.Dia
     if machine is not None:
         out.append(types.CodeAction(
             title=_title("machine", ls.locale, name=other.name), kind=types.CodeActionKind.QuickFix,
-            diagnostics=asked, edit=machine_file_edit(machine, other.name),
+            diagnostics=asked, edit=machine_file_edit(machine, other.name, encoding),
         ))  # fmt: skip
     return out
 
 
-def machine_file_edit(path: Path, name: str) -> types.WorkspaceEdit:
+def machine_file_edit(path: Path, name: str, encoding: Encoding) -> types.WorkspaceEdit:
     """``base = "name"`` in the machine file at ``path``: the ``base`` or ``dialect`` line
     replaced, else written first; the file is created when it does not exist."""
     uri = path.as_uri()
@@ -177,7 +178,7 @@ def machine_file_edit(path: Path, name: str) -> types.WorkspaceEdit:
         lines = []
     for k, text in enumerate(lines):
         if re.match(r"\s*(base|dialect)\s*=", text):
-            edit = types.TextEdit(types.Range(types.Position(k, 0), types.Position(k, len(text))), line)
+            edit = types.TextEdit(encoding.range(k, text, 0, len(text)), line)
             break
         if re.match(r"\s*\[", text):  # keys after a table header belong to it: write before it
             edit = types.TextEdit(types.Range(types.Position(k, 0), types.Position(k, 0)), line + "\n")

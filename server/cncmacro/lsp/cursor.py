@@ -12,7 +12,7 @@ from lsprotocol import types
 
 from ..syntax.nodes import Block
 from .documents import OpenDocument
-from .positions import to_client, to_code_points
+from .positions import Encoding
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -25,15 +25,13 @@ class Cursor:
     column: int
     text: str
     block: Block
-    utf16: bool
+    encoding: Encoding
 
     def range(self, start: int, end: int, line: int | None = None) -> types.Range:
         """A client range for code-point columns on ``line`` (the cursor's line by default)."""
-        ln = self.line if line is None else line
-        text = self.text if line is None else self.doc.line(ln)
-        return types.Range(
-            types.Position(ln, to_client(text, start, self.utf16)), types.Position(ln, to_client(text, end, self.utf16))
-        )
+        if line is None:
+            return self.encoding.range(self.line, self.text, start, end)
+        return self.encoding.range(line, self.doc.line(line), start, end)
 
 
 def cursor_at(server: CncMacroServer, uri: str, position: types.Position) -> Cursor | None:
@@ -42,12 +40,10 @@ def cursor_at(server: CncMacroServer, uri: str, position: types.Position) -> Cur
     if block is None:
         return None
     text = doc.line(position.line)
-    col = to_code_points(text, position.character, server.documents.utf16)
-    return Cursor(doc, position.line, col, text, block, server.documents.utf16)
+    encoding = server.documents.encoding
+    return Cursor(doc, position.line, encoding.to_code_points(text, position.character), text, block, encoding)
 
 
-def doc_range(doc: OpenDocument, line: int, start: int, end: int, utf16: bool) -> types.Range:
-    text = doc.line(line)
-    return types.Range(
-        types.Position(line, to_client(text, start, utf16)), types.Position(line, to_client(text, end, utf16))
-    )
+def doc_range(doc: OpenDocument, line: int, start: int, end: int, encoding: Encoding) -> types.Range:
+    """The client range of code-point columns ``start``..``end`` on ``line`` of ``doc``."""
+    return encoding.range(line, doc.line(line), start, end)

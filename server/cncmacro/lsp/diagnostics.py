@@ -256,7 +256,7 @@ class DiagnosticsEngine:
             lines = parsed.lines if parsed is not None else _disk_lines(ws, file)
             return lines[line] if 0 <= line < len(lines) else ""
 
-        utf16 = self.server.documents.utf16
+        encoding = self.server.documents.encoding
         protocol = cast("CncMacroProtocol", self.server.protocol)
         unstructure = protocol.to_json
         uri_of = self.server.uri_for_path
@@ -272,11 +272,11 @@ class DiagnosticsEngine:
             converted, payload = [], []
             for x in diags:
                 # an edit changes a few findings: the others keep their converted forms
-                key = (x, utf16, line_text(x.file, x.line), line_text(x.file, x.end_line),
+                key = (x, encoding, line_text(x.file, x.line), line_text(x.file, x.end_line),
                        *(line_text(r.file, r.line) for r in x.related))  # fmt: skip
                 form = used.get(key) or forms.get(key)
                 if form is None:
-                    item = to_lsp(x, line_text, utf16, uri_of)
+                    item = to_lsp(x, line_text, encoding, uri_of)
                     form = (item, unstructure(item))
                 used[key] = form
                 converted.append(form[0])

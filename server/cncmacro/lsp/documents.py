@@ -24,7 +24,7 @@ from ..library.profiles import machine_profile
 from ..library.programs import LoadedFile
 from ..syntax.document import ParsedDocument, split_lines
 from ..syntax.nodes import Block
-from .positions import to_code_points
+from .positions import UTF16, Encoding
 from .site_index import SiteIndex
 
 
@@ -77,7 +77,7 @@ class Documents:
         self.workspace_dialect: str | None = None  # from .cncmacro.toml
         self.machine: MachineSettings | None = None  # the workspace's .cncmacro.toml
         self.setting_dialect: str | None = None  # from the editor's settings
-        self.utf16 = True
+        self.encoding: Encoding = UTF16  # the client's columns, agreed at initialize
 
     def dialect_for(self, lines: list[str]) -> Dialect:
         return machine_profile(choose_dialect(lines, self.workspace_dialect, self.setting_dialect), self.machine)
@@ -116,8 +116,9 @@ class Documents:
                 r = change.range
                 sl = min(max(r.start.line, 0), len(lines) - 1)
                 el = min(max(r.end.line, sl), len(lines) - 1)
-                sc = to_code_points(lines[sl], r.start.character, self.utf16) if r.start.line < len(lines) else 1 << 30
-                ec = to_code_points(lines[el], r.end.character, self.utf16) if r.end.line < len(lines) else 1 << 30
+                columns = self.encoding.to_code_points
+                sc = columns(lines[sl], r.start.character) if r.start.line < len(lines) else 1 << 30
+                ec = columns(lines[el], r.end.character) if r.end.line < len(lines) else 1 << 30
                 sc = min(sc, len(lines[sl]))
                 ec = min(ec, len(lines[el])) if el > sl else max(min(ec, len(lines[el])), sc)
                 edit: Edit = (sl, sc, el, ec, change.text)

@@ -14,7 +14,7 @@ from ..analysis.locale import pick
 from ..machine.calls import argument_targets
 from ..machine.numbers import format_plain
 from .call_sites import call_site
-from .positions import to_client
+from .positions import Encoding
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -24,7 +24,7 @@ def register(server: CncMacroServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_INLAY_HINT)
     def inlay_hint(ls: CncMacroServer, params: types.InlayHintParams) -> list[types.InlayHint]:
         doc = ls.documents.get(params.text_document.uri)
-        utf16 = ls.documents.utf16
+        encoding = ls.documents.encoding
         out: list[types.InlayHint] = []
         r = params.range
         last = min(r.end.line, len(doc.lines) - 1)
@@ -33,7 +33,7 @@ def register(server: CncMacroServer) -> None:
             for line in range(r.start.line, last + 1):
                 written = values.get(line)
                 if written:
-                    out.append(_value_hint(doc.line(line), line, written, ls.locale, utf16))
+                    out.append(_value_hint(doc.line(line), line, written, ls.locale, encoding))
         for line in range(r.start.line, last + 1):
             block = doc.block(line)
             if block is None or (block.plain is not None and "65" not in block.plain and "66" not in block.plain):
@@ -47,7 +47,7 @@ def register(server: CncMacroServer) -> None:
                     continue
                 out.append(
                     types.InlayHint(
-                        position=types.Position(line, to_client(text, w.end, utf16)),
+                        position=types.Position(line, encoding.to_client(text, w.end)),
                         label=f"#{n}",
                         kind=types.InlayHintKind.Parameter,
                         padding_left=True,
@@ -57,12 +57,12 @@ def register(server: CncMacroServer) -> None:
 
 
 def _value_hint(text: str, line: int, written: list[tuple[int, float | None]], locale: str,
-                utf16: bool) -> types.InlayHint:  # fmt: skip
+                encoding: Encoding) -> types.InlayHint:  # fmt: skip
     """``= 60`` at the end of the line's code (before a comment)."""
     end = len(text.split("(", 1)[0].split(";", 1)[0].rstrip())
     shown = ", ".join(pick(locale, "<vacant>", "<空>") if v is None else format_plain(v) for _, v in written)
     return types.InlayHint(
-        position=types.Position(line, to_client(text, end, utf16)),
+        position=types.Position(line, encoding.to_client(text, end)),
         label=f"= {shown}",
         padding_left=True,
         tooltip=", ".join(f"#{n}" for n, _ in written),

@@ -20,7 +20,7 @@ from ..syntax.nodes import Var
 from ..syntax.walk import nodes_at
 from .call_sites import call_site
 from .cursor import Cursor, cursor_at, doc_range
-from .positions import to_client
+from .positions import Encoding
 from .site_index import FileSites, workspace_sites
 from .sites import jump_sites, label_jumps
 
@@ -57,13 +57,8 @@ def register(server: CncMacroServer) -> None:
         return rename_label(ls, cur, params.new_name)
 
 
-def _loc(uri: str, line: int, start: int, end: int, text: str, utf16: bool) -> types.Location:
-    return types.Location(
-        uri,
-        types.Range(
-            types.Position(line, to_client(text, start, utf16)), types.Position(line, to_client(text, end, utf16))
-        ),
-    )
+def _loc(uri: str, line: int, start: int, end: int, text: str, encoding: Encoding) -> types.Location:
+    return types.Location(uri, encoding.range(line, text, start, end))
 
 
 def label_under(cur: Cursor) -> tuple[int, int, int, str] | None:
@@ -78,7 +73,7 @@ def label_under(cur: Cursor) -> tuple[int, int, int, str] | None:
 
 
 def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | None:
-    utf16 = ls.documents.utf16
+    encoding = ls.documents.encoding
     hit = label_under(cur)
     if hit is not None and hit[3] != "N":
         label, _, _, kind = hit
@@ -96,7 +91,7 @@ def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | N
             return None
         b = cur.doc.block(target)
         span = b.label_span if b is not None and b.label_span else (0, 0)
-        return [_loc(cur.doc.uri, target, span[0], span[1], cur.doc.line(target), utf16)]
+        return [_loc(cur.doc.uri, target, span[0], span[1], cur.doc.line(target), encoding)]
     site = call_site(cur.block, cur.doc.dialect)
     if site is not None and site.p.start <= cur.column <= site.p.end:
         found = ls.index.find_program(cur.doc, site.number, site.name)
@@ -104,15 +99,15 @@ def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | N
             return None
         line = found.unit.start
         text = found.file.lines[line] if line < len(found.file.lines) else ""
-        return [_loc(ls.uri_for_path(found.file.path), line, 0, len(text), text, utf16)]
+        return [_loc(ls.uri_for_path(found.file.path), line, 0, len(text), text, encoding)]
     return None
 
 
 def find_references(ls: CncMacroServer, cur: Cursor, include_declaration: bool) -> list[types.Location] | None:
-    utf16 = ls.documents.utf16
+    encoding = ls.documents.encoding
     hit = label_under(cur)
     if hit is not None:
-        return label_references(cur, hit[0], include_declaration, utf16)
+        return label_references(cur, hit[0], include_declaration, encoding)
     b = cur.block
     if b.program is not None and b.program_span and b.program_span[0] <= cur.column <= b.program_span[1]:
         return program_references(ls, cur.doc.path, b.program, include_declaration, cur)
@@ -126,7 +121,7 @@ def find_references(ls: CncMacroServer, cur: Cursor, include_declaration: bool) 
     return None
 
 
-def label_references(cur: Cursor, label: int, include_declaration: bool, utf16: bool) -> list[types.Location]:
+def label_references(cur: Cursor, label: int, include_declaration: bool, encoding: Encoding) -> list[types.Location]:
     doc = cur.doc
     program = doc.parsed.program
     unit = program.unit_at(cur.line)
@@ -135,9 +130,9 @@ def label_references(cur: Cursor, label: int, include_declaration: bool, utf16: 
         for i in program.label_lines(label, unit):
             b = doc.block(i)
             if b is not None and b.label_span:
-                out.append(_loc(doc.uri, i, b.label_span[0], b.label_span[1], doc.line(i), utf16))
+                out.append(_loc(doc.uri, i, b.label_span[0], b.label_span[1], doc.line(i), encoding))
     for i, j in label_jumps(doc, unit.start, unit.end, label):
-        out.append(_loc(doc.uri, i, j.start, j.end, doc.line(i), utf16))
+        out.append(_loc(doc.uri, i, j.start, j.end, doc.line(i), encoding))
     out.sort(key=lambda x: (x.range.start.line, x.range.start.character))
     return out
 
@@ -146,19 +141,19 @@ def program_references(
     ls: CncMacroServer, path: str | None, number: int, include_declaration: bool, cur: Cursor
 ) -> list[types.Location]:
     """The calls of O``number`` across the workspace (and its header when asked)."""
-    utf16 = ls.documents.utf16
+    encoding = ls.documents.encoding
     out: list[types.Location] = []
     for f in ls.index.loaded_files():
         uri = ls.uri_for_path(f.path)
         dialect = cur.doc.dialect if f.path == cur.doc.path else ls.documents.dialect_for(f.lines)
         for i, b in enumerate(f.program.blocks):
             if include_declaration and b.program == number and b.program_span and (path is None or f.path == path):
-                out.append(_loc(uri, i, b.program_span[0], b.program_span[1], f.lines[i], utf16))
+                out.append(_loc(uri, i, b.program_span[0], b.program_span[1], f.lines[i], encoding))
             if b.plain is not None and "P" not in b.plain.upper():
                 continue
             site = call_site(b, dialect)
             if site is not None and site.number == number:
-                out.append(_loc(uri, i, site.p.start, site.p.end, f.lines[i], utf16))
+                out.append(_loc(uri, i, site.p.start, site.p.end, f.lines[i], encoding))
     return out
 
 
@@ -166,7 +161,7 @@ def variable_references(
     ls: CncMacroServer, cur: Cursor, number: int, include_declaration: bool
 ) -> list[types.Location]:
     """Where ``#number`` is mentioned: a local within its program, the others everywhere."""
-    utf16 = ls.documents.utf16
+    encoding = ls.documents.encoding
     out: list[types.Location] = []
     kind = describe.variable_class(number, cur.doc.dialect)
     if kind == describe.LOCAL:
@@ -181,7 +176,7 @@ def variable_references(
         for i in f.sites.mentions(number, start, end):
             for s in f.sites.sites_at(i)[1]:
                 if s.number == number and (include_declaration or not s.write):
-                    out.append(_loc(uri, i, s.start, s.end, f.lines[i], utf16))
+                    out.append(_loc(uri, i, s.start, s.end, f.lines[i], encoding))
     return out
 
 
@@ -194,7 +189,7 @@ def rename_label(ls: CncMacroServer, cur: Cursor, new_name: str) -> types.Worksp
         raise ValueError(f"'{new_name}' is not a sequence number (N1 to N99999)")
     new = int(text)
     doc = cur.doc
-    utf16 = ls.documents.utf16
+    encoding = ls.documents.encoding
     program = doc.parsed.program
     unit = program.unit_at(cur.line)
     if new != hit[0] and program.label_lines(new, unit):
@@ -204,7 +199,7 @@ def rename_label(ls: CncMacroServer, cur: Cursor, new_name: str) -> types.Worksp
     for i in program.label_lines(hit[0], unit):
         b = doc.block(i)
         if b is not None and b.label_span:
-            edits.append(types.TextEdit(doc_range(doc, i, b.label_span[0], b.label_span[1], utf16), f"N{new}"))
+            edits.append(types.TextEdit(doc_range(doc, i, b.label_span[0], b.label_span[1], encoding), f"N{new}"))
     for i, j in label_jumps(doc, unit.start, unit.end, hit[0]):
-        edits.append(types.TextEdit(doc_range(doc, i, j.start, j.end, utf16), str(new)))
+        edits.append(types.TextEdit(doc_range(doc, i, j.start, j.end, encoding), str(new)))
     return types.WorkspaceEdit(changes={doc.uri: edits})

@@ -1,7 +1,7 @@
 """Analysis diagnostics as the protocol sends them: severities, codes, the ``Unnecessary`` tag
 for blocks no run reached, and related places as ``DiagnosticRelatedInformation``. Columns
-go out in the client's units (UTF-16 unless it agreed on UTF-32), read from each file's line
-text, also for a related place in another file."""
+go out in the position encoding agreed with the client (``positions``), read from each file's
+line text, also for a related place in another file the editor has not opened."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ from lsprotocol import types
 
 from ..analysis import Diagnostic
 from ..analysis.diagnostics import UNNECESSARY
-from .positions import to_client
+from .positions import Encoding
 
 SOURCE = "cncmacro"
 SEVERITY = {
@@ -25,24 +25,24 @@ LineText = Callable[[str, int], str]  # (file, 0-based line) -> the line's text 
 
 
 def _range(line_text: LineText, file: str, line: int, column: int, end_line: int, end_column: int,
-           utf16: bool) -> types.Range:  # fmt: skip
+           encoding: Encoding) -> types.Range:  # fmt: skip
     text, end_text = line_text(file, line), line_text(file, end_line)
-    start = to_client(text, min(column, len(text)), utf16)  # a mark just past a line's end stays on it
-    end = to_client(end_text, min(end_column, len(end_text)), utf16)
+    start = encoding.to_client(text, min(column, len(text)))  # a mark just past a line's end stays on it
+    end = encoding.to_client(end_text, min(end_column, len(end_text)))
     return types.Range(types.Position(line, start), types.Position(end_line, end))
 
 
-def to_lsp(d: Diagnostic, line_text: LineText, utf16: bool, uri_of: Callable[[str], str]) -> types.Diagnostic:
+def to_lsp(d: Diagnostic, line_text: LineText, encoding: Encoding, uri_of: Callable[[str], str]) -> types.Diagnostic:
     """One analysis diagnostic as a protocol diagnostic."""
     related = [
         types.DiagnosticRelatedInformation(
-            types.Location(uri_of(r.file), _range(line_text, r.file, r.line, r.column, r.line, r.end_column, utf16)),
+            types.Location(uri_of(r.file), _range(line_text, r.file, r.line, r.column, r.line, r.end_column, encoding)),
             r.message,
         )
         for r in d.related
     ]
     return types.Diagnostic(
-        range=_range(line_text, d.file, d.line, d.column, d.end_line, d.end_column, utf16),
+        range=_range(line_text, d.file, d.line, d.column, d.end_line, d.end_column, encoding),
         message=d.message,
         severity=SEVERITY.get(d.severity, types.DiagnosticSeverity.Error),
         code=d.code,

@@ -22,7 +22,7 @@ from ..dialects.dialect import Dialect
 from ..syntax.block_parser import MAX_BLOCK_CHARS
 from ..syntax.nodes import Block
 from .documents import OpenDocument
-from .positions import has_astral, to_client
+from .positions import Encoding
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -126,7 +126,7 @@ class _TokenCache:
 _cache = _TokenCache()
 
 
-def encode(doc: OpenDocument, first: int, last: int, utf16: bool) -> list[int]:
+def encode(doc: OpenDocument, first: int, last: int, encoding: Encoding) -> list[int]:
     """The LSP integer encoding of the tokens on lines ``first`` to ``last`` (inclusive)."""
     data: list[int] = []
     prev_line = 0
@@ -137,10 +137,13 @@ def encode(doc: OpenDocument, first: int, last: int, utf16: bool) -> list[int]:
         text = lines[i]
         if not text or len(text) > MAX_BLOCK_CHARS:
             continue  # a line too long to be a block is not read, so not coloured either
-        wide = utf16 and has_astral(text)  # looked at once per line, not once per token
+        plain = encoding.plain(text)  # looked at once per line, not once per token
         for s, e, typ, mods in _cache.get(text, blocks[i], doc.dialect):
-            cs = to_client(text, s, wide)
-            length = to_client(text, e, wide) - cs
+            if plain:
+                cs, length = s, e - s
+            else:
+                cs = encoding.to_client(text, s)
+                length = encoding.to_client(text, e) - cs
             if i == prev_line:
                 data += (0, cs - prev_start, length, typ, mods)
             else:
@@ -158,7 +161,7 @@ def register(server: CncMacroServer) -> None:
     )
     def full(ls: CncMacroServer, params: types.SemanticTokensParams) -> types.SemanticTokens:
         doc = ls.documents.get(params.text_document.uri)
-        data = encode(doc, 0, len(doc.lines) - 1, ls.documents.utf16)
+        data = encode(doc, 0, len(doc.lines) - 1, ls.documents.encoding)
         return types.SemanticTokens(data=data, result_id=_remember(doc.uri, data))
 
     @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL_DELTA)
@@ -166,7 +169,7 @@ def register(server: CncMacroServer) -> None:
         ls: CncMacroServer, params: types.SemanticTokensDeltaParams
     ) -> types.SemanticTokens | types.SemanticTokensDelta:
         doc = ls.documents.get(params.text_document.uri)
-        data = encode(doc, 0, len(doc.lines) - 1, ls.documents.utf16)
+        data = encode(doc, 0, len(doc.lines) - 1, ls.documents.encoding)
         old = _previous.get(doc.uri)
         result_id = _remember(doc.uri, data)
         if old is None or old[0] != params.previous_result_id:
@@ -177,7 +180,7 @@ def register(server: CncMacroServer) -> None:
     def range_(ls: CncMacroServer, params: types.SemanticTokensRangeParams) -> types.SemanticTokens:
         doc = ls.documents.get(params.text_document.uri)
         r = params.range
-        return types.SemanticTokens(data=encode(doc, r.start.line, r.end.line, ls.documents.utf16))
+        return types.SemanticTokens(data=encode(doc, r.start.line, r.end.line, ls.documents.encoding))
 
 
 _previous: dict[str, tuple[str, list[int]]] = {}  # URI -> the last full answer's result id and data

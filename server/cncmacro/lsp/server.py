@@ -21,6 +21,7 @@ from pygls.lsp.server import LanguageServer
 from pygls.protocol import JsonRPCProtocol, LanguageServerProtocol
 from pygls.protocol.language_server import lsp_method
 from pygls.uris import from_fs_path
+from pygls.workspace import Workspace
 
 from .. import __version__
 from ..dialects.registry import profile_facts
@@ -28,6 +29,7 @@ from ..library.machine_file import MACHINE_FILE_NAME, MachineSettings
 from ..syntax.block_parser import warm_up
 from .diagnostics import DiagnosticsEngine
 from .documents import Documents, uri_to_path
+from .positions import negotiate
 from .settings import SECTION, Settings, machine_settings, merged_severities, valid_severities
 from .stdio import serve_stdio
 from .workspace_index import WorkspaceIndex
@@ -64,6 +66,24 @@ class CncMacroProtocol(LanguageServerProtocol):
     def to_json(self, value: Any) -> Any:
         """``value`` (a protocol type) in its JSON form, as this protocol sends it."""
         return self._converter.unstructure(value)
+
+    @lsp_method(types.INITIALIZE)
+    def lsp_initialize(self, params: types.InitializeParams):  # type: ignore[override]
+        """pygls answers with the first encoding the client lists (``utf-8`` for Neovim and
+        Helix); this server picks the one it converts cheapest (``positions.negotiate``), reads
+        and writes every column in it, and says so. pygls's own workspace (it holds no document
+        of this server) is made again with the same encoding."""
+        general = params.capabilities.general
+        encoding = negotiate(general.position_encodings if general is not None else None)
+        documents: Documents = self._server.documents  # type: ignore[attr-defined]
+        documents.encoding = encoding
+        result = yield from super().lsp_initialize(params)
+        result.capabilities.position_encoding = encoding.kind
+        workspace = self.workspace
+        self._workspace = Workspace(
+            workspace.root_uri, workspace._sync_kind, params.workspace_folders or [], encoding.kind
+        )
+        return result
 
     @lsp_method(types.TEXT_DOCUMENT_DID_OPEN)
     def lsp_text_document__did_open(self, params: types.DidOpenTextDocumentParams):  # type: ignore[override]
@@ -122,9 +142,6 @@ class CncMacroServer(LanguageServer):
 
 def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
     server.locale = params.locale or "en"
-    general = params.capabilities.general
-    encodings = general.position_encodings if general is not None else None
-    server.documents.utf16 = not (encodings and types.PositionEncodingKind.Utf32 in encodings)
     server.settings = Settings.from_mapping(params.initialization_options)
     server.documents.setting_dialect = server.settings.dialect
     roots = [uri_to_path(f.uri) for f in params.workspace_folders or []]

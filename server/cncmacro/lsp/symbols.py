@@ -10,6 +10,7 @@ from lsprotocol import types
 
 from .cursor import doc_range
 from .documents import OpenDocument
+from .positions import Encoding
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -20,7 +21,7 @@ MAX_LABELS = 5000  # a CAM file numbers every block; past this many, labels are 
 def register(server: CncMacroServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
     def document_symbol(ls: CncMacroServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol]:
-        return document_symbols(ls.documents.get(params.text_document.uri), ls.documents.utf16)
+        return document_symbols(ls.documents.get(params.text_document.uri), ls.documents.encoding)
 
     @server.feature(types.WORKSPACE_SYMBOL)
     def workspace_symbol(ls: CncMacroServer, params: types.WorkspaceSymbolParams) -> list[types.WorkspaceSymbol]:
@@ -42,7 +43,7 @@ def register(server: CncMacroServer) -> None:
         return out
 
 
-def document_symbols(doc: OpenDocument, utf16: bool) -> list[types.DocumentSymbol]:
+def document_symbols(doc: OpenDocument, encoding: Encoding) -> list[types.DocumentSymbol]:
     program = doc.parsed.program
     labels = sorted((line, n) for n, lines in program.labels.items() for line in lines)
     if len(labels) > MAX_LABELS:
@@ -61,8 +62,8 @@ def document_symbols(doc: OpenDocument, utf16: bool) -> list[types.DocumentSymbo
             name=name,
             detail=unit.title or "",
             kind=types.SymbolKind.Module,
-            range=types.Range(types.Position(unit.start, 0), types.Position(last, len(doc.line(last)))),
-            selection_range=doc_range(doc, unit.start, 0, len(doc.line(unit.start)), utf16),
+            range=types.Range(types.Position(unit.start, 0), _line_end(doc, last, encoding)),
+            selection_range=doc_range(doc, unit.start, 0, len(doc.line(unit.start)), encoding),
             children=[],
         )
         # loops nest by their ranges; labels go into the innermost loop that holds them
@@ -81,8 +82,8 @@ def document_symbols(doc: OpenDocument, utf16: bool) -> list[types.DocumentSymbo
                 child = types.DocumentSymbol(
                     name=f"DO{item.number} … END{item.number}",  # type: ignore[union-attr]
                     kind=types.SymbolKind.Namespace,
-                    range=types.Range(types.Position(line, 0), types.Position(end_line, len(doc.line(end_line)))),
-                    selection_range=doc_range(doc, line, 0, len(doc.line(line)), utf16),
+                    range=types.Range(types.Position(line, 0), _line_end(doc, end_line, encoding)),
+                    selection_range=doc_range(doc, line, 0, len(doc.line(line)), encoding),
                     children=[],
                 )
                 parent.children.append(child)  # type: ignore[union-attr]
@@ -90,9 +91,14 @@ def document_symbols(doc: OpenDocument, utf16: bool) -> list[types.DocumentSymbo
             else:
                 b = doc.block(line)
                 span = b.label_span if b is not None and b.label_span else (0, 0)
-                r = doc_range(doc, line, span[0], span[1], utf16)
+                r = doc_range(doc, line, span[0], span[1], encoding)
                 parent.children.append(  # type: ignore[union-attr]
                     types.DocumentSymbol(name=f"N{item}", kind=types.SymbolKind.Key, range=r, selection_range=r)
                 )
         out.append(sym)
     return out
+
+
+def _line_end(doc: OpenDocument, line: int, encoding: Encoding) -> types.Position:
+    text = doc.line(line)
+    return types.Position(line, encoding.to_client(text, len(text)))
