@@ -178,9 +178,8 @@ export class ServerController implements vscode.Disposable {
       ],
       outputChannel: this.log,
       initializationOptions: serverSettings(),
-      synchronize: {
-        fileEvents: vscode.workspace.createFileSystemWatcher('**/{*.nc,*.NC,*.cnc,*.CNC,*.mac,*.MAC,*.prg,*.PRG,*.tap,*.TAP,*.eia,*.EIA,O[0-9]*,.cncmacro.toml}'),
-      },
+      // No watcher of our own: the server registers one on the program files and the machine
+      // file (workspace/didChangeWatchedFiles), with the same patterns for every editor.
       middleware: {
         workspace: {
           configuration: async (params, token, next) => {

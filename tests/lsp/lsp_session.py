@@ -20,14 +20,29 @@ GSK = HERE / "workspace_gsk"
 SERVER = [sys.executable, "-m", "cncmacro", "lsp"]
 
 
-async def start(client: LanguageClient, root: Path, locale: str, settings: dict[str, Any] | None = None) -> None:
-    """Initialise a session on ``root`` in ``locale`` with VS Code's capabilities; the
-    server's capabilities are kept as ``client.server_capabilities``."""
+async def start(
+    client: LanguageClient,
+    root: Path,
+    locale: str,
+    settings: dict[str, Any] | None = None,
+    capabilities: types.ClientCapabilities | None = None,
+) -> None:
+    """Initialise a session on ``root`` in ``locale`` with VS Code's capabilities (or
+    ``capabilities``); the server's capabilities are kept as ``client.server_capabilities``,
+    the registrations it asks for (``client/registerCapability``, accepted as VS Code does) as
+    ``client.registrations``."""
     if settings is not None:
         client.set_configuration(settings, section="cncMacro")
+    registrations: list[types.Registration] = []
+    client.registrations = registrations  # type: ignore[attr-defined]
+
+    @client.feature(types.CLIENT_REGISTER_CAPABILITY)
+    def register_capability(params: types.RegistrationParams) -> None:
+        registrations.extend(params.registrations)
+
     result = await client.initialize_session(
         types.InitializeParams(
-            capabilities=client_capabilities("visual-studio-code"),
+            capabilities=capabilities or client_capabilities("visual-studio-code"),
             root_uri=root.as_uri(),
             workspace_folders=[types.WorkspaceFolder(uri=root.as_uri(), name=root.name)],
             locale=locale,

@@ -124,6 +124,13 @@ class ProgramLibrary:
         loaded = self._files[path] = LoadedFile(path, lines, program, dialect_from_text(lines))
         return loaded
 
+    def read_from_disk(self) -> tuple[list[str], list[str]]:
+        """What this library's answers rest on: the files it read (or failed to read) from disk
+        and the folders it listed. Files registered by ``add_parsed`` are among the first: the
+        caller knows which of them it keeps itself."""
+        files = [p for p, f in self._files.items() if p not in self.texts and (f is None or not f.on_control)]
+        return files, [str(f) for f in self._listing]
+
     def _folder_files(self, folder: Path) -> list[Path]:
         files = self._listing.get(folder)
         if files is None:

@@ -13,6 +13,11 @@ version it was analysed at. A finding in a file that is not open (a macro called
 file) is published without a version, and cleared when a later result no longer has it. The
 first analysis of a huge file reports work-done progress. ``textDocument/diagnostic`` (pull)
 waits for the result of the document's current version.
+
+Files changed on disk that no editor event reports (``disk_watch.py``) are looked for when an
+analysis starts, on the worker thread, and every ``DISK_CHECK_SECONDS`` while documents are
+open: what changed goes through the server's ``disk_changed``, as a file event does, and the
+analysis starts again with it.
 """
 
 from __future__ import annotations
@@ -24,7 +29,7 @@ import time
 from collections.abc import Iterator
 from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, cast
 
 from lsprotocol import types
@@ -33,6 +38,7 @@ from ..analysis import Diagnostic
 from ..analysis.workspace import AnalysisResult, Value, WorkspaceAnalysis
 from ..library.machine_file import MachineSettings
 from .collector import QUIET_SECONDS, Collector
+from .disk_watch import DiskStamps
 from .documents import Edit, OpenDocument, uri_to_path
 from .protocol_diagnostics import to_lsp
 
@@ -48,6 +54,7 @@ DEBOUNCE_SECONDS = 0.0  # edits are coalesced by cancelling: a newer one stops t
 BURST_SECONDS = 0.05
 PROGRESS_LINES = 20_000  # a first analysis of a file this long reports progress
 PULL_TIMEOUT = 60.0  # seconds a pull waits for the analysis of the current version
+DISK_CHECK_SECONDS = 2.0  # between looks at the files the analysis read, while documents are open
 
 LineValues = dict[int, list[tuple[int, Value]]]
 
@@ -64,6 +71,7 @@ class Outcome:
     items: dict[str, list[types.Diagnostic]]
     values: dict[str, LineValues]
     payloads: dict[str, list[dict[str, object]]]  # the items in their JSON form, as published
+    on_disk: list[str] = field(default_factory=list)  # files changed on disk: nothing analysed, read them first
 
 
 class DiagnosticsEngine:
@@ -88,6 +96,8 @@ class DiagnosticsEngine:
         self.collector = Collector()
         self._cleaning = False
         self._opened_at = (0.0, 0.0)  # when the last two documents were opened or closed (monotonic)
+        self.disk = DiskStamps()  # the files the analysis read, for the changes no editor event reports
+        self._disk_checks: asyncio.Task[None] | None = None
 
     # ---- setting up
     def start(self, machine: MachineSettings | None, folders: list[str], locale: str) -> None:
@@ -189,6 +199,9 @@ class DiagnosticsEngine:
         finally:
             if token is not None:
                 self.server.work_done_progress.end(token, types.WorkDoneProgressEnd(message="done"))
+        if outcome is not None and outcome.on_disk:
+            self.server.disk_changed(outcome.on_disk)  # read them, and analyse again
+            return
         if outcome is None or outcome.generation != self.generation:
             return  # cancelled, or a newer change came: its own run publishes
         self._publish(outcome)
@@ -221,6 +234,9 @@ class DiagnosticsEngine:
         def cancelled() -> bool:
             return self.generation != generation
 
+        on_disk = self.disk.changed() if self.server.documents.by_uri else []
+        if on_disk:
+            return Outcome(generation, {}, {}, {}, {}, {}, on_disk)
         with self.lock:
             if cancelled():
                 return None
@@ -228,15 +244,45 @@ class DiagnosticsEngine:
             if not docs:
                 return Outcome(generation, {}, {}, {}, {}, {})
             new_documents = any(d.uri not in self._analysed_once for d in docs)
+            started = time.time_ns()
             with self.collector.paused():
                 try:
                     result = self.analysis.analyze(docs[0].path, cancelled)
                 except Exception:  # a fault in the analysis must not stop the server
                     log.exception("the analysis failed")
                     result = None
-                outcome = None if result is None else self._outcome(generation, docs, result)
+                try:
+                    outcome = None if result is None else self._outcome(generation, docs, result)
+                finally:
+                    self._record_reads(started)
                 self.collector.settle(new_documents and outcome is not None)  # before the collector runs again
         return outcome
+
+    def _record_reads(self, started: int) -> None:
+        """Keep the stamps of the files the analysis has read from disk (not the open ones)."""
+        library = self.analysis.library
+        files, folders = library.read_from_disk()
+        own = self.analysis.docs
+        self.disk.record(library, [*(f for f in files if f not in own), *folders], started)
+
+    # ---- files changed on disk that no event reports
+    def check_disk_now_and_then(self) -> None:
+        """Look at the files the analysis read every ``DISK_CHECK_SECONDS`` from now on."""
+        if self._disk_checks is None:
+            self._disk_checks = asyncio.get_event_loop().create_task(self._check_disk())
+
+    async def _check_disk(self) -> None:
+        loop = asyncio.get_running_loop()
+        while True:
+            await asyncio.sleep(DISK_CHECK_SECONDS)
+            if not self.server.documents.by_uri:
+                continue
+            try:
+                changed = await loop.run_in_executor(self._executor, self.disk.changed)
+                if changed:
+                    self.server.disk_changed(changed)
+            except Exception:  # a fault here must not end the checks
+                log.exception("looking at the files on disk failed")
 
     def _outcome(self, generation: int, docs: list[OpenDocument], result: AnalysisResult) -> Outcome:
         ws = self.analysis

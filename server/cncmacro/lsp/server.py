@@ -11,8 +11,10 @@ from __future__ import annotations
 
 import asyncio
 import logging
+import os
 import sys
 import threading
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
@@ -28,6 +30,7 @@ from ..dialects.registry import profile_facts
 from ..library.machine_file import MACHINE_FILE_NAME, MachineSettings
 from ..syntax.block_parser import warm_up
 from .diagnostics import DiagnosticsEngine
+from .disk_watch import watch_registration
 from .documents import Documents, uri_to_path
 from .positions import negotiate
 from .settings import SECTION, Settings, machine_settings, merged_severities, valid_severities
@@ -114,6 +117,7 @@ class CncMacroServer(LanguageServer):
         self.diagnostics = DiagnosticsEngine(self)
         self.settings_ready = asyncio.Event()  # set once the editor's settings were asked for
         self.roots: list[str] = []
+        self.watching: asyncio.Future[None] | None = None  # the request for the editor's file watcher
 
     # ---- settings
     def severity_overrides(self) -> dict[str, str]:
@@ -136,6 +140,23 @@ class CncMacroServer(LanguageServer):
                 return doc.uri
         return from_fs_path(path) or path
 
+    def disk_changed(self, paths: Iterable[str]) -> None:
+        """Files or folders changed on disk (the editor's file events, or what ``disk_watch``
+        found): what is there now is read again (a regular file only), the machine file too,
+        and the open documents are analysed again. A path named twice (two watchers of one
+        editor) is read once."""
+        unique = list(dict.fromkeys(paths))
+        self.diagnostics.disk.seen(unique)
+        for path in unique:
+            if os.path.isdir(path):
+                self.index.refresh_folder(path)
+            else:
+                self.index.reload(path)
+        if any(Path(p).name == MACHINE_FILE_NAME for p in unique):  # its settings and dialect
+            self.machine = machine_settings(self.roots[0]) if self.roots else None
+            self.apply_settings(self.settings)
+        self.diagnostics.files_changed(unique)
+
     def report_server_error(self, error: Exception, source: Any) -> None:
         log.error("cncmacro language server: %s: %s", type(error).__name__, error)
 
@@ -153,6 +174,7 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
     server.documents.workspace_dialect = server.machine.dialect if server.machine else None
     server.documents.machine = server.machine
     server.roots = roots
+    server.diagnostics.disk.set_roots(roots)
     server.index.scan(roots)
     # the grammar parser is built meanwhile, so the first unfinished line typed does not wait for it
     threading.Thread(target=warm_up, name="cncmacro-grammar", daemon=True).start()
@@ -161,12 +183,30 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
 
 
 async def _initialized(server: CncMacroServer, params: types.InitializedParams) -> None:
+    server.watching = asyncio.ensure_future(_register_file_watchers(server))
+    server.diagnostics.check_disk_now_and_then()
     try:
         await asyncio.wait_for(_pull_configuration(server), CONFIGURATION_TIMEOUT)
     except asyncio.TimeoutError:
         log.info("workspace/configuration: no answer; using the initialization options")
     finally:
         server.settings_ready.set()
+
+
+async def _register_file_watchers(server: CncMacroServer) -> None:
+    """Ask an editor that can register watchers at run time for one on the program files and
+    the machine file (``disk_watch.py``); once it agreed, its events are trusted for the files
+    under the workspace folders."""
+    caps = server.client_capabilities.workspace
+    watched = caps.did_change_watched_files if caps is not None else None
+    if watched is None or not watched.dynamic_registration:
+        return
+    try:
+        await server.client_register_capability_async(watch_registration())
+    except Exception as e:  # refused: the files the analysis reads are looked at instead
+        log.info("client/registerCapability for file watching failed: %s", e)
+        return
+    server.diagnostics.disk.evented = True
 
 
 async def _pull_configuration(server: CncMacroServer) -> None:
@@ -232,25 +272,13 @@ def build_server() -> CncMacroServer:
 
     @server.feature(types.WORKSPACE_DID_CHANGE_WATCHED_FILES)
     def did_change_watched_files(ls: CncMacroServer, params: types.DidChangeWatchedFilesParams) -> None:
-        paths = []
-        machine_file = False
-        for change in params.changes:
-            path = uri_to_path(change.uri)
-            paths.append(path)
-            machine_file = machine_file or Path(path).name == MACHINE_FILE_NAME
-            if change.type == types.FileChangeType.Deleted:
-                ls.index.drop(path)
-            else:
-                ls.index.reload(path)
-        if machine_file:  # the workspace's .cncmacro.toml: its settings and dialect
-            ls.machine = machine_settings(ls.roots[0]) if ls.roots else None
-            ls.apply_settings(ls.settings)
-        ls.diagnostics.files_changed(paths)
+        ls.disk_changed(uri_to_path(change.uri) for change in params.changes)
 
     @server.feature(types.WORKSPACE_DID_CHANGE_WORKSPACE_FOLDERS)
     def did_change_workspace_folders(ls: CncMacroServer, params: types.DidChangeWorkspaceFoldersParams) -> None:
         gone = {uri_to_path(f.uri) for f in params.event.removed}
         ls.roots = [r for r in ls.roots if r not in gone] + [uri_to_path(f.uri) for f in params.event.added]
+        ls.diagnostics.disk.set_roots(ls.roots)
         ls.index.scan(ls.roots)
         ls.diagnostics.folders_changed(ls.roots)
 

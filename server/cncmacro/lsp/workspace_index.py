@@ -1,15 +1,18 @@
 """The index of program files across the workspace, kept fresh by file events.
 
 At start every program file under the workspace folders is read and parsed once (through the
-program library's ``load_text``, with the shared block cache). ``workspace/didChangeWatchedFiles``
-reloads or drops single files. Open documents take the place of their file on disk, so every
-question (which programs exist, where ``#100`` is written, who calls O9100) sees the editor's
-text. Program lookup for a call goes through ``library.programs.ProgramLibrary``.
+program library's ``load_text``, with the shared block cache). A file changed on disk (an
+editor's file event, or ``disk_watch.py``) is read again, or dropped when it is gone; only a
+regular file is ever opened (a FIFO named ``O1234.nc`` would wait for a writer). Open
+documents take the place of their file on disk, so every question (which programs exist,
+where ``#100`` is written, who calls O9100) sees the editor's text. Program lookup for a call
+goes through ``library.programs.ProgramLibrary``.
 """
 
 from __future__ import annotations
 
 import logging
+import os
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -53,9 +56,12 @@ class WorkspaceIndex:
         return len(self.files)
 
     def reload(self, path: str) -> None:
-        """Read one file again (created or changed on disk)."""
+        """Read one file again (created, changed or deleted on disk)."""
         if not is_program_file(Path(path)) or not any(stays_inside(Path(path), r) for r in self.roots):
             return  # only program files under the workspace folders are read
+        if not Path(path).is_file():  # gone, or not a regular file: never opened
+            self.files.pop(path, None)
+            return
         try:
             text = read_program(path).text
         except (OSError, BinaryFileError) as e:
@@ -64,8 +70,19 @@ class WorkspaceIndex:
             return
         self.files[path] = load_text(path, text)
 
-    def drop(self, path: str) -> None:
-        self.files.pop(path, None)
+    def refresh_folder(self, folder: str) -> None:
+        """A folder's entries changed: its program files that are new are read, the ones gone
+        dropped (the others are read again by their own change)."""
+        here = Path(folder)
+        try:
+            names = os.listdir(here)
+        except OSError:
+            names = []
+        present = {str(here / n) for n in names if not n.startswith(".") and is_program_file(here / n)}
+        for path in [p for p in self.files if Path(p).parent == here and p not in present]:
+            del self.files[path]
+        for path in sorted(present - self.files.keys()):
+            self.reload(path)
 
     # ---- views
     def loaded_files(self) -> Iterator[LoadedFile]:

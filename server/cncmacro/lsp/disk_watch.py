@@ -1,0 +1,135 @@
+"""Files changed on disk: the file watchers the server asks the editor for, and, where no
+editor event can come, the files the analysis read, looked at by time and size.
+
+An editor that can register watchers at run time (``workspace.didChangeWatchedFiles.
+dynamicRegistration``) is asked for one on every program file (the endings of
+``library.files.PROGRAM_SUFFIXES`` in any case, and ``O1234`` names) and on the machine file,
+``.cncmacro.toml``; its events then say what changed under the workspace folders.
+
+Every other change is found by ``DiskStamps``: it keeps (file type, modification time, size) of
+each file the analysis read from disk and each folder it listed, plus the places the machine
+file is looked for, and ``changed`` names those that differ. That is a handful of ``stat`` calls
+(the programs the open ones call, not the workspace), made when an analysis starts and now and
+then while documents are open. With the editor's watcher in force, only the paths outside the
+workspace folders (which no watcher covers) are looked at.
+"""
+
+from __future__ import annotations
+
+import os
+import stat
+import time
+import weakref
+from collections.abc import Iterable
+from pathlib import Path
+
+from lsprotocol import types
+
+from ..library.files import PROGRAM_SUFFIXES, stays_inside
+from ..library.machine_file import MACHINE_FILE_NAME
+
+REGISTRATION_ID = "cncmacro-program-files"
+Stamp = tuple[int, int, int]  # (file type bits, modification time in ns, size)
+_UNKNOWN: Stamp = (-1, -1, -1)  # changed while it was read: read again at the next check
+
+
+def _any_case(text: str) -> str:
+    return "".join(f"[{c.lower()}{c.upper()}]" if c.isalpha() else c for c in text)
+
+
+def watch_globs() -> list[str]:
+    """The glob patterns of the program files and the machine file, in any case."""
+    endings = [f"**/*{_any_case(suffix)}" for suffix in sorted(PROGRAM_SUFFIXES)]
+    return [*endings, "**/[oO][0-9]*", f"**/{MACHINE_FILE_NAME}"]
+
+
+def watch_registration() -> types.RegistrationParams:
+    """The ``client/registerCapability`` request for the editor's file watcher."""
+    watchers = [types.FileSystemWatcher(glob_pattern=g) for g in watch_globs()]
+    return types.RegistrationParams(
+        registrations=[
+            types.Registration(
+                id=REGISTRATION_ID,
+                method=types.WORKSPACE_DID_CHANGE_WATCHED_FILES,
+                register_options=types.DidChangeWatchedFilesRegistrationOptions(watchers=watchers),
+            )
+        ]
+    )
+
+
+def stamp_of(path: str) -> Stamp | None:
+    """The path's file type, time and size (its links followed); None when it is not there."""
+    try:
+        st = os.stat(path)
+    except (OSError, ValueError):
+        return None
+    return (stat.S_IFMT(st.st_mode), st.st_mtime_ns, st.st_size)
+
+
+class DiskStamps:
+    """See the module docstring. ``record`` and ``changed`` run on the analysis thread."""
+
+    def __init__(self) -> None:
+        self.evented = False  # the editor's watcher reports the files under the workspace folders
+        self._roots: list[Path] = []
+        self._fixed: dict[str, Stamp | None] = {}  # where the machine file is looked for
+        self._stamps: dict[str, Stamp | None] = {}
+        self._inside: dict[str, bool] = {}
+        self._source: weakref.ref[object] | None = None  # the library that read the files
+
+    def set_roots(self, roots: list[str]) -> None:
+        """The workspace folders: the machine file is looked for in the first and above it."""
+        self._roots = [Path(r) for r in roots if r]
+        self._inside.clear()
+        self._fixed = {}
+        if self._roots:
+            first = self._roots[0].resolve()
+            for folder in (first, *first.parents):
+                path = str(folder / MACHINE_FILE_NAME)
+                self._fixed[path] = stamp_of(path)
+
+    def record(self, source: object, paths: Iterable[str], started_ns: int) -> None:
+        """After an analysis that started at ``started_ns``: ``paths`` are what ``source`` (the
+        analysis's program library) has read from disk. A path met before keeps its stamp
+        while the same library holds it; a new one is stamped now, as unknown when it was
+        changed since the analysis started (it may have been read before that change)."""
+        fresh = self._source is None or self._source() is not source
+        self._source = weakref.ref(source)
+        ended = time.time_ns()
+        old = {} if fresh else self._stamps
+        stamps: dict[str, Stamp | None] = {}
+        for path in paths:
+            if path in old:
+                stamps[path] = old[path]
+                continue
+            now = stamp_of(path)
+            stamps[path] = _UNKNOWN if now is not None and started_ns <= now[1] <= ended else now
+        self._stamps = stamps
+        self._inside = {p: v for p, v in self._inside.items() if p in stamps or p in self._fixed}
+
+    def seen(self, paths: list[str]) -> None:
+        """``paths`` are about to be read again (an editor's event named them): their stamps
+        are taken now, so that the next look does not find the same change again."""
+        for kept in (self._fixed, self._stamps):
+            for path in paths:
+                if path in kept:
+                    kept[path] = stamp_of(path)
+
+    def changed(self) -> list[str]:
+        """The paths whose stamp differs from the one kept (their new stamps kept now)."""
+        out = []
+        for kept in (self._fixed, self._stamps):
+            for path, before in kept.items():
+                if self.evented and self._under_roots(path):
+                    continue
+                now = stamp_of(path)
+                if now != before:
+                    kept[path] = now
+                    out.append(path)
+        return out
+
+    def _under_roots(self, path: str) -> bool:
+        inside = self._inside.get(path)
+        if inside is None:
+            inside = self._inside[path] = any(stays_inside(Path(path), r) for r in self._roots)
+        return inside
