@@ -130,6 +130,9 @@ def load_machine_file(path: str | Path) -> MachineSettings:
                                       f"{p}：无法读取机床设置文件（{reason}）")) from e  # fmt: skip
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:
         raise MachineFileError(detail(f"{p}: not a valid TOML file: {e}", f"{p}：不是有效的 TOML 文件：{e}")) from e
+    except RecursionError:
+        raise MachineFileError(detail(f"{p}: not a valid TOML file: nested too deeply",
+                                      f"{p}：不是有效的 TOML 文件：嵌套层数过多")) from None  # fmt: skip
     return settings_from_mapping(data, str(p), folder=str(p.parent))
 
 
