@@ -1,12 +1,16 @@
 // `cncmacro dap` at the edges, through a real DAP client: a second launch while a program runs
 // is refused and the first stays in reach; a message nested too deeply to read is refused and
-// the adapter goes on; a run without debugging that prints without end keeps its memory.
+// the adapter goes on; a run without debugging that prints without end keeps its memory; a
+// session that saves #500-#999 has them until it ends, and a `cncmacro run` meanwhile waits.
 'use strict';
 
 const assert = require('node:assert/strict');
+const cp = require('node:child_process');
 const fs = require('node:fs');
+const os = require('node:os');
+const path = require('node:path');
 const { afterEach, beforeEach, describe, test } = require('node:test');
-const { CncMacroClient, program } = require('./client.js');
+const { CncMacroClient, program, ROOT } = require('./client.js');
 
 let dc;
 
@@ -54,5 +58,29 @@ describe('the edges of the adapter', () => {
     assert.ok(dc.output.includes('LINE'), 'the printed lines reach the console');
     const peak = residentMb(pid, 'VmHWM');
     assert.ok(peak - start < 40, `the adapter grew from ${start.toFixed(0)} to ${peak.toFixed(0)} MB`);
+  });
+
+  test('a session that saves #500 has them until it ends: a cncmacro run meanwhile waits and says so', async () => {
+    const folder = fs.mkdtempSync(path.join(os.tmpdir(), 'cncmacro-dap-'));
+    const main = path.join(folder, 'O0001.nc');
+    fs.writeFileSync(main, 'O0001\n#500=#500+1\nM30\n');
+    const run = () => cp.spawnSync(path.join(ROOT, '.venv', 'bin', 'python'),
+      ['-m', 'cncmacro', 'run', '--wait', '0.2', main], { encoding: 'utf8', timeout: 30000 });
+    try {
+      await dc.begin({ program: main, stopOnEntry: true, noSave: false });
+      await dc.step('nextRequest');
+      const waited = run();
+      assert.equal(waited.status, 2, waited.stdout);
+      assert.match(waited.stderr, /in use by another run or debug session \(process \d+\)/);
+      const terminated = dc.waitForEvent('terminated');
+      await dc.terminateRequest({});
+      await terminated;
+      const after = run();
+      assert.equal(after.status, 0, after.stderr);
+      const saved = JSON.parse(fs.readFileSync(path.join(folder, '.cncmacro-vars.json'), 'utf8'));
+      assert.deepEqual(saved.variables, { 500: 2 });
+    } finally {
+      fs.rmSync(folder, { recursive: true, force: true });
+    }
   });
 });

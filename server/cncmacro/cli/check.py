@@ -10,13 +10,13 @@ error was found, 1 when one was, 2 on bad usage or unreadable input (a missing p
 file, a bad machine file). Unreadable files are named on standard error; the others are still
 checked. ``--locale zh-CN`` writes the messages and what goes to standard error in Chinese; the
 format around them (``file:line:col: severity: message [code]``, the JSON and SARIF keys and
-values other than the message) is a contract and stays as it is.
+values other than the message) is a contract and stays as it is. Control characters in file
+names and messages are shown escaped in the text output and on standard error (``terminal``).
 """
 
 from __future__ import annotations
 
 import argparse
-import json
 import logging
 import sys
 from collections.abc import Callable
@@ -33,6 +33,7 @@ from ..bilingual import in_language
 from ..library.files import BinaryFileError, find_program_files, read_program
 from ..library.machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
 from .sarif import to_sarif
+from .terminal import Printable, json_text, printable
 
 log = logging.getLogger(__name__)
 
@@ -52,6 +53,7 @@ def check_paths(
 ) -> int:
     """Check every program file under ``paths``; print the findings; return the exit status."""
     chinese = is_chinese(locale)
+    err = Printable(err)  # type: ignore[assignment]
     if max_blocks is not None and max_blocks < 1:
         print(pick(locale, "cncmacro check: --max-blocks must be at least 1", "cncmacro check：--max-blocks 至少为 1"),
               file=err)  # fmt: skip
@@ -100,14 +102,12 @@ def check_paths(
         diagnostics = [d for d in diagnostics if d.severity != "hint"]
     diagnostics.sort(key=Diagnostic.sort_key)
     if fmt == "json":
-        json.dump([_as_json(d) for d in diagnostics], out, ensure_ascii=False, indent=2)
-        out.write("\n")
+        out.write(json_text([_as_json(d) for d in diagnostics], indent=2) + "\n")
     elif fmt == "sarif":
-        json.dump(to_sarif(diagnostics, __version__), out, ensure_ascii=False, indent=2)
-        out.write("\n")
+        out.write(json_text(to_sarif(diagnostics, __version__), indent=2) + "\n")
     else:
         for d in diagnostics:
-            out.write(f"{d.file}:{d.line + 1}:{d.column + 1}: {d.severity}: {d.message} [{d.code}]\n")
+            out.write(printable(f"{d.file}:{d.line + 1}:{d.column + 1}: {d.severity}: {d.message} [{d.code}]") + "\n")
     if unreadable:
         return 2
     return 1 if any(d.severity == "error" for d in diagnostics) else 0

@@ -4,12 +4,12 @@ that picks one by its name or an alias (``fanuc`` is ``fanuc-0i``)."""
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 from typing import Any
 
 from ..dialects import DEFAULT_DIALECT, DIALECTS, normalise_dialect
 from ..dialects.registry import profile_facts
+from .terminal import json_text
 
 
 def profile_argument(text: str) -> str:
@@ -36,8 +36,7 @@ def add_profiles_parser(sub: Any) -> None:
 def main_profiles(args: argparse.Namespace) -> int:
     facts = profile_facts()
     if args.json:
-        json.dump(facts, sys.stdout, ensure_ascii=False, indent=1)
-        sys.stdout.write("\n")
+        sys.stdout.write(json_text(facts, indent=1) + "\n")
         return 0
     for f in facts:
         kind = "lathe" if f["lathe"] else "mill"

@@ -6,13 +6,14 @@ object. ``--locale zh-CN`` writes the text output in Chinese, its fixed words an
 interpreter's alarm details and notes alike (in the JSON only the details and notes: its keys
 and status words are a contract and stay English). Exit status: 0 when the program completed, 1 on
 an alarm, 3 when the block budget ran out (a likely endless loop), 2 on bad usage or an
-unreadable file or machine file.
+unreadable file or machine file (and when another run or debug session kept the persistent
+variables for longer than ``--wait`` seconds). Texts go to the terminal through ``terminal``:
+control characters in them are shown escaped, never sent raw.
 """
 
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 from pathlib import Path
 from typing import Any, TextIO
@@ -24,8 +25,10 @@ from ..machine import Machine, RunResult
 from ..machine.frames import MODE_NAMES, Move
 from ..machine.machine import ALARM, LIMIT, PAUSED
 from ..machine.numbers import format_plain
+from ..machine.persistence_lock import LOCK_WAIT
 from ..machine.setup import prepare_run
 from .profiles import add_dialect_option
+from .terminal import Printable, json_text
 
 MAX_TEXT_MOVES = 1000
 STATUS_ZH = {"completed": "完成", "alarm": "报警", "limit": "达到程序段数上限", "stopped": "停止"}
@@ -61,6 +64,11 @@ def add_run_parser(sub: Any) -> None:
         "--no-save", action="store_true", help="do not write #500-#999 back to the persistent-variable file"
     )
     run.add_argument(
+        "--wait", type=float, default=LOCK_WAIT, metavar="SECONDS",
+        help="how long to wait for another run or debug session that is using the persistent variables "
+             f"(default {LOCK_WAIT:g})",
+    )  # fmt: skip
+    run.add_argument(
         "--stdin", action="store_true",
         help="read the program from standard input (an editor's unsaved text); FILE still names it",
     )  # fmt: skip
@@ -68,18 +76,24 @@ def add_run_parser(sub: Any) -> None:
 
 
 def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | None = None) -> int:
+    """Run the program; text goes to ``out`` with control characters escaped."""
     out = out or sys.stdout
-    err = err or sys.stderr
+    err = Printable(err or sys.stderr)
     path = Path(args.file)
     if args.max_blocks is not None and args.max_blocks < 1:
         print(pick(args.locale, "cncmacro run: --max-blocks must be at least 1", "cncmacro run：--max-blocks 至少为 1"),
               file=err)  # fmt: skip
+        return 2
+    if not 0 <= args.wait <= 86400:
+        print(pick(args.locale, "cncmacro run: --wait must be from 0 to 86400 seconds",
+                   "cncmacro run：--wait 必须在 0 到 86400 秒之间"), file=err)  # fmt: skip
         return 2
     try:
         presets = dict(parse_preset(s) for s in args.set)
         prepared = prepare_run(
             path, machine_file=args.machine, dialect=args.dialect, presets=presets,
             search_paths=[Path(p) for p in args.path], data=sys.stdin.buffer.read() if args.stdin else None,
+            saving=not args.no_save, wait=args.wait,
         )  # fmt: skip
     except ValueError as e:
         if is_chinese(args.locale) and e.args:
@@ -90,11 +104,15 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
     machine = prepared.machine
     dialect = machine.dialect
     budget = args.max_blocks if args.max_blocks is not None else machine.settings.max_blocks
-    while True:
-        status = machine.run(budget - machine.blocks)  # 0 left (a pause on the last block): limit
-        if status != PAUSED:
-            break
-        machine.resume()  # M00 and #3006 pause a machine; a simulation goes on
+    try:
+        while True:
+            status = machine.run(budget - machine.blocks)  # 0 left (a pause on the last block): limit
+            if status != PAUSED:
+                break
+            machine.resume()  # M00 and #3006 pause a machine; a simulation goes on
+    except BaseException:
+        prepared.release()
+        raise
     if not args.no_save:
         try:
             prepared.save()
@@ -106,7 +124,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
         head = {"dialect": dialect.name, "lathe": dialect.lathe}
         write_json({**head, **result_json(result, dialect.axes, args.locale)}, out)
     else:
-        write_text(result, machine, out, args.locale)
+        write_text(result, machine, Printable(out), args.locale)  # type: ignore[arg-type]
     return {ALARM: 1, LIMIT: 3}.get(result.status, 0)
 
 
@@ -155,13 +173,13 @@ def write_json(result: dict[str, Any], out: TextIO) -> None:
     out.write("{\n")
     items = list(result.items())
     for k, (key, value) in enumerate(items):
-        out.write(f" {json.dumps(key)}: ")
+        out.write(f" {json_text(key)}: ")
         if key == "moves" and value:
             out.write("[\n")
-            out.write(",\n".join("  " + json.dumps(mv, ensure_ascii=False) for mv in value))
+            out.write(",\n".join("  " + json_text(mv) for mv in value))
             out.write("\n ]")
         else:
-            out.write(json.dumps(value, ensure_ascii=False, indent=1).replace("\n", "\n "))
+            out.write(json_text(value, indent=1).replace("\n", "\n "))
         out.write(",\n" if k < len(items) - 1 else "\n")
     out.write("}\n")
 

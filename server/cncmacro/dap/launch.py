@@ -9,7 +9,9 @@ final state can be looked at and stepped back from; default true) and ``noDebug`
 Without Debugging": no stop at all, neither on entry, at breakpoints, alarms nor the end).
 The machine is set up as ``cncmacro run`` sets it up: the dialect comment in the file wins,
 then the machine file, then the configuration, then fanuc; presets come after the persistent
-variables. Every mistake is a ``LaunchError`` with a message for the person.
+variables; a launch that saves them holds their lock until the session saves them (at its
+end, or a restart), so a ``cncmacro run`` meanwhile waits for it. Every mistake is a
+``LaunchError`` with a message for the person.
 """
 
 from __future__ import annotations
@@ -107,8 +109,10 @@ class Launched:
         return self.prepared.machine
 
     def save(self) -> str | None:
-        """Write ``#500–#999`` back unless ``noSave``; an error message when that failed."""
+        """Write ``#500–#999`` back unless ``noSave`` and let the next run have them (a launch
+        that saves holds their lock until then); an error message when that failed."""
         if self.config.no_save:
+            self.prepared.release()
             return None
         try:
             self.prepared.save()
@@ -122,7 +126,7 @@ def launch(config: LaunchConfig) -> Launched:
     try:
         prepared = prepare_run(
             config.program, machine_file=config.machine_file, dialect=config.dialect, presets=config.presets,
-            block_delete=config.block_delete, max_blocks=config.max_blocks,
+            block_delete=config.block_delete, max_blocks=config.max_blocks, saving=not config.no_save,
         )  # fmt: skip
     except SetupError as e:
         raise LaunchError(e.args[0] if e.args else str(e)) from None  # a Detail keeps its Chinese

@@ -129,7 +129,7 @@ class MessageWriter:
     def send(self, message: Response | Event) -> None:
         with self.lock:
             self.seq += 1
-            payload = json.dumps(message.to_json(self.seq), ensure_ascii=False).encode("utf-8")
+            payload = json.dumps(message.to_json(self.seq), ensure_ascii=False, allow_nan=False).encode("utf-8")
             try:
                 self.stream.write(b"Content-Length: %d\r\n\r\n" % len(payload) + payload)
                 self.stream.flush()

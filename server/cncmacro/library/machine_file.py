@@ -39,6 +39,8 @@ Errors are reported as ``MachineFileError`` with the file and the key, never as 
 from __future__ import annotations
 
 import itertools
+import math
+import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path, PureWindowsPath
 
@@ -97,11 +99,23 @@ class MachineSettings:
         return replace(self, variables=merged)
 
     def persistent_path(self) -> Path | None:
+        """Where ``persistent_file`` is. Its folders and the file itself are followed where they
+        are links, and what they lead to must still be inside the machine file's folder (the
+        key was checked as written when the file was read): ``MachineFileError`` otherwise."""
         if self.persistent_file is None:
             return None
         p = Path(self.persistent_file)
-        if not p.is_absolute() and self.folder:
-            p = Path(self.folder) / p
+        if p.is_absolute() or not self.folder:
+            return p
+        p = Path(self.folder) / p
+        root = Path(os.path.realpath(self.folder))
+        target = Path(os.path.realpath(p))
+        if not target.is_relative_to(root):
+            raise MachineFileError(detail(
+                f"'persistent_file' {self.persistent_file!r} leads through a link to {target}, "
+                f"outside the machine file's folder {root}",
+                f"'persistent_file' {self.persistent_file!r} 经链接指向 {target}，"
+                f"在机床设置文件所在文件夹 {root} 之外"))  # fmt: skip
         return p
 
 
@@ -116,6 +130,9 @@ def load_machine_file(path: str | Path) -> MachineSettings:
                                       f"{p}：无法读取机床设置文件（{reason}）")) from e  # fmt: skip
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:
         raise MachineFileError(detail(f"{p}: not a valid TOML file: {e}", f"{p}：不是有效的 TOML 文件：{e}")) from e
+    except RecursionError:
+        raise MachineFileError(detail(f"{p}: not a valid TOML file: nested too deeply",
+                                      f"{p}：不是有效的 TOML 文件：嵌套层数过多")) from None  # fmt: skip
     return settings_from_mapping(data, str(p), folder=str(p.parent))
 
 
@@ -195,8 +212,11 @@ def settings_from_mapping(
         kw["calls"] = _calls(data["calls"], fail)
     if "skip" in data:
         s = data["skip"]
-        if not isinstance(s, dict) or not all(isinstance(v, (int, float)) for v in s.values()):
-            raise fail("skip", detail("must map axis letters to positions", "必须是 轴地址 = 位置 形式的表"))
+        if not isinstance(s, dict) or not all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in s.values()
+        ):
+            raise fail("skip", detail("must map axis letters to positions (finite numbers)",
+                                      "必须是 轴地址 = 位置（有限的数值）形式的表"))  # fmt: skip
         kw["skip"] = {str(k).upper(): float(v) for k, v in s.items()}
     if "severity" in data:
         kw["severity"] = _severity(data["severity"], fail)
@@ -315,8 +335,8 @@ def _variables(table: object, fail) -> dict[int, float]:  # type: ignore[no-unty
         key = str(k).lstrip("#")
         if not key.isdigit():
             raise fail(f"variables.{k}", detail("is not a variable number", "不是变量号"))
-        if not isinstance(v, (int, float)) or isinstance(v, bool):
-            raise fail(f"variables.{k}", detail("must be a number", "必须是数值"))
+        if not isinstance(v, (int, float)) or isinstance(v, bool) or not math.isfinite(v):
+            raise fail(f"variables.{k}", detail("must be a finite number", "必须是有限的数值"))
         out[int(key)] = float(v)
     return out
 

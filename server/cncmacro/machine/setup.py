@@ -4,14 +4,18 @@ The machine file is the one given, else the nearest ``.cncmacro.toml`` above the
 the dialect follows docs/design.md's chain (the file's ``(cncmacro: dialect=..)`` comment, then
 the machine file, then the caller's setting, then fanuc); ``#500–#999`` come from the
 persistent file (the machine file's ``persistent_file``, else ``.cncmacro-vars.json`` beside
-the program) and the presets are applied after them. Every mistake a person can make here
+the program; a link to it is followed) and the presets are applied after them. A run that
+will save them holds the file's lock (``persistence_lock``) from before it reads them until
+``PreparedRun.save`` has written them back, so runs that share the file take turns; values in
+the file that this machine does not hold (the 30i's ``#98000–`` under a 0i profile) are
+written back as they were. Every mistake a person can make here
 (an unreadable or binary program, a bad machine file, a damaged persistent file, a preset of
 a variable that cannot be preset) is a ``SetupError`` whose message says what is wrong.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from ..bilingual import detail, in_language
@@ -27,7 +31,8 @@ from ..library.machine_file import (
 )
 from ..library.programs import ProgramLibrary
 from .machine import Machine
-from .persistence import PersistentFileError, load_persistent, save_persistent
+from .persistence import PersistentFileError, load_persistent, persistent_target, save_persistent
+from .persistence_lock import LOCK_WAIT, PersistentLock, lock_persistent
 
 
 class SetupError(ValueError):
@@ -40,10 +45,26 @@ class PreparedRun:
 
     machine: Machine
     persistent_file: Path
+    kept: dict[int, float] = field(default_factory=dict)  # the file's values this machine does not hold
+    lock: PersistentLock | None = None
+    saved: bool = False
 
     def save(self) -> None:
-        """Write ``#500–#999`` back atomically (``OSError`` passes through)."""
-        save_persistent(self.persistent_file, self.machine.persistent_values())
+        """Write ``#500–#999`` back atomically, once, and let the next run have the file
+        (``OSError`` passes through)."""
+        if self.saved:
+            return
+        self.saved = True
+        try:
+            save_persistent(self.persistent_file, {**self.kept, **self.machine.persistent_values()})
+        finally:
+            self.release()
+
+    def release(self) -> None:
+        """Let the next run have the file without writing it."""
+        if self.lock is not None:
+            self.lock.release()
+            self.lock = None
 
 
 def machine_settings(program: Path, machine_file: Path | str | None = None) -> MachineSettings:
@@ -67,10 +88,14 @@ def prepare_run(
     block_delete: bool | None = None,
     max_blocks: int | None = None,
     data: bytes | None = None,
+    saving: bool = True,
+    wait: float = LOCK_WAIT,
 ) -> PreparedRun:
     """Read ``program`` and its machine settings and start a machine at its first block.
     ``data`` is the program's content when it does not come from the file (an editor's unsaved
-    text): the file's path still names it and says where its called programs are."""
+    text): the file's path still names it and says where its called programs are. A run that
+    is ``saving`` waits at most ``wait`` seconds for the persistent file's lock and holds it
+    until ``save`` or ``release``."""
     try:
         source = read_program(program) if data is None else decode_program(data, str(program))
     except (OSError, BinaryFileError) as e:
@@ -89,11 +114,23 @@ def prepare_run(
     machine = Machine(get_dialect(chosen), settings, ProgramLibrary(search_paths or []))
     if machine.preset_problems:
         raise SetupError(machine.preset_problems[0])
-    persistent = settings.persistent_path() or (program.parent / PERSISTENT_FILE_NAME)
     try:
-        machine.load_persistent(load_persistent(persistent))
+        persistent = persistent_target(settings.persistent_path() or (program.parent / PERSISTENT_FILE_NAME), saving)
+        lock = lock_persistent(persistent, wait) if saving else None
+    except (MachineFileError, PersistentFileError) as e:
+        raise SetupError(e.args[0]) from None  # keeps a Chinese text
+    prepared = PreparedRun(machine, persistent, lock=lock)
+    try:
+        stored = load_persistent(persistent)
+        held = set(machine.kinds.persistent_numbers())
+        prepared.kept = {n: v for n, v in stored.items() if n not in held}
+        machine.load_persistent(stored)
         machine.apply_presets(presets or {})
+        machine.start_file(str(program), source.text)
     except (PersistentFileError, ValueError) as e:
+        prepared.release()
         raise SetupError(e.args[0] if e.args else str(e)) from None  # keeps a Chinese text
-    machine.start_file(str(program), source.text)
-    return PreparedRun(machine, persistent)
+    except BaseException:
+        prepared.release()
+        raise
+    return prepared
