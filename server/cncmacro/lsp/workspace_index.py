@@ -14,7 +14,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..library.files import BinaryFileError, find_program_files, is_program_file, read_program, stays_inside
+from ..library.files import BinaryFileError, ReadScope, find_program_files
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary, load_text
 from .documents import Documents, OpenDocument
 
@@ -54,10 +54,8 @@ class WorkspaceIndex:
 
     def reload(self, path: str) -> None:
         """Read one file again (created or changed on disk)."""
-        if not is_program_file(Path(path)) or not any(stays_inside(Path(path), r) for r in self.roots):
-            return  # only program files under the workspace folders are read
         try:
-            text = read_program(path).text
+            text = ReadScope.of(self.roots).read(path).text  # program files under the workspace folders only
         except (OSError, BinaryFileError) as e:
             log.info("not indexed: %s", e)
             self.files.pop(path, None)
