@@ -6,6 +6,7 @@ clean error from the command line) and never a crash, a RecursionError or a hang
 from __future__ import annotations
 
 import json
+import os
 import random
 import subprocess
 import sys
@@ -74,6 +75,18 @@ def test_a_binary_file_is_named_and_skipped_while_the_others_are_checked(tmp_pat
     assert r.returncode == 2
     assert "O0002.nc: binary file" in r.stderr
     assert "O0003.nc:2:" in r.stdout and "[syntax]" in r.stdout
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="needs named pipes")
+@pytest.mark.parametrize("command", ["check", "run"])
+def test_a_pipe_or_a_device_named_on_the_command_line_is_refused_at_once(tmp_path: Path, command: str) -> None:
+    pipe = tmp_path / "O0004.nc"
+    os.mkfifo(pipe)
+    for path in (str(pipe), os.devnull):
+        r = subprocess.run([sys.executable, "-m", "cncmacro", command, path], capture_output=True, text=True,
+                           timeout=20)  # fmt: skip
+        assert r.returncode == 2, r
+        assert f"{path}: not a regular file" in r.stderr
 
 
 def test_nul_bytes_in_an_open_document_are_syntax_errors_on_their_lines(tmp_path: Path, lsp_target: LspTarget) -> None:

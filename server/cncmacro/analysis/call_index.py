@@ -27,7 +27,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..library.dialect_choice import choose_dialect
-from ..library.files import BinaryFileError, decode_program, is_program_file, stays_inside
+from ..library.files import BinaryFileError, is_program_file, read_program, stays_inside
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..library.programs import load_text
@@ -146,9 +146,7 @@ class CallIndex:
     def _read(self, path: str) -> tuple[IndexedCall, ...]:
         """The literal calls that the file at ``path`` makes."""
         try:
-            with open(path, "rb") as f:
-                data = f.read(self.max_bytes + 1)
-            text = decode_program(data, path).text
+            text = read_program(path, self.max_bytes).text
         except (OSError, BinaryFileError):
             return ()
         self.files_read += 1

@@ -30,7 +30,7 @@ from ..analysis.faults import FILE, internal_error
 from ..analysis.locale import is_chinese, pick
 from ..analysis.workspace import WorkspaceAnalysis
 from ..bilingual import in_language
-from ..library.files import BinaryFileError, find_program_files, read_program
+from ..library.files import BinaryFileError, RefusedFileError, find_program_files, read_program
 from ..library.machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
 from .sarif import to_sarif
 from .terminal import Printable, json_text, printable
@@ -70,7 +70,7 @@ def check_paths(
         for path in find_program_files(root):
             try:
                 source = read_program(path)
-            except BinaryFileError as e:
+            except (BinaryFileError, RefusedFileError) as e:
                 print(f"cncmacro：{e.message.zh}" if chinese else f"cncmacro: {e}", file=err)
                 unreadable = True
                 continue

@@ -1,13 +1,17 @@
 """Where a run stops: line breakpoints (with conditions, hit counts and log messages),
 function breakpoints on ``N100`` or ``O9100``, and data breakpoints on ``#`` variables.
 
-A line breakpoint may be set in any program file, also one the run has not loaded yet. It is
-verified at the line where the run will really stop: one on a blank or comment line, or on
-an O header that holds nothing else, moves to the next block; one on a ``/`` block while the
-machine's block delete switch is on is not verified (the run skips that block). Conditions
-and log-message expressions are macro text, compiled by the interpreter
-(``machine.evaluate``) once per machine. ``check`` is asked before each block: it counts
-hits, writes log messages and says whether to stop and why.
+A line breakpoint may be set in any program file of the launch's folders (``scope``, as
+``library.files.ReadScope`` decides), also one the run has not loaded yet; before the launch,
+the file's own folder stands in for them, and at the launch every file is read and placed
+again, so one outside the launch's folders is then unverified, saying why. A file that cannot
+be read (a pipe, a device, a link leading out) is never waited on: its breakpoints are
+unverified with the reason. A breakpoint is verified at the line where the run will really
+stop: one on a blank or comment line, or on an O header that holds nothing else, moves to the
+next block; one on a ``/`` block while the machine's block delete switch is on is not verified
+(the run skips that block). Conditions and log-message expressions are macro text, compiled
+by the interpreter (``machine.evaluate``) once per machine. ``check`` is asked before each
+block: it counts hits, writes log messages and says whether to stop and why.
 
 A hit is a visit at which the condition holds: the run arriving at the breakpoint's block
 (a line or ``N`` breakpoint), entering the program (``O``), or a block changing the variable
@@ -27,9 +31,9 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from ..analysis.locale import pick
+from ..analysis.locale import is_chinese, pick
 from ..bilingual import in_language
-from ..library.files import BinaryFileError, read_program
+from ..library.files import BinaryFileError, ReadScope, RefusedFileError
 from ..library.programs import load_text
 from ..machine import Machine, MacroAlarm
 from ..machine.evaluate import CompiledText, EvaluationError, compile_condition, compile_expression, holds, value_of
@@ -190,7 +194,7 @@ class Breakpoints:
     log: Callable[[str], None] = field(default=lambda _text: None)
     locale: str | None = None
     block_delete: bool = False  # the switch the line breakpoints were placed for
-    files: dict[str, list[Block] | None] = field(default_factory=dict)
+    scope: ReadScope | None = None  # the launch's folders (None before a launch)
     counted_to: int = -1  # the visits up to this block count are counted
 
     @property
@@ -213,35 +217,49 @@ class Breakpoints:
     def set_lines(self, path: str, specs: list[dict[str, Any]]) -> list[LineBreakpoint]:
         """Replace the breakpoints of one file (``specs`` are DAP SourceBreakpoints, 1-based)."""
         key = real_path(path)
-        blocks: list[Block] | None = None
-        problem = None
-        try:
-            program = load_text(path, read_program(path).text).program
-            blocks = program.blocks[: program.read_end]  # no stop after the closing '%'
-        except (OSError, BinaryFileError) as e:
-            problem = f"cannot read {path}: {e}"
-        self.files[key] = blocks
+        blocks = self._read(path)
         old: list[Breakpoint] = list(self.lines.get(key, ()))
         made = []
         for spec in specs:
             bp = LineBreakpoint(self._id(), spec.get("condition"), spec.get("hitCondition"), spec.get("logMessage"),
                                 path=key, shown_path=path)  # fmt: skip
             line = spec.get("line")
-            if not isinstance(line, int) or isinstance(line, bool):
-                bp.verified, bp.message = False, "a breakpoint needs a line number"
-            elif blocks is None:
-                bp.verified, bp.message = False, problem
-            else:
+            if isinstance(line, int) and not isinstance(line, bool):
                 bp.asked = line - 1
-                bp.line, bp.placement = place(blocks, bp.asked, self.block_delete, self.locale)
-                bp.message, bp.verified = bp.placement, bp.line is not None
-            bp.prepare()
-            self._compile(bp)
+            self._place(bp, blocks)
             self._carry(bp, old)
             made.append(bp)
         self.lines[key] = made
         self._index()
         return made
+
+    def read_scope(self, path: str) -> ReadScope:
+        """Where ``path`` may be read from: the launch's folders, or before a launch its own folder."""
+        return self.scope if self.scope is not None else ReadScope.of([os.path.dirname(path) or "."])
+
+    def _read(self, path: str) -> list[Block] | str:
+        """The blocks of the file at ``path`` where a run can stop, or why it cannot be read."""
+        try:
+            program = load_text(path, self.read_scope(path).read(path).text).program
+        except (BinaryFileError, RefusedFileError) as e:
+            return in_language(e.message, is_chinese(self.locale))  # the path, and why it is not read
+        except OSError as e:
+            why = e.strerror or str(e)
+            return pick(self.locale, f"cannot read {path}: {why}", f"无法读取 {path}：{why}")
+        return program.blocks[: program.read_end]  # no stop after the closing '%'
+
+    def _place(self, bp: LineBreakpoint, blocks: list[Block] | str) -> None:
+        """Place ``bp`` in its file's ``blocks`` (or say why not) and check its conditions."""
+        bp.line = bp.placement = None
+        if bp.asked is None:
+            bp.verified, bp.message = False, "a breakpoint needs a line number"
+        elif isinstance(blocks, str):
+            bp.verified, bp.message = False, blocks
+        else:
+            bp.line, bp.placement = place(blocks, bp.asked, self.block_delete, self.locale)
+            bp.message, bp.verified = bp.placement, bp.line is not None
+        bp.prepare()
+        self._compile(bp)
 
     def set_functions(self, specs: list[dict[str, Any]]) -> list[FunctionBreakpoint]:
         made = []
@@ -288,35 +306,28 @@ class Breakpoints:
                     self.at.setdefault((bp.path, bp.line), []).append(bp)
 
     # ---------------------------------------------------------------- a machine to stop
-    def bind(self, machine: Machine) -> list[LineBreakpoint]:
-        """Use these breakpoints with ``machine`` (a new launch or a restart); the line
-        breakpoints whose place changed with the machine's block delete switch."""
+    def bind(self, machine: Machine, scope: ReadScope | None = None) -> list[LineBreakpoint]:
+        """Use these breakpoints with ``machine`` (a new launch or a restart) and the launch's
+        folders ``scope`` (when given); the line breakpoints that this changed (placed again
+        for the machine's block delete switch, or unverified in a file outside the folders)."""
         self.machine = machine
         self.counted_to = -1
-        moved = self._replace(bool(machine.settings.block_delete))
+        self.block_delete = bool(machine.settings.block_delete)
+        if scope is not None:
+            self.scope = scope
+        before = {bp.id: (bp.verified, bp.line, bp.message) for bps in self.lines.values() for bp in bps}
+        for bps in self.lines.values():
+            if bps:
+                blocks = self._read(bps[0].shown_path)
+                for bp in bps:
+                    self._place(bp, blocks)
         for bp in self._all():
             bp.hits, bp.since = 0, -1
-            self._compile(bp)
+            if not isinstance(bp, LineBreakpoint):  # placed (and compiled) above
+                self._compile(bp)
         self._index()
         self.prime()
-        return moved
-
-    def _replace(self, block_delete: bool) -> list[LineBreakpoint]:
-        """Place the line breakpoints again for another block delete switch."""
-        if block_delete == self.block_delete:
-            return []
-        self.block_delete = block_delete
-        moved = []
-        for key, bps in self.lines.items():
-            blocks = self.files.get(key)
-            for bp in bps:
-                if blocks is None or bp.asked is None or bp.message != bp.placement:
-                    continue  # not verified for another reason
-                line, message = place(blocks, bp.asked, block_delete, self.locale)
-                if (line, message) != (bp.line, bp.message):
-                    bp.line, bp.message, bp.placement, bp.verified = line, message, message, line is not None
-                    moved.append(bp)
-        return moved
+        return [bp for bps in self.lines.values() for bp in bps if (bp.verified, bp.line, bp.message) != before[bp.id]]
 
     def _all(self) -> list[Breakpoint]:
         return [*(b for bps in self.lines.values() for b in bps), *self.functions, *self.data]

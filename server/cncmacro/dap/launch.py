@@ -12,6 +12,9 @@ then the machine file, then the configuration, then fanuc; presets come after th
 variables; a launch that saves them holds their lock until the session saves them (at its
 end, or a restart), so a ``cncmacro run`` meanwhile waits for it. Every mistake is a
 ``LaunchError`` with a message for the person.
+
+A launch reads program files in its folders only (``Launched.scope``): the program's folder
+(where the run finds the programs it calls), the machine file's folder, and the program itself.
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from ..dialects import DIALECTS, normalise_dialect
+from ..library.files import ReadScope
 from ..library.machine_file import parse_preset
 from ..machine import Machine
 from ..machine.setup import PreparedRun, SetupError, prepare_run
@@ -107,6 +111,15 @@ class Launched:
     @property
     def machine(self) -> Machine:
         return self.prepared.machine
+
+    @property
+    def scope(self) -> ReadScope:
+        """Where the session may read the program files a client names (``source``, breakpoints)."""
+        folders = [self.config.program.parent]
+        machine_folder = self.machine.settings.folder
+        if machine_folder:
+            folders.append(Path(machine_folder))
+        return ReadScope.of(folders, [self.config.program])
 
     def save(self) -> str | None:
         """Write ``#500–#999`` back unless ``noSave`` and let the next run have them (a launch

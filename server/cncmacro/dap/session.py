@@ -5,6 +5,8 @@ the machine on a worker thread, so pause, threads and the other requests are ans
 long run goes on. A request that needs a stopped machine (stack trace, variables, evaluate)
 is refused with a message while it runs. An unknown or malformed request gets
 ``success: false`` and the session goes on. Terminate and disconnect save ``#500–#999``.
+``source`` and ``setBreakpoints`` read program files of the launch's folders only (see
+``breakpoints.Breakpoints.read_scope``); a pipe or a device is refused, never waited on.
 """
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ from pathlib import Path
 from typing import Any, BinaryIO
 
 from ..bilingual import detail
-from ..library.files import is_program_file
+from ..library.files import BinaryFileError, RefusedFileError
 from ..machine import Machine
 from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
 from ..machine.machine import COMPLETED
@@ -139,8 +141,8 @@ class Session:
     def _use(self, launched: Launched) -> None:
         self.launched = launched
         m = launched.machine
-        moved = self.breakpoints.bind(m)
-        for bp in moved:  # the block delete switch of this launch decides whether a / block can stop
+        moved = self.breakpoints.bind(m, launched.scope)
+        for bp in moved:  # this launch's block delete switch and folders decide where each can stop
             self.later(lambda bp=bp: self.event("breakpoint", {"reason": "changed", "breakpoint": _line_json(bp)}))
         self.history.reset(m)
         config = launched.config
@@ -426,12 +428,13 @@ class Session:
         path = source.get("path") if isinstance(source, dict) else None
         if not isinstance(path, str):
             raise RequestFailed("the source has no path")
-        if not is_program_file(Path(path)):  # the adapter shows program files, never any other file
-            raise RequestFailed(f"{path} is not a program file")
-        try:
-            return {"content": Path(path).read_text(encoding="utf-8", errors="replace")}
+        try:  # program files in the launch's folders only, never a pipe or a device
+            text = self.breakpoints.read_scope(path).read(path).text
+        except (BinaryFileError, RefusedFileError) as e:
+            raise RequestFailed(show.detail_text(e.message, self.locale)) from None
         except OSError as e:
-            raise RequestFailed(f"cannot read {path}: {e}") from None
+            raise RequestFailed(f"cannot read {path}: {e.strerror or e}") from None
+        return {"content": text.encode("utf-8", "replace").decode("utf-8")}  # bytes no encoding took stay '?'
 
 
 def _line_json(bp: LineBreakpoint) -> dict[str, Any]:

@@ -5,11 +5,20 @@ editors, with LF, CRLF or CR line breaks. Text is decoded UTF-8 first and GB1803
 that neither accepts are kept as surrogate escapes, so nothing is lost when the text is
 written back. A file with NUL bytes or mostly control characters is binary: it is reported,
 not parsed.
+
+Only a regular file of at most ``MAX_PROGRAM_BYTES`` is read, and it is opened without
+blocking: a pipe, a device (``/dev/zero``) or a folder is refused with a ``RefusedFileError``
+before a byte is read, so a read never waits and never grows without end. A path that a client
+names (an editor's file event, a debugger's request) is read with ``ReadScope``: a program
+file under the folders the front end works in, a link that leads out of them not followed.
 """
 
 from __future__ import annotations
 
 import codecs
+import os
+import stat
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -17,6 +26,8 @@ from ..bilingual import detail
 
 # Program files are found by these endings (any case), or by an O-number name without one.
 PROGRAM_SUFFIXES = frozenset({".nc", ".cnc", ".mac", ".prg", ".tap", ".eia"})
+# Far beyond any program a control holds; a million-line CAM file is about 35 MB.
+MAX_PROGRAM_BYTES = 64_000_000
 
 
 class BinaryFileError(Exception):
@@ -31,6 +42,18 @@ class BinaryFileError(Exception):
         super().__init__(self.message)
         self.path = path
         self.offset = offset
+
+
+class RefusedFileError(OSError):
+    """A path that is not read as a program: not a regular file, too large, not a program
+    file, or outside the folders it must be in. ``reason`` says why and ``message`` (the path,
+    then the reason) too, in English and in Chinese (``str`` of the error is the English)."""
+
+    def __init__(self, path: str | Path, en: str, zh: str) -> None:
+        self.reason = detail(en, zh)
+        self.message = detail(f"{path}: {en}", f"{path}：{zh}")
+        super().__init__(self.message)
+        self.path = str(path)
 
 
 @dataclass(slots=True)
@@ -84,10 +107,46 @@ def _utf16_program(data: bytes, path: str) -> SourceText:
     return SourceText(text, "utf-16", True)
 
 
-def read_program(path: str | Path) -> SourceText:
-    """Read and decode a program file (``OSError`` and ``BinaryFileError`` pass through)."""
-    p = Path(path)
-    return decode_program(p.read_bytes(), str(p))
+def read_program(path: str | Path, max_bytes: int = MAX_PROGRAM_BYTES) -> SourceText:
+    """Read and decode a program file: a regular file of at most ``max_bytes``, opened without
+    blocking (``RefusedFileError``, ``OSError`` and ``BinaryFileError`` pass through)."""
+    return decode_program(_read_regular(str(path), max_bytes), str(path))
+
+
+def _read_regular(path: str, max_bytes: int) -> bytes:
+    _check_regular(path, os.stat(path), max_bytes)  # a device is never opened
+    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0))
+    try:
+        st = os.fstat(fd)
+        _check_regular(path, st, max_bytes)  # what was opened, should the path have changed meanwhile
+        chunks = []
+        left = max_bytes + 1
+        want = st.st_size + 1
+        while left > 0:
+            chunk = os.read(fd, min(left, want))
+            if not chunk:
+                break
+            chunks.append(chunk)
+            left -= len(chunk)
+            want = 1 << 20
+    finally:
+        os.close(fd)
+    if left <= 0:
+        raise _too_large(path, max_bytes)  # it grew while being read
+    return b"".join(chunks)
+
+
+def _check_regular(path: str, st: os.stat_result, max_bytes: int) -> None:
+    if not stat.S_ISREG(st.st_mode):
+        raise RefusedFileError(path, "not a regular file (a folder, pipe or device is never read as a program)",
+                               "不是普通文件（文件夹、管道或设备不会作为程序读取）")  # fmt: skip
+    if st.st_size > max_bytes:
+        raise _too_large(path, max_bytes)
+
+
+def _too_large(path: str, max_bytes: int) -> RefusedFileError:
+    mb = max_bytes / 1_000_000
+    return RefusedFileError(path, f"larger than {mb:g} MB: not read as a program", f"大于 {mb:g} MB，不作为程序读取")
 
 
 def encode_program(source: SourceText) -> bytes:
@@ -109,9 +168,10 @@ def is_program_file(path: Path) -> bool:
 
 
 def find_program_files(root: Path) -> list[Path]:
-    """Program files under ``root`` (itself, if it is a file), sorted, hidden folders skipped;
-    a link that leads out of ``root`` is skipped too."""
-    if root.is_file():
+    """Program files under ``root`` (itself, if it is not a folder: a pipe or a device named
+    outright is refused when read), sorted, hidden folders skipped; a link that leads out of
+    ``root`` is skipped too."""
+    if not root.is_dir():
         return [root]
     found = []
     for p in sorted(root.rglob("*")):
@@ -129,3 +189,38 @@ def stays_inside(path: Path, folder: Path) -> bool:
         return path.resolve().is_relative_to(folder.resolve())
     except (OSError, RuntimeError):  # a link loop
         return False
+
+
+@dataclass(frozen=True, slots=True)
+class ReadScope:
+    """Where the program files that a client names may be read: files with a program file's
+    name under ``folders`` (a link that leads out of every one of them is not followed), and
+    ``files``, real paths that are read whatever their name (the program a debug launch names).
+    The language server's workspace folders and a debug launch's folders are such scopes."""
+
+    folders: tuple[Path, ...]
+    files: frozenset[str] = frozenset()
+
+    @classmethod
+    def of(cls, folders: Iterable[str | Path], files: Iterable[str | Path] = ()) -> ReadScope:
+        return cls(tuple(dict.fromkeys(Path(f) for f in folders)), frozenset(os.path.realpath(f) for f in files))
+
+    def refusal(self, path: str | Path) -> RefusedFileError | None:
+        """Why ``path`` may not be read (the error that reading it raises), or None."""
+        p = Path(path)
+        if self.files and os.path.realpath(p) in self.files:
+            return None
+        if not is_program_file(p):
+            return RefusedFileError(p, "not a program file", "不是程序文件")
+        if not any(stays_inside(p, f) for f in self.folders):
+            where = ", ".join(str(f) for f in self.folders) or "-"
+            return RefusedFileError(p, f"not under {where} (a link that leads out of them is not followed)",
+                                    f"不在 {where} 之下（不跟随指向其外的链接）")  # fmt: skip
+        return None
+
+    def read(self, path: str | Path) -> SourceText:
+        """``read_program`` for a path in this scope; ``RefusedFileError`` for one outside it."""
+        refused = self.refusal(path)
+        if refused is not None:
+            raise refused
+        return read_program(path)

@@ -17,7 +17,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..library.files import BinaryFileError, find_program_files, is_program_file, read_program, stays_inside
+from ..library.files import BinaryFileError, ReadScope, find_program_files, is_program_file
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary, load_text
 from .documents import Documents, OpenDocument
 
@@ -57,13 +57,11 @@ class WorkspaceIndex:
 
     def reload(self, path: str) -> None:
         """Read one file again (created, changed or deleted on disk)."""
-        if not is_program_file(Path(path)) or not any(stays_inside(Path(path), r) for r in self.roots):
-            return  # only program files under the workspace folders are read
         if not Path(path).is_file():  # gone, or not a regular file: never opened
             self.files.pop(path, None)
             return
         try:
-            text = read_program(path).text
+            text = ReadScope.of(self.roots).read(path).text  # program files under the workspace folders only
         except (OSError, BinaryFileError) as e:
             log.info("not indexed: %s", e)
             self.files.pop(path, None)

@@ -21,7 +21,7 @@ from pathlib import Path
 from ..bilingual import detail, in_language
 from ..dialects import get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect
-from ..library.files import BinaryFileError, decode_program, read_program
+from ..library.files import BinaryFileError, RefusedFileError, decode_program, read_program
 from ..library.machine_file import (
     PERSISTENT_FILE_NAME,
     MachineFileError,
@@ -101,7 +101,7 @@ def prepare_run(
     except (OSError, BinaryFileError) as e:
         if isinstance(e, FileNotFoundError):
             raise SetupError(detail(f"there is no file {program}", f"文件 {program} 不存在")) from None
-        why = e.args[0] if isinstance(e, BinaryFileError) and e.args else str(e)
+        why = e.reason if isinstance(e, RefusedFileError) else e.message if isinstance(e, BinaryFileError) else str(e)
         raise SetupError(
             detail(f"cannot read the program {program}: {why}", f"无法读取程序 {program}：{in_language(why, True)}")
         ) from None
