@@ -33,13 +33,7 @@ async def start(
     ``client.registrations``."""
     if settings is not None:
         client.set_configuration(settings, section="cncMacro")
-    registrations: list[types.Registration] = []
-    client.registrations = registrations  # type: ignore[attr-defined]
-
-    @client.feature(types.CLIENT_REGISTER_CAPABILITY)
-    def register_capability(params: types.RegistrationParams) -> None:
-        registrations.extend(params.registrations)
-
+    accept_registrations(client)
     result = await client.initialize_session(
         types.InitializeParams(
             capabilities=capabilities or client_capabilities("visual-studio-code"),
@@ -49,6 +43,16 @@ async def start(
         )
     )
     client.server_capabilities = result.capabilities  # type: ignore[attr-defined]
+
+
+def accept_registrations(client: LanguageClient) -> None:
+    """Accept what the server asks to register, as VS Code does; kept as ``client.registrations``."""
+    registrations: list[types.Registration] = []
+    client.registrations = registrations  # type: ignore[attr-defined]
+
+    @client.feature(types.CLIENT_REGISTER_CAPABILITY)
+    def register_capability(params: types.RegistrationParams) -> None:
+        registrations.extend(params.registrations)
 
 
 def open_file(client: LanguageClient, path: Path, text: str | None = None, version: int = 1) -> str:

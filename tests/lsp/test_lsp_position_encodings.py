@@ -15,7 +15,7 @@ import pytest_lsp
 from lsprotocol import types
 from pytest_lsp import LanguageClient, client_capabilities
 
-from .lsp_session import close_file, config, diagnostics_for, open_file, published_where
+from .lsp_session import accept_registrations, close_file, config, diagnostics_for, open_file, published_where
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
@@ -59,6 +59,7 @@ def where(r: types.Range) -> tuple[int, int, int]:
 @pytest_lsp.fixture(config=config(), scope="module", params=list(OFFERS))
 async def client(lsp_client: LanguageClient, request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory):  # type: ignore[no-untyped-def]
     root = tmp_path_factory.mktemp(f"enc_{request.param}")
+    accept_registrations(lsp_client)
     result = await lsp_client.initialize_session(
         types.InitializeParams(
             capabilities=capabilities(OFFERS[request.param]),
@@ -270,6 +271,7 @@ async def test_the_encoding_picked_for_what_the_client_offers_is_the_one_used(
     offer: list[str] | None, picked: str, tmp_path: Path
 ) -> None:
     client = await config().start()
+    accept_registrations(client)
     try:
         result = await client.initialize_session(
             types.InitializeParams(capabilities=capabilities(offer), root_uri=tmp_path.as_uri())
