@@ -1,5 +1,5 @@
 """Diagnostics for the editor: the workspace analysis on a worker thread, cancelled by newer
-edits, its newest result pushed (and pulled) per file.
+edits, its newest result pushed per file.
 
 ``DiagnosticsEngine.analysis`` is the ``analysis.workspace.WorkspaceAnalysis`` of the session:
 it holds the open documents (the server's ``Documents`` show its ``ParsedDocument``s, so each
@@ -11,8 +11,9 @@ lock that the analysis holds. Each change starts a new generation; a result is p
 when no change came after the generation it was computed from, each open file with the
 version it was analysed at. A finding in a file that is not open (a macro called from an open
 file) is published without a version, and cleared when a later result no longer has it. The
-first analysis of a huge file reports work-done progress. ``textDocument/diagnostic`` (pull)
-waits for the result of the document's current version.
+first analysis of a huge file reports work-done progress. Diagnostics are pushed only: a server
+that also answers ``textDocument/diagnostic`` has each finding shown twice by a client that
+pulls and takes pushes too (Neovim 0.10 and later keep the two apart).
 
 Files changed on disk that no editor event reports (``disk_watch.py``) are looked for when an
 analysis starts, on the worker thread, and every ``DISK_CHECK_SECONDS`` while documents are
@@ -53,7 +54,6 @@ DEBOUNCE_SECONDS = 0.0  # edits are coalesced by cancelling: a newer one stops t
 # so analysing after each of 2,000 opens would cost the square of the count.
 BURST_SECONDS = 0.05
 PROGRESS_LINES = 20_000  # a first analysis of a file this long reports progress
-PULL_TIMEOUT = 60.0  # seconds a pull waits for the analysis of the current version
 DISK_CHECK_SECONDS = 2.0  # between looks at the files the analysis read, while documents are open
 
 LineValues = dict[int, list[tuple[int, Value]]]
@@ -88,7 +88,6 @@ class DiagnosticsEngine:
         self._published: dict[str, tuple[int | None, list[Diagnostic], list[types.Diagnostic], int]] = {}
         self._values: dict[str, tuple[int | None, LineValues]] = {}
         self._analysed_once: set[str] = set()
-        self._cycle = asyncio.Event()  # set and replaced whenever a result was published
         # the worker's caches: per file the diagnostics last converted, and per diagnostic (with
         # the text of its lines) its protocol form and JSON form
         self._converted: dict[str, tuple[list[Diagnostic], list[types.Diagnostic], list[dict[str, object]]]] = {}
@@ -357,8 +356,6 @@ class DiagnosticsEngine:
         for uri in [u for u, p in self._published.items() if u not in outcome.versions and u not in documents]:
             del self._published[uri]  # a file that is not open, no longer with findings
             self.server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
-        self._cycle.set()
-        self._cycle = asyncio.Event()
         if self.server.settings.inlay_values:
             self._refresh_inlay_hints()
 
@@ -391,24 +388,6 @@ class DiagnosticsEngine:
         got = self._values.get(doc.uri)
         return got[1] if got is not None and got[0] == doc.version else {}
 
-    async def pull(self, params: types.DocumentDiagnosticParams) -> types.DocumentDiagnosticReport:
-        doc = self.server.documents.get(params.text_document.uri)
-        loop = asyncio.get_running_loop()
-        deadline = loop.time() + PULL_TIMEOUT
-        while True:
-            got = self._published.get(doc.uri)
-            if (got is not None and got[0] == doc.version) or loop.time() >= deadline:
-                break
-            try:
-                await asyncio.wait_for(self._cycle.wait(), deadline - loop.time())
-            except asyncio.TimeoutError:
-                break
-        if got is None:
-            return types.RelatedFullDocumentDiagnosticReport(items=[], result_id=None)
-        result_id = f"{got[0]}.{got[3]}"
-        if params.previous_result_id == result_id:
-            return types.RelatedUnchangedDocumentDiagnosticReport(result_id=result_id)
-        return types.RelatedFullDocumentDiagnosticReport(items=got[2], result_id=result_id)
 
 
 def _disk_lines(ws: WorkspaceAnalysis, path: str) -> list[str]:

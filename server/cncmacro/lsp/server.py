@@ -255,15 +255,6 @@ def build_server() -> CncMacroServer:
     def did_close(ls: CncMacroServer, params: types.DidCloseTextDocumentParams) -> None:
         ls.diagnostics.closed(params.text_document.uri)
 
-    @server.feature(
-        types.TEXT_DOCUMENT_DIAGNOSTIC,
-        types.DiagnosticOptions(identifier="cncmacro", inter_file_dependencies=True, workspace_diagnostics=False),
-    )
-    async def pull_diagnostics(
-        ls: CncMacroServer, params: types.DocumentDiagnosticParams
-    ) -> types.DocumentDiagnosticReport:
-        return await ls.diagnostics.pull(params)
-
     @server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)
     async def did_change_configuration(ls: CncMacroServer, params: types.DidChangeConfigurationParams) -> None:
         if isinstance(params.settings, dict) and params.settings:
