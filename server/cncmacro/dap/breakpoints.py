@@ -29,7 +29,7 @@ from typing import Any
 
 from ..analysis.locale import pick
 from ..bilingual import in_language
-from ..library.files import BinaryFileError, read_program
+from ..library.files import SkippedFileError, read_program
 from ..library.programs import load_text
 from ..machine import Machine, MacroAlarm
 from ..machine.evaluate import CompiledText, EvaluationError, compile_condition, compile_expression, holds, value_of
@@ -216,9 +216,9 @@ class Breakpoints:
         blocks: list[Block] | None = None
         problem = None
         try:
-            program = load_text(path, read_program(path).text).program
+            program = load_text(path, read_program(path, max_bytes=None).text).program  # a file the person chose
             blocks = program.blocks[: program.read_end]  # no stop after the closing '%'
-        except (OSError, BinaryFileError) as e:
+        except (OSError, SkippedFileError) as e:
             problem = f"cannot read {path}: {e}"
         self.files[key] = blocks
         old: list[Breakpoint] = list(self.lines.get(key, ()))

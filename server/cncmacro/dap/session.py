@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Any, BinaryIO
 
 from ..bilingual import detail
-from ..library.files import is_program_file
+from ..library.files import SkippedFileError, is_program_file, read_program
 from ..machine import Machine
 from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
 from ..machine.machine import COMPLETED
@@ -429,8 +429,8 @@ class Session:
         if not is_program_file(Path(path)):  # the adapter shows program files, never any other file
             raise RequestFailed(f"{path} is not a program file")
         try:
-            return {"content": Path(path).read_text(encoding="utf-8", errors="replace")}
-        except OSError as e:
+            return {"content": read_program(path, max_bytes=None).text}
+        except (OSError, SkippedFileError) as e:
             raise RequestFailed(f"cannot read {path}: {e}") from None
 
 

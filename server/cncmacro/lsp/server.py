@@ -20,15 +20,15 @@ from lsprotocol import types
 from pygls.lsp.server import LanguageServer
 from pygls.protocol import JsonRPCProtocol, LanguageServerProtocol
 from pygls.protocol.language_server import lsp_method
-from pygls.uris import from_fs_path
 
 from .. import __version__
 from ..dialects.registry import profile_facts
 from ..library.machine_file import MACHINE_FILE_NAME, MachineSettings
 from ..syntax.block_parser import warm_up
 from .diagnostics import DiagnosticsEngine
-from .documents import Documents, uri_to_path
-from .settings import SECTION, Settings, machine_settings, merged_severities, valid_severities
+from .documents import Documents, path_to_uri, uri_to_path
+from .reports import log_skipped, publish_machine_file, report_skipped
+from .settings import SECTION, Settings, WorkspaceMachine, merged_severities, valid_severities, workspace_machine
 from .stdio import serve_stdio
 from .workspace_index import WorkspaceIndex
 
@@ -94,6 +94,27 @@ class CncMacroServer(LanguageServer):
         self.diagnostics = DiagnosticsEngine(self)
         self.settings_ready = asyncio.Event()  # set once the editor's settings were asked for
         self.roots: list[str] = []
+        self.machine_file = WorkspaceMachine()  # the workspace's .cncmacro.toml, and its problem
+        self.machine_file_uri: str | None = None  # where a problem of it is shown
+
+    # ---- the workspace
+    def read_machine_file(self) -> None:
+        """The workspace's machine file, read again; a broken one leaves the defaults in force."""
+        self.machine_file = workspace_machine(self.roots[0]) if self.roots else WorkspaceMachine()
+        self.machine = self.machine_file.settings
+
+    def show_machine_file(self) -> None:
+        """Show the machine file's problem on it, or clear the one shown before."""
+        self.machine_file_uri = publish_machine_file(self, self.machine_file, self.machine_file_uri)
+
+    def scan_folders(self) -> None:
+        """Index the program files of the workspace folders. A fault of the checker there must
+        not stop the server (a failed ``initialize`` is fatal to the editor): it is logged and
+        the index stays as far as it got."""
+        try:
+            self.index.scan(self.roots)
+        except Exception:
+            log.exception("indexing the workspace folders failed")
 
     # ---- settings
     def severity_overrides(self) -> dict[str, str]:
@@ -109,12 +130,14 @@ class CncMacroServer(LanguageServer):
         self.diagnostics.configure(
             self.machine, settings.dialect, settings.run_budget, valid_severities(self.severity_overrides())
         )
+        if self.settings_ready.is_set():  # before, nothing may be published yet
+            self.show_machine_file()
 
     def uri_for_path(self, path: str) -> str:
         for doc in self.documents.by_uri.values():
             if doc.path == path:
                 return doc.uri
-        return from_fs_path(path) or path
+        return path_to_uri(path)
 
     def report_server_error(self, error: Exception, source: Any) -> None:
         log.error("cncmacro language server: %s: %s", type(error).__name__, error)
@@ -132,11 +155,11 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
         roots = [uri_to_path(params.root_uri)]
     elif not roots and params.root_path:
         roots = [params.root_path]
-    server.machine = machine_settings(roots[0]) if roots else None
+    server.roots = roots
+    server.read_machine_file()
     server.documents.workspace_dialect = server.machine.dialect if server.machine else None
     server.documents.machine = server.machine
-    server.roots = roots
-    server.index.scan(roots)
+    server.scan_folders()
     # the grammar parser is built meanwhile, so the first unfinished line typed does not wait for it
     threading.Thread(target=warm_up, name="cncmacro-grammar", daemon=True).start()
     server.diagnostics.start(server.machine, roots, server.locale)
@@ -144,12 +167,14 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
 
 
 async def _initialized(server: CncMacroServer, params: types.InitializedParams) -> None:
+    report_skipped(server, server.index.skipped)  # notifications may go out only now that initialize is answered
     try:
         await asyncio.wait_for(_pull_configuration(server), CONFIGURATION_TIMEOUT)
     except asyncio.TimeoutError:
         log.info("workspace/configuration: no answer; using the initialization options")
     finally:
         server.settings_ready.set()
+        server.show_machine_file()  # with the editor's severities
 
 
 async def _pull_configuration(server: CncMacroServer) -> None:
@@ -224,17 +249,20 @@ def build_server() -> CncMacroServer:
             if change.type == types.FileChangeType.Deleted:
                 ls.index.drop(path)
             else:
-                ls.index.reload(path)
+                problem = ls.index.reload(path)
+                if problem is not None:
+                    log_skipped(ls, problem)
         if machine_file:  # the workspace's .cncmacro.toml: its settings and dialect
-            ls.machine = machine_settings(ls.roots[0]) if ls.roots else None
-            ls.apply_settings(ls.settings)
+            ls.read_machine_file()
+            ls.apply_settings(ls.settings)  # and shows its problem, or clears it
         ls.diagnostics.files_changed(paths)
 
     @server.feature(types.WORKSPACE_DID_CHANGE_WORKSPACE_FOLDERS)
     def did_change_workspace_folders(ls: CncMacroServer, params: types.DidChangeWorkspaceFoldersParams) -> None:
         gone = {uri_to_path(f.uri) for f in params.event.removed}
         ls.roots = [r for r in ls.roots if r not in gone] + [uri_to_path(f.uri) for f in params.event.added]
-        ls.index.scan(ls.roots)
+        ls.scan_folders()
+        report_skipped(ls, ls.index.skipped)
         ls.diagnostics.folders_changed(ls.roots)
 
     @server.feature(DOCUMENT_DIALECT)

@@ -19,7 +19,10 @@ import tempfile
 import time
 from pathlib import Path
 
+from ..library.files import SkippedFileError, read_bytes
+
 STALE_SECONDS = 60.0
+MAX_PERSISTENT_BYTES = 10_000_000  # 500 variables take some 15 KB
 
 
 class PersistentFileError(ValueError):
@@ -29,16 +32,18 @@ class PersistentFileError(ValueError):
 def load_persistent(path: Path) -> dict[int, float]:
     """The stored values (vacant ones are absent). ``PersistentFileError`` if damaged."""
     try:
-        text = path.read_text(encoding="utf-8")
+        text = read_bytes(path, MAX_PERSISTENT_BYTES).decode("utf-8")  # a regular file only: a FIFO never blocks
     except FileNotFoundError:
         return {}
     except OSError as e:
         raise PersistentFileError(f"{path}: cannot read the persistent variables ({e.strerror or e})") from e
+    except (SkippedFileError, UnicodeDecodeError) as e:
+        raise PersistentFileError(f"{path}: not a persistent-variable file ({e})") from e
     try:
         data = json.loads(text)
         values = data["variables"] if isinstance(data, dict) and "variables" in data else data
         out = {int(k): float(v) for k, v in values.items() if v is not None}
-    except (ValueError, TypeError, AttributeError, KeyError) as e:
+    except (ValueError, TypeError, AttributeError, KeyError, RecursionError) as e:
         raise PersistentFileError(f"{path}: not a persistent-variable file ({e})") from e
     return out
 
