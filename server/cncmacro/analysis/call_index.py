@@ -10,9 +10,10 @@ only when it has one, and only its lines with a call word are looked at. ``calle
 which files name a number or a name: candidates only, since which file a call reaches is the
 library's lookup (``ProgramLibrary``), decided by the caller of this index.
 
-It is bounded: at most ``MAX_FILES`` files (more, and the index says so in the log and knows
-no callers, so that the analysis behaves as if it had no workspace) and files up to
-``MAX_FILE_BYTES`` (a larger one is logged and left out). It is built lazily, at the first
+It is bounded as every search of a workspace folder is (``library/files.py``): at most
+``MAX_FILES`` files and ``MAX_FOLDER_ENTRIES`` folder entries (more, and the index says so in
+the log and knows no callers, so that the analysis behaves as if it had no workspace), and files
+up to ``MAX_FILE_BYTES`` (a larger one is logged and left out). It is built lazily, at the first
 question; ``changed(path)`` (a file created, changed or deleted) lists the folders again at the
 next question, reading only the files whose time or size changed.
 """
@@ -22,12 +23,19 @@ from __future__ import annotations
 import logging
 import os
 import re
-from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..library.dialect_choice import choose_dialect
-from ..library.files import BinaryFileError, is_program_file, read_program, stays_inside
+from ..library.files import (
+    MAX_FOLDER_ENTRIES,
+    MAX_PROGRAM_BYTES,
+    MAX_PROGRAM_FILES,
+    FileTooLargeError,
+    SkippedFileError,
+    read_program,
+    search_program_files,
+)
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..library.programs import load_text
@@ -36,8 +44,8 @@ from .locale import pick
 
 log = logging.getLogger(__name__)
 
-MAX_FILES = 5_000
-MAX_FILE_BYTES = 8_000_000
+MAX_FILES = MAX_PROGRAM_FILES
+MAX_FILE_BYTES = MAX_PROGRAM_BYTES
 _O_NAME = re.compile(r"^[Oo](\d{1,8})$")
 
 
@@ -133,21 +141,26 @@ class CallIndex:
         """The program files under the folders, or None when there are more than allowed."""
         seen: dict[str, None] = {}
         for folder in self.folders:
-            for path in _walk(folder):
-                seen[path] = None
-                if len(seen) > self.max_files:
-                    where = ", ".join(str(f) for f in self.folders)
-                    en = f"more than {self.max_files} program files under {where}: callers on disk are not looked for"
-                    zh = f"{where} 下的程序文件超过 {self.max_files} 个：不查找磁盘上调用它们的程序"
-                    log.warning("%s", pick(self.locale, en, zh))
-                    return None
+            found = search_program_files(folder, self.max_files - len(seen), MAX_FOLDER_ENTRIES)
+            seen.update((str(p), None) for p in found.files)
+            for problem in found.skipped:
+                log.info("%s", pick(self.locale, str(problem), problem.zh))
+            if not found.complete or len(seen) > self.max_files:
+                where = ", ".join(str(f) for f in self.folders)
+                en = f"more than {self.max_files} program files under {where}: callers on disk are not looked for"
+                zh = f"{where} 下的程序文件超过 {self.max_files} 个：不查找磁盘上调用它们的程序"
+                log.warning("%s", pick(self.locale, en, zh))
+                return None
         return sorted(seen)
 
     def _read(self, path: str) -> tuple[IndexedCall, ...]:
         """The literal calls that the file at ``path`` makes."""
         try:
             text = read_program(path, self.max_bytes).text
-        except (OSError, BinaryFileError):
+        except FileTooLargeError as e:
+            log.info("%s: its calls are not indexed", e)
+            return ()
+        except (OSError, SkippedFileError):
             return ()
         self.files_read += 1
         word = self._word.search
@@ -197,19 +210,6 @@ class CallIndex:
     def holds(self, path: str) -> bool:
         self._ensure()
         return path in self._entries
-
-
-def _walk(folder: Path) -> Iterator[str]:
-    """Program files under ``folder`` as ``find_program_files`` finds them, lazily (so that
-    counting can stop early), hidden folders skipped, links leading out of ``folder`` left out."""
-    for root, dirs, files in os.walk(folder):
-        dirs[:] = sorted(d for d in dirs if not d.startswith("."))
-        for name in sorted(files):
-            if name.startswith("."):
-                continue
-            p = Path(root) / name
-            if is_program_file(p) and p.is_file() and (not p.is_symlink() or stays_inside(p, folder)):
-                yield str(p)
 
 
 def _call_words(settings: MachineSettings) -> str:

@@ -63,6 +63,7 @@ CODES: dict[str, CodeInfo] = {
     "keyword-abbreviation": CodeInfo("hint", "A macro word written shortened (WH for WHILE), read as the whole word."),
     "after-tape-end": CodeInfo("hint", "Text after the closing % (the end of the tape), which is not read."),
     "internal-error": CodeInfo("error", "The checker itself failed on this line, program or file (a bug to report)."),
+    "machine-file": CodeInfo("error", "The machine file (.cncmacro.toml) cannot be used: the defaults stand in."),
 }
 
 

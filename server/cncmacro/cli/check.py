@@ -7,11 +7,14 @@ runs of the machine find (from each program nothing calls; called programs throu
 callers, also those on disk in the checked files' folders and the search paths, whose own
 findings are not printed). Hints (``not-executed``) are printed only with ``--hints``. Exit status: 0 when no
 error was found, 1 when one was, 2 on bad usage or unreadable input (a missing path, a binary
-file, a bad machine file). Unreadable files are named on standard error; the others are still
-checked. ``--locale zh-CN`` writes the messages and what goes to standard error in Chinese; the
-format around them (``file:line:col: severity: message [code]``, the JSON and SARIF keys and
-values other than the message) is a contract and stays as it is. Control characters in file
-names and messages are shown escaped in the text output and on standard error (``terminal``).
+file, a folder or file that cannot be read, a file found in a folder that is larger than
+``MAX_PROGRAM_BYTES`` or is no regular file, a bad machine file). Whatever is not read is named
+on standard error; the others are still checked. A file name that is not UTF-8 is written as
+``files.shown_text`` shows it (SARIF's URIs keep its bytes). ``--locale zh-CN`` writes the
+messages and what goes to standard error in Chinese; the format around them
+(``file:line:col: severity: message [code]``, the JSON and SARIF keys and values other than the
+message) is a contract and stays as it is. Control characters in file names and messages are
+shown escaped in the text output and on standard error (``terminal``).
 """
 
 from __future__ import annotations
@@ -30,7 +33,7 @@ from ..analysis.faults import FILE, internal_error
 from ..analysis.locale import is_chinese, pick
 from ..analysis.workspace import WorkspaceAnalysis
 from ..bilingual import in_language
-from ..library.files import BinaryFileError, RefusedFileError, find_program_files, read_program
+from ..library.files import MAX_PROGRAM_BYTES, SkippedFileError, read_program, search_program_files, shown_text
 from ..library.machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
 from .sarif import to_sarif
 from .terminal import Printable, json_text, printable
@@ -62,21 +65,32 @@ def check_paths(
     sources: list[tuple[Path, str]] = []
     for arg in paths:
         root = Path(arg)
-        if not root.exists():
-            print(pick(locale, f"cncmacro: {arg}: no such file or folder", f"cncmacro：{arg}：文件或文件夹不存在"),
-                  file=err)  # fmt: skip
+        try:
+            root.stat()
+        except OSError as e:
+            shown, why = shown_text(arg), e.strerror or e
+            if isinstance(e, (FileNotFoundError, NotADirectoryError)):
+                en, zh = f"cncmacro: {shown}: no such file or folder", f"cncmacro：{shown}：文件或文件夹不存在"
+            else:
+                en, zh = f"cncmacro: {shown}: cannot read: {why}", f"cncmacro：{shown}：无法读取：{why}"
+            print(pick(locale, en, zh), file=err)
             unreadable = True
             continue
-        for path in find_program_files(root):
+        found = search_program_files(root)
+        for problem in found.skipped:
+            print(f"cncmacro：{problem.zh}" if chinese else f"cncmacro: {problem}", file=err)
+            unreadable = True
+        searched = root.is_dir()  # a file named on the command line is read whole
+        for path in found.files:
             try:
-                source = read_program(path)
-            except (BinaryFileError, RefusedFileError) as e:
+                source = read_program(path, MAX_PROGRAM_BYTES if searched else None)
+            except SkippedFileError as e:
                 print(f"cncmacro：{e.message.zh}" if chinese else f"cncmacro: {e}", file=err)
                 unreadable = True
                 continue
             except OSError as e:
-                reason = e.strerror or e
-                print(pick(locale, f"cncmacro: {path}: cannot read: {reason}", f"cncmacro：{path}：无法读取：{reason}"),
+                why, shown = e.strerror or e, shown_text(str(path))
+                print(pick(locale, f"cncmacro: {shown}: cannot read: {why}", f"cncmacro：{shown}：无法读取：{why}"),
                       file=err)  # fmt: skip
                 unreadable = True
                 continue
@@ -107,7 +121,8 @@ def check_paths(
         out.write(json_text(to_sarif(diagnostics, __version__), indent=2) + "\n")
     else:
         for d in diagnostics:
-            out.write(printable(f"{d.file}:{d.line + 1}:{d.column + 1}: {d.severity}: {d.message} [{d.code}]") + "\n")
+            line = f"{d.file}:{d.line + 1}:{d.column + 1}: {d.severity}: {d.message} [{d.code}]"
+            out.write(printable(shown_text(line)) + "\n")
     if unreadable:
         return 2
     return 1 if any(d.severity == "error" for d in diagnostics) else 0
@@ -143,14 +158,14 @@ def _analyse(ws: WorkspaceAnalysis, files: list[tuple[Path, str]], workspace: Ca
 def _as_json(d: Diagnostic) -> dict[str, object]:
     """The CLI contract's JSON object: 1-based lines and columns, end column exclusive."""
     return {
-        "file": d.file,
+        "file": shown_text(d.file),
         "line": d.line + 1,
         "column": d.column + 1,
         "endLine": d.end_line + 1,
         "endColumn": d.end_column + 1,
         "severity": d.severity,
         "code": d.code,
-        "message": d.message,
+        "message": shown_text(d.message),
     }
 
 

@@ -4,8 +4,9 @@
 (with its default severity and description from ``analysis.severity.CODES``) and a result for
 each diagnostic. Levels are SARIF's: ``error``, ``warning``, and ``note`` for information and
 hint. File names become URIs relative to the current folder when the file lies below it, else
-absolute ``file://`` URIs; regions are 1-based, with the end column just after the last
-character, as SARIF counts them.
+absolute ``file://`` URIs, the bytes of the name percent-encoded (a name that is not UTF-8 keeps
+its bytes; the messages show it as ``files.shown_text`` does); regions are 1-based, with the end
+column just after the last character, as SARIF counts them.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from urllib.parse import quote
 
 from ..analysis.diagnostics import Diagnostic, Related
 from ..analysis.severity import CODES
+from ..library.files import shown_text
 
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 SARIF_VERSION = "2.1.0"
@@ -66,7 +68,7 @@ def _result(d: Diagnostic, rule_index: int) -> dict[str, Any]:
         "ruleId": d.code,
         "ruleIndex": rule_index,
         "level": LEVELS.get(d.severity, "warning"),
-        "message": {"text": d.message},
+        "message": {"text": shown_text(d.message)},
         "locations": [_location(d.file, d.line, d.column, d.end_line, d.end_column)],
     }
     if d.related:
@@ -79,7 +81,7 @@ def _result(d: Diagnostic, rule_index: int) -> dict[str, Any]:
 def _related(r: Related, i: int) -> dict[str, Any]:
     loc = _location(r.file, r.line, r.column, r.line, r.end_column)
     loc["id"] = i
-    loc["message"] = {"text": r.message}
+    loc["message"] = {"text": shown_text(r.message)}
     return loc
 
 
@@ -102,11 +104,11 @@ def _location(file: str, line: int, column: int, end_line: int, end_column: int)
 def artifact_uri(file: str) -> str:
     """``file`` as a URI: relative (with ``/``) when it lies in or below the current folder,
     else an absolute ``file://`` URI. Characters a URI cannot hold (spaces, Chinese names) are
-    percent-encoded as UTF-8."""
+    percent-encoded as UTF-8, and the bytes of a name that is not UTF-8 as they are."""
     path = Path(file)
     absolute = path if path.is_absolute() else Path.cwd() / path
     try:
         relative = Path(os.path.normpath(absolute)).relative_to(Path.cwd())
     except ValueError:
         return Path(os.path.normpath(absolute)).as_uri()
-    return quote(str(PurePosixPath(*relative.parts)), safe="/")
+    return quote(os.fsencode(PurePosixPath(*relative.parts)), safe="/")

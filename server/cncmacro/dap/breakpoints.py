@@ -33,7 +33,7 @@ from typing import Any
 
 from ..analysis.locale import is_chinese, pick
 from ..bilingual import in_language
-from ..library.files import BinaryFileError, ReadScope, RefusedFileError
+from ..library.files import ReadScope, SkippedFileError
 from ..library.programs import load_text
 from ..machine import Machine, MacroAlarm
 from ..machine.evaluate import CompiledText, EvaluationError, compile_condition, compile_expression, holds, value_of
@@ -241,7 +241,7 @@ class Breakpoints:
         """The blocks of the file at ``path`` where a run can stop, or why it cannot be read."""
         try:
             program = load_text(path, self.read_scope(path).read(path).text).program
-        except (BinaryFileError, RefusedFileError) as e:
+        except SkippedFileError as e:
             return in_language(e.message, is_chinese(self.locale))  # the path, and why it is not read
         except OSError as e:
             why = e.strerror or str(e)

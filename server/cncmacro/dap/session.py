@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any, BinaryIO
 
 from ..bilingual import detail
-from ..library.files import BinaryFileError, RefusedFileError
+from ..library.files import SkippedFileError
 from ..machine import Machine
 from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
 from ..machine.machine import COMPLETED
@@ -430,7 +430,7 @@ class Session:
             raise RequestFailed("the source has no path")
         try:  # program files in the launch's folders only, never a pipe or a device
             text = self.breakpoints.read_scope(path).read(path).text
-        except (BinaryFileError, RefusedFileError) as e:
+        except SkippedFileError as e:
             raise RequestFailed(show.detail_text(e.message, self.locale)) from None
         except OSError as e:
             raise RequestFailed(f"cannot read {path}: {e.strerror or e}") from None

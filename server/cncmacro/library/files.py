@@ -6,54 +6,124 @@ that neither accepts are kept as surrogate escapes, so nothing is lost when the 
 written back. A file with NUL bytes or mostly control characters is binary: it is reported,
 not parsed.
 
-Only a regular file of at most ``MAX_PROGRAM_BYTES`` is read, and it is opened without
-blocking: a pipe, a device (``/dev/zero``) or a folder is refused with a ``RefusedFileError``
-before a byte is read, so a read never waits and never grows without end. A path that a client
-names (an editor's file event, a debugger's request) is read with ``ReadScope``: a program
-file under the folders the front end works in, a link that leads out of them not followed.
+A workspace is anybody's folder, so everything here is read as untrusted (docs/design.md
+"Untrusted folders and files"). Files are opened in one place, ``read_bytes``: only regular
+files (a FIFO or a device is never waited on), and a file found by searching a folder only up to
+``MAX_PROGRAM_BYTES``; anything else is a ``SkippedFileError`` that says why. Folders are searched
+without recursion, so any depth is fine; a folder that cannot be read is named in the result, not
+raised. A search for a workspace index stops at ``MAX_PROGRAM_FILES`` program files and
+``MAX_FOLDER_ENTRIES`` entries, saying so, and the index reads ``MAX_INDEX_BYTES`` in all. A file
+name that is not UTF-8 (a GBK name from a Chinese Windows zip) is kept as the system gives it
+(surrogate escapes), so that the file can be read; ``shown_text`` turns it into text for people
+and JSON.
+
+A path that a client names (an editor's file event, a debugger's ``source`` or breakpoint) is
+read with ``ReadScope``: a program file under the folders the front end works in (a link that
+leads out of them not followed), or a file the scope names outright (the program a debug launch
+runs), up to ``MAX_NAMED_BYTES``; anything else is a ``RefusedFileError`` that says why.
 """
 
 from __future__ import annotations
 
 import codecs
 import os
+import re
 import stat
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..bilingual import detail
+from ..bilingual import Detail, detail
 
 # Program files are found by these endings (any case), or by an O-number name without one.
 PROGRAM_SUFFIXES = frozenset({".nc", ".cnc", ".mac", ".prg", ".tap", ".eia"})
-# Far beyond any program a control holds; a million-line CAM file is about 35 MB.
-MAX_PROGRAM_BYTES = 64_000_000
+# A program file found by searching a folder (not one named by the person) is read up to this
+# size: a larger one is skipped and named. 8 MB is some 250,000 lines.
+MAX_PROGRAM_BYTES = 8_000_000
+MAX_PROGRAM_FILES = 5_000  # program files a search for a workspace index takes
+MAX_FOLDER_ENTRIES = 100_000  # folder entries such a search looks at (a workspace folder of "/")
+MAX_INDEX_BYTES = 32_000_000  # program text a workspace index reads in all (some 10 s of parsing)
+MAX_NAMED_BYTES = 64_000_000  # a file a client names: far beyond any program (a million CAM lines is 35 MB)
 
 
-class BinaryFileError(Exception):
-    """The file is not text; ``offset`` is where the first NUL (or the evidence) is. ``message``
-    says so in English and in Chinese (``str`` of the error is the English)."""
+class SkippedFileError(Exception):
+    """A file that is not read as a program: binary, too large, or not a regular file.
+    ``message`` says why in English and in Chinese (``str`` of the error is the English)."""
+
+    def __init__(self, path: str, message: Detail) -> None:
+        super().__init__(message)
+        self.message = message
+        self.path = path
+
+
+class BinaryFileError(SkippedFileError):
+    """The file is not text; ``offset`` is where the first NUL (or the evidence) is."""
 
     def __init__(self, path: str, offset: int) -> None:
-        self.message = detail(
-            f"{path}: binary file (byte at offset {offset} is not program text), not a program",
-            f"{path}：二进制文件（偏移 {offset} 处的字节不是程序文本），不是程序",
-        )
-        super().__init__(self.message)
-        self.path = path
+        shown = shown_text(path)
+        super().__init__(path, detail(
+            f"{shown}: binary file (byte at offset {offset} is not program text), not a program",
+            f"{shown}：二进制文件（偏移 {offset} 处的字节不是程序文本），不是程序",
+        ))  # fmt: skip
         self.offset = offset
 
 
-class RefusedFileError(OSError):
-    """A path that is not read as a program: not a regular file, too large, not a program
-    file, or outside the folders it must be in. ``reason`` says why and ``message`` (the path,
-    then the reason) too, in English and in Chinese (``str`` of the error is the English)."""
+class FileTooLargeError(SkippedFileError):
+    """The file is larger than what may be read of it (``size`` > ``limit`` bytes)."""
 
-    def __init__(self, path: str | Path, en: str, zh: str) -> None:
-        self.reason = detail(en, zh)
-        self.message = detail(f"{path}: {en}", f"{path}：{zh}")
-        super().__init__(self.message)
-        self.path = str(path)
+    def __init__(self, path: str, size: int, limit: int) -> None:
+        shown = shown_text(path)
+        super().__init__(path, detail(
+            f"{shown}: {size:,} bytes, over the limit of {limit:,}: not read",
+            f"{shown}：{size:,} 字节，超过 {limit:,} 字节的上限：未读取",
+        ))  # fmt: skip
+        self.size = size
+        self.limit = limit
+
+
+class NotAFileError(SkippedFileError):
+    """The path is a FIFO, a device, a socket or a folder: nothing a program is kept in."""
+
+    def __init__(self, path: str, mode: int) -> None:
+        shown = shown_text(path)
+        what, zh = _KINDS.get(stat.S_IFMT(mode), ("not a regular file", "不是普通文件"))
+        super().__init__(path, detail(f"{shown}: {what}: not read", f"{shown}：{zh}：未读取"))
+
+
+_KINDS = {
+    stat.S_IFIFO: ("a FIFO (named pipe), not a file", "是命名管道（FIFO），不是文件"),
+    stat.S_IFCHR: ("a device, not a file", "是设备，不是文件"),
+    stat.S_IFBLK: ("a device, not a file", "是设备，不是文件"),
+    stat.S_IFSOCK: ("a socket, not a file", "是套接字，不是文件"),
+    stat.S_IFDIR: ("a folder, not a file", "是文件夹，不是文件"),
+}
+# O_NONBLOCK: a FIFO swapped in after the check still opens at once; O_NOCTTY: a terminal
+# never becomes this process's
+_OPEN_FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_BINARY", 0)
+
+
+def read_bytes(path: str | Path, max_bytes: int | None) -> bytes:
+    """The bytes of the regular file at ``path``: the one place files are opened for reading.
+    Anything but a regular file is a ``NotAFileError`` (looked at before it is opened, and again
+    once it is open, so that nothing can block); a file of more than ``max_bytes`` (None: no
+    limit) is a ``FileTooLargeError``. ``OSError`` passes through."""
+    name = os.fspath(path)
+    mode = os.stat(name).st_mode
+    if not stat.S_ISREG(mode):
+        raise NotAFileError(name, mode)
+    fd = os.open(name, _OPEN_FLAGS)
+    with open(fd, "rb", closefd=True) as f:
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            raise NotAFileError(name, st.st_mode)
+        if max_bytes is None:
+            return f.read()
+        if st.st_size > max_bytes:
+            raise FileTooLargeError(name, st.st_size, max_bytes)
+        data = f.read(max_bytes + 1)  # a file that grew since is found too large here
+        if len(data) > max_bytes:
+            raise FileTooLargeError(name, max(len(data), st.st_size), max_bytes)
+        return data
 
 
 @dataclass(slots=True)
@@ -107,46 +177,11 @@ def _utf16_program(data: bytes, path: str) -> SourceText:
     return SourceText(text, "utf-16", True)
 
 
-def read_program(path: str | Path, max_bytes: int = MAX_PROGRAM_BYTES) -> SourceText:
-    """Read and decode a program file: a regular file of at most ``max_bytes``, opened without
-    blocking (``RefusedFileError``, ``OSError`` and ``BinaryFileError`` pass through)."""
-    return decode_program(_read_regular(str(path), max_bytes), str(path))
-
-
-def _read_regular(path: str, max_bytes: int) -> bytes:
-    _check_regular(path, os.stat(path), max_bytes)  # a device is never opened
-    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0))
-    try:
-        st = os.fstat(fd)
-        _check_regular(path, st, max_bytes)  # what was opened, should the path have changed meanwhile
-        chunks = []
-        left = max_bytes + 1
-        want = st.st_size + 1
-        while left > 0:
-            chunk = os.read(fd, min(left, want))
-            if not chunk:
-                break
-            chunks.append(chunk)
-            left -= len(chunk)
-            want = 1 << 20
-    finally:
-        os.close(fd)
-    if left <= 0:
-        raise _too_large(path, max_bytes)  # it grew while being read
-    return b"".join(chunks)
-
-
-def _check_regular(path: str, st: os.stat_result, max_bytes: int) -> None:
-    if not stat.S_ISREG(st.st_mode):
-        raise RefusedFileError(path, "not a regular file (a folder, pipe or device is never read as a program)",
-                               "不是普通文件（文件夹、管道或设备不会作为程序读取）")  # fmt: skip
-    if st.st_size > max_bytes:
-        raise _too_large(path, max_bytes)
-
-
-def _too_large(path: str, max_bytes: int) -> RefusedFileError:
-    mb = max_bytes / 1_000_000
-    return RefusedFileError(path, f"larger than {mb:g} MB: not read as a program", f"大于 {mb:g} MB，不作为程序读取")
+def read_program(path: str | Path, max_bytes: int | None = MAX_PROGRAM_BYTES) -> SourceText:
+    """Read and decode a program file (``OSError`` and ``SkippedFileError`` pass through). A
+    file the person named (on the command line, in a launch, a breakpoint's file) is read
+    whole with ``max_bytes=None``; a file found by searching a folder only up to the limit."""
+    return decode_program(read_bytes(path, max_bytes), os.fspath(path))
 
 
 def encode_program(source: SourceText) -> bytes:
@@ -167,19 +202,108 @@ def is_program_file(path: Path) -> bool:
     return not path.suffix and len(name) >= 2 and name[0] in "Oo" and name[1:].isdigit()
 
 
-def find_program_files(root: Path) -> list[Path]:
-    """Program files under ``root`` (itself, if it is not a folder: a pipe or a device named
-    outright is refused when read), sorted, hidden folders skipped; a link that leads out of
-    ``root`` is skipped too."""
-    if not root.is_dir():
-        return [root]
-    found = []
-    for p in sorted(root.rglob("*")):
-        if any(part.startswith(".") for part in p.relative_to(root).parts):
-            continue
-        if p.is_file() and is_program_file(p) and stays_inside(p, root):
-            found.append(p)
+@dataclass(slots=True)
+class FolderSearch:
+    """The program files a search found (sorted), what it could not read (folders, as
+    messages), and whether it looked everywhere (False when a limit stopped it)."""
+
+    files: list[Path] = field(default_factory=list)
+    skipped: list[Detail] = field(default_factory=list)
+    complete: bool = True
+
+
+def search_program_files(root: Path, max_files: int | None = None, max_entries: int | None = None) -> FolderSearch:
+    """Program files under ``root`` (itself, if it is not a folder), hidden folders and files
+    skipped, links to folders not followed, a link to a file only when it stays inside
+    ``root``. The folders are walked one after another, never by recursion, so any depth is
+    fine (a path too long for the system is a folder that cannot be read). A folder that cannot
+    be read is named in ``skipped``; the search stops after ``max_files`` program files or
+    ``max_entries`` folder entries (None: no limit), saying so."""
+    found = FolderSearch()
+    if not os.path.isdir(root):
+        found.files.append(root)
+        return found
+    shown = shown_text(str(root))
+    entries = 0
+    pending = [root]
+    while pending and found.complete:
+        folder = pending.pop()
+        inside: list[Path] = []
+        try:
+            with os.scandir(folder) as listing:
+                for entry in listing:
+                    entries += 1
+                    if max_entries is not None and entries > max_entries:
+                        found.complete = False
+                        found.skipped.append(detail(
+                            f"{shown}: more than {max_entries:,} entries: the search for program files stopped there",
+                            f"{shown}：条目超过 {max_entries:,} 个：程序文件的查找到此为止"))  # fmt: skip
+                        break
+                    path = _program_entry(entry, root, inside)
+                    if path is None:
+                        continue
+                    if max_files is not None and len(found.files) == max_files:
+                        found.complete = False
+                        found.skipped.append(detail(
+                            f"{shown}: more than {max_files:,} program files: only the first {max_files:,} are read",
+                            f"{shown}：程序文件超过 {max_files:,} 个：只读取前 {max_files:,} 个"))  # fmt: skip
+                        break
+                    found.files.append(path)
+        except OSError as e:
+            reason = e.strerror or str(e)
+            where = shown_text(str(folder))
+            found.skipped.append(detail(
+                f"{where}: cannot read the folder ({reason}): its program files are not read",
+                f"{where}：无法读取文件夹（{reason}）：其中的程序文件未读取"))  # fmt: skip
+        pending.extend(sorted(inside, reverse=True))  # depth first, in name order
+    found.files.sort()
     return found
+
+
+def _program_entry(entry: os.DirEntry[str], root: Path, folders: list[Path]) -> Path | None:
+    """The path of ``entry`` when it is a program file to read; a folder to search is added
+    to ``folders`` (not a hidden one, not a link)."""
+    if entry.name.startswith("."):
+        return None
+    path = Path(entry.path)
+    try:
+        link = entry.is_symlink()
+        if entry.is_dir():
+            if not link:
+                folders.append(path)
+            return None
+        is_file = entry.is_file()
+    except OSError:
+        link, is_file = True, True  # cannot be looked at: reading it says why
+    if is_file and is_program_file(path) and (not link or stays_inside(path, root)):
+        return path
+    return None
+
+
+def find_program_files(root: Path) -> list[Path]:
+    """Program files under ``root`` (itself, if it is a file), sorted, as ``search_program_files``
+    finds them without limits (folders that cannot be read are left out)."""
+    return search_program_files(root).files
+
+
+def program_files_in(folder: Path) -> list[Path]:
+    """The program files directly in ``folder`` (not below it), sorted; none when it cannot be
+    read, at most ``MAX_FOLDER_ENTRIES`` entries looked at."""
+    files: list[Path] = []
+    try:
+        with os.scandir(folder) as listing:
+            for k, entry in enumerate(listing):
+                if k >= MAX_FOLDER_ENTRIES:
+                    break
+                path = Path(entry.path)
+                try:
+                    if entry.is_file() and is_program_file(path):
+                        files.append(path)
+                except OSError:
+                    continue
+    except OSError:
+        return []
+    return sorted(files)
 
 
 def stays_inside(path: Path, folder: Path) -> bool:
@@ -189,6 +313,35 @@ def stays_inside(path: Path, folder: Path) -> bool:
         return path.resolve().is_relative_to(folder.resolve())
     except (OSError, RuntimeError):  # a link loop
         return False
+
+
+_ESCAPES = re.compile("[\udc80-\udcff]+|[\ud800-\udfff]")
+
+
+def shown_text(text: str) -> str:
+    """``text`` fit to show and to write as UTF-8: the bytes that a file name (or file) kept as
+    surrogate escapes are decoded as GB18030, as program text is, where they read as it (the
+    GBK name ``\\xb3\\xcc\\xd0\\xf2.nc`` shows as ``程序.nc``), else each becomes U+FFFD."""
+    if text.isascii():
+        return text
+    return _ESCAPES.sub(_shown_bytes, text)
+
+
+def _shown_bytes(m: re.Match[str]) -> str:
+    run = m.group()
+    if not "\udc80" <= run[0] <= "\udcff":
+        return "\ufffd"  # a lone surrogate that is no escaped byte
+    return bytes(ord(c) - 0xDC00 for c in run).decode("gb18030", errors="replace")
+
+
+class RefusedFileError(SkippedFileError):
+    """A path a client named that is not read: not a program file, or outside the folders it
+    must be in. ``reason`` says why without the path."""
+
+    def __init__(self, path: str | Path, en: str, zh: str) -> None:
+        shown = shown_text(os.fspath(path))
+        super().__init__(os.fspath(path), detail(f"{shown}: {en}", f"{shown}：{zh}"))
+        self.reason = detail(en, zh)
 
 
 @dataclass(frozen=True, slots=True)
@@ -213,14 +366,14 @@ class ReadScope:
         if not is_program_file(p):
             return RefusedFileError(p, "not a program file", "不是程序文件")
         if not any(stays_inside(p, f) for f in self.folders):
-            where = ", ".join(str(f) for f in self.folders) or "-"
+            where = ", ".join(shown_text(str(f)) for f in self.folders) or "-"
             return RefusedFileError(p, f"not under {where} (a link that leads out of them is not followed)",
                                     f"不在 {where} 之下（不跟随指向其外的链接）")  # fmt: skip
         return None
 
-    def read(self, path: str | Path) -> SourceText:
+    def read(self, path: str | Path, max_bytes: int | None = MAX_NAMED_BYTES) -> SourceText:
         """``read_program`` for a path in this scope; ``RefusedFileError`` for one outside it."""
         refused = self.refusal(path)
         if refused is not None:
             raise refused
-        return read_program(path)
+        return read_program(path, max_bytes)

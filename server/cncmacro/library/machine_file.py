@@ -33,14 +33,18 @@ Every key is optional (docs/design.md "Machine settings")::
     [severity]                     # diagnostic code = error|warning|information|hint|off
     macro-alarm = "error"
 
-Errors are reported as ``MachineFileError`` with the file and the key, never as a crash.
+Errors are reported as ``MachineFileError`` with the file and the key (and, where it is known,
+the line), never as a crash: the file is read as untrusted (docs/design.md "Untrusted folders and
+files"), a regular file of at most ``MAX_MACHINE_FILE_BYTES`` in UTF-8, tables nested no deeper
+than the parser can go, digits only ASCII ones, and a value is shown in a message only briefly.
 """
 
 from __future__ import annotations
 
 import itertools
-import math
 import os
+import re
+import stat
 from dataclasses import dataclass, field, replace
 from pathlib import Path, PureWindowsPath
 
@@ -49,16 +53,24 @@ import tomllib
 from ..bilingual import Detail, detail
 from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect
 from ..dialects.tables import SystemVariable
+from .files import SkippedFileError, read_bytes
 
 MACHINE_FILE_NAME = ".cncmacro.toml"
 PERSISTENT_FILE_NAME = ".cncmacro-vars.json"
 DEFAULT_MAX_BLOCKS = 1_000_000
 SEVERITY_VALUES = ("error", "warning", "information", "hint", "off")
+MAX_MACHINE_FILE_BYTES = 1_000_000  # a machine file is a few hundred bytes
 
 
 class MachineFileError(ValueError):
     """A machine file that cannot be used, with a message that names the file and key (its
-    argument is a ``Detail``: English, with the Chinese beside it)."""
+    argument is a ``Detail``: English, with the Chinese beside it). ``line`` is the 0-based line
+    the problem is on and ``key`` the setting it is about, where they are known (else None)."""
+
+    def __init__(self, message: Detail, line: int | None = None, key: str | None = None) -> None:
+        super().__init__(message)
+        self.line = line
+        self.key = key
 
 
 @dataclass(frozen=True, slots=True)
@@ -123,26 +135,94 @@ def load_machine_file(path: str | Path) -> MachineSettings:
     """Read a machine file; ``MachineFileError`` says what is wrong."""
     p = Path(path)
     try:
-        data = tomllib.loads(p.read_text(encoding="utf-8"))
+        data = read_bytes(p, MAX_MACHINE_FILE_BYTES)
+    except SkippedFileError as e:
+        raise MachineFileError(detail(f"{e.message} (the machine file)", f"{e.message.zh}（机床设置文件）")) from e
     except OSError as e:
         reason = e.strerror or e
         raise MachineFileError(detail(f"{p}: cannot read the machine file ({reason})",
                                       f"{p}：无法读取机床设置文件（{reason}）")) from e  # fmt: skip
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:
-        raise MachineFileError(detail(f"{p}: not a valid TOML file: {e}", f"{p}：不是有效的 TOML 文件：{e}")) from e
-    except RecursionError:
-        raise MachineFileError(detail(f"{p}: not a valid TOML file: nested too deeply",
-                                      f"{p}：不是有效的 TOML 文件：嵌套层数过多")) from None  # fmt: skip
-    return settings_from_mapping(data, str(p), folder=str(p.parent))
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as e:
+        line = data.count(b"\n", 0, e.start)
+        raise MachineFileError(detail(f"{p}: not UTF-8 text (byte 0x{data[e.start]:02x} on line {line + 1})",
+                                      f"{p}：不是 UTF-8 文本（第 {line + 1} 行的字节 0x{data[e.start]:02x}）"),
+                               line) from e  # fmt: skip
+    try:
+        parsed = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        where = re.search(r"at line (\d+)", str(e))
+        raise MachineFileError(detail(f"{p}: not a valid TOML file: {e}", f"{p}：不是有效的 TOML 文件：{e}"),
+                               int(where.group(1)) - 1 if where else None) from e  # fmt: skip
+    except RecursionError as e:
+        raise MachineFileError(detail(f"{p}: not a usable TOML file: its tables or arrays are nested too deeply",
+                                      f"{p}：无法使用的 TOML 文件：表或数组嵌套过深")) from e  # fmt: skip
+    except ValueError as e:  # tomllib lets through, e.g., a number too long to convert
+        raise MachineFileError(detail(f"{p}: not a usable TOML file: {e}", f"{p}：无法使用的 TOML 文件：{e}")) from e
+    try:
+        return settings_from_mapping(parsed, str(p), folder=str(p.parent))
+    except MachineFileError as e:
+        if e.line is None and e.key is not None:
+            e.line = _line_of(text, e.key)
+        raise
+    except (RecursionError, OverflowError, ValueError, TypeError) as e:  # a value no check foresaw
+        raise MachineFileError(detail(f"{p}: a value cannot be used: {type(e).__name__}: {_brief(str(e))}",
+                                      f"{p}：有无法使用的值：{type(e).__name__}：{_brief(str(e))}")) from e  # fmt: skip
+
+
+def _line_of(text: str, key: str) -> int | None:
+    """The 0-based line where the setting ``key`` (``calls.G100``, ``system_variables[2].en``)
+    is written: the line of the key inside its table (the first one after the table's line),
+    else the table's line, else None."""
+    nth = re.search(r"\[(\d+)\]", key)  # the 1-based row of an array of tables
+    table, _, inner = re.sub(r"\[\d+\]", "", key).partition(".")
+    lines = text.splitlines()
+
+    def find(name: str, start: int, end: int = len(lines)) -> int | None:
+        word = rf"""(?:{re.escape(name)}|"{re.escape(name)}"|'{re.escape(name)}')"""
+        pattern = re.compile(rf"^\s*(?:\[\[?\s*)?{word}\s*[=.\]]")
+        return next((k for k in range(start, end) if pattern.match(lines[k])), None)
+
+    first = find(table, 0)
+    for _ in range(int(nth.group(1)) - 1 if nth else 0):
+        first = find(table, first + 1) if first is not None else None
+    if first is None or not inner:
+        return first
+    end = next((k for k in range(first + 1, len(lines)) if lines[k].lstrip().startswith("[")), len(lines))
+    for name in (inner, inner.rpartition(".")[0]):  # ``calls.M60.call``: the line of M60
+        found = find(name, first, end) if name else None
+        if found is not None:
+            return found
+    return first
+
+
+def _brief(value: object, limit: int = 60) -> str:
+    """``value`` as a message shows it: short, and never by walking a nested table or list."""
+    if isinstance(value, dict):
+        return "a table"
+    if isinstance(value, list):
+        return "a list"
+    text = repr(value)
+    return text if len(text) <= limit else text[: limit - 1] + "…"
 
 
 def find_machine_file(start: str | Path) -> Path | None:
-    """The nearest ``.cncmacro.toml`` in ``start`` (a folder or file) or a folder above it."""
-    p = Path(start).resolve()
-    folder = p if p.is_dir() else p.parent
+    """The nearest ``.cncmacro.toml`` in ``start`` (a folder or file) or a folder above it. Any
+    entry of that name but a folder counts: one that is not a regular file is an error when it is
+    read, not silently passed over."""
+    try:
+        p = Path(start).resolve()
+    except (OSError, RuntimeError):  # a link loop: the folders as written
+        p = Path(os.path.abspath(start))
+    folder = p if os.path.isdir(p) else p.parent
     for d in (folder, *folder.parents):
         candidate = d / MACHINE_FILE_NAME
-        if candidate.is_file():
+        try:
+            mode = os.stat(candidate).st_mode
+        except OSError:
+            continue
+        if not stat.S_ISDIR(mode):
             return candidate
     return None
 
@@ -153,7 +233,8 @@ def settings_from_mapping(
     """Settings from a parsed TOML table (also used for a debugger launch configuration)."""
 
     def fail(key: str, what: Detail) -> MachineFileError:
-        return MachineFileError(detail(f"{source}: '{key}' {what}", f"{source}：'{key}' {what.zh}"))
+        shown = key if len(key) <= 60 else key[:59] + "…"
+        return MachineFileError(detail(f"{source}: '{shown}' {what}", f"{source}：'{shown}' {what.zh}"), key=key)
 
     known = {"base", "dialect", "common", "program_digits", "programs_on_control", "system_variables",
              "decimal_point", "block_delete", "persistent_file", "max_blocks", "date", "time",
@@ -169,10 +250,11 @@ def settings_from_mapping(
                                      "与 'base' 一样指定系统类型，只保留其中一个"))  # fmt: skip
     for key in ("base", "dialect"):
         if key in data:
-            d = normalise_dialect(str(data[key]))
+            value = data[key]
+            d = normalise_dialect(value) if isinstance(value, str) else None
             if d is None:
-                raise fail(key, detail(f"must be {choices_text()} (not {data[key]!r})",
-                                       f"必须是 {choices_text(zh=True)}（不能是 {data[key]!r}）"))  # fmt: skip
+                raise fail(key, detail(f"must be {choices_text()} (not {_brief(value)})",
+                                       f"必须是 {choices_text(zh=True)}（不能是 {_brief(value)}）"))  # fmt: skip
             kw["dialect"] = d
     if "common" in data:
         kw["common"] = _common(data["common"], str(kw.get("dialect") or DEFAULT_DIALECT), fail)
@@ -195,8 +277,9 @@ def settings_from_mapping(
             raise fail("block_delete", detail("must be true or false", "必须是 true 或 false"))
         kw["block_delete"] = data["block_delete"]
     if "persistent_file" in data:
-        pf = str(data["persistent_file"])
-        if not pf or Path(pf).is_absolute() or PureWindowsPath(pf).is_absolute() or ".." in Path(pf).parts:
+        pf = data["persistent_file"]
+        if (not isinstance(pf, str) or not pf or "\0" in pf or Path(pf).is_absolute()
+                or PureWindowsPath(pf).is_absolute() or ".." in Path(pf).parts):  # fmt: skip
             raise fail("persistent_file", detail("must be a file name or a path inside the machine file's folder",
                                                  "必须是文件名，或机床设置文件所在文件夹之内的路径"))  # fmt: skip
         kw["persistent_file"] = pf
@@ -212,11 +295,9 @@ def settings_from_mapping(
         kw["calls"] = _calls(data["calls"], fail)
     if "skip" in data:
         s = data["skip"]
-        if not isinstance(s, dict) or not all(
-            isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in s.values()
-        ):
+        if not isinstance(s, dict) or not all(_finite(v) for v in s.values()):
             raise fail("skip", detail("must map axis letters to positions (finite numbers)",
-                                      "必须是 轴地址 = 位置（有限的数值）形式的表"))  # fmt: skip
+                                      "必须是 轴地址 = 位置（有限的数值）形式的表"))
         kw["skip"] = {str(k).upper(): float(v) for k, v in s.items()}
     if "severity" in data:
         kw["severity"] = _severity(data["severity"], fail)
@@ -275,7 +356,7 @@ def _program_ranges(value: object, fail) -> tuple[tuple[int, int], ...]:  # type
             first = last = item
         elif isinstance(item, str):
             parts = [s.strip().upper().lstrip("O") for s in item.split("-")]
-            if len(parts) not in (1, 2) or not all(s.isdigit() and len(s) <= 8 for s in parts):
+            if len(parts) not in (1, 2) or not all(_digits(s) and len(s) <= 8 for s in parts):
                 raise fail("programs_on_control", bad)
             first, last = int(parts[0]), int(parts[-1])
         else:
@@ -333,9 +414,9 @@ def _variables(table: object, fail) -> dict[int, float]:  # type: ignore[no-unty
     out: dict[int, float] = {}
     for k, v in table.items():
         key = str(k).lstrip("#")
-        if not key.isdigit():
+        if not _digits(key) or len(key) > 8:
             raise fail(f"variables.{k}", detail("is not a variable number", "不是变量号"))
-        if not isinstance(v, (int, float)) or isinstance(v, bool) or not math.isfinite(v):
+        if not _finite(v):
             raise fail(f"variables.{k}", detail("must be a finite number", "必须是有限的数值"))
         out[int(key)] = float(v)
     return out
@@ -347,7 +428,8 @@ def _calls(table: object, fail) -> dict[str, CallCode]:  # type: ignore[no-untyp
     out: dict[str, CallCode] = {}
     for k, v in table.items():
         code = str(k).upper()
-        if not (code == "T" or (code[:1] in ("G", "M") and code[1:].replace(".", "", 1).isdigit())):
+        if not (code == "T" or (code[:1] in ("G", "M") and _digits(code[1:].replace(".", "", 1))
+                                and len(code) <= 10)):  # fmt: skip
             raise fail(f"calls.{k}", detail("must be a G or M code (G100, M50) or T",
                                             "必须是 G 或 M 代码（G100、M50）或 T"))  # fmt: skip
         default = "subprogram" if code == "T" else "macro"
@@ -375,10 +457,25 @@ def _severity(table: object, fail) -> dict[str, str]:  # type: ignore[no-untyped
     for k, v in table.items():
         if not isinstance(v, str) or v.strip().lower() not in SEVERITY_VALUES:
             values = ", ".join(SEVERITY_VALUES)
-            raise fail(f"severity.{k}", detail(f"must be one of {values} (not {v!r})",
-                                               f"必须是 {values} 之一（不能是 {v!r}）"))  # fmt: skip
+            raise fail(f"severity.{k}", detail(f"must be one of {values} (not {_brief(v)})",
+                                               f"必须是 {values} 之一（不能是 {_brief(v)}）"))  # fmt: skip
         out[str(k)] = v.strip().lower()
     return out
+
+
+def _digits(text: str) -> bool:
+    """Whether ``text`` is ASCII digits (``str.isdigit`` takes ``²`` and ``٣`` too)."""
+    return text.isascii() and text.isdigit()
+
+
+def _finite(value: object) -> bool:
+    """Whether ``value`` is a number a variable can hold (not a bool, not inf or nan)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return False
+    try:
+        return abs(float(value)) < float("inf")
+    except OverflowError:
+        return False
 
 
 def _code_key(code: str) -> str:

@@ -6,7 +6,9 @@ extra folder, in order: a file named after the number (``O9100.nc``, ``O9100.CNC
 ``9100.nc``, ``O9100``), then any program file whose text has an ``O9100`` header. A bracketed
 name is a file name (``CUT.CNC``), or an O number when it looks like one (``P[O1004]``).
 Only files inside those folders are ever read: a name with a path in it is never found, and a
-link in a folder that leads out of it (and out of every extra folder) is not followed.
+link in a folder that leads out of it (and out of every extra folder) is not followed. Files are
+read as any file found in a folder is (``files.read_program``): regular files only, up to
+``MAX_PROGRAM_BYTES``; one that is not read is not found.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ from ..syntax.block_parser import BlockCache, collector_paused, shared_cache
 from ..syntax.document import split_lines
 from ..syntax.program import Program, ProgramUnit, build_program
 from .dialect_choice import dialect_from_text
-from .files import BinaryFileError, is_program_file, read_program, stays_inside
+from .files import SkippedFileError, program_files_in, read_program, stays_inside
 
 ON_CONTROL = "(on the control)"  # the path suffix of a program kept on the control
 _NAME_OK = re.compile(r"^[\w+\-.\u4e00-\u9fff]+$")
@@ -101,7 +103,7 @@ class ProgramLibrary:
         if text is None:
             try:
                 text = read_program(key).text
-            except (OSError, BinaryFileError):
+            except (OSError, SkippedFileError):
                 self._files[key] = None
                 return None
         loaded = load_text(key, text, self.cache)
@@ -134,15 +136,8 @@ class ProgramLibrary:
     def _folder_files(self, folder: Path) -> list[Path]:
         files = self._listing.get(folder)
         if files is None:
-            try:
-                allowed = [folder, *self.folders]
-                files = sorted(
-                    p
-                    for p in folder.iterdir()
-                    if p.is_file() and is_program_file(p) and any(stays_inside(p, f) for f in allowed)
-                )
-            except OSError:
-                files = []
+            allowed = [folder, *self.folders]
+            files = [p for p in program_files_in(folder) if any(stays_inside(p, f) for f in allowed)]
             self._listing[folder] = files
         return files
 
@@ -184,7 +179,7 @@ class ProgramLibrary:
                 if text is None:
                     try:
                         text = read_program(p).text
-                    except (OSError, BinaryFileError):
+                    except (OSError, SkippedFileError):
                         continue
                 if header.search(text):
                     loaded = self._files[str(p)] = load_text(str(p), text, self.cache)  # read once, not twice

@@ -20,7 +20,8 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 
 from ..analysis.profile_suggestion import CODE, suggested_profile
-from ..library.machine_file import MACHINE_FILE_NAME, MachineSettings, find_machine_file
+from ..library.files import SkippedFileError, read_bytes
+from ..library.machine_file import MACHINE_FILE_NAME, MAX_MACHINE_FILE_BYTES, MachineSettings, find_machine_file
 from ..machine.calls import MAX_REPEAT
 from ..syntax.nodes import Number, Word
 from .call_sites import call_site
@@ -173,8 +174,8 @@ def machine_file_edit(path: Path, name: str, encoding: Encoding) -> types.Worksp
                                    [types.TextEdit(start, line + "\n")]),
         ])  # fmt: skip
     try:
-        lines = path.read_text(encoding="utf-8").split("\n")
-    except (OSError, UnicodeDecodeError):
+        lines = read_bytes(path, MAX_MACHINE_FILE_BYTES).decode("utf-8").split("\n")
+    except (OSError, SkippedFileError, UnicodeDecodeError):
         lines = []
     for k, text in enumerate(lines):
         if re.match(r"\s*(base|dialect)\s*=", text):

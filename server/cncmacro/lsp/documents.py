@@ -10,12 +10,14 @@ never rebuild the text.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from urllib.parse import quote, unquote_to_bytes, urlsplit
 
 from lsprotocol import types
-from pygls.uris import to_fs_path
+from pygls.uris import from_fs_path, to_fs_path
 
 from ..dialects.dialect import Dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_and_source
@@ -31,8 +33,26 @@ from .site_index import SiteIndex
 def uri_to_path(uri: str) -> str:
     """The file path of a ``file:`` URI (other schemes keep the URI itself). A NUL (``%00``)
     cannot be in a real file's path, and the system refuses every call with one: it stays
-    written as ``%00``, so the document is analysed as the unsaved text it is."""
-    return (to_fs_path(uri) or uri).replace("\x00", "%00")
+    written as ``%00``, so the document is analysed as the unsaved text it is. Percent-encoded
+    bytes that are not UTF-8 (a GBK file name, as ``path_to_uri`` writes it) are the name's
+    bytes, as the system gives them."""
+    path = to_fs_path(uri) or uri
+    if "\ufffd" in path and os.name == "posix" and uri[:5].lower() == "file:":
+        raw = unquote_to_bytes(urlsplit(uri).path)
+        try:
+            raw.decode("utf-8")
+        except UnicodeDecodeError:
+            path = os.fsdecode(raw)
+    return path.replace("\x00", "%00")
+
+
+def path_to_uri(path: str) -> str:
+    """The ``file:`` URI of a path; a name that is not UTF-8 (surrogate escapes) keeps its
+    bytes, percent-encoded, so that ``uri_to_path`` gives the same path back."""
+    try:
+        return from_fs_path(path) or path
+    except UnicodeEncodeError:
+        return "file://" + quote(os.fsencode(path))
 
 
 # an applied edit: (start line, start column, end line, end column, new text) in code points

@@ -22,7 +22,6 @@ from lsprotocol import types
 from pygls.lsp.server import LanguageServer
 from pygls.protocol import JsonRPCProtocol, LanguageServerProtocol
 from pygls.protocol.language_server import lsp_method
-from pygls.uris import from_fs_path
 from pygls.workspace import Workspace
 
 from .. import __version__
@@ -31,9 +30,10 @@ from ..library.machine_file import MACHINE_FILE_NAME, MachineSettings
 from ..syntax.block_parser import warm_up
 from .diagnostics import DiagnosticsEngine
 from .disk_watch import watch_registration
-from .documents import Documents, uri_to_path
+from .documents import Documents, path_to_uri, uri_to_path
 from .positions import negotiate
-from .settings import SECTION, Settings, machine_settings, merged_severities, valid_severities
+from .reports import log_skipped, publish_machine_file, report_skipped
+from .settings import SECTION, Settings, WorkspaceMachine, merged_severities, valid_severities, workspace_machine
 from .stdio import serve_stdio
 from .workspace_index import WorkspaceIndex
 
@@ -118,6 +118,27 @@ class CncMacroServer(LanguageServer):
         self.settings_ready = asyncio.Event()  # set once the editor's settings were asked for
         self.roots: list[str] = []
         self.watching: asyncio.Future[None] | None = None  # the request for the editor's file watcher
+        self.machine_file = WorkspaceMachine()  # the workspace's .cncmacro.toml, and its problem
+        self.machine_file_uri: str | None = None  # where a problem of it is shown
+
+    # ---- the workspace
+    def read_machine_file(self) -> None:
+        """The workspace's machine file, read again; a broken one leaves the defaults in force."""
+        self.machine_file = workspace_machine(self.roots[0]) if self.roots else WorkspaceMachine()
+        self.machine = self.machine_file.settings
+
+    def show_machine_file(self) -> None:
+        """Show the machine file's problem on it, or clear the one shown before."""
+        self.machine_file_uri = publish_machine_file(self, self.machine_file, self.machine_file_uri)
+
+    def scan_folders(self) -> None:
+        """Index the program files of the workspace folders. A fault of the checker there must
+        not stop the server (a failed ``initialize`` is fatal to the editor): it is logged and
+        the index stays as far as it got."""
+        try:
+            self.index.scan(self.roots)
+        except Exception:
+            log.exception("indexing the workspace folders failed")
 
     # ---- settings
     def severity_overrides(self) -> dict[str, str]:
@@ -133,12 +154,14 @@ class CncMacroServer(LanguageServer):
         self.diagnostics.configure(
             self.machine, settings.dialect, settings.run_budget, valid_severities(self.severity_overrides())
         )
+        if self.settings_ready.is_set():  # before, nothing may be published yet
+            self.show_machine_file()
 
     def uri_for_path(self, path: str) -> str:
         for doc in self.documents.by_uri.values():
             if doc.path == path:
                 return doc.uri
-        return from_fs_path(path) or path
+        return path_to_uri(path)
 
     def disk_changed(self, paths: Iterable[str]) -> None:
         """Files or folders changed on disk (the editor's file events, or what ``disk_watch``
@@ -151,10 +174,12 @@ class CncMacroServer(LanguageServer):
             if os.path.isdir(path):
                 self.index.refresh_folder(path)
             else:
-                self.index.reload(path)
+                problem = self.index.reload(path)
+                if problem is not None:
+                    log_skipped(self, problem)
         if any(Path(p).name == MACHINE_FILE_NAME for p in unique):  # its settings and dialect
-            self.machine = machine_settings(self.roots[0]) if self.roots else None
-            self.apply_settings(self.settings)
+            self.read_machine_file()
+            self.apply_settings(self.settings)  # and shows its problem, or clears it
         self.diagnostics.files_changed(unique)
 
     def report_server_error(self, error: Exception, source: Any) -> None:
@@ -170,12 +195,12 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
         roots = [uri_to_path(params.root_uri)]
     elif not roots and params.root_path:
         roots = [params.root_path]
-    server.machine = machine_settings(roots[0]) if roots else None
+    server.roots = roots
+    server.read_machine_file()
     server.documents.workspace_dialect = server.machine.dialect if server.machine else None
     server.documents.machine = server.machine
-    server.roots = roots
     server.diagnostics.disk.set_roots(roots)
-    server.index.scan(roots)
+    server.scan_folders()
     # the grammar parser is built meanwhile, so the first unfinished line typed does not wait for it
     threading.Thread(target=warm_up, name="cncmacro-grammar", daemon=True).start()
     server.diagnostics.start(server.machine, roots, server.locale)
@@ -185,12 +210,14 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
 async def _initialized(server: CncMacroServer, params: types.InitializedParams) -> None:
     server.watching = asyncio.ensure_future(_register_file_watchers(server))
     server.diagnostics.check_disk_now_and_then()
+    report_skipped(server, server.index.skipped)  # notifications may go out only now that initialize is answered
     try:
         await asyncio.wait_for(_pull_configuration(server), CONFIGURATION_TIMEOUT)
     except asyncio.TimeoutError:
         log.info("workspace/configuration: no answer; using the initialization options")
     finally:
         server.settings_ready.set()
+        server.show_machine_file()  # with the editor's severities
 
 
 async def _register_file_watchers(server: CncMacroServer) -> None:
@@ -270,7 +297,8 @@ def build_server() -> CncMacroServer:
         gone = {uri_to_path(f.uri) for f in params.event.removed}
         ls.roots = [r for r in ls.roots if r not in gone] + [uri_to_path(f.uri) for f in params.event.added]
         ls.diagnostics.disk.set_roots(ls.roots)
-        ls.index.scan(ls.roots)
+        ls.scan_folders()
+        report_skipped(ls, ls.index.skipped)
         ls.diagnostics.folders_changed(ls.roots)
 
     @server.feature(DOCUMENT_DIALECT)

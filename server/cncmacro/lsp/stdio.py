@@ -10,7 +10,9 @@ pygls's own loop is replaced here so that no message can break the session:
   parameters do not fit the method with an invalid-params error (-32602) for its id;
 - a request after ``shutdown`` is answered with an invalid-request error (-32600), as the
   specification asks, instead of silence;
-- ``exit`` ends the process with 0 after ``shutdown`` and 1 without it.
+- ``exit`` ends the process with 0 after ``shutdown`` and 1 without it;
+- a string that holds a lone surrogate (a file name that is not UTF-8, kept as the system gives
+  it) is sent as ``library.files.shown_text`` shows it, so every message is valid Unicode.
 """
 
 from __future__ import annotations
@@ -24,6 +26,8 @@ from typing import TYPE_CHECKING, Any, BinaryIO
 
 from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
 from pygls.io_ import StdinAsyncReader, StdoutWriter
+
+from ..library.files import shown_text
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -42,7 +46,7 @@ def serve_stdio(server: CncMacroServer, stdin: BinaryIO, stdout: BinaryIO) -> in
     """Serve until the client says exit or closes the stream; the process's exit code."""
     server._stop_event = stop = threading.Event()
     reader = StdinAsyncReader(stdin, server.thread_pool)
-    server.protocol.set_writer(StdoutWriter(stdout))
+    server.protocol.set_writer(UnicodeWriter(stdout))
     try:
         asyncio.run(_read_messages(server, reader, stop))
     except BrokenPipeError:
@@ -54,6 +58,41 @@ def serve_stdio(server: CncMacroServer, stdin: BinaryIO, stdout: BinaryIO) -> in
     finally:
         server.shutdown()
     return 0
+
+
+class UnicodeWriter(StdoutWriter):
+    """pygls writes JSON with non-ASCII characters escaped, a lone surrogate too (``\\udcb3``),
+    which a strict client rejects: such a message is written again with its strings shown."""
+
+    def write(self, data: bytes) -> None:
+        if b"\\ud" in data:
+            data = _without_lone_surrogates(data)
+        super().write(data)
+
+
+def _without_lone_surrogates(data: bytes) -> bytes:
+    head, sep, body = data.partition(b"\r\n\r\n")
+    if not sep:
+        return data
+    try:
+        message = json.loads(body)
+    except ValueError:
+        return data
+    fixed = json.dumps(_shown(message)).encode("ascii")
+    if fixed == body:
+        return data
+    head = _CONTENT_LENGTH.sub(b"Content-Length: %d" % len(fixed), head, count=1)
+    return head + sep + fixed
+
+
+def _shown(value: Any) -> Any:
+    if isinstance(value, str):
+        return shown_text(value)
+    if isinstance(value, list):
+        return [_shown(v) for v in value]
+    if isinstance(value, dict):
+        return {shown_text(k): _shown(v) for k, v in value.items()}
+    return value
 
 
 async def _read_messages(server: CncMacroServer, reader: StdinAsyncReader, stop: threading.Event) -> None:

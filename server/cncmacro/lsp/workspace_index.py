@@ -1,12 +1,16 @@
 """The index of program files across the workspace, kept fresh by file events.
 
 At start every program file under the workspace folders is read and parsed once (through the
-program library's ``load_text``, with the shared block cache). A file changed on disk (an
-editor's file event, or ``disk_watch.py``) is read again, or dropped when it is gone; only a
-regular file is ever opened (a FIFO named ``O1234.nc`` would wait for a writer). Open
-documents take the place of their file on disk, so every question (which programs exist,
-where ``#100`` is written, who calls O9100) sees the editor's text. Program lookup for a call
-goes through ``library.programs.ProgramLibrary``.
+program library's ``load_text``, with the shared block cache), as a search of a workspace folder
+reads files (``library/files.py``: at most ``MAX_PROGRAM_FILES`` files and ``MAX_FOLDER_ENTRIES``
+entries per folder, each file up to ``MAX_PROGRAM_BYTES``, regular files only, ``MAX_INDEX_BYTES``
+in all, so that ``initialize`` is answered soon whatever the folder, ``/`` too); what was not read
+is kept in ``skipped`` for the server to report. A file changed on disk (an editor's file event,
+or ``disk_watch.py``) is read again, or dropped when it is gone; only a regular file is ever
+opened (a FIFO named ``O1234.nc`` would wait for a writer). Open documents take the place of
+their file on disk, so every question (which programs exist, where ``#100`` is written, who
+calls O9100) sees the editor's text. Program lookup for a call goes through
+``library.programs.ProgramLibrary``.
 """
 
 from __future__ import annotations
@@ -17,7 +21,19 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..library.files import BinaryFileError, ReadScope, find_program_files, is_program_file
+from ..bilingual import Detail, detail
+from ..library.files import (
+    MAX_FOLDER_ENTRIES,
+    MAX_INDEX_BYTES,
+    MAX_PROGRAM_FILES,
+    BinaryFileError,
+    ReadScope,
+    SkippedFileError,
+    is_program_file,
+    read_program,
+    search_program_files,
+    shown_text,
+)
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary, load_text
 from .documents import Documents, OpenDocument
 
@@ -43,30 +59,52 @@ class WorkspaceIndex:
         self.documents = documents
         self.roots: list[Path] = []
         self.files: dict[str, LoadedFile] = {}
+        self.skipped: list[Detail] = []  # what the last scan did not read, and why
 
     def scan(self, roots: list[str]) -> int:
         """Read every program file under ``roots``; the number of files indexed."""
         self.roots = [Path(r) for r in roots if r]
         self.files.clear()
+        self.skipped = []
+        read = 0
         for root in self.roots:
-            if not root.is_dir():
+            if not os.path.isdir(root):
                 continue
-            for p in find_program_files(root):
-                self.reload(str(p))
+            found = search_program_files(root, MAX_PROGRAM_FILES, MAX_FOLDER_ENTRIES)
+            self.skipped += found.skipped
+            for k, p in enumerate(found.files):
+                if read > MAX_INDEX_BYTES:
+                    self.skipped.append(_index_full(root, len(found.files) - k))
+                    break
+                problem = self.reload(str(p))
+                if problem is not None:
+                    self.skipped.append(problem)
+                elif str(p) in self.files:
+                    read += sum(len(line) + 1 for line in self.files[str(p)].lines)
         return len(self.files)
 
-    def reload(self, path: str) -> None:
-        """Read one file again (created, changed or deleted on disk)."""
-        if not Path(path).is_file():  # gone, or not a regular file: never opened
+    def reload(self, path: str) -> Detail | None:
+        """Read one file again (created, changed or deleted on disk); why it was not read, if it
+        was not (a binary file is only logged: it is no program)."""
+        if ReadScope.of(self.roots).refusal(path) is not None:
+            return None  # only program files under the workspace folders are read
+        if not os.path.lexists(path):  # gone
             self.files.pop(path, None)
-            return
+            return None
         try:
-            text = ReadScope.of(self.roots).read(path).text  # program files under the workspace folders only
-        except (OSError, BinaryFileError) as e:
-            log.info("not indexed: %s", e)
+            text = read_program(path).text
+        except (OSError, SkippedFileError) as e:
             self.files.pop(path, None)
-            return
+            if isinstance(e, BinaryFileError):
+                log.info("not indexed: %s", e)
+                return None
+            if isinstance(e, SkippedFileError):
+                return e.message
+            reason = e.strerror or str(e)
+            shown = shown_text(path)
+            return detail(f"{shown}: cannot read ({reason})", f"{shown}：无法读取（{reason}）")
         self.files[path] = load_text(path, text)
+        return None
 
     def refresh_folder(self, folder: str) -> None:
         """A folder's entries changed: its program files that are new are read, the ones gone
@@ -115,3 +153,11 @@ class WorkspaceIndex:
         if number is not None:
             return lib.find_number(number, near)
         return None
+
+
+def _index_full(root: Path, left: int) -> Detail:
+    shown = shown_text(str(root))
+    return detail(
+        f"{shown}: {left:,} program files are not indexed: the index holds {MAX_INDEX_BYTES:,} bytes of text already",
+        f"{shown}：{left:,} 个程序文件未编入索引：索引已有 {MAX_INDEX_BYTES:,} 字节的文本",
+    )

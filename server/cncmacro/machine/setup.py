@@ -21,7 +21,7 @@ from pathlib import Path
 from ..bilingual import detail, in_language
 from ..dialects import get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect
-from ..library.files import BinaryFileError, RefusedFileError, decode_program, read_program
+from ..library.files import SkippedFileError, decode_program, read_program
 from ..library.machine_file import (
     PERSISTENT_FILE_NAME,
     MachineFileError,
@@ -97,11 +97,11 @@ def prepare_run(
     is ``saving`` waits at most ``wait`` seconds for the persistent file's lock and holds it
     until ``save`` or ``release``."""
     try:
-        source = read_program(program) if data is None else decode_program(data, str(program))
-    except (OSError, BinaryFileError) as e:
+        source = read_program(program, max_bytes=None) if data is None else decode_program(data, str(program))
+    except (OSError, SkippedFileError) as e:
         if isinstance(e, FileNotFoundError):
             raise SetupError(detail(f"there is no file {program}", f"文件 {program} 不存在")) from None
-        why = e.reason if isinstance(e, RefusedFileError) else e.message if isinstance(e, BinaryFileError) else str(e)
+        why = e.message if isinstance(e, SkippedFileError) else str(e)
         raise SetupError(
             detail(f"cannot read the program {program}: {why}", f"无法读取程序 {program}：{in_language(why, True)}")
         ) from None

@@ -1,0 +1,92 @@
+"""What the language server could not use in the workspace, told where a person sees it.
+
+A machine file (``.cncmacro.toml``) that cannot be used is an error diagnostic on that file, with
+the code ``machine-file``, on the line the problem is on where it is known: the Problems panel
+lists it whether the file is open or not, while the analysis goes on with the defaults; it is
+cleared once the file is right again (or gone). The editor's ``severity`` setting can change or
+switch off the code, as any other. Folders and files that the workspace index did not
+read (a folder that cannot be read, a file larger than the limit, one that is not a regular file,
+a search cut short by its limits) are named in one warning (``window/showMessage``) per scan,
+and each of them (up to ``LOGGED``) in the log (``window/logMessage``, the "CNC Macro Server"
+output).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from lsprotocol import types
+
+from ..analysis.severity import OFF
+from ..bilingual import Detail, in_language
+from ..library.files import shown_text
+from .settings import WorkspaceMachine
+
+if TYPE_CHECKING:
+    from .server import CncMacroServer
+
+MACHINE_FILE_CODE = "machine-file"
+_SEVERITIES = {
+    "error": types.DiagnosticSeverity.Error,
+    "warning": types.DiagnosticSeverity.Warning,
+    "information": types.DiagnosticSeverity.Information,
+    "hint": types.DiagnosticSeverity.Hint,
+}
+NAMED = 3  # how many of the skipped the warning names
+LOGGED = 100  # how many the log names, one line each
+
+
+def _chinese(server: CncMacroServer) -> bool:
+    return server.locale.lower().startswith("zh")
+
+
+def publish_machine_file(server: CncMacroServer, machine: WorkspaceMachine, published: str | None) -> str | None:
+    """Publish the machine file's problem, or clear what ``published`` (a URI) showed before;
+    the URI that now shows a problem, if any."""
+    level = server.settings.severity.get(MACHINE_FILE_CODE, "error")
+    level = level if level in _SEVERITIES or level == OFF else "error"  # a bad value is logged where it is read
+    shown = machine.path is not None and machine.problem is not None and level != OFF
+    uri = server.uri_for_path(str(machine.path)) if shown else None
+    if published is not None and published != uri:
+        server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=published, diagnostics=[]))
+    if uri is None or machine.problem is None:
+        return None
+    line = machine.problem.line or 0
+    message = shown_text(in_language(machine.problem.args[0], _chinese(server)))
+    item = types.Diagnostic(
+        range=types.Range(types.Position(line, 0), types.Position(line + 1, 0)),
+        message=message,
+        severity=_SEVERITIES[level],
+        code=MACHINE_FILE_CODE,
+        source="cncmacro",
+    )
+    server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[item]))
+    return uri
+
+
+def log_skipped(server: CncMacroServer, problem: Detail) -> str:
+    """Name one folder or file that was not read in the log; the text it was named with."""
+    text = shown_text(in_language(problem, _chinese(server)))
+    server.window_log_message(types.LogMessageParams(type=types.MessageType.Warning, message=text))
+    return text
+
+
+def report_skipped(server: CncMacroServer, skipped: list[Detail]) -> None:
+    """Name what a scan of the workspace folders did not read (nothing when it read all)."""
+    if not skipped:
+        return
+    chinese = _chinese(server)
+    texts = [log_skipped(server, s) for s in skipped[:LOGGED]]
+    if len(skipped) > LOGGED:
+        more = len(skipped) - LOGGED
+        text = f"……另有 {more} 个文件夹或文件未读取" if chinese else f"... and {more} more folders or files not read"
+        server.window_log_message(types.LogMessageParams(type=types.MessageType.Warning, message=text))
+    named = "; ".join(texts[:NAMED])
+    more = len(skipped) - NAMED
+    if chinese:
+        message = f"cncmacro：工作区中有 {len(skipped)} 个文件夹或文件未读取：{named}"
+        message += f"；其余 {more} 个见输出窗口" if more > 0 else ""
+    else:
+        message = f"cncmacro: {len(skipped)} folders or files in the workspace were not read: {named}"
+        message += f"; {more} more in the output" if more > 0 else ""
+    server.window_show_message(types.ShowMessageParams(type=types.MessageType.Warning, message=message))
