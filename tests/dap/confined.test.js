@@ -82,7 +82,7 @@ describe('source', () => {
 
   test('a pipe named like a program is refused at once, never waited on', PROMPT, async () => {
     await stoppedInMain();
-    await assert.rejects(dc.sourceRequest({ source: { path: inShop('pipe.nc') } }), /not a regular file/);
+    await assert.rejects(dc.sourceRequest({ source: { path: inShop('pipe.nc') } }), /a FIFO \(named pipe\), not a file/);
     assert.equal((await dc.top()).line, 2);
   });
 
@@ -101,7 +101,7 @@ describe('setBreakpoints', () => {
     const set = await dc.setBreakpointsRequest({ source: { path: inShop('pipe.nc') }, breakpoints: [{ line: 2 }] });
     const [bp] = set.body.breakpoints;
     assert.equal(bp.verified, false);
-    assert.match(bp.message, /pipe\.nc: not a regular file/);
+    assert.match(bp.message, /pipe\.nc: a FIFO \(named pipe\), not a file/);
   });
 
   test('on /dev/zero: answered at once, unverified, saying why', PROMPT, async () => {
@@ -152,8 +152,8 @@ describe('setBreakpoints', () => {
 
 describe('launch', () => {
   for (const [what, program, why] of [
-    ['a pipe', () => inShop('pipe.nc'), /pipe\.nc: not a regular file/],
-    ['/dev/zero', () => '/dev/zero', /\/dev\/zero: not a regular file/],
+    ['a pipe', () => inShop('pipe.nc'), /pipe\.nc: a FIFO \(named pipe\), not a file/],
+    ['/dev/zero', () => '/dev/zero', /\/dev\/zero: a device, not a file/],
   ]) {
     test(`of ${what} is a clear error, at once`, PROMPT, async () => {
       await initialized();
