@@ -142,7 +142,7 @@ def test_a_fifo_named_like_a_program_never_blocks(tmp_path: Path) -> None:
     os.mkfifo(tmp_path / ".cncmacro-vars.json")  # where run keeps #500-#999
     r = cli("run", str(tmp_path / "O0001.nc"))
     assert_clean(r)
-    assert r.returncode == 2 and ".cncmacro-vars.json: not a persistent-variable file" in r.stderr
+    assert r.returncode == 2 and ".cncmacro-vars.json: the persistent-variable file is not a regular file" in r.stderr
 
 
 @pytest.mark.parametrize("name", HOSTILE_MACHINE_FILES)

@@ -88,9 +88,13 @@ class WorkspaceIndex:
         was not (a binary file is only logged: it is no program)."""
         if ReadScope.of(self.roots).refusal(path) is not None:
             return None  # only program files under the workspace folders are read
-        if not os.path.lexists(path):  # gone
+        try:
+            os.lstat(path)
+        except FileNotFoundError:  # gone (a file that cannot be looked at is said so below)
             self.files.pop(path, None)
             return None
+        except OSError:
+            pass
         try:
             text = read_program(path).text
         except (OSError, SkippedFileError) as e:
