@@ -6,7 +6,8 @@ Each case is checked against the invariants of ``fuzzing.py`` (no uncaught excep
 run within its budget, every diagnostic range inside the document). A case that breaks one is
 saved to the crashes folder (``crash-<n>.nc`` with the traceback beside it as ``.txt``) and
 the run goes on. Every few hundred cases one oversized input is tried too (long lines, deep
-brackets, many lines). At the end it prints the cases run, the crashes, the largest inputs
+brackets, many lines, operator chains and numbers thousands of characters long). At the end
+it prints the cases run, the crashes, the largest inputs
 tried and the slowest case; SIGINT or SIGTERM ends the run early with the same figures.
 """
 
@@ -28,7 +29,7 @@ from fuzzing import DIALECTS, LspTarget, cases, corpus_texts, random_program, ru
 def oversized(rnd: random.Random, k: int) -> str:
     """A large input of one of several shapes, growing with ``k``."""
     size = min(200_000, 2_000 * (1 + k))
-    shape = k % 5
+    shape = k % 5  # 3: an endless loop of many lines, or (every other time) a very long chain or number
     if shape == 0:
         return "G01 " + "X1.5 " * (size // 5) + "\n"
     if shape == 1:
@@ -39,6 +40,11 @@ def oversized(rnd: random.Random, k: int) -> str:
         return "O0001\nG01 X" + "[" * depth + "1.5" + "]" * depth + " Y#[" * depth + "1" + "]" * depth + "\nM30\n"
     if shape == 2:
         return "\n".join(random_program(rnd, 40) for _ in range(size // 2_000))
+    if shape == 3 and k % 2:
+        n = min(20_000, size // 4)
+        body = rnd.choice(["#1=1" + "+1" * n, "#1=" + "-" * n + "1", "N" + "9" * n, "GOTO" + "9" * n,
+                           "#1=" + "SQRT[" * n + "1" + "]" * n])  # fmt: skip
+        return f"O0001\n{body}\nM30\n"
     return "O0001\nWHILE[1 EQ 1]DO1\n" + "#100=#100+1\n" * (size // 12) + "END1\nM30\n"
 
 

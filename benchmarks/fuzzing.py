@@ -4,18 +4,29 @@ A case is a program text and a dialect. ``run_case`` sends it through every laye
 reach: the parser, ``WorkspaceAnalysis`` (the static checks and the bounded runs), a bounded
 ``Machine`` run (as ``cncmacro run`` does, without touching a persistent file), and every
 request handler of the language server, called in-process on a server that holds the text as
-an open document. The invariants: no exception escapes; every run ends within its block
-budget; every diagnostic range lies inside the document (in the protocol strictly; an analysis
-diagnostic may mark the one column just past a line's end, where a block ends too early). A broken
-invariant raises ``InvariantError`` naming it. ``random_program`` writes programs from macro
-fragments and noise, ``mutate`` damages a text the way hands and tools do (deleted, doubled
-and swapped characters, bracket runs, control bytes, CJK text, line-break changes).
+an open document, its client counting columns in one of the three position encodings (UTF-8,
+UTF-16, UTF-32), picked at random for each case. Now and then (``ODD_WORKSPACES``) the case is
+also written into a folder of odd file names (not UTF-8, control characters, 240 digits) with
+unreadable and deeply nested folders, a pipe, circular and dangling links or a hostile machine
+file, and ``cncmacro check`` (text, JSON, SARIF) and the server's index go through it.
+
+The invariants: no exception escapes; every run ends within its block budget; every diagnostic
+range lies inside the document (in the protocol strictly, counted in the client's encoding; an
+analysis diagnostic may mark the one column just past a line's end, where a block ends too
+early); after every edit the server's text is the text the client holds; ``check`` exits with
+0, 1 or 2 and prints valid UTF-8 and valid JSON. A broken invariant raises ``InvariantError``
+naming it. ``random_program`` writes programs from macro fragments and noise, long operator
+chains and huge literals; ``mutate`` damages a text the way hands and tools do (deleted,
+doubled and swapped characters, bracket runs, control bytes, CJK text, line-break changes).
 """
 
 from __future__ import annotations
 
 import asyncio
 import inspect
+import io
+import json
+import os
 import random
 import tempfile
 from collections.abc import Iterator
@@ -24,10 +35,12 @@ from pathlib import Path
 from lsprotocol import types
 
 from cncmacro.analysis.workspace import WorkspaceAnalysis
+from cncmacro.cli.check import check_paths
 from cncmacro.dialects import DIALECTS as ALL_PROFILES
 from cncmacro.dialects import get_dialect
 from cncmacro.library.machine_file import MachineSettings
 from cncmacro.library.programs import ProgramLibrary
+from cncmacro.lsp.positions import UTF8, UTF16, UTF32
 from cncmacro.lsp.server import CncMacroServer, build_server
 from cncmacro.machine import Machine
 from cncmacro.machine.machine import PAUSED
@@ -37,6 +50,7 @@ ROOT = Path(__file__).resolve().parent.parent
 DIALECTS = ALL_PROFILES
 REQUEST_SECONDS = 60.0  # a request or analysis still unanswered after this is a hang
 RUN_BUDGET = 3000  # blocks per fuzzed run: enough to loop and call, small enough to stay fast
+ODD_WORKSPACES = 0.1  # the share of cases also written into a folder of odd names and modes
 _FOLDER = Path(tempfile.gettempdir()) / "cncmacro-fuzz-workspace"
 
 
@@ -83,7 +97,7 @@ def _var(rnd: random.Random) -> str:
 
 
 def _statement(rnd: random.Random, labels: list[int], programs: list[int]) -> str:
-    k = rnd.randrange(16)
+    k = rnd.randrange(17)
     label = rnd.choice(labels) if labels else rnd.randint(1, 99)
     if k < 4:
         return f"{_var(rnd)}={_expr(rnd)}"
@@ -112,7 +126,31 @@ def _statement(rnd: random.Random, labels: list[int], programs: list[int]) -> st
         return f"{rnd.choice(_NC)} X{_expr(rnd, 3)} Z{rnd.choice(['#1', '-2.5', '[#24+1]'])}"
     if k == 14:
         return f"G65 P[{rnd.choice(['CUT', '切削', '../../etc/passwd', '/etc/passwd', 'O1004', '..'])}]"
+    if k == 15 and rnd.random() < 0.5:
+        return long_chain(rnd, rnd.randint(20, 600))
+    if k == 15:
+        return huge_literal(rnd)
     return rnd.choice(_NOISE) * rnd.randint(1, 3)
+
+
+def long_chain(rnd: random.Random, n: int) -> str:
+    """An expression of ``n`` chained operators: binary, unary signs or nested functions."""
+    shape = rnd.randrange(4)
+    if shape == 0:
+        return "#1=1" + "".join(rnd.choice(_OPS) + rnd.choice(["1", "#1", "2.5"]) for _ in range(n))
+    if shape == 1:
+        return "#1=" + "-" * n + "1"
+    if shape == 2:
+        return "#1=" + "ABS[" * n + "1" + "]" * n
+    return f"IF[#1{rnd.choice(_RELS)}" + "+".join(["1"] * n) + "]GOTO1"
+
+
+def huge_literal(rnd: random.Random) -> str:
+    """A number of tens to hundreds of digits where a control takes a few."""
+    digits = "9" * rnd.choice([16, 25, 40, 309, 400])
+    return rnd.choice([f"N{digits}", f"O{digits}", f"GOTO{digits}", f"G{digits}", f"M{digits}", f"T{digits}",
+                       f"M98 P{digits}", f"G65 P{digits}", f"#1={digits}.5", f"#{digits}=1", f"X{digits}",
+                       f"#1=1.{digits}", f"#1={digits}E5", f"L{digits}"])  # fmt: skip
 
 
 def random_program(rnd: random.Random, max_lines: int = 40) -> str:
@@ -240,15 +278,40 @@ class LspTarget:
     publishes is caught instead of sent and checked against the document it is for."""
 
     def __init__(self) -> None:
+        self.encoding = "utf-16"  # the columns this client counts in (``ENCODINGS``)
         self.server: CncMacroServer = build_server()
         self.server.settings_ready.set()
         self.features = self.server.protocol.fm.features
         self.published: list[types.PublishDiagnosticsParams] = []
         self.server.text_document_publish_diagnostics = self.published.append  # type: ignore[method-assign]
+        protocol = self.server.protocol
+        convert = protocol._converter  # the diagnostics already in JSON form, read back
+
+        def prepared(method: str, params: dict[str, object]) -> None:
+            if method == types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS:
+                self.published.append(convert.structure(params, types.PublishDiagnosticsParams))
+
+        protocol.send_prepared = prepared  # type: ignore[attr-defined]
         self.loop = asyncio.new_event_loop()
 
     def close(self) -> None:
         self.loop.close()
+
+    async def scan(self, folder: Path) -> None:
+        """Index ``folder`` as the workspace, announce each file in it as changed on disk, and
+        ask for the workspace's symbols."""
+        try:
+            self.server.index.scan([str(folder)])
+            names = os.listdir(os.fsencode(folder))
+            events = [types.FileEvent(uri=Path(os.fsdecode(os.path.join(os.fsencode(folder), n))).as_uri(),
+                                      type=types.FileChangeType.Changed) for n in names]  # fmt: skip
+            changed = types.DidChangeWatchedFilesParams(changes=events)
+            await self._call(types.WORKSPACE_DID_CHANGE_WATCHED_FILES, changed)
+            await self._call(types.WORKSPACE_SYMBOL, types.WorkspaceSymbolParams(query=""))
+            await self._settle()
+        finally:
+            self.server.index.scan([])  # the next case starts from an empty workspace
+            self.published.clear()
 
     def check(self, text: str, uri: str, positions: list[tuple[int, int]]) -> int:
         """Open ``text``, ask every request at ``positions``, edit at each, check what was
@@ -284,11 +347,15 @@ class LspTarget:
                 raise InvariantError(f"diagnostics of version {p.version} published after version {version}")
             for d in p.diagnostics:
                 r = d.range
-                _inside_client(lines, r.start.line, r.start.character, r.end.line, r.end.character, d.code)
+                _inside_client(lines, r.start.line, r.start.character, r.end.line, r.end.character, d.code,
+                               self.encoding)  # fmt: skip
         self.published.clear()
 
-    async def _check(self, text: str, uri: str, positions: list[tuple[int, int]]) -> int:
+    async def _check(self, text: str, uri: str, points: list[tuple[int, int]]) -> int:
+        self.server.documents.encoding = _ENCODERS[self.encoding]
         ident = types.TextDocumentIdentifier(uri)
+        model: list[str] | None = split_lines(text)  # the text as the client holds it, edited alongside
+        positions = [client_position(model, line, cp, self.encoding) for line, cp in points]
         item = types.TextDocumentItem(uri=uri, language_id="cncmacro", version=1, text=text)
         await self._call(types.TEXT_DOCUMENT_DID_OPEN, types.DidOpenTextDocumentParams(text_document=item))
         calls = 0
@@ -327,14 +394,25 @@ class LspTarget:
             for method, params in requests:
                 await self._call(method, params)
                 calls += 1
-            for version, (line, col) in enumerate(positions, start=2):  # an edit at each position
+            for version, (line, cp) in enumerate(points, start=2):  # an edit of 3 characters at each position
+                lines = self.server.documents.get(uri).lines
+                start = client_position(lines, line, cp, self.encoding)
+                end = client_position(lines, line, cp + 3, self.encoding)
                 change = types.DidChangeTextDocumentParams(
                     text_document=types.VersionedTextDocumentIdentifier(uri=uri, version=version),
                     content_changes=[types.TextDocumentContentChangePartial(
-                        range=types.Range(types.Position(line, col), types.Position(line, col + 3)), text="#1=[")],
+                        range=types.Range(types.Position(*start), types.Position(*end)), text="#1=[")],
                 )  # fmt: skip
                 await self._call(types.TEXT_DOCUMENT_DID_CHANGE, change)
-                where = types.Position(line, col)
+                if model is not None and line < len(model):
+                    was = model[line]
+                    model[line] = was[: min(cp, len(was))] + "#1=[" + was[min(cp + 3, len(was)) :]
+                    if self.server.documents.get(uri).lines != model:
+                        raise InvariantError(f"after an edit in {self.encoding} columns at line {line} "
+                                             f"column {cp}, the server's text is not the editor's")  # fmt: skip
+                else:
+                    model = None  # an edit past the last line: where it lands is the server's choice
+                where = types.Position(*start)
                 await self._call(types.TEXT_DOCUMENT_HOVER, types.HoverParams(text_document=ident, position=where))
                 calls += 1
             await self._settle()
@@ -348,9 +426,31 @@ class LspTarget:
         return calls
 
 
-def _inside_client(lines: list[str], line: int, col: int, end_line: int, end_col: int, what: object) -> None:
-    """A protocol range (UTF-16 columns) inside the document."""
-    wide = [len(x.encode("utf-16-le")) // 2 for x in lines]
+ENCODINGS = ("utf-8", "utf-16", "utf-32")
+_ENCODERS = {"utf-8": UTF8, "utf-16": UTF16, "utf-32": UTF32}
+
+
+def client_units(text: str, encoding: str) -> int:
+    """The length of ``text`` in the client's units, counted here independently of the server."""
+    if encoding == "utf-8":
+        return len(text.encode("utf-8", "surrogatepass"))
+    if encoding == "utf-16":
+        return len(text.encode("utf-16-le", "surrogatepass")) // 2
+    return len(text)
+
+
+def client_position(lines: list[str], line: int, cp: int, encoding: str) -> tuple[int, int]:
+    """The client's (line, column) of code-point column ``cp`` on ``line``; past the line's end
+    (or past the last line) the extra columns stay as they are."""
+    text = lines[line] if 0 <= line < len(lines) else ""
+    inside = min(cp, len(text))
+    return line, client_units(text[:inside], encoding) + (cp - inside)
+
+
+def _inside_client(lines: list[str], line: int, col: int, end_line: int, end_col: int, what: object,
+                   encoding: str = "utf-16") -> None:  # fmt: skip
+    """A protocol range (in the client's columns) inside the document."""
+    wide = [client_units(x, encoding) for x in lines]
     n = len(lines)
     if not (0 <= line <= end_line < n):
         raise InvariantError(f"protocol diagnostic {what}: lines {line}..{end_line} outside {n} lines")
@@ -369,11 +469,98 @@ def positions_in(text: str, rnd: random.Random, count: int = 4) -> list[tuple[in
     return out
 
 
-def run_case(text: str, dialect: str, lsp: LspTarget, rnd: random.Random) -> None:
+_ODD_NAMES = [
+    b"O0001.nc", b"\xb3\xcc\xd0\xf2.nc", b"O 0002.nc", b"-O0003.nc", "中文程序.nc".encode(), b"O0004.NC",
+    b"line\nbreak.nc", b"\x1b[31mred.nc", b"O" + b"9" * 240 + b".nc", b"%00.nc", b"O0005", b"O0006.nc.bak",
+    b"trailing .nc", "🔧.nc".encode(), b"\xff\xfe.mac", b"O#1.nc",
+]  # fmt: skip
+
+
+def odd_workspace(text: str, rnd: random.Random) -> Path:
+    """A folder holding ``text`` under odd file names (not UTF-8, control characters, very long),
+    with unreadable and nested folders, a pipe and links that lead nowhere or in a circle."""
+    folder = Path(tempfile.mkdtemp(prefix="cncmacro-fuzz-names-"))
+    raw = os.fsencode(folder)
+    for name in rnd.sample(_ODD_NAMES, rnd.randint(1, 5)):
+        with open(os.path.join(raw, name), "wb") as f:
+            f.write(text.encode("utf-8", "surrogatepass") if rnd.random() < 0.8 else text.encode("gbk", "replace"))
+    extras = rnd.sample(["closed", "listed", "deep", "pipe", "dangling", "loop", "toml"], rnd.randint(0, 3))
+    if "closed" in extras or "listed" in extras:
+        sub = folder / "sub"
+        sub.mkdir()
+        (sub / "O0100.nc").write_text("O0100\nM99\n", "utf-8")
+        sub.chmod(0o000 if "closed" in extras else 0o644)
+    if "deep" in extras:
+        deep = folder
+        for _ in range(rnd.choice([50, 300, 1100])):  # one at a time: os.makedirs recurses
+            deep = deep / "d"
+            deep.mkdir()
+        (deep / "O0200.nc").write_text("O0200\nM99\n", "utf-8")
+    if "pipe" in extras and hasattr(os, "mkfifo"):
+        os.mkfifo(folder / "O1234.nc")
+    if "dangling" in extras:
+        (folder / "O0300.nc").symlink_to(folder / "missing.nc")
+    if "loop" in extras:
+        (folder / "around").symlink_to(folder)
+    if "toml" in extras:
+        (folder / ".cncmacro.toml").write_text(rnd.choice([
+            "a=" + "{a=" * 2000 + "1" + "}" * 2000, '[calls]\n"G²"=9000\n', "base = 7\n", "\x00\x01",
+            "[" + "a." * 3000 + "a]\n", 'base = "fanuc-30i"\ncommons = [[100, 499]]\n']), "utf-8")  # fmt: skip
+    return folder
+
+
+def remove_tree(folder: Path) -> None:
+    """Remove what ``odd_workspace`` made (folder modes, pipes, links, 1,100 levels of folders),
+    without recursion."""
+    folders, pending = [], [os.fsencode(folder)]
+    while pending:
+        here = pending.pop()
+        os.chmod(here, 0o755)
+        folders.append(here)
+        with os.scandir(here) as listing:
+            for entry in listing:
+                if entry.is_dir(follow_symlinks=False):
+                    pending.append(entry.path)
+                else:
+                    os.unlink(entry.path)
+    for here in reversed(folders):
+        os.rmdir(here)
+
+
+def check_workspace(folder: Path, lsp: LspTarget) -> None:
+    """``cncmacro check`` in every format and the language server's index on ``folder``: no
+    exception, an exit status of 0, 1 or 2, output that is valid UTF-8 (and valid JSON where it
+    is JSON), and the server still answering afterwards."""
+    for fmt in ("text", "json", "sarif"):
+        out, err = io.StringIO(), io.StringIO()
+        status = check_paths([str(folder)], out, err, fmt, max_blocks=RUN_BUDGET)
+        if status not in (0, 1, 2):
+            raise InvariantError(f"check --format {fmt} exited with {status}")
+        try:
+            printed = out.getvalue().encode("utf-8")
+            err.getvalue().encode("utf-8")
+        except UnicodeEncodeError as e:
+            raise InvariantError(f"check --format {fmt} printed text that is not UTF-8: {e}") from e
+        if fmt != "text" and (printed or status != 2):  # 2 with nothing printed: refused, said on stderr
+            try:
+                json.loads(printed)
+            except ValueError as e:
+                raise InvariantError(f"check --format {fmt} printed invalid JSON: {e}") from e
+    lsp.loop.run_until_complete(lsp.scan(folder))
+
+
+def run_case(text: str, dialect: str, lsp: LspTarget, rnd: random.Random, odd: bool | None = None) -> None:
     """Every target on one case; raises on a broken invariant or an uncaught exception."""
     _FOLDER.mkdir(exist_ok=True)
     path = str(_FOLDER / "O0001.nc")
     ParsedDocument(text)
     check_analysis(text, dialect, path)
     check_run(text, dialect, path)
+    lsp.encoding = rnd.choice(ENCODINGS)
     lsp.check(text, (_FOLDER / "O0001.nc").as_uri(), positions_in(text, rnd))
+    if odd if odd is not None else rnd.random() < ODD_WORKSPACES:
+        folder = odd_workspace(text, rnd)
+        try:
+            check_workspace(folder, lsp)
+        finally:
+            remove_tree(folder)

@@ -12,6 +12,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+import fuzzing
+from cncmacro.lsp.positions import UTF16
 from fuzzing import DIALECTS, InvariantError, LspTarget, _inside_client, corpus_texts, mutate, random_program, run_case
 from strategies import line
 
@@ -57,3 +59,23 @@ def test_a_block_that_ends_too_early_is_marked_inside_its_line(lsp_target: LspTa
     rnd = random.Random(0)
     for text in ("IF[#111", "O0001\n#1=[#2+3\nM30", "#1=SIN[", "G01 X[[[1"):
         run_case(text, "fanuc", lsp_target, rnd)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_odd_workspaces_keep_every_invariant(lsp_target: LspTarget, seed: int) -> None:
+    """Odd file names, unreadable and deep folders, pipes, looping links, hostile machine files:
+    check in every format and the server's index go through them."""
+    rnd = random.Random(seed)
+    run_case(random_program(rnd), rnd.choice(DIALECTS), lsp_target, rnd, odd=True)
+
+
+def test_the_edit_oracle_catches_columns_read_in_another_encoding(
+    lsp_target: LspTarget, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The fuzzing oracle itself: a server that reads a UTF-8 client's columns as UTF-16 puts an
+    edit after Chinese text in the wrong place, and the check says so."""
+    monkeypatch.setitem(fuzzing._ENCODERS, "utf-8", UTF16)
+    lsp_target.encoding = "utf-8"
+    text = "O0001\n(中文)#100=1\nM30\n"
+    with pytest.raises(InvariantError, match="the server's text is not the editor's"):
+        lsp_target.check(text, (fuzzing._FOLDER / "O0001.nc").as_uri(), [(1, 8)])
