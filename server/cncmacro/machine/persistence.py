@@ -33,6 +33,7 @@ import time
 from pathlib import Path
 
 from ..bilingual import Detail, detail
+from ..library.files import FileTooLargeError, NotAFileError, read_bytes
 
 STALE_SECONDS = 60.0
 MAX_BYTES = 1 << 20  # a full file of 1,000 variables is about 30 kB
@@ -95,31 +96,22 @@ def load_persistent(path: Path) -> dict[int, float]:
 
 
 def _read_regular_file(path: Path) -> str | None:
-    """The text of ``path`` (``None`` when there is no such file), opened without blocking and
-    read only when it is a regular file of at most ``MAX_BYTES``."""
-    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_BINARY", 0)
+    """The text of ``path`` (``None`` when there is no such file), read as every file is read
+    (``files.read_bytes``: a regular file only, never waited on) and at most ``MAX_BYTES``."""
     try:
-        fd = os.open(path, flags)
+        data = read_bytes(path, MAX_BYTES)
     except FileNotFoundError:
         return None
+    except NotAFileError:
+        raise PersistentFileError(detail(
+            f"{path}: the persistent-variable file is not a regular file (a folder, a FIFO or a device)",
+            f"{path}：断电保持变量文件不是普通文件（而是文件夹、FIFO 或设备）")) from None  # fmt: skip
+    except FileTooLargeError as e:
+        raise PersistentFileError(detail(
+            f"{path}: too large ({e.size} bytes) to be a persistent-variable file",
+            f"{path}：文件过大（{e.size} 字节），不是断电保持变量文件")) from None  # fmt: skip
     except OSError as e:
         raise _unreadable(path, e.strerror or str(e)) from e
-    try:
-        st = os.fstat(fd)
-        if not stat.S_ISREG(st.st_mode):
-            raise PersistentFileError(detail(
-                f"{path}: the persistent-variable file is not a regular file (a folder, a FIFO or a device)",
-                f"{path}：断电保持变量文件不是普通文件（而是文件夹、FIFO 或设备）"))  # fmt: skip
-        if st.st_size > MAX_BYTES:
-            raise PersistentFileError(detail(
-                f"{path}: too large ({st.st_size} bytes) to be a persistent-variable file",
-                f"{path}：文件过大（{st.st_size} 字节），不是断电保持变量文件"))  # fmt: skip
-        with os.fdopen(fd, "rb", closefd=False) as f:
-            data = f.read(MAX_BYTES + 1)
-    except OSError as e:
-        raise _unreadable(path, e.strerror or str(e)) from e
-    finally:
-        os.close(fd)
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError:
