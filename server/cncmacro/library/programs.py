@@ -92,6 +92,7 @@ class ProgramLibrary:
         self.cache = cache if cache is not None else shared_cache
         self._files: dict[str, LoadedFile | None] = {}
         self._listing: dict[Path, list[Path]] = {}
+        self._stems: dict[Path, dict[str, list[Path]]] = {}  # folder -> lower-case stem -> its files
 
     # ---- files
     def load(self, path: str | Path) -> LoadedFile | None:
@@ -133,6 +134,16 @@ class ProgramLibrary:
         files = [p for p, f in self._files.items() if p not in self.texts and (f is None or not f.on_control)]
         return files, [str(f) for f in self._listing]
 
+    def _stems_in(self, folder: Path) -> dict[str, list[Path]]:
+        """The program files of ``folder`` by their lower-case stem (the whole name when it has
+        no ending), so that a program is found by its number without a walk of the folder."""
+        stems = self._stems.get(folder)
+        if stems is None:
+            stems = self._stems[folder] = {}
+            for p in self._folder_files(folder):
+                stems.setdefault(p.stem.lower() if p.suffix else p.name.lower(), []).append(p)
+        return stems
+
     def _folder_files(self, folder: Path) -> list[Path]:
         files = self._listing.get(folder)
         if files is None:
@@ -157,15 +168,14 @@ class ProgramLibrary:
             unit = near.program.unit_numbered(number)
             if unit is not None:
                 return FoundProgram(near, unit)
-        names = {f"o{number:04d}", f"o{number}", f"{number:04d}", f"{number}", f"o{number:08d}"}
+        names = sorted({f"o{number:04d}", f"o{number}", f"{number:04d}", f"{number}", f"o{number:08d}"})
         folders = self._search_folders(near)
         for folder in folders:
-            for p in self._folder_files(folder):
-                stem = p.stem.lower() if p.suffix else p.name.lower()
-                if stem in names:
-                    found = self._unit_in(p, number)
-                    if found is not None:
-                        return found
+            stems = self._stems_in(folder)
+            for p in sorted(p for name in names for p in stems.get(name, ())):
+                found = self._unit_in(p, number)
+                if found is not None:
+                    return found
         header = re.compile(rf"(?m)^[ \t/%]*(?:N\d+[ \t]*)?O0*{number}(?!\d)", re.I)
         for folder in folders:
             for p in self._folder_files(folder):
