@@ -33,6 +33,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from lsprotocol import types
+from pygls.exceptions import JsonRpcException
 
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.cli.check import check_paths
@@ -322,9 +323,12 @@ class LspTarget:
         handler = self.features.get(method)
         if handler is None:
             return None
-        got = handler(params)
-        if inspect.isawaitable(got):
-            got = await asyncio.wait_for(got, REQUEST_SECONDS)
+        try:
+            got = handler(params)
+            if inspect.isawaitable(got):
+                got = await asyncio.wait_for(got, REQUEST_SECONDS)
+        except JsonRpcException:  # a request the server refuses on purpose (RequestFailed): answered
+            return None
         return got
 
     async def _settle(self) -> None:

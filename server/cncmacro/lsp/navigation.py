@@ -13,6 +13,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from lsprotocol import types
+from pygls.exceptions import JsonRpcException
 
 from ..dialects import describe
 from ..machine.jumps import first_line, goto_line, return_line
@@ -180,13 +181,19 @@ def variable_references(
     return out
 
 
+def refused(message: str) -> JsonRpcException:
+    """The answer to a request the server will not do: LSP's RequestFailed, with the reason the
+    editor shows."""
+    return JsonRpcException(message=message, code=int(types.LSPErrorCodes.RequestFailed))
+
+
 def rename_label(ls: CncMacroServer, cur: Cursor, new_name: str) -> types.WorkspaceEdit | None:
     hit = label_under(cur)
     if hit is None:
         return None
     text = new_name.strip().upper().lstrip("N")
     if not text.isdigit() or not 1 <= int(text) <= 99999:
-        raise ValueError(f"'{new_name}' is not a sequence number (N1 to N99999)")
+        raise refused(f"'{new_name}' is not a sequence number (N1 to N99999)")
     new = int(text)
     doc = cur.doc
     encoding = ls.documents.encoding
@@ -194,7 +201,7 @@ def rename_label(ls: CncMacroServer, cur: Cursor, new_name: str) -> types.Worksp
     unit = program.unit_at(cur.line)
     if new != hit[0] and program.label_lines(new, unit):
         # two N20 in one program: every jump to N20 would land on the first, wherever it was
-        raise ValueError(f"N{new} is already a label in this program: renaming onto it would change where jumps land")
+        raise refused(f"N{new} is already a label in this program: renaming onto it would change where jumps land")
     edits: list[types.TextEdit] = []
     for i in program.label_lines(hit[0], unit):
         b = doc.block(i)
