@@ -22,10 +22,12 @@ setup: $(VENV)/.installed node_modules/.installed
 
 # Run a bundled example on the simulated machine, then check all of them (needs only Python).
 demo: $(VENV)/.installed
-	$(VENV)/bin/cncmacro run --no-save examples/fanuc/bolt_circle.nc
-	$(VENV)/bin/cncmacro check examples && echo "examples: no problems found"
-	@echo "--- a program with mistakes:"
-	-$(VENV)/bin/cncmacro check tests/data/O0999_broken.nc
+	@echo "--- Running examples/fanuc/bolt_circle.nc on the simulated machine:"
+	@$(VENV)/bin/cncmacro run --no-save examples/fanuc/bolt_circle.nc
+	@echo "--- Checking every program in examples/:"
+	@$(VENV)/bin/cncmacro check examples && echo "examples: no problems found"
+	@echo "--- Checking tests/data/O0999_broken.nc, a program with three planted mistakes:"
+	@$(VENV)/bin/cncmacro check tests/data/O0999_broken.nc || echo "(cncmacro check exits with status 1 when it finds mistakes)"
 
 # Every test: lint, the Python suite, the debug adapter through a real DAP client, the grammar,
 # then the .vsix is built and tested in a real VS Code (screenshots in test-output/editor/).

@@ -6,6 +6,8 @@ for speed, so on every line it accepts it must agree with the grammar to the las
 
 from __future__ import annotations
 
+import re
+import sys
 from pathlib import Path
 
 import pytest
@@ -13,7 +15,7 @@ from hypothesis import HealthCheck, given, settings
 
 from camgen import cam_program
 from cncmacro.syntax.assemble import assemble
-from cncmacro.syntax.block_parser import parse_block, parse_with_grammar
+from cncmacro.syntax.block_parser import _plain_line_pattern, parse_block, parse_with_grammar
 from cncmacro.syntax.fastpath import plain_words, read_items
 from cncmacro.syntax.lines import prepare
 from strategies import line
@@ -65,3 +67,19 @@ def test_real_lines():
 )  # fmt: skip
 def test_lines_the_fast_path_leaves_to_the_grammar(text):
     check_line(text)
+
+
+@pytest.mark.skipif(sys.version_info < (3, 11), reason="Python 3.10's re has no possessive quantifiers to compare")
+def test_python_3_10_reads_the_same_plain_lines_as_3_11():
+    """Python 3.10 gets the plain-line pattern without possessive quantifiers; it must accept
+    exactly the lines the possessive one does, or a line would parse differently there. The
+    lines: real ones, and each with a digit, a point or a blank added or taken away at its end."""
+    with_possessive = re.compile(_plain_line_pattern("+")).fullmatch
+    without = re.compile(_plain_line_pattern("")).fullmatch
+    accepted = 0
+    for text in real_lines():
+        code = prepare(text).code
+        for variant in (code, code + "5", code + ".", code + " ", code + ".5678", code[:-1], " " + code + "\t"):
+            assert (with_possessive(variant) is None) == (without(variant) is None), variant
+            accepted += with_possessive(variant) is not None
+    assert accepted > 5000  # the comparison did cover lines the pattern accepts

@@ -1,5 +1,6 @@
 // A DAP client for the tests: @vscode/debugadapter-testsupport's DebugClient, starting
-// `.venv/bin/python -m cncmacro dap` from the repository root, and a few scenario helpers.
+// `.venv/bin/python -m cncmacro dap` from the repository root (or the interpreter named by
+// CNCMACRO_TEST_PYTHON, when the suite is run again under another Python), and a few scenario helpers.
 'use strict';
 
 const cp = require('node:child_process');
@@ -7,7 +8,7 @@ const path = require('node:path');
 const { DebugClient } = require('@vscode/debugadapter-testsupport');
 
 const ROOT = path.resolve(__dirname, '..', '..');
-const PYTHON = path.join(ROOT, '.venv', 'bin', 'python');
+const PYTHON = process.env.CNCMACRO_TEST_PYTHON || path.join(ROOT, '.venv', 'bin', 'python');
 const PROGRAMS = path.join(__dirname, 'programs');
 
 function program(name) {
@@ -83,4 +84,4 @@ class CncMacroClient extends DebugClient {
   }
 }
 
-module.exports = { CncMacroClient, program, PROGRAMS, ROOT };
+module.exports = { CncMacroClient, program, PROGRAMS, PYTHON, ROOT };

@@ -10,7 +10,7 @@ const fs = require('node:fs');
 const os = require('node:os');
 const path = require('node:path');
 const { afterEach, beforeEach, describe, test } = require('node:test');
-const { CncMacroClient, program, ROOT } = require('./client.js');
+const { CncMacroClient, program, PYTHON, ROOT } = require('./client.js');
 
 let dc;
 
@@ -64,7 +64,7 @@ describe('the edges of the adapter', () => {
     const folder = fs.mkdtempSync(path.join(os.tmpdir(), 'cncmacro-dap-'));
     const main = path.join(folder, 'O0001.nc');
     fs.writeFileSync(main, 'O0001\n#500=#500+1\nM30\n');
-    const run = () => cp.spawnSync(path.join(ROOT, '.venv', 'bin', 'python'),
+    const run = () => cp.spawnSync(PYTHON,
       ['-m', 'cncmacro', 'run', '--wait', '0.2', main], { encoding: 'utf8', timeout: 30000 });
     try {
       await dc.begin({ program: main, stopOnEntry: true, noSave: false });

@@ -7,7 +7,13 @@ from __future__ import annotations
 
 import json
 import re
+import sys
 from pathlib import Path
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:
+    import tomli as tomllib
 
 from cncmacro.library.files import PROGRAM_SUFFIXES, is_program_file
 
@@ -28,10 +34,8 @@ def _pins(lines: list[str]) -> dict[str, str]:
 
 
 def test_bundled_libraries_are_pinned_to_the_versions_pyproject_installs() -> None:
-    text = (ROOT / "pyproject.toml").read_text(encoding="utf-8")
-    block = re.search(r"^dependencies = \[(.*?)\]", text, re.S | re.M)
-    assert block is not None
-    project = _pins(re.findall(r'"([^"]+)"', block.group(1)))
+    dependencies = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]["dependencies"]
+    project = _pins([d.split(";")[0] for d in dependencies])  # with or without a Python marker
     bundle_lines = (ROOT / "requirements-bundle.txt").read_text(encoding="utf-8").splitlines()
     bundle = _pins(bundle_lines)
     assert project, "pyproject.toml pins its dependencies"

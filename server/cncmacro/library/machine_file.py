@@ -1,4 +1,5 @@
-"""Machine settings: the workspace's ``.cncmacro.toml``, read with ``tomllib``.
+"""Machine settings: the workspace's ``.cncmacro.toml``, read with ``tomllib`` (``tomli`` on
+Python 3.10).
 
 Every key is optional (docs/design.md "Machine settings")::
 
@@ -45,10 +46,14 @@ import itertools
 import os
 import re
 import stat
+import sys
 from dataclasses import dataclass, field, replace
 from pathlib import Path, PureWindowsPath
 
-import tomllib
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # the same reader, from PyPI, before it joined the standard library
+    import tomli as tomllib
 
 from ..bilingual import Detail, detail
 from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect

@@ -1,0 +1,101 @@
+"""Run the tests again under the oldest and the newest Python on this machine (``make test``).
+
+cncmacro promises Python 3.10 to the newest. The main suite runs under the interpreter that made
+``.venv``; this script finds the oldest and the newest supported interpreter (``tests/pythons.py``),
+gives each its own ``.venv-<version>`` with the test dependencies, and runs the Python suite there
+(with ``--quick``: the part that covers each layer, parse, check, run, the machine file, an LSP
+session and a DAP session) and the DAP client's tests. An interpreter the main suite already ran
+under is not run twice; one that is missing is named with the reason, and the run goes on.
+Exit status 1 when any run failed.
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from pythons import Interpreter, oldest_and_newest
+
+ROOT = Path(__file__).resolve().parent.parent
+
+# Each layer once: syntax, the dialects' tables, the machine file (tomllib or tomli), the
+# interpreter, `check` and `run`, an LSP session over stdio and the debug adapter in Python.
+QUICK = [
+    "tests/test_seed_examples_parse.py",
+    "tests/test_fast_path_equals_grammar.py",
+    "tests/test_dialect_tables.py",
+    "tests/test_machine_file_profile.py",
+    "tests/test_run_4_control_flow.py",
+    "tests/test_run_5_calls.py",
+    "tests/test_cli_check.py",
+    "tests/test_cli_run.py",
+    "tests/test_dap_protocol_and_history.py",
+    "tests/lsp/test_lsp_diagnostics.py",
+    "tests/lsp/test_lsp_position_encodings.py",
+    "tests/hardening/test_shared_state.py",
+]
+DAP_QUICK = ["tests/dap/debugger.test.js"]
+
+
+def _say(text: str) -> None:
+    print(f"[other pythons] {text}", flush=True)
+
+
+def _venv(interpreter: Interpreter) -> Path:
+    """``.venv-<major.minor>`` with cncmacro and its test dependencies, made again only when
+    pyproject.toml changed."""
+    venv = ROOT / f".venv-{interpreter.version[0]}.{interpreter.version[1]}"
+    python = venv / "bin" / "python"
+    stamp = venv / ".installed"
+    wanted = hashlib.sha256((ROOT / "pyproject.toml").read_bytes()).hexdigest()
+    if python.exists() and stamp.exists() and stamp.read_text(encoding="utf-8") == wanted:
+        return venv
+    _say(f"setting up {venv.name} for {interpreter.name}")
+    subprocess.run([interpreter.executable, "-m", "venv", "--clear", str(venv)], check=True)
+    pip = [str(python), "-m", "pip", "install", "--quiet", "--disable-pip-version-check"]
+    subprocess.run([*pip, "-e", f"{ROOT}[test]"], check=True, cwd=ROOT)
+    stamp.write_text(wanted, encoding="utf-8")
+    return venv
+
+
+def _run(interpreter: Interpreter, quick: bool) -> bool:
+    venv = _venv(interpreter)
+    python = str(venv / "bin" / "python")
+    start = time.monotonic()
+    tests = QUICK if quick else []
+    env = dict(os.environ, CNCMACRO_TEST_PYTHON=python)
+    ok = subprocess.run([python, "-m", "pytest", "-p", "no:cacheprovider", *tests], cwd=ROOT, env=env).returncode == 0
+    ok = subprocess.run(["node", "--test", *DAP_QUICK], cwd=ROOT, env=env).returncode == 0 and ok
+    _say(f"{interpreter.name}: {'passed' if ok else 'FAILED'} in {time.monotonic() - start:.0f} s")
+    return ok
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="run the part of the suite that covers each layer")
+    args = parser.parse_args(argv)
+    main_version = sys.version_info[:2]
+    found = oldest_and_newest()
+    if not found:
+        _say("skipped: no Python 3.10 or newer found besides the main one (looked in pyenv's versions and the PATH)")
+        return 0
+    if len(found) == 1:
+        _say(f"only one supported Python here, {found[0].name}: there is no older or newer one to run under")
+    roles = ["oldest", "newest"] if len(found) == 2 else ["only"]
+    results = []
+    for role, interpreter in zip(roles, found, strict=True):
+        if interpreter.version[:2] == main_version:
+            _say(f"{role}: {interpreter.name} is the main suite's interpreter, which ran everything above")
+            continue
+        _say(f"{role}: {interpreter.name} ({interpreter.executable})")
+        results.append(_run(interpreter, args.quick))
+    return 0 if all(results) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
