@@ -163,6 +163,13 @@ def test_5_calls_a_gsk_program_named_by_its_file_is_reached_through_p_name(tmp_p
     assert codes(open_alone(ws, cut)) == [(1, "division-by-zero")]
 
 
+def test_5_calls_a_gsk_program_after_the_dialect_comment_is_reached_through_p_name(tmp_path):
+    write(tmp_path / "MAIN.cnc", "(cncmacro: dialect=gsk980tdi)\nO0001\nG65 P[CUT] A4\nM30\n")
+    cut = write(tmp_path / "CUT.CNC", "(cncmacro: dialect=gsk980tdi)\nO0005 (CUT)\n#2=1/[#1-4]\nM99\n")
+    ws = WorkspaceAnalysis(settings=MachineSettings(dialect="gsk980tdi"), workspace_folders=[str(tmp_path)])
+    assert codes(open_alone(ws, cut)) == [(3, "division-by-zero")]
+
+
 def test_5_calls_an_edit_in_the_macro_resumes_the_callers_run(tmp_path, monkeypatch):
     """The caller on disk runs 120 blocks before the call: an edit in the macro takes its run
     back to a checkpoint before the macro first ran, not to the start, and the result is the

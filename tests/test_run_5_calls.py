@@ -284,6 +284,12 @@ def test_gsk_bracketed_program_names(tmp_path):
     assert v[100] == 5 and v[101] == 4 and v[102] == 1
 
 
+def test_a_gsk_call_by_file_name_runs_the_program_after_the_dialect_comment(tmp_path):
+    (tmp_path / "CUT.CNC").write_text("%\n(cncmacro: dialect=gsk980tdi)\nO0005 (CUT)\n#100=#1\nM99\n%\n")
+    v = final(lines("G65 P[CUT] A5", "M30"), "gsk980tdi", folder=tmp_path)
+    assert v[100] == 5
+
+
 def test_gsk_p_from_a_variable_with_too_many_digits_is_alarm_291(tmp_path):
     # seed 001: #100=21234 -> alarm 291
     assert alarm(lines("#100=21234", "G65 P[#100] L2", "M30"), "gsk980tdi", folder=tmp_path) == (291, 2)

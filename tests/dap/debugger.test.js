@@ -259,7 +259,7 @@ describe('alarms, messages and the end of a session', () => {
       assert.equal(event.body.reason, 'pause');
       assert.match(event.body.text, /CHECK THE PART/);
       assert.equal((await dc.top()).line, 5);
-      assert.match(dc.output, /message\.nc:3 G01\s+X0\.000 -> X10\.000\s+F100/);
+      assert.match(dc.output, /message\.nc:3 G01\s+X0\.000 Y0\.000 -> X10\.000 Y0\.000\s+F100/);
       await dc.step('nextRequest');
       await dc.step('nextRequest');
       assert.equal(await dc.value('#500'), '1');
@@ -271,6 +271,26 @@ describe('alarms, messages and the end of a session', () => {
     } finally {
       fs.rmSync(folder, { recursive: true, force: true });
     }
+  });
+
+  test('echoed motion shows the axes the program commands, never an axis it does not mention', async () => {
+    await dc.begin({ program: program('three_axes.nc'), echoMotion: true, stopAtEnd: false }, { until: 'terminated' });
+    const moves = dc.output.split('\n').filter((line) => line.startsWith('three_axes.nc:'));
+    assert.equal(moves.length, 5);
+    assert.ok(moves.every((line) => !/A-?\d/.test(line)), moves.join('\n'));
+    // X and Y, commanded at 0 where the tool already is, are shown; Z only once commanded
+    assert.match(moves[0], /^three_axes\.nc:2 G00\s+X0\.000 Y0\.000 -> X0\.000 Y0\.000$/);
+    assert.match(moves[1], /^three_axes\.nc:3 G00\s+X0\.000 Y0\.000 Z0\.000 -> X0\.000 Y0\.000 Z50\.000$/);
+    // once commanded, an axis stays shown while it stands still
+    assert.match(moves[3], /^three_axes\.nc:5 G01\s+X0\.000 Y0\.000 Z-2\.000 -> X40\.000 Y0\.000 Z-2\.000\s+F100$/);
+  });
+
+  test('echoed motion shows the A axis from the block that commands it on', async () => {
+    await dc.begin({ program: program('rotary.nc'), echoMotion: true, stopAtEnd: false }, { until: 'terminated' });
+    const moves = dc.output.split('\n').filter((line) => line.startsWith('rotary.nc:'));
+    assert.deepEqual(moves.map((line) => /A-?\d/.test(line)), [false, true, true]);
+    assert.match(moves[1], /^rotary\.nc:3 G00\s+X0\.000 Y0\.000 Z50\.000 A0\.000 -> X0\.000 Y0\.000 Z50\.000 A90\.000$/);
+    assert.match(moves[2], /^rotary\.nc:4 G01\s+X0\.000 Y0\.000 Z50\.000 A90\.000 -> X10\.000 Y0\.000 Z50\.000 A90\.000\s+F200$/);
   });
 
   test('with stopAtEnd false a program that runs to its end terminates the session', async () => {

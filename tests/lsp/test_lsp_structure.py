@@ -37,6 +37,38 @@ async def test_workspace_symbols_are_the_programs(fanuc_en: LanguageClient, gsk_
     assert sorted(s.name for s in every) == ["CUT", "O0002"]
 
 
+LATHE_PART = (
+    "%\n(cncmacro: dialect=gsk980tdi)\nO0001 (LATHE PART)\nN10 G00 X100. Z100.\nN20 G01 X20. W-5. F0.2\nM30\n%\n"
+)
+
+
+async def test_a_gsk_program_after_a_dialect_comment_is_named_by_its_o_number(gsk_en: LanguageClient) -> None:
+    uri = open_file(gsk_en, GSK / "lathe_part.nc", LATHE_PART)
+    try:
+        result = await gsk_en.text_document_document_symbol_async(
+            types.DocumentSymbolParams(types.TextDocumentIdentifier(uri))
+        )
+        found = await gsk_en.workspace_symbol_async(types.WorkspaceSymbolParams(query="lathe"))
+    finally:
+        close_file(gsk_en, uri)
+    # one program, named as its O line says; on the '%' and the dialect comment above it the
+    # breadcrumbs already show O0001, its name is still picked out on the O line
+    assert _tree(result) == [("O0001", 0, [("N10", 3, []), ("N20", 4, [])])]
+    assert result[0].detail == "LATHE PART" and result[0].selection_range.start.line == 2
+    assert result[0].range.end.line == 6
+    assert [(s.name, s.location.range.start.line) for s in found] == [("O0001", 2)]
+    # without an O line, the file's name is all there is to name the program by
+    uri = open_file(gsk_en, GSK / "facing.nc", "(cncmacro: dialect=gsk980tdi)\nG00 X50. Z2.\nM30\n")
+    try:
+        result = await gsk_en.text_document_document_symbol_async(
+            types.DocumentSymbolParams(types.TextDocumentIdentifier(uri))
+        )
+        found = await gsk_en.workspace_symbol_async(types.WorkspaceSymbolParams(query="facing"))
+    finally:
+        close_file(gsk_en, uri)
+    assert _tree(result) == [("facing", 0, [])] and [s.name for s in found] == ["facing"]
+
+
 async def test_folding_covers_loops_programs_and_comment_blocks(fanuc_en: LanguageClient) -> None:
     uri = open_file(fanuc_en, FANUC / "O9100.nc")
     ranges = await fanuc_en.text_document_folding_range_async(

@@ -78,7 +78,7 @@ class CallerSearch:
         path = target.file.path
         units = target.file.program.units
         k = key[1]
-        numbers, names = _identity(target, k)
+        numbers, names = _identity(target)
         candidates: set[str] = set()
         for n in numbers:
             candidates.update(self.index.callers(n, None))
@@ -113,14 +113,15 @@ def _key_of(found: FoundProgram) -> _Key:
     return (found.file.path, found.file.program.units.index(found.unit))
 
 
-def _identity(found: FoundProgram, k: int) -> tuple[set[int], set[str]]:
-    """The numbers and bracketed names a call may use for ``found``, the ``k``-th program of its
-    file: its O number; for a file's first program also the file name (``9100.nc``, ``CUT.CNC``)."""
+def _identity(found: FoundProgram) -> tuple[set[int], set[str]]:
+    """The numbers and bracketed names a call may use for ``found``: its O number; for a
+    file's first program (after a lead-in of comments, ``Program.named_units``) also the file
+    name (``9100.nc``, ``CUT.CNC``)."""
     numbers: set[int] = set()
     names: set[str] = set()
     if found.unit.number is not None:
         numbers.add(found.unit.number)
-    if k == 0:
+    if found.unit is found.file.program.named_units()[0]:
         p = Path(found.file.path)
         stem = p.stem.lower() if p.suffix else p.name.lower()
         digits = stem[1:] if stem[:1] == "o" else stem
@@ -132,8 +133,7 @@ def _identity(found: FoundProgram, k: int) -> tuple[set[int], set[str]]:
 
 def _named(found: FoundProgram, numbers: Container[int], names: Container[str]) -> bool:
     """Whether an open file's literal calls name ``found`` (then an open file's run reaches it)."""
-    k = found.file.program.units.index(found.unit)
-    own_numbers, own_names = _identity(found, k)
+    own_numbers, own_names = _identity(found)
     return any(n in numbers for n in own_numbers) or any(x in names for x in own_names)
 
 

@@ -301,12 +301,14 @@ class WorkspaceAnalysis:
             program = d.doc.program
             stem = Path(path).stem
             m = _DIGITS.match(stem)
+            first = program.named_units()[0]  # what a call by the file's name runs
             for k, unit in enumerate(program.units):
                 if unit.duplicate or not _runnable(program.blocks, unit):
                     continue
                 sites = list(by_number.get(unit.number, ())) if unit.number is not None else []
                 if unit.number is None and k == 0:
                     sites = list(by_number.get(int(m.group(1)), ())) if m else []
+                if unit is first:
                     sites += by_name.get(stem.lower(), ())
                 called = any(p != path or not unit.start <= line < unit.end for p, line in sites)
                 out.append(((path, k), FoundProgram(d.loaded, unit), called))

@@ -10,7 +10,8 @@ arrives at is shown to the breakpoints, so their hit counts are the run's. Step 
 reverse continue walk the history backwards and set the hit counts back with it. A continue
 with no breakpoints and no motion echo runs the interpreter at full speed in chunks and is
 paused by ``Machine.request_pause``; otherwise it runs block by block. Output (DPRNT,
-messages, the echoed motion) goes to ``output`` as it happens.
+messages, the echoed motion) goes to ``output`` as it happens; a move is echoed with the axes
+the program has commanded so far (``machine.commanded_axes``), never an axis it does not mention.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from pathlib import Path
 
 from ..analysis.locale import pick
 from ..machine import Machine
+from ..machine.commanded_axes import CommandedAxes
 from ..machine.frames import Move
 from ..machine.machine import ALARM, COMPLETED, LIMIT, PAUSED, STOPPED
 from ..syntax.nodes import Number
@@ -71,6 +73,7 @@ class Stepper:
         self.pause_requested = False
         self.notes_sent = len(machine.notes)
         self.moves_sent = len(machine.moves)
+        self.commanded = CommandedAxes(machine.dialect, machine.library)  # the axes the echo shows
         self.fresh = True  # nothing has run yet: a breakpoint on the first block counts
         self.stop_at_end = False  # stop where the program ends (set by the session)
         self.never_stop = False  # "Run Without Debugging": the block budget ends the run too
@@ -243,7 +246,7 @@ class Stepper:
         m = self.machine
         if self.echo_motion:
             for mv in m.moves[self.moves_sent :]:
-                self.output(move_line(mv, m.dialect.axes), "console")
+                self.output(move_line(mv, m.dialect.axes, self.commanded.shown(mv)), "console")
         self.moves_sent = len(m.moves)
         for note in m.notes[self.notes_sent :]:
             where = f"{Path(note.file).name}:{note.line + 1}"
@@ -295,5 +298,6 @@ def last_line_run(m: Machine) -> int:
     return max(k, 0)
 
 
-def move_line(mv: Move, axes: tuple[str, ...]) -> str:
-    return f"{Path(mv.file).name}:{mv.line + 1} {mv.text(axes)}\n"
+def move_line(mv: Move, axes: tuple[str, ...], shown: list[int]) -> str:
+    """An echoed move with the axes in ``shown`` (those the program has commanded so far)."""
+    return f"{Path(mv.file).name}:{mv.line + 1} {mv.text(axes, shown)}\n"

@@ -227,7 +227,7 @@ class ProgramLibrary:
                 if p.stem.lower() == wanted or p.name.lower() == wanted:
                     loaded = self.load(p)
                     if loaded is not None:
-                        return FoundProgram(loaded, loaded.program.units[0])
+                        return FoundProgram(loaded, loaded.program.named_units()[0])
         return None
 
     def _unit_in(self, path: Path, number: int) -> FoundProgram | None:

@@ -104,7 +104,7 @@ def program_items(ls: CncMacroServer, cur: Cursor, bracket: bool, start: int) ->
     seen = set()
     for p in ls.index.programs():
         if bracket:
-            if p.number is not None and p.line != 0:
+            if p.number is not None and not p.first:
                 continue
             text = p.name if p.number is None else p.path.rsplit("/", 1)[-1].rsplit(".", 1)[0]
         else:

@@ -1,5 +1,9 @@
 """Document symbols (O programs, with their N labels and nested loops) and workspace symbols
-(every program in the workspace index), read from the ``Program`` structure of the parser."""
+(every program in the workspace index), read from the ``Program`` structure of the parser.
+
+A program is named by its O number, and by its file only when it has no O line: the lines
+before a file's first O line that hold no program text (a ``%``, the dialect comment) belong
+to that program (``Program.named_units``)."""
 
 from __future__ import annotations
 
@@ -50,7 +54,8 @@ def document_symbols(doc: OpenDocument, encoding: Encoding) -> list[types.Docume
         labels = []
     loops = sorted(program.loops, key=lambda p: p.do_line)
     out: list[types.DocumentSymbol] = []
-    for unit in program.units:
+    units = program.named_units()
+    for unit in units:
         last = max(unit.start, unit.end - 1)
         if unit.number is None:
             if unit.end <= unit.start:
@@ -58,11 +63,14 @@ def document_symbols(doc: OpenDocument, encoding: Encoding) -> list[types.Docume
             name = Path(doc.path).stem
         else:
             name = f"O{unit.number:04d}"
+        # the first program's symbol holds the lead-in before its O line ('%', the dialect
+        # comment), so that the breadcrumbs there name it too
+        first = program.units[0].start if unit is units[0] else unit.start
         sym = types.DocumentSymbol(
             name=name,
             detail=unit.title or "",
             kind=types.SymbolKind.Module,
-            range=types.Range(types.Position(unit.start, 0), _line_end(doc, last, encoding)),
+            range=types.Range(types.Position(first, 0), _line_end(doc, last, encoding)),
             selection_range=doc_range(doc, unit.start, 0, len(doc.line(unit.start)), encoding),
             children=[],
         )

@@ -50,6 +50,7 @@ class ProgramEntry:
     path: str
     line: int
     end: int
+    first: bool  # the file's first program (what a call by the file's name runs)
 
 
 class WorkspaceIndex:
@@ -136,12 +137,14 @@ class WorkspaceIndex:
                 yield loaded
 
     def programs(self) -> Iterator[ProgramEntry]:
+        """Every program, named as the outline names it (``Program.named_units``)."""
         for f in self.loaded_files():
-            for u in f.program.units:
+            units = f.program.named_units()
+            for u in units:
                 if u.number is None and u.end - u.start <= 0:
                     continue
                 name = f"O{u.number:04d}" if u.number is not None else Path(f.path).stem
-                yield ProgramEntry(name, u.number, u.title, f.path, u.start, u.end)
+                yield ProgramEntry(name, u.number, u.title, f.path, u.start, u.end, u is units[0])
 
     def library(self, near: OpenDocument | None) -> ProgramLibrary:
         """A program library over the workspace folders with the open documents' text."""

@@ -216,11 +216,8 @@ class Machine(VariableAccess, Motion):
         if loaded is None:
             raise OSError(f"{path}: cannot read the program")
         program = loaded.program
-        unit = next((u for u in program.units if u.number is not None or u.end > u.start), program.units[0])
-        if unit.number is None and len(program.units) > 1:
-            blocks = program.blocks[unit.start : unit.end]
-            if all(b.is_empty or b.tape for b in blocks):
-                unit = program.units[1]
+        units = program.named_units()
+        unit = next((u for u in units if u.number is not None or u.end > u.start), units[0])
         found = FoundProgram(loaded, unit)
         self.start(found)
         for u in program.units:

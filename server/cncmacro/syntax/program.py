@@ -132,6 +132,21 @@ class Program:
                 return u
         return None
 
+    def named_units(self) -> list[ProgramUnit]:
+        """The programs a person names: every unit, except a first one without header that
+        holds no program text when an O header follows it. Such lines (a ``%``, the
+        ``(cncmacro: dialect=...)`` comment, a heading in comments) are the first program's
+        lead-in, not a program named by its file; the machine starts the file at that O line."""
+        units = self.units
+        if len(units) > 1 and units[0].number is None and self.text_free(units[0]):
+            return units[1:]
+        return units
+
+    def text_free(self, unit: ProgramUnit) -> bool:
+        """True when ``unit`` holds nothing the control runs: only blank lines, comments and
+        ``%`` marks (the scan stops at the first line with program text)."""
+        return all(b.is_empty or b.tape for b in islice(self.blocks, unit.start, unit.end))
+
     def loop_at(self, do_line: int) -> LoopPair | None:
         for p in self.loops:
             if p.do_line == do_line:
