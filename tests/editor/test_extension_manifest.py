@@ -167,6 +167,21 @@ def test_the_manifest_says_where_the_project_lives_and_how_to_find_it() -> None:
     assert "--allow-missing-repository" not in manifest["scripts"]["package"]
 
 
+def test_every_picture_of_the_readme_exists_and_is_in_the_vsix() -> None:
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    pictures = re.findall(r"!\[[^\]]*\]\(([^)\s]+)\)", readme)
+    names = {"problems.png", "hover-5001.png", "debug-g65.png", "toolpath.png"}
+    assert {f"docs/images/{name}" for name in names} <= set(pictures)
+    for picture in pictures:
+        assert not picture.startswith(("/", "http:")), f"{picture}: a relative link or https"
+        if picture.startswith("https:"):
+            continue
+        width, height = _png_size(ROOT / picture)
+        assert width > 0 and height > 0
+        assert _shipped(picture), f"{picture} is left out of the .vsix"
+    assert _shipped("README.md")
+
+
 def test_the_pages_variables_stay_variables_in_the_vsix() -> None:
     """The README and the changelog are full of macro variables (``#5001``, ``#24 (X)``); the
     packager would link each ``#number`` to a GitHub issue of that number, inside code too."""
