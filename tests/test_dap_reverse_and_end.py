@@ -1,4 +1,4 @@
-"""The debugger going backwards and at the end (docs/design.md "The debugger", README "Debugging"):
+"""The debugger going backwards and at the end (docs/design.md "The debugger", docs/debugging.md):
 reverse continue stops exactly where the forward run stopped, hit counts included (the hit
 number of a visit is the count the forward run had just after it), across many checkpoints;
 step back takes hits back; the end of the program is a stop; breakpoints on ``/`` blocks

@@ -1,13 +1,16 @@
 """The VS Code extension's manifest and packaging, checked without an editor: the libraries
 bundled into the .vsix are pinned to exactly the versions pyproject.toml installs, every string
-the manifest or the client shows has an English and a Chinese text, and the language
-contribution claims the file names the checker treats as programs (README "cncmacro check")."""
+the manifest or the client shows has an English and a Chinese text, the language contribution
+claims the file names the checker treats as programs (docs/cli.md "cncmacro check"), and the
+extension's page is whole: license, icon, changelog of this version, where the project lives,
+and the README's pictures, all inside the .vsix."""
 
 from __future__ import annotations
 
 import json
 import re
 import sys
+from fnmatch import fnmatch
 from pathlib import Path
 
 if sys.version_info >= (3, 11):
@@ -105,3 +108,86 @@ def test_the_manifest_offers_exactly_the_profiles_the_server_knows() -> None:
     client = (ROOT / "client" / "src").glob("*.ts")
     hard_coded = [p.name for p in client if re.search(r"'gsk980tdi'|'fanuc'", p.read_text(encoding="utf-8"))]
     assert hard_coded == [], "the client names profiles itself instead of asking the server"
+
+
+def _png_size(path: Path) -> tuple[int, int]:
+    """The width and height in a PNG's header; fails on a file that is not a PNG."""
+    head = path.read_bytes()[:24]
+    assert head[:8] == b"\x89PNG\r\n\x1a\n" and head[12:16] == b"IHDR", f"{path.name} is not a PNG"
+    return int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+
+
+def _shipped(path: str) -> bool:
+    """Whether .vscodeignore lets ``path`` into the .vsix: its last matching rule is a ``!`` one."""
+    kept = True
+    for rule in (ROOT / ".vscodeignore").read_text(encoding="utf-8").splitlines():
+        rule = rule.strip()
+        if not rule or rule.startswith("#"):
+            continue
+        negated = rule.startswith("!")
+        if fnmatch(path, rule.lstrip("!")):
+            kept = negated
+    return kept
+
+
+def _pyproject_version() -> str:
+    found = re.search(r'^version = "([^"]+)"', (ROOT / "pyproject.toml").read_text(encoding="utf-8"), re.M)
+    assert found is not None
+    return found.group(1)
+
+
+def test_the_extension_is_mit_licensed_and_ships_its_license() -> None:
+    manifest = _manifest()
+    assert manifest["license"] == "MIT"
+    text = (ROOT / "LICENSE").read_text(encoding="utf-8")
+    assert text.startswith("MIT License") and "Copyright (c) 2026 cncmacro contributors" in text
+    assert "--skip-license" not in manifest["scripts"]["package"]
+    assert _shipped("LICENSE")
+
+
+def test_the_icon_is_a_128_pixel_png_that_the_vsix_carries() -> None:
+    icon = _manifest()["icon"]
+    assert _png_size(ROOT / icon) == (128, 128)
+    assert _shipped(icon)
+
+
+def test_the_changelog_describes_the_version_of_the_manifest_and_the_package() -> None:
+    version = _manifest()["version"]
+    assert version == _pyproject_version()
+    changelog = (ROOT / "CHANGELOG.md").read_text(encoding="utf-8")
+    assert re.search(rf"^## \[?{re.escape(version)}\]?\b", changelog, re.M), f"CHANGELOG.md has no {version}"
+    assert _shipped("CHANGELOG.md")
+
+
+def test_the_manifest_says_where_the_project_lives_and_how_to_find_it() -> None:
+    manifest = _manifest()
+    assert manifest["repository"] == {"type": "git", "url": "https://github.com/cncmacro/cncmacro.git"}
+    assert manifest["homepage"].startswith("https://github.com/cncmacro/cncmacro")
+    assert manifest["bugs"]["url"] == "https://github.com/cncmacro/cncmacro/issues"
+    assert {"Programming Languages", "Linters", "Debuggers"} <= set(manifest["categories"])
+    keywords = set(manifest["keywords"])
+    assert {"cnc", "gcode", "fanuc", "30i", "gsk980tdi", "数控", "宏程序"} <= keywords
+    assert len(manifest["keywords"]) <= 30, "the Marketplace takes at most 30 keywords"
+    assert "--allow-missing-repository" not in manifest["scripts"]["package"]
+
+
+def test_every_picture_of_the_readme_exists_and_is_in_the_vsix() -> None:
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    pictures = re.findall(r"!\[[^\]]*\]\(([^)\s]+)\)", readme)
+    names = {"problems.png", "hover-5001.png", "debug-g65.png", "toolpath.png"}
+    assert {f"docs/images/{name}" for name in names} <= set(pictures)
+    for picture in pictures:
+        assert not picture.startswith(("/", "http:")), f"{picture}: a relative link or https"
+        if picture.startswith("https:"):
+            continue
+        width, height = _png_size(ROOT / picture)
+        assert width > 0 and height > 0
+        assert _shipped(picture), f"{picture} is left out of the .vsix"
+    assert _shipped("README.md")
+
+
+def test_the_pages_variables_stay_variables_in_the_vsix() -> None:
+    """The README and the changelog are full of macro variables (``#5001``, ``#24 (X)``); the
+    packager would link each ``#number`` to a GitHub issue of that number, inside code too."""
+    assert re.search(r"#\d+", (ROOT / "README.md").read_text(encoding="utf-8"))
+    assert "--no-gitHubIssueLinking" in _manifest()["scripts"]["package"]
