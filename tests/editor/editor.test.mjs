@@ -9,6 +9,7 @@ import path from 'node:path';
 import { after, before, test as nodeTest } from 'node:test';
 import { CodeServer, OUTPUT, ROOT } from './codeServer.mjs';
 import { exact, hoverOver, openFile as openIn, tokenColour as colourIn } from './workbench.mjs';
+import { characterColours, editorForeground, oneColour } from './workbench.mjs';
 
 const STEP = 60000; // ms for one test (most take 1-5 s)
 const WAIT = 20000; // ms for one thing to appear
@@ -49,18 +50,63 @@ after(async () => {
   await server?.stop();
 });
 
-test('a macro program is CNC Macro, coloured by kind, with the dialect in the status bar', { timeout: STEP }, async () => {
-  await openFile('O9100.nc');
+test('a macro program is CNC Macro, coloured by kind, with the dialect in the status bar', { timeout: 2 * STEP }, async () => {
+  await openFile('colours.nc');
   await page.locator('.statusbar-item', { hasText: exact('CNC Macro') }).waitFor();
   await page.locator('.statusbar-item', { hasText: 'FANUC 0i' }).waitFor();
-  const colours = {
-    keyword: await tokenColour('WHILE'),
-    variable: await tokenColour('#30'),
-    number: await tokenColour('360.'),
-    comment: await tokenColour('(HOLE COUNT MISSING)'),
+  const colour = (line, text) => oneColour(page, line, text);
+  const loop = 'WHILE[#30 LT 3] DO1';
+  const shortLoop = 'WH[#30 LT 6] DO2';
+  const motion = 'G90 G81 X#32 Y#33 Z-5. R2. F100';
+  const alarm = 'IF[#30 EQ 7] THEN #3000=1(TOOL BROKEN)';
+  /** The colours of each kind of word once the language server's colours are on the screen. */
+  const coloured = async (theme, unlike) => {
+    // Only the language server knows that WH is WHILE shortened: once WH has WHILE's colour
+    // (in this theme), the server's colours are drawn, and each colour below is the one a user keeps.
+    let keyword;
+    const served = async () => {
+      keyword = await colour(loop, 'WHILE');
+      return keyword !== unlike && (await characterColours(page, shortLoop, 'WH'))?.every((c) => c === keyword);
+    };
+    for (const end = Date.now() + 40000; !(await served()); await page.waitForTimeout(250)) {
+      assert.ok(Date.now() < end, `${theme}: WH has not WHILE's colour ${keyword}: ${await characterColours(page, shortLoop, 'WH')}`);
+    }
+    const colours = {
+      keyword,
+      variable: await colour('#30=#30+1', '#30'),
+      number: await colour(motion, '100'),
+      comment: await tokenColour('(COUNT)'),
+    };
+    await shot(`1-colours-${theme}`);
+    assert.equal(new Set(Object.values(colours)).size, 4, `${theme}: four different colours: ${JSON.stringify(colours)}`);
+    for (const [line, word] of [[alarm, 'IF'], [alarm, 'THEN'], ['IF[#30 NE 6] GOTO 10', 'GOTO'], ['END1', 'END']]) {
+      assert.equal(await colour(line, word), keyword, `${theme}: ${word} of ${line} has the keyword colour`);
+    }
+    assert.notEqual(keyword, await editorForeground(page), `${theme}: keywords have a colour of their own`);
+    await colour(motion, 'G90'); // one colour over the whole code
+    assert.notEqual(await colour(motion, 'X'), await colour(motion, '#32'), `${theme}: the address X stands apart from #32`);
+    assert.notEqual(await colour(alarm, '(TOOL BROKEN)'), colours.comment, `${theme}: an alarm text is not a comment`);
+    return keyword;
   };
-  await shot('1-colours');
-  assert.equal(new Set(Object.values(colours)).size, 4, `four different colours: ${JSON.stringify(colours)}`);
+  const light = await coloured('light', undefined);
+  // Dark Modern, set for the workspace and taken away again.
+  const folder = path.join(server.workspace, '.vscode');
+  const file = path.join(folder, 'settings.json');
+  const made = !fs.existsSync(folder);
+  const kept = fs.existsSync(file) ? fs.readFileSync(file, 'utf8') : undefined;
+  fs.mkdirSync(folder, { recursive: true });
+  fs.writeFileSync(file, JSON.stringify({ ...JSON.parse(kept ?? '{}'), 'workbench.colorTheme': 'Default Dark Modern' }));
+  try {
+    await coloured('dark', light);
+  } finally {
+    if (kept !== undefined) fs.writeFileSync(file, kept);
+    else fs.rmSync(made ? folder : file, { recursive: true });
+  }
+  for (const end = Date.now() + WAIT; (await colour(loop, 'WHILE')) !== light; await page.waitForTimeout(250)) {
+    assert.ok(Date.now() < end, 'the light theme is back');
+  }
+  await openFile('O9100.nc'); // the next test hovers its #5001
+  await page.locator('.statusbar-item', { hasText: 'FANUC 0i' }).waitFor();
 });
 
 test('hovering #5001 shows its documentation', { timeout: STEP }, async () => {

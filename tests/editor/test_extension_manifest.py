@@ -191,3 +191,30 @@ def test_the_pages_variables_stay_variables_in_the_vsix() -> None:
     packager would link each ``#number`` to a GitHub issue of that number, inside code too."""
     assert re.search(r"#\d+", (ROOT / "README.md").read_text(encoding="utf-8"))
     assert "--no-gitHubIssueLinking" in _manifest()["scripts"]["package"]
+
+
+def _grammar_scopes() -> set[str]:
+    grammar = (ROOT / "syntaxes" / "cnc-macro.tmLanguage.json").read_text(encoding="utf-8")
+    return set(re.findall(r'"name": "([a-z.-]+\.cnc-macro)"', grammar))
+
+
+def test_the_server_s_tokens_take_the_colours_of_the_grammar_s_scopes() -> None:
+    """Each token type of the server's legend, and each variable class, is mapped to the scope
+    the grammar gives the same words (``keyword`` to the ``keyword.control`` of IF, THEN, WHILE
+    and GOTO), so a theme colours a word the same before and after the server's tokens arrive."""
+    from cncmacro.lsp.semantic_tokens import TOKEN_MODIFIERS, TOKEN_TYPES
+
+    contributes = _manifest()["contributes"]
+    (mapping,) = contributes["semanticTokenScopes"]
+    assert mapping["language"] == "cnc-macro"
+    scopes: dict[str, list[str]] = mapping["scopes"]
+    classes = [m for m in TOKEN_MODIFIERS if m != "readonly"]
+    assert set(scopes) == set(TOKEN_TYPES) | {f"variable.{m}" for m in classes}
+    grammar = _grammar_scopes()
+    for selector, (scope,) in scopes.items():
+        stem = scope.removesuffix(".cnc-macro")
+        assert any(g == scope or g.startswith(stem + ".") for g in grammar), f"{selector}: {scope} is no grammar scope"
+    assert scopes["keyword"] == ["keyword.control.cnc-macro"]  # IF THEN, WHILE DO END and GOTO in the grammar:
+    assert {"keyword.control.conditional.cnc-macro", "keyword.control.loop.cnc-macro"} <= grammar
+    assert "keyword.control.goto.cnc-macro" in grammar
+    assert {m["id"] for m in contributes["semanticTokenModifiers"]} == set(classes)

@@ -1,5 +1,5 @@
 // What the editor tests do in the workbench page as a user would: open a file from the Explorer,
-// hover over a piece of text until its hover shows, read a token's colour.
+// hover over a piece of text until its hover shows, read the colour of a token or of each character.
 import assert from 'node:assert/strict';
 
 /** A pattern for exactly `text`; Monaco renders spaces as no-break spaces, so a space matches either. */
@@ -24,6 +24,59 @@ export async function tokenColour(page, text) {
   const span = page.locator('.editor-instance .view-lines span span', { hasText: exact(text) }).first();
   await span.waitFor();
   return span.evaluate((el) => getComputedStyle(el).color);
+}
+
+/**
+ * The computed colour of each character of `text` where it first stands on the editor line
+ * that holds `line` (both as typed; Monaco's no-break spaces count as spaces), or undefined
+ * while that line is not drawn. Unlike `tokenColour` it does not depend on how the line is cut
+ * into spans, so it can tell one colour over `G90` from a `G` and a `90` coloured apart.
+ */
+export async function characterColours(page, line, text) {
+  return page.evaluate(
+    ([line, text]) => {
+      for (const row of document.querySelectorAll('.editor-instance .view-lines .view-line')) {
+        const drawn = row.textContent.replace(/\u00a0/g, ' ');
+        const at = drawn.indexOf(line);
+        if (at < 0 || line.indexOf(text) < 0) continue;
+        const from = at + line.indexOf(text);
+        const colours = [];
+        let offset = 0;
+        for (const span of row.querySelectorAll(':scope > span > span')) {
+          const length = span.textContent.length;
+          for (let i = Math.max(from, offset); i < Math.min(from + text.length, offset + length); i++) {
+            colours.push(getComputedStyle(span).color);
+          }
+          offset += length;
+        }
+        return colours.length === text.length ? colours : undefined;
+      }
+      return undefined;
+    },
+    [line, text],
+  );
+}
+
+/** The one colour of every character of `text` on the line holding `line`; fails if they differ. */
+export async function oneColour(page, line, text) {
+  const colours = await characterColours(page, line, text);
+  assert.ok(colours, `${JSON.stringify(text)} on the line ${JSON.stringify(line)} is drawn`);
+  assert.equal(new Set(colours).size, 1, `one colour over ${JSON.stringify(text)} of ${JSON.stringify(line)}: ${colours}`);
+  return colours[0];
+}
+
+/** The colour of text no rule colours: Monaco's first token class, `mtk1`, the theme's default. */
+export async function editorForeground(page) {
+  return page
+    .locator('.editor-instance .view-lines')
+    .first()
+    .evaluate((el) => {
+      const probe = el.appendChild(document.createElement('span'));
+      probe.className = 'mtk1';
+      const colour = getComputedStyle(probe).color;
+      probe.remove();
+      return colour;
+    });
 }
 
 /**

@@ -13,36 +13,36 @@ G90 G54 G54.1 G17
 ;;            ^^^ keyword.other.g-code.cnc-macro
 G01X10.Y-#5
 ;; <--- keyword.other.g-code.motion.cnc-macro
-;; ^ entity.other.attribute-name.address.cnc-macro
+;; ^ support.type.address.cnc-macro
 ;;  ^^^ constant.numeric.decimal.cnc-macro
-;;     ^ entity.other.attribute-name.address.cnc-macro
+;;     ^ support.type.address.cnc-macro
 ;;      ^ keyword.operator.arithmetic.cnc-macro
 ;;       ^^ variable.other.local.cnc-macro
 X10.5 Z-3.25 F200 S1200 T0101
-;; <- entity.other.attribute-name.address.cnc-macro
+;; <- support.type.address.cnc-macro
 ;; <~---- constant.numeric.decimal.cnc-macro
-;;    ^ entity.other.attribute-name.address.cnc-macro
+;;    ^ support.type.address.cnc-macro
 ;;     ^^^^^ constant.numeric.decimal.cnc-macro
-;;           ^ entity.other.attribute-name.address.cnc-macro
+;;           ^ support.type.address.cnc-macro
 ;;            ^^^ constant.numeric.integer.cnc-macro
-;;                ^ entity.other.attribute-name.address.cnc-macro
+;;                ^ support.type.address.cnc-macro
 ;;                 ^^^^ constant.numeric.integer.cnc-macro
-;;                      ^ entity.other.attribute-name.address.cnc-macro
+;;                      ^ support.type.address.cnc-macro
 ;;                       ^^^^ constant.numeric.integer.cnc-macro
 X-#5 Z-[#1]
-;; <- entity.other.attribute-name.address.cnc-macro
+;; <- support.type.address.cnc-macro
 ;; <~- keyword.operator.arithmetic.cnc-macro
 ;; <~~-- variable.other.local.cnc-macro
-;;   ^ entity.other.attribute-name.address.cnc-macro
+;;   ^ support.type.address.cnc-macro
 ;;    ^ keyword.operator.arithmetic.cnc-macro
 ;;     ^ punctuation.section.brackets.begin.cnc-macro
 x5y.5
-;; <- entity.other.attribute-name.address.cnc-macro
+;; <- support.type.address.cnc-macro
 ;; <~- constant.numeric.integer.cnc-macro
-;; <~~- entity.other.attribute-name.address.cnc-macro
+;; <~~- support.type.address.cnc-macro
 ;; ^^ constant.numeric.decimal.cnc-macro
 X 10
-;; <- entity.other.attribute-name.address.cnc-macro
+;; <- support.type.address.cnc-macro
 ;; <~~-- constant.numeric.integer.cnc-macro
 M03 M06 M08
 ;; <--- keyword.other.m-code.cnc-macro
@@ -55,20 +55,20 @@ M02
 M2
 ;; <-- keyword.control.end-program.cnc-macro
 G#27 G#28
-;; <- entity.other.attribute-name.address.cnc-macro
+;; <- support.type.address.cnc-macro
 ;; <~--- variable.other.local.cnc-macro
 G43 Z50. H01 M08
 ;; <--- keyword.other.g-code.cnc-macro
-;;  ^ entity.other.attribute-name.address.cnc-macro
+;;  ^ support.type.address.cnc-macro
 ;;   ^^^ constant.numeric.decimal.cnc-macro
-;;       ^ entity.other.attribute-name.address.cnc-macro
+;;       ^ support.type.address.cnc-macro
 ;;        ^^ constant.numeric.integer.cnc-macro
 ;;           ^^^ keyword.other.m-code.cnc-macro
 G81 X#32 Y#33 Z#26 R#3 F#9
 ;; <--- keyword.other.g-code.cnc-macro
-;;  ^ entity.other.attribute-name.address.cnc-macro
+;;  ^ support.type.address.cnc-macro
 ;;   ^^^ variable.other.local.cnc-macro
-;;                 ^ entity.other.attribute-name.address.cnc-macro
+;;                 ^ support.type.address.cnc-macro
 ;;                  ^^ variable.other.local.cnc-macro
 G31 Z-10. F100
 ;; <--- keyword.other.g-code.motion.cnc-macro

@@ -36,7 +36,7 @@ END 2
 ;; <--- keyword.control.loop.cnc-macro
 ;;  ^ constant.numeric.integer.loop-number.cnc-macro
 DO3
-;; <-- keyword.control.loop.cnc-macro - entity.other.attribute-name.address.cnc-macro
+;; <-- keyword.control.loop.cnc-macro - support.type.address.cnc-macro
 ;; <~~- constant.numeric.integer.loop-number.cnc-macro
 GOTO #10
 ;; <---- keyword.control.goto.cnc-macro

@@ -10,7 +10,7 @@
 #1=#2 AND #3 OR #4 XOR #5
 ;;    ^^^ keyword.operator.logical.cnc-macro
 ;;           ^^ keyword.operator.logical.cnc-macro
-;;                 ^^^ keyword.operator.logical.cnc-macro - entity.other.attribute-name.address.cnc-macro
+;;                 ^^^ keyword.operator.logical.cnc-macro - support.type.address.cnc-macro
 IF[#1 EQ 1] GOTO1
 ;;    ^^ keyword.operator.comparison.cnc-macro
 IF[#1 NE 1] GOTO1
@@ -42,7 +42,7 @@ IF[#1 LE 1] GOTO1
 ;;                         ^^^ support.function.math.cnc-macro
 #1=ROUND[#2]+FIX[#3]+FUP[#4]
 ;; ^^^^^ support.function.math.cnc-macro
-;;           ^^^ support.function.math.cnc-macro - entity.other.attribute-name.address.cnc-macro
+;;           ^^^ support.function.math.cnc-macro - support.type.address.cnc-macro
 ;;                   ^^^ support.function.math.cnc-macro
 #1=BIN[#2]+BCD[#3]
 ;; ^^^ support.function.conversion.cnc-macro

@@ -30,11 +30,11 @@ IF[[#101>0] AND [#102>0]]GOTO3
 G65 H01 P#100 Q#101 R5
 ;; <--- meta.statement.h-code.cnc-macro keyword.control.call.macro.cnc-macro
 ;;  ^^^ support.function.h-code.cnc-macro
-;;      ^ entity.other.attribute-name.address.cnc-macro
+;;      ^ support.type.address.cnc-macro
 ;;       ^^^^ variable.other.common.cnc-macro
-;;            ^ entity.other.attribute-name.address.cnc-macro
+;;            ^ support.type.address.cnc-macro
 ;;             ^^^^ variable.other.common.cnc-macro
-;;                  ^ entity.other.attribute-name.address.cnc-macro
+;;                  ^ support.type.address.cnc-macro
 ;;                   ^ constant.numeric.integer.cnc-macro
 G65 H23 P#101 Q#4120 R100; (获取刀偏号)
 ;;  ^^^ support.function.h-code.cnc-macro
@@ -42,14 +42,14 @@ G65 H23 P#101 Q#4120 R100; (获取刀偏号)
 ;;                       ^ punctuation.terminator.end-of-block.cnc-macro
 ;;                         ^^^^^^^ comment.line.parenthesized.cnc-macro
 G65 H01 P#102 Q-#102
-;;            ^ entity.other.attribute-name.address.cnc-macro
+;;            ^ support.type.address.cnc-macro
 ;;             ^ keyword.operator.arithmetic.cnc-macro
 ;;              ^^^^ variable.other.common.cnc-macro
 N25 G65 H86 P25 Q#101 R#102
 ;; <--- entity.name.tag.label.cnc-macro
 ;;  ^^^ keyword.control.call.macro.cnc-macro
 ;;      ^^^ support.function.h-code.cnc-macro
-;;          ^ entity.other.attribute-name.address.cnc-macro
+;;          ^ support.type.address.cnc-macro
 ;;           ^^ entity.name.tag.label.reference.cnc-macro
 ;;               ^^^^ variable.other.common.cnc-macro
 G65 H80 P10
@@ -57,19 +57,19 @@ G65 H80 P10
 ;;       ^^ entity.name.tag.label.reference.cnc-macro
 G65 H99 P15
 ;;  ^^^ support.function.h-code.cnc-macro
-;;      ^ entity.other.attribute-name.address.cnc-macro
+;;      ^ support.type.address.cnc-macro
 ;;       ^^ constant.numeric.integer.cnc-macro - entity.name.tag.label.reference.cnc-macro
 g65 h02 p#101 q#101 r#106
 ;; <--- keyword.control.call.macro.cnc-macro
 ;;  ^^^ support.function.h-code.cnc-macro
-;;      ^ entity.other.attribute-name.address.cnc-macro
+;;      ^ support.type.address.cnc-macro
 G65 P[CUT] L2 ;
 ;; <--- keyword.control.call.macro.cnc-macro
-;;  ^ entity.other.attribute-name.address.cnc-macro
+;;  ^ support.type.address.cnc-macro
 ;;   ^ punctuation.section.brackets.begin.cnc-macro
 ;;    ^^^ entity.name.function.program.cnc-macro
 ;;       ^ punctuation.section.brackets.end.cnc-macro
-;;         ^ entity.other.attribute-name.address.cnc-macro
+;;         ^ support.type.address.cnc-macro
 ;;          ^ constant.numeric.integer.cnc-macro
 ;;            ^ punctuation.terminator.end-of-block.cnc-macro
 G65 P[螺纹切削] ;
@@ -78,7 +78,7 @@ G66 P[O1004] L3
 ;; <--- keyword.control.call.macro.cnc-macro
 ;;    ^^^^^ entity.name.function.program.cnc-macro
 G65 P[#100] L2
-;;  ^ entity.other.attribute-name.address.cnc-macro
+;;  ^ support.type.address.cnc-macro
 ;;   ^ punctuation.section.brackets.begin.cnc-macro
 ;;    ^^^^ variable.other.common.cnc-macro - entity.name.function.program.cnc-macro
 M98 P[O0023] L3 ;
@@ -94,10 +94,10 @@ G65 P9580 U-0.01 W-0.01; (调用宏程序补偿刀具磨损)
 G66 P0100 L2 A2 B20 C20 I30 J20 K20；
 ;; <--- keyword.control.call.macro.cnc-macro
 ;;   ^^^^ entity.name.function.program.cnc-macro
-;;        ^ entity.other.attribute-name.address.cnc-macro
+;;        ^ support.type.address.cnc-macro
 ;;           ^ variable.parameter.argument.cnc-macro
 ;;                              ^ variable.parameter.argument.cnc-macro
 ;;                                 ^ punctuation.terminator.end-of-block.cnc-macro
 M98 P[#100] L3
-;;  ^ entity.other.attribute-name.address.cnc-macro
+;;  ^ support.type.address.cnc-macro
 ;;    ^^^^ variable.other.common.cnc-macro

@@ -31,7 +31,7 @@ POPEN
 DPRNT[X*ERROR*#141[2 3]]
 ;; <----- support.function.output.cnc-macro
 ;;   ^ punctuation.section.brackets.begin.cnc-macro
-;;    ^ string.unquoted.output.cnc-macro - entity.other.attribute-name.address.cnc-macro
+;;    ^ string.unquoted.output.cnc-macro - support.type.address.cnc-macro
 ;;     ^ constant.character.space.cnc-macro
 ;;      ^^^^^ string.unquoted.output.cnc-macro
 ;;            ^ punctuation.definition.variable.cnc-macro

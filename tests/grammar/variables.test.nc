@@ -35,7 +35,7 @@ IF[#24 EQ #0] GOTO 1
 ;;          ^ keyword.operator.arithmetic.cnc-macro
 ;;           ^ constant.numeric.integer.cnc-macro
 X#[#100]
-;; <- entity.other.attribute-name.address.cnc-macro
+;; <- support.type.address.cnc-macro
 ;; <~- variable.other.indirect.cnc-macro
 #9100=#9502
 ;; <----- variable.other.indirect.cnc-macro

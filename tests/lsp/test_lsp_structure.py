@@ -111,8 +111,8 @@ def _decode(data: list[int], legend: types.SemanticTokensLegend, lines: list[str
     return out
 
 
-async def test_semantic_tokens_classify_variables_keywords_and_comments(fanuc_en: LanguageClient) -> None:
-    text = "O0001 (MAIN)\nN10 #1=#100+#500+#5001\nIF[#1 GT 2] GOTO10\nG65 P9100 X1.\n"
+async def test_semantic_tokens_classify_variables_keywords_and_labels(fanuc_en: LanguageClient) -> None:
+    text = "O0001 (MAIN)\nN10 #1=#100+#500+#5001\nIF[#1 GT 2] GOTO10\nG65 P9100 X1.\n#50=#0\n"
     uri = open_file(fanuc_en, FANUC / "tokens.nc", text)
     caps = await _legend(fanuc_en)
     full = await fanuc_en.text_document_semantic_tokens_full_async(
@@ -126,16 +126,35 @@ async def test_semantic_tokens_classify_variables_keywords_and_comments(fanuc_en
     close_file(fanuc_en, uri)
     lines = text.split("\n")
     tokens = _decode(list(full.data), caps, lines)
-    assert ("O0001", "namespace", []) in tokens and ("(MAIN)", "comment", []) in tokens
-    assert ("N10", "label", []) in tokens
+    assert ("O0001", "namespace", []) in tokens and ("N10", "label", []) in tokens
     assert ("#1", "variable", ["local"]) in tokens
     assert ("#100", "variable", ["common"]) in tokens
     assert ("#500", "variable", ["persistent"]) in tokens
     assert ("#5001", "variable", ["system", "readonly"]) in tokens
+    assert ("#50", "variable", ["undefined"]) in tokens and ("#0", "variable", ["vacant"]) in tokens
     assert ("IF", "keyword", []) in tokens and ("GT", "operator", []) in tokens and ("GOTO", "keyword", []) in tokens
-    assert ("G", "property", []) in tokens and ("65", "number", []) in tokens
+    assert [t for t in tokens if t[0] in ("(MAIN)", "G", "65", "P", "9100", "X", "1.")] == []  # the grammar's
     ranged = _decode(list(part.data), caps, lines)
-    assert [t[0] for t in ranged] == ["IF", "#1", "GT", "2", "GOTO", "10"]
+    assert [t[0] for t in ranged] == ["IF", "#1", "GT", "GOTO"]
+
+
+async def test_semantic_tokens_leave_codes_addresses_and_alarm_texts_to_the_grammar(fanuc_en: LanguageClient) -> None:
+    """A token can only recolour what it covers: over ``G`` alone it tears ``G90`` in two colours,
+    over ``X`` as over ``#32`` it glues ``X#32`` into one word, over an alarm text as a comment it
+    takes away the text's string colour; and ``THEN`` must be the keyword ``IF`` is."""
+    text = "G90 G81 X#32 Y#33 R2. F100\nIF[#30 EQ 7] THEN #3000=1(TOOL BROKEN)\n#3006=2(STOP HERE)\n"
+    uri = open_file(fanuc_en, FANUC / "grammar_words.nc", text)
+    full = await fanuc_en.text_document_semantic_tokens_full_async(
+        types.SemanticTokensParams(types.TextDocumentIdentifier(uri))
+    )
+    close_file(fanuc_en, uri)
+    lines = text.split("\n")
+    tokens = _decode(list(full.data), await _legend(fanuc_en), lines)
+    assert [t[0] for t in tokens if t[0] in lines[0]] == ["#32", "#33"]  # nothing over G90, G81, X, Y, R2., F100
+    assert ("#32", "variable", ["local"]) in tokens
+    assert ("THEN", "keyword", []) in tokens and ("IF", "keyword", []) in tokens
+    assert [t for t in tokens if "(" in t[0] or "BROKEN" in t[0] or "STOP" in t[0]] == []
+    assert ("#3000", "variable", ["system"]) in tokens and ("#3006", "variable", ["system"]) in tokens
 
 
 async def _legend(client: LanguageClient) -> types.SemanticTokensLegend:
@@ -153,7 +172,7 @@ async def test_semantic_tokens_on_gsk_mark_the_c_relation(gsk_en: LanguageClient
     close_file(gsk_en, uri)
     lines = (GSK / "MAIN.CNC").read_text("utf-8").split("\n")
     tokens = _decode(list(full.data), await _legend(gsk_en), lines)
-    assert ("(螺纹加工)", "comment", []) in tokens
+    assert [t for t in tokens if "螺纹" in t[0]] == []  # a comment is the grammar's to colour
     assert ("#100", "variable", ["common"]) in tokens and ("GOTO", "keyword", []) in tokens
 
 

@@ -1,5 +1,15 @@
-"""Semantic tokens: variables by class (local, common, persistent, system), keywords,
-functions, operators, addresses, numbers, labels, program numbers and comments.
+"""Semantic tokens: what the server knows better than a grammar can, and nothing else.
+
+A TextMate grammar already colours comments, alarm texts, numbers, address letters and G/M
+codes well; a token over any of them could only take a colour away (a ``G`` coloured apart from
+its ``90``, an alarm text coloured as a comment). So the tokens are the words whose meaning
+hangs on the dialect or the parse: variables by class as the dialect has them (``local``,
+``common``, ``persistent``, ``system`` with ``readonly`` where the table says so, ``vacant`` #0
+and ``undefined`` numbers), the keywords, functions and operators of the dialect's table
+(``WH`` as WHILE where the control reads abbreviations), labels and program numbers. Every
+statement word, ``THEN`` as much as ``IF``, is a keyword. The VS Code extension maps each
+token to the grammar's own scope (``semanticTokenScopes`` in package.json), so a theme gives
+both the same colour.
 
 Tokens are found per line by a small scanner that also works on lines that do not parse, with
 the label and program spans taken from the parsed block; a line's tokens are cached by its
@@ -27,15 +37,15 @@ from .positions import Encoding
 if TYPE_CHECKING:
     from .server import CncMacroServer
 
-TOKEN_TYPES = ["comment", "keyword", "function", "operator", "variable", "property", "number", "label", "namespace"]
-TOKEN_MODIFIERS = ["local", "common", "persistent", "system", "readonly"]
+TOKEN_TYPES = ["keyword", "function", "operator", "variable", "label", "namespace"]
+TOKEN_MODIFIERS = ["local", "common", "persistent", "system", "readonly", "vacant", "undefined"]
 LEGEND = types.SemanticTokensLegend(token_types=TOKEN_TYPES, token_modifiers=TOKEN_MODIFIERS)
 _T = {name: i for i, name in enumerate(TOKEN_TYPES)}
 _M = {name: 1 << i for i, name in enumerate(TOKEN_MODIFIERS)}
+_CLASS_MODIFIER = {describe.NULL: "vacant"}  # a variable class -> its modifier, where the names differ
 
 _SCAN = re.compile(
     r"(?P<comment>\([^)]*\)?)|(?P<end>[;\uff1b].*)|(?P<var>#\d+)|(?P<named>#_[A-Za-z0-9_]+)|(?P<word>[A-Za-z]+)"
-    r"|(?P<num>\d+\.?\d*|\.\d+)|(?P<op>[-+*/=<>!\[\]#])"
 )
 
 Token = tuple[int, int, int, int]  # start, end (code points), type, modifiers
@@ -44,22 +54,26 @@ Token = tuple[int, int, int, int]  # start, end (code points), type, modifiers
 @cache
 def _name_kinds(dialect_name: str) -> dict[str, str]:
     """keyword / function / operator for each name in the dialect's function table, judged by
-    how its signature is written (``SIN[a]`` a function, ``a AND b`` an operator)."""
+    how its signature is written: between two operands an operator (``a AND b``, ``[a EQ b]``),
+    with its arguments in brackets or alone a function (``SIN[a]``, ``POPEN``), otherwise a
+    statement word, a keyword (``IF [condition] THEN statement``, ``DO m``)."""
     from ..dialects import get_dialect
 
     out: dict[str, str] = {}
     for f in get_dialect(dialect_name).functions():
         sig = f.signature.strip()
-        if sig.startswith(f.name + "["):
-            out.setdefault(f.name, "function")
-        elif re.search(rf"\s{f.name}\s", f" {sig} ") and not sig.startswith(f.name):
+        if re.fullmatch(rf"\[?\w+ {re.escape(f.name)} \w+\]?", sig):
             out.setdefault(f.name, "operator")
+        elif sig == f.name or sig.startswith(f.name + "["):
+            out.setdefault(f.name, "function")
         else:
             out.setdefault(f.name, "keyword")
     return out
 
 
 def line_tokens(text: str, block: Block, dialect: Dialect) -> list[Token]:
+    """The tokens of one line. Comments (alarm texts too) and ``;`` tails are read only to be
+    passed over; numbers, address letters and G/M codes get none."""
     kinds = _name_kinds(dialect.name)
     shortened = {a.start: a for a in block.abbreviations}  # ``WH`` is coloured as WHILE
     label = block.label_span
@@ -76,15 +90,10 @@ def line_tokens(text: str, block: Block, dialect: Dialect) -> list[Token]:
             if s == prog[0]:
                 out.append((prog[0], prog[1], _T["namespace"], 0))
             continue
-        if kind == "comment":
-            out.append((s, e, _T["comment"], 0))
-        elif kind == "end":
-            for c in re.finditer(r"\([^)]*\)?", m.group(0)):
-                out.append((s + c.start(), s + c.end(), _T["comment"], 0))
-        elif kind == "var":
+        if kind == "var":
             n = int(m.group(0)[1:])
             cls = describe.variable_class(n, dialect)
-            mods = _M.get(cls, 0)
+            mods = _M[_CLASS_MODIFIER.get(cls, cls)]
             if cls == describe.SYSTEM:
                 row = dialect.system_variable(n)
                 if row is not None and row.access == "r":
@@ -100,11 +109,6 @@ def line_tokens(text: str, block: Block, dialect: Dialect) -> list[Token]:
             k = kinds.get(word)
             if k is not None:
                 out.append((s, e, _T[k], 0))
-            else:
-                for i in range(s, e):
-                    out.append((i, i + 1, _T["property"], 0))
-        elif kind == "num":
-            out.append((s, e, _T["number"], 0))
     return out
 
 
