@@ -314,3 +314,7 @@ test('extension-host API tests pass in the same VS Code', { timeout: 3 * STEP },
   // The bad cncMacro.python.path of one API test left the user an error that says what to do.
   await page.locator('.notifications-toasts', { hasText: 'cncMacro.python.path (/nonexistent/python3) does not run' }).waitFor();
 });
+
+test('the editor tried no host but this machine: no gallery, telemetry or update check', { timeout: STEP }, async () => {
+  assert.deepEqual(server.outsideHostAttempts(), []);
+});
