@@ -173,6 +173,22 @@ test('Run Program shows the run in the "CNC Macro" output channel', { timeout: S
   await shot('6-run-program');
 });
 
+test('the "CNC Macro Server" output channel names the running server\'s version and the extension\'s', { timeout: STEP }, async () => {
+  const serverVersion = /__version__ = "([^"]+)"/.exec(fs.readFileSync(path.join(ROOT, 'server', 'cncmacro', '__init__.py'), 'utf8'))[1];
+  await page.keyboard.press('F1');
+  await page.keyboard.type('Output: Show Output Channels');
+  await page.locator('.quick-input-list .monaco-list-row', { hasText: 'Show Output Channels' }).first().waitFor();
+  await page.keyboard.press('Enter');
+  await page.locator('.quick-input-list .monaco-list-row', { hasText: exact('CNC Macro Server') }).first().click();
+  const line = page.locator('.panel .view-lines .view-line', { hasText: 'the language server' }).filter({ hasText: 'is running' }).last();
+  await line.waitFor();
+  const text = (await line.innerText()).replace(/\u00a0/g, ' ');
+  assert.match(text, new RegExp(`the language server cncmacro ${serverVersion} is running \\(CNC Macro extension ${server.version}\\)`), text);
+  await shot('6b-server-version');
+  await page.keyboard.press('Control+1'); // back to the program: the status bar shows its dialect again
+  await page.locator('.statusbar-item', { hasText: 'FANUC 0i' }).waitFor();
+});
+
 test('clicking the dialect in the status bar offers the server\'s profiles and writes cncMacro.dialect', { timeout: STEP }, async () => {
   const settingsFile = path.join(server.workspace, '.vscode', 'settings.json');
   const pick = async (from, to) => {
