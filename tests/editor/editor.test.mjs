@@ -1,7 +1,9 @@
 // The extension in a real VS Code: the built .vsix installed into a fresh code-server, driven
 // through Chromium as a user would (colours, Problems, hover, breakpoint and step into a G65
 // macro, Run Program), then the extension-host tests of api/index.js. Screenshots go to
-// test-output/editor/. Run: node --test tests/editor/ (after npm run package).
+// test-output/editor/. Run: node --test tests/editor/ (after npm run package). With
+// CNCMACRO_README_PICTURES set (npm run screenshots), the four that the README shows are copied to
+// docs/images/ as well.
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
