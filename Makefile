@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
 
-.PHONY: demo test setup package
+.PHONY: demo test setup package screenshots
 
 $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -42,3 +42,8 @@ test: setup
 # The VS Code extension: cncmacro.vsix (needs only Python >= 3.10 where it is installed).
 package: setup
 	PYTHON=$(PY) npm run --silent package
+
+# The four pictures of the README (docs/images/), taken in a real VS Code by the editor tests.
+screenshots: setup
+	PYTHON=$(PY) npm run --silent package
+	timeout 600 npm run --silent screenshots

@@ -6,7 +6,8 @@
  * answers it with `serverSettings` (the names the server reads). A change of the dialect,
  * severities or budget is pushed with `workspace/didChangeConfiguration`; a change of the Python
  * path restarts the server. Diagnostics are taken as pushed (see `PushDiagnosticsClient`). Its
- * log goes to the "CNC Macro Server" output channel.
+ * log goes to the "CNC Macro Server" output channel, which names the server and its version once it
+ * runs, and the extension's version.
  */
 import * as vscode from 'vscode';
 import {
@@ -15,6 +16,7 @@ import {
   LanguageClient,
   type LanguageClientOptions,
   type ServerOptions,
+  State,
   type StaticFeature,
 } from 'vscode-languageclient/node';
 import { findPython, type FoundPython } from './python';
@@ -55,6 +57,16 @@ export interface Profile {
   aliases: string[];
   lathe: boolean;
   default: boolean;
+}
+
+/**
+ * The log line of a started server: its name and version as its initialize result tells them
+ * (`serverInfo`), and the extension's version, so that a report names both.
+ */
+export function runningLine(serverInfo: { name: string; version?: string } | undefined, packageJSON: unknown): string {
+  const server = serverInfo ? [serverInfo.name, serverInfo.version ?? '(no version)'].join(' ') : '(unnamed)';
+  const version = (packageJSON as { version?: unknown } | undefined)?.version;
+  return `the language server ${server} is running (CNC Macro extension ${typeof version === 'string' ? version : 'of unknown version'})`;
 }
 
 export class ServerController implements vscode.Disposable {
@@ -197,10 +209,15 @@ export class ServerController implements vscode.Disposable {
       },
     };
     const client = new PushDiagnosticsClient(SECTION, 'CNC Macro Language Server', serverOptions, clientOptions);
+    // each time it runs: started here, or started again by the client after the server died
+    client.onDidChangeState((e) => {
+      if (e.newState === State.Running) {
+        this.log.info(runningLine(client.initializeResult?.serverInfo, this.context.extension.packageJSON));
+      }
+    });
     try {
       await client.start();
       this.client = client;
-      this.log.info('the language server is running');
     } catch (e) {
       this.log.error(`the language server did not start: ${String(e)}`);
       void vscode.window.showErrorMessage(

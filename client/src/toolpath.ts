@@ -166,7 +166,7 @@ class ToolpathPanel implements vscode.Disposable {
       : vscode.l10n.t('Drawn from the saved file {0}.', name);
   }
 
-  private texts(status: string, statusKind: Texts['statusKind'], verticalAxis: string, plane: string, note?: string): Texts {
+  private texts(status: Texts['status'], statusKind: Texts['statusKind'], verticalAxis: string, plane: string, note?: string): Texts {
     return {
       refresh: vscode.l10n.t('Refresh'),
       fit: vscode.l10n.t('Fit'),
@@ -205,11 +205,12 @@ class ToolpathPanel implements vscode.Disposable {
     const view = viewFor(lathe, this.plane);
     const moves = result.moves.length > MAX_DRAWN_MOVES ? result.moves.slice(0, MAX_DRAWN_MOVES) : result.moves;
     const drawn = plot(moves, view, result.status === 'alarm');
-    const status = [this.statusText(result)];
-    status.push(vscode.l10n.t('{0} blocks, {1} moves', String(result.blocks), String(result.moves.length)));
-    if (moves.length > 0) {
-      const extents = drawn.extents.map((e) => `${e.axis} ${formatNumber(e.min)} … ${formatNumber(e.max)}`).join(', ');
-      status.push(vscode.l10n.t('extents {0}', extents));
+    const status = [[this.statusText(result)]];
+    status.push([vscode.l10n.t('{0} blocks, {1} moves', String(result.blocks), String(result.moves.length))]);
+    const extents = drawn.extents.map((e) => `${e.axis} ${formatNumber(e.min)} … ${formatNumber(e.max)}`);
+    const [first, ...others] = extents;
+    if (moves.length > 0 && first !== undefined) {
+      status.push([vscode.l10n.t('extents {0}', first), ...others]); // one item per axis
     }
     let note: string | undefined;
     if (moves.length < result.moves.length) {
@@ -220,7 +221,7 @@ class ToolpathPanel implements vscode.Disposable {
     const plane = lathe
       ? vscode.l10n.t('Lathe: Z across, X up. X is a diameter: it is drawn at X/2, the radius.')
       : vscode.l10n.t('The {0} plane, {1} across and {2} up, equal scales.', view.plane, view.h, view.v);
-    const texts = this.texts(status.join(' · '), this.statusKind(result), lathe ? 'X/2' : view.v, plane, note);
+    const texts = this.texts(status, this.statusKind(result), lathe ? 'X/2' : view.v, plane, note);
     this.panel.webview.html = toolpathHtml(
       { cspSource: this.panel.webview.cspSource, language: vscode.env.language, texts, plot: drawn, moves, view, planes: !lathe },
       nonce(),

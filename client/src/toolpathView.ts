@@ -5,6 +5,11 @@
  * one style sheet and the one script carry a nonce and nothing is loaded from anywhere. The
  * script posts `reveal` (a move was clicked), `refresh` and `plane` to the extension, and zooms
  * (mouse wheel) and pans (drag) by changing the SVG's viewBox. The texts arrive translated.
+ *
+ * The grid labels and axis names keep their size and their distance from the drawing in screen
+ * pixels, whatever the zoom: the script fits the drawing into the view with margins of so many
+ * pixels around it, where they go, so that a short or narrow view does not cut them off or lay
+ * them over one another. The status line wraps only between its items, never inside a number.
  */
 import * as path from 'node:path';
 import { type Axes, formatNumber, type Plot, type RunMove, type View, PLANES } from './toolpathGeometry';
@@ -13,7 +18,12 @@ export interface Texts {
   refresh: string;
   fit: string;
   source: string; // "drawn from the editor's text of ..."
-  status: string; // the run's status, moves and extents
+  /**
+   * The run's outcome, blocks and moves, extents: groups shown with " · " between them, each a
+   * list of items shown with ", " between them; the line wraps only between items. A message
+   * (running, an error) is one text that wraps as prose.
+   */
+  status: string | string[][];
   statusKind: 'completed' | 'alarm' | 'limit' | 'error' | 'running';
   note?: string; // e.g. only the first N moves are drawn
   hint: string;
@@ -23,7 +33,9 @@ export interface Texts {
   verticalAxis: string; // the name on the vertical axis ("Y", "X/2")
 }
 
-const MARGIN = { left: 64, right: 24, top: 30, bottom: 44 };
+/** Where the labels sit, in screen pixels from the drawing's edge (their font is 11 px, the axis names' 13 px). */
+const LABEL = { xBelow: 16, yLeft: 6, yDown: 4, hNameBelow: 34, vNameAbove: 14 };
+const CHAR_PX = 7; // the width of one digit of an 11 px label, a little more than most fonts draw
 export const MAX_DRAWN_MOVES = 50000;
 
 export function escapeHtml(s: string): string {
@@ -68,6 +80,7 @@ button:hover { background: var(--vscode-button-secondaryHoverBackground); }
 button.on { color: var(--vscode-button-foreground); background: var(--vscode-button-background); }
 .source { opacity: 0.8; margin-left: 8px; }
 #status { padding: 4px 10px; font-family: var(--vscode-editor-font-family); }
+#status .item { white-space: nowrap; }
 #status.alarm, #status.error { color: var(--alarm); font-weight: bold; }
 #status.limit { color: var(--rapid); font-weight: bold; }
 .note { padding: 0 10px 4px; opacity: 0.8; }
@@ -79,6 +92,10 @@ svg#plot.dragging { cursor: grabbing; }
 text { fill: var(--vscode-foreground); font-family: var(--vscode-editor-font-family); opacity: 0.85;
   font-size: calc(var(--u) * 11px); }
 text.axis-name { font-weight: bold; font-size: calc(var(--u) * 13px); opacity: 1; }
+text.x-label { transform: translateY(calc(var(--u) * ${LABEL.xBelow}px)); }
+text.y-label { transform: translate(calc(var(--u) * -${LABEL.yLeft}px), calc(var(--u) * ${LABEL.yDown}px)); }
+text.axis-name.h { transform: translateY(calc(var(--u) * ${LABEL.hNameBelow}px)); }
+text.axis-name.v { transform: translateY(calc(var(--u) * -${LABEL.vNameAbove}px)); }
 .move { cursor: pointer; }
 .move .leg { fill: none; stroke-width: 1.6; vector-effect: non-scaling-stroke; stroke-linecap: round; }
 .move .leg.dashed { stroke-dasharray: 5 4; stroke-width: 1.2; }
@@ -110,13 +127,25 @@ for (const b of document.querySelectorAll('button[data-post]')) {
 if (svg) {
   const base = svg.getAttribute('viewBox');
   const parse = (s) => s.split(/\\s+/).map(Number);
-  let saved = vscode.getState();
-  let vb = saved && saved.base === base ? saved.vb : parse(base);
+  const [w, h] = [Number(svg.dataset.width), Number(svg.dataset.height)];
+  const [ml, mr, mt, mb] = parse(svg.dataset.margin);
+  // The drawing as large as the view allows with the margins (pixels) around it, centred.
+  const fit = () => {
+    const r = svg.getBoundingClientRect();
+    if (!(r.width > ml + mr && r.height > mt + mb)) return parse(base);
+    const u = Math.max(w / (r.width - ml - mr), h / (r.height - mt - mb));
+    const spareX = (r.width - ml - mr) * u - w;
+    const spareY = (r.height - mt - mb) * u - h;
+    return [-ml * u - spareX / 2, -mt * u - spareY / 2, r.width * u, r.height * u];
+  };
+  const saved = vscode.getState();
+  let zoomed = Boolean(saved && saved.base === base && saved.zoomed);
+  let vb = zoomed ? saved.vb : fit();
   const apply = () => {
     svg.setAttribute('viewBox', vb.join(' '));
     const r = svg.getBoundingClientRect();
     if (r.width > 0 && r.height > 0) svg.style.setProperty('--u', String(Math.max(vb[2] / r.width, vb[3] / r.height)));
-    vscode.setState({ base, vb });
+    vscode.setState({ base, vb, zoomed });
   };
   const toSvg = (e) => {
     const m = svg.getScreenCTM();
@@ -128,6 +157,7 @@ if (svg) {
     const [px, py] = toSvg(e);
     const f = e.deltaY > 0 ? 1.2 : 1 / 1.2;
     vb = [px - (px - vb[0]) * f, py - (py - vb[1]) * f, vb[2] * f, vb[3] * f];
+    zoomed = true;
     apply();
   }, { passive: false });
   let drag = null;
@@ -146,6 +176,7 @@ if (svg) {
     const r = svg.getBoundingClientRect();
     const u = Math.max(drag.vb[2] / r.width, drag.vb[3] / r.height);
     vb = [drag.vb[0] - dx * u, drag.vb[1] - dy * u, drag.vb[2], drag.vb[3]];
+    zoomed = true;
     apply();
   });
   const end = () => { drag = null; svg.classList.remove('dragging'); };
@@ -159,8 +190,8 @@ if (svg) {
     g.classList.add('selected');
     vscode.postMessage({ type: 'reveal', index: Number(g.dataset.index) });
   });
-  document.getElementById('fit').addEventListener('click', () => { vb = parse(base); apply(); });
-  window.addEventListener('resize', apply);
+  document.getElementById('fit').addEventListener('click', () => { zoomed = false; vb = fit(); apply(); });
+  window.addEventListener('resize', () => { if (!zoomed) vb = fit(); apply(); });
   apply();
 }
 `;
@@ -180,42 +211,58 @@ function legendLine(cls: string, dashed: boolean): string {
   return `<svg viewBox="0 0 36 12"><g class="move ${cls}"><path class="leg${dash}" d="M2 6 L34 6"/></g></svg>`;
 }
 
+/** The room, in screen pixels, that the labels and axis names need around the drawing. */
+export function margins(plot: Plot): { left: number; right: number; top: number; bottom: number } {
+  const longest = (ticks: Plot['xTicks']): number => Math.max(0, ...ticks.map((t) => formatNumber(t.value).length));
+  return {
+    left: Math.max(40, LABEL.yLeft + 8 + CHAR_PX * longest(plot.yTicks)),
+    right: Math.max(16, 6 + (CHAR_PX / 2) * longest(plot.xTicks)),
+    top: LABEL.vNameAbove + 16,
+    bottom: LABEL.hNameBelow + 10,
+  };
+}
+
 function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts): string {
   const w = plot.width;
   const h = plot.height;
   const n = (v: number): string => (Math.round(v * 100) / 100).toString();
   const out: string[] = [];
-  const vb = [-MARGIN.left, -MARGIN.top, w + MARGIN.left + MARGIN.right, h + MARGIN.top + MARGIN.bottom];
-  out.push(`<svg id="plot" xmlns="http://www.w3.org/2000/svg" viewBox="${vb.map(n).join(' ')}" preserveAspectRatio="xMidYMid meet">`);
+  const m = margins(plot);
+  const vb = [-m.left, -m.top, w + m.left + m.right, h + m.top + m.bottom];
+  out.push(
+    `<svg id="plot" xmlns="http://www.w3.org/2000/svg" viewBox="${vb.map(n).join(' ')}" preserveAspectRatio="xMidYMid meet"` +
+      ` data-width="${n(w)}" data-height="${n(h)}" data-margin="${[m.left, m.right, m.top, m.bottom].map(n).join(' ')}">`,
+  );
   out.push('<g class="grid">');
   for (const t of plot.xTicks) out.push(`<line x1="${n(t.at)}" y1="0" x2="${n(t.at)}" y2="${n(h)}"/>`);
   for (const t of plot.yTicks) out.push(`<line x1="0" y1="${n(t.at)}" x2="${n(w)}" y2="${n(t.at)}"/>`);
   out.push('</g><g class="labels">');
   for (const t of plot.xTicks) {
-    out.push(`<text x="${n(t.at)}" y="${n(h + 16)}" text-anchor="middle">${formatNumber(t.value)}</text>`);
+    out.push(`<text class="x-label" x="${n(t.at)}" y="${n(h)}" text-anchor="middle">${formatNumber(t.value)}</text>`);
   }
   for (const t of plot.yTicks) {
-    out.push(`<text x="-6" y="${n(t.at + 4)}" text-anchor="end">${formatNumber(t.value)}</text>`);
+    out.push(`<text class="y-label" x="0" y="${n(t.at)}" text-anchor="end">${formatNumber(t.value)}</text>`);
   }
-  out.push(`<text class="axis-name" x="${n(w)}" y="${n(h + 36)}" text-anchor="end">${escapeHtml(view.h)} →</text>`);
-  out.push(`<text class="axis-name" x="-6" y="-14" text-anchor="start">↑ ${escapeHtml(texts.verticalAxis)}</text>`);
+  // the axis names: below the x labels at the right end, above the drawing at the left end
+  out.push(`<text class="axis-name h" x="${n(w)}" y="${n(h)}" text-anchor="end">${escapeHtml(view.h)} →</text>`);
+  out.push(`<text class="axis-name v" x="0" y="0" text-anchor="start">↑ ${escapeHtml(texts.verticalAxis)}</text>`);
   const [ox, oy] = plot.origin;
   out.push('</g><g class="axes">');
   out.push(`<line x1="0" y1="${n(oy)}" x2="${n(w)}" y2="${n(oy)}"/><line x1="${n(ox)}" y1="0" x2="${n(ox)}" y2="${n(h)}"/>`);
   out.push('</g><g class="moves">');
   const hr = n(plot.holeRadius);
-  for (const m of plot.moves) {
-    const move = moves[m.index];
+  for (const drawn of plot.moves) {
+    const move = moves[drawn.index];
     if (!move) continue;
     const title = `${path.basename(move.file)}:${move.line}  ${moveText(move)}`;
-    const d = m.legs.map((l) => l.d).join(' ');
-    out.push(`<g class="move ${m.kind}" data-index="${m.index}" data-line="${move.line}"><title>${escapeHtml(title)}</title>`);
-    for (const leg of m.legs) out.push(`<path class="leg${leg.dashed ? ' dashed' : ''}" d="${leg.d}"/>`);
-    if (m.hole) {
-      const [x, y] = m.hole;
+    const d = drawn.legs.map((l) => l.d).join(' ');
+    out.push(`<g class="move ${drawn.kind}" data-index="${drawn.index}" data-line="${move.line}"><title>${escapeHtml(title)}</title>`);
+    for (const leg of drawn.legs) out.push(`<path class="leg${leg.dashed ? ' dashed' : ''}" d="${leg.d}"/>`);
+    if (drawn.hole) {
+      const [x, y] = drawn.hole;
       out.push(`<circle class="hole" cx="${n(x)}" cy="${n(y)}" r="${hr}"/>`);
     }
-    out.push(`<path class="hit" d="${d}${m.hole ? ` M${n(m.hole[0])} ${n(m.hole[1])} h0.01` : ''}"/></g>`);
+    out.push(`<path class="hit" d="${d}${drawn.hole ? ` M${n(drawn.hole[0])} ${n(drawn.hole[1])} h0.01` : ''}"/></g>`);
   }
   out.push('</g>');
   // the origin: a datum symbol, two quarters filled
@@ -261,6 +308,14 @@ function legend(texts: Texts, plot: Plot): string {
   return `<ul id="legend">${items.join('')}</ul>`;
 }
 
+/** The status line: a message as it is, or its groups and items with the breaks only between items. */
+export function statusHtml(status: Texts['status']): string {
+  if (typeof status === 'string') return escapeHtml(status);
+  return status
+    .map((group) => group.map((item) => `<span class="item">${escapeHtml(item)}</span>`).join(', '))
+    .join(' · ');
+}
+
 export function toolpathHtml(page: Page, nonceValue: string): string {
   const t = page.texts;
   const csp = [
@@ -283,7 +338,7 @@ export function toolpathHtml(page: Page, nonceValue: string): string {
     `<span class="source">${escapeHtml(t.source)}</span>`,
     page.plot ? `<span class="hint">${escapeHtml(t.hint)}</span>` : '',
     '</header>',
-    `<div id="status" class="${t.statusKind}">${escapeHtml(t.status)}</div>`,
+    `<div id="status" class="${t.statusKind}">${statusHtml(t.status)}</div>`,
     t.note ? `<div class="note">${escapeHtml(t.note)}</div>` : '',
     page.plot ? legend(t, page.plot) : '',
     '<main>',

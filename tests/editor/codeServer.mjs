@@ -2,7 +2,9 @@
 // installed, and Debian's Chromium driving it through playwright-core. Everything lives in one
 // temporary run folder (its own HOME, TMPDIR, XDG folders, user data and extensions), and
 // code-server runs in its own process group, which `stop()` kills whole, so that the extension
-// host, the language server and the debug adapter go with it.
+// host, the language server and the debug adapter go with it. Nothing reaches another host: the
+// extension gallery is switched off (EXTENSIONS_GALLERY names none), and so are telemetry, update
+// checks and experiments; `outsideHostAttempts()` lists whatever tried all the same.
 import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import net from 'node:net';
@@ -18,6 +20,17 @@ const VSIX = path.join(ROOT, 'cncmacro.vsix');
 const VSCE = path.join(ROOT, 'node_modules', '.bin', 'vsce');
 const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
 const EXTENSION_ID = 'cncmacro.cncmacro';
+/** The hosts the browser may talk to: code-server on this machine. */
+const LOCAL_HOSTS = new Set(['127.0.0.1', 'localhost', '[::1]']);
+/**
+ * A log line of code-server or its VS Code that tried another host: the extension gallery
+ * (open-vsx.org by default, or the Marketplace), an update check, or a name lookup or connection
+ * that failed.
+ */
+const OUTSIDE_IN_LOG =
+  /open-vsx|marketplace|extensionquery|update\.code|vscode-cdn|getaddrinfo|ENOTFOUND|EAI_AGAIN|ENETUNREACH|https?:\/\/(?!127\.0\.0\.1|localhost)[a-z0-9.-]+\.[a-z]{2,}\//i;
+/** The browser's window: the size of the screenshots (docs/images/ takes some of them). */
+export const VIEWPORT = { width: 1280, height: 800 };
 
 function freePort() {
   return new Promise((resolve, reject) => {
@@ -75,6 +88,8 @@ export class CodeServer {
     this.workspace = path.join(this.dir, 'workspace');
     this.child = undefined;
     this.context = undefined;
+    this.outsideRequests = []; // the browser's requests to a host other than this machine
+    this.log = path.join(OUTPUT, locale ? `code-server-${locale}.log` : 'code-server.log');
     this.onExit = () => this.killGroup('SIGKILL');
     this.onSignal = (signal) => {
       this.killGroup('SIGKILL');
@@ -111,6 +126,7 @@ export class CodeServer {
           'workbench.enableExperiments': false,
           'update.mode': 'none',
           'extensions.autoUpdate': false,
+          'extensions.autoCheckUpdates': false,
           'extensions.ignoreRecommendations': true,
           'telemetry.telemetryLevel': 'off',
           'editor.minimap.enabled': false,
@@ -135,6 +151,8 @@ export class CodeServer {
       XDG_CONFIG_HOME: d('config'),
       XDG_DATA_HOME: d('data'),
       XDG_CACHE_HOME: d('cache'),
+      // code-server reads its gallery from here (open-vsx.org otherwise): one without a service URL is none
+      EXTENSIONS_GALLERY: '{}',
     };
     const common = ['--config', d('config.yaml'), '--user-data-dir', d('user-data'), '--extensions-dir', d('extensions')];
     const installed = spawnSync(CODE_SERVER, [...common, '--install-extension', VSIX], {
@@ -148,7 +166,7 @@ export class CodeServer {
     this.installStandIn(common, d('python-extension.vsix'));
     if (this.locale) this.registerDisplayLanguage(this.locale);
 
-    const log = fs.openSync(path.join(OUTPUT, 'code-server.log'), 'w');
+    const log = fs.openSync(this.log, 'w');
     this.child = spawn(
       CODE_SERVER,
       [
@@ -170,7 +188,7 @@ export class CodeServer {
     this.context = await chromium.launchPersistentContext(d('chromium'), {
       executablePath: CHROMIUM,
       headless: true,
-      viewport: { width: 1600, height: 1000 },
+      viewport: VIEWPORT,
       env: this.env,
       timeout: 60000,
       args: [
@@ -183,6 +201,38 @@ export class CodeServer {
         '--disable-sync',
       ],
     });
+    this.context.on('request', (request) => {
+      const url = new URL(request.url());
+      if (/^(https?|wss?):$/.test(url.protocol) && !LOCAL_HOSTS.has(url.hostname)) {
+        this.outsideRequests.push(`browser: ${request.method()} ${request.url()}`);
+      }
+    });
+  }
+
+  /**
+   * What tried to reach a host other than this machine so far: the browser's requests, and the
+   * lines of code-server's log and of its VS Code's logs (the run folder's user data) that name
+   * the gallery, an update check or a failed lookup or connection.
+   */
+  outsideHostAttempts() {
+    const logs = [this.log];
+    const walk = (dir) => {
+      for (const entry of fs.readdirSync(dir, { withFileTypes: true })) {
+        const file = path.join(dir, entry.name);
+        if (entry.isDirectory()) walk(file);
+        else if (entry.name.endsWith('.log')) logs.push(file);
+      }
+    };
+    const logsDir = path.join(this.dir, 'user-data', 'logs');
+    if (fs.existsSync(logsDir)) walk(logsDir);
+    const lines = logs.flatMap((file) =>
+      fs
+        .readFileSync(file, 'utf8')
+        .split('\n')
+        .filter((line) => OUTSIDE_IN_LOG.test(line))
+        .map((line) => `${path.basename(file)}: ${line.trim().slice(0, 300)}`),
+    );
+    return [...this.outsideRequests, ...lines];
   }
 
   /**

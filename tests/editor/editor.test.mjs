@@ -1,7 +1,9 @@
 // The extension in a real VS Code: the built .vsix installed into a fresh code-server, driven
 // through Chromium as a user would (colours, Problems, hover, breakpoint and step into a G65
 // macro, Run Program), then the extension-host tests of api/index.js. Screenshots go to
-// test-output/editor/. Run: node --test tests/editor/ (after npm run package).
+// test-output/editor/. Run: node --test tests/editor/ (after npm run package). With
+// CNCMACRO_README_PICTURES set (npm run screenshots), the four that the README shows are copied to
+// docs/images/ as well.
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -16,9 +18,23 @@ const WAIT = 20000; // ms for one thing to appear
 let server;
 let page;
 
-async function shot(name) {
-  await page.waitForTimeout(300); // let hovers and panels finish fading in
-  await page.screenshot({ path: path.join(OUTPUT, `${name}.png`) });
+/** The screenshots the README shows, by the name they have in docs/images/. */
+const README_PICTURES = {
+  '2-hover-5001': 'hover-5001',
+  '3-problems': 'problems',
+  '5-stepped-into-O9100': 'debug-g65',
+  '9-toolpath': 'toolpath',
+};
+
+/** A screenshot; `settled` when the test has already waited for what the picture must show. */
+async function shot(name, { settled = false } = {}) {
+  if (!settled) await page.waitForTimeout(300); // let hovers and panels finish fading in
+  const file = path.join(OUTPUT, `${name}.png`);
+  await page.screenshot({ path: file });
+  if (process.env.CNCMACRO_README_PICTURES && README_PICTURES[name]) {
+    fs.mkdirSync(path.join(ROOT, 'docs', 'images'), { recursive: true });
+    fs.copyFileSync(file, path.join(ROOT, 'docs', 'images', `${README_PICTURES[name]}.png`));
+  }
 }
 
 const openFile = (name) => openIn(page, name);
@@ -172,18 +188,24 @@ test('F9 then F5 stops at a breakpoint, F11 steps into the G65 macro, Variables 
   await page.keyboard.press('F11');
   await page.locator('.tabs-container .tab.active', { hasText: 'O9100.nc' }).waitFor();
   await frames.filter({ hasText: 'O9100' }).first().waitFor();
-  // Locals lists #1-#33; scroll the Variables view down to #24.
+  // Locals lists #1-#33. The main program's are vacant: the G65 line's arguments (A15. -> #1,
+  // X0 -> #24, Z-12. -> #26) show that the pane shows the macro's, not the rows it showed before.
   const variables = page.locator('.pane', { has: page.locator('.pane-header', { hasText: /variables/i }) });
-  await variables.locator('.monaco-list-row', { hasText: /^#1 \(A\)/ }).first().waitFor();
-  const argument = variables.locator('.monaco-list-row', { hasText: '#24 (X)' }).first();
-  for (let i = 0; i < 30 && !(await argument.isVisible()); i++) {
+  const row = (name, value) =>
+    variables.locator('.monaco-list-row', { hasText: new RegExp(`^${name.replace(/[()]/g, '\\$&')}\\s*[:=]?\\s*${value}(?![\\d.])`) });
+  await row('#1 (A)', '15').first().waitFor();
+  const last = row('#26 (Z)', '-12').first(); // scrolled to: #24 (X) shows just above it
+  for (let i = 0; i < 30 && !(await last.isVisible()); i++) {
     await variables.locator('.monaco-list').first().hover();
     await page.mouse.wheel(0, 60);
     await page.waitForTimeout(100);
   }
-  await argument.waitFor();
-  assert.match(await argument.innerText(), /#24 \(X\)\s*[:=]?\s*0/);
-  await shot('5-stepped-into-O9100');
+  await page.mouse.wheel(0, 60); // #26 whole, not cut by the pane's edge
+  await page.mouse.move(5, 500); // no hover over a variable in the picture
+  for (const [name, value] of [['#24 (X)', '0'], ['#25 (Y)', '0'], ['#26 (Z)', '-12']]) {
+    await row(name, value).first().waitFor();
+  }
+  await shot('5-stepped-into-O9100', { settled: true });
 
   await page.keyboard.press('Shift+F5');
   await page.locator('.debug-toolbar').waitFor({ state: 'hidden' });
@@ -197,6 +219,22 @@ test('Run Program shows the run in the "CNC Macro" output channel', { timeout: S
   await page.keyboard.press('Enter');
   await page.locator('.panel .view-lines', { hasText: 'status: completed after 205 blocks' }).waitFor();
   await shot('6-run-program');
+});
+
+test('the "CNC Macro Server" output channel names the running server\'s version and the extension\'s', { timeout: STEP }, async () => {
+  const serverVersion = /__version__ = "([^"]+)"/.exec(fs.readFileSync(path.join(ROOT, 'server', 'cncmacro', '__init__.py'), 'utf8'))[1];
+  await page.keyboard.press('F1');
+  await page.keyboard.type('Output: Show Output Channels');
+  await page.locator('.quick-input-list .monaco-list-row', { hasText: 'Show Output Channels' }).first().waitFor();
+  await page.keyboard.press('Enter');
+  await page.locator('.quick-input-list .monaco-list-row', { hasText: exact('CNC Macro Server') }).first().click();
+  const line = page.locator('.panel .view-lines .view-line', { hasText: 'the language server' }).filter({ hasText: 'is running' }).last();
+  await line.waitFor();
+  const text = (await line.innerText()).replace(/\u00a0/g, ' ');
+  assert.match(text, new RegExp(`the language server cncmacro ${serverVersion} is running \\(CNC Macro extension ${server.version}\\)`), text);
+  await shot('6b-server-version');
+  await page.keyboard.press('Control+1'); // back to the program: the status bar shows its dialect again
+  await page.locator('.statusbar-item', { hasText: 'FANUC 0i' }).waitFor();
 });
 
 test('clicking the dialect in the status bar offers the server\'s profiles and writes cncMacro.dialect', { timeout: STEP }, async () => {
@@ -359,4 +397,8 @@ test('extension-host API tests pass in the same VS Code', { timeout: 3 * STEP },
   assert.equal(code, 0);
   // The bad cncMacro.python.path of one API test left the user an error that says what to do.
   await page.locator('.notifications-toasts', { hasText: 'cncMacro.python.path (/nonexistent/python3) does not run' }).waitFor();
+});
+
+test('the editor tried no host but this machine: no gallery, telemetry or update check', { timeout: STEP }, async () => {
+  assert.deepEqual(server.outsideHostAttempts(), []);
 });

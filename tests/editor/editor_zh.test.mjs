@@ -67,8 +67,11 @@ test('the commands are named in Chinese', { timeout: STEP }, async () => {
   await page.keyboard.press('Escape');
 });
 
-test('the toolpath view speaks Chinese: its status line and legend', { timeout: 2 * STEP }, async () => {
+test('the toolpath view speaks Chinese, and a short view keeps its axis names and status items whole', { timeout: 2 * STEP }, async () => {
   await openFile(page, 'bolt_circle.nc');
+  // The bottom panel open (Problems) leaves the view little height.
+  if (!(await page.locator('.part.panel').isVisible())) await page.keyboard.press('Control+Shift+M');
+  await page.locator('.part.panel .markers-panel').waitFor();
   await page.keyboard.press('F1');
   await page.keyboard.type('CNC Macro: 显示刀具路径');
   await page.locator('.quick-input-list .monaco-list-row', { hasText: '显示刀具路径' }).first().waitFor();
@@ -79,5 +82,45 @@ test('the toolpath view speaks Chinese: its status line and legend', { timeout: 
   await status.waitFor({ timeout: 45000 });
   assert.match(await status.innerText(), /个程序段，\d+ 段运动/);
   assert.match(await view.locator('#legend').innerText(), /快速定位 \(G00\)[\s\S]*固定循环/);
+  assert.ok(await page.locator('.part.panel').isVisible(), 'the bottom panel is open');
   await shot('4-toolpath');
+
+  const layout = await view.locator('body').evaluate(() => {
+    const box = (el) => {
+      const r = el.getBoundingClientRect();
+      return { text: el.textContent, left: r.left, right: r.right, top: r.top, bottom: r.bottom };
+    };
+    const svg = document.getElementById('plot');
+    return {
+      plot: box(svg),
+      names: [...svg.querySelectorAll('text.axis-name')].map(box),
+      labels: [...svg.querySelectorAll('g.labels text:not(.axis-name)')].map(box),
+      status: box(document.getElementById('status')),
+      lineHeight: (() => {
+        const probe = document.getElementById('status').appendChild(document.createElement('span'));
+        probe.textContent = '0';
+        const height = probe.getBoundingClientRect().height;
+        probe.remove();
+        return height;
+      })(),
+      items: [...document.querySelectorAll('#status .item')].map((el) => ({ text: el.textContent, lines: el.getClientRects().length })),
+    };
+  });
+  const where = JSON.stringify(layout);
+  assert.ok(layout.plot.bottom - layout.plot.top < 400, `the drawing is short: ${where}`);
+  assert.deepEqual(layout.names.map((n) => n.text).sort(), ['X →', '↑ Y']);
+  const overlap = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+  for (const name of layout.names) {
+    const inside = name.left >= layout.plot.left && name.right <= layout.plot.right;
+    assert.ok(inside && name.top >= layout.plot.top && name.bottom <= layout.plot.bottom, `${name.text} inside the drawing: ${where}`);
+    for (const label of layout.labels) assert.ok(!overlap(name, label), `${name.text} clear of the label ${label.text}: ${where}`);
+  }
+  // The status line is wider than the view: it wraps, between its items only.
+  assert.ok(layout.status.bottom - layout.status.top > 1.5 * layout.lineHeight, `the status line wraps: ${where}`);
+  assert.ok(layout.items.length >= 4, `status items: ${where}`);
+  for (const item of layout.items) assert.equal(item.lines, 1, `"${item.text}" on one line: ${where}`);
+});
+
+test('the editor tried no host but this machine: no gallery, telemetry or update check', { timeout: STEP }, async () => {
+  assert.deepEqual(server.outsideHostAttempts(), []);
 });
