@@ -8,13 +8,17 @@ the program; a link to it is followed) and the presets are applied after them. A
 will save them holds the file's lock (``persistence_lock``) from before it reads them until
 ``PreparedRun.save`` has written them back, so runs that share the file take turns; values in
 the file that this machine does not hold (the 30i's ``#98000–`` under a 0i profile) are
-written back as they were. Every mistake a person can make here
+written back as they were. The file is written only when the run changed a persistent
+variable (a run that keeps nothing leaves no file, nor a lock file, beside the program; a file
+whose values did not change is left as it is), for ``cncmacro run`` and the debugger alike.
+Every mistake a person can make here
 (an unreadable or binary program, a bad machine file, a damaged persistent file, a preset of
 a variable that cannot be preset) is a ``SetupError`` whose message says what is wrong.
 """
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -48,15 +52,21 @@ class PreparedRun:
     kept: dict[int, float] = field(default_factory=dict)  # the file's values this machine does not hold
     lock: PersistentLock | None = None
     saved: bool = False
+    stored: dict[int, float] = field(default_factory=dict)  # the file's values when the run started
 
     def save(self) -> None:
-        """Write ``#500–#999`` back atomically, once, and let the next run have the file
-        (``OSError`` passes through)."""
+        """Write ``#500–#999`` back atomically, once, when the run changed one of them, and let
+        the next run have the file (``OSError`` passes through). A run that changed none writes
+        nothing; when there is no file either, it deletes the lock file it made."""
         if self.saved:
             return
         self.saved = True
         try:
-            save_persistent(self.persistent_file, {**self.kept, **self.machine.persistent_values()})
+            values = {**self.kept, **self.machine.persistent_values()}
+            if values != self.stored:
+                save_persistent(self.persistent_file, values)
+            elif self.lock is not None and not os.path.lexists(self.persistent_file):
+                self.lock.remove()
         finally:
             self.release()
 
@@ -123,6 +133,7 @@ def prepare_run(
     try:
         stored = load_persistent(persistent)
         held = set(machine.kinds.persistent_numbers())
+        prepared.stored = stored
         prepared.kept = {n: v for n, v in stored.items() if n not in held}
         machine.load_persistent(stored)
         machine.apply_presets(presets or {})
