@@ -22,7 +22,7 @@ import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..bilingual import detail, in_language
+from ..bilingual import detail
 from ..dialects import get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect
 from ..library.files import SkippedFileError, decode_program, read_program
@@ -100,20 +100,29 @@ def prepare_run(
     data: bytes | None = None,
     saving: bool = True,
     wait: float = LOCK_WAIT,
+    m99_ends_main: bool = False,
 ) -> PreparedRun:
     """Read ``program`` and its machine settings and start a machine at its first block.
     ``data`` is the program's content when it does not come from the file (an editor's unsaved
     text): the file's path still names it and says where its called programs are. A run that
     is ``saving`` waits at most ``wait`` seconds for the persistent file's lock and holds it
-    until ``save`` or ``release``."""
+    until ``save`` or ``release``. ``m99_ends_main`` ends the run at an ``M99`` of the main
+    program (a subprogram run on its own, one pass) instead of running it again from its start
+    as a control does."""
     try:
         source = read_program(program, max_bytes=None) if data is None else decode_program(data, str(program))
-    except (OSError, SkippedFileError) as e:
+    except SkippedFileError as e:  # binary, a folder, a FIFO: its message names the file and says so
+        raise SetupError(e.message) from None
+    except OSError as e:
         if isinstance(e, FileNotFoundError):
             raise SetupError(detail(f"there is no file {program}", f"文件 {program} 不存在")) from None
-        why = e.message if isinstance(e, SkippedFileError) else str(e)
+        if isinstance(e, PermissionError):
+            why = detail("permission denied", "没有读取权限")
+        else:
+            reason = e.strerror or str(e)  # the system's words, as other readers of files give them
+            why = detail(f"{reason}", f"{reason}")
         raise SetupError(
-            detail(f"cannot read the program {program}: {why}", f"无法读取程序 {program}：{in_language(why, True)}")
+            detail(f"cannot read the program {program}: {why}", f"无法读取程序 {program}：{why.zh}")
         ) from None
     settings = machine_settings(program, machine_file)
     if block_delete is not None:
@@ -121,7 +130,7 @@ def prepare_run(
     if max_blocks is not None:
         settings = replace(settings, max_blocks=max_blocks)
     chosen = choose_dialect(source.text.splitlines()[:HEADER_LINES], settings.dialect, dialect)
-    machine = Machine(get_dialect(chosen), settings, ProgramLibrary(search_paths or []))
+    machine = Machine(get_dialect(chosen), settings, ProgramLibrary(search_paths or []), m99_ends_main=m99_ends_main)
     if machine.preset_problems:
         raise SetupError(machine.preset_problems[0])
     try:
