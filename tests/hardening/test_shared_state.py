@@ -13,6 +13,7 @@ import os
 import stat
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -55,6 +56,36 @@ def test_runs_started_together_each_add_their_one(tmp_path: Path) -> None:
         _, err = r.communicate(timeout=60)
         assert r.returncode == 0, err
     assert stored(tmp_path / ".cncmacro-vars.json") == {"500": 4.0}
+
+
+@posix_only
+def test_runs_that_keep_nothing_leave_no_lock_file_and_never_let_two_runs_in(tmp_path: Path) -> None:
+    # a run that keeps nothing deletes the lock file it made; a run that was waiting on that file
+    # locks the path anew, so a third run still waits for it
+    from cncmacro.machine.persistence_lock import PersistentLockError, lock_persistent
+
+    path = tmp_path / ".cncmacro-vars.json"
+    first = lock_persistent(path)
+    waited: list[object] = []
+    second_run = threading.Thread(target=lambda: waited.append(lock_persistent(path, wait=10)))
+    second_run.start()
+    time.sleep(0.3)  # the second run has opened the lock file and waits on it
+    first.remove()
+    second_run.join(10)
+    second = waited[0]
+    with pytest.raises(PersistentLockError):
+        lock_persistent(path, wait=0.3)
+    second.remove()  # type: ignore[attr-defined]
+    assert list(tmp_path.iterdir()) == []
+    quiet = tmp_path / "O0002.nc"
+    quiet.write_text("O0002\n#1=0\nWHILE[#1 LT 200000]DO1\n#1=#1+1\nEND1\nM30\n", encoding="utf-8")
+    counting = tmp_path / "O0001.nc"
+    counting.write_text(ADD_ONE, encoding="utf-8")
+    runs = [start("run", str(quiet if k % 2 else counting)) for k in range(6)]
+    for r in runs:
+        _, err = r.communicate(timeout=60)
+        assert r.returncode == 0, err
+    assert stored(tmp_path / ".cncmacro-vars.json") == {"500": 3.0}
 
 
 @pytest.mark.skipif(sys.platform == "win32", reason="fcntl.flock")

@@ -69,6 +69,12 @@ class CallerSearch:
             frontier = above
         return roots if roots or by_open else None
 
+    def callers(self, found: FoundProgram) -> list[FoundProgram]:
+        """The programs of files on disk that call ``found`` with a literal target reaching it
+        (each calling program once, by file and O program): ``cncmacro run`` names them for a
+        subprogram run on its own."""
+        return [caller for _key, caller in self._disk_callers(found)]
+
     def _disk_callers(self, target: FoundProgram) -> list[tuple[_Key, FoundProgram]]:
         """The programs of files on disk (not open) with a literal call that reaches ``target``."""
         key = _key_of(target)

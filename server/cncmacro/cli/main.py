@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import sys
 
+from .. import __version__
 from .check import main_check
 from .profiles import add_dialect_option, add_profiles_parser
 from .run import add_run_parser
@@ -20,6 +21,7 @@ def build_parser() -> argparse.ArgumentParser:
         description="Check CNC custom-macro programs (FANUC 0i and 30i Macro B, GSK980TDi) "
         "before they reach a machine.",
     )
+    parser.add_argument("--version", action="version", version=f"cncmacro {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     check = sub.add_parser(

@@ -1,12 +1,17 @@
 """``cncmacro run``: run a program on the simulated machine and show what it did.
 
-The text output is for a machinist: the moves, anything the program printed or stopped
-with, the alarm and where it came from, and the final variables. ``--json`` prints docs/design.md's
+The text output is for a machinist: the moves (each with every axis the program has
+commanded so far, ``machine/commanded_axes.py``), anything the program printed or stopped
+with, the alarm and where it came from, and the final variables. A program that ends in M99,
+run on its own, is a subprogram: the run stops at that M99 after one pass and says so, naming
+the programs in its folder that call it (``--repeat`` runs it again and again, as a control
+runs a main program that ends in M99). ``--json`` prints docs/design.md's
 object. ``--locale zh-CN`` writes the text output in Chinese, its fixed words and the
 interpreter's alarm details and notes alike (in the JSON only the details and notes: its keys
 and status words are a contract and stay English). Exit status: 0 when the program completed, 1 on
-an alarm, 3 when the block budget ran out (a likely endless loop), 2 on bad usage or an
-unreadable file or machine file (and when another run or debug session kept the persistent
+an alarm, 3 when the block budget ran out (a likely endless loop), 2 on bad usage or a FILE
+that is no readable program (a folder, a missing, binary or unreadable file: said in a
+sentence) or an unreadable machine file (and when another run or debug session kept the persistent
 variables for longer than ``--wait`` seconds). Texts go to the terminal through ``terminal``:
 control characters in them are shown escaped, never sent raw.
 """
@@ -18,10 +23,13 @@ import sys
 from pathlib import Path
 from typing import Any, TextIO
 
+from ..analysis.call_index import CallIndex
+from ..analysis.caller_entries import CallerSearch
 from ..analysis.locale import is_chinese, pick
 from ..bilingual import in_language
 from ..library.machine_file import parse_preset
 from ..machine import Machine, RunResult
+from ..machine.commanded_axes import CommandedAxes
 from ..machine.frames import MODE_NAMES, Move
 from ..machine.machine import ALARM, LIMIT, PAUSED
 from ..machine.numbers import format_plain
@@ -69,6 +77,11 @@ def add_run_parser(sub: Any) -> None:
              f"(default {LOCK_WAIT:g})",
     )  # fmt: skip
     run.add_argument(
+        "--repeat", action="store_true",
+        help="run a program that ends in M99 again from its start each time, as a control runs a main program "
+             "(by default a subprogram run on its own stops at its M99 after one pass)",
+    )  # fmt: skip
+    run.add_argument(
         "--stdin", action="store_true",
         help="read the program from standard input (an editor's unsaved text); FILE still names it",
     )  # fmt: skip
@@ -93,10 +106,12 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
         prepared = prepare_run(
             path, machine_file=args.machine, dialect=args.dialect, presets=presets,
             search_paths=[Path(p) for p in args.path], data=sys.stdin.buffer.read() if args.stdin else None,
-            saving=not args.no_save, wait=args.wait,
+            saving=not args.no_save, wait=args.wait, m99_ends_main=not args.repeat,
         )  # fmt: skip
     except ValueError as e:
-        if is_chinese(args.locale) and e.args:
+        if not args.stdin and path.is_dir():
+            print(_folder_text(path, args.locale), file=err)
+        elif is_chinese(args.locale) and e.args:
             print(f"cncmacro run：{in_language(e.args[0], True)}", file=err)
         else:
             print(f"cncmacro run: {e}", file=err)
@@ -122,10 +137,55 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
     result = machine.result()
     if args.json:
         head = {"dialect": dialect.name, "lathe": dialect.lathe}
-        write_json({**head, **result_json(result, dialect.axes, args.locale)}, out)
+        body = result_json(result, dialect.axes, args.locale)
+        if machine.ended_by_main_m99:  # the sentence only: a toolpath refresh does not search the folder
+            body["messages"].append(_subprogram_text(path, args.locale))
+        write_json({**head, **body}, out)
     else:
-        write_text(result, machine, Printable(out), args.locale)  # type: ignore[arg-type]
+        remarks = _subprogram_remarks(machine, path, args) if machine.ended_by_main_m99 else []
+        write_text(result, machine, Printable(out), args.locale, remarks)  # type: ignore[arg-type]
     return {ALARM: 1, LIMIT: 3}.get(result.status, 0)
+
+
+def _subprogram_text(path: Path, locale: str | None) -> str:
+    """Why a program that ends in M99 stopped there: it is a subprogram, run on its own."""
+    name = path.name
+    return pick(locale,
+                f"{name} ends in M99: it is a subprogram, which returns to the program that calls it. "
+                "Run on its own it stopped at the M99 after one pass (--repeat runs it again from its start, "
+                "as a control runs a main program that ends in M99).",
+                f"{name} 以 M99 结束：这是子程序，执行完返回调用它的程序。单独运行时执行一遍后在 M99 处停止"
+                "（--repeat 则像数控系统执行以 M99 结束的主程序那样从头再次运行）。")  # fmt: skip
+
+
+def _subprogram_remarks(machine: Machine, path: Path, args: argparse.Namespace) -> list[str]:
+    """The subprogram sentence, and the programs in the file's folder that call it (by file
+    name and O number), found as ``cncmacro check`` finds a program's callers on disk."""
+    found = machine.frames[0].found
+    index = CallIndex([str(path.parent)], machine.settings, args.dialect, args.locale)
+    callers = CallerSearch(machine.library, index, {}).callers(found)
+    chinese = is_chinese(args.locale)
+    named = []
+    for c in callers:
+        name = Path(c.file.path).name
+        if c.unit.number is not None:
+            name += f"（{c.label}）" if chinese else f" ({c.label})"
+        named.append(name)
+    if chinese:
+        who = f"调用它的程序：{'、'.join(named)}" if named else "同一文件夹中没有调用它的程序"
+    else:
+        who = f"called by: {', '.join(named)}" if named else "no program in its folder calls it"
+    return [_subprogram_text(path, args.locale), who]
+
+
+def _folder_text(path: Path, locale: str | None) -> str:
+    """What to do when FILE names a folder: run one program in it, or check them all."""
+    one = path / "FILE"
+    return pick(locale,
+                f"cncmacro run: {path} is a folder, not a program file: run one of the programs in it "
+                f"(cncmacro run {one}), or check them all with cncmacro check {path}",
+                f"cncmacro run：{path} 是文件夹，不是程序文件：请运行其中的一个程序（cncmacro run {one}），"
+                f"或用 cncmacro check {path} 检查其中的全部程序")  # fmt: skip
 
 
 def result_json(result: RunResult, axes: tuple[str, ...], locale: str | None = None) -> dict[str, Any]:
@@ -184,24 +244,28 @@ def write_json(result: dict[str, Any], out: TextIO) -> None:
     out.write("}\n")
 
 
-def write_text(result: RunResult, machine: Machine, out: TextIO, locale: str | None = None) -> None:
+def write_text(
+    result: RunResult, machine: Machine, out: TextIO, locale: str | None = None, remarks: list[str] | None = None
+) -> None:
     """The run for a machinist, in English or (``zh`` locale) in Chinese: codes, file names,
-    numbers and the texts the program itself wrote stay as they are."""
+    numbers and the texts the program itself wrote stay as they are; ``remarks`` (already in
+    the locale's language) come before the status line."""
     chinese = is_chinese(locale)
     axes = machine.dialect.axes
-    moved = [i for i in range(len(axes)) if any(mv.start[i] != mv.end[i] or mv.end[i] for mv in result.moves)]
-    if result.moves:
-        count = len(result.moves)
-        print(f"运动（{count} 段）：" if chinese else f"moves ({count}):", file=out)
-        shown = result.moves if len(result.moves) <= MAX_TEXT_MOVES else result.moves[: MAX_TEXT_MOVES // 2]
-        for mv in shown:
-            out.write(_move_line(mv, axes, moved))
-        if len(shown) < len(result.moves):
-            rest = result.moves[-MAX_TEXT_MOVES // 2 :]
-            more = len(result.moves) - len(shown) - len(rest)
+    moves = result.moves
+    if moves:
+        print(f"运动（{len(moves)} 段）：" if chinese else f"moves ({len(moves)}):", file=out)
+        commanded = CommandedAxes(machine)  # every axis the program has named so far, even at 0
+        head = moves if len(moves) <= MAX_TEXT_MOVES else moves[: MAX_TEXT_MOVES // 2]
+        for mv in head:
+            out.write(_move_line(mv, axes, commanded.shown(mv)))
+        if len(head) < len(moves):
+            rest = moves[-MAX_TEXT_MOVES // 2 :]
+            more = len(moves) - len(head) - len(rest)
+            commanded.absorb(moves[len(head) : len(moves) - len(rest)])
             print(f"  …… 另有 {more} 段运动 ……" if chinese else f"  ... {more} more moves ...", file=out)
             for mv in rest:
-                out.write(_move_line(mv, axes, moved))
+                out.write(_move_line(mv, axes, commanded.shown(mv)))
     for note in result.notes:
         where = f"{Path(note.file).name}:{note.line + 1}"
         text = in_language(note.message, chinese)
@@ -224,6 +288,8 @@ def write_text(result: RunResult, machine: Machine, out: TextIO, locale: str | N
     elif result.status == LIMIT:
         print(pick(locale, f"stopped after {result.blocks} blocks: the block budget ran out (an endless loop?)",
                    f"执行 {result.blocks} 个程序段后停止：已达到程序段数上限（是否有死循环？）"), file=out)  # fmt: skip
+    for remark in remarks or ():
+        print(remark, file=out)
     if chinese:
         print(f"状态：{STATUS_ZH.get(result.status, result.status)}，共执行 {result.blocks} 个程序段", file=out)
     else:
@@ -235,5 +301,5 @@ def write_text(result: RunResult, machine: Machine, out: TextIO, locale: str | N
             print(f"  #{n} = {format_plain(v)}", file=out)
 
 
-def _move_line(mv: Move, axes: tuple[str, ...], moved: list[int]) -> str:
-    return f"  {Path(mv.file).name}:{mv.line + 1:<5} {mv.text(axes, moved)}\n"
+def _move_line(mv: Move, axes: tuple[str, ...], shown: list[int]) -> str:
+    return f"  {Path(mv.file).name}:{mv.line + 1:<5} {mv.text(axes, shown)}\n"

@@ -73,7 +73,7 @@ class Stepper:
         self.pause_requested = False
         self.notes_sent = len(machine.notes)
         self.moves_sent = len(machine.moves)
-        self.commanded = CommandedAxes(machine.dialect, machine.library)  # the axes the echo shows
+        self.commanded = CommandedAxes(machine)  # the axes the echo shows
         self.fresh = True  # nothing has run yet: a breakpoint on the first block counts
         self.stop_at_end = False  # stop where the program ends (set by the session)
         self.never_stop = False  # "Run Without Debugging": the block budget ends the run too

@@ -1,64 +1,88 @@
-"""Which axes a person is shown for a run's moves: the ones the program has commanded.
+"""Which axes a move's text shows: every axis the program has commanded so far.
 
-A dialect names every axis its control may have (``X Y Z A`` on a FANUC mill), but a
-three-axis job never mentions A, and a line of motion that reads ``A0.000`` makes a machinist
-wonder where the program turns a rotary table. So a move is shown with every axis the run has
-commanded up to and including it: an axis that a moving block names (an absolute letter, or on
-a lathe its incremental letter, ``U`` for X), or that a move changed without naming it (a
-drilling cycle's retract). Once commanded, an axis stays shown, at 0 too; an axis never
-commanded is never shown. Only before any axis is commanded (a full circle ``G02 I-10.`` as the
-first move) are all of them shown, so that the move still says where it is.
+A machinist reading ``G01  X0.000 Y0.000 Z-2.000 -> X20.000 Y0.000 Z-2.000`` expects the axes
+the program named, each with its value even when it is 0, and none that it never mentions (no
+``A0.000`` on a three-axis job). A move record (``frames.Move``) holds every axis of the
+profile; which ones the program named is read from the move's block: its axis words and, on a
+lathe, the incremental letters (``U`` is X, ``W`` is Z). Once named, an axis stays shown. An
+axis that moves without being named (a G28 return) is shown too, and a move before any axis
+was named or moved (``G70 P.. Q..``, a full circle ``G03 I-10.``) shows the profile's main axes
+(X and Z on a lathe, X, Y and Z on a mill), which then stay: never an empty ``->``.
+``cncmacro run`` and the debug console's motion echo use this (``Move.text`` takes the list).
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from .frames import Move
 
 if TYPE_CHECKING:
-    from ..dialects import Dialect
-    from ..library.programs import ProgramLibrary
-    from ..syntax.nodes import Block
+    from .machine import Machine
 
 
 class CommandedAxes:
-    """The axes commanded so far by the moves taken in with ``shown``, as indices in the
-    dialect's axis order; the blocks of the moves are read from ``library`` (the run's)."""
+    """``shown(move)`` for the moves of one run, in the order they were made."""
 
-    def __init__(self, dialect: Dialect, library: ProgramLibrary) -> None:
-        self.axes = dialect.axes
-        letters = {a: i for i, a in enumerate(self.axes)}
-        for inc, axis in dialect.incremental_letters.items():
-            if axis in letters:
-                letters[inc] = letters[axis]
-        self._letters = letters
-        self._library = library
-        self.commanded: set[int] = set()
-        self._shown: list[int] = []
+    def __init__(self, machine: Machine) -> None:
+        self.machine = machine
+        dialect = machine.dialect
+        index = {a: i for i, a in enumerate(dialect.axes)}
+        self.letters = dict(index)
+        for letter, axis in dialect.incremental_letters.items():
+            if axis in index:
+                self.letters[letter] = index[axis]
+        main = ("X", "Z") if dialect.lathe else ("X", "Y", "Z")
+        self.main = [index[a] for a in main if a in index] or [0]
+        self.so_far: set[int] = set()
+        self._sorted: list[int] = []
+        self._named: dict[tuple[str, int], frozenset[int]] = {}
+        self._all = len(dialect.axes)
 
     def shown(self, mv: Move) -> list[int]:
-        """Take in ``mv`` and give the axes to show it with, in the dialect's order."""
-        new = {i for i in range(len(self.axes)) if mv.start[i] != mv.end[i]}
-        new.update(self._named(mv))
-        if not new <= self.commanded:
-            self.commanded |= new
-            self._shown = sorted(self.commanded)
-        return self._shown or list(range(len(self.axes)))
+        """The axes to show for ``mv``, in the profile's order."""
+        so_far = self.so_far
+        if len(so_far) < self._all:
+            before = len(so_far)
+            so_far.update(self._block_axes(mv.file, mv.line))
+            so_far.update(i for i in range(self._all) if mv.start[i] != mv.end[i])
+            if not so_far:
+                so_far.update(self.main)
+            if len(so_far) != before:
+                self._sorted = sorted(so_far)
+        return self._sorted
 
-    def _named(self, mv: Move) -> set[int]:
-        block = self._block(mv.file, mv.line)
-        if block is None:
-            return set()
-        letters = self._letters
-        if block.plain is not None:  # a plain line: its words are its whitespace-separated parts
-            found = (letters.get(w[:1].upper()) for w in block.plain.split())
-        else:
-            found = (letters.get(w.letter) for w in block.words)
-        return {i for i in found if i is not None}
+    def absorb(self, moves: Sequence[Move]) -> None:
+        """Take in, at once, moves that are not shown (the middle of a long run)."""
+        so_far = self.so_far
+        if len(so_far) >= self._all or not moves:
+            return
+        for file, line in {(mv.file, mv.line) for mv in moves}:
+            so_far.update(self._block_axes(file, line))
+        for i in range(self._all):
+            if i not in so_far and any(mv.start[i] != mv.end[i] for mv in moves):
+                so_far.add(i)
+        if not so_far:
+            so_far.update(self.main)
+        self._sorted = sorted(so_far)
 
-    def _block(self, file: str, line: int) -> Block | None:
-        loaded = self._library.load(file)  # read once by the run, kept by the library
-        if loaded is None or not 0 <= line < len(loaded.program.blocks):
-            return None
-        return loaded.program.blocks[line]
+    def _block_axes(self, file: str, line: int) -> frozenset[int]:
+        key = (file, line)
+        named = self._named.get(key)
+        if named is None:
+            named = self._named[key] = frozenset(self._read(file, line))
+        return named
+
+    def _read(self, file: str, line: int) -> list[int]:
+        compiled = self.machine.compiled.get(file)
+        if compiled is None:
+            return []
+        blocks = compiled.file.program.blocks
+        if not 0 <= line < len(blocks):
+            return []
+        block = blocks[line]
+        letters = self.letters
+        if block.plain is not None:  # the words of a plain line, without parsing them
+            return [letters[w[0].upper()] for w in block.plain.split() if w[0].upper() in letters]
+        return [letters[w.letter] for w in block.words if w.letter in letters]

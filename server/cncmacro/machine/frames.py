@@ -83,9 +83,11 @@ class Move(NamedTuple):
 
     def text(self, axes: tuple[str, ...], shown: list[int] | None = None) -> str:
         """``G01  X0.000 Y0.000 -> X10.000 Y5.000  F200`` for a person: the axes in ``shown``
-        (by default those that moved; every axis when none did, so that a move to where the
-        tool already is still says where that is) and the feed of a cutting move."""
-        if shown is None:
+        (``commanded_axes.CommandedAxes`` gives those the program has named so far; without
+        them, or with none, those that moved, and every axis when none did, so that a move to
+        where the tool already is still says where that is: never an empty ``->``) and the feed
+        of a cutting move."""
+        if not shown:
             shown = [i for i in range(len(axes)) if self.start[i] != self.end[i]] or list(range(len(axes)))
         mode = MODE_NAMES.get(self.mode, f"G{self.mode:g}")
         start = " ".join(f"{axes[i]}{self.start[i]:.3f}" for i in shown)

@@ -97,6 +97,9 @@ class Machine(VariableAccess, Motion):
         self.library = library or ProgramLibrary()
         self.kinds = VariableKinds(dialect)
         self.m99_ends_main = m99_ends_main
+        # set when an M99 of the main program ended the run (``m99_ends_main``): a subprogram
+        # run on its own stopped after one pass (``cncmacro run`` says so); a restore clears it
+        self.ended_by_main_m99 = False
         # Analysis hooks, all off for plain runs. ``watching`` (set before the first block
         # runs) compiles blocks that report vacant argument reads and assigned values;
         # ``on_first_run(file, line, step)`` hears of each line the first time it is compiled,
@@ -509,6 +512,7 @@ class Machine(VariableAccess, Motion):
         if len(self.frames) == 1:
             if self.m99_ends_main:
                 self.status = COMPLETED
+                self.ended_by_main_m99 = True
                 frame.pc = pc
                 return -1
             frame.loops.clear()
@@ -674,6 +678,7 @@ class Machine(VariableAccess, Motion):
         self.written_system = set(snap.written_system)
         self.timer_marks = dict(snap.timer_marks)
         self.cancel_requested = False
+        self.ended_by_main_m99 = False
 
     @staticmethod
     def _copy_frames(frames: list[Frame]) -> list[Frame]:

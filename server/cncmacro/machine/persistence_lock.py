@@ -5,10 +5,14 @@ file until it has written it back, so two runs that each add 1 to ``#500`` add 2
 start together or not; a debug session holds it from its launch until it ends. The lock is
 taken on a sibling file, ``<name>.lock`` beside the (link-resolved) variable file, never on the
 variable file itself: a save renames a new file over that one, and a lock on the replaced file
-would guard nothing. The lock file stays (removing it would let two runs lock two different
-files); it holds the process number of the run that has the lock, for the message of a run
-that waits for it in vain. A run that only reads (``--no-save``, ``noSave``) takes no lock:
-the atomic rename already gives it a whole file.
+would guard nothing. The lock file holds the process number of the run that has the lock, for
+the message of a run that waits for it in vain. It stays while there is a variable file to
+guard; a run that leaves none (it kept nothing) deletes it while it still holds the lock
+(``PersistentLock.remove``), so that nothing of it is left beside the program. A run that was
+waiting on the deleted file finds, once it has the lock, that the path no longer names the file
+it locked, and locks the path anew: two runs never hold locks on two different files. A run
+that only reads (``--no-save``, ``noSave``) takes no lock: the atomic rename already gives it
+a whole file.
 
 A run waits ``wait`` seconds at most (``LOCK_WAIT`` by default), then gives up with a
 ``PersistentLockError`` that says who holds the file. Where the lock file cannot be made
@@ -69,6 +73,17 @@ class PersistentLock:
         finally:
             os.close(fd)
 
+    def remove(self) -> None:
+        """Delete the lock file while this run still holds it, then release it: for a run that
+        leaves no variable file for the lock to guard. Where the file cannot be deleted (a
+        folder that is not writable; Windows, while another run has it open) it stays."""
+        if self.fd is not None:
+            try:
+                os.unlink(self.path)
+            except OSError:
+                pass
+        self.release()
+
 
 def lock_file_of(path: Path) -> Path:
     """The lock file beside the persistent-variable file ``path``."""
@@ -79,16 +94,42 @@ def lock_persistent(path: Path, wait: float = LOCK_WAIT) -> PersistentLock:
     """Take the lock of the persistent-variable file ``path`` (already link-resolved), waiting
     for it at most ``wait`` seconds; ``PersistentLockError`` when it stays taken."""
     lock_path = lock_file_of(path)
+    deadline = time.monotonic() + max(wait, 0.0)
+    while True:
+        fd = _open_lock(lock_path)
+        if fd is None or (fcntl is None and msvcrt is None):
+            return PersistentLock(lock_path, fd)
+        _wait_for_lock(fd, path, lock_path, wait, deadline)
+        if _still_named(fd, lock_path):
+            break
+        os.close(fd)  # the run that had it deleted the file (it kept nothing): lock the path anew
+    _note_holder(fd)
+    return PersistentLock(lock_path, fd)
+
+
+def _open_lock(lock_path: Path) -> int | None:
+    """The lock file's descriptor; None where the folder is not writable (no lock is taken)."""
     try:
-        fd = _open(lock_path)
+        return _open(lock_path)
     except OSError as e:
         if e.errno in _NOT_WRITABLE or isinstance(e, FileNotFoundError):
-            return PersistentLock(lock_path, None)
+            return None
         raise PersistentFileError(detail(f"{lock_path}: cannot lock the persistent variables ({e.strerror or e})",
                                          f"{lock_path}：无法锁定断电保持变量（{e.strerror or e}）")) from e  # fmt: skip
-    if fcntl is None and msvcrt is None:
-        return PersistentLock(lock_path, fd)
-    deadline = time.monotonic() + max(wait, 0.0)
+
+
+def _still_named(fd: int, lock_path: Path) -> bool:
+    """Whether ``lock_path`` still names the file open as ``fd`` (a run may have deleted it)."""
+    try:
+        named = os.stat(lock_path, follow_symlinks=False)
+    except OSError:
+        return False
+    st = os.fstat(fd)
+    return (named.st_dev, named.st_ino) == (st.st_dev, st.st_ino)
+
+
+def _wait_for_lock(fd: int, path: Path, lock_path: Path, wait: float, deadline: float) -> None:
+    """Take the lock on ``fd`` by ``deadline``, or close ``fd`` and raise ``PersistentLockError``."""
     while not _try_lock(fd, lock_path):
         if time.monotonic() >= deadline:
             holder = _holder(fd)
@@ -101,8 +142,6 @@ def lock_persistent(path: Path, wait: float = LOCK_WAIT) -> PersistentLock:
                 f"{path}：断电保持变量正被另一次运行或调试会话使用{who.zh}，已等待 {wait:g} 秒。"
                 "请在其结束后再运行，或不保存这些变量运行（'--no-save'，或启动配置中的 'noSave'）"))  # fmt: skip
         time.sleep(POLL_SECONDS)
-    _note_holder(fd)
-    return PersistentLock(lock_path, fd)
 
 
 def _open(lock_path: Path) -> int:

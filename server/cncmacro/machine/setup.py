@@ -8,17 +8,21 @@ the program; a link to it is followed) and the presets are applied after them. A
 will save them holds the file's lock (``persistence_lock``) from before it reads them until
 ``PreparedRun.save`` has written them back, so runs that share the file take turns; values in
 the file that this machine does not hold (the 30i's ``#98000–`` under a 0i profile) are
-written back as they were. Every mistake a person can make here
+written back as they were. The file is written only when the run changed a persistent
+variable (a run that keeps nothing leaves no file, nor a lock file, beside the program; a file
+whose values did not change is left as it is), for ``cncmacro run`` and the debugger alike.
+Every mistake a person can make here
 (an unreadable or binary program, a bad machine file, a damaged persistent file, a preset of
 a variable that cannot be preset) is a ``SetupError`` whose message says what is wrong.
 """
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..bilingual import detail, in_language
+from ..bilingual import detail
 from ..dialects import get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect
 from ..library.files import SkippedFileError, decode_program, read_program
@@ -48,15 +52,21 @@ class PreparedRun:
     kept: dict[int, float] = field(default_factory=dict)  # the file's values this machine does not hold
     lock: PersistentLock | None = None
     saved: bool = False
+    stored: dict[int, float] = field(default_factory=dict)  # the file's values when the run started
 
     def save(self) -> None:
-        """Write ``#500–#999`` back atomically, once, and let the next run have the file
-        (``OSError`` passes through)."""
+        """Write ``#500–#999`` back atomically, once, when the run changed one of them, and let
+        the next run have the file (``OSError`` passes through). A run that changed none writes
+        nothing; when there is no file either, it deletes the lock file it made."""
         if self.saved:
             return
         self.saved = True
         try:
-            save_persistent(self.persistent_file, {**self.kept, **self.machine.persistent_values()})
+            values = {**self.kept, **self.machine.persistent_values()}
+            if values != self.stored:
+                save_persistent(self.persistent_file, values)
+            elif self.lock is not None and not os.path.lexists(self.persistent_file):
+                self.lock.remove()
         finally:
             self.release()
 
@@ -90,20 +100,29 @@ def prepare_run(
     data: bytes | None = None,
     saving: bool = True,
     wait: float = LOCK_WAIT,
+    m99_ends_main: bool = False,
 ) -> PreparedRun:
     """Read ``program`` and its machine settings and start a machine at its first block.
     ``data`` is the program's content when it does not come from the file (an editor's unsaved
     text): the file's path still names it and says where its called programs are. A run that
     is ``saving`` waits at most ``wait`` seconds for the persistent file's lock and holds it
-    until ``save`` or ``release``."""
+    until ``save`` or ``release``. ``m99_ends_main`` ends the run at an ``M99`` of the main
+    program (a subprogram run on its own, one pass) instead of running it again from its start
+    as a control does."""
     try:
         source = read_program(program, max_bytes=None) if data is None else decode_program(data, str(program))
-    except (OSError, SkippedFileError) as e:
+    except SkippedFileError as e:  # binary, a folder, a FIFO: its message names the file and says so
+        raise SetupError(e.message) from None
+    except OSError as e:
         if isinstance(e, FileNotFoundError):
             raise SetupError(detail(f"there is no file {program}", f"文件 {program} 不存在")) from None
-        why = e.message if isinstance(e, SkippedFileError) else str(e)
+        if isinstance(e, PermissionError):
+            why = detail("permission denied", "没有读取权限")
+        else:
+            reason = e.strerror or str(e)  # the system's words, as other readers of files give them
+            why = detail(f"{reason}", f"{reason}")
         raise SetupError(
-            detail(f"cannot read the program {program}: {why}", f"无法读取程序 {program}：{in_language(why, True)}")
+            detail(f"cannot read the program {program}: {why}", f"无法读取程序 {program}：{why.zh}")
         ) from None
     settings = machine_settings(program, machine_file)
     if block_delete is not None:
@@ -111,7 +130,7 @@ def prepare_run(
     if max_blocks is not None:
         settings = replace(settings, max_blocks=max_blocks)
     chosen = choose_dialect(source.text.splitlines()[:HEADER_LINES], settings.dialect, dialect)
-    machine = Machine(get_dialect(chosen), settings, ProgramLibrary(search_paths or []))
+    machine = Machine(get_dialect(chosen), settings, ProgramLibrary(search_paths or []), m99_ends_main=m99_ends_main)
     if machine.preset_problems:
         raise SetupError(machine.preset_problems[0])
     try:
@@ -123,6 +142,7 @@ def prepare_run(
     try:
         stored = load_persistent(persistent)
         held = set(machine.kinds.persistent_numbers())
+        prepared.stored = stored
         prepared.kept = {n: v for n, v in stored.items() if n not in held}
         machine.load_persistent(stored)
         machine.apply_presets(presets or {})
