@@ -11,14 +11,20 @@ $(VENV)/.installed: pyproject.toml
 	$(PY) -m pip install --quiet -e '.[test]'
 	touch $@
 
-# The npm packages pinned in package-lock.json (the extension's build, the DAP client, grammar and
-# editor tests, code-server) and the Debian packages the editor tests need (chromium, ripgrep,
-# libkrb5-dev), installed again only when the lock file or the script changes.
-node_modules/.installed: package-lock.json client/scripts/setup-editor
+# The extension's build: the npm packages of package-lock.json (TypeScript, esbuild, vsce, the
+# language client), installed again only when the lock file changes.
+node_modules/.installed: package-lock.json
+	npm ci --no-audit --no-fund --loglevel=error
+	touch $@
+
+# The test stack: the npm packages of tests/package-lock.json (the DAP client, the grammar tests,
+# code-server, playwright) and the Debian packages the editor tests need (chromium, ripgrep,
+# libkrb5-dev, fonts, neovim), installed again only when the lock file or the script changes.
+tests/node_modules/.installed: tests/package-lock.json client/scripts/setup-editor
 	bash client/scripts/setup-editor
 	touch $@
 
-setup: $(VENV)/.installed node_modules/.installed
+setup: $(VENV)/.installed node_modules/.installed tests/node_modules/.installed
 
 # Run a bundled example on the simulated machine, then check all of them (needs only Python).
 demo: $(VENV)/.installed
@@ -29,19 +35,22 @@ demo: $(VENV)/.installed
 	@echo "--- Checking tests/data/O0999_broken.nc, a program with three planted mistakes:"
 	@$(VENV)/bin/cncmacro check tests/data/O0999_broken.nc || echo "(cncmacro check exits with status 1 when it finds mistakes)"
 
-# Every test: lint, the Python suite, the debug adapter through a real DAP client, the grammar,
+# Every test: lint, the Python suite (then part of it again under the oldest and the newest
+# Python on the machine, tests/other_pythons.py), the debug adapter through a real DAP client, the grammar,
 # then the .vsix is built and tested in a real VS Code (screenshots in test-output/editor/).
 test: setup
 	$(VENV)/bin/ruff check server tests benchmarks
 	$(PY) -m pytest
+	$(PY) tests/other_pythons.py --quick
 	node --test tests/dap/
 	npm run --silent test:grammar
 	PYTHON=$(PY) npm run --silent package
 	timeout 600 node --test --test-concurrency=1 tests/editor/
 
-# The VS Code extension: cncmacro.vsix (needs only Python >= 3.10 where it is installed).
-package: setup
-	PYTHON=$(PY) npm run --silent package
+# The VS Code extension: cncmacro.vsix (needs only Python >= 3.10 where it is installed). Building
+# it needs Python with pip and `npm ci`, none of the test stack.
+package: node_modules/.installed
+	PYTHON=$(PYTHON) npm run --silent package
 
 # The four pictures of the README (docs/images/), taken in a real VS Code by the editor tests.
 screenshots: setup

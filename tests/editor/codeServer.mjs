@@ -15,7 +15,7 @@ import { chromium } from 'playwright-core';
 
 export const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 export const OUTPUT = path.join(ROOT, 'test-output', 'editor');
-const CODE_SERVER = path.join(ROOT, 'node_modules', '.bin', 'code-server');
+const CODE_SERVER = path.join(ROOT, 'tests', 'node_modules', '.bin', 'code-server');
 const VSIX = path.join(ROOT, 'cncmacro.vsix');
 const VSCE = path.join(ROOT, 'node_modules', '.bin', 'vsce');
 const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
