@@ -23,9 +23,8 @@ import sys
 from pathlib import Path
 from typing import Any, TextIO
 
-from ..analysis.call_index import CallIndex
-from ..analysis.caller_entries import CallerSearch
 from ..analysis.locale import is_chinese, pick
+from ..analysis.subprogram_alone import subprogram_remarks, subprogram_text
 from ..bilingual import in_language
 from ..library.machine_file import parse_preset
 from ..machine import Machine, RunResult
@@ -139,43 +138,12 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
         head = {"dialect": dialect.name, "lathe": dialect.lathe}
         body = result_json(result, dialect.axes, args.locale)
         if machine.ended_by_main_m99:  # the sentence only: a toolpath refresh does not search the folder
-            body["messages"].append(_subprogram_text(path, args.locale))
+            body["messages"].append(subprogram_text(path, args.locale))
         write_json({**head, **body}, out)
     else:
-        remarks = _subprogram_remarks(machine, path, args) if machine.ended_by_main_m99 else []
+        remarks = subprogram_remarks(machine, path, args.dialect, args.locale) if machine.ended_by_main_m99 else []
         write_text(result, machine, Printable(out), args.locale, remarks)  # type: ignore[arg-type]
     return {ALARM: 1, LIMIT: 3}.get(result.status, 0)
-
-
-def _subprogram_text(path: Path, locale: str | None) -> str:
-    """Why a program that ends in M99 stopped there: it is a subprogram, run on its own."""
-    name = path.name
-    return pick(locale,
-                f"{name} ends in M99: it is a subprogram, which returns to the program that calls it. "
-                "Run on its own it stopped at the M99 after one pass (--repeat runs it again from its start, "
-                "as a control runs a main program that ends in M99).",
-                f"{name} 以 M99 结束：这是子程序，执行完返回调用它的程序。单独运行时执行一遍后在 M99 处停止"
-                "（--repeat 则像数控系统执行以 M99 结束的主程序那样从头再次运行）。")  # fmt: skip
-
-
-def _subprogram_remarks(machine: Machine, path: Path, args: argparse.Namespace) -> list[str]:
-    """The subprogram sentence, and the programs in the file's folder that call it (by file
-    name and O number), found as ``cncmacro check`` finds a program's callers on disk."""
-    found = machine.frames[0].found
-    index = CallIndex([str(path.parent)], machine.settings, args.dialect, args.locale)
-    callers = CallerSearch(machine.library, index, {}).callers(found)
-    chinese = is_chinese(args.locale)
-    named = []
-    for c in callers:
-        name = Path(c.file.path).name
-        if c.unit.number is not None:
-            name += f"（{c.label}）" if chinese else f" ({c.label})"
-        named.append(name)
-    if chinese:
-        who = f"调用它的程序：{'、'.join(named)}" if named else "同一文件夹中没有调用它的程序"
-    else:
-        who = f"called by: {', '.join(named)}" if named else "no program in its folder calls it"
-    return [_subprogram_text(path, args.locale), who]
 
 
 def _folder_text(path: Path, locale: str | None) -> str:

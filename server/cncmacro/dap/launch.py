@@ -5,8 +5,11 @@ The launch arguments are ``program`` (the file to run), ``dialect``, ``stopOnEnt
 ``set`` (presets, ``{"100": 5}`` or ``["100=5"]``), ``maxBlocks``, ``echoMotion`` (each
 executed motion block to the debug console), ``noSave`` (leave ``#500–#999`` unsaved),
 ``stopAtEnd`` (stop once more where the program ends, ``M30``/``M02`` or its last block, so its
-final state can be looked at and stepped back from; default true) and ``noDebug`` ("Run
-Without Debugging": no stop at all, neither on entry, at breakpoints, alarms nor the end).
+final state can be looked at and stepped back from; default true), ``repeat`` (a program that
+ends in M99 runs again from its start, as a control runs a main program; by default a
+subprogram launched on its own ends at its M99 after one pass, as ``cncmacro run`` does) and
+``noDebug`` ("Run Without Debugging": no stop at all, neither on entry, at breakpoints, alarms
+nor the end).
 The machine is set up as ``cncmacro run`` sets it up: the dialect comment in the file wins,
 then the machine file, then the configuration, then fanuc; presets come after the persistent
 variables; a launch that saves them holds their lock until the session saves them (at its
@@ -19,10 +22,12 @@ A launch reads program files in its folders only (``Launched.scope``): the progr
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from ..bilingual import detail
 from ..dialects import DIALECTS, normalise_dialect
 from ..library.files import ReadScope
 from ..library.machine_file import parse_preset
@@ -49,6 +54,7 @@ class LaunchConfig:
     no_save: bool = False
     stop_at_end: bool = True
     no_debug: bool = False
+    repeat: bool = False
 
     @classmethod
     def from_arguments(cls, args: dict[str, Any]) -> LaunchConfig:
@@ -75,12 +81,17 @@ class LaunchConfig:
         stop_at_end = args.get("stopAtEnd", True)
         if not isinstance(stop_at_end, bool):
             raise LaunchError("'stopAtEnd' must be true or false")
+        repeat = args.get("repeat")
+        if repeat is not None and not isinstance(repeat, bool):
+            shown = json.dumps(repeat, ensure_ascii=False)  # as the launch configuration wrote it
+            raise LaunchError(detail(f"'repeat' must be true or false, not {shown}",
+                                     f"'repeat' 必须是 true 或 false，而不是 {shown}"))  # fmt: skip
         no_debug = bool(args.get("noDebug", False))
         return cls(
             Path(program).resolve(), dialect, bool(args.get("stopOnEntry", False)),
             Path(machine).resolve() if machine else None, block_delete, _presets(args.get("set")), max_blocks,
             bool(args.get("echoMotion", False)), bool(args.get("noSave", False)), stop_at_end and not no_debug,
-            no_debug,
+            no_debug, bool(repeat),
         )  # fmt: skip
 
 
@@ -140,6 +151,7 @@ def launch(config: LaunchConfig) -> Launched:
         prepared = prepare_run(
             config.program, machine_file=config.machine_file, dialect=config.dialect, presets=config.presets,
             block_delete=config.block_delete, max_blocks=config.max_blocks, saving=not config.no_save,
+            m99_ends_main=not config.repeat,
         )  # fmt: skip
     except SetupError as e:
         raise LaunchError(e.args[0] if e.args else str(e)) from None  # a Detail keeps its Chinese

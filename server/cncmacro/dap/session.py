@@ -4,7 +4,9 @@ The request loop reads from standard input on the main thread; continue and the 
 the machine on a worker thread, so pause, threads and the other requests are answered while a
 long run goes on. A request that needs a stopped machine (stack trace, variables, evaluate)
 is refused with a message while it runs. An unknown or malformed request gets
-``success: false`` and the session goes on. Terminate and disconnect save ``#500–#999``.
+``success: false`` and the session goes on. Terminate and disconnect save ``#500–#999``. A
+program launched on its own that ends at its M99 (a subprogram; ``repeat`` runs it again as a
+control would) gets ``cncmacro run``'s sentence and its callers in the console.
 ``source`` and ``setBreakpoints`` read program files of the launch's folders only (see
 ``breakpoints.Breakpoints.read_scope``); a pipe or a device is refused, never waited on.
 """
@@ -17,6 +19,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any, BinaryIO
 
+from ..analysis.subprogram_alone import LAUNCH_REPEAT, subprogram_remarks
 from ..bilingual import detail
 from ..library.files import SkippedFileError
 from ..machine import Machine
@@ -57,6 +60,7 @@ class Session:
         self.busy = False  # the worker is running the machine (not just finishing)
         self.ended = False
         self.last_stop: Stop | None = None
+        self.told_subprogram = False  # the launched program ended at its M99, and the console says so
         self.done = False
         self._after: list[Callable[[], None]] = []
 
@@ -158,6 +162,7 @@ class Session:
         self.started = False
         self.ended = False
         self.last_stop = None
+        self.told_subprogram = False
 
     def on_configurationDone(self, args: dict[str, Any]) -> None:
         self.configured = True
@@ -236,6 +241,7 @@ class Session:
 
     def _stopped(self, stop: Stop) -> None:
         self.last_stop = stop
+        self._tell_subprogram()
         if stop.finished:
             self._finish()
             return
@@ -247,6 +253,22 @@ class Session:
         if stop.hit_ids:
             body["hitBreakpointIds"] = stop.hit_ids
         self.event("stopped", body)
+
+    def _tell_subprogram(self) -> None:
+        """A program launched on its own that ended at its M99 is a subprogram: say so once, in
+        ``cncmacro run``'s words, with the programs in its folder that call it."""
+        launched = self.launched
+        if launched is None or self.told_subprogram or not launched.machine.ended_by_main_m99:
+            return
+        self.told_subprogram = True
+        config = launched.config
+        try:
+            remarks = subprogram_remarks(launched.machine, config.program, config.dialect, self.locale, LAUNCH_REPEAT)
+        except Exception as e:  # never leave the client waiting for the stop
+            self.output(f"internal error: {e!r}\n", "stderr")
+            return
+        for remark in remarks:
+            self.output(remark + "\n", "console")
 
     def _finish(self) -> None:
         if self.ended or self.launched is None:
