@@ -4,9 +4,9 @@ The launch arguments are ``program`` (the file to run), ``dialect``, ``stopOnEnt
 ``machine`` (a machine file; by default the nearest ``.cncmacro.toml``), ``blockDelete``,
 ``set`` (presets, ``{"100": 5}`` or ``["100=5"]``), ``maxBlocks``, ``echoMotion`` (each
 executed motion block to the debug console), ``noSave`` (leave ``#500–#999`` unsaved),
-``stopAtEnd`` (stop once more where the program ends, ``M30``/``M02`` or its last block, so its
-final state can be looked at and stepped back from; default true), ``repeat`` (a program that
-ends in M99 runs again from its start, as a control runs a main program; by default a
+``stopAtEnd`` (stop once more where the program ends, ``M30``/``M02``, a lone subprogram's
+``M99`` or its last block, so its final state can be looked at and stepped back from; default
+true), ``repeat`` (a program that ends in M99 runs again from its start, as a control runs a main program; by default a
 subprogram launched on its own ends at its M99 after one pass, as ``cncmacro run`` does) and
 ``noDebug`` ("Run Without Debugging": no stop at all, neither on entry, at breakpoints, alarms
 nor the end).
