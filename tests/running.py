@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from cncmacro.dialects import Dialect, get_dialect
 from cncmacro.library.machine_file import MachineSettings
 from cncmacro.library.programs import ProgramLibrary
 from cncmacro.machine import Machine
@@ -13,7 +14,7 @@ FIXED_CLOCK = {"date": 20261122, "time": 80000}
 
 def machine(
     text: str,
-    dialect: str = "fanuc",
+    dialect: str | Dialect = "fanuc",
     presets: dict[int, float] | None = None,
     folder: Path | None = None,
     max_blocks: int = 100_000,
@@ -29,7 +30,7 @@ def machine(
     return m
 
 
-def run(text: str, dialect: str = "fanuc", **kw: object) -> Machine:
+def run(text: str, dialect: str | Dialect = "fanuc", **kw: object) -> Machine:
     """Run ``text`` to its end (resuming past M00 and #3006) and return the machine."""
     m = machine(text, dialect, **kw)  # type: ignore[arg-type]
     while m.run() == "paused":
@@ -37,14 +38,14 @@ def run(text: str, dialect: str = "fanuc", **kw: object) -> Machine:
     return m
 
 
-def final(text: str, dialect: str = "fanuc", **kw: object) -> dict[int, float]:
+def final(text: str, dialect: str | Dialect = "fanuc", **kw: object) -> dict[int, float]:
     """The variables of a run that must complete without an alarm."""
     m = run(text, dialect, **kw)
     assert m.status == "completed", f"{m.status}: {m.alarm}"
     return m.variables()
 
 
-def alarm(text: str, dialect: str = "fanuc", **kw: object) -> tuple[int, int]:
+def alarm(text: str, dialect: str | Dialect = "fanuc", **kw: object) -> tuple[int, int]:
     """(alarm number, 1-based line) of a run that must alarm."""
     m = run(text, dialect, **kw)
     assert m.status == "alarm", f"expected an alarm, the run ended {m.status} with {m.variables()}"
@@ -54,3 +55,9 @@ def alarm(text: str, dialect: str = "fanuc", **kw: object) -> tuple[int, int]:
 
 def lines(*text: str) -> str:
     return "\n".join(text) + "\n"
+
+
+def haas_switched(base: str = "fanuc") -> Dialect:
+    """``base`` with the Haas capabilities switched on, as the ``haas`` profile is to set them
+    (docs/semantics.md §5 "M97"): ``M97 P n`` local subprogram calls."""
+    return get_dialect(base).configured(local_subprogram_code=97.0)

@@ -4,7 +4,8 @@ The block is read in the interpreter's order (``machine/nc_blocks.py``): a ``G65
 makes the block a macro call (only ``N`` before it and no O word: ``g65-nc-words``, alarm 127; a
 modal G code before it is a warning where the dialect's control sets it and calls, FANUC);
 on gsk980tdi ``G65 H..`` without L is the macro A form; otherwise a code that the machine
-settings configure as a call, then ``M98``/``M198`` and ``M99``. What is decided is decided by
+settings configure as a call, then ``M98``/``M198``, the dialect's local subprogram call (Haas
+``M97 P n``: its P is a label of the same program, judged like ``M98 Q``) and ``M99``. What is decided is decided by
 the interpreter's own helpers in ``machine/calls.py`` (``map_arguments`` for argument letters,
 ``repeat_count`` and ``program_and_count`` for counts, ``macro_program_number`` for P), run on
 the literal values: an alarm they raise becomes an error here, a note a warning. Calls with a
@@ -347,8 +348,11 @@ def _nc_block(words: tuple[Word, ...], ctx: LineContext, facts: LineFacts) -> No
     if ctx.calls and _code_call(words, ctx, facts):
         return
     _refused_words(words, ctx, facts)
+    local = ctx.dialect.local_subprogram_code
     if 98.0 in ms or 198.0 in ms:
         _subprogram_call(words, "M98" if 98.0 in ms else "M198", ctx, facts)
+    elif local is not None and local in ms:
+        _local_call(words, local, ctx, facts)
     elif 99.0 in ms:
         p = _last(words, "P")
         value = _constant(p, ctx)
@@ -411,6 +415,26 @@ def _same_code(w: Word, code: str) -> bool:
         return False
     v = _code_value(w)
     return v is not None and f"{w.letter}{v:g}" == code
+
+
+def _local_call(words: tuple[Word, ...], code: float, ctx: LineContext, facts: LineFacts) -> None:
+    """Haas ``M97 P n L k`` as ``Machine.local_subprogram_call`` runs it: P is a label of the
+    program itself (a ``CallSite`` on the current program, like ``M98 Q``), L a count."""
+    how = f"M{code:g}"
+    p_word = _last(words, "P")
+    l_word = _last(words, "L")
+    if l_word is not None:
+        _check_count(l_word, ctx, facts)
+    if p_word is None:
+        m = next(w for w in words if w.letter == "M" and _code_value(w) == code)
+        _add(facts, m, "error", "undefined-label", f"{how} needs P: the N line to call (alarm 128)",
+             f"{how} 需要用 P 指定调用的 N 程序段（报警 128）", ctx)  # fmt: skip
+        return
+    before = len(facts.jumps)
+    literal_jump(p_word.value, f"{how} P", ctx, facts)  # a literal label in range, or label-range
+    if len(facts.jumps) > before:
+        jump = facts.jumps.pop()
+        facts.calls.append(CallSite(how, None, None, p_word.start, p_word.end, jump.label, (jump.start, jump.end), "P"))
 
 
 def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts: LineFacts) -> None:

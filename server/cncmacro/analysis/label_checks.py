@@ -3,7 +3,8 @@
 A literal ``GOTO n`` (also ``IF..GOTO`` and gsk980tdi ``G65 H80–H86 P n``) looks for ``Nn`` in its
 own O program, forward from the jump and then from the program's start, as the interpreter's
 ``CompiledFile.jump`` does: no such label is ``undefined-label`` (alarm 128), a label inside a
-loop that the jump is not in is ``jump-into-loop``. ``M98 Q n`` looks in the called program.
+loop that the jump is not in is ``jump-into-loop``. ``M98 Q n`` looks in the called program, a
+local subprogram call (Haas ``M97 P n``) in its own.
 ``M99 P n`` of a program called from this file looks in each caller; in a file's first program,
 when nothing in the file calls it and other programs follow it (the main program), in itself;
 anywhere else it is left to the run. A label used more than once where a jump goes to it is
@@ -92,7 +93,7 @@ class LabelChecker:
             Diagnostic(self.file, line, start, line, max(end, start + 1), "error", "undefined-label", message, related)
         )
 
-    # ---------------------------------------------------------------- calls and M98 Q
+    # ---------------------------------------------------------------- calls, M98 Q and M97 P
     def _call(self, line: int, site: CallSite) -> None:
         found = self.finder.find(site, line)
         if found == UNKNOWN:
@@ -112,8 +113,8 @@ class LabelChecker:
         if not lines:
             where = _unit_name(found.unit, loc) if found.unit.number is not None else found.label
             self._missing(line, site.q_span[0], site.q_span[1], q, found.unit,
-                          pick(loc, f"{site.how} Q{q}: there is no N{q} in {where} (alarm 128)",
-                               f"{site.how} Q{q}：{where} 中没有 N{q}（报警 128）"))  # fmt: skip
+                          pick(loc, f"{site.how} {site.q_letter}{q}: there is no N{q} in {where} (alarm 128)",
+                               f"{site.how} {site.q_letter}{q}：{where} 中没有 N{q}（报警 128）"))  # fmt: skip
         elif len(lines) > 1 and here:
             self._duplicates[(found.unit.start, q)] = found.unit
 

@@ -46,8 +46,9 @@ class Jump:
 @dataclass(frozen=True, slots=True)
 class CallSite:
     """A call of another program with a literal target: ``number`` (O number) or ``name``
-    (gsk980tdi ``P[CUT]``), neither for ``M98 Q`` on the current program. ``start``/``end`` is
-    the span of what names the program; ``q`` is the literal ``M98 Q`` label and its span."""
+    (gsk980tdi ``P[CUT]``), neither for ``M98 Q`` or Haas ``M97 P`` on the current program.
+    ``start``/``end`` is the span of what names the program; ``q`` is the literal label the call
+    starts at (``M98 Q``, ``M97 P``), its span, and the letter that names it."""
 
     how: str
     number: int | None
@@ -56,6 +57,7 @@ class CallSite:
     end: int
     q: int | None = None
     q_span: tuple[int, int] = (0, 0)
+    q_letter: str = "Q"
 
 
 @dataclass(frozen=True, slots=True)
@@ -121,6 +123,9 @@ def _plain_pattern(settings: MachineSettings, dialect: Dialect) -> str:
     """The pattern of a plain line that may need a check: the call codes, the codes that the
     machine settings configure as calls, and words a control may refuse (``machine/words.py``)."""
     parts = [_PLAIN_CALL, plain_line_pattern(dialect.name, settings.calls)]
+    local = dialect.local_subprogram_code
+    if local is not None:  # Haas M97: a call to a label of the program itself
+        parts.append(rf"(?:^|[ \t])[Mm][+]?0*{local:g}(?:\.0*)?(?=[ \t]|$)")
     for code in settings.calls:
         letter, digits = code[:1], code[1:]
         if not digits:

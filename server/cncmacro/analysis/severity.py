@@ -29,7 +29,7 @@ class CodeInfo(NamedTuple):
 CODES: dict[str, CodeInfo] = {
     "syntax": CodeInfo("error", "The block does not parse."),
     "bracket-depth": CodeInfo("error", "More than 5 nested brackets (alarm 118)."),
-    "undefined-label": CodeInfo("error", "A GOTO, M99 P, M98 Q or H80-H86 target has no N label."),
+    "undefined-label": CodeInfo("error", "A GOTO, M99 P, M98 Q, M97 P or H80-H86 target has no N label."),
     "duplicate-label": CodeInfo("warning", "An N number is used twice where it is a jump target."),
     "duplicate-program": CodeInfo("warning", "An O number used twice in a file: the control keeps the first program."),
     "label-range": CodeInfo("error", "A GOTO target is outside 1-99999."),

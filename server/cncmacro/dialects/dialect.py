@@ -105,6 +105,11 @@ class Dialect:
     # §3 functions beyond the common set: names (POW, ADP, PRM) and extra forms by signature (ATAN[a,b])
     extra_functions: frozenset[str] = frozenset()
 
+    # §5 the M code of a local subprogram call (Haas ``M97 P<n> L<k>``: run from Nn of the
+    # program running until M99, then back after the call); None: no such call, the code is a
+    # plain M code
+    local_subprogram_code: float | None = None
+
     def configured(self, **changes: object) -> Dialect:
         """This profile as one machine has it (a machine file's commons, digits and variables)."""
         return replace(self, **changes)  # type: ignore[arg-type]

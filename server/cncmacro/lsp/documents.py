@@ -109,13 +109,14 @@ class Documents:
     def open(self, item: types.TextDocumentItem, parsed: ParsedDocument | None = None) -> OpenDocument:
         """Open ``item``; ``parsed`` is its text already parsed (by the analysis)."""
         parsed = parsed if parsed is not None else ParsedDocument(item.text)
+        dialect = self.dialect_for(parsed.lines)
         doc = OpenDocument(
             item.uri,
             uri_to_path(item.uri),
             item.version,
             parsed,
-            self.dialect_for(parsed.lines),
-            SiteIndex(parsed.blocks),
+            dialect,
+            SiteIndex(parsed.blocks, dialect.local_subprogram_code),
         )
         self.by_uri[item.uri] = doc
         return doc
@@ -153,11 +154,18 @@ class Documents:
             if isinstance(change, types.TextDocumentContentChangePartial):
                 doc.sites.replaced(doc.parsed.blocks, edit[0], edit[2] + 1, len(split_lines(change.text)))
             else:
-                doc.sites = SiteIndex(doc.parsed.blocks)
+                doc.sites = SiteIndex(doc.parsed.blocks, doc.dialect.local_subprogram_code)
         doc.version = params.text_document.version
         if header_touched:
-            doc.dialect = self.dialect_for(doc.parsed.lines)
+            self._set_dialect(doc)
         return doc
+
+    def _set_dialect(self, doc: OpenDocument) -> None:
+        """Choose the document's dialect again; the sites change with its local call code."""
+        doc.dialect = self.dialect_for(doc.parsed.lines)
+        local = doc.dialect.local_subprogram_code
+        if doc.sites.local_call != local:
+            doc.sites = SiteIndex(doc.parsed.blocks, local)
 
     def close(self, uri: str) -> OpenDocument | None:
         return self.by_uri.pop(uri, None)
@@ -170,4 +178,4 @@ class Documents:
 
     def rechoose_dialects(self) -> None:
         for doc in self.by_uri.values():
-            doc.dialect = self.dialect_for(doc.parsed.lines)
+            self._set_dialect(doc)

@@ -60,7 +60,7 @@ def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
         return label_hover(ls, cur, b.label), *b.label_span
     if b.program_span is not None and b.program_span[0] <= col <= b.program_span[1] and b.program is not None:
         return program_hover(ls, cur, b.program, None), *b.program_span
-    for j in jump_sites(b):
+    for j in jump_sites(b, cur.doc.dialect.local_subprogram_code):
         if j.start <= col <= j.end:
             return label_hover(ls, cur, j.label), j.start, j.end
     for a in b.abbreviations:

@@ -1,6 +1,7 @@
 """Navigation: go to definition, find references, and rename N labels.
 
-A jump (``GOTO 10``, ``IF .. GOTO``, ``M99 P``, ``M98 Q``) leads to the N label it lands on
+A jump (``GOTO 10``, ``IF .. GOTO``, ``M99 P``, ``M98 Q``, and Haas ``M97 P`` where the
+dialect has that local subprogram call) leads to the N label it lands on
 (``machine.jumps`` says which of duplicate labels); the ``P`` of ``G65``/``G66``/``M98`` leads
 to the called program's file and line, found by the program library. References cover N
 labels (within their program), O programs (every call across the workspace) and variables
@@ -23,7 +24,7 @@ from .call_sites import call_site
 from .cursor import Cursor, cursor_at, doc_range
 from .positions import Encoding
 from .site_index import FileSites, workspace_sites
-from .sites import jump_sites, label_jumps
+from .sites import jump_sites, label_jumps, starts_from_the_top
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -67,7 +68,7 @@ def label_under(cur: Cursor) -> tuple[int, int, int, str] | None:
     b = cur.block
     if b.label is not None and b.label_span and b.label_span[0] <= cur.column <= b.label_span[1]:
         return b.label, b.label_span[0], b.label_span[1], "N"
-    for j in jump_sites(b):
+    for j in jump_sites(b, cur.doc.dialect.local_subprogram_code):
         if j.start <= cur.column <= j.end:
             return j.label, j.start, j.end, j.kind
     return None
@@ -85,7 +86,7 @@ def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | N
             return_line(lines, cur.line)
             if kind == "M99"
             else first_line(lines)
-            if kind == "M98 Q"
+            if starts_from_the_top(kind)
             else goto_line(lines, cur.line)
         )
         if target is None:

@@ -24,24 +24,28 @@ from .sites import JumpSite, VariableSite, jump_sites, variable_sites
 
 Sites = tuple[tuple[JumpSite, ...], tuple[VariableSite, ...]]
 _EMPTY: Sites = ((), ())
-_memo: dict[int, tuple[Block, Sites]] = {}
+_memo: dict[tuple[int, float | None], tuple[Block, Sites]] = {}
 _MEMO_LIMIT = 300_000
 
 
-def block_sites(block: Block) -> Sites:
-    """The jumps and variables of a block (memoised per block object)."""
+def block_sites(block: Block, local_call: float | None = None) -> Sites:
+    """The jumps and variables of a block (memoised per block object and local call code, the
+    dialect's ``local_subprogram_code``)."""
     plain = block.plain
-    if plain is not None and "M9" not in plain.upper() and "H8" not in plain.upper():
-        return _EMPTY
+    if plain is not None:
+        text = plain.upper()
+        if "M9" not in text and "H8" not in text and (local_call is None or "M" not in text):
+            return _EMPTY
     if plain is None and not block.statements and not block.words:
         return _EMPTY
-    hit = _memo.get(id(block))
+    key = (id(block), local_call)
+    hit = _memo.get(key)
     if hit is not None and hit[0] is block:
         return hit[1]
-    sites = (tuple(jump_sites(block)), tuple(variable_sites(block)))
+    sites = (tuple(jump_sites(block, local_call)), tuple(variable_sites(block)))
     if len(_memo) >= _MEMO_LIMIT:
         _memo.clear()
-    _memo[id(block)] = (block, sites)
+    _memo[key] = (block, sites)
     return sites
 
 
@@ -94,10 +98,12 @@ class _Maps:
 class SiteIndex:
     """The sorted lines of one document whose blocks have sites, found the first time they
     are asked for (not while a document is being opened), and the maps of ``_Maps`` made from
-    them the first time one is asked for."""
+    them the first time one is asked for. ``local_call`` is the document's dialect's local
+    subprogram call code (Haas ``M97``), whose P is a jump to a label."""
 
-    def __init__(self, blocks: list[Block]) -> None:
+    def __init__(self, blocks: list[Block], local_call: float | None = None) -> None:
         self._blocks = blocks
+        self.local_call = local_call
         self._lines: list[int] | None = None
         self._sites: list[Sites] = []  # the sites of each of ``_lines``, as they were indexed
         self._maps: _Maps | None = None
@@ -108,7 +114,7 @@ class SiteIndex:
             lines: list[int] = []
             sites: list[Sites] = []
             for i, b in enumerate(self._blocks):
-                s = block_sites(b)
+                s = block_sites(b, self.local_call)
                 if s[0] or s[1]:
                     lines.append(i)
                     sites.append(s)
@@ -136,7 +142,7 @@ class SiteIndex:
         fresh_lines: list[int] = []
         fresh_sites: list[Sites] = []
         for k in range(new_count):
-            s = block_sites(blocks[start + k])
+            s = block_sites(blocks[start + k], self.local_call)
             if s[0] or s[1]:
                 fresh_lines.append(start + k)
                 fresh_sites.append(s)
@@ -194,6 +200,11 @@ class FileSites:
 _disk: dict[str, tuple[object, SiteIndex]] = {}  # path -> (the loaded file it was made from, index)
 
 
+def local_call_code(server: Any, lines: list[str]) -> float | None:
+    """The local subprogram call code of the dialect a file with these lines is read in."""
+    return server.documents.dialect_for(lines).local_subprogram_code
+
+
 def workspace_sites(server: Any) -> Iterator[FileSites]:
     """Every workspace file: open documents as the editor has them (their own index), the
     others as on disk (an index per loaded file, kept while the workspace index keeps it)."""
@@ -208,6 +219,7 @@ def workspace_sites(server: Any) -> Iterator[FileSites]:
         if path in open_paths:
             continue
         hit = _disk.get(path)
-        if hit is None:
-            hit = _disk[path] = (loaded, SiteIndex(loaded.program.blocks))
+        local = local_call_code(server, loaded.lines)
+        if hit is None or hit[1].local_call != local:
+            hit = _disk[path] = (loaded, SiteIndex(loaded.program.blocks, local))
         yield FileSites(path, loaded.lines, hit[1])

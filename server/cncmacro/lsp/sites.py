@@ -15,8 +15,9 @@ from ..syntax.walk import iter_nodes
 
 @dataclass(frozen=True, slots=True)
 class JumpSite:
-    """A literal label number a block jumps to: ``kind`` is ``GOTO``, ``M99``, ``M98 Q`` or
-    ``H8x``; ``start``/``end`` cover the number."""
+    """A literal label number a block jumps to: ``kind`` is ``GOTO``, ``M99``, ``M98 Q``, ``H8x``
+    or a local subprogram call (``M97 P`` where the dialect has Haas's); ``start``/``end`` cover
+    the number."""
 
     label: int
     kind: str
@@ -38,12 +39,25 @@ def _literal_int(node: object) -> int | None:
     return None
 
 
-def jump_sites(block: Block) -> list[JumpSite]:
-    """The jumps of a block to literal label numbers."""
+def local_call_kind(code: float) -> str:
+    """The ``JumpSite.kind`` of a local subprogram call with M code ``code`` (``M97 P``)."""
+    return f"M{code:g} P"
+
+
+def starts_from_the_top(kind: str) -> bool:
+    """Whether a jump of this kind lands on the first N label of its program, searching from
+    the program's start (``M98 Q``, a local call ``M97 P``), rather than by the GOTO or M99 P
+    rule (``machine.jumps``)."""
+    return kind == "M98 Q" or (kind.startswith("M") and kind.endswith(" P"))
+
+
+def jump_sites(block: Block, local_call: float | None = None) -> list[JumpSite]:
+    """The jumps of a block to literal label numbers; ``local_call`` is the dialect's local
+    subprogram call code (``Dialect.local_subprogram_code``), whose P names a label."""
     out: list[JumpSite] = []
     if block.plain is not None:
         text = block.plain.upper()
-        if "M9" not in text and "H8" not in text:
+        if "M9" not in text and "H8" not in text and (local_call is None or "M" not in text):
             return out
     for s in block.statements:
         target = s.target if isinstance(s, Goto) else s.goto if isinstance(s, If) else None
@@ -60,6 +74,8 @@ def jump_sites(block: Block) -> list[JumpSite]:
                 out.append(JumpSite(n, "M99", w.value.start, w.value.end))  # type: ignore[union-attr]
             elif w.letter == "Q" and ("M", 98.0) in codes:
                 out.append(JumpSite(n, "M98 Q", w.value.start, w.value.end))  # type: ignore[union-attr]
+            elif w.letter == "P" and local_call is not None and ("M", local_call) in codes:
+                out.append(JumpSite(n, local_call_kind(local_call), w.value.start, w.value.end))  # type: ignore[union-attr]
             elif w.letter == "P" and ("G", 65.0) in codes and any(("H", float(h)) in codes for h in range(80, 87)):
                 out.append(JumpSite(n, "H8x", w.value.start, w.value.end))  # type: ignore[union-attr]
     return out

@@ -185,6 +185,31 @@ class CompiledFile:
             )
         return target
 
+    def local_call_line(self, found: Any, call: str, label: float | None) -> int:
+        """The line a local subprogram call (Haas ``M97 P n``) starts at: the first Nn of the
+        program that makes the call, searching from its start as ``M98 Q`` does; none is alarm
+        128, as for a GOTO."""
+        if label is None:
+            raise MacroAlarm(
+                SEQUENCE_NUMBER, detail(f"{call} needs P: the N line to call", f"{call} 需要用 P 指定调用的 N 程序段")
+            )
+        n = int(round_half_away(label))
+        if not 1 <= n <= 99999:
+            raise MacroAlarm(
+                SEQUENCE_NUMBER,
+                detail(
+                    f"{call} P{n}: a sequence number must be 1 to 99999", f"{call} P{n}：顺序号必须在 1～99999 之间"
+                ),
+                "label-range",
+            )
+        target = jumps.first_line(self.file.program.label_lines(n, found.unit))
+        if target is None:
+            raise MacroAlarm(
+                SEQUENCE_NUMBER,
+                detail(f"{call} P{n}: N{n} not found in {found.label}", f"{call} P{n}：{found.label} 中未找到 N{n}"),
+            )
+        return target
+
     # ---------------------------------------------------------------- compiling
     def compile(self, pc: int) -> Runner:
         if not self.machine.watching:

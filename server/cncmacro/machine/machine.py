@@ -497,10 +497,24 @@ class Machine(VariableAccess, Motion):
     def subprogram_call(self, found: FoundProgram, repeats: int, q: float | None, pc: int, nxt: int, kind: str) -> int:
         """M98: the caller's locals stay in force; Q starts at a label."""
         self._check_depth(macro=False)
-        caller = self.frames[-1]
-        caller.pc = pc
         cf = self.compiled_file(found.file)
         start = cf.label_from_start(found.unit, int(q)) if q is not None else cf.entry(found.unit)
+        return self._enter_subprogram(found, cf, start, repeats, pc, nxt, kind)
+
+    def local_subprogram_call(self, label: float | None, repeats: int, pc: int, nxt: int, kind: str) -> int:
+        """Haas ``M97 P n L k`` (``Dialect.local_subprogram_code``): the program running is run
+        from its Nn as a subprogram level (the locals stay, the level counts for nesting) until
+        M99, k times, then on after the call."""
+        self._check_depth(macro=False)
+        caller = self.frames[-1]
+        start = caller.code.local_call_line(caller.found, kind, label)
+        return self._enter_subprogram(caller.found, caller.code, start, repeats, pc, nxt, kind)
+
+    def _enter_subprogram(
+        self, found: FoundProgram, cf: CompiledFile, start: int, repeats: int, pc: int, nxt: int, kind: str
+    ) -> int:
+        caller = self.frames[-1]
+        caller.pc = pc
         frame = Frame(found, cf, start, kind, caller.locals, caller.macro_level, pc, nxt, repeats - 1, start)
         self.frames.append(frame)
         self._program_number()
@@ -609,7 +623,8 @@ class Machine(VariableAccess, Motion):
         """The configured call for a G, M or T code in the block, with the code as the
         machine file names it (``G100``, ``M50``, ``T``); none inside such a call."""
         calls = self.settings.calls
-        if any(f.kind[:1] in ("G", "M", "T") and f.kind not in ("G65", "G66", "M98") for f in self.frames):
+        local = f"M{self.dialect.local_subprogram_code:g}" if self.dialect.local_subprogram_code is not None else ""
+        if any(f.kind[:1] in ("G", "M", "T") and f.kind not in ("G65", "G66", "M98", local) for f in self.frames):
             return None
         for letter, v in values:
             if letter in ("G", "M"):

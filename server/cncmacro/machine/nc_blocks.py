@@ -1,8 +1,9 @@
 """NC blocks compiled into closures: motion, calls, returns and ends (docs/semantics.md §5, §8).
 
 A block of words is one of: a macro call (``G65``/``G66``, or on gsk980tdi ``G65 Hm`` arithmetic),
-``G67``, or an NC block whose M codes may call (``M98``), return (``M99``), end (``M30``,
-``M02``) or pause (``M00``), and whose G, M or T code may be configured to call a program.
+``G67``, or an NC block whose M codes may call (``M98``, and Haas ``M97`` where the dialect has
+a local subprogram call), return (``M99``), end (``M30``, ``M02``) or pause (``M00``), and whose
+G, M or T code may be configured to call a program.
 Literal values are rounded once here; only variable values are computed when the block runs.
 """
 
@@ -212,9 +213,12 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
     all_constant = all(get is None for _, _, get in items)
     constant = [(letter, v) for letter, v, get in items if get is None]
     # the program words (P, L, Q) of a call are not NC words
+    local = dialect.local_subprogram_code
+    control_m = CONTROL_M if local is None else CONTROL_M | {local}
+    local_kind = f"M{local:g}" if local is not None else ""
     m_values = [v for letter, v in constant if letter == "M"]
     dynamic_m = any(letter == "M" and get is not None for letter, _, get in items)
-    control = [v for v in m_values if v in CONTROL_M]
+    control = [v for v in m_values if v in control_m]
     calls = cf.machine.settings.calls
     call_codes = bool(calls)
     file_path = cf.file.path
@@ -256,12 +260,12 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
                 if letter == "G" and not g_code_known(v, dialect, calls):
                     raise MacroAlarm(IMPROPER_G_CODE, unknown_g_code(f"{v:g}", dialect))
         ms = [v for letter, v in values if letter == "M"]
-        mcontrol = [v for v in ms if v in CONTROL_M]
+        mcontrol = [v for v in ms if v in control_m]
         found_call = m.call_code_for(values) if call_codes else None
         if found_call is not None and found_call[1].call == "macro":
             return m.code_macro_call(*found_call, values, pc, nxt)
         nc_words = values
-        if mcontrol and (98.0 in mcontrol or 99.0 in mcontrol or 198.0 in mcontrol):
+        if mcontrol and (98.0 in mcontrol or 99.0 in mcontrol or 198.0 in mcontrol or local in mcontrol):
             nc_words = [(letter, v) for letter, v in values if letter not in ("P", "L", "Q")]
         moved, skip_to = m.execute_nc(nc_words, file_path, pc)
         if found_call is not None:
@@ -269,6 +273,13 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
         if 98.0 in mcontrol or 198.0 in mcontrol:
             found, repeats, q = _subprogram_target(m, values, p_text, p_name, get_bracket, dialect, pc)
             return m.subprogram_call(found, repeats, q, pc, nxt, "M98")
+        if local in mcontrol:
+            words = dict(values)
+            notes: list[str] = []
+            repeats = repeat_count(words.get("L"), dialect, notes)
+            for text in notes:
+                m.note("call", text, pc, "repeat-count")
+            return m.local_subprogram_call(words.get("P"), repeats, pc, nxt, local_kind)
         if 99.0 in mcontrol:
             p = next((v for letter, v in values if letter == "P"), None)
             return m.return_from_call(pc, p)
