@@ -58,6 +58,13 @@ def lines(*text: str) -> str:
 
 
 def haas_switched(base: str = "fanuc") -> Dialect:
-    """``base`` with the Haas capabilities switched on, as the ``haas`` profile is to set them
-    (docs/semantics.md §5 "M97"): ``M97 P n`` local subprogram calls."""
-    return get_dialect(base).configured(local_subprogram_code=97.0)
+    """``base`` with the two Haas capabilities switched on, as the ``haas`` profile is to set
+    them (docs/semantics.md §5 "M97", §8 "G154"): ``M97 P n`` local subprogram calls and
+    ``G154 P1``–``P99`` / ``G110``–``G129`` extra work offsets. The offsets stay at ``base``'s
+    numbers (#7001…), which its table has."""
+    return get_dialect(base).configured(
+        local_subprogram_code=97.0,
+        extra_offset_code=154.0,
+        extra_offset_aliases=tuple(float(g) for g in range(110, 130)),
+        extra_offset_count=99,
+    )

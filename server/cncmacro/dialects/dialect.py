@@ -109,6 +109,16 @@ class Dialect:
     # program running until M99, then back after the call); None: no such call, the code is a
     # plain M code
     local_subprogram_code: float | None = None
+    # §8 the G code that selects extra work offset Pn (Haas ``G154 P1``–``P99``), as G54.1 Pn
+    # does on FANUC; None: the code is not the control's
+    extra_offset_code: float | None = None
+    # §8 G codes that each select one extra work offset, the first P1 (Haas G110–G129 = G154
+    # P1–P20)
+    extra_offset_aliases: tuple[float, ...] = ()
+    # §8 the variable of axis 1 of extra offset P1 (each further P adds 20), the one G54.1/G154
+    # Pn and G10 L20 Pn read and write, and how many extra offsets there are (G10 L20 P range)
+    extra_offset_variables: int = 7001
+    extra_offset_count: int = 48
 
     def configured(self, **changes: object) -> Dialect:
         """This profile as one machine has it (a machine file's commons, digits and variables)."""

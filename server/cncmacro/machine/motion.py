@@ -3,7 +3,7 @@
 ``execute_nc`` takes the evaluated words of one block and does what the control would: it
 updates the modal groups and the last F, S, T, M, D, H values; moves the axes (G00–G03 end
 points, G90/G91, and on a lathe U/V/W as incremental X/Y/Z); applies work offsets
-(G54–G59, G54.1 Pn, external), tool offsets (lathe T codes, G43/G44 H) and coordinate
+(G54–G59, G54.1 Pn and Haas G154 Pn / G110–G129, external), tool offsets (lathe T codes, G43/G44 H) and coordinate
 setting (G92, or G50 on a lathe); handles G04, G10, G28, G31, G53 and canned cycles; and
 records every move, a G02/G03 arc with its centre (arcs.py). Which modal group a G code
 belongs to comes from the dialect's table.
@@ -22,6 +22,7 @@ from .alarms import MacroAlarm
 from .arcs import ARC_MODES, arc_centre, arc_planes
 from .calls import g_code_groups
 from .frames import Move
+from .words import extra_offset_codes
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -31,7 +32,7 @@ Value = float | None
 RAPID_RATE = 10000.0  # mm/min, for the simulated clock
 
 WORK_BASE = 5201  # external offset of axis 1; G54 is +20, G55 +40 ... (both dialects)
-G54_1_BASE = 7001  # G54.1 P1 axis 1; each P adds 20 (fanuc)
+G54_1_BASE = 7001  # G54.1 P1 axis 1; each P adds 20 (fanuc; ``Dialect.extra_offset_variables``)
 LATHE_CYCLES_WITH_PROFILE = (71.0, 72.0, 73.0)
 _new_move = tuple.__new__  # a Move without the NamedTuple constructor's keyword handling
 _NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length"))
@@ -61,11 +62,14 @@ class Motion:
                                         "mirror": 50.1, "scaling": 50.0, "polar": 15.0, "stroke": 22.0}  # fmt: skip
         self.modal.update(self.dialect.modal_defaults)
         self.codes: dict[str, Value] = {}
-        self.extra_wcs = 0  # G54.1 Pn
+        self.extra_wcs = 0  # G54.1 Pn (G154 Pn, G110-G129)
         self.cycle_start_z: float | None = None
         self.moves: list[Move] = []
         self.record_moves = True
         self.g_groups = g_code_groups(self.dialect)
+        self._extra_codes = extra_offset_codes(self.dialect)
+        if self._extra_codes:  # the switch makes them work offset codes, whatever the table says
+            self.g_groups = {**self.g_groups, **dict.fromkeys(self._extra_codes, "wcs")}
         self._cycle_codes = self.dialect.cycle_codes
         self._lathe = self.dialect.lathe
         self._call_needs_distance = self.dialect.modal_call_needs_distance
@@ -78,8 +82,8 @@ class Motion:
     def work_offset(self, axis: int) -> float:
         """The work offset of ``axis`` in force: the coordinate system's plus the external."""
         wcs = self.modal.get("wcs", 54.0)
-        if wcs == 54.1 and self.extra_wcs:
-            n = G54_1_BASE + 20 * (self.extra_wcs - 1) + axis
+        if self.extra_wcs and (wcs == 54.1 or wcs in self._extra_codes):
+            n = self.dialect.extra_offset_variables + 20 * (self.extra_wcs - 1) + axis
         else:
             n = WORK_BASE + 20 * (int(wcs) - 53) + axis
         return (self.S.get(n) or 0.0) + (self.S.get(WORK_BASE + axis) or 0.0)
@@ -281,6 +285,8 @@ class Motion:
                     self.cycle_start_z = None
                 if group == "wcs" and g == 54.1:
                     self.extra_wcs = int(other.get("P", 1))
+                elif group == "wcs" and g in self._extra_codes:
+                    self.extra_wcs = self._extra_offset(g, other)
             else:
                 one_shot = g
         for letter in ("F", "S", "D", "H", "B"):
@@ -312,6 +318,20 @@ class Motion:
         moved = not self._call_needs_distance or target != self.pos or centre is not None
         self._move(file, line, mode, target, centre)
         return moved, None
+
+    def _extra_offset(self, g: float, other: dict[str, float]) -> int:
+        """The extra work offset a Haas ``G154 Pn`` (P1 when P is left out) or ``G110``–``G129``
+        selects; a P outside the offsets the control has is alarm 119."""
+        if g != self.dialect.extra_offset_code:
+            return self.dialect.extra_offset_aliases.index(g) + 1
+        p = int(other.get("P", 1.0))
+        count = self.dialect.extra_offset_count
+        if not 1 <= p <= count:
+            raise MacroAlarm(
+                ARGUMENT_RANGE,
+                detail(f"G{g:g} P{p}: P must be 1 to {count}", f"G{g:g} P{p}：P 必须在 1～{count} 之间"),
+            )
+        return p
 
     def arc_centre(
         self, mode: float, start: Sequence[float], end: Sequence[float], words: dict[str, float]
@@ -483,12 +503,13 @@ class Motion:
                     )
                 base = WORK_BASE + 20 * p
             else:
-                if not 1 <= p <= 48:
+                count = self.dialect.extra_offset_count
+                if not 1 <= p <= count:
                     raise MacroAlarm(
                         ARGUMENT_RANGE,
-                        detail(f"G10 L20 P{p}: P must be 1 to 48", f"G10 L20 P{p}：P 必须在 1～48 之间"),
+                        detail(f"G10 L20 P{p}: P must be 1 to {count}", f"G10 L20 P{p}：P 必须在 1～{count} 之间"),
                     )
-                base = G54_1_BASE + 20 * (p - 1)
+                base = self.dialect.extra_offset_variables + 20 * (p - 1)
             for i, v in axes.items():
                 n = base + i
                 self.S[n] = v if absolute else (self.S.get(n) or 0.0) + v

@@ -2,8 +2,9 @@
 §8), an abbreviated macro word (§1) and IF without THEN (§4) where the dialect has none of them.
 
 A G code is known when the dialect's table lists it (``G_CODES`` of its data module, codes of
-both the milling and the turning series, the 30i's and the grinding cycles) or when the machine
-settings make it a call (``[calls]``, e.g. ``G100 = 9010``). On a dialect with
+both the milling and the turning series, the 30i's and the grinding cycles), when the machine
+settings make it a call (``[calls]``, e.g. ``G100 = 9010``) or when a switch of the dialect
+names it (``extra_offset_code``, ``extra_offset_aliases``: Haas G154, G110–G129). On a dialect with
 ``word_format_alarms`` (FANUC) any other G code is alarm 010 "improper G code", and an M code
 written with a decimal point (``M30.``) is alarm 007 "illegal use of decimal point". Elsewhere
 (GSK980TDi, whose manuals at hand give neither a complete code list nor those alarms) both are
@@ -41,9 +42,21 @@ def known_g_codes(dialect: str) -> frozenset[float]:
     return frozenset(out)
 
 
+def extra_offset_codes(dialect: Dialect) -> frozenset[float]:
+    """The G codes that select an extra work offset by the dialect's switches (Haas ``G154``
+    and ``G110``–``G129``): codes of the control whether or not its table lists them."""
+    code = dialect.extra_offset_code
+    return frozenset(dialect.extra_offset_aliases if code is None else (code, *dialect.extra_offset_aliases))
+
+
 def g_code_known(value: float, dialect: Dialect, calls: Mapping[str, object]) -> bool:
     """Whether ``G<value>`` (rounded as an address value) exists for the dialect or the machine."""
-    return value in known_g_codes(dialect.name) or f"G{value:g}" in calls
+    return (
+        value in known_g_codes(dialect.name)
+        or f"G{value:g}" in calls
+        or value == dialect.extra_offset_code
+        or value in dialect.extra_offset_aliases
+    )
 
 
 def unknown_g_code(shown: str, dialect: Dialect) -> Detail:
