@@ -17,7 +17,7 @@ from cncmacro.dialects import DIALECTS, fanuc_data, functions_data, get_dialect,
 from cncmacro.dialects.tables import MODAL_GROUPS, SOURCES, CodeDoc, SystemVariable
 
 DIALECT_DATA = {"fanuc": fanuc_data, "gsk980tdi": gsk980tdi_data}
-AXES = ("X", "Y", "Z", "4th", "5th")
+AXES = ("X", "Y", "Z", "4th", "5th", "6th")
 CJK = re.compile(r"[\u4e00-\u9fff]")
 ACCESS = {"r", "w", "rw"}
 GROUPS = {"signals", "tool", "work", "alarm", "time", "control", "counters", "modal", "position"}

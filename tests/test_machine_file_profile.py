@@ -100,7 +100,7 @@ def test_machine_file_program_digits_default_splits_the_count() -> None:
 @pytest.mark.parametrize(
     ("mapping", "key"),
     [
-        ({"base": "haas-ngc"}, "'base'"),
+        ({"base": "mazak-m"}, "'base'"),
         ({"base": "fanuc-0i", "dialect": "fanuc-0i"}, "'dialect'"),
         ({"common": [[100, 199], [150, 300]]}, "'common'"),
         ({"common": [[100, 199], [1000, 1100]]}, "'common'"),

@@ -342,8 +342,8 @@ def test_1_text_and_blocks_check_says_what_is_wrong_with_a_machine_file_in_chine
     (tmp_path / "O0001.nc").write_text("O0001\nM30\n", encoding="utf-8")
     machine = tmp_path / ".cncmacro.toml"
     for toml, en, zh in (
-        ('dialect = "haas"\n', f"'dialect' must be {choices_text()} (not 'haas')",
-         f"'dialect' 必须是 {choices_text(zh=True)}（不能是 'haas'）"),
+        ('dialect = "mazak"\n', f"'dialect' must be {choices_text()} (not 'mazak')",
+         f"'dialect' 必须是 {choices_text(zh=True)}（不能是 'mazak'）"),
         ("[severity]\nsyntax = 3\n", "'severity.syntax' must be one of error, warning, information, hint, off (not 3)",
          "'severity.syntax' 必须是 error, warning, information, hint, off 之一（不能是 3）"),
         ("[calls]\nX5 = 9000\n", "'calls.X5' must be a G or M code (G100, M50) or T",

@@ -100,6 +100,12 @@ class Dialect:
     # after any block with a move command (False)
     modal_call_needs_distance: bool = False
 
+    # §8 where a mill keeps its tool offsets by offset number n: the bases of H length geometry,
+    # H length wear, D diameter geometry and D diameter wear (#base + n). G43/G44 H adds length
+    # geometry and wear; G10 L10, L11, L12 and L13 write them in that order. FANUC memory C keeps
+    # them at #11001, #10001, #13001, #12001; Haas at #2001, #2201, #2401, #2601.
+    tool_offset_bases: tuple[int, int, int, int] = (11000, 10000, 13000, 12000)
+
     # §2 system variable names [#_NAME] and [#_NAME[n]] (the data module's SYSTEM_VARIABLE_NAMES)
     variable_names: bool = False
     # §3 functions beyond the common set: names (POW, ADP, PRM) and extra forms by signature (ATAN[a,b])

@@ -419,7 +419,8 @@ class Motion:
         n = int(h)
         value = 0.0
         if n:
-            value = (self.S.get(11000 + n) or 0.0) + (self.S.get(10000 + n) or 0.0)
+            geometry, wear = self.dialect.tool_offset_bases[:2]
+            value = (self.S.get(geometry + n) or 0.0) + (self.S.get(wear + n) or 0.0)
         if self.modal.get("length") == 44.0:
             value = -value
         if "Z" in self.axis_index:
@@ -543,7 +544,7 @@ class Motion:
                 self.S[2300 + n] = other["Q"]
                 self.written_system.add(2300 + n)
             return
-        bases = {10.0: 11000, 11.0: 10000, 12.0: 13000, 13.0: 12000}
+        bases = dict(zip((10.0, 11.0, 12.0, 13.0), self.dialect.tool_offset_bases, strict=True))
         if l_value in bases and "R" in other:
             num = bases[l_value] + p
             self.S[num] = other["R"] if absolute else (self.S.get(num) or 0.0) + other["R"]

@@ -1,0 +1,138 @@
+"""Running programs on ``haas`` (Haas NGC mills): the variables, program numbers and codes that
+set it apart, each run on ``fanuc-0i`` too, which must not have it.
+
+The rules are docs/semantics.md's (§2 variables and commons, §5 calls and program numbers, §6
+alarms, §8 words a control refuses) with the sources in docs/profiles.md "haas: sources and
+decisions".
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from running import alarm, final, lines, machine, run
+
+HAAS = "haas"
+FANUC = "fanuc-0i"
+
+# ---------------------------------------------------------------------------------------------
+# §2 system variables Haas has and the 0i does not
+
+
+def test_haas_3026_reads_the_tool_in_the_spindle() -> None:
+    assert final(lines("T7 M06", "#1=#3026", "M30"), HAAS)[1] == 7.0
+
+
+def test_3026_does_not_exist_on_the_0i_alarm_115() -> None:
+    assert alarm(lines("#1=#3026", "M30"), FANUC) == (115, 1)
+
+
+@pytest.mark.parametrize("number", [3026, 3020, 3027, 20001, 30001])
+def test_haas_read_only_variables_cannot_be_written_alarm_116(number: int) -> None:
+    assert alarm(lines("#1=1", f"#{number}=3", "M30"), HAAS) == (116, 2)
+
+
+def test_haas_settings_and_parameters_read_0_until_preset() -> None:
+    got = final(lines("#1=#20020", "#2=#30001", "M30"), HAAS, presets={30001: 2.0})
+    assert (got[1], got[2]) == (0.0, 2.0)
+
+
+@pytest.mark.parametrize("number", [20020, 30001])
+def test_settings_and_parameters_do_not_exist_on_the_0i_alarm_115(number: int) -> None:
+    assert alarm(lines(f"#1=#{number}", "M30"), FANUC) == (115, 1)
+
+
+def test_haas_14001_is_g154_p1_the_same_offset_as_g110_7001() -> None:
+    got = final(lines("#1=#14001", "#14021=2.5", "#2=#7021", "#3=#15966", "M30"), HAAS, presets={7001: 5.0})
+    assert (got[1], got[2], got[3]) == (5.0, 2.5, 0.0)
+
+
+def test_g154_p99_offsets_do_not_exist_on_the_0i_alarm_115() -> None:
+    assert alarm(lines("#1=#15961", "M30"), FANUC) == (115, 1)
+
+
+def test_haas_has_a_sixth_axis_c_in_the_position_variables() -> None:
+    got = final(lines("G90 G00 X1. C30.", "#1=#5006", "#2=#5026", "M30"), HAAS)
+    assert (got[1], got[2]) == (30.0, 30.0)
+    assert alarm(lines("#1=#5006", "M30"), FANUC) == (115, 1)
+
+
+def test_haas_group_12_reads_the_work_coordinate_system() -> None:
+    assert final(lines("G55", "#1=#4012", "M30"), HAAS)[1] == 55.0
+    assert final(lines("G55", "#1=#4012", "M30"), FANUC)[1] == 67.0  # the 0i's group 12 is G66/G67
+
+
+# ---------------------------------------------------------------------------------------------
+# §2 commons: #10000-#10999, and every common kept at power-off
+
+
+def test_haas_10000_range_is_common_and_kept_at_power_off() -> None:
+    m = run(lines("#10500=3", "#1=#10500", "#100=4", "#10999=1", "M30"), HAAS)
+    assert m.status == "completed" and m.variables()[1] == 3.0
+    kept = {n: v for n, v in m.persistent_values().items() if v is not None}
+    assert kept == {100: 4.0, 10500: 3.0, 10999: 1.0}
+
+
+def test_10000_range_commons_do_not_exist_on_the_0i_alarm_115() -> None:
+    assert alarm(lines("#10500=3", "M30"), FANUC) == (115, 1)
+
+
+def test_haas_has_no_commons_200_to_499_alarm_115() -> None:
+    assert alarm(lines("#300=1", "M30"), HAAS) == (115, 1)
+
+
+# ---------------------------------------------------------------------------------------------
+# §5 programs: five-digit numbers, probing macros kept on the control
+
+
+def test_haas_m98_p_names_a_five_digit_program() -> None:
+    text = lines("O1", "M98 P12345", "#2=#1", "M30", "O12345", "#1=9", "M99")
+    assert final(text, HAAS)[2] == 9.0
+    assert alarm(text, FANUC) == (76, 2)  # the 0i reads P12345 as O2345 once
+
+
+def test_haas_probing_macro_o9832_is_on_the_control() -> None:
+    assert final(lines("G65 P9832", "#1=1", "M30"), HAAS)[1] == 1.0
+    assert alarm(lines("G65 P9832", "#1=1", "M30"), FANUC) == (76, 1)
+
+
+# ---------------------------------------------------------------------------------------------
+# §8 words: G codes outside the table are warnings, Haas codes are in it; §1 whole words only
+
+
+def test_haas_codes_run_and_an_unknown_g_code_does_not_stop_the_run() -> None:
+    m = machine(lines("G187 P2", "G05", "#1=1", "M30"), HAAS)
+    assert m.run() == "completed" and m.variables()[1] == 1.0
+    assert alarm(lines("G187 P2", "M30"), FANUC) == (10, 1)
+
+
+def test_haas_reads_no_abbreviated_macro_words_alarm_114() -> None:
+    text = lines("#1=0", "WH[#1LT2]DO1", "#1=#1+1", "END1", "M30")
+    assert alarm(text, HAAS) == (114, 2)
+    assert final(text, FANUC)[1] == 2.0
+
+
+# ---------------------------------------------------------------------------------------------
+# §8 tool length offsets: Haas keeps them at #2001 (geometry) and #2201 (wear), not at FANUC's
+# #11001/#10001, which are the NGC's commons
+
+
+def test_haas_g43_h_adds_length_geometry_2001_and_wear_2201() -> None:
+    got = final(lines("#2001=100.", "#2201=-0.5", "G90 G43 H1 G00 Z10.", "#1=#5023", "#2=#5043", "M30"), HAAS)
+    assert (got[1], got[2]) == (109.5, 10.0)  # machine Z = work Z + 100 - 0.5
+
+
+def test_haas_commons_at_10001_are_no_tool_offset() -> None:
+    got = final(lines("#10001=100.", "G90 G43 H1 G00 Z10.", "#1=#5023", "M30"), HAAS)
+    assert got[1] == 10.0
+
+
+def test_haas_g10_l10_and_l11_write_2001_and_2201() -> None:
+    got = final(lines("G90 G10 L10 P3 R120.", "G10 L11 P3 R-0.2", "G10 L12 P3 R5.", "G10 L13 P3 R0.1",
+                      "#1=#2003", "#2=#2203", "#3=#2403", "#4=#2603", "M30"), HAAS)  # fmt: skip
+    assert [got[k] for k in (1, 2, 3, 4)] == [120.0, -0.2, 5.0, 0.1]
+
+
+def test_fanuc_0i_g10_l10_writes_11001_not_2001() -> None:
+    got = final(lines("G90 G10 L10 P3 R120.", "#1=#11003", "M30"), FANUC)
+    assert got[1] == 120.0
