@@ -14,7 +14,7 @@ import { registerToolpath } from './toolpath';
 
 let controller: ServerController | undefined;
 
-export async function activate(context: vscode.ExtensionContext): Promise<void> {
+export function activate(context: vscode.ExtensionContext): void {
   const log = vscode.window.createOutputChannel('CNC Macro Server', { log: true });
   const output = vscode.window.createOutputChannel('CNC Macro');
   const server = new ServerController(context, log);

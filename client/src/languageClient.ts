@@ -15,6 +15,7 @@ import {
   DocumentDiagnosticRequest,
   LanguageClient,
   type LanguageClientOptions,
+  type ResponseError,
   type ServerOptions,
   State,
   type StaticFeature,
@@ -194,15 +195,16 @@ export class ServerController implements vscode.Disposable {
       // file (workspace/didChangeWatchedFiles), with the same patterns for every editor.
       middleware: {
         workspace: {
-          configuration: async (params, token, next) => {
+          configuration: async (params, token, next): Promise<unknown[] | ResponseError<void>> => {
             const answer = await next(params, token);
             if (!Array.isArray(answer)) {
               return answer;
             }
-            return params.items.map((item, i) =>
+            const answers: unknown[] = answer;
+            return params.items.map((item, i): unknown =>
               item.section === SECTION
                 ? serverSettings(item.scopeUri ? vscode.Uri.parse(item.scopeUri) : undefined)
-                : answer[i],
+                : answers[i],
             );
           },
         },
