@@ -1,0 +1,405 @@
+"""The rules of ARCHITECTURE.md, checked on the source: who may import whom, and what each layer
+may touch.
+
+The package ``server/cncmacro`` is read statically: every module is parsed with ``ast`` (nothing
+is imported or run) and every ``import`` in it is resolved, relative ones too, wherever it
+stands: at the top, inside a function, or under ``if TYPE_CHECKING:``. A type-only import counts
+like any other: it still ties the module to the layer it names (a type annotation that needs a
+layer above is a sign the code sits in the wrong layer), and no module today needs an
+exception. The same reading finds the calls that open a file (``open()``, ``os.open()``,
+``io.open()``, ``.read_text()``/``.read_bytes()`` and their ``write`` twins; not ``Path.open``,
+whose name is shared with too much else), ``eval``/``exec``/``compile`` and DAP's
+``request_seq``. A module loaded by name (``importlib.import_module`` in ``dialects/``) is not
+seen. Each broken rule is reported as ``server/cncmacro/<file>:<line>: what [rule] the rule``.
+
+``LAYERS`` and ``RULES`` are the one place the rules are written for the test; ARCHITECTURE.md
+states the same order and the same rule ids, and a test below holds the two together. Run as a
+script (``python tests/test_architecture.py``), it prints each layer's boundary: the names the
+layers above import from it.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+PACKAGE = ROOT / "server" / "cncmacro"
+CLIENT = ROOT / "client" / "src"
+DOC = ROOT / "ARCHITECTURE.md"
+
+# Bottom first. A module may import its own layer and the layers below it. A part is a
+# sub-package of cncmacro (``syntax``) or a top-level module (``bilingual``; ``__init__`` is the
+# package itself, which holds ``__version__``; ``__main__`` is ``python -m cncmacro``).
+LAYERS: tuple[tuple[str, ...], ...] = (
+    ("bilingual", "__init__"),
+    ("syntax",),
+    ("dialects",),
+    ("library",),
+    ("machine",),
+    ("analysis",),
+    ("cli", "lsp", "dap"),
+    ("__main__",),
+)
+
+RULES: dict[str, str] = {
+    "L1": "a module imports only its own layer and the layers below it",
+    "L2": "bilingual.py and the package's __init__.py import nothing of the package",
+    "L3": "dialects/ imports nothing of the package but bilingual.py: a profile is data",
+    "L4": "cli/, lsp/ and dap/ do not import one another; only cli/main.py starts the servers, "
+          "from inside its functions",
+    "L5": "third-party packages only where they belong: lark in syntax/, pygls and lsprotocol in lsp/, "
+          "tomli in library/machine_file.py; everything else is the standard library",
+    "L6": "nothing in the package imports tests or benchmarks",
+    "L7": "the Debug Adapter Protocol is spoken only in dap/: dap/protocol.py frames it and only "
+          "dap/session.py uses that",
+    "L8": "files are opened in library/files.py, which reads every program file and the machine file, "
+          "and nowhere else but the places OPENS_ALLOWED names with their reasons",
+    "L9": "no eval, exec or compile of Python text",
+    "C1": "the toolpath's geometry and page and the server's start-up (toolpathGeometry.ts, "
+          "toolpathView.ts, serverProcess.ts) do not import vscode",
+}  # fmt: skip
+
+# L5: the third-party packages of pyproject.toml and the parts (or files) that may import them
+THIRD_PARTY = {
+    "lark": ("syntax/",),
+    "pygls": ("lsp/",),
+    "lsprotocol": ("lsp/",),
+    "tomli": ("library/machine_file.py",),  # tomllib's twin for Python 3.10
+}
+STDLIB = frozenset(sys.stdlib_module_names) | {"tomllib"}  # tomllib: a 3.11 name, not in 3.10's list
+NOT_THE_PACKAGE = ("tests", "benchmarks", "conftest")
+
+# L4: the imports across the front ends that are allowed, by importing file (inside a function only)
+FRONT_END_STARTS = {"cli/main.py": ("cncmacro.lsp.server", "cncmacro.dap.session")}
+
+# L7
+DAP_WIRE = "cncmacro.dap.protocol"
+DAP_WIRE_USERS = ("dap/session.py",)
+DAP_ONLY_STRING = "request_seq"  # the key of every DAP response; JSON-RPC (the LSP) has none
+
+# L8: files that open a file themselves, and why
+OPENS_ALLOWED = {
+    "library/files.py": "the one place program files and the machine file are read",
+    "syntax/grammar.py": "reads its own grammar, block.lark, from the package (importlib.resources)",
+    "lsp/collector.py": "reads /proc/self/statm, the server's own memory, not a file of the workspace",
+    "machine/persistence.py": "writes the persistent-variable file atomically (a temporary file, fsync, "
+                              "rename); it reads the file through library.files.read_bytes",
+    "machine/persistence_lock.py": "creates and locks <file>.lock beside the persistent-variable file",
+}  # fmt: skip
+_OPEN_METHODS = {"read_text", "read_bytes", "write_text", "write_bytes"}
+
+# C1
+CLIENT_WITHOUT_VSCODE = ("toolpathGeometry.ts", "toolpathView.ts", "serverProcess.ts")
+
+
+@dataclass(frozen=True, slots=True)
+class Import:
+    """One imported module: ``target`` is absolute (``cncmacro.machine.calls``, ``lark``);
+    ``names`` the names taken from it (empty for ``import x``)."""
+
+    line: int
+    target: str
+    names: tuple[str, ...]
+    in_function: bool
+
+
+@dataclass(slots=True)
+class Module:
+    """What the checks need of one module's source."""
+
+    name: str  # cncmacro.syntax.nodes
+    path: str  # syntax/nodes.py, relative to the package
+    imports: list[Import] = field(default_factory=list)
+    opens: list[tuple[int, str]] = field(default_factory=list)  # (line, what) for L8
+    evals: list[tuple[int, str]] = field(default_factory=list)  # (line, what) for L9
+    strings: dict[str, int] = field(default_factory=dict)  # string constant -> first line
+
+
+def module_name(path: str) -> str:
+    """``syntax/nodes.py`` -> ``cncmacro.syntax.nodes``; ``syntax/__init__.py`` -> ``cncmacro.syntax``."""
+    parts = ["cncmacro", *Path(path).with_suffix("").parts]
+    if parts[-1] == "__init__":
+        parts.pop()
+    return ".".join(parts)
+
+
+def part_of(name: str) -> str:
+    """The part a module of the package belongs to: ``cncmacro.syntax.nodes`` -> ``syntax``,
+    ``cncmacro.bilingual`` -> ``bilingual``, ``cncmacro`` -> ``__init__``."""
+    pieces = name.split(".")
+    return pieces[1] if len(pieces) > 1 else "__init__"
+
+
+def layer_of(part: str) -> int:
+    for i, parts in enumerate(LAYERS):
+        if part in parts:
+            return i
+    raise KeyError(f"{part!r} is in no layer of LAYERS: put it in one (and in ARCHITECTURE.md)")
+
+
+class _Reader(ast.NodeVisitor):
+    def __init__(self, module: Module, is_package: bool, known: set[str]) -> None:
+        self.m = module
+        self.package = module.name if is_package else module.name.rpartition(".")[0]
+        self.known = known
+        self.depth = 0
+
+    def _function(self, node: ast.AST) -> None:
+        self.depth += 1
+        self.generic_visit(node)
+        self.depth -= 1
+
+    visit_FunctionDef = visit_AsyncFunctionDef = visit_Lambda = _function
+
+    def visit_Import(self, node: ast.Import) -> None:
+        for alias in node.names:
+            self.m.imports.append(Import(node.lineno, alias.name, (), self.depth > 0))
+
+    def visit_ImportFrom(self, node: ast.ImportFrom) -> None:
+        if node.level:
+            base = self.package.split(".")
+            base = base[: len(base) - (node.level - 1)]
+            source = ".".join(base + ([node.module] if node.module else []))
+        else:
+            source = node.module or ""
+        names = tuple(a.name for a in node.names)
+        plain = [n for n in names if f"{source}.{n}" not in self.known]
+        if plain:
+            self.m.imports.append(Import(node.lineno, source, tuple(plain), self.depth > 0))
+        for n in names:  # ``from . import describe``: the module itself is imported
+            if f"{source}.{n}" in self.known:
+                self.m.imports.append(Import(node.lineno, f"{source}.{n}", (), self.depth > 0))
+
+    def visit_Call(self, node: ast.Call) -> None:
+        f = node.func
+        if isinstance(f, ast.Name) and f.id in ("eval", "exec", "compile"):
+            self.m.evals.append((node.lineno, f"{f.id}()"))
+        elif isinstance(f, ast.Name) and f.id == "open":
+            self.m.opens.append((node.lineno, "open()"))
+        elif isinstance(f, ast.Attribute):
+            owner = f.value.id if isinstance(f.value, ast.Name) else None
+            if owner in ("os", "io") and f.attr in ("open", "fdopen"):
+                self.m.opens.append((node.lineno, f"{owner}.{f.attr}()"))
+            elif f.attr in _OPEN_METHODS:
+                self.m.opens.append((node.lineno, f".{f.attr}()"))
+        self.generic_visit(node)
+
+    def visit_Constant(self, node: ast.Constant) -> None:
+        if isinstance(node.value, str):
+            self.m.strings.setdefault(node.value, node.lineno)
+
+
+def read_package(root: Path) -> dict[str, Module]:
+    """Every module under ``root`` (a directory laid out as ``server/cncmacro``), by name."""
+    files = sorted(p.relative_to(root).as_posix() for p in root.rglob("*.py"))
+    known = {module_name(f) for f in files}
+    modules = {}
+    for f in files:
+        m = Module(module_name(f), f)
+        tree = ast.parse((root / f).read_text(encoding="utf-8"), filename=f)
+        _Reader(m, f.endswith("__init__.py"), known).visit(tree)
+        modules[m.name] = m
+    return modules
+
+
+def _in(path: str, places: tuple[str, ...]) -> bool:
+    return any(path == p or (p.endswith("/") and path.startswith(p)) for p in places)
+
+
+def violations(modules: dict[str, Module]) -> list[str]:
+    """Every broken rule, as ``server/cncmacro/<file>:<line>: <what> [<rule>] <rule's text>``."""
+    out: list[str] = []
+
+    def report(m: Module, line: int, what: str, rule: str) -> None:
+        out.append(f"server/cncmacro/{m.path}:{line}: {what} [{rule}] {RULES[rule]}")
+
+    for m in modules.values():
+        part = part_of(m.name)
+        for imp in m.imports:
+            top = imp.target.split(".")[0]
+            if top == "cncmacro":
+                target = part_of(imp.target)
+                if part in ("bilingual", "__init__"):
+                    report(m, imp.line, f"imports {imp.target}", "L2")
+                elif layer_of(target) > layer_of(part):
+                    report(m, imp.line, f"imports {imp.target}, a layer above {part}", "L1")
+                elif part == "dialects" and target not in ("dialects", "bilingual"):
+                    report(m, imp.line, f"imports {imp.target}", "L3")
+                elif target != part and layer_of(target) == layer_of(part) and part in ("cli", "lsp", "dap"):
+                    starts = FRONT_END_STARTS.get(m.path, ())
+                    if imp.target not in starts or not imp.in_function:
+                        report(m, imp.line, f"imports {imp.target}", "L4")
+                if imp.target == DAP_WIRE and m.path not in DAP_WIRE_USERS:
+                    report(m, imp.line, f"imports {imp.target}", "L7")
+            elif top in NOT_THE_PACKAGE:
+                report(m, imp.line, f"imports {imp.target}", "L6")
+            elif top in THIRD_PARTY:
+                if not _in(m.path, THIRD_PARTY[top]):
+                    report(m, imp.line, f"imports {top}", "L5")
+            elif top not in STDLIB:
+                report(m, imp.line, f"imports {top}, which is neither the standard library nor allowed", "L5")
+        if DAP_ONLY_STRING in m.strings and m.path != "dap/protocol.py":
+            report(m, m.strings[DAP_ONLY_STRING], f"writes DAP's {DAP_ONLY_STRING!r}", "L7")
+        if m.path not in OPENS_ALLOWED:
+            for line, what in m.opens:
+                report(m, line, f"opens a file with {what}", "L8")
+        for line, what in m.evals:
+            report(m, line, f"calls {what}", "L9")
+    return out
+
+
+def client_violations(client: Path) -> list[str]:
+    out = []
+    for name in CLIENT_WITHOUT_VSCODE:
+        for n, line in enumerate((client / name).read_text(encoding="utf-8").splitlines(), 1):
+            if re.search(r"""(from|require\()\s*['"]vscode['"]""", line):
+                out.append(f"client/src/{name}:{n}: imports vscode [C1] {RULES['C1']}")
+    return out
+
+
+def boundaries(modules: dict[str, Module]) -> dict[str, dict[str, set[str]]]:
+    """For each part, the names that other parts import from it, and which parts do."""
+    out: dict[str, dict[str, set[str]]] = {}
+    for m in modules.values():
+        for imp in m.imports:
+            if imp.target.split(".")[0] != "cncmacro" or part_of(imp.target) == part_of(m.name):
+                continue
+            short = imp.target.removeprefix("cncmacro.").removeprefix("cncmacro")
+            for name in imp.names or ("",):
+                shown = f"{short}.{name}".strip(".") if name else short
+                out.setdefault(part_of(imp.target), {}).setdefault(shown, set()).add(part_of(m.name))
+    return out
+
+
+def layer_order_text() -> str:
+    """The layer order as ARCHITECTURE.md writes it."""
+    return " → ".join(" | ".join(f"`{p}`" for p in parts) for parts in LAYERS)
+
+
+# ---------------------------------------------------------------------------------------- tests
+
+
+def test_the_package_keeps_every_rule() -> None:
+    found = violations(read_package(PACKAGE)) + client_violations(CLIENT)
+    assert not found, "\n".join(found)
+
+
+def test_every_part_of_the_package_has_a_layer() -> None:
+    parts = {part_of(name) for name in read_package(PACKAGE)}
+    assert parts == {p for layer in LAYERS for p in layer}
+
+
+def test_architecture_md_states_the_layers_and_rules_the_test_checks() -> None:
+    text = DOC.read_text(encoding="utf-8")
+    assert layer_order_text() in text, f"ARCHITECTURE.md should state the layer order as {layer_order_text()}"
+    stated = set(re.findall(r"^- \*\*([A-Z]\d+)\*\*", text, re.M))
+    assert stated == set(RULES), (
+        f"rules in the doc only: {stated - set(RULES)}; in the test only: {set(RULES) - stated}"
+    )
+
+
+def test_the_files_architecture_md_names_exist() -> None:
+    """A code map that names a file that was moved or renamed misleads the reader."""
+    text = DOC.read_text(encoding="utf-8")
+    bases = (ROOT, PACKAGE, CLIENT, ROOT / "tests", ROOT / "docs")
+    names = {p.name for p in PACKAGE.rglob("*.py")} | {p.name for p in CLIENT.glob("*.ts")}
+    missing = []
+    for span in sorted(set(re.findall(r"`([\w./-]+\.(?:py|ts|md|lark|json))`", text))):
+        # a path from the root, the package, client/src, tests/ or docs/; a bare name (inside
+        # a layer's paragraph) names a module of the package or of the client
+        if not any((b / span).exists() for b in bases) and not ("/" not in span and span in names):
+            missing.append(span)
+    for target in re.findall(r"\]\(([^)#\s]+)", text):
+        if not target.startswith("http") and not (ROOT / target).exists():
+            missing.append(target)
+    assert not missing, f"ARCHITECTURE.md names files that do not exist: {missing}"
+
+
+# The checker itself, on small made-up packages: it must see what breaks a rule.
+
+
+def _package(tmp_path: Path, files: dict[str, str]) -> dict[str, Module]:
+    for rel in ("__init__.py", "bilingual.py", *(f"{p}/__init__.py" for p in ("syntax", "machine", "dap", "lsp"))):
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / rel).write_text('"""stub"""\n', encoding="utf-8")
+    for rel, source in files.items():
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / rel).write_text(source, encoding="utf-8")
+    return read_package(tmp_path)
+
+
+def test_a_syntax_module_that_imports_the_machine_is_reported_with_its_file_line_and_rule(tmp_path: Path) -> None:
+    modules = _package(tmp_path, {
+        "machine/calls.py": '"""calls"""\n',
+        "syntax/nodes.py": '"""nodes"""\n\nfrom ..machine.calls import map_arguments\n',
+    })  # fmt: skip
+    assert violations(modules) == [
+        f"server/cncmacro/syntax/nodes.py:3: imports cncmacro.machine.calls, a layer above syntax [L1] {RULES['L1']}"
+    ]
+
+
+def test_an_import_inside_a_function_or_for_type_checking_counts(tmp_path: Path) -> None:
+    modules = _package(tmp_path, {
+        "syntax/walk.py": (
+            "from typing import TYPE_CHECKING\n"
+            "if TYPE_CHECKING:\n"
+            "    from ..machine import Machine\n"
+            "def f():\n"
+            "    from .. import machine\n"
+        ),
+    })  # fmt: skip
+    assert [v.split(" [")[0] for v in violations(modules)] == [
+        "server/cncmacro/syntax/walk.py:3: imports cncmacro.machine, a layer above syntax",
+        "server/cncmacro/syntax/walk.py:5: imports cncmacro.machine, a layer above syntax",
+    ]
+
+
+def test_each_invariant_is_reported(tmp_path: Path) -> None:
+    modules = _package(tmp_path, {
+        "bilingual.py": "from .syntax import nodes\n",
+        "machine/hover.py": "import pygls.server\nimport numpy\nfrom tests.conftest import block\n",
+        "lsp/debug.py": "from ..dap import session\nx = {'request_seq': 1}\n",
+        "dap/session.py": "import lark\nsrc = open('O1.nc').read()\neval(src)\n",
+    })  # fmt: skip
+    rules = sorted((v.split(":")[0].removeprefix("server/cncmacro/"), v.split("[")[1][:2]) for v in violations(modules))
+    assert rules == [
+        ("bilingual.py", "L2"),
+        ("dap/session.py", "L5"),
+        ("dap/session.py", "L8"),
+        ("dap/session.py", "L9"),
+        ("lsp/debug.py", "L4"),
+        ("lsp/debug.py", "L7"),
+        ("machine/hover.py", "L5"),
+        ("machine/hover.py", "L5"),
+        ("machine/hover.py", "L6"),
+    ]
+
+
+def test_cli_main_may_start_a_server_only_from_inside_a_function(tmp_path: Path) -> None:
+    inside = _package(
+        tmp_path / "a", {"cli/main.py": "def main():\n    from ..lsp.server import serve\n", "lsp/server.py": ""}
+    )
+    at_top = _package(tmp_path / "b", {"cli/main.py": "from ..lsp.server import serve\n", "lsp/server.py": ""})
+    assert violations(inside) == []
+    assert [v.split(" [")[1][:2] for v in violations(at_top)] == ["L4"]
+
+
+@pytest.mark.parametrize("layer", ["syntax", "dialects", "library", "machine", "analysis"])
+def test_nothing_below_the_front_ends_may_import_them(tmp_path: Path, layer: str) -> None:
+    modules = _package(tmp_path, {f"{layer}/x.py": "from ..lsp import server\n", "lsp/server.py": ""})
+    assert [v.split(" [")[1][:2] for v in violations(modules)] == ["L1"]
+
+
+if __name__ == "__main__":
+    found = boundaries(read_package(PACKAGE))
+    for parts in LAYERS:
+        for part in parts:
+            print(f"{part}: used from above as")
+            for name, users in sorted(found.get(part, {}).items()):
+                print(f"    {name}  <- {', '.join(sorted(users))}")
