@@ -58,7 +58,7 @@ def lines(*text: str) -> str:
 
 
 def haas_switched(base: str = "fanuc") -> Dialect:
-    """``base`` with the two Haas capabilities switched on, as the ``haas`` profile is to set
+    """``base`` with the two Haas capabilities switched on, as the ``haas`` profile sets
     them (docs/semantics.md §5 "M97", §8 "G154"): ``M97 P n`` local subprogram calls and
     ``G154 P1``–``P99`` / ``G110``–``G129`` extra work offsets. The offsets stay at ``base``'s
     numbers (#7001…), which its table has."""

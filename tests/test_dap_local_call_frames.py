@@ -2,9 +2,9 @@
 subprogram call"): stepping into the M97 shows a stack frame of its own for the local
 subprogram, named like an M98 level; step over runs it to completion and step out leaves it.
 
-No built-in profile has the switch yet, so the stepper runs a machine whose dialect is ``fanuc``
-with the switch on (``running.haas_switched``); a debug session launched through the adapter
-follows once a profile sets it.
+The stepper runs a machine whose dialect is ``fanuc`` with the switch on
+(``running.haas_switched``), so that the switch is what these test; a debug session of a
+``haas`` program launched through the adapter and a DAP client is in tests/dap/haas.test.js.
 """
 
 from __future__ import annotations

@@ -385,6 +385,39 @@ test('Show Toolpath of a program that alarms draws the moves before the alarm an
   await page.keyboard.press('Control+S');
 });
 
+test('a Haas program: the status bar names its profile, #3026 has its Haas hover, the toolpath draws the M97 subroutine', { timeout: 2 * STEP }, async () => {
+  // haas_pocket.nc: (cncmacro: dialect=haas), G154 P1, T5 M06, #10500=#3026, then M97 P100 L2
+  // runs N100 (lines 17-24: 4 mm down, a ring round 20 x 20) twice.
+  const moves = movesOf(server.workspace, 'haas_pocket.nc');
+  const inSubroutine = (line) => line >= 17 && line <= 24;
+  assert.equal(moves.filter((m) => inSubroutine(m.line)).length, 16, 'two passes of 8 moves from N100');
+  await openFile('haas_pocket.nc');
+  const item = page.locator('.statusbar-item', { hasText: 'Haas NGC mill' });
+  await item.waitFor();
+  const hover = await hoverOver(page, /^#3026$/, 'Tool in the spindle');
+  assert.match(await hover.innerText(), /Tool in the spindle: the number of the tool now loaded[\s\S]*Haas NGC mill/);
+  await shot('10-haas-hover-3026');
+  await page.mouse.move(5, 500);
+  await page.keyboard.press('Escape');
+
+  if (await page.locator('.part.panel').isVisible()) await page.keyboard.press('Control+J'); // room for the drawing
+  await page.keyboard.press('F1');
+  await page.keyboard.type('CNC Macro: Show Toolpath');
+  await page.locator('.quick-input-list .monaco-list-row', { hasText: 'Show Toolpath' }).first().waitFor();
+  await page.keyboard.press('Enter');
+  await page.locator('.tab', { hasText: 'Toolpath: haas_pocket.nc' }).waitFor();
+  const view = page.frameLocator('iframe.webview.ready').frameLocator('iframe#active-frame');
+  const status = view.locator('#status', { hasText: `${moves.length} moves` });
+  await status.waitFor({ timeout: 45000 });
+  assert.match(await status.innerText(), /Completed/);
+  assert.equal(await view.locator('#plot g.move').count(), moves.length, 'one <g class="move"> per move of the run');
+  const titles = await view.locator('#plot g.move title').allTextContents();
+  const drawnInSubroutine = titles.filter((t) => inSubroutine(Number(/^haas_pocket\.nc:(\d+) /.exec(t)?.[1])));
+  assert.equal(drawnInSubroutine.length, 16, titles.join('\n'));
+  assert.equal(await view.locator('#plot g.move.feed').count(), moves.filter((m) => m.mode === 'G01').length);
+  await shot('10b-haas-toolpath');
+});
+
 test('extension-host API tests pass in the same VS Code', { timeout: 3 * STEP }, async () => {
   await page.close();
   const { code, lines, page: apiPage } = await server.runExtensionTests(2 * STEP);

@@ -2,9 +2,10 @@
 subprogram call"): definition of its P is the N line, the references of that N include it,
 renaming the N rewrites it, and hover on its P describes the label.
 
-No built-in profile has the switch yet, so these run the language server's navigation and hover
-on an open document whose dialect is ``fanuc`` with the switch on (``running.haas_switched``),
-without a client; the same requests through a client follow once a profile sets it.
+These run the language server's navigation and hover on an open document whose dialect is
+``fanuc`` with the switch on (``running.haas_switched``), without a client, so that the switch is
+what they test; the same requests through a client, on the ``haas`` profile, are in
+``test_lsp_haas.py``.
 """
 
 from __future__ import annotations

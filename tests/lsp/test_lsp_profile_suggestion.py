@@ -13,6 +13,7 @@ from .lsp_session import FANUC, diagnostics_for, open_file
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
 NAMED = "%\nO0001 (PROBE REPORT)\n#1=[#_ABSIO[1]]\n#2=POW[#1,2]\n#3=[#_ABSKP[3]]\nM30\n%\n"
+HAAS = "%\nO01002 (HAAS OFFSETS)\nG154 P5\nG110 G00 X0 Y0\n#10500=#3026\nM97 P100\nM30\nN100 G187 P2\nM99\n%\n"
 
 
 async def actions_for(client: LanguageClient, uri: str, diag: types.Diagnostic) -> list[types.CodeAction]:
@@ -49,3 +50,19 @@ async def test_a_plain_mistake_suggests_nothing(fanuc_en: LanguageClient) -> Non
     uri = open_file(fanuc_en, FANUC / "plain_mistake.nc", "O0002\n#1=#50\nM30\n")
     diags = (await diagnostics_for(fanuc_en, uri, 1)).diagnostics
     assert [d.code for d in diags if d.code != "not-executed"] == ["variable-number"]
+
+
+async def test_haas_codes_under_fanuc_0i_suggest_haas_and_its_comment_makes_the_file_clean(
+    fanuc_en: LanguageClient,
+) -> None:
+    uri = open_file(fanuc_en, FANUC / "haas_offsets.nc", HAAS)
+    diags = (await diagnostics_for(fanuc_en, uri, 1)).diagnostics
+    [hint] = [d for d in diags if d.code == "profile-suggestion"]
+    assert "Haas NGC mill" in hint.message and "lines 3, 4, 8" in hint.message  # G154, G110, G187
+    actions = await actions_for(fanuc_en, uri, hint)
+    comment = next(a for a in actions if "(cncmacro: dialect=haas)" in a.title)
+    [edit] = comment.edit.changes[uri]  # type: ignore[index, union-attr]
+    assert (edit.range.start.line, edit.new_text) == (1, "(cncmacro: dialect=haas)\n")
+    marked = open_file(fanuc_en, FANUC / "haas_offsets_marked.nc", HAAS.replace("%\n", "%\n" + edit.new_text, 1))
+    diags = (await diagnostics_for(fanuc_en, marked, 1)).diagnostics
+    assert list(diags) == []

@@ -1,9 +1,10 @@
 """How the debugger shows a stopped machine: stack frames, scopes and variables.
 
 One stack frame per program level, innermost first, named like ``O9100 (G65, level 1)``.
-Each frame has six scopes: its locals ``#1–#33`` (``#24 (X)`` where a caller passed the
-argument letter), the volatile commons, the persistent ``#500–#999``, and the system
-variables of the dialect's tables grouped as position, modal state and offsets. A variables
+Each frame has up to six scopes: its locals ``#1–#33`` (``#24 (X)`` where a caller passed the
+argument letter), the volatile commons, the persistent ``#500–#999`` (a kind of common the
+control lacks has no scope), and the system variables of the dialect's tables grouped as
+position, modal state and offsets. A variables
 reference encodes the frame and the scope, so it stays valid for as long as the machine
 stays stopped. Vacant shows as ``<vacant>`` (``<空>`` in a Chinese locale), and the
 interpreter's alarm details and notes are shown in Chinese there too (``detail_text``).
@@ -26,7 +27,9 @@ from ..machine.numbers import format_plain
 LOCALS, COMMON, PERSISTENT, POSITION, MODAL, OFFSETS = range(6)
 SCOPES_PER_FRAME = 8
 _NUMBER_NAME = re.compile(r"^\s*#\s*(\d+)")
-WORK_OFFSETS = (2500, 5325)  # the external and G54–G59 offsets (not the 48 additional systems)
+# the external and G54–G59 offsets, 20 numbers each up to G59's #5321–#5340, whatever the number
+# of axes (not the additional systems G54.1 P / G154 P)
+WORK_OFFSETS = (2500, 5340)
 
 
 def vacant_text(locale: str | None) -> str:
@@ -98,6 +101,8 @@ def scopes(machine: Machine, level: int, locale: str | None) -> list[dict[str, A
     }
     out = []
     for scope, name in names.items():
+        if (scope == COMMON and not volatile) or (scope == PERSISTENT and not kept):
+            continue  # a control without such commons (every common of a Haas is kept): no empty scope
         entry: dict[str, Any] = {"name": name, "variablesReference": reference(level, scope), "expensive": False}
         if scope == LOCALS:
             entry["presentationHint"] = "locals"

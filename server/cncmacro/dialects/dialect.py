@@ -89,8 +89,8 @@ class Dialect:
     m98_program_digits: int = 4
     # system variables a machine file adds or describes anew; they win over the profile's rows
     extra_rows: tuple[SystemVariable, ...] = ()
-    # programs kept on the control rather than in the workspace (a machine file's
-    # ``programs_on_control``): a call to one is a call that returns at once
+    # programs kept on the control rather than in the workspace (the profile's, as Haas's
+    # O9000-O9999, or a machine file's ``programs_on_control``): a call to one returns at once
     programs_on_control: tuple[tuple[int, int], ...] = ()
 
     # §5 a modal G code before G65/G66 in its block: "alarm" (only N may precede the call, alarm 127)
@@ -131,7 +131,7 @@ class Dialect:
         return replace(self, **changes)  # type: ignore[arg-type]
 
     def on_control(self, number: int) -> bool:
-        """Whether program ``number`` lives on the control (a machine file says so)."""
+        """Whether program ``number`` lives on the control (the profile or a machine file says so)."""
         return any(first <= number <= last for first, last in self.programs_on_control)
 
     def common_range_of(self, number: int) -> CommonRange | None:

@@ -210,8 +210,12 @@ def program_hover(ls: CncMacroServer, cur: Cursor, number: int | None, name: str
     loc = ls.locale
     found = ls.index.find_program(cur.doc, number, name)
     shown = f"O{number:04d}" if number is not None else f"[{name}]"
-    if found is None and number is not None and cur.doc.dialect.on_control(number):
-        return f"**{shown}** — {t('program', loc)}: {t('on_control', loc)}"
+    dialect = cur.doc.dialect
+    if found is None and number is not None and dialect.on_control(number):
+        kept = dialect.programs_on_control
+        ranges = ", ".join(f"O{a:04d}" if a == b else f"O{a:04d}–O{b:04d}" for a, b in kept)
+        said = t("on_control", loc).format(title=dialect.title, ranges=ranges)
+        return f"**{shown}** — {t('program', loc)}: {said}"
     if found is None:
         return f"**{shown}** — {t('program', loc)}: {t('not_found', loc)}"
     lines = [f"**{found.label}**" + (f" ({found.unit.title})" if found.unit.title else "")]

@@ -30,10 +30,11 @@ _TEXTS: dict[str, tuple[str, str]] = {
     "target": ("target", "目标"),
     "not_found": ("not found", "未找到"),
     "on_control": (
-        "kept on the control (the machine file's programs_on_control); the run returns from it at once. "
+        "kept on the control ({title} keeps {ranges} there: programs_on_control of its profile or of the "
+        "machine file); the run returns from it at once. "
         "A file with this number in the workspace would be run in its place, to set what the caller reads.",
-        "存放在数控系统内（机床设置文件的 programs_on_control）；分析运行时调用后立即返回。"
-        "若工作区中有同号的程序文件，则运行该文件，用它设定调用者要读取的变量。",
+        "存放在数控系统内（{title} 的 {ranges} 存放在系统内：由配置或机床设置文件的 programs_on_control 决定）；"
+        "分析运行时调用后立即返回。若工作区中有同号的程序文件，则运行该文件，用它设定调用者要读取的变量。",
     ),
     "program": ("Program", "程序"),
     "file": ("file", "文件"),
