@@ -74,6 +74,8 @@ def condition(draw) -> str:
 @st.composite
 def word(draw) -> str:
     letter = draw(st.sampled_from("ABCDEFGHIJKLMPQRSTUVWXYZ"))
+    if draw(st.integers(0, 9)) == 0:  # a corner word: ,C chamfer, ,R corner radius, ,A angle
+        letter = "," + draw(SPACE) + draw(st.sampled_from("ACRacr"))
     kind = draw(st.integers(0, 5))
     if kind == 0:
         value = draw(number())
@@ -131,7 +133,7 @@ def line(draw) -> str:
         parts += draw(st.lists(word(), min_size=1, max_size=3))
         parts.append(draw(statement()))
     else:
-        parts.append(draw(st.text(alphabet="GXYZN#[]+-*/=0123456789. ANDORIFGOTOWHILE;()", max_size=30)))
+        parts.append(draw(st.text(alphabet="GXYZN#[]+-*/=0123456789. ANDORIFGOTOWHILE;(),", max_size=30)))
     text = "".join(draw(SPACE) + p for p in parts)
     if draw(st.integers(0, 5)) == 0:
         text += draw(st.sampled_from([";", " (COMMENT)", "(注释)", ";(X)", " (OPEN"]))

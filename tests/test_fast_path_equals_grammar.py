@@ -69,6 +69,18 @@ def test_lines_the_fast_path_leaves_to_the_grammar(text):
     check_line(text)
 
 
+@pytest.mark.parametrize(
+    "text",
+    ["G01 X50. ,R5. F500.", "Y50. ,C3.", "G01 X20 Y30 ,C3", "X50.,R5.", "N10 G01 X1 ,R#1(CORNER)", "G01 Z-2. ,A[#1+15]",
+     "g01 x5 ,c.5;", "/ X1 , R2."],
+)  # fmt: skip
+def test_1_text_and_blocks_corner_words_are_read_by_the_grammar_alone(text):
+    """A line with a comma word (docs/semantics.md §1) is left to the grammar, which reads it."""
+    assert not check_line(text)
+    block = parse_block(text)
+    assert block.problems == () and len(block.corners) == 1
+
+
 @pytest.mark.skipif(sys.version_info < (3, 11), reason="Python 3.10's re has no possessive quantifiers to compare")
 def test_python_3_10_reads_the_same_plain_lines_as_3_11():
     """Python 3.10 gets the plain-line pattern without possessive quantifiers; it must accept

@@ -72,3 +72,18 @@ G81 X#32 Y#33 Z#26 R#3 F#9
 ;;                  ^^ variable.other.local.cnc-macro
 G31 Z-10. F100
 ;; <--- keyword.other.g-code.motion.cnc-macro
+G01 X50. ,R5. F500.
+;;       ^ punctuation.separator.corner.cnc-macro
+;;        ^ support.type.address.corner.cnc-macro
+;;         ^^ constant.numeric.decimal.cnc-macro
+;;            ^ support.type.address.cnc-macro - support.type.address.corner.cnc-macro
+Y50.,C#1
+;;  ^ punctuation.separator.corner.cnc-macro
+;;   ^ support.type.address.corner.cnc-macro
+;;    ^^ variable.other.local.cnc-macro
+G01 X20 Y30 ,C3
+;;          ^ punctuation.separator.corner.cnc-macro
+;;           ^ support.type.address.corner.cnc-macro
+;;            ^ constant.numeric.integer.cnc-macro
+#1=POW[2,3]
+;;      ^ - punctuation.separator.corner.cnc-macro

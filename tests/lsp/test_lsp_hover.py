@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, GSK, close_file, edit, hover_text, open_file
+from .lsp_session import FANUC, GSK, close_file, diagnostics_for, edit, hover_text, open_file
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
@@ -201,3 +201,20 @@ async def test_hover_on_a_name_in_a_0i_file_says_the_dialect_has_none(fanuc_en: 
     text = await hover_text(fanuc_en, uri, 1, 7)
     close_file(fanuc_en, uri)
     assert "no system variable names" in text and "FANUC 0i" in text
+
+
+async def test_1_text_and_blocks_corner_words_have_no_diagnostics_and_hover_names_them(
+    fanuc_en: LanguageClient, fanuc_zh: LanguageClient
+) -> None:
+    text = "O1000\nG90 G17 G00 X0 Y0\nG01 X50. ,R5. F500.\nY50. ,C3.\nG01 X20 Y30 ,C3\nM30\n"
+    uri = open_file(fanuc_en, FANUC / "corners.nc", text)
+    got = await diagnostics_for(fanuc_en, uri, 1)
+    assert list(got.diagnostics) == []
+    radius = await hover_text(fanuc_en, uri, 2, 10)  # the R of ,R5.
+    chamfer = await hover_text(fanuc_en, uri, 3, 5)  # the comma of ,C3.
+    close_file(fanuc_en, uri)
+    assert "**,R** — corner radius" in radius and "sharp corner" in radius
+    assert "**,C** — chamfer" in chamfer
+    uri = open_file(fanuc_zh, FANUC / "corners_zh.nc", text)
+    assert "拐角圆弧" in await hover_text(fanuc_zh, uri, 2, 10)
+    close_file(fanuc_zh, uri)

@@ -50,6 +50,9 @@ CODES: dict[str, CodeInfo] = {
     "write-only": CodeInfo("error", "A write-only system variable is read."),
     "nc-and-macro": CodeInfo("error", "NC words and a macro statement in one block (alarm 127)."),
     "dialect-feature": CodeInfo("error", "Syntax that the selected dialect lacks."),
+    "corner-word": CodeInfo(
+        "warning", "A ,C/,R/,A corner word without a G01/G02/G03 move, or on a profile whose manual lacks it."
+    ),
     "profile-suggestion": CodeInfo("information", "The file reads cleanly as another profile: likely written for it."),
     "nesting-depth": CodeInfo("error", "Macro or subprogram nesting is exceeded when the program runs."),
     "division-by-zero": CodeInfo("error", "A division by zero found by running the program (alarm 112)."),

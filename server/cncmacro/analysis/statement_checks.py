@@ -22,8 +22,9 @@ MAX_LABEL = 99999
 
 def check_statements(block: Block, ctx: LineContext, facts: LineFacts) -> None:
     """Findings and jumps of a block that holds macro statements."""
-    if block.words:
-        w = block.words[0]
+    if block.words or block.corners:
+        w = block.words[0] if block.words else block.corners[0]
+        letter = w.letter if block.words else f",{w.letter}"
         facts.findings.append(
             Finding(
                 w.start,
@@ -32,9 +33,9 @@ def check_statements(block: Block, ctx: LineContext, facts: LineFacts) -> None:
                 "nc-and-macro",
                 pick(
                     ctx.locale,
-                    f"the NC word {w.letter} and a macro statement in one block (alarm 127); "
+                    f"the NC word {letter} and a macro statement in one block (alarm 127); "
                     "only N may precede a macro statement",
-                    f"NC代码 {w.letter} 与宏语句在同一程序段（报警 127）；宏语句之前只允许 N",
+                    f"NC代码 {letter} 与宏语句在同一程序段（报警 127）；宏语句之前只允许 N",
                 ),
             )
         )

@@ -20,6 +20,7 @@ from ..syntax.nodes import Block
 from ..syntax.program import Program
 from .call_checks import check_words
 from .call_targets import ProgramFinder
+from .corner_checks import check_corners
 from .diagnostics import Diagnostic
 from .faults import FILE, internal_error, line_fault
 from .label_checks import LabelChecker
@@ -62,8 +63,10 @@ def _line_facts(block: Block, ctx: LineContext) -> LineFacts | None:
     facts = LineFacts()
     if block.statements:
         check_statements(block, ctx, facts)
-    elif block.words:
+    elif block.words or block.corners:
         check_words(block, ctx, facts)
+        if block.corners:
+            check_corners(block, ctx, facts)
     if block.abbreviations:
         check_abbreviations(block, ctx, facts)
     return facts if facts else None

@@ -690,7 +690,7 @@ def _changes_structure(old: list[Block], new: list[Block]) -> bool:
 
 
 def _header_only(b: Block) -> bool:
-    return b.program is not None and not b.words and not b.statements
+    return b.program is not None and not b.words and not b.corners and not b.statements
 
 
 def _runnable(blocks: list[Block], unit: ProgramUnit) -> bool:

@@ -55,7 +55,8 @@ def stop_line(blocks: list[Block], line: int, block_delete: bool = False) -> int
         b = blocks[k]
         if b.is_empty or b.tape or (block_delete and b.block_delete is not None):
             continue
-        if b.plain is None and b.program is not None and not (b.words or b.statements or b.label is not None):
+        header = b.plain is None and b.program is not None
+        if header and not (b.words or b.corners or b.statements or b.label is not None):
             continue  # an O header alone: a run starts after it
         return k
     return None

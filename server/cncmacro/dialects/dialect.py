@@ -76,6 +76,9 @@ class Dialect:
     # §4 IF [cond] <statement> without THEN runs the statement (FANUC profiles, Haas); elsewhere
     # alarm 114
     if_without_then: bool = False
+    # §1 §8 the manual documents the comma words ,C ,R (chamfer, corner radius) and ,A (angle) on a
+    # move (FANUC, Haas); without it they are read and run alike but earn a ``corner-word`` warning
+    corner_words: bool = True
     # other names the profile answers to (``fanuc`` for ``fanuc-0i``), in machine files, file
     # comments, settings and on the command line
     aliases: tuple[str, ...] = ()

@@ -23,7 +23,7 @@ from ..dialects.functions_data import GSK_H_CODES
 from ..machine.alarms import MacroAlarm
 from ..machine.calls import argument_targets, letters_for_local
 from ..machine.variables import named_number
-from ..syntax.nodes import Abbreviation, Bracket, Call, NamedVar, Number, Unary, Var, Word
+from ..syntax.nodes import Abbreviation, Bracket, Call, CornerWord, NamedVar, Number, Unary, Var, Word
 from ..syntax.walk import nodes_at
 from .call_sites import call_site
 from .cursor import Cursor, cursor_at
@@ -80,6 +80,8 @@ def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
             text = word_hover(ls, cur, node)
             if text:
                 return text, node.start, node.end
+        if isinstance(node, CornerWord):
+            return corner_hover(ls, cur, node), node.start, node.end
     w = word_at(cur.text, col)
     if w is not None:
         text = function_hover(ls, cur, w[0])
@@ -246,6 +248,47 @@ def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
             group = f"{t('modal', loc)}: {doc.group}" if doc.group else t("one_shot", loc)
             return f"**{doc.code}** — {describe.pick_text(doc, loc)}\n\n{group} · *{dialect.title}*"
     return None
+
+
+_CORNER_TEXTS = {
+    "C": (
+        "chamfer: a straight cut of this length across the corner between this move and the next",
+        "倒角：在本段与下一段移动之间的拐角处切出此长度的直线",
+    ),
+    "R": (
+        "corner radius: an arc of this radius rounds the corner between this move and the next",
+        "拐角圆弧：以此半径的圆弧连接本段与下一段移动之间的拐角",
+    ),
+    "A": (
+        "angle of the move (direct drawing dimension programming)",
+        "移动的角度（图纸尺寸直接输入）",
+    ),
+}
+
+
+def corner_hover(ls: CncMacroServer, cur: Cursor, corner: CornerWord) -> str:
+    """``,C``, ``,R`` or ``,A``: what it asks of the control and what the simulator does with it."""
+    loc = ls.locale
+    en, zh = _CORNER_TEXTS[corner.letter]
+    lines = [f"**,{corner.letter}** — {pick(loc, en, zh)}", ""]
+    lines.append(
+        pick(
+            loc,
+            "The simulator runs the move as written: the toolpath shows the sharp corner.",
+            "模拟器按所写路径运行：刀路显示未倒角的尖角。",
+        )
+    )
+    dialect = cur.doc.dialect
+    if not dialect.corner_words:
+        lines.append("")
+        lines.append(
+            pick(
+                loc,
+                f"Not in the manual of *{dialect.title}*, which writes chamfers as L and corner arcs as D.",
+                f"*{dialect.title}* 的说明书中没有此写法，其倒角写作 L（直线）和 D（圆弧）。",
+            )
+        )
+    return "\n".join(lines)
 
 
 def abbreviation_hover(ls: CncMacroServer, cur: Cursor, a: Abbreviation) -> str:

@@ -36,7 +36,7 @@ def block_sites(block: Block, local_call: float | None = None) -> Sites:
         text = plain.upper()
         if "M9" not in text and "H8" not in text and (local_call is None or "M" not in text):
             return _EMPTY
-    if plain is None and not block.statements and not block.words:
+    if plain is None and not block.statements and not block.words and not block.corners:
         return _EMPTY
     key = (id(block), local_call)
     hit = _memo.get(key)

@@ -44,6 +44,7 @@ from ..syntax.nodes import (
 )
 from . import jumps
 from .alarms import MacroAlarm, raiser
+from .corners import with_corners
 from .expressions import ExpressionCompiler, Getter
 from .numbers import MAX_VALUE, format_value, round_half_away, to_increment
 from .words import abbreviation_refused, missing_then
@@ -111,7 +112,7 @@ class CompiledFile:
         """The first line a program runs: past its O header unless the header line also
         holds statements."""
         block = self.file.program.blocks[unit.start] if unit.start < len(self.file.program.blocks) else None
-        if block is not None and block.program is not None and not (block.words or block.statements):
+        if block is not None and block.program is not None and not (block.words or block.corners or block.statements):
             return self.next_line(unit.start)
         return self.first_line(unit.start)
 
@@ -293,7 +294,11 @@ class CompiledFile:
         return self._body(block, pc, nxt)
 
     def _header(self, block: Block, pc: int, nxt: int) -> Runner:
-        rest = self._body(block, pc, nxt) if (block.words or block.statements or block.label is not None) else None
+        rest = (
+            self._body(block, pc, nxt)
+            if (block.words or block.corners or block.statements or block.label is not None)
+            else None
+        )
 
         def header(m: Any, pc: int) -> int:
             if m.frame.found.unit.start != pc:
@@ -309,13 +314,13 @@ class CompiledFile:
             a = block.abbreviations[0]
             return raiser(FORMAT, abbreviation_refused(a.text, a.word, dialect))
         if block.statements:
-            if block.words:
-                w = block.words[0]
+            if block.words or block.corners:
+                letter = block.words[0].letter if block.words else f",{block.corners[0].letter}"
                 return raiser(
                     NC_AND_MACRO,
                     detail(
-                        f"{w.letter} word and a macro statement in one block",
-                        f"{w.letter} 代码与宏语句在同一程序段",
+                        f"{letter} word and a macro statement in one block",
+                        f"{letter} 代码与宏语句在同一程序段",
                     ),
                 )
             if len(block.statements) > 1:
@@ -324,7 +329,9 @@ class CompiledFile:
         elif block.words:
             run = self.nc_block(block, pc, nxt)
         else:
-            run = lambda m, pc: nxt  # noqa: E731  (a label alone)
+            run = lambda m, pc: nxt  # noqa: E731  (a label alone, or corner words alone)
+        if block.corners:
+            run = with_corners(self, block, run)
         if label is None:
             return run
         n = float(label)

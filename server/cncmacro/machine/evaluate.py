@@ -83,7 +83,7 @@ def is_assignment(text: str) -> bool:
 def compile_expression(machine: Machine, text: str) -> CompiledText:
     """``text`` as a value (``#1+#2*2``, ``#[#100]``, ``SIN[30]``)."""
     block = _block(text.strip(), "#1=", "")
-    if len(block.statements) != 1 or block.words or not isinstance(block.statements[0], Assign):
+    if len(block.statements) != 1 or block.words or block.corners or not isinstance(block.statements[0], Assign):
         raise EvaluationError(detail(f"'{text.strip()}' is not an expression", f"'{text.strip()}' 不是表达式"))
     return CompiledText(text, value=ExpressionCompiler(machine.kinds).value(block.statements[0].value))
 
@@ -98,7 +98,7 @@ def compile_condition(machine: Machine, text: str) -> CompiledText:
             raise
         block = _block(stripped, "IF", "GOTO1")
     statement = block.statements[0] if len(block.statements) == 1 else None
-    if not isinstance(statement, If) or block.words:
+    if not isinstance(statement, If) or block.words or block.corners:
         raise EvaluationError(detail(f"'{stripped}' is not a condition", f"'{stripped}' 不是条件"))
     return CompiledText(text, test=ExpressionCompiler(machine.kinds).condition(statement.condition))
 
@@ -156,7 +156,7 @@ def assign(machine: Machine, text: str, level: int | None = None) -> tuple[int, 
     line gets; returns the variable number written and its new value."""
     block = _block(text.strip(), "", "")
     statement = block.statements[0] if len(block.statements) == 1 else None
-    if not isinstance(statement, Assign) or block.words or block.label is not None:
+    if not isinstance(statement, Assign) or block.words or block.corners or block.label is not None:
         raise EvaluationError(
             detail(
                 f"'{text.strip()}' is not an assignment such as #100=5",

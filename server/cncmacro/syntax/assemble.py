@@ -12,7 +12,21 @@ from collections.abc import Sequence
 
 from ..bilingual import Detail, detail
 from .lines import Prepared
-from .nodes import Abbreviation, Assign, Block, Comment, Do, End, If, Number, Problem, While, Word, comment_after
+from .nodes import (
+    Abbreviation,
+    Assign,
+    Block,
+    Comment,
+    CornerWord,
+    Do,
+    End,
+    If,
+    Number,
+    Problem,
+    While,
+    Word,
+    comment_after,
+)
 
 
 class Items(list):  # type: ignore[type-arg]
@@ -47,10 +61,13 @@ def assemble(items: Sequence[object], prep: Prepared) -> Block:
             label, label_span = number, (w.start, w.end)  # type: ignore[union-attr]
         i += 1
     words: list[Word] = []
+    corners: list[CornerWord] = []
     statements: list[object] = []
     for item in items[i:]:
         if isinstance(item, Word):
             words.append(item)
+        elif isinstance(item, CornerWord):
+            corners.append(item)
         else:
             if prep.comments:
                 target = item.then if isinstance(item, If) else item
@@ -73,6 +90,7 @@ def assemble(items: Sequence[object], prep: Prepared) -> Block:
         block_delete=prep.block_delete,
         tape=prep.tape,
         words=tuple(words),
+        corners=tuple(corners),
         statements=stmts,  # type: ignore[arg-type]
         comments=prep.comments,
         problems=tuple(problems),

@@ -23,6 +23,7 @@ from .nodes import (
     Binary,
     Bracket,
     Call,
+    CornerWord,
     Do,
     End,
     Expr,
@@ -129,6 +130,12 @@ class _Builder(Transformer):
         if self.relations and _has_relation(value):
             raise _relation_error(value)
         return Word(letter.upper(), value, None, letter.start_pos, value.end)
+
+    def corner(self, c):
+        head, value = c
+        if self.relations and _has_relation(value):
+            raise _relation_error(value)
+        return CornerWord(head[-1].upper(), value, head.start_pos, value.end)
 
     def wvalue(self, c):
         if len(c) == 1:

@@ -34,6 +34,7 @@ _NAMES: dict[str, str] = {
     "ATAN": "ATAN",
     "PRM": "PRM",
     "COMMA": "','",
+    "CORNER": detail(",C, ,R or ,A", ",C、,R 或 ,A"),
     "ATAN_SEP": "'/'",
     "IF": "IF",
     "THEN": "THEN",
@@ -51,6 +52,10 @@ _NAMES: dict[str, str] = {
 _ANOTHER_ITEM = detail("another word or statement", "其他代码字或宏语句")
 _A_VALUE = detail("a value (a number, #variable or [expression])", "数值（数字、#变量或 [表达式]）")
 _NOTHING_EXPECTED = Detail("", "")
+_CORNER_COMMA = detail(
+    "unexpected ','; outside brackets a comma starts ,C (chamfer), ,R (corner radius) or ,A (angle)",
+    "此处不应出现 ','；方括号之外的逗号只能引出 ,C（倒角）、,R（拐角圆弧）或 ,A（角度）",
+)
 _CJK = re.compile("[\u4e00-\u9fff]")
 
 # What a bare value looks like, to say "expected a value" instead of listing six terminals.
@@ -59,7 +64,7 @@ _VALUE_START = {"NUMBER", "VARNUM", "HASH", "NAMED_VAR", "LSQB", "SIGN"}
 # an assignment to a name, [#_UO[1]]=1).
 _ITEM_START = {
     "LETTER", "P_LETTER", "VARNUM", "HASH", "NAMED_VAR", "LSQB", "IF", "WHILE", "DO", "END", "GOTO",
-    "POPEN", "PCLOS", "DPRNT", "BPRNT",
+    "POPEN", "PCLOS", "DPRNT", "BPRNT", "CORNER",
 }
 
 
@@ -91,6 +96,8 @@ def describe_error(code: str, err: UnexpectedInput) -> Problem:
             return Problem(detail(f"the block ends too early{expected}", f"程序段提前结束{expected.zh}"), start, end)
         start = tok.start_pos if tok.start_pos is not None else 0
         end = tok.end_pos if tok.end_pos is not None else start + 1
+        if tok.type == "COMMA" and "CORNER" in expected_set:
+            return Problem(_CORNER_COMMA, start, end)
         if tok.type == "RSQB" and unclosed is None and "RSQB" not in expected_set:
             return Problem(detail("']' without a matching '['", "']' 没有与之配对的 '['"), start, end)
         if tok.type == "RELOP" and "RELOP" not in expected_set:

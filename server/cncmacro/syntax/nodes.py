@@ -141,6 +141,19 @@ class Word:
 
 
 @dataclass(slots=True)
+class CornerWord:
+    """A comma word at the end of a move: ``,C`` a chamfer, ``,R`` a corner radius (FANUC's optional
+    chamfering and corner R, Haas corner rounding) or ``,A`` an angle (FANUC direct drawing
+    dimension programming). ``letter`` is ``C``, ``R`` or ``A`` (upper case); ``start`` is the
+    column of the comma (docs/semantics.md §1)."""
+
+    letter: str
+    value: Expr
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
 class Assign:
     """``#n = expr``. ``message`` is the text of the comment right after it on the block,
     which ``#3000=n(text)`` and ``#3006=n(text)`` show."""
@@ -278,6 +291,7 @@ _FIELDS = (
     "block_delete",
     "tape",
     "words",
+    "corners",
     "statements",
     "comments",
     "problems",
@@ -292,11 +306,13 @@ class Block:
     ``label`` is the sequence number of a leading ``N`` word; ``program`` the number of a
     leading ``O`` word (the line then starts a program, ``title`` being its first comment).
     ``words`` holds the NC words other than those two, in order; ``statements`` the macro
-    statements. ``block_delete`` is None, 0 for ``/`` or 1–9 for ``/n``. ``tape`` marks a
-    ``%`` line. ``problems`` are the syntax errors and warnings of the line; a block with an
-    error has no words or statements. ``structural`` is True when the block has a label, O
-    header, ``%`` mark or loop marker (see program.py). ``abbreviations`` lists the macro
-    words written shortened (``WH[..]DO1``), in column order.
+    statements; ``corners`` the comma words (``,C5.``, ``,R#1``), kept apart from ``words``
+    because they are no address of their own (``,R`` is not ``R``). ``block_delete`` is None,
+    0 for ``/`` or 1–9 for ``/n``. ``tape`` marks a ``%`` line. ``problems`` are the syntax
+    errors and warnings of the line; a block with an error has no words or statements.
+    ``structural`` is True when the block has a label, O header, ``%`` mark or loop marker (see
+    program.py). ``abbreviations`` lists the macro words written shortened (``WH[..]DO1``), in
+    column order.
 
     A line of whitespace-separated address-number words with at most three decimals
     (``G01 X12.5 Y-3.``), most of a CAM program, is kept as its text in ``plain`` and its
@@ -317,6 +333,7 @@ class Block:
         block_delete: int | None = None,
         tape: bool = False,
         words: tuple[Word, ...] | None = (),
+        corners: tuple[CornerWord, ...] = (),
         statements: tuple[Statement, ...] = (),
         comments: tuple[Comment, ...] = (),
         problems: tuple[Problem, ...] = (),
@@ -332,6 +349,7 @@ class Block:
         self.block_delete = block_delete
         self.tape = tape
         self._words = None if plain is not None else words
+        self.corners = corners
         self.statements = statements
         self.comments = comments
         self.problems = problems
@@ -366,7 +384,7 @@ class Block:
         b = _new(cls)
         b.label = b.label_span = b.program = b.program_span = b.title = b.block_delete = b._words = None
         b.tape = b.structural = False
-        b.statements = b.comments = b.problems = b.abbreviations = ()
+        b.corners = b.statements = b.comments = b.problems = b.abbreviations = ()
         b.plain = line
         return b
 
@@ -384,6 +402,7 @@ class Block:
             and self.program is None
             and not self.tape
             and not self.words
+            and not self.corners
             and not self.statements
             and not self.has_error
         )

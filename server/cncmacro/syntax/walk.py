@@ -14,6 +14,7 @@ from .nodes import (
     Block,
     Bracket,
     Call,
+    CornerWord,
     Do,
     End,
     Goto,
@@ -50,6 +51,8 @@ def children(node: Node) -> tuple[Node, ...]:
         return node.args
     if isinstance(node, Word):
         return (node.value,) if node.value is not None else ()
+    if isinstance(node, CornerWord):
+        return (node.value,)
     if isinstance(node, Assign):
         return (node.target, node.value)
     if isinstance(node, If):
@@ -68,7 +71,7 @@ def children(node: Node) -> tuple[Node, ...]:
 
 def iter_nodes(block: Block) -> Iterator[Node]:
     """Every node of the block's words and statements, parents before children."""
-    stack: list[Node] = [*reversed(block.statements), *reversed(block.words)]
+    stack: list[Node] = [*reversed(block.statements), *reversed(block.corners), *reversed(block.words)]
     while stack:
         node = stack.pop()
         yield node
@@ -78,7 +81,7 @@ def iter_nodes(block: Block) -> Iterator[Node]:
 def nodes_at(block: Block, column: int) -> list[Node]:
     """The nodes whose range holds ``column`` (or ends right at it), outermost first."""
     path: list[Node] = []
-    level: tuple[Node, ...] = (*block.words, *block.statements)
+    level: tuple[Node, ...] = (*block.words, *block.corners, *block.statements)
     while True:
         hit = None
         for node in level:

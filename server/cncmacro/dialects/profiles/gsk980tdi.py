@@ -41,4 +41,5 @@ PROFILE = Dialect(
     word_format_alarms=False,
     keyword_abbreviations=False,
     if_without_then=False,
+    corner_words=False,
 )
