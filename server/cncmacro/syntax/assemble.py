@@ -21,48 +21,55 @@ from .nodes import (
     Do,
     End,
     If,
+    Item,
     Number,
     Problem,
+    Statement,
     While,
     Word,
     comment_after,
 )
 
 
-class Items(list):  # type: ignore[type-arg]
+class Items(list[Item]):
     """The items read from a line, with the macro words written shortened among them (both
     readers, the grammar and the fast path, hand them over so)."""
 
     __slots__ = ("abbreviations",)
 
-    def __init__(self, items: Sequence[object], abbreviations: Sequence[Abbreviation]) -> None:
+    def __init__(self, items: Sequence[Item], abbreviations: Sequence[Abbreviation]) -> None:
         super().__init__(items)
         self.abbreviations = tuple(sorted(abbreviations, key=lambda a: a.start))
 
 
-def assemble(items: Sequence[object], prep: Prepared) -> Block:
+def assemble(items: Sequence[Item], prep: Prepared) -> Block:
     """Build the block of a line from its items, in the order they were written."""
     problems = list(prep.problems)
-    program = program_span = label = label_span = None
+    program: int | None = None
+    program_span: tuple[int, int] | None = None
+    label: int | None = None
+    label_span: tuple[int, int] | None = None
     title = None
     i = 0
     n = len(items)
-    if n and _is_word(items[0], "O"):
+    if n:
         w = items[0]
-        number = _whole_literal(w, *_PROGRAM_NUMBER, problems)  # type: ignore[arg-type]
-        if number is not None:
-            program, program_span = number, (w.start, w.end)  # type: ignore[union-attr]
-            title = _first_comment_text(prep.comments)
-        i = 1
-    if i < n and _is_word(items[i], "N"):
+        if isinstance(w, Word) and w.letter == "O":
+            number = _whole_literal(w, *_PROGRAM_NUMBER, problems)
+            if number is not None:
+                program, program_span = number, (w.start, w.end)
+                title = _first_comment_text(prep.comments)
+            i = 1
+    if i < n:
         w = items[i]
-        number = _whole_literal(w, *_SEQUENCE_NUMBER, problems)  # type: ignore[arg-type]
-        if number is not None:
-            label, label_span = number, (w.start, w.end)  # type: ignore[union-attr]
-        i += 1
+        if isinstance(w, Word) and w.letter == "N":
+            number = _whole_literal(w, *_SEQUENCE_NUMBER, problems)
+            if number is not None:
+                label, label_span = number, (w.start, w.end)
+            i += 1
     words: list[Word] = []
     corners: list[CornerWord] = []
-    statements: list[object] = []
+    statements: list[Statement] = []
     for item in items[i:]:
         if isinstance(item, Word):
             words.append(item)
@@ -91,7 +98,7 @@ def assemble(items: Sequence[object], prep: Prepared) -> Block:
         tape=prep.tape,
         words=tuple(words),
         corners=tuple(corners),
-        statements=stmts,  # type: ignore[arg-type]
+        statements=stmts,
         comments=prep.comments,
         problems=tuple(problems),
         structural=structural,
@@ -105,10 +112,6 @@ def assemble_words(words: list[Word], prep: Prepared) -> Block:
     if first == "O" or first == "N" or prep.problems or prep.comments or prep.tape:
         return assemble(words, prep)
     return Block(block_delete=prep.block_delete, words=tuple(words))
-
-
-def _is_word(item: object, letter: str) -> bool:
-    return isinstance(item, Word) and item.letter == letter
 
 
 _PROGRAM_NUMBER = (

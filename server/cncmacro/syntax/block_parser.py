@@ -13,14 +13,14 @@ import sys
 import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
-from typing import Any
+from typing import cast
 
 from lark.exceptions import UnexpectedInput
 
 from ..bilingual import detail
-from .assemble import assemble, assemble_words
+from .assemble import Items, assemble, assemble_words
 from .fastpath import plain_words, read_items
-from .grammar import BlockError, make_parser
+from .grammar import BlockError, GrammarParser, make_parser
 from .lines import Prepared, has_special, prepare
 from .messages import describe_error
 from .nodes import Block, Problem
@@ -51,12 +51,12 @@ _PLAIN_LINE = re.compile(_plain_line_pattern(_POSSESSIVE)).fullmatch
 # not parsed, so that a huge line costs nothing and cannot stall the editor.
 MAX_BLOCK_CHARS = 4096
 
-_idle: list[tuple[Any, Any]] = []  # built parsers (lark, node builder) no thread is using
+_idle: list[GrammarParser] = []  # built parsers (lark, node builder) no thread is using
 _idle_lock = threading.Lock()
 
 
 @contextmanager
-def _parser() -> Iterator[tuple[Any, Any]]:
+def _parser() -> Iterator[GrammarParser]:
     """A grammar parser for this thread's use: an idle one, or a new one (building one takes
     a few hundred milliseconds, so they are kept and shared between threads, one at a time)."""
     with _idle_lock:
@@ -87,7 +87,7 @@ def parse_with_grammar(code: str, prep: Prepared) -> Block:
     with _parser() as (lark, builder):
         builder.reset()
         try:
-            items = lark.parse(code)
+            items = cast(Items, lark.parse(code))  # the builder makes the tree as lark parses
         except UnexpectedInput as err:
             return _failed(prep, describe_error(code, err))
         except BlockError as err:
@@ -206,7 +206,7 @@ class BlockCache:
         """The blocks of many lines at once (a file being opened)."""
         self._sweep_if_due()
         blocks = self._blocks
-        out = []
+        out: list[Block] = []
         append = out.append
         plain = _PLAIN_LINE
         of_plain = Block.of_plain

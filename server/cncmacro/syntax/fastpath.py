@@ -14,6 +14,8 @@ always come from the grammar.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
+from typing import Protocol, cast
 
 from .assemble import Items
 from .grammar import MAX_NUMBER_CHARS, RELATION_NAMES, BlockError, _check_condition, _has_relation
@@ -26,9 +28,11 @@ from .nodes import (
     Call,
     Do,
     End,
+    Expr,
     Goto,
     If,
     IndirectVar,
+    Item,
     Number,
     Relation,
     Unary,
@@ -80,6 +84,19 @@ _MULOPS = frozenset(("*", "/", "AND", "MOD"))
 _ADDOPS = frozenset(("+", "-", "OR", "XOR"))
 _MAX_TOKENS = 200
 
+
+class _TokenMatch(Protocol):
+    """A match of ``_TOKEN``: every alternative is a group, so ``lastindex`` is always set."""
+
+    lastindex: int
+
+    def span(self, group: int) -> tuple[int, int]: ...
+    def group(self, group: int) -> str: ...
+    def end(self) -> int: ...
+
+
+_match_token = cast("Callable[[str, int], _TokenMatch | None]", _TOKEN.match)
+
 # token kinds
 _VAR, _NUM, _KW, _OP, _LETTER, _EOF = range(6)
 
@@ -88,7 +105,7 @@ class _Decline(Exception):
     """The line is not one of the forms read here: let the grammar read it."""
 
 
-def read_items(code: str) -> list[object] | None:
+def read_items(code: str) -> Items | None:
     """The items of a block of common statement forms, or None to defer to the grammar."""
     if code.count("[") > 12:  # deep nesting is rare; the grammar reads it without recursion
         return None
@@ -108,16 +125,16 @@ def _tokenize(code: str, shortened: list[Abbreviation]) -> list[tuple[int, str, 
     toks: list[tuple[int, str, int, int]] = []
     pos = 0
     n = len(code)
-    match = _TOKEN.match
+    match = _match_token
     while pos < n:
         m = match(code, pos)
         if m is None:
             if code[pos:].strip(" \t"):
                 return None
             break
-        kind = m.lastindex - 1  # type: ignore[operator]
-        s, e = m.span(m.lastindex)  # type: ignore[arg-type]
-        text = m.group(m.lastindex)  # type: ignore[arg-type]
+        kind = m.lastindex - 1
+        s, e = m.span(m.lastindex)
+        text = m.group(m.lastindex)
         if (kind == _NUM or kind == _VAR) and len(text) > MAX_NUMBER_CHARS:
             return None  # the grammar says why
         if kind == _KW:
@@ -168,13 +185,13 @@ class _Reader:
         return Number(float(text), text, s, e)
 
     # ---- items
-    def items(self) -> list[object]:
-        out: list[object] = []
+    def items(self) -> list[Item]:
+        out: list[Item] = []
         while self.peek()[0] != _EOF:
             out.append(self.item())
         return out
 
-    def item(self) -> object:
+    def item(self) -> Item:
         kind, text, s, _e = self.peek()
         if kind == _LETTER:
             return self.word()
@@ -219,7 +236,7 @@ class _Reader:
             raise _Decline
         if kind == _NUM:
             self.i += 1
-            value: object = Number(float(text), text, s, e)
+            value: Expr = Number(float(text), text, s, e)
         elif kind == _OP and text in ("+", "-"):
             self.i += 1
             k2, t2, _s2, e2 = self.peek()
@@ -232,9 +249,9 @@ class _Reader:
                 value = Unary(text, x, s, x.end)
         else:
             value = self.variable_or_bracket()
-        if self.relations and _has_relation(value):  # type: ignore[arg-type]
+        if self.relations and _has_relation(value):
             raise _Decline
-        return Word(letter, value, None, ls, value.end)  # type: ignore[arg-type,attr-defined]
+        return Word(letter, value, None, ls, value.end)
 
     def variable_or_bracket(self) -> Var | IndirectVar | Bracket:
         kind, text, _s, _e = self.peek()
@@ -259,7 +276,7 @@ class _Reader:
         _check_condition(cond)
         return cond
 
-    def target(self) -> object:
+    def target(self) -> Expr:
         kind, text, s, e = self.peek()
         if kind == _NUM:
             self.i += 1
@@ -270,37 +287,37 @@ class _Reader:
         return x
 
     # ---- expressions
-    def sum(self) -> object:
+    def sum(self) -> Expr:
         left = self.product()
         while True:
             kind, text, _s, _e = self.peek()
             if (kind == _OP or kind == _KW) and text in _ADDOPS:
                 self.i += 1
                 right = self.product()
-                left = Binary(text, left, right, left.start, right.end)  # type: ignore[attr-defined]
+                left = Binary(text, left, right, left.start, right.end)
             else:
                 return left
 
-    def product(self) -> object:
+    def product(self) -> Expr:
         left = self.unary()
         while True:
             kind, text, _s, _e = self.peek()
             if (kind == _OP or kind == _KW) and text in _MULOPS:
                 self.i += 1
                 right = self.unary()
-                left = Binary(text, left, right, left.start, right.end)  # type: ignore[attr-defined]
+                left = Binary(text, left, right, left.start, right.end)
             else:
                 return left
 
-    def unary(self) -> object:
+    def unary(self) -> Expr:
         kind, text, s, _e = self.peek()
         if kind == _OP and text in ("+", "-"):
             self.i += 1
             x = self.unary()
-            return Unary(text, x, s, x.end)  # type: ignore[attr-defined]
+            return Unary(text, x, s, x.end)
         return self.primary()
 
-    def primary(self) -> object:
+    def primary(self) -> Expr:
         kind, text, s, e = self.peek()
         if kind == _NUM:
             self.i += 1
@@ -322,27 +339,27 @@ class _Reader:
                     self.i += 2
                     args.append(self.relexpr())
                     close = self.expect(_OP, "]")
-            if self.relations and any(_has_relation(a) for a in args):  # type: ignore[arg-type]
+            if self.relations and any(_has_relation(a) for a in args):
                 raise _Decline
-            return Call(text, tuple(args), s, close[3])  # type: ignore[arg-type]
+            return Call(text, tuple(args), s, close[3])
         raise _Decline
 
     def bracket(self) -> Bracket:
         lb = self.expect(_OP, "[")
         inner = self.relexpr()
         rb = self.expect(_OP, "]")
-        return Bracket(inner, lb[2], rb[3])  # type: ignore[arg-type]
+        return Bracket(inner, lb[2], rb[3])
 
-    def relexpr(self) -> object:
+    def relexpr(self) -> Expr:
         left = self.sum()
         kind, text, _s, _e = self.peek()
         if (kind == _OP or kind == _KW) and text in _RELOPS:
             self.i += 1
             right = self.sum()
             self.relations += 1
-            if _has_relation(left) or _has_relation(right):  # type: ignore[arg-type]
+            if _has_relation(left) or _has_relation(right):
                 raise _Decline
-            return Relation(RELATION_NAMES.get(text, text), text, left, right, left.start, right.end)  # type: ignore[arg-type,attr-defined]
+            return Relation(RELATION_NAMES.get(text, text), text, left, right, left.start, right.end)
         return left
 
     def variable(self) -> Var | IndirectVar:

@@ -11,8 +11,10 @@ from __future__ import annotations
 
 import re
 from importlib import resources
+from typing import TYPE_CHECKING, Any
 
 from lark import Lark, Token, Transformer, Tree
+from lark.tree import Meta
 
 from ..bilingual import Detail, detail
 from .assemble import Items
@@ -35,11 +37,28 @@ from .nodes import (
     Output,
     OutputPart,
     Relation,
+    Statement,
     Unary,
     Var,
+    Variable,
     While,
     Word,
 )
+
+if TYPE_CHECKING:
+
+    class _Tok(Token):
+        """A token of the lexer, which always sets its positions (lark types them optional)."""
+
+        start_pos: int
+        end_pos: int
+
+else:
+    _Tok = Token
+
+# A rule's children as lark hands them to its callback: tokens and the nodes its sub-rules
+# built, in the grammar's order. Each callback names their types as it takes them apart.
+_Children = list[Any]
 
 RELATION_NAMES = {"==": "EQ", "!=": "NE", ">": "GT", ">=": "GE", "<": "LT", "<=": "LE"}
 
@@ -54,12 +73,12 @@ class BlockError(Exception):
         self.end = end
 
 
-def _start(x: object) -> int:
-    return x.start_pos if isinstance(x, Token) else x.start  # type: ignore[attr-defined,return-value]
+def _start(x: _Tok | Expr) -> int:
+    return x.start_pos if isinstance(x, Token) else x.start
 
 
-def _end(x: object) -> int:
-    return x.end_pos if isinstance(x, Token) else x.end  # type: ignore[attr-defined,return-value]
+def _end(x: _Tok | Expr) -> int:
+    return x.end_pos if isinstance(x, Token) else x.end
 
 
 # No control reads a number this long (FANUC: alarm 003, too many digits), and a float cannot
@@ -81,19 +100,19 @@ def _literal(text: str, start: int, end: int) -> Number:
     return Number(float(text), text, start, end)
 
 
-def _number(tok: Token) -> Number:
-    return _literal(str(tok), tok.start_pos, tok.end_pos)  # type: ignore[arg-type]
+def _number(tok: _Tok) -> Number:
+    return _literal(str(tok), tok.start_pos, tok.end_pos)
 
 
-def _varnum(tok: Token) -> Var:
-    _literal(tok[1:].strip(), tok.start_pos, tok.end_pos)  # type: ignore[arg-type]  # its length is checked
-    return Var(int(tok[1:].strip()), tok.start_pos, tok.end_pos)  # type: ignore[arg-type]
+def _varnum(tok: _Tok) -> Var:
+    _literal(tok[1:].strip(), tok.start_pos, tok.end_pos)  # its length is checked
+    return Var(int(tok[1:].strip()), tok.start_pos, tok.end_pos)
 
 
 _DPRNT_PIECE = re.compile(r"#[ \t]*(\d+)(?:[ \t]*\[[ \t]*(\d)[ \t]*(\d)[ \t]*\])?|\[|\]|.", re.S)
 
 
-class _Builder(Transformer):
+class _Builder(Transformer[Token, Items]):
     """Lark callbacks: one method per grammar rule, each returning a node.
 
     ``relations`` counts the comparisons built since ``reset``: while it is 0, no expression
@@ -108,36 +127,40 @@ class _Builder(Transformer):
         self.relations = 0
         self.abbreviations = []
 
-    def _word(self, tok: Token) -> str:
+    def _word(self, tok: _Tok) -> str:
         """The whole word a keyword token stands for; an abbreviation is noted."""
         word = full_word(tok)
         if len(tok) != len(word):
-            self.abbreviations.append(Abbreviation(tok.start_pos, tok.end_pos, str(tok), word))  # type: ignore[arg-type]
+            self.abbreviations.append(Abbreviation(tok.start_pos, tok.end_pos, str(tok), word))
         return word
 
-    def __default__(self, data, children, meta):  # lark's helper rules (item*) stay trees
-        return Tree(data, children, meta)
+    def __default__(self, data: str, children: _Children, meta: Meta) -> Tree[Token]:
+        return Tree(data, children, meta)  # lark's helper rules (item*) stay trees
 
     # ---- items
-    def start(self, children):
+    def start(self, children: _Children) -> Items:
         return Items(children, self.abbreviations)
 
-    def word(self, c):
-        letter = c[0]
-        value = c[1]
+    def word(self, c: _Children) -> Word:
+        letter: _Tok = c[0]
+        value: _Tok | Expr = c[1]
         if isinstance(value, Token):  # BRACKET_NAME
             return Word(letter.upper(), None, value[1:-1], letter.start_pos, value.end_pos)
         if self.relations and _has_relation(value):
             raise _relation_error(value)
         return Word(letter.upper(), value, None, letter.start_pos, value.end)
 
-    def corner(self, c):
+    def corner(self, c: _Children) -> CornerWord:
+        head: _Tok
+        value: Expr
         head, value = c
         if self.relations and _has_relation(value):
             raise _relation_error(value)
         return CornerWord(head[-1].upper(), value, head.start_pos, value.end)
 
-    def wvalue(self, c):
+    def wvalue(self, c: _Children) -> Expr:
+        sign: _Tok
+        x: _Tok | Expr
         if len(c) == 1:
             x = c[0]
             return _number(x) if isinstance(x, Token) else x
@@ -147,8 +170,11 @@ class _Builder(Transformer):
             return _literal(text, sign.start_pos, x.end_pos)
         return Unary(str(sign), x, sign.start_pos, x.end)
 
-    def assign(self, c):
+    def assign(self, c: _Children) -> Assign:
+        target: Variable
+        value: Expr
         if len(c) == 5:  # [#_NAME] = value
+            lb: _Tok
             lb, target, _rb, _eq, value = c
             if self.relations and _has_relation(value):
                 raise _relation_error(value)
@@ -162,71 +188,96 @@ class _Builder(Transformer):
             raise _relation_error(target)
         return Assign(target, value, None, target.start, value.end)
 
-    def if_stmt(self, c):
+    def if_stmt(self, c: _Children) -> If:
+        kw: _Tok = c[0]
+        cond: Bracket = c[1]
+        then: Statement
         if len(c) == 3:  # IF [cond] statement: THEN left out
-            kw, cond, rest = c
+            then = c[2]
             _check_condition(cond)
-            return If(cond, None, rest, kw.start_pos, rest.end, True)
-        kw, cond, kw2, rest = c
+            return If(cond, None, then, kw.start_pos, then.end, True)
+        kw2: _Tok = c[2]
         _check_condition(cond)
         self._word(kw2)
         if kw2.type == "GOTO":
-            return If(cond, rest, None, kw.start_pos, rest.end)
-        return If(cond, None, rest, kw.start_pos, rest.end)
+            goto: Expr = c[3]
+            return If(cond, goto, None, kw.start_pos, goto.end)
+        then = c[3]
+        return If(cond, None, then, kw.start_pos, then.end)
 
-    def while_stmt(self, c):
+    def while_stmt(self, c: _Children) -> While:
+        kw: _Tok
+        cond: Bracket
+        num: _Tok
         kw, cond, _do, num = c
         _check_condition(cond)
         self._word(kw)
         return While(cond, _number(num), kw.start_pos, num.end_pos)
 
-    def do_stmt(self, c):
+    def do_stmt(self, c: _Children) -> Do:
+        kw: _Tok
+        num: _Tok
         kw, num = c
         return Do(_number(num), kw.start_pos, num.end_pos)
 
-    def end_stmt(self, c):
+    def end_stmt(self, c: _Children) -> End:
+        kw: _Tok
+        num: _Tok
         kw, num = c
         self._word(kw)
         return End(_number(num), kw.start_pos, num.end_pos)
 
-    def goto_stmt(self, c):
+    def goto_stmt(self, c: _Children) -> Goto:
+        kw: _Tok
+        target: Expr
         kw, target = c
         self._word(kw)
         return Goto(target, kw.start_pos, target.end)
 
-    def target(self, c):
-        x = c[0]
+    def target(self, c: _Children) -> Expr:
+        x: _Tok | Expr = c[0]
         if isinstance(x, Token):
             return _number(x)
         if self.relations and _has_relation(x):
             raise _relation_error(x)
         return x
 
-    def output_stmt(self, c):
-        kw = c[0]
+    def output_stmt(self, c: _Children) -> Output:
+        kw: _Tok = c[0]
         name = self._word(kw)
         if len(c) == 1:
             return Output(name, (), kw.start_pos, kw.end_pos)
-        args = c[1]
+        args: _Tok = c[1]
         return Output(name, _output_parts(args), kw.start_pos, args.end_pos)
 
     # ---- expressions
-    def binary(self, c):
+    def binary(self, c: _Children) -> Binary:
+        left: Expr
+        op: _Tok
+        right: Expr
         left, op, right = c
         return Binary(self._word(op), left, right, left.start, right.end)
 
-    def unary(self, c):
+    def unary(self, c: _Children) -> Unary:
+        sign: _Tok
+        x: Expr
         sign, x = c
         return Unary(str(sign), x, sign.start_pos, x.end)
 
-    def number(self, c):
+    def number(self, c: _Children) -> Number:
         return _number(c[0])
 
-    def bracket(self, c):
+    def bracket(self, c: _Children) -> Bracket:
+        lb: _Tok
+        inner: Expr
+        rb: _Tok
         lb, inner, rb = c
         return Bracket(inner, lb.start_pos, rb.end_pos)
 
-    def relation(self, c):
+    def relation(self, c: _Children) -> Relation:
+        left: Expr
+        op: _Tok
+        right: Expr
         left, op, right = c
         self.relations += 1
         spelling = op.upper()
@@ -235,30 +286,34 @@ class _Builder(Transformer):
                 raise _relation_error(side)
         return Relation(RELATION_NAMES.get(spelling, spelling), spelling, left, right, left.start, right.end)
 
-    def named(self, c):
-        head = c[0]
+    def named(self, c: _Children) -> NamedVar:
+        head: _Tok = c[0]
         name = head[head.index("_") + 1 :].upper()
-        index = c[1] if len(c) > 1 else None
+        index: Bracket | None = c[1] if len(c) > 1 else None
         return NamedVar(name, index, head.start_pos, index.end if index is not None else head.end_pos)
 
-    def variable(self, c):
-        head = c[0]
+    def variable(self, c: _Children) -> Variable:
+        head: _Tok | NamedVar = c[0]
         if isinstance(head, NamedVar):
             return head
         if len(c) == 1:
             return _varnum(head)
+        hash_: _Tok
+        index: Bracket
         hash_, index = c
         return IndirectVar(index, hash_.start_pos, index.end)
 
-    def call(self, c):
-        name = self._word(c[0])
-        args = tuple(x for x in c[1:] if not isinstance(x, Token))
+    def call(self, c: _Children) -> Call:
+        head: _Tok = c[0]
+        last: _Tok = c[-1]
+        name = self._word(head)
+        args: tuple[Expr, ...] = tuple(x for x in c[1:] if not isinstance(x, Token))
         if self.relations:
             for a in args:
                 if _has_relation(a):
                     raise _relation_error(a)
         comma = any(isinstance(x, Token) and x.type == "COMMA" for x in c)
-        return Call(name, args, c[0].start_pos, c[-1].end_pos, comma)
+        return Call(name, args, head.start_pos, last.end_pos, comma)
 
 
 def _has_relation(expr: Expr) -> bool:
@@ -371,10 +426,10 @@ def _is_bracketed_condition(e: Expr) -> bool:
     return isinstance(inner, Relation) or (isinstance(inner, Binary) and inner.op in ("AND", "OR", "XOR"))
 
 
-def _output_parts(tok: Token) -> tuple[OutputPart, ...]:
+def _output_parts(tok: _Tok) -> tuple[OutputPart, ...]:
     """Split ``[X#2[53]**Y#5]`` into literal text and formatted variables."""
     body = str(tok)[1:-1]
-    base = tok.start_pos + 1  # type: ignore[operator]
+    base = tok.start_pos + 1
     parts: list[OutputPart] = []
     text: list[str] = []
     for m in _DPRNT_PIECE.finditer(body):
@@ -403,7 +458,10 @@ def _load_grammar() -> str:
     return re.sub(r"@([A-Z]+)@", lambda m: pattern(m.group(1)), text)
 
 
-def make_parser() -> tuple[Lark, _Builder]:
+GrammarParser = tuple[Lark, _Builder]
+
+
+def make_parser() -> GrammarParser:
     """A fresh LALR parser that builds nodes as it parses, and its node builder."""
     builder = _Builder()
     lark = Lark(

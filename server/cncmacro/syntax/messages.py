@@ -72,7 +72,7 @@ def describe_error(code: str, err: UnexpectedInput) -> Problem:
     """A problem with a message and a range for a line that does not parse."""
     unclosed = _unclosed_bracket(code)
     if isinstance(err, UnexpectedCharacters):
-        pos = err.pos_in_stream
+        pos = err.pos_in_stream or 0  # lark declares it None on the base class; the lexer sets it
         ch = code[pos] if pos < len(code) else ""
         if ch == "]" and unclosed is None:
             return Problem(detail("']' without a matching '['", "']' 没有与之配对的 '['"), pos, pos + 1)

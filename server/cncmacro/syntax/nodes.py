@@ -239,6 +239,8 @@ class Output:
 
 
 Statement = Assign | If | While | Do | End | Goto | Output
+# What a reader takes from a line, in order: NC words, comma words and statements.
+Item = Word | CornerWord | Statement
 
 # ---------------------------------------------------------------- the block
 
@@ -381,7 +383,7 @@ class Block:
     def of_plain(cls, line: str, _new: Any = object.__new__) -> Block:
         """``Block(plain=line)`` without the keyword handling: opening a file makes one for
         nearly every line of a CAM program."""
-        b = _new(cls)
+        b: Block = _new(cls)
         b.label = b.label_span = b.program = b.program_span = b.title = b.block_delete = b._words = None
         b.tape = b.structural = False
         b.corners = b.statements = b.comments = b.problems = b.abbreviations = ()

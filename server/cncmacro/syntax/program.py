@@ -206,11 +206,11 @@ def update_program(program: Program, start: int, old_blocks: list[Block], new_bl
                         lines[j] = x + delta
     for k, b in enumerate(new_blocks):
         if b.label is not None:
-            lines = labels.get(b.label)
-            if lines is None:
+            found = labels.get(b.label)
+            if found is None:
                 labels[b.label] = [start + k]
             else:
-                insort(lines, start + k)
+                insort(found, start + k)
 
     markers = program.markers
     lo = bisect_left(markers, start)

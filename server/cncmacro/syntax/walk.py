@@ -17,9 +17,11 @@ from .nodes import (
     CornerWord,
     Do,
     End,
+    Expr,
     Goto,
     If,
     IndirectVar,
+    Item,
     NamedVar,
     Number,
     Output,
@@ -30,7 +32,8 @@ from .nodes import (
     Word,
 )
 
-Node = object
+# Every node carries ``start`` and ``end``.
+Node = Item | Expr
 
 
 def children(node: Node) -> tuple[Node, ...]:
@@ -85,12 +88,12 @@ def nodes_at(block: Block, column: int) -> list[Node]:
     while True:
         hit = None
         for node in level:
-            if node.start <= column < node.end:  # type: ignore[attr-defined]
+            if node.start <= column < node.end:
                 hit = node
                 break
         if hit is None:
             for node in level:
-                if node.end == column:  # type: ignore[attr-defined]
+                if node.end == column:
                     hit = node
                     break
         if hit is None:
