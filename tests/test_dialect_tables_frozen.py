@@ -1,11 +1,11 @@
 """The dialect tables say today exactly what they said when ``data/dialect_tables.json`` was frozen.
 
 Every system-variable row (its numbers, access, group, English and Chinese text, unit, source,
-default), every system variable name, every G and M code and every function of every dialect is
-compared with the frozen copy, so a change to one description (or to a row several controls
-share) is caught. The hover a
-user sees for a number comes from the row the dialect finds for it, so every number of every
-frozen row must find that row, and no other number any. After a change to the tables that is
+default), every system variable name, every G and M code, every function and every documented
+program on the control of every dialect is compared with the frozen copy, so a change to one
+description (or to a row several controls share) is caught. The hover a user sees for a number
+comes from the row the dialect finds for it, so every number of every frozen row must find that
+row, and no other number any. After a change to the tables that is
 meant, write the fixture again with ``python tests/test_dialect_tables_frozen.py`` and review
 its diff.
 """
@@ -37,6 +37,8 @@ def current() -> dict[str, Any]:
             "g_codes": [dataclasses.asdict(c) for c in d.g_codes()],
             "m_codes": [dataclasses.asdict(c) for c in d.m_codes()],
             "functions": [dataclasses.asdict(f) for f in d.functions()],
+            # arguments and results are tuples, which JSON keeps as lists
+            "program_docs": json.loads(json.dumps([dataclasses.asdict(p) for p in d.program_docs()])),
         }
     tables["gsk_h_codes"] = [dataclasses.asdict(f) for f in GSK_H_CODES]
     return tables
@@ -47,7 +49,9 @@ def frozen() -> dict[str, Any]:
 
 
 @pytest.mark.parametrize("dialect", DIALECTS)
-@pytest.mark.parametrize("table", ["system_variables", "system_variable_names", "g_codes", "m_codes", "functions"])
+@pytest.mark.parametrize(
+    "table", ["system_variables", "system_variable_names", "g_codes", "m_codes", "functions", "program_docs"]
+)
 def test_dialect_table_matches_the_frozen_copy(dialect: str, table: str) -> None:
     now, then = current()[dialect][table], frozen()[dialect][table]
     changed = [(a, b) for a, b in zip(now, then, strict=False) if a != b]

@@ -169,10 +169,11 @@ async def test_g65_p9832_is_a_probing_macro_on_the_control(
     haas_en: LanguageClient, haas_zh: LanguageClient, fanuc_en: LanguageClient
 ) -> None:
     said = await hover_text(haas_en, open_file(haas_en, PROGRAM), *G65_P9832)
-    assert said.startswith("**O9832** — Program: kept on the control")
-    assert "Haas NGC mill keeps O9000–O9999 there" in said  # the profile's, no machine file names them
+    assert said.startswith("**O9832** — Work probe on (Haas WIPS)")
+    assert "Program: kept on the control (Haas NGC mill keeps O9000–O9999 there" in said  # no machine file names them
     said = await hover_text(haas_zh, open_file(haas_zh, PROGRAM), *G65_P9832)
-    assert said.startswith("**O9832** — 程序: 存放在数控系统内") and "Haas NGC mill 的 O9000–O9999" in said
+    assert said.startswith("**O9832** — 工件测头开启（Haas WIPS）")
+    assert "程序: 存放在数控系统内" in said and "Haas NGC mill 的 O9000–O9999" in said
     assert await hover_text(fanuc_en, as_fanuc(fanuc_en), *G65_P9832) == "**O9832** — Program: not found"
 
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field, replace
 from functools import cache
 
 from ..bilingual import Detail, detail
-from .tables import CodeDoc, CommonRange, FunctionDoc, SystemVariable, SystemVariableName
+from .tables import CodeDoc, CommonRange, FunctionDoc, ProgramDoc, SystemVariable, SystemVariableName
 
 # G65 argument specification I (docs/semantics.md §5): letter -> local variable number.
 ARGUMENTS_I = {
@@ -197,13 +197,27 @@ class Dialect:
         """The row of ``[#_NAME]`` (``name`` without ``#_``, any case), or None."""
         return _tables(self.data_module)[4].get(name.upper()) if self.variable_names else None
 
+    def program_docs(self) -> tuple[ProgramDoc, ...]:
+        """The programs on the control that the data module documents (its ``PROGRAM_DOCS``;
+        empty for a module without them), in number order."""
+        return tuple(_tables(self.data_module)[5].values())
+
+    def program_doc(self, number: int) -> ProgramDoc | None:
+        """What the maker documents of program ``number`` kept on the control, or None."""
+        return _tables(self.data_module)[5].get(number)
+
     def functions(self) -> tuple[FunctionDoc, ...]:
         """The common functions, then the forms ``extra_functions`` adds (by name or signature)."""
         return _functions(self.extra_functions)
 
 
 _Tables = tuple[
-    tuple[SystemVariable, ...], list[int], tuple[CodeDoc, ...], tuple[CodeDoc, ...], dict[str, SystemVariableName]
+    tuple[SystemVariable, ...],
+    list[int],
+    tuple[CodeDoc, ...],
+    tuple[CodeDoc, ...],
+    dict[str, SystemVariableName],
+    dict[int, ProgramDoc],
 ]
 
 
@@ -212,7 +226,8 @@ def _tables(module: str) -> _Tables:
     mod = importlib.import_module(f"{__package__}.{module}")
     rows = tuple(sorted(mod.SYSTEM_VARIABLES, key=lambda r: r.first))
     names = {n.name: n for n in getattr(mod, "SYSTEM_VARIABLE_NAMES", ())}
-    return rows, [r.first for r in rows], tuple(mod.G_CODES), tuple(mod.M_CODES), names
+    programs = {p.number: p for p in sorted(getattr(mod, "PROGRAM_DOCS", ()), key=lambda p: p.number)}
+    return rows, [r.first for r in rows], tuple(mod.G_CODES), tuple(mod.M_CODES), names, programs
 
 
 @cache

@@ -145,3 +145,19 @@ class AlarmDoc:
     number: int
     en: str
     zh: str
+
+
+@dataclass(frozen=True, slots=True)
+class ProgramDoc:
+    """A program the control keeps in its own memory (a probing macro, say) as its maker documents
+    it: ``number`` (9811 for O9811), a short ``title`` and a paragraph ``en``/``zh`` on what it
+    does; ``arguments`` are the G65 letters it reads, each ``(letter, en, zh)``; ``results`` the
+    variables it writes for the caller, each ``(number, en, zh)``."""
+
+    number: int
+    title: str
+    title_zh: str
+    en: str
+    zh: str
+    arguments: tuple[tuple[str, str, str], ...] = ()
+    results: tuple[tuple[int, str, str], ...] = ()

@@ -5,8 +5,10 @@ for), G/M codes, functions and the GSK ``G65 Hm`` commands are described from th
 tables; a macro word written shortened (``WH``) shows the whole word; a local
 shows the argument letters that fill it (``machine.calls``); a common shows where it is
 written; an N label shows the jumps to it; an O program (or the P of a call) shows its title
-and file. Only the block under the cursor is parsed; the places come from each file's
-site index (``site_index.py``), in time proportional to how many there are.
+and file, or, for a program kept on the control that the profile documents (Haas's probing
+macros), what it does, the arguments it reads (those the call gives marked) and what it
+writes. Only the block under the cursor is parsed; the places come from each file's site index
+(``site_index.py``), in time proportional to how many there are.
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ from ..syntax.nodes import Abbreviation, Bracket, Call, CornerWord, NamedVar, Nu
 from ..syntax.walk import nodes_at
 from .call_sites import call_site
 from .cursor import Cursor, cursor_at
+from .program_docs import doc_lines
 from .site_index import workspace_sites
 from .sites import jump_sites, label_jumps, word_at
 from .texts import t
@@ -208,7 +211,10 @@ def label_hover(ls: CncMacroServer, cur: Cursor, label: int) -> str:
     return "\n".join(lines)
 
 
-def program_hover(ls: CncMacroServer, cur: Cursor, number: int | None, name: str | None) -> str:
+def program_hover(
+    ls: CncMacroServer, cur: Cursor, number: int | None, name: str | None, given: tuple[Word, ...] = ()
+) -> str:
+    """An O program or the program a call names (``given``: the call's argument words)."""
     loc = ls.locale
     found = ls.index.find_program(cur.doc, number, name)
     shown = f"O{number:04d}" if number is not None else f"[{name}]"
@@ -217,6 +223,10 @@ def program_hover(ls: CncMacroServer, cur: Cursor, number: int | None, name: str
         kept = dialect.programs_on_control
         ranges = ", ".join(f"O{a:04d}" if a == b else f"O{a:04d}–O{b:04d}" for a, b in kept)
         said = t("on_control", loc).format(title=dialect.title, ranges=ranges)
+        doc = dialect.program_doc(number)
+        if doc is not None:  # the maker documents it: what it does, reads and writes, then where it lives
+            lines = doc_lines(doc, loc, {w.letter for w in given})
+            return "\n".join([*lines, "", f"{t('program', loc)}: {said}"])
         return f"**{shown}** — {t('program', loc)}: {said}"
     if found is None:
         return f"**{shown}** — {t('program', loc)}: {t('not_found', loc)}"
@@ -232,7 +242,7 @@ def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
     dialect = cur.doc.dialect
     site = call_site(cur.block, dialect)
     if site is not None and word is site.p:
-        return program_hover(ls, cur, site.number, site.name)
+        return program_hover(ls, cur, site.number, site.name, site.arguments)
     if site is not None and word in site.arguments:
         targets = argument_targets([w.letter for w in site.arguments])
         k = next(i for i, w in enumerate(site.arguments) if w is word)

@@ -2,7 +2,8 @@
 
 The called program is found by the program library; the locals it reads are the ``#1``–``#33``
 its blocks mention outside an assignment's target; the letter that fills each comes from
-``machine.calls``. The active parameter is the argument being typed.
+``machine.calls``. The active parameter is the argument being typed. A program kept on the
+control that the profile documents (Haas's probing macros) shows its documented letters instead.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from ..library.programs import FoundProgram
 from ..machine.calls import argument_targets, letters_for_local
 from .call_sites import call_site
 from .cursor import cursor_at
+from .program_docs import signature
 from .sites import variable_sites
 from .texts import t
 
@@ -46,6 +48,12 @@ def register(server: CncMacroServer) -> None:
         if site is None or site.kind == "M98":
             return None
         found = ls.index.find_program(cur.doc, site.number, site.name)
+        before = [w for w in site.arguments if w.start < cur.column]
+        dialect = cur.doc.dialect
+        if found is None and site.number is not None and dialect.on_control(site.number):
+            documented = dialect.program_doc(site.number)
+            typed = before[-1].letter if before else None
+            return None if documented is None else signature(documented, ls.locale, typed)
         if found is None:
             return None
         reads = locals_read(found)
@@ -60,7 +68,6 @@ def register(server: CncMacroServer) -> None:
             params_.append(types.ParameterInformation(label=piece, documentation=doc))
         label = f"{found.label}(" + ", ".join(pieces) + ")"
         title = found.unit.title or ""
-        before = [w for w in site.arguments if w.start < cur.column]
         active = None
         if before:
             targets = argument_targets([w.letter for w in site.arguments])

@@ -24,6 +24,7 @@ from __future__ import annotations
 from .. import fanuc_data as fanuc
 from .. import shared_data as shared
 from ..dialect import ARGUMENTS_I
+from ..haas_programs_data import PROGRAM_DOCS as PROGRAM_DOCS  # the programs on the control, for hover
 from ..tables import CodeDoc, CommonRange, SystemVariable
 from .fanuc_0i import PROFILE as FANUC_0I
 
