@@ -8,7 +8,7 @@ what each covers and how to add one.
 
 from __future__ import annotations
 
-from .dialect import Dialect
+from .dialect import Dialect as Dialect
 from .registry import DEFAULT_PROFILE, all_profiles, names_and_aliases
 
 DEFAULT_DIALECT = DEFAULT_PROFILE

@@ -12,6 +12,7 @@ import importlib
 from bisect import bisect_right
 from dataclasses import dataclass, field, replace
 from functools import cache
+from typing import Any
 
 from ..bilingual import Detail, detail
 from .tables import CodeDoc, CommonRange, FunctionDoc, ProgramDoc, SystemVariable, SystemVariableName
@@ -129,9 +130,10 @@ class Dialect:
     extra_offset_variables: int = 7001
     extra_offset_count: int = 48
 
-    def configured(self, **changes: object) -> Dialect:
-        """This profile as one machine has it (a machine file's commons, digits and variables)."""
-        return replace(self, **changes)  # type: ignore[arg-type]
+    def configured(self, **changes: Any) -> Dialect:
+        """This profile as one machine has it (a machine file's commons, digits and variables).
+        ``changes`` are fields of ``Dialect`` by name; an unknown name is a ``TypeError``."""
+        return replace(self, **changes)
 
     def on_control(self, number: int) -> bool:
         """Whether program ``number`` lives on the control (the profile or a machine file says so)."""

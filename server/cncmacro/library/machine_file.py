@@ -47,8 +47,10 @@ import os
 import re
 import stat
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path, PureWindowsPath
+from typing import Literal, TypedDict
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -134,6 +136,32 @@ class MachineSettings:
                 f"'persistent_file' {self.persistent_file!r} 经链接指向 {target}，"
                 f"在机床设置文件所在文件夹 {root} 之外"))  # fmt: skip
         return p
+
+
+class _SettingsFields(TypedDict, total=False):
+    """The fields of ``MachineSettings`` a mapping gives, as they are gathered."""
+
+    dialect: str | None
+    common: tuple[tuple[int, int], ...] | None
+    program_digits: int | None
+    programs_on_control: tuple[tuple[int, int], ...]
+    system_variables: tuple[SystemVariable, ...]
+    decimal_point: str
+    block_delete: bool
+    persistent_file: str | None
+    max_blocks: int
+    date: int | None
+    time: int | None
+    variables: dict[int, float]
+    calls: dict[str, CallCode]
+    skip: dict[str, float]
+    severity: dict[str, str]
+    folder: str | None
+
+
+# what makes the error for a key of a mapping: the key and what is wrong with its value
+_Fail = Callable[[str, Detail], MachineFileError]
+_WHOLE_NUMBER_KEYS: tuple[Literal["max_blocks", "date", "time"], ...] = ("max_blocks", "date", "time")
 
 
 def load_machine_file(path: str | Path) -> MachineSettings:
@@ -249,7 +277,7 @@ def settings_from_mapping(
             names = ", ".join(sorted(known))
             raise fail(key, detail(f"is not a machine setting (known: {names})",
                                    f"不是机床设置项（可用的有：{names}）"))  # fmt: skip
-    kw: dict[str, object] = {"folder": folder}
+    kw: _SettingsFields = {"folder": folder}
     if "base" in data and "dialect" in data:
         raise fail("dialect", detail("names the profile as 'base' does: keep one of them",
                                      "与 'base' 一样指定系统类型，只保留其中一个"))  # fmt: skip
@@ -273,14 +301,16 @@ def settings_from_mapping(
     if "system_variables" in data:
         kw["system_variables"] = _system_variables(data["system_variables"], fail)
     if "decimal_point" in data:
-        if data["decimal_point"] not in ("calculator", "increment"):
+        point = data["decimal_point"]
+        if not isinstance(point, str) or point not in ("calculator", "increment"):
             raise fail("decimal_point", detail('must be "calculator" or "increment"',
                                                '必须是 "calculator" 或 "increment"'))  # fmt: skip
-        kw["decimal_point"] = data["decimal_point"]
+        kw["decimal_point"] = point
     if "block_delete" in data:
-        if not isinstance(data["block_delete"], bool):
+        block_delete = data["block_delete"]
+        if not isinstance(block_delete, bool):
             raise fail("block_delete", detail("must be true or false", "必须是 true 或 false"))
-        kw["block_delete"] = data["block_delete"]
+        kw["block_delete"] = block_delete
     if "persistent_file" in data:
         pf = data["persistent_file"]
         if (not isinstance(pf, str) or not pf or "\0" in pf or Path(pf).is_absolute()
@@ -288,7 +318,7 @@ def settings_from_mapping(
             raise fail("persistent_file", detail("must be a file name or a path inside the machine file's folder",
                                                  "必须是文件名，或机床设置文件所在文件夹之内的路径"))  # fmt: skip
         kw["persistent_file"] = pf
-    for key in ("max_blocks", "date", "time"):
+    for key in _WHOLE_NUMBER_KEYS:
         if key in data:
             v = data[key]
             if not isinstance(v, int) or isinstance(v, bool) or v < 0:
@@ -306,10 +336,10 @@ def settings_from_mapping(
         kw["skip"] = {str(k).upper(): float(v) for k, v in s.items()}
     if "severity" in data:
         kw["severity"] = _severity(data["severity"], fail)
-    return MachineSettings(**kw)  # type: ignore[arg-type]
+    return MachineSettings(**kw)
 
 
-def _common(value: object, profile: str, fail) -> tuple[tuple[int, int], ...]:  # type: ignore[no-untyped-def]
+def _common(value: object, profile: str, fail: _Fail) -> tuple[tuple[int, int], ...]:
     """``common``: a list of ``[first, last]`` ranges the profile allows, or the older single
     ``[first, last]`` below #500 (the volatile range; the profile's #500-#999 stay)."""
     dialect = get_dialect(profile)
@@ -349,7 +379,7 @@ def _common(value: object, profile: str, fail) -> tuple[tuple[int, int], ...]:  
     return tuple(ordered)
 
 
-def _program_ranges(value: object, fail) -> tuple[tuple[int, int], ...]:  # type: ignore[no-untyped-def]
+def _program_ranges(value: object, fail: _Fail) -> tuple[tuple[int, int], ...]:
     """``programs_on_control``: ``"O9000-O9999"``, ``"O8000"`` or a number, in a list."""
     bad = detail('must be a list of program numbers or ranges such as ["O9000-O9999", "O8000"]',
                  '必须是程序号或程序号范围的列表，如 ["O9000-O9999", "O8000"]')  # fmt: skip
@@ -375,7 +405,7 @@ def _program_ranges(value: object, fail) -> tuple[tuple[int, int], ...]:  # type
 _ACCESS = ("r", "w", "rw")
 
 
-def _system_variables(value: object, fail) -> tuple[SystemVariable, ...]:  # type: ignore[no-untyped-def]
+def _system_variables(value: object, fail: _Fail) -> tuple[SystemVariable, ...]:
     """``[[system_variables]]``: ``number`` (or ``numbers = [first, last]``), ``access``,
     ``en``, ``zh``, and optionally ``unit``."""
     if not isinstance(value, list) or not all(isinstance(x, dict) for x in value):
@@ -413,7 +443,7 @@ def _system_variables(value: object, fail) -> tuple[SystemVariable, ...]:  # typ
     return tuple(out)
 
 
-def _variables(table: object, fail) -> dict[int, float]:  # type: ignore[no-untyped-def]
+def _variables(table: object, fail: _Fail) -> dict[int, float]:
     if not isinstance(table, dict):
         raise fail("variables", detail("must be a table of number = value", "必须是 变量号 = 数值 形式的表"))
     out: dict[int, float] = {}
@@ -427,7 +457,7 @@ def _variables(table: object, fail) -> dict[int, float]:  # type: ignore[no-unty
     return out
 
 
-def _calls(table: object, fail) -> dict[str, CallCode]:  # type: ignore[no-untyped-def]
+def _calls(table: object, fail: _Fail) -> dict[str, CallCode]:
     if not isinstance(table, dict):
         raise fail("calls", detail("must be a table of code = program", "必须是 代码 = 程序号 形式的表"))
     out: dict[str, CallCode] = {}
@@ -452,7 +482,7 @@ def _calls(table: object, fail) -> dict[str, CallCode]:  # type: ignore[no-untyp
     return out
 
 
-def _severity(table: object, fail) -> dict[str, str]:  # type: ignore[no-untyped-def]
+def _severity(table: object, fail: _Fail) -> dict[str, str]:
     """``[severity]``: diagnostic code -> a severity or ``off``. Whether each code exists is
     checked where the diagnostics are made (the analysis layer knows the codes)."""
     if not isinstance(table, dict):

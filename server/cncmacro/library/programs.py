@@ -14,6 +14,7 @@ read as any file found in a folder is (``files.read_program``): regular files on
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -83,7 +84,7 @@ class ProgramLibrary:
 
     def __init__(
         self,
-        folders: list[str | Path] | None = None,
+        folders: Sequence[str | Path] | None = None,
         texts: dict[str, str] | None = None,
         cache: BlockCache | None = None,
     ) -> None:
