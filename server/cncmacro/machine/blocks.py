@@ -52,7 +52,7 @@ from .words import abbreviation_refused, missing_then
 if TYPE_CHECKING:
     from .machine import Machine
 
-Runner = Callable[[Any, int], int]
+Runner = Callable[["Machine", int], int]
 
 INTEGER_LETTERS = frozenset("MSTHDNOPLBEQ")
 AXIS_LETTERS = frozenset("XYZABCUVWIJKR")
@@ -227,7 +227,7 @@ class CompiledFile:
         s = block.statements[0] if len(block.statements) == 1 and not block.words else None
         if isinstance(s, (While, Do)):
 
-            def counted(m: Any, line: int) -> int:
+            def counted(m: Machine, line: int) -> int:
                 hook = m.on_loop_pass
                 if hook is not None:
                     loops = m.frames[-1].loops
@@ -255,7 +255,7 @@ class CompiledFile:
         local = kind == "local"
         path = self.file.path
 
-        def watched(m: Any, pc: int) -> int:
+        def watched(m: Machine, pc: int) -> int:
             nxt = run(m, pc)
             if local:
                 m.wrote_local(n)
@@ -300,7 +300,7 @@ class CompiledFile:
             else None
         )
 
-        def header(m: Any, pc: int) -> int:
+        def header(m: Machine, pc: int) -> int:
             if m.frame.found.unit.start != pc:
                 return m.end_of_program(pc)  # ran into the next program's header
             return rest(m, pc) if rest is not None else nxt
@@ -336,7 +336,7 @@ class CompiledFile:
             return run
         n = float(label)
 
-        def labelled(m: Any, pc: int) -> int:
+        def labelled(m: Machine, pc: int) -> int:
             m.codes["N"] = n
             return run(m, pc)
 
@@ -354,7 +354,7 @@ class CompiledFile:
                 target = self.values.value(s.goto)
                 jump = self.jump
 
-                def if_goto(m: Any, pc: int) -> int:
+                def if_goto(m: Machine, pc: int) -> int:
                     if test(m):
                         return jump(m.frame, pc, target(m))
                     return nxt
@@ -365,7 +365,7 @@ class CompiledFile:
             if self.machine.watching and isinstance(s.then, Assign):
                 then = self._reporting(s.then, then)
 
-            def if_then(m: Any, pc: int) -> int:
+            def if_then(m: Machine, pc: int) -> int:
                 return then(m, pc) if test(m) else nxt
 
             return if_then
@@ -390,7 +390,7 @@ class CompiledFile:
             kind = self.machine.kinds.kind(n)
             if kind == "local":
 
-                def set_local(m: Any, pc: int) -> int:
+                def set_local(m: Machine, pc: int) -> int:
                     v = value(m)
                     if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
                         raise MacroAlarm(
@@ -403,7 +403,7 @@ class CompiledFile:
                 return set_local
             if kind in ("common", "persistent"):
 
-                def set_common(m: Any, pc: int) -> int:
+                def set_common(m: Machine, pc: int) -> int:
                     v = value(m)
                     if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
                         raise MacroAlarm(
@@ -421,7 +421,7 @@ class CompiledFile:
                 )
             number = float(n)
 
-            def set_other(m: Any, pc: int) -> int:
+            def set_other(m: Machine, pc: int) -> int:
                 m.write(number, value(m), message)
                 return nxt
 
@@ -429,7 +429,7 @@ class CompiledFile:
         if isinstance(target, NamedVar):
             named = self.values.named(target, write=True)
 
-            def set_named(m: Any, pc: int) -> int:
+            def set_named(m: Machine, pc: int) -> int:
                 m.write(float(named(m)), value(m), message)
                 return nxt
 
@@ -437,7 +437,7 @@ class CompiledFile:
         assert isinstance(target, IndirectVar)
         index = self.values.value(target.index)
 
-        def set_indirect(m: Any, pc: int) -> int:
+        def set_indirect(m: Machine, pc: int) -> int:
             m.write(index(m), value(m), message)
             return nxt
 
@@ -466,7 +466,7 @@ class CompiledFile:
         after = self.next_line(end)
         test = self.values.condition(s.condition) if isinstance(s, While) else None
 
-        def head(m: Any, pc: int) -> int:
+        def head(m: Machine, pc: int) -> int:
             loops = m.frame.loops
             if not loops or loops[-1] != pc:
                 if len(loops) >= MAX_LOOP_DEPTH:
@@ -499,7 +499,7 @@ class CompiledFile:
                 detail(f"END {number} has no DO {number} before it", f"END {number} 之前没有对应的 DO {number}"),
             )
 
-        def end(m: Any, pc: int) -> int:
+        def end(m: Machine, pc: int) -> int:
             loops = m.frame.loops
             if not loops or loops[-1] != do:
                 raise MacroAlarm(
@@ -516,13 +516,16 @@ class CompiledFile:
     def output(self, s: Output, nxt: int) -> Runner:
         if s.command not in ("DPRNT", "BPRNT"):
             return lambda m, pc: nxt
-        parts: list[tuple[str | None, Getter | None, int | None, int | None]] = []
+        # the literal text, or the variable's getter with its format
+        parts: list[str | tuple[Getter, int | None, int | None]] = []
         for p in s.parts:
-            getter = self.values.value(p.variable) if p.variable is not None else None
-            parts.append((p.text, getter, p.digits, p.decimals))
+            if p.variable is not None:
+                parts.append((self.values.value(p.variable), p.digits, p.decimals))
+            else:
+                parts.append(p.text or "")
 
-        def dprnt(m: Any, pc: int) -> int:
-            text = "".join(t if g is None else format_value(g(m), a, b) for t, g, a, b in parts)  # type: ignore[misc]
+        def dprnt(m: Machine, pc: int) -> int:
+            text = "".join(p if isinstance(p, str) else format_value(p[0](m), p[1], p[2]) for p in parts)
             m.print_line(text, pc)
             return nxt
 
@@ -536,15 +539,15 @@ class CompiledFile:
         if value is None:
             return True, None
         if value.__class__ is Number and letter in AXIS_LETTERS and self.machine.settings.decimal_point != "increment":
-            text = value.text  # type: ignore[union-attr]
+            text = value.text
             dot = text.find(".")
             if dot < 0 or len(text) - dot <= 4:  # at most 3 decimals: already on the 0.001 grid
-                return True, value.value  # type: ignore[union-attr]
-        const, v = self.addresses.constant(w.value)
-        point = isinstance(w.value, Number) and w.value.has_point
+                return True, value.value
+        const, v = self.addresses.constant(value)
+        point = isinstance(value, Number) and value.has_point
         if const:
             return True, self.round_for(letter, v, literal=True, point=point)
-        getter = self.addresses.value(w.value)
+        getter = self.addresses.value(value)
         round_for = self.round_for
         return False, lambda m: round_for(letter, getter(m), literal=False, point=True)
 
@@ -565,7 +568,7 @@ class CompiledFile:
         return nc_blocks.compile_nc_block(self, block, pc, nxt)
 
 
-def _end_of_file(m: Any, pc: int) -> int:
+def _end_of_file(m: Machine, pc: int) -> int:
     return m.end_of_program(pc)
 
 

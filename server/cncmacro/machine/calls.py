@@ -8,6 +8,7 @@ values, raising ``MacroAlarm`` for what the control refuses; the machine does th
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from ..bilingual import detail
@@ -49,10 +50,12 @@ def codes_before_call(words: list[tuple[str, float | None]], dialect: Dialect) -
     groups = g_code_groups(dialect)
     codes: list[float] = []
     for letter, value in words:
-        group = groups.get(value) if letter == "G" and value is not None else None
+        if letter != "G" or value is None:
+            return None
+        group = groups.get(value)
         if group is None or group == "macro":
             return None
-        codes.append(value)  # type: ignore[arg-type]
+        codes.append(value)
     return codes
 
 
@@ -66,7 +69,7 @@ class Arguments:
     remarks: list[str] = field(default_factory=list)
 
 
-def map_arguments(words: list[tuple[str, float | None]], dialect: Dialect) -> Arguments:
+def map_arguments(words: Sequence[tuple[str, float | None]], dialect: Dialect) -> Arguments:
     """Locals for the argument words of a G65/G66 block (P, L and the G code removed)."""
     out = Arguments()
     counts = {"I": 0, "J": 0, "K": 0}

@@ -15,7 +15,7 @@ import re
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 from ..bilingual import Detail, detail, in_language
 from ..syntax.block_parser import parse_block
@@ -26,6 +26,8 @@ from .variables import StopRequest
 
 if TYPE_CHECKING:
     from .machine import Machine
+
+_T = TypeVar("_T")
 
 Value = float | None
 
@@ -115,7 +117,7 @@ def in_level(machine: Machine, level: int | None) -> Iterator[None]:
         machine.L = saved
 
 
-def _guarded(machine: Machine, level: int | None, action: Callable[[], object]) -> object:
+def _guarded(machine: Machine, level: int | None, action: Callable[[], _T]) -> _T:
     with in_level(machine, level):
         try:
             return action()
@@ -136,7 +138,7 @@ def value_of(machine: Machine, compiled: CompiledText, level: int | None = None)
     """The value of a compiled expression at this moment."""
     assert compiled.value is not None
     getter = compiled.value
-    return _guarded(machine, level, lambda: getter(machine))  # type: ignore[return-value]
+    return _guarded(machine, level, lambda: getter(machine))
 
 
 def holds(machine: Machine, compiled: CompiledText, level: int | None = None) -> bool:
@@ -174,7 +176,7 @@ def assign(machine: Machine, text: str, level: int | None = None) -> tuple[int, 
         machine.write(float(n), v, statement.message)
         return n, machine.read(float(n)) if machine.kinds.kind(n) != "none" else v
 
-    return _guarded(machine, level, run)  # type: ignore[return-value]
+    return _guarded(machine, level, run)
 
 
 def set_variable(machine: Machine, number: int, text: str, level: int | None = None) -> Value:
@@ -185,4 +187,4 @@ def set_variable(machine: Machine, number: int, text: str, level: int | None = N
         machine.write(float(number), value)
         return machine.read(float(number))
 
-    return _guarded(machine, level, run)  # type: ignore[return-value]
+    return _guarded(machine, level, run)

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Literal, overload
 
 from ..bilingual import detail
 from ..dialects import BY_NAME
@@ -34,10 +34,11 @@ from .variables import named_number
 if TYPE_CHECKING:
     from ..dialects import Dialect
     from ..dialects.tables import CommonRange
+    from .machine import Machine
 
 Value = float | None
-Getter = Callable[[Any], Value]
-Test = Callable[[Any], bool]
+Getter = Callable[["Machine"], Value]
+Test = Callable[["Machine"], bool]
 
 MAX_BRACKETS = 5
 # A chain of more binary operators than this (``1+1+1+...``) is compiled as a loop over its
@@ -163,12 +164,12 @@ class ExpressionCompiler:
         if isinstance(node, IndirectVar):
             index = self._value(node.index)
 
-            def indirect(m: Any) -> Value:
+            def indirect(m: Machine) -> Value:
                 return m.read(index(m))
 
             return indirect
         if isinstance(node, NamedVar):
-            return self.named(node, write=False)  # type: ignore[return-value]
+            return self.named(node, write=False)
         if isinstance(node, Bracket):
             while isinstance(node, Bracket):  # nested brackets need no closure each
                 node = node.inner
@@ -219,7 +220,12 @@ class ExpressionCompiler:
             self.dialect.missing_variable(n),
         )
 
-    def named(self, node: NamedVar, write: bool) -> Callable[[Any], Any]:
+    @overload
+    def named(self, node: NamedVar, write: Literal[False]) -> Getter: ...
+    @overload
+    def named(self, node: NamedVar, write: Literal[True]) -> Callable[[Machine], int]: ...
+
+    def named(self, node: NamedVar, write: bool) -> Getter | Callable[[Machine], int]:
         """For a read (``write`` False): a closure giving the value of ``[#_NAME[n]]``. For a
         write: a closure giving the variable number it stands for. A dialect without names
         compiles it to alarm 114; the number itself is decided by ``named_number``."""
@@ -246,7 +252,7 @@ class ExpressionCompiler:
 
     @staticmethod
     def _watched_local(n: int, line: int) -> Getter:
-        def watched(m: Any) -> Value:
+        def watched(m: Machine) -> Value:
             v = m.L[n]
             if v is None:
                 m.vacant_local(n, line)
@@ -265,7 +271,7 @@ class ExpressionCompiler:
         inner = self._value(x)
         order = tuple(reversed(negate))
 
-        def signs(m: Any) -> Value:
+        def signs(m: Machine) -> Value:
             v = inner(m)
             for neg in order:
                 v = -(v or 0.0) if neg else (v or 0.0)
@@ -283,15 +289,17 @@ class ExpressionCompiler:
             steps.append((x.op, self._value(x.right)))
             x = x.left
         first = self._value(x)
-        apply = tuple((_STEP.get(op), op, b) for op, b in reversed(steps))
-        for fn, op, _b in apply:
+        apply: list[tuple[Callable[[Value, Value], Value], Getter]] = []
+        for op, b in reversed(steps):
+            fn = _STEP.get(op)
             if fn is None:
                 return raiser(FORMAT, detail(f"unknown operator {op}", f"未知的运算符 {op}"))
+            apply.append((fn, b))
 
-        def chain(m: Any) -> Value:
+        def chain(m: Machine) -> Value:
             v = first(m)
-            for fn, _op, b in apply:
-                v = fn(v, b(m))  # type: ignore[misc]
+            for fn, b in apply:
+                v = fn(v, b(m))
             return v
 
         return chain
@@ -301,7 +309,8 @@ class ExpressionCompiler:
         rc, rv = self.constant(node.right)
         left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local" and not self.watch
         if op in ("+", "-", "*") and left_local and rc:
-            n = node.left.number  # type: ignore[union-attr]
+            assert isinstance(node.left, Var)
+            n = node.left.number
             c = rv or 0.0
             if op == "+":
                 return lambda m: (m.L[n] or 0.0) + c
@@ -324,7 +333,7 @@ class ExpressionCompiler:
             return lambda m: (a(m) or 0.0) * (b(m) or 0.0)
         if op == "/":
 
-            def divide(m: Any) -> Value:
+            def divide(m: Machine) -> Value:
                 d = b(m)
                 if not d:
                     raise MacroAlarm(
@@ -338,7 +347,7 @@ class ExpressionCompiler:
             return divide
         if op == "MOD":
 
-            def modulo(m: Any) -> Value:
+            def modulo(m: Machine) -> Value:
                 d = b(m)
                 if not d:
                     raise MacroAlarm(DIVISION_BY_ZERO, detail("MOD by zero", "MOD 的除数为零"))
@@ -348,7 +357,7 @@ class ExpressionCompiler:
         if op in ("AND", "OR", "XOR"):
             bitop = _BITWISE[op]
 
-            def bitwise(m: Any) -> Value:
+            def bitwise(m: Machine) -> Value:
                 x = _whole(a(m) or 0.0)
                 y = _whole(b(m) or 0.0)
                 return float(bitop(x, y))
@@ -367,7 +376,7 @@ class ExpressionCompiler:
         if name == "ATAN" and len(args) == 2:
             y, x = args
 
-            def atan2(m: Any) -> Value:
+            def atan2(m: Machine) -> Value:
                 a = y(m) or 0.0
                 b = x(m) or 0.0
                 if a == 0 and b == 0:
@@ -381,7 +390,7 @@ class ExpressionCompiler:
         if name == "ROUND" and self.in_address:
             return lambda m: to_increment(arg(m) or 0.0)
 
-        def call(m: Any) -> Value:
+        def call(m: Machine) -> Value:
             return f(arg(m) or 0.0)
 
         return call
@@ -438,7 +447,8 @@ class ExpressionCompiler:
         left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local" and not self.watch
         exact = op in ("EQ", "NE") and self.dialect.vacant_differs_in_eq
         if left_local and rc and not exact:
-            n = node.left.number  # type: ignore[union-attr]
+            assert isinstance(node.left, Var)
+            n = node.left.number
             c = rv or 0.0
             if op == "LT":
                 return lambda m: (m.L[n] or 0.0) < c
@@ -511,7 +521,7 @@ def call_problem(node: Call, dialect: Dialect) -> tuple[str, str] | None:
 def _pow(args: list[Getter], comma: bool) -> Getter:
     base, exponent = args
 
-    def power(m: Any) -> Value:
+    def power(m: Machine) -> Value:
         a = base(m) or 0.0
         b = exponent(m) or 0.0
         if (a < 0 and b != int(b)) or (a == 0 and b < 0):

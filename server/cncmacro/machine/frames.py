@@ -9,10 +9,14 @@ snapshots, so everything in them is a plain value or a list the snapshot copies.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from ..library.programs import FoundProgram
+from .alarms import CallSite
 from .numbers import format_plain
+
+if TYPE_CHECKING:
+    from .blocks import CompiledFile
 
 MODE_NAMES = {0.0: "G00", 1.0: "G01", 2.0: "G02", 3.0: "G03", 31.0: "G31"}
 
@@ -23,7 +27,7 @@ class Frame:
     line to continue at; ``loops`` the DO lines of the loops that are running, innermost last."""
 
     found: FoundProgram
-    code: Any  # the CompiledFile the frame runs
+    code: CompiledFile
     pc: int
     kind: str  # "main", "G65", "G66", "M98", or the calling code ("M50", "G100", "T")
     locals: list[float | None]
@@ -35,7 +39,7 @@ class Frame:
     arguments: dict[int, float | None] = field(default_factory=dict)
     letters: dict[int, str] = field(default_factory=dict)  # local number -> argument letter
     loops: list[int] = field(default_factory=list)
-    modal: Any = None  # the ModalCall that made this frame, if a G66 did
+    modal: ModalCall | None = None  # the ModalCall that made this frame, if a G66 did
     written: set[int] | None = None  # analysis runs: the locals this macro level assigned itself
 
     @property
@@ -106,4 +110,4 @@ class Note:
     file: str
     line: int
     subject: str | None = None  # e.g. "repeat-count" for a clamped L
-    chain: tuple[Any, ...] = ()  # the CallSites that led there, main program first
+    chain: tuple[CallSite, ...] = ()  # the calls that led there, main program first

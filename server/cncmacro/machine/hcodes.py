@@ -20,6 +20,7 @@ from .numbers import bcd, bin_, round_half_away
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile, Runner
+    from .machine import Machine
 
 
 def _div(j: float, k: float) -> float:
@@ -120,7 +121,7 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int, block: Block |
             base = cf.machine.dialect.macro_alarm_base
             text = h99_message(block.comment_after(p_word.end)) if block is not None else None
 
-            def alarm(m: Any, pc: int) -> int:
+            def alarm(m: Machine, pc: int) -> int:
                 n = _int(target(m) or 0.0)
                 raise MacroAlarm(
                     base + n,
@@ -131,7 +132,7 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int, block: Block |
         test = BRANCHES[h]
         jump = cf.jump
 
-        def branch(m: Any, pc: int) -> int:
+        def branch(m: Machine, pc: int) -> int:
             if test(q(m), r(m)):
                 return jump(m.frame, pc, target(m))
             return nxt
@@ -154,7 +155,7 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int, block: Block |
     if h == 26:
         dest_value = cf.values.value(destination)
 
-        def scale(m: Any, pc: int) -> int:
+        def scale(m: Machine, pc: int) -> int:
             k = r(m)
             if k == 0:
                 raise MacroAlarm(
@@ -172,7 +173,7 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int, block: Block |
             detail(f"G65 H{h:02d} is not an operation of this control", f"G65 H{h:02d} 不是本系统的运算命令"),
         )
 
-    def arithmetic(m: Any, pc: int) -> int:
+    def arithmetic(m: Machine, pc: int) -> int:
         m.write(where(m), op(q(m), r(m)))
         return nxt
 

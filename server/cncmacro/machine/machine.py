@@ -713,8 +713,9 @@ class Machine(VariableAccess, Motion):
         out: dict[int, float] = {}
         level0 = self.frames[0].locals if self.frames else self.L
         for n in range(1, 34):
-            if level0[n] is not None:
-                out[n] = level0[n]  # type: ignore[assignment]
+            v = level0[n]
+            if v is not None:
+                out[n] = v
         for r in self.kinds.ranges:
             for n in range(r.first, r.last + 1):
                 v = self.C[n] if n < 1000 else self.S.get(n)

@@ -35,6 +35,25 @@ WORK_BASE = 5201  # external offset of axis 1; G54 is +20, G55 +40 ... (both dia
 G54_1_BASE = 7001  # G54.1 P1 axis 1; each P adds 20 (fanuc; ``Dialect.extra_offset_variables``)
 LATHE_CYCLES_WITH_PROFILE = (71.0, 72.0, 73.0)
 _new_move = tuple.__new__  # a Move without the NamedTuple constructor's keyword handling
+# a block of plain motion decided once (``Motion.plain_plan``): modal settings (group, G), F and S,
+# absolute axes (index, value), incremental axes, and the arc words R I J K
+PlainPlan = tuple[
+    tuple[tuple[str, float], ...],
+    tuple[tuple[str, float], ...],
+    tuple[tuple[int, float], ...],
+    tuple[tuple[int, float], ...],
+    tuple[tuple[str, float], ...],
+]
+# a plan with the file and the next line appended, as a plain line's runner holds it
+PlainRun = tuple[
+    tuple[tuple[str, float], ...],
+    tuple[tuple[str, float], ...],
+    tuple[tuple[int, float], ...],
+    tuple[tuple[int, float], ...],
+    tuple[tuple[str, float], ...],
+    str,
+    int,
+]
 _NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length"))
 _CANCEL_CYCLE = ("canned", 80.0)  # on a mill, G00-G03 cancel a drilling cycle (group 01 over group 09)
 _CENTRE_LETTERS = frozenset("RIJK")  # arc radius and centre: kept for a canned cycle's R level
@@ -105,7 +124,7 @@ class Motion:
         return 0.0
 
     # ---------------------------------------------------------------- plain motion
-    def plain_text_plan(self, text: str) -> tuple[Any, ...] | None:
+    def plain_text_plan(self, text: str) -> PlainPlan | None:
         """``plain_plan`` read straight from a ``Block.plain`` line: whitespace-separated
         address-number words with at most three decimals, so that a literal axis value is
         already on the grid (docs/semantics.md §2). None when the line is not plain motion or its
@@ -178,7 +197,7 @@ class Motion:
         self._plain_kinds = kinds
         return kinds
 
-    def plain_plan(self, words: list[tuple[str, float]]) -> tuple[Any, ...] | None:
+    def plain_plan(self, words: list[tuple[str, float]]) -> PlainPlan | None:
         """For a block of literal words that only sets modal codes, F or S and moves axes:
         (modal settings, codes, absolute axes, incremental axes, arc words R I J K), decided
         once; None for anything else (one-shot G codes, canned cycles, tools), which
@@ -210,7 +229,7 @@ class Motion:
                 return None
         return tuple(modal), tuple(codes), tuple(axes), tuple(inc), tuple(extra)
 
-    def run_plain(self, plan: tuple[Any, ...], line: int) -> bool:
+    def run_plain(self, plan: PlainRun, line: int) -> bool:
         """Carry out a ``plain_plan`` with its file and next line appended; returns whether
         the block counts as a move for a G66 call (``execute_nc``)."""
         modal_sets, code_sets, axes, inc, _, file, _ = plan
@@ -244,7 +263,7 @@ class Motion:
         self._record(file, line, mode, tuple(start), tuple(target), centre)
         return not self._call_needs_distance or target != start or centre is not None
 
-    def _cycle_fallback(self, plan: tuple[Any, ...], file: str, line: int) -> bool:
+    def _cycle_fallback(self, plan: PlainRun, file: str, line: int) -> bool:
         inverse = {v: k for k, v in self.dialect.incremental_letters.items()}
         words = [(self.dialect.axes[i], v) for i, v in plan[2]]
         words += [(inverse[self.dialect.axes[i]], v) for i, v in plan[3]]
@@ -452,13 +471,13 @@ class Motion:
             target = self._target(axes, inc)
             start = list(self.pos)
             for letter, fire in self.settings.skip.items():
-                i = self.axis_index.get(letter)
+                j = self.axis_index.get(letter)
                 if (
-                    i is not None
-                    and min(start[i], target[i]) <= fire <= max(start[i], target[i])
-                    and start[i] != target[i]
+                    j is not None
+                    and min(start[j], target[j]) <= fire <= max(start[j], target[j])
+                    and start[j] != target[j]
                 ):
-                    t = (fire - start[i]) / (target[i] - start[i])
+                    t = (fire - start[j]) / (target[j] - start[j])
                     target = [a + (b - a) * t for a, b in zip(start, target, strict=True)]
                     break
             self._move(file, line, 31.0, target)

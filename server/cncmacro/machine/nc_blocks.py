@@ -22,6 +22,8 @@ from .words import g_code_known, m_decimal_point, unknown_g_code
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile, Runner
+    from .machine import Machine
+    from .motion import PlainPlan, PlainRun
 
 CONTROL_M = {98.0, 99.0, 30.0, 2.0, 0.0, 198.0}
 
@@ -43,7 +45,7 @@ def compile_nc_block(cf: CompiledFile, block: Block, pc: int, nxt: int) -> Runne
         rest = [w for w in words if _literal_g(w) != 67.0]
         inner = _nc(cf, block, rest, nxt) if rest else None
 
-        def cancel(m: Any, pc: int) -> int:
+        def cancel(m: Machine, pc: int) -> int:
             m.cancel_modal_call()
             return inner(m, pc) if inner is not None else nxt
 
@@ -68,7 +70,7 @@ def _plain_motion(cf: CompiledFile, block: Block, nxt: int) -> Runner | None:
         if value.__class__ is not Number:
             return None
         letter = w.letter
-        if letter == "G" and calls and f"G{value.value:g}" in calls:  # type: ignore[union-attr]
+        if letter == "G" and calls and f"G{value.value:g}" in calls:
             return None
         v = cf.word_value(w)[1]
         if v is None:
@@ -78,13 +80,13 @@ def _plain_motion(cf: CompiledFile, block: Block, nxt: int) -> Runner | None:
     return None if plan is None else _plan_runner(cf, plan, nxt)
 
 
-def _plan_runner(cf: CompiledFile, plan: tuple[Any, ...], nxt: int) -> Runner:
+def _plan_runner(cf: CompiledFile, plan: PlainPlan, nxt: int) -> Runner:
     """The runner of a plain-motion line: the plan (with its file and next line appended)
     bound to one shared function, which costs far less memory than a closure per line."""
     return partial(_run_plain_line, (*plan, cf.file.path, nxt))
 
 
-def _run_plain_line(plan: tuple[Any, ...], m: Any, pc: int) -> int:
+def _run_plain_line(plan: PlainRun, m: Machine, pc: int) -> int:
     if m.run_plain(plan, pc) and m.modal_calls:
         return m.modal_call(pc, plan[6])
     return plan[6]
@@ -138,7 +140,7 @@ def _macro_call(cf: CompiledFile, block: Block, words: list[Word], at: int, g: f
 
     path = cf.file.path
 
-    def evaluate(m: Any, pc: int) -> tuple[Any, Any, int]:
+    def evaluate(m: Machine, pc: int) -> tuple[Any, Any, int]:
         if before:
             m.execute_nc(before, path, pc)
         found = resolve(m)
@@ -153,13 +155,13 @@ def _macro_call(cf: CompiledFile, block: Block, words: list[Word], at: int, g: f
 
     if g == 65.0:
 
-        def g65(m: Any, pc: int) -> int:
+        def g65(m: Machine, pc: int) -> int:
             found, arguments, repeats = evaluate(m, pc)
             return m.macro_call(found, arguments, repeats, pc, nxt, "G65")
 
         return g65
 
-    def g66(m: Any, pc: int) -> int:
+    def g66(m: Machine, pc: int) -> int:
         found, arguments, repeats = evaluate(m, pc)
         m.set_modal_call(found, arguments, repeats)
         return nxt
@@ -186,10 +188,11 @@ def _program_resolver(cf: CompiledFile, p_word: Word | None, name: str) -> Any:
         text = p_word.name
         return lambda m: m.find_program_named(text)
     value = p_word.value
+    assert value is not None  # a word without a value has a name
     if isinstance(value, Bracket) and dialect.bracket_names and isinstance(value.inner, Var):
         get_bracket = cf.values.value(value.inner)
         return lambda m: m.find_program(macro_program_number(get_bracket(m), dialect))
-    get = cf.values.value(value)  # type: ignore[arg-type]
+    get = cf.values.value(value)
     return lambda m: m.find_program(macro_program_number(get(m), dialect))
 
 
@@ -226,7 +229,7 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
     if all_constant and not control and not dynamic_m and not call_codes:
         plain = [(letter, v) for letter, v in constant if v is not None]
 
-        def motion(m: Any, pc: int) -> int:
+        def motion(m: Machine, pc: int) -> int:
             moved, skip_to = m.execute_nc(plain, file_path, pc)
             return _after_nc(m, moved, skip_to, pc, nxt)
 
@@ -249,7 +252,7 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
     get_bracket = cf.values.value(p_bracket_var) if p_bracket_var is not None and dialect.bracket_names else None
     check_g = strict and any(letter == "G" and get is not None for letter, _, get in items)
 
-    def general(m: Any, pc: int) -> int:
+    def general(m: Machine, pc: int) -> int:
         values: list[tuple[str, float]] = []
         for letter, const, get in items:
             v = get(m) if get is not None else const
@@ -315,7 +318,7 @@ def _refused(w: Word, value: float | None, dialect: Any, calls: Any) -> Runner |
     return raiser(DECIMAL_POINT, point) if point is not None else None
 
 
-def _after_nc(m: Any, moved: bool, skip_to: float | None, pc: int, nxt: int) -> int:
+def _after_nc(m: Machine, moved: bool, skip_to: float | None, pc: int, nxt: int) -> int:
     """Where a block goes after its NC words ran: a G66 call after a move, past a lathe
     cycle's profile, or on to the next line."""
     if moved and m.modal_calls:

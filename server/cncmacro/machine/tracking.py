@@ -27,17 +27,20 @@ from .straight_runs import run_straight
 from .variables import StopRequest
 
 if TYPE_CHECKING:
+    from .blocks import CompiledFile
     from .machine import Machine, Snapshot
 
 CANCEL_CHECK = 4096
 
 
-def track_list(m: Machine, cf: Any) -> list[int]:
+def track_list(m: Machine, cf: CompiledFile) -> list[int]:
     """The per-line serials of ``cf``'s file (made, all -1, the first time the file runs)."""
+    runs = m.last_run
+    assert runs is not None  # a tracked run is one that keeps them
     path = cf.file.path
-    trk = m.last_run.get(path)
+    trk = runs.get(path)
     if trk is None or len(trk) != len(cf.code):
-        trk = m.last_run[path] = [-1] * len(cf.code)
+        trk = runs[path] = [-1] * len(cf.code)
     return trk
 
 

@@ -79,9 +79,9 @@ def unknown_g_code(shown: str, dialect: Dialect) -> Detail:
 def m_decimal_point(word: Word) -> Detail | None:
     """What to say of an M code written with a decimal point (``M30.``), or None."""
     value = word.value
-    if word.letter != "M" or value.__class__ is not Number or not value.has_point:  # type: ignore[union-attr]
+    if word.letter != "M" or value.__class__ is not Number or not value.has_point:
         return None
-    text = value.text  # type: ignore[union-attr]
+    text = value.text
     whole = text.split(".")[0] or "0"
     return detail(
         f"M{text}: an M code takes no decimal point (alarm 007 illegal use of decimal point); write M{whole}",
