@@ -99,6 +99,17 @@ def test_6_assignments_from_the_console_get_every_check_of_a_program_line():
     assert m.status == "paused"
 
 
+def test_2_a_named_variable_set_from_the_console_is_the_one_a_program_line_sets():
+    # [#_OFSHW[2]] is #10002 on the 30i: the console writes there, not to the local #2, and a
+    # name without a subscript ([#_CLOCK1], #3001) is written as a program line writes it
+    m = machine(lines("O0001", "[#_OFSHW[2]]=7", "#2=1", "M30"), "fanuc-30i")
+    m.run_until(lambda mm: mm.blocks >= 2)
+    assert m.S.get(10002) == 7 and m.L[2] == 1
+    assert assign(m, "[#_OFSHW[2]]=5") == (10002, 5)
+    assert m.S.get(10002) == 5 and m.L[2] == 1
+    assert assign(m, "[#_CLOCK1]=0")[0] == 3001
+
+
 def test_2_setting_a_variable_to_vacant_and_to_an_expression():
     m = stopped_in_macro()
     assert set_variable(m, 2, "") is None and m.L[2] is None

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, TypeVar
 
 from ..bilingual import Detail, detail, in_language
 from ..syntax.block_parser import parse_block
-from ..syntax.nodes import Assign, Block, If, Var
+from ..syntax.nodes import Assign, Block, If, NamedVar, Var
 from .alarms import MacroAlarm
 from .expressions import ExpressionCompiler, Getter, Test
 from .variables import StopRequest
@@ -168,7 +168,15 @@ def assign(machine: Machine, text: str, level: int | None = None) -> tuple[int, 
     compiler = ExpressionCompiler(machine.kinds)
     value = compiler.value(statement.value)
     target = statement.target
-    index = (lambda m: float(target.number)) if isinstance(target, Var) else compiler.value(target.index)
+    index: Getter
+    if isinstance(target, Var):
+        number = float(target.number)
+        index = lambda m: number  # noqa: E731
+    elif isinstance(target, NamedVar):  # [#_NAME[n]]: the number the name stands for, as a program line takes it
+        named = compiler.named(target, write=True)
+        index = lambda m: float(named(m))  # noqa: E731
+    else:
+        index = compiler.value(target.index)
 
     def run() -> tuple[int, Value]:
         n = machine.variable_number(index(machine))
