@@ -54,7 +54,7 @@ def check_words(block: Block, ctx: LineContext, facts: LineFacts) -> None:
 
 def _literal(w: Word) -> float | None:
     v = w.value
-    return v.value if v.__class__ is Number else None  # type: ignore[union-attr]
+    return v.value if v.__class__ is Number else None
 
 
 def _constant(w: Word | None, ctx: LineContext) -> float | None:
@@ -431,7 +431,8 @@ def _local_call(words: tuple[Word, ...], code: float, ctx: LineContext, facts: L
              f"{how} 需要用 P 指定调用的 N 程序段（报警 128）", ctx)  # fmt: skip
         return
     before = len(facts.jumps)
-    literal_jump(p_word.value, f"{how} P", ctx, facts)  # a literal label in range, or label-range
+    if p_word.value is not None:  # a literal label in range, or label-range (not P[NAME])
+        literal_jump(p_word.value, f"{how} P", ctx, facts)
     if len(facts.jumps) > before:
         jump = facts.jumps.pop()
         facts.calls.append(CallSite(how, None, None, p_word.start, p_word.end, jump.label, (jump.start, jump.end), "P"))

@@ -36,6 +36,7 @@ import time
 from bisect import bisect_left
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from operator import itemgetter
 from pathlib import Path
 
 from ..bilingual import in_language
@@ -297,22 +298,22 @@ class EntryRun:
         del st.order[cut:]
         for path in [p for p, s in st.file_first.items() if s >= at]:
             del st.file_first[path]
-        for path, (lines, steps) in list(st.reach.items()):
+        for path, (reached, steps) in list(st.reach.items()):
             k = bisect_left(steps, at)
             if k == 0:
                 del st.reach[path]
             else:
-                del lines[k:]
+                del reached[k:]
                 del steps[k:]
         vacant = self.state.vacant
         for key in [k for k, v in vacant.items() if v.stamp >= at]:
             del vacant[key]
-        for lines in self.state.written.values():
-            for line in [line for line, h in lines.items() if h[-1][0] >= at]:
-                h = lines[line]
-                del h[bisect_left(h, (at,)) :]
+        for written in self.state.written.values():
+            for line in [line for line, h in written.items() if h[-1][0] >= at]:
+                h = written[line]
+                del h[bisect_left(h, at, key=itemgetter(0)) :]
                 if not h:
-                    del lines[line]
+                    del written[line]
 
     def reset_file(self, path: str) -> None:
         """The file's text changed in structure or length: compile it afresh when it runs."""

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 from bisect import bisect_left, bisect_right
 from dataclasses import dataclass, field
+from operator import itemgetter
 from typing import TYPE_CHECKING, Any
 
 from ..machine import Snapshot
@@ -244,11 +245,11 @@ def _merge_records(run: EntryRun, e: Earlier, bj: int, conv: int, delta: int,
         if read.stamp >= bj and key not in st.vacant:
             read.stamp += delta
             st.vacant[key] = read
-    for path, od in old.written.items():
+    for path, ow in old.written.items():
         cw = st.written.setdefault(path, {})
-        for line, h in od.items():
+        for line, h in ow.items():
             if h[-1][0] >= bj:
-                later = [(w[0] + delta, w[1], w[2]) for w in h[bisect_left(h, (bj,)) :]]
+                later = [(w[0] + delta, w[1], w[2]) for w in h[bisect_left(h, bj, key=itemgetter(0)) :]]
                 mine = cw.get(line)
                 cw[line] = later if mine is None else mine + later
 

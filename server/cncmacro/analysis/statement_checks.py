@@ -46,28 +46,27 @@ def check_statements(block: Block, ctx: LineContext, facts: LineFacts) -> None:
 
 def _statement(s: Statement, ctx: LineContext, facts: LineFacts) -> None:
     out = facts.findings
-    cls = s.__class__
-    if cls is Assign:
-        check_write(s.target, ctx, out)  # type: ignore[union-attr]
-        scan_value(s.value, ctx, out)  # type: ignore[union-attr]
-    elif cls is If:
-        scan_value(s.condition, ctx, out)  # type: ignore[union-attr]
-        if s.implicit_then and not ctx.dialect.if_without_then:  # type: ignore[union-attr]
-            then = s.then  # type: ignore[union-attr]
+    if s.__class__ is Assign:
+        check_write(s.target, ctx, out)
+        scan_value(s.value, ctx, out)
+    elif s.__class__ is If:
+        scan_value(s.condition, ctx, out)
+        then = s.then
+        if s.implicit_then and then is not None and not ctx.dialect.if_without_then:
             message = in_language(missing_then(ctx.dialect), is_chinese(ctx.locale))
             out.append(Finding(then.start, then.end, "error", "dialect-feature", message))
-        if s.goto is not None:  # type: ignore[union-attr]
-            scan_value(s.goto, ctx, out)  # type: ignore[union-attr]
-            literal_jump(s.goto, "GOTO ", ctx, facts)  # type: ignore[union-attr]
-        elif s.then is not None:  # type: ignore[union-attr]
-            _statement(s.then, ctx, facts)  # type: ignore[union-attr]
-    elif cls is Goto:
-        scan_value(s.target, ctx, out)  # type: ignore[union-attr]
-        literal_jump(s.target, "GOTO ", ctx, facts)  # type: ignore[union-attr]
-    elif cls is While:
-        scan_value(s.condition, ctx, out)  # type: ignore[union-attr]
-    elif cls is Output:
-        for part in s.parts:  # type: ignore[union-attr]
+        if s.goto is not None:
+            scan_value(s.goto, ctx, out)
+            literal_jump(s.goto, "GOTO ", ctx, facts)
+        elif s.then is not None:
+            _statement(s.then, ctx, facts)
+    elif s.__class__ is Goto:
+        scan_value(s.target, ctx, out)
+        literal_jump(s.target, "GOTO ", ctx, facts)
+    elif s.__class__ is While:
+        scan_value(s.condition, ctx, out)
+    elif s.__class__ is Output:
+        for part in s.parts:
             if part.variable is not None:
                 scan_value(part.variable, ctx, out)
 

@@ -16,6 +16,8 @@ coordinates of a 100k-line program so costs no label check at all.
 
 from __future__ import annotations
 
+from typing import TypeVar
+
 from ..bilingual import in_language
 from ..dialects.dialect import Dialect
 from ..library.programs import ProgramLibrary
@@ -28,6 +30,8 @@ from .static_checks import cross_line_diagnostics, findings_of, line_facts
 
 _MEMO_LIMIT = 200_000
 _MEMO_MIN = 2_000  # entries kept while a document is edited, at least (twice its lines)
+
+_V = TypeVar("_V")
 
 
 class StaticLines:
@@ -79,13 +83,8 @@ class StaticLines:
         self._memo_limit = max(_MEMO_MIN, min(_MEMO_LIMIT, 2 * len(blocks)))
         if structural or delta or self._connects(start, end):
             self._cross = None
-        for table in (self.facts, self.problems):
-            moved = {}
-            for line in [x for x in table if x >= start]:
-                value = table.pop(line)
-                if line >= end:
-                    moved[line + delta] = value
-            table.update(moved)
+        _shift(self.facts, start, end, delta)
+        _shift(self.problems, start, end, delta)
         self._fill(blocks, start, start + new_count)
         if self._connects(start, start + new_count):
             self._cross = None
@@ -122,8 +121,10 @@ class StaticLines:
             if line >= read_end:
                 continue
             for c in f.calls:
-                if c.number is not None or c.name is not None:
-                    out.append((line, c.number, None if c.number is not None else c.name.strip().lower()))
+                if c.number is not None:
+                    out.append((line, c.number, None))
+                elif c.name is not None:
+                    out.append((line, None, c.name.strip().lower()))
         return out
 
     def diagnostics(self, program: Program, file: str, dialect: Dialect, library: ProgramLibrary | None,
@@ -153,3 +154,14 @@ class StaticLines:
                                                                            collected))  # fmt: skip
         out.extend(kept[2])
         return out
+
+
+def _shift(table: dict[int, _V], start: int, end: int, delta: int) -> None:
+    """Renumber the entries of ``table`` after an edit that replaced lines ``start``..``end``
+    (exclusive) with ``delta`` lines more: those inside it go, those after it move."""
+    moved = {}
+    for line in [x for x in table if x >= start]:
+        value = table.pop(line)
+        if line >= end:
+            moved[line + delta] = value
+    table.update(moved)

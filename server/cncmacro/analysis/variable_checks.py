@@ -42,36 +42,35 @@ def scan_value(node: Expr, ctx: LineContext, out: list[Finding], depth_checked: 
     push = stack.append
     while stack:
         n = pop()
-        cls = n.__class__
-        if cls is Number:
+        if n.__class__ is Number:
             continue
-        if cls is Var:
-            _check_read(n.number, n.start, n.end, ctx, out)  # type: ignore[union-attr]
-        elif cls is Binary:
-            push(n.left)  # type: ignore[union-attr]
-            push(n.right)  # type: ignore[union-attr]
-        elif cls is Bracket:
-            push(n.inner)  # type: ignore[union-attr]
-        elif cls is Call:
-            _check_call(n, ctx, out)  # type: ignore[arg-type]
-            stack.extend(n.args)  # type: ignore[union-attr]
-        elif cls is Unary:
-            push(n.operand)  # type: ignore[union-attr]
-        elif cls is IndirectVar:
-            number = constant_index(n, ctx)  # type: ignore[arg-type]
+        if n.__class__ is Var:
+            _check_read(n.number, n.start, n.end, ctx, out)
+        elif n.__class__ is Binary:
+            push(n.left)
+            push(n.right)
+        elif n.__class__ is Bracket:
+            push(n.inner)
+        elif n.__class__ is Call:
+            _check_call(n, ctx, out)
+            stack.extend(n.args)
+        elif n.__class__ is Unary:
+            push(n.operand)
+        elif n.__class__ is IndirectVar:
+            number = constant_index(n, ctx)
             if number is not None:
                 _check_read(number, n.start, n.end, ctx, out)
-            push(n.index)  # type: ignore[union-attr]
-        elif cls is Relation:
-            _check_relation(n, ctx, out)  # type: ignore[arg-type]
-            push(n.left)  # type: ignore[union-attr]
-            push(n.right)  # type: ignore[union-attr]
-        elif cls is NamedVar:
-            number = named_variable_number(n, ctx, out)  # type: ignore[arg-type]
+            push(n.index)
+        elif n.__class__ is Relation:
+            _check_relation(n, ctx, out)
+            push(n.left)
+            push(n.right)
+        elif n.__class__ is NamedVar:
+            number = named_variable_number(n, ctx, out)
             if number is not None:
                 _check_read(number, n.start, n.end, ctx, out)
-            if n.index is not None:  # type: ignore[union-attr]
-                push(n.index)  # type: ignore[union-attr]
+            if n.index is not None:
+                push(n.index)
 
 
 def constant_index(node: IndirectVar, ctx: LineContext) -> int | None:
@@ -139,9 +138,10 @@ def check_write(target: Var | IndirectVar | NamedVar, ctx: LineContext, out: lis
         number = found
     elif isinstance(target, IndirectVar):
         scan_value(target.index, ctx, out)
-        number = constant_index(target, ctx)
-        if number is None:
+        constant = constant_index(target, ctx)
+        if constant is None:
             return
+        number = constant
     else:
         number = target.number
     kind = ctx.kinds.kind(number)

@@ -61,10 +61,10 @@ import logging
 import os
 import re
 from collections import Counter
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Generic, TypeVar
+from typing import Any, Generic, TypeVar
 
 from ..dialects import DIALECTS, Dialect, get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
@@ -655,11 +655,12 @@ class _CalledElsewhere(Generic[_T]):
     __slots__ = ("counts", "own")
 
     def __init__(self, counts: Counter[_T], own: set[_T]) -> None:
-        self.counts = counts
+        # looked up with any object, as a Container is: one of another type is simply absent
+        self.counts: Mapping[Any, int] = counts
         self.own = own
 
     def __contains__(self, item: object) -> bool:
-        return self.counts.get(item, 0) > (1 if item in self.own else 0)  # type: ignore[call-overload]
+        return self.counts.get(item, 0) > (1 if item in self.own else 0)
 
 
 def _clock_reads(lines: list[str]) -> int:

@@ -322,10 +322,10 @@ class Breakpoints:
                 blocks = self._read(bps[0].shown_path)
                 for bp in bps:
                     self._place(bp, blocks)
-        for bp in self._all():
-            bp.hits, bp.since = 0, -1
-            if not isinstance(bp, LineBreakpoint):  # placed (and compiled) above
-                self._compile(bp)
+        for b in self._all():
+            b.hits, b.since = 0, -1
+            if not isinstance(b, LineBreakpoint):  # placed (and compiled) above
+                self._compile(b)
         self._index()
         self.prime()
         return [bp for bps in self.lines.values() for bp in bps if (bp.verified, bp.line, bp.message) != before[bp.id]]
