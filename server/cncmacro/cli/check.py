@@ -56,10 +56,10 @@ def check_paths(
 ) -> int:
     """Check every program file under ``paths``; print the findings; return the exit status."""
     chinese = is_chinese(locale)
-    err = Printable(err)  # type: ignore[assignment]
+    shown_err = Printable(err)
     if max_blocks is not None and max_blocks < 1:
         print(pick(locale, "cncmacro check: --max-blocks must be at least 1", "cncmacro check：--max-blocks 至少为 1"),
-              file=err)  # fmt: skip
+              file=shown_err)  # fmt: skip
         return 2
     unreadable = False
     sources: list[tuple[Path, str]] = []
@@ -73,25 +73,25 @@ def check_paths(
                 en, zh = f"cncmacro: {shown}: no such file or folder", f"cncmacro：{shown}：文件或文件夹不存在"
             else:
                 en, zh = f"cncmacro: {shown}: cannot read: {why}", f"cncmacro：{shown}：无法读取：{why}"
-            print(pick(locale, en, zh), file=err)
+            print(pick(locale, en, zh), file=shown_err)
             unreadable = True
             continue
         found = search_program_files(root)
         for problem in found.skipped:
-            print(f"cncmacro：{problem.zh}" if chinese else f"cncmacro: {problem}", file=err)
+            print(f"cncmacro：{problem.zh}" if chinese else f"cncmacro: {problem}", file=shown_err)
             unreadable = True
         searched = root.is_dir()  # a file named on the command line is read whole
         for path in found.files:
             try:
                 source = read_program(path, MAX_PROGRAM_BYTES if searched else None)
             except SkippedFileError as e:
-                print(f"cncmacro：{e.message.zh}" if chinese else f"cncmacro: {e}", file=err)
+                print(f"cncmacro：{e.message.zh}" if chinese else f"cncmacro: {e}", file=shown_err)
                 unreadable = True
                 continue
             except OSError as e:
                 why, shown = e.strerror or e, shown_text(str(path))
                 print(pick(locale, f"cncmacro: {shown}: cannot read: {why}", f"cncmacro：{shown}：无法读取：{why}"),
-                      file=err)  # fmt: skip
+                      file=shown_err)  # fmt: skip
                 unreadable = True
                 continue
             sources.append((path, source.text))
@@ -109,7 +109,7 @@ def check_paths(
             ws = workspace()
         except (MachineFileError, ValueError) as e:
             reason = in_language(e.args[0], True) if chinese and e.args else e
-            print(f"cncmacro check：{reason}" if chinese else f"cncmacro check: {e}", file=err)
+            print(f"cncmacro check：{reason}" if chinese else f"cncmacro check: {e}", file=shown_err)
             return 2
         diagnostics += _analyse(ws, files, workspace, locale)
     if not hints:

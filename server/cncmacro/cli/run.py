@@ -35,7 +35,7 @@ from ..machine.numbers import format_plain
 from ..machine.persistence_lock import LOCK_WAIT
 from ..machine.setup import prepare_run
 from .profiles import add_dialect_option
-from .terminal import Printable, json_text
+from .terminal import Printable, TextOut, json_text
 
 MAX_TEXT_MOVES = 1000
 STATUS_ZH = {"completed": "完成", "alarm": "报警", "limit": "达到程序段数上限", "stopped": "停止"}
@@ -90,15 +90,15 @@ def add_run_parser(sub: Any) -> None:
 def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | None = None) -> int:
     """Run the program; text goes to ``out`` with control characters escaped."""
     out = out or sys.stdout
-    err = Printable(err or sys.stderr)
+    shown_err = Printable(err or sys.stderr)
     path = Path(args.file)
     if args.max_blocks is not None and args.max_blocks < 1:
         print(pick(args.locale, "cncmacro run: --max-blocks must be at least 1", "cncmacro run：--max-blocks 至少为 1"),
-              file=err)  # fmt: skip
+              file=shown_err)  # fmt: skip
         return 2
     if not 0 <= args.wait <= 86400:
         print(pick(args.locale, "cncmacro run: --wait must be from 0 to 86400 seconds",
-                   "cncmacro run：--wait 必须在 0 到 86400 秒之间"), file=err)  # fmt: skip
+                   "cncmacro run：--wait 必须在 0 到 86400 秒之间"), file=shown_err)  # fmt: skip
         return 2
     try:
         presets = dict(parse_preset(s) for s in args.set)
@@ -109,11 +109,11 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
         )  # fmt: skip
     except ValueError as e:
         if not args.stdin and path.is_dir():
-            print(_folder_text(path, args.locale), file=err)
+            print(_folder_text(path, args.locale), file=shown_err)
         elif is_chinese(args.locale) and e.args:
-            print(f"cncmacro run：{in_language(e.args[0], True)}", file=err)
+            print(f"cncmacro run：{in_language(e.args[0], True)}", file=shown_err)
         else:
-            print(f"cncmacro run: {e}", file=err)
+            print(f"cncmacro run: {e}", file=shown_err)
         return 2
     machine = prepared.machine
     dialect = machine.dialect
@@ -132,7 +132,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
             prepared.save()
         except OSError as e:
             print(pick(args.locale, f"cncmacro run: could not save the persistent variables: {e}",
-                       f"cncmacro run：无法保存断电保持的公共变量（#500–#999）：{e}"), file=err)  # fmt: skip
+                       f"cncmacro run：无法保存断电保持的公共变量（#500–#999）：{e}"), file=shown_err)  # fmt: skip
     result = machine.result()
     if args.json:
         head = {"dialect": dialect.name, "lathe": dialect.lathe}
@@ -142,7 +142,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
         write_json({**head, **body}, out)
     else:
         remarks = subprogram_remarks(machine, path, args.dialect, args.locale) if machine.ended_by_main_m99 else []
-        write_text(result, machine, Printable(out), args.locale, remarks)  # type: ignore[arg-type]
+        write_text(result, machine, Printable(out), args.locale, remarks)
     return {ALARM: 1, LIMIT: 3}.get(result.status, 0)
 
 
@@ -213,7 +213,7 @@ def write_json(result: dict[str, Any], out: TextIO) -> None:
 
 
 def write_text(
-    result: RunResult, machine: Machine, out: TextIO, locale: str | None = None, remarks: list[str] | None = None
+    result: RunResult, machine: Machine, out: TextOut, locale: str | None = None, remarks: list[str] | None = None
 ) -> None:
     """The run for a machinist, in English or (``zh`` locale) in Chinese: codes, file names,
     numbers and the texts the program itself wrote stay as they are; ``remarks`` (already in

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import json
 import re
-from typing import Any, TextIO
+from typing import Any, Protocol, TextIO
 
 _CONTROL = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f]")
 _JSON_CONTROL = re.compile("[\x7f-\x9f]")  # json.dumps escapes the C0 ones itself
@@ -31,6 +31,12 @@ def json_text(value: Any, **options: Any) -> str:
     for a value that is not a finite number, which JSON cannot hold."""
     text = json.dumps(value, ensure_ascii=False, allow_nan=False, **options)
     return _JSON_CONTROL.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
+
+
+class TextOut(Protocol):
+    """Where a report is written: a text stream, or a ``Printable`` one."""
+
+    def write(self, text: str, /) -> int: ...
 
 
 class Printable:

@@ -16,6 +16,7 @@ from __future__ import annotations
 import sys
 import threading
 from collections.abc import Callable
+from functools import partial
 from pathlib import Path
 from typing import Any, BinaryIO
 
@@ -142,12 +143,15 @@ class Session:
         if self.configured:
             self.later(self._start)
 
+    def _breakpoint_changed(self, bp: LineBreakpoint) -> None:
+        self.event("breakpoint", {"reason": "changed", "breakpoint": _line_json(bp)})
+
     def _use(self, launched: Launched) -> None:
         self.launched = launched
         m = launched.machine
         moved = self.breakpoints.bind(m, launched.scope)
         for bp in moved:  # this launch's block delete switch and folders decide where each can stop
-            self.later(lambda bp=bp: self.event("breakpoint", {"reason": "changed", "breakpoint": _line_json(bp)}))
+            self.later(partial(self._breakpoint_changed, bp))
         self.history.reset(m)
         config = launched.config
         if config.no_debug:  # Run Without Debugging: nothing stops the run

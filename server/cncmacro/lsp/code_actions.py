@@ -14,6 +14,7 @@ when the client sent them.
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -136,7 +137,7 @@ def register(server: CncMacroServer) -> None:
         return out
 
 
-def profile_actions(ls: CncMacroServer, doc: OpenDocument, diags: list[types.Diagnostic]) -> list[types.CodeAction]:
+def profile_actions(ls: CncMacroServer, doc: OpenDocument, diags: Sequence[types.Diagnostic]) -> list[types.CodeAction]:
     """For a ``profile-suggestion``: write the file's dialect comment, or the machine file's
     ``base`` (created beside the workspace's first folder when there is none)."""
     asked = [d for d in diags if d.code == CODE]

@@ -12,7 +12,7 @@ from lsprotocol import types
 
 from ..dialects import describe
 from ..dialects.dialect import ARGUMENTS_I
-from .call_sites import call_site
+from .call_sites import CallSite, call_site
 from .cursor import Cursor, cursor_at
 from .semantic_tokens import _name_kinds
 from .texts import t
@@ -147,7 +147,7 @@ def argument_items(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem
     return out
 
 
-def ls_reads(ls: CncMacroServer, cur: Cursor, site) -> set[int]:  # type: ignore[no-untyped-def]
+def ls_reads(ls: CncMacroServer, cur: Cursor, site: CallSite) -> set[int]:
     from .signature_help import locals_read
 
     found = ls.index.find_program(cur.doc, site.number, site.name)

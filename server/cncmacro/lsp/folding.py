@@ -81,7 +81,7 @@ def _ends_program(b: Block) -> bool:
     return any(w.letter == "M" and isinstance(w.value, Number) and w.value.value in (99, 30, 2) for w in b.words)
 
 
-def _is_blank(b) -> bool:  # type: ignore[no-untyped-def]
+def _is_blank(b: Block) -> bool:
     """A line after a program's end: empty, or a ``%`` mark."""
     if b.plain is not None:
         return False

@@ -71,9 +71,9 @@ def register(server: CncMacroServer) -> None:
         active = None
         if before:
             targets = argument_targets([w.letter for w in site.arguments])
-            n = targets[len(before) - 1]
-            if n in reads:
-                active = reads.index(n)
+            target = targets[len(before) - 1]
+            if target is not None and target in reads:
+                active = reads.index(target)
         sig = types.SignatureInformation(
             label=label,
             documentation=f"{t('reads', ls.locale)}: {title}" if title else None,
