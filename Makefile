@@ -40,6 +40,7 @@ demo: $(VENV)/.installed
 # then the .vsix is built and tested in a real VS Code (screenshots in test-output/editor/).
 test: setup
 	$(VENV)/bin/ruff check server tests benchmarks
+	$(VENV)/bin/ruff format --check server tests benchmarks
 	$(VENV)/bin/mypy
 	npm run --silent lint:client
 	$(PY) -m pytest

@@ -15,46 +15,52 @@ SEED_BLOCKS: list[tuple[str, str, str, str]] = [
     # Seed 000: GSK980TDi 3.28 宏代码
     ("000", "3.28.1 变量的表示 示例", "gsk980tdi", "#105"),  # uncertain: a variable, not a full block
     ("000", "3.28.1 变量的表示 示例", "gsk980tdi", "#109"),  # uncertain: a variable, not a full block
-    ("000", "3.28.1 变量的表示 示例", "gsk980tdi",
-     "# [#125 + #100 * #111]"),  # uncertain: a variable, not a full block
+    ("000", "3.28.1 变量的表示 示例", "gsk980tdi", "# [#125 + #100 * #111]"),  # uncertain: a variable, not a full block
     ("000", "3.28.1 变量的引用 1) 示例", "gsk980tdi", "F#103"),
     ("000", "3.28.1 变量的引用 1) 示例", "gsk980tdi", "F15"),  # uncertain: equivalent form named in prose
     ("000", "3.28.1 变量的引用 1) 示例", "gsk980tdi", "Z-#110"),
-    ("000", "3.28.1 变量的引用 1) 示例", "gsk980tdi",
-     "Z-250"),  # uncertain: equivalent form named in prose
+    ("000", "3.28.1 变量的引用 1) 示例", "gsk980tdi", "Z-250"),  # uncertain: equivalent form named in prose
     ("000", "3.28.1 变量的引用 2) 示例", "gsk980tdi", "X#9100"),
-    ("000", "3.28.1 变量的引用 2) 示例", "gsk980tdi",
-     "X500"),  # uncertain: equivalent form named in prose
+    ("000", "3.28.1 变量的引用 2) 示例", "gsk980tdi", "X500"),  # uncertain: equivalent form named in prose
     ("000", "3.28.1 变量的引用 2) 示例", "gsk980tdi", "X-#9100"),
-    ("000", "3.28.1 变量的引用 2) 示例", "gsk980tdi",
-     "X-500"),  # uncertain: equivalent form named in prose
-    ("000", "3.28.1 变量的引用 注", "gsk980tdi",
-     "M#230"),  # uncertain: word quoted in prose (out of range)
+    ("000", "3.28.1 变量的引用 2) 示例", "gsk980tdi", "X-500"),  # uncertain: equivalent form named in prose
+    ("000", "3.28.1 变量的引用 注", "gsk980tdi", "M#230"),  # uncertain: word quoted in prose (out of range)
     ("000", "3.28.1 空变量 1) 引用", "gsk980tdi", "G00 X100 Z#1"),
-    ("000", "3.28.1 空变量 1) 引用", "gsk980tdi",
-     "G00 X100 Z0"),  # uncertain: equivalent form named in prose
+    ("000", "3.28.1 空变量 1) 引用", "gsk980tdi", "G00 X100 Z0"),  # uncertain: equivalent form named in prose
     ("000", "3.28.1 空变量 2) 运算 当#1=<空>时", "gsk980tdi", "#2=#1"),
     ("000", "3.28.1 空变量 2) 运算 当#1=<空>时", "gsk980tdi", "#2=#1 * 5"),
     ("000", "3.28.1 空变量 2) 运算 当#1=<空>时", "gsk980tdi", "#2=#1+#1"),
     ("000", "3.28.1 空变量 2) 运算 当#1=0时", "gsk980tdi", "#2=#1"),
     ("000", "3.28.1 空变量 2) 运算 当#1=0时", "gsk980tdi", "#2=#1 * 5"),
     ("000", "3.28.1 空变量 2) 运算 当#1=0时", "gsk980tdi", "#2=#1+#1"),
-    ("000", "3.28.1 空变量 3) 条件表达式 当#1=<空>时", "gsk980tdi",
-     "#1 EQ #0"),  # uncertain: condition, not a full block
-    ("000", "3.28.1 空变量 3) 条件表达式 当#1=<空>时", "gsk980tdi",
-     "#1 NE #0"),  # uncertain: condition, not a full block
-    ("000", "3.28.1 空变量 3) 条件表达式 当#1=<空>时", "gsk980tdi",
-     "#1 GE #0"),  # uncertain: condition, not a full block
-    ("000", "3.28.1 空变量 3) 条件表达式 当#1=<空>时", "gsk980tdi",
-     "#1 GT #0"),  # uncertain: condition, not a full block
-    ("000", "3.28.1 空变量 3) 条件表达式 当#1=0时", "gsk980tdi",
-     "#1 EQ #0"),  # uncertain: condition, not a full block
-    ("000", "3.28.1 空变量 3) 条件表达式 当#1=0时", "gsk980tdi",
-     "#1 NE #0"),  # uncertain: condition, not a full block
-    ("000", "3.28.1 空变量 3) 条件表达式 当#1=0时", "gsk980tdi",
-     "#1 GE #0"),  # uncertain: condition, not a full block
-    ("000", "3.28.1 空变量 3) 条件表达式 当#1=0时", "gsk980tdi",
-     "#1 GT #0"),  # uncertain: condition, not a full block
+    (
+        "000",
+        "3.28.1 空变量 3) 条件表达式 当#1=<空>时",
+        "gsk980tdi",
+        "#1 EQ #0",
+    ),  # uncertain: condition, not a full block
+    (
+        "000",
+        "3.28.1 空变量 3) 条件表达式 当#1=<空>时",
+        "gsk980tdi",
+        "#1 NE #0",
+    ),  # uncertain: condition, not a full block
+    (
+        "000",
+        "3.28.1 空变量 3) 条件表达式 当#1=<空>时",
+        "gsk980tdi",
+        "#1 GE #0",
+    ),  # uncertain: condition, not a full block
+    (
+        "000",
+        "3.28.1 空变量 3) 条件表达式 当#1=<空>时",
+        "gsk980tdi",
+        "#1 GT #0",
+    ),  # uncertain: condition, not a full block
+    ("000", "3.28.1 空变量 3) 条件表达式 当#1=0时", "gsk980tdi", "#1 EQ #0"),  # uncertain: condition, not a full block
+    ("000", "3.28.1 空变量 3) 条件表达式 当#1=0时", "gsk980tdi", "#1 NE #0"),  # uncertain: condition, not a full block
+    ("000", "3.28.1 空变量 3) 条件表达式 当#1=0时", "gsk980tdi", "#1 GE #0"),  # uncertain: condition, not a full block
+    ("000", "3.28.1 空变量 3) 条件表达式 当#1=0时", "gsk980tdi", "#1 GT #0"),  # uncertain: condition, not a full block
     ("000", "3.28.1 应用举例 O0100", "gsk980tdi", "O0100; (#100 是已加工零件个数, 初始值=0)"),
     ("000", "3.28.1 应用举例 O0100", "gsk980tdi", "G00 X100 Z100;"),
     ("000", "3.28.1 应用举例 O0100", "gsk980tdi", "T0101;"),
@@ -64,8 +70,7 @@ SEED_BLOCKS: list[tuple[str, str, str, str]] = [
     ("000", "3.28.1 应用举例 O0100", "gsk980tdi", "T0202;"),
     ("000", "3.28.1 应用举例 O0100", "gsk980tdi", "IF[#100<100]GOTO20; (已连续加工了 100 个?)"),
     ("000", "3.28.1 应用举例 O0100", "gsk980tdi", "G65 P9580 U-0.01 W-0.01; (调用宏程序补偿刀具磨损)"),
-    ("000", "3.28.1 应用举例 O0100", "gsk980tdi",
-     "N20;"),  # uncertain: printed "N20 .....;", label kept
+    ("000", "3.28.1 应用举例 O0100", "gsk980tdi", "N20;"),  # uncertain: printed "N20 .....;", label kept
     ("000", "3.28.1 应用举例 O0100", "gsk980tdi", "#100=#100+1; (已加工零件个数+1)"),
     ("000", "3.28.1 应用举例 O0100", "gsk980tdi", "IF[#100==100]THEN #100=0;"),
     ("000", "3.28.1 应用举例 O0100", "gsk980tdi", "M30;"),
@@ -129,8 +134,7 @@ SEED_BLOCKS: list[tuple[str, str, str, str]] = [
     ("001", "G65 格式二 例", "gsk980tdi", "G65 P[#100] L2；"),
     ("001", "G65 格式二 例", "gsk980tdi", "G65 P[O1004] L3；"),
     ("001", "G65 格式二 例", "gsk980tdi", "G65 P[T123] L2；"),
-    ("001", "G65 指令字说明 P", "gsk980tdi",
-     "G65 P[T123] L2"),  # uncertain: quoted in a prose table cell
+    ("001", "G65 指令字说明 P", "gsk980tdi", "G65 P[T123] L2"),  # uncertain: quoted in a prose table cell
     ("001", "G65 自变量列表说明", "gsk980tdi", "G65 P0012 J12 K22 J25 I33 J32；"),
     ("001", "G66 格式一 指令格式", "gsk980tdi", "G67;"),
     ("001", "G66 格式二 指令格式", "gsk980tdi", "G67;"),
@@ -138,12 +142,9 @@ SEED_BLOCKS: list[tuple[str, str, str, str]] = [
     ("001", "G66 格式二 例", "gsk980tdi", "G66 P[O1004] L3;"),
     ("001", "G66 格式二 例", "gsk980tdi", "G66 P[T123] L2;"),
     ("001", "G66 格式二 例", "gsk980tdi", "G67"),
-    ("001", "G66 指令字说明 G66", "gsk980tdi",
-     "G66 P[T123] L2;"),  # uncertain: quoted in a prose table cell
-    ("001", "G66 指令字说明 P", "gsk980tdi",
-     "G66 P[T123] L2"),  # uncertain: quoted in a prose table cell
-    ("001", "G66 编程示例 O0002", "gsk980tdi",
-     "O0002"),  # uncertain: printed as the heading "程序: O0002"
+    ("001", "G66 指令字说明 G66", "gsk980tdi", "G66 P[T123] L2;"),  # uncertain: quoted in a prose table cell
+    ("001", "G66 指令字说明 P", "gsk980tdi", "G66 P[T123] L2"),  # uncertain: quoted in a prose table cell
+    ("001", "G66 编程示例 O0002", "gsk980tdi", "O0002"),  # uncertain: printed as the heading "程序: O0002"
     ("001", "G66 编程示例 O0002", "gsk980tdi", "G00 X100 Z50;"),
     ("001", "G66 编程示例 O0002", "gsk980tdi", "G66 P0100 L2 A2 B20 C20 I30 J20 K20;"),
     ("001", "G66 编程示例 O0002", "gsk980tdi", "G01 X80 Z50;"),

@@ -16,8 +16,23 @@ from cncmacro.syntax.program import build_program
 from strategies import line
 
 POOL = [
-    "O1000 (MAIN)", "N10 G00 X0 Y0", "WHILE[#1 LT 3]DO1", "END1", "DO2", "END2", "N20 #1=#1+1",
-    "IF[#1 LT 3]GOTO10", "%", "O2000", "M99", "G01 X10. F100", "N10 M30", "(COMMENT)", "", "#100=5", "\x1a",
+    "O1000 (MAIN)",
+    "N10 G00 X0 Y0",
+    "WHILE[#1 LT 3]DO1",
+    "END1",
+    "DO2",
+    "END2",
+    "N20 #1=#1+1",
+    "IF[#1 LT 3]GOTO10",
+    "%",
+    "O2000",
+    "M99",
+    "G01 X10. F100",
+    "N10 M30",
+    "(COMMENT)",
+    "",
+    "#100=5",
+    "\x1a",
 ]
 
 pool_line = st.one_of(st.sampled_from(POOL), line())

@@ -317,7 +317,7 @@ def test_1_text_and_blocks_check_json_keeps_english_keys_with_the_chinese_messag
     (tmp_path / "O0001.nc").write_text("O0001\n#1=[1+2\nM30\n", encoding="utf-8")
     out, err = io.StringIO(), io.StringIO()
     assert check_paths([str(tmp_path)], out, err, "json", locale="zh-CN") == 1
-    assert '"message": "缺少 \']\'：第 4 列的 \'[\' 没有闭合"' in out.getvalue()
+    assert "\"message\": \"缺少 ']'：第 4 列的 '[' 没有闭合\"" in out.getvalue()
     assert '"severity": "error"' in out.getvalue() and '"code": "syntax"' in out.getvalue()
 
 

@@ -166,9 +166,7 @@ def test_persistent_file_cannot_lead_out_of_the_machine_files_folder_through_a_l
 
 
 @pytest.mark.parametrize("value", ["NaN", "Infinity", "-Infinity", "1e999", '"nan"'])
-def test_a_value_no_variable_can_hold_is_refused_naming_its_variable(
-    tmp_path: Path, program: Path, value: str
-) -> None:
+def test_a_value_no_variable_can_hold_is_refused_naming_its_variable(tmp_path: Path, program: Path, value: str) -> None:
     vars_file = tmp_path / ".cncmacro-vars.json"
     text = f'{{"variables": {{"500": 1.0, "501": {value}}}}}\n'
     vars_file.write_text(text, encoding="utf-8")
@@ -220,8 +218,7 @@ def test_control_characters_reach_the_terminal_escaped(tmp_path: Path) -> None:
     name = "O\x1b[31m2.nc"
     program = tmp_path / name
     program.write_text(
-        "O0002\n#3006=1(HI\x1b[31mRED\x07)\nPOPEN\nDPRNT[A\x1bMB\x08]\n#3000=1(BAD\x9b2J\x7f)\n"
-        "GOTO 9\nM30\n",
+        "O0002\n#3006=1(HI\x1b[31mRED\x07)\nPOPEN\nDPRNT[A\x1bMB\x08]\n#3000=1(BAD\x9b2J\x7f)\nGOTO 9\nM30\n",
         encoding="utf-8",
     )
     run = cli("run", "--no-save", str(program))

@@ -29,8 +29,10 @@ HOSTILE_MACHINE_FILES: dict[str, tuple[str | bytes, str]] = {
     "a table header 10,000 levels deep": ("[" + ".".join(["base"] + ["a"] * 10_000) + "]\n", DEEP_HEADER_SAID),
     "a superscript digit": ('[calls]\n"G²" = 9000\n', "'calls.G²' must be a G or M code"),
     "a superscript variable": ('[variables]\n"²" = 1\n', "'variables.²' is not a variable number"),
-    "a number too big for a float": ("[variables]\n100 = " + "9" * 400 + "\n",
-                                     "'variables.100' must be a finite number"),
+    "a number too big for a float": (
+        "[variables]\n100 = " + "9" * 400 + "\n",
+        "'variables.100' must be a finite number",
+    ),
     "not UTF-8": (b'base = "\xb3\xcc"\n', "not UTF-8 text (byte 0xb3 on line 1)"),
     "2 MB": ("# " + "x" * 2_000_000 + "\n", "2,000,003 bytes, over the limit of 1,000,000"),
 }

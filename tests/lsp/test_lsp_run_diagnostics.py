@@ -155,9 +155,7 @@ async def test_5_calls_a_macro_opened_alone_is_analysed_through_its_caller_on_di
     created = types.FileEvent(uri=caller.as_uri(), type=types.FileChangeType.Created)
     fanuc_en.workspace_did_change_watched_files(types.DidChangeWatchedFilesParams(changes=[created]))
     try:
-        uri = open_saved(
-            fanuc_en, macro, "O9277 (RING)\nIF[#11 EQ #0] THEN #3000=1(H MISSING)\n#10=360/[#11-6]\nM99\n"
-        )
+        uri = open_saved(fanuc_en, macro, "O9277 (RING)\nIF[#11 EQ #0] THEN #3000=1(H MISSING)\n#10=360/[#11-6]\nM99\n")
         got = (await published_where(fanuc_en, {uri: has("division-by-zero")}))[uri]
         assert [c for c in codes(got) if c[1] != "not-executed"] == [(2, "division-by-zero")]
         related = next(d for d in got if d.code == "division-by-zero").related_information or []

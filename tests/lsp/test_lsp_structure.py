@@ -85,7 +85,6 @@ async def test_folding_covers_loops_programs_and_comment_blocks(fanuc_en: Langua
     assert sorted((r.start_line, r.end_line) for r in ranges) == [(0, 14), (5, 10), (6, 8)]
 
 
-
 async def test_folding_of_a_program_whose_m99_is_inside_a_loop_nests_the_loop(fanuc_en: LanguageClient) -> None:
     text = "O0001 (LOOP RETURN)\n#1=0\nWHILE[#1 LT 3] DO1\n#1=#1+1\nM99\nEND1\nG00 X0\n"
     uri = open_file(fanuc_en, FANUC / "loop_m99.nc", text)
@@ -179,9 +178,7 @@ async def test_semantic_tokens_on_gsk_mark_the_c_relation(gsk_en: LanguageClient
 async def test_an_o_program_folds_exactly_to_its_m99(gsk_en: LanguageClient) -> None:
     text = "O0100 (A)\n#1=1\nM99\n(NOTES AFTER THE END)\n(MORE NOTES)\nO0200 (B)\n#2=2\nM30\n"
     uri = open_file(gsk_en, GSK / "folds.CNC", text)
-    ranges = await gsk_en.text_document_folding_range_async(
-        types.FoldingRangeParams(types.TextDocumentIdentifier(uri))
-    )
+    ranges = await gsk_en.text_document_folding_range_async(types.FoldingRangeParams(types.TextDocumentIdentifier(uri)))
     close_file(gsk_en, uri)
     programs = sorted((r.start_line, r.end_line) for r in ranges if r.kind is None)
     assert programs == [(0, 2), (5, 7)]

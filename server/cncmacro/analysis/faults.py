@@ -29,8 +29,7 @@ def _message(what: tuple[str, str], error: BaseException, locale: str) -> str:
     name = type(error).__name__
     return pick(
         locale,
-        f"cncmacro failed to {what[0]} ({name}): a fault of the checker, not of the program; "
-        "the rest is still checked",
+        f"cncmacro failed to {what[0]} ({name}): a fault of the checker, not of the program; the rest is still checked",
         f"cncmacro 未能{what[1]}（{name}）：这是检查工具的故障，不是程序的错误；其余部分照常检查",
     )
 

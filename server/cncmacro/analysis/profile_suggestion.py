@@ -66,9 +66,9 @@ def suggestion(
     message = pick(
         locale,
         f"This file uses what {other.title} has and {dialect.title} lacks ({word} {where}). If it was written for "
-        f"that control, add (cncmacro: dialect={other.name}) to its first lines, or set base = \"{other.name}\" "
+        f'that control, add (cncmacro: dialect={other.name}) to its first lines, or set base = "{other.name}" '
         "in .cncmacro.toml",
         f"此文件用到了 {other.title} 才有而 {dialect.title} 没有的功能（第 {where} 行）。若程序是为该系统编写的，"
-        f"请在文件开头加上 (cncmacro: dialect={other.name})，或在 .cncmacro.toml 中设定 base = \"{other.name}\"",
+        f'请在文件开头加上 (cncmacro: dialect={other.name})，或在 .cncmacro.toml 中设定 base = "{other.name}"',
     )
     return Diagnostic(file, first.line, first.column, first.end_line, first.end_column, "information", CODE, message)

@@ -446,15 +446,22 @@ def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale:
             en = f"the analysis run stopped here after {m.blocks} blocks and {run.max_seconds:g} s, its time limit"
             zh = f"分析运行在 {m.blocks} 个程序段、{run.max_seconds:g} 秒后于此处停止（达到时间上限）"
         elif run.stopped_by == "records":
-            en = (f"the analysis run stopped here after {m.blocks} blocks: it recorded more than "
-                  f"{run.max_records} messages and outputs, its memory limit")
-            zh = (f"分析运行在 {m.blocks} 个程序段后于此处停止："
-                  f"记录的消息和输出超过 {run.max_records} 条（达到内存上限）")
+            en = (
+                f"the analysis run stopped here after {m.blocks} blocks: it recorded more than "
+                f"{run.max_records} messages and outputs, its memory limit"
+            )
+            zh = (
+                f"分析运行在 {m.blocks} 个程序段后于此处停止：记录的消息和输出超过 {run.max_records} 条（达到内存上限）"
+            )
         elif run.file_budget is not None:
-            en = (f"the analysis run stopped here after {m.blocks} blocks: the programs of this file together "
-                  f"ran {run.file_budget} blocks, the budget of one file's analysis (an endless loop?)")
-            zh = (f"分析运行在 {m.blocks} 个程序段后于此处停止：本文件各程序共运行了 {run.file_budget} 个程序段，"
-                  f"达到一个文件的分析上限（可能是死循环）")
+            en = (
+                f"the analysis run stopped here after {m.blocks} blocks: the programs of this file together "
+                f"ran {run.file_budget} blocks, the budget of one file's analysis (an endless loop?)"
+            )
+            zh = (
+                f"分析运行在 {m.blocks} 个程序段后于此处停止：本文件各程序共运行了 {run.file_budget} 个程序段，"
+                f"达到一个文件的分析上限（可能是死循环）"
+            )
         else:
             en = f"the analysis run stopped here after {m.blocks} blocks, its budget (an endless loop?)"
             zh = f"分析运行在 {m.blocks} 个程序段后于此处停止（达到上限，可能是死循环）"
@@ -489,8 +496,10 @@ def not_run_diagnostic(entry: FoundProgram, file_budget: int, locale: str) -> Di
     budget. Marked on its first line, where a run would have started."""
     number = entry.unit.number
     name = f"O{number:04d}" if number is not None else display_name(entry.file.path)
-    en = (f"{name} was not run: the programs before it in this file together ran {file_budget} blocks, "
-          "the budget of one file's analysis (are they endless loops?)")
+    en = (
+        f"{name} was not run: the programs before it in this file together ran {file_budget} blocks, "
+        "the budget of one file's analysis (are they endless loops?)"
+    )
     zh = f"{name} 未运行：本文件中它之前的程序共运行了 {file_budget} 个程序段，达到一个文件的分析上限（是否有死循环？）"
     line = entry.unit.start
     text = entry.file.lines[line] if line < len(entry.file.lines) else ""

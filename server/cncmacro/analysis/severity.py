@@ -37,8 +37,9 @@ CODES: dict[str, CodeInfo] = {
     "loop-number": CodeInfo("error", "A DO/END number outside 1-3, or loops nested deeper than 3 (alarm 126)."),
     "jump-into-loop": CodeInfo("error", "A jump into a DO range from outside it."),
     "g65-nc-words": CodeInfo(
-        "error", "G65/G66 shares its block with another G or M code, an O word or a prior word (a modal G code "
-        "before it is a warning where the control sets it and calls)."
+        "error",
+        "G65/G66 shares its block with another G or M code, an O word or a prior word (a modal G code "
+        "before it is a warning where the control sets it and calls).",
     ),
     "argument-address": CodeInfo("error", "G, L, N, O or P used as a macro argument (alarm 129)."),
     "argument-order": CodeInfo("warning", "I, J, K arguments out of their I, J, K order within a set (fanuc)."),

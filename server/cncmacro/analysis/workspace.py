@@ -565,7 +565,8 @@ class WorkspaceAnalysis:
         for found_entry in self._not_run.values():
             if found_entry.file.path in self.docs:
                 by_file.setdefault(found_entry.file.path, []).append(
-                    not_run_diagnostic(found_entry, FILE_BUDGETS * self.max_blocks, self.locale))
+                    not_run_diagnostic(found_entry, FILE_BUDGETS * self.max_blocks, self.locale)
+                )
         for k, run in self.runs.items():
             shown = self.docs if k in entries else None  # a caller on disk: findings in open files only
             try:
@@ -700,4 +701,3 @@ def _runnable(blocks: list[Block], unit: ProgramUnit) -> bool:
         if b.plain is not None or not (b.is_empty or b.tape or _header_only(b)):
             return True
     return False
-

@@ -340,10 +340,13 @@ class Breakpoints:
         try:
             bp.compiled = compile_condition(self.machine, bp.condition)
         except EvaluationError as e:
-            bp.verified, bp.message = False, pick(
-                self.locale,
-                f"condition '{bp.condition}': {e}",
-                f"条件 '{bp.condition}'：{in_language(e.args[0], True)}",
+            bp.verified, bp.message = (
+                False,
+                pick(
+                    self.locale,
+                    f"condition '{bp.condition}': {e}",
+                    f"条件 '{bp.condition}'：{in_language(e.args[0], True)}",
+                ),
             )
 
     def _unevaluated(self, bp: Breakpoint, e: EvaluationError) -> str:

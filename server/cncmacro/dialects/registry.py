@@ -51,9 +51,15 @@ def profile_facts() -> list[dict[str, Any]]:
     ``cncmacro profiles --json``): name, title, summaries, aliases, lathe or mill, axes, commons."""
     return [
         {
-            "name": d.name, "title": d.title, "summary": d.summary, "summaryZh": d.summary_zh,
-            "aliases": list(d.aliases), "lathe": d.lathe, "axes": list(d.axes),
-            "common": [[r.first, r.last] for r in d.common_ranges], "default": d.name == DEFAULT_PROFILE,
+            "name": d.name,
+            "title": d.title,
+            "summary": d.summary,
+            "summaryZh": d.summary_zh,
+            "aliases": list(d.aliases),
+            "lathe": d.lathe,
+            "axes": list(d.axes),
+            "common": [[r.first, r.last] for r in d.common_ranges],
+            "default": d.name == DEFAULT_PROFILE,
         }
         for d in all_profiles()
     ]

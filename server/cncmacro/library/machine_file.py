@@ -331,8 +331,12 @@ def settings_from_mapping(
     if "skip" in data:
         s = data["skip"]
         if not isinstance(s, dict) or not all(_finite(v) for v in s.values()):
-            raise fail("skip", detail("must map axis letters to positions (finite numbers)",
-                                      "必须是 轴地址 = 位置（有限的数值）形式的表"))
+            raise fail(
+                "skip",
+                detail(
+                    "must map axis letters to positions (finite numbers)", "必须是 轴地址 = 位置（有限的数值）形式的表"
+                ),
+            )
         kw["skip"] = {str(k).upper(): float(v) for k, v in s.items()}
     if "severity" in data:
         kw["severity"] = _severity(data["severity"], fail)

@@ -77,7 +77,6 @@ def load_text(path: str, text: str, cache: BlockCache | None = None) -> LoadedFi
     return LoadedFile(path, lines, program, dialect_from_text(lines))
 
 
-
 class ProgramLibrary:
     """The programs a run may call. ``folders`` are searched after the calling file's own
     folder; ``texts`` maps paths to text that replaces the file on disk (open editors)."""

@@ -34,10 +34,14 @@ if TYPE_CHECKING:
     from .server import CncMacroServer
 
 _TITLES = {
-    "comment": ("Read this file as {title}: add (cncmacro: dialect={name})",
-                "按 {title} 读取此文件：加上 (cncmacro: dialect={name})"),
-    "machine": ('Set base = "{name}" in .cncmacro.toml (every file of the workspace)',
-                '在 .cncmacro.toml 中设定 base = "{name}"（对工作区所有文件生效）'),
+    "comment": (
+        "Read this file as {title}: add (cncmacro: dialect={name})",
+        "按 {title} 读取此文件：加上 (cncmacro: dialect={name})",
+    ),
+    "machine": (
+        'Set base = "{name}" in .cncmacro.toml (every file of the workspace)',
+        '在 .cncmacro.toml 中设定 base = "{name}"（对工作区所有文件生效）',
+    ),
     "split": ("Split: move the NC words to a block before the G65", "拆分：把NC代码移到G65之前的单独程序段"),
     "clamp": ("Clamp the repeat count to {value}", "把重复次数改为{value}"),
     "expand": ("Write {word} in full", "把{text}写全为{word}"),

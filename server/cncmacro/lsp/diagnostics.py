@@ -389,8 +389,6 @@ class DiagnosticsEngine:
         return got[1] if got is not None and got[0] == doc.version else {}
 
 
-
 def _disk_lines(ws: WorkspaceAnalysis, path: str) -> list[str]:
     loaded = ws.library.load(path)
     return loaded.lines if loaded is not None else []
-

@@ -162,6 +162,4 @@ def _handle(server: CncMacroServer, data: Any) -> None:
 
 
 def _answer_error(server: CncMacroServer, request_id: Any, code: int, message: str) -> None:
-    server.protocol._send_data(
-        {"jsonrpc": "2.0", "id": request_id, "error": {"code": code, "message": message}}
-    )
+    server.protocol._send_data({"jsonrpc": "2.0", "id": request_id, "error": {"code": code, "message": message}})

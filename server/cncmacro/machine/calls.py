@@ -163,7 +163,9 @@ def program_and_count(
             detail(
                 f"P{digits}: at most 8 digits ({count_digits} for the count, {k} for the program)",
                 f"P{digits}：最多 8 位（前 {count_digits} 位为调用次数，后 {k} 位为程序号）",
-            ) if count_digits else detail(
+            )
+            if count_digits
+            else detail(
                 f"P{digits}: a program number has at most 8 digits (the count goes in L)",
                 f"P{digits}：程序号最多 8 位（调用次数用 L 指定）",
             ),

@@ -209,7 +209,8 @@ class VariableAccess:
             number = self.dialect.macro_alarm_base + int(round_half_away(value or 0.0))
             raise MacroAlarm(
                 number,
-                message or detail(
+                message
+                or detail(
                     f"macro alarm #{n}={round_half_away(value or 0.0):g}",
                     f"宏程序报警 #{n}={round_half_away(value or 0.0):g}",
                 ),

@@ -83,10 +83,7 @@ def assemble(items: Sequence[Item], prep: Prepared) -> Block:
             statements.append(item)
     stmts = tuple(statements)
     structural = (
-        label is not None
-        or program is not None
-        or prep.tape
-        or any(isinstance(s, (While, Do, End)) for s in stmts)
+        label is not None or program is not None or prep.tape or any(isinstance(s, (While, Do, End)) for s in stmts)
     )
     return Block(
         label=label,

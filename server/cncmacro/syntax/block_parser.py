@@ -46,7 +46,6 @@ def _plain_line_pattern(possessive: str) -> str:
 _PLAIN_LINE = re.compile(_plain_line_pattern(_POSSESSIVE)).fullmatch
 
 
-
 # Real controls read blocks of at most a few hundred characters; a longer line is reported,
 # not parsed, so that a huge line costs nothing and cannot stall the editor.
 MAX_BLOCK_CHARS = 4096

@@ -63,8 +63,22 @@ _VALUE_START = {"NUMBER", "VARNUM", "HASH", "NAMED_VAR", "LSQB", "SIGN"}
 # What may start a word or a statement, to say "another word or statement" likewise ('[' starts
 # an assignment to a name, [#_UO[1]]=1).
 _ITEM_START = {
-    "LETTER", "P_LETTER", "VARNUM", "HASH", "NAMED_VAR", "LSQB", "IF", "WHILE", "DO", "END", "GOTO",
-    "POPEN", "PCLOS", "DPRNT", "BPRNT", "CORNER",
+    "LETTER",
+    "P_LETTER",
+    "VARNUM",
+    "HASH",
+    "NAMED_VAR",
+    "LSQB",
+    "IF",
+    "WHILE",
+    "DO",
+    "END",
+    "GOTO",
+    "POPEN",
+    "PCLOS",
+    "DPRNT",
+    "BPRNT",
+    "CORNER",
 }
 
 
@@ -154,7 +168,7 @@ def _unclosed_bracket(code: str) -> int | None:
 
 
 def _expected_text(expected: set[str]) -> Detail:
-    """"; expected a, b" (and its Chinese) for the terminals lark expected, or nothing."""
+    """ "; expected a, b" (and its Chinese) for the terminals lark expected, or nothing."""
     if not expected:
         return _NOTHING_EXPECTED
     names: list[str] = []
