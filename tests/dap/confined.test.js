@@ -34,6 +34,8 @@ before(() => {
   fs.symlinkSync(path.join(outside, 'shadow'), path.join(shop, 'leak.nc'));
   fs.symlinkSync('/dev/zero', path.join(shop, 'zero.nc'));
   cp.execFileSync('mkfifo', [path.join(shop, 'pipe.nc')]);
+  fs.closeSync(fs.openSync(path.join(shop, 'huge.nc'), 'w'));
+  fs.truncateSync(path.join(shop, 'huge.nc'), 100_000_000); // sparse: 100 MB on paper, nothing on disk
 });
 
 after(() => {
@@ -86,6 +88,13 @@ describe('source', () => {
     assert.equal((await dc.top()).line, 2);
   });
 
+  test('a program file over the size limit is refused at once, unread', PROMPT, async () => {
+    await stoppedInMain();
+    await assert.rejects(dc.sourceRequest({ source: { path: inShop('huge.nc') } }),
+      /huge\.nc: 100,000,000 bytes, over the limit of 64,000,000: not read/);
+    assert.equal((await dc.top()).line, 2);
+  });
+
   test('the launched program and the macro it calls are shown', PROMPT, async () => {
     await stoppedInMain();
     const main = await dc.sourceRequest({ source: { path: inShop('main.nc') } });
@@ -110,6 +119,13 @@ describe('setBreakpoints', () => {
     assert.deepEqual([set.body.breakpoints[0].verified, set.body.breakpoints[0].message],
       [false, '/dev/zero: not a program file']);
     assert.equal((await dc.top()).line, 2);
+  });
+
+  test('on a file over the size limit: answered at once, unverified, saying why', PROMPT, async () => {
+    await stoppedInMain();
+    const set = await dc.setBreakpointsRequest({ source: { path: inShop('huge.nc') }, breakpoints: [{ line: 1 }] });
+    assert.equal(set.body.breakpoints[0].verified, false);
+    assert.match(set.body.breakpoints[0].message, /100,000,000 bytes, over the limit of 64,000,000/);
   });
 
   test('on a link leading out of the launch folder: unverified', PROMPT, async () => {

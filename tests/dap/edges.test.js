@@ -37,6 +37,13 @@ describe('the edges of the adapter', () => {
     const next = await dc.step('nextRequest');
     assert.equal(next.body.reason, 'step');
     assert.equal((await dc.top()).line, 3);
+    const answered = await Promise.race([
+      dc.disconnectRequest({ terminateDebuggee: true }).then(() => 'answered'),
+      new Promise((resolve) => setTimeout(() => resolve('no answer within 5 s'), 5000)),
+    ]);
+    assert.equal(answered, 'answered', 'disconnect after a refused second launch');
+    dc = new CncMacroClient(); // the adapter has ended: afterEach stops a fresh one
+    await dc.start();
   });
 
   test('a message nested too deeply to read is refused and the adapter goes on', async () => {
