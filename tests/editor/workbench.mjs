@@ -83,24 +83,27 @@ export async function editorForeground(page) {
  * Move the mouse onto the first token `token` (a RegExp) until a hover containing `hasText`
  * shows, and return that hover. The mouse goes to where the token is drawn now (inlay hints
  * that arrive late move text sideways), and tries again twice: the answer can wait behind an
- * analysis run on a busy machine.
+ * analysis run on a busy machine, and the line can be drawn anew under the mouse.
  */
 export async function hoverOver(page, token, hasText) {
   const target = page.locator('.editor-instance .view-lines span span', { hasText: token }).first();
   const hover = page.locator('.monaco-hover', { hasText });
   for (let attempt = 1; ; attempt++) {
-    await target.scrollIntoViewIfNeeded();
-    const box = await target.boundingBox();
-    assert.ok(box, `${token} is on screen`);
-    await page.mouse.move(box.x + 2, box.y + box.height / 2);
-    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2, { steps: 4 });
     try {
+      // the line can be drawn again meanwhile (the server's colours or inlay hints arrive):
+      // a token gone from the page is looked up again on the next attempt
+      await target.scrollIntoViewIfNeeded({ timeout: 5000 });
+      const box = await target.boundingBox();
+      assert.ok(box, `${token} is on screen`);
+      await page.mouse.move(box.x + 2, box.y + box.height / 2);
+      await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2, { steps: 4 });
       await hover.waitFor({ state: 'visible', timeout: 10000 });
       return hover;
     } catch (e) {
       if (attempt === 3) throw e;
       await page.mouse.move(5, 500);
       await page.keyboard.press('Escape');
+      await page.waitForTimeout(500); // let a line being drawn anew settle
     }
   }
 }
