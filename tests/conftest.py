@@ -6,9 +6,11 @@ example database, to look for failures on purpose."""
 from __future__ import annotations
 
 import os
+import shutil
 import sys
 from pathlib import Path
 
+import pytest
 from hypothesis import settings
 
 settings.register_profile("repeatable", derandomize=True, database=None)
@@ -36,3 +38,11 @@ def error(text: str) -> Problem:
     errors = [p for p in b.problems if p.severity == "error"]
     assert errors, f"{text!r} parsed without error: {b}"
     return errors[0]
+
+
+@pytest.fixture()
+def examples(tmp_path: Path) -> Path:
+    """A copy of the bundled examples to run them in (a run may write beside them)."""
+    target = tmp_path / "examples"
+    shutil.copytree(ROOT / "examples", target)
+    return target

@@ -5,38 +5,14 @@ file that cannot be run."""
 
 from __future__ import annotations
 
-import io
 import json
-import shutil
 import subprocess
 import sys
 from pathlib import Path
 
-import pytest
-
-from cncmacro.cli.main import main
+from cli_capture import cli
 
 ROOT = Path(__file__).resolve().parents[2]
-
-
-def cli(*args: str) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    old = sys.stdout, sys.stderr
-    sys.stdout, sys.stderr = out, err
-    try:
-        code = main(list(args))
-    except SystemExit as e:  # argparse usage errors
-        code = int(e.code or 0)
-    finally:
-        sys.stdout, sys.stderr = old
-    return code, out.getvalue(), err.getvalue()
-
-
-@pytest.fixture()
-def examples(tmp_path: Path) -> Path:
-    target = tmp_path / "examples"
-    shutil.copytree(ROOT / "examples", target)
-    return target
 
 
 # ---------------------------------------------------------------- every commanded axis
