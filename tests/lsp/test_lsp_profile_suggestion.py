@@ -66,3 +66,21 @@ async def test_haas_codes_under_fanuc_0i_suggest_haas_and_its_comment_makes_the_
     marked = open_file(fanuc_en, FANUC / "haas_offsets_marked.nc", HAAS.replace("%\n", "%\n" + edit.new_text, 1))
     diags = (await diagnostics_for(fanuc_en, marked, 1)).diagnostics
     assert list(diags) == []
+
+
+async def test_an_m97_call_to_a_label_of_the_file_alone_suggests_haas(fanuc_en: LanguageClient) -> None:
+    # no error under fanuc-0i (M97 is an M code the machine may have), yet the program is plainly Haas's
+    text = "%\nO01003 (LOCAL CALLS)\nT1 M06\nM97 P100 L2\nM30\nN100 G91 G01 Z-1. F100.\nM99\n%\n"
+    uri = open_file(fanuc_en, FANUC / "haas_m97.nc", text)
+    diags = (await diagnostics_for(fanuc_en, uri, 1)).diagnostics
+    [hint] = [d for d in diags if d.code == "profile-suggestion"]
+    assert "Haas NGC mill" in hint.message and "line 4" in hint.message
+    assert (hint.range.start.line, hint.range.start.character) == (3, 5)  # on the 100 of P100
+    actions = await actions_for(fanuc_en, uri, hint)
+    assert any("(cncmacro: dialect=haas)" in a.title for a in actions)
+
+
+async def test_an_m97_whose_label_is_missing_suggests_nothing(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "m97_no_label.nc", "O0004\nM97 P100\nM30\n")
+    diags = (await diagnostics_for(fanuc_en, uri, 1)).diagnostics
+    assert [d for d in diags if d.code == "profile-suggestion"] == []

@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..analysis.profile_suggestion import CODE, suggested_profile
+from ..analysis.profile_suggestion import CODE, suggestion_target
 from ..library.files import SkippedFileError, read_bytes
 from ..library.machine_file import MACHINE_FILE_NAME, MAX_MACHINE_FILE_BYTES, MachineSettings, find_machine_file
 from ..machine.calls import MAX_REPEAT
@@ -147,7 +147,7 @@ def profile_actions(ls: CncMacroServer, doc: OpenDocument, diags: Sequence[types
     asked = [d for d in diags if d.code == CODE]
     if not asked:
         return []
-    other = suggested_profile(doc.parsed.program, doc.dialect, ls.machine or MachineSettings())
+    other = suggestion_target(doc.parsed.program, doc.dialect, ls.machine or MachineSettings())
     if other is None:
         return []
     encoding = ls.documents.encoding
