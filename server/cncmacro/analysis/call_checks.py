@@ -15,7 +15,7 @@ targets ``Jump`` facts; ``M99 Pn`` a ``ReturnJump``.
 
 from __future__ import annotations
 
-from ..bilingual import in_language
+from ..bilingual import in_language, pick
 from ..dialects.alarms import P_VALUE_RANGE
 from ..library.programs import is_program_name
 from ..machine.alarms import MacroAlarm
@@ -33,7 +33,6 @@ from ..machine.numbers import round_half_away, to_increment
 from ..machine.words import g_code_known, m_decimal_point, unknown_g_code
 from ..syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
 from .line_facts import CallSite, Finding, LineContext, LineFacts, ReturnJump
-from .locale import pick
 from .statement_checks import literal_jump
 from .variable_checks import check_write, scan_value
 

@@ -26,6 +26,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..bilingual import pick
 from ..library.dialect_choice import choose_dialect
 from ..library.files import (
     MAX_FOLDER_ENTRIES,
@@ -40,7 +41,6 @@ from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..library.programs import load_text
 from . import static_checks
-from .locale import pick
 
 log = logging.getLogger(__name__)
 

@@ -8,12 +8,12 @@ are known, so a target that is not among them is left to the run rather than rep
 
 from __future__ import annotations
 
+from ..bilingual import pick
 from ..dialects.dialect import Dialect
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..syntax.program import Program
 from .diagnostics import Diagnostic
 from .line_facts import CallSite
-from .locale import pick
 
 UNKNOWN = "unknown"
 

@@ -10,11 +10,10 @@ enough here).
 
 from __future__ import annotations
 
-from ..bilingual import in_language
+from ..bilingual import in_language, is_chinese
 from ..machine.corners import NAMES, no_move
 from ..syntax.nodes import Block
 from .line_facts import Finding, LineContext, LineFacts
-from .locale import is_chinese
 from .variable_checks import scan_value
 
 

@@ -11,9 +11,9 @@ from __future__ import annotations
 
 import logging
 
+from ..bilingual import pick
 from .diagnostics import Diagnostic
 from .line_facts import Finding, LineFacts
-from .locale import pick
 
 log = logging.getLogger(__name__)
 

@@ -15,12 +15,12 @@ from __future__ import annotations
 
 from bisect import bisect_right
 
+from ..bilingual import pick
 from ..machine.jumps import entered_loop, goto_line
 from ..syntax.program import LoopPair, Program, ProgramUnit
 from .call_targets import UNKNOWN, ProgramFinder, not_found
 from .diagnostics import Diagnostic, Related
 from .line_facts import CallSite, LineFacts
-from .locale import pick
 
 
 def _unit_name(unit: ProgramUnit, locale: str) -> str:

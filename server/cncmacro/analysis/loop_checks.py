@@ -9,11 +9,11 @@ already wrong is reported once, as ``loop-number``, because that is the alarm th
 
 from __future__ import annotations
 
+from ..bilingual import pick
 from ..machine.blocks import MAX_LOOP_DEPTH
 from ..syntax.nodes import Block, Do, End, Number, While
 from ..syntax.program import Program
 from .diagnostics import Diagnostic, Related
-from .locale import pick
 
 
 def _valid_number(num: Number) -> bool:

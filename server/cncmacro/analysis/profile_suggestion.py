@@ -19,12 +19,12 @@ from __future__ import annotations
 
 import re
 
+from ..bilingual import pick
 from ..dialects import DIALECTS, Dialect
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..syntax.program import Program
 from .diagnostics import Diagnostic
-from .locale import pick
 
 CODE = "profile-suggestion"
 # the findings that say "this control lacks it": syntax or G codes another control has

@@ -39,7 +39,7 @@ from dataclasses import dataclass, field
 from operator import itemgetter
 from pathlib import Path
 
-from ..bilingual import in_language
+from ..bilingual import in_language, pick
 from ..dialects import Dialect
 from ..dialects.alarms import alarm_text
 from ..library.machine_file import MachineSettings
@@ -49,7 +49,6 @@ from ..machine.calls import letters_for_local
 from ..machine.machine import ALARM, FINISHED, LIMIT, PAUSED, READY, STOPPED
 from .alarm_codes import MACRO_ALARM, alarm_code
 from .diagnostics import Diagnostic, Related
-from .locale import pick
 from .run_convergence import Earlier, keep_earlier, try_converge
 from .severity import CODES
 

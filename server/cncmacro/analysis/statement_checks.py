@@ -9,12 +9,11 @@ otherwise it becomes a ``Jump`` for the cross-line label checks.
 
 from __future__ import annotations
 
-from ..bilingual import in_language
+from ..bilingual import in_language, is_chinese, pick
 from ..machine.numbers import round_half_away
 from ..machine.words import abbreviation_refused, missing_then
 from ..syntax.nodes import Assign, Block, Expr, Goto, If, Output, Statement, While
 from .line_facts import Finding, Jump, LineContext, LineFacts
-from .locale import is_chinese, pick
 from .variable_checks import check_write, scan_value
 
 MAX_LABEL = 99999

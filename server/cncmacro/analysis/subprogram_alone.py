@@ -12,10 +12,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..bilingual import is_chinese, pick
 from ..machine import Machine
 from .call_index import CallIndex
 from .caller_entries import CallerSearch
-from .locale import is_chinese, pick
 
 RUN_REPEAT = "--repeat"  # how ``cncmacro run`` asks for the control's loop
 LAUNCH_REPEAT = '"repeat": true'  # how a debug launch configuration asks for it

@@ -11,9 +11,9 @@ from __future__ import annotations
 
 from itertools import islice
 
+from ..bilingual import pick
 from ..syntax.program import Program
 from .diagnostics import Diagnostic
-from .locale import pick
 
 
 def tape_diagnostics(program: Program, file: str, locale: str) -> list[Diagnostic]:

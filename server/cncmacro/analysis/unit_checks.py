@@ -8,9 +8,9 @@ blocks are dead text however correct they look.
 
 from __future__ import annotations
 
+from ..bilingual import pick
 from ..syntax.program import Program
 from .diagnostics import Diagnostic, Related
-from .locale import pick
 
 
 def duplicate_program_diagnostics(program: Program, file: str, locale: str) -> list[Diagnostic]:

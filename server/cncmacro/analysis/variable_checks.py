@@ -17,14 +17,13 @@ and access rights from the dialect tables, never from a list of our own.
 
 from __future__ import annotations
 
-from ..bilingual import in_language
+from ..bilingual import in_language, pick
 from ..machine.alarms import MacroAlarm
 from ..machine.expressions import MAX_BRACKETS, bracket_depth, call_problem
 from ..machine.numbers import round_half_away
 from ..machine.variables import named_number
 from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, NamedVar, Number, Relation, Unary, Var
 from .line_facts import Finding, LineContext
-from .locale import pick
 
 
 def scan_value(node: Expr, ctx: LineContext, out: list[Finding], depth_checked: bool = True) -> None:

@@ -66,6 +66,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Generic, TypeVar
 
+from ..bilingual import pick
 from ..dialects import DIALECTS, Dialect, get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
 from ..library.machine_file import MachineSettings
@@ -80,7 +81,6 @@ from .call_index import CallIndex
 from .caller_entries import CallerSearch
 from .diagnostics import UNNECESSARY, Diagnostic
 from .faults import RUN, internal_error
-from .locale import pick
 from .profile_suggestion import suggestion
 from .run_checks import FILE_BUDGETS, MAX_RECORDS, MAX_SECONDS, EntryRun, not_run_diagnostic, run_diagnostics
 from .severity import apply_severities, check_overrides

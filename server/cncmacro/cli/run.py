@@ -23,9 +23,8 @@ import sys
 from pathlib import Path
 from typing import Any, TextIO
 
-from ..analysis.locale import is_chinese, pick
 from ..analysis.subprogram_alone import subprogram_remarks, subprogram_text
-from ..bilingual import in_language
+from ..bilingual import in_language, is_chinese, pick
 from ..library.machine_file import parse_preset
 from ..machine import Machine, RunResult
 from ..machine.commanded_axes import CommandedAxes

@@ -21,7 +21,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..analysis.locale import pick
+from ..bilingual import pick
 from ..machine import Machine
 from ..machine.commanded_axes import CommandedAxes
 from ..machine.frames import Move

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 
 from ..analysis.profile_suggestion import CODE, suggestion_target
+from ..bilingual import pick
 from ..library.files import SkippedFileError, read_bytes
 from ..library.machine_file import MACHINE_FILE_NAME, MAX_MACHINE_FILE_BYTES, MachineSettings, find_machine_file
 from ..machine.calls import MAX_REPEAT
@@ -50,7 +51,7 @@ _TITLES = {
 
 def _title(key: str, locale: str, **kw: object) -> str:
     en, zh = _TITLES[key]
-    return (zh if locale.lower().startswith("zh") else en).format(**kw)
+    return pick(locale, en, zh).format(**kw)
 
 
 def nc_words(doc: OpenDocument, line: int) -> list[Word]:

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..analysis.locale import pick
+from ..bilingual import pick
 from ..machine.calls import argument_targets
 from ..machine.numbers import format_plain
 from .call_sites import call_site

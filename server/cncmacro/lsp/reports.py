@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 
 from ..analysis.severity import OFF
-from ..bilingual import Detail, in_language
+from ..bilingual import Detail, in_language, is_chinese
 from ..library.files import shown_text
 from .settings import WorkspaceMachine
 
@@ -37,7 +37,7 @@ LOGGED = 100  # how many the log names, one line each
 
 
 def _chinese(server: CncMacroServer) -> bool:
-    return server.locale.lower().startswith("zh")
+    return is_chinese(server.locale)
 
 
 def publish_machine_file(server: CncMacroServer, machine: WorkspaceMachine, published: str | None) -> str | None:
