@@ -34,6 +34,7 @@ from ..library.files import (
     MAX_PROGRAM_FILES,
     FileTooLargeError,
     SkippedFileError,
+    o_number,
     read_program,
     search_program_files,
 )
@@ -46,7 +47,6 @@ log = logging.getLogger(__name__)
 
 MAX_FILES = MAX_PROGRAM_FILES
 MAX_FILE_BYTES = MAX_PROGRAM_BYTES
-_O_NAME = re.compile(r"^[Oo](\d{1,8})$")
 
 
 @dataclass(frozen=True, slots=True)
@@ -133,9 +133,9 @@ class CallIndex:
                     self._numbers.setdefault(c.number, set()).add(path)
                 if c.name is not None:
                     self._names.setdefault(c.name, set()).add(path)
-                    m = _O_NAME.match(c.name)
-                    if m:
-                        self._numbers.setdefault(int(m.group(1)), set()).add(path)
+                    number = o_number(c.name)
+                    if number is not None:
+                        self._numbers.setdefault(number, set()).add(path)
 
     def _list(self) -> list[str] | None:
         """The program files under the folders, or None when there are more than allowed."""

@@ -69,6 +69,7 @@ from typing import Any, Generic, TypeVar
 from ..bilingual import pick
 from ..dialects import DIALECTS, Dialect, get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
+from ..library.files import o_number
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
@@ -91,7 +92,6 @@ log = logging.getLogger(__name__)
 
 Value = float | None
 MAX_CALLER_ENTRIES = 16  # programs on disk run to reach the open ones, at most
-_DIGITS = re.compile(r"^[Oo]?(\d{1,8})$")
 _T = TypeVar("_T")
 RUN_ALARM_CODES = frozenset({
     "program-not-found", "nesting-depth", "division-by-zero", "argument-range", "syntax", "variable-number",
@@ -300,14 +300,14 @@ class WorkspaceAnalysis:
             d = self.docs[path]
             program = d.doc.program
             stem = Path(path).stem
-            m = _DIGITS.match(stem)
+            named = o_number(stem, bare=True)  # the number a call finds this file by
             first = program.named_units()[0]  # what a call by the file's name runs
             for k, unit in enumerate(program.units):
                 if unit.duplicate or not _runnable(program.blocks, unit):
                     continue
                 sites = list(by_number.get(unit.number, ())) if unit.number is not None else []
                 if unit.number is None and k == 0:
-                    sites = list(by_number.get(int(m.group(1)), ())) if m else []
+                    sites = list(by_number.get(named, ())) if named is not None else []
                 if unit is first:
                     sites += by_name.get(stem.lower(), ())
                 called = any(p != path or not unit.start <= line < unit.end for p, line in sites)

@@ -22,11 +22,10 @@ from ..syntax.block_parser import BlockCache, collector_paused, shared_cache
 from ..syntax.document import split_lines
 from ..syntax.program import Program, ProgramUnit, build_program
 from .dialect_choice import dialect_from_text
-from .files import SkippedFileError, program_files_in, read_program, stays_inside
+from .files import SkippedFileError, o_number, program_files_in, read_program, stays_inside
 
 ON_CONTROL = "(on the control)"  # the path suffix of a program kept on the control
 _NAME_OK = re.compile(r"^[\w+\-.\u4e00-\u9fff]+$")
-_O_NAME = re.compile(r"^[Oo](\d{1,8})$")
 
 
 def is_program_name(name: str) -> bool:
@@ -216,9 +215,9 @@ class ProgramLibrary:
     def find_name(self, name: str, near: LoadedFile | None = None) -> FoundProgram | None:
         """A program named by a bracketed name (``P[CUT]``): a file name, or ``O1004``."""
         name = name.strip()
-        m = _O_NAME.match(name)
-        if m:
-            return self.find_number(int(m.group(1)), near)
+        number = o_number(name)
+        if number is not None:
+            return self.find_number(number, near)
         if not is_program_name(name):
             return None
         wanted = name.lower()
