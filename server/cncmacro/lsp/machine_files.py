@@ -3,11 +3,11 @@ with, and what each one says.
 
 The rule is ``cncmacro check``'s and ``cncmacro run``'s: a file in a workspace folder is read with
 the nearest ``.cncmacro.toml`` above it (``library.machine_file.find_machine_file``), none
-meaning the defaults. A file outside every workspace folder, or a document that is no file on
-disk (an unsaved one), is read with the first workspace folder's, as the whole session was
-before each file had its own. Where the nearest one is, is kept per folder (a file that is a
-link is looked up by itself, as ``find_machine_file`` follows it), and each machine file is read
-once; both are forgotten when any machine file changes on disk (``forget``), where the nearest
+meaning the defaults (in a session without workspace folders, every file). A file outside every
+workspace folder, or a document that is no file on disk (an unsaved one), is read with the first
+workspace folder's. Where the nearest one is, is kept per folder (a file that is a link is
+looked up by itself, as ``find_machine_file`` follows it), and each machine file is read once;
+both are forgotten when any machine file changes on disk (``forget``), where the nearest
 one is also when the workspace folders change (``set_roots``). A machine file that cannot be
 used is kept with its problem, never raised: the files below it get the defaults, and
 ``reports.py`` shows the problem on it.
