@@ -147,7 +147,7 @@ def program_references(
     out: list[types.Location] = []
     for f in ls.index.loaded_files():
         uri = ls.uri_for_path(f.path)
-        dialect = cur.doc.dialect if f.path == cur.doc.path else ls.documents.dialect_for(f.lines)
+        dialect = cur.doc.dialect if f.path == cur.doc.path else ls.documents.dialect_for(f.lines, f.path)
         for i, b in enumerate(f.program.blocks):
             if include_declaration and b.program == number and b.program_span and (path is None or f.path == path):
                 out.append(_loc(uri, i, b.program_span[0], b.program_span[1], f.lines[i], encoding))

@@ -200,9 +200,9 @@ class FileSites:
 _disk: dict[str, tuple[object, SiteIndex]] = {}  # path -> (the loaded file it was made from, index)
 
 
-def local_call_code(server: Any, lines: list[str]) -> float | None:
-    """The local subprogram call code of the dialect a file with these lines is read in."""
-    return server.documents.dialect_for(lines).local_subprogram_code
+def local_call_code(server: Any, lines: list[str], path: str) -> float | None:
+    """The local subprogram call code of the dialect the file at ``path`` with these lines is read in."""
+    return server.documents.dialect_for(lines, path).local_subprogram_code
 
 
 def workspace_sites(server: Any) -> Iterator[FileSites]:
@@ -219,7 +219,7 @@ def workspace_sites(server: Any) -> Iterator[FileSites]:
         if path in open_paths:
             continue
         hit = _disk.get(path)
-        local = local_call_code(server, loaded.lines)
+        local = local_call_code(server, loaded.lines, path)
         if hit is None or hit[1].local_call != local:
             hit = _disk[path] = (loaded, SiteIndex(loaded.program.blocks, local))
         yield FileSites(path, loaded.lines, hit[1])
