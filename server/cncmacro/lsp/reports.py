@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..analysis.codes import default_severity
 from ..analysis.severity import OFF
 from ..bilingual import Detail, in_language, is_chinese
 from ..library.files import shown_text
@@ -43,8 +44,9 @@ def _chinese(server: CncMacroServer) -> bool:
 def publish_machine_file(server: CncMacroServer, machine: WorkspaceMachine, published: str | None) -> str | None:
     """Publish the machine file's problem, or clear what ``published`` (a URI) showed before;
     the URI that now shows a problem, if any."""
-    level = server.settings.severity.get(MACHINE_FILE_CODE, "error")
-    level = level if level in _SEVERITIES or level == OFF else "error"  # a bad value is logged where it is read
+    default = default_severity(MACHINE_FILE_CODE)
+    level = server.settings.severity.get(MACHINE_FILE_CODE, default)
+    level = level if level in _SEVERITIES or level == OFF else default  # a bad value is logged where it is read
     shown = machine.path is not None and machine.problem is not None and level != OFF
     uri = server.uri_for_path(str(machine.path)) if shown else None
     if published is not None and published != uri:
