@@ -32,7 +32,7 @@ from ..machine.hcodes import ARITHMETIC, BRANCHES
 from ..machine.numbers import round_half_away, to_increment
 from ..machine.words import g_code_known, m_decimal_point, unknown_g_code
 from ..syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
-from .line_facts import CallSite, Finding, LineContext, LineFacts, ReturnJump
+from .line_facts import CallSite, LineContext, LineFacts, ReturnJump, finding
 from .statement_checks import literal_jump
 from .variable_checks import check_write, scan_value
 
@@ -63,8 +63,9 @@ def _constant(w: Word | None, ctx: LineContext) -> float | None:
     return value if is_constant else None
 
 
-def _add(facts: LineFacts, w: Word, severity: str, code: str, en: str, zh: str, ctx: LineContext) -> None:
-    facts.findings.append(Finding(w.start, w.end, severity, code, pick(ctx.locale, en, zh)))
+def _add(facts: LineFacts, w: Word, code: str, en: str, zh: str, ctx: LineContext, *, milder: bool = False) -> None:
+    """A finding of ``code`` on the word ``w``; ``milder`` where the control is lenient (``codes.py``)."""
+    facts.findings.append(finding(w.start, w.end, code, pick(ctx.locale, en, zh), milder=milder))
 
 
 # ---------------------------------------------------------------- G65 / G66
@@ -77,7 +78,7 @@ def _macro_call(words: tuple[Word, ...], at: int, g: float, ctx: LineContext, fa
     after = words[at + 1 :]
     for w in after:
         if w.letter == "O":
-            _add(facts, w, "error", "g65-nc-words",
+            _add(facts, w, "g65-nc-words",
                  f"{name} may not share its block with an O word (alarm 127)",
                  f"{name} 不能与 O 代码在同一程序段（报警 127）", ctx)  # fmt: skip
             return
@@ -90,7 +91,7 @@ def _macro_call(words: tuple[Word, ...], at: int, g: float, ctx: LineContext, fa
             return
         if _looks_like_h_code(after):
             h = after[0]
-            _add(facts, h, "error", "dialect-feature",
+            _add(facts, h, "dialect-feature",
                  f"G65 H{_literal(h):02.0f} (macro A arithmetic and branches) does not exist on {dialect.title}; "
                  "write it as a macro statement",
                  f"{dialect.title} 没有 G65 H{_literal(h):02.0f}（宏程序 A 形式的运算与转移），请改写为宏语句",
@@ -102,7 +103,7 @@ def _macro_call(words: tuple[Word, ...], at: int, g: float, ctx: LineContext, fa
     args = [w for w in after if w.letter not in ("P", "L")]
     for w in args:
         if w.letter == "G":
-            _add(facts, w, "error", "argument-address",
+            _add(facts, w, "argument-address",
                  f"G after {name}: a G code cannot be an argument (alarm 129)",
                  f"{name} 之后的 G 代码不能作为自变量（报警 129）", ctx)  # fmt: skip
             break
@@ -125,19 +126,20 @@ def _words_before_call(before: tuple[Word, ...], name: str, ctx: LineContext, fa
     if codes is None:
         w = before[0]
         word = _g_name(_code_value(w)) if w.letter == "G" and _code_value(w) is not None else w.letter
-        _add(facts, w, "error", "g65-nc-words",
+        _add(facts, w, "g65-nc-words",
              f"{word} before {name}: only N may precede {name} in its block; {title} stops with alarm 127",
              f"{name} 之前只允许出现 N，不能有 {word}：{title} 报警 127（停止运行）", ctx)  # fmt: skip
         return False
     shown = " ".join(_g_name(c) for c in codes)
     w = before[0]
-    facts.findings.append(Finding(w.start, before[-1].end, _SEVERITY_BEFORE_CALL[ctx.dialect.modal_g_before_call],
-                                  "g65-nc-words", pick(ctx.locale,
+    # milder: the control carries them out and then calls
+    facts.findings.append(finding(w.start, before[-1].end, "g65-nc-words", pick(ctx.locale,
         f"{shown} before {name}: {title} sets {shown} (it stays in force) and then {name} calls the macro; "
         f"controls that allow only N before {name} (GSK) stop with alarm 127, so {shown} is better on a block "
         "of its own",
         f"{name} 之前的 {shown}：{title} 先执行 {shown}（模态保持有效），再由 {name} 调用宏程序；"
-        f"{name} 之前只允许 N 的系统（GSK）会报警 127，建议把 {shown} 单独写一段")))  # fmt: skip
+        f"{name} 之前只允许 N 的系统（GSK）会报警 127，建议把 {shown} 单独写一段"),
+        milder=True))  # fmt: skip
     return True
 
 
@@ -145,9 +147,6 @@ def _g_name(code: float | None) -> str:
     if code is None:
         return "G"
     return f"G{int(code):02d}" if code == int(code) else f"G{code:g}"
-
-
-_SEVERITY_BEFORE_CALL = {"alarm": "error", "execute": "warning"}  # Dialect.modal_g_before_call -> severity
 
 
 def _looks_like_h_code(after: tuple[Word, ...]) -> bool:
@@ -173,7 +172,7 @@ def _check_arguments(args: list[Word], ctx: LineContext, facts: LineFacts) -> No
         mapped = map_arguments([(w.letter, 0.0) for w in args], ctx.dialect)
     except MacroAlarm as alarm:
         bad = _first_refused(args, ctx)
-        _add(facts, bad, "error", "argument-address",
+        _add(facts, bad, "argument-address",
              f"{alarm.message} (alarm {alarm.number})",
              f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
         return
@@ -184,7 +183,7 @@ def _check_arguments(args: list[Word], ctx: LineContext, facts: LineFacts) -> No
         before = next(a.letter for a in reversed(args[: k - 1]) if a.letter in "IJK")
         n = argument_targets([a.letter for a in args[:k]])[-1]
         remark = mapped.remarks[0]
-        _add(facts, w, "warning", "argument-order",
+        _add(facts, w, "argument-order",
              f"{w.letter} after {before} in its set: {in_language(remark, False)}; the control still puts it in #{n}",
              f"{w.letter} 写在同组的 {before} 之后：{in_language(remark, True)}；系统仍把它赋给 #{n}",
              ctx)  # fmt: skip
@@ -202,7 +201,7 @@ def _first_refused(args: list[Word], ctx: LineContext) -> Word:
 def _macro_target(call: Word, p_word: Word | None, name: str, ctx: LineContext, facts: LineFacts) -> None:
     dialect = ctx.dialect
     if p_word is None:
-        _add(facts, call, "error", "program-not-found",
+        _add(facts, call, "program-not-found",
              f"{name} needs P: the program to call (alarm 76)",
              f"{name} 需要 P 指定被调用的程序（报警 076）", ctx)  # fmt: skip
         return
@@ -218,7 +217,7 @@ def _macro_target(call: Word, p_word: Word | None, name: str, ctx: LineContext, 
     try:
         program = macro_program_number(number, dialect)
     except MacroAlarm as alarm:
-        _add(facts, p_word, "error", "program-number",
+        _add(facts, p_word, "program-number",
              f"{alarm.message} on {dialect.title} (alarm {alarm.number})",
              f"{in_language(alarm.message, True)}（{dialect.title}，报警 {alarm.number}）", ctx)  # fmt: skip
         return
@@ -231,13 +230,13 @@ def _named_target(p_word: Word, how: str, ctx: LineContext, facts: LineFacts) ->
     dialect = ctx.dialect
     name = p_word.name or ""
     if not dialect.bracket_names:
-        _add(facts, p_word, "error", "dialect-feature",
+        _add(facts, p_word, "dialect-feature",
              f"P[{name}]: {dialect.title} names programs only by number, e.g. P1234",
              f"P[{name}]：{dialect.title} 只能用程序号指定程序，例如 P1234", ctx)  # fmt: skip
         return False
     if not is_program_name(name):
         text = bad_name_detail(name)
-        _add(facts, p_word, "error", "program-number",
+        _add(facts, p_word, "program-number",
              f"{in_language(text, False)} (alarm {P_VALUE_RANGE})",
              f"{in_language(text, True)}（报警 {P_VALUE_RANGE}）", ctx)  # fmt: skip
         return False
@@ -254,13 +253,13 @@ def _check_count(l_word: Word, ctx: LineContext, facts: LineFacts) -> None:
     try:
         repeat_count(value, ctx.dialect, notes)
     except MacroAlarm as alarm:
-        _add(facts, l_word, "error", "repeat-count-range",
+        _add(facts, l_word, "repeat-count-range",
              f"{alarm.message} (alarm {alarm.number})",
              f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
         return
     if notes:
-        _add(facts, l_word, "warning", "repeat-count-range", in_language(notes[0], False), in_language(notes[0], True),
-             ctx)  # fmt: skip
+        _add(facts, l_word, "repeat-count-range", in_language(notes[0], False), in_language(notes[0], True), ctx,
+             milder=True)  # fmt: skip
 
 
 # ---------------------------------------------------------------- G65 H (macro A, gsk980tdi)
@@ -270,7 +269,7 @@ def _h_code(g65: Word, after: tuple[Word, ...], ctx: LineContext, facts: LineFac
     """``G65 Hm P Q R`` as ``machine/hcodes.py`` compiles it."""
     extra = next((w for w in after if w.letter not in "HPQR"), None)
     if extra is not None:
-        _add(facts, extra, "error", "argument-address",
+        _add(facts, extra, "argument-address",
              f"G65 H takes only P, Q and R, not {extra.letter} (alarm 114)",
              f"G65 H 只能带 P、Q、R，不能带 {extra.letter}（报警 114）", ctx)  # fmt: skip
         return
@@ -278,13 +277,13 @@ def _h_code(g65: Word, after: tuple[Word, ...], ctx: LineContext, facts: LineFac
     h_word = by_letter["H"]
     h_value = _literal(h_word)
     if h_value is None:
-        _add(facts, h_word, "error", "argument-address",
+        _add(facts, h_word, "argument-address",
              "G65 H needs a literal operation number such as H01 (alarm 114)",
              "G65 H 需要写明运算号，例如 H01（报警 114）", ctx)  # fmt: skip
         return
     h = int(h_value)
     if h not in H_OPERATIONS:
-        _add(facts, h_word, "error", "argument-address",
+        _add(facts, h_word, "argument-address",
              f"G65 H{h:02d} is not an operation of {ctx.dialect.title} (alarm 114)",
              f"G65 H{h:02d} 不是 {ctx.dialect.title} 的运算指令（报警 114）", ctx)  # fmt: skip
         return
@@ -294,7 +293,7 @@ def _h_code(g65: Word, after: tuple[Word, ...], ctx: LineContext, facts: LineFac
             scan_value(w.value, ctx, facts.findings)
     p_word = by_letter.get("P")
     if p_word is None or p_word.value is None:
-        _add(facts, h_word, "error", "argument-address",
+        _add(facts, h_word, "argument-address",
              f"G65 H{h:02d} needs P (alarm 114)", f"G65 H{h:02d} 需要 P（报警 114）", ctx)  # fmt: skip
         return
     if h in BRANCHES or h == 99:
@@ -304,7 +303,7 @@ def _h_code(g65: Word, after: tuple[Word, ...], ctx: LineContext, facts: LineFac
         return
     destination = p_word.value
     if not isinstance(destination, (Var, IndirectVar)):
-        _add(facts, p_word, "error", "argument-address",
+        _add(facts, p_word, "argument-address",
              f"G65 H{h:02d}: P names the result variable, e.g. P#100 (alarm 114)",
              f"G65 H{h:02d}：P 指定存放结果的变量，例如 P#100（报警 114）", ctx)  # fmt: skip
         return
@@ -363,17 +362,17 @@ def _refused_words(words: tuple[Word, ...], ctx: LineContext, facts: LineFacts) 
     """A literal G code that neither the dialect nor the machine has, an M code with a decimal
     point (``machine/words.py``): errors where the dialect's alarms for them are known."""
     dialect = ctx.dialect
-    severity = "error" if dialect.word_format_alarms else "warning"
+    milder = not dialect.word_format_alarms
     for w in words:
         if w.letter == "G":
             v = _code_value(w)
             if v is not None and not g_code_known(v, dialect, ctx.calls):
                 message = unknown_g_code(w.value.text, dialect)  # type: ignore[union-attr]
-                _add(facts, w, severity, "unknown-g-code", str(message), message.zh, ctx)
+                _add(facts, w, "unknown-g-code", str(message), message.zh, ctx, milder=milder)
         elif w.letter == "M":
             point = m_decimal_point(w)
             if point is not None:
-                _add(facts, w, severity, "decimal-point", str(point), point.zh, ctx)
+                _add(facts, w, "decimal-point", str(point), point.zh, ctx, milder=milder)
 
 
 def _last(words: tuple[Word, ...], letter: str) -> Word | None:
@@ -426,7 +425,7 @@ def _local_call(words: tuple[Word, ...], code: float, ctx: LineContext, facts: L
         _check_count(l_word, ctx, facts)
     if p_word is None:
         m = next(w for w in words if w.letter == "M" and _code_value(w) == code)
-        _add(facts, m, "error", "undefined-label", f"{how} needs P: the N line to call (alarm 128)",
+        _add(facts, m, "undefined-label", f"{how} needs P: the N line to call (alarm 128)",
              f"{how} 需要用 P 指定调用的 N 程序段（报警 128）", ctx)  # fmt: skip
         return
     before = len(facts.jumps)
@@ -457,7 +456,7 @@ def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts:
     if p_word is None:
         m = next(w for w in words if w.letter == "M" and _code_value(w) in SUBPROGRAM_CALLS)
         if q_word is None:
-            _add(facts, m, "error", "program-not-found",
+            _add(facts, m, "program-not-found",
                  f"{how} needs P (the program), or Q to call the current program (alarm 76)",
                  f"{how} 需要 P 指定子程序，或用 Q 调用当前程序（报警 076）", ctx)  # fmt: skip
             return
@@ -475,7 +474,7 @@ def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts:
     try:
         program, _ = program_and_count(p_text, p_value, None, dialect, [])
     except MacroAlarm as alarm:
-        _add(facts, p_word, "error", "program-number",
+        _add(facts, p_word, "program-number",
              f"{alarm.message} (alarm {alarm.number})",
              f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
         return
@@ -489,11 +488,11 @@ def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts:
     try:
         program_and_count(p_text, p_value, 1.0, dialect, twice)  # L=1 is always valid: only P against L is judged
     except MacroAlarm as alarm:
-        _add(facts, l_word, "error", "repeat-count-range",
+        _add(facts, l_word, "repeat-count-range",
              f"{alarm.message} (alarm {alarm.number})",
              f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
         return
     if twice:
-        _add(facts, l_word, "warning", "repeat-count-range",
-             f"{how}: {twice[0]}", f"{how}：{in_language(twice[0], True)}", ctx)  # fmt: skip
+        _add(facts, l_word, "repeat-count-range",
+             f"{how}: {twice[0]}", f"{how}：{in_language(twice[0], True)}", ctx, milder=True)  # fmt: skip
     _check_count(l_word, ctx, facts)

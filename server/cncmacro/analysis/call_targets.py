@@ -12,7 +12,7 @@ from ..bilingual import pick
 from ..dialects.dialect import Dialect
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..syntax.program import Program
-from .diagnostics import Diagnostic
+from .diagnostics import Diagnostic, diagnostic
 from .line_facts import CallSite
 
 UNKNOWN = "unknown"
@@ -71,4 +71,4 @@ def not_found(site: CallSite, file: str, line: int, locale: str) -> Diagnostic:
         f"{site.how} 调用的程序 {what} 不在本文件中，附近也找不到（报警 076）",
     )
     end = max(site.end, site.start + 1)
-    return Diagnostic(file, line, site.start, line, end, "error", "program-not-found", message)
+    return diagnostic(file, line, site.start, line, end, "program-not-found", message)

@@ -19,6 +19,7 @@ from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..machine.expressions import ExpressionCompiler, VariableKinds
 from ..machine.words import plain_line_pattern
+from .codes import default_severity
 
 
 @dataclass(frozen=True, slots=True)
@@ -30,6 +31,12 @@ class Finding:
     severity: str
     code: str
     message: str
+
+
+def finding(start: int, end: int, code: str, message: str, *, milder: bool = False) -> Finding:
+    """A ``Finding`` of ``code`` with the code's default severity, or its milder one where the
+    check says the control is lenient (``codes.default_severity``)."""
+    return Finding(start, end, default_severity(code, milder), code, message)
 
 
 @dataclass(frozen=True, slots=True)

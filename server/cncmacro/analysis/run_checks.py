@@ -13,7 +13,7 @@ being run again (``run_convergence.py``). The machine stamps each line it execut
 serial of its chunk (``Machine.last_run``) so that this can be decided.
 
 ``run_diagnostics`` turns the state of a finished run into diagnostics: the alarm it stopped
-with (mapped by ``alarm_codes``), the block budget running out, clamped repeat counts and
+with (mapped by ``codes.alarm_code``), the block budget running out, clamped repeat counts and
 vacant argument reads, each at the block where it happened, in that block's file, naming the
 call chain, the block count and, inside a loop, which pass of the innermost loop it was
 (counted by the analysis-only ``on_loop_pass`` hook, kept with each checkpoint) in the message
@@ -47,10 +47,9 @@ from ..library.programs import FoundProgram, ProgramLibrary
 from ..machine import CallSite, Machine, Snapshot
 from ..machine.calls import letters_for_local
 from ..machine.machine import ALARM, FINISHED, LIMIT, PAUSED, READY, STOPPED
-from .alarm_codes import MACRO_ALARM, alarm_code
-from .diagnostics import Diagnostic, Related
+from .codes import MACRO_ALARM, alarm_code
+from .diagnostics import Diagnostic, Related, diagnostic
 from .run_convergence import Earlier, keep_earlier, try_converge
-from .severity import CODES
 
 CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again before converging
 MAX_SECONDS = 30.0  # wall-clock limit of one run
@@ -474,7 +473,7 @@ def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale:
             en = in_language(note.message, False)
             zh = in_language(note.message, True)
             d = _diagnostic(note.file, note.line, "repeat-count-range", en, zh, note.chain, None, False, line_text,
-                            locale, severity="warning")  # fmt: skip
+                            locale, milder=True)  # fmt: skip
             out.append(d)
     for read in run.state.vacant.values():
         spec1, spec2 = letters_for_local(read.number)
@@ -504,8 +503,7 @@ def not_run_diagnostic(entry: FoundProgram, file_budget: int, locale: str) -> Di
     text = entry.file.lines[line] if line < len(entry.file.lines) else ""
     start = len(text) - len(text.lstrip())
     end = max(start + 1, len(text.rstrip()))
-    return Diagnostic(entry.file.path, line, start, line, end, CODES["run-limit"].severity, "run-limit",
-                      pick(locale, en, zh))  # fmt: skip
+    return diagnostic(entry.file.path, line, start, line, end, "run-limit", pick(locale, en, zh))
 
 
 def _diagnostic(
@@ -519,9 +517,10 @@ def _diagnostic(
     in_loop: bool,
     line_text: Callable[[str, int], str],
     locale: str,
-    severity: str | None = None,
+    milder: bool = False,
 ) -> Diagnostic:
-    """A run-found diagnostic spanning the block's text, with how it was reached."""
+    """A run-found diagnostic spanning the block's text, with how it was reached; ``milder``
+    where the control is lenient (``codes.default_severity``)."""
     callers = chain[:-1]
     hows = [c.how for c in chain[1:]]  # how each caller called the next level
     if callers:
@@ -539,8 +538,7 @@ def _diagnostic(
                 pick(locale, f"called from {c.program} ({how})", f"由 {c.program} 调用（{how}）"))
         for c, how in reversed(list(zip(callers, hows, strict=True)))
     )  # fmt: skip
-    return Diagnostic(file, line, start, line, end, severity or CODES[code].severity, code, pick(locale, en, zh),
-                      related)  # fmt: skip
+    return diagnostic(file, line, start, line, end, code, pick(locale, en, zh), related, milder=milder)
 
 
 def display_name(path: str) -> str:

@@ -13,7 +13,7 @@ from ..bilingual import in_language, is_chinese, pick
 from ..machine.numbers import round_half_away
 from ..machine.words import abbreviation_refused, missing_then
 from ..syntax.nodes import Assign, Block, Expr, Goto, If, Output, Statement, While
-from .line_facts import Finding, Jump, LineContext, LineFacts
+from .line_facts import Jump, LineContext, LineFacts, finding
 from .variable_checks import check_write, scan_value
 
 MAX_LABEL = 99999
@@ -25,10 +25,9 @@ def check_statements(block: Block, ctx: LineContext, facts: LineFacts) -> None:
         w = block.words[0] if block.words else block.corners[0]
         letter = w.letter if block.words else f",{w.letter}"
         facts.findings.append(
-            Finding(
+            finding(
                 w.start,
                 w.end,
-                "error",
                 "nc-and-macro",
                 pick(
                     ctx.locale,
@@ -53,7 +52,7 @@ def _statement(s: Statement, ctx: LineContext, facts: LineFacts) -> None:
         then = s.then
         if s.implicit_then and then is not None and not ctx.dialect.if_without_then:
             message = in_language(missing_then(ctx.dialect), is_chinese(ctx.locale))
-            out.append(Finding(then.start, then.end, "error", "dialect-feature", message))
+            out.append(finding(then.start, then.end, "dialect-feature", message))
         if s.goto is not None:
             scan_value(s.goto, ctx, out)
             literal_jump(s.goto, "GOTO ", ctx, facts)
@@ -77,10 +76,10 @@ def check_abbreviations(block: Block, ctx: LineContext, facts: LineFacts) -> Non
     for a in block.abbreviations:
         if dialect.keyword_abbreviations:
             message = pick(ctx.locale, f"'{a.text}' is short for {a.word}", f"'{a.text}' 是 {a.word} 的缩写")
-            facts.findings.append(Finding(a.start, a.end, "hint", "keyword-abbreviation", message))
+            facts.findings.append(finding(a.start, a.end, "keyword-abbreviation", message))
         else:
             refused = in_language(abbreviation_refused(a.text, a.word, dialect), is_chinese(ctx.locale))
-            facts.findings.append(Finding(a.start, a.end, "error", "dialect-feature", refused))
+            facts.findings.append(finding(a.start, a.end, "dialect-feature", refused))
 
 
 def literal_jump(target: Expr, how: str, ctx: LineContext, facts: LineFacts) -> None:
@@ -93,10 +92,9 @@ def literal_jump(target: Expr, how: str, ctx: LineContext, facts: LineFacts) -> 
     if not 1 <= n <= MAX_LABEL:
         shown = f"{n:.0f}" if abs(n) < 1e12 else f"{n:g}"
         facts.findings.append(
-            Finding(
+            finding(
                 target.start,
                 target.end,
-                "error",
                 "label-range",
                 pick(
                     ctx.locale,

@@ -80,7 +80,7 @@ from ..syntax.program import ProgramUnit
 from . import static_checks
 from .call_index import CallIndex
 from .caller_entries import CallerSearch
-from .diagnostics import UNNECESSARY, Diagnostic
+from .diagnostics import UNNECESSARY, Diagnostic, diagnostic
 from .faults import RUN, internal_error
 from .profile_suggestion import suggestion
 from .run_checks import FILE_BUDGETS, MAX_RECORDS, MAX_SECONDS, EntryRun, not_run_diagnostic, run_diagnostics
@@ -630,7 +630,7 @@ class WorkspaceAnalysis:
         n = last - first + 1
         en = "no analysis run reaches this block" if first == last else f"no analysis run reaches these {n} lines"
         zh = "分析运行从未执行到此程序段" if first == last else f"分析运行从未执行到这 {n} 行"
-        return Diagnostic(file, first, 0, last, max(1, len(lines[last].rstrip())), "hint", "not-executed",
+        return diagnostic(file, first, 0, last, max(1, len(lines[last].rstrip())), "not-executed",
                           pick(self.locale, en, zh), (), (UNNECESSARY,))  # fmt: skip
 
 

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..analysis.codes import default_severity
 from ..analysis.severity import OFF
 from ..bilingual import Detail, in_language, is_chinese
 from ..library.files import shown_text
@@ -44,8 +45,9 @@ def _chinese(server: CncMacroServer) -> bool:
 def publish_machine_file(server: CncMacroServer, machine: MachineFileState) -> str | None:
     """Publish the machine file's problem on it; the URI that now shows it (None: it has none,
     or the code is off). The server clears what it showed before and shows no longer."""
-    level = server.settings.severity.get(MACHINE_FILE_CODE, "error")
-    level = level if level in _SEVERITIES or level == OFF else "error"  # a bad value is logged where it is read
+    default = default_severity(MACHINE_FILE_CODE)
+    level = server.settings.severity.get(MACHINE_FILE_CODE, default)
+    level = level if level in _SEVERITIES or level == OFF else default  # a bad value is logged where it is read
     if machine.path is None or machine.problem is None or level == OFF:
         return None
     uri = server.uri_for_path(str(machine.path))
