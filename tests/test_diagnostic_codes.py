@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 
 from cncmacro.analysis.codes import CODES, FOUND, MACRO_ALARM, RUN, SEVERITIES, STATIC, alarm_code, default_severity
+from cncmacro.analysis.line_facts import RULE_CODES
 from cncmacro.dialects.alarms import ALARMS
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -150,8 +151,11 @@ def test_every_code_a_check_names_is_registered() -> None:
     named = _named_codes()
     unknown = [f"{file}:{line}: {code}" for file, line, code, _ in named if code not in CODES]
     assert not unknown, f"codes not in analysis/codes.py: {unknown}"
-    # and the walk sees the checks: each code is named by a check, or stands for a run's alarm
-    seen = {code for _, _, code, _ in named}
+    # a block rule of machine/block_rules.py names its code in RULE_CODES
+    ruled = set(RULE_CODES.values())
+    assert ruled <= set(CODES), f"block rules' codes not in analysis/codes.py: {ruled - set(CODES)}"
+    # and the walk sees the checks: each code is named by a check or a block rule, or stands for a run's alarm
+    seen = {code for _, _, code, _ in named} | ruled
     assert {c.name for c in CODES.values() if not (c.alarms or c.subjects or c.found == RUN)} <= seen
     assert {"undefined-label", "corner-word", "vacant-argument", "not-executed", "machine-file"} <= seen
 

@@ -41,6 +41,7 @@ from ..library.files import (
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..library.programs import load_text
+from ..machine.calls import call_word_pattern
 from . import static_checks
 
 log = logging.getLogger(__name__)
@@ -83,7 +84,7 @@ class CallIndex:
         self._listed = False
         self._numbers: dict[int, set[str]] = {}
         self._names: dict[str, set[str]] = {}
-        self._word = re.compile(_call_words(settings))
+        self._word = re.compile(call_word_pattern(settings.calls))  # a local call (M97) names no program
 
     # ---------------------------------------------------------------- keeping up to date
     def changed(self, path: str) -> None:
@@ -210,17 +211,3 @@ class CallIndex:
     def holds(self, path: str) -> bool:
         self._ensure()
         return path in self._entries
-
-
-def _call_words(settings: MachineSettings) -> str:
-    """A pattern for the words that may make a call: G65, G66, M98, M198 and the codes the
-    machine settings configure (a file without one calls nothing)."""
-    parts = [r"[GgMm][ \t]*\+?0*(?:65|66|98|198)(?![0-9])"]
-    for code in settings.calls:
-        letter, digits = code[:1], code[1:]
-        whole = digits.split(".")[0].lstrip("0") or "0"
-        if not digits or not whole.isdigit():
-            parts.append(f"[{letter.upper()}{letter.lower()}]")
-        else:
-            parts.append(rf"[{letter.upper()}{letter.lower()}][ \t]*\+?0*{whole}(?![0-9])")
-    return "|".join(parts)

@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import time
 from bisect import bisect_left
-from collections.abc import Callable
+from collections.abc import Callable, Container
 from dataclasses import dataclass, field
 from operator import itemgetter
 from pathlib import Path
@@ -415,29 +415,46 @@ def _records_before(st: RunState, at: int, cut: int) -> RunState:
 # ---------------------------------------------------------------- diagnostics of a run
 
 
-def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale: str) -> list[Diagnostic]:
-    """The findings of a finished run (see the module docstring)."""
+def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], str], locale: str) -> Diagnostic:
+    """The alarm the run stopped with, as a diagnostic of ``code``."""
+    m = run.machine
+    a = m.alarm
+    assert a is not None
+    if code == MACRO_ALARM:
+        en = f"the run reaches macro alarm {a.number}: {a.message}"
+        zh = f"运行到宏程序报警 {a.number}：{in_language(a.message, True)}"
+    else:
+        en = f"{a.message} (alarm {a.number})"
+        zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{in_language(a.message, True)}"
+    in_loop = bool(m.frames and m.frames[-1].loops)
+    if in_loop:
+        do_line = m.frames[-1].loops[-1]
+        k = run.passes.get((len(m.frames) - 1, do_line))
+        if k is not None:
+            kind = "WHILE" if "WHILE" in line_text(a.file, do_line).upper() else "DO"
+            en += f", in iteration {k} of the {kind} loop at line {do_line + 1}"
+            zh += f"，第 {do_line + 1} 行 {kind} 循环的第 {k} 次迭代"
+    return _diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale)
+
+
+def run_diagnostics(
+    run: EntryRun,
+    line_text: Callable[[str, int], str],
+    locale: str,
+    invalid: Container[tuple[str, int]] = frozenset(),
+) -> list[Diagnostic]:
+    """The findings of a finished run (see the module docstring). ``invalid`` holds the (file,
+    line) of the blocks the static checks found in error: the alarm a run stops with on one of
+    them is that error again, met when the block runs, and is left out (a macro alarm, which the
+    program raises itself, never is)."""
     m = run.machine
     out: list[Diagnostic] = []
     base = run.dialect.macro_alarm_base
     if m.status == ALARM and m.alarm is not None:
         a = m.alarm
         code = alarm_code(a.number, a.subject, base)
-        if code == MACRO_ALARM:
-            en = f"the run reaches macro alarm {a.number}: {a.message}"
-            zh = f"运行到宏程序报警 {a.number}：{in_language(a.message, True)}"
-        else:
-            en = f"{a.message} (alarm {a.number})"
-            zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{in_language(a.message, True)}"
-        in_loop = bool(m.frames and m.frames[-1].loops)
-        if in_loop:
-            do_line = m.frames[-1].loops[-1]
-            k = run.passes.get((len(m.frames) - 1, do_line))
-            if k is not None:
-                kind = "WHILE" if "WHILE" in line_text(a.file, do_line).upper() else "DO"
-                en += f", in iteration {k} of the {kind} loop at line {do_line + 1}"
-                zh += f"，第 {do_line + 1} 行 {kind} 循环的第 {k} 次迭代"
-        out.append(_diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale))
+        if code == MACRO_ALARM or (a.file, a.line) not in invalid:
+            out.append(_alarm_diagnostic(run, code, line_text, locale))
     elif m.status == LIMIT and m.frames:
         f = m.frames[-1]
         if run.stopped_by == "time":

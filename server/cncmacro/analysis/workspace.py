@@ -93,12 +93,6 @@ log = logging.getLogger(__name__)
 Value = float | None
 MAX_CALLER_ENTRIES = 16  # programs on disk run to reach the open ones, at most
 _T = TypeVar("_T")
-RUN_ALARM_CODES = frozenset({
-    "program-not-found", "nesting-depth", "division-by-zero", "argument-range", "syntax", "variable-number",
-    "write-protected", "bracket-depth", "loop-mismatch", "loop-number", "nc-and-macro", "undefined-label",
-    "argument-address", "program-number", "repeat-count-range", "label-range", "jump-into-loop", "decimal-point",
-    "unknown-g-code",
-})  # fmt: skip
 
 
 @dataclass(slots=True)
@@ -570,14 +564,14 @@ class WorkspaceAnalysis:
         for k, run in self.runs.items():
             shown = self.docs if k in entries else None  # a caller on disk: findings in open files only
             try:
-                found = run_diagnostics(run, self._line_text, self.locale)
+                found = run_diagnostics(run, self._line_text, self.locale, errors)
             except Exception as e:  # a bug: say so where the run started
                 found = [internal_error(run.entry.file.path, run.entry.unit.start, RUN, e, self.locale)]
             for x in found:
                 if shown is not None and x.file not in shown:
                     continue
                 key = (x.file, x.line, x.code)
-                if key in seen or (x.code in RUN_ALARM_CODES and (x.file, x.line) in errors):
+                if key in seen:
                     continue
                 seen.add(key)
                 by_file.setdefault(x.file, []).append(x)

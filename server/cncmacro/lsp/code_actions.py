@@ -60,7 +60,7 @@ def nc_words(doc: OpenDocument, line: int) -> list[Word]:
     if block is None:
         return []
     site = call_site(block, doc.dialect)
-    if site is None or site.kind == "M98":
+    if site is None or site.kind not in ("G65", "G66"):
         return []
     out = []
     after = False

@@ -16,10 +16,8 @@ from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail, in_language
 from ..dialects.alarms import (
-    FORMAT,
     LOOP_NUMBER,
     MISSING_END,
-    NC_AND_MACRO,
     OVERFLOW,
     SEQUENCE_NUMBER,
     STATEMENT_FORMAT,
@@ -44,10 +42,10 @@ from ..syntax.nodes import (
 )
 from . import jumps
 from .alarms import MacroAlarm, raiser
+from .block_rules import MISSING_THEN, first_alarm, validate_block
 from .corners import with_corners
 from .expressions import ExpressionCompiler, Getter
 from .numbers import MAX_VALUE, format_value, round_half_away, to_increment
-from .words import abbreviation_refused, missing_then
 
 if TYPE_CHECKING:
     from .machine import Machine
@@ -309,22 +307,15 @@ class CompiledFile:
 
     def _body(self, block: Block, pc: int, nxt: int) -> Runner:
         label = block.label
-        dialect = self.machine.dialect
-        if block.abbreviations and not dialect.keyword_abbreviations:
-            a = block.abbreviations[0]
-            return raiser(FORMAT, abbreviation_refused(a.text, a.word, dialect))
-        if block.statements:
-            if block.words or block.corners:
-                letter = block.words[0].letter if block.words else f",{block.corners[0].letter}"
-                return raiser(
-                    NC_AND_MACRO,
-                    detail(
-                        f"{letter} word and a macro statement in one block",
-                        f"{letter} 代码与宏语句在同一程序段",
-                    ),
-                )
+        if block.statements or block.abbreviations:  # the block rules of a macro statement (block_rules.py)
+            problem = first_alarm(validate_block(block, self.machine.dialect))
+            if problem is not None and problem.rule != MISSING_THEN:
+                return raiser(problem.alarm, problem.message)
             if len(block.statements) > 1:
                 return raiser(STATEMENT_FORMAT, detail("one macro statement per block", "一个程序段只能有一条宏语句"))
+            if problem is not None:
+                return raiser(problem.alarm, problem.message)
+        if block.statements:
             run = self.statement(block.statements[0], pc, nxt)
         elif block.words:
             run = self.nc_block(block, pc, nxt)
@@ -346,9 +337,7 @@ class CompiledFile:
     def statement(self, s: Statement, pc: int, nxt: int) -> Runner:
         if isinstance(s, Assign):
             return self.assign(s, nxt)
-        if isinstance(s, If):
-            if s.implicit_then and not self.machine.dialect.if_without_then:
-                return raiser(FORMAT, missing_then(self.machine.dialect))
+        if isinstance(s, If):  # without THEN where THEN is needed: a block rule, raised in _body
             test = self.values.condition(s.condition)
             if s.goto is not None:
                 target = self.values.value(s.goto)
