@@ -5,7 +5,9 @@ and advances it one block at a time. ``run`` executes blocks until the program e
 pauses (``M00``, ``#3006``) or spends its block budget; ``step`` executes one block;
 ``run_until`` stops when a predicate holds. ``snapshot`` and ``restore`` copy the state
 cheaply and deterministically, which the debugger's step back and the incremental analysis
-build on. The front ends read ``result()``, ``frames``, and variables through ``read``.
+build on. The front ends read ``result()``, ``frames``, and variables through ``read``; a run's
+status is a ``RunStatus`` (status.py). The analysis watches a run through the ``RunObserver``
+the machine is made with (observer.py); a machine without one knows nothing of it.
 """
 
 from __future__ import annotations
