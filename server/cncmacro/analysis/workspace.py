@@ -73,7 +73,7 @@ from ..library.files import o_number
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
-from ..machine.machine import LIMIT
+from ..machine.status import RunStatus
 from ..syntax.document import ParsedDocument
 from ..syntax.nodes import Block
 from ..syntax.program import ProgramUnit
@@ -431,7 +431,7 @@ class WorkspaceAnalysis:
             self._unreached.rewound(run)
         elif run.max_blocks != budget:  # the runs before it in its file now run more or fewer blocks
             m = run.machine
-            grown = budget > run.max_blocks and m.status == LIMIT and run.stopped_by is None
+            grown = budget > run.max_blocks and m.status == RunStatus.LIMIT and run.stopped_by is None
             run.max_blocks = budget
             if m.blocks > budget or grown:
                 run.back_to(min(m.blocks, budget) - 1)
@@ -499,7 +499,7 @@ class WorkspaceAnalysis:
             return False
         step = run.first_reaching(path, p)
         if step is None:
-            if run.machine.status == LIMIT or not run.finished:
+            if run.machine.status == RunStatus.LIMIT or not run.finished:
                 return False
         else:
             run.rewind(step, avoid_file=path)

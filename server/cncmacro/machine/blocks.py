@@ -219,17 +219,17 @@ class CompiledFile:
     def _watched(self, block: Block, run: Runner) -> Runner:
         """For the analysis: an assignment to a local or common variable (a statement, the
         THEN of an IF when it runs, or a gsk980tdi ``G65 Hm P#n`` arithmetic block) also
-        reports the value it left (``Machine.on_write``), the value an editor shows beside the
-        line; a loop head reports each pass (``Machine.on_loop_pass``: the level, the DO line, and
-        whether the loop was already running)."""
+        reports the value it left (``RunObserver.wrote``), the value an editor shows beside the
+        line; a loop head reports each pass (``RunObserver.loop_pass``: the level, the DO line,
+        and whether the loop was already running)."""
         s = block.statements[0] if len(block.statements) == 1 and not block.words else None
         if isinstance(s, (While, Do)):
 
             def counted(m: Machine, line: int) -> int:
-                hook = m.on_loop_pass
-                if hook is not None:
+                observer = m.observer
+                if observer is not None:
                     loops = m.frames[-1].loops
-                    hook(len(m.frames) - 1, line, bool(loops) and loops[-1] == line)
+                    observer.loop_pass(len(m.frames) - 1, line, bool(loops) and loops[-1] == line)
                 return run(m, line)
 
             return counted
@@ -257,9 +257,9 @@ class CompiledFile:
             nxt = run(m, pc)
             if local:
                 m.wrote_local(n)
-            hook = m.on_write
-            if hook is not None:
-                hook(path, pc, n, m.L[n] if local else m.C[n])
+            observer = m.observer
+            if observer is not None:
+                observer.wrote(path, pc, n, m.L[n] if local else m.C[n])
             return nxt
 
         return watched
