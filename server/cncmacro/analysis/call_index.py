@@ -4,9 +4,10 @@
 endings or ``O1234`` names, hidden folders skipped, no link leading out of the folder) and
 records, per file, the calls with a literal target that it makes (``G65/G66 P``, ``M98 P``
 with its count digits, gsk980tdi ``P[NAME]``, the machine settings' call codes), each with
-the O program of the file that makes it. A file is read once and kept by (modification time,
-size); its text is first searched for a call word and parsed (with the shared block cache)
-only when it has one, and only its lines with a call word are looked at. ``callers`` answers
+the O program of the file that makes it. A file is read once (through the ``FileCache`` it
+shares with the program library) and kept by (modification time, size); its text is first
+searched for a call word and parsed (with the shared block cache) only when it has one, and
+only its lines with a call word are looked at. ``callers`` answers
 which files name a number or a name: candidates only, since which file a call reaches is the
 library's lookup (``ProgramLibrary``), decided by the caller of this index.
 
@@ -28,6 +29,7 @@ from pathlib import Path
 
 from ..bilingual import pick
 from ..library.dialect_choice import choose_dialect
+from ..library.file_cache import FileCache
 from ..library.files import (
     MAX_FOLDER_ENTRIES,
     MAX_PROGRAM_BYTES,
@@ -35,12 +37,10 @@ from ..library.files import (
     FileTooLargeError,
     SkippedFileError,
     o_number,
-    read_program,
     search_program_files,
 )
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
-from ..library.programs import load_text
 from ..machine.calls import call_word_pattern
 from . import static_checks
 
@@ -70,13 +70,15 @@ class CallIndex:
     """See the module docstring."""
 
     def __init__(self, folders: list[str], settings: MachineSettings, dialect: str | None, locale: str = "en",
-                 max_files: int = MAX_FILES, max_bytes: int = MAX_FILE_BYTES) -> None:  # fmt: skip
+                 max_files: int = MAX_FILES, max_bytes: int = MAX_FILE_BYTES,
+                 files: FileCache | None = None) -> None:  # fmt: skip
         self.folders = [Path(f) for f in dict.fromkeys(str(f) for f in folders)]
         self.settings = settings
         self.dialect = dialect
         self.locale = locale
         self.max_files = max_files
         self.max_bytes = max_bytes
+        self.disk = files if files is not None else FileCache()  # shared with the program library
         self.usable = True  # False when there were more files than ``max_files``
         self.files_read = 0  # files read since the index was made (for tests and benchmarks)
         self.files_parsed = 0
@@ -157,7 +159,7 @@ class CallIndex:
     def _read(self, path: str) -> tuple[IndexedCall, ...]:
         """The literal calls that the file at ``path`` makes."""
         try:
-            text = read_program(path, self.max_bytes).text
+            text = self.disk.text(path)  # its size was looked at by ``_ensure``
         except FileTooLargeError as e:
             log.info("%s: its calls are not indexed", e)
             return ()
@@ -168,7 +170,10 @@ class CallIndex:
         if word(text) is None:
             return ()
         self.files_parsed += 1
-        loaded = load_text(path, text)
+        try:
+            loaded = self.disk.load(path)
+        except (OSError, SkippedFileError):  # changed again since
+            return ()
         ctx = static_checks.line_context(
             machine_profile(choose_dialect(loaded.lines, self.settings.dialect, self.dialect), self.settings),
             self.settings,

@@ -36,7 +36,7 @@ def subprogram_text(path: Path, locale: str | None, repeat: str = RUN_REPEAT) ->
 def callers_text(machine: Machine, path: Path, dialect: str | None, locale: str | None) -> str:
     """The programs in ``path``'s folder that call the program ``machine`` ran, or that none does."""
     found = machine.frames[0].found
-    index = CallIndex([str(path.parent)], machine.settings, dialect, locale or "en")
+    index = CallIndex([str(path.parent)], machine.settings, dialect, locale or "en", files=machine.library.disk)
     callers = CallerSearch(machine.library, index, {}).callers(found)
     chinese = is_chinese(locale)
     named = []

@@ -34,7 +34,10 @@ its file. Their runs are incremental like any other, and report only what they f
 files: a caller that was not opened is run for its arguments, not reported. Only the
 workspace folders and the search paths are ever read. The dialect of a run is its entry file's:
 a ``(cncmacro: dialect=..)`` comment in the first lines, then the machine file's
-``dialect``, then ``dialect`` given here, then ``fanuc``.
+``dialect``, then ``dialect`` given here, then ``fanuc``. Files on disk are read through
+``files`` (a ``FileCache``, shared by the program library and the call index): the language
+server gives its workspace index's, which it tells of changes itself; without one the analysis
+keeps its own, which ``file_changed`` tells.
 
 Incremental: parsing is per line (``ParsedDocument``); the per-line static checks are kept
 per line (``StaticLines``), so an edit checks only its lines plus the cross-line part. Each
@@ -69,6 +72,7 @@ from typing import Any, Generic, TypeVar
 from ..bilingual import pick
 from ..dialects import DIALECTS, Dialect, get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
+from ..library.file_cache import FileCache
 from ..library.files import o_number
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
@@ -141,6 +145,7 @@ class WorkspaceAnalysis:
         max_blocks: int | None = None,
         severities: dict[str, str] | None = None,
         workspace_folders: list[str] = (),  # type: ignore[assignment]
+        files: FileCache | None = None,
     ) -> None:
         self.settings = settings or MachineSettings()
         self.dialect_setting = dialect
@@ -154,7 +159,10 @@ class WorkspaceAnalysis:
         self.runs: dict[tuple[str, int], EntryRun] = {}
         self._disk_clock: dict[str, tuple[LoadedFile, bool]] = {}  # files not open: can they read the clock?
         self.stale = True  # every run starts again
-        self.library = ProgramLibrary(self.search_paths)
+        # reads the files on disk, each once; a cache given here is told of changes by its owner
+        self._own_files = files is None
+        self.files = files if files is not None else FileCache()
+        self.library = ProgramLibrary(self.search_paths, files=self.files)
         self.workspace_folders = [str(p) for p in workspace_folders]
         self.index: CallIndex | None = None  # made at the first question (``_find_disk_entries``)
         self._entries: dict[tuple[str, int], FoundProgram] | None = None  # callers on disk that run
@@ -218,13 +226,15 @@ class WorkspaceAnalysis:
         self._reload()
 
     def file_changed(self, path: str) -> None:
+        if self._own_files:
+            self.files.forget(self._key(path))
         if self.index is not None:
             self.index.changed(self._key(path))
         self._reload()
 
     def _reload(self) -> None:
-        """A fresh library (disk files read again), the open documents still in it."""
-        self.library = ProgramLibrary(self.search_paths)
+        """A fresh library (disk files looked at again), the open documents still in it."""
+        self.library = ProgramLibrary(self.search_paths, files=self.files)
         self._entries = None
         for d in self.docs.values():
             d.loaded = self.library.add_parsed(d.path, d.doc.lines, d.doc.program)
@@ -320,7 +330,8 @@ class WorkspaceAnalysis:
         if not self.workspace_folders or all(called for _, _, called in units):
             return
         if self.index is None:
-            self.index = CallIndex(self.workspace_folders, self.settings, self.dialect_setting, self.locale)
+            self.index = CallIndex(self.workspace_folders, self.settings, self.dialect_setting, self.locale,
+                                   files=self.files)  # fmt: skip
         targets = {path: self._targets(d) for path, d in self.docs.items()}
         # how many open files call each program number and name: what the files other than a
         # unit's own call is then one look-up away (not a union over every open file per unit)

@@ -20,13 +20,13 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..analysis.call_sites import call_site
 from ..analysis.profile_suggestion import CODE, suggestion_target
 from ..bilingual import pick
 from ..library.files import SkippedFileError, read_bytes
 from ..library.machine_file import MACHINE_FILE_NAME, MAX_MACHINE_FILE_BYTES, MachineSettings
 from ..machine.calls import MAX_REPEAT
 from ..syntax.nodes import Number, Word
-from .call_sites import call_site
 from .cursor import doc_range
 from .documents import OpenDocument
 from .positions import Encoding

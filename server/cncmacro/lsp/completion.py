@@ -10,10 +10,10 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..analysis.call_sites import CallSite, call_site
 from ..bilingual import pick
 from ..dialects import describe
 from ..dialects.dialect import ARGUMENTS_I
-from .call_sites import CallSite, call_site
 from .cursor import Cursor, cursor_at
 from .semantic_tokens import _name_kinds
 from .texts import t

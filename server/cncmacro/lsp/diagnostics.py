@@ -89,7 +89,8 @@ class DiagnosticsEngine:
 
     def __init__(self, server: CncMacroServer, delay: float = DEBOUNCE_SECONDS) -> None:
         self.server = server
-        self.analyses: dict[Path | None, WorkspaceAnalysis] = {None: WorkspaceAnalysis()}  # per machine file
+        # per machine file; every one reads the files on disk through the workspace index's cache
+        self.analyses: dict[Path | None, WorkspaceAnalysis] = {None: WorkspaceAnalysis(files=server.index.disk)}
         self._search_paths: list[str] = []
         self._folders: list[str] = []
         self._locale = "en"
@@ -149,7 +150,10 @@ class DiagnosticsEngine:
             for unused in [k for k, a in self.analyses.items() if not a.docs]:
                 del self.analyses[unused]  # the one kept when its last document left, say
             analysis = self.analyses[machine_file] = WorkspaceAnalysis(
-                search_paths=self._search_paths, workspace_folders=self._folders, locale=self._locale
+                search_paths=self._search_paths,
+                workspace_folders=self._folders,
+                locale=self._locale,
+                files=self.server.index.disk,
             )
             analysis.configure(**self._options(machine_file))
         return analysis

@@ -5,7 +5,7 @@ document is parsed once. An editor change is applied through the analysis, which
 cached parser in place (only the touched lines are parsed again);
 the document's dialect is chosen again only when an edit touches the first lines, where the
 ``(cncmacro: dialect=...)`` comment lives. Each file is read with its own machine file
-(``machine_files.py``: the nearest ``.cncmacro.toml`` above it), which is where its dialect
+(``library/machine_files.py``: the nearest ``.cncmacro.toml`` above it), which is where its dialect
 chain starts after its comment. Requests read single lines and blocks from here and
 never rebuild the text.
 """
@@ -21,16 +21,16 @@ from urllib.parse import quote, unquote_to_bytes, urlsplit
 from lsprotocol import types
 from pygls.uris import from_fs_path, to_fs_path
 
+from ..analysis.site_index import SiteIndex, SiteMemo
 from ..dialects.dialect import Dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_and_source
 from ..library.machine_file import MachineSettings
+from ..library.machine_files import MachineFiles
 from ..library.profiles import machine_profile
 from ..library.programs import LoadedFile
 from ..syntax.document import ParsedDocument, split_lines
 from ..syntax.nodes import Block
-from .machine_files import MachineFiles
 from .positions import UTF16, Encoding
-from .site_index import SiteIndex
 
 
 def uri_to_path(uri: str) -> str:
@@ -102,6 +102,7 @@ class Documents:
         self.machines = MachineFiles()  # the .cncmacro.toml of each file
         self.setting_dialect: str | None = None  # from the editor's settings
         self.encoding: Encoding = UTF16  # the client's columns, agreed at initialize
+        self.site_memo = SiteMemo()  # the sites of blocks, shared by the documents' site indexes
 
     def dialect_for(self, lines: list[str], path: str) -> Dialect:
         """The dialect of the file at ``path`` with these lines, under its machine file."""
@@ -131,7 +132,7 @@ class Documents:
             item.version,
             parsed,
             dialect,
-            SiteIndex(parsed.blocks, dialect.local_subprogram_code),
+            SiteIndex(parsed.blocks, dialect.local_subprogram_code, self.site_memo),
             machine_file,
         )
         self.by_uri[item.uri] = doc
@@ -142,7 +143,7 @@ class Documents:
         analysis of that machine file)."""
         doc.parsed, doc.machine_file = parsed, machine_file
         doc.dialect = self.dialect_for(parsed.lines, doc.path)
-        doc.sites = SiteIndex(parsed.blocks, doc.dialect.local_subprogram_code)
+        doc.sites = SiteIndex(parsed.blocks, doc.dialect.local_subprogram_code, self.site_memo)
 
     def change(
         self, params: types.DidChangeTextDocumentParams, apply: Callable[[OpenDocument, Edit], None] | None = None
@@ -177,7 +178,7 @@ class Documents:
             if isinstance(change, types.TextDocumentContentChangePartial):
                 doc.sites.replaced(doc.parsed.blocks, edit[0], edit[2] + 1, len(split_lines(change.text)))
             else:
-                doc.sites = SiteIndex(doc.parsed.blocks, doc.dialect.local_subprogram_code)
+                doc.sites = SiteIndex(doc.parsed.blocks, doc.dialect.local_subprogram_code, self.site_memo)
         doc.version = params.text_document.version
         if header_touched:
             self._set_dialect(doc)
@@ -188,7 +189,7 @@ class Documents:
         doc.dialect = self.dialect_for(doc.parsed.lines, doc.path)
         local = doc.dialect.local_subprogram_code
         if doc.sites.local_call != local:
-            doc.sites = SiteIndex(doc.parsed.blocks, local)
+            doc.sites = SiteIndex(doc.parsed.blocks, local, self.site_memo)
 
     def close(self, uri: str) -> OpenDocument | None:
         return self.by_uri.pop(uri, None)

@@ -8,7 +8,7 @@ written; an N label shows the jumps to it; an O program (or the P of a call) sho
 and file, or, for a program kept on the control that the profile documents (Haas's probing
 macros), what it does, the arguments it reads (those the call gives marked) and what it
 writes. Only the block under the cursor is parsed; the places come from each file's site index
-(``site_index.py``), in time proportional to how many there are.
+(``analysis/site_index.py``), in time proportional to how many there are.
 """
 
 from __future__ import annotations
@@ -18,6 +18,8 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..analysis.call_sites import call_site
+from ..analysis.sites import jump_sites, label_jumps, word_at
 from ..bilingual import in_language, is_chinese, pick
 from ..dialects import describe
 from ..dialects.functions_data import GSK_H_CODES
@@ -26,11 +28,8 @@ from ..machine.calls import argument_targets, letters_for_local
 from ..machine.variables import named_number
 from ..syntax.nodes import Abbreviation, Bracket, Call, CornerWord, NamedVar, Number, Unary, Var, Word
 from ..syntax.walk import nodes_at
-from .call_sites import call_site
 from .cursor import Cursor, cursor_at
 from .program_docs import doc_lines
-from .site_index import workspace_sites
-from .sites import jump_sites, label_jumps, word_at
 from .texts import t
 
 if TYPE_CHECKING:
@@ -183,7 +182,7 @@ def _bulleted(entries: list[str], loc: str, total: int | None = None) -> list[st
 def write_places(ls: CncMacroServer, number: int) -> list[tuple[str, int]]:
     """Every (file, line) in the workspace that assigns ``#number`` (from each file's map of
     the lines that write each variable)."""
-    return [(f.path, i) for f in workspace_sites(ls) for i in f.sites.writes(number)]
+    return [(f.path, i) for f in ls.index.file_sites() for i in f.sites.writes(number)]
 
 
 # ---------------------------------------------------------------- labels and programs

@@ -16,16 +16,16 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
 
+from ..analysis.call_sites import call_site
+from ..analysis.site_index import FileSites
+from ..analysis.sites import jump_sites, label_jumps, starts_from_the_top
 from ..dialects import describe
 from ..library.machine_file import CallCode
 from ..machine.jumps import first_line, goto_line, return_line
 from ..syntax.nodes import Var
 from ..syntax.walk import nodes_at
-from .call_sites import call_site
 from .cursor import Cursor, cursor_at, doc_range
 from .positions import Encoding
-from .site_index import FileSites, workspace_sites
-from .sites import jump_sites, label_jumps, starts_from_the_top
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -180,7 +180,7 @@ def variable_references(
             (FileSites(cur.doc.path, cur.doc.lines, cur.doc.sites), unit.start, unit.end)
         ]
     else:
-        files = [(f, 0, None) for f in workspace_sites(ls)]
+        files = [(f, 0, None) for f in ls.index.file_sites()]
     for f, start, end in files:
         uri = ls.uri_for_path(f.path)
         for i in f.sites.mentions(number, start, end):

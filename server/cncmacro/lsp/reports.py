@@ -22,7 +22,7 @@ from ..analysis.codes import default_severity
 from ..analysis.severity import OFF
 from ..bilingual import Detail, in_language, is_chinese
 from ..library.files import shown_text
-from .machine_files import MachineFileState
+from ..library.machine_files import MachineFileState
 
 if TYPE_CHECKING:
     from .server import CncMacroServer

@@ -25,6 +25,7 @@ from pygls.protocol.language_server import lsp_method
 from pygls.workspace import Workspace
 
 from .. import __version__
+from ..analysis.workspace_index import WorkspaceIndex
 from ..dialects.registry import profile_facts
 from ..library.machine_file import MACHINE_FILE_NAME
 from ..syntax.block_parser import warm_up
@@ -35,7 +36,6 @@ from .positions import negotiate
 from .reports import log_skipped, publish_machine_file, report_skipped
 from .settings import SECTION, Settings
 from .stdio import serve_stdio
-from .workspace_index import WorkspaceIndex
 
 log = logging.getLogger(__name__)
 CONFIGURATION_TIMEOUT = 2.0  # seconds to wait for the editor's settings before analysing
@@ -110,7 +110,8 @@ class CncMacroServer(LanguageServer):
     def __init__(self) -> None:
         super().__init__("cncmacro", __version__, protocol_cls=CncMacroProtocol)
         self.documents = Documents()
-        self.index = WorkspaceIndex(self.documents)
+        documents = self.documents
+        self.index = WorkspaceIndex(documents.by_uri.values, documents.dialect_for, documents.site_memo)
         self.settings = Settings()
         self.locale: str = "en"
         self.diagnostics = DiagnosticsEngine(self)

@@ -5,7 +5,7 @@ The editor's settings come from ``initializationOptions`` at start and from
 ``workspace/didChangeConfiguration``: ``dialect``, ``severity`` (diagnostic code ->
 ``error|warning|information|hint|off``), ``runBudget`` (blocks per analysis run) and
 ``inlayHints.values`` (show the value each assignment left in the analysis run; off). The
-machine file a program is read with (``machine_files.py``) gives the dialect that the chain of
+machine file a program is read with (``library/machine_files.py``) gives the dialect that the chain of
 docs/design.md puts before the editor's, and severities that the editor's override
 (``merged_severities``).
 """

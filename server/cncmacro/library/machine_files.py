@@ -1,5 +1,5 @@
-"""The machine files of a language-server session: which ``.cncmacro.toml`` each file is read
-with, and what each one says.
+"""The machine files of a session over workspace folders (the language server's): which
+``.cncmacro.toml`` each file is read with, and what each one says.
 
 The rule is ``cncmacro check``'s and ``cncmacro run``'s: a file in a workspace folder is read with
 the nearest ``.cncmacro.toml`` above it (``library.machine_file.find_machine_file``), none
@@ -9,8 +9,8 @@ workspace folder's. Where the nearest one is, is kept per folder (a file that is
 looked up by itself, as ``find_machine_file`` follows it), and each machine file is read once;
 both are forgotten when any machine file changes on disk (``forget``), where the nearest
 one is also when the workspace folders change (``set_roots``). A machine file that cannot be
-used is kept with its problem, never raised: the files below it get the defaults, and
-``reports.py`` shows the problem on it.
+used is kept with its problem, never raised: the files below it get the defaults, and the
+language server shows the problem on it (``lsp/reports.py``).
 """
 
 from __future__ import annotations
@@ -21,8 +21,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..bilingual import detail
-from ..library.files import stays_inside
-from ..library.machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
+from .files import stays_inside
+from .machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
 
 log = logging.getLogger(__name__)
 
