@@ -75,7 +75,7 @@ async def test_an_m97_call_to_a_label_of_the_file_alone_suggests_haas(fanuc_en: 
     diags = (await diagnostics_for(fanuc_en, uri, 1)).diagnostics
     [hint] = [d for d in diags if d.code == "profile-suggestion"]
     assert "Haas NGC mill" in hint.message and "line 4" in hint.message
-    assert (hint.range.start.line, hint.range.start.character) == (3, 5)  # on the 100 of P100
+    assert (hint.range.start.line, hint.range.start.character) == (3, 4)  # on P100
     actions = await actions_for(fanuc_en, uri, hint)
     assert any("(cncmacro: dialect=haas)" in a.title for a in actions)
 

@@ -308,6 +308,11 @@ def _nc_block(
         value = _constant(p, ctx)
         if p is not None and value is not None:
             facts.returns.append(ReturnJump(int(round_half_away(value)), p.start, p.end))
+    elif ctx.foreign_local and (foreign := [m for m in ms if m in ctx.foreign_local]):
+        p = _last(words, "P")
+        value = _constant(p, ctx)
+        if p is not None and value is not None and value == int(value):
+            facts.foreign_calls.append((foreign[0], int(value), p.start, p.end))
 
 
 def _last(words: tuple[Word, ...], letter: str) -> Word | None:

@@ -107,9 +107,20 @@ class LineFacts:
     jumps: list[Jump] = field(default_factory=list)
     calls: list[CallSite] = field(default_factory=list)
     returns: list[ReturnJump] = field(default_factory=list)
+    # another profile's local subprogram call (Haas M97 P n read under a profile without one):
+    # (its M code, the label P names, the span of that label), for profile_suggestion.py
+    foreign_calls: list[tuple[float, int, int, int]] = field(default_factory=list)
 
     def __bool__(self) -> bool:
-        return bool(self.findings or self.jumps or self.calls or self.returns)
+        return bool(self.findings or self.jumps or self.calls or self.returns or self.foreign_calls)
+
+
+def foreign_local_codes(dialect: Dialect) -> tuple[float, ...]:
+    """The local subprogram call codes of the other profiles (``Dialect.local_subprogram_code``)
+    that ``dialect`` reads as plain M codes; empty for a dialect that has one of its own."""
+    if dialect.local_subprogram_code is not None:
+        return ()
+    return tuple(sorted({c for d in BY_NAME.values() if (c := d.local_subprogram_code) is not None}))
 
 
 # A plain line (``Block.plain``) needs a look only when it holds one of these codes: a macro or
@@ -125,6 +136,7 @@ class LineContext:
         self.dialect = dialect
         self.settings = settings
         self.locale = locale
+        self.foreign_local = foreign_local_codes(dialect)
         self.kinds = VariableKinds(dialect)
         self.values = ExpressionCompiler(self.kinds)
         # the other dialects, to tell a feature this one lacks from a plain mistake
@@ -153,8 +165,10 @@ def _plain_pattern(settings: MachineSettings, dialect: Dialect) -> str:
     """The pattern of a plain line that may need a check: the call codes, the codes that the
     machine settings configure as calls, and words a control may refuse (``machine/words.py``)."""
     parts = [_PLAIN_CALL, plain_line_pattern(dialect.name, settings.calls)]
-    local = dialect.local_subprogram_code
-    if local is not None:  # Haas M97: a call to a label of the program itself
+    # Haas M97: a call to a label of the program itself, or under another profile its signature
+    for local in (
+        (dialect.local_subprogram_code,) if dialect.local_subprogram_code is not None else foreign_local_codes(dialect)
+    ):
         parts.append(rf"(?:^|[ \t])[Mm][+]?0*{local:g}(?:\.0*)?(?=[ \t]|$)")
     for code in settings.calls:
         letter, digits = code[:1], code[1:]

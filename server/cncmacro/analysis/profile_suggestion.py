@@ -17,7 +17,7 @@ FANUC tool-wear programs write (docs/profiles.md).
 
 from __future__ import annotations
 
-import re
+from collections.abc import Mapping
 
 from ..bilingual import pick
 from ..dialects import DIALECTS, Dialect
@@ -25,6 +25,7 @@ from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..syntax.program import Program
 from .diagnostics import Diagnostic, diagnostic
+from .line_facts import LineFacts
 
 CODE = "profile-suggestion"
 # the findings that say "this control lacks it": syntax or G codes another control has
@@ -58,30 +59,22 @@ def suggested_profile(
 
 
 def local_call_lines(
-    program: Program, dialect: Dialect, settings: MachineSettings
+    facts: Mapping[int, LineFacts], program: Program, dialect: Dialect, settings: MachineSettings
 ) -> tuple[Dialect, list[tuple[int, int, int]]] | None:
     """The first other profile that reads some block of ``program`` as a local subprogram call
     (``Dialect.local_subprogram_code``, Haas ``M97``) to a label the program has, where
-    ``dialect`` reads no such call, with those calls (line, and the span of their P word); None
-    when there is none."""
-    from .static_checks import line_context, line_facts
-
+    ``dialect`` reads no such call, with those calls (line, and the span of their label); None
+    when there is none. ``facts`` are the program's per-line facts under ``dialect``
+    (``LineFacts.foreign_calls``), so that only the lines that have facts are looked at."""
+    found: dict[float, list[tuple[int, int, int]]] = {}
+    for k, f in facts.items():
+        for code, label, start, end in f.foreign_calls:
+            if k < program.read_end and label in program.labels:
+                found.setdefault(code, []).append((k, start, end))
     for name in DIALECTS:
         other = machine_profile(name, settings)
-        code = other.local_subprogram_code
-        if name == dialect.name or code is None or code == dialect.local_subprogram_code:
-            continue
-        mention = re.compile(rf"[Mm][+]?0*{code:g}(?![0-9.])").search
-        how = f"M{code:g}"
-        ctx = line_context(other, settings)
-        lines: list[tuple[int, int, int]] = []
-        for k, b in enumerate(program.blocks[: program.read_end]):
-            if not (mention(b.plain) if b.plain is not None else any(w.letter == "M" for w in b.words)):
-                continue
-            facts = line_facts(b, ctx)
-            lines += [(k, *c.q_span) for c in facts.calls if c.how == how and c.q in program.labels] if facts else []
-        if lines:
-            return other, lines
+        if name != dialect.name and other.local_subprogram_code in found:
+            return other, sorted(found[other.local_subprogram_code])
     return None
 
 
@@ -91,19 +84,22 @@ def suggestion_target(program: Program, dialect: Dialect, settings: MachineSetti
     from .static_checks import line_context, line_facts
 
     ctx = line_context(dialect, settings)
-    features = [
-        k
-        for k, b in enumerate(program.blocks)
-        if (facts := line_facts(b, ctx)) is not None and any(f.code in FEATURE_CODES for f in facts.findings)
-    ]
+    facts = {k: f for k, b in enumerate(program.blocks) if (f := line_facts(b, ctx)) is not None}
+    features = [k for k, f in facts.items() if any(x.code in FEATURE_CODES for x in f.findings)]
     if features:
         return suggested_profile(program, dialect, settings, features)
-    found = local_call_lines(program, dialect, settings)
+    found = local_call_lines(facts, program, dialect, settings)
     return None if found is None else found[0]
 
 
 def suggestion(
-    own: list[Diagnostic], program: Program, file: str, dialect: Dialect, settings: MachineSettings, locale: str
+    own: list[Diagnostic],
+    facts: Mapping[int, LineFacts],
+    program: Program,
+    file: str,
+    dialect: Dialect,
+    settings: MachineSettings,
+    locale: str,
 ) -> Diagnostic | None:
     """The ``profile-suggestion`` for a file whose findings are ``own``, placed on its first
     ``dialect-feature`` finding; None when there is nothing to suggest."""
@@ -115,7 +111,7 @@ def suggestion(
         at = (features[0].line, features[0].column, features[0].end_line, features[0].end_column)
         lines = sorted({d.line + 1 for d in features})
     else:
-        found = local_call_lines(program, dialect, settings)
+        found = local_call_lines(facts, program, dialect, settings)
         if found is None:
             return None
         other, calls = found

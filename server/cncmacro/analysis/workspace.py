@@ -548,8 +548,8 @@ class WorkspaceAnalysis:
             static = self._static(d)
             d.own = static.diagnostics(d.doc.program, d.path, static.ctx.dialect, self.library, self.locale)
             chosen = dialect_from_text(d.doc.lines[:HEADER_LINES])  # a file that names its profile is not asked
-            hint = None if chosen else suggestion(d.own, d.doc.program, d.path, static.ctx.dialect, self.settings,
-                                                  self.locale)  # fmt: skip
+            hint = None if chosen else suggestion(d.own, static.facts, d.doc.program, d.path,
+                                                  static.ctx.dialect, self.settings, self.locale)  # fmt: skip
             if hint is not None:
                 d.own.append(hint)
         return d.own
