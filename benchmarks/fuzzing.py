@@ -43,8 +43,7 @@ from cncmacro.library.machine_file import MachineSettings
 from cncmacro.library.programs import ProgramLibrary
 from cncmacro.lsp.positions import UTF8, UTF16, UTF32
 from cncmacro.lsp.server import CncMacroServer, build_server
-from cncmacro.machine import Machine
-from cncmacro.machine.machine import PAUSED
+from cncmacro.machine import Machine, RunStatus
 from cncmacro.syntax.document import ParsedDocument, split_lines
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -264,7 +263,7 @@ def check_run(text: str, dialect: str, path: str, budget: int = RUN_BUDGET) -> s
     m.start_file(path, text)
     while True:
         status = m.run(budget - m.blocks)
-        if status != PAUSED:
+        if status != RunStatus.PAUSED:
             break
         m.resume()
     if m.blocks > budget:

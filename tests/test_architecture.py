@@ -8,8 +8,9 @@ like any other: it still ties the module to the layer it names (a type annotatio
 layer above is a sign the code sits in the wrong layer), and no module today needs an
 exception. The same reading finds the calls that open a file (``open()``, ``os.open()``,
 ``io.open()``, ``.read_text()``/``.read_bytes()`` and their ``write`` twins; not ``Path.open``,
-whose name is shared with too much else), ``eval``/``exec``/``compile`` and DAP's
-``request_seq``. A module loaded by name (``importlib.import_module`` in ``dialects/``) is not
+whose name is shared with too much else), ``eval``/``exec``/``compile``, DAP's
+``request_seq`` and a test of a locale for Chinese (``"zh"`` compared with or looked for in a
+string). A module loaded by name (``importlib.import_module`` in ``dialects/``) is not
 seen. Each broken rule is reported as ``server/cncmacro/<file>:<line>: what [rule] the rule``.
 
 ``LAYERS`` and ``RULES`` are the one place the rules are written for the test; ARCHITECTURE.md
@@ -61,6 +62,8 @@ RULES: dict[str, str] = {
     "L8": "files are opened in library/files.py, which reads every program file and the machine file, "
           "and nowhere else but the places OPENS_ALLOWED names with their reasons",
     "L9": "no eval, exec or compile of Python text",
+    "L10": "only bilingual.py tells whether a locale is Chinese (is_chinese, pick); no other module "
+           "tests a locale for zh",
     "C1": "the toolpath's geometry and page and the server's start-up (toolpathGeometry.ts, "
           "toolpathView.ts, serverProcess.ts) do not import vscode",
 }  # fmt: skip
@@ -94,6 +97,12 @@ OPENS_ALLOWED = {
 }  # fmt: skip
 _OPEN_METHODS = {"read_text", "read_bytes", "write_text", "write_bytes"}
 
+# L10: the one module that may test a locale for Chinese, and how a test of one is spotted: a
+# string starting with "zh" compared with (==, !=, in) or passed to startswith/endswith
+LOCALE_TESTER = "bilingual.py"
+_ZH = re.compile(r"zh", re.I)
+_STRING_TESTS = {"startswith", "endswith"}
+
 # C1
 CLIENT_WITHOUT_VSCODE = ("toolpathGeometry.ts", "toolpathView.ts", "serverProcess.ts")
 
@@ -118,6 +127,7 @@ class Module:
     imports: list[Import] = field(default_factory=list)
     opens: list[tuple[int, str]] = field(default_factory=list)  # (line, what) for L8
     evals: list[tuple[int, str]] = field(default_factory=list)  # (line, what) for L9
+    locale_tests: list[tuple[int, str]] = field(default_factory=list)  # (line, what) for L10
     strings: dict[str, int] = field(default_factory=dict)  # string constant -> first line
 
 
@@ -188,11 +198,25 @@ class _Reader(ast.NodeVisitor):
                 self.m.opens.append((node.lineno, f"{owner}.{f.attr}()"))
             elif f.attr in _OPEN_METHODS:
                 self.m.opens.append((node.lineno, f".{f.attr}()"))
+            if f.attr in _STRING_TESTS and any(_zh_constant(a) for a in node.args):
+                self.m.locale_tests.append((node.lineno, f".{f.attr}() of a zh string"))
+        self.generic_visit(node)
+
+    def visit_Compare(self, node: ast.Compare) -> None:
+        if any(_zh_constant(n) for n in (node.left, *node.comparators)):
+            self.m.locale_tests.append((node.lineno, "a comparison with a zh string"))
         self.generic_visit(node)
 
     def visit_Constant(self, node: ast.Constant) -> None:
         if isinstance(node.value, str):
             self.m.strings.setdefault(node.value, node.lineno)
+
+
+def _zh_constant(node: ast.expr) -> bool:
+    """A string constant (or a tuple of them) that starts with ``zh``: a locale being tested."""
+    if isinstance(node, ast.Tuple):
+        return any(_zh_constant(e) for e in node.elts)
+    return isinstance(node, ast.Constant) and isinstance(node.value, str) and bool(_ZH.match(node.value))
 
 
 def read_package(root: Path) -> dict[str, Module]:
@@ -251,6 +275,9 @@ def violations(modules: dict[str, Module]) -> list[str]:
                 report(m, line, f"opens a file with {what}", "L8")
         for line, what in m.evals:
             report(m, line, f"calls {what}", "L9")
+        if m.path != LOCALE_TESTER:
+            for line, what in m.locale_tests:
+                report(m, line, f"tests a locale for Chinese with {what}", "L10")
     return out
 
 
@@ -388,6 +415,19 @@ def test_cli_main_may_start_a_server_only_from_inside_a_function(tmp_path: Path)
     at_top = _package(tmp_path / "b", {"cli/main.py": "from ..lsp.server import serve\n", "lsp/server.py": ""})
     assert violations(inside) == []
     assert [v.split(" [")[1][:2] for v in violations(at_top)] == ["L4"]
+
+
+def test_a_locale_is_tested_for_chinese_only_in_bilingual(tmp_path: Path) -> None:
+    modules = _package(tmp_path, {
+        "bilingual.py": "def is_chinese(locale):\n    return bool(locale) and locale.lower().startswith('zh')\n",
+        "lsp/texts.py": "def t(locale):\n    return locale.lower().startswith(('zh', 'ja'))\n",
+        "dap/show.py": "def f(locale):\n    return 1 if locale == 'zh-CN' else 2\n",
+        "machine/alarms.py": "def f(text):\n    return alarm_text(1, 'zh') + text.startswith('Z')\n",
+    })  # fmt: skip
+    assert sorted(v.split(" with ")[0] for v in violations(modules)) == [
+        "server/cncmacro/dap/show.py:2: tests a locale for Chinese",
+        "server/cncmacro/lsp/texts.py:2: tests a locale for Chinese",
+    ]
 
 
 @pytest.mark.parametrize("layer", ["syntax", "dialects", "library", "machine", "analysis"])

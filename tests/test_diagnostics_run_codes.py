@@ -179,3 +179,18 @@ def test_4_control_flow_a_finding_in_a_loop_names_the_iteration_of_the_innermost
 def test_5_calls_a_program_that_only_calls_itself_still_runs_and_reports_its_nesting(tmp_path):
     files = {"SELF.nc": "O0001\n#100=#100+1\nM98 P0001\nM30\n"}
     assert found(analyse(tmp_path, files), "nesting-depth") == [("SELF.nc", 3, "error")]
+
+
+def test_a_block_the_static_check_finds_in_error_is_not_repeated_by_the_run_under_another_code(tmp_path):
+    # the run meets the same problem as an alarm whose code differs from the static finding's
+    for dialect, line, code in [
+        ("fanuc", "M03 G65 P9001", "g65-nc-words"),  # alarm 127 when run
+        ("fanuc", "G65 P9001 O5", "g65-nc-words"),
+        ("gsk980tdi", "IF[#1 EQ 0] #2=3", "dialect-feature"),  # alarm 114 when run
+        ("gsk980tdi", "G65 H01 Q1", "argument-address"),
+        ("fanuc", "#1=#3000", "write-only"),
+        ("fanuc", "G65 P[CUT]", "dialect-feature"),
+    ]:
+        files = {"O0001.nc": f"O0001\n{line}\nM30\n", "O9001.nc": "O9001\nM99\n"}
+        diags = analyse(tmp_path, files, dialect=dialect)
+        assert [(d.line, d.code) for d in diags if d.severity == "error"] == [(1, code)], (dialect, line)

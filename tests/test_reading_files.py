@@ -3,6 +3,8 @@ binary files reported rather than parsed."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from cncmacro.library.files import (
@@ -11,6 +13,7 @@ from cncmacro.library.files import (
     encode_program,
     find_program_files,
     is_program_file,
+    o_number,
 )
 from cncmacro.syntax.document import ParsedDocument, split_lines
 
@@ -80,3 +83,14 @@ def test_program_files_by_ending_or_o_number(tmp_path):
     assert is_program_file(tmp_path / "O1234") and not is_program_file(tmp_path / "readme")
     names = [p.name for p in find_program_files(tmp_path)]
     assert names == ["O1234", "a.NC", "b.cnc"]
+
+
+def test_a_name_spells_a_program_number_with_an_o_and_one_to_eight_digits():
+    """``P[O1004]`` and a file ``O1004.nc`` name O1004; the file ``1004.nc`` does too, a bracketed
+    ``P[1004]`` does not (it is a file name); a name of nine digits is a program file, not a number."""
+    assert o_number("O1004") == o_number("o01004") == o_number("1004", bare=True) == 1004
+    assert o_number("O12345678") == 12345678 and o_number("O123456789") is None
+    assert o_number("1004") is None and o_number("O") is None and o_number("O12A") is None
+    assert o_number("O1004 ") is None and o_number("OO1004", bare=True) is None
+    assert is_program_file(Path("O123456789")) and is_program_file(Path("o7"))
+    assert not is_program_file(Path("1234")) and not is_program_file(Path("O")) and not is_program_file(Path("O12.3"))

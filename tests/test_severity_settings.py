@@ -9,8 +9,9 @@ from pathlib import Path
 import pytest
 
 from cncmacro.analysis import syntax_diagnostics
+from cncmacro.analysis.codes import CODES
 from cncmacro.analysis.diagnostics import Diagnostic
-from cncmacro.analysis.severity import CODES, apply_severities
+from cncmacro.analysis.severity import apply_severities
 from cncmacro.library.machine_file import MachineFileError, load_machine_file
 from cncmacro.syntax.document import ParsedDocument
 

@@ -6,8 +6,12 @@ compares or prints the message sees English) and whose ``zh`` attribute holds th
 ``detail(en, zh)`` makes one, written at the place that reports the problem so that both texts
 are read and changed together; the front ends choose with ``in_language``, which gives back a
 text the program wrote itself (a ``#3000`` message) unchanged. A ``Detail`` survives copying
-and pickling; string operations on it (an f-string, ``+``) give a plain English ``str``. This
-module imports nothing of the package, so that every layer may use it.
+and pickling; string operations on it (an f-string, ``+``) give a plain English ``str``.
+
+Where both texts are at hand (a check's message, a table row's ``en``/``zh``, a word of the
+editor), ``pick(locale, en, zh)`` chooses. ``is_chinese`` is the one place that says which
+locales read Chinese: any ``zh`` locale (``zh``, ``zh-cn``, ``zh-CN``, ``zh_TW``), in any case.
+This module imports nothing of the package, so that every layer may use it.
 """
 
 from __future__ import annotations
@@ -33,6 +37,16 @@ class Detail(str):
 def detail(en: str, zh: str) -> Detail:
     """The same text in English and in Chinese (numbers, codes and ``#`` variables as in ``en``)."""
     return Detail(en, zh)
+
+
+def is_chinese(locale: str | None) -> bool:
+    """Whether ``locale`` reads Chinese: it starts with ``zh`` in any case; None or ``""`` is English."""
+    return bool(locale) and str(locale).lower().startswith("zh")
+
+
+def pick(locale: str | None, en: str, zh: str) -> str:
+    """``zh`` for a Chinese locale (``is_chinese``), else ``en``."""
+    return zh if is_chinese(locale) else en
 
 
 def in_language(text: str, chinese: bool) -> str:

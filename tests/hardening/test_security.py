@@ -16,13 +16,13 @@ from pathlib import Path
 import pytest
 
 from cncmacro.analysis.workspace import WorkspaceAnalysis
+from cncmacro.analysis.workspace_index import WorkspaceIndex
 from cncmacro.dap.protocol import MessageWriter, Request
 from cncmacro.dap.session import Session
 from cncmacro.library.files import find_program_files
 from cncmacro.library.machine_file import MachineFileError, load_machine_file
 from cncmacro.library.programs import ProgramLibrary
 from cncmacro.lsp.documents import Documents
-from cncmacro.lsp.workspace_index import WorkspaceIndex
 
 SECRET = "O9100 (SECRET)\n#100=42\nM99\n"
 
@@ -111,7 +111,8 @@ def test_a_persistent_file_in_a_subfolder_is_allowed(workspace: Path) -> None:
 def test_the_workspace_index_reads_no_file_outside_its_folders(workspace: Path, outside: Path) -> None:
     (workspace / "O0001.nc").write_text("O0001\nM30\n", encoding="utf-8")
     (workspace / "O9100.nc").symlink_to(outside / "O9100.nc")
-    index = WorkspaceIndex(Documents())
+    documents = Documents()
+    index = WorkspaceIndex(documents.by_uri.values, documents.dialect_for)
     assert index.scan([str(workspace)]) == 1
     index.reload(str(outside / "O9100.nc"))  # a file event for a path outside the workspace
     index.reload(str(workspace / "O9100.nc"))  # and for the link

@@ -123,6 +123,25 @@ async def test_a_called_program_changed_on_disk_is_read_again_without_file_event
         close_file(not_watching, uri)
 
 
+async def test_a_machine_file_created_in_a_document_s_folder_applies_to_it_without_file_events(
+    not_watching: LanguageClient,
+) -> None:
+    root: Path = not_watching.root  # type: ignore[attr-defined]
+    folder = root / "lathe"
+    folder.mkdir(exist_ok=True)
+    machine = folder / ".cncmacro.toml"
+    uri = open_file(not_watching, folder / "MAIN4.nc", "O0004\n#150=1\nM30\n")
+    try:
+        assert findings(await diagnostics_for(not_watching, uri, 1)) == []
+        machine.write_text("common = [[100, 149]]\n", "utf-8")  # the nearest machine file, below the root
+        edit(not_watching, uri, 2, 1, 5, 6, "2")
+        found = await asyncio.wait_for(diagnostics_for(not_watching, uri, 2), 10)
+        assert findings(found) == [(1, "variable-number")]
+    finally:
+        machine.unlink(missing_ok=True)
+        close_file(not_watching, uri)
+
+
 @pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="FIFOs are a POSIX thing")
 async def test_a_called_program_replaced_by_a_fifo_is_not_found_without_file_events(
     not_watching: LanguageClient,

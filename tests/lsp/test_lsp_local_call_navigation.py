@@ -33,7 +33,7 @@ class _Documents(Documents):
         super().__init__()
         self.fixed = dialect
 
-    def dialect_for(self, lines: list[str]) -> Dialect:
+    def dialect_for(self, lines: list[str], path: str) -> Dialect:
         return self.fixed
 
 

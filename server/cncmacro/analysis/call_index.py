@@ -4,9 +4,10 @@
 endings or ``O1234`` names, hidden folders skipped, no link leading out of the folder) and
 records, per file, the calls with a literal target that it makes (``G65/G66 P``, ``M98 P``
 with its count digits, gsk980tdi ``P[NAME]``, the machine settings' call codes), each with
-the O program of the file that makes it. A file is read once and kept by (modification time,
-size); its text is first searched for a call word and parsed (with the shared block cache)
-only when it has one, and only its lines with a call word are looked at. ``callers`` answers
+the O program of the file that makes it. A file is read once (through the ``FileCache`` it
+shares with the program library) and kept by (modification time, size); its text is first
+searched for a call word and parsed (with the shared block cache) only when it has one, and
+only its lines with a call word are looked at. ``callers`` answers
 which files name a number or a name: candidates only, since which file a call reaches is the
 library's lookup (``ProgramLibrary``), decided by the caller of this index.
 
@@ -26,27 +27,27 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..bilingual import pick
 from ..library.dialect_choice import choose_dialect
+from ..library.file_cache import FileCache
 from ..library.files import (
     MAX_FOLDER_ENTRIES,
     MAX_PROGRAM_BYTES,
     MAX_PROGRAM_FILES,
     FileTooLargeError,
     SkippedFileError,
-    read_program,
+    o_number,
     search_program_files,
 )
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
-from ..library.programs import load_text
+from ..machine.calls import call_word_pattern
 from . import static_checks
-from .locale import pick
 
 log = logging.getLogger(__name__)
 
 MAX_FILES = MAX_PROGRAM_FILES
 MAX_FILE_BYTES = MAX_PROGRAM_BYTES
-_O_NAME = re.compile(r"^[Oo](\d{1,8})$")
 
 
 @dataclass(frozen=True, slots=True)
@@ -69,13 +70,15 @@ class CallIndex:
     """See the module docstring."""
 
     def __init__(self, folders: list[str], settings: MachineSettings, dialect: str | None, locale: str = "en",
-                 max_files: int = MAX_FILES, max_bytes: int = MAX_FILE_BYTES) -> None:  # fmt: skip
+                 max_files: int = MAX_FILES, max_bytes: int = MAX_FILE_BYTES,
+                 files: FileCache | None = None) -> None:  # fmt: skip
         self.folders = [Path(f) for f in dict.fromkeys(str(f) for f in folders)]
         self.settings = settings
         self.dialect = dialect
         self.locale = locale
         self.max_files = max_files
         self.max_bytes = max_bytes
+        self.disk = files if files is not None else FileCache()  # shared with the program library
         self.usable = True  # False when there were more files than ``max_files``
         self.files_read = 0  # files read since the index was made (for tests and benchmarks)
         self.files_parsed = 0
@@ -83,7 +86,7 @@ class CallIndex:
         self._listed = False
         self._numbers: dict[int, set[str]] = {}
         self._names: dict[str, set[str]] = {}
-        self._word = re.compile(_call_words(settings))
+        self._word = re.compile(call_word_pattern(settings.calls))  # a local call (M97) names no program
 
     # ---------------------------------------------------------------- keeping up to date
     def changed(self, path: str) -> None:
@@ -133,9 +136,9 @@ class CallIndex:
                     self._numbers.setdefault(c.number, set()).add(path)
                 if c.name is not None:
                     self._names.setdefault(c.name, set()).add(path)
-                    m = _O_NAME.match(c.name)
-                    if m:
-                        self._numbers.setdefault(int(m.group(1)), set()).add(path)
+                    number = o_number(c.name)
+                    if number is not None:
+                        self._numbers.setdefault(number, set()).add(path)
 
     def _list(self) -> list[str] | None:
         """The program files under the folders, or None when there are more than allowed."""
@@ -156,7 +159,7 @@ class CallIndex:
     def _read(self, path: str) -> tuple[IndexedCall, ...]:
         """The literal calls that the file at ``path`` makes."""
         try:
-            text = read_program(path, self.max_bytes).text
+            text = self.disk.text(path)  # its size was looked at by ``_ensure``
         except FileTooLargeError as e:
             log.info("%s: its calls are not indexed", e)
             return ()
@@ -167,7 +170,10 @@ class CallIndex:
         if word(text) is None:
             return ()
         self.files_parsed += 1
-        loaded = load_text(path, text)
+        try:
+            loaded = self.disk.load(path)
+        except (OSError, SkippedFileError):  # changed again since
+            return ()
         ctx = static_checks.line_context(
             machine_profile(choose_dialect(loaded.lines, self.settings.dialect, self.dialect), self.settings),
             self.settings,
@@ -210,17 +216,3 @@ class CallIndex:
     def holds(self, path: str) -> bool:
         self._ensure()
         return path in self._entries
-
-
-def _call_words(settings: MachineSettings) -> str:
-    """A pattern for the words that may make a call: G65, G66, M98, M198 and the codes the
-    machine settings configure (a file without one calls nothing)."""
-    parts = [r"[GgMm][ \t]*\+?0*(?:65|66|98|198)(?![0-9])"]
-    for code in settings.calls:
-        letter, digits = code[:1], code[1:]
-        whole = digits.split(".")[0].lstrip("0") or "0"
-        if not digits or not whole.isdigit():
-            parts.append(f"[{letter.upper()}{letter.lower()}]")
-        else:
-            parts.append(rf"[{letter.upper()}{letter.lower()}][ \t]*\+?0*{whole}(?![0-9])")
-    return "|".join(parts)

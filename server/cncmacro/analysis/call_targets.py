@@ -8,12 +8,12 @@ are known, so a target that is not among them is left to the run rather than rep
 
 from __future__ import annotations
 
+from ..bilingual import pick
 from ..dialects.dialect import Dialect
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..syntax.program import Program
-from .diagnostics import Diagnostic
+from .diagnostics import Diagnostic, diagnostic
 from .line_facts import CallSite
-from .locale import pick
 
 UNKNOWN = "unknown"
 
@@ -71,4 +71,4 @@ def not_found(site: CallSite, file: str, line: int, locale: str) -> Diagnostic:
         f"{site.how} 调用的程序 {what} 不在本文件中，附近也找不到（报警 076）",
     )
     end = max(site.end, site.start + 1)
-    return Diagnostic(file, line, site.start, line, end, "error", "program-not-found", message)
+    return diagnostic(file, line, site.start, line, end, "program-not-found", message)

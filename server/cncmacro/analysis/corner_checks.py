@@ -10,11 +10,10 @@ enough here).
 
 from __future__ import annotations
 
-from ..bilingual import in_language
+from ..bilingual import in_language, is_chinese
 from ..machine.corners import NAMES, no_move
 from ..syntax.nodes import Block
-from .line_facts import Finding, LineContext, LineFacts
-from .locale import is_chinese
+from .line_facts import LineContext, LineFacts, finding
 from .variable_checks import scan_value
 
 
@@ -37,8 +36,8 @@ def check_corners(block: Block, ctx: LineContext, facts: LineFacts) -> None:
                 f"{dialect.title} 的说明书中没有 ,{c.letter}（{name.zh}）；其倒角在 G01/G02/G03 中写作 L（直线倒角）和 "
                 "D（圆弧倒角）。此处按 FANUC 读取并运行（按所写移动）；请在机床上确认"
             )
-            out.append(Finding(c.start, c.end, "warning", "corner-word", message_zh if zh else message))
+            out.append(finding(c.start, c.end, "corner-word", message_zh if zh else message))
             continue
         why = no_move(c, block, axes)
         if why is not None:
-            out.append(Finding(c.start, c.end, "warning", "corner-word", in_language(why, zh)))
+            out.append(finding(c.start, c.end, "corner-word", in_language(why, zh)))

@@ -3,14 +3,16 @@
 Lines and columns are 0-based here, as in the syntax tree; the command line prints them
 1-based and the language server sends them as they are. ``related`` points at other places
 that explain a finding (the caller of a macro, the first of two duplicate labels); ``tags``
-holds ``"unnecessary"`` for code the runs never reached, which editors show faded.
+holds ``"unnecessary"`` for code the runs never reached, which editors show faded. A check makes
+one with ``diagnostic``, which takes the severity from the code's record (``analysis/codes.py``).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-SEVERITIES = ("error", "warning", "information", "hint")
+from .codes import default_severity
+
 UNNECESSARY = "unnecessary"
 
 
@@ -42,3 +44,22 @@ class Diagnostic:
 
     def sort_key(self) -> tuple[str, int, int, str]:
         return (self.file, self.line, self.column, self.code)
+
+
+def diagnostic(
+    file: str,
+    line: int,
+    column: int,
+    end_line: int,
+    end_column: int,
+    code: str,
+    message: str,
+    related: tuple[Related, ...] = (),
+    tags: tuple[str, ...] = (),
+    *,
+    milder: bool = False,
+) -> Diagnostic:
+    """A ``Diagnostic`` of ``code`` with the code's default severity, or its milder one where the
+    check says the control is lenient (``codes.default_severity``)."""
+    severity = default_severity(code, milder)
+    return Diagnostic(file, line, column, end_line, end_column, severity, code, message, related, tags)

@@ -11,9 +11,9 @@ from __future__ import annotations
 
 import logging
 
-from .diagnostics import Diagnostic
-from .line_facts import Finding, LineFacts
-from .locale import pick
+from ..bilingual import pick
+from .diagnostics import Diagnostic, diagnostic
+from .line_facts import LineFacts, finding
 
 log = logging.getLogger(__name__)
 
@@ -37,11 +37,11 @@ def _message(what: tuple[str, str], error: BaseException, locale: str) -> str:
 def internal_error(file: str, line: int, what: tuple[str, str], error: BaseException, locale: str) -> Diagnostic:
     """The diagnostic of a checker fault at ``line`` of ``file`` (logged with its traceback)."""
     log.error("internal error while trying to %s (%s, line %d)", what[0], file, line + 1, exc_info=error)
-    return Diagnostic(file, line, 0, line, 1, "error", INTERNAL_ERROR, _message(what, error, locale))
+    return diagnostic(file, line, 0, line, 1, INTERNAL_ERROR, _message(what, error, locale))
 
 
 def line_fault(error: BaseException, locale: str) -> LineFacts:
     """What a line whose static check failed says: only that (the line is not known here; the
     finding goes wherever the block is)."""
     log.error("internal error while checking a line", exc_info=error)
-    return LineFacts([Finding(0, 1, "error", INTERNAL_ERROR, _message(LINE, error, locale))])
+    return LineFacts([finding(0, 1, INTERNAL_ERROR, _message(LINE, error, locale))])

@@ -15,12 +15,12 @@ from __future__ import annotations
 
 from bisect import bisect_right
 
+from ..bilingual import pick
 from ..machine.jumps import entered_loop, goto_line
 from ..syntax.program import LoopPair, Program, ProgramUnit
 from .call_targets import UNKNOWN, ProgramFinder, not_found
-from .diagnostics import Diagnostic, Related
+from .diagnostics import Diagnostic, Related, diagnostic
 from .line_facts import CallSite, LineFacts
-from .locale import pick
 
 
 def _unit_name(unit: ProgramUnit, locale: str) -> str:
@@ -77,7 +77,7 @@ class LabelChecker:
         if loop is not None:
             span = _label_span(self.program, loop.do_line)
             self.out.append(
-                Diagnostic(self.file, line, start, line, max(end, start + 1), "error", "jump-into-loop",
+                diagnostic(self.file, line, start, line, max(end, start + 1), "jump-into-loop",
                            pick(loc, f"{how}{label} jumps into the loop DO {loop.number} (lines {loop.do_line + 1}–"
                                      f"{loop.end_line + 1}) from outside it",
                                 f"{how}{label} 从循环外跳入 DO {loop.number} 循环（第 {loop.do_line + 1}～"
@@ -90,7 +90,7 @@ class LabelChecker:
     def _missing(self, line: int, start: int, end: int, label: int, unit: ProgramUnit, message: str,
                  related: tuple[Related, ...] = ()) -> None:  # fmt: skip
         self.out.append(
-            Diagnostic(self.file, line, start, line, max(end, start + 1), "error", "undefined-label", message, related)
+            diagnostic(self.file, line, start, line, max(end, start + 1), "undefined-label", message, related)
         )
 
     # ---------------------------------------------------------------- calls, M98 Q and M97 P
@@ -164,7 +164,7 @@ class LabelChecker:
         for line in lines[1:]:
             start, end = _label_span(self.program, line)
             self.out.append(
-                Diagnostic(self.file, line, start, line, end, "warning", "duplicate-label",
+                diagnostic(self.file, line, start, line, end, "duplicate-label",
                            pick(loc, f"N{label} is used {len(lines)} times in {_unit_name(unit, loc)} and a jump "
                                      "goes to it: the control takes the first one it finds",
                                 f"N{label} 在 {_unit_name(unit, loc)} 中出现 {len(lines)} 次且是跳转目标："

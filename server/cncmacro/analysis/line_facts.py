@@ -5,7 +5,8 @@ settings: the problems it has by itself (``Finding``, columns only, no line or f
 result can be cached per block and reused wherever the block appears) and the facts that need
 the rest of the file to judge: literal jump targets (``Jump``), calls of other programs
 (``CallSite``) and ``M99 Pn`` returns (``ReturnJump``). ``LineContext`` holds what every line's
-check needs, made once per dialect, settings and locale.
+check needs, made once per dialect, settings and locale. ``block_finding`` turns a
+``BlockProblem`` of ``machine/block_rules.py`` into the finding of its code (``RULE_CODES``).
 """
 
 from __future__ import annotations
@@ -14,11 +15,27 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
+from ..bilingual import in_language, is_chinese
 from ..dialects import BY_NAME, Dialect
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
+from ..machine import block_rules as rules
+from ..machine.block_rules import BlockProblem
 from ..machine.expressions import ExpressionCompiler, VariableKinds
 from ..machine.words import plain_line_pattern
+from .codes import default_severity
+
+RULE_CODES = {
+    rules.ABBREVIATION: "dialect-feature",
+    rules.MISSING_THEN: "dialect-feature",
+    rules.NC_AND_STATEMENT: "nc-and-macro",
+    rules.BEFORE_CALL: "g65-nc-words",
+    rules.O_WITH_CALL: "g65-nc-words",
+    rules.G_AFTER_CALL: "argument-address",
+    rules.CALL_WITHOUT_P: "program-not-found",
+    rules.UNKNOWN_G_CODE: "unknown-g-code",
+    rules.M_DECIMAL_POINT: "decimal-point",
+}  # the diagnostic code of each block rule
 
 
 @dataclass(frozen=True, slots=True)
@@ -30,6 +47,19 @@ class Finding:
     severity: str
     code: str
     message: str
+
+
+def finding(start: int, end: int, code: str, message: str, *, milder: bool = False) -> Finding:
+    """A ``Finding`` of ``code`` with the code's default severity, or its milder one where the
+    check says the control is lenient (``codes.default_severity``)."""
+    return Finding(start, end, default_severity(code, milder), code, message)
+
+
+def block_finding(problem: BlockProblem, locale: str) -> Finding:
+    """A block rule's problem as a finding: the code's default severity where the control stops,
+    else its milder one (``codes.default_severity``)."""
+    message = in_language(problem.finding, is_chinese(locale))
+    return finding(problem.start, problem.end, RULE_CODES[problem.rule], message, milder=not problem.stops)
 
 
 @dataclass(frozen=True, slots=True)

@@ -9,11 +9,11 @@ already wrong is reported once, as ``loop-number``, because that is the alarm th
 
 from __future__ import annotations
 
+from ..bilingual import pick
 from ..machine.blocks import MAX_LOOP_DEPTH
 from ..syntax.nodes import Block, Do, End, Number, While
 from ..syntax.program import Program
-from .diagnostics import Diagnostic, Related
-from .locale import pick
+from .diagnostics import Diagnostic, Related, diagnostic
 
 
 def _valid_number(num: Number) -> bool:
@@ -43,7 +43,7 @@ def loop_diagnostics(program: Program, file: str, locale: str) -> list[Diagnosti
         bad_lines.add(line)
         start, end = num.start, num.end
         out.append(
-            Diagnostic(file, line, start, line, max(end, start + 1), "error", "loop-number",
+            diagnostic(file, line, start, line, max(end, start + 1), "loop-number",
                        pick(locale, f"{kind} {num.text}: the loop number must be 1, 2 or 3 (alarm 126)",
                             f"{kind} {num.text}：循环号必须为 1、2 或 3（报警 126）"))
         )  # fmt: skip
@@ -55,7 +55,7 @@ def loop_diagnostics(program: Program, file: str, locale: str) -> list[Diagnosti
         if len(open_ends) > MAX_LOOP_DEPTH and pair.do_line not in bad_lines:
             start, end = _marker_span(blocks[pair.do_line])
             out.append(
-                Diagnostic(file, pair.do_line, start, pair.do_line, end, "error", "loop-number",
+                diagnostic(file, pair.do_line, start, pair.do_line, end, "loop-number",
                            pick(locale, f"loops nested {len(open_ends)} deep; at most {MAX_LOOP_DEPTH} (alarm 126)",
                                 f"循环嵌套 {len(open_ends)} 层，最多 {MAX_LOOP_DEPTH} 层（报警 126）"))
             )  # fmt: skip
@@ -81,5 +81,5 @@ def loop_diagnostics(program: Program, file: str, locale: str) -> list[Diagnosti
             )
             o_start, o_end = _marker_span(blocks[other])
             related = (Related(file, other, o_start, o_end, pick(locale, "the inner loop", "内层循环")),)
-        out.append(Diagnostic(file, line, start, line, end, "error", "loop-mismatch", message, related))
+        out.append(diagnostic(file, line, start, line, end, "loop-mismatch", message, related))
     return out

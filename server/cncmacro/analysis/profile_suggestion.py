@@ -19,12 +19,12 @@ from __future__ import annotations
 
 import re
 
+from ..bilingual import pick
 from ..dialects import DIALECTS, Dialect
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..syntax.program import Program
-from .diagnostics import Diagnostic
-from .locale import pick
+from .diagnostics import Diagnostic, diagnostic
 
 CODE = "profile-suggestion"
 # the findings that say "this control lacks it": syntax or G codes another control has
@@ -131,4 +131,4 @@ def suggestion(
         f"此文件用到了 {other.title} 才有而 {dialect.title} 没有的功能（第 {where} 行）。若程序是为该系统编写的，"
         f'请在文件开头加上 (cncmacro: dialect={other.name})，或在 .cncmacro.toml 中设定 base = "{other.name}"',
     )
-    return Diagnostic(file, *at, "information", CODE, message)
+    return diagnostic(file, *at, CODE, message)

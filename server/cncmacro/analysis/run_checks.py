@@ -1,6 +1,7 @@
 """Diagnostics found by running: one bounded, resumable run of the machine from an entry point.
 
-An ``EntryRun`` runs one program on a ``Machine`` with the analysis hooks on (never loading
+An ``EntryRun`` runs one program on a ``Machine`` whose observer it is (``RunObserver``: it
+hears of lines run, vacant argument reads, values written and loop passes; never loading
 or saving ``#500–#999``, never recording moves, ``M99`` at level 0 ending the run). It runs in
 chunks of ``CHUNK`` blocks and keeps a ``Snapshot`` at every chunk boundary, the step at which
 each line first ran, and what the watched blocks reported (vacant argument reads, values
@@ -10,13 +11,13 @@ only the part of the run that can differ is run again (see ``workspace.py`` for 
 the run as it was is kept, and as soon as the resumed run reaches a state the earlier run had
 and the edited lines do not run again, the rest of the earlier run is taken over instead of
 being run again (``run_convergence.py``). The machine stamps each line it executes with the
-serial of its chunk (``Machine.last_run``) so that this can be decided.
+serial of its chunk (``RunObserver.last_run``) so that this can be decided.
 
 ``run_diagnostics`` turns the state of a finished run into diagnostics: the alarm it stopped
-with (mapped by ``alarm_codes``), the block budget running out, clamped repeat counts and
+with (mapped by ``codes.alarm_code``), the block budget running out, clamped repeat counts and
 vacant argument reads, each at the block where it happened, in that block's file, naming the
 call chain, the block count and, inside a loop, which pass of the innermost loop it was
-(counted by the analysis-only ``on_loop_pass`` hook, kept with each checkpoint) in the message
+(counted by ``loop_pass``, which only an observed run calls, kept with each checkpoint) in the message
 and the call sites as ``related`` places.
 
 Limits keep a run bounded in time and memory whatever the program does: the block budget
@@ -34,24 +35,23 @@ from __future__ import annotations
 
 import time
 from bisect import bisect_left
-from collections.abc import Callable
+from collections.abc import Callable, Container
 from dataclasses import dataclass, field
 from operator import itemgetter
 from pathlib import Path
 
-from ..bilingual import in_language
+from ..bilingual import in_language, pick
 from ..dialects import Dialect
 from ..dialects.alarms import alarm_text
 from ..library.machine_file import MachineSettings
 from ..library.programs import FoundProgram, ProgramLibrary
 from ..machine import CallSite, Machine, Snapshot
 from ..machine.calls import letters_for_local
-from ..machine.machine import ALARM, FINISHED, LIMIT, PAUSED, READY, STOPPED
-from .alarm_codes import MACRO_ALARM, alarm_code
-from .diagnostics import Diagnostic, Related
-from .locale import pick
+from ..machine.observer import RunObserver
+from ..machine.status import FINISHED, RunStatus
+from .codes import MACRO_ALARM, alarm_code
+from .diagnostics import Diagnostic, Related, diagnostic
 from .run_convergence import Earlier, keep_earlier, try_converge
-from .severity import CODES
 
 CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again before converging
 MAX_SECONDS = 30.0  # wall-clock limit of one run
@@ -102,8 +102,9 @@ def drop_machine(m: Machine) -> None:
         m.discard()
 
 
-class EntryRun:
-    """One analysis run from one entry program, resumable after edits."""
+class EntryRun(RunObserver):
+    """One analysis run from one entry program, resumable after edits; the observer of its
+    machine (see ``machine/observer.py``)."""
 
     def __init__(
         self,
@@ -115,6 +116,7 @@ class EntryRun:
         max_seconds: float = MAX_SECONDS,
         max_records: int = MAX_RECORDS,
     ) -> None:
+        super().__init__()
         self.entry = entry
         self.dialect = dialect
         self.settings = settings
@@ -144,14 +146,10 @@ class EntryRun:
         """Start again from the first block with a fresh machine."""
         if hasattr(self, "machine"):
             drop_machine(self.machine)
-        m = Machine(self.dialect, self.settings, self.library, m99_ends_main=True)
+        self.last_run = {}  # the new machine's lines have not run (``RunObserver``)
+        self.track_serial = self.track_floor = 0
+        m = Machine(self.dialect, self.settings, self.library, m99_ends_main=True, observer=self)
         m.record_moves = False
-        m.watching = True
-        m.on_first_run = self._first_run
-        m.on_vacant_argument = self._vacant
-        m.on_write = self._write
-        m.on_loop_pass = self._loop_pass
-        m.last_run = {}
         m.start(self.entry)
         self.machine = m
         self.state = RunState()
@@ -173,28 +171,28 @@ class EntryRun:
 
     @property
     def finished(self) -> bool:
-        return self.machine.status in FINISHED and self.machine.status != STOPPED
+        return self.machine.status in FINISHED and self.machine.status != RunStatus.STOPPED
 
     def advance(self, should_cancel: Callable[[], bool] | None = None) -> bool:
         """Run to the end (or the budget); False when ``should_cancel`` said stop first (the
         run can be advanced again later)."""
         m = self.machine
         while not self.finished:
-            if m.status == STOPPED:  # ``Machine.cancel`` from another thread
+            if m.status == RunStatus.STOPPED:  # ``Machine.cancel`` from another thread
                 m.cancel_requested = False
-                m.status = READY
+                m.status = RunStatus.READY
                 return False
             if should_cancel is not None and should_cancel():
                 return False
             left = self.max_blocks - m.blocks
             chunk = min(max(1, self.interval - (m.blocks - self.checkpoints[-1].blocks)), left)
             self.stamp = before = m.blocks
-            m.track_serial = self.new_serial(m.blocks)
+            self.track_serial = self.new_serial(m.blocks)
             began = time.perf_counter()
             status = m.run(chunk, is_limit=chunk >= left)
             self.elapsed += time.perf_counter() - began
             self.rerun_blocks += m.blocks - before
-            if status == PAUSED:
+            if status == RunStatus.PAUSED:
                 m.resume()  # M00, #3006 and the end of a chunk: a simulation goes on
                 if m.blocks - self.checkpoints[-1].blocks >= self.interval:
                     self.checkpoint()
@@ -202,7 +200,7 @@ class EntryRun:
                         try_converge(self)
             if not self.finished and (self.elapsed > self.max_seconds or len(m.notes) > self.max_records):
                 self.stopped_by = "time" if self.elapsed > self.max_seconds else "records"
-                m.status = LIMIT
+                m.status = RunStatus.LIMIT
         self.earlier = None
         return True
 
@@ -267,19 +265,18 @@ class EntryRun:
         self._forget(at)
         if self.earlier is not None:
             self.earlier.resume = min(self.earlier.resume, at)
-        if m.status == PAUSED:
+        if m.status == RunStatus.PAUSED:
             m.resume()
 
     def _forget(self, at: int) -> None:
         """Forget what was found at or after step ``at``; the lines it ran are reported again
-        (``on_first_run``) when they next run, the machine's floor being raised. When the
+        (``first_run``) when they next run, the floor being raised. When the
         earlier run kept for converging holds the records, they stay as they are for it."""
-        m = self.machine
         serials = self.serials
         for s, (step, _) in serials.items():
             if step >= at:
                 serials[s] = (at - 1, False)  # the line ran before ``at``, or never
-        m.track_floor = self.serial + 1
+        self.track_floor = self.serial + 1
         st = self.state
         cut = bisect_left(st.order, (at, "", -1))
         if self.earlier is not None and self.earlier.state is st:
@@ -323,9 +320,9 @@ class EntryRun:
             self.earlier = None
         if cf is not None:
             cf.reset()
-            if m.last_run is not None and path in m.last_run:
-                m.last_run[path] = [self.new_serial(m.blocks - 1, known=False)] * len(cf.code)
-                m.track_floor = self.serial + 1
+            if path in self.last_run:
+                self.last_run[path] = [self.new_serial(m.blocks - 1, known=False)] * len(cf.code)
+                self.track_floor = self.serial + 1
 
     def forget_lines(self, path: str, lines: list[int]) -> None:
         """These lines of ``path`` changed: compile them afresh when they run."""
@@ -335,8 +332,8 @@ class EntryRun:
                 if 0 <= line < len(cf.code) - 1:
                     cf.code[line] = None
 
-    # ---------------------------------------------------------------- hooks
-    def _first_run(self, file: str, line: int, step: int) -> None:
+    # ---------------------------------------------------------------- what the machine tells (RunObserver)
+    def first_run(self, file: str, line: int, step: int) -> None:
         if self.earlier is not None:
             self.earlier.overwriting(file, line)
         st = self.state
@@ -355,16 +352,16 @@ class EntryRun:
                 reach[0].append(line)
                 reach[1].append(step)
 
-    def _vacant(self, number: int, file: str, line: int, chain: tuple[CallSite, ...]) -> None:
+    def vacant_argument(self, number: int, file: str, line: int, chain: tuple[CallSite, ...]) -> None:
         key = (file, line, number)
         if key not in self.state.vacant:
             self.state.vacant[key] = VacantRead(self.stamp, number, file, line, chain)
 
-    def _loop_pass(self, level: int, do_line: int, again: bool) -> None:
+    def loop_pass(self, level: int, do_line: int, again: bool) -> None:
         key = (level, do_line)
         self.passes[key] = self.passes.get(key, 0) + 1 if again else 1
 
-    def _write(self, file: str, line: int, number: int, value: Value) -> None:
+    def wrote(self, file: str, line: int, number: int, value: Value) -> None:
         lines = self.state.written.get(file)
         if lines is None:
             lines = self.state.written[file] = {}
@@ -417,30 +414,47 @@ def _records_before(st: RunState, at: int, cut: int) -> RunState:
 # ---------------------------------------------------------------- diagnostics of a run
 
 
-def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale: str) -> list[Diagnostic]:
-    """The findings of a finished run (see the module docstring)."""
+def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], str], locale: str) -> Diagnostic:
+    """The alarm the run stopped with, as a diagnostic of ``code``."""
+    m = run.machine
+    a = m.alarm
+    assert a is not None
+    if code == MACRO_ALARM:
+        en = f"the run reaches macro alarm {a.number}: {a.message}"
+        zh = f"运行到宏程序报警 {a.number}：{in_language(a.message, True)}"
+    else:
+        en = f"{a.message} (alarm {a.number})"
+        zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{in_language(a.message, True)}"
+    in_loop = bool(m.frames and m.frames[-1].loops)
+    if in_loop:
+        do_line = m.frames[-1].loops[-1]
+        k = run.passes.get((len(m.frames) - 1, do_line))
+        if k is not None:
+            kind = "WHILE" if "WHILE" in line_text(a.file, do_line).upper() else "DO"
+            en += f", in iteration {k} of the {kind} loop at line {do_line + 1}"
+            zh += f"，第 {do_line + 1} 行 {kind} 循环的第 {k} 次迭代"
+    return _diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale)
+
+
+def run_diagnostics(
+    run: EntryRun,
+    line_text: Callable[[str, int], str],
+    locale: str,
+    invalid: Container[tuple[str, int]] = frozenset(),
+) -> list[Diagnostic]:
+    """The findings of a finished run (see the module docstring). ``invalid`` holds the (file,
+    line) of the blocks the static checks found in error: the alarm a run stops with on one of
+    them is that error again, met when the block runs, and is left out (a macro alarm, which the
+    program raises itself, never is)."""
     m = run.machine
     out: list[Diagnostic] = []
     base = run.dialect.macro_alarm_base
-    if m.status == ALARM and m.alarm is not None:
+    if m.status == RunStatus.ALARM and m.alarm is not None:
         a = m.alarm
         code = alarm_code(a.number, a.subject, base)
-        if code == MACRO_ALARM:
-            en = f"the run reaches macro alarm {a.number}: {a.message}"
-            zh = f"运行到宏程序报警 {a.number}：{in_language(a.message, True)}"
-        else:
-            en = f"{a.message} (alarm {a.number})"
-            zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{in_language(a.message, True)}"
-        in_loop = bool(m.frames and m.frames[-1].loops)
-        if in_loop:
-            do_line = m.frames[-1].loops[-1]
-            k = run.passes.get((len(m.frames) - 1, do_line))
-            if k is not None:
-                kind = "WHILE" if "WHILE" in line_text(a.file, do_line).upper() else "DO"
-                en += f", in iteration {k} of the {kind} loop at line {do_line + 1}"
-                zh += f"，第 {do_line + 1} 行 {kind} 循环的第 {k} 次迭代"
-        out.append(_diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale))
-    elif m.status == LIMIT and m.frames:
+        if code == MACRO_ALARM or (a.file, a.line) not in invalid:
+            out.append(_alarm_diagnostic(run, code, line_text, locale))
+    elif m.status == RunStatus.LIMIT and m.frames:
         f = m.frames[-1]
         if run.stopped_by == "time":
             en = f"the analysis run stopped here after {m.blocks} blocks and {run.max_seconds:g} s, its time limit"
@@ -475,7 +489,7 @@ def run_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale:
             en = in_language(note.message, False)
             zh = in_language(note.message, True)
             d = _diagnostic(note.file, note.line, "repeat-count-range", en, zh, note.chain, None, False, line_text,
-                            locale, severity="warning")  # fmt: skip
+                            locale, milder=True)  # fmt: skip
             out.append(d)
     for read in run.state.vacant.values():
         spec1, spec2 = letters_for_local(read.number)
@@ -505,8 +519,7 @@ def not_run_diagnostic(entry: FoundProgram, file_budget: int, locale: str) -> Di
     text = entry.file.lines[line] if line < len(entry.file.lines) else ""
     start = len(text) - len(text.lstrip())
     end = max(start + 1, len(text.rstrip()))
-    return Diagnostic(entry.file.path, line, start, line, end, CODES["run-limit"].severity, "run-limit",
-                      pick(locale, en, zh))  # fmt: skip
+    return diagnostic(entry.file.path, line, start, line, end, "run-limit", pick(locale, en, zh))
 
 
 def _diagnostic(
@@ -520,9 +533,10 @@ def _diagnostic(
     in_loop: bool,
     line_text: Callable[[str, int], str],
     locale: str,
-    severity: str | None = None,
+    milder: bool = False,
 ) -> Diagnostic:
-    """A run-found diagnostic spanning the block's text, with how it was reached."""
+    """A run-found diagnostic spanning the block's text, with how it was reached; ``milder``
+    where the control is lenient (``codes.default_severity``)."""
     callers = chain[:-1]
     hows = [c.how for c in chain[1:]]  # how each caller called the next level
     if callers:
@@ -540,8 +554,7 @@ def _diagnostic(
                 pick(locale, f"called from {c.program} ({how})", f"由 {c.program} 调用（{how}）"))
         for c, how in reversed(list(zip(callers, hows, strict=True)))
     )  # fmt: skip
-    return Diagnostic(file, line, start, line, end, severity or CODES[code].severity, code, pick(locale, en, zh),
-                      related)  # fmt: skip
+    return diagnostic(file, line, start, line, end, code, pick(locale, en, zh), related, milder=milder)
 
 
 def display_name(path: str) -> str:

@@ -6,7 +6,7 @@ the earlier run's checkpoints at the same place (same frames, lines, loops and p
 the machine states are equal (``machine.tracking.same_state``; the simulated clock only when
 a program the run entered may read it: ``#3001``, ``#3002``, ``#3011``, ``#3012`` or any
 indirection) and none of the edited lines runs in the earlier run after that checkpoint (the
-per-line chunk stamps ``Machine.last_run`` tell), the rest of the earlier run is what the
+per-line chunk stamps ``RunObserver.last_run`` tell), the rest of the earlier run is what the
 resumed run would do: its checkpoints, first executions, findings, values, notes and final
 state are adopted instead of running again. Step numbers after that point shift by the
 difference in executed blocks. A line that the earlier run first executed between the resume
@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..machine import Snapshot
 from ..machine.frames import Note
-from ..machine.machine import LIMIT
+from ..machine.status import RunStatus
 from ..machine.tracking import position_key, same_state
 
 if TYPE_CHECKING:
@@ -50,7 +50,7 @@ class Earlier:
     notes: list[Note]
     output: list[str]
     state: RunState
-    # the machine's live per-line stamps (``Machine.last_run``), the files it held then, and
+    # the run's live per-line stamps (``RunObserver.last_run``), the files it held then, and
     # the stamp each line had before the resumed run first overwrote it: the earlier run's
     # stamps are read through ``stamp`` without copying a slot per line of every file
     live: dict[str, list[int]]
@@ -76,7 +76,7 @@ class Earlier:
 
     def overwriting(self, path: str, line: int) -> None:
         """The resumed run is about to stamp ``line`` of ``path`` for the first time since it
-        went back (``EntryRun._first_run``): keep the earlier stamp."""
+        went back (``EntryRun.first_run``): keep the earlier stamp."""
         if path in self.files:
             before = self.overwritten.get(path)
             if before is None:
@@ -89,9 +89,8 @@ def keep_earlier(run: EntryRun) -> Earlier:
     """Keep what ``run`` found so far; the run is about to be rewound (which leaves the records
     it shares with the earlier run alone, see ``EntryRun._forget``)."""
     m = run.machine
-    assert m.last_run is not None
     earlier = Earlier(list(run.checkpoints), list(run.pass_marks), m.snapshot(), dict(run.passes), list(m.notes),
-                      list(m.output), run.state, m.last_run, frozenset(m.last_run), dict(run.serials),
+                      list(m.output), run.state, run.last_run, frozenset(run.last_run), dict(run.serials),
                       m.blocks)  # fmt: skip
     for j, snap in enumerate(earlier.checkpoints):
         earlier.by_key.setdefault(position_key(snap.frames), []).append(j)
@@ -195,7 +194,7 @@ def _adopt(run: EntryRun, e: Earlier, j: int, plan: tuple[list[tuple[str, int]],
     m.notes = merged_notes
     m.output = merged_output
     run.earlier = None
-    if m.blocks > run.max_blocks or (m.status == LIMIT and delta != 0):
+    if m.blocks > run.max_blocks or (m.status == RunStatus.LIMIT and delta != 0):
         run.back_to(min(m.blocks, run.max_blocks) - 1)
 
 
@@ -258,7 +257,6 @@ def _merge_stamps(run: EntryRun, e: Earlier, bj: int, delta: int) -> None:
     """Per line, the later of the resumed run's stamp and the earlier run's stamp after the
     convergence point (which is the one after it, when there is one)."""
     m = run.machine
-    assert m.last_run is not None
     later: set[int] = set()  # the earlier run's serials after the convergence point
     vague = m.blocks + (e.final.blocks - bj)  # ran by the end of the merged run, or never
     for s, (at, known) in e.serials.items():
@@ -271,7 +269,7 @@ def _merge_stamps(run: EntryRun, e: Earlier, bj: int, delta: int) -> None:
     # means what it means after the convergence point; a line it reached holds the later of
     # the two stamps.
     for path, before in e.overwritten.items():
-        cur = m.last_run.get(path)
+        cur = run.last_run.get(path)
         if cur is None:
             continue
         for line, s in before.items():

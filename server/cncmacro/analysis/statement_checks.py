@@ -1,7 +1,9 @@
 """Checks of a block's macro statements (docs/semantics.md §3, §4): what one line decides alone.
 
 A block with a macro statement may hold no NC words (``nc-and-macro``, alarm 127; ``N`` and an O
-header are not words). Each statement's expressions go through ``variable_checks``; an
+header are not words), IF needs THEN where the dialect says so, and an abbreviated macro word is
+refused where the dialect does not read it: the block rules of ``machine/block_rules.py``, which
+the interpreter raises as alarms. Each statement's expressions go through ``variable_checks``; an
 assignment's target through ``check_write``. A literal ``GOTO n`` / ``IF..GOTO n`` target is
 rounded as the interpreter rounds it: outside 1–99999 it is ``label-range`` (alarm 128),
 otherwise it becomes a ``Jump`` for the cross-line label checks.
@@ -9,12 +11,11 @@ otherwise it becomes a ``Jump`` for the cross-line label checks.
 
 from __future__ import annotations
 
-from ..bilingual import in_language
+from ..bilingual import pick
+from ..machine.block_rules import ABBREVIATION, MISSING_THEN, NC_AND_STATEMENT, validate_block
 from ..machine.numbers import round_half_away
-from ..machine.words import abbreviation_refused, missing_then
 from ..syntax.nodes import Assign, Block, Expr, Goto, If, Output, Statement, While
-from .line_facts import Finding, Jump, LineContext, LineFacts
-from .locale import is_chinese, pick
+from .line_facts import Jump, LineContext, LineFacts, block_finding, finding
 from .variable_checks import check_write, scan_value
 
 MAX_LABEL = 99999
@@ -22,24 +23,12 @@ MAX_LABEL = 99999
 
 def check_statements(block: Block, ctx: LineContext, facts: LineFacts) -> None:
     """Findings and jumps of a block that holds macro statements."""
-    if block.words or block.corners:
-        w = block.words[0] if block.words else block.corners[0]
-        letter = w.letter if block.words else f",{w.letter}"
-        facts.findings.append(
-            Finding(
-                w.start,
-                w.end,
-                "error",
-                "nc-and-macro",
-                pick(
-                    ctx.locale,
-                    f"the NC word {letter} and a macro statement in one block (alarm 127); "
-                    "only N may precede a macro statement",
-                    f"NC代码 {letter} 与宏语句在同一程序段（报警 127）；宏语句之前只允许 N",
-                ),
-            )
-        )
+    problems = validate_block(block, ctx.dialect)
+    nc = next((p for p in problems if p.rule == NC_AND_STATEMENT), None)
+    if nc is not None:
+        facts.findings.append(block_finding(nc, ctx.locale))
         return
+    facts.findings.extend(block_finding(p, ctx.locale) for p in problems if p.rule == MISSING_THEN)
     for s in block.statements:
         _statement(s, ctx, facts)
 
@@ -51,10 +40,6 @@ def _statement(s: Statement, ctx: LineContext, facts: LineFacts) -> None:
         scan_value(s.value, ctx, out)
     elif s.__class__ is If:
         scan_value(s.condition, ctx, out)
-        then = s.then
-        if s.implicit_then and then is not None and not ctx.dialect.if_without_then:
-            message = in_language(missing_then(ctx.dialect), is_chinese(ctx.locale))
-            out.append(Finding(then.start, then.end, "error", "dialect-feature", message))
         if s.goto is not None:
             scan_value(s.goto, ctx, out)
             literal_jump(s.goto, "GOTO ", ctx, facts)
@@ -74,14 +59,13 @@ def _statement(s: Statement, ctx: LineContext, facts: LineFacts) -> None:
 def check_abbreviations(block: Block, ctx: LineContext, facts: LineFacts) -> None:
     """Macro words written shortened (``WH`` for WHILE): a hint with the whole word where the
     dialect reads them (the editor offers to write it out), ``dialect-feature`` where it does not."""
-    dialect = ctx.dialect
+    if not ctx.dialect.keyword_abbreviations:  # refused: a block rule
+        problems = validate_block(block, ctx.dialect)
+        facts.findings.extend(block_finding(p, ctx.locale) for p in problems if p.rule == ABBREVIATION)
+        return
     for a in block.abbreviations:
-        if dialect.keyword_abbreviations:
-            message = pick(ctx.locale, f"'{a.text}' is short for {a.word}", f"'{a.text}' 是 {a.word} 的缩写")
-            facts.findings.append(Finding(a.start, a.end, "hint", "keyword-abbreviation", message))
-        else:
-            refused = in_language(abbreviation_refused(a.text, a.word, dialect), is_chinese(ctx.locale))
-            facts.findings.append(Finding(a.start, a.end, "error", "dialect-feature", refused))
+        message = pick(ctx.locale, f"'{a.text}' is short for {a.word}", f"'{a.text}' 是 {a.word} 的缩写")
+        facts.findings.append(finding(a.start, a.end, "keyword-abbreviation", message))
 
 
 def literal_jump(target: Expr, how: str, ctx: LineContext, facts: LineFacts) -> None:
@@ -94,10 +78,9 @@ def literal_jump(target: Expr, how: str, ctx: LineContext, facts: LineFacts) -> 
     if not 1 <= n <= MAX_LABEL:
         shown = f"{n:.0f}" if abs(n) < 1e12 else f"{n:g}"
         facts.findings.append(
-            Finding(
+            finding(
                 target.start,
                 target.end,
-                "error",
                 "label-range",
                 pick(
                     ctx.locale,

@@ -18,14 +18,13 @@ from __future__ import annotations
 
 from typing import TypeVar
 
-from ..bilingual import in_language
+from ..bilingual import in_language, is_chinese
 from ..dialects.dialect import Dialect
 from ..library.programs import ProgramLibrary
 from ..syntax.nodes import Block, Problem
 from ..syntax.program import Program
 from .diagnostics import Diagnostic
 from .line_facts import LineContext, LineFacts
-from .locale import is_chinese
 from .static_checks import cross_line_diagnostics, findings_of, line_facts
 
 _MEMO_LIMIT = 200_000

@@ -12,10 +12,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..bilingual import is_chinese, pick
 from ..machine import Machine
 from .call_index import CallIndex
 from .caller_entries import CallerSearch
-from .locale import is_chinese, pick
 
 RUN_REPEAT = "--repeat"  # how ``cncmacro run`` asks for the control's loop
 LAUNCH_REPEAT = '"repeat": true'  # how a debug launch configuration asks for it
@@ -36,7 +36,7 @@ def subprogram_text(path: Path, locale: str | None, repeat: str = RUN_REPEAT) ->
 def callers_text(machine: Machine, path: Path, dialect: str | None, locale: str | None) -> str:
     """The programs in ``path``'s folder that call the program ``machine`` ran, or that none does."""
     found = machine.frames[0].found
-    index = CallIndex([str(path.parent)], machine.settings, dialect, locale or "en")
+    index = CallIndex([str(path.parent)], machine.settings, dialect, locale or "en", files=machine.library.disk)
     callers = CallerSearch(machine.library, index, {}).callers(found)
     chinese = is_chinese(locale)
     named = []

@@ -3,10 +3,9 @@ its message in English or, for a Chinese locale, in Chinese."""
 
 from __future__ import annotations
 
-from ..bilingual import in_language
+from ..bilingual import in_language, is_chinese
 from ..syntax.program import Program
 from .diagnostics import Diagnostic
-from .locale import is_chinese
 
 
 def syntax_diagnostics(program: Program, file: str, locale: str | None = None) -> list[Diagnostic]:

@@ -11,9 +11,9 @@ from __future__ import annotations
 
 from itertools import islice
 
+from ..bilingual import pick
 from ..syntax.program import Program
-from .diagnostics import Diagnostic
-from .locale import pick
+from .diagnostics import Diagnostic, diagnostic
 
 
 def tape_diagnostics(program: Program, file: str, locale: str) -> list[Diagnostic]:
@@ -33,4 +33,4 @@ def tape_diagnostics(program: Program, file: str, locale: str) -> list[Diagnosti
         f"the tape ends at this '%': {what} not part of the program and not read",
         f"纸带在此 '%' 处结束：其后的 {n} 行（至第 {last} 行）不属于程序，不会被读取",
     )
-    return [Diagnostic(file, end, 0, end, 1, "hint", "after-tape-end", message)]
+    return [diagnostic(file, end, 0, end, 1, "after-tape-end", message)]

@@ -8,9 +8,9 @@ blocks are dead text however correct they look.
 
 from __future__ import annotations
 
+from ..bilingual import pick
 from ..syntax.program import Program
-from .diagnostics import Diagnostic, Related
-from .locale import pick
+from .diagnostics import Diagnostic, Related, diagnostic
 
 
 def duplicate_program_diagnostics(program: Program, file: str, locale: str) -> list[Diagnostic]:
@@ -36,6 +36,6 @@ def duplicate_program_diagnostics(program: Program, file: str, locale: str) -> l
         kept_span = program.blocks[kept.start].program_span or (0, 1)
         related = (Related(file, kept.start, kept_span[0], kept_span[1],
                            pick(locale, f"the {name} that the control keeps", f"系统保留的 {name}")),)  # fmt: skip
-        out.append(Diagnostic(file, unit.start, start, unit.start, max(end, start + 1), "warning",
+        out.append(diagnostic(file, unit.start, start, unit.start, max(end, start + 1),
                               "duplicate-program", pick(locale, en, zh), related))  # fmt: skip
     return out

@@ -17,14 +17,13 @@ and access rights from the dialect tables, never from a list of our own.
 
 from __future__ import annotations
 
-from ..bilingual import in_language
+from ..bilingual import in_language, pick
 from ..machine.alarms import MacroAlarm
 from ..machine.expressions import MAX_BRACKETS, bracket_depth, call_problem
 from ..machine.numbers import round_half_away
 from ..machine.variables import named_number
 from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, NamedVar, Number, Relation, Unary, Var
-from .line_facts import Finding, LineContext
-from .locale import pick
+from .line_facts import Finding, LineContext, finding
 
 
 def scan_value(node: Expr, ctx: LineContext, out: list[Finding], depth_checked: bool = True) -> None:
@@ -90,10 +89,9 @@ def named_variable_number(node: NamedVar, ctx: LineContext, out: list[Finding]) 
         feature = f"a {other.title} feature" if other else "not a feature of this control"
         feature_zh = f"是 {other.title} 的功能" if other else "不是本系统的功能"
         out.append(
-            Finding(
+            finding(
                 node.start,
                 node.end,
-                "error",
                 "dialect-feature",
                 pick(
                     ctx.locale,
@@ -115,10 +113,9 @@ def named_variable_number(node: NamedVar, ctx: LineContext, out: list[Finding]) 
         return named_number(d, node.name, subscript, node.index is not None)
     except MacroAlarm as alarm:
         out.append(
-            Finding(
+            finding(
                 node.start,
                 node.end,
-                "error",
                 "variable-number",
                 pick(ctx.locale, f"{alarm.message} (alarm {alarm.number})",
                      f"{in_language(alarm.message, True)}（报警 {alarm.number}）"),
@@ -148,10 +145,9 @@ def check_write(target: Var | IndirectVar | NamedVar, ctx: LineContext, out: lis
     loc = ctx.locale
     if kind == "vacant":
         out.append(
-            Finding(
+            finding(
                 target.start,
                 target.end,
-                "error",
                 "write-protected",
                 pick(loc, "#0 is always vacant and cannot be written (alarm 116)", "#0 恒为空，不能赋值（报警 116）"),
             )
@@ -162,10 +158,9 @@ def check_write(target: Var | IndirectVar | NamedVar, ctx: LineContext, out: lis
         row = ctx.dialect.system_variable(number)
         if row is not None and row.access == "r":
             out.append(
-                Finding(
+                finding(
                     target.start,
                     target.end,
-                    "error",
                     "write-protected",
                     pick(
                         loc,
@@ -185,10 +180,9 @@ def _check_read(number: int, start: int, end: int, ctx: LineContext, out: list[F
         row = ctx.dialect.system_variable(number)
         if row is not None and row.access == "w":
             out.append(
-                Finding(
+                finding(
                     start,
                     end,
-                    "error",
                     "write-only",
                     pick(
                         ctx.locale,
@@ -204,10 +198,9 @@ def _missing(number: int, start: int, end: int, ctx: LineContext) -> Finding:
     loc = ctx.locale
     other = next((k.dialect for k in ctx.other_kinds if k.kind(number) == "indirect9"), None)
     if other is not None:
-        return Finding(
+        return finding(
             start,
             end,
-            "error",
             "dialect-feature",
             pick(
                 loc,
@@ -227,7 +220,7 @@ def _missing(number: int, start: int, end: int, ctx: LineContext) -> Finding:
     else:
         said = d.missing_variable(number)
         message = pick(loc, f"{said} (alarm 115)", f"{said.zh}（报警 115）")
-    return Finding(start, end, "error", "variable-number", message)
+    return finding(start, end, "variable-number", message)
 
 
 def _check_call(node: Call, ctx: LineContext, out: list[Finding]) -> None:
@@ -236,10 +229,9 @@ def _check_call(node: Call, ctx: LineContext, out: list[Finding]) -> None:
         return
     code, message = problem
     out.append(
-        Finding(
+        finding(
             node.start,
             node.end,
-            "error",
             code,
             pick(ctx.locale, f"{message} (alarm 114)", f"{in_language(message, True)}（报警 114）"),
         )
@@ -250,10 +242,9 @@ def _check_relation(node: Relation, ctx: LineContext, out: list[Finding]) -> Non
     if node.spelling.isalpha() or ctx.dialect.c_relations:
         return
     out.append(
-        Finding(
+        finding(
             node.start,
             node.end,
-            "error",
             "dialect-feature",
             pick(
                 ctx.locale,
@@ -265,10 +256,9 @@ def _check_relation(node: Relation, ctx: LineContext, out: list[Finding]) -> Non
 
 
 def _bracket_finding(start: int, end: int, depth: int, ctx: LineContext) -> Finding:
-    return Finding(
+    return finding(
         start,
         end,
-        "error",
         "bracket-depth",
         pick(
             ctx.locale,

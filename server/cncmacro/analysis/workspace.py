@@ -34,7 +34,10 @@ its file. Their runs are incremental like any other, and report only what they f
 files: a caller that was not opened is run for its arguments, not reported. Only the
 workspace folders and the search paths are ever read. The dialect of a run is its entry file's:
 a ``(cncmacro: dialect=..)`` comment in the first lines, then the machine file's
-``dialect``, then ``dialect`` given here, then ``fanuc``.
+``dialect``, then ``dialect`` given here, then ``fanuc``. Files on disk are read through
+``files`` (a ``FileCache``, shared by the program library and the call index): the language
+server gives its workspace index's, which it tells of changes itself; without one the analysis
+keeps its own, which ``file_changed`` tells.
 
 Incremental: parsing is per line (``ParsedDocument``); the per-line static checks are kept
 per line (``StaticLines``), so an edit checks only its lines plus the cross-line part. Each
@@ -66,21 +69,23 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Generic, TypeVar
 
+from ..bilingual import pick
 from ..dialects import DIALECTS, Dialect, get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
+from ..library.file_cache import FileCache
+from ..library.files import o_number
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..machine import block_roles
-from ..machine.machine import LIMIT
+from ..machine.status import RunStatus
 from ..syntax.document import ParsedDocument
 from ..syntax.nodes import Block
 from . import static_checks
 from .call_index import CallIndex
 from .caller_entries import CallerSearch
-from .diagnostics import UNNECESSARY, Diagnostic
+from .diagnostics import UNNECESSARY, Diagnostic, diagnostic
 from .faults import RUN, internal_error
-from .locale import pick
 from .profile_suggestion import suggestion
 from .run_checks import FILE_BUDGETS, MAX_RECORDS, MAX_SECONDS, EntryRun, not_run_diagnostic, run_diagnostics
 from .severity import apply_severities, check_overrides
@@ -91,14 +96,7 @@ log = logging.getLogger(__name__)
 
 Value = float | None
 MAX_CALLER_ENTRIES = 16  # programs on disk run to reach the open ones, at most
-_DIGITS = re.compile(r"^[Oo]?(\d{1,8})$")
 _T = TypeVar("_T")
-RUN_ALARM_CODES = frozenset({
-    "program-not-found", "nesting-depth", "division-by-zero", "argument-range", "syntax", "variable-number",
-    "write-protected", "bracket-depth", "loop-mismatch", "loop-number", "nc-and-macro", "undefined-label",
-    "argument-address", "program-number", "repeat-count-range", "label-range", "jump-into-loop", "decimal-point",
-    "unknown-g-code",
-})  # fmt: skip
 
 
 @dataclass(slots=True)
@@ -147,6 +145,7 @@ class WorkspaceAnalysis:
         max_blocks: int | None = None,
         severities: dict[str, str] | None = None,
         workspace_folders: list[str] = (),  # type: ignore[assignment]
+        files: FileCache | None = None,
     ) -> None:
         self.settings = settings or MachineSettings()
         self.dialect_setting = dialect
@@ -160,7 +159,10 @@ class WorkspaceAnalysis:
         self.runs: dict[tuple[str, int], EntryRun] = {}
         self._disk_clock: dict[str, tuple[LoadedFile, bool]] = {}  # files not open: can they read the clock?
         self.stale = True  # every run starts again
-        self.library = ProgramLibrary(self.search_paths)
+        # reads the files on disk, each once; a cache given here is told of changes by its owner
+        self._own_files = files is None
+        self.files = files if files is not None else FileCache()
+        self.library = ProgramLibrary(self.search_paths, files=self.files)
         self.workspace_folders = [str(p) for p in workspace_folders]
         self.index: CallIndex | None = None  # made at the first question (``_find_disk_entries``)
         self._entries: dict[tuple[str, int], FoundProgram] | None = None  # callers on disk that run
@@ -224,13 +226,15 @@ class WorkspaceAnalysis:
         self._reload()
 
     def file_changed(self, path: str) -> None:
+        if self._own_files:
+            self.files.forget(self._key(path))
         if self.index is not None:
             self.index.changed(self._key(path))
         self._reload()
 
     def _reload(self) -> None:
-        """A fresh library (disk files read again), the open documents still in it."""
-        self.library = ProgramLibrary(self.search_paths)
+        """A fresh library (disk files looked at again), the open documents still in it."""
+        self.library = ProgramLibrary(self.search_paths, files=self.files)
         self._entries = None
         for d in self.docs.values():
             d.loaded = self.library.add_parsed(d.path, d.doc.lines, d.doc.program)
@@ -300,14 +304,14 @@ class WorkspaceAnalysis:
             d = self.docs[path]
             program = d.doc.program
             stem = Path(path).stem
-            m = _DIGITS.match(stem)
+            named = o_number(stem, bare=True)  # the number a call finds this file by
             first = program.named_units()[0]  # what a call by the file's name runs
             for k, unit in enumerate(program.units):
                 if unit.duplicate or not block_roles.runnable(program, unit, self.settings.block_delete):
                     continue
                 sites = list(by_number.get(unit.number, ())) if unit.number is not None else []
                 if unit.number is None and k == 0:
-                    sites = list(by_number.get(int(m.group(1)), ())) if m else []
+                    sites = list(by_number.get(named, ())) if named is not None else []
                 if unit is first:
                     sites += by_name.get(stem.lower(), ())
                 called = any(p != path or not unit.start <= line < unit.end for p, line in sites)
@@ -326,7 +330,8 @@ class WorkspaceAnalysis:
         if not self.workspace_folders or all(called for _, _, called in units):
             return
         if self.index is None:
-            self.index = CallIndex(self.workspace_folders, self.settings, self.dialect_setting, self.locale)
+            self.index = CallIndex(self.workspace_folders, self.settings, self.dialect_setting, self.locale,
+                                   files=self.files)  # fmt: skip
         targets = {path: self._targets(d) for path, d in self.docs.items()}
         # how many open files call each program number and name: what the files other than a
         # unit's own call is then one look-up away (not a union over every open file per unit)
@@ -437,7 +442,7 @@ class WorkspaceAnalysis:
             self._unreached.rewound(run)
         elif run.max_blocks != budget:  # the runs before it in its file now run more or fewer blocks
             m = run.machine
-            grown = budget > run.max_blocks and m.status == LIMIT and run.stopped_by is None
+            grown = budget > run.max_blocks and m.status == RunStatus.LIMIT and run.stopped_by is None
             run.max_blocks = budget
             if m.blocks > budget or grown:
                 run.back_to(min(m.blocks, budget) - 1)
@@ -505,7 +510,7 @@ class WorkspaceAnalysis:
             return False
         step = run.first_reaching(path, p)
         if step is None:
-            if run.machine.status == LIMIT or not run.finished:
+            if run.machine.status == RunStatus.LIMIT or not run.finished:
                 return False
         else:
             run.rewind(step, avoid_file=path)
@@ -570,14 +575,14 @@ class WorkspaceAnalysis:
         for k, run in self.runs.items():
             shown = self.docs if k in entries else None  # a caller on disk: findings in open files only
             try:
-                found = run_diagnostics(run, self._line_text, self.locale)
+                found = run_diagnostics(run, self._line_text, self.locale, errors)
             except Exception as e:  # a bug: say so where the run started
                 found = [internal_error(run.entry.file.path, run.entry.unit.start, RUN, e, self.locale)]
             for x in found:
                 if shown is not None and x.file not in shown:
                     continue
                 key = (x.file, x.line, x.code)
-                if key in seen or (x.code in RUN_ALARM_CODES and (x.file, x.line) in errors):
+                if key in seen:
                     continue
                 seen.add(key)
                 by_file.setdefault(x.file, []).append(x)
@@ -630,7 +635,7 @@ class WorkspaceAnalysis:
         n = last - first + 1
         en = "no analysis run reaches this block" if first == last else f"no analysis run reaches these {n} lines"
         zh = "分析运行从未执行到此程序段" if first == last else f"分析运行从未执行到这 {n} 行"
-        return Diagnostic(file, first, 0, last, max(1, len(lines[last].rstrip())), "hint", "not-executed",
+        return diagnostic(file, first, 0, last, max(1, len(lines[last].rstrip())), "not-executed",
                           pick(self.locale, en, zh), (), (UNNECESSARY,))  # fmt: skip
 
 

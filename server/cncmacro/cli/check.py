@@ -30,9 +30,8 @@ from typing import TextIO
 from .. import __version__
 from ..analysis import Diagnostic
 from ..analysis.faults import FILE, internal_error
-from ..analysis.locale import is_chinese, pick
 from ..analysis.workspace import WorkspaceAnalysis
-from ..bilingual import in_language
+from ..bilingual import in_language, is_chinese, pick
 from ..library.files import MAX_PROGRAM_BYTES, SkippedFileError, read_program, search_program_files, shown_text
 from ..library.machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
 from .sarif import to_sarif

@@ -23,22 +23,26 @@ import sys
 from pathlib import Path
 from typing import Any, TextIO
 
-from ..analysis.locale import is_chinese, pick
 from ..analysis.subprogram_alone import subprogram_remarks, subprogram_text
-from ..bilingual import in_language
+from ..bilingual import in_language, is_chinese, pick
 from ..library.machine_file import parse_preset
 from ..machine import Machine, RunResult
 from ..machine.commanded_axes import CommandedAxes
 from ..machine.frames import MODE_NAMES, Move
-from ..machine.machine import ALARM, LIMIT, PAUSED
 from ..machine.numbers import format_plain
 from ..machine.persistence_lock import LOCK_WAIT
 from ..machine.setup import prepare_run
+from ..machine.status import RunStatus
 from .profiles import add_dialect_option
 from .terminal import Printable, TextOut, json_text
 
 MAX_TEXT_MOVES = 1000
-STATUS_ZH = {"completed": "完成", "alarm": "报警", "limit": "达到程序段数上限", "stopped": "停止"}
+STATUS_ZH = {
+    RunStatus.COMPLETED: "完成",
+    RunStatus.ALARM: "报警",
+    RunStatus.LIMIT: "达到程序段数上限",
+    RunStatus.STOPPED: "停止",
+}
 CALLED_HOW_ZH = {"main": "主程序"}
 
 
@@ -121,7 +125,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
     try:
         while True:
             status = machine.run(budget - machine.blocks)  # 0 left (a pause on the last block): limit
-            if status != PAUSED:
+            if status != RunStatus.PAUSED:
                 break
             machine.resume()  # M00 and #3006 pause a machine; a simulation goes on
     except BaseException:
@@ -143,7 +147,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
     else:
         remarks = subprogram_remarks(machine, path, args.dialect, args.locale) if machine.ended_by_main_m99 else []
         write_text(result, machine, Printable(out), args.locale, remarks)
-    return {ALARM: 1, LIMIT: 3}.get(result.status, 0)
+    return {RunStatus.ALARM: 1, RunStatus.LIMIT: 3}.get(result.status, 0)
 
 
 def _folder_text(path: Path, locale: str | None) -> str:
@@ -253,7 +257,7 @@ def write_text(
             how = CALLED_HOW_ZH.get(site.how, site.how)
             print(f"  调用自 {site.program}（{how}），位置 {at}" if chinese
                   else f"  called from {site.program} ({site.how}) at {at}", file=out)  # fmt: skip
-    elif result.status == LIMIT:
+    elif result.status == RunStatus.LIMIT:
         print(pick(locale, f"stopped after {result.blocks} blocks: the block budget ran out (an endless loop?)",
                    f"执行 {result.blocks} 个程序段后停止：已达到程序段数上限（是否有死循环？）"), file=out)  # fmt: skip
     for remark in remarks or ():

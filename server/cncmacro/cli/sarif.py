@@ -1,7 +1,7 @@
 """SARIF 2.1.0 output: diagnostics as a static-analysis log that code-review tools read.
 
 ``to_sarif`` builds one run of the ``cncmacro`` tool: a rule for each diagnostic code used
-(with its default severity and description from ``analysis.severity.CODES``) and a result for
+(with its default severity and description from ``analysis.codes.CODES``) and a result for
 each diagnostic. Levels are SARIF's: ``error``, ``warning``, and ``note`` for information and
 hint. File names become URIs relative to the current folder when the file lies below it, else
 absolute ``file://`` URIs, the bytes of the name percent-encoded (a name that is not UTF-8 keeps
@@ -16,8 +16,8 @@ from pathlib import Path, PurePosixPath
 from typing import Any
 from urllib.parse import quote
 
+from ..analysis.codes import CODES
 from ..analysis.diagnostics import Diagnostic, Related
-from ..analysis.severity import CODES
 from ..library.files import shown_text
 
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
@@ -53,7 +53,7 @@ def to_sarif(diagnostics: list[Diagnostic], tool_version: str) -> dict[str, Any]
 def _rule(code: str) -> dict[str, Any]:
     info = CODES.get(code)
     severity = info.severity if info else "warning"
-    description = info.description if info else f"cncmacro diagnostic '{code}'."
+    description = str(info.description) if info else f"cncmacro diagnostic '{code}'."
     return {
         "id": code,
         "name": code,

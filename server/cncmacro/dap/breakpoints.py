@@ -33,8 +33,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from ..analysis.locale import is_chinese, pick
-from ..bilingual import in_language
+from ..bilingual import in_language, is_chinese, pick
 from ..library.files import ReadScope, SkippedFileError
 from ..library.programs import load_text
 from ..machine import Machine, MacroAlarm

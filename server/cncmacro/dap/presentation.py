@@ -17,8 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..analysis.locale import is_chinese, pick
-from ..bilingual import in_language
+from ..bilingual import in_language, is_chinese, pick
 from ..dialects.tables import SystemVariable
 from ..machine import Machine, MacroAlarm
 from ..machine.frames import Frame
@@ -182,7 +181,7 @@ def _in_scope(row: SystemVariable, scope: int) -> bool:
 def _describe(row: SystemVariable, n: int, machine: Machine, locale: str | None) -> str:
     k = n - row.first
     axes = machine.dialect.axes
-    text = row.zh if is_chinese(locale) else row.en
+    text = pick(locale, row.en, row.zh)
     text = text.replace("{axis}", axes[k] if k < len(axes) else str(k + 1)).replace("{index}", str(k + 1))
     return text.split(";")[0]
 

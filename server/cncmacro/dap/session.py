@@ -25,7 +25,7 @@ from ..bilingual import detail
 from ..library.files import SkippedFileError
 from ..machine import Machine
 from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
-from ..machine.machine import COMPLETED
+from ..machine.status import RunStatus
 from . import presentation as show
 from .breakpoints import Breakpoints, LineBreakpoint
 from .history import History
@@ -283,7 +283,9 @@ class Session:
             self.output(problem + "\n", "stderr")
         m = self.launched.machine
         self.output(f"status: {m.status} after {m.blocks} blocks\n", "console")
-        self.event("exited", {"exitCode": {"completed": 0, "alarm": 1, "limit": 3}.get(m.status, 0)})
+        self.event(
+            "exited", {"exitCode": {RunStatus.COMPLETED: 0, RunStatus.ALARM: 1, RunStatus.LIMIT: 3}.get(m.status, 0)}
+        )
         self.event("terminated")
 
     def _resume(self, action: Callable[[Stepper], Stop]) -> dict[str, Any]:
@@ -369,7 +371,7 @@ class Session:
     def on_stackTrace(self, args: dict[str, Any]) -> dict[str, Any]:
         m = self.machine()
         frames = show.stack_frames(m)
-        if m.status == COMPLETED and frames:  # stopped at the end: show the block that ended the run
+        if m.status == RunStatus.COMPLETED and frames:  # stopped at the end: show the block that ended the run
             frames[0]["line"] = last_line_run(m) + 1
         start = _whole(args, "startFrame", 0)
         levels = _whole(args, "levels", 0) or len(frames)

@@ -21,12 +21,12 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..analysis.locale import pick
+from ..bilingual import pick
 from ..machine import Machine
 from ..machine.block_roles import skipped
 from ..machine.commanded_axes import CommandedAxes
 from ..machine.frames import Move
-from ..machine.machine import ALARM, COMPLETED, LIMIT, PAUSED, STOPPED
+from ..machine.status import FINISHED, RunStatus
 from ..syntax.nodes import Number
 from .breakpoints import Breakpoints, Hit
 from .history import History
@@ -168,29 +168,29 @@ class Stepper:
 
     def _status_stop(self) -> Stop | None:
         m = self.machine
-        if m.status == PAUSED and m.message is not None:
+        if m.status == RunStatus.PAUSED and m.message is not None:
             if self.filters.messages:
                 text = detail_text(m.message, self.locale)
                 return Stop("pause", text, text)
             return None
-        if m.status in (COMPLETED, ALARM, LIMIT, STOPPED):
+        if m.status in FINISHED:
             return self._ended()
         return None
 
     def _ended(self) -> Stop:
         m = self.machine
-        if m.status == ALARM and m.alarm is not None:
+        if m.status == RunStatus.ALARM and m.alarm is not None:
             a = m.alarm
             text = f"ALARM {a.number}: {detail_text(a.message, self.locale)}"
             if self.filters.alarms:
                 return Stop("exception", text, text)
             self.output(text + "\n", "stderr")
-        elif m.status == LIMIT:
+        elif m.status == RunStatus.LIMIT:
             text = f"stopped after {m.blocks} blocks: the block budget ran out (an endless loop?)"
             if not self.never_stop:
                 return Stop("exception", text, text)
             self.output(text + "\n", "stderr")
-        elif m.status == COMPLETED and self.stop_at_end:
+        elif m.status == RunStatus.COMPLETED and self.stop_at_end:
             return Stop("step", end_text(m, self.locale))
         return Stop("exited", finished=True)
 
@@ -199,7 +199,7 @@ class Stepper:
         """Back one block (to the start of the kept history at most)."""
         m = self.machine
         back = 1
-        if m.status == COMPLETED and _end_code(m) is None:
+        if m.status == RunStatus.COMPLETED and _end_code(m) is None:
             back = 2  # running off the file's end (or into the next O header) counted as a block
         if self._back(m.blocks - back) is None:
             return Stop("step")

@@ -8,6 +8,7 @@ GSK-only numbers (291, 293) come from seeds 001 and 002, the FANUC 30i's for var
 
 from __future__ import annotations
 
+from ..bilingual import pick
 from .tables import AlarmDoc
 
 DECIMAL_POINT = 7
@@ -66,5 +67,5 @@ def alarm_text(number: int, locale: str = "en") -> str:
     """The standard text of an alarm number, or a generic one."""
     doc = ALARMS.get(number)
     if doc is None:
-        return "alarm" if locale == "en" else "报警"
-    return doc.zh if locale.lower().startswith("zh") else doc.en
+        return pick(locale, "alarm", "报警")
+    return pick(locale, doc.en, doc.zh)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..bilingual import pick
 from .dialect import Dialect
 from .tables import CodeDoc, FunctionDoc
 
@@ -36,10 +37,6 @@ def variable_class(number: int, dialect: Dialect) -> str:
     if number >= 1000:
         return SYSTEM
     return UNDEFINED
-
-
-def _zh(locale: str | None) -> bool:
-    return bool(locale) and str(locale).lower().startswith("zh")
 
 
 def axis_name(dialect: Dialect, k: int) -> str:
@@ -71,7 +68,7 @@ def describe_system_variable(dialect: Dialect, number: int, locale: str | None =
     if row is None:
         return None
     k = number - row.first
-    template = row.zh if _zh(locale) else row.en
+    template = pick(locale, row.en, row.zh)
     axis = axis_name(dialect, k) if "{axis}" in row.en else None
     text = template.replace("{axis}", axis or "").replace("{index}", str(k + 1))
     return VariableDoc(number, text, row.unit, row.access, axis, row.group, row.first, row.last)
@@ -100,8 +97,3 @@ def function_docs(dialect: Dialect, name: str) -> list[FunctionDoc]:
     """Every documented form of a function, operator or statement keyword (``ATAN`` has two)."""
     name = name.upper()
     return [f for f in dialect.functions() if f.name == name]
-
-
-def pick_text(doc: CodeDoc | FunctionDoc, locale: str | None) -> str:
-    """A code's or function's description in the chosen language."""
-    return doc.zh if _zh(locale) else doc.en

@@ -37,6 +37,9 @@ from ..bilingual import Detail, detail
 
 # Program files are found by these endings (any case), or by an O-number name without one.
 PROGRAM_SUFFIXES = frozenset({".nc", ".cnc", ".mac", ".prg", ".tap", ".eia"})
+# A name that spells a program number: O, or no O, then digits (``O1234``, ``o0040``, ``1234``).
+_O_NUMBER = re.compile(r"([Oo]?)(\d+)")
+MAX_NUMBER_DIGITS = 8  # the longest program number of any control (O12345678)
 # A program file found by searching a folder (not one named by the person) is read up to this
 # size: a larger one is skipped and named. 8 MB is some 250,000 lines.
 MAX_PROGRAM_BYTES = 8_000_000
@@ -194,12 +197,23 @@ def encode_program(source: SourceText) -> bytes:
     return prefix + source.text.encode(source.encoding, errors="surrogateescape")
 
 
+def o_number(name: str, bare: bool = False) -> int | None:
+    """The program number that ``name`` spells, ``O1234`` or ``o1234`` (1 to 8 digits), or None.
+    With ``bare`` the O may be left out: a file's stem (``1234.nc`` is named after O1234, as
+    ``ProgramLibrary.find_number`` looks for it); a bracketed name (``P[O1004]``) needs it."""
+    m = _O_NUMBER.fullmatch(name)
+    if m is None or len(m.group(2)) > MAX_NUMBER_DIGITS or not (m.group(1) or bare):
+        return None
+    return int(m.group(2))
+
+
 def is_program_file(path: Path) -> bool:
-    """True for a file whose name says it holds a program: a known ending, or ``O1234``."""
+    """True for a file whose name says it holds a program: a known ending, or ``O1234`` without
+    one (an O and digits, however many: ``O123456789`` is read, though it names no number)."""
     if path.suffix.lower() in PROGRAM_SUFFIXES:
         return True
-    name = path.name
-    return not path.suffix and len(name) >= 2 and name[0] in "Oo" and name[1:].isdigit()
+    m = _O_NUMBER.fullmatch(path.name)
+    return not path.suffix and m is not None and bool(m.group(1))
 
 
 @dataclass(slots=True)

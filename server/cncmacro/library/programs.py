@@ -8,7 +8,9 @@ name is a file name (``CUT.CNC``), or an O number when it looks like one (``P[O1
 Only files inside those folders are ever read: a name with a path in it is never found, and a
 link in a folder that leads out of it (and out of every extra folder) is not followed. Files are
 read as any file found in a folder is (``files.read_program``): regular files only, up to
-``MAX_PROGRAM_BYTES``; one that is not read is not found.
+``MAX_PROGRAM_BYTES``; one that is not read is not found. Files on disk are read through a
+``FileCache`` (``file_cache.py``), which a library may share with others (the language server's
+workspace index, the call index), so that a file is read and parsed once until it changes.
 """
 
 from __future__ import annotations
@@ -18,15 +20,16 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..syntax.block_parser import BlockCache, collector_paused, shared_cache
-from ..syntax.document import split_lines
-from ..syntax.program import Program, ProgramUnit, build_program
+from ..syntax.block_parser import BlockCache, shared_cache
+from ..syntax.program import Program, ProgramUnit
 from .dialect_choice import dialect_from_text
-from .files import SkippedFileError, program_files_in, read_program, stays_inside
+from .file_cache import FileCache, LoadedFile, load_text
+from .files import SkippedFileError, o_number, program_files_in, stays_inside
+
+__all__ = ["FileCache", "FoundProgram", "LoadedFile", "ProgramLibrary", "is_program_name", "load_text"]
 
 ON_CONTROL = "(on the control)"  # the path suffix of a program kept on the control
 _NAME_OK = re.compile(r"^[\w+\-.\u4e00-\u9fff]+$")
-_O_NAME = re.compile(r"^[Oo](\d{1,8})$")
 
 
 def is_program_name(name: str) -> bool:
@@ -36,21 +39,6 @@ def is_program_name(name: str) -> bool:
     with ``..`` or a path in it is never one."""
     name = name.strip()
     return bool(_NAME_OK.match(name)) and not name.startswith(".") and ".." not in name
-
-
-@dataclass(slots=True)
-class LoadedFile:
-    """A program file, parsed: its path (as given), lines, structure and dialect comment."""
-
-    path: str
-    lines: list[str]
-    program: Program
-    dialect: str | None
-    on_control: bool = False  # a program kept on the control (``control_program``), not a file
-
-    @property
-    def name(self) -> str:
-        return Path(self.path).name
 
 
 @dataclass(slots=True)
@@ -68,28 +56,22 @@ class FoundProgram:
         return Path(self.file.path).stem
 
 
-def load_text(path: str, text: str, cache: BlockCache | None = None) -> LoadedFile:
-    """Parse a file's text into a ``LoadedFile``."""
-    lines = split_lines(text)
-    with collector_paused():
-        blocks = (cache if cache is not None else shared_cache).get_many(lines)
-        program = build_program(blocks)
-    return LoadedFile(path, lines, program, dialect_from_text(lines))
-
-
 class ProgramLibrary:
     """The programs a run may call. ``folders`` are searched after the calling file's own
-    folder; ``texts`` maps paths to text that replaces the file on disk (open editors)."""
+    folder; ``texts`` maps paths to text that replaces the file on disk (open editors);
+    ``files`` reads the files on disk (a cache of its own when none is given)."""
 
     def __init__(
         self,
         folders: Sequence[str | Path] | None = None,
         texts: dict[str, str] | None = None,
         cache: BlockCache | None = None,
+        files: FileCache | None = None,
     ) -> None:
         self.folders = [Path(f) for f in folders or []]
         self.texts = dict(texts or {})
         self.cache = cache if cache is not None else shared_cache
+        self.disk = files if files is not None else FileCache(self.cache)
         self._files: dict[str, LoadedFile | None] = {}
         self._listing: dict[Path, list[Path]] = {}
         self._stems: dict[Path, dict[str, list[Path]]] = {}  # folder -> lower-case stem -> its files
@@ -103,11 +85,12 @@ class ProgramLibrary:
         text = self.texts.get(key)
         if text is None:
             try:
-                text = read_program(key).text
+                loaded = self.disk.load(key)
             except (OSError, SkippedFileError):
                 self._files[key] = None
                 return None
-        loaded = load_text(key, text, self.cache)
+        else:
+            loaded = load_text(key, text, self.cache)
         self._files[key] = loaded
         return loaded
 
@@ -188,11 +171,13 @@ class ProgramLibrary:
                 text = self.texts.get(str(p))
                 if text is None:
                     try:
-                        text = read_program(p).text
+                        text = self.disk.text(str(p))
                     except (OSError, SkippedFileError):
                         continue
                 if header.search(text):
-                    loaded = self._files[str(p)] = load_text(str(p), text, self.cache)  # read once, not twice
+                    loaded = self.load(p)  # parsed from the text just searched (the cache keeps it)
+                    if loaded is None:
+                        continue
                     unit = loaded.program.unit_numbered(number)
                     if unit is not None:
                         return FoundProgram(loaded, unit)
@@ -216,9 +201,9 @@ class ProgramLibrary:
     def find_name(self, name: str, near: LoadedFile | None = None) -> FoundProgram | None:
         """A program named by a bracketed name (``P[CUT]``): a file name, or ``O1004``."""
         name = name.strip()
-        m = _O_NAME.match(name)
-        if m:
-            return self.find_number(int(m.group(1)), near)
+        number = o_number(name)
+        if number is not None:
+            return self.find_number(number, near)
         if not is_program_name(name):
             return None
         wanted = name.lower()

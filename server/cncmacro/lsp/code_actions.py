@@ -20,12 +20,13 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..analysis.call_sites import call_site
 from ..analysis.profile_suggestion import CODE, suggestion_target
+from ..bilingual import pick
 from ..library.files import SkippedFileError, read_bytes
-from ..library.machine_file import MACHINE_FILE_NAME, MAX_MACHINE_FILE_BYTES, MachineSettings, find_machine_file
+from ..library.machine_file import MACHINE_FILE_NAME, MAX_MACHINE_FILE_BYTES, MachineSettings
 from ..machine.calls import MAX_REPEAT
 from ..syntax.nodes import Number, Word
-from .call_sites import call_site
 from .cursor import doc_range
 from .documents import OpenDocument
 from .positions import Encoding
@@ -50,7 +51,7 @@ _TITLES = {
 
 def _title(key: str, locale: str, **kw: object) -> str:
     en, zh = _TITLES[key]
-    return (zh if locale.lower().startswith("zh") else en).format(**kw)
+    return pick(locale, en, zh).format(**kw)
 
 
 def nc_words(doc: OpenDocument, line: int) -> list[Word]:
@@ -59,7 +60,7 @@ def nc_words(doc: OpenDocument, line: int) -> list[Word]:
     if block is None:
         return []
     site = call_site(block, doc.dialect)
-    if site is None or site.kind == "M98":
+    if site is None or site.kind not in ("G65", "G66"):
         return []
     out = []
     after = False
@@ -147,7 +148,7 @@ def profile_actions(ls: CncMacroServer, doc: OpenDocument, diags: Sequence[types
     asked = [d for d in diags if d.code == CODE]
     if not asked:
         return []
-    other = suggestion_target(doc.parsed.program, doc.dialect, ls.machine or MachineSettings())
+    other = suggestion_target(doc.parsed.program, doc.dialect, ls.documents.machine(doc) or MachineSettings())
     if other is None:
         return []
     encoding = ls.documents.encoding
@@ -155,7 +156,7 @@ def profile_actions(ls: CncMacroServer, doc: OpenDocument, diags: Sequence[types
     comment = types.TextEdit(doc_range(doc, at, 0, 0, encoding), f"(cncmacro: dialect={other.name})\n")
     title = _title("comment", ls.locale, title=other.title, name=other.name)
     out = [_action(doc, title, comment, asked, CODE)]
-    machine = find_machine_file(doc.path)
+    machine = doc.machine_file
     if machine is None and ls.roots:
         machine = Path(ls.roots[0]) / MACHINE_FILE_NAME
     if machine is not None:

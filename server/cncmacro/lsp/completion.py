@@ -10,9 +10,10 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..analysis.call_sites import CallSite, call_site
+from ..bilingual import pick
 from ..dialects import describe
 from ..dialects.dialect import ARGUMENTS_I
-from .call_sites import CallSite, call_site
 from .cursor import Cursor, cursor_at
 from .semantic_tokens import _name_kinds
 from .texts import t
@@ -168,7 +169,7 @@ def keyword_items(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem]
                 label=f.name,
                 kind=types.CompletionItemKind.Function if kind == "function" else types.CompletionItemKind.Keyword,
                 detail=f.signature,
-                documentation=describe.pick_text(f, ls.locale),
+                documentation=pick(ls.locale, f.en, f.zh),
                 insert_text=f"{f.name}[$1]" if kind == "function" else None,
                 insert_text_format=types.InsertTextFormat.Snippet if kind == "function" else None,
             )

@@ -1,9 +1,17 @@
 """Diagnostics for the editor: the workspace analysis on a worker thread, cancelled by newer
 edits, its newest result pushed per file.
 
-``DiagnosticsEngine.analysis`` is the ``analysis.workspace.WorkspaceAnalysis`` of the session:
-it holds the open documents (the server's ``Documents`` show its ``ParsedDocument``s, so each
-document is parsed once) and every edit goes through it. The analysis runs on one worker
+``DiagnosticsEngine.analyses`` holds one ``analysis.workspace.WorkspaceAnalysis`` per machine file
+in use, as ``cncmacro check`` makes one per group of files: each open document is in the analysis
+of its own machine file (``OpenDocument.machine_file``, the nearest ``.cncmacro.toml`` above it;
+None for the defaults), which holds it (the server's ``Documents`` show its ``ParsedDocument``,
+so each document is parsed once), and every edit goes through it. With one machine file there
+is one analysis, and nothing is merged. A machine file created, changed or deleted moves
+the documents whose nearest one changed to the analysis of their new one (``regroup``) and gives
+each analysis its file's settings again (``configure``). An analysis analyses its own documents;
+their results are merged, each open file's findings and values taken from its own analysis (a
+program of another machine's folder is read there as saved), those of a file that is not open
+from every analysis that reached it. The analysis runs on one worker
 thread, so hovers and completion are answered meanwhile; the editor's thread only reads the
 documents, and changes them (open, change, close, settings) inside ``editing()``, which first
 tells a running analysis to stop (it checks between chunks of blocks) and then takes the
@@ -31,19 +39,21 @@ from collections.abc import Iterator
 from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, cast
+from typing import TYPE_CHECKING, Any, cast
 
 from lsprotocol import types
 
 from ..analysis import Diagnostic
 from ..analysis.workspace import AnalysisResult, Value, WorkspaceAnalysis
-from ..library.machine_file import MachineSettings
 from .collector import QUIET_SECONDS, Collector
 from .disk_watch import DiskStamps
 from .documents import Edit, OpenDocument, uri_to_path
 from .protocol_diagnostics import to_lsp
+from .settings import Settings, merged_severities, valid_severities
 
 if TYPE_CHECKING:
+    from pathlib import Path
+
     from .server import CncMacroProtocol, CncMacroServer
 
 log = logging.getLogger(__name__)
@@ -79,7 +89,12 @@ class DiagnosticsEngine:
 
     def __init__(self, server: CncMacroServer, delay: float = DEBOUNCE_SECONDS) -> None:
         self.server = server
-        self.analysis = WorkspaceAnalysis()
+        # per machine file; every one reads the files on disk through the workspace index's cache
+        self.analyses: dict[Path | None, WorkspaceAnalysis] = {None: WorkspaceAnalysis(files=server.index.disk)}
+        self._search_paths: list[str] = []
+        self._folders: list[str] = []
+        self._locale = "en"
+        self._editor = Settings()  # the editor's settings in force
         self.delay = delay
         self.lock = threading.Lock()  # held by the analysis, and by the editor's thread to change anything
         self.generation = 0
@@ -99,19 +114,76 @@ class DiagnosticsEngine:
         self._disk_checks: asyncio.Task[None] | None = None
 
     # ---- setting up
-    def start(self, machine: MachineSettings | None, folders: list[str], locale: str) -> None:
-        """A fresh analysis for the session (at ``initialize``, before any document opens)."""
+    def start(self, machine_file: Path | None, folders: list[str], locale: str) -> None:
+        """A fresh analysis for the session (at ``initialize``, before any document opens), for
+        ``machine_file`` (the first workspace folder's)."""
         with self.editing():
-            self.analysis = WorkspaceAnalysis(
-                settings=machine, search_paths=folders, workspace_folders=folders, locale=locale
-            )
+            self._search_paths, self._folders, self._locale = list(folders), list(folders), locale
+            self.analyses = {}
+            self._analysis(machine_file)
 
-    def configure(self, machine: MachineSettings | None, dialect: str | None, budget: int | None,
-                  severities: dict[str, str]) -> None:  # fmt: skip
-        """Settings for the analysis; the open documents are analysed again."""
+    def configure(self, editor: Settings) -> None:
+        """The editor's settings, or a machine file, changed: each analysis gets its machine
+        file's settings and the editor's again; the open documents are analysed again."""
         with self.editing():
-            self.analysis.configure(settings=machine, dialect=dialect, max_blocks=budget, severities=severities)
+            self._editor = editor
+            for machine_file, analysis in self.analyses.items():
+                analysis.configure(**self._options(machine_file))
         self.schedule()
+
+    def _options(self, machine_file: Path | None) -> dict[str, Any]:
+        """The settings of the analysis of ``machine_file``: the file's, and the editor's over them."""
+        machine = self.server.documents.machines.settings(machine_file)
+        editor = self._editor
+        severities = valid_severities(merged_severities(machine, editor))
+        return {
+            "settings": machine,
+            "dialect": editor.dialect,
+            "max_blocks": editor.run_budget,
+            "severities": severities,
+        }
+
+    def _analysis(self, machine_file: Path | None) -> WorkspaceAnalysis:
+        """The analysis of the documents read with ``machine_file`` (made at the first one)."""
+        analysis = self.analyses.get(machine_file)
+        if analysis is None:
+            for unused in [k for k, a in self.analyses.items() if not a.docs]:
+                del self.analyses[unused]  # the one kept when its last document left, say
+            analysis = self.analyses[machine_file] = WorkspaceAnalysis(
+                search_paths=self._search_paths,
+                workspace_folders=self._folders,
+                locale=self._locale,
+                files=self.server.index.disk,
+            )
+            analysis.configure(**self._options(machine_file))
+        return analysis
+
+    def _left(self, machine_file: Path | None) -> None:
+        """A document left the analysis of ``machine_file``: without documents, it goes (but the
+        last one, which keeps what it knows of the workspace for the next document)."""
+        analysis = self.analyses.get(machine_file)
+        if analysis is not None and not analysis.docs and len(self.analyses) > 1:
+            del self.analyses[machine_file]
+
+    def regroup(self) -> None:
+        """A machine file changed on disk: each open document whose nearest one is another now
+        moves to that one's analysis, with its text and version."""
+        documents = self.server.documents
+        with self.editing():
+            documents.machines.forget()
+            for doc in documents.by_uri.values():
+                machine_file = documents.machines.path_for(doc.path)
+                if machine_file == doc.machine_file:
+                    continue
+                before = doc.machine_file
+                self.analyses[before].close(doc.path)
+                analysis = self._analysis(machine_file)
+                analysis.open(doc.path, doc.parsed.text, doc.version)
+                parsed = analysis.document(doc.path)
+                assert parsed is not None
+                documents.moved(doc, parsed, machine_file)
+                self._left(before)
+                self.disk.watch_machine_files(doc.path)
 
     # ---- document events
     @contextmanager
@@ -124,11 +196,14 @@ class DiagnosticsEngine:
 
     def opened(self, item: types.TextDocumentItem) -> OpenDocument:
         path = uri_to_path(item.uri)
+        documents = self.server.documents
         with self.editing():
-            self.analysis.open(path, item.text, item.version)
-            parsed = self.analysis.document(path)
+            analysis = self._analysis(documents.machines.path_for(path))
+            analysis.open(path, item.text, item.version)
+            parsed = analysis.document(path)
             assert parsed is not None
-            doc = self.server.documents.open(item, parsed)
+            doc = documents.open(item, parsed)
+        self.disk.watch_machine_files(path)
         self._opened_at = (self._opened_at[1], time.monotonic())
         self.schedule()
         return doc
@@ -137,7 +212,7 @@ class DiagnosticsEngine:
         version = params.text_document.version
 
         def apply(doc: OpenDocument, edit: Edit) -> None:
-            self.analysis.change(doc.path, *edit, version)
+            self.analyses[doc.machine_file].change(doc.path, *edit, version)
 
         with self.editing():
             doc = self.server.documents.change(params, apply)
@@ -149,7 +224,8 @@ class DiagnosticsEngine:
         with self.editing():
             doc = self.server.documents.close(uri)
             if doc is not None:
-                self.analysis.close(doc.path)
+                self.analyses[doc.machine_file].close(doc.path)
+                self._left(doc.machine_file)
                 self.collector.closed()
         self._published.pop(uri, None)
         self._values.pop(uri, None)
@@ -161,14 +237,17 @@ class DiagnosticsEngine:
     def files_changed(self, paths: list[str]) -> None:
         """Files changed on disk (created, changed, deleted)."""
         with self.editing():
-            for path in paths:
-                self.analysis.file_changed(path)
+            for analysis in self.analyses.values():
+                for path in paths:
+                    analysis.file_changed(path)
         self.schedule()
 
     def folders_changed(self, folders: list[str]) -> None:
         """The editor's workspace folders changed: callers are looked for in the new ones."""
         with self.editing():
-            self.analysis.set_workspace_folders(folders)
+            self._folders = list(folders)
+            for analysis in self.analyses.values():
+                analysis.set_workspace_folders(folders)
         self.schedule()
 
     # ---- running
@@ -245,24 +324,38 @@ class DiagnosticsEngine:
             new_documents = any(d.uri not in self._analysed_once for d in docs)
             started = time.time_ns()
             with self.collector.paused():
+                results: list[tuple[Path | None, WorkspaceAnalysis, AnalysisResult]] | None = []
+                groups: dict[Path | None, str] = {}  # per machine file, the path of its first document
+                for d in docs:
+                    groups.setdefault(d.machine_file, d.path)
                 try:
-                    result = self.analysis.analyze(docs[0].path, cancelled)
+                    for machine_file, first in groups.items():
+                        analysis = self.analyses[machine_file]
+                        result = analysis.analyze(first, cancelled)
+                        if result is None:
+                            results = None
+                            break
+                        results.append((machine_file, analysis, result))  # type: ignore[union-attr]
                 except Exception:  # a fault in the analysis must not stop the server
                     log.exception("the analysis failed")
-                    result = None
+                    results = None
                 try:
-                    outcome = None if result is None else self._outcome(generation, docs, result)
+                    outcome = None if results is None else self._outcome(generation, docs, results)
                 finally:
                     self._record_reads(started)
                 self.collector.settle(new_documents and outcome is not None)  # before the collector runs again
         return outcome
 
     def _record_reads(self, started: int) -> None:
-        """Keep the stamps of the files the analysis has read from disk (not the open ones)."""
-        library = self.analysis.library
-        files, folders = library.read_from_disk()
-        own = self.analysis.docs
-        self.disk.record(library, [*(f for f in files if f not in own), *folders], started)
+        """Keep the stamps of the files the analyses have read from disk (not their open ones)."""
+        libraries: list[object] = []
+        paths: list[str] = []
+        for analysis in self.analyses.values():
+            files, folders = analysis.library.read_from_disk()
+            own = analysis.docs
+            paths += [*(f for f in files if f not in own), *folders]
+            libraries.append(analysis.library)
+        self.disk.record(libraries, list(dict.fromkeys(paths)), started)
 
     # ---- files changed on disk that no event reports
     def check_disk_now_and_then(self) -> None:
@@ -283,9 +376,10 @@ class DiagnosticsEngine:
             except Exception:  # a fault here must not end the checks
                 log.exception("looking at the files on disk failed")
 
-    def _outcome(self, generation: int, docs: list[OpenDocument], result: AnalysisResult) -> Outcome:
-        ws = self.analysis
+    def _outcome(self, generation: int, docs: list[OpenDocument],
+                 results: list[tuple[Path | None, WorkspaceAnalysis, AnalysisResult]]) -> Outcome:  # fmt: skip
         by_path = {d.path: d for d in docs}
+        result, owner = _merged(by_path, results)
         versions: dict[str, int | None] = {}
         found: dict[str, list[Diagnostic]] = {}
         for path, diags in result.diagnostics.items():
@@ -297,6 +391,7 @@ class DiagnosticsEngine:
             found.setdefault(d.uri, [])
 
         def line_text(file: str, line: int) -> str:
+            ws = owner.get(file) or next((a for _, a, _ in results if a.document(file) is not None), results[0][1])
             parsed = ws.document(file)
             lines = parsed.lines if parsed is not None else _disk_lines(ws, file)
             return lines[line] if 0 <= line < len(lines) else ""
@@ -387,6 +482,36 @@ class DiagnosticsEngine:
         """The values the newest run left on the lines of ``doc``, if it analysed this version."""
         got = self._values.get(doc.uri)
         return got[1] if got is not None and got[0] == doc.version else {}
+
+
+def _merged(
+    by_path: dict[str, OpenDocument], results: list[tuple[Path | None, WorkspaceAnalysis, AnalysisResult]]
+) -> tuple[AnalysisResult, dict[str, WorkspaceAnalysis]]:
+    """The results of the analyses as one, and per file the analysis whose findings it shows:
+    an open file's own (its machine file's), a file that is not open the first that reached it
+    (the findings of the others added, each once)."""
+    if len(results) == 1:
+        _, analysis, result = results[0]
+        return result, dict.fromkeys(result.diagnostics, analysis)
+    owner: dict[str, WorkspaceAnalysis] = {}
+    diagnostics: dict[str, list[Diagnostic]] = {}
+    values: dict[str, dict[int, list[tuple[int, Value]]]] = {}
+    for machine_file, analysis, result in results:
+        for path, diags in result.diagnostics.items():
+            doc = by_path.get(path)
+            if doc is not None and doc.machine_file != machine_file:
+                continue  # an open file of another machine, read here as saved
+            if path not in diagnostics:
+                owner[path], diagnostics[path] = analysis, list(diags)
+            elif doc is None:
+                kept = diagnostics[path]
+                kept += [x for x in diags if x not in kept]
+                kept.sort(key=Diagnostic.sort_key)
+        for path, lines in result.values.items():
+            doc = by_path.get(path)
+            if doc is not None and doc.machine_file == machine_file:
+                values[path] = lines
+    return AnalysisResult(results[0][2].version, diagnostics, values), owner
 
 
 def _disk_lines(ws: WorkspaceAnalysis, path: str) -> list[str]:

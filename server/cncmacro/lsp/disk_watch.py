@@ -7,8 +7,9 @@ dynamicRegistration``) is asked for one on every program file (the endings of
 ``.cncmacro.toml``; its events then say what changed under the workspace folders.
 
 Every other change is found by ``DiskStamps``: it keeps (file type, modification time, size) of
-each file the analysis read from disk and each folder it listed, plus the places the machine
-file is looked for, and ``changed`` names those that differ. That is a handful of ``stat`` calls
+each file the analysis read from disk and each folder it listed, plus the places a machine
+file is looked for (above the first workspace folder and above each document opened), and
+``changed`` names those that differ. That is a handful of ``stat`` calls
 (the programs the open ones call, not the workspace), made when an analysis starts and now and
 then while documents are open. With the editor's watcher in force, only the paths outside the
 workspace folders (which no watcher covers) are looked at.
@@ -75,26 +76,44 @@ class DiskStamps:
         self._fixed: dict[str, Stamp | None] = {}  # where the machine file is looked for
         self._stamps: dict[str, Stamp | None] = {}
         self._inside: dict[str, bool] = {}
-        self._source: weakref.ref[object] | None = None  # the library that read the files
+        self._sources: list[weakref.ref[object]] = []  # the libraries that read the files
 
     def set_roots(self, roots: list[str]) -> None:
-        """The workspace folders: the machine file is looked for in the first and above it."""
+        """The workspace folders: a machine file is looked for in the first and above it."""
         self._roots = [Path(r) for r in roots if r]
         self._inside.clear()
         self._fixed = {}
         if self._roots:
-            first = self._roots[0].resolve()
-            for folder in (first, *first.parents):
-                path = str(folder / MACHINE_FILE_NAME)
-                self._fixed[path] = stamp_of(path)
+            self.watch_machine_files(str(self._roots[0]), folder=True)
 
-    def record(self, source: object, paths: Iterable[str], started_ns: int) -> None:
-        """After an analysis that started at ``started_ns``: ``paths`` are what ``source`` (the
-        analysis's program library) has read from disk. A path met before keeps its stamp
-        while the same library holds it; a new one is stamped now, as unknown when it was
+    def watch_machine_files(self, start: str, folder: bool = False) -> None:
+        """Look also at the places a machine file of ``start`` (a document's path, or a
+        ``folder``) is looked for: its folder and those above it (``find_machine_file``)."""
+        if not os.path.isabs(start):  # an unsaved document: the first folder's are watched
+            return
+        try:
+            p = Path(start).resolve()
+        except (OSError, RuntimeError, ValueError):
+            return
+        first = p if folder or os.path.isdir(p) else p.parent
+        places = [str(f / MACHINE_FILE_NAME) for f in (first, *first.parents)]
+        if all(place in self._fixed for place in places):
+            return
+        fixed = dict(self._fixed)  # a new dictionary: the analysis thread may be looking at the old one
+        for place in places:
+            if place not in fixed:
+                fixed[place] = stamp_of(place)
+        self._fixed = fixed
+
+    def record(self, sources: list[object], paths: Iterable[str], started_ns: int) -> None:
+        """After an analysis that started at ``started_ns``: ``paths`` are what ``sources`` (the
+        analyses' program libraries) have read from disk. A path met before keeps its stamp
+        while the same libraries hold it; a new one is stamped now, as unknown when it was
         changed since the analysis started (it may have been read before that change)."""
-        fresh = self._source is None or self._source() is not source
-        self._source = weakref.ref(source)
+        fresh = len(sources) != len(self._sources) or any(
+            r() is not s for r, s in zip(self._sources, sources, strict=True)
+        )
+        self._sources = [weakref.ref(s) for s in sources]
         ended = time.time_ns()
         old = {} if fresh else self._stamps
         stamps: dict[str, Stamp | None] = {}

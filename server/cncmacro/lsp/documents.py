@@ -4,7 +4,9 @@ The ``ParsedDocument`` is the analysis's own (``WorkspaceAnalysis.document``), s
 document is parsed once. An editor change is applied through the analysis, which edits the
 cached parser in place (only the touched lines are parsed again);
 the document's dialect is chosen again only when an edit touches the first lines, where the
-``(cncmacro: dialect=...)`` comment lives. Requests read single lines and blocks from here and
+``(cncmacro: dialect=...)`` comment lives. Each file is read with its own machine file
+(``library/machine_files.py``: the nearest ``.cncmacro.toml`` above it), which is where its dialect
+chain starts after its comment. Requests read single lines and blocks from here and
 never rebuild the text.
 """
 
@@ -19,15 +21,16 @@ from urllib.parse import quote, unquote_to_bytes, urlsplit
 from lsprotocol import types
 from pygls.uris import from_fs_path, to_fs_path
 
+from ..analysis.site_index import SiteIndex, SiteMemo
 from ..dialects.dialect import Dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_and_source
 from ..library.machine_file import MachineSettings
+from ..library.machine_files import MachineFiles
 from ..library.profiles import machine_profile
 from ..library.programs import LoadedFile
 from ..syntax.document import ParsedDocument, split_lines
 from ..syntax.nodes import Block
 from .positions import UTF16, Encoding
-from .site_index import SiteIndex
 
 
 def uri_to_path(uri: str) -> str:
@@ -69,6 +72,7 @@ class OpenDocument:
     parsed: ParsedDocument
     dialect: Dialect
     sites: SiteIndex
+    machine_file: Path | None = None  # the .cncmacro.toml it is read and analysed with
 
     @property
     def lines(self) -> list[str]:
@@ -90,36 +94,56 @@ class OpenDocument:
 
 
 class Documents:
-    """The open documents by URI, and the dialect choice they share."""
+    """The open documents by URI, and the dialect choice: the machine files and the editor's
+    setting."""
 
     def __init__(self) -> None:
         self.by_uri: dict[str, OpenDocument] = {}
-        self.workspace_dialect: str | None = None  # from .cncmacro.toml
-        self.machine: MachineSettings | None = None  # the workspace's .cncmacro.toml
+        self.machines = MachineFiles()  # the .cncmacro.toml of each file
         self.setting_dialect: str | None = None  # from the editor's settings
         self.encoding: Encoding = UTF16  # the client's columns, agreed at initialize
+        self.site_memo = SiteMemo()  # the sites of blocks, shared by the documents' site indexes
 
-    def dialect_for(self, lines: list[str]) -> Dialect:
-        return machine_profile(choose_dialect(lines, self.workspace_dialect, self.setting_dialect), self.machine)
+    def dialect_for(self, lines: list[str], path: str) -> Dialect:
+        """The dialect of the file at ``path`` with these lines, under its machine file."""
+        machine = self.machines.settings_for(path)
+        workspace = machine.dialect if machine is not None else None
+        return machine_profile(choose_dialect(lines, workspace, self.setting_dialect), machine)
 
-    def dialect_source(self, lines: list[str]) -> str:
-        """Which link of the dialect chain decided for these lines (``dialect_and_source``)."""
-        return dialect_and_source(lines, self.workspace_dialect, self.setting_dialect)[1]
+    def dialect_source(self, doc: OpenDocument) -> str:
+        """Which link of the dialect chain decided for ``doc`` (``dialect_and_source``)."""
+        machine = self.machines.settings(doc.machine_file)
+        workspace = machine.dialect if machine is not None else None
+        return dialect_and_source(doc.parsed.lines, workspace, self.setting_dialect)[1]
+
+    def machine(self, doc: OpenDocument) -> MachineSettings | None:
+        """The settings of ``doc``'s machine file (None: it has none, or a broken one)."""
+        return self.machines.settings(doc.machine_file)
 
     def open(self, item: types.TextDocumentItem, parsed: ParsedDocument | None = None) -> OpenDocument:
         """Open ``item``; ``parsed`` is its text already parsed (by the analysis)."""
         parsed = parsed if parsed is not None else ParsedDocument(item.text)
-        dialect = self.dialect_for(parsed.lines)
+        path = uri_to_path(item.uri)
+        machine_file = self.machines.path_for(path)
+        dialect = self.dialect_for(parsed.lines, path)
         doc = OpenDocument(
             item.uri,
-            uri_to_path(item.uri),
+            path,
             item.version,
             parsed,
             dialect,
-            SiteIndex(parsed.blocks, dialect.local_subprogram_code),
+            SiteIndex(parsed.blocks, dialect.local_subprogram_code, self.site_memo),
+            machine_file,
         )
         self.by_uri[item.uri] = doc
         return doc
+
+    def moved(self, doc: OpenDocument, parsed: ParsedDocument, machine_file: Path | None) -> None:
+        """``doc`` is now read with ``machine_file``, its text parsed anew in ``parsed`` (by the
+        analysis of that machine file)."""
+        doc.parsed, doc.machine_file = parsed, machine_file
+        doc.dialect = self.dialect_for(parsed.lines, doc.path)
+        doc.sites = SiteIndex(parsed.blocks, doc.dialect.local_subprogram_code, self.site_memo)
 
     def change(
         self, params: types.DidChangeTextDocumentParams, apply: Callable[[OpenDocument, Edit], None] | None = None
@@ -154,7 +178,7 @@ class Documents:
             if isinstance(change, types.TextDocumentContentChangePartial):
                 doc.sites.replaced(doc.parsed.blocks, edit[0], edit[2] + 1, len(split_lines(change.text)))
             else:
-                doc.sites = SiteIndex(doc.parsed.blocks, doc.dialect.local_subprogram_code)
+                doc.sites = SiteIndex(doc.parsed.blocks, doc.dialect.local_subprogram_code, self.site_memo)
         doc.version = params.text_document.version
         if header_touched:
             self._set_dialect(doc)
@@ -162,10 +186,10 @@ class Documents:
 
     def _set_dialect(self, doc: OpenDocument) -> None:
         """Choose the document's dialect again; the sites change with its local call code."""
-        doc.dialect = self.dialect_for(doc.parsed.lines)
+        doc.dialect = self.dialect_for(doc.parsed.lines, doc.path)
         local = doc.dialect.local_subprogram_code
         if doc.sites.local_call != local:
-            doc.sites = SiteIndex(doc.parsed.blocks, local)
+            doc.sites = SiteIndex(doc.parsed.blocks, local, self.site_memo)
 
     def close(self, uri: str) -> OpenDocument | None:
         return self.by_uri.pop(uri, None)

@@ -8,7 +8,7 @@ written; an N label shows the jumps to it; an O program (or the P of a call) sho
 and file, or, for a program kept on the control that the profile documents (Haas's probing
 macros), what it does, the arguments it reads (those the call gives marked) and what it
 writes. Only the block under the cursor is parsed; the places come from each file's site index
-(``site_index.py``), in time proportional to how many there are.
+(``analysis/site_index.py``), in time proportional to how many there are.
 """
 
 from __future__ import annotations
@@ -18,8 +18,9 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..analysis.locale import pick
-from ..bilingual import in_language
+from ..analysis.call_sites import call_site
+from ..analysis.sites import jump_sites, label_jumps, word_at
+from ..bilingual import in_language, is_chinese, pick
 from ..dialects import describe
 from ..dialects.functions_data import GSK_H_CODES
 from ..machine.alarms import MacroAlarm
@@ -27,11 +28,8 @@ from ..machine.calls import argument_targets, letters_for_local
 from ..machine.variables import named_number
 from ..syntax.nodes import Abbreviation, Bracket, Call, CornerWord, NamedVar, Number, Unary, Var, Word
 from ..syntax.walk import nodes_at
-from .call_sites import call_site
 from .cursor import Cursor, cursor_at
 from .program_docs import doc_lines
-from .site_index import workspace_sites
-from .sites import jump_sites, label_jumps, word_at
 from .texts import t
 
 if TYPE_CHECKING:
@@ -150,12 +148,12 @@ def named_hover(ls: CncMacroServer, cur: Cursor, node: NamedVar) -> str:
     row = dialect.variable_name(node.name)
     subscript = _literal(node.index.inner) if node.index is not None else None
     if row is not None and node.index is not None and subscript is None:
-        text = row.zh if loc.lower().startswith("zh") else row.en
+        text = pick(loc, row.en, row.zh)
         return f"**{node.text}[n]** = #{row.first} … #{row.last} (n = 1 … {row.count}) — {t('name', loc)}\n\n{text}"
     try:
         number = named_number(dialect, node.name, subscript, node.index is not None)
     except MacroAlarm as alarm:
-        return f"{head} — {in_language(alarm.message, loc.lower().startswith('zh'))} ({alarm.number})"
+        return f"{head} — {in_language(alarm.message, is_chinese(loc))} ({alarm.number})"
     shown = f"{node.text}[{subscript:g}]" if node.index is not None and subscript is not None else node.text
     return f"**{shown}** = **#{number}**\n\n" + variable_hover(ls, cur, number)
 
@@ -184,7 +182,7 @@ def _bulleted(entries: list[str], loc: str, total: int | None = None) -> list[st
 def write_places(ls: CncMacroServer, number: int) -> list[tuple[str, int]]:
     """Every (file, line) in the workspace that assigns ``#number`` (from each file's map of
     the lines that write each variable)."""
-    return [(f.path, i) for f in workspace_sites(ls) for i in f.sites.writes(number)]
+    return [(f.path, i) for f in ls.index.file_sites() for i in f.sites.writes(number)]
 
 
 # ---------------------------------------------------------------- labels and programs
@@ -251,12 +249,12 @@ def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
     if word.letter == "H" and dialect.h_codes and isinstance(word.value, Number) and _is_g65(cur.block.words):
         h = _H_CODES.get(f"H{int(word.value.value):02d}")
         if h is not None:
-            return f"```\n{h.signature}\n```\n{describe.pick_text(h, loc)}\n\n*{dialect.title}*"
+            return f"```\n{h.signature}\n```\n{pick(loc, h.en, h.zh)}\n\n*{dialect.title}*"
     if word.letter in ("G", "M") and isinstance(word.value, Number):
         doc = describe.code_doc(dialect, word.letter, word.value.value)
         if doc is not None:
             group = f"{t('modal', loc)}: {doc.group}" if doc.group else t("one_shot", loc)
-            return f"**{doc.code}** — {describe.pick_text(doc, loc)}\n\n{group} · *{dialect.title}*"
+            return f"**{doc.code}** — {pick(loc, doc.en, doc.zh)}\n\n{group} · *{dialect.title}*"
     return None
 
 
@@ -319,5 +317,5 @@ def function_hover(ls: CncMacroServer, cur: Cursor, name: str) -> str | None:
     docs = describe.function_docs(cur.doc.dialect, name)
     if not docs:
         return None
-    parts = [f"```\n{d.signature}\n```\n{describe.pick_text(d, ls.locale)}" for d in docs]
+    parts = [f"```\n{d.signature}\n```\n{pick(ls.locale, d.en, d.zh)}" for d in docs]
     return "\n\n".join(parts)

@@ -10,10 +10,10 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..analysis.locale import pick
+from ..analysis.call_sites import call_site
+from ..bilingual import pick
 from ..machine.calls import argument_targets
 from ..machine.numbers import format_plain
-from .call_sites import call_site
 from .positions import Encoding
 
 if TYPE_CHECKING:

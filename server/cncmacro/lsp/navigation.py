@@ -16,15 +16,16 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
 
+from ..analysis.call_sites import call_site
+from ..analysis.site_index import FileSites
+from ..analysis.sites import jump_sites, label_jumps, starts_from_the_top
 from ..dialects import describe
+from ..library.machine_file import CallCode
 from ..machine.jumps import first_line, goto_line, return_line
 from ..syntax.nodes import Var
 from ..syntax.walk import nodes_at
-from .call_sites import call_site
 from .cursor import Cursor, cursor_at, doc_range
 from .positions import Encoding
-from .site_index import FileSites, workspace_sites
-from .sites import jump_sites, label_jumps, starts_from_the_top
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -94,7 +95,7 @@ def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | N
         b = cur.doc.block(target)
         span = b.label_span if b is not None and b.label_span else (0, 0)
         return [_loc(cur.doc.uri, target, span[0], span[1], cur.doc.line(target), encoding)]
-    site = call_site(cur.block, cur.doc.dialect)
+    site = call_site(cur.block, cur.doc.dialect, machine_calls(ls, cur.doc.path))
     if site is not None and site.p.start <= cur.column <= site.p.end:
         found = ls.index.find_program(cur.doc, site.number, site.name)
         if found is None:
@@ -105,6 +106,12 @@ def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | N
     return None
 
 
+def machine_calls(ls: CncMacroServer, path: str) -> dict[str, CallCode] | None:
+    """The call codes of the machine file that the file at ``path`` is read with, if any."""
+    machine = ls.documents.machines.settings_for(path)
+    return machine.calls if machine is not None else None
+
+
 def find_references(ls: CncMacroServer, cur: Cursor, include_declaration: bool) -> list[types.Location] | None:
     encoding = ls.documents.encoding
     hit = label_under(cur)
@@ -113,7 +120,7 @@ def find_references(ls: CncMacroServer, cur: Cursor, include_declaration: bool) 
     b = cur.block
     if b.program is not None and b.program_span and b.program_span[0] <= cur.column <= b.program_span[1]:
         return program_references(ls, cur.doc.path, b.program, include_declaration, cur)
-    site = call_site(b, cur.doc.dialect)
+    site = call_site(b, cur.doc.dialect, machine_calls(ls, cur.doc.path))
     if site is not None and site.p.start <= cur.column <= site.p.end and site.number is not None:
         found = ls.index.find_program(cur.doc, site.number, None)
         return program_references(ls, found.file.path if found else None, site.number, include_declaration, cur)
@@ -147,13 +154,14 @@ def program_references(
     out: list[types.Location] = []
     for f in ls.index.loaded_files():
         uri = ls.uri_for_path(f.path)
-        dialect = cur.doc.dialect if f.path == cur.doc.path else ls.documents.dialect_for(f.lines)
+        dialect = cur.doc.dialect if f.path == cur.doc.path else ls.documents.dialect_for(f.lines, f.path)
+        calls = machine_calls(ls, f.path)
         for i, b in enumerate(f.program.blocks):
             if include_declaration and b.program == number and b.program_span and (path is None or f.path == path):
                 out.append(_loc(uri, i, b.program_span[0], b.program_span[1], f.lines[i], encoding))
-            if b.plain is not None and "P" not in b.plain.upper():
+            if b.plain is not None and not calls and "P" not in b.plain.upper():
                 continue
-            site = call_site(b, dialect)
+            site = call_site(b, dialect, calls)
             if site is not None and site.number == number:
                 out.append(_loc(uri, i, site.p.start, site.p.end, f.lines[i], encoding))
     return out
@@ -172,7 +180,7 @@ def variable_references(
             (FileSites(cur.doc.path, cur.doc.lines, cur.doc.sites), unit.start, unit.end)
         ]
     else:
-        files = [(f, 0, None) for f in workspace_sites(ls)]
+        files = [(f, 0, None) for f in ls.index.file_sites()]
     for f, start, end in files:
         uri = ls.uri_for_path(f.path)
         for i in f.sites.mentions(number, start, end):

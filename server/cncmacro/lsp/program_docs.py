@@ -8,7 +8,7 @@ from collections.abc import Collection
 
 from lsprotocol import types
 
-from ..analysis.locale import pick
+from ..bilingual import pick
 from ..dialects.tables import ProgramDoc
 from .texts import t
 

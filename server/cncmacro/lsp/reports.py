@@ -1,6 +1,7 @@
 """What the language server could not use in the workspace, told where a person sees it.
 
-A machine file (``.cncmacro.toml``) that cannot be used is an error diagnostic on that file, with
+A machine file (``.cncmacro.toml``) in use (a workspace folder's, or an open document's) that
+cannot be used is an error diagnostic on that file, with
 the code ``machine-file``, on the line the problem is on where it is known: the Problems panel
 lists it whether the file is open or not, while the analysis goes on with the defaults; it is
 cleared once the file is right again (or gone). The editor's ``severity`` setting can change or
@@ -17,10 +18,11 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..analysis.codes import default_severity
 from ..analysis.severity import OFF
-from ..bilingual import Detail, in_language
+from ..bilingual import Detail, in_language, is_chinese
 from ..library.files import shown_text
-from .settings import WorkspaceMachine
+from ..library.machine_files import MachineFileState
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -37,20 +39,18 @@ LOGGED = 100  # how many the log names, one line each
 
 
 def _chinese(server: CncMacroServer) -> bool:
-    return server.locale.lower().startswith("zh")
+    return is_chinese(server.locale)
 
 
-def publish_machine_file(server: CncMacroServer, machine: WorkspaceMachine, published: str | None) -> str | None:
-    """Publish the machine file's problem, or clear what ``published`` (a URI) showed before;
-    the URI that now shows a problem, if any."""
-    level = server.settings.severity.get(MACHINE_FILE_CODE, "error")
-    level = level if level in _SEVERITIES or level == OFF else "error"  # a bad value is logged where it is read
-    shown = machine.path is not None and machine.problem is not None and level != OFF
-    uri = server.uri_for_path(str(machine.path)) if shown else None
-    if published is not None and published != uri:
-        server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=published, diagnostics=[]))
-    if uri is None or machine.problem is None:
+def publish_machine_file(server: CncMacroServer, machine: MachineFileState) -> str | None:
+    """Publish the machine file's problem on it; the URI that now shows it (None: it has none,
+    or the code is off). The server clears what it showed before and shows no longer."""
+    default = default_severity(MACHINE_FILE_CODE)
+    level = server.settings.severity.get(MACHINE_FILE_CODE, default)
+    level = level if level in _SEVERITIES or level == OFF else default  # a bad value is logged where it is read
+    if machine.path is None or machine.problem is None or level == OFF:
         return None
+    uri = server.uri_for_path(str(machine.path))
     line = machine.problem.line or 0
     message = shown_text(in_language(machine.problem.args[0], _chinese(server)))
     item = types.Diagnostic(

@@ -16,7 +16,7 @@ import sys
 import threading
 from collections.abc import Iterable
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 from lsprotocol import types
 from pygls.lsp.server import LanguageServer
@@ -25,17 +25,17 @@ from pygls.protocol.language_server import lsp_method
 from pygls.workspace import Workspace
 
 from .. import __version__
+from ..analysis.workspace_index import WorkspaceIndex
 from ..dialects.registry import profile_facts
-from ..library.machine_file import MACHINE_FILE_NAME, MachineSettings
+from ..library.machine_file import MACHINE_FILE_NAME
 from ..syntax.block_parser import warm_up
 from .diagnostics import DiagnosticsEngine
 from .disk_watch import watch_registration
 from .documents import Documents, path_to_uri, uri_to_path
 from .positions import negotiate
 from .reports import log_skipped, publish_machine_file, report_skipped
-from .settings import SECTION, Settings, WorkspaceMachine, merged_severities, valid_severities, workspace_machine
+from .settings import SECTION, Settings
 from .stdio import serve_stdio
-from .workspace_index import WorkspaceIndex
 
 log = logging.getLogger(__name__)
 CONFIGURATION_TIMEOUT = 2.0  # seconds to wait for the editor's settings before analysing
@@ -110,26 +110,35 @@ class CncMacroServer(LanguageServer):
     def __init__(self) -> None:
         super().__init__("cncmacro", __version__, protocol_cls=CncMacroProtocol)
         self.documents = Documents()
-        self.index = WorkspaceIndex(self.documents)
+        documents = self.documents
+        self.index = WorkspaceIndex(documents.by_uri.values, documents.dialect_for, documents.site_memo)
         self.settings = Settings()
-        self.machine: MachineSettings | None = None
         self.locale: str = "en"
         self.diagnostics = DiagnosticsEngine(self)
         self.settings_ready = asyncio.Event()  # set once the editor's settings were asked for
         self.roots: list[str] = []
         self.watching: asyncio.Future[None] | None = None  # the request for the editor's file watcher
-        self.machine_file = WorkspaceMachine()  # the workspace's .cncmacro.toml, and its problem
-        self.machine_file_uri: str | None = None  # where a problem of it is shown
+        self.machine_file_uris: set[str] = set()  # the machine files whose problem is shown
+        self.machine_files_shown: set[Path] = set()  # the machine files in use when they were last shown
 
     # ---- the workspace
-    def read_machine_file(self) -> None:
-        """The workspace's machine file, read again; a broken one leaves the defaults in force."""
-        self.machine_file = workspace_machine(self.roots[0]) if self.roots else WorkspaceMachine()
-        self.machine = self.machine_file.settings
+    def machine_files_in_use(self) -> list[Path]:
+        """The machine files of the workspace folders and of the open documents."""
+        machines = self.documents.machines
+        found = [machines.path_in(str(root)) for root in machines.roots]
+        found += [doc.machine_file for doc in self.documents.by_uri.values()]
+        return [p for p in dict.fromkeys(found) if p is not None]
 
-    def show_machine_file(self) -> None:
-        """Show the machine file's problem on it, or clear the one shown before."""
-        self.machine_file_uri = publish_machine_file(self, self.machine_file, self.machine_file_uri)
+    def show_machine_files(self) -> None:
+        """Show the problem of each machine file in use on it, or clear the one shown before."""
+        machines = self.documents.machines
+        in_use = self.machine_files_in_use()
+        self.machine_files_shown = set(in_use)
+        shown = {publish_machine_file(self, machines.state(path)) for path in in_use}
+        shown.discard(None)
+        for uri in self.machine_file_uris - shown:  # right again, gone, or no longer in use
+            self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+        self.machine_file_uris = cast("set[str]", shown)
 
     def scan_folders(self) -> None:
         """Index the program files of the workspace folders. A fault of the checker there must
@@ -141,21 +150,14 @@ class CncMacroServer(LanguageServer):
             log.exception("indexing the workspace folders failed")
 
     # ---- settings
-    def severity_overrides(self) -> dict[str, str]:
-        return merged_severities(self.machine, self.settings)
-
     def apply_settings(self, settings: Settings) -> None:
-        """The editor's settings (or the machine file) changed: analyse again with them."""
+        """The editor's settings (or a machine file) changed: analyse again with them."""
         self.settings = settings
         self.documents.setting_dialect = settings.dialect
-        self.documents.workspace_dialect = self.machine.dialect if self.machine else None
-        self.documents.machine = self.machine
         self.documents.rechoose_dialects()
-        self.diagnostics.configure(
-            self.machine, settings.dialect, settings.run_budget, valid_severities(self.severity_overrides())
-        )
+        self.diagnostics.configure(settings)
         if self.settings_ready.is_set():  # before, nothing may be published yet
-            self.show_machine_file()
+            self.show_machine_files()
 
     def uri_for_path(self, path: str) -> str:
         for doc in self.documents.by_uri.values():
@@ -177,9 +179,9 @@ class CncMacroServer(LanguageServer):
                 problem = self.index.reload(path)
                 if problem is not None:
                     log_skipped(self, problem)
-        if any(Path(p).name == MACHINE_FILE_NAME for p in unique):  # its settings and dialect
-            self.read_machine_file()
-            self.apply_settings(self.settings)  # and shows its problem, or clears it
+        if any(Path(p).name == MACHINE_FILE_NAME for p in unique):  # settings, dialects, which file each is read with
+            self.diagnostics.regroup()
+            self.apply_settings(self.settings)  # and shows their problems, or clears them
         self.diagnostics.files_changed(unique)
 
     def report_server_error(self, error: Exception, source: Any) -> None:
@@ -196,14 +198,12 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
     elif not roots and params.root_path:
         roots = [params.root_path]
     server.roots = roots
-    server.read_machine_file()
-    server.documents.workspace_dialect = server.machine.dialect if server.machine else None
-    server.documents.machine = server.machine
+    server.documents.machines.set_roots(roots)
     server.diagnostics.disk.set_roots(roots)
     server.scan_folders()
     # the grammar parser is built meanwhile, so the first unfinished line typed does not wait for it
     threading.Thread(target=warm_up, name="cncmacro-grammar", daemon=True).start()
-    server.diagnostics.start(server.machine, roots, server.locale)
+    server.diagnostics.start(server.documents.machines.first(), roots, server.locale)
     server.apply_settings(server.settings)
 
 
@@ -217,7 +217,7 @@ async def _initialized(server: CncMacroServer, params: types.InitializedParams) 
         log.info("workspace/configuration: no answer; using the initialization options")
     finally:
         server.settings_ready.set()
-        server.show_machine_file()  # with the editor's severities
+        server.show_machine_files()  # with the editor's severities
 
 
 async def _register_file_watchers(server: CncMacroServer) -> None:
@@ -272,7 +272,13 @@ def build_server() -> CncMacroServer:
 
     @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
     def did_open(ls: CncMacroServer, params: types.DidOpenTextDocumentParams) -> None:
-        ls.diagnostics.opened(params.text_document)
+        doc = ls.diagnostics.opened(params.text_document)
+        if (
+            doc.machine_file is not None
+            and doc.machine_file not in ls.machine_files_shown
+            and ls.settings_ready.is_set()
+        ):
+            ls.show_machine_files()  # a machine file newly in use: its problem, if it has one
 
     @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
     def did_change(ls: CncMacroServer, params: types.DidChangeTextDocumentParams) -> None:
@@ -296,10 +302,13 @@ def build_server() -> CncMacroServer:
     def did_change_workspace_folders(ls: CncMacroServer, params: types.DidChangeWorkspaceFoldersParams) -> None:
         gone = {uri_to_path(f.uri) for f in params.event.removed}
         ls.roots = [r for r in ls.roots if r not in gone] + [uri_to_path(f.uri) for f in params.event.added]
+        ls.documents.machines.set_roots(ls.roots)
         ls.diagnostics.disk.set_roots(ls.roots)
         ls.scan_folders()
         report_skipped(ls, ls.index.skipped)
         ls.diagnostics.folders_changed(ls.roots)
+        ls.diagnostics.regroup()  # a document may now be in a folder, or no longer
+        ls.apply_settings(ls.settings)
 
     @server.feature(DOCUMENT_DIALECT)
     def document_dialect(ls: CncMacroServer, params: Any) -> dict[str, Any] | None:
@@ -308,7 +317,7 @@ def build_server() -> CncMacroServer:
         doc = ls.documents.by_uri.get(uri) if isinstance(uri, str) else None
         if doc is None:
             return None
-        source = ls.documents.dialect_source(doc.parsed.lines)
+        source = ls.documents.dialect_source(doc)
         return {"dialect": doc.dialect.name, "title": doc.dialect.title, "lathe": doc.dialect.lathe, "source": source}
 
     @server.feature(PROFILES)

@@ -1,26 +1,24 @@
-"""The server's settings: the editor's ``cncMacro`` section and the workspace's machine file.
+"""The server's settings: the editor's ``cncMacro`` section, and the severities in force.
 
 The editor's settings come from ``initializationOptions`` at start and from
 ``workspace/configuration`` (section ``cncMacro``) after ``initialized`` and on every
 ``workspace/didChangeConfiguration``: ``dialect``, ``severity`` (diagnostic code ->
 ``error|warning|information|hint|off``), ``runBudget`` (blocks per analysis run) and
 ``inlayHints.values`` (show the value each assignment left in the analysis run; off). The
-workspace's ``.cncmacro.toml`` gives the dialect that the chain of docs/design.md puts before the
-editor's, and severities that the editor's override; one that cannot be used leaves the defaults
-in force and is kept with its problem, for ``reports.py`` to show on the file.
+machine file a program is read with (``library/machine_files.py``) gives the dialect that the chain of
+docs/design.md puts before the editor's, and severities that the editor's override
+(``merged_severities``).
 """
 
 from __future__ import annotations
 
 import logging
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 from ..analysis.severity import check_overrides
-from ..bilingual import detail
 from ..dialects import normalise_dialect
-from ..library.machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
+from ..library.machine_file import MachineSettings
 
 SECTION = "cncMacro"
 log = logging.getLogger(__name__)
@@ -59,35 +57,6 @@ class Settings:
         values = hints.get("values") if isinstance(hints, dict) else data.get("inlayHints.values")
         out.inlay_values = values is True
         return out
-
-
-@dataclass(frozen=True)
-class WorkspaceMachine:
-    """The workspace's machine file: where it is (None: there is none), its settings (None when
-    there is none or it cannot be used) and what is wrong with it."""
-
-    path: Path | None = None
-    settings: MachineSettings | None = None
-    problem: MachineFileError | None = None
-
-
-def workspace_machine(root: str | None) -> WorkspaceMachine:
-    """The ``.cncmacro.toml`` nearest to the workspace root; a broken one is logged and kept
-    with its problem, never raised (the server starts and goes on with the defaults)."""
-    if not root:
-        return WorkspaceMachine()
-    path = find_machine_file(Path(root))
-    if path is None:
-        return WorkspaceMachine()
-    try:
-        return WorkspaceMachine(path, load_machine_file(path))
-    except MachineFileError as e:
-        log.warning("%s", e)
-        return WorkspaceMachine(path, None, e)
-    except Exception as e:  # a fault of the checker must not stop the server either
-        log.exception("reading %s failed", path)
-        return WorkspaceMachine(path, None, MachineFileError(detail(f"{path}: cannot be used ({e!r})",
-                                                                    f"{path}：无法使用（{e!r}）")))  # fmt: skip
 
 
 def merged_severities(machine: MachineSettings | None, editor: Settings) -> dict[str, str]:

@@ -12,12 +12,12 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..analysis.call_sites import call_site
+from ..analysis.sites import variable_sites
 from ..library.programs import FoundProgram
 from ..machine.calls import argument_targets, letters_for_local
-from .call_sites import call_site
 from .cursor import cursor_at
 from .program_docs import signature
-from .sites import variable_sites
 from .texts import t
 
 if TYPE_CHECKING:

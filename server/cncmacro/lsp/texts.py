@@ -3,6 +3,8 @@ simplified Chinese. What a code or variable means comes from the dialect tables,
 
 from __future__ import annotations
 
+from ..bilingual import pick
+
 _TEXTS: dict[str, tuple[str, str]] = {
     "local": ("Local variable", "局部变量"),
     "common": ("Common variable (cleared at power-off)", "公共变量（断电清除）"),
@@ -53,4 +55,4 @@ _TEXTS: dict[str, tuple[str, str]] = {
 
 def t(key: str, locale: str | None) -> str:
     en, zh = _TEXTS[key]
-    return zh if locale and locale.lower().startswith("zh") else en
+    return pick(locale, en, zh)

@@ -5,6 +5,8 @@ one-call form that the command line uses.
 """
 
 from .alarms import Alarm, CallSite, MacroAlarm
-from .machine import COMPLETED, Machine, RunResult, Snapshot
+from .machine import Machine, RunResult, Snapshot
+from .observer import RunObserver
+from .status import RunStatus
 
-__all__ = ["COMPLETED", "Alarm", "CallSite", "Machine", "MacroAlarm", "RunResult", "Snapshot"]
+__all__ = ["Alarm", "CallSite", "Machine", "MacroAlarm", "RunObserver", "RunResult", "RunStatus", "Snapshot"]

@@ -16,10 +16,8 @@ from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail, in_language
 from ..dialects.alarms import (
-    FORMAT,
     LOOP_NUMBER,
     MISSING_END,
-    NC_AND_MACRO,
     OVERFLOW,
     SEQUENCE_NUMBER,
     STATEMENT_FORMAT,
@@ -45,10 +43,10 @@ from ..syntax.nodes import (
 from ..syntax.program import ProgramUnit
 from . import block_roles, jumps
 from .alarms import MacroAlarm, raiser
+from .block_rules import MISSING_THEN, first_alarm, validate_block
 from .corners import with_corners
 from .expressions import ExpressionCompiler, Getter
 from .numbers import MAX_VALUE, format_value, round_half_away, to_increment
-from .words import abbreviation_refused, missing_then
 
 if TYPE_CHECKING:
     from .machine import Machine
@@ -204,17 +202,17 @@ class CompiledFile:
     def _watched(self, block: Block, run: Runner) -> Runner:
         """For the analysis: an assignment to a local or common variable (a statement, the
         THEN of an IF when it runs, or a gsk980tdi ``G65 Hm P#n`` arithmetic block) also
-        reports the value it left (``Machine.on_write``), the value an editor shows beside the
-        line; a loop head reports each pass (``Machine.on_loop_pass``: the level, the DO line, and
-        whether the loop was already running)."""
+        reports the value it left (``RunObserver.wrote``), the value an editor shows beside the
+        line; a loop head reports each pass (``RunObserver.loop_pass``: the level, the DO line,
+        and whether the loop was already running)."""
         s = block.statements[0] if len(block.statements) == 1 and not block.words else None
         if isinstance(s, (While, Do)):
 
             def counted(m: Machine, line: int) -> int:
-                hook = m.on_loop_pass
-                if hook is not None:
+                observer = m.observer
+                if observer is not None:
                     loops = m.frames[-1].loops
-                    hook(len(m.frames) - 1, line, bool(loops) and loops[-1] == line)
+                    observer.loop_pass(len(m.frames) - 1, line, bool(loops) and loops[-1] == line)
                 return run(m, line)
 
             return counted
@@ -242,9 +240,9 @@ class CompiledFile:
             nxt = run(m, pc)
             if local:
                 m.wrote_local(n)
-            hook = m.on_write
-            if hook is not None:
-                hook(path, pc, n, m.L[n] if local else m.C[n])
+            observer = m.observer
+            if observer is not None:
+                observer.wrote(path, pc, n, m.L[n] if local else m.C[n])
             return nxt
 
         return watched
@@ -288,22 +286,15 @@ class CompiledFile:
 
     def _body(self, block: Block, pc: int, nxt: int) -> Runner:
         label = block.label
-        dialect = self.machine.dialect
-        if block.abbreviations and not dialect.keyword_abbreviations:
-            a = block.abbreviations[0]
-            return raiser(FORMAT, abbreviation_refused(a.text, a.word, dialect))
-        if block.statements:
-            if block.words or block.corners:
-                letter = block.words[0].letter if block.words else f",{block.corners[0].letter}"
-                return raiser(
-                    NC_AND_MACRO,
-                    detail(
-                        f"{letter} word and a macro statement in one block",
-                        f"{letter} 代码与宏语句在同一程序段",
-                    ),
-                )
+        if block.statements or block.abbreviations:  # the block rules of a macro statement (block_rules.py)
+            problem = first_alarm(validate_block(block, self.machine.dialect))
+            if problem is not None and problem.rule != MISSING_THEN:
+                return raiser(problem.alarm, problem.message)
             if len(block.statements) > 1:
                 return raiser(STATEMENT_FORMAT, detail("one macro statement per block", "一个程序段只能有一条宏语句"))
+            if problem is not None:
+                return raiser(problem.alarm, problem.message)
+        if block.statements:
             run = self.statement(block.statements[0], pc, nxt)
         elif block.words:
             run = self.nc_block(block, pc, nxt)
@@ -325,9 +316,7 @@ class CompiledFile:
     def statement(self, s: Statement, pc: int, nxt: int) -> Runner:
         if isinstance(s, Assign):
             return self.assign(s, nxt)
-        if isinstance(s, If):
-            if s.implicit_then and not self.machine.dialect.if_without_then:
-                return raiser(FORMAT, missing_then(self.machine.dialect))
+        if isinstance(s, If):  # without THEN where THEN is needed: a block rule, raised in _body
             test = self.values.condition(s.condition)
             if s.goto is not None:
                 target = self.values.value(s.goto)

@@ -1,5 +1,10 @@
-"""What the call words mean (docs/semantics.md §5): G65/G66 arguments, P and L, M98 counts.
+"""What the call words mean (docs/semantics.md §5): which call a block makes, G65/G66 arguments,
+P and L, M98 counts.
 
+``recognise_call`` is the one place that says what a block calls: ``G65``/``G66`` (a macro, or on
+gsk980tdi ``G65 Hm`` macro arithmetic), a G, M or T code that the machine file's ``[calls]``
+makes a call, ``M98``/``M198`` (a subprogram), or the dialect's local subprogram call (Haas ``M97
+P n``, ``Dialect.local_subprogram_code``); ``call_word_pattern`` finds the lines that may hold one.
 ``map_arguments`` applies argument specifications I and II word by word, left to right, a
 later word winning on a shared variable; ``program_and_count`` splits ``M98 P30040`` into
 program 40 and count 3; ``repeat_count`` checks L. They take evaluated words and return plain
@@ -8,16 +13,21 @@ values, raising ``MacroAlarm`` for what the control refuses; the machine does th
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import re
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, COUNT_TWICE, G_ARGUMENT, P_VALUE_RANGE
 from ..dialects.dialect import ARGUMENTS_I, Dialect
+from ..library.machine_file import CallCode
+from ..syntax.nodes import Number, Word
 from .alarms import MacroAlarm
-from .numbers import to_int
+from .numbers import round_half_away, to_increment, to_int
 
 NOT_ARGUMENTS = frozenset("GLNOP")
+MACRO_CALLS = (65.0, 66.0)  # G65, G66
+SUBPROGRAM_CALLS = (98.0, 198.0)  # M98, M198
 MAX_REPEAT = 9999
 _G_GROUPS: dict[str, dict[float, str]] = {}
 
@@ -249,3 +259,198 @@ def letters_for_local(number: int) -> tuple[str | None, str | None]:
         k, r = divmod(number - 4, 3)
         spec2 = f"{'IJK'[r]}{k + 1}"
     return spec1, spec2
+
+
+# ---------------------------------------------------------------- which call a block makes
+
+
+@dataclass(frozen=True, slots=True)
+class Call:
+    """The call a block makes. ``kind`` is ``G65``, ``G66``, ``M98``, ``M198``, the dialect's local
+    call (``M97``, ``local``) or a code of the machine file (``G100``, ``M50``, ``T``,
+    ``configured``); ``code`` is the word that makes it, ``at`` its index among the block's words.
+    ``target`` is the word that names what is called (P: the last P of an M code call; a
+    configured code's own word), None when there is none; the block alone gives the program's
+    ``number`` (a literal P read by ``macro_program_number``/``program_and_count``, or the machine
+    file's program), its bracketed ``name`` (``P[CUT]``), or the ``label`` (M97 P, M98 Q).
+    ``count`` is the L word, ``repeats`` the count the block alone gives (L, or the digits of M98
+    P before the program's), ``arguments`` the words that fill locals (a macro call's).
+    ``arithmetic`` is gsk980tdi's ``G65 Hm P Q R``: macro arithmetic and branches, not a call."""
+
+    kind: str
+    code: Word
+    at: int
+    target: Word | None
+    number: int | None = None
+    name: str | None = None
+    label: int | None = None
+    count: Word | None = None
+    repeats: int | None = None
+    arguments: tuple[Word, ...] = ()
+    macro: bool = False
+    local: bool = False
+    configured: bool = False
+    arithmetic: bool = False
+
+
+def code_value(w: Word) -> float | None:
+    """A literal word's value as the interpreter rounds a code (G to 0.1, M and the other
+    integer addresses to a whole number), or None when it is not a literal."""
+    v = w.value
+    if v.__class__ is not Number:
+        return None
+    x: float = v.value
+    if w.letter == "G":
+        return to_increment(x, 1) if x != int(x) else x
+    if w.letter in ("M", "T", "P", "L", "Q", "H"):
+        return round_half_away(x)
+    return x
+
+
+def g_code_name(code: float | None) -> str:
+    """``G01``, ``G5.1``: a G code as people write it."""
+    if code is None:
+        return "G"
+    return f"G{int(code):02d}" if code == int(code) else f"G{code:g}"
+
+
+def recognise_call(
+    words: Sequence[Word],
+    dialect: Dialect,
+    calls: Mapping[str, CallCode] | Mapping[str, object] | None = None,
+    value: Callable[[Word], float | None] = code_value,
+) -> Call | None:
+    """The call that a block of these ``words`` makes, or None (see ``Call``). ``calls`` are the
+    machine file's call codes; ``value`` gives a word's value when it is known without running
+    (the literal by default; the interpreter also folds constant expressions). G65/G66 come
+    first, wherever they stand; then a configured code, M98/M198, and the local call."""
+    m_at: list[int] = []
+    for i, w in enumerate(words):
+        letter = w.letter
+        if letter == "G":
+            v = w.value
+            if v.__class__ is Number and v.value in MACRO_CALLS:
+                return _macro_call(words, i, dialect)
+        elif letter == "M":
+            m_at.append(i)
+    if calls:
+        for i, w in enumerate(words):
+            if w.letter in ("G", "M"):
+                x = value(w)
+                code = f"{w.letter}{x:g}" if x is not None else None
+            elif w.letter == "T" and "T" in calls:
+                code = "T"
+            else:
+                continue
+            configured = calls.get(code) if code is not None else None
+            if isinstance(configured, CallCode):
+                macro = configured.call == "macro"
+                count = next((a for a in words if a.letter == "L"), None)
+                args = tuple(a for a in words if a is not w and a.letter != "L" and not _same_code(a, code, value))  # type: ignore[arg-type]
+                return Call(code, w, i, w, configured.program, count=count, repeats=_literal_count(count),  # type: ignore[arg-type]
+                            arguments=args if macro else (), macro=macro, configured=True)  # fmt: skip
+    if not m_at:
+        return None
+    ms = [(i, words[i], value(words[i])) for i in m_at]
+    local = dialect.local_subprogram_code
+    for wanted in (98.0, 198.0, local):
+        if wanted is None:
+            continue
+        hit = next(((i, w) for i, w, x in ms if x == wanted), None)
+        if hit is None:
+            continue
+        if wanted == 198.0 and any(x == 98.0 for _, _, x in ms):
+            continue
+        i, w = hit
+        p = _last(words, "P")
+        count = _last(words, "L")
+        if wanted == local:
+            label = _label(p)
+            return Call(f"M{local:g}", w, i, p, label=label, count=count, repeats=_literal_count(count), local=True)
+        q = _last(words, "Q")
+        number, repeats = _subprogram_number(p, count, dialect)
+        name = p.name if p is not None else None
+        return Call("M98" if wanted == 98.0 else "M198", w, i, p, number, name, _label(q), count, repeats)
+    return None
+
+
+def _macro_call(words: Sequence[Word], at: int, dialect: Dialect) -> Call:
+    code = words[at]
+    kind = "G65" if code.value.value == 65.0 else "G66"  # type: ignore[union-attr]
+    after = words[at + 1 :]
+    p = next((w for w in after if w.letter == "P"), None)
+    count = next((w for w in after if w.letter == "L"), None)
+    if kind == "G65" and dialect.h_codes and count is None and any(w.letter == "H" for w in after):
+        return Call(kind, code, at, p, arithmetic=True)
+    number = None
+    if p is not None and p.value.__class__ is Number:
+        try:
+            number = macro_program_number(p.value.value, dialect)
+        except MacroAlarm:
+            number = None
+    args = tuple(w for w in after if w.letter not in ("P", "L"))
+    name = p.name if p is not None else None
+    return Call(kind, code, at, p, number, name, count=count, repeats=_literal_count(count), arguments=args,
+                macro=True)  # fmt: skip
+
+
+def _subprogram_number(p: Word | None, count: Word | None, dialect: Dialect) -> tuple[int | None, int | None]:
+    """(program, count) of ``M98 P`` with a literal P (and L), as ``program_and_count`` reads them."""
+    if p is None or p.value.__class__ is not Number:
+        return None, _literal_count(count)
+    l_value = count.value.value if count is not None and count.value.__class__ is Number else None
+    try:
+        return program_and_count(p.value.text, p.value.value, l_value, dialect, [])
+    except MacroAlarm:
+        try:
+            return program_and_count(p.value.text, p.value.value, None, dialect, [])[0], None
+        except MacroAlarm:
+            return None, None
+
+
+def _literal_count(count: Word | None) -> int | None:
+    if count is None:
+        return 1
+    v = count.value
+    if v.__class__ is not Number:
+        return None
+    n = to_int(v.value)
+    return n if 1 <= n <= MAX_REPEAT else None
+
+
+def _label(w: Word | None) -> int | None:
+    if w is None or w.value.__class__ is not Number:
+        return None
+    x = w.value.value
+    return int(round_half_away(x)) if abs(x) < 1e9 else None
+
+
+def _last(words: Sequence[Word], letter: str) -> Word | None:
+    found = None
+    for w in words:
+        if w.letter == letter:
+            found = w
+    return found
+
+
+def _same_code(w: Word, code: str, value: Callable[[Word], float | None]) -> bool:
+    if w.letter not in ("G", "M"):
+        return False
+    x = value(w)
+    return x is not None and f"{w.letter}{x:g}" == code
+
+
+def call_word_pattern(calls: Mapping[str, object], local: float | None = None) -> str:
+    """A pattern for the words in a line of text that may make a call (``recognise_call``): G65,
+    G66, M98, M198, the dialect's local call code and the machine file's call codes. A line
+    without one calls nothing."""
+    codes = "65|66|98|198" + (f"|{local:g}" if local is not None else "")
+    parts = [rf"[GgMm][ \t]*\+?0*(?:{codes})(?![0-9])"]
+    for code in calls:
+        letter, digits = code[:1], code[1:]
+        whole = digits.split(".")[0].lstrip("0") or "0"
+        if not digits or not whole.isdigit():
+            parts.append(f"[{letter.upper()}{letter.lower()}]")
+        else:
+            parts.append(rf"[{letter.upper()}{letter.lower()}][ \t]*\+?0*{re.escape(whole)}(?![0-9])")
+    return "|".join(parts)

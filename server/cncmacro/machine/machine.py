@@ -5,7 +5,9 @@ and advances it one block at a time. ``run`` executes blocks until the program e
 pauses (``M00``, ``#3006``) or spends its block budget; ``step`` executes one block;
 ``run_until`` stops when a predicate holds. ``snapshot`` and ``restore`` copy the state
 cheaply and deterministically, which the debugger's step back and the incremental analysis
-build on. The front ends read ``result()``, ``frames``, and variables through ``read``.
+build on. The front ends read ``result()``, ``frames``, and variables through ``read``; a run's
+status is a ``RunStatus`` (status.py). The analysis watches a run through the ``RunObserver``
+the machine is made with (observer.py); a machine without one knows nothing of it.
 """
 
 from __future__ import annotations
@@ -28,16 +30,14 @@ from .calls import Arguments, bad_name_detail, map_arguments, repeat_count
 from .expressions import VariableKinds
 from .frames import Frame, ModalCall, Move, Note
 from .motion import Motion
+from .observer import RunObserver
+from .status import FINISHED, RunStatus
 from .straight_runs import run_straight
 from .tracking import run_tracked
 from .variables import StopRequest, VariableAccess
 
 Value = float | None
 
-READY, RUNNING, PAUSED, COMPLETED, ALARM, LIMIT, STOPPED = (
-    "ready", "running", "paused", "completed", "alarm", "limit", "stopped",
-)  # fmt: skip
-FINISHED = frozenset({COMPLETED, ALARM, LIMIT, STOPPED})
 CANCEL_CHECK = 4096
 
 
@@ -45,7 +45,7 @@ CANCEL_CHECK = 4096
 class RunResult:
     """What a run ended with, in docs/design.md's terms (``cncmacro run --json``)."""
 
-    status: str
+    status: RunStatus
     alarm: Alarm | None
     blocks: int
     variables: dict[int, float]
@@ -71,7 +71,7 @@ class Snapshot:
     counts: tuple[int, int, int]
     clock: float
     blocks: int
-    status: str
+    status: RunStatus
     alarm: Alarm | None
     message: str | None
     written_system: set[int] = field(default_factory=set)
@@ -88,6 +88,7 @@ class Machine(VariableAccess, Motion):
         library: ProgramLibrary | None = None,
         *,
         m99_ends_main: bool = False,
+        observer: RunObserver | None = None,
     ) -> None:
         self.settings = settings or MachineSettings()
         if dialect is None or isinstance(dialect, str):
@@ -100,21 +101,9 @@ class Machine(VariableAccess, Motion):
         # set when an M99 of the main program ended the run (``m99_ends_main``): a subprogram
         # run on its own stopped after one pass (``cncmacro run`` says so); a restore clears it
         self.ended_by_main_m99 = False
-        # Analysis hooks, all off for plain runs. ``watching`` (set before the first block
-        # runs) compiles blocks that report vacant argument reads and assigned values;
-        # ``on_first_run(file, line, step)`` hears of each line the first time it is compiled,
-        # which is the first time it runs, so plain runs pay nothing for it.
-        self.watching = False
-        self.on_first_run: Callable[[str, int, int], None] | None = None
-        self.on_vacant_argument: Callable[[int, str, int, tuple[CallSite, ...]], None] | None = None
-        self.on_write: Callable[[str, int, int, Value], None] | None = None
-        self.on_loop_pass: Callable[[int, int, bool], None] | None = None  # (level, DO line, again)
-        # ``last_run`` (file -> per-line serial, -1 never) makes ``run`` stamp each executed
-        # line with ``track_serial`` and report lines not run since ``track_floor`` to
-        # ``on_first_run`` (see tracking.py); None for plain runs.
-        self.last_run: dict[str, list[int]] | None = None
-        self.track_serial = -1
-        self.track_floor = 0
+        # who hears of the run (the analysis, see observer.py); None for plain runs, which pay
+        # nothing for it: it is fixed before the first block is compiled
+        self.observer = observer
         self.L: list[Value] = [None] * 34
         self.C: list[Value] = [None] * 1000
         self.S: dict[int, Value] = {}
@@ -129,7 +118,7 @@ class Machine(VariableAccess, Motion):
         self.frames: list[Frame] = []
         self.modal_calls: list[ModalCall] = []
         self.compiled: dict[str, CompiledFile] = {}
-        self.status = READY
+        self.status = RunStatus.READY
         self.alarm: Alarm | None = None
         self.message: str | None = None
         self.blocks = 0
@@ -197,7 +186,7 @@ class Machine(VariableAccess, Motion):
         self.compiled.clear()
         self.frames.clear()
         self.modal_calls.clear()
-        self.on_first_run = self.on_vacant_argument = self.on_write = self.on_loop_pass = None
+        self.observer = None
 
     def compiled_file(self, file: LoadedFile) -> CompiledFile:
         cf = self.compiled.get(file.path)
@@ -211,7 +200,7 @@ class Machine(VariableAccess, Motion):
         first = cf.entry(found.unit)
         self.frames = [Frame(found, cf, first, "main", self.L, 0, start_pc=first)]
         self._program_number()
-        self.status = READY
+        self.status = RunStatus.READY
 
     def start_file(self, path: str, text: str | None = None) -> FoundProgram:
         """Load a file (or ``text`` as that file) and start its first program."""
@@ -240,6 +229,11 @@ class Machine(VariableAccess, Motion):
         return self.frames[-1]
 
     @property
+    def watching(self) -> bool:
+        """Blocks are compiled watched, reporting to the observer (see observer.py)."""
+        return self.observer is not None
+
+    @property
     def finished(self) -> bool:
         return self.status in FINISHED
 
@@ -258,9 +252,9 @@ class Machine(VariableAccess, Motion):
     def vacant_local(self, n: int, line: int) -> None:
         """A watched read found local ``#n`` vacant on ``line``: when the macro level that
         owns the locals was called without the argument that fills ``#n``, tell the
-        analysis (``on_vacant_argument``). Main-level locals have no caller to blame."""
-        hook = self.on_vacant_argument
-        if hook is None:
+        observer (``RunObserver.vacant_argument``). Main-level locals have no caller to blame."""
+        observer = self.observer
+        if observer is None:
             return
         frames = self.frames
         k = len(frames) - 1
@@ -271,10 +265,10 @@ class Machine(VariableAccess, Motion):
         written = frames[k].written
         if written is not None and n in written:
             return  # the macro assigned it itself (perhaps a vacant value): not the caller's doing
-        hook(n, frames[-1].file, line, self.chain(line))
+        observer.vacant_argument(n, frames[-1].file, line, self.chain(line))
 
     def wrote_local(self, n: int) -> None:
-        """An analysis run saw a macro level assign its local ``#n`` (see ``vacant_local``)."""
+        """A watched run saw a macro level assign its local ``#n`` (see ``vacant_local``)."""
         frames = self.frames
         k = len(frames) - 1
         while k > 0 and frames[k - 1].locals is frames[k].locals:
@@ -301,44 +295,44 @@ class Machine(VariableAccess, Motion):
         return tuple(sites)
 
     # ---------------------------------------------------------------- running
-    def run(self, max_blocks: int | None = None, *, is_limit: bool = True) -> str:
+    def run(self, max_blocks: int | None = None, *, is_limit: bool = True) -> RunStatus:
         """Run until the program ends, alarms, pauses or has run ``max_blocks`` more blocks
         (status ``limit``, or ``paused`` when ``is_limit`` is False). Returns the status.
 
         Python's cycle collector is paused meanwhile: a run creates no garbage cycles, yet
         the collector would walk every compiled block again and again (a 100k-block
-        program ran 3x slower with it)."""
+        program ran 3x slower with it). A machine with an observer runs
+        ``tracking.run_tracked``, which the property tests hold to this plain loop."""
         if self.status in FINISHED or not self.frames:
             return self.status
         was_enabled = gc.isenabled()
         gc.disable()
         try:
-            if self.last_run is not None:
-                return run_tracked(self, max_blocks, is_limit)
+            if self.observer is not None:
+                return run_tracked(self, self.observer, max_blocks, is_limit)
             return self._run(max_blocks, is_limit)
         finally:
             if was_enabled:
                 gc.enable()
 
-    def _run(self, max_blocks: int | None, is_limit: bool) -> str:
+    def _run(self, max_blocks: int | None, is_limit: bool) -> RunStatus:
         budget = self.settings.max_blocks if max_blocks is None else max_blocks
         limit = self.blocks + budget
-        self.status = RUNNING
+        self.status = RunStatus.RUNNING
         self.message = None
         frame = self.frames[-1]
         cf = frame.code
         code = cf.code
         pc = frame.pc
         n = self.blocks
-        straight = self.on_first_run is None  # lines run without being compiled are not heard of
         try:
             while True:
                 if n >= limit:
-                    self.status = LIMIT if is_limit else PAUSED
+                    self.status = RunStatus.LIMIT if is_limit else RunStatus.PAUSED
                     break
                 c = code[pc]
                 if c is None:
-                    if straight and not self.modal_calls:
+                    if not self.modal_calls:
                         done, pc = run_straight(self, cf, pc, min(limit - n, CANCEL_CHECK - n % CANCEL_CHECK))
                         if done:
                             n += done
@@ -347,12 +341,10 @@ class Machine(VariableAccess, Motion):
                                 break
                             continue
                     c = cf.runner(pc)
-                    if self.on_first_run is not None:
-                        self.on_first_run(cf.file.path, pc, n)
                 n += 1
                 pc = c(self, pc)
                 if pc < 0:
-                    if self.status != RUNNING:
+                    if self.status != RunStatus.RUNNING:
                         break
                     frame = self.frames[-1]
                     cf = frame.code
@@ -369,12 +361,12 @@ class Machine(VariableAccess, Motion):
     def take_request(self) -> None:
         """Honour a cancel or pause request from another thread (seen every ``CANCEL_CHECK`` blocks)."""
         if self.cancel_requested:
-            self.status = STOPPED
+            self.status = RunStatus.STOPPED
         else:
             self.pause_requested = False
-            self.status = PAUSED
+            self.status = RunStatus.PAUSED
 
-    def interrupted(self, e: MacroAlarm | StopRequest, n: int, pc: int) -> str:
+    def interrupted(self, e: MacroAlarm | StopRequest, n: int, pc: int) -> RunStatus:
         """A run stopped inside block ``pc``, the ``n``-th: by an alarm, or by ``M00``/``#3006``
         (paused, to go on with the next block)."""
         self.blocks = n
@@ -382,43 +374,43 @@ class Machine(VariableAccess, Motion):
         if isinstance(e, MacroAlarm):
             f.pc = pc
             self.alarm = Alarm(e.number, e.message, f.file, pc, self.chain(), e.subject)
-            self.status = ALARM
+            self.status = RunStatus.ALARM
         else:
             f.pc = f.code.next_line(pc)
-            self.status = PAUSED
+            self.status = RunStatus.PAUSED
             self.message = e.message
             self.notes.append(Note("message", e.message, f.file, pc))
         return self.status
 
-    def stopped_at(self, n: int, pc: int) -> str:
+    def stopped_at(self, n: int, pc: int) -> RunStatus:
         """A run loop left after ``n`` blocks with ``pc`` next (negative: the frames say)."""
         self.blocks = n
         if pc >= 0:
             self.frames[-1].pc = pc
         return self.status
 
-    def step(self) -> str:
+    def step(self) -> RunStatus:
         """Execute one block; the status is ``paused`` unless the run ended."""
         return self.run(1, is_limit=False)
 
-    def run_until(self, stop: Callable[[Machine], bool], max_blocks: int | None = None) -> str:
+    def run_until(self, stop: Callable[[Machine], bool], max_blocks: int | None = None) -> RunStatus:
         """Execute blocks until ``stop(machine)`` holds after one, or the run ends."""
         budget = self.settings.max_blocks if max_blocks is None else max_blocks
         limit = self.blocks + budget
         while True:
             status = self.step()
-            if status != PAUSED or self.message is not None:
+            if status != RunStatus.PAUSED or self.message is not None:
                 return status
             if stop(self):
                 return status
             if self.blocks >= limit:
-                self.status = LIMIT
-                return LIMIT
+                self.status = RunStatus.LIMIT
+                return RunStatus.LIMIT
 
     def resume(self) -> None:
         """Continue after a pause (``M00``, ``#3006``)."""
-        if self.status == PAUSED:
-            self.status = READY
+        if self.status == RunStatus.PAUSED:
+            self.status = RunStatus.READY
             self.message = None
 
     def cancel(self) -> None:
@@ -525,7 +517,7 @@ class Machine(VariableAccess, Motion):
         frame = self.frames[-1]
         if len(self.frames) == 1:
             if self.m99_ends_main:
-                self.status = COMPLETED
+                self.status = RunStatus.COMPLETED
                 self.ended_by_main_m99 = True
                 frame.pc = pc
                 return -1
@@ -563,7 +555,7 @@ class Machine(VariableAccess, Motion):
         """Ran off the end of a program: a called one returns, the main one ends."""
         if len(self.frames) > 1:
             return self.return_from_call(pc, None)
-        self.status = COMPLETED
+        self.status = RunStatus.COMPLETED
         self.frames[-1].pc = pc
         return -1
 
@@ -571,12 +563,12 @@ class Machine(VariableAccess, Motion):
         """M30 / M02: the run is complete; modal calls are cancelled."""
         self.modal_calls.clear()
         self.modal["macro"] = 67.0
-        self.status = COMPLETED
+        self.status = RunStatus.COMPLETED
         self.frames[-1].pc = pc
         return -1
 
     def pause(self, message: str, nxt: int) -> int:
-        self.status = PAUSED
+        self.status = RunStatus.PAUSED
         self.message = message
         f = self.frames[-1]
         f.pc = nxt

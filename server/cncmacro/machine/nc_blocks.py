@@ -3,22 +3,35 @@
 A block of words is one of: a macro call (``G65``/``G66``, or on gsk980tdi ``G65 Hm`` arithmetic),
 ``G67``, or an NC block whose M codes may call (``M98``, and Haas ``M97`` where the dialect has
 a local subprogram call), return (``M99``), end (``M30``, ``M02``) or pause (``M00``), and whose
-G, M or T code may be configured to call a program.
+G, M or T code may be configured to call a program. Which call the block makes, as far as its
+literal words say, is ``recognise_call``'s (``machine/calls.py``); what it may not contain is
+``validate_block``'s (``machine/block_rules.py``), whose first problem becomes the block's alarm.
+M codes from variables are known only when the block runs, and are dispatched then.
 Literal values are rounded once here; only variable values are computed when the block runs.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from functools import partial
 from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
-from ..dialects.alarms import DECIMAL_POINT, G_ARGUMENT, IMPROPER_G_CODE, NC_AND_MACRO, PROGRAM_NOT_FOUND
+from ..dialects.alarms import IMPROPER_G_CODE, PROGRAM_NOT_FOUND
 from ..syntax.nodes import Block, Bracket, Number, Var, Word
 from .alarms import MacroAlarm, raiser
-from .calls import codes_before_call, macro_program_number, map_arguments, program_and_count, repeat_count
+from .block_rules import CALL_WITHOUT_P, BlockProblem, first_alarm, validate_block
+from .calls import (
+    Call,
+    codes_before_call,
+    macro_program_number,
+    map_arguments,
+    program_and_count,
+    recognise_call,
+    repeat_count,
+)
 from .hcodes import compile_h_code
-from .words import g_code_known, m_decimal_point, unknown_g_code
+from .words import g_code_known, unknown_g_code
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile, Runner
@@ -37,20 +50,34 @@ def compile_nc_block(cf: CompiledFile, block: Block, pc: int, nxt: int) -> Runne
     if fast is not None:
         return fast
     words = list(block.words)
-    for i, w in enumerate(words):
-        g = _literal_g(w)
-        if g in (65.0, 66.0):
-            return _macro_call(cf, block, words, i, g, nxt)
+    dialect = cf.machine.dialect
+    calls = cf.machine.settings.calls
+    value = _known_value(cf)
+    call = recognise_call(words, dialect, calls, value)
+    problems = validate_block(block, dialect, calls, value, call)
+    if call is not None and call.kind in ("G65", "G66"):
+        return _macro_call(cf, block, words, call, problems, nxt)
     if any(_literal_g(w) == 67.0 for w in words):
         rest = [w for w in words if _literal_g(w) != 67.0]
-        inner = _nc(cf, block, rest, nxt) if rest else None
+        inner = _nc(cf, block, rest, nxt, problems, call) if rest else None
 
         def cancel(m: Machine, pc: int) -> int:
             m.cancel_modal_call()
             return inner(m, pc) if inner is not None else nxt
 
         return cancel
-    return _nc(cf, block, words, nxt)
+    return _nc(cf, block, words, nxt, problems, call)
+
+
+def _known_value(cf: CompiledFile) -> Callable[[Word], float | None]:
+    """A word's value rounded for its address when it is known before the block runs (a literal
+    or a constant expression), else None: what ``validate_block`` and ``recognise_call`` see."""
+
+    def value(w: Word) -> float | None:
+        is_const, v = cf.word_value(w)
+        return v if is_const else None
+
+    return value
 
 
 def compile_plain_line(cf: CompiledFile, text: str, nxt: int) -> Runner | None:
@@ -95,46 +122,25 @@ def _run_plain_line(plan: PlainRun, m: Machine, pc: int) -> int:
 # ---------------------------------------------------------------- G65 / G66
 
 
-def _macro_call(cf: CompiledFile, block: Block, words: list[Word], at: int, g: float, nxt: int) -> Runner:
-    name = "G65" if g == 65.0 else "G66"
+def _macro_call(
+    cf: CompiledFile, block: Block, words: list[Word], call: Call, problems: list[BlockProblem], nxt: int
+) -> Runner:
+    name = call.kind
     dialect = cf.machine.dialect
+    first = first_alarm(problems)
+    if first is not None and first.rule != CALL_WITHOUT_P:  # raised when the call is made (below)
+        return raiser(first.alarm, first.message)
     before: list[tuple[str, float]] = []
-    if at > 0:
-        codes = codes_before_call([(w.letter, _literal_g(w)) for w in words[:at]], dialect)
-        if codes is None:
-            w = words[0]
-            return raiser(
-                NC_AND_MACRO,
-                detail(
-                    f"{w.letter} before {name}: only N may precede {name} in its block",
-                    f"{name} 之前有 {w.letter}：程序段中 {name} 之前只允许出现 N",
-                ),
-            )
-        before = [("G", c) for c in codes]  # modal G codes the control sets before it calls
-    after = words[at + 1 :]
-    for w in after:
-        if w.letter == "O":  # M after G65 is the argument #13; G is alarm 129 below
-            return raiser(
-                NC_AND_MACRO,
-                detail(f"{name} may not share its block with an O word", f"{name} 不能与 O 代码在同一程序段"),
-            )
-    if (
-        g == 65.0
-        and dialect.h_codes
-        and any(w.letter == "H" for w in after)
-        and not any(w.letter == "L" for w in after)
-    ):
+    if call.at > 0:  # modal G codes the control sets before it calls (block_rules.py: else alarm 127)
+        codes = codes_before_call([(w.letter, _literal_g(w)) for w in words[: call.at]], dialect) or []
+        before = [("G", c) for c in codes]
+    after = words[call.at + 1 :]
+    if call.arithmetic:
         return compile_h_code(cf, after, nxt, block)
-    p_word = next((w for w in after if w.letter == "P"), None)
-    l_word = next((w for w in after if w.letter == "L"), None)
-    args = [w for w in after if w.letter not in ("P", "L")]
-    for w in args:
-        if w.letter == "G":
-            return raiser(
-                G_ARGUMENT,
-                detail(f"G after {name}: a G code cannot be an argument", f"{name} 之后有 G：G 代码不能作为自变量"),
-            )
-    resolve = _program_resolver(cf, p_word, name)
+    p_word = call.target
+    l_word = call.count
+    args = list(call.arguments)
+    resolve = _program_resolver(cf, p_word, first)
     count = _getter(cf, l_word)
     arg_values = [(w.letter, _getter(cf, w)) for w in args]
 
@@ -153,7 +159,7 @@ def _macro_call(cf: CompiledFile, block: Block, words: list[Word], at: int, g: f
             m.note("call", text, pc, "argument-order")
         return found, arguments, repeats
 
-    if g == 65.0:
+    if name == "G65":
 
         def g65(m: Machine, pc: int) -> int:
             found, arguments, repeats = evaluate(m, pc)
@@ -176,14 +182,12 @@ def _getter(cf: CompiledFile, w: Word | None) -> Any:
     return cf.values.value(w.value)
 
 
-def _program_resolver(cf: CompiledFile, p_word: Word | None, name: str) -> Any:
-    """A closure finding the program that ``P`` names (alarm 076 when it is missing)."""
+def _program_resolver(cf: CompiledFile, p_word: Word | None, missing: BlockProblem | None) -> Any:
+    """A closure finding the program that ``P`` names (``missing``: the alarm when there is none)."""
     dialect = cf.machine.dialect
     if p_word is None:
-        return raiser(
-            PROGRAM_NOT_FOUND,
-            detail(f"{name} needs P: the program to call", f"{name} 需要用 P 指定被调用的程序"),
-        )
+        assert missing is not None  # block_rules.py's CALL_WITHOUT_P
+        return raiser(missing.alarm, missing.message)
     if p_word.name is not None:
         text = p_word.name
         return lambda m: m.find_program_named(text)
@@ -199,7 +203,9 @@ def _program_resolver(cf: CompiledFile, p_word: Word | None, name: str) -> Any:
 # ---------------------------------------------------------------- NC blocks
 
 
-def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
+def _nc(
+    cf: CompiledFile, block: Block, words: list[Word], nxt: int, problems: list[BlockProblem], call: Call | None
+) -> Runner:
     """An NC block: words evaluated, NC executed, then M98 / M99 / M30 / M00 and call codes."""
     items: list[tuple[str, float | None, Any]] = []  # (letter, rounded literal, or a getter)
     dialect = cf.machine.dialect
@@ -207,12 +213,11 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
     for w in words:
         is_const, v = cf.word_value(w)
         items.append((w.letter, v, None) if is_const else (w.letter, None, v))
-    strict = dialect.word_format_alarms and not _code_called(items, calls)
-    if strict:
-        for w, (_, v, _get) in zip(words, items, strict=True):
-            refused = _refused(w, v, dialect, calls)
-            if refused is not None:
-                return refused
+    refused = first_alarm(problems)  # a G code the control lacks, an M code with a point
+    if refused is not None:
+        return raiser(refused.alarm, refused.message)
+    # a configured code's other words are its arguments, not NC words
+    strict = dialect.word_format_alarms and not (call is not None and call.configured)
     all_constant = all(get is None for _, _, get in items)
     constant = [(letter, v) for letter, v, get in items if get is None]
     # the program words (P, L, Q) of a call are not NC words
@@ -293,29 +298,6 @@ def _nc(cf: CompiledFile, block: Block, words: list[Word], nxt: int) -> Runner:
         return _after_nc(m, moved, skip_to, pc, nxt)
 
     return general
-
-
-def _code_called(items: list[tuple[str, float | None, Any]], calls: Any) -> bool:
-    """Whether a literal G, M or T word of the block (its rounded value) is a code that the
-    machine settings make a call (``Machine.call_code_for``): the block is then a call, and its
-    other words are arguments, not NC words."""
-    if not calls:
-        return False
-    for letter, v, _get in items:
-        if letter == "T" and "T" in calls:
-            return True
-        if letter in ("G", "M") and v is not None and f"{letter}{v:g}" in calls:
-            return True
-    return False
-
-
-def _refused(w: Word, value: float | None, dialect: Any, calls: Any) -> Runner | None:
-    """The closure raising the alarm for a literal word the control refuses (words.py), or None."""
-    if w.letter == "G" and value is not None and not g_code_known(value, dialect, calls):
-        shown = w.value.text if isinstance(w.value, Number) else f"{value:g}"
-        return raiser(IMPROPER_G_CODE, unknown_g_code(shown, dialect))
-    point = m_decimal_point(w)
-    return raiser(DECIMAL_POINT, point) if point is not None else None
 
 
 def _after_nc(m: Machine, moved: bool, skip_to: float | None, pc: int, nxt: int) -> int:

@@ -25,18 +25,25 @@ from .motion import RAPID_RATE
 if TYPE_CHECKING:
     from .blocks import CompiledFile
     from .machine import Machine
+    from .observer import RunObserver
 
 _new_move = tuple.__new__
 _SECONDS_PER_MINUTE = 60.0
 
 
 def run_straight(
-    m: Machine, cf: CompiledFile, pc: int, budget: int, trk: list[int] | None = None, step: int = 0
+    m: Machine,
+    cf: CompiledFile,
+    pc: int,
+    budget: int,
+    tracked: tuple[RunObserver, list[int]] | None = None,
+    step: int = 0,
 ) -> tuple[int, int]:
     """Run at most ``budget`` plain motion lines of ``cf`` from line ``pc``; returns how many
     ran and the line to run next (``pc`` itself when the first line is declined). With
-    ``trk`` (an analysis run, see tracking.py), each line run is stamped there as
-    ``run_tracked`` stamps it, ``step`` being the number of blocks run before ``pc``."""
+    ``tracked`` (a run with an observer, see tracking.py: the observer and the per-line stamps
+    of ``cf``'s file), each line run is stamped there as ``run_tracked`` stamps it, ``step``
+    being the number of blocks run before ``pc``."""
     kinds = m.plain_kinds()
     if not kinds:
         return 0, pc
@@ -58,7 +65,11 @@ def run_straight(
     mode = modal["motion"]
     canned = modal["canned"]
     absolute = lathe or modal["distance"] == 90.0
-    serial, floor, first = m.track_serial, m.track_floor, m.on_first_run
+    if tracked is not None:
+        observer, trk = tracked
+        serial, floor, first = observer.track_serial, observer.track_floor, observer.first_run
+    else:
+        trk = None
     per_rev = modal.get("feed") == 95.0 or (lathe and modal.get("feed") == 99.0)
     f = codes.get("F") or 0.0
     start = tuple(pos)
@@ -132,7 +143,7 @@ def run_straight(
             elif moved and (mode in cycles or (canned != 80.0 and not lathe)):
                 break
             if trk is not None:
-                if trk[pc] < floor and first is not None:
+                if trk[pc] < floor:
                     first(path, pc, step + done)
                 trk[pc] = serial
             if others is not None:

@@ -1,18 +1,22 @@
 """What an analysis run needs from the machine beyond a plain run: which chunk last ran each line,
 and whether two snapshots hold the same state.
 
-``run_tracked`` is ``Machine._run`` with one more store per block: the line about to run is
-stamped with ``Machine.track_serial`` in ``Machine.last_run`` (file path -> one slot per line,
--1 for never), so that an incremental analysis can tell whether an edited line runs again
-after a given point of an earlier run. A line whose stamp is below ``Machine.track_floor``
-has not run since the analysis last set the floor (after going back to a checkpoint), and
-``on_first_run`` hears of it, instead of hearing of each line when it is compiled: the
-analysis can then go back without compiling every later line again. It is a separate loop
-so that plain runs and the debugger pay nothing for it. ``same_state`` compares two snapshots in everything that can
-influence later execution or findings (variables of every frame, commons, system store,
-frames with their pcs, loops and repeats, modal state, codes, positions, modal calls, the
-status), and the simulated clock only when asked to; block counts and list lengths are not
-compared. Floats compare exactly, and a zero's sign counts (``ATAN[0]/[-0]`` differs).
+``run_tracked`` is ``Machine._run`` for a machine with an observer (observer.py), with one
+more store per block: the line about to run is stamped with ``RunObserver.track_serial`` in
+``RunObserver.last_run`` (file path -> one slot per line, -1 for never), so that an
+incremental analysis can tell whether an edited line runs again after a given point of an
+earlier run. A line whose stamp is below ``RunObserver.track_floor`` has not run since the
+analysis last set the floor (after going back to a checkpoint), and ``RunObserver.first_run``
+hears of it, instead of hearing of each line when it is compiled: the analysis can then go
+back without compiling every later line again. It is a separate loop so that plain runs and
+the debugger pay nothing for it; ``tests/test_run_observed_equals_plain.py`` holds it to the
+plain loop (the same final variables, position, status and alarm).
+
+``same_state`` compares two snapshots in everything that can influence later execution or
+findings (variables of every frame, commons, system store, frames with their pcs, loops and
+repeats, modal state, codes, positions, modal calls, the status), and the simulated clock only
+when asked to; block counts and list lengths are not compared. Floats compare exactly, and a
+zero's sign counts (``ATAN[0]/[-0]`` differs).
 """
 
 from __future__ import annotations
@@ -23,6 +27,8 @@ from typing import TYPE_CHECKING, Any
 
 from .alarms import MacroAlarm
 from .frames import Frame
+from .observer import RunObserver
+from .status import RunStatus
 from .straight_runs import run_straight
 from .variables import StopRequest
 
@@ -33,10 +39,9 @@ if TYPE_CHECKING:
 CANCEL_CHECK = 4096
 
 
-def track_list(m: Machine, cf: CompiledFile) -> list[int]:
+def track_list(observer: RunObserver, cf: CompiledFile) -> list[int]:
     """The per-line serials of ``cf``'s file (made, all -1, the first time the file runs)."""
-    runs = m.last_run
-    assert runs is not None  # a tracked run is one that keeps them
+    runs = observer.last_run
     path = cf.file.path
     trk = runs.get(path)
     if trk is None or len(trk) != len(cf.code):
@@ -44,32 +49,32 @@ def track_list(m: Machine, cf: CompiledFile) -> list[int]:
     return trk
 
 
-def run_tracked(m: Machine, max_blocks: int | None, is_limit: bool) -> str:
+def run_tracked(m: Machine, observer: RunObserver, max_blocks: int | None, is_limit: bool) -> RunStatus:
     """``Machine._run``, stamping each executed line (see the module docstring)."""
-    from .machine import LIMIT, PAUSED, RUNNING
-
     budget = m.settings.max_blocks if max_blocks is None else max_blocks
     limit = m.blocks + budget
-    m.status = RUNNING
+    m.status = RunStatus.RUNNING
     m.message = None
-    serial = m.track_serial
-    floor = m.track_floor
-    first = m.on_first_run
+    serial = observer.track_serial
+    floor = observer.track_floor
+    first = observer.first_run
     frame = m.frames[-1]
     cf = frame.code
     code = cf.code
-    trk = track_list(m, cf)
+    trk = track_list(observer, cf)
     pc = frame.pc
     n = m.blocks
     try:
         while True:
             if n >= limit:
-                m.status = LIMIT if is_limit else PAUSED
+                m.status = RunStatus.LIMIT if is_limit else RunStatus.PAUSED
                 break
             c = code[pc]
             if c is None:
                 if not m.modal_calls:
-                    done, pc = run_straight(m, cf, pc, min(limit - n, CANCEL_CHECK - n % CANCEL_CHECK), trk, n)
+                    done, pc = run_straight(
+                        m, cf, pc, min(limit - n, CANCEL_CHECK - n % CANCEL_CHECK), (observer, trk), n
+                    )
                     if done:
                         n += done
                         if not n % CANCEL_CHECK and (m.cancel_requested or m.pause_requested):
@@ -77,18 +82,18 @@ def run_tracked(m: Machine, max_blocks: int | None, is_limit: bool) -> str:
                             break
                         continue
                 c = cf.runner(pc)
-            if trk[pc] < floor and first is not None:
+            if trk[pc] < floor:
                 first(cf.file.path, pc, n)
             trk[pc] = serial
             n += 1
             pc = c(m, pc)
             if pc < 0:
-                if m.status != RUNNING:
+                if m.status != RunStatus.RUNNING:
                     break
                 frame = m.frames[-1]
                 cf = frame.code
                 code = cf.code
-                trk = track_list(m, cf)
+                trk = track_list(observer, cf)
                 pc = frame.pc
             if not n % CANCEL_CHECK and (m.cancel_requested or m.pause_requested):
                 m.take_request()

@@ -1,7 +1,9 @@
-"""The index of program files across the workspace, kept fresh by file events.
+"""The index of program files across the workspace, kept fresh by file events: which programs
+exist, where each file's labels and variables are, which program a call names.
 
-At start every program file under the workspace folders is read and parsed once (through the
-program library's ``load_text``, with the shared block cache), as a search of a workspace folder
+At start every program file under the workspace folders is read and parsed once (through its
+``FileCache``, ``library/file_cache.py``, the one reader of the workspace's files: the
+analysis's program library and call index read through the same one), as a search of a workspace folder
 reads files (``library/files.py``: at most ``MAX_PROGRAM_FILES`` files and ``MAX_FOLDER_ENTRIES``
 entries per folder, each file up to ``MAX_PROGRAM_BYTES``, regular files only, ``MAX_INDEX_BYTES``
 in all, so that ``initialize`` is answered soon whatever the folder, ``/`` too); what was not read
@@ -9,19 +11,26 @@ is kept in ``skipped`` for the server to report. A file changed on disk (an edit
 or ``disk_watch.py``) is read again, or dropped when it is gone; only a regular file is ever
 opened (a FIFO named ``O1234.nc`` would wait for a writer). Open documents take the place of
 their file on disk, so every question (which programs exist, where ``#100`` is written, who
-calls O9100) sees the editor's text. Program lookup for a call goes through
-``library.programs.ProgramLibrary``.
+calls O9100) sees the editor's text: the index knows them through ``open_files``, a function
+giving the open documents (``OpenFile``: path, lines, parsed text, site index), and reads each
+one's dialect through ``dialect_for``. Each file on disk gets a site index (``site_index.py``)
+at the first search, kept while the file is. Program lookup for a call goes through
+``library.programs.ProgramLibrary``. It knows nothing of a protocol: the language server makes
+one over its documents.
 """
 
 from __future__ import annotations
 
 import logging
 import os
-from collections.abc import Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Protocol
 
 from ..bilingual import Detail, detail
+from ..dialects.dialect import Dialect
+from ..library.file_cache import FileCache
 from ..library.files import (
     MAX_FOLDER_ENTRIES,
     MAX_INDEX_BYTES,
@@ -30,12 +39,12 @@ from ..library.files import (
     ReadScope,
     SkippedFileError,
     is_program_file,
-    read_program,
     search_program_files,
     shown_text,
 )
-from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary, load_text
-from .documents import Documents, OpenDocument
+from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
+from ..syntax.document import ParsedDocument
+from .site_index import FileSites, SiteIndex, SiteMemo
 
 log = logging.getLogger(__name__)
 
@@ -53,14 +62,40 @@ class ProgramEntry:
     first: bool  # the file's first program (what a call by the file's name runs)
 
 
-class WorkspaceIndex:
-    """Parsed program files under the workspace folders, with the open documents on top."""
+class OpenFile(Protocol):
+    """A document open in an editor, as the index sees it (the language server's
+    ``OpenDocument``)."""
 
-    def __init__(self, documents: Documents) -> None:
-        self.documents = documents
+    @property
+    def path(self) -> str: ...
+
+    @property
+    def lines(self) -> list[str]: ...
+
+    @property
+    def parsed(self) -> ParsedDocument: ...
+
+    @property
+    def sites(self) -> SiteIndex: ...
+
+    def as_loaded(self) -> LoadedFile: ...
+
+
+class WorkspaceIndex:
+    """Parsed program files under the workspace folders, with the open documents on top.
+    ``memo`` is the site memo of the open documents' indexes, shared by those of the files on
+    disk; ``files`` reads the files (a cache of its own when none is given)."""
+
+    def __init__(self, open_files: Callable[[], Iterable[OpenFile]], dialect_for: Callable[[list[str], str], Dialect],
+                 memo: SiteMemo | None = None, files: FileCache | None = None) -> None:  # fmt: skip
+        self.open_files = open_files
+        self.dialect_for = dialect_for
+        self.memo = memo if memo is not None else SiteMemo()
+        self.disk = files if files is not None else FileCache()
         self.roots: list[Path] = []
         self.files: dict[str, LoadedFile] = {}
         self.skipped: list[Detail] = []  # what the last scan did not read, and why
+        self._sites: dict[str, tuple[LoadedFile, SiteIndex]] = {}  # the files' site indexes, by path
 
     def scan(self, roots: list[str]) -> int:
         """Read every program file under ``roots``; the number of files indexed."""
@@ -86,7 +121,9 @@ class WorkspaceIndex:
 
     def reload(self, path: str) -> Detail | None:
         """Read one file again (created, changed or deleted on disk); why it was not read, if it
-        was not (a binary file is only logged: it is no program)."""
+        was not (a binary file is only logged: it is no program). The file cache reads it again
+        at the next question, wherever it is."""
+        self.disk.forget(path)
         if ReadScope.of(self.roots).refusal(path) is not None:
             return None  # only program files under the workspace folders are read
         try:
@@ -97,7 +134,7 @@ class WorkspaceIndex:
         except OSError:
             pass
         try:
-            text = read_program(path).text
+            loaded = self.disk.load(path)
         except (OSError, SkippedFileError) as e:
             self.files.pop(path, None)
             if isinstance(e, BinaryFileError):
@@ -108,7 +145,7 @@ class WorkspaceIndex:
             reason = e.strerror or str(e)
             shown = shown_text(path)
             return detail(f"{shown}: cannot read ({reason})", f"{shown}：无法读取（{reason}）")
-        self.files[path] = load_text(path, text)
+        self.files[path] = loaded
         return None
 
     def refresh_folder(self, folder: str) -> None:
@@ -129,12 +166,32 @@ class WorkspaceIndex:
     def loaded_files(self) -> Iterator[LoadedFile]:
         """Every program file: open documents as the editor has them, the rest as on disk."""
         open_paths = set()
-        for doc in self.documents.by_uri.values():
+        for doc in self.open_files():
             open_paths.add(doc.path)
             yield doc.as_loaded()
         for path, loaded in self.files.items():
             if path not in open_paths:
                 yield loaded
+
+    def file_sites(self) -> Iterator[FileSites]:
+        """Every program file with its site index: open documents as the editor has them (their
+        own index), the others as on disk (an index per loaded file, kept while it is)."""
+        open_paths = set()
+        for doc in self.open_files():
+            open_paths.add(doc.path)
+            yield FileSites(doc.path, doc.lines, doc.sites)
+        files = self.files
+        kept = self._sites
+        for path in [p for p, (loaded, _) in kept.items() if files.get(p) is not loaded]:
+            del kept[path]
+        for path, loaded in files.items():
+            if path in open_paths:
+                continue
+            hit = kept.get(path)
+            local = self.dialect_for(loaded.lines, path).local_subprogram_code
+            if hit is None or hit[1].local_call != local:
+                hit = kept[path] = (loaded, SiteIndex(loaded.program.blocks, local, self.memo))
+            yield FileSites(path, loaded.lines, hit[1])
 
     def programs(self) -> Iterator[ProgramEntry]:
         """Every program, named as the outline names it (``Program.named_units``)."""
@@ -146,12 +203,13 @@ class WorkspaceIndex:
                 name = f"O{u.number:04d}" if u.number is not None else Path(f.path).stem
                 yield ProgramEntry(name, u.number, u.title, f.path, u.start, u.end, u is units[0])
 
-    def library(self, near: OpenDocument | None) -> ProgramLibrary:
-        """A program library over the workspace folders with the open documents' text."""
-        texts = {d.path: d.parsed.text for d in self.documents.by_uri.values() if near is None or d is not near}
-        return ProgramLibrary(folders=list(self.roots), texts=texts)
+    def library(self, near: OpenFile | None) -> ProgramLibrary:
+        """A program library over the workspace folders with the open documents' text (the
+        files on disk read through the index's cache)."""
+        texts = {d.path: d.parsed.text for d in self.open_files() if near is None or d is not near}
+        return ProgramLibrary(folders=list(self.roots), texts=texts, files=self.disk)
 
-    def find_program(self, doc: OpenDocument, number: int | None, name: str | None) -> FoundProgram | None:
+    def find_program(self, doc: OpenFile, number: int | None, name: str | None) -> FoundProgram | None:
         """The program a call in ``doc`` names, found as the program library finds it."""
         lib = self.library(doc)
         near = doc.as_loaded()

@@ -2,14 +2,14 @@
 kept up to date by edits.
 
 Hover ("where is #100 written", "which jumps land on N10"), references and rename look only at
-these lines. The sites of a block are computed once per block object (blocks are shared by
-line text). A ``SiteIndex`` keeps the sorted lines that have sites and, from the first
-question on, maps from a variable number to the lines that write it and that mention it, and
-from a label number to the lines that jump to it; an edit only re-examines the lines it
-replaced and shifts the others. So the answer to a question costs time in proportion to the
-answer, not to the file, and an edit in proportion to the macro lines at most. Files on disk
-get one index each, made at the first question and kept until the workspace index loads the
-file again.
+these lines. The sites of a block are computed once per block object (blocks are shared by line
+text; ``SiteMemo``, owned by whoever owns the documents). A ``SiteIndex`` keeps the sorted lines
+that have sites and, from the first question on, maps from a variable number to the lines that
+write it and that mention it, and from a label number to the lines that jump to it; an edit only
+re-examines the lines it replaced and shifts the others. So the answer to a question costs time
+in proportion to the answer, not to the file, and an edit in proportion to the macro lines at
+most. Files on disk get one index each, made at the first question and kept by the workspace
+index (``workspace_index.py``) until it loads the file again.
 """
 
 from __future__ import annotations
@@ -17,36 +17,44 @@ from __future__ import annotations
 from bisect import bisect_left, insort
 from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import Any
 
 from ..syntax.nodes import Block
 from .sites import JumpSite, VariableSite, jump_sites, variable_sites
 
 Sites = tuple[tuple[JumpSite, ...], tuple[VariableSite, ...]]
 _EMPTY: Sites = ((), ())
-_memo: dict[tuple[int, float | None], tuple[Block, Sites]] = {}
 _MEMO_LIMIT = 300_000
 
 
-def block_sites(block: Block, local_call: float | None = None) -> Sites:
-    """The jumps and variables of a block (memoised per block object and local call code, the
-    dialect's ``local_subprogram_code``)."""
-    plain = block.plain
-    if plain is not None:
-        text = plain.upper()
-        if "M9" not in text and "H8" not in text and (local_call is None or "M" not in text):
+class SiteMemo:
+    """The sites of blocks, memoised per block object and local call code (blocks are shared
+    by line text, so a file of repeated lines finds the sites of each text once). Owned by
+    whoever owns the documents (``Documents`` in the language server), shared by their site
+    indexes; it holds its blocks, so it is emptied when it reaches ``_MEMO_LIMIT`` entries."""
+
+    def __init__(self) -> None:
+        self._memo: dict[tuple[int, float | None], tuple[Block, Sites]] = {}
+
+    def block_sites(self, block: Block, local_call: float | None = None) -> Sites:
+        """The jumps and variables of a block; ``local_call`` is the dialect's
+        ``local_subprogram_code``."""
+        plain = block.plain
+        if plain is not None:
+            text = plain.upper()
+            if "M9" not in text and "H8" not in text and (local_call is None or "M" not in text):
+                return _EMPTY
+        if plain is None and not block.statements and not block.words and not block.corners:
             return _EMPTY
-    if plain is None and not block.statements and not block.words and not block.corners:
-        return _EMPTY
-    key = (id(block), local_call)
-    hit = _memo.get(key)
-    if hit is not None and hit[0] is block:
-        return hit[1]
-    sites = (tuple(jump_sites(block, local_call)), tuple(variable_sites(block)))
-    if len(_memo) >= _MEMO_LIMIT:
-        _memo.clear()
-    _memo[key] = (block, sites)
-    return sites
+        memo = self._memo
+        key = (id(block), local_call)
+        hit = memo.get(key)
+        if hit is not None and hit[0] is block:
+            return hit[1]
+        sites = (tuple(jump_sites(block, local_call)), tuple(variable_sites(block)))
+        if len(memo) >= _MEMO_LIMIT:
+            memo.clear()
+        memo[key] = (block, sites)
+        return sites
 
 
 Lines = dict[int, list[int]]  # a label or variable number -> its sorted lines
@@ -101,9 +109,10 @@ class SiteIndex:
     them the first time one is asked for. ``local_call`` is the document's dialect's local
     subprogram call code (Haas ``M97``), whose P is a jump to a label."""
 
-    def __init__(self, blocks: list[Block], local_call: float | None = None) -> None:
+    def __init__(self, blocks: list[Block], local_call: float | None = None, memo: SiteMemo | None = None) -> None:
         self._blocks = blocks
         self.local_call = local_call
+        self.memo = memo if memo is not None else SiteMemo()
         self._lines: list[int] | None = None
         self._sites: list[Sites] = []  # the sites of each of ``_lines``, as they were indexed
         self._maps: _Maps | None = None
@@ -113,6 +122,7 @@ class SiteIndex:
         if self._lines is None:
             lines: list[int] = []
             sites: list[Sites] = []
+            block_sites = self.memo.block_sites
             for i, b in enumerate(self._blocks):
                 s = block_sites(b, self.local_call)
                 if s[0] or s[1]:
@@ -142,7 +152,7 @@ class SiteIndex:
         fresh_lines: list[int] = []
         fresh_sites: list[Sites] = []
         for k in range(new_count):
-            s = block_sites(blocks[start + k], self.local_call)
+            s = self.memo.block_sites(blocks[start + k], self.local_call)
             if s[0] or s[1]:
                 fresh_lines.append(start + k)
                 fresh_sites.append(s)
@@ -195,31 +205,3 @@ class FileSites:
     path: str
     lines: list[str]
     sites: SiteIndex
-
-
-_disk: dict[str, tuple[object, SiteIndex]] = {}  # path -> (the loaded file it was made from, index)
-
-
-def local_call_code(server: Any, lines: list[str]) -> float | None:
-    """The local subprogram call code of the dialect a file with these lines is read in."""
-    return server.documents.dialect_for(lines).local_subprogram_code
-
-
-def workspace_sites(server: Any) -> Iterator[FileSites]:
-    """Every workspace file: open documents as the editor has them (their own index), the
-    others as on disk (an index per loaded file, kept while the workspace index keeps it)."""
-    open_paths = set()
-    for doc in server.documents.by_uri.values():
-        open_paths.add(doc.path)
-        yield FileSites(doc.path, doc.lines, doc.sites)
-    files = server.index.files
-    for path in [p for p, (loaded, _) in _disk.items() if files.get(p) is not loaded]:
-        del _disk[path]
-    for path, loaded in files.items():
-        if path in open_paths:
-            continue
-        hit = _disk.get(path)
-        local = local_call_code(server, loaded.lines)
-        if hit is None or hit[1].local_call != local:
-            hit = _disk[path] = (loaded, SiteIndex(loaded.program.blocks, local))
-        yield FileSites(path, loaded.lines, hit[1])

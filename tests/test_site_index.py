@@ -1,11 +1,11 @@
-"""The language server's index of macro lines stays equal to a fresh one across random edits,
-so hover, references and rename read the right lines after typing."""
+"""The index of macro lines of a document stays equal to a fresh one across random edits, so
+hover, references and rename read the right lines after typing."""
 
 from __future__ import annotations
 
 import random
 
-from cncmacro.lsp.site_index import SiteIndex
+from cncmacro.analysis.site_index import SiteIndex
 from cncmacro.syntax.document import ParsedDocument, split_lines
 
 LINES = ["G01 X1. Y2.", "#100=#100+1", "N10 G00 X0", "IF[#1 GT 2] GOTO10", "M99 P10", "(NOTE)", "G65 H81 P10 Q#1 R0"]

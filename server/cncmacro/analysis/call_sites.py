@@ -1,0 +1,43 @@
+"""The call a block makes, for editor features: a program call (``G65``/``G66``, ``M98``/``M198``,
+or a code that the machine file's ``[calls]`` makes a call) with the word that names its program.
+
+What a block calls is ``machine.calls.recognise_call``'s (``M98 P30040`` is O0040 three times;
+``G65 P`` has at most the dialect's digits); this module keeps the calls that name a program. A
+local call (Haas ``M97 P n``) names a label of the program itself and is navigated as a jump.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from ..dialects.dialect import Dialect
+from ..library.machine_file import CallCode
+from ..machine.calls import recognise_call
+from ..syntax.nodes import Block, Word
+
+
+@dataclass(frozen=True, slots=True)
+class CallSite:
+    """A call on one block: ``kind`` is ``G65``, ``G66``, ``M98``, ``M198`` or the machine file's
+    code (``G100``); the program is named by ``number`` or (gsk980tdi ``P[CUT]``) ``name``; ``p``
+    is the word that names it (P, or the configured code itself); ``arguments`` are the words
+    that fill locals (a macro call's); ``code`` is the word that makes the call."""
+
+    kind: str
+    number: int | None
+    name: str | None
+    p: Word
+    arguments: tuple[Word, ...]
+    code: Word
+
+
+def call_site(block: Block, dialect: Dialect, calls: Mapping[str, CallCode] | None = None) -> CallSite | None:
+    """The program call this block makes, if it names its program (``calls``: the machine
+    file's call codes)."""
+    if block.plain is not None and not calls and "P" not in block.plain.upper():
+        return None  # a line of plain words without P: no word of it is read
+    call = recognise_call(block.words, dialect, calls)
+    if call is None or call.arithmetic or call.local or call.target is None:
+        return None  # G65 Hm P Q R is macro arithmetic and branches (docs/semantics.md §7), not a call
+    return CallSite(call.kind, call.number, call.name, call.target, call.arguments, call.code)

@@ -1,0 +1,219 @@
+"""The diagnostic codes: one record per code, the registry every check and front end reads.
+
+``CODES`` is docs/design.md's table of stable diagnostic codes (``tests/test_diagnostic_codes.py``
+holds the two together). Each ``Code`` says its default severity, the milder one a check gives
+where a control is known to be lenient (the table's "error / warning"), a one-line description in
+English and Chinese (the SARIF rules and the settings read it), how it is found (``static``: by
+looking at the text, ``run``: by running the program, ``both``), and, for the codes a run finds,
+the alarm numbers and the interpreter's alarm subjects it stands for.
+
+A check makes its findings with ``default_severity`` (``diagnostics.diagnostic``,
+``line_facts.finding``), so no check writes a severity of its own; ``alarm_code`` turns an alarm
+of a run into its code. The user's changes to the severities are ``analysis/severity.py``'s.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..bilingual import Detail, detail
+from ..dialects.alarms import (
+    ARGUMENT_RANGE,
+    BRACKET_NESTING,
+    COUNT_TWICE,
+    DECIMAL_POINT,
+    DIVISION_BY_ZERO,
+    FORMAT,
+    G_ARGUMENT,
+    IMPROPER_G_CODE,
+    LOOP_NUMBER,
+    MACRO_NESTING,
+    MISSING_END,
+    NAME_SUBSCRIPT,
+    NC_AND_MACRO,
+    NO_VARIABLE_NAME,
+    OVERFLOW,
+    P_VALUE_RANGE,
+    PROGRAM_NOT_FOUND,
+    SEQUENCE_NUMBER,
+    STATEMENT_FORMAT,
+    SUBPROGRAM_NESTING,
+    VARIABLE_NUMBER,
+    WRITE_PROTECTED,
+)
+
+ERROR = "error"
+WARNING = "warning"
+INFORMATION = "information"
+HINT = "hint"
+SEVERITIES = (ERROR, WARNING, INFORMATION, HINT)
+
+STATIC = "static"  # found by looking at the text
+RUN = "run"  # found by running the program
+BOTH = "both"
+FOUND = (STATIC, RUN, BOTH)
+
+MACRO_ALARM = "macro-alarm"
+_UNKNOWN_ALARM = "syntax"  # an alarm number below the macro-alarm base that no code claims
+
+
+@dataclass(frozen=True, slots=True)
+class Code:
+    """One diagnostic code (see the module docstring)."""
+
+    name: str
+    severity: str
+    description: Detail
+    found: str = STATIC
+    alarms: tuple[int, ...] = ()  # the alarm numbers a run reports as this code
+    subjects: tuple[str, ...] = ()  # the interpreter's alarm subjects (``MacroAlarm.subject``)
+    milder: str | None = None  # the severity where a control is lenient (see the check)
+
+
+def _codes(*codes: Code) -> dict[str, Code]:
+    return {c.name: c for c in codes}
+
+
+CODES: dict[str, Code] = _codes(
+    Code("syntax", ERROR, detail("The block does not parse.", "程序段无法解析。"),
+         BOTH, (FORMAT, STATEMENT_FORMAT)),
+    Code("bracket-depth", ERROR, detail("More than 5 nested brackets (alarm 118).", "括号嵌套超过 5 层（报警 118）。"),
+         BOTH, (BRACKET_NESTING,)),
+    Code("undefined-label", ERROR,
+         detail("A GOTO, M99 P, M98 Q, M97 P or H80-H86 target has no N label.",
+                "GOTO、M99 P、M98 Q、M97 P 或 H80-H86 的目标没有对应的 N 顺序号。"),
+         BOTH, (SEQUENCE_NUMBER,)),
+    Code("duplicate-label", WARNING,
+         detail("An N number is used twice where it is a jump target.", "作为转移目标的 N 顺序号出现了两次。")),
+    Code("duplicate-program", WARNING,
+         detail("An O number used twice in a file: the control keeps the first program.",
+                "同一文件中 O 程序号重复：系统只保留第一个程序。")),
+    Code("label-range", ERROR, detail("A GOTO target is outside 1-99999.", "GOTO 目标超出 1-99999。"),
+         BOTH, subjects=("label-range",)),
+    Code("loop-mismatch", ERROR,
+         detail("DO without END, END without DO, or crossing loops (alarms 124/126).",
+                "DO 没有 END、END 没有 DO，或循环交叉（报警 124/126）。"),
+         BOTH, (MISSING_END,)),
+    Code("loop-number", ERROR,
+         detail("A DO/END number outside 1-3, or loops nested deeper than 3 (alarm 126).",
+                "DO/END 号超出 1-3，或循环嵌套超过 3 层（报警 126）。"),
+         BOTH, (LOOP_NUMBER,)),
+    Code("jump-into-loop", ERROR, detail("A jump into a DO range from outside it.", "从外部转移到 DO 循环范围内。"),
+         BOTH, subjects=("jump-into-loop",)),
+    Code("g65-nc-words", ERROR,
+         detail("G65/G66 shares its block with another G or M code, an O word or a prior word (a modal G code "
+                "before it is a warning where the control sets it and calls).",
+                "G65/G66 与其他 G 或 M 代码、O 代码或其前面的代码在同一程序段"
+                "（系统先执行其前的模态 G 代码再调用时为警告）。"),
+         milder=WARNING),
+    Code("argument-address", ERROR,
+         detail("G, L, N, O or P used as a macro argument (alarm 129).",
+                "G、L、N、O 或 P 用作宏程序自变量（报警 129）。"),
+         BOTH, (G_ARGUMENT,)),
+    Code("argument-order", WARNING,
+         detail("I, J, K arguments out of their I, J, K order within a set (fanuc).",
+                "同一组内的 I、J、K 自变量未按 I、J、K 顺序（fanuc）。")),
+    Code("repeat-count-range", ERROR,
+         detail("A repeat count (L, or the count in P) is outside 1-9999.",
+                "重复次数（L，或 P 中的次数）超出 1-9999。"),
+         BOTH, (COUNT_TWICE,), ("repeat-count",), milder=WARNING),
+    Code("program-not-found", ERROR,
+         detail("A call names a program that is not in the workspace.", "调用的程序不在工作区中。"),
+         BOTH, (PROGRAM_NOT_FOUND,)),
+    Code("program-number", ERROR,
+         detail("A program number has too many digits, or a program name is not allowed.",
+                "程序号位数过多，或程序名不允许。"),
+         BOTH, (P_VALUE_RANGE,)),
+    Code("variable-number", ERROR,
+         detail("A variable number that does not exist in the dialect (alarm 115).",
+                "该系统中不存在的变量号（报警 115）。"),
+         BOTH, (VARIABLE_NUMBER, NO_VARIABLE_NAME, NAME_SUBSCRIPT)),
+    Code("write-protected", ERROR,
+         detail("An assignment to #0 or to a read-only system variable (alarm 116).",
+                "给 #0 或只读系统变量赋值（报警 116）。"),
+         BOTH, (WRITE_PROTECTED,)),
+    Code("write-only", ERROR, detail("A write-only system variable is read.", "读取了只写系统变量。")),
+    Code("nc-and-macro", ERROR,
+         detail("NC words and a macro statement in one block (alarm 127).",
+                "NC 代码与宏语句在同一程序段（报警 127）。"),
+         BOTH, (NC_AND_MACRO,)),
+    Code("dialect-feature", ERROR, detail("Syntax that the selected dialect lacks.", "所选系统不支持的语法。")),
+    Code("corner-word", WARNING,
+         detail("A ,C/,R/,A corner word without a G01/G02/G03 move, or on a profile whose manual lacks it.",
+                "没有 G01/G02/G03 移动的 ,C/,R/,A 拐角代码，或所选系统的手册中没有该代码。")),
+    Code("profile-suggestion", INFORMATION,
+         detail("The file reads cleanly as another profile: likely written for it.",
+                "按另一个系统读取时文件没有问题：很可能是为该系统编写的。")),
+    Code("nesting-depth", ERROR,
+         detail("Macro or subprogram nesting is exceeded when the program runs.", "运行时宏程序或子程序嵌套超出上限。"),
+         RUN, (SUBPROGRAM_NESTING, MACRO_NESTING)),
+    Code("division-by-zero", ERROR,
+         detail("A division by zero found by running the program (alarm 112).", "运行程序时发现除数为零（报警 112）。"),
+         RUN, (DIVISION_BY_ZERO,)),
+    Code("argument-range", ERROR,
+         detail("A SQRT, ASIN, ACOS or LN argument out of range, found by running (119).",
+                "运行时发现 SQRT、ASIN、ACOS 或 LN 的自变量超出范围（119）。"),
+         RUN, (OVERFLOW, ARGUMENT_RANGE)),
+    Code(MACRO_ALARM, WARNING,
+         detail("A run of the program reaches #3000= or G65 H99 (a macro alarm).",
+                "程序运行到 #3000= 或 G65 H99（宏程序报警）。"),
+         RUN),
+    Code("vacant-argument", INFORMATION,
+         detail("A macro reads an argument that a caller never passes.", "宏程序读取了调用者没有传递的自变量。"), RUN),
+    Code("run-limit", INFORMATION,
+         detail("The analysis run stopped at its block budget (a possible endless loop).",
+                "分析运行在程序段上限处停止（可能是死循环）。"),
+         RUN),
+    Code("not-executed", HINT,
+         detail("Blocks that the analysis runs never reached.", "分析运行从未到达的程序段。"), RUN),
+    Code("decimal-point", ERROR,
+         detail("An M code written with a decimal point (alarm 007).", "M 代码带有小数点（报警 007）。"),
+         BOTH, (DECIMAL_POINT,), milder=WARNING),
+    Code("unknown-g-code", ERROR,
+         detail("A G code the control lacks and the machine does not map to a call (010).",
+                "系统没有、机床也未映射为调用的 G 代码（010）。"),
+         BOTH, (IMPROPER_G_CODE,), milder=WARNING),
+    Code("keyword-abbreviation", HINT,
+         detail("A macro word written shortened (WH for WHILE), read as the whole word.",
+                "宏语句关键字的缩写（WH 表示 WHILE），按完整关键字读取。")),
+    Code("after-tape-end", HINT,
+         detail("Text after the closing % (the end of the tape), which is not read.",
+                "结尾 %（纸带结束）之后的文字，不会被读取。")),
+    Code("internal-error", ERROR,
+         detail("The checker itself failed on this line, program or file (a bug to report).",
+                "检查器本身在此行、程序或文件上出错（请报告此缺陷）。"),
+         BOTH),
+    Code("machine-file", ERROR,
+         detail("The machine file (.cncmacro.toml) cannot be used: the defaults stand in.",
+                "机床文件（.cncmacro.toml）无法使用：改用默认设置。")),
+)  # fmt: skip
+
+_BY_ALARM: dict[int, str] = {n: c.name for c in CODES.values() for n in c.alarms}
+_BY_SUBJECT: dict[str, str] = {s: c.name for c in CODES.values() for s in c.subjects}
+
+
+def default_severity(code: str, milder: bool = False) -> str:
+    """The severity of a finding of ``code``: its default, or with ``milder`` the milder one the
+    registry gives it. ``KeyError`` for a code that is not registered, ``ValueError`` for
+    ``milder`` on a code that has no milder severity."""
+    c = CODES[code]
+    if not milder:
+        return c.severity
+    if c.milder is None:
+        raise ValueError(f"diagnostic code '{code}' has no milder severity")
+    return c.milder
+
+
+def alarm_code(number: int, subject: str | None, macro_alarm_base: int) -> str:
+    """The code of an alarm found by running: the interpreter's ``subject`` decides where it names
+    one (it is more precise than a number that covers several things: ``L`` out of range is 119 on
+    fanuc and 291 on gsk980tdi), else the alarm number; numbers from the dialect's macro-alarm base
+    up (``#3000=n``, ``G65 H99``) are the program's own alarms, ``macro-alarm``."""
+    if subject is not None and subject in _BY_SUBJECT:
+        return _BY_SUBJECT[subject]
+    code = _BY_ALARM.get(number)
+    if code is not None:
+        return code
+    if number >= macro_alarm_base:
+        return MACRO_ALARM
+    return _UNKNOWN_ALARM

@@ -1,0 +1,219 @@
+"""What a single block may contain (docs/semantics.md §1, §4, §5, §8): the rules decided from the
+block alone, before anything runs, written once for the interpreter and the static checks.
+
+``validate_block`` lists each ``BlockProblem`` of a block in the interpreter's order: a refused
+macro-word abbreviation and IF without THEN (alarm 114), NC words beside a macro statement
+(alarm 127), the words a ``G65``/``G66`` may not share its block with (a word before it, alarm
+127, or a modal G code the control sets first, ``Dialect.modal_g_before_call``; an O word, 127; a
+G code among its arguments, 129), a call without P (076), and, in a block of NC words that no
+code of the machine file makes a call, a G code that neither the dialect nor the machine has
+(010) and an M code written with a decimal point (007) (``machine/words.py``).
+
+A problem whose ``stops`` is True is an alarm: the interpreter raises the first one as the block's
+alarm when the block runs (``message``, the alarm's text), and the static checks report each as
+an error (``finding``, the same problem said with its alarm number, as a check that does not run
+says it). A problem that does not stop (a modal G code before G65 on FANUC, an unknown G code on
+a dialect without ``word_format_alarms``) runs on, and the static checks warn. What depends on a
+value (the program a P names, a count, argument letters) is the shared helpers' of
+``machine/calls.py``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+from ..bilingual import Detail, detail
+from ..dialects.alarms import DECIMAL_POINT, FORMAT, G_ARGUMENT, IMPROPER_G_CODE, NC_AND_MACRO, PROGRAM_NOT_FOUND
+from ..dialects.dialect import Dialect
+from ..syntax.nodes import Block, If, Number, Statement, Word
+from .calls import Call, code_value, codes_before_call, g_code_name, recognise_call
+from .words import abbreviation_refused, g_code_known, m_decimal_point, missing_then, unknown_g_code
+
+# the rules, as ``BlockProblem.rule`` names them
+ABBREVIATION = "abbreviation"  # WH for WHILE where the dialect does not read it
+MISSING_THEN = "missing-then"  # IF [..] <statement> where the dialect needs THEN
+NC_AND_STATEMENT = "nc-and-macro"  # NC words and a macro statement in one block
+BEFORE_CALL = "before-call"  # words before G65/G66
+O_WITH_CALL = "o-with-call"  # an O word in a G65/G66 block
+G_AFTER_CALL = "g-argument"  # a G code among the arguments of G65/G66
+CALL_WITHOUT_P = "call-without-p"  # G65/G66 without P
+UNKNOWN_G_CODE = "unknown-g-code"  # a G code neither the dialect nor the machine has
+M_DECIMAL_POINT = "decimal-point"  # an M code written with a decimal point
+_RECOGNISE = object()  # validate_block's call: not given, to be recognised
+
+
+@dataclass(frozen=True, slots=True)
+class BlockProblem:
+    """One thing the block may not contain: the alarm a control gives for it, what the run's
+    alarm says (``message``) and what a check without running says (``finding``), the columns
+    of the words concerned, and whether the control stops there (see the module docstring)."""
+
+    rule: str
+    alarm: int
+    message: Detail
+    finding: Detail
+    start: int
+    end: int
+    stops: bool = True
+
+
+def validate_block(
+    block: Block,
+    dialect: Dialect,
+    calls: Mapping[str, object] | None = None,
+    value: Callable[[Word], float | None] = code_value,
+    call: Call | object | None = _RECOGNISE,
+) -> list[BlockProblem]:
+    """The problems of ``block`` that the block alone decides, in the interpreter's order.
+    ``calls`` are the machine file's call codes; ``value`` gives a word's value when it is known
+    without running (the literal, by default; the interpreter also folds constant expressions);
+    ``call`` is ``recognise_call``'s answer for the block when the caller has it already."""
+    calls = calls or {}
+    out: list[BlockProblem] = []
+    if block.abbreviations and not dialect.keyword_abbreviations:
+        for a in block.abbreviations:
+            text = abbreviation_refused(a.text, a.word, dialect)
+            out.append(BlockProblem(ABBREVIATION, FORMAT, text, text, a.start, a.end))
+    if block.statements:
+        if block.words or block.corners:
+            out.append(_nc_and_statement(block))
+        else:
+            for s in block.statements:
+                _statement(s, dialect, out)
+        return out
+    if not block.words:
+        return out
+    if call is _RECOGNISE:
+        call = recognise_call(block.words, dialect, calls, value)
+    assert call is None or isinstance(call, Call)
+    if call is not None and call.kind in ("G65", "G66"):
+        _macro_call(block.words, call.at, call.kind, call.arithmetic, dialect, out)
+    elif call is None or not call.configured:  # a configured code's other words are its arguments
+        _refused_words(block.words, dialect, calls, value, out)
+    return out
+
+
+def _nc_and_statement(block: Block) -> BlockProblem:
+    w = block.words[0] if block.words else block.corners[0]
+    letter = w.letter if block.words else f",{w.letter}"
+    return BlockProblem(
+        NC_AND_STATEMENT,
+        NC_AND_MACRO,
+        detail(f"{letter} word and a macro statement in one block", f"{letter} 代码与宏语句在同一程序段"),
+        detail(
+            f"the NC word {letter} and a macro statement in one block (alarm 127); "
+            "only N may precede a macro statement",
+            f"NC代码 {letter} 与宏语句在同一程序段（报警 127）；宏语句之前只允许 N",
+        ),
+        w.start,
+        w.end,
+    )
+
+
+def _statement(s: Statement, dialect: Dialect, out: list[BlockProblem]) -> None:
+    if s.__class__ is not If:
+        return
+    then = s.then
+    if s.implicit_then and then is not None and not dialect.if_without_then:
+        text = missing_then(dialect)
+        out.append(BlockProblem(MISSING_THEN, FORMAT, text, text, then.start, then.end))
+    if then is not None:
+        _statement(then, dialect, out)
+
+
+def _macro_call(
+    words: tuple[Word, ...], at: int, name: str, arithmetic: bool, dialect: Dialect, out: list[BlockProblem]
+) -> None:
+    """G65/G66 and the words beside it, as ``machine/nc_blocks.py`` compiles them."""
+    if at > 0:
+        before = words[:at]
+        codes = codes_before_call([(w.letter, _raw_g(w)) for w in before], dialect)
+        w = before[0]
+        title = dialect.title
+        if codes is None:
+            g = _raw_g(w)
+            word = g_code_name(g) if w.letter == "G" and g is not None else w.letter
+            out.append(BlockProblem(
+                BEFORE_CALL, NC_AND_MACRO,
+                detail(f"{w.letter} before {name}: only N may precede {name} in its block",
+                       f"{name} 之前有 {w.letter}：程序段中 {name} 之前只允许出现 N"),
+                detail(f"{word} before {name}: only N may precede {name} in its block; {title} stops with alarm 127",
+                       f"{name} 之前只允许出现 N，不能有 {word}：{title} 报警 127（停止运行）"),
+                w.start, w.end,
+            ))  # fmt: skip
+            return
+        shown = " ".join(g_code_name(c) for c in codes)
+        text = detail(
+            f"{shown} before {name}: {title} sets {shown} (it stays in force) and then {name} calls the macro; "
+            f"controls that allow only N before {name} (GSK) stop with alarm 127, so {shown} is better on a block "
+            "of its own",
+            f"{name} 之前的 {shown}：{title} 先执行 {shown}（模态保持有效），再由 {name} 调用宏程序；"
+            f"{name} 之前只允许 N 的系统（GSK）会报警 127，建议把 {shown} 单独写一段",
+        )
+        out.append(BlockProblem(BEFORE_CALL, NC_AND_MACRO, text, text, w.start, before[-1].end, stops=False))
+    after = words[at + 1 :]
+    for w in after:
+        if w.letter == "O":  # M after G65 is the argument #13; G is alarm 129 below
+            out.append(BlockProblem(
+                O_WITH_CALL, NC_AND_MACRO,
+                detail(f"{name} may not share its block with an O word", f"{name} 不能与 O 代码在同一程序段"),
+                detail(f"{name} may not share its block with an O word (alarm 127)",
+                       f"{name} 不能与 O 代码在同一程序段（报警 127）"),
+                w.start, w.end,
+            ))  # fmt: skip
+            return
+    if arithmetic:
+        return  # G65 Hm P Q R: its words are machine/hcodes.py's
+    for w in after:
+        if w.letter == "G":
+            out.append(BlockProblem(
+                G_AFTER_CALL, G_ARGUMENT,
+                detail(f"G after {name}: a G code cannot be an argument", f"{name} 之后有 G：G 代码不能作为自变量"),
+                detail(f"G after {name}: a G code cannot be an argument (alarm 129)",
+                       f"{name} 之后的 G 代码不能作为自变量（报警 129）"),
+                w.start, w.end,
+            ))  # fmt: skip
+            break
+    if not any(w.letter == "P" for w in after):
+        call = words[at]
+        out.append(BlockProblem(
+            CALL_WITHOUT_P, PROGRAM_NOT_FOUND,
+            detail(f"{name} needs P: the program to call", f"{name} 需要用 P 指定被调用的程序"),
+            detail(f"{name} needs P: the program to call (alarm 76)", f"{name} 需要 P 指定被调用的程序（报警 076）"),
+            call.start, call.end,
+        ))  # fmt: skip
+
+
+def _raw_g(w: Word) -> float | None:
+    """A G word's literal value as written (what the interpreter compares before a call)."""
+    v = w.value
+    return v.value if w.letter == "G" and v.__class__ is Number else None
+
+
+def _refused_words(
+    words: tuple[Word, ...],
+    dialect: Dialect,
+    calls: Mapping[str, object],
+    value: Callable[[Word], float | None],
+    out: list[BlockProblem],
+) -> None:
+    """A G code the control lacks, an M code with a decimal point: alarms where the dialect has
+    ``word_format_alarms``, otherwise remarks the run goes past."""
+    stops = dialect.word_format_alarms
+    for w in words:
+        if w.letter == "G":
+            v = value(w)
+            if v is not None and not g_code_known(v, dialect, calls):
+                shown = w.value.text if isinstance(w.value, Number) else f"{v:g}"
+                text = unknown_g_code(shown, dialect)
+                out.append(BlockProblem(UNKNOWN_G_CODE, IMPROPER_G_CODE, text, text, w.start, w.end, stops))
+        elif w.letter == "M":
+            point = m_decimal_point(w)
+            if point is not None:
+                out.append(BlockProblem(M_DECIMAL_POINT, DECIMAL_POINT, point, point, w.start, w.end, stops))
+
+
+def first_alarm(problems: list[BlockProblem]) -> BlockProblem | None:
+    """The problem the control stops at: the first that stops."""
+    return next((p for p in problems if p.stops), None)

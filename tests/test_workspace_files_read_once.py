@@ -1,0 +1,98 @@
+"""The workspace's program files are read once per change (ARCHITECTURE.md, "the one reader"):
+the language server's workspace index, the analysis's program library and its index of callers
+all read through one ``FileCache``, and ``cncmacro check``'s analysis reads each file once too."""
+
+from __future__ import annotations
+
+import sys
+from collections import Counter
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+
+from cncmacro.analysis.site_index import SiteIndex
+from cncmacro.analysis.workspace import WorkspaceAnalysis
+from cncmacro.analysis.workspace_index import WorkspaceIndex
+from cncmacro.dialects import get_dialect
+from cncmacro.library import files
+from cncmacro.library.programs import LoadedFile
+from cncmacro.syntax.document import ParsedDocument
+
+MAIN = "O0001\nG65 P9100 A1.\nM30\n"
+OTHER = "O0002\nG65 P9100 A2.\nM98 P9200\nM30\n"
+MACRO = "O9100\n#100=#1*2\nM98 P9200\nM99\n"
+SUB = "O9200\n#101=1\nM99\n"
+
+
+@pytest.fixture
+def reads(monkeypatch: pytest.MonkeyPatch) -> Counter[str]:
+    """How often each file was read, wherever in the package it was read from."""
+    counted: Counter[str] = Counter()
+    original = files.read_program
+
+    def read_program(path: str | Path, max_bytes: int | None = files.MAX_PROGRAM_BYTES) -> files.SourceText:
+        counted[Path(path).name] += 1
+        return original(path, max_bytes)
+
+    for name, module in list(sys.modules.items()):
+        if name.startswith("cncmacro") and getattr(module, "read_program", None) is original:
+            monkeypatch.setattr(module, "read_program", read_program)
+    return counted
+
+
+@pytest.fixture
+def workspace(tmp_path: Path) -> Path:
+    for name, text in {"O0001.nc": MAIN, "O0002.nc": OTHER, "O9100.nc": MACRO, "O9200.nc": SUB}.items():
+        (tmp_path / name).write_text(text, encoding="utf-8")
+    return tmp_path
+
+
+@dataclass
+class Document:
+    """An open document as an editor's server keeps it."""
+
+    path: str
+    parsed: ParsedDocument
+    sites: SiteIndex
+
+    @property
+    def lines(self) -> list[str]:
+        return self.parsed.lines
+
+    def as_loaded(self) -> LoadedFile:
+        return LoadedFile(self.path, self.parsed.lines, self.parsed.program, None)
+
+
+def test_the_server_reads_each_workspace_file_once_per_change(workspace: Path, reads: Counter[str]) -> None:
+    opened: list[Document] = []
+    index = WorkspaceIndex(lambda: opened, lambda lines, path: get_dialect("fanuc"))
+    assert index.scan([str(workspace)]) == 4
+    analysis = WorkspaceAnalysis(search_paths=[str(workspace)], workspace_folders=[str(workspace)], files=index.disk)
+    macro = str(workspace / "O9100.nc")
+    analysis.open(macro, MACRO, 1)
+    parsed = analysis.document(macro)
+    assert parsed is not None
+    opened.append(Document(macro, parsed, SiteIndex(parsed.blocks)))
+    result = analysis.analyze(macro)
+    assert result is not None and result.values[macro]  # run through its callers on disk
+    found = index.find_program(opened[0], 9200, None)  # a hover on its call
+    assert found is not None and Path(found.file.path).name == "O9200.nc"
+    assert sum(len(f.sites.writes(101)) for f in index.file_sites()) == 1
+    assert reads == Counter({"O0001.nc": 1, "O0002.nc": 1, "O9100.nc": 1, "O9200.nc": 1})
+
+    (workspace / "O9200.nc").write_text(SUB.replace("#101=1", "#101=22"), encoding="utf-8")
+    index.reload(str(workspace / "O9200.nc"))  # the editor's file event, as the server passes it on
+    analysis.file_changed(str(workspace / "O9200.nc"))
+    assert analysis.analyze(macro) is not None
+    assert index.find_program(opened[0], 9200, None) is not None
+    assert reads == Counter({"O0001.nc": 1, "O0002.nc": 1, "O9100.nc": 1, "O9200.nc": 2})
+
+
+def test_check_reads_each_file_once(workspace: Path, reads: Counter[str]) -> None:
+    analysis = WorkspaceAnalysis(search_paths=[str(workspace)], workspace_folders=[str(workspace)])
+    macro = str(workspace / "O9100.nc")
+    analysis.open(macro, MACRO)
+    result = analysis.analyze(macro)
+    assert result is not None and result.values[macro]
+    assert reads == Counter({"O0001.nc": 1, "O0002.nc": 1, "O9100.nc": 1, "O9200.nc": 1})  # O9100 by the callers' index
