@@ -13,8 +13,8 @@ that was loaded again or seen for the first time is scanned whole, as is a progr
 entered for the first time or no longer enters.
 
 A range runs over unexecuted blocks of one program: it starts and ends at a block that is not
-empty, a ``%`` mark, an O header alone or a block skipped by block delete, and an executed
-line ends it.
+empty, a ``%`` mark, an O header alone or a block skipped by block delete (the interpreter's
+``machine.block_roles.passed_over``), and an executed line ends it.
 """
 
 from __future__ import annotations

@@ -77,10 +77,10 @@ from ..library.files import o_number
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
+from ..machine import block_roles
 from ..machine.status import RunStatus
 from ..syntax.document import ParsedDocument
 from ..syntax.nodes import Block
-from ..syntax.program import ProgramUnit
 from . import static_checks
 from .call_index import CallIndex
 from .caller_entries import CallerSearch
@@ -307,7 +307,7 @@ class WorkspaceAnalysis:
             named = o_number(stem, bare=True)  # the number a call finds this file by
             first = program.named_units()[0]  # what a call by the file's name runs
             for k, unit in enumerate(program.units):
-                if unit.duplicate or not _runnable(program.blocks, unit):
+                if unit.duplicate or not block_roles.runnable(program, unit, self.settings.block_delete):
                     continue
                 sites = list(by_number.get(unit.number, ())) if unit.number is not None else []
                 if unit.number is None and k == 0:
@@ -469,7 +469,7 @@ class WorkspaceAnalysis:
             for e in d.edits:
                 lines.extend(range(e.start, e.start + e.count))
                 p = e.start - 1
-                while p >= 0 and _skipped(blocks[p], self.settings):
+                while p >= 0 and block_roles.skipped(blocks[p], self.settings.block_delete):
                     p -= 1
                 unit = program.unit_at(e.start)
                 if p < unit.start or (p == unit.start and blocks[p].program is not None):
@@ -503,7 +503,7 @@ class WorkspaceAnalysis:
         blocks = d.doc.blocks
         start = min(e.start for e in d.edits)
         p = start - 1
-        while p >= 0 and _skipped(blocks[p], self.settings):
+        while p >= 0 and block_roles.skipped(blocks[p], self.settings.block_delete):
             p -= 1
         unit = d.doc.program.unit_at(start)
         if p < unit.start or (p == unit.start and blocks[p].program is not None):
@@ -629,7 +629,7 @@ class WorkspaceAnalysis:
 
     def _unreachable_skips(self, b: Block) -> bool:
         """Whether a block neither starts nor ends a not-executed range."""
-        return b.plain is None and (_skipped(b, self.settings) or b.tape or _header_only(b))
+        return block_roles.passed_over(b, self.settings.block_delete)
 
     def _unreached_diagnostic(self, file: str, lines: list[str], first: int, last: int) -> Diagnostic:
         n = last - first + 1
@@ -673,12 +673,6 @@ def _clock_reads(lines: list[str]) -> int:
     return len(_CLOCK_READ.findall("\n".join(lines)))
 
 
-def _skipped(b: Block, settings: MachineSettings) -> bool:
-    if b.plain is not None:
-        return False
-    return b.is_empty or (b.block_delete is not None and settings.block_delete)
-
-
 def _changes_structure(old: list[Block], new: list[Block]) -> bool:
     """Whether replacing ``old`` by ``new`` adds, removes or changes a structural block (the
     lines both keep unchanged at their ends, as when Enter splits nothing, do not count; a
@@ -694,15 +688,3 @@ def _changes_structure(old: list[Block], new: list[Block]) -> bool:
     if x - a == y - b and all(o.structure_key() == n.structure_key() for o, n in zip(old[a:x], new[b:y], strict=True)):
         return False  # the same labels, headers and loop markers in the same places (a label line's X typed)
     return any(blk.structural for blk in old[a:x]) or any(blk.structural for blk in new[b:y])
-
-
-def _header_only(b: Block) -> bool:
-    return b.program is not None and not b.words and not b.corners and not b.statements
-
-
-def _runnable(blocks: list[Block], unit: ProgramUnit) -> bool:
-    for i in range(unit.start, min(unit.end, len(blocks))):
-        b = blocks[i]
-        if b.plain is not None or not (b.is_empty or b.tape or _header_only(b)):
-            return True
-    return False

@@ -7,9 +7,11 @@ the file's own folder stands in for them, and at the launch every file is read a
 again, so one outside the launch's folders is then unverified, saying why. A file that cannot
 be read (a pipe, a device, a link leading out) is never waited on: its breakpoints are
 unverified with the reason. A breakpoint is verified at the line where the run will really
-stop: one on a blank or comment line, or on an O header that holds nothing else, moves to the
-next block; one on a ``/`` block while the machine's block delete switch is on is not verified
-(the run skips that block). Conditions and log-message expressions are macro text, compiled
+stop (``machine.block_roles.stop_line``, the interpreter's own rule): one on a blank or comment
+line, a ``%`` mark, or an O header that holds nothing else moves to the next block, and one on
+an O line that also holds a sequence number (``O100 N5``) stays there, where a run starts and a
+``GOTO 5`` lands; one on a ``/`` block while the machine's block delete switch is on is not
+verified (the run skips that block). Conditions and log-message expressions are macro text, compiled
 by the interpreter (``machine.evaluate``) once per machine. ``check`` is asked before each
 block: it counts hits, writes log messages and says whether to stop and why.
 
@@ -35,8 +37,9 @@ from ..bilingual import in_language, is_chinese, pick
 from ..library.files import ReadScope, SkippedFileError
 from ..library.programs import load_text
 from ..machine import Machine, MacroAlarm
+from ..machine.block_roles import stop_line
 from ..machine.evaluate import CompiledText, EvaluationError, compile_condition, compile_expression, holds, value_of
-from ..syntax.nodes import Block
+from ..syntax.program import Program
 
 _HIT = re.compile(r"^\s*(==|>=|<=|>|<|%)?\s*(\d+)\s*$")
 _FUNCTION = re.compile(r"^\s*([NnOo])\s*(\d{1,8})\s*$")
@@ -47,25 +50,12 @@ def real_path(path: str) -> str:
     return os.path.normcase(os.path.realpath(path))
 
 
-def stop_line(blocks: list[Block], line: int, block_delete: bool = False) -> int | None:
-    """The first line at or after ``line`` (0-based) where a run can stop (with the block
-    delete switch on, ``/`` blocks are passed over like comments)."""
-    for k in range(max(0, line), len(blocks)):
-        b = blocks[k]
-        if b.is_empty or b.tape or (block_delete and b.block_delete is not None):
-            continue
-        header = b.plain is None and b.program is not None
-        if header and not (b.words or b.corners or b.statements or b.label is not None):
-            continue  # an O header alone: a run starts after it
-        return k
-    return None
-
-
-def place(blocks: list[Block], line: int, block_delete: bool, locale: str | None) -> tuple[int | None, str | None]:
+def place(program: Program, line: int, block_delete: bool, locale: str | None) -> tuple[int | None, str | None]:
     """Where a breakpoint asked for on ``line`` (0-based) stops, or why it never can."""
-    if block_delete and 0 <= line < len(blocks) and blocks[line].block_delete is not None:
+    blocks = program.blocks
+    if block_delete and 0 <= line < program.read_end and blocks[line].block_delete is not None:
         return None, pick(locale, "this block is skipped: block delete is on", "此程序段会被跳过：跳段开关已打开")
-    k = stop_line(blocks, line, block_delete)
+    k = stop_line(program, line, block_delete)
     if k is None:
         return None, pick(locale, "no block to stop at on or after this line", "此行及其后没有可停止的程序段")
     return k, None
@@ -217,7 +207,7 @@ class Breakpoints:
     def set_lines(self, path: str, specs: list[dict[str, Any]]) -> list[LineBreakpoint]:
         """Replace the breakpoints of one file (``specs`` are DAP SourceBreakpoints, 1-based)."""
         key = real_path(path)
-        blocks = self._read(path)
+        program = self._read(path)
         old: list[Breakpoint] = list(self.lines.get(key, ()))
         made = []
         for spec in specs:
@@ -226,7 +216,7 @@ class Breakpoints:
             line = spec.get("line")
             if isinstance(line, int) and not isinstance(line, bool):
                 bp.asked = line - 1
-            self._place(bp, blocks)
+            self._place(bp, program)
             self._carry(bp, old)
             made.append(bp)
         self.lines[key] = made
@@ -237,26 +227,25 @@ class Breakpoints:
         """Where ``path`` may be read from: the launch's folders, or before a launch its own folder."""
         return self.scope if self.scope is not None else ReadScope.of([os.path.dirname(path) or "."])
 
-    def _read(self, path: str) -> list[Block] | str:
-        """The blocks of the file at ``path`` where a run can stop, or why it cannot be read."""
+    def _read(self, path: str) -> Program | str:
+        """The program in the file at ``path``, or why it cannot be read."""
         try:
-            program = load_text(path, self.read_scope(path).read(path).text).program
+            return load_text(path, self.read_scope(path).read(path).text).program
         except SkippedFileError as e:
             return in_language(e.message, is_chinese(self.locale))  # the path, and why it is not read
         except OSError as e:
             why = e.strerror or str(e)
             return pick(self.locale, f"cannot read {path}: {why}", f"无法读取 {path}：{why}")
-        return program.blocks[: program.read_end]  # no stop after the closing '%'
 
-    def _place(self, bp: LineBreakpoint, blocks: list[Block] | str) -> None:
-        """Place ``bp`` in its file's ``blocks`` (or say why not) and check its conditions."""
+    def _place(self, bp: LineBreakpoint, program: Program | str) -> None:
+        """Place ``bp`` in its file's ``program`` (or say why not) and check its conditions."""
         bp.line = bp.placement = None
         if bp.asked is None:
             bp.verified, bp.message = False, "a breakpoint needs a line number"
-        elif isinstance(blocks, str):
-            bp.verified, bp.message = False, blocks
+        elif isinstance(program, str):
+            bp.verified, bp.message = False, program
         else:
-            bp.line, bp.placement = place(blocks, bp.asked, self.block_delete, self.locale)
+            bp.line, bp.placement = place(program, bp.asked, self.block_delete, self.locale)
             bp.message, bp.verified = bp.placement, bp.line is not None
         bp.prepare()
         self._compile(bp)
@@ -318,9 +307,9 @@ class Breakpoints:
         before = {bp.id: (bp.verified, bp.line, bp.message) for bps in self.lines.values() for bp in bps}
         for bps in self.lines.values():
             if bps:
-                blocks = self._read(bps[0].shown_path)
+                program = self._read(bps[0].shown_path)
                 for bp in bps:
-                    self._place(bp, blocks)
+                    self._place(bp, program)
         for b in self._all():
             b.hits, b.since = 0, -1
             if not isinstance(b, LineBreakpoint):  # placed (and compiled) above

@@ -23,6 +23,7 @@ from pathlib import Path
 
 from ..bilingual import pick
 from ..machine import Machine
+from ..machine.block_roles import skipped
 from ..machine.commanded_axes import CommandedAxes
 from ..machine.frames import Move
 from ..machine.status import FINISHED, RunStatus
@@ -293,7 +294,7 @@ def last_line_run(m: Machine) -> int:
     blocks = frame.found.file.program.blocks
     skip_deleted = bool(m.settings.block_delete)
     k = min(frame.pc, len(blocks)) - 1
-    while k > 0 and (blocks[k].is_empty or blocks[k].tape or (skip_deleted and blocks[k].block_delete is not None)):
+    while k > 0 and skipped(blocks[k], skip_deleted):
         k -= 1
     return max(k, 0)
 

@@ -40,7 +40,8 @@ from ..syntax.nodes import (
     While,
     Word,
 )
-from . import jumps
+from ..syntax.program import ProgramUnit
+from . import block_roles, jumps
 from .alarms import MacroAlarm, raiser
 from .block_rules import MISSING_THEN, first_alarm, validate_block
 from .corners import with_corners
@@ -85,34 +86,16 @@ class CompiledFile:
 
     # ---------------------------------------------------------------- lines
     def skipped(self, block: Block) -> bool:
-        """True for a line that does nothing when run (blank, comment, deleted block)."""
-        if block.is_empty:
-            return True
-        return block.block_delete is not None and self.machine.settings.block_delete
+        """True for a line that does nothing when run (``block_roles.skipped``)."""
+        return block_roles.skipped(block, self.machine.settings.block_delete)
 
     def next_line(self, pc: int) -> int:
-        """The next line after ``pc`` that does something (the file's end at worst)."""
-        blocks = self.file.program.blocks
-        n = len(blocks)
-        i = pc + 1
-        while i < n and blocks[i].plain is None and self.skipped(blocks[i]):
-            i += 1
-        return i
+        """The next line after ``pc`` that does something (``block_roles.next_line``)."""
+        return block_roles.next_line(self.file.program, pc, self.machine.settings.block_delete)
 
-    def first_line(self, pc: int) -> int:
-        """``pc`` itself if it does something, else the next line that does."""
-        blocks = self.file.program.blocks
-        if pc < len(blocks) and not self.skipped(blocks[pc]):
-            return pc
-        return self.next_line(pc)
-
-    def entry(self, unit: Any) -> int:
-        """The first line a program runs: past its O header unless the header line also
-        holds statements."""
-        block = self.file.program.blocks[unit.start] if unit.start < len(self.file.program.blocks) else None
-        if block is not None and block.program is not None and not (block.words or block.corners or block.statements):
-            return self.next_line(unit.start)
-        return self.first_line(unit.start)
+    def entry(self, unit: ProgramUnit) -> int:
+        """The first line a program runs (``block_roles.entry``)."""
+        return block_roles.entry(self.file.program, unit, self.machine.settings.block_delete)
 
     def runner(self, pc: int) -> Runner:
         c = self.code[pc]
@@ -292,11 +275,7 @@ class CompiledFile:
         return self._body(block, pc, nxt)
 
     def _header(self, block: Block, pc: int, nxt: int) -> Runner:
-        rest = (
-            self._body(block, pc, nxt)
-            if (block.words or block.corners or block.statements or block.label is not None)
-            else None
-        )
+        rest = None if block_roles.header_only(block) else self._body(block, pc, nxt)
 
         def header(m: Machine, pc: int) -> int:
             if m.frame.found.unit.start != pc:

@@ -47,8 +47,9 @@ def run_straight(
     kinds = m.plain_kinds()
     if not kinds:
         return 0, pc
-    blocks = cf.file.program.blocks
-    n_blocks = len(blocks)
+    program = cf.file.program
+    blocks = program.blocks
+    n_blocks = len(blocks) if program.tape_end is None else program.tape_end  # nothing after the closing '%'
     groups = m.plain_g_groups()
     lathe = m._lathe
     cycles = m._cycle_codes
