@@ -13,9 +13,9 @@ from __future__ import annotations
 import argparse
 import time
 
-from cncmacro.dap.breakpoints import Breakpoints, LineBreakpoint
-from cncmacro.dap.history import History
-from cncmacro.dap.stepping import CONTINUE, Stepper
+from cncmacro.debugging.breakpoints import Breakpoints, LineBreakpoint
+from cncmacro.debugging.history import History
+from cncmacro.debugging.stepping import CONTINUE, Stepper
 from cncmacro.library.machine_file import MachineSettings
 from cncmacro.library.programs import ProgramLibrary
 from cncmacro.machine import Machine

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from analysis_helpers import analyse_files
-from cncmacro.dap.breakpoints import Breakpoints
+from cncmacro.debugging.breakpoints import Asked, Breakpoints
 from running import final, lines, machine
 
 # The run begins on the O line (its N is the sequence number at once), and GOTO 5 lands there.
@@ -57,7 +57,7 @@ STARTS = [
 def test_1_where_a_program_starts_the_run_and_a_breakpoint_on_the_first_line_agree(text, tmp_path: Path):
     path = tmp_path / "MAIN.nc"
     path.write_text(text, encoding="utf-8")
-    [bp] = Breakpoints().set_lines(str(path), [{"line": 1}])
+    [bp] = Breakpoints().set_lines(str(path), [Asked(0)])
     assert bp.verified
     assert bp.line == machine(text).frames[-1].pc
 

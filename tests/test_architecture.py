@@ -43,7 +43,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("dialects",),
     ("library",),
     ("machine",),
-    ("analysis",),
+    ("analysis", "debugging"),
     ("cli", "lsp", "dap"),
     ("__main__",),
 )
@@ -64,6 +64,7 @@ RULES: dict[str, str] = {
     "L9": "no eval, exec or compile of Python text",
     "L10": "only bilingual.py tells whether a locale is Chinese (is_chinese, pick); no other module "
            "tests a locale for zh",
+    "L11": "analysis/ and debugging/ do not import one another: each stands on machine/ by itself",
     "C1": "the toolpath's geometry and page and the server's start-up (toolpathGeometry.ts, "
           "toolpathView.ts, serverProcess.ts) do not import vscode",
 }  # fmt: skip
@@ -259,6 +260,8 @@ def violations(modules: dict[str, Module]) -> list[str]:
                     starts = FRONT_END_STARTS.get(m.path, ())
                     if imp.target not in starts or not imp.in_function:
                         report(m, imp.line, f"imports {imp.target}", "L4")
+                elif target != part and layer_of(target) == layer_of(part):
+                    report(m, imp.line, f"imports {imp.target}", "L11")
                 if imp.target == DAP_WIRE and m.path not in DAP_WIRE_USERS:
                     report(m, imp.line, f"imports {imp.target}", "L7")
             elif top in NOT_THE_PACKAGE:
@@ -430,10 +433,23 @@ def test_a_locale_is_tested_for_chinese_only_in_bilingual(tmp_path: Path) -> Non
     ]
 
 
-@pytest.mark.parametrize("layer", ["syntax", "dialects", "library", "machine", "analysis"])
+@pytest.mark.parametrize("layer", ["syntax", "dialects", "library", "machine", "analysis", "debugging"])
 def test_nothing_below_the_front_ends_may_import_them(tmp_path: Path, layer: str) -> None:
     modules = _package(tmp_path, {f"{layer}/x.py": "from ..lsp import server\n", "lsp/server.py": ""})
     assert [v.split(" [")[1][:2] for v in violations(modules)] == ["L1"]
+
+
+def test_the_analysis_and_the_debugger_do_not_import_one_another(tmp_path: Path) -> None:
+    modules = _package(tmp_path, {
+        "analysis/run_checks.py": "from ..debugging.history import History\n",
+        "debugging/stepping.py": "from ..analysis import codes\nfrom ..machine import Machine\n",
+        "analysis/codes.py": "", "debugging/history.py": "", "machine/__init__.py": "",
+    })  # fmt: skip
+    assert sorted(v.split(" [")[0] for v in violations(modules)) == [
+        "server/cncmacro/analysis/run_checks.py:1: imports cncmacro.debugging.history",
+        "server/cncmacro/debugging/stepping.py:1: imports cncmacro.analysis.codes",
+    ]
+    assert {v.split(" [")[1][:3] for v in violations(modules)} == {"L11"}
 
 
 if __name__ == "__main__":

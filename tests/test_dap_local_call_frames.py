@@ -11,10 +11,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from cncmacro.dap.breakpoints import Breakpoints
-from cncmacro.dap.history import History
 from cncmacro.dap.presentation import stack_frames
-from cncmacro.dap.stepping import STEP_IN, STEP_OUT, STEP_OVER, Stepper
+from cncmacro.debugging.breakpoints import Breakpoints
+from cncmacro.debugging.history import History
+from cncmacro.debugging.stepping import STEP_IN, STEP_OUT, STEP_OVER, Stepper
 from running import haas_switched, lines, machine
 
 PROGRAM = lines(

@@ -9,10 +9,10 @@ import json
 
 import pytest
 
-from cncmacro.dap.breakpoints import Breakpoints, hit_test
-from cncmacro.dap.history import History
 from cncmacro.dap.protocol import Event, MessageWriter, ProtocolError, Response, read_message
 from cncmacro.dap.session import Session
+from cncmacro.debugging.breakpoints import Asked, Breakpoints, hit_test
+from cncmacro.debugging.history import History
 from running import lines, machine
 
 
@@ -63,9 +63,9 @@ def test_breakpoints_are_verified_where_the_run_stops(tmp_path):
     path = tmp_path / "O9100.nc"
     path.write_text("%\nO9100 (TITLE)\n(COMMENT)\n\n#100=1\nM99\n%\n", encoding="utf-8")
     bps = Breakpoints()
-    made = bps.set_lines(str(path), [{"line": 1}, {"line": 3}, {"line": 5}, {"line": 7}, {"line": 40}])
+    made = bps.set_lines(str(path), [Asked(0), Asked(2), Asked(4), Asked(6), Asked(39)])
     assert [(b.verified, b.line) for b in made] == [(True, 4), (True, 4), (True, 4), (False, None), (False, None)]
-    missing = bps.set_lines(str(tmp_path / "nothing.nc"), [{"line": 1}])
+    missing = bps.set_lines(str(tmp_path / "nothing.nc"), [Asked(0)])
     assert not missing[0].verified and "cannot read" in (missing[0].message or "")
 
 

@@ -8,9 +8,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from cncmacro.dap.breakpoints import Breakpoints
-from cncmacro.dap.history import History
-from cncmacro.dap.stepping import CONTINUE, STEP_IN, Stepper, Stop
+from cncmacro.debugging.breakpoints import Asked, Breakpoints
+from cncmacro.debugging.history import History
+from cncmacro.debugging.stepping import CONTINUE, STEP_IN, Stepper, Stop
 from running import lines, machine
 
 LOOP = lines(
@@ -42,6 +42,11 @@ def session(tmp_path: Path, text: str = LOOP, interval: int = 7) -> tuple[Steppe
     return stepper, bps, str(path)
 
 
+def on_line(n: int, condition: str | None = None, hit_condition: str | None = None) -> Asked:
+    """A line breakpoint on line ``n``, counted from 1 as an editor shows it (``LOOP``'s numbers)."""
+    return Asked(n - 1, condition, hit_condition)
+
+
 def where(stepper: Stepper, stop: Stop) -> tuple[str, int, int, float | None, float | None]:
     m = stepper.machine
     return stop.reason, m.blocks, m.frames[-1].pc + 1, m.L[1], m.C[101]
@@ -68,9 +73,9 @@ def backward(stepper: Stepper) -> list[tuple]:
 
 def test_reverse_continue_stops_where_the_forward_run_stopped_with_hit_counts_and_conditions(tmp_path):
     stepper, bps, path = session(tmp_path)
-    bps.set_lines(path, [{"line": 6, "hitCondition": "%4"},
-                         {"line": 8, "condition": "#1 GT 12", "hitCondition": ">=2"}])  # fmt: skip
-    bps.set_data([{"dataId": "#101", "hitCondition": "%2"}])
+    bps.set_lines(path, [on_line(6, hit_condition="%4"),
+                         on_line(8, condition="#1 GT 12", hit_condition=">=2")])  # fmt: skip
+    bps.set_data([Asked("#101", hit_condition="%2")])
     ahead = forward(stepper)
     # line 6 at passes 4, 8, ..., 28; line 8 from its second visit with #1 > 12 (#1 = 20, 25, 30);
     # #101 at its even changes (0 -> 1 is the second: vacant -> 0 was the first)
@@ -84,7 +89,7 @@ def test_reverse_continue_stops_where_the_forward_run_stopped_with_hit_counts_an
 
 def test_going_back_takes_the_hits_back_so_forward_stops_again_at_the_same_pass(tmp_path):
     stepper, bps, path = session(tmp_path)
-    bps.set_lines(path, [{"line": 6, "hitCondition": "%4"}])
+    bps.set_lines(path, [on_line(6, hit_condition="%4")])
     first = where(stepper, stepper.run(CONTINUE))
     second = where(stepper, stepper.run(CONTINUE))
     assert (first[3], second[3]) == (4.0, 8.0)
@@ -97,7 +102,7 @@ def test_going_back_takes_the_hits_back_so_forward_stops_again_at_the_same_pass(
 
 def test_a_step_that_lands_on_a_breakpoint_counts_as_a_hit(tmp_path):
     stepper, bps, path = session(tmp_path)
-    bps.set_lines(path, [{"line": 6, "hitCondition": "2"}])
+    bps.set_lines(path, [on_line(6, hit_condition="2")])
     while stepper.machine.frames[-1].pc != 5:  # step in until the first visit of line 6
         stepper.run(STEP_IN)
     assert stepper.machine.L[1] == 1
@@ -109,24 +114,24 @@ def test_a_breakpoint_set_at_the_end_counts_from_there(tmp_path):
     end = stepper.run(CONTINUE)
     assert (end.reason, end.description, end.finished) == ("step", "program end (M30)", False)
     end_block = stepper.machine.blocks
-    bps.set_lines(path, [{"line": 6, "hitCondition": "1"}])
+    bps.set_lines(path, [on_line(6, hit_condition="1")])
     assert stepper.reverse().reason == "entry"  # its earlier visits have no number
     # back before it was set, it counts from there: forward, the first visit is its first hit
     assert where(stepper, stepper.run(CONTINUE))[2:4] == (6, 1.0)
     assert stepper.run(CONTINUE).description == "program end (M30)"
-    made = bps.set_lines(path, [{"line": 6}])
+    made = bps.set_lines(path, [on_line(6)])
     assert made[0].since == end_block
     assert where(stepper, stepper.reverse())[2:4] == (6, 30.0)  # without a hit count: the last visit
 
 
 def test_a_breakpoint_asked_for_again_keeps_its_count(tmp_path):
     stepper, bps, path = session(tmp_path)
-    bps.set_lines(path, [{"line": 6, "hitCondition": "3"}])
+    bps.set_lines(path, [on_line(6, hit_condition="3")])
     assert stepper.run(STEP_IN).reason == "step"
     while stepper.machine.L[1] != 2:
         stepper.run(STEP_IN)
     # the editor sends all of a file's breakpoints whenever one changes
-    bps.set_lines(path, [{"line": 6, "hitCondition": "3"}, {"line": 10}])
+    bps.set_lines(path, [on_line(6, hit_condition="3"), on_line(10)])
     assert where(stepper, stepper.run(CONTINUE))[2:4] == (6, 3.0)
 
 
@@ -167,7 +172,7 @@ OPTIONAL = lines("O0006", "#100=1", "(NEXT IS OPTIONAL)", "/#100=#100+1", "/2 #1
 def test_1_block_delete_a_breakpoint_on_a_deleted_block_is_not_verified_while_the_switch_is_on(tmp_path):
     path = tmp_path / "O0006.nc"
     path.write_text(OPTIONAL, encoding="utf-8")
-    specs = [{"line": 3}, {"line": 4}, {"line": 5}, {"line": 6}]
+    specs = [on_line(3), on_line(4), on_line(5), on_line(6)]
     off = Breakpoints()
     off.bind(machine(OPTIONAL, block_delete=False))
     placed = off.set_lines(str(path), specs)

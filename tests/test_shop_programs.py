@@ -10,7 +10,7 @@ from dataclasses import replace
 
 from cncmacro.analysis.static_checks import static_diagnostics
 from cncmacro.analysis.workspace import WorkspaceAnalysis
-from cncmacro.dap.breakpoints import Breakpoints
+from cncmacro.debugging.breakpoints import Asked, Breakpoints
 from cncmacro.dialects import get_dialect
 from cncmacro.library.machine_file import CallCode, MachineSettings
 from cncmacro.lsp.semantic_tokens import TOKEN_TYPES, line_tokens
@@ -108,7 +108,7 @@ def test_1_text_and_blocks_a_dos_end_of_file_byte_without_percent_ends_the_file(
 def test_1_text_and_blocks_a_breakpoint_after_the_tape_end_is_never_reached(tmp_path):
     path = tmp_path / "O9100.nc"
     path.write_text("%\nO9100\n#100=1\nM99\n%\n#100=2\nM99\n", encoding="utf-8")
-    made = Breakpoints().set_lines(str(path), [{"line": 3}, {"line": 6}])
+    made = Breakpoints().set_lines(str(path), [Asked(2), Asked(5)])
     assert [(b.verified, b.line) for b in made] == [(True, 2), (False, None)]
 
 

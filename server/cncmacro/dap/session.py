@@ -8,7 +8,7 @@ is refused with a message while it runs. An unknown or malformed request gets
 program launched on its own that ends at its M99 (a subprogram; ``repeat`` runs it again as a
 control would) gets ``cncmacro run``'s sentence and its callers in the console.
 ``source`` and ``setBreakpoints`` read program files of the launch's folders only (see
-``breakpoints.Breakpoints.read_scope``); a pipe or a device is refused, never waited on.
+``debugging.breakpoints.Breakpoints.read_scope``); a pipe or a device is refused, never waited on.
 """
 
 from __future__ import annotations
@@ -22,16 +22,16 @@ from typing import Any, BinaryIO
 
 from ..analysis.subprogram_alone import LAUNCH_REPEAT, subprogram_remarks
 from ..bilingual import detail
+from ..debugging.breakpoints import Asked, Breakpoint, Breakpoints, LineBreakpoint
+from ..debugging.history import History
+from ..debugging.stepping import CONTINUE, STEP_IN, STEP_OUT, STEP_OVER, Filters, Stepper, Stop, last_line_run
 from ..library.files import SkippedFileError
 from ..machine import Machine
 from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
 from ..machine.status import RunStatus
 from . import presentation as show
-from .breakpoints import Breakpoints, LineBreakpoint
-from .history import History
 from .launch import LaunchConfig, Launched, LaunchError, launch
 from .protocol import Event, MessageWriter, ProtocolError, Request, Response, read_message
-from .stepping import CONTINUE, STEP_IN, STEP_OUT, STEP_OVER, Filters, Stepper, Stop, last_line_run
 
 THREAD_ID = 1
 EXCEPTION_FILTERS = [
@@ -194,13 +194,15 @@ class Session:
             specs = [{"line": n} for n in args.get("lines") or []]
         if not isinstance(specs, list) or not all(isinstance(s, dict) for s in specs):
             raise RequestFailed("'breakpoints' must be a list of objects")
-        return {"breakpoints": [_line_json(bp) for bp in self.breakpoints.set_lines(path, specs)]}
+        made = self.breakpoints.set_lines(path, [_asked(s, _line(s.get("line"))) for s in specs])
+        return {"breakpoints": [_line_json(bp) for bp in made]}
 
     def on_setFunctionBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
         specs = args.get("breakpoints") or []
         if not isinstance(specs, list) or not all(isinstance(s, dict) for s in specs):
             raise RequestFailed("'breakpoints' must be a list of objects")
-        return {"breakpoints": [bp.json() for bp in self.breakpoints.set_functions(specs)]}
+        made = self.breakpoints.set_functions([_asked(s, str(s.get("name", ""))) for s in specs])
+        return {"breakpoints": [_json(bp) for bp in made]}
 
     def on_setExceptionBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
         filters = args.get("filters") or []
@@ -222,7 +224,8 @@ class Session:
         specs = args.get("breakpoints") or []
         if not isinstance(specs, list) or not all(isinstance(s, dict) for s in specs):
             raise RequestFailed("'breakpoints' must be a list of objects")
-        return {"breakpoints": [bp.json() for bp in self.breakpoints.set_data(specs)]}
+        made = self.breakpoints.set_data([_asked(s, str(s.get("dataId", ""))) for s in specs])
+        return {"breakpoints": [_json(bp) for bp in made]}
 
     # ---------------------------------------------------------------- running
     def _go(self, action: Callable[[Stepper], Stop]) -> None:
@@ -465,11 +468,29 @@ class Session:
         return {"content": text.encode("utf-8", "replace").decode("utf-8")}  # bytes no encoding took stay '?'
 
 
+def _line(line: Any) -> int | None:
+    """The 0-based line of a DAP SourceBreakpoint's ``line`` (1-based), None when it is no number."""
+    return line - 1 if isinstance(line, int) and not isinstance(line, bool) else None
+
+
+def _asked(spec: dict[str, Any], place: int | str | None) -> Asked:
+    """A DAP SourceBreakpoint, FunctionBreakpoint or DataBreakpoint as the debugger takes it."""
+    return Asked(place, spec.get("condition"), spec.get("hitCondition"), spec.get("logMessage"))
+
+
+def _json(bp: Breakpoint, **more: Any) -> dict[str, Any]:
+    """A breakpoint as DAP shows it: its id, whether it is verified, and why not."""
+    out: dict[str, Any] = {"id": bp.id, "verified": bp.verified, **more}
+    if bp.message:
+        out["message"] = bp.message
+    return out
+
+
 def _line_json(bp: LineBreakpoint) -> dict[str, Any]:
     """A line breakpoint as DAP shows it: where it really stops (1-based), or why not."""
     if bp.line is None:
-        return bp.json()
-    return bp.json(line=bp.line + 1, source={"name": Path(bp.shown_path).name, "path": bp.shown_path})
+        return _json(bp)
+    return _json(bp, line=bp.line + 1, source={"name": Path(bp.shown_path).name, "path": bp.shown_path})
 
 
 def _whole(args: dict[str, Any], name: str, default: int) -> int:

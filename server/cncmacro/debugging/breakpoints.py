@@ -13,7 +13,9 @@ an O line that also holds a sequence number (``O100 N5``) stays there, where a r
 ``GOTO 5`` lands; one on a ``/`` block while the machine's block delete switch is on is not
 verified (the run skips that block). Conditions and log-message expressions are macro text, compiled
 by the interpreter (``machine.evaluate``) once per machine. ``check`` is asked before each
-block: it counts hits, writes log messages and says whether to stop and why.
+block: it counts hits, writes log messages and says whether to stop and why. A breakpoint is
+asked for as an ``Asked`` (where, and its conditions); the front end turns its protocol's
+requests into these and the breakpoints it gets back into its protocol's answers.
 
 A hit is a visit at which the condition holds: the run arriving at the breakpoint's block
 (a line or ``N`` breakpoint), entering the program (``O``), or a block changing the variable
@@ -31,7 +33,6 @@ import os
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
 
 from ..bilingual import in_language, is_chinese, pick
 from ..library.files import ReadScope, SkippedFileError
@@ -80,9 +81,22 @@ def hit_test(text: str | None) -> Callable[[int], bool] | None:
     }[op]  # fmt: skip
 
 
+@dataclass(frozen=True, slots=True)
+class Asked:
+    """A breakpoint as a person asked for it: ``place`` is the 0-based line of a line breakpoint
+    (None when none was given), the ``N100`` or ``O9100`` of a function breakpoint, or the
+    ``#100`` of a data breakpoint; only a line breakpoint writes a log message."""
+
+    place: int | str | None = None
+    condition: str | None = None
+    hit_condition: str | None = None
+    log_message: str | None = None
+
+
 @dataclass(slots=True)
 class Hit:
-    """Why the run stops: the DAP reason, the breakpoint ids, and a text to show."""
+    """Why the run stops: ``breakpoint``, ``function breakpoint`` or ``data breakpoint``, the
+    breakpoint ids, and a text to show."""
 
     reason: str
     ids: list[int]
@@ -126,12 +140,6 @@ class Breakpoint:
         """The same breakpoint asked for again (its count goes on)."""
         return (self.condition, self.hit_condition, self.log_message) == (
             other.condition, other.hit_condition, other.log_message)  # fmt: skip
-
-    def json(self, **more: Any) -> dict[str, Any]:
-        out: dict[str, Any] = {"id": self.id, "verified": self.verified, **more}
-        if self.message:
-            out["message"] = self.message
-        return out
 
 
 @dataclass(slots=True)
@@ -204,18 +212,17 @@ class Breakpoints:
                 return
 
     # ---------------------------------------------------------------- setting
-    def set_lines(self, path: str, specs: list[dict[str, Any]]) -> list[LineBreakpoint]:
-        """Replace the breakpoints of one file (``specs`` are DAP SourceBreakpoints, 1-based)."""
+    def set_lines(self, path: str, specs: list[Asked]) -> list[LineBreakpoint]:
+        """Replace the breakpoints of one file (each ``place`` a 0-based line)."""
         key = real_path(path)
         program = self._read(path)
         old: list[Breakpoint] = list(self.lines.get(key, ()))
         made = []
         for spec in specs:
-            bp = LineBreakpoint(self._id(), spec.get("condition"), spec.get("hitCondition"), spec.get("logMessage"),
+            bp = LineBreakpoint(self._id(), spec.condition, spec.hit_condition, spec.log_message,
                                 path=key, shown_path=path)  # fmt: skip
-            line = spec.get("line")
-            if isinstance(line, int) and not isinstance(line, bool):
-                bp.asked = line - 1
+            if isinstance(spec.place, int):
+                bp.asked = spec.place
             self._place(bp, program)
             self._carry(bp, old)
             made.append(bp)
@@ -250,12 +257,13 @@ class Breakpoints:
         bp.prepare()
         self._compile(bp)
 
-    def set_functions(self, specs: list[dict[str, Any]]) -> list[FunctionBreakpoint]:
+    def set_functions(self, specs: list[Asked]) -> list[FunctionBreakpoint]:
+        """Replace the function breakpoints (each ``place`` a name such as ``N100`` or ``O9100``)."""
         made = []
         old: list[Breakpoint] = list(self.functions)
         for spec in specs:
-            name = str(spec.get("name", ""))
-            bp = FunctionBreakpoint(self._id(), spec.get("condition"), spec.get("hitCondition"))
+            name = str(spec.place)
+            bp = FunctionBreakpoint(self._id(), spec.condition, spec.hit_condition)
             m = _FUNCTION.match(name)
             if m is None:
                 bp.verified, bp.message = False, f"'{name}': name a sequence number (N100) or a program (O9100)"
@@ -268,12 +276,13 @@ class Breakpoints:
         self.functions = [b for b in made if b.verified]
         return made
 
-    def set_data(self, specs: list[dict[str, Any]]) -> list[DataBreakpoint]:
+    def set_data(self, specs: list[Asked]) -> list[DataBreakpoint]:
+        """Replace the data breakpoints (each ``place`` a variable such as ``#100``)."""
         made = []
         old: list[Breakpoint] = list(self.data)
         for spec in specs:
-            data_id = str(spec.get("dataId", ""))
-            bp = DataBreakpoint(self._id(), spec.get("condition"), spec.get("hitCondition"))
+            data_id = str(spec.place)
+            bp = DataBreakpoint(self._id(), spec.condition, spec.hit_condition)
             number = data_number(data_id)
             if number is None:
                 bp.verified, bp.message = False, f"'{data_id}' is not a variable such as #100"

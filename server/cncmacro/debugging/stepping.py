@@ -21,7 +21,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..bilingual import pick
+from ..bilingual import in_language, is_chinese, pick
 from ..machine import Machine
 from ..machine.block_roles import skipped
 from ..machine.commanded_axes import CommandedAxes
@@ -30,14 +30,14 @@ from ..machine.status import FINISHED, RunStatus
 from ..syntax.nodes import Number
 from .breakpoints import Breakpoints, Hit
 from .history import History
-from .presentation import detail_text
 
 CONTINUE, STEP_IN, STEP_OVER, STEP_OUT = "continue", "in", "over", "out"
 
 
 @dataclass(slots=True)
 class Stop:
-    """How a run ended: a DAP stopped reason (or ``finished`` when the program is over)."""
+    """How a run ended: why it stopped (``step``, ``pause``, ``entry``, ``exception``, a ``Hit``'s
+    reason) with a text to show, or ``finished`` when the program is over."""
 
     reason: str
     description: str | None = None
@@ -170,7 +170,7 @@ class Stepper:
         m = self.machine
         if m.status == RunStatus.PAUSED and m.message is not None:
             if self.filters.messages:
-                text = detail_text(m.message, self.locale)
+                text = in_language(m.message, is_chinese(self.locale))
                 return Stop("pause", text, text)
             return None
         if m.status in FINISHED:
@@ -181,7 +181,7 @@ class Stepper:
         m = self.machine
         if m.status == RunStatus.ALARM and m.alarm is not None:
             a = m.alarm
-            text = f"ALARM {a.number}: {detail_text(a.message, self.locale)}"
+            text = f"ALARM {a.number}: {in_language(a.message, is_chinese(self.locale))}"
             if self.filters.alarms:
                 return Stop("exception", text, text)
             self.output(text + "\n", "stderr")
@@ -254,10 +254,10 @@ class Stepper:
             if note.kind == "output":
                 self.output(note.message + "\n", "stdout")
             elif note.kind == "message":
-                text = detail_text(note.message, self.locale)
+                text = in_language(note.message, is_chinese(self.locale))
                 self.output(pick(self.locale, f"stop at {where}: {text}\n", f"停止（{where}）：{text}\n"), "console")
             else:
-                text = detail_text(note.message, self.locale)
+                text = in_language(note.message, is_chinese(self.locale))
                 self.output(pick(self.locale, f"note at {where}: {text}\n", f"提示（{where}）：{text}\n"), "console")
         self.notes_sent = len(m.notes)
         if self.never_stop:  # Run Without Debugging never goes back: what was shown need not stay
