@@ -275,29 +275,19 @@ MODAL_GROUP_CODES: dict[int, tuple[str, str]] = {
 
 
 def _modal_row(group: int) -> SystemVariable:
-    number = 4000 + group
-    if group not in MODAL_GROUP_CODES:
-        return SystemVariable(
-            number,
-            number,
-            "r",
-            "modal",
-            f"Modal information of G-code group {group:02d}; vacant unless the machine presets it",
-            f"第{group}组G代码的模态信息；机床未预设时为空",
-            default=None,
-        )
-    name, codes = MODAL_GROUP_CODES[group]
-    code, value = shared.modal_example(codes)
-    return SystemVariable(
-        number,
-        number,
-        "r",
-        "modal",
-        f"Modal G code of group {group:02d} ({codes}) in effect before the current block, read as a number "
-        f"({code} reads {value}, not {code})",
-        f"第{group}组模态G代码（{codes}），为当前程序段之前的模态，读出的是数值（{code}读出为{value}，而不是{code}）",
-        source="modal",
-        param=name,
+    return shared.modal_group_row(
+        4000 + group,
+        group,
+        MODAL_GROUP_CODES,
+        (
+            "Modal information of G-code group {group:02d}; vacant unless the machine presets it",
+            "第{group}组G代码的模态信息；机床未预设时为空",
+        ),
+        (
+            "Modal G code of group {group:02d} ({codes}) in effect before the current block, read as a number "
+            "({code} reads {value}, not {code})",
+            "第{group}组模态G代码（{codes}），为当前程序段之前的模态，读出的是数值（{code}读出为{value}，而不是{code}）",
+        ),
     )
 
 

@@ -160,30 +160,20 @@ def _modal_row(group: int, executing: bool) -> SystemVariable:
     """#4000+group as the 0i has it, or #4200+group for the block being executed."""
     if not executing:
         return fanuc._modal_row(group)
-    number = 4000 + group + EXECUTING
-    if group not in fanuc.MODAL_GROUP_CODES:
-        return SystemVariable(
-            number,
-            number,
-            "r",
-            "modal",
-            f"Modal information of G-code group {group:02d} of the block being executed; vacant unless the machine "
+    return shared.modal_group_row(
+        4000 + group + EXECUTING,
+        group,
+        fanuc.MODAL_GROUP_CODES,
+        (
+            "Modal information of G-code group {group:02d} of the block being executed; vacant unless the machine "
             "presets it",
-            f"正在执行的程序段的第{group}组G代码模态信息；机床未预设时为空",
-            default=None,
-        )
-    name, codes = fanuc.MODAL_GROUP_CODES[group]
-    code, value = shared.modal_example(codes)
-    return SystemVariable(
-        number,
-        number,
-        "r",
-        "modal",
-        f"Modal G code of group {group:02d} ({codes}) of the block being executed, read as a number "
-        f"({code} reads {value}, not {code})",
-        f"正在执行的程序段的第{group}组模态G代码（{codes}），读出的是数值（{code}读出为{value}，而不是{code}）",
-        source="modal",
-        param=name,
+            "正在执行的程序段的第{group}组G代码模态信息；机床未预设时为空",
+        ),
+        (
+            "Modal G code of group {group:02d} ({codes}) of the block being executed, read as a number "
+            "({code} reads {value}, not {code})",
+            "正在执行的程序段的第{group}组模态G代码（{codes}），读出的是数值（{code}读出为{value}，而不是{code}）",
+        ),
     )
 
 
