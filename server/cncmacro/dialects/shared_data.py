@@ -5,8 +5,8 @@ Both controls number the code-letter modal variables (#4109 F … #4119 S) and t
 work zero offsets (#5201 + 20·n, G54–G59) alike, and give many G and M codes the same meaning.
 ``fanuc_data`` and ``gsk980tdi_data`` take these rows and texts from here, sized to their own
 number of axes, beside the rows that are theirs alone; what differs stays in their modules.
-The builders of rows whose words differ by control (``modal_group_row``, ``work_coordinate_codes``)
-serve the Haas and 30i profiles too, each giving its own texts.
+The builders of rows whose words differ by control (``modal_group_row``, ``work_coordinate_codes``,
+``signal_bits``) serve the Haas and 30i profiles too, each giving its own texts.
 """
 
 from __future__ import annotations
@@ -58,6 +58,22 @@ def modal_group_row(
         source="modal",
         param=name,
     )
+
+
+def signal_bits(
+    first: int, count: int, access: str, kind: str, pmc: tuple[str, str], en: str, zh: str
+) -> tuple[SystemVariable, ...]:
+    """The FANUC interface signals #first… one bit a number, ``count`` of them: ``kind`` is
+    "input" or "output", ``pmc`` the macro's name of the signals (UI, UO) and the PMC's address
+    letter (G, F; byte 54 is bit 0); ``en`` and ``zh`` follow the signal's name, each with its
+    punctuation."""
+    kind_zh = "输入" if kind == "input" else "输出"
+    return tuple(
+        SystemVariable(first + bit, first + bit, access, "signals",
+                       f"Interface {kind} signal {pmc[0]}{bit:03d} (PMC {pmc[1]}{54 + bit // 8}.{bit % 8}){en}",
+                       f"接口{kind_zh}信号{pmc[0]}{bit:03d}（PMC {pmc[1]}{54 + bit // 8}.{bit % 8}）{zh}")
+        for bit in range(count)
+    )  # fmt: skip
 
 
 # The code-letter rows both controls have: (number, letter, en, zh).
