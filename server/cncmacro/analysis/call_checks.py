@@ -36,7 +36,7 @@ from ..machine.calls import (
 from ..machine.hcodes import ARITHMETIC, BRANCHES
 from ..machine.numbers import round_half_away
 from ..syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
-from .line_facts import CallSite, LineContext, LineFacts, ReturnJump, block_finding, finding
+from .line_facts import CallSite, LineContext, LineFacts, ReturnJump, alarm_message, block_finding, finding
 from .statement_checks import literal_jump
 from .variable_checks import check_write, scan_value
 
@@ -68,6 +68,11 @@ def _constant(w: Word | None, ctx: LineContext) -> float | None:
 def _add(facts: LineFacts, w: Word, code: str, en: str, zh: str, ctx: LineContext, *, milder: bool = False) -> None:
     """A finding of ``code`` on the word ``w``; ``milder`` where the control is lenient (``codes.py``)."""
     facts.findings.append(finding(w.start, w.end, code, pick(ctx.locale, en, zh), milder=milder))
+
+
+def _add_alarm(facts: LineFacts, w: Word, code: str, alarm: MacroAlarm, ctx: LineContext) -> None:
+    """A finding of ``code`` on the word ``w``: the alarm the interpreter raises for it."""
+    facts.findings.append(finding(w.start, w.end, code, alarm_message(alarm, ctx.locale)))
 
 
 # ---------------------------------------------------------------- G65 / G66
@@ -136,9 +141,7 @@ def _check_arguments(args: list[Word], ctx: LineContext, facts: LineFacts) -> No
         mapped = map_arguments([(w.letter, 0.0) for w in args], ctx.dialect)
     except MacroAlarm as alarm:
         bad = _first_refused(args, ctx)
-        _add(facts, bad, "argument-address",
-             f"{alarm.message} (alarm {alarm.number})",
-             f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
+        _add_alarm(facts, bad, "argument-address", alarm, ctx)
         return
     if mapped.remarks:
         k = next(k for k in range(1, len(args) + 1) if map_arguments([(w.letter, 0.0) for w in args[:k]],
@@ -218,9 +221,7 @@ def _check_count(l_word: Word, ctx: LineContext, facts: LineFacts) -> None:
     try:
         repeat_count(value, ctx.dialect, notes)
     except MacroAlarm as alarm:
-        _add(facts, l_word, "repeat-count-range",
-             f"{alarm.message} (alarm {alarm.number})",
-             f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
+        _add_alarm(facts, l_word, "repeat-count-range", alarm, ctx)
         return
     if notes:
         _add(facts, l_word, "repeat-count-range", in_language(notes[0], False), in_language(notes[0], True), ctx,
@@ -392,9 +393,7 @@ def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts:
     try:
         program, _ = program_and_count(p_text, p_value, None, dialect, [])
     except MacroAlarm as alarm:
-        _add(facts, p_word, "program-number",
-             f"{alarm.message} (alarm {alarm.number})",
-             f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
+        _add_alarm(facts, p_word, "program-number", alarm, ctx)
         return
     facts.calls.append(CallSite(how, program, None, p_word.start, p_word.end, q, q_span))
     if l_word is None:
@@ -406,9 +405,7 @@ def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts:
     try:
         program_and_count(p_text, p_value, 1.0, dialect, twice)  # L=1 is always valid: only P against L is judged
     except MacroAlarm as alarm:
-        _add(facts, l_word, "repeat-count-range",
-             f"{alarm.message} (alarm {alarm.number})",
-             f"{in_language(alarm.message, True)}（报警 {alarm.number}）", ctx)  # fmt: skip
+        _add_alarm(facts, l_word, "repeat-count-range", alarm, ctx)
         return
     if twice:
         _add(facts, l_word, "repeat-count-range",

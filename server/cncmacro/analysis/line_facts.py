@@ -15,11 +15,12 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from ..bilingual import in_language, is_chinese
+from ..bilingual import in_language, is_chinese, pick
 from ..dialects import BY_NAME, Dialect
 from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..machine import block_rules as rules
+from ..machine.alarms import MacroAlarm
 from ..machine.block_rules import BlockProblem
 from ..machine.expressions import ExpressionCompiler, VariableKinds
 from ..machine.words import plain_line_pattern
@@ -53,6 +54,15 @@ def finding(start: int, end: int, code: str, message: str, *, milder: bool = Fal
     """A ``Finding`` of ``code`` with the code's default severity, or its milder one where the
     check says the control is lenient (``codes.default_severity``)."""
     return Finding(start, end, default_severity(code, milder), code, message)
+
+
+def alarm_message(alarm: MacroAlarm, locale: str) -> str:
+    """The alarm the interpreter would raise, as a check's message: its text and its number."""
+    return pick(
+        locale,
+        f"{alarm.message} (alarm {alarm.number})",
+        f"{in_language(alarm.message, True)}（报警 {alarm.number}）",
+    )
 
 
 def block_finding(problem: BlockProblem, locale: str) -> Finding:

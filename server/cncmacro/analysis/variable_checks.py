@@ -23,7 +23,7 @@ from ..machine.expressions import MAX_BRACKETS, bracket_depth, call_problem
 from ..machine.numbers import round_half_away
 from ..machine.variables import named_number
 from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, NamedVar, Number, Relation, Unary, Var
-from .line_facts import Finding, LineContext, finding
+from .line_facts import Finding, LineContext, alarm_message, finding
 
 
 def scan_value(node: Expr, ctx: LineContext, out: list[Finding], depth_checked: bool = True) -> None:
@@ -112,15 +112,7 @@ def named_variable_number(node: NamedVar, ctx: LineContext, out: list[Finding]) 
     try:
         return named_number(d, node.name, subscript, node.index is not None)
     except MacroAlarm as alarm:
-        out.append(
-            finding(
-                node.start,
-                node.end,
-                "variable-number",
-                pick(ctx.locale, f"{alarm.message} (alarm {alarm.number})",
-                     f"{in_language(alarm.message, True)}（报警 {alarm.number}）"),
-            )
-        )  # fmt: skip
+        out.append(finding(node.start, node.end, "variable-number", alarm_message(alarm, ctx.locale)))
         return None
 
 

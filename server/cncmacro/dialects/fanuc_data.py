@@ -22,17 +22,14 @@ from .tables import CodeDoc, SystemVariable
 # §4.1 interface signals (parameter 6001#0 MIF = 0)
 
 _SIGNALS: tuple[SystemVariable, ...] = (
-    *(
-        SystemVariable(
-            1000 + bit,
-            1000 + bit,
-            "r",
-            "signals",
-            f"Interface input signal UI{bit:03d} (PMC G{54 + bit // 8}.{bit % 8}), sent from the PMC to the macro; "
-            "reads 0 or 1",
-            f"接口输入信号UI{bit:03d}（PMC G{54 + bit // 8}.{bit % 8}），由PMC送给宏程序，按位读取，值为0或1",
-        )
-        for bit in range(16)
+    *shared.signal_bits(
+        1000,
+        16,
+        "r",
+        "input",
+        ("UI", "G"),
+        ", sent from the PMC to the macro; reads 0 or 1",
+        "，由PMC送给宏程序，按位读取，值为0或1",
     ),
     SystemVariable(
         1032,
@@ -43,17 +40,14 @@ _SIGNALS: tuple[SystemVariable, ...] = (
         "the sum of #[1000+i] x 2^i",
         "接口输入信号UI000～UI015（PMC G54～G55）作为一个16位数一次读出，等于#[1000+i]×2^i之和",
     ),
-    *(
-        SystemVariable(
-            1100 + bit,
-            1100 + bit,
-            "rw",
-            "signals",
-            f"Interface output signal UO{bit:03d} (PMC F{54 + bit // 8}.{bit % 8}), sent from the macro to the PMC; "
-            "write 0 or 1, reading gives the state last written",
-            f"接口输出信号UO{bit:03d}（PMC F{54 + bit // 8}.{bit % 8}），由宏程序送给PMC，按位写入0或1，读出为当前状态",
-        )
-        for bit in range(16)
+    *shared.signal_bits(
+        1100,
+        16,
+        "rw",
+        "output",
+        ("UO", "F"),
+        ", sent from the macro to the PMC; write 0 or 1, reading gives the state last written",
+        "，由宏程序送给PMC，按位写入0或1，读出为当前状态",
     ),
     SystemVariable(
         1132,
@@ -275,29 +269,19 @@ MODAL_GROUP_CODES: dict[int, tuple[str, str]] = {
 
 
 def _modal_row(group: int) -> SystemVariable:
-    number = 4000 + group
-    if group not in MODAL_GROUP_CODES:
-        return SystemVariable(
-            number,
-            number,
-            "r",
-            "modal",
-            f"Modal information of G-code group {group:02d}; vacant unless the machine presets it",
-            f"第{group}组G代码的模态信息；机床未预设时为空",
-            default=None,
-        )
-    name, codes = MODAL_GROUP_CODES[group]
-    code, value = shared.modal_example(codes)
-    return SystemVariable(
-        number,
-        number,
-        "r",
-        "modal",
-        f"Modal G code of group {group:02d} ({codes}) in effect before the current block, read as a number "
-        f"({code} reads {value}, not {code})",
-        f"第{group}组模态G代码（{codes}），为当前程序段之前的模态，读出的是数值（{code}读出为{value}，而不是{code}）",
-        source="modal",
-        param=name,
+    return shared.modal_group_row(
+        4000 + group,
+        group,
+        MODAL_GROUP_CODES,
+        (
+            "Modal information of G-code group {group:02d}; vacant unless the machine presets it",
+            "第{group}组G代码的模态信息；机床未预设时为空",
+        ),
+        (
+            "Modal G code of group {group:02d} ({codes}) in effect before the current block, read as a number "
+            "({code} reads {value}, not {code})",
+            "第{group}组模态G代码（{codes}），为当前程序段之前的模态，读出的是数值（{code}读出为{value}，而不是{code}）",
+        ),
     )
 
 

@@ -5,6 +5,8 @@ Both controls number the code-letter modal variables (#4109 F … #4119 S) and t
 work zero offsets (#5201 + 20·n, G54–G59) alike, and give many G and M codes the same meaning.
 ``fanuc_data`` and ``gsk980tdi_data`` take these rows and texts from here, sized to their own
 number of axes, beside the rows that are theirs alone; what differs stays in their modules.
+The builders of rows whose words differ by control (``modal_group_row``, ``work_coordinate_codes``,
+``signal_bits``) serve the Haas and 30i profiles too, each giving its own texts.
 """
 
 from __future__ import annotations
@@ -22,6 +24,56 @@ def modal_example(codes: str) -> tuple[str, str]:
     found = re.findall(r"G\d+(?:\.\d)?", codes)
     code = found[1] if len(found) > 1 else found[0]
     return code, code[1:].lstrip("0") or "0"
+
+
+def modal_group_row(
+    number: int,
+    group: int,
+    group_codes: dict[int, tuple[str, str]],
+    vacant: tuple[str, str],
+    known: tuple[str, str],
+) -> SystemVariable:
+    """The modal row ``#number`` of G-code ``group``, as FANUC and Haas profiles describe it.
+
+    ``group_codes`` maps a group the simulated machine keeps to (its name in MODAL_GROUPS, its
+    codes); a group it does not keep is vacant unless the machine presets it, described by
+    ``vacant`` (en, zh templates of ``{group}``). A kept group reads its code as a number,
+    described by ``known`` (en, zh templates of ``{group}``, ``{codes}`` and ``{code}`` reads
+    ``{value}``, the example of ``modal_example``)."""
+    if group not in group_codes:
+        en, zh = vacant
+        return SystemVariable(
+            number, number, "r", "modal", en.format(group=group), zh.format(group=group), default=None
+        )
+    name, codes = group_codes[group]
+    code, value = modal_example(codes)
+    en, zh = known
+    return SystemVariable(
+        number,
+        number,
+        "r",
+        "modal",
+        en.format(group=group, codes=codes, code=code, value=value),
+        zh.format(group=group, codes=codes, code=code, value=value),
+        source="modal",
+        param=name,
+    )
+
+
+def signal_bits(
+    first: int, count: int, access: str, kind: str, pmc: tuple[str, str], en: str, zh: str
+) -> tuple[SystemVariable, ...]:
+    """The FANUC interface signals #first… one bit a number, ``count`` of them: ``kind`` is
+    "input" or "output", ``pmc`` the macro's name of the signals (UI, UO) and the PMC's address
+    letter (G, F; byte 54 is bit 0); ``en`` and ``zh`` follow the signal's name, each with its
+    punctuation."""
+    kind_zh = "输入" if kind == "input" else "输出"
+    return tuple(
+        SystemVariable(first + bit, first + bit, access, "signals",
+                       f"Interface {kind} signal {pmc[0]}{bit:03d} (PMC {pmc[1]}{54 + bit // 8}.{bit % 8}){en}",
+                       f"接口{kind_zh}信号{pmc[0]}{bit:03d}（PMC {pmc[1]}{54 + bit // 8}.{bit % 8}）{zh}")
+        for bit in range(count)
+    )  # fmt: skip
 
 
 # The code-letter rows both controls have: (number, letter, en, zh).
@@ -76,11 +128,12 @@ WCS_NAMES: tuple[tuple[str, str], ...] = (
 # G and M codes
 
 
-def work_coordinate_codes(axes: int) -> tuple[CodeDoc, ...]:
-    """G54-G59, each naming its offsets #5221… (one per axis)."""
+def work_coordinate_codes(axes: int, offsets_zh: str = "偏移值") -> tuple[CodeDoc, ...]:
+    """G54-G59, each naming its offsets #5221… (one per axis); ``offsets_zh`` is the control's
+    Chinese word for them (Haas's manual says 偏置)."""
     return tuple(
         CodeDoc(f"G{53 + n}", "wcs", f"Work coordinate system {n} (offsets #{5201 + 20 * n}-#{5200 + 20 * n + axes})",
-                f"工件坐标系{n}（偏移值#{5201 + 20 * n}～#{5200 + 20 * n + axes}）")
+                f"工件坐标系{n}（{offsets_zh}#{5201 + 20 * n}～#{5200 + 20 * n + axes}）")
         for n in range(1, 7)
     )  # fmt: skip
 

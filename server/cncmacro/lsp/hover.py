@@ -127,13 +127,8 @@ def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
             lines.append(t("no_argument", loc))
     elif kind in (describe.COMMON, describe.PERSISTENT):
         places = write_places(ls, number)
-        lines.append("")
-        if places:
-            lines.append(f"{t('written_at', loc)}:")
-            shown = [f"{Path(path).name}:{line + 1}" for path, line in places[:MAX_PLACES]]
-            lines += _bulleted(shown, loc, len(places))
-        else:
-            lines.append(t("not_written", loc))
+        shown = [f"{Path(path).name}:{line + 1}" for path, line in places[:MAX_PLACES]]
+        lines += _places(t("written_at", loc), shown, len(places), t("not_written", loc), loc)
     return "\n".join(lines)
 
 
@@ -179,6 +174,14 @@ def _bulleted(entries: list[str], loc: str, total: int | None = None) -> list[st
     return out
 
 
+def _places(heading: str, entries: list[str], total: int, none: str, loc: str) -> list[str]:
+    """A paragraph of places: ``heading:`` and the first ``entries`` of ``total`` as a list, or
+    ``none`` when there are none."""
+    if not total:
+        return ["", none]
+    return ["", f"{heading}:", *_bulleted(entries, loc, total)]
+
+
 def write_places(ls: CncMacroServer, number: int) -> list[tuple[str, int]]:
     """Every (file, line) in the workspace that assigns ``#number`` (from each file's map of
     the lines that write each variable)."""
@@ -199,13 +202,8 @@ def label_hover(ls: CncMacroServer, cur: Cursor, label: int) -> str:
         lines.append("")
         lines.append(f"N{label}: {t('not_found', loc)}")
     jumps = [(i, j.kind) for i, j in label_jumps(cur.doc, unit.start, unit.end, label)]
-    lines.append("")
-    if jumps:
-        lines.append(f"{t('jumps', loc)}:")
-        shown = [f"{t('line', loc)} {i + 1} ({kind})" for i, kind in jumps[:MAX_PLACES]]
-        lines += _bulleted(shown, loc, len(jumps))
-    else:
-        lines.append(t("no_jumps", loc))
+    shown = [f"{t('line', loc)} {i + 1} ({kind})" for i, kind in jumps[:MAX_PLACES]]
+    lines += _places(t("jumps", loc), shown, len(jumps), t("no_jumps", loc), loc)
     return "\n".join(lines)
 
 

@@ -23,17 +23,12 @@ from ..analysis.severity import OFF
 from ..bilingual import Detail, in_language, is_chinese
 from ..library.files import shown_text
 from ..library.machine_files import MachineFileState
+from .protocol_diagnostics import SEVERITY
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
 
 MACHINE_FILE_CODE = "machine-file"
-_SEVERITIES = {
-    "error": types.DiagnosticSeverity.Error,
-    "warning": types.DiagnosticSeverity.Warning,
-    "information": types.DiagnosticSeverity.Information,
-    "hint": types.DiagnosticSeverity.Hint,
-}
 NAMED = 3  # how many of the skipped the warning names
 LOGGED = 100  # how many the log names, one line each
 
@@ -47,7 +42,7 @@ def publish_machine_file(server: CncMacroServer, machine: MachineFileState) -> s
     or the code is off). The server clears what it showed before and shows no longer."""
     default = default_severity(MACHINE_FILE_CODE)
     level = server.settings.severity.get(MACHINE_FILE_CODE, default)
-    level = level if level in _SEVERITIES or level == OFF else default  # a bad value is logged where it is read
+    level = level if level in SEVERITY or level == OFF else default  # a bad value is logged where it is read
     if machine.path is None or machine.problem is None or level == OFF:
         return None
     uri = server.uri_for_path(str(machine.path))
@@ -56,7 +51,7 @@ def publish_machine_file(server: CncMacroServer, machine: MachineFileState) -> s
     item = types.Diagnostic(
         range=types.Range(types.Position(line, 0), types.Position(line + 1, 0)),
         message=message,
-        severity=_SEVERITIES[level],
+        severity=SEVERITY[level],
         code=MACHINE_FILE_CODE,
         source="cncmacro",
     )

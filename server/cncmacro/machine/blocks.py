@@ -18,7 +18,6 @@ from ..bilingual import detail, in_language
 from ..dialects.alarms import (
     LOOP_NUMBER,
     MISSING_END,
-    OVERFLOW,
     SEQUENCE_NUMBER,
     STATEMENT_FORMAT,
     WRITE_PROTECTED,
@@ -47,6 +46,7 @@ from .block_rules import MISSING_THEN, first_alarm, validate_block
 from .corners import with_corners
 from .expressions import ExpressionCompiler, Getter
 from .numbers import MAX_VALUE, format_value, round_half_away, to_increment
+from .variables import out_of_range
 
 if TYPE_CHECKING:
     from .machine import Machine
@@ -356,15 +356,14 @@ class CompiledFile:
         if isinstance(target, Var):
             n = target.number
             kind = self.machine.kinds.kind(n)
+            # a local and a common get a closure each, alike but for the store: one lookup less
+            # per assignment than VariableAccess.write (benchmarks/interp.py)
             if kind == "local":
 
                 def set_local(m: Machine, pc: int) -> int:
                     v = value(m)
                     if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
-                        raise MacroAlarm(
-                            OVERFLOW,
-                            detail(f"#{n} = {v}: the value is out of range", f"#{n} = {v}：数值超出范围"),
-                        )
+                        raise out_of_range(n, v)
                     m.L[n] = v
                     return nxt
 
@@ -374,10 +373,7 @@ class CompiledFile:
                 def set_common(m: Machine, pc: int) -> int:
                     v = value(m)
                     if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
-                        raise MacroAlarm(
-                            OVERFLOW,
-                            detail(f"#{n} = {v}: the value is out of range", f"#{n} = {v}：数值超出范围"),
-                        )
+                        raise out_of_range(n, v)
                     m.C[n] = v
                     return nxt
 
@@ -418,13 +414,7 @@ class CompiledFile:
     def loop_head(self, s: While | Do, pc: int, nxt: int) -> Runner:
         number = self.loop_number(s.loop)
         if number is None:
-            return raiser(
-                LOOP_NUMBER,
-                detail(
-                    f"DO {s.loop.text}: the loop number must be 1, 2 or 3",
-                    f"DO {s.loop.text}：循环号必须为 1、2 或 3",
-                ),
-            )
+            return _bad_loop_number("DO", s.loop)
         end = self.do_end.get(pc)
         if end is None:
             return raiser(
@@ -453,13 +443,7 @@ class CompiledFile:
     def loop_end(self, s: End, pc: int) -> Runner:
         number = self.loop_number(s.loop)
         if number is None:
-            return raiser(
-                LOOP_NUMBER,
-                detail(
-                    f"END {s.loop.text}: the loop number must be 1, 2 or 3",
-                    f"END {s.loop.text}：循环号必须为 1、2 或 3",
-                ),
-            )
+            return _bad_loop_number("END", s.loop)
         do = self.end_do.get(pc)
         if do is None:
             return raiser(
@@ -538,6 +522,14 @@ class CompiledFile:
 
 def _end_of_file(m: Machine, pc: int) -> int:
     return m.end_of_program(pc)
+
+
+def _bad_loop_number(word: str, loop: Number) -> Runner:
+    """The runner of a ``DO`` or ``END`` (``word``) whose number is not 1, 2 or 3: alarm 126."""
+    return raiser(
+        LOOP_NUMBER,
+        detail(f"{word} {loop.text}: the loop number must be 1, 2 or 3", f"{word} {loop.text}：循环号必须为 1、2 或 3"),
+    )
 
 
 # The NC-block compiler imports this module, so it is imported last.

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Literal, overload
+from typing import TYPE_CHECKING, Any, Literal, overload
 
 from ..bilingual import detail
 from ..dialects import BY_NAME
@@ -77,6 +77,20 @@ def bracket_depth(node: Expr) -> int:
     return best
 
 
+def _too_deep(node: Expr) -> Callable[..., Any] | None:
+    """A runner that raises alarm 118 when brackets nest deeper than ``MAX_BRACKETS`` in
+    ``node`` (the same for a value and a condition), else None."""
+    depth = bracket_depth(node)
+    if depth <= MAX_BRACKETS:
+        return None
+    return raiser(
+        BRACKET_NESTING,
+        detail(
+            f"brackets nested {depth} deep (at most {MAX_BRACKETS})", f"括号嵌套 {depth} 层（最多 {MAX_BRACKETS} 层）"
+        ),
+    )
+
+
 class VariableKinds:
     """Sorts variable numbers into local, common, system or nonexistent, for one profile as a
     machine has it (its common ranges come from the profile or the machine file)."""
@@ -134,15 +148,9 @@ class ExpressionCompiler:
     # ---------------------------------------------------------------- values
     def value(self, node: Expr) -> Getter:
         """A closure computing ``node``; brackets nested too deep raise alarm 118."""
-        depth = bracket_depth(node)
-        if depth > MAX_BRACKETS:
-            return raiser(
-                BRACKET_NESTING,
-                detail(
-                    f"brackets nested {depth} deep (at most {MAX_BRACKETS})",
-                    f"括号嵌套 {depth} 层（最多 {MAX_BRACKETS} 层）",
-                ),
-            )
+        too_deep = _too_deep(node)
+        if too_deep is not None:
+            return too_deep
         return self._value(node)
 
     def constant(self, node: Expr) -> tuple[bool, Value]:
@@ -336,12 +344,7 @@ class ExpressionCompiler:
             def divide(m: Machine) -> Value:
                 d = b(m)
                 if not d:
-                    raise MacroAlarm(
-                        DIVISION_BY_ZERO,
-                        detail("division by zero (the divisor is vacant)", "除数为零（除数为空变量）")
-                        if d is None
-                        else detail("division by zero", "除数为零"),
-                    )
+                    raise _division_by_zero(d)
                 return (a(m) or 0.0) / d
 
             return divide
@@ -398,15 +401,9 @@ class ExpressionCompiler:
     # ---------------------------------------------------------------- conditions
     def condition(self, node: Expr) -> Test:
         """A closure deciding an IF/WHILE condition (which must hold a relation)."""
-        depth = bracket_depth(node)
-        if depth > MAX_BRACKETS:
-            return raiser(
-                BRACKET_NESTING,
-                detail(
-                    f"brackets nested {depth} deep (at most {MAX_BRACKETS})",
-                    f"括号嵌套 {depth} 层（最多 {MAX_BRACKETS} 层）",
-                ),
-            )
+        too_deep = _too_deep(node)
+        if too_deep is not None:
+            return too_deep
         return self._condition(node)
 
     def _condition(self, node: Expr) -> Test:
@@ -570,7 +567,9 @@ def _same(x: Value, y: Value) -> bool:
 
 def _has_relation(node: Expr) -> bool:
     """Whether a comparison hides in ``node`` outside functions and indirections (walked
-    without recursion: a condition may join hundreds of comparisons)."""
+    without recursion: a condition may join hundreds of comparisons). Not the grammar's
+    ``_has_relation``, which looks inside them too: here it decides whether AND/OR join
+    conditions or numbers."""
     stack: list[Expr] = [node]
     while stack:
         n = stack.pop()
@@ -609,13 +608,18 @@ def _mul(a: Value, b: Value) -> Value:
 
 def _div(a: Value, d: Value) -> Value:
     if not d:
-        raise MacroAlarm(
-            DIVISION_BY_ZERO,
-            detail("division by zero (the divisor is vacant)", "除数为零（除数为空变量）")
-            if d is None
-            else detail("division by zero", "除数为零"),
-        )
+        raise _division_by_zero(d)
     return (a or 0.0) / d
+
+
+def _division_by_zero(d: Value) -> MacroAlarm:
+    """Alarm 112 for a divisor ``d`` that is 0 or vacant (both division paths raise it)."""
+    return MacroAlarm(
+        DIVISION_BY_ZERO,
+        detail("division by zero (the divisor is vacant)", "除数为零（除数为空变量）")
+        if d is None
+        else detail("division by zero", "除数为零"),
+    )
 
 
 def _mod(a: Value, d: Value) -> Value:

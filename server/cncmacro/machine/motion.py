@@ -35,25 +35,13 @@ WORK_BASE = 5201  # external offset of axis 1; G54 is +20, G55 +40 ... (both dia
 G54_1_BASE = 7001  # G54.1 P1 axis 1; each P adds 20 (fanuc; ``Dialect.extra_offset_variables``)
 LATHE_CYCLES_WITH_PROFILE = (71.0, 72.0, 73.0)
 _new_move = tuple.__new__  # a Move without the NamedTuple constructor's keyword handling
+_Words = tuple[tuple[str, float], ...]  # (letter or group, value)
+_Axes = tuple[tuple[int, float], ...]  # (axis index, value)
 # a block of plain motion decided once (``Motion.plain_plan``): modal settings (group, G), F and S,
 # absolute axes (index, value), incremental axes, and the arc words R I J K
-PlainPlan = tuple[
-    tuple[tuple[str, float], ...],
-    tuple[tuple[str, float], ...],
-    tuple[tuple[int, float], ...],
-    tuple[tuple[int, float], ...],
-    tuple[tuple[str, float], ...],
-]
+PlainPlan = tuple[_Words, _Words, _Axes, _Axes, _Words]
 # a plan with the file and the next line appended, as a plain line's runner holds it
-PlainRun = tuple[
-    tuple[tuple[str, float], ...],
-    tuple[tuple[str, float], ...],
-    tuple[tuple[int, float], ...],
-    tuple[tuple[int, float], ...],
-    tuple[tuple[str, float], ...],
-    str,
-    int,
-]
+PlainRun = tuple[_Words, _Words, _Axes, _Axes, _Words, str, int]
 _NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length"))
 _CANCEL_CYCLE = ("canned", 80.0)  # on a mill, G00-G03 cancel a drilling cycle (group 01 over group 09)
 _CENTRE_LETTERS = frozenset("RIJK")  # arc radius and centre: kept for a canned cycle's R level

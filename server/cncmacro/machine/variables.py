@@ -75,6 +75,11 @@ def named_number(dialect: Dialect, name: str, subscript: Value, has_subscript: b
     return row.first + n - 1
 
 
+def out_of_range(n: int, value: float) -> MacroAlarm:
+    """Alarm 111 for ``#n = value`` with a value beyond ``MAX_VALUE`` (every write raises it)."""
+    return MacroAlarm(OVERFLOW, detail(f"#{n} = {value}: the value is out of range", f"#{n} = {value}：数值超出范围"))
+
+
 class StopRequest(Exception):
     """Raised by ``#3006=n(text)``: the run pauses with ``message`` after this block."""
 
@@ -142,10 +147,7 @@ class VariableAccess:
         """``#[index] = value``, with every check the control makes."""
         n = self.variable_number(index)
         if value is not None and not -MAX_VALUE <= value <= MAX_VALUE:
-            raise MacroAlarm(
-                OVERFLOW,
-                detail(f"#{n} = {value}: the value is out of range", f"#{n} = {value}：数值超出范围"),
-            )
+            raise out_of_range(n, value)
         kind = self.kinds.kind(n)
         if kind == "local":
             self.L[n] = value

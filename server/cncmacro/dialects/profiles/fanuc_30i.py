@@ -36,21 +36,6 @@ AXES = 4
 # interface signals: 32 bits each way, and the same signals as 32-bit words
 
 
-def _bits(first: int, access: str, kind: str, pmc: tuple[str, str], en: str, zh: str) -> tuple[SystemVariable, ...]:
-    kind_zh = "输入" if kind == "input" else "输出"
-    return tuple(
-        SystemVariable(
-            first + bit,
-            first + bit,
-            access,
-            "signals",
-            f"Interface {kind} signal {pmc[0]}{bit:03d} (PMC {pmc[1]}{54 + bit // 8}.{bit % 8}); {en}",
-            f"接口{kind_zh}信号{pmc[0]}{bit:03d}（PMC {pmc[1]}{54 + bit // 8}.{bit % 8}），{zh}",
-        )
-        for bit in range(32)
-    )
-
-
 def _words(first: int, access: str, kind: str, prefix: str, en: str, zh: str) -> tuple[SystemVariable, ...]:
     return tuple(
         SystemVariable(
@@ -66,11 +51,11 @@ def _words(first: int, access: str, kind: str, prefix: str, en: str, zh: str) ->
 
 
 _SIGNALS: tuple[SystemVariable, ...] = (
-    *_bits(1000, "r", "input", ("UI", "G"), "sent from the PMC to the macro; reads 0 or 1",
-           "由PMC送给宏程序，按位读取，值为0或1"),
+    *shared.signal_bits(1000, 32, "r", "input", ("UI", "G"), "; sent from the PMC to the macro; reads 0 or 1",
+                        "，由PMC送给宏程序，按位读取，值为0或1"),
     *_words(1032, "r", "input", "UI", "read at once", "一次读出"),
-    *_bits(1100, "rw", "output", ("UO", "F"), "sent from the macro to the PMC; write 0 or 1, reading gives the "
-           "state last written", "由宏程序送给PMC，按位写入0或1，读出为当前状态"),
+    *shared.signal_bits(1100, 32, "rw", "output", ("UO", "F"), "; sent from the macro to the PMC; write 0 or 1, "
+                        "reading gives the state last written", "，由宏程序送给PMC，按位写入0或1，读出为当前状态"),
     *_words(1132, "rw", "output", "UO", "written at once, value -99999999 to 99999999",
             "一次写出，取值范围-99999999～99999999"),
 )  # fmt: skip
@@ -160,30 +145,20 @@ def _modal_row(group: int, executing: bool) -> SystemVariable:
     """#4000+group as the 0i has it, or #4200+group for the block being executed."""
     if not executing:
         return fanuc._modal_row(group)
-    number = 4000 + group + EXECUTING
-    if group not in fanuc.MODAL_GROUP_CODES:
-        return SystemVariable(
-            number,
-            number,
-            "r",
-            "modal",
-            f"Modal information of G-code group {group:02d} of the block being executed; vacant unless the machine "
+    return shared.modal_group_row(
+        4000 + group + EXECUTING,
+        group,
+        fanuc.MODAL_GROUP_CODES,
+        (
+            "Modal information of G-code group {group:02d} of the block being executed; vacant unless the machine "
             "presets it",
-            f"正在执行的程序段的第{group}组G代码模态信息；机床未预设时为空",
-            default=None,
-        )
-    name, codes = fanuc.MODAL_GROUP_CODES[group]
-    code, value = shared.modal_example(codes)
-    return SystemVariable(
-        number,
-        number,
-        "r",
-        "modal",
-        f"Modal G code of group {group:02d} ({codes}) of the block being executed, read as a number "
-        f"({code} reads {value}, not {code})",
-        f"正在执行的程序段的第{group}组模态G代码（{codes}），读出的是数值（{code}读出为{value}，而不是{code}）",
-        source="modal",
-        param=name,
+            "正在执行的程序段的第{group}组G代码模态信息；机床未预设时为空",
+        ),
+        (
+            "Modal G code of group {group:02d} ({codes}) of the block being executed, read as a number "
+            "({code} reads {value}, not {code})",
+            "正在执行的程序段的第{group}组模态G代码（{codes}），读出的是数值（{code}读出为{value}，而不是{code}）",
+        ),
     )
 
 

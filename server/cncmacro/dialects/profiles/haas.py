@@ -380,29 +380,19 @@ MODAL_GROUP_CODES: dict[int, tuple[str, str]] = {
 
 
 def _modal_row(group: int) -> SystemVariable:
-    number = 4000 + group
-    if group not in MODAL_GROUP_CODES:
-        return SystemVariable(
-            number,
-            number,
-            "r",
-            "modal",
-            f"Modal G code of group {group:02d} of the previous block; vacant unless the machine presets it",
-            f"前一程序段第{group}组的模态G代码；机床未预设时为空",
-            default=None,
-        )
-    name, codes = MODAL_GROUP_CODES[group]
-    code, value = shared.modal_example(codes)
-    return SystemVariable(
-        number,
-        number,
-        "r",
-        "modal",
-        f"Modal G code of group {group:02d} ({codes}) as of the previous block, read as a number "
-        f"({code} reads {value})",
-        f"前一程序段第{group}组的模态G代码（{codes}），读出的是数值（{code}读出为{value}）",
-        source="modal",
-        param=name,
+    return shared.modal_group_row(
+        4000 + group,
+        group,
+        MODAL_GROUP_CODES,
+        (
+            "Modal G code of group {group:02d} of the previous block; vacant unless the machine presets it",
+            "前一程序段第{group}组的模态G代码；机床未预设时为空",
+        ),
+        (
+            "Modal G code of group {group:02d} ({codes}) as of the previous block, read as a number "
+            "({code} reads {value})",
+            "前一程序段第{group}组的模态G代码（{codes}），读出的是数值（{code}读出为{value}）",
+        ),
     )
 
 
@@ -679,15 +669,7 @@ G_CODES: tuple[CodeDoc, ...] = (
         "设定局部坐标系（在工件偏置上附加平移）",
     ),
     _g("G53", "", "Machine coordinates for this block only", "仅本程序段使用机床坐标"),
-    *(
-        _g(
-            f"G{53 + n}",
-            "wcs",
-            f"Work coordinate system {n} (offsets #{5201 + 20 * n}-#{5206 + 20 * n})",
-            f"工件坐标系{n}（偏置#{5201 + 20 * n}～#{5206 + 20 * n}）",
-        )
-        for n in range(1, 7)
-    ),
+    *shared.work_coordinate_codes(len(AXES), offsets_zh="偏置"),
     _g("G60", "", "Single direction positioning", "单方向定位"),
     _g("G61", "cutting", "Exact stop mode", "准确停止方式"),
     _g("G64", "cutting", "Exact stop mode cancel (cutting mode)", "准确停止方式取消（切削方式）"),
