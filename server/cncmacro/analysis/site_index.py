@@ -185,6 +185,14 @@ class SiteIndex:
         """The lines (in ``start``..``end``) that mention ``#number``."""
         return _within(self.maps.mentions.get(number, []), start, end)
 
+    def variable_uses(self, number: int, start: int = 0, end: int | None = None) -> Iterator[tuple[int, VariableSite]]:
+        """(line, site) for every mention of ``#number`` on lines ``start``..``end``, a write
+        (``site.write``) or a read, in order."""
+        for i in self.mentions(number, start, end):
+            for s in self.sites_at(i)[1]:
+                if s.number == number:
+                    yield i, s
+
     def sites_at(self, line: int) -> Sites:
         """The sites of an indexed ``line`` (none for another line)."""
         lines = self.lines

@@ -183,10 +183,9 @@ def variable_references(
         files = [(f, 0, None) for f in ls.index.file_sites()]
     for f, start, end in files:
         uri = ls.uri_for_path(f.path)
-        for i in f.sites.mentions(number, start, end):
-            for s in f.sites.sites_at(i)[1]:
-                if s.number == number and (include_declaration or not s.write):
-                    out.append(_loc(uri, i, s.start, s.end, f.lines[i], encoding))
+        for i, s in f.sites.variable_uses(number, start, end):
+            if include_declaration or not s.write:
+                out.append(_loc(uri, i, s.start, s.end, f.lines[i], encoding))
     return out
 
 

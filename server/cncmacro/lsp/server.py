@@ -257,6 +257,7 @@ def build_server() -> CncMacroServer:
         code_actions,
         completion,
         folding,
+        highlight,
         hover,
         inlay_hints,
         navigation,
@@ -328,6 +329,7 @@ def build_server() -> CncMacroServer:
     for module in (
         hover,
         navigation,
+        highlight,
         symbols,
         folding,
         semantic_tokens,

@@ -1,0 +1,76 @@
+"""Document highlight: the cursor on a variable or a label marks each of its uses in the file.
+
+On ``#105`` every read and write of ``#105`` in the document is marked, writes (``#105=...``) as
+Write and the others as Read; a local (``#1``–``#33``) only within its O program, where it
+lives. On an N label, or on a jump's number (``GOTO 100``, ``M99 P100``, ``M98 Q100``, the P of
+a Haas ``M97``), the labels N100 of its program are marked as Write and each jump to it as Read.
+Where things are comes from the document's site index (``analysis/site_index.py``).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from lsprotocol import types
+
+from ..analysis.sites import label_jumps
+from ..dialects import describe
+from ..syntax.nodes import Var
+from ..syntax.walk import nodes_at
+from .cursor import Cursor, cursor_at
+from .navigation import label_under
+
+if TYPE_CHECKING:
+    from .server import CncMacroServer
+
+READ = types.DocumentHighlightKind.Read
+WRITE = types.DocumentHighlightKind.Write
+
+
+def register(server: CncMacroServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_DOCUMENT_HIGHLIGHT)
+    def document_highlight(
+        ls: CncMacroServer, params: types.DocumentHighlightParams
+    ) -> list[types.DocumentHighlight] | None:
+        cur = cursor_at(ls, params.text_document.uri, params.position)
+        return None if cur is None else highlights(cur)
+
+
+def highlights(cur: Cursor) -> list[types.DocumentHighlight] | None:
+    """The uses of the label or variable under the cursor, in document order, or None."""
+    label = label_under(cur)
+    if label is not None:
+        return label_highlights(cur, label[0])
+    for node in reversed(nodes_at(cur.block, cur.column)):
+        if isinstance(node, Var):
+            return variable_highlights(cur, node.number)
+    return None
+
+
+def label_highlights(cur: Cursor, label: int) -> list[types.DocumentHighlight]:
+    doc = cur.doc
+    program = doc.parsed.program
+    unit = program.unit_at(cur.line)
+    out: list[tuple[int, int, int, types.DocumentHighlightKind]] = []
+    for i in program.label_lines(label, unit):
+        b = doc.block(i)
+        if b is not None and b.label_span:
+            out.append((i, b.label_span[0], b.label_span[1], WRITE))
+    out.extend((i, j.start, j.end, READ) for i, j in label_jumps(doc, unit.start, unit.end, label))
+    return _marks(cur, sorted(out))
+
+
+def variable_highlights(cur: Cursor, number: int) -> list[types.DocumentHighlight]:
+    doc = cur.doc
+    start, end = 0, None
+    if describe.variable_class(number, doc.dialect) == describe.LOCAL:
+        unit = doc.parsed.program.unit_at(cur.line)
+        start, end = unit.start, unit.end
+    uses = doc.sites.variable_uses(number, start, end)
+    return _marks(cur, [(i, s.start, s.end, WRITE if s.write else READ) for i, s in uses])
+
+
+def _marks(
+    cur: Cursor, found: list[tuple[int, int, int, types.DocumentHighlightKind]]
+) -> list[types.DocumentHighlight]:
+    return [types.DocumentHighlight(cur.range(start, end, line), kind) for line, start, end, kind in found]
