@@ -12,11 +12,13 @@ of a shared benchmark generator, in a fresh server each: open to the first and t
 diagnostics of the opened version; edits that change one digit of a coordinate at the middle
 (50%) and near the end (95%) of the file, alternately, each to the diagnostics of its version,
 p50 and p95 per place; hovers on ``#`` variables spread over the file (p95); and the peak
-resident memory. The budget row is chosen by the file's line count: the nearest (by ratio) of
-20k, 100k and 1M lines, none under 10k. See docs/benchmarks.md.
+resident memory. The file is copied into an empty folder first (``--in-place``: opened where
+it is, its folder the workspace, other programs there included). The budget row is chosen by
+the file's line count: the nearest (by ratio) of 20k, 100k and 1M lines, none under 10k. See
+docs/benchmarks.md.
 
     python benchmarks/lsp.py [--sizes 2000,20000,100000] [--edits N] [--hovers N]
-    python benchmarks/lsp.py --program cam_100k.nc [--program ...] [--edits N] [--hovers N]
+    python benchmarks/lsp.py --program cam_100k.nc [--program ...] [--in-place] [--edits N] [--hovers N]
 """
 
 from __future__ import annotations
@@ -299,13 +301,17 @@ async def measure(lines: int, edits: int, hovers: int) -> Figures:
     return Figures(lines, open_ms, everywhere, tail, hover_ms, kinds_ms, peak)
 
 
-async def measure_program(program: Path, edits: int, hovers: int) -> ProgramFigures:
-    """The figures of a given program, opened under its own name in an empty folder (so that
-    nothing else beside the file on disk is read as part of the workspace)."""
+async def measure_program(program: Path, edits: int, hovers: int, in_place: bool = False) -> ProgramFigures:
+    """The figures of a given program, opened under its own name in an empty folder, so that
+    nothing beside the file is read as part of the workspace; ``in_place``: where it is, with
+    its folder as the workspace (as the shared harness opens it), other programs there included."""
     text = program.read_text("utf-8")
-    folder = Path(tempfile.mkdtemp(prefix="cncmacro-lsp-bench-"))
-    path = folder / program.name
-    path.write_text(text, "utf-8")
+    if in_place:
+        folder, path = program.resolve().parent, program.resolve()
+    else:
+        folder = Path(tempfile.mkdtemp(prefix="cncmacro-lsp-bench-"))
+        path = folder / program.name
+        path.write_text(text, "utf-8")
     uri = path.as_uri()
     doc_lines = text.split("\n")
     lines = len(doc_lines) - (1 if text.endswith("\n") else 0)
@@ -366,7 +372,8 @@ async def measure_program(program: Path, edits: int, hovers: int) -> ProgramFigu
         peak = s.peak_mb()
     finally:
         await s.stop()
-        shutil.rmtree(folder, ignore_errors=True)
+        if not in_place:
+            shutil.rmtree(folder, ignore_errors=True)
     notes = [f"{missed} edits got no diagnostics within {edit_timeout:.0f} s (counted as that)"] if missed else []
     if not hover_ms:
         notes.append("no # variable to hover")
@@ -439,13 +446,18 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--sizes", default="2000,20000,100000", help="generated programs' lines, e.g. 2000,1000000")
     ap.add_argument("--program", action="append", type=Path, default=[], help="measure this file instead (repeatable)")
+    ap.add_argument(
+        "--in-place",
+        action="store_true",
+        help="open each --program where it is, its folder the workspace (other programs there are read too)",
+    )
     ap.add_argument("--edits", type=int, default=40, help="edits per place")
     ap.add_argument("--hovers", type=int, default=200)
     args = ap.parse_args()
     if args.program:
         measured = []
         for program in args.program:
-            measured.append(asyncio.run(measure_program(program, args.edits, args.hovers)))
+            measured.append(asyncio.run(measure_program(program, args.edits, args.hovers, args.in_place)))
             print(f"measured {program.name}", file=sys.stderr)
         report_programs(measured)
         return 0
