@@ -24,11 +24,12 @@ MAX_LABEL = 99999
 def check_statements(block: Block, ctx: LineContext, facts: LineFacts) -> None:
     """Findings and jumps of a block that holds macro statements."""
     problems = validate_block(block, ctx.dialect)
-    nc = next((p for p in problems if p.rule == NC_AND_STATEMENT), None)
-    if nc is not None:
-        facts.findings.append(block_finding(nc, ctx.locale))
-        return
-    facts.findings.extend(block_finding(p, ctx.locale) for p in problems if p.rule == MISSING_THEN)
+    if problems:  # seldom: a block's problems are looked at only when it has some
+        nc = next((p for p in problems if p.rule == NC_AND_STATEMENT), None)
+        if nc is not None:
+            facts.findings.append(block_finding(nc, ctx.locale))
+            return
+        facts.findings.extend(block_finding(p, ctx.locale) for p in problems if p.rule == MISSING_THEN)
     for s in block.statements:
         _statement(s, ctx, facts)
 

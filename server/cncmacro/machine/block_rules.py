@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from types import EllipsisType
 
 from ..bilingual import Detail, detail
 from ..dialects.alarms import DECIMAL_POINT, FORMAT, G_ARGUMENT, IMPROPER_G_CODE, NC_AND_MACRO, PROGRAM_NOT_FOUND
@@ -40,7 +41,6 @@ G_AFTER_CALL = "g-argument"  # a G code among the arguments of G65/G66
 CALL_WITHOUT_P = "call-without-p"  # G65/G66 without P
 UNKNOWN_G_CODE = "unknown-g-code"  # a G code neither the dialect nor the machine has
 M_DECIMAL_POINT = "decimal-point"  # an M code written with a decimal point
-_RECOGNISE = object()  # validate_block's call: not given, to be recognised
 
 
 @dataclass(frozen=True, slots=True)
@@ -63,34 +63,39 @@ def validate_block(
     dialect: Dialect,
     calls: Mapping[str, object] | None = None,
     value: Callable[[Word], float | None] = code_value,
-    call: Call | object | None = _RECOGNISE,
+    call: Call | EllipsisType | None = ...,
 ) -> list[BlockProblem]:
     """The problems of ``block`` that the block alone decides, in the interpreter's order.
     ``calls`` are the machine file's call codes; ``value`` gives a word's value when it is known
     without running (the literal, by default; the interpreter also folds constant expressions);
-    ``call`` is ``recognise_call``'s answer for the block when the caller has it already."""
-    calls = calls or {}
+    ``call`` is ``recognise_call``'s answer for the block when the caller has it already (``...``:
+    not given, recognised here)."""
     out: list[BlockProblem] = []
     if block.abbreviations and not dialect.keyword_abbreviations:
         for a in block.abbreviations:
             text = abbreviation_refused(a.text, a.word, dialect)
             out.append(BlockProblem(ABBREVIATION, FORMAT, text, text, a.start, a.end))
+    words = block.words
     if block.statements:
-        if block.words or block.corners:
+        if words or block.corners:
             out.append(_nc_and_statement(block))
-        else:
+        elif not dialect.if_without_then:
             for s in block.statements:
-                _statement(s, dialect, out)
+                if s.__class__ is If and s.implicit_then:
+                    _statement(s, dialect, out)
         return out
-    if not block.words:
+    if not words:
         return out
-    if call is _RECOGNISE:
-        call = recognise_call(block.words, dialect, calls, value)
-    assert call is None or isinstance(call, Call)
-    if call is not None and call.kind in ("G65", "G66"):
-        _macro_call(block.words, call.at, call.kind, call.arithmetic, dialect, out)
-    elif call is None or not call.configured:  # a configured code's other words are its arguments
-        _refused_words(block.words, dialect, calls, value, out)
+    if calls is None:
+        calls = {}
+    if call is ...:
+        call = recognise_call(words, dialect, calls, value)
+    if call is None:
+        _refused_words(words, dialect, calls, value, out)
+    elif call.kind == "G65" or call.kind == "G66":
+        _macro_call(words, call.at, call.kind, call.arithmetic, dialect, out)
+    elif not call.configured:  # a configured code's other words are its arguments
+        _refused_words(words, dialect, calls, value, out)
     return out
 
 
@@ -115,7 +120,7 @@ def _statement(s: Statement, dialect: Dialect, out: list[BlockProblem]) -> None:
     if s.__class__ is not If:
         return
     then = s.then
-    if s.implicit_then and then is not None and not dialect.if_without_then:
+    if s.implicit_then and then is not None:  # a dialect without if_without_then (validate_block)
         text = missing_then(dialect)
         out.append(BlockProblem(MISSING_THEN, FORMAT, text, text, then.start, then.end))
     if then is not None:
@@ -216,4 +221,7 @@ def _refused_words(
 
 def first_alarm(problems: list[BlockProblem]) -> BlockProblem | None:
     """The problem the control stops at: the first that stops."""
-    return next((p for p in problems if p.stops), None)
+    for p in problems:
+        if p.stops:
+            return p
+    return None

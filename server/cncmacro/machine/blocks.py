@@ -287,7 +287,8 @@ class CompiledFile:
     def _body(self, block: Block, pc: int, nxt: int) -> Runner:
         label = block.label
         if block.statements or block.abbreviations:  # the block rules of a macro statement (block_rules.py)
-            problem = first_alarm(validate_block(block, self.machine.dialect))
+            problems = validate_block(block, self.machine.dialect)
+            problem = first_alarm(problems) if problems else None
             if problem is not None and problem.rule != MISSING_THEN:
                 return raiser(problem.alarm, problem.message)
             if len(block.statements) > 1:
