@@ -389,3 +389,90 @@ def test_4_control_flow_cross_line_findings_follow_the_edits_that_change_them(tm
     macro.unlink()
     ws.file_changed(str(macro))  # the called program is gone from the folder
     assert undefined() == [(5, "program-not-found")]
+
+
+# ---------------------------------------------------------------- generated programs
+# CAM-like programs as the benchmarks generate them, small: absolute moves that set every axis,
+# #1xx arithmetic, forward jumps to sequence numbers, short loops, macro calls and clock reads
+# (directly or through indirection). Coordinates typed anywhere, and other lines replaced.
+
+GEN_MACRO = ["O9003", "#101=#101+#1", "G01 X#1 Y3. Z-1. F300.", "M99"]
+GEN_MACRO_CLOCK = ["O9003", "#101=#101+#1", "G01 X#1 Y3. Z-1. F300.", "#142=#3002", "M99"]
+
+
+@st.composite
+def generated_program(draw: st.DrawFn) -> tuple[list[str], list[str]]:
+    """A main program and the macro it calls; a program that reads the clock, directly or
+    through indirection, or none (the clock is compared only when one of them may read it)."""
+    clocked = draw(st.booleans())
+    lines = ["O0001", "G90 G17 G21", "#100=2.5", "#101=1", *(["#3001=0", "#20=3001"] if clocked else [])]
+    kinds = ["move", "move", "move", "calc", "loop", "call", "jump", *(["clock", "indirect"] if clocked else [])]
+    segments = draw(st.integers(2, 8))
+    for label in range(1, segments + 1):
+        for kind in draw(st.lists(st.sampled_from(kinds), min_size=2, max_size=10)):
+            x, y, z = draw(st.integers(0, 50)), draw(st.integers(-50, 50)), draw(st.integers(-20, 5))
+            feed = draw(st.sampled_from([300, 800, 1500]))
+            if kind == "move":
+                lines.append(f"G01 X{x}.{draw(st.integers(0, 9))} Y{y}. Z{z}. F{feed}")
+            elif kind == "calc":
+                lines.append(f"#10{draw(st.integers(0, 3))}=#100*{draw(st.integers(1, 5))}+SIN[#101]")
+            elif kind == "loop":
+                lines += ["#130=0", f"WHILE[#130 LT {draw(st.integers(1, 4))}] DO1", f"G01 X#130 Y{y}. Z{z}. F{feed}",
+                          "#130=#130+1", "END1"]  # fmt: skip
+            elif kind == "call":
+                lines.append(f"G65 P9003 A{draw(st.integers(1, 3))}.")
+            elif kind == "clock":
+                lines += ["#140=#3001", "IF[#140 GT 60000] THEN #141=1/0"]
+            elif kind == "indirect":
+                lines.append("#143=#[#20]")
+            else:
+                lines.append(f"IF[#10{draw(st.integers(0, 3))} GT {draw(st.integers(0, 20))}] GOTO {label}")
+        lines.append(f"N{label} G01 X0. Y0. Z5. F{feed}")
+    end = ["#144=#3001"] if clocked else []  # the time at the end: a clock the runs disagree on shows
+    return [*lines, *end, "G00 Z50.", "M30"], GEN_MACRO_CLOCK if clocked and draw(st.booleans()) else GEN_MACRO
+
+
+GEN_LINES = ["G01 X7. Y7. Z1. F800", "G01 X1. Y1. Z1. F0.001", "#100=30", "#101=0", "#3001=500", "#20=3002", "",
+             "G65 P9003 A9.", "#150=#3001"]  # fmt: skip
+GEN_EDITS = st.one_of(
+    st.tuples(st.just("digit"), st.sampled_from(["1", "9", "0"])),  # typed after the X of a move
+    st.tuples(st.just("line"), st.sampled_from(GEN_LINES)),
+)
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(program=generated_program(), edits=st.lists(st.tuples(st.integers(1, 80), GEN_EDITS, st.booleans()), min_size=1,
+       max_size=4), chunk=st.sampled_from([5, 7, 16]))  # fmt: skip
+def test_4_control_flow_generated_programs_after_edits_equal_runs_from_scratch(tmp_path, monkeypatch, program, edits,
+                                                                              chunk):  # fmt: skip
+    """Coordinates typed and lines replaced in generated CAM programs with loops, calls and
+    clock reads, in the program or in the macro it calls: whether the resumed run converges
+    or not, the result is the same as an analysis from scratch."""
+    monkeypatch.setattr(run_checks, "CHUNK", chunk)
+    ws = WorkspaceAnalysis(settings=MachineSettings(date=20261122, time=80000), max_blocks=2000)
+    lines, macro = program
+    texts = {"MAIN.nc": "\n".join(lines), "O9003.nc": "\n".join(macro)}
+    for file, text in texts.items():
+        (tmp_path / file).write_text(text)
+        ws.open(str(tmp_path / file), text, 0)
+    main = str(tmp_path / "MAIN.nc")
+    snapshot(ws, main)
+    for version, (at, (how, text), in_macro) in enumerate(edits, start=1):
+        path = str(tmp_path / "O9003.nc") if in_macro and how == "digit" else main
+        doc = ws.document(path)
+        assert doc is not None
+        if how == "digit":  # into a coordinate of a move (the distance, and so the time, changes)
+            moves = [k for k, line in enumerate(doc.lines) if "X" in line]
+            if not moves:  # the edits before replaced every move
+                continue
+            at = moves[at % len(moves)]
+            col = doc.lines[at].index("X") + 1
+            ws.change(path, at, col, at, col, text, version)
+        else:
+            at = 1 + at % (len(doc.lines) - 2)
+            ws.change(path, at, 0, at, len(doc.lines[at]), text, version)
+        got = snapshot(ws, main)
+        scratch = WorkspaceAnalysis(settings=MachineSettings(date=20261122, time=80000), max_blocks=2000)
+        for file in texts:
+            scratch.open(str(tmp_path / file), ws.document(str(tmp_path / file)).text, 0)  # type: ignore[union-attr]
+        assert got == snapshot(scratch, main)
