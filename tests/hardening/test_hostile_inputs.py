@@ -118,10 +118,13 @@ def test_mixed_line_breaks_keep_every_line_and_column(tmp_path: Path, lsp_target
 
 
 def test_an_endless_loop_ends_at_the_block_budget_with_run_limit(tmp_path: Path) -> None:
-    for body in ("N1 #100=#100+1\nGOTO1", "WHILE[1 EQ 1]DO1\n#100=#100+1\nEND1", "DO1\nEND1"):
+    for body in ("N1 #100=#100+1\nGOTO1", "WHILE[1 EQ 1]DO1\n#100=#100+1\nEND1"):
         diags = analyse(f"O0001\n{body}\nM30\n", tmp_path, max_blocks=5_000)
         assert codes(diags) == ["run-limit"], body
         assert "5000 blocks" in diags[0].message or "5000 blocks" in diags[-1].message
+    # a loop that changes nothing stops sooner, as an endless loop (tests/test_diagnostics_run_endless_loop.py)
+    diags = analyse("O0001\nDO1\nEND1\nM30\n", tmp_path, max_blocks=5_000)
+    assert codes(diags) == ["run-limit"] and diags[0].message.startswith("an endless loop")
 
 
 def test_a_self_recursive_m98_is_a_nesting_depth_error(tmp_path: Path) -> None:

@@ -161,8 +161,9 @@ CODES: dict[str, Code] = _codes(
     Code("vacant-argument", INFORMATION,
          detail("A macro reads an argument that a caller never passes.", "宏程序读取了调用者没有传递的自变量。"), RUN),
     Code("run-limit", INFORMATION,
-         detail("The analysis run stopped at its block budget (a possible endless loop).",
-                "分析运行在程序段上限处停止（可能是死循环）。"),
+         detail("The analysis run stopped at its block budget (a possible endless loop), or in an endless "
+                "loop that comes back with nothing changed.",
+                "分析运行在程序段上限处停止（可能是死循环），或停在一个再次执行时没有任何变化的死循环中。"),
          RUN),
     Code("not-executed", HINT,
          detail("Blocks that the analysis runs never reached.", "分析运行从未到达的程序段。"), RUN),

@@ -26,7 +26,14 @@ most of the file's share, ``FILE_BUDGETS`` budgets, so that a file of many progr
 loop for ever is analysed in bounded time too), a wall-clock limit (``max_seconds``, counted from the start or the last
 rewind, across cancelled and resumed advances) and a cap on what the machine records
 (``max_records`` notes: messages, DPRNT output, call remarks). A run that reaches one stops
-with a ``run-limit`` diagnostic saying which. Checkpoints are kept at chunk boundaries only
+with a ``run-limit`` diagnostic saying which. A run that comes back to the same place with an
+equal state can never end, and stops there sooner, with a ``run-limit`` diagnostic that says so:
+at a jump back or a change of frame the machine asks ``came_back``, which counts the passes of
+each; at the ``LOOK_FROM``-th pass and every power of two after it, the run pauses there and
+keeps a ``Snapshot``, and compares it with the state at the next pass (``look``,
+``machine.tracking.same_state``, with the clock whenever a program the run entered may read it:
+``may_read_clock``, the decision convergence uses). A loop whose state repeats only every few
+passes runs on to the budget. Checkpoints are kept at chunk boundaries only
 (a ``#3006`` pause in a loop does not add one) and, beyond ``MAX_CHECKPOINTS``, every other
 one is dropped and the interval doubled.
 """
@@ -35,7 +42,7 @@ from __future__ import annotations
 
 import time
 from bisect import bisect_left
-from collections.abc import Callable, Container
+from collections.abc import Callable, Container, Iterable
 from dataclasses import dataclass, field
 from operator import itemgetter
 from pathlib import Path
@@ -49,6 +56,7 @@ from ..machine import CallSite, Machine, Snapshot
 from ..machine.calls import letters_for_local
 from ..machine.observer import RunObserver
 from ..machine.status import FINISHED, RunStatus
+from ..machine.tracking import same_state
 from .codes import MACRO_ALARM, alarm_code
 from .diagnostics import Diagnostic, Related, diagnostic
 from .run_convergence import Earlier, keep_earlier, try_converge
@@ -58,6 +66,7 @@ MAX_SECONDS = 30.0  # wall-clock limit of one run
 MAX_RECORDS = 100_000  # notes (messages, DPRNT output, remarks) one run may record
 MAX_CHECKPOINTS = 400  # beyond this, every other checkpoint is dropped
 FILE_BUDGETS = 3  # the runs from the programs of one file together run at most this many block budgets
+LOOK_FROM = 256  # the pass of a jump back at which the run first looks whether it comes back unchanged
 
 Value = float | None
 
@@ -139,6 +148,13 @@ class EntryRun(RunObserver):
         self.earlier: Earlier | None = None  # the run before the edits, until this one converges
         self.rerun_blocks = 0  # blocks run since the last edit
         self.reads_clock: Callable[[str], bool] = lambda path: True  # may a program of this file read the clock?
+        # endless loops (``came_back``): passes of each jump back (keyed by ``_jump_key``), the
+        # state kept at a pass to compare with the next, the pass to look at now, and where an
+        # endless loop was found (file, line)
+        self.back_passes: dict[int, int] = {}
+        self.watches: dict[int, tuple[int, Snapshot]] = {}
+        self.looking: tuple[int, int, int, int] | None = None  # (key, pass, line, to)
+        self.endless_at: tuple[str, int] | None = None
         self.restart()
 
     # ---------------------------------------------------------------- running
@@ -162,6 +178,8 @@ class EntryRun(RunObserver):
         self.stopped_by = None
         self.serials = {}
         self.earlier = None
+        self.endless_at = None
+        self.forget_looks()
 
     def discard(self) -> None:
         """This run is dropped: free its machine (``drop_machine``)."""
@@ -192,6 +210,8 @@ class EntryRun(RunObserver):
             status = m.run(chunk, is_limit=chunk >= left)
             self.elapsed += time.perf_counter() - began
             self.rerun_blocks += m.blocks - before
+            if self.looking is not None:
+                status = self.look()
             if status == RunStatus.PAUSED:
                 m.resume()  # M00, #3006 and the end of a chunk: a simulation goes on
                 if m.blocks - self.checkpoints[-1].blocks >= self.interval:
@@ -203,6 +223,37 @@ class EntryRun(RunObserver):
                 m.status = RunStatus.LIMIT
         self.earlier = None
         return True
+
+    def may_read_clock(self, files: Iterable[str]) -> bool:
+        """Whether a program of any of ``files`` may read the simulated clock: then two states
+        are equal only with equal clocks (``same_state``'s ``clock``)."""
+        return any(self.reads_clock(path) for path in files)
+
+    # ---------------------------------------------------------------- endless loops
+    def look(self) -> RunStatus:
+        """The machine paused where ``came_back`` asked: keep its state, or compare it with the
+        state kept at the previous pass of the same jump back. Equal, the run can never end (it
+        is deterministic, and ``same_state`` compares the clock whenever a program it entered
+        may read it): it stops with ``stopped_by`` "endless"."""
+        assert self.looking is not None
+        key, k, line, to = self.looking
+        self.looking = None
+        m = self.machine
+        snap = m.snapshot()
+        kept = self.watches.pop(key, None)
+        if kept is None or kept[0] + 1 != k:
+            self.watches[key] = (k, snap)
+        elif same_state(kept[1], snap, clock=self.may_read_clock(self.last_run)):
+            self.stopped_by = "endless"
+            self.endless_at = (m.frames[-1].file, line if line >= 0 else to)
+            m.status = RunStatus.LIMIT
+        return m.status
+
+    def forget_looks(self) -> None:
+        """The run went back or its program changed: count the passes of jumps back afresh."""
+        self.back_passes = {}
+        self.watches = {}
+        self.looking = None
 
     def new_serial(self, step: int, known: bool = True) -> int:
         """A serial for the chunk starting at ``step`` (or a vague one: ran by ``step`` or never)."""
@@ -227,7 +278,7 @@ class EntryRun(RunObserver):
         if lines is None:
             self.earlier = None
             return
-        if self.earlier is None and self.finished and self.stopped_by is None:
+        if self.earlier is None and self.finished and self.stopped_by in (None, "endless"):
             self.earlier = keep_earlier(self)
         if self.earlier is not None:
             self.earlier.changed.setdefault(path, set()).update(lines)
@@ -259,6 +310,8 @@ class EntryRun(RunObserver):
         self.passes = dict(self.pass_marks[keep])
         self.elapsed = 0.0
         self.stopped_by = None
+        self.endless_at = None
+        self.forget_looks()
         m = self.machine
         m.restore(snap)
         at = snap.blocks
@@ -318,6 +371,7 @@ class EntryRun(RunObserver):
         cf = m.compiled.get(path)
         if self.earlier is not None and path in self.earlier.files:
             self.earlier = None
+        self.forget_looks()
         if cf is not None:
             cf.reset()
             if path in self.last_run:
@@ -327,6 +381,7 @@ class EntryRun(RunObserver):
     def forget_lines(self, path: str, lines: list[int]) -> None:
         """These lines of ``path`` changed: compile them afresh when they run."""
         cf = self.machine.compiled.get(path)
+        self.forget_looks()
         if cf is not None:
             for line in lines:
                 if 0 <= line < len(cf.code) - 1:
@@ -356,6 +411,15 @@ class EntryRun(RunObserver):
         key = (file, line, number)
         if key not in self.state.vacant:
             self.state.vacant[key] = VacantRead(self.stamp, number, file, line, chain)
+
+    def came_back(self, line: int, to: int) -> bool:
+        key = (line << 32) | to
+        k = self.back_passes.get(key, 0) + 1
+        self.back_passes[key] = k
+        if (k >= LOOK_FROM and not k & (k - 1)) or (self.watches and key in self.watches):
+            self.looking = (key, k, line, to)
+            return True
+        return False
 
     def loop_pass(self, level: int, do_line: int, again: bool) -> None:
         key = (level, do_line)
@@ -454,6 +518,14 @@ def run_diagnostics(
         code = alarm_code(a.number, a.subject, base)
         if code == MACRO_ALARM or (a.file, a.line) not in invalid:
             out.append(_alarm_diagnostic(run, code, line_text, locale))
+    elif m.status == RunStatus.LIMIT and m.frames and run.endless_at is not None:
+        path, line = run.endless_at
+        en = (
+            f"an endless loop: line {line + 1} comes back with every variable and position unchanged; "
+            "the control would never leave it"
+        )
+        zh = f"死循环：第 {line + 1} 行再次执行时所有变量和位置都没有变化，控制器永远不会离开这里"
+        out.append(_diagnostic(path, line, "run-limit", en, zh, m.chain(), None, False, line_text, locale))
     elif m.status == RunStatus.LIMIT and m.frames:
         f = m.frames[-1]
         if run.stopped_by == "time":

@@ -15,6 +15,8 @@ the earlier run executed it again later, and dropped otherwise; a vacant-argumen
 there must have been found again, because a later one would be hidden behind it. When the
 earlier run stopped at its block budget and the blocks shifted, or the shifted end passes the
 budget, the run goes back to its last checkpoint within the budget and runs on from there.
+An earlier run that stopped in an endless loop (``EntryRun.look``) is taken over the same way:
+the rest of it is that loop, found again (unless the shifted end passes the budget).
 
 A chunk stamp (a serial) is either known, ``(first step of its chunk, True)``, or, once a
 rewind forgot the chunk, ``(the last step it may stand for, False)``: the line ran then or
@@ -57,6 +59,7 @@ class Earlier:
     files: frozenset[str]
     serials: Serials
     resume: int  # the step the resumed run went back to (the earliest, over several rewinds)
+    endless_at: tuple[str, int] | None  # where the run found an endless loop, when it stopped so
     changed: dict[str, set[int]] = field(default_factory=dict)  # file -> edited lines
     reads_clock: bool | None = None  # decided at the first comparison
     by_key: dict[tuple[Any, ...], list[int]] = field(default_factory=dict)
@@ -91,7 +94,7 @@ def keep_earlier(run: EntryRun) -> Earlier:
     m = run.machine
     earlier = Earlier(list(run.checkpoints), list(run.pass_marks), m.snapshot(), dict(run.passes), list(m.notes),
                       list(m.output), run.state, run.last_run, frozenset(run.last_run), dict(run.serials),
-                      m.blocks)  # fmt: skip
+                      m.blocks, run.endless_at)  # fmt: skip
     for j, snap in enumerate(earlier.checkpoints):
         earlier.by_key.setdefault(position_key(snap.frames), []).append(j)
     return earlier
@@ -107,7 +110,7 @@ def try_converge(run: EntryRun) -> bool:
     if not candidates:
         return False
     if e.reads_clock is None:
-        e.reads_clock = any(run.reads_clock(path) for path in e.files)
+        e.reads_clock = run.may_read_clock(e.files)
     m = run.machine
     running = {(k, d) for k, f in enumerate(m.frames) for d in f.loops}
     mine = {key: v for key, v in run.passes.items() if key in running}
@@ -194,7 +197,9 @@ def _adopt(run: EntryRun, e: Earlier, j: int, plan: tuple[list[tuple[str, int]],
     m.notes = merged_notes
     m.output = merged_output
     run.earlier = None
-    if m.blocks > run.max_blocks or (m.status == RunStatus.LIMIT and delta != 0):
+    if e.endless_at is not None:  # the rest of the run is the same endless loop
+        run.stopped_by, run.endless_at = "endless", e.endless_at
+    if m.blocks > run.max_blocks or (m.status == RunStatus.LIMIT and e.endless_at is None and delta != 0):
         run.back_to(min(m.blocks, run.max_blocks) - 1)
 
 

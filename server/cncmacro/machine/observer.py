@@ -11,7 +11,9 @@ nothing for any of this. With an observer:
 - ``Machine.run`` runs ``tracking.run_tracked``, which stamps each line it runs with
   ``track_serial`` in ``last_run`` (file path -> one slot per line, -1 for never) and tells
   ``first_run`` of a line whose stamp was below ``track_floor``: a line not run since the
-  observer last raised the floor.
+  observer last raised the floor, and asks ``came_back`` at each jump back within a frame and
+  each change of frame, pausing the run when it answers True (the state is then whole: a
+  ``Snapshot`` can be taken).
 
 The methods here do nothing: a subclass overrides what it needs. The analysis's ``EntryRun``
 (``analysis/run_checks.py``) is one; it sets ``track_serial`` before each chunk it runs,
@@ -48,3 +50,9 @@ class RunObserver:
     def loop_pass(self, level: int, do_line: int, again: bool) -> None:
         """The loop head on ``do_line`` of call level ``level`` runs (``again``: the loop was
         already running, else it starts)."""
+
+    def came_back(self, line: int, to: int) -> bool:
+        """The block on ``line`` jumped back to ``to``, at or before it, in the same frame; or
+        (``line`` -1) the run went on in another frame (a call or a return) at ``to``. True
+        pauses the run before the block on ``to``."""
+        return False

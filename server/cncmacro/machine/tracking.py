@@ -10,7 +10,11 @@ analysis last set the floor (after going back to a checkpoint), and ``RunObserve
 hears of it, instead of hearing of each line when it is compiled: the analysis can then go
 back without compiling every later line again. It is a separate loop so that plain runs and
 the debugger pay nothing for it; ``tests/test_run_observed_equals_plain.py`` holds it to the
-plain loop (the same final variables, position, status and alarm).
+plain loop (the same final variables, position, status and alarm). At a jump back within a
+frame (``GOTO`` or ``IF … GOTO`` to a line at or before its own, a loop's ``END``) and when the
+run enters or returns to another frame (a call, ``M99``, ``M99 P``) it asks
+``RunObserver.came_back``, and pauses when that says so: the analysis then looks at the state
+(an endless loop comes back to the same place with an equal state).
 
 ``same_state`` compares two snapshots in everything that can influence later execution or
 findings (variables of every frame, commons, system store, frames with their pcs, loops and
@@ -58,6 +62,7 @@ def run_tracked(m: Machine, observer: RunObserver, max_blocks: int | None, is_li
     serial = observer.track_serial
     floor = observer.track_floor
     first = observer.first_run
+    back = observer.came_back
     frame = m.frames[-1]
     cf = frame.code
     code = cf.code
@@ -86,8 +91,17 @@ def run_tracked(m: Machine, observer: RunObserver, max_blocks: int | None, is_li
                 first(cf.file.path, pc, n)
             trk[pc] = serial
             n += 1
-            pc = c(m, pc)
-            if pc < 0:
+            to = c(m, pc)
+            if to > pc:
+                pc = to
+            elif to >= 0:  # a jump back in the same frame
+                if back(pc, to):
+                    pc = to
+                    m.status = RunStatus.PAUSED
+                    break
+                pc = to
+            else:
+                pc = to
                 if m.status != RunStatus.RUNNING:
                     break
                 frame = m.frames[-1]
@@ -95,6 +109,9 @@ def run_tracked(m: Machine, observer: RunObserver, max_blocks: int | None, is_li
                 code = cf.code
                 trk = track_list(observer, cf)
                 pc = frame.pc
+                if back(-1, pc):  # another frame: a call, or a return (M99 P too)
+                    m.status = RunStatus.PAUSED
+                    break
             if not n % CANCEL_CHECK and (m.cancel_requested or m.pause_requested):
                 m.take_request()
                 break
