@@ -222,6 +222,16 @@ class Session:
         finally:
             await self.client.stop()
 
+    def change(self, uri: str, version: int, line: int, start: int, end: int, text: str) -> None:
+        """Send one edit: ``text`` in place of the columns ``start``..``end`` (UTF-16) of ``line``."""
+        where = types.Range(types.Position(line, start), types.Position(line, end))
+        self.client.text_document_did_change(
+            types.DidChangeTextDocumentParams(
+                types.VersionedTextDocumentIdentifier(uri=uri, version=version),
+                [types.TextDocumentContentChangePartial(range=where, text=text)],
+            )
+        )
+
     async def hover(self, uri: str, line: int, col: int) -> float:
         t0 = time.perf_counter()
         await self.client.text_document_hover_async(
@@ -266,16 +276,7 @@ async def measure(lines: int, edits: int, hovers: int) -> Figures:
             col = doc_lines[line].index("X") + 1
             fut = s.expect(version)
             t0 = time.perf_counter()
-            client.text_document_did_change(
-                types.DidChangeTextDocumentParams(
-                    types.VersionedTextDocumentIdentifier(uri=uri, version=version),
-                    [
-                        types.TextDocumentContentChangePartial(
-                            range=types.Range(types.Position(line, col), types.Position(line, col)), text="1"
-                        )
-                    ],
-                )
-            )
+            s.change(uri, version, line, col, col, "1")
             ms = (await arrival(fut, edit_timeout, f"version {version}") - t0) * 1000
             doc_lines[line] = doc_lines[line][:col] + "1" + doc_lines[line][col:]
             await asyncio.sleep(0.02)  # as between keystrokes
@@ -344,20 +345,7 @@ async def measure_program(program: Path, edits: int, hovers: int, in_place: bool
             version += 1
             fut = s.expect(version)
             t0 = time.perf_counter()
-            client.text_document_did_change(
-                types.DidChangeTextDocumentParams(
-                    types.VersionedTextDocumentIdentifier(uri=uri, version=version),
-                    [
-                        types.TextDocumentContentChangePartial(
-                            range=types.Range(
-                                types.Position(line, utf16(doc_lines[line], col)),
-                                types.Position(line, utf16(doc_lines[line], col + 1)),
-                            ),
-                            text=digit,
-                        )
-                    ],
-                )
-            )
+            s.change(uri, version, line, utf16(doc_lines[line], col), utf16(doc_lines[line], col + 1), digit)
             doc_lines[line] = doc_lines[line][:col] + digit + doc_lines[line][col + 1 :]
             try:
                 edits_ms[place].append((await asyncio.wait_for(fut, edit_timeout) - t0) * 1000)
