@@ -2,8 +2,8 @@
 kept up to date by edits.
 
 Hover ("where is #100 written", "which jumps land on N10"), references and rename look only at
-these lines. The sites of a block are computed once per block object (blocks are shared by line
-text; ``SiteMemo``, owned by whoever owns the documents). A ``SiteIndex`` keeps the sorted lines
+these lines. The sites of a block are found once per block object, in the one per-line fact
+cache (``block_memo.py``, owned by whoever owns the documents). A ``SiteIndex`` keeps the sorted lines
 that have sites and, from the first question on, maps from a variable number to the lines that
 write it and that mention it, and from a label number to the lines that jump to it; an edit only
 re-examines the lines it replaced and shifts the others. So the answer to a question costs time
@@ -19,43 +19,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from ..syntax.nodes import Block
-from .sites import JumpSite, VariableSite, jump_sites, variable_sites
-
-Sites = tuple[tuple[JumpSite, ...], tuple[VariableSite, ...]]
-_EMPTY: Sites = ((), ())
-_MEMO_LIMIT = 300_000
-
-
-class SiteMemo:
-    """The sites of blocks, memoised per block object and local call code (blocks are shared
-    by line text, so a file of repeated lines finds the sites of each text once). Owned by
-    whoever owns the documents (``Documents`` in the language server), shared by their site
-    indexes; it holds its blocks, so it is emptied when it reaches ``_MEMO_LIMIT`` entries."""
-
-    def __init__(self) -> None:
-        self._memo: dict[tuple[int, float | None], tuple[Block, Sites]] = {}
-
-    def block_sites(self, block: Block, local_call: float | None = None) -> Sites:
-        """The jumps and variables of a block; ``local_call`` is the dialect's
-        ``local_subprogram_code``."""
-        plain = block.plain
-        if plain is not None:
-            text = plain.upper()
-            if "M9" not in text and "H8" not in text and (local_call is None or "M" not in text):
-                return _EMPTY
-        if plain is None and not block.statements and not block.words and not block.corners:
-            return _EMPTY
-        memo = self._memo
-        key = (id(block), local_call)
-        hit = memo.get(key)
-        if hit is not None and hit[0] is block:
-            return hit[1]
-        sites = (tuple(jump_sites(block, local_call)), tuple(variable_sites(block)))
-        if len(memo) >= _MEMO_LIMIT:
-            memo.clear()
-        memo[key] = (block, sites)
-        return sites
-
+from .block_memo import NO_SITES, BlockMemo, Sites
+from .sites import VariableSite
 
 Lines = dict[int, list[int]]  # a label or variable number -> its sorted lines
 
@@ -109,10 +74,10 @@ class SiteIndex:
     them the first time one is asked for. ``local_call`` is the document's dialect's local
     subprogram call code (Haas ``M97``), whose P is a jump to a label."""
 
-    def __init__(self, blocks: list[Block], local_call: float | None = None, memo: SiteMemo | None = None) -> None:
+    def __init__(self, blocks: list[Block], local_call: float | None = None, memo: BlockMemo | None = None) -> None:
         self._blocks = blocks
         self.local_call = local_call
-        self.memo = memo if memo is not None else SiteMemo()
+        self.memo = memo if memo is not None else BlockMemo()
         self._lines: list[int] | None = None
         self._sites: list[Sites] = []  # the sites of each of ``_lines``, as they were indexed
         self._maps: _Maps | None = None
@@ -122,7 +87,7 @@ class SiteIndex:
         if self._lines is None:
             lines: list[int] = []
             sites: list[Sites] = []
-            block_sites = self.memo.block_sites
+            block_sites = self.memo.sites
             for i, b in enumerate(self._blocks):
                 s = block_sites(b, self.local_call)
                 if s[0] or s[1]:
@@ -152,7 +117,7 @@ class SiteIndex:
         fresh_lines: list[int] = []
         fresh_sites: list[Sites] = []
         for k in range(new_count):
-            s = self.memo.block_sites(blocks[start + k], self.local_call)
+            s = self.memo.sites(blocks[start + k], self.local_call)
             if s[0] or s[1]:
                 fresh_lines.append(start + k)
                 fresh_sites.append(s)
@@ -197,7 +162,7 @@ class SiteIndex:
         """The sites of an indexed ``line`` (none for another line)."""
         lines = self.lines
         k = bisect_left(lines, line)
-        return self._sites[k] if k < len(lines) and lines[k] == line else _EMPTY
+        return self._sites[k] if k < len(lines) and lines[k] == line else NO_SITES
 
 
 def _within(lines: list[int], start: int, end: int | None) -> list[int]:

@@ -3,7 +3,8 @@
 ``StaticLines`` holds, for each line that has any, the syntax problems of its block and what
 the block says by itself (``LineFacts``: findings, jumps, calls, returns). Both are pure
 functions of the block and the ``LineContext``, and blocks are shared per line text, so the
-facts are memoised per block as well (a file of repeated lines checks each text once). An
+facts come from the one per-line fact cache (``block_memo.py``): a file of repeated lines
+checks each text once. An
 edit calls ``replace`` with the lines it replaced: only the new lines are looked at, and the
 lines after them are renumbered (a cost in proportion to the lines that have facts, not to
 the file). ``diagnostics`` then adds the cross-line checks (labels, loops, call targets),
@@ -23,12 +24,10 @@ from ..dialects.dialect import Dialect
 from ..library.programs import ProgramLibrary
 from ..syntax.nodes import Block, Problem
 from ..syntax.program import Program
+from .block_memo import BlockMemo
 from .diagnostics import Diagnostic
 from .line_facts import LineContext, LineFacts
-from .static_checks import cross_line_diagnostics, findings_of, line_facts
-
-_MEMO_LIMIT = 200_000
-_MEMO_MIN = 2_000  # entries kept while a document is edited, at least (twice its lines)
+from .static_checks import cross_line_diagnostics, findings_of
 
 _V = TypeVar("_V")
 
@@ -36,40 +35,25 @@ _V = TypeVar("_V")
 class StaticLines:
     """See the module docstring."""
 
-    def __init__(self, blocks: list[Block], ctx: LineContext) -> None:
+    def __init__(self, blocks: list[Block], ctx: LineContext, memo: BlockMemo | None = None) -> None:
         self.ctx = ctx
+        self.memo = memo if memo is not None else BlockMemo()
         self.facts: dict[int, LineFacts] = {}  # line -> facts, only lines that have some
         self.problems: dict[int, tuple[Problem, ...]] = {}  # line -> syntax problems
-        self._memo: dict[int, tuple[Block, LineFacts | None]] = {}  # id(block) -> (block, facts)
         # the cross-line findings, with the program and library they were found with
         self._cross: tuple[Program, ProgramLibrary | None, list[Diagnostic]] | None = None
-        self._memo_limit = _MEMO_LIMIT
         self._fill(blocks, 0, len(blocks))
 
-    def _facts_of(self, block: Block) -> LineFacts | None:
-        if block.plain is not None:
-            if self.ctx.plain_hint(block.plain) is None:
-                return None
-            return line_facts(block, self.ctx)
-        memo = self._memo
-        hit = memo.get(id(block))
-        if hit is not None and hit[0] is block:
-            return hit[1]
-        facts = line_facts(block, self.ctx)
-        if len(memo) >= self._memo_limit:  # it holds its blocks: lines typed over must not stay for good
-            memo.clear()
-        memo[id(block)] = (block, facts)
-        return facts
-
     def _fill(self, blocks: list[Block], start: int, end: int) -> None:
-        facts_of = self._facts_of
+        facts_of = self.memo.facts
+        ctx = self.ctx
         facts = self.facts
         problems = self.problems
         for line in range(start, end):
             block = blocks[line]
             if block.problems:
                 problems[line] = block.problems
-            f = facts_of(block)
+            f = facts_of(block, ctx)
             if f is not None:
                 facts[line] = f
 
@@ -79,7 +63,7 @@ class StaticLines:
         label, header, ``%`` or loop marker)."""
         end = start + old_count
         delta = new_count - old_count
-        self._memo_limit = max(_MEMO_MIN, min(_MEMO_LIMIT, 2 * len(blocks)))
+        self.memo.fit(len(blocks))
         if structural or delta or self._connects(start, end):
             self._cross = None
         _shift(self.facts, start, end, delta)

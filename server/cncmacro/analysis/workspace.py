@@ -82,6 +82,7 @@ from ..machine.status import RunStatus
 from ..syntax.document import ParsedDocument
 from ..syntax.nodes import Block
 from . import static_checks
+from .block_memo import BlockMemo
 from .call_index import CallIndex
 from .caller_entries import CallerSearch
 from .diagnostics import UNNECESSARY, Diagnostic, diagnostic
@@ -146,8 +147,10 @@ class WorkspaceAnalysis:
         severities: dict[str, str] | None = None,
         workspace_folders: list[str] = (),  # type: ignore[assignment]
         files: FileCache | None = None,
+        memo: BlockMemo | None = None,
     ) -> None:
         self.settings = settings or MachineSettings()
+        self.memo = memo if memo is not None else BlockMemo()  # what each block says by itself
         self.dialect_setting = dialect
         self.search_paths = [str(p) for p in search_paths]
         self.locale = locale
@@ -269,9 +272,7 @@ class WorkspaceAnalysis:
 
     def _calls_in(self, block: Block, d: _Open) -> bool:
         ctx = static_checks.line_context(self.dialect_of(d.doc.lines), self.settings, self.locale)
-        if block.plain is not None and ctx.plain_hint(block.plain) is None:
-            return False
-        facts = static_checks.line_facts(block, ctx)
+        facts = self.memo.facts(block, ctx)
         return facts is not None and bool(facts.calls)
 
     def _targets(self, d: _Open) -> tuple[set[int], set[str]]:
@@ -282,7 +283,7 @@ class WorkspaceAnalysis:
     def _static(self, d: _Open) -> StaticLines:
         ctx = static_checks.line_context(self.dialect_of(d.doc.lines), self.settings, self.locale)
         if d.static is None or d.static.ctx is not ctx:
-            d.static = StaticLines(d.doc.blocks, ctx)
+            d.static = StaticLines(d.doc.blocks, ctx, self.memo)
         return d.static
 
     def _units(self) -> list[tuple[tuple[str, int], FoundProgram, bool]]:

@@ -44,7 +44,8 @@ from ..library.files import (
 )
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..syntax.document import ParsedDocument
-from .site_index import FileSites, SiteIndex, SiteMemo
+from .block_memo import BlockMemo
+from .site_index import FileSites, SiteIndex
 
 log = logging.getLogger(__name__)
 
@@ -83,14 +84,14 @@ class OpenFile(Protocol):
 
 class WorkspaceIndex:
     """Parsed program files under the workspace folders, with the open documents on top.
-    ``memo`` is the site memo of the open documents' indexes, shared by those of the files on
-    disk; ``files`` reads the files (a cache of its own when none is given)."""
+    ``memo`` is the per-line fact cache of the open documents (``block_memo.py``), shared by
+    the files on disk; ``files`` reads the files (a cache of its own when none is given)."""
 
     def __init__(self, open_files: Callable[[], Iterable[OpenFile]], dialect_for: Callable[[list[str], str], Dialect],
-                 memo: SiteMemo | None = None, files: FileCache | None = None) -> None:  # fmt: skip
+                 memo: BlockMemo | None = None, files: FileCache | None = None) -> None:  # fmt: skip
         self.open_files = open_files
         self.dialect_for = dialect_for
-        self.memo = memo if memo is not None else SiteMemo()
+        self.memo = memo if memo is not None else BlockMemo()
         self.disk = files if files is not None else FileCache()
         self.roots: list[Path] = []
         self.files: dict[str, LoadedFile] = {}

@@ -90,7 +90,8 @@ class DiagnosticsEngine:
     def __init__(self, server: CncMacroServer, delay: float = DEBOUNCE_SECONDS) -> None:
         self.server = server
         # per machine file; every one reads the files on disk through the workspace index's cache
-        self.analyses: dict[Path | None, WorkspaceAnalysis] = {None: WorkspaceAnalysis(files=server.index.disk)}
+        first = WorkspaceAnalysis(files=server.index.disk, memo=server.documents.block_memo)
+        self.analyses: dict[Path | None, WorkspaceAnalysis] = {None: first}
         self._search_paths: list[str] = []
         self._folders: list[str] = []
         self._locale = "en"
@@ -154,6 +155,7 @@ class DiagnosticsEngine:
                 workspace_folders=self._folders,
                 locale=self._locale,
                 files=self.server.index.disk,
+                memo=self.server.documents.block_memo,
             )
             analysis.configure(**self._options(machine_file))
         return analysis

@@ -21,7 +21,8 @@ from urllib.parse import quote, unquote_to_bytes, urlsplit
 from lsprotocol import types
 from pygls.uris import from_fs_path, to_fs_path
 
-from ..analysis.site_index import SiteIndex, SiteMemo
+from ..analysis.block_memo import BlockMemo
+from ..analysis.site_index import SiteIndex
 from ..dialects.dialect import Dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_and_source
 from ..library.machine_file import MachineSettings
@@ -102,7 +103,8 @@ class Documents:
         self.machines = MachineFiles()  # the .cncmacro.toml of each file
         self.setting_dialect: str | None = None  # from the editor's settings
         self.encoding: Encoding = UTF16  # the client's columns, agreed at initialize
-        self.site_memo = SiteMemo()  # the sites of blocks, shared by the documents' site indexes
+        # what each block says by itself, shared by the documents' site indexes and static checks
+        self.block_memo = BlockMemo()
 
     def dialect_for(self, lines: list[str], path: str) -> Dialect:
         """The dialect of the file at ``path`` with these lines, under its machine file."""
@@ -132,7 +134,7 @@ class Documents:
             item.version,
             parsed,
             dialect,
-            SiteIndex(parsed.blocks, dialect.local_subprogram_code, self.site_memo),
+            SiteIndex(parsed.blocks, dialect.local_subprogram_code, self.block_memo),
             machine_file,
         )
         self.by_uri[item.uri] = doc
@@ -143,7 +145,7 @@ class Documents:
         analysis of that machine file)."""
         doc.parsed, doc.machine_file = parsed, machine_file
         doc.dialect = self.dialect_for(parsed.lines, doc.path)
-        doc.sites = SiteIndex(parsed.blocks, doc.dialect.local_subprogram_code, self.site_memo)
+        doc.sites = SiteIndex(parsed.blocks, doc.dialect.local_subprogram_code, self.block_memo)
 
     def change(
         self, params: types.DidChangeTextDocumentParams, apply: Callable[[OpenDocument, Edit], None] | None = None
@@ -178,7 +180,7 @@ class Documents:
             if isinstance(change, types.TextDocumentContentChangePartial):
                 doc.sites.replaced(doc.parsed.blocks, edit[0], edit[2] + 1, len(split_lines(change.text)))
             else:
-                doc.sites = SiteIndex(doc.parsed.blocks, doc.dialect.local_subprogram_code, self.site_memo)
+                doc.sites = SiteIndex(doc.parsed.blocks, doc.dialect.local_subprogram_code, self.block_memo)
         doc.version = params.text_document.version
         if header_touched:
             self._set_dialect(doc)
@@ -189,7 +191,7 @@ class Documents:
         doc.dialect = self.dialect_for(doc.parsed.lines, doc.path)
         local = doc.dialect.local_subprogram_code
         if doc.sites.local_call != local:
-            doc.sites = SiteIndex(doc.parsed.blocks, local, self.site_memo)
+            doc.sites = SiteIndex(doc.parsed.blocks, local, self.block_memo)
 
     def close(self, uri: str) -> OpenDocument | None:
         return self.by_uri.pop(uri, None)

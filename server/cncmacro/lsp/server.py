@@ -111,7 +111,7 @@ class CncMacroServer(LanguageServer):
         super().__init__("cncmacro", __version__, protocol_cls=CncMacroProtocol)
         self.documents = Documents()
         documents = self.documents
-        self.index = WorkspaceIndex(documents.by_uri.values, documents.dialect_for, documents.site_memo)
+        self.index = WorkspaceIndex(documents.by_uri.values, documents.dialect_for, documents.block_memo)
         self.settings = Settings()
         self.locale: str = "en"
         self.diagnostics = DiagnosticsEngine(self)
