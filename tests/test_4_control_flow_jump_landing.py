@@ -6,8 +6,10 @@ holds the lines after its DO up to its END), leaves the others, and may not ente
 from __future__ import annotations
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
-from cncmacro.machine.jumps import entered_loop, loops_kept
+from cncmacro.machine.jumps import LoopSpans
 from running import alarm, final, lines
 from static_helpers import check, coded
 
@@ -108,9 +110,27 @@ NESTED = {2: 10, 5: 8}
     ],
 )
 def test_4_control_flow_loops_a_jump_leaves_and_enters(from_line, target, entered, kept):
-    assert entered_loop(NESTED, from_line, target) == entered
+    spans = LoopSpans(NESTED)
+    assert spans.entered(from_line, target) == entered
     if entered is None:
-        assert loops_kept(NESTED, from_line, target) == kept
+        assert spans.kept(from_line, target) == kept
+
+
+_loops = st.dictionaries(st.integers(0, 60), st.integers(0, 60)).map(
+    lambda pairs: {do: end for do, end in pairs.items() if end > do}
+)
+
+
+@given(_loops, st.integers(-1, 62), st.integers(-1, 62))
+def test_4_control_flow_loops_held_are_found_however_loops_lie(loops, from_line, target):
+    """Nested, side by side or crossing (a program with a misplaced END): the loops a jump
+    enters and stays in are those the rule names, found without looking at every loop."""
+    spans = LoopSpans(loops)
+    holding = sorted((do, end) for do, end in loops.items() if do < target <= end)
+    assert sorted(spans.holding(target)) == holding
+    entered = [do for do, end in holding if not do < from_line <= end]
+    assert spans.entered(from_line, target) == (min(entered) if entered else None)
+    assert spans.kept(from_line, target) == sum(1 for do, end in holding if do < from_line <= end)
 
 
 def test_4_control_flow_goto_lands_on_a_label_whose_block_does_not_parse():

@@ -16,7 +16,7 @@ from __future__ import annotations
 from bisect import bisect_right
 
 from ..bilingual import pick
-from ..machine.jumps import entered_loop, goto_line
+from ..machine.jumps import LoopSpans, goto_line
 from ..syntax.program import LoopPair, Program, ProgramUnit
 from .call_targets import UNKNOWN, ProgramFinder, not_found
 from .diagnostics import Diagnostic, Related, diagnostic
@@ -41,6 +41,8 @@ class LabelChecker:
         self._starts = [u.start for u in program.units]
         self._duplicates: dict[tuple[int, int], ProgramUnit] = {}  # (unit start, label) -> unit
         self._callers: dict[int, list[tuple[int, CallSite]]] = {}  # unit start -> [(call line, call)]
+        self._spans: LoopSpans | None = None  # the program's loops, made at the first jump
+        self._loops: dict[int, LoopPair] = {}  # by DO line
 
     def unit_of(self, line: int) -> ProgramUnit:
         units = self.program.units
@@ -59,6 +61,15 @@ class LabelChecker:
             self._duplicate(unit, label)
         return self.out
 
+    def _loop_entered(self, line: int, target: int) -> LoopPair | None:
+        """The loop that a jump from ``line`` to ``target`` enters from outside, if any (the
+        interpreter's rule, ``machine.jumps.LoopSpans``)."""
+        if self._spans is None:
+            self._loops = {p.do_line: p for p in self.program.loops}
+            self._spans = LoopSpans({do: p.end_line for do, p in self._loops.items()})
+        do = self._spans.entered(line, target)
+        return None if do is None else self._loops[do]
+
     # ---------------------------------------------------------------- GOTO and H80-H86
     def _jump(self, line: int, label: int, start: int, end: int, how: str) -> None:
         unit = self.unit_of(line)
@@ -73,7 +84,7 @@ class LabelChecker:
             self._duplicates[(unit.start, label)] = unit
         target = goto_line(lines, line)
         assert target is not None
-        loop = _loop_entered(self.program.loops, line, target)
+        loop = self._loop_entered(line, target)
         if loop is not None:
             span = _label_span(self.program, loop.do_line)
             self.out.append(
@@ -172,13 +183,6 @@ class LabelChecker:
                            (Related(self.file, first, f_start, f_end, pick(loc, f"the first N{label}",
                                                                              f"第一个 N{label}")),))
             )  # fmt: skip
-
-
-def _loop_entered(loops: list[LoopPair], line: int, target: int) -> LoopPair | None:
-    """The loop that a jump from ``line`` to ``target`` enters from outside, if any (the
-    interpreter's rule, ``machine.jumps.entered_loop``)."""
-    do = entered_loop({p.do_line: p.end_line for p in loops}, line, target)
-    return None if do is None else next(p for p in loops if p.do_line == do)
 
 
 def _label_span(program: Program, line: int) -> tuple[int, int]:

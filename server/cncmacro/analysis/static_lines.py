@@ -17,6 +17,7 @@ coordinates of a 100k-line program so costs no label check at all.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TypeVar
 
 from ..bilingual import in_language, is_chinese
@@ -30,19 +31,26 @@ from .line_facts import LineContext, LineFacts
 from .static_checks import cross_line_diagnostics, findings_of
 
 _V = TypeVar("_V")
+_CHUNK = 50_000  # lines looked at between two reports of how far the look got
 
 
 class StaticLines:
     """See the module docstring."""
 
-    def __init__(self, blocks: list[Block], ctx: LineContext, memo: BlockMemo | None = None) -> None:
+    def __init__(self, blocks: list[Block], ctx: LineContext, memo: BlockMemo | None = None,
+                 looked: Callable[[int, int], None] | None = None) -> None:  # fmt: skip
         self.ctx = ctx
         self.memo = memo if memo is not None else BlockMemo()
         self.facts: dict[int, LineFacts] = {}  # line -> facts, only lines that have some
         self.problems: dict[int, tuple[Problem, ...]] = {}  # line -> syntax problems
         # the cross-line findings, with the program and library they were found with
         self._cross: tuple[Program, ProgramLibrary | None, list[Diagnostic]] | None = None
-        self._fill(blocks, 0, len(blocks))
+        if looked is None:
+            self._fill(blocks, 0, len(blocks))
+            return
+        for start in range(0, len(blocks), _CHUNK):  # ``looked(lines done, lines)`` after each chunk
+            self._fill(blocks, start, min(start + _CHUNK, len(blocks)))
+            looked(min(start + _CHUNK, len(blocks)), len(blocks))
 
     def _fill(self, blocks: list[Block], start: int, end: int) -> None:
         facts_of = self.memo.facts
@@ -110,12 +118,13 @@ class StaticLines:
                     out.append((line, None, c.name.strip().lower()))
         return out
 
-    def diagnostics(self, program: Program, file: str, dialect: Dialect, library: ProgramLibrary | None,
-                    locale: str) -> list[Diagnostic]:  # fmt: skip
-        """Syntax and static diagnostics of the document (``program`` is its current parse)."""
+    def line_diagnostics(
+        self, read_end: int, file: str, locale: str
+    ) -> tuple[list[Diagnostic], list[tuple[int, LineFacts]]]:
+        """The findings each line before ``read_end`` (the end of the tape) earns by itself, and
+        the lines with jumps, calls or returns, with their facts, for the cross-line checks."""
         out: list[Diagnostic] = []
         chinese = is_chinese(locale)
-        read_end = program.read_end  # nothing after the closing '%' is read
         for line in sorted(self.problems):
             if line >= read_end:
                 break
@@ -131,6 +140,12 @@ class StaticLines:
                 out.extend(findings_of(facts, line, file))
             if facts.jumps or facts.calls or facts.returns:
                 collected.append((line, facts))
+        return out, collected
+
+    def diagnostics(self, program: Program, file: str, dialect: Dialect, library: ProgramLibrary | None,
+                    locale: str) -> list[Diagnostic]:  # fmt: skip
+        """Syntax and static diagnostics of the document (``program`` is its current parse)."""
+        out, collected = self.line_diagnostics(program.read_end, file, locale)  # nothing after the closing '%' is read
         kept = self._cross
         if kept is None or kept[0] is not program or kept[1] is not library:
             kept = self._cross = (program, library, cross_line_diagnostics(program, file, dialect, library, locale,

@@ -79,7 +79,7 @@ from ..library.profiles import machine_profile
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..machine import block_roles
 from ..machine.status import RunStatus
-from ..syntax.document import ParsedDocument
+from ..syntax.document import ParsedDocument, split_lines
 from ..syntax.nodes import Block
 from . import static_checks
 from .block_memo import BlockMemo
@@ -94,6 +94,20 @@ from .static_lines import StaticLines
 from .unreached import UnreachedRanges
 
 log = logging.getLogger(__name__)
+
+STATIC_SHARE = 0.5  # of a first analysis's progress, the share of the per-line checks (the runs take the rest)
+
+
+@dataclass(frozen=True, slots=True)
+class Progress:
+    """How far an analysis got: what it does now (in the user's language) and the fraction done
+    (an estimate: the per-line checks, then each run)."""
+
+    what: str
+    done: float
+
+
+FIRST_SCREEN_LINES = 2_000  # the lines of a huge document checked first, before the whole (``first_screen``)
 
 Value = float | None
 MAX_CALLER_ENTRIES = 16  # programs on disk run to reach the open ones, at most
@@ -157,6 +171,7 @@ class WorkspaceAnalysis:
         self.max_blocks = max_blocks if max_blocks is not None else self.settings.max_blocks
         self.max_seconds = MAX_SECONDS  # each run's wall-clock limit and record cap (run_checks.py)
         self.max_records = MAX_RECORDS
+        self.progress = Progress("", 0.0)  # how far the analysis got (read from another thread)
         self.severities = check_overrides(dict(severities or {}))
         self.docs: dict[str, _Open] = {}
         self.runs: dict[tuple[str, int], EntryRun] = {}
@@ -194,6 +209,18 @@ class WorkspaceAnalysis:
         loaded = self.library.add_parsed(key, doc.lines, doc.program)  # it sees the document as it is edited
         self.docs[key] = _Open(key, doc, loaded, version, real=os.path.realpath(key))
         self.stale = True
+
+    def first_screen(self, path: str, text: str, count: int = FIRST_SCREEN_LINES) -> tuple[list[Diagnostic], list[str]]:
+        """What each of the first ``count`` lines of ``text`` earns by itself (syntax and the
+        per-line static findings, the user's severities applied), with those lines' texts: what a huge document shows
+        at once, before it is parsed in full and analysed. The checks that connect lines
+        (labels, loops, calls) and the runs need the whole document and come with its analysis,
+        which finds these again: nothing shown here is taken back by it."""
+        head = ParsedDocument("\n".join(split_lines(text[: _head_end(text, count)])[:count]))
+        ctx = static_checks.line_context(self.dialect_of(head.lines), self.settings, self.locale)
+        static = StaticLines(head.blocks, ctx, self.memo)
+        found, _ = static.line_diagnostics(min(head.program.read_end, count), path, self.locale)
+        return apply_severities(found, self.severities), head.lines
 
     def change(self, path: str, start_line: int, start_col: int, end_line: int, end_col: int, text: str,
                version: int) -> None:  # fmt: skip
@@ -283,7 +310,11 @@ class WorkspaceAnalysis:
     def _static(self, d: _Open) -> StaticLines:
         ctx = static_checks.line_context(self.dialect_of(d.doc.lines), self.settings, self.locale)
         if d.static is None or d.static.ctx is not ctx:
-            d.static = StaticLines(d.doc.blocks, ctx, self.memo)
+
+            def looked(done: int, total: int) -> None:
+                self.progress = Progress(pick(self.locale, "checking lines", "检查各行"), done / total * STATIC_SHARE)
+
+            d.static = StaticLines(d.doc.blocks, ctx, self.memo, looked)
         return d.static
 
     def _units(self) -> list[tuple[tuple[str, int], FoundProgram, bool]]:
@@ -407,7 +438,9 @@ class WorkspaceAnalysis:
         self._not_run = {}
         file_budget = FILE_BUDGETS * self.max_blocks
         spent: dict[str, int] = {}  # blocks run by the runs from each file so far
-        for k, found in primary.items():
+        for n, (k, found) in enumerate(primary.items()):
+            self.progress = Progress(pick(self.locale, f"running {found.label}", f"运行 {found.label}"),
+                                     STATIC_SHARE + (1 - STATIC_SHARE) * n / len(primary))  # fmt: skip
             file = found.file.path
             left = file_budget - spent.get(file, 0)
             if left <= 0:  # the runs before it used up the file's share: it is not run
@@ -668,6 +701,17 @@ class _CalledElsewhere(Generic[_T]):
 
     def __contains__(self, item: object) -> bool:
         return self.counts.get(item, 0) > (1 if item in self.own else 0)
+
+
+def _head_end(text: str, count: int) -> int:
+    """Where the first ``count`` lines of ``text`` end (about: a file of lone CR breaks is
+    taken whole)."""
+    end = -1
+    for _ in range(count):
+        end = text.find("\n", end + 1)
+        if end < 0:
+            return len(text)
+    return end
 
 
 def _clock_reads(lines: list[str]) -> int:

@@ -35,7 +35,7 @@ import asyncio
 import logging
 import threading
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -44,7 +44,8 @@ from typing import TYPE_CHECKING, Any, cast
 from lsprotocol import types
 
 from ..analysis import Diagnostic
-from ..analysis.workspace import AnalysisResult, Value, WorkspaceAnalysis
+from ..analysis.workspace import FIRST_SCREEN_LINES, AnalysisResult, Value, WorkspaceAnalysis
+from ..bilingual import pick
 from .collector import QUIET_SECONDS, Collector
 from .disk_watch import DiskStamps
 from .documents import Edit, OpenDocument, uri_to_path
@@ -64,6 +65,8 @@ DEBOUNCE_SECONDS = 0.0  # edits are coalesced by cancelling: a newer one stops t
 # so analysing after each of 2,000 opens would cost the square of the count.
 BURST_SECONDS = 0.05
 PROGRESS_LINES = 20_000  # a first analysis of a file this long reports progress
+PROGRESS_SECONDS = 0.25  # how often it reports
+FIRST_SCREEN_FROM = 100_000  # a file this long shows its first screen's findings before it is parsed in full
 DISK_CHECK_SECONDS = 2.0  # between looks at the files the analysis read, while documents are open
 
 LineValues = dict[int, list[tuple[int, Value]]]
@@ -104,6 +107,7 @@ class DiagnosticsEngine:
         self._published: dict[str, tuple[int | None, list[Diagnostic], list[types.Diagnostic], int]] = {}
         self._values: dict[str, tuple[int | None, LineValues]] = {}
         self._analysed_once: set[str] = set()
+        self._first_shown: set[str] = set()  # huge documents whose first screen was published
         # the worker's caches: per file the diagnostics last converted, and per diagnostic (with
         # the text of its lines) its protocol form and JSON form
         self._converted: dict[str, tuple[list[Diagnostic], list[types.Diagnostic], list[dict[str, object]]]] = {}
@@ -201,6 +205,8 @@ class DiagnosticsEngine:
         documents = self.server.documents
         with self.editing():
             analysis = self._analysis(documents.machines.path_for(path))
+            if self.server.settings_ready.is_set() and item.text.count("\n") >= FIRST_SCREEN_FROM:
+                self._publish_first_screen(analysis, item.uri, path, item.text, item.version)
             analysis.open(path, item.text, item.version)
             parsed = analysis.document(path)
             assert parsed is not None
@@ -209,6 +215,29 @@ class DiagnosticsEngine:
         self._opened_at = (self._opened_at[1], time.monotonic())
         self.schedule()
         return doc
+
+    def _publish_first_screen(self, analysis: WorkspaceAnalysis, uri: str, path: str, text: str, version: int) -> None:
+        """Publish the findings that the first lines of a huge document earn by themselves
+        (``WorkspaceAnalysis.first_screen``), before the document is parsed in full (or, when
+        it was opened before the editor's settings came, before its first analysis): the top
+        of the file is what the editor shows first."""
+        self._first_shown.add(uri)
+        try:
+            diags, head = analysis.first_screen(path, text)
+        except Exception:  # the whole analysis will say it
+            log.exception("the first screen's findings failed")
+            return
+
+        def line_text(_file: str, line: int) -> str:
+            return head[line] if 0 <= line < len(head) else ""
+
+        encoding = self.server.documents.encoding
+        uri_of = self.server.uri_for_path
+        converted = [to_lsp(x, line_text, encoding, uri_of) for x in diags]
+        self._published[uri] = (version, diags, converted, 1)
+        self.server.text_document_publish_diagnostics(
+            types.PublishDiagnosticsParams(uri=uri, diagnostics=converted, version=version)
+        )
 
     def changed(self, params: types.DidChangeTextDocumentParams) -> OpenDocument | None:
         version = params.text_document.version
@@ -232,6 +261,7 @@ class DiagnosticsEngine:
         self._published.pop(uri, None)
         self._values.pop(uri, None)
         self._analysed_once.discard(uri)
+        self._first_shown.discard(uri)
         self.server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
         self._opened_at = (self._opened_at[1], time.monotonic())
         self.schedule()
@@ -273,12 +303,21 @@ class DiagnosticsEngine:
             for d in self.server.documents.by_uri.values()
             if d.uri not in self._analysed_once and len(d.lines) >= PROGRESS_LINES
         ]
+        for d in big:
+            if len(d.lines) >= FIRST_SCREEN_FROM and d.uri not in self._first_shown:
+                head = "\n".join(d.lines[:FIRST_SCREEN_LINES])
+                self._publish_first_screen(self.analyses[d.machine_file], d.uri, d.path, head, d.version)
         token = await self._begin_progress(big[0]) if big else None
+        stopped = self._stop_asked(token)
+        work = asyncio.get_running_loop().run_in_executor(self._executor, self._analyse, generation, stopped)
         try:
-            outcome = await asyncio.get_running_loop().run_in_executor(self._executor, self._analyse, generation)
+            if token is not None:
+                await self._report_progress(token, work)
+            outcome = await work
         finally:
             if token is not None:
-                self.server.work_done_progress.end(token, types.WorkDoneProgressEnd(message="done"))
+                done = pick(self._locale, "stopped", "已停止") if stopped() else pick(self._locale, "done", "完成")
+                self.server.work_done_progress.end(token, types.WorkDoneProgressEnd(message=done))
         if outcome is not None and outcome.on_disk:
             self.server.disk_changed(outcome.on_disk)  # read them, and analyse again
             return
@@ -308,11 +347,12 @@ class DiagnosticsEngine:
                 break
         await asyncio.get_running_loop().run_in_executor(self._executor, self.collector.clean)
 
-    def _analyse(self, generation: int) -> Outcome | None:
-        """On the worker thread: analyse and convert, or None when a newer change came."""
+    def _analyse(self, generation: int, stopped: Callable[[], bool] = lambda: False) -> Outcome | None:
+        """On the worker thread: analyse and convert, or None when a newer change came or the
+        user stopped it (``stopped``)."""
 
         def cancelled() -> bool:
-            return self.generation != generation
+            return self.generation != generation or stopped()
 
         on_disk = self.disk.changed() if self.server.documents.by_uri else []
         if on_disk:
@@ -462,6 +502,30 @@ class DiagnosticsEngine:
         if hints is not None and hints.refresh_support:
             self.server.workspace_inlay_hint_refresh(None)
 
+    def _stop_asked(self, token: str | None) -> Callable[[], bool]:
+        """Whether the user stopped the analysis that reports progress with ``token`` (the
+        editor's cancel button; the analysis starts again at the next edit)."""
+        if token is None:
+            return lambda: False
+        future = self.server.work_done_progress.tokens.get(token)
+        return (lambda: False) if future is None else future.cancelled
+
+    async def _report_progress(self, token: str, work: asyncio.Future[Outcome | None]) -> None:
+        """Report how far the analyses got (``WorkspaceAnalysis.progress``) until ``work`` ends."""
+        last: tuple[str, int] | None = None
+        while not work.done():
+            await asyncio.wait([work], timeout=PROGRESS_SECONDS)
+            progress = [a.progress for a in self.analyses.values() if a.docs]
+            if not progress or work.done():
+                continue
+            now = max(progress, key=lambda p: p.done)
+            shown = (now.what, min(99, int(now.done * 100)))
+            if shown != last:
+                last = shown
+                self.server.work_done_progress.report(
+                    token, types.WorkDoneProgressReport(message=shown[0], percentage=shown[1])
+                )
+
     async def _begin_progress(self, doc: OpenDocument) -> str | None:
         caps = self.server.client_capabilities.window
         if caps is None or not caps.work_done_progress:
@@ -474,7 +538,10 @@ class DiagnosticsEngine:
         self.server.work_done_progress.begin(
             token,
             types.WorkDoneProgressBegin(
-                title="cncmacro", message=f"analysing {len(doc.lines)} lines", cancellable=False
+                title="cncmacro",
+                message=pick(self._locale, f"analysing {len(doc.lines):,} lines", f"分析 {len(doc.lines):,} 行"),
+                cancellable=True,
+                percentage=0,
             ),
         )
         return token

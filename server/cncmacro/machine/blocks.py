@@ -71,6 +71,7 @@ class CompiledFile:
         self.do_end = {p.do_line: p.end_line for p in file.program.loops}
         self.end_do = {p.end_line: p.do_line for p in file.program.loops}
         self._jumps: dict[tuple[int, int], tuple[int, int]] = {}
+        self._spans: jumps.LoopSpans | None = None  # made at the first jump that is not cached
         self.values = ExpressionCompiler(machine.kinds, watch=machine.watching)
         self.addresses = ExpressionCompiler(machine.kinds, in_address=True, watch=machine.watching)
 
@@ -83,6 +84,7 @@ class CompiledFile:
         self.do_end = {p.do_line: p.end_line for p in self.file.program.loops}
         self.end_do = {p.end_line: p.do_line for p in self.file.program.loops}
         self._jumps.clear()
+        self._spans = None
 
     # ---------------------------------------------------------------- lines
     def skipped(self, block: Block) -> bool:
@@ -142,9 +144,12 @@ class CompiledFile:
                 SEQUENCE_NUMBER,
                 detail(f"N{n} not found in {frame.found.label}", f"{frame.found.label} 中未找到 N{n}"),
             )
-        if jumps.entered_loop(self.do_end, pc, target) is not None:
+        spans = self._spans
+        if spans is None:
+            spans = self._spans = jumps.LoopSpans(self.do_end)
+        if spans.entered(pc, target) is not None:
             return target, -1
-        return target, jumps.loops_kept(self.do_end, pc, target)
+        return target, spans.kept(pc, target)
 
     def label_in_caller(self, unit: Any, call_line: int, n: int) -> int:
         """Where ``M99 Pn`` returns in the caller (seed 002): the first Nn after the call

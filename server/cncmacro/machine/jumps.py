@@ -7,13 +7,14 @@ the called program. The landing functions take the sorted lines that carry the l
 program unit and give the target line (None when there is none). A loop (``DO`` line → ``END``
 line) holds the lines after its ``DO`` up to its ``END``: a jump stays in the loops that hold both
 its line and its target, leaves the others, and may not enter one from outside. The interpreter
-(``CompiledFile`` caches the answers per line and label) and the editor features both ask here.
+(``CompiledFile`` caches the answers per line and label) and the editor features both ask here,
+through ``LoopSpans``.
 """
 
 from __future__ import annotations
 
-from bisect import bisect_right
-from collections.abc import Mapping
+from bisect import bisect_left, bisect_right
+from collections.abc import Iterator, Mapping
 
 
 def goto_line(label_lines: list[int], from_line: int) -> int | None:
@@ -37,17 +38,49 @@ def first_line(label_lines: list[int]) -> int | None:
     return label_lines[0] if label_lines else None
 
 
-def entered_loop(loops: Mapping[int, int], from_line: int, target: int) -> int | None:
-    """The ``DO`` line of a loop (``loops`` maps ``DO`` line → ``END`` line) that a jump from
-    ``from_line`` to ``target`` enters from outside, or None when it enters none."""
-    for do, end in loops.items():
-        if do < target <= end and not do < from_line <= end:
-            return do
-    return None
+class LoopSpans:
+    """The loops of a program (``DO`` line → ``END`` line), kept so that the loops holding a
+    line are found in time in proportion to how many hold it (and how deep loops nest around
+    it), not to how many the program has: a CAM program of a million lines has tens of
+    thousands, and every jump asks."""
 
+    __slots__ = ("_dos", "_ends", "_outer")
 
-def loops_kept(loops: Mapping[int, int], from_line: int, target: int) -> int:
-    """How many loops a jump from ``from_line`` to ``target`` stays in: those that hold both
-    lines. Loops nest, so they are the outermost of the loops running on ``from_line``; the
-    jump leaves the ones inside them."""
-    return sum(1 for do, end in loops.items() if do < target <= end and do < from_line <= end)
+    def __init__(self, loops: Mapping[int, int]) -> None:
+        pairs = sorted(loops.items())
+        self._dos = [do for do, _ in pairs]
+        self._ends = [end for _, end in pairs]
+        # for each loop, the nearest loop before it that ends after it (-1: none); the loops
+        # between the two end no later than it, so a line after its end is after theirs too
+        outer: list[int] = []
+        stack: list[int] = []
+        for k, end in enumerate(self._ends):
+            while stack and self._ends[stack[-1]] <= end:
+                stack.pop()
+            outer.append(stack[-1] if stack else -1)
+            stack.append(k)
+        self._outer = outer
+
+    def holding(self, line: int) -> Iterator[tuple[int, int]]:
+        """The loops (``DO`` line, ``END`` line) that hold ``line``: it is after the ``DO`` and
+        at most the ``END``; innermost first."""
+        ends = self._ends
+        k = bisect_left(self._dos, line) - 1  # the last loop whose DO is before the line
+        while k >= 0:
+            if ends[k] >= line:
+                yield self._dos[k], ends[k]
+                k -= 1
+            else:
+                k = self._outer[k]
+
+    def entered(self, from_line: int, target: int) -> int | None:
+        """The ``DO`` line of the outermost loop that a jump from ``from_line`` to ``target``
+        enters from outside, or None when it enters none."""
+        entered = [do for do, end in self.holding(target) if not do < from_line <= end]
+        return min(entered) if entered else None
+
+    def kept(self, from_line: int, target: int) -> int:
+        """How many loops a jump from ``from_line`` to ``target`` stays in: those that hold both
+        lines. Loops nest, so they are the outermost of the loops running on ``from_line``; the
+        jump leaves the ones inside them."""
+        return sum(1 for do, end in self.holding(target) if do < from_line <= end)

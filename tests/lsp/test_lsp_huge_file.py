@@ -1,0 +1,87 @@
+"""A huge file in the editor, end to end: its first screen's findings come at once, before the
+whole analysis; the analysis reports how far it got, and the user can stop it."""
+
+from __future__ import annotations
+
+import asyncio
+
+import pytest
+import pytest_lsp
+from lsprotocol import types
+from pytest_lsp import LanguageClient
+
+from .lsp_session import FANUC, config, diagnostics_for, edit, hover_text, open_file, start
+
+pytestmark = pytest.mark.asyncio(loop_scope="module")
+
+LINES = 120_000  # above the size from which a file shows its first screen first
+BAD_LINE = 5  # a syntax error near the top: what the user sees first
+MISSING_LABEL_LINE = 90_000  # a jump to a missing label far down: a finding that needs the whole file
+
+
+def huge_program() -> str:
+    lines = ["O0300 (CAM)", "#100=1"] + [f"G01 X{i % 100}.5 Y{i % 37}.25 F800" for i in range(LINES)] + ["M30"]
+    lines[BAD_LINE] = "#1=[2+3"
+    lines[MISSING_LABEL_LINE] = "IF [#100 EQ 2] GOTO 99991"
+    return "\n".join(lines)
+
+
+@pytest_lsp.fixture(config=config(), scope="module")
+async def client(lsp_client: LanguageClient):  # type: ignore[no-untyped-def]
+    await start(lsp_client, FANUC, "en")
+    yield
+    await lsp_client.shutdown_session()
+
+
+def codes(published: types.PublishDiagnosticsParams) -> list[tuple[int, str]]:
+    return [(d.range.start.line, str(d.code)) for d in published.diagnostics]
+
+
+def reports_of(client: LanguageClient, name: str) -> list[object]:
+    return [r for token, rs in client.progress_reports.items() if name in str(token) for r in rs]
+
+
+async def test_a_huge_file_shows_its_first_screen_findings_before_the_whole_analysis(client: LanguageClient) -> None:
+    uri = open_file(client, FANUC / "huge_first.nc", huge_program(), version=1)
+    first = await diagnostics_for(client, uri, 1)
+    assert codes(first) == [(BAD_LINE, "syntax")]  # only what the top lines earn by themselves
+    full = await diagnostics_for(client, uri, 1)
+    assert (BAD_LINE, "syntax") in codes(full)
+    assert (MISSING_LABEL_LINE, "undefined-label") in codes(full)
+
+
+async def test_a_huge_file_reports_how_far_its_analysis_got_and_can_be_stopped(client: LanguageClient) -> None:
+    uri = open_file(client, FANUC / "huge_progress.nc", huge_program(), version=1)
+    await diagnostics_for(client, uri, 1)
+    full = await diagnostics_for(client, uri, 1)
+    assert (MISSING_LABEL_LINE, "undefined-label") in codes(full)
+    reports = reports_of(client, "huge_progress.nc")
+    begin, end = reports[0], reports[-1]
+    assert isinstance(begin, types.WorkDoneProgressBegin) and begin.cancellable and begin.percentage == 0
+    assert isinstance(end, types.WorkDoneProgressEnd) and end.message == "done"
+    shown = [r.percentage for r in reports[1:-1] if isinstance(r, types.WorkDoneProgressReport)]
+    assert shown == sorted(shown) and all(0 <= p < 100 for p in shown if p is not None)
+
+    # stopped by the user: the first screen's findings stay, the rest waits for the next edit
+    uri = open_file(client, FANUC / "huge_stopped.nc", huge_program(), version=1)
+    first = await diagnostics_for(client, uri, 1)
+    for _ in range(1000):
+        tokens = [t for t, rs in client.progress_reports.items() if "huge_stopped.nc" in str(t) and rs]
+        if tokens:
+            break
+        await asyncio.sleep(0.01)
+    client.window_work_done_progress_cancel(types.WorkDoneProgressCancelParams(token=tokens[0]))
+    for _ in range(3000):
+        last = reports_of(client, "huge_stopped.nc")[-1]
+        if isinstance(last, types.WorkDoneProgressEnd):
+            break
+        await asyncio.sleep(0.01)
+    assert isinstance(last, types.WorkDoneProgressEnd) and last.message == "stopped"
+    assert codes(first) == [(BAD_LINE, "syntax")]
+    assert [(d.range.start.line, str(d.code)) for d in client.diagnostics[uri]] == [(BAD_LINE, "syntax")]
+    assert "#100" in await hover_text(client, uri, 1, 1)  # the editor still answers
+
+    edit(client, uri, 2, BAD_LINE, 0, 7, "#1=[2+3]")
+    fixed = await diagnostics_for(client, uri, 2)
+    assert (BAD_LINE, "syntax") not in codes(fixed)
+    assert (MISSING_LABEL_LINE, "undefined-label") in codes(fixed)
