@@ -37,8 +37,9 @@ def codes(published: types.PublishDiagnosticsParams) -> list[tuple[int, str]]:
     return [(d.range.start.line, str(d.code)) for d in published.diagnostics]
 
 
-def reports_of(client: LanguageClient, name: str) -> list[object]:
-    return [r for token, rs in client.progress_reports.items() if name in str(token) for r in rs]
+def reports_of(client: LanguageClient, name: str, kind: str = "analysis") -> list[object]:
+    """The progress reported on the file ``name``: its reading, or its analysis."""
+    return [r for token, rs in client.progress_reports.items() if name in str(token) and kind in str(token) for r in rs]
 
 
 async def test_a_huge_file_shows_its_first_screen_findings_before_the_whole_analysis(client: LanguageClient) -> None:
@@ -66,13 +67,17 @@ async def test_a_huge_file_reports_how_far_its_analysis_got_and_can_be_stopped(c
     uri = open_file(client, FANUC / "huge_stopped.nc", huge_program(), version=1)
     first = await diagnostics_for(client, uri, 1)
     for _ in range(1000):
-        tokens = [t for t, rs in client.progress_reports.items() if "huge_stopped.nc" in str(t) and rs]
+        tokens = [
+            t for t, rs in client.progress_reports.items() if "huge_stopped.nc" in str(t) and "analysis" in str(t)
+        ]
         if tokens:
             break
         await asyncio.sleep(0.01)
     client.window_work_done_progress_cancel(types.WorkDoneProgressCancelParams(token=tokens[0]))
+    last: object = None
     for _ in range(3000):
-        last = reports_of(client, "huge_stopped.nc")[-1]
+        reports = reports_of(client, "huge_stopped.nc")
+        last = reports[-1] if reports else None
         if isinstance(last, types.WorkDoneProgressEnd):
             break
         await asyncio.sleep(0.01)
@@ -85,3 +90,18 @@ async def test_a_huge_file_reports_how_far_its_analysis_got_and_can_be_stopped(c
     fixed = await diagnostics_for(client, uri, 2)
     assert (BAD_LINE, "syntax") not in codes(fixed)
     assert (MISSING_LABEL_LINE, "undefined-label") in codes(fixed)
+
+
+async def test_a_huge_file_answers_hovers_and_keeps_edits_while_it_is_read(client: LanguageClient) -> None:
+    uri = open_file(client, FANUC / "huge_reading.nc", huge_program(), version=1)
+    # at once, far below the first screen: the line is read on its own
+    assert "#100" in await hover_text(client, uri, MISSING_LABEL_LINE, 5)
+    edit(client, uri, 2, BAD_LINE, 0, 7, "#1=[2+3]")  # typed before the file is read in full
+    edit(client, uri, 3, MISSING_LABEL_LINE, 20, 25, "2")  # GOTO 99991 -> GOTO 2: still no N2
+    got = await diagnostics_for(client, uri, 3)
+    assert (BAD_LINE, "syntax") not in codes(got)
+    missing = [d for d in got.diagnostics if d.range.start.line == MISSING_LABEL_LINE]
+    assert [str(d.code) for d in missing] == ["undefined-label"] and "GOTO 2" in missing[0].message
+    reading = reports_of(client, "huge_reading.nc", "reading")
+    assert isinstance(reading[0], types.WorkDoneProgressBegin) and not reading[0].cancellable
+    assert isinstance(reading[-1], types.WorkDoneProgressEnd)

@@ -203,9 +203,11 @@ class WorkspaceAnalysis:
     def _key(path: str) -> str:
         return str(Path(path))
 
-    def open(self, path: str, text: str, version: int | None = None) -> None:
+    def open(self, path: str, text: str | ParsedDocument, version: int | None = None) -> None:
+        """Open a document with its text, or with its text parsed already (in full)."""
         key = self._key(path)
-        doc = ParsedDocument(text)
+        doc = text if isinstance(text, ParsedDocument) else ParsedDocument(text)
+        assert not doc.partial
         loaded = self.library.add_parsed(key, doc.lines, doc.program)  # it sees the document as it is edited
         self.docs[key] = _Open(key, doc, loaded, version, real=os.path.realpath(key))
         self.stale = True

@@ -46,6 +46,7 @@ from lsprotocol import types
 from ..analysis import Diagnostic
 from ..analysis.workspace import FIRST_SCREEN_LINES, AnalysisResult, Value, WorkspaceAnalysis
 from ..bilingual import pick
+from ..syntax.document import ParsedDocument
 from .collector import QUIET_SECONDS, Collector
 from .disk_watch import DiskStamps
 from .documents import Edit, OpenDocument, uri_to_path
@@ -67,6 +68,7 @@ BURST_SECONDS = 0.05
 PROGRESS_LINES = 20_000  # a first analysis of a file this long reports progress
 PROGRESS_SECONDS = 0.25  # how often it reports
 FIRST_SCREEN_FROM = 100_000  # a file this long shows its first screen's findings before it is parsed in full
+READ_STEP_LINES = 20_000  # and is parsed in steps of this many lines, the editor answered between them
 DISK_CHECK_SECONDS = 2.0  # between looks at the files the analysis read, while documents are open
 
 LineValues = dict[int, list[tuple[int, Value]]]
@@ -108,6 +110,8 @@ class DiagnosticsEngine:
         self._values: dict[str, tuple[int | None, LineValues]] = {}
         self._analysed_once: set[str] = set()
         self._first_shown: set[str] = set()  # huge documents whose first screen was published
+        self._loading: dict[str, list[types.DidChangeTextDocumentParams]] = {}  # huge documents being read: their edits
+        self._loads: dict[str, asyncio.Future[None]] = {}  # and their reading
         # the worker's caches: per file the diagnostics last converted, and per diagnostic (with
         # the text of its lines) its protocol form and JSON form
         self._converted: dict[str, tuple[list[Diagnostic], list[types.Diagnostic], list[dict[str, object]]]] = {}
@@ -179,6 +183,9 @@ class DiagnosticsEngine:
             documents.machines.forget()
             for doc in documents.by_uri.values():
                 machine_file = documents.machines.path_for(doc.path)
+                if doc.uri in self._loading:  # read with the machine file it has once read in full
+                    doc.machine_file = machine_file
+                    continue
                 if machine_file == doc.machine_file:
                     continue
                 before = doc.machine_file
@@ -203,18 +210,62 @@ class DiagnosticsEngine:
     def opened(self, item: types.TextDocumentItem) -> OpenDocument:
         path = uri_to_path(item.uri)
         documents = self.server.documents
+        huge = item.text.count("\n") >= FIRST_SCREEN_FROM
         with self.editing():
             analysis = self._analysis(documents.machines.path_for(path))
-            if self.server.settings_ready.is_set() and item.text.count("\n") >= FIRST_SCREEN_FROM:
-                self._publish_first_screen(analysis, item.uri, path, item.text, item.version)
-            analysis.open(path, item.text, item.version)
-            parsed = analysis.document(path)
-            assert parsed is not None
-            doc = documents.open(item, parsed)
+            if huge:
+                if self.server.settings_ready.is_set():
+                    self._publish_first_screen(analysis, item.uri, path, item.text, item.version)
+                doc = documents.open(item, ParsedDocument(item.text, in_steps=FIRST_SCREEN_LINES))
+                self._loading[item.uri] = []
+            else:
+                analysis.open(path, item.text, item.version)
+                parsed = analysis.document(path)
+                assert parsed is not None
+                doc = documents.open(item, parsed)
         self.disk.watch_machine_files(path)
         self._opened_at = (self._opened_at[1], time.monotonic())
-        self.schedule()
+        if huge:
+            self._loads[item.uri] = asyncio.ensure_future(self._read(doc))
+        else:
+            self.schedule()
         return doc
+
+    async def _read(self, doc: OpenDocument) -> None:
+        """Parse a huge document in steps, answering the editor between them (hovers, tokens and
+        the like parse the lines they need on their own meanwhile), then hand it to its analysis
+        and apply the edits that came while it was read."""
+        token = await self._begin_progress(doc, "reading", cancellable=False)
+        parsed = doc.parsed
+        try:
+            while not parsed.parse_more(READ_STEP_LINES):
+                if self._loading.get(doc.uri) is None:
+                    return  # closed meanwhile
+                if doc.uri not in self._first_shown and self.server.settings_ready.is_set():  # opened before them
+                    head = "\n".join(doc.lines[:FIRST_SCREEN_LINES])
+                    self._publish_first_screen(self._analysis(doc.machine_file), doc.uri, doc.path, head, doc.version)
+                if token is not None:
+                    done = int(100 * len(parsed.blocks) / len(parsed.lines))
+                    self.server.work_done_progress.report(token, types.WorkDoneProgressReport(percentage=done))
+                await asyncio.sleep(0)
+        finally:
+            if token is not None:
+                self.server.work_done_progress.end(token, types.WorkDoneProgressEnd())
+            self._loads.pop(doc.uri, None)
+        pending = self._loading.pop(doc.uri, None)
+        if pending is None or self.server.documents.by_uri.get(doc.uri) is not doc:
+            return
+        with self.editing():
+            analysis = self._analysis(doc.machine_file)
+            analysis.open(doc.path, parsed, doc.version)
+            self.server.documents.moved(doc, parsed, doc.machine_file)
+        for params in pending:
+            self.changed(params)
+        self.schedule()
+
+    def _ready(self) -> list[OpenDocument]:
+        """The open documents, but those still being read (``_read``)."""
+        return [d for d in self.server.documents.by_uri.values() if d.uri not in self._loading]
 
     def _publish_first_screen(self, analysis: WorkspaceAnalysis, uri: str, path: str, text: str, version: int) -> None:
         """Publish the findings that the first lines of a huge document earn by themselves
@@ -240,6 +291,10 @@ class DiagnosticsEngine:
         )
 
     def changed(self, params: types.DidChangeTextDocumentParams) -> OpenDocument | None:
+        pending = self._loading.get(params.text_document.uri)
+        if pending is not None:  # being read: applied, in order, once it is
+            pending.append(params)
+            return None
         version = params.text_document.version
 
         def apply(doc: OpenDocument, edit: Edit) -> None:
@@ -252,9 +307,10 @@ class DiagnosticsEngine:
         return doc
 
     def closed(self, uri: str) -> None:
+        reading = self._loading.pop(uri, None) is not None  # its reading stops
         with self.editing():
             doc = self.server.documents.close(uri)
-            if doc is not None:
+            if doc is not None and not reading:
                 self.analyses[doc.machine_file].close(doc.path)
                 self._left(doc.machine_file)
                 self.collector.closed()
@@ -298,16 +354,12 @@ class DiagnosticsEngine:
             await self.server.settings_ready.wait()
         if generation != self.generation:
             return  # a newer change scheduled its own run
-        big = [
-            d
-            for d in self.server.documents.by_uri.values()
-            if d.uri not in self._analysed_once and len(d.lines) >= PROGRESS_LINES
-        ]
+        big = [d for d in self._ready() if d.uri not in self._analysed_once and len(d.lines) >= PROGRESS_LINES]
         for d in big:
             if len(d.lines) >= FIRST_SCREEN_FROM and d.uri not in self._first_shown:
                 head = "\n".join(d.lines[:FIRST_SCREEN_LINES])
                 self._publish_first_screen(self.analyses[d.machine_file], d.uri, d.path, head, d.version)
-        token = await self._begin_progress(big[0]) if big else None
+        token = await self._begin_progress(big[0], "analysis", cancellable=True) if big else None
         stopped = self._stop_asked(token)
         work = asyncio.get_running_loop().run_in_executor(self._executor, self._analyse, generation, stopped)
         try:
@@ -360,7 +412,7 @@ class DiagnosticsEngine:
         with self.lock:
             if cancelled():
                 return None
-            docs = list(self.server.documents.by_uri.values())
+            docs = self._ready()
             if not docs:
                 return Outcome(generation, {}, {}, {}, {}, {})
             new_documents = any(d.uri not in self._analysed_once for d in docs)
@@ -526,11 +578,13 @@ class DiagnosticsEngine:
                     token, types.WorkDoneProgressReport(message=shown[0], percentage=shown[1])
                 )
 
-    async def _begin_progress(self, doc: OpenDocument) -> str | None:
+    async def _begin_progress(self, doc: OpenDocument, kind: str, cancellable: bool) -> str | None:
+        """Begin reporting the ``kind`` ("reading" or "analysis") of ``doc``, if the editor shows
+        progress; the user may stop it when ``cancellable``."""
         caps = self.server.client_capabilities.window
         if caps is None or not caps.work_done_progress:
             return None
-        token = f"cncmacro-analysis-{doc.uri}-{doc.version}"
+        token = f"cncmacro-{kind}-{doc.uri}-{doc.version}"
         try:
             await self.server.work_done_progress.create_async(token)
         except Exception:  # the client refused: analyse without progress
@@ -539,8 +593,12 @@ class DiagnosticsEngine:
             token,
             types.WorkDoneProgressBegin(
                 title="cncmacro",
-                message=pick(self._locale, f"analysing {len(doc.lines):,} lines", f"分析 {len(doc.lines):,} 行"),
-                cancellable=True,
+                message=pick(
+                    self._locale,
+                    f"{'reading' if kind == 'reading' else 'analysing'} {len(doc.lines):,} lines",
+                    f"{'读取' if kind == 'reading' else '分析'} {len(doc.lines):,} 行",
+                ),
+                cancellable=cancellable,
                 percentage=0,
             ),
         )

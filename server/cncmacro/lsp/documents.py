@@ -83,7 +83,7 @@ class OpenDocument:
         return self.parsed.lines[i] if 0 <= i < len(self.parsed.lines) else ""
 
     def block(self, i: int) -> Block | None:
-        return self.parsed.blocks[i] if 0 <= i < len(self.parsed.blocks) else None
+        return self.parsed.block_at(i) if 0 <= i < len(self.parsed.lines) else None
 
     def as_loaded(self) -> LoadedFile:
         """The document as the program library sees a file (no copy of the text is made)."""

@@ -136,13 +136,13 @@ def encode(doc: OpenDocument, first: int, last: int, encoding: Encoding) -> list
     prev_line = 0
     prev_start = 0
     lines = doc.parsed.lines
-    blocks = doc.parsed.blocks
+    block_at = doc.parsed.block_at  # a line of a huge file not parsed yet is parsed on its own
     for i in range(max(first, 0), min(last, len(lines) - 1) + 1):
         text = lines[i]
         if not text or len(text) > MAX_BLOCK_CHARS:
             continue  # a line too long to be a block is not read, so not coloured either
         plain = encoding.plain(text)  # looked at once per line, not once per token
-        for s, e, typ, mods in _cache.get(text, blocks[i], doc.dialect):
+        for s, e, typ, mods in _cache.get(text, block_at(i), doc.dialect):
             if plain:
                 cs, length = s, e - s
             else:

@@ -24,13 +24,46 @@ def split_lines(text: str) -> list[str]:
 class ParsedDocument:
     """The lines, blocks and program of one document, updated in place by edits."""
 
-    def __init__(self, text: str, cache: BlockCache | None = None) -> None:
+    def __init__(self, text: str, cache: BlockCache | None = None, *, in_steps: int | None = None) -> None:
+        """``in_steps``: parse only that many first lines now, and the rest through ``parse_more``
+        (a huge file opened in the editor, which answers meanwhile); until then the document is
+        ``partial``: ``blocks`` holds the lines parsed so far, ``block_at`` parses any other line
+        on its own, ``program`` is that of the first lines, and it may not be edited."""
         self.cache = cache if cache is not None else shared_cache
         self.lines: list[str] = []
         self.blocks: list[Block] = []
         self._structural: list[bool] = []
         self.program: Program
-        self.set_text(text)
+        if in_steps is None:
+            self.set_text(text)
+            return
+        self.lines = split_lines(text)
+        self.parse_more(in_steps)
+        if self.partial:
+            self.program = build_program(self.blocks)
+
+    @property
+    def partial(self) -> bool:
+        """Whether some lines are not parsed yet (``in_steps``)."""
+        return len(self.blocks) < len(self.lines)
+
+    def parse_more(self, count: int) -> bool:
+        """Parse the next ``count`` lines of a partial document; True once every line is parsed
+        (the program is then found, as ``set_text`` does)."""
+        done = len(self.blocks)
+        with collector_paused():
+            self.blocks += self.cache.get_many(self.lines[done : done + count])
+        if self.partial:
+            return False
+        self._structural = [b.structural for b in self.blocks]
+        self.program = build_program(self.blocks, self._structural)
+        return True
+
+    def block_at(self, line: int) -> Block:
+        """The block of ``line`` (one of the document's), parsed on its own in a partial document."""
+        if line < len(self.blocks):
+            return self.blocks[line]
+        return self.cache.get(self.lines[line])
 
     # ---- whole text
     def set_text(self, text: str) -> None:
