@@ -4,8 +4,6 @@ before and after the edit; a jump whose label is computed refuses the edit, nami
 
 from __future__ import annotations
 
-from running import final, lines
-
 from cncmacro.analysis.sequence_numbers import (
     OutsideJump,
     SequencePlan,
@@ -16,9 +14,10 @@ from cncmacro.analysis.sequence_numbers import (
 from cncmacro.dialects import get_dialect
 from cncmacro.syntax.block_parser import parse_block
 from cncmacro.syntax.program import build_program
+from running import final, lines
 
 
-def _program(text: str):  # noqa: ANN202
+def _program(text: str):
     return build_program([parse_block(line) for line in text.split("\n")])
 
 
