@@ -262,6 +262,7 @@ def build_server() -> CncMacroServer:
         inlay_hints,
         navigation,
         semantic_tokens,
+        sequence_numbers,
         signature_help,
         symbols,
     )
@@ -337,6 +338,7 @@ def build_server() -> CncMacroServer:
         signature_help,
         code_actions,
         inlay_hints,
+        sequence_numbers,
     ):
         module.register(server)
     return server
