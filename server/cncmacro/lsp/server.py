@@ -257,6 +257,7 @@ def build_server() -> CncMacroServer:
         code_actions,
         completion,
         folding,
+        formatting,
         highlight,
         hover,
         inlay_hints,
@@ -339,6 +340,7 @@ def build_server() -> CncMacroServer:
         code_actions,
         inlay_hints,
         sequence_numbers,
+        formatting,
     ):
         module.register(server)
     return server
