@@ -254,6 +254,7 @@ async def _pull_configuration(server: CncMacroServer) -> None:
 def build_server() -> CncMacroServer:
     """A server with every feature registered."""
     from . import (
+        call_hierarchy,
         code_actions,
         completion,
         folding,
@@ -341,6 +342,7 @@ def build_server() -> CncMacroServer:
         inlay_hints,
         sequence_numbers,
         formatting,
+        call_hierarchy,
     ):
         module.register(server)
     return server
