@@ -146,3 +146,9 @@ def test_removing_unused_sequence_numbers_keeps_the_jumped_to_ones():
     after = _apply(text, remove_unused_sequence_numbers(_program(text), get_dialect("fanuc")))
     assert after.splitlines()[1:5] == ["#1=1", "GOTO 4", "#2=2", "N4 M30"]
     assert final(after) == final(text)
+
+
+def test_m98_q_into_a_program_named_by_a_variable_refuses():
+    text = lines("O1000", "#1=1000", "M98 P#1 Q10", "M30", "N10 #2=1", "M99")
+    plan = renumber(_program(text), get_dialect("fanuc"), step=5)
+    assert [b.line for b in plan.blockers] == [2]

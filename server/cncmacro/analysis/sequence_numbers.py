@@ -119,6 +119,9 @@ class _FileJumps:
             b = blocks[i]
             for j in jump_sites(b, local):
                 units = self._searched(i, j.kind)
+                if j.kind == "M98 Q" and not units:  # M98 P#1 Q10: the program is computed, maybe this one
+                    self.computed.append(_Computed(i, j.start, j.end, "M98 P", tuple(self.units)))
+                    continue
                 targets = {t for u in units for t in self._lands(i, j.kind, j.label, u)}
                 self.literal.append(_Jump(i, j.start, j.end, j.label, tuple(sorted(targets)), units))
             for kind, start, end in computed_jump_sites(b, local):
@@ -134,7 +137,10 @@ class _FileJumps:
             units = self.program.units
             return (unit.start,) if unit is units[0] and len(units) > 1 else ()
         if kind == "M98 Q":
-            return (self.called[line],) if line in self.called else (unit.start,)
+            if line in self.called:
+                return (self.called[line],)
+            names_one = any(w.letter == "P" for w in self.program.blocks[line].words)
+            return () if names_one else (unit.start,)  # P of another file or computed: not here
         return (unit.start,)
 
     def _lands(self, line: int, kind: str, label: int, unit_start: int) -> list[int]:
