@@ -152,3 +152,12 @@ def test_m98_q_into_a_program_named_by_a_variable_refuses():
     text = lines("O1000", "#1=1000", "M98 P#1 Q10", "M30", "N10 #2=1", "M99")
     plan = renumber(_program(text), get_dialect("fanuc"), step=5)
     assert [b.line for b in plan.blockers] == [2]
+
+
+def test_an_m99_p_whose_callers_labels_would_part_ways_refuses():
+    # O2000 returns to N5 of both O1000 and O3000: renumbering O1000 alone would split them.
+    text = lines("O1000", "M98 P2000", "N5 M30", "O2000", "M99 P5", "O3000", "#1=1", "M98 P2000", "N5 M99")
+    plan = renumber(_program(text), get_dialect("fanuc"), step=10, lines=range(0, 3), keep_computed=True)
+    assert [(b.line, b.keepable) for b in plan.blockers] == [(4, False)] and not plan.changes
+    whole = _renumbered(text, step=10)  # both become N10: the return follows them
+    assert whole.splitlines()[4] == "M99 P10" and whole.splitlines()[8] == "N10 M99"

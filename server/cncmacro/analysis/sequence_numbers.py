@@ -46,12 +46,15 @@ class TextChange:
 
 @dataclass(frozen=True, slots=True)
 class Blocker:
-    """A jump whose label the run computes and that could land on a label the edit changes."""
+    """A jump the edit cannot keep landing where it landed: one whose label the run computes and
+    that could land on a label the edit changes, or an ``M99 P`` whose callers' labels would get
+    different numbers."""
 
     line: int
     start: int
     end: int
     message: str
+    keepable: bool = True  # False: keeping the labels computed jumps reach does not help
 
 
 @dataclass(frozen=True, slots=True)
@@ -244,7 +247,7 @@ class _Plan:
                     f"line {j.line + 1}: M99 P{j.label} returns to N{j.label} in more than one caller, and "
                     f"those labels would get different numbers",
                     f"第 {j.line + 1} 行：M99 P{j.label} 返回到多个调用者中的 N{j.label}，这些顺序号会被改成不同的号",
-                )))  # fmt: skip
+                ), keepable=False))  # fmt: skip
             elif (n := numbers.pop()) != j.label:
                 out.append(TextChange(j.line, j.start, j.end, str(n)))
         return out, split

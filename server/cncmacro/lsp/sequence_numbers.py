@@ -90,7 +90,8 @@ async def run_command(ls: CncMacroServer, command: str, arg: dict[str, Any]) -> 
     loc = ls.locale
     keep_arg = arg.get("keepComputed")
     doc, plan = plan_for(ls, command, arg, keep_arg is True)
-    if plan.blockers and keep_arg is None and plan.error is None:
+    cancelled = False
+    if keep_arg is None and plan.error is None and any(b.keepable for b in plan.blockers):
         lines = "; ".join(b.message for b in plan.blockers[:3])
         more = len(plan.blockers) - 3
         if more > 0:
@@ -104,6 +105,8 @@ async def run_command(ls: CncMacroServer, command: str, arg: dict[str, Any]) -> 
         )
         if answer is not None and answer.title == keep:
             doc, plan = plan_for(ls, command, arg, True)
+        else:
+            cancelled = True
     result: dict[str, Any] = {
         "applied": False,
         "changes": len(plan.changes),
@@ -115,8 +118,11 @@ async def run_command(ls: CncMacroServer, command: str, arg: dict[str, Any]) -> 
         result["error"] = plan.error
         return result
     if plan.blockers:
-        if keep_arg is not None:  # asked not to be asked: say why nothing changed
-            ls.window_show_message(types.ShowMessageParams(types.MessageType.Warning, plan.blockers[0].message))
+        if not cancelled:  # say why nothing changed
+            label = pick(loc, *_LABELS[command])
+            text = "; ".join(b.message for b in plan.blockers[:3])
+            refused = pick(loc, f"{label}: refused. {text}", f"{label}：已拒绝。{text}")
+            ls.window_show_message(types.ShowMessageParams(types.MessageType.Warning, refused))
         return result
     if not plan.changes:
         ls.window_show_message(
