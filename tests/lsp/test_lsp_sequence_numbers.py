@@ -133,3 +133,15 @@ async def test_the_question_is_in_chinese(fanuc_zh: LanguageClient) -> None:
     close_file(fanuc_zh, uri)
     question = seen["questions"][0]
     assert "第 3 行" in question.message and [a.title for a in question.actions] == ["保留这些顺序号不变", "取消"]
+
+
+async def test_bad_arguments_get_a_message_not_a_crash(fanuc_en: LanguageClient) -> None:
+    _editor(fanuc_en)
+    uri = open_file(fanuc_en, FANUC / "bad_args.nc", "O0001\nN1 #1=1\nM30\n")
+    bad_step = await _run(fanuc_en, RENUMBER, uri=uri, step="ten")
+    bad_range = await _run(fanuc_en, RENUMBER, uri=uri, step=10, range={"start": "x", "end": {"line": "y"}})
+    not_open = await _run(fanuc_en, RENUMBER, uri="file:///nowhere.nc", step=10)
+    close_file(fanuc_en, uri)
+    assert not bad_step["applied"] and "step" in bad_step["error"]
+    assert bad_range["applied"] and bad_range["changes"] == 1  # a range it cannot read: the whole file
+    assert not_open is None

@@ -18,6 +18,7 @@ from lsprotocol import types
 
 from ..analysis.outside_jumps import outside_jumps
 from ..analysis.sequence_numbers import (
+    MAX_SEQUENCE_NUMBER,
     SequencePlan,
     add_sequence_numbers,
     remove_unused_sequence_numbers,
@@ -45,13 +46,29 @@ _KEEP = ("Keep those labels unchanged", "保留这些顺序号不变")
 _CANCEL = ("Cancel", "取消")
 
 
-def _lines(doc: OpenDocument, arg: dict[str, Any]) -> range | None:
-    r = arg.get("range")
-    if not isinstance(r, dict):
+def _whole(value: Any, default: int) -> int | None:
+    """A whole number given as a number or a string of digits; None for anything else."""
+    if value is None:
+        return default
+    if isinstance(value, bool):
         return None
-    start, end = r.get("start", {}), r.get("end", {})
-    first, last = int(start.get("line", 0)), int(end.get("line", 0))
-    if last > first and int(end.get("character", 0)) == 0:
+    if isinstance(value, int | float) and value == int(value):
+        return int(value)
+    if isinstance(value, str) and value.strip().isdigit():
+        return int(value.strip())
+    return None
+
+
+def _lines(arg: dict[str, Any]) -> range | None:
+    """The lines of the ``range`` argument (all of them when it is missing or malformed)."""
+    r = arg.get("range")
+    if not isinstance(r, dict) or not isinstance(r.get("start"), dict) or not isinstance(r.get("end"), dict):
+        return None
+    first, last = _whole(r["start"].get("line"), 0), _whole(r["end"].get("line"), 0)
+    character = _whole(r["end"].get("character"), 0)
+    if first is None or last is None or last < first:
+        return None
+    if last > first and character == 0:
         last -= 1  # a selection that ends at the start of a line does not hold it
     return range(first, last + 1)
 
@@ -62,13 +79,15 @@ def plan_for(ls: CncMacroServer, command: str, arg: dict[str, Any], keep: bool) 
     calls = machine_calls(ls, doc.path)
     outside = outside_jumps(ls.index, doc, ls.documents.dialect_for, lambda p: machine_calls(ls, p))
     common: dict[str, Any] = {
-        "lines": _lines(doc, arg),
+        "lines": _lines(arg),
         "keep_computed": keep,
         "locale": ls.locale,
         "calls": calls,
         "outside": outside,
     }
-    step = int(arg.get("step") or 10)
+    step = _whole(arg.get("step"), 10)
+    if step is None or not 1 <= step <= MAX_SEQUENCE_NUMBER:
+        step = 0  # the analysis refuses it with its message
     if command == RENUMBER:
         return doc, renumber(program, doc.dialect, step=step, **common)
     if command == ADD:
