@@ -1,14 +1,15 @@
 // The sequence-number commands in a real VS Code: "CNC Macro: Renumber Sequence Numbers" asks for
 // the step, and the language server rewrites the labels and the jumps to them in the editor; a
 // jump whose label is computed makes the server ask, naming the line, whether to keep the labels
-// it could reach. Screenshots go to test-output/editor/. Run after npm run package:
+// it could reach; Format Document formats a program and Show Call Hierarchy lists a macro's
+// callers. Screenshots go to test-output/editor/. Run after npm run package:
 // node --test --test-concurrency=1 tests/editor/sequence_numbers.test.mjs
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { CodeServer, OUTPUT } from './codeServer.mjs';
-import { exact, openFile } from './workbench.mjs';
+import { openFile } from './workbench.mjs';
 
 const STEP = 60000;
 let server;
@@ -30,16 +31,21 @@ async function editorLines() {
   return rows.sort((a, b) => a.top - b.top).map((r) => r.text);
 }
 
-async function command(title) {
+async function command(title, category = 'CNC Macro: ') {
   await page.keyboard.press('F1');
-  await page.keyboard.type(`CNC Macro: ${title}`);
+  await page.keyboard.type(`${category}${title}`);
   await page.locator('.quick-input-list .monaco-list-row', { hasText: title }).first().waitFor();
   await page.keyboard.press('Enter');
 }
 
-async function openProgram(name, lines) {
-  fs.writeFileSync(path.join(server.workspace, name), lines.join('\n'));
-  await page.locator('.explorer-folders-view .label-name', { hasText: exact(name) }).waitFor();
+/** The programs the tests open, written into the workspace before the workbench starts. */
+const PROGRAMS = {
+  'renumber.nc': LOOP,
+  'computed.nc': COMPUTED,
+  'format_me.nc': ['o0002 (Lower Title)', 'n10 g01x10.y5. f100(cut)', 'if[#1gt2]goto10', 'm30', ''],
+};
+
+async function openProgram(name) {
   await openFile(page, name);
   await page.locator('.statusbar-item', { hasText: 'FANUC 0i' }).waitFor();
 }
@@ -54,6 +60,9 @@ before(async () => {
   fs.mkdirSync(OUTPUT, { recursive: true });
   server = new CodeServer();
   await server.start();
+  for (const [name, lines] of Object.entries(PROGRAMS)) {
+    fs.writeFileSync(path.join(server.workspace, name), lines.join('\n'));
+  }
   page = await server.openWorkbench();
   page.setDefaultTimeout(20000);
 }, { timeout: 180000 });
@@ -63,7 +72,7 @@ after(async () => {
 });
 
 test('Renumber Sequence Numbers asks for the step and rewrites the labels and every jump to them', { timeout: 2 * STEP }, async () => {
-  await openProgram('renumber.nc', LOOP);
+  await openProgram('renumber.nc');
   await command('Renumber Sequence Numbers');
   const input = page.locator('.quick-input-widget input');
   await input.waitFor();
@@ -79,7 +88,7 @@ test('Renumber Sequence Numbers asks for the step and rewrites the labels and ev
 });
 
 test('a computed GOTO makes the server ask, naming its line; keeping leaves those labels alone', { timeout: 2 * STEP }, async () => {
-  await openProgram('computed.nc', COMPUTED);
+  await openProgram('computed.nc');
   await command('Renumber Sequence Numbers');
   await page.locator('.quick-input-widget input').waitFor();
   await page.keyboard.press('Enter');
@@ -92,4 +101,25 @@ test('a computed GOTO makes the server ask, naming its line; keeping leaves thos
     page.locator('.notification-toast', { hasText: 'Nothing to change' }).isVisible(),
   );
   assert.deepEqual((await editorLines()).slice(0, 5), COMPUTED.slice(0, 5));
+});
+
+test('Format Document upper-cases the words and spaces them, comments as written', { timeout: STEP }, async () => {
+  await openProgram('format_me.nc');
+  await page.locator('.editor-instance .view-lines').click();
+  await command('Format Document', '');
+  const wanted = ['O0002 (Lower Title)', 'N10 G01 X10. Y5. F100 (cut)', 'IF [#1 GT 2] GOTO 10', 'M30'];
+  await until('the program is formatted', async () => (await editorLines()).slice(0, 4).join('\n') === wanted.join('\n'));
+  await shot('seq-3-formatted');
+  await page.keyboard.press('Control+S');
+});
+
+test('Show Call Hierarchy on the macro O9100 lists the main program that calls it', { timeout: STEP }, async () => {
+  await openFile(page, 'O9100.nc');
+  await page.locator('.editor-instance .view-lines').click();
+  await page.keyboard.press('Control+Home');
+  await command('Show Call Hierarchy', 'Calls: ');
+  const caller = page.locator('.monaco-list-row', { hasText: 'O1000' }).first();
+  await caller.waitFor();
+  assert.match(await caller.innerText(), /BOLT CIRCLE DRILLING - MAIN PROGRAM/);
+  await shot('seq-4-call-hierarchy');
 });
