@@ -123,3 +123,7 @@ test('Show Call Hierarchy on the macro O9100 lists the main program that calls i
   assert.match(await caller.innerText(), /BOLT CIRCLE DRILLING - MAIN PROGRAM/);
   await shot('seq-4-call-hierarchy');
 });
+
+test('the editor tried no host but this machine: no gallery, telemetry or update check', { timeout: STEP }, async () => {
+  assert.deepEqual(server.outsideHostAttempts(), []);
+});

@@ -19,6 +19,7 @@ import dataclasses
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any
 
 from .block_parser import MAX_BLOCK_CHARS, parse_block
@@ -101,13 +102,19 @@ def _shape(node: Any) -> Any:
     return node
 
 
+@lru_cache(maxsize=1 << 16)
 def _format(line: str, spacing: str) -> _Line | None:
-    """The pieces of ``line`` formatted, or None to leave it as it is."""
+    """The pieces of ``line`` formatted, or None to leave it as it is (kept per line text: a
+    CAM program repeats its lines)."""
     if len(line) > MAX_BLOCK_CHARS or not line.strip():
         return None
     block = parse_block(line)
     if block.tape or any(p.severity == "error" for p in block.problems):
         return None
+    if block.plain is not None:  # address-number words and blanks only: no tokens needed
+        indent = line[: len(line) - len(line.lstrip(" \t"))]
+        plain = _Line(indent + (" " if spacing == SPACED else "").join(block.plain.upper().split()), "", "")
+        return plain if spacing == SPACED or _shape(parse_block(plain.head)) == _shape(block) else None
     prep = prepare(line)
     code = prep.code
     semi = len(line)
