@@ -161,3 +161,11 @@ def test_an_m99_p_whose_callers_labels_would_part_ways_refuses():
     assert [(b.line, b.keepable) for b in plan.blockers] == [(4, False)] and not plan.changes
     whole = _renumbered(text, step=10)  # both become N10: the return follows them
     assert whole.splitlines()[4] == "M99 P10" and whole.splitlines()[8] == "N10 M99"
+
+
+def test_an_m99_p_of_a_lone_program_keeps_its_label():
+    # Run as a main program, M99 P5 jumps to its own N5; called from elsewhere, to the caller's N5.
+    text = lines("O2000", "N3 #1=#1+1", "N5 #2=2", "M99 P5")
+    assert _renumbered(text, step=10).splitlines()[1:4] == ["N10 #1=#1+1", "N5 #2=2", "M99 P5"]
+    computed = lines("O2000", "N3 #1=#1+1", "M99 P#1")
+    assert [b.line for b in renumber(_program(computed), get_dialect("fanuc"), step=10).blockers] == [2]

@@ -11,7 +11,9 @@ run computes (``GOTO #1``, ``M99 P#2``, ``G65 H81 P#3``) may land on any label o
 can reach; an edit that changes one of those labels is refused with the jump's line named
 (``Blocker``), unless the caller asks to keep those labels as they are. Labels that jumps from
 other files land on (``OutsideJump``: ``M98 P.. Q..`` into a program of this file, ``M99 P`` of a
-program it calls) are always kept. New numbers never take a number that a label kept in the same
+program it calls) are always kept, and so is ``Nn`` for an ``M99 Pn`` of a file's only program
+that nothing in the file calls (run as a main program it jumps there; called, it returns to the
+caller). New numbers never take a number that a label kept in the same
 program, or a jump that finds no label there, already uses: a jump that stopped the run with
 alarm 128 must not start landing.
 """
@@ -109,6 +111,7 @@ class _FileJumps:
         self.computed: list[_Computed] = []
         blocks = program.blocks
         local = dialect.local_subprogram_code
+        self.ambiguous: set[tuple[int, int]] = set()  # (unit start, label) an M99 P may mean here or not
         self.callers: dict[int, list[int]] = {}  # unit start -> call lines of it in this file
         self.called: dict[int, int] = {}  # call line -> unit start of the program it calls
         for i in range(program.read_end):
@@ -125,10 +128,20 @@ class _FileJumps:
                 if j.kind == "M98 Q" and not units:  # M98 P#1 Q10: the program is computed, maybe this one
                     self.computed.append(_Computed(i, j.start, j.end, "M98 P", tuple(self.units)))
                     continue
+                if j.kind == "M99" and self._alone(i):  # a main program's jump, or a return to a caller elsewhere
+                    self.ambiguous.add((self.program.unit_at(i).start, j.label))
+                    continue
                 targets = {t for u in units for t in self._lands(i, j.kind, j.label, u)}
                 self.literal.append(_Jump(i, j.start, j.end, j.label, tuple(sorted(targets)), units))
             for kind, start, end in computed_jump_sites(b, local):
                 self.computed.append(_Computed(i, start, end, kind, self._searched(i, kind)))
+
+    def _alone(self, line: int) -> bool:
+        """Whether ``line`` is in the only program of the file and nothing in the file calls it:
+        run as a main program, its ``M99 P`` jumps to its own label; called from another file,
+        it returns to a label of the caller."""
+        units = self.program.units
+        return len(units) == 1 and not self.callers.get(units[0].start)
 
     def _searched(self, line: int, kind: str) -> tuple[int, ...]:
         """The programs of this file (by first line) a jump of ``kind`` on ``line`` looks in."""
@@ -137,8 +150,7 @@ class _FileJumps:
             lines = self.callers.get(unit.start)
             if lines:
                 return tuple(sorted({self.program.unit_at(c).start for c in lines}))
-            units = self.program.units
-            return (unit.start,) if unit is units[0] and len(units) > 1 else ()
+            return (unit.start,) if unit is self.program.units[0] else ()
         if kind == "M98 Q":
             if line in self.called:
                 return (self.called[line],)
@@ -179,6 +191,8 @@ class _Plan:
         self.jumps = _FileJumps(program, dialect, calls)
         self.landed = {t for j in self.jumps.literal for t in j.targets}
         self.outside_labels: dict[int, set[int]] = {}
+        for unit, label in self.jumps.ambiguous:
+            self.outside_labels.setdefault(unit, set()).add(label)
         self.outside_any: set[int] = set()
         for o in outside:
             if o.label is None:
