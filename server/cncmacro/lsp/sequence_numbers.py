@@ -98,6 +98,9 @@ def plan_for(ls: CncMacroServer, command: str, arg: dict[str, Any], keep: bool) 
 def workspace_edit(ls: CncMacroServer, doc: OpenDocument, plan: SequencePlan) -> types.WorkspaceEdit:
     encoding = ls.documents.encoding
     edits = [types.TextEdit(doc_range(doc, c.line, c.start, c.end, encoding), c.text) for c in plan.changes]
+    caps = ls.client_capabilities.workspace
+    if caps is None or caps.workspace_edit is None or not caps.workspace_edit.document_changes:
+        return types.WorkspaceEdit(changes={doc.uri: list(edits)})  # a client without versioned edits
     return types.WorkspaceEdit(
         document_changes=[
             types.TextDocumentEdit(types.OptionalVersionedTextDocumentIdentifier(doc.uri, doc.version), edits)
