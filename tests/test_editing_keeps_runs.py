@@ -94,7 +94,9 @@ def _dialect(p: Path, lines: list[str]) -> str:
 
 
 @pytest.mark.parametrize(
-    "options", [FormatOptions(SPACED, False), FormatOptions(COMPACT, True)], ids=["spaced", "compact-aligned"]
+    "options",
+    [FormatOptions(s, a) for s in (SPACED, COMPACT) for a in (False, True)],
+    ids=["spaced", "spaced-aligned", "compact", "compact-aligned"],
 )
 def test_formatting_changes_no_run_and_formatting_again_changes_nothing(tmp_path: Path, options: FormatOptions):
     def edit(p: Path, lines: list[str]) -> list[str]:
