@@ -9,6 +9,7 @@ import { registerDebugger } from './debugAdapter';
 import { ServerController } from './languageClient';
 import { onDidChangePythonExtensionEnvironment } from './python';
 import { pythonPath, SECTION } from './settings';
+import { registerSequenceNumberCommands } from './sequenceNumbers';
 import { DialectStatus } from './statusBar';
 import { registerToolpath } from './toolpath';
 
@@ -23,6 +24,7 @@ export function activate(context: vscode.ExtensionContext): void {
   registerCommands(context, server, output);
   registerToolpath(context, server);
   registerDebugger(context, server);
+  registerSequenceNumberCommands(context);
   context.subscriptions.push(
     vscode.workspace.onDidChangeConfiguration(async (e) => {
       if (e.affectsConfiguration(`${SECTION}.python.path`)) {

@@ -9,7 +9,7 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass
 
-from ..syntax.nodes import Assign, Block, Goto, If, Number, Var
+from ..syntax.nodes import Assign, Block, Expr, Goto, If, Number, Var
 from ..syntax.walk import iter_nodes
 
 
@@ -51,34 +51,46 @@ def starts_from_the_top(kind: str) -> bool:
     return kind == "M98 Q" or (kind.startswith("M") and kind.endswith(" P"))
 
 
+def _jump_targets(block: Block, local_call: float | None) -> Iterator[tuple[str, Expr]]:
+    """(kind, target as written) of every jump a block makes: literal or computed."""
+    if block.plain is not None:
+        text = block.plain.upper()
+        if "M9" not in text and "H8" not in text and (local_call is None or "M" not in text):
+            return
+    for s in block.statements:
+        target = s.target if isinstance(s, Goto) else s.goto if isinstance(s, If) else None
+        if target is not None:
+            yield "GOTO", target
+    if block.words:
+        codes = {(w.letter, w.value.value) for w in block.words if isinstance(w.value, Number)}
+        for w in block.words:
+            if w.value is None:
+                continue
+            if w.letter == "P" and ("M", 99.0) in codes:
+                yield "M99", w.value
+            elif w.letter == "Q" and ("M", 98.0) in codes:
+                yield "M98 Q", w.value
+            elif w.letter == "P" and local_call is not None and ("M", local_call) in codes:
+                yield local_call_kind(local_call), w.value
+            elif w.letter == "P" and ("G", 65.0) in codes and any(("H", float(h)) in codes for h in range(80, 87)):
+                yield "H8x", w.value
+
+
 def jump_sites(block: Block, local_call: float | None = None) -> list[JumpSite]:
     """The jumps of a block to literal label numbers; ``local_call`` is the dialect's local
     subprogram call code (``Dialect.local_subprogram_code``), whose P names a label."""
     out: list[JumpSite] = []
-    if block.plain is not None:
-        text = block.plain.upper()
-        if "M9" not in text and "H8" not in text and (local_call is None or "M" not in text):
-            return out
-    for s in block.statements:
-        target = s.target if isinstance(s, Goto) else s.goto if isinstance(s, If) else None
+    for kind, target in _jump_targets(block, local_call):
         n = _literal_int(target)
         if n is not None:
-            out.append(JumpSite(n, "GOTO", target.start, target.end))  # type: ignore[union-attr]
-    if block.words:
-        codes = {(w.letter, w.value.value) for w in block.words if isinstance(w.value, Number)}
-        for w in block.words:
-            n = _literal_int(w.value)
-            if n is None:
-                continue
-            if w.letter == "P" and ("M", 99.0) in codes:
-                out.append(JumpSite(n, "M99", w.value.start, w.value.end))  # type: ignore[union-attr]
-            elif w.letter == "Q" and ("M", 98.0) in codes:
-                out.append(JumpSite(n, "M98 Q", w.value.start, w.value.end))  # type: ignore[union-attr]
-            elif w.letter == "P" and local_call is not None and ("M", local_call) in codes:
-                out.append(JumpSite(n, local_call_kind(local_call), w.value.start, w.value.end))  # type: ignore[union-attr]
-            elif w.letter == "P" and ("G", 65.0) in codes and any(("H", float(h)) in codes for h in range(80, 87)):
-                out.append(JumpSite(n, "H8x", w.value.start, w.value.end))  # type: ignore[union-attr]
+            out.append(JumpSite(n, kind, target.start, target.end))
     return out
+
+
+def computed_jump_sites(block: Block, local_call: float | None = None) -> list[tuple[str, int, int]]:
+    """(kind, start, end) of the jumps of a block whose label the run computes: ``GOTO #1``,
+    ``IF [..] GOTO [#2+10]``, ``M99 P#3``, ``G65 H81 P#4`` (the kinds of ``JumpSite``)."""
+    return [(kind, t.start, t.end) for kind, t in _jump_targets(block, local_call) if not isinstance(t, Number)]
 
 
 def variable_sites(block: Block) -> list[VariableSite]:

@@ -254,14 +254,17 @@ async def _pull_configuration(server: CncMacroServer) -> None:
 def build_server() -> CncMacroServer:
     """A server with every feature registered."""
     from . import (
+        call_hierarchy,
         code_actions,
         completion,
         folding,
+        formatting,
         highlight,
         hover,
         inlay_hints,
         navigation,
         semantic_tokens,
+        sequence_numbers,
         signature_help,
         symbols,
     )
@@ -337,6 +340,9 @@ def build_server() -> CncMacroServer:
         signature_help,
         code_actions,
         inlay_hints,
+        sequence_numbers,
+        formatting,
+        call_hierarchy,
     ):
         module.register(server)
     return server

@@ -1,0 +1,48 @@
+"""Formatting, end to end: document and range formatting upper-case the words and put one space
+between them, or none and with comments aligned when the editor's ``cncMacro.format`` settings
+say so; comments keep their case."""
+
+from __future__ import annotations
+
+import pytest
+from lsprotocol import types
+from pytest_lsp import LanguageClient
+
+from .lsp_session import FANUC, close_file, open_file
+
+pytestmark = pytest.mark.asyncio(loop_scope="module")
+
+TEXT = "o0001 (Lower title)\nn10 g01x10.y5. (cut)\nif[#1gt2]goto10\nm30\n"
+OPTIONS = types.FormattingOptions(tab_size=4, insert_spaces=True)
+
+
+def _applied(text: str, edits: list[types.TextEdit]) -> str:
+    rows = text.split("\n")
+    for e in sorted(edits, key=lambda e: -e.range.start.line):
+        assert e.range.start.line == e.range.end.line and e.range.start.character == 0
+        rows[e.range.start.line] = e.new_text + rows[e.range.start.line][e.range.end.character :]
+    return "\n".join(rows)
+
+
+async def test_document_and_range_formatting(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "format.nc", TEXT)
+    whole = await fanuc_en.text_document_formatting_async(
+        types.DocumentFormattingParams(types.TextDocumentIdentifier(uri), OPTIONS)
+    )
+    ranged = await fanuc_en.text_document_range_formatting_async(
+        types.DocumentRangeFormattingParams(
+            types.TextDocumentIdentifier(uri), types.Range(types.Position(2, 0), types.Position(3, 0)), OPTIONS
+        )
+    )
+    fanuc_en.set_configuration({"spacing": "compact", "alignComments": True}, section="cncMacro.format")
+    try:
+        compact = await fanuc_en.text_document_formatting_async(
+            types.DocumentFormattingParams(types.TextDocumentIdentifier(uri), OPTIONS)
+        )
+    finally:
+        fanuc_en.set_configuration({}, section="cncMacro.format")
+    close_file(fanuc_en, uri)
+    assert whole is not None and ranged is not None and compact is not None
+    assert _applied(TEXT, whole) == "O0001 (Lower title)\nN10 G01 X10. Y5. (cut)\nIF [#1 GT 2] GOTO 10\nM30\n"
+    assert _applied(TEXT, ranged) == "o0001 (Lower title)\nn10 g01x10.y5. (cut)\nIF [#1 GT 2] GOTO 10\nm30\n"
+    assert _applied(TEXT, compact) == "O0001         (Lower title)\nN10G01X10.Y5. (cut)\nIF[#1GT2]GOTO10\nM30\n"

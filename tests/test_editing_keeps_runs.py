@@ -1,0 +1,133 @@
+"""Editing that must never change what a program does, proved on every program of the corpus
+(tests/corpus) and the examples: each file is formatted (both spacings, comments aligned or not)
+or has its sequence numbers renumbered, added or removed, and every program is run before and
+after the edit; the runs end the same way (status, alarm and its line), with the same final
+variables, output and toolpath."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import shutil
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from cncmacro.analysis.sequence_numbers import (
+    SequencePlan,
+    add_sequence_numbers,
+    remove_unused_sequence_numbers,
+    renumber,
+)
+from cncmacro.cli.main import main
+from cncmacro.dialects import get_dialect
+from cncmacro.library.dialect_choice import dialect_from_text
+from cncmacro.syntax.block_parser import parse_block
+from cncmacro.syntax.formatting import COMPACT, SPACED, FormatOptions, format_lines
+from cncmacro.syntax.program import build_program
+
+ROOT = Path(__file__).resolve().parent.parent
+TREES = [ROOT / "tests" / "corpus", ROOT / "examples"]
+
+
+def _copy(to: Path) -> list[Path]:
+    """The corpus and the examples copied under ``to`` (programs and machine files only)."""
+    files = []
+    for tree in TREES:
+        for p in sorted(tree.rglob("*")):
+            if p.is_file() and (p.suffix.lower() in (".nc", ".cnc") or p.name == ".cncmacro.toml"):
+                target = to / tree.name / p.relative_to(tree)
+                target.parent.mkdir(parents=True, exist_ok=True)
+                shutil.copyfile(p, target)
+                if p.name != ".cncmacro.toml":
+                    files.append(target)
+    return files
+
+
+def _run(path: Path, root: Path) -> dict[str, Any]:
+    out = io.StringIO()
+    argv = ["run", "--no-save", "--json", "--max-blocks", "200000"]
+    machine = path.parent / ".cncmacro.toml"
+    if machine.exists():
+        argv += ["--machine", str(machine)]
+    with contextlib.redirect_stdout(out):
+        status = main([*argv, str(path)])
+    result = json.loads(out.getvalue().replace(json.dumps(str(root))[1:-1], "ROOT"))
+    return {"exit": status, **{k: v for k, v in result.items() if k != "messages"}}
+
+
+def _same_runs(tmp: Path, edit: Callable[[Path, list[str]], list[str]]) -> int:
+    """Run every program before and after ``edit`` (which gives a file's new lines); the number
+    of files the edit changed."""
+    before, after = tmp / "before", tmp / "after"
+    originals, edited = _copy(before), _copy(after)
+    changed = 0
+    for p in edited:
+        data = p.read_bytes()
+        encoding = "utf-8"
+        try:
+            text = data.decode(encoding)
+        except UnicodeDecodeError:
+            encoding = "gb18030"  # a GSK program written on the control
+            text = data.decode(encoding)
+        lines = text.split("\n")
+        new = edit(p, lines)
+        if new != lines:
+            changed += 1
+            p.write_bytes("\n".join(new).encode(encoding))
+    for a, b in zip(originals, edited, strict=True):
+        assert _run(a, before) == _run(b, after), f"{b.relative_to(after)} runs differently after the edit"
+    return changed
+
+
+def _dialect(p: Path, lines: list[str]) -> str:
+    machine = p.parent / ".cncmacro.toml"
+    base = None
+    if machine.exists():
+        for row in machine.read_text(encoding="utf-8").splitlines():
+            if row.strip().startswith("base"):
+                base = row.split("=", 1)[1].strip().strip('"')
+    return dialect_from_text(lines) or base or "fanuc-0i"
+
+
+@pytest.mark.parametrize(
+    "options",
+    [FormatOptions(s, a) for s in (SPACED, COMPACT) for a in (False, True)],
+    ids=["spaced", "spaced-aligned", "compact", "compact-aligned"],
+)
+def test_formatting_changes_no_run_and_formatting_again_changes_nothing(tmp_path: Path, options: FormatOptions):
+    def edit(p: Path, lines: list[str]) -> list[str]:
+        program = build_program([parse_block(x) for x in lines])
+        new = format_lines(lines, 0, len(lines) - 1, options, program.tape_end)
+        out = [new.get(i, x) for i, x in enumerate(lines)]
+        assert not format_lines(out, 0, len(out) - 1, options, program.tape_end), f"{p.name}: formatted twice"
+        return out
+
+    assert _same_runs(tmp_path, edit) > 20
+
+
+def _applied(lines: list[str], plan: SequencePlan) -> list[str]:
+    assert plan.error is None and not plan.blockers
+    out = list(lines)
+    for c in sorted(plan.changes, key=lambda c: (c.line, -c.start)):
+        out[c.line] = out[c.line][: c.start] + c.text + out[c.line][c.end :]
+    return out
+
+
+@pytest.mark.parametrize("how", ["renumber", "add", "remove"])
+def test_sequence_number_edits_change_no_run(tmp_path: Path, how: str):
+    def edit(p: Path, lines: list[str]) -> list[str]:
+        program = build_program([parse_block(x) for x in lines])
+        dialect = get_dialect(_dialect(p, lines))
+        if how == "renumber":
+            plan = renumber(program, dialect, step=10, keep_computed=True)
+        elif how == "add":
+            plan = add_sequence_numbers(program, dialect, step=5, keep_computed=True)
+        else:
+            plan = remove_unused_sequence_numbers(program, dialect, keep_computed=True)
+        return _applied(lines, plan)
+
+    assert _same_runs(tmp_path, edit) > 5
