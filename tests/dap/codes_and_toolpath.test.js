@@ -141,6 +141,14 @@ describe('the toolpath of a paused run', () => {
     assert.equal((await dc.top()).line, 8);
   });
 
+  test('the expressions of inline values evaluate in the paused frame, an indirect one too', async () => {
+    await dc.begin({ program: PROGRAM }, { functionBreakpoints: ['M06'] });
+    assert.equal(await dc.value('#1'), '2');
+    assert.equal(await dc.value('#[#1-1]'), '2');
+    assert.equal(await dc.value('#[#1+2]'), '<vacant>');
+    await assert.rejects(dc.value('#[#1+'), /.+/);
+  });
+
   test('runToMove without a move number is refused', async () => {
     await dc.begin({ program: PROGRAM, stopOnEntry: true });
     await assert.rejects(dc.customRequest('runToMove', {}), /needs the 'index' of a move/);

@@ -260,6 +260,7 @@ def build_server() -> CncMacroServer:
         highlight,
         hover,
         inlay_hints,
+        inline_values,
         navigation,
         semantic_tokens,
         signature_help,
@@ -337,6 +338,7 @@ def build_server() -> CncMacroServer:
         signature_help,
         code_actions,
         inlay_hints,
+        inline_values,
     ):
         module.register(server)
     return server
