@@ -43,6 +43,10 @@ async def test_each_variable_of_a_line_is_an_expression_to_evaluate(fanuc_en: La
     ]
 
 
+async def test_the_server_offers_inline_values(fanuc_en: LanguageClient) -> None:
+    assert fanuc_en.server_capabilities.inline_value_provider  # type: ignore[attr-defined]
+
+
 async def test_only_the_asked_lines_are_answered(fanuc_en: LanguageClient) -> None:
     uri = open_file(fanuc_en, FANUC / "inline_values_range.nc", "O0100\n#1=1\n#2=2\n#3=3\nM30\n")
     assert [v[3] for v in await inline_values(fanuc_en, uri, 2, 2)] == ["#2"]
