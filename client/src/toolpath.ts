@@ -231,7 +231,8 @@ class ToolpathPanel implements vscode.Disposable, DebugPathListener {
     const status: string[][] = [];
     if (debug && paused) {
       status.push([vscode.l10n.t('Paused at {0}:{1}', path.basename(debug.file), String(debug.line))]);
-      status.push([vscode.l10n.t('{0} of {1} moves run', String(paused.done), String(paused.moves.length))]);
+      const total = debug.made > paused.done ? debug.made : paused.moves.length;
+      status.push([vscode.l10n.t('{0} of {1} moves run', String(debug.made), String(total))]);
     } else if (result) {
       status.push([this.statusText(result)]);
       status.push([vscode.l10n.t('{0} blocks, {1} moves', String(result.blocks), String(result.moves.length))]);

@@ -11,11 +11,13 @@ import * as path from 'node:path';
 import * as vscode from 'vscode';
 import { DEBUG_TYPE } from './debugAdapter';
 import { parseRunResult, type RunMove } from './toolpathGeometry';
+import { MAX_DRAWN_MOVES } from './toolpathView';
 
 /** What the paused run says of its toolpath (the adapter's `toolpath` response). */
 export interface DebugPath {
   session: vscode.DebugSession;
-  moves: RunMove[]; // run so far
+  moves: RunMove[]; // run so far (the first MAX_DRAWN_MOVES of them)
+  made: number; // the moves run so far, all of them
   current: RunMove[]; // made by the block the run stands on, not run yet
   file: string;
   line: number;
@@ -43,6 +45,7 @@ function readBody(session: vscode.DebugSession, body: unknown): DebugPath | unde
   return {
     session,
     moves: done.moves,
+    made: typeof b.made === 'number' ? b.made : done.moves.length,
     current: current.moves,
     file: typeof b.file === 'string' ? b.file : '',
     line: typeof b.line === 'number' ? b.line : 0,
@@ -93,7 +96,7 @@ export class DebugPaths implements vscode.Disposable {
     const asked = ++this.asked;
     let state: DebugPath | undefined;
     try {
-      state = readBody(session, await session.customRequest('toolpath'));
+      state = readBody(session, await session.customRequest('toolpath', { limit: MAX_DRAWN_MOVES }));
     } catch {
       state = undefined; // the session ended meanwhile, or the run went on
     }
@@ -123,6 +126,7 @@ export class DebugPaths implements vscode.Disposable {
  * whole run (`full`, from `cncmacro run`) when its start is the run so far (the same program and
  * path); `done` and `current` count the first two parts, so a move's index is its number in the run. */
 export function pausedMoves(full: RunMove[] | undefined, state: DebugPath): { moves: RunMove[]; done: number; current: number } {
+  if (state.made > state.moves.length) return { moves: state.moves, done: state.moves.length, current: 0 }; // beyond what is drawn
   const known = [...state.moves, ...state.current];
   const same = (a: RunMove, b: RunMove): boolean =>
     a.line === b.line && a.mode === b.mode && path.basename(a.file) === path.basename(b.file) &&

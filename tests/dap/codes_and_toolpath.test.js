@@ -112,6 +112,20 @@ describe('the toolpath of a paused run', () => {
     assert.equal(await dc.value('#1'), '2'); // looking ahead ran nothing for good
   });
 
+  test('a limit sends only the first moves run, and counts them all', async () => {
+    await dc.begin({ program: PROGRAM }, { breakpoints: { 'tool_changes.nc': [{ line: 10 }] } });
+    const path = (await dc.customRequest('toolpath', { limit: 2 })).body;
+    assert.deepEqual([path.moves.length, path.made, path.current.length], [2, 5, 1]);
+  });
+
+  test('a name that is no code is unverified with the reason in Chinese in a Chinese locale', async () => {
+    await dc.begin({ program: PROGRAM, stopOnEntry: true }, { locale: 'zh-CN' });
+    const made = (await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'X5' }, { name: 'M6.5' }] })).body
+      .breakpoints;
+    assert.match(made[0].message, /请写顺序号（N100）、程序号（O9100）或 G、M、T 代码/);
+    assert.match(made[1].message, /M代码不能带小数点/);
+  });
+
   test('a block without a move has no current move', async () => {
     await dc.begin({ program: PROGRAM }, { functionBreakpoints: ['M06'] });
     const path = await toolpath();

@@ -328,14 +328,16 @@ class Session:
 
     # ---------------------------------------------------------------- the toolpath view's requests
     def on_toolpath(self, args: dict[str, Any]) -> dict[str, Any]:
-        """The moves run so far, the moves of the block the run stands on (``current``, not run
-        yet) and where that block is: what the toolpath view draws while the run is paused."""
+        """The moves run so far (the first ``limit`` of them, when given; ``made`` counts them
+        all), the moves of the block the run stands on (``current``, not run yet) and where that
+        block is: what the toolpath view draws while the run is paused."""
         m = self.machine()
         axes = m.dialect.axes
         frame = m.frames[-1]
         line = last_line_run(m) if m.status == RunStatus.COMPLETED else frame.pc
+        limit = _whole(args, "limit", 0) or len(m.moves)
         return {
-            "moves": [move_json(mv, axes) for mv in m.moves],
+            "moves": [move_json(mv, axes) for mv in m.moves[:limit]], "made": len(m.moves),
             "current": [move_json(mv, axes) for mv in next_moves(m)],
             "file": frame.file, "line": line + 1, "blocks": m.blocks, "lathe": m.dialect.lathe,
         }  # fmt: skip
