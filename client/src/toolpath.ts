@@ -5,7 +5,9 @@
  * panel per file. The panel is drawn again a moment after the program is edited, when a program
  * it called is saved, and on its Refresh button; clicking a move opens the file it was made in
  * (a called program's too) at its line. A program that is not open in the editor is run from its
- * file.
+ * file. While a debug session of the program is paused, the panel draws the run so far, the
+ * current block's move highlighted and the rest faint, and a click on a move offers "run to here"
+ * (toolpathDebug.ts).
  */
 import { type ChildProcess, spawn } from 'node:child_process';
 import * as path from 'node:path';
@@ -21,9 +23,11 @@ import {
   type Plane,
   PLANES,
   plot,
+  type RunMove,
   type RunResult,
   viewFor,
 } from './toolpathGeometry';
+import { type DebugPath, type DebugPathListener, DebugPaths, pausedMoves } from './toolpathDebug';
 import { MAX_DRAWN_MOVES, nonce, type Texts, toolpathHtml } from './toolpathView';
 
 const VIEW_TYPE = 'cncMacro.toolpath';
@@ -32,7 +36,7 @@ const EDIT_QUIET_MS = 800; // an edit is drawn once typing pauses this long
 
 type Outcome = { result: RunResult } | { error: string };
 
-class ToolpathPanel implements vscode.Disposable {
+class ToolpathPanel implements vscode.Disposable, DebugPathListener {
   private readonly panel: vscode.WebviewPanel;
   private readonly subscriptions: vscode.Disposable[] = [];
   private child: ChildProcess | undefined;
@@ -41,6 +45,8 @@ class ToolpathPanel implements vscode.Disposable {
   private runs = 0;
   private fromEditor = false; // the last run read the editor's text, not the file
   private disposed = false;
+  private debug: DebugPath | undefined; // the paused debug session's run of this program
+  private drawn: RunMove[] = []; // the moves drawn, by their index in the drawing
 
   constructor(
     private readonly context: vscode.ExtensionContext,
@@ -48,6 +54,7 @@ class ToolpathPanel implements vscode.Disposable {
     readonly uri: vscode.Uri,
     private editorColumn: vscode.ViewColumn,
     private readonly onDispose: () => void,
+    private readonly debugPaths: DebugPaths,
   ) {
     this.panel = vscode.window.createWebviewPanel(
       VIEW_TYPE,
@@ -58,7 +65,18 @@ class ToolpathPanel implements vscode.Disposable {
     this.subscriptions.push(
       this.panel.onDidDispose(() => this.dispose()),
       this.panel.webview.onDidReceiveMessage((m: unknown) => this.onMessage(m)),
+      debugPaths.listen(this),
     );
+  }
+
+  programPath(): string {
+    return this.uri.fsPath;
+  }
+
+  setDebugPath(state: DebugPath | undefined): void {
+    if (state === undefined && this.debug === undefined) return;
+    this.debug = state;
+    this.draw();
   }
 
   reveal(column: vscode.ViewColumn | undefined): void {
@@ -114,6 +132,7 @@ class ToolpathPanel implements vscode.Disposable {
     this.result = outcome.result;
     this.draw();
   }
+
 
   /** Run `command`, with `input` on its standard input (the program's text), and read its JSON. */
   private execute(command: string, args: string[], cwd: string, input?: string): Promise<Outcome> {
@@ -200,30 +219,63 @@ class ToolpathPanel implements vscode.Disposable {
 
   private draw(): void {
     const result = this.result;
-    if (!result) return;
-    const lathe = isLatheRun(result);
+    const debug = this.debug;
+    if (!result && !debug) return;
+    const paused = debug ? pausedMoves(result?.moves, debug) : undefined;
+    const all = paused?.moves ?? result?.moves ?? [];
+    const lathe = debug?.lathe ?? (result ? isLatheRun(result) : false);
     const view = viewFor(lathe, this.plane);
-    const moves = result.moves.length > MAX_DRAWN_MOVES ? result.moves.slice(0, MAX_DRAWN_MOVES) : result.moves;
-    const drawn = plot(moves, view, result.status === 'alarm');
-    const status = [[this.statusText(result)]];
-    status.push([vscode.l10n.t('{0} blocks, {1} moves', String(result.blocks), String(result.moves.length))]);
+    const moves = all.length > MAX_DRAWN_MOVES ? all.slice(0, MAX_DRAWN_MOVES) : all;
+    this.drawn = moves;
+    const drawn = plot(moves, view, !paused && result?.status === 'alarm');
+    const status: string[][] = [];
+    if (debug && paused) {
+      status.push([vscode.l10n.t('Paused at {0}:{1}', path.basename(debug.file), String(debug.line))]);
+      const total = debug.made > paused.done ? debug.made : paused.moves.length;
+      status.push([vscode.l10n.t('{0} of {1} moves run', String(debug.made), String(total))]);
+    } else if (result) {
+      status.push([this.statusText(result)]);
+      status.push([vscode.l10n.t('{0} blocks, {1} moves', String(result.blocks), String(result.moves.length))]);
+    }
     const extents = drawn.extents.map((e) => `${e.axis} ${formatNumber(e.min)} … ${formatNumber(e.max)}`);
     const [first, ...others] = extents;
     if (moves.length > 0 && first !== undefined) {
       status.push([vscode.l10n.t('extents {0}', first), ...others]); // one item per axis
     }
     let note: string | undefined;
-    if (moves.length < result.moves.length) {
-      note = vscode.l10n.t('Only the first {0} of {1} moves are drawn.', String(moves.length), String(result.moves.length));
+    if (moves.length < all.length) {
+      note = vscode.l10n.t('Only the first {0} of {1} moves are drawn.', String(moves.length), String(all.length));
     } else if (moves.length === 0) {
       note = vscode.l10n.t('The run made no moves.');
     }
     const plane = lathe
       ? vscode.l10n.t('Lathe: Z across, X up. X is a diameter: it is drawn at X/2, the radius.')
       : vscode.l10n.t('The {0} plane, {1} across and {2} up, equal scales.', view.plane, view.h, view.v);
-    const texts = this.texts(status, this.statusKind(result), lathe ? 'X/2' : view.v, plane, note);
+    const kind: Texts['statusKind'] = paused ? 'paused' : result ? this.statusKind(result) : 'running';
+    const texts = this.texts(status, kind, lathe ? 'X/2' : view.v, plane, note);
+    const debugPage = paused && {
+      done: paused.done,
+      current: paused.current,
+      runTo: vscode.l10n.t('Run to here'),
+      goTo: vscode.l10n.t('Go to its line'),
+      legend: {
+        done: vscode.l10n.t('run so far'),
+        current: vscode.l10n.t("the current block's move"),
+        ahead: vscode.l10n.t('still to run'),
+      },
+    };
+    if (debugPage) texts.hint = vscode.l10n.t('Paused in the debugger: click a move to run to it (forward or back) or to go to its line.');
     this.panel.webview.html = toolpathHtml(
-      { cspSource: this.panel.webview.cspSource, language: vscode.env.language, texts, plot: drawn, moves, view, planes: !lathe },
+      {
+        cspSource: this.panel.webview.cspSource,
+        language: vscode.env.language,
+        texts,
+        plot: drawn,
+        moves,
+        view,
+        planes: !lathe,
+        ...(debugPage ? { debug: debugPage } : {}),
+      },
       nonce(),
     );
   }
@@ -258,12 +310,14 @@ class ToolpathPanel implements vscode.Disposable {
       this.draw();
     } else if (m.type === 'reveal' && typeof m.index === 'number') {
       void this.revealMove(m.index);
+    } else if (m.type === 'runTo' && typeof m.index === 'number' && this.debug) {
+      void this.debugPaths.runTo(this.debug.session, m.index);
     }
   }
 
   /** Open the file a move was made in at its line, in the editor column the program was in. */
   private async revealMove(index: number): Promise<void> {
-    const move = this.result?.moves[index];
+    const move = this.drawn[index];
     if (!move) return;
     const uri = vscode.Uri.file(path.resolve(path.dirname(this.uri.fsPath), move.file));
     try {
@@ -299,6 +353,7 @@ async function showToolpath(
   context: vscode.ExtensionContext,
   server: ServerController,
   panels: Map<string, ToolpathPanel>,
+  debugPaths: DebugPaths,
   uri?: vscode.Uri,
 ): Promise<void> {
   const editor = vscode.window.activeTextEditor;
@@ -312,7 +367,7 @@ async function showToolpath(
   if (panel) {
     panel.reveal(column);
   } else {
-    panel = new ToolpathPanel(context, server, document.uri, column ?? vscode.ViewColumn.One, () => panels.delete(key));
+    panel = new ToolpathPanel(context, server, document.uri, column ?? vscode.ViewColumn.One, () => panels.delete(key), debugPaths);
     panels.set(key, panel);
   }
   await panel.refresh();
@@ -320,6 +375,7 @@ async function showToolpath(
 
 export function registerToolpath(context: vscode.ExtensionContext, server: ServerController): void {
   const panels = new Map<string, ToolpathPanel>();
+  const debugPaths = new DebugPaths();
   const pending = new Map<ToolpathPanel, NodeJS.Timeout>();
   /** Draw again the panels `document` feeds, `delayMs` after the last such event; an edit only
    * redraws the panel of the edited program (a called program is read from its file). */
@@ -338,7 +394,7 @@ export function registerToolpath(context: vscode.ExtensionContext, server: Serve
   };
   context.subscriptions.push(
     vscode.commands.registerCommand('cncMacro.showToolpath', (uri?: vscode.Uri) =>
-      showToolpath(context, server, panels, uri instanceof vscode.Uri ? uri : undefined),
+      showToolpath(context, server, panels, debugPaths, uri instanceof vscode.Uri ? uri : undefined),
     ),
     vscode.workspace.onDidSaveTextDocument((document) => redraw(document, 150)),
     vscode.workspace.onDidChangeTextDocument((e) => {
@@ -350,5 +406,6 @@ export function registerToolpath(context: vscode.ExtensionContext, server: Serve
         for (const panel of [...panels.values()]) panel.dispose();
       },
     },
+    debugPaths,
   );
 }

@@ -10,6 +10,11 @@
  * pixels, whatever the zoom: the script fits the drawing into the view with margins of so many
  * pixels around it, where they go, so that a short or narrow view does not cut them off or lay
  * them over one another. The status line wraps only between its items, never inside a number.
+ *
+ * While a debug session is paused (`Page.debug`), each move is `done` (run so far), `current`
+ * (the block the run stands on makes it: drawn thick in a colour of its own, a ring where the
+ * tool is) or `ahead` (faint), and a click on a move opens a small menu: "Run to here" posts
+ * `runTo`, "Go to its line" posts `reveal`.
  */
 import * as path from 'node:path';
 import { type Axes, formatNumber, type Plot, type RunMove, type View, PLANES } from './toolpathGeometry';
@@ -24,7 +29,7 @@ export interface Texts {
    * (running, an error) is one text that wraps as prose.
    */
   status: string | string[][];
-  statusKind: 'completed' | 'alarm' | 'limit' | 'error' | 'running';
+  statusKind: 'completed' | 'alarm' | 'limit' | 'error' | 'running' | 'paused';
   note?: string; // e.g. only the first N moves are drawn
   hint: string;
   legend: { rapid: string; feed: string; arc: string; cycle: string; hole: string; origin: string; alarm: string };
@@ -65,9 +70,9 @@ export function moveText(move: RunMove): string {
 }
 
 const STYLE = `
-:root { --rapid: #ffa94d; --feed: #74c0fc; --arc: #63e6be; --cycle: #e599f7; --alarm: #ff6b6b;
+:root { --rapid: #ffa94d; --feed: #74c0fc; --arc: #63e6be; --cycle: #e599f7; --alarm: #ff6b6b; --current: #ffe066;
   --grid: rgba(128,128,128,0.16); --axis: rgba(160,160,160,0.75); }
-body.vscode-light { --rapid: #d9480f; --feed: #1864ab; --arc: #087f5b; --cycle: #ae3ec9; --alarm: #c92a2a;
+body.vscode-light { --rapid: #d9480f; --feed: #1864ab; --arc: #087f5b; --cycle: #ae3ec9; --alarm: #c92a2a; --current: #e8590c;
   --grid: rgba(0,0,0,0.09); --axis: rgba(0,0,0,0.5); }
 body { margin: 0; padding: 0; color: var(--vscode-foreground); background: var(--vscode-editor-background);
   font-family: var(--vscode-font-family); font-size: var(--vscode-font-size); height: 100vh;
@@ -114,6 +119,15 @@ text.axis-name.v { transform: translateY(calc(var(--u) * -${LABEL.vNameAbove}px)
 #legend li { display: flex; align-items: center; gap: 6px; }
 #legend svg { width: 36px; height: 12px; flex: none; }
 #legend .plane { opacity: 0.85; }
+#status.paused { color: var(--current); font-weight: bold; }
+.move.ahead { opacity: 0.25; }
+.move.current .leg, #legend .move.current .leg { stroke: var(--current); stroke-width: 5; }
+.tool { fill: none; stroke: var(--current); stroke-width: 2.5; vector-effect: non-scaling-stroke; pointer-events: none; }
+#menu { position: absolute; display: none; flex-direction: column; gap: 2px; padding: 4px; z-index: 2;
+  background: var(--vscode-menu-background, var(--vscode-editor-background)); color: var(--vscode-menu-foreground);
+  border: 1px solid var(--vscode-menu-border, rgba(128,128,128,0.5)); box-shadow: 0 2px 8px rgba(0,0,0,0.35); }
+#menu.open { display: flex; }
+#menu button { text-align: left; white-space: nowrap; }
 .hint { opacity: 0.7; margin-left: auto; }
 `;
 
@@ -182,14 +196,36 @@ if (svg) {
   const end = () => { drag = null; svg.classList.remove('dragging'); };
   svg.addEventListener('pointerup', end);
   svg.addEventListener('pointercancel', end);
+  const menu = document.getElementById('menu');
+  const closeMenu = () => { if (menu) menu.classList.remove('open'); };
+  if (menu) {
+    for (const b of menu.querySelectorAll('button')) {
+      b.addEventListener('click', () => {
+        vscode.postMessage({ type: b.dataset.action, index: Number(menu.dataset.index) });
+        closeMenu();
+      });
+    }
+  }
   svg.addEventListener('click', (e) => {
     if (dragged) { dragged = false; return; }
     const g = e.target.closest('.move');
+    closeMenu();
     if (!g) return;
     for (const s of svg.querySelectorAll('.move.selected')) s.classList.remove('selected');
     g.classList.add('selected');
+    if (menu) { // paused in the debugger: run to the move, or go to its line
+      const box = svg.parentElement.getBoundingClientRect();
+      menu.dataset.index = g.dataset.index;
+      menu.classList.add('open'); // then measured, and kept inside the view
+      const x = Math.min(e.clientX - box.left + 4, box.width - menu.offsetWidth - 4);
+      const y = Math.min(e.clientY - box.top + 4, box.height - menu.offsetHeight - 4);
+      menu.style.left = Math.max(0, x) + 'px';
+      menu.style.top = Math.max(0, y) + 'px';
+      return;
+    }
     vscode.postMessage({ type: 'reveal', index: Number(g.dataset.index) });
   });
+  document.addEventListener('keydown', (e) => { if (e.key === 'Escape') closeMenu(); });
   document.getElementById('fit').addEventListener('click', () => { zoomed = false; vb = fit(); apply(); });
   window.addEventListener('resize', () => { if (!zoomed) vb = fit(); apply(); });
   apply();
@@ -204,6 +240,33 @@ export interface Page {
   moves?: RunMove[];
   view?: View;
   planes: boolean; // offer the XY / ZX / YZ buttons (a mill)
+  /** a paused debug session: the first `done` moves ran, the next `current` are the current block's */
+  debug?: PausedPage;
+}
+
+export interface PausedPage {
+  done: number;
+  current: number;
+  runTo: string;
+  goTo: string;
+  legend: { done: string; current: string; ahead: string };
+}
+
+/** A move's part in a paused run: run so far, the current block's, or still to run. */
+export function pausedClass(index: number, debug: PausedPage | undefined): string {
+  if (!debug) return '';
+  if (index < debug.done) return ' done';
+  return index < debug.done + debug.current ? ' current' : ' ahead';
+}
+
+const NUMBER = /-?\d+(\.\d+)?(e-?\d+)?/g;
+
+/** The first (`last` false) or last point of SVG path data: its first or last two numbers. */
+function endPoint(d: string, last: boolean): [number, number] | undefined {
+  const numbers = d.match(NUMBER);
+  if (!numbers || numbers.length < 2) return undefined;
+  const k = last ? numbers.length - 2 : 0;
+  return [Number(numbers[k]), Number(numbers[k + 1])];
 }
 
 function legendLine(cls: string, dashed: boolean): string {
@@ -222,7 +285,7 @@ export function margins(plot: Plot): { left: number; right: number; top: number;
   };
 }
 
-function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts): string {
+function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts, debug?: PausedPage): string {
   const w = plot.width;
   const h = plot.height;
   const n = (v: number): string => (Math.round(v * 100) / 100).toString();
@@ -256,7 +319,7 @@ function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts): string
     if (!move) continue;
     const title = `${path.basename(move.file)}:${move.line}  ${moveText(move)}`;
     const d = drawn.legs.map((l) => l.d).join(' ');
-    out.push(`<g class="move ${drawn.kind}" data-index="${drawn.index}" data-line="${move.line}"><title>${escapeHtml(title)}</title>`);
+    out.push(`<g class="move ${drawn.kind}${pausedClass(drawn.index, debug)}" data-index="${drawn.index}" data-line="${move.line}"><title>${escapeHtml(title)}</title>`);
     for (const leg of drawn.legs) out.push(`<path class="leg${leg.dashed ? ' dashed' : ''}" d="${leg.d}"/>`);
     if (drawn.hole) {
       const [x, y] = drawn.hole;
@@ -265,6 +328,13 @@ function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts): string
     out.push(`<path class="hit" d="${d}${drawn.hole ? ` M${n(drawn.hole[0])} ${n(drawn.hole[1])} h0.01` : ''}"/></g>`);
   }
   out.push('</g>');
+  if (debug) {
+    // where the tool is: the start of the current block's move, else the end of the last move run
+    const current = debug.current > 0 ? plot.moves[debug.done]?.legs[0] : undefined;
+    const last = plot.moves[debug.done - 1]?.legs.at(-1);
+    const at = current ? endPoint(current.d, false) : last ? endPoint(last.d, true) : plot.origin;
+    if (at) out.push(`<circle class="tool" cx="${n(at[0])}" cy="${n(at[1])}" r="9"/>`);
+  }
   // the origin: a datum symbol, two quarters filled
   const r = 8;
   out.push(
@@ -284,7 +354,7 @@ function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts): string
   return out.join('\n');
 }
 
-function legend(texts: Texts, plot: Plot): string {
+function legend(texts: Texts, plot: Plot, debug?: PausedPage): string {
   const l = texts.legend;
   const drawn = new Set(plot.moves.map((m) => m.kind));
   const items = [
@@ -303,6 +373,11 @@ function legend(texts: Texts, plot: Plot): string {
   );
   if (plot.end) {
     items.push(`<li><svg viewBox="0 0 36 12"><g class="end"><path d="M14 2 L22 10 M14 10 L22 2"/></g></svg>${escapeHtml(l.alarm)}</li>`);
+  }
+  if (debug) {
+    items.push(`<li>${legendLine('feed done', false)}${escapeHtml(debug.legend.done)}</li>`);
+    items.push(`<li>${legendLine('feed current', false)}${escapeHtml(debug.legend.current)}</li>`);
+    items.push(`<li>${legendLine('feed ahead', false)}${escapeHtml(debug.legend.ahead)}</li>`);
   }
   items.push(`<li class="plane">${escapeHtml(texts.plane)}</li>`);
   return `<ul id="legend">${items.join('')}</ul>`;
@@ -340,9 +415,13 @@ export function toolpathHtml(page: Page, nonceValue: string): string {
     '</header>',
     `<div id="status" class="${t.statusKind}">${statusHtml(t.status)}</div>`,
     t.note ? `<div class="note">${escapeHtml(t.note)}</div>` : '',
-    page.plot ? legend(t, page.plot) : '',
+    page.plot ? legend(t, page.plot, page.debug) : '',
     '<main>',
-    page.plot && page.moves && page.view ? drawing(page.plot, page.moves, page.view, t) : '',
+    page.plot && page.moves && page.view ? drawing(page.plot, page.moves, page.view, t, page.debug) : '',
+    page.debug
+      ? `<div id="menu"><button data-action="runTo">${escapeHtml(page.debug.runTo)}</button>` +
+        `<button data-action="reveal">${escapeHtml(page.debug.goTo)}</button></div>`
+      : '',
     '</main>',
   ];
   return `<!DOCTYPE html>

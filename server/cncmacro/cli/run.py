@@ -28,7 +28,8 @@ from ..bilingual import in_language, is_chinese, pick
 from ..library.machine_file import parse_preset
 from ..machine import Machine, RunResult
 from ..machine.commanded_axes import CommandedAxes
-from ..machine.frames import MODE_NAMES, Move
+from ..machine.frames import Move
+from ..machine.move_json import move_json
 from ..machine.numbers import format_plain
 from ..machine.persistence_lock import LOCK_WAIT
 from ..machine.setup import prepare_run
@@ -177,25 +178,10 @@ def result_json(result: RunResult, axes: tuple[str, ...], locale: str | None = N
         "alarm": alarm,
         "blocks": result.blocks,
         "variables": {str(k): v for k, v in result.variables.items()},
-        "moves": [_move_json(mv, axes) for mv in result.moves],
+        "moves": [move_json(mv, axes) for mv in result.moves],
         "output": result.output,
         "messages": [in_language(n.message, chinese) for n in result.notes if n.kind in ("message", "call")],
     }
-
-
-def _move_json(mv: Move, axes: tuple[str, ...]) -> dict[str, Any]:
-    """A move for ``--json``; an arc (G02/G03) also gets its ``centre``, axis by axis."""
-    move = {
-        "file": mv.file,
-        "line": mv.line + 1,
-        "mode": MODE_NAMES.get(mv.mode, f"G{mv.mode:g}"),
-        "from": dict(zip(axes, mv.start, strict=True)),
-        "to": dict(zip(axes, mv.end, strict=True)),
-        "feed": mv.feed,
-    }
-    if mv.centre is not None:
-        move["centre"] = dict(zip(axes, mv.centre, strict=True))
-    return move
 
 
 def write_json(result: dict[str, Any], out: TextIO) -> None:

@@ -25,9 +25,11 @@ from ..bilingual import detail
 from ..debugging.breakpoints import Asked, Breakpoint, Breakpoints, LineBreakpoint
 from ..debugging.history import History
 from ..debugging.stepping import CONTINUE, STEP_IN, STEP_OUT, STEP_OVER, Filters, Stepper, Stop, last_line_run
+from ..debugging.toolpath_position import next_moves, run_to_move
 from ..library.files import SkippedFileError
 from ..machine import Machine
 from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
+from ..machine.move_json import move_json
 from ..machine.status import RunStatus
 from . import presentation as show
 from .launch import LaunchConfig, Launched, LaunchError, launch
@@ -152,6 +154,8 @@ class Session:
         moved = self.breakpoints.bind(m, launched.scope)
         for bp in moved:  # this launch's block delete switch and folders decide where each can stop
             self.later(partial(self._breakpoint_changed, bp))
+        for fb in self.breakpoints.renamed:  # a code the launch's dialect lacks
+            self.later(partial(self.event, "breakpoint", {"reason": "changed", "breakpoint": _json(fb)}))
         self.history.reset(m)
         config = launched.config
         if config.no_debug:  # Run Without Debugging: nothing stops the run
@@ -321,6 +325,29 @@ class Session:
 
     def _reverse(self, stepper: Stepper) -> Stop:
         return stepper.reverse()
+
+    # ---------------------------------------------------------------- the toolpath view's requests
+    def on_toolpath(self, args: dict[str, Any]) -> dict[str, Any]:
+        """The moves run so far (the first ``limit`` of them, when given; ``made`` counts them
+        all), the moves of the block the run stands on (``current``, not run yet) and where that
+        block is: what the toolpath view draws while the run is paused."""
+        m = self.machine()
+        axes = m.dialect.axes
+        frame = m.frames[-1]
+        line = last_line_run(m) if m.status == RunStatus.COMPLETED else frame.pc
+        limit = _whole(args, "limit", 0) or len(m.moves)
+        return {
+            "moves": [move_json(mv, axes) for mv in m.moves[:limit]], "made": len(m.moves),
+            "current": [move_json(mv, axes) for mv in next_moves(m)],
+            "file": frame.file, "line": line + 1, "blocks": m.blocks, "lathe": m.dialect.lathe,
+        }  # fmt: skip
+
+    def on_runToMove(self, args: dict[str, Any]) -> dict[str, Any]:
+        """Run (forward or back) to the block that makes move ``index`` of the run (0-based)."""
+        index = args.get("index")
+        if not isinstance(index, int) or isinstance(index, bool) or index < 0:
+            raise RequestFailed("runToMove needs the 'index' of a move (0 for the first)")
+        return self._resume(lambda s: run_to_move(s, index))
 
     def on_pause(self, args: dict[str, Any]) -> None:
         if self.stepper is not None and self.running:

@@ -1,5 +1,6 @@
 """Where a run stops: line breakpoints (with conditions, hit counts and log messages),
-function breakpoints on ``N100`` or ``O9100``, and data breakpoints on ``#`` variables.
+function breakpoints on ``N100``, ``O9100`` or a code (``M06``, ``T``, ``G81``: see
+``code_breakpoints``), and data breakpoints on ``#`` variables.
 
 A line breakpoint may be set in any program file of the launch's folders (``scope``, as
 ``library.files.ReadScope`` decides), also one the run has not loaded yet; before the launch,
@@ -41,6 +42,7 @@ from ..machine import Machine, MacroAlarm
 from ..machine.block_roles import stop_line
 from ..machine.evaluate import CompiledText, EvaluationError, compile_condition, compile_expression, holds, value_of
 from ..syntax.program import Program
+from .code_breakpoints import CodeName, codes_of, looks_like_code, matches, read_code_name
 
 _HIT = re.compile(r"^\s*(==|>=|<=|>|<|%)?\s*(\d+)\s*$")
 _FUNCTION = re.compile(r"^\s*([NnOo])\s*(\d{1,8})\s*$")
@@ -158,12 +160,25 @@ class LineBreakpoint(Breakpoint):
 class FunctionBreakpoint(Breakpoint):
     letter: str = "N"
     number: int = 0
+    name: str = ""  # as asked for
+    code: CodeName | None = None  # a G, M or T code to stop before
 
     reason = "function breakpoint"
 
     def same(self, other: Breakpoint) -> bool:
-        return isinstance(other, FunctionBreakpoint) and (other.letter, other.number) == (self.letter, self.number) \
-            and Breakpoint.same(self, other)  # fmt: skip
+        return isinstance(other, FunctionBreakpoint) and (other.letter, other.number, other.code) == (
+            self.letter, self.number, self.code) and Breakpoint.same(self, other)  # fmt: skip
+
+    def meets(
+        self, m: Machine, block_label: int | None, arrival: bool, opened: bool, codes: list[tuple[str, float]]
+    ) -> bool:
+        """Whether the run visits this breakpoint: arriving at its ``N`` block or at a block with
+        its code, or entering its ``O`` program."""
+        if self.code is not None:
+            return arrival and matches(self.code, codes)
+        if self.letter == "N":
+            return arrival and block_label == self.number
+        return opened and m.frames[-1].found.unit.number == self.number
 
 
 @dataclass(slots=True)
@@ -183,7 +198,9 @@ class Breakpoints:
     """Every breakpoint of a session, and the decision to stop."""
 
     lines: dict[str, list[LineBreakpoint]] = field(default_factory=dict)
-    functions: list[FunctionBreakpoint] = field(default_factory=list)
+    functions: list[FunctionBreakpoint] = field(default_factory=list)  # the verified ones
+    asked_functions: list[FunctionBreakpoint] = field(default_factory=list)
+    renamed: list[FunctionBreakpoint] = field(default_factory=list)  # verified otherwise by the last bind
     data: list[DataBreakpoint] = field(default_factory=list)
     at: dict[tuple[str, int], list[LineBreakpoint]] = field(default_factory=dict)
     paths: dict[str, str] = field(default_factory=dict)
@@ -263,18 +280,38 @@ class Breakpoints:
         old: list[Breakpoint] = list(self.functions)
         for spec in specs:
             name = str(spec.place)
-            bp = FunctionBreakpoint(self._id(), spec.condition, spec.hit_condition)
-            m = _FUNCTION.match(name)
-            if m is None:
-                bp.verified, bp.message = False, f"'{name}': name a sequence number (N100) or a program (O9100)"
-            else:
-                bp.letter, bp.number = m.group(1).upper(), int(m.group(2))
+            bp = FunctionBreakpoint(self._id(), spec.condition, spec.hit_condition, name=name)
+            self._name(bp)
             bp.prepare()
             self._compile(bp)
             self._carry(bp, old)
             made.append(bp)
+        self.asked_functions = made
         self.functions = [b for b in made if b.verified]
         return made
+
+    def _name(self, bp: FunctionBreakpoint) -> None:
+        """Read the breakpoint's name: ``N100``, ``O9100`` or a code (checked against the
+        machine's dialect once there is one)."""
+        name = bp.name
+        bp.code, bp.verified, bp.message = None, True, None
+        m = _FUNCTION.match(name)
+        if m is not None:
+            bp.letter, bp.number = m.group(1).upper(), int(m.group(2))
+            return
+        if looks_like_code(name):
+            code = read_code_name(name, self.machine)
+            if isinstance(code, CodeName):
+                bp.code = code
+                return
+            bp.verified, bp.message = False, in_language(code, is_chinese(self.locale))
+            return
+        bp.verified = False
+        bp.message = pick(
+            self.locale,
+            f"'{name}': name a sequence number (N100), a program (O9100) or a G, M or T code (M06, T, M00, G81)",
+            f"'{name}'：请写顺序号（N100）、程序号（O9100）或 G、M、T 代码（M06、T、M00、G81）",
+        )
 
     def set_data(self, specs: list[Asked]) -> list[DataBreakpoint]:
         """Replace the data breakpoints (each ``place`` a variable such as ``#100``)."""
@@ -319,6 +356,12 @@ class Breakpoints:
                 program = self._read(bps[0].shown_path)
                 for bp in bps:
                     self._place(bp, program)
+        named = {fb.id: (fb.verified, fb.message) for fb in self.asked_functions}
+        for fb in self.asked_functions:  # a code is checked against this launch's dialect
+            self._name(fb)
+            fb.prepare()
+        self.renamed = [fb for fb in self.asked_functions if (fb.verified, fb.message) != named[fb.id]]
+        self.functions = [b for b in self.asked_functions if b.verified]
         for b in self._all():
             b.hits, b.since = 0, -1
             if not isinstance(b, LineBreakpoint):  # placed (and compiled) above
@@ -398,12 +441,9 @@ class Breakpoints:
                 continue
             stop = stop or Hit("breakpoint", [bp.id], problem)
         if self.functions:
-            blocks = frame.found.file.program.blocks
-            label = blocks[pc].label if pc < len(blocks) else None
+            label, codes = self._block_facts(m)
             for fb in self.functions:
-                if (fb.letter == "N" and label == fb.number) or (
-                    fb.letter == "O" and entered and frame.found.unit.number == fb.number
-                ):
+                if fb.meets(m, label, True, entered, codes):
                     ok, problem = self._passes(fb, m)
                     if ok:
                         stop = stop or Hit("function breakpoint", [fb.id], problem)
@@ -416,6 +456,17 @@ class Breakpoints:
                 if ok:
                     stop = stop or Hit("data breakpoint", [db.id], problem or _change(db.number, before, value))
         return stop
+
+    def _block_facts(self, m: Machine) -> tuple[int | None, list[tuple[str, float]]]:
+        """The sequence number of the block at the machine's pc, and its codes when a code
+        breakpoint asks for them."""
+        frame = m.frames[-1]
+        blocks = frame.found.file.program.blocks
+        block = blocks[frame.pc] if frame.pc < len(blocks) else None
+        if block is None:
+            return None, []
+        codes = codes_of(m, block) if any(fb.code is not None for fb in self.functions) else []
+        return block.label, codes
 
     # ---------------------------------------------------------------- going backwards
     def look(self, m: Machine, first: bool, arrival: bool, change: bool, entered: bool) -> Visit | None:
@@ -436,13 +487,10 @@ class Breakpoints:
             for bp in self.at.get((self._key(frame.file), pc), ()):
                 self._meet(bp, m, met)
         if self.functions:
-            blocks = frame.found.file.program.blocks
-            label = blocks[pc].label if pc < len(blocks) else None
+            label, codes = self._block_facts(m)
             opened = entered and (change or (arrival and m.blocks == 0))
             for fb in self.functions:
-                if (fb.letter == "N" and arrival and label == fb.number) or (
-                    fb.letter == "O" and opened and frame.found.unit.number == fb.number
-                ):
+                if fb.meets(m, label, arrival, opened, codes):
                     self._meet(fb, m, met)
         if change:
             for db in self.data:

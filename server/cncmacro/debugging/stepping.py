@@ -96,7 +96,9 @@ class Stepper:
         self.moves_sent = len(self.machine.moves)
 
     # ---------------------------------------------------------------- running
-    def run(self, mode: str) -> Stop:
+    def run(self, mode: str, until: Callable[[Machine], bool] | None = None) -> Stop:
+        """Run in ``mode``; ``until``, when given, also ends a continue after the first block
+        after which it holds (``Stop("goto")``), before any breakpoint there is asked."""
         m = self.machine
         if m.finished:  # its end was shown already
             return Stop("exited", finished=True)
@@ -109,11 +111,11 @@ class Stepper:
         was_enabled = gc.isenabled()
         gc.disable()
         try:
-            if mode == CONTINUE and self.breakpoints.empty and not self.echo_motion:
+            if mode == CONTINUE and self.breakpoints.empty and not self.echo_motion and until is None:
                 stop = self._run_fast()
                 self.breakpoints.counted_to = m.blocks  # no breakpoint to count for, so far
                 return stop
-            return self._run_blocks(mode)
+            return self._run_blocks(mode, until)
         finally:
             if m.finished:  # no visit is left to count
                 self.breakpoints.counted_to = m.blocks
@@ -137,7 +139,7 @@ class Stepper:
             if self.pause_requested:
                 return Stop("pause")
 
-    def _run_blocks(self, mode: str) -> Stop:
+    def _run_blocks(self, mode: str, until: Callable[[Machine], bool] | None = None) -> Stop:
         m = self.machine
         depth = len(m.frames)
         max_blocks = m.settings.max_blocks
@@ -155,6 +157,8 @@ class Stepper:
             if m.finished:
                 return self._ended()
             now = len(m.frames)
+            if until is not None and until(m):
+                return Stop("goto")
             hit = self.breakpoints.check(m, now > before)  # counts the visit, also when a step lands here
             stop = self._status_stop()
             if stop is not None:

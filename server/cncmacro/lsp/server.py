@@ -262,6 +262,7 @@ def build_server() -> CncMacroServer:
         highlight,
         hover,
         inlay_hints,
+        inline_values,
         navigation,
         semantic_tokens,
         sequence_numbers,
@@ -343,6 +344,7 @@ def build_server() -> CncMacroServer:
         sequence_numbers,
         formatting,
         call_hierarchy,
+        inline_values,
     ):
         module.register(server)
     return server

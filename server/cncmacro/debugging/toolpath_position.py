@@ -1,0 +1,65 @@
+"""Where a stopped run stands on its toolpath, and running to a move of it.
+
+The toolpath view draws, while a debug session is paused, the moves run so far and the move
+the block the run stands on is about to make (``next_moves``: that block is run on the machine
+and the machine put back as it was, ``Machine.snapshot``/``restore``, so nothing is shown, counted
+or kept). A block that makes no move (a macro statement, a call, an M code) has none.
+
+"Run to here" on a move: ``run_to_move`` puts the run at the block that makes the move with
+that number (0 for the first move of the run), before it runs. A move still to come is reached
+by running forward, block by block, stopping at breakpoints, alarms and pauses on the way as a
+continue does; once the block that makes it has run, the run goes back one block (the
+history's replay). A move already made is reached by going back through the history: the
+latest block before which fewer moves had been made than its number plus one. Both are
+decided here, on the run itself, not by the view.
+"""
+
+from __future__ import annotations
+
+from ..bilingual import pick
+from ..machine import Machine
+from ..machine.frames import Move
+from .stepping import CONTINUE, Stepper, Stop
+
+
+def next_moves(m: Machine) -> list[Move]:
+    """The moves the block at the machine's pc makes (none when the run is over)."""
+    if m.finished:
+        return []
+    snap = m.snapshot()
+    made = len(m.moves)
+    try:
+        m.step()
+        return list(m.moves[made:])
+    finally:
+        m.restore(snap)
+
+
+def run_to_move(stepper: Stepper, index: int) -> Stop:
+    """Put the run at the block that makes move ``index``, forward or back (see above)."""
+    m = stepper.machine
+    if index < len(m.moves):
+        return _back_to_move(stepper, index)
+    stop = stepper.run(CONTINUE, until=lambda machine: len(machine.moves) > index)
+    if stop.reason != "goto":
+        return stop  # a breakpoint, an alarm, a pause or the end came first
+    if stepper._back(m.blocks - 1) is not None:
+        return Stop("entry", pick(stepper.locale, "the start of the kept history", "保留的历史的起点"))
+    return Stop("goto", _arrived(stepper, index))
+
+
+def _back_to_move(stepper: Stepper, index: int) -> Stop:
+    m = stepper.machine
+    target = stepper.history.earliest  # when the history does not reach back that far
+    for block, made in stepper.history.past(m, lambda machine, *_: len(machine.moves)):
+        if made <= index:
+            target = block
+            break
+    if stepper._back(target) is not None or len(m.moves) > index:
+        return Stop("entry", pick(stepper.locale, "the start of the kept history", "保留的历史的起点"))
+    return Stop("goto", _arrived(stepper, index))
+
+
+def _arrived(stepper: Stepper, index: int) -> str:
+    n = index + 1
+    return pick(stepper.locale, f"at the block of move {n}", f"已到第 {n} 段运动的程序段")

@@ -1,0 +1,170 @@
+// Function breakpoints on codes (M06, T, M01, G01), the toolpath the paused run shows (the moves
+// run so far and the move of the block it stands on) and "run to here" on a move, forward and
+// back: `cncmacro dap` driven through a real DAP client.
+'use strict';
+
+const assert = require('node:assert/strict');
+const { afterEach, beforeEach, describe, test } = require('node:test');
+const { CncMacroClient, program } = require('./client.js');
+
+let dc;
+
+beforeEach(async () => {
+  dc = new CncMacroClient();
+  await dc.start();
+});
+
+afterEach(async () => {
+  await dc.stop();
+});
+
+const PROGRAM = program('tool_changes.nc');
+
+async function continueTo() {
+  const stopped = dc.waitForEvent('stopped');
+  await dc.continueRequest({ threadId: 1 });
+  return stopped;
+}
+
+async function toolpath() {
+  return (await dc.customRequest('toolpath', {})).body;
+}
+
+async function runToMove(index) {
+  const stopped = dc.waitForEvent('stopped');
+  await dc.customRequest('runToMove', { index });
+  return stopped;
+}
+
+describe('breaking on codes', () => {
+  test('M06 stops before each tool change, also one whose T is an expression', async () => {
+    const { event } = await dc.begin({ program: PROGRAM }, { functionBreakpoints: ['M06'] });
+    assert.equal(event.body.reason, 'function breakpoint');
+    assert.equal((await dc.top()).line, 4);
+    assert.equal((await continueTo()).body.reason, 'function breakpoint');
+    assert.equal((await dc.top()).line, 9);
+  });
+
+  test('T alone is "run to the next tool change"; the T argument of a G65 call is no tool call', async () => {
+    await dc.begin({ program: PROGRAM }, { functionBreakpoints: ['T'] });
+    assert.equal((await dc.top()).line, 4);
+    await continueTo();
+    assert.equal((await dc.top()).line, 9);
+    const ended = dc.waitForEvent('stopped');
+    await dc.continueRequest({ threadId: 1 });
+    assert.match((await ended).body.description, /program end \(M30\)/); // not at line 12's G65 ... T5
+  });
+
+  test('T2 matches T#1 by its value, M1 matches M01, G1 matches G01', async () => {
+    await dc.begin({ program: PROGRAM }, { functionBreakpoints: ['T2'] });
+    assert.equal((await dc.top()).line, 9);
+    await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'M1' }, { name: 'G1' }] });
+    await continueTo();
+    assert.equal((await dc.top()).line, 11);
+    await dc.stop();
+    dc = new CncMacroClient();
+    await dc.start();
+    await dc.begin({ program: PROGRAM }, { functionBreakpoints: ['G1'] });
+    assert.equal((await dc.top()).line, 6);
+  });
+
+  test('a name that is no code, or an M code with a decimal point, is unverified with the reason', async () => {
+    await dc.begin({ program: PROGRAM, stopOnEntry: true });
+    const made = (await dc.setFunctionBreakpointsRequest({
+      breakpoints: [{ name: 'X5' }, { name: 'M6.5' }, { name: 'G999' }, { name: 'M06' }, { name: 'N100' }],
+    })).body.breakpoints;
+    assert.deepEqual(made.map((b) => b.verified), [false, false, false, true, true]);
+    assert.match(made[0].message, /name a sequence number \(N100\), a program \(O9100\) or a G, M or T code/);
+    assert.match(made[1].message, /M6\.5: an M code takes no decimal point/);
+    assert.match(made[2].message, /G999: FANUC 0i.*has no such G code/);
+  });
+
+  test('a G code set before the launch is checked against the launch\'s dialect', async () => {
+    const changed = dc.waitForEvent('breakpoint');
+    await dc.begin({ program: PROGRAM, stopOnEntry: true }, { functionBreakpoints: ['G999'] });
+    const event = await changed;
+    assert.equal(event.body.breakpoint.verified, false);
+    assert.match(event.body.breakpoint.message, /G999/);
+  });
+
+  test('reverse continue goes back to the earlier tool change', async () => {
+    await dc.begin({ program: PROGRAM }, { functionBreakpoints: ['M06'] });
+    await continueTo();
+    assert.equal((await dc.top()).line, 9);
+    await dc.step('reverseContinueRequest');
+    assert.equal((await dc.top()).line, 4);
+  });
+});
+
+describe('the toolpath of a paused run', () => {
+  test('the moves run so far and the move of the current block, which step back takes back', async () => {
+    await dc.begin({ program: PROGRAM }, { breakpoints: { 'tool_changes.nc': [{ line: 7 }] } });
+    let path = await toolpath();
+    assert.equal(path.line, 7);
+    assert.deepEqual(path.moves.map((m) => m.line), [3, 5, 6]);
+    assert.deepEqual(path.current.map((m) => [m.line, m.mode, m.to.X]), [[7, 'G01', 10]]);
+    await dc.step('nextRequest');
+    path = await toolpath();
+    assert.deepEqual([path.line, path.moves.length, path.current[0].to.Y], [8, 4, 10]);
+    await dc.step('stepBackRequest');
+    path = await toolpath();
+    assert.deepEqual([path.line, path.moves.length, path.current[0].line], [7, 3, 7]);
+    assert.equal(await dc.value('#1'), '2'); // looking ahead ran nothing for good
+  });
+
+  test('a limit sends only the first moves run, and counts them all', async () => {
+    await dc.begin({ program: PROGRAM }, { breakpoints: { 'tool_changes.nc': [{ line: 10 }] } });
+    const path = (await dc.customRequest('toolpath', { limit: 2 })).body;
+    assert.deepEqual([path.moves.length, path.made, path.current.length], [2, 5, 1]);
+  });
+
+  test('a name that is no code is unverified with the reason in Chinese in a Chinese locale', async () => {
+    await dc.begin({ program: PROGRAM, stopOnEntry: true }, { locale: 'zh-CN' });
+    const made = (await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'X5' }, { name: 'M6.5' }] })).body
+      .breakpoints;
+    assert.match(made[0].message, /请写顺序号（N100）、程序号（O9100）或 G、M、T 代码/);
+    assert.match(made[1].message, /M代码不能带小数点/);
+  });
+
+  test('a block without a move has no current move', async () => {
+    await dc.begin({ program: PROGRAM }, { functionBreakpoints: ['M06'] });
+    const path = await toolpath();
+    assert.deepEqual([path.line, path.moves.length, path.current.length], [4, 1, 0]);
+  });
+
+  test('run to a move ahead stops before the block that makes it; to a move behind goes back', async () => {
+    await dc.begin({ program: PROGRAM, stopOnEntry: true });
+    let event = await runToMove(6);
+    assert.equal(event.body.reason, 'goto');
+    assert.equal((await dc.top()).line, 13);
+    let path = await toolpath();
+    assert.deepEqual([path.moves.length, path.current[0].line], [6, 13]);
+    event = await runToMove(1);
+    assert.equal(event.body.reason, 'goto');
+    assert.equal((await dc.top()).line, 5);
+    path = await toolpath();
+    assert.deepEqual([path.moves.length, path.current[0].to.Z], [1, 5]);
+    assert.equal(await dc.value('#1'), '2');
+  });
+
+  test('run to a move stops at a breakpoint on the way', async () => {
+    await dc.begin({ program: PROGRAM, stopOnEntry: true });
+    await dc.setBreakpointsRequest({ source: { path: PROGRAM }, breakpoints: [{ line: 8 }] });
+    const event = await runToMove(5);
+    assert.equal(event.body.reason, 'breakpoint');
+    assert.equal((await dc.top()).line, 8);
+  });
+
+  test('the expressions of inline values evaluate in the paused frame, an indirect one too', async () => {
+    await dc.begin({ program: PROGRAM }, { functionBreakpoints: ['M06'] });
+    assert.equal(await dc.value('#1'), '2');
+    assert.equal(await dc.value('#[#1-1]'), '2');
+    assert.equal(await dc.value('#[#1+2]'), '<vacant>');
+    await assert.rejects(dc.value('#[#1+'), /.+/);
+  });
+
+  test('runToMove without a move number is refused', async () => {
+    await dc.begin({ program: PROGRAM, stopOnEntry: true });
+    await assert.rejects(dc.customRequest('runToMove', {}), /needs the 'index' of a move/);
+  });
+});
