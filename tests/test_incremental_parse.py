@@ -63,6 +63,28 @@ def test_edits_equal_full_parse(lines, data):
         assert doc.program == build_program(doc.blocks)
 
 
+@settings(max_examples=300, deadline=None)
+@given(st.lists(pool_line, min_size=1, max_size=25), st.integers(1, 6), st.data())
+def test_a_document_read_in_steps_and_edited_meanwhile_equals_a_full_parse(lines, step, data):
+    """A huge file is parsed a step at a time while the editor goes on: edits that come
+    between the steps change its text and the lines parsed so far; once read, it is the
+    document its final text gives, and any line asked for meanwhile is that line's block."""
+    doc = ParsedDocument("\n".join(lines), BlockCache(), in_steps=step)
+    while True:
+        for _ in range(data.draw(st.integers(0, 2))):
+            doc.apply_change(*data.draw(edit(len(doc.lines))))
+        fresh = ParsedDocument(doc.text, BlockCache())
+        assert [doc.block_at(i) for i in range(len(doc.lines))] == fresh.blocks
+        if doc.parse_more(step):
+            break
+    fresh = ParsedDocument(doc.text, BlockCache())
+    assert not doc.partial
+    assert doc.lines == fresh.lines and doc.blocks == fresh.blocks
+    assert doc.program == fresh.program
+    doc.apply_change(*data.draw(edit(len(doc.lines))))  # and it is edited as any other
+    assert doc.program == ParsedDocument(doc.text, BlockCache()).program
+
+
 def test_one_line_edit_parses_one_line():
     cache = BlockCache()
     doc = ParsedDocument("\n".join(f"N{i} G01 X{i}.5 Y2." for i in range(1, 2001)), cache)

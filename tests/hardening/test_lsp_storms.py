@@ -98,10 +98,18 @@ async def test_a_hover_is_answered_within_100_ms_while_a_million_line_file_is_an
     uri = open_file(client, million_line_file, version=1)
     # the G21 of line 3: the hover itself costs nothing, so its time is the server's responsiveness
     hover = types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(2, 1))
-    first = await client.text_document_hover_async(hover)  # answered once the open was read
+    first = await client.text_document_hover_async(hover)  # answered while the file is read
     assert first is not None and "G21" in first.contents.value  # type: ignore[union-attr]
+
+    def analysed() -> bool:  # its analysis's progress ends once all its findings are published
+        return any(
+            "analysis" in str(t) and million_line_file.name in str(t) and isinstance(rs[-1], types.WorkDoneProgressEnd)
+            for t, rs in client.progress_reports.items()
+            if rs
+        )
+
     times: list[float] = []
-    while not published.versions(uri) and len(times) < 2000:  # hovers for as long as the analysis runs
+    while not analysed() and len(times) < 2000:  # hovers for as long as it is read and analysed
         t0 = time.perf_counter()
         answer = await client.text_document_hover_async(hover)
         times.append(time.perf_counter() - t0)

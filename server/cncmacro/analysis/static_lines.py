@@ -31,26 +31,39 @@ from .line_facts import LineContext, LineFacts
 from .static_checks import cross_line_diagnostics, findings_of
 
 _V = TypeVar("_V")
-_CHUNK = 50_000  # lines looked at between two reports of how far the look got
+_CHUNK = 20_000  # lines looked at between two reports of how far the look got (and chances to stop)
 
 
 class StaticLines:
     """See the module docstring."""
 
     def __init__(self, blocks: list[Block], ctx: LineContext, memo: BlockMemo | None = None,
-                 looked: Callable[[int, int], None] | None = None) -> None:  # fmt: skip
+                 looked: Callable[[int, int], None] | None = None, fill: bool = True) -> None:  # fmt: skip
         self.ctx = ctx
         self.memo = memo if memo is not None else BlockMemo()
         self.facts: dict[int, LineFacts] = {}  # line -> facts, only lines that have some
         self.problems: dict[int, tuple[Problem, ...]] = {}  # line -> syntax problems
         # the cross-line findings, with the program and library they were found with
         self._cross: tuple[Program, ProgramLibrary | None, list[Diagnostic]] | None = None
-        if looked is None:
-            self._fill(blocks, 0, len(blocks))
-            return
-        for start in range(0, len(blocks), _CHUNK):  # ``looked(lines done, lines)`` after each chunk
-            self._fill(blocks, start, min(start + _CHUNK, len(blocks)))
-            looked(min(start + _CHUNK, len(blocks)), len(blocks))
+        self.looked = looked  # ``looked(lines done, lines)`` after each chunk of a long look
+        self.filled = 0  # the lines before this one have been looked at
+        if fill:
+            self.fill(blocks)
+
+    def fill(self, blocks: list[Block], should_stop: Callable[[], bool] | None = None) -> bool:
+        """Look at the lines not looked at yet, a chunk at a time; False when ``should_stop``
+        said stop between two chunks (the next call goes on from there, and an edit meanwhile
+        is taken into account by ``replace``). Only a whole look gives whole answers."""
+        total = len(blocks)
+        while self.filled < total:
+            end = min(self.filled + _CHUNK, total)
+            self._fill(blocks, self.filled, end)
+            self.filled = end
+            if self.looked is not None and total > _CHUNK:
+                self.looked(end, total)
+            if end < total and should_stop is not None and should_stop():
+                return False
+        return True
 
     def _fill(self, blocks: list[Block], start: int, end: int) -> None:
         facts_of = self.memo.facts
@@ -74,8 +87,11 @@ class StaticLines:
         self.memo.fit(len(blocks))
         if structural or delta or self._connects(start, end):
             self._cross = None
+        if start >= self.filled:  # not looked at yet: the look comes to these lines later
+            return
         _shift(self.facts, start, end, delta)
         _shift(self.problems, start, end, delta)
+        self.filled = self.filled + delta if self.filled >= end else start + new_count
         self._fill(blocks, start, start + new_count)
         if self._connects(start, start + new_count):
             self._cross = None
@@ -128,9 +144,7 @@ class StaticLines:
         for line in sorted(self.problems):
             if line >= read_end:
                 break
-            for p in self.problems[line]:
-                out.append(Diagnostic(file, line, p.start, line, max(p.end, p.start + 1), p.severity, "syntax",
-                                      in_language(p.message, chinese)))  # fmt: skip
+            out.extend(syntax_findings(self.problems[line], line, file, chinese))
         collected: list[tuple[int, LineFacts]] = []
         for line in sorted(self.facts):
             if line >= read_end:
@@ -152,6 +166,16 @@ class StaticLines:
                                                                            collected))  # fmt: skip
         out.extend(kept[2])
         return out
+
+
+def syntax_findings(problems: tuple[Problem, ...], line: int, file: str, chinese: bool) -> list[Diagnostic]:
+    """The syntax problems of the block on ``line`` as diagnostics."""
+    return [
+        Diagnostic(
+            file, line, p.start, line, max(p.end, p.start + 1), p.severity, "syntax", in_language(p.message, chinese)
+        )
+        for p in problems
+    ]
 
 
 def _shift(table: dict[int, _V], start: int, end: int, delta: int) -> None:

@@ -64,12 +64,12 @@ import logging
 import os
 import re
 from collections import Counter
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Generic, TypeVar
 
-from ..bilingual import pick
+from ..bilingual import is_chinese, pick
 from ..dialects import DIALECTS, Dialect, get_dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
 from ..library.file_cache import FileCache
@@ -90,7 +90,7 @@ from .faults import RUN, internal_error
 from .profile_suggestion import suggestion
 from .run_checks import FILE_BUDGETS, MAX_RECORDS, MAX_SECONDS, EntryRun, not_run_diagnostic, run_diagnostics
 from .severity import apply_severities, check_overrides
-from .static_lines import StaticLines
+from .static_lines import StaticLines, syntax_findings
 from .unreached import UnreachedRanges
 
 log = logging.getLogger(__name__)
@@ -212,17 +212,25 @@ class WorkspaceAnalysis:
         self.docs[key] = _Open(key, doc, loaded, version, real=os.path.realpath(key))
         self.stale = True
 
-    def first_screen(self, path: str, text: str, count: int = FIRST_SCREEN_LINES) -> tuple[list[Diagnostic], list[str]]:
-        """What each of the first ``count`` lines of ``text`` earns by itself (syntax and the
-        per-line static findings, the user's severities applied), with those lines' texts: what a huge document shows
-        at once, before it is parsed in full and analysed. The checks that connect lines
-        (labels, loops, calls) and the runs need the whole document and come with its analysis,
-        which finds these again: nothing shown here is taken back by it."""
-        head = ParsedDocument("\n".join(split_lines(text[: _head_end(text, count)])[:count]))
+    def first_screen(self, path: str, lines: list[str], extra: Sequence[int] = ()) -> list[Diagnostic]:
+        """What each of the first ``FIRST_SCREEN_LINES`` of ``lines``, and each line of
+        ``extra``, earns by itself (syntax and the per-line static findings, the user's
+        severities applied): what a huge document shows at once, before it is parsed in full
+        and analysed, and at each edit until then. The checks that connect lines (labels,
+        loops, calls) and the runs need the whole document and come with its analysis, which
+        finds these again: nothing shown here is taken back by it."""
+        head = ParsedDocument("\n".join(lines[:FIRST_SCREEN_LINES]))
         ctx = static_checks.line_context(self.dialect_of(head.lines), self.settings, self.locale)
         static = StaticLines(head.blocks, ctx, self.memo)
-        found, _ = static.line_diagnostics(min(head.program.read_end, count), path, self.locale)
-        return apply_severities(found, self.severities), head.lines
+        found, _ = static.line_diagnostics(min(head.program.read_end, len(head.lines)), path, self.locale)
+        chinese = is_chinese(self.locale)
+        for line in extra:
+            block = head.cache.get(lines[line])
+            found.extend(syntax_findings(block.problems, line, path, chinese))
+            facts = self.memo.facts(block, ctx)
+            if facts is not None:
+                found.extend(static_checks.findings_of(facts, line, path))
+        return apply_severities(found, self.severities)
 
     def change(self, path: str, start_line: int, start_col: int, end_line: int, end_col: int, text: str,
                version: int) -> None:  # fmt: skip
@@ -310,13 +318,20 @@ class WorkspaceAnalysis:
         return d.targets
 
     def _static(self, d: _Open) -> StaticLines:
+        """The per-line part of ``d``'s static checks, every line looked at."""
+        static = self._static_part(d)
+        static.fill(d.doc.blocks)
+        return static
+
+    def _static_part(self, d: _Open) -> StaticLines:
+        """The per-line part of ``d``'s static checks, as far as it got (``StaticLines.fill``)."""
         ctx = static_checks.line_context(self.dialect_of(d.doc.lines), self.settings, self.locale)
         if d.static is None or d.static.ctx is not ctx:
 
             def looked(done: int, total: int) -> None:
                 self.progress = Progress(pick(self.locale, "checking lines", "检查各行"), done / total * STATIC_SHARE)
 
-            d.static = StaticLines(d.doc.blocks, ctx, self.memo, looked)
+            d.static = StaticLines(d.doc.blocks, ctx, self.memo, looked, fill=False)
         return d.static
 
     def _units(self) -> list[tuple[tuple[str, int], FoundProgram, bool]]:
@@ -408,6 +423,9 @@ class WorkspaceAnalysis:
     def _analyze(self, path: str, should_cancel: Callable[[], bool] | None) -> AnalysisResult | None:
         key = self._key(path)
         version = self.docs[key].version if key in self.docs else None
+        for d in self.docs.values():  # the long part of a first analysis: it stops between chunks
+            if not self._static_part(d).fill(d.doc.blocks, should_cancel):
+                return None
         if self.stale or any(d.targets is None for d in self.docs.values()):
             self._entries = None
         units = self._units()
@@ -705,15 +723,15 @@ class _CalledElsewhere(Generic[_T]):
         return self.counts.get(item, 0) > (1 if item in self.own else 0)
 
 
-def _head_end(text: str, count: int) -> int:
-    """Where the first ``count`` lines of ``text`` end (about: a file of lone CR breaks is
-    taken whole)."""
+def head_lines(text: str, count: int = FIRST_SCREEN_LINES) -> list[str]:
+    """The first ``count`` lines of ``text``, without splitting the rest (a file of lone CR
+    breaks is split whole)."""
     end = -1
     for _ in range(count):
         end = text.find("\n", end + 1)
         if end < 0:
-            return len(text)
-    return end
+            break
+    return split_lines(text if end < 0 else text[:end])[:count]
 
 
 def _clock_reads(lines: list[str]) -> int:

@@ -44,7 +44,7 @@ from typing import TYPE_CHECKING, Any, cast
 from lsprotocol import types
 
 from ..analysis import Diagnostic
-from ..analysis.workspace import FIRST_SCREEN_LINES, AnalysisResult, Value, WorkspaceAnalysis
+from ..analysis.workspace import FIRST_SCREEN_LINES, AnalysisResult, Value, WorkspaceAnalysis, head_lines
 from ..bilingual import pick
 from ..syntax.document import ParsedDocument
 from .collector import QUIET_SECONDS, Collector
@@ -69,6 +69,7 @@ PROGRESS_LINES = 20_000  # a first analysis of a file this long reports progress
 PROGRESS_SECONDS = 0.25  # how often it reports
 FIRST_SCREEN_FROM = 100_000  # a file this long shows its first screen's findings before it is parsed in full
 READ_STEP_LINES = 20_000  # and is parsed in steps of this many lines, the editor answered between them
+PROVISIONAL_LINES = 1_000  # edited lines (besides the first screen) whose findings show before its first analysis
 DISK_CHECK_SECONDS = 2.0  # between looks at the files the analysis read, while documents are open
 
 LineValues = dict[int, list[tuple[int, Value]]]
@@ -110,7 +111,8 @@ class DiagnosticsEngine:
         self._values: dict[str, tuple[int | None, LineValues]] = {}
         self._analysed_once: set[str] = set()
         self._first_shown: set[str] = set()  # huge documents whose first screen was published
-        self._loading: dict[str, list[types.DidChangeTextDocumentParams]] = {}  # huge documents being read: their edits
+        self._loading: set[str] = set()  # huge documents being read (``_read``)
+        self._touched: dict[str, set[int]] = {}  # per huge document not analysed yet, the lines edited
         self._loads: dict[str, asyncio.Future[None]] = {}  # and their reading
         # the worker's caches: per file the diagnostics last converted, and per diagnostic (with
         # the text of its lines) its protocol form and JSON form
@@ -215,9 +217,9 @@ class DiagnosticsEngine:
             analysis = self._analysis(documents.machines.path_for(path))
             if huge:
                 if self.server.settings_ready.is_set():
-                    self._publish_first_screen(analysis, item.uri, path, item.text, item.version)
+                    self._publish_first_screen(analysis, item.uri, path, head_lines(item.text), item.version)
                 doc = documents.open(item, ParsedDocument(item.text, in_steps=FIRST_SCREEN_LINES))
-                self._loading[item.uri] = []
+                self._loading.add(item.uri)
             else:
                 analysis.open(path, item.text, item.version)
                 parsed = analysis.document(path)
@@ -234,16 +236,17 @@ class DiagnosticsEngine:
     async def _read(self, doc: OpenDocument) -> None:
         """Parse a huge document in steps, answering the editor between them (hovers, tokens and
         the like parse the lines they need on their own meanwhile), then hand it to its analysis
-        and apply the edits that came while it was read."""
+        (the edits that came meanwhile changed its text, and the lines parsed already)."""
         token = await self._begin_progress(doc, "reading", cancellable=False)
         parsed = doc.parsed
         try:
             while not parsed.parse_more(READ_STEP_LINES):
-                if self._loading.get(doc.uri) is None:
+                if doc.uri not in self._loading:
                     return  # closed meanwhile
                 if doc.uri not in self._first_shown and self.server.settings_ready.is_set():  # opened before them
-                    head = "\n".join(doc.lines[:FIRST_SCREEN_LINES])
-                    self._publish_first_screen(self._analysis(doc.machine_file), doc.uri, doc.path, head, doc.version)
+                    self._publish_first_screen(
+                        self._analysis(doc.machine_file), doc.uri, doc.path, doc.lines, doc.version
+                    )
                 if token is not None:
                     done = int(100 * len(parsed.blocks) / len(parsed.lines))
                     self.server.work_done_progress.report(token, types.WorkDoneProgressReport(percentage=done))
@@ -252,35 +255,33 @@ class DiagnosticsEngine:
             if token is not None:
                 self.server.work_done_progress.end(token, types.WorkDoneProgressEnd())
             self._loads.pop(doc.uri, None)
-        pending = self._loading.pop(doc.uri, None)
-        if pending is None or self.server.documents.by_uri.get(doc.uri) is not doc:
+        if doc.uri not in self._loading or self.server.documents.by_uri.get(doc.uri) is not doc:
             return
+        self._loading.discard(doc.uri)
         with self.editing():
             analysis = self._analysis(doc.machine_file)
             analysis.open(doc.path, parsed, doc.version)
             self.server.documents.moved(doc, parsed, doc.machine_file)
-        for params in pending:
-            self.changed(params)
         self.schedule()
 
     def _ready(self) -> list[OpenDocument]:
         """The open documents, but those still being read (``_read``)."""
         return [d for d in self.server.documents.by_uri.values() if d.uri not in self._loading]
 
-    def _publish_first_screen(self, analysis: WorkspaceAnalysis, uri: str, path: str, text: str, version: int) -> None:
-        """Publish the findings that the first lines of a huge document earn by themselves
-        (``WorkspaceAnalysis.first_screen``), before the document is parsed in full (or, when
-        it was opened before the editor's settings came, before its first analysis): the top
-        of the file is what the editor shows first."""
+    def _publish_first_screen(self, analysis: WorkspaceAnalysis, uri: str, path: str, lines: list[str], version: int,
+                              extra: list[int] | None = None) -> None:  # fmt: skip
+        """Publish the findings that the first lines of a huge document (and the lines of
+        ``extra``) earn by themselves (``WorkspaceAnalysis.first_screen``), before the document
+        is parsed in full and analysed: the top of the file is what the editor shows first."""
         self._first_shown.add(uri)
         try:
-            diags, head = analysis.first_screen(path, text)
+            diags = analysis.first_screen(path, lines, extra or ())
         except Exception:  # the whole analysis will say it
             log.exception("the first screen's findings failed")
             return
 
         def line_text(_file: str, line: int) -> str:
-            return head[line] if 0 <= line < len(head) else ""
+            return lines[line] if 0 <= line < len(lines) else ""
 
         encoding = self.server.documents.encoding
         uri_of = self.server.uri_for_path
@@ -291,11 +292,13 @@ class DiagnosticsEngine:
         )
 
     def changed(self, params: types.DidChangeTextDocumentParams) -> OpenDocument | None:
-        pending = self._loading.get(params.text_document.uri)
-        if pending is not None:  # being read: applied, in order, once it is
-            pending.append(params)
-            return None
+        uri = params.text_document.uri
         version = params.text_document.version
+        if uri in self._loading:  # being read: the text changes now, the analysis comes once it is read
+            doc = self.server.documents.change(params)
+            if doc is not None:
+                self._publish_provisional(doc, params)
+            return doc
 
         def apply(doc: OpenDocument, edit: Edit) -> None:
             self.analyses[doc.machine_file].change(doc.path, *edit, version)
@@ -303,11 +306,33 @@ class DiagnosticsEngine:
         with self.editing():
             doc = self.server.documents.change(params, apply)
         if doc is not None:
+            if doc.uri in self._first_shown and doc.uri not in self._analysed_once:
+                self._publish_provisional(doc, params)
             self.schedule()
         return doc
 
+    def _publish_provisional(self, doc: OpenDocument, params: types.DidChangeTextDocumentParams) -> None:
+        """An edit in a huge document whose first analysis has not ended: what the first screen
+        and the lines edited so far earn by themselves, for the new version at once (the whole
+        analysis publishes the rest)."""
+        touched = self._touched.setdefault(doc.uri, set())
+        for change in params.content_changes:
+            if isinstance(change, types.TextDocumentContentChangePartial):
+                first, last = change.range.start.line, change.range.end.line
+                added = change.text.count("\n") - (last - first)
+                if added:  # the lines below move
+                    moved = {x + added if x > last else x for x in touched if not first < x <= last}
+                    touched.clear()
+                    touched.update(moved)
+                touched.update(range(first, first + change.text.count("\n") + 1))
+        lines = [x for x in sorted(touched) if FIRST_SCREEN_LINES <= x < len(doc.lines)][:PROVISIONAL_LINES]
+        analysis = self._analysis(doc.machine_file)
+        self._publish_first_screen(analysis, doc.uri, doc.path, doc.lines, doc.version, lines)
+
     def closed(self, uri: str) -> None:
-        reading = self._loading.pop(uri, None) is not None  # its reading stops
+        reading = uri in self._loading  # its reading stops
+        self._loading.discard(uri)
+        self._touched.pop(uri, None)
         with self.editing():
             doc = self.server.documents.close(uri)
             if doc is not None and not reading:
@@ -357,8 +382,7 @@ class DiagnosticsEngine:
         big = [d for d in self._ready() if d.uri not in self._analysed_once and len(d.lines) >= PROGRESS_LINES]
         for d in big:
             if len(d.lines) >= FIRST_SCREEN_FROM and d.uri not in self._first_shown:
-                head = "\n".join(d.lines[:FIRST_SCREEN_LINES])
-                self._publish_first_screen(self.analyses[d.machine_file], d.uri, d.path, head, d.version)
+                self._publish_first_screen(self.analyses[d.machine_file], d.uri, d.path, d.lines, d.version)
         token = await self._begin_progress(big[0], "analysis", cancellable=True) if big else None
         stopped = self._stop_asked(token)
         work = asyncio.get_running_loop().run_in_executor(self._executor, self._analyse, generation, stopped)
@@ -366,16 +390,16 @@ class DiagnosticsEngine:
             if token is not None:
                 await self._report_progress(token, work)
             outcome = await work
+            if outcome is not None and outcome.on_disk:
+                self.server.disk_changed(outcome.on_disk)  # read them, and analyse again
+                return
+            if outcome is None or outcome.generation != self.generation:
+                return  # cancelled, or a newer change came: its own run publishes
+            self._publish(outcome)
         finally:
-            if token is not None:
+            if token is not None:  # it ends once its findings are shown
                 done = pick(self._locale, "stopped", "已停止") if stopped() else pick(self._locale, "done", "完成")
                 self.server.work_done_progress.end(token, types.WorkDoneProgressEnd(message=done))
-        if outcome is not None and outcome.on_disk:
-            self.server.disk_changed(outcome.on_disk)  # read them, and analyse again
-            return
-        if outcome is None or outcome.generation != self.generation:
-            return  # cancelled, or a newer change came: its own run publishes
-        self._publish(outcome)
         if self.collector.due() and not self._cleaning:
             self._cleaning = True
             try:
@@ -533,6 +557,7 @@ class DiagnosticsEngine:
             if version is not None or doc is not None:
                 self._values[uri] = (version, outcome.values.get(uri, {}))
             self._analysed_once.add(uri)
+            self._touched.pop(uri, None)
             diags = outcome.found[uri]
             old = self._published.get(uri)
             if old is not None and old[0] == version and old[1] == diags:

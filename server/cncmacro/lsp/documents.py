@@ -177,7 +177,7 @@ class Documents:
                 doc.parsed.apply_change(*edit)
             else:
                 apply(doc, edit)
-            if isinstance(change, types.TextDocumentContentChangePartial):
+            if isinstance(change, types.TextDocumentContentChangePartial) and not doc.parsed.partial:
                 doc.sites.replaced(doc.parsed.blocks, edit[0], edit[2] + 1, len(split_lines(change.text)))
             else:
                 doc.sites = SiteIndex(doc.parsed.blocks, doc.dialect.local_subprogram_code, self.block_memo)

@@ -28,7 +28,8 @@ class ParsedDocument:
         """``in_steps``: parse only that many first lines now, and the rest through ``parse_more``
         (a huge file opened in the editor, which answers meanwhile); until then the document is
         ``partial``: ``blocks`` holds the lines parsed so far, ``block_at`` parses any other line
-        on its own, ``program`` is that of the first lines, and it may not be edited."""
+        on its own, ``program`` is that of the first lines, and an edit changes its lines (and
+        the blocks of those parsed already)."""
         self.cache = cache if cache is not None else shared_cache
         self.lines: list[str] = []
         self.blocks: list[Block] = []
@@ -55,9 +56,13 @@ class ParsedDocument:
             self.blocks += self.cache.get_many(self.lines[done : done + count])
         if self.partial:
             return False
+        self._finish()
+        return True
+
+    def _finish(self) -> None:
+        """Every line is parsed: find the program."""
         self._structural = [b.structural for b in self.blocks]
         self.program = build_program(self.blocks, self._structural)
-        return True
 
     def block_at(self, line: int) -> Block:
         """The block of ``line`` (one of the document's), parsed on its own in a partial document."""
@@ -82,6 +87,13 @@ class ParsedDocument:
     def replace_lines(self, start: int, end: int, new_lines: list[str]) -> None:
         """Replace lines ``start`` to ``end`` (exclusive) by ``new_lines``."""
         get = self.cache.get
+        if self.partial:  # the lines parsed so far stay the first ones; the program comes at the end
+            if start < len(self.blocks):
+                self.blocks[start:end] = [get(line) for line in new_lines]
+            self.lines[start:end] = new_lines
+            if not self.partial:  # the edit took away the lines left to parse
+                self._finish()
+            return
         new_blocks = [get(line) for line in new_lines]
         old_blocks = self.blocks[start:end]
         self.lines[start:end] = new_lines
