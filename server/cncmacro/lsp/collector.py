@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import gc
 import os
+import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
 
@@ -51,6 +52,9 @@ class Collector:
     """When to freeze and when to collect (see the module docstring)."""
 
     def __init__(self) -> None:
+        self._holds = 0  # how many ``paused`` are in force (an analysis, a huge file being read)
+        self._was_enabled = True
+        self._lock = threading.Lock()
         self.baseline = resident_bytes() or 0
         self.analyses = 0
         self.since_clean = 0  # analyses since the last real collection
@@ -58,14 +62,20 @@ class Collector:
 
     @contextmanager
     def paused(self) -> Iterator[None]:
-        """No automatic collection meanwhile (an analysis)."""
-        was_enabled = gc.isenabled()
-        gc.disable()
+        """The collector does not run until the last of the pauses in force ends (an analysis on
+        its thread and a huge file read on the editor's may overlap)."""
+        with self._lock:
+            if self._holds == 0:
+                self._was_enabled = gc.isenabled()
+                gc.disable()
+            self._holds += 1
         try:
             yield
         finally:
-            if was_enabled:
-                gc.enable()
+            with self._lock:
+                self._holds -= 1
+                if self._holds == 0 and self._was_enabled:
+                    gc.enable()
 
     def settle(self, new_documents: bool) -> None:
         """After an analysis: take its survivors out of the collector's walks. What the first

@@ -32,6 +32,7 @@ analysis starts again with it.
 from __future__ import annotations
 
 import asyncio
+import gc
 import logging
 import threading
 import time
@@ -240,21 +241,13 @@ class DiagnosticsEngine:
         token = await self._begin_progress(doc, "reading", cancellable=False)
         parsed = doc.parsed
         try:
-            while not parsed.parse_more(READ_STEP_LINES):
-                if doc.uri not in self._loading:
-                    return  # closed meanwhile
-                if doc.uri not in self._first_shown and self.server.settings_ready.is_set():  # opened before them
-                    self._publish_first_screen(
-                        self._analysis(doc.machine_file), doc.uri, doc.path, doc.lines, doc.version
-                    )
-                if token is not None:
-                    done = int(100 * len(parsed.blocks) / len(parsed.lines))
-                    self.server.work_done_progress.report(token, types.WorkDoneProgressReport(percentage=done))
-                await asyncio.sleep(0)
+            with self.collector.paused():  # a collection between steps would walk all read so far
+                await self._read_steps(doc, token)
         finally:
             if token is not None:
                 self.server.work_done_progress.end(token, types.WorkDoneProgressEnd())
             self._loads.pop(doc.uri, None)
+        gc.freeze()  # what was read stays: later collections pass it over
         if doc.uri not in self._loading or self.server.documents.by_uri.get(doc.uri) is not doc:
             return
         self._loading.discard(doc.uri)
@@ -263,6 +256,19 @@ class DiagnosticsEngine:
             analysis.open(doc.path, parsed, doc.version)
             self.server.documents.moved(doc, parsed, doc.machine_file)
         self.schedule()
+
+    async def _read_steps(self, doc: OpenDocument, token: str | None) -> None:
+        """The steps of ``_read``, until the document is read or closed."""
+        parsed = doc.parsed
+        while not parsed.parse_more(READ_STEP_LINES):
+            if doc.uri not in self._loading:
+                return  # closed meanwhile
+            if doc.uri not in self._first_shown and self.server.settings_ready.is_set():  # opened before them
+                self._publish_first_screen(self._analysis(doc.machine_file), doc.uri, doc.path, doc.lines, doc.version)
+            if token is not None:
+                done = int(100 * len(parsed.blocks) / len(parsed.lines))
+                self.server.work_done_progress.report(token, types.WorkDoneProgressReport(percentage=done))
+            await asyncio.sleep(0)
 
     def _ready(self) -> list[OpenDocument]:
         """The open documents, but those still being read (``_read``)."""
@@ -400,7 +406,7 @@ class DiagnosticsEngine:
             if token is not None:  # it ends once its findings are shown
                 done = pick(self._locale, "stopped", "已停止") if stopped() else pick(self._locale, "done", "完成")
                 self.server.work_done_progress.end(token, types.WorkDoneProgressEnd(message=done))
-        if self.collector.due() and not self._cleaning:
+        if self.collector.due() and not self._cleaning and not self._loading:  # not while a huge file is read
             self._cleaning = True
             try:
                 await self._clean_when_quiet()
@@ -421,6 +427,8 @@ class DiagnosticsEngine:
             await asyncio.sleep(QUIET_SECONDS)
             if generation == self.generation:
                 break
+        if self._loading:
+            return  # a huge file began to be read: after its first analysis
         await asyncio.get_running_loop().run_in_executor(self._executor, self.collector.clean)
 
     def _analyse(self, generation: int, stopped: Callable[[], bool] = lambda: False) -> Outcome | None:
