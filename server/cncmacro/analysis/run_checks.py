@@ -69,6 +69,7 @@ FILE_BUDGETS = 3  # the runs from the programs of one file together run at most 
 LOOK_FROM = 256  # the pass of a jump back at which the run first looks whether it comes back unchanged
 
 Value = float | None
+ToolRecord = tuple[int, str, int, Value, float, float, float]
 
 
 @dataclass(slots=True)
@@ -96,6 +97,10 @@ class RunState:
     # file -> line -> [(stamp, #n, value)]: the value the line left last in each chunk it assigned
     # in, oldest first, so that going back to a checkpoint finds the value the line left before it
     written: dict[str, dict[int, list[tuple[int, int, Value]]]] = field(default_factory=dict)
+    # the cycle time (cycle_summary.py): file -> line -> (seconds, mm cut, mm rapid) when the line
+    # first ran, and each tool change (stamp, file, line, T, seconds, mm cut, mm rapid before it)
+    times: dict[str, dict[int, tuple[float, float, float]]] = field(default_factory=dict)
+    tools: list[ToolRecord] = field(default_factory=list)
 
 
 SMALL_MACHINE = 20_000  # lines of compiled files under which a dropped machine is freed at once
@@ -340,12 +345,15 @@ class EntryRun(RunObserver):
                 {f: dict(d) for f, d in st.first.items()}, list(st.order), dict(st.file_first),
                 {f: (list(a), list(b)) for f, (a, b) in st.reach.items()}, dict(st.vacant),
                 {f: {line: list(h) for line, h in d.items()} for f, d in st.written.items()},
+                {f: dict(d) for f, d in st.times.items()}, list(st.tools),
             )  # fmt: skip
         for _, path, line in st.order[cut:]:
             lines = st.first[path]
             if lines.get(line, -1) >= at:  # else recorded twice (converging keeps both records)
                 del lines[line]
+                st.times.get(path, {}).pop(line, None)
         del st.order[cut:]
+        del st.tools[bisect_left(st.tools, at, key=itemgetter(0)) :]
         for path in [p for p, s in st.file_first.items() if s >= at]:
             del st.file_first[path]
         for path, (reached, steps) in list(st.reach.items()):
@@ -399,6 +407,11 @@ class EntryRun(RunObserver):
             st.file_first[file] = step
         if line not in lines:
             lines[line] = step
+            m = self.machine
+            times = st.times.get(file)
+            if times is None:
+                times = st.times[file] = {}
+            times[line] = (m.clock, m.cut_length, m.rapid_length)
             st.order.append((step, file, line))
             reach = st.reach.get(file)
             if reach is None:
@@ -406,6 +419,10 @@ class EntryRun(RunObserver):
             elif line > reach[0][-1]:
                 reach[0].append(line)
                 reach[1].append(step)
+
+    def tool_changed(self, file: str, line: int) -> None:
+        m = self.machine
+        self.state.tools.append((self.stamp, file, line, m.codes.get("T"), m.clock, m.cut_length, m.rapid_length))
 
     def vacant_argument(self, number: int, file: str, line: int, chain: tuple[CallSite, ...]) -> None:
         key = (file, line, number)
@@ -461,6 +478,10 @@ def _records_before(st: RunState, at: int, cut: int) -> RunState:
     out = RunState(order=st.order[:cut])
     for step, path, line in out.order:
         out.first.setdefault(path, {}).setdefault(line, step)
+        t = st.times.get(path, {}).get(line)
+        if t is not None:
+            out.times.setdefault(path, {}).setdefault(line, t)
+    out.tools = st.tools[: bisect_left(st.tools, at, key=itemgetter(0))]
     out.file_first = {f: s for f, s in st.file_first.items() if s < at}
     for path, (lines, steps) in st.reach.items():
         k = bisect_left(steps, at)

@@ -256,6 +256,7 @@ def build_server() -> CncMacroServer:
     from . import (
         code_actions,
         completion,
+        cycle_lenses,
         folding,
         highlight,
         hover,
@@ -337,6 +338,7 @@ def build_server() -> CncMacroServer:
         signature_help,
         code_actions,
         inlay_hints,
+        cycle_lenses,
     ):
         module.register(server)
     return server
