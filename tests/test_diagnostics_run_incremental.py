@@ -55,7 +55,7 @@ def snapshot(ws: WorkspaceAnalysis, path: str) -> tuple[object, object]:
         (Path(f).name, kind, line): tuple(round(x, 6) for x in value)
         for f, t in result.timing.items()
         for kind, rows in (
-            ("elapsed", {line: (s,) for line, s in t.elapsed.items()}),
+            ("elapsed", {line: (seconds,) for line, seconds in t.elapsed.items()}),
             ("program", {line: (v.seconds, v.cut, v.rapid) for line, v in t.programs.items()}),
             ("tool", {line: (v.seconds, v.cut, v.rapid) for line, (_, v) in t.tools.items()}),
         )

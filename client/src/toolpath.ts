@@ -222,6 +222,7 @@ class ToolpathPanel implements vscode.Disposable {
       ? vscode.l10n.t('Lathe: Z across, X up. X is a diameter: it is drawn at X/2, the radius.')
       : vscode.l10n.t('The {0} plane, {1} across and {2} up, equal scales.', view.plane, view.h, view.v);
     const texts = this.texts(status, this.statusKind(result), lathe ? 'X/2' : view.v, plane, note);
+    texts.totals = result.cycleText; // the cycle time, as the run wrote it in the editor's language
     this.panel.webview.html = toolpathHtml(
       { cspSource: this.panel.webview.cspSource, language: vscode.env.language, texts, plot: drawn, moves, view, planes: !lathe },
       nonce(),

@@ -28,6 +28,8 @@ export interface Texts {
   note?: string; // e.g. only the first N moves are drawn
   hint: string;
   legend: { rapid: string; feed: string; arc: string; cycle: string; hole: string; origin: string; alarm: string };
+  /** the run's cycle time and path (`≈ 3 min 12 s · 1,842 mm cut · 6,300 mm rapid`), shown in the legend */
+  totals?: string;
   plane: string; // what the drawing shows: the plane, or the lathe's Z/X with X halved
   planeButton: string; // tooltip of the plane buttons
   verticalAxis: string; // the name on the vertical axis ("Y", "X/2")
@@ -114,6 +116,7 @@ text.axis-name.v { transform: translateY(calc(var(--u) * -${LABEL.vNameAbove}px)
 #legend li { display: flex; align-items: center; gap: 6px; }
 #legend svg { width: 36px; height: 12px; flex: none; }
 #legend .plane { opacity: 0.85; }
+#legend .totals { font-weight: bold; white-space: nowrap; }
 .hint { opacity: 0.7; margin-left: auto; }
 `;
 
@@ -304,6 +307,7 @@ function legend(texts: Texts, plot: Plot): string {
   if (plot.end) {
     items.push(`<li><svg viewBox="0 0 36 12"><g class="end"><path d="M14 2 L22 10 M14 10 L22 2"/></g></svg>${escapeHtml(l.alarm)}</li>`);
   }
+  if (texts.totals) items.push(`<li class="totals">${escapeHtml(texts.totals)}</li>`);
   items.push(`<li class="plane">${escapeHtml(texts.plane)}</li>`);
   return `<ul id="legend">${items.join('')}</ul>`;
 }

@@ -42,9 +42,10 @@ def file_timings(runs: Iterable[tuple[EntryRun, bool]], shown: Container[str]) -
         for path, lines in st.times.items():
             if path not in shown:
                 continue
-            elapsed = out.setdefault(path, FileTiming()).elapsed
-            for line, t in lines.items():
-                elapsed.setdefault(line, t[0])
+            timing = out.setdefault(path, FileTiming())
+            # the run's own record, not a copy (a 100k-line file's would cost each analysis); a
+            # second run through the file adds what the first did not reach
+            timing.elapsed = {**lines, **timing.elapsed} if timing.elapsed else lines
         m = run.machine
         if m.status != RunStatus.COMPLETED:
             continue

@@ -97,9 +97,9 @@ class RunState:
     # file -> line -> [(stamp, #n, value)]: the value the line left last in each chunk it assigned
     # in, oldest first, so that going back to a checkpoint finds the value the line left before it
     written: dict[str, dict[int, list[tuple[int, int, Value]]]] = field(default_factory=dict)
-    # the cycle time (cycle_summary.py): file -> line -> (seconds, mm cut, mm rapid) when the line
-    # first ran, and each tool change (stamp, file, line, T, seconds, mm cut, mm rapid before it)
-    times: dict[str, dict[int, tuple[float, float, float]]] = field(default_factory=dict)
+    # the cycle time (cycle_lenses.py): file -> line -> the clock (seconds) when the line first ran,
+    # and each tool change (stamp, file, line, T, seconds, mm cut, mm rapid before it)
+    times: dict[str, dict[int, float]] = field(default_factory=dict)
     tools: list[ToolRecord] = field(default_factory=list)
 
 
@@ -407,11 +407,10 @@ class EntryRun(RunObserver):
             st.file_first[file] = step
         if line not in lines:
             lines[line] = step
-            m = self.machine
             times = st.times.get(file)
             if times is None:
                 times = st.times[file] = {}
-            times[line] = (m.clock, m.cut_length, m.rapid_length)
+            times[line] = self.machine.clock
             st.order.append((step, file, line))
             reach = st.reach.get(file)
             if reach is None:

@@ -210,24 +210,25 @@ def _adopt(run: EntryRun, e: Earlier, j: int, plan: tuple[list[tuple[str, int]],
 def _merge_times(run: EntryRun, e: Earlier, bj: int, delta: int, shift: tuple[float, float, float],
                  plan: tuple[list[tuple[str, int]], list[tuple[str, int]]]) -> None:  # fmt: skip
     """The cycle time's records (``RunState.times`` and ``tools``) as ``_merge_records`` merges
-    the first executions: the earlier run's from step ``bj`` on, shifted by the time and path
-    the resumed run is ahead (``shift``: seconds, mm cut, mm rapid) and by ``delta`` blocks."""
+    the first executions: the earlier run's from step ``bj`` on, later by the time and path the
+    resumed run is ahead (``shift``: seconds, mm cut, mm rapid) and ``delta`` blocks on."""
     st = run.state
     old = e.state
     dt, dc, dr = shift
-    for path, ot in old.times.items():
-        of = old.first.get(path, {})
-        merged = {line: (t[0] + dt, t[1] + dc, t[2] + dr) if of.get(line, -1) >= bj else t for line, t in ot.items()}
+    for path, ot in old.times.items():  # the earlier run's records are not needed after this
+        if dt:
+            of = old.first.get(path, {})
+            ot = {line: t + dt if of.get(line, -1) >= bj else t for line, t in ot.items()}
         ct = st.times.get(path)
         if ct:
-            merged.update(ct)
-        st.times[path] = merged
+            ot.update(ct)
+        st.times[path] = ot
     revive, drop = plan
     for path, line in drop:
         st.times.get(path, {}).pop(line, None)
-    m = run.machine
+    now = run.machine.clock
     for path, line in revive:
-        st.times.setdefault(path, {})[line] = (m.clock, m.cut_length, m.rapid_length)
+        st.times.setdefault(path, {})[line] = now
     tail = old.tools[bisect_left(old.tools, bj, key=itemgetter(0)) :]
     st.tools.extend((s + delta, f, line, t, c + dt, cut + dc, r + dr) for s, f, line, t, c, cut, r in tail)
 

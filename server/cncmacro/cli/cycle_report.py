@@ -24,14 +24,16 @@ def run_totals(machine: Machine) -> tuple[Totals, list[ToolPart]]:
     return end, tool_parts(changes, end)
 
 
-def cycle_json(machine: Machine, program: str) -> dict[str, Any]:
-    """``cycle`` of ``--json``: seconds, mm cut and mm rapid, for the program and per tool."""
+def cycle_json(machine: Machine, program: str, locale: str | None = None) -> dict[str, Any]:
+    """``cycle`` of ``--json``: seconds, mm cut and mm rapid, for the program and per tool, and
+    the program's as a person reads them (``text``, in ``locale``: the toolpath's legend)."""
     end, parts = run_totals(machine)
     return {
         "program": program,
         "seconds": end.seconds,
         "cut": end.cut,
         "rapid": end.rapid,
+        "text": totals_text(end, locale),
         "tools": [
             {
                 "tool": p.tool,

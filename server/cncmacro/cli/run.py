@@ -143,7 +143,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
     if args.json:
         head = {"dialect": dialect.name, "lathe": dialect.lathe}
         body = result_json(result, dialect.axes, args.locale)
-        body["cycle"] = cycle_json(machine, program)
+        body["cycle"] = cycle_json(machine, program, args.locale)
         if machine.ended_by_main_m99:  # the sentence only: a toolpath refresh does not search the folder
             body["messages"].append(subprogram_text(path, args.locale))
         write_json({**head, **body}, out)

@@ -107,8 +107,11 @@ class MoveTimes:
             sweep = (_TWO_PI - sweep) % _TWO_PI
         if sweep == 0.0 and start[a] == end[a] and start[b] == end[b]:
             sweep = _TWO_PI  # I, J, K back to the start: a full circle
-        rest = [s if i in axes else e for i, (s, e) in enumerate(zip(start, end, strict=True))]
-        return math.hypot(r * sweep, self.distance(start, rest))
+        arc = r * sweep
+        # a helix: the move off the plane is the other side of a right triangle
+        da, db = (end[a] - start[a]) * ka, (end[b] - start[b]) * kb
+        off = self.distance(start, end) ** 2 - da * da - db * db
+        return math.sqrt(arc * arc + off) if off > 1e-12 else arc
 
     def feed_rate(self, feed: float, per_rev: bool, speed: float, css: bool,
                   start: Sequence[float], end: Sequence[float], unit: float) -> float:  # fmt: skip
