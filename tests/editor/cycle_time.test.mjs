@@ -53,9 +53,9 @@ test('a code lens above the program and each tool change gives its time and path
 });
 
 test('the hover of a block says when it starts in the cycle', { timeout: STEP }, async () => {
-  // X30. (the second hole) starts after T1 (20.7 s), the change (3 s), the first hole and rapids
-  const hover = await hoverOver(page, /^X30\.$/, 'starts at');
-  assert.match(await hover.innerText(), /⏱ starts at ≈ 2\d s into the cycle/);
+  // the dwell starts after everything but itself (0.5 s) and the last rapid (45 mm, 0.11 s): 32.3 s
+  const hover = await hoverOver(page, /^G04$/, 'this block starts at');
+  assert.match(await hover.innerText(), /Dwell[\s\S]*Cycle time: this block starts at ≈ 32 s \(the first time it runs\)/);
   await shot('2-hover');
   await page.mouse.move(5, 500);
   await page.keyboard.press('Escape');

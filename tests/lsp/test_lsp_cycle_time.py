@@ -54,10 +54,10 @@ async def test_the_hover_of_a_block_says_when_it_starts(fanuc_en: LanguageClient
     uri = open_file(fanuc_en, FANUC / "cycle_hover.nc", PROGRAM)
     await diagnostics_for(fanuc_en, uri, 1)
     # G01 Z-30. starts after T1 (9.25 s) and the change to T2 (3 s): 12.25 s
-    assert "⏱ starts at ≈ 12 s into the cycle (the first time it runs)" in await hover_text(fanuc_en, uri, 5, 0)
+    assert "Cycle time: this block starts at ≈ 12 s (the first time it runs)" in await hover_text(fanuc_en, uri, 5, 0)
     # on a variable the hover keeps what it says of it and adds the time: 36.25 s
     text = await hover_text(fanuc_en, uri, 7, 5)
-    assert "#3001" in text and "⏱ starts at ≈ 36 s into the cycle" in text
+    assert "#3001" in text and "Cycle time: this block starts at ≈ 36 s" in text
 
 
 async def test_lenses_and_hover_in_chinese_on_a_lathe(gsk_zh: LanguageClient) -> None:
@@ -69,4 +69,4 @@ async def test_lenses_and_hover_in_chinese_on_a_lathe(gsk_zh: LanguageClient) ->
         (0, "≈ 31 秒 · 切削 50 mm · 快移 0 mm"),
         (1, "T101 ≈ 31 秒 · 切削 50 mm · 快移 0 mm"),  # its part begins with its own change
     ]
-    assert "⏱ 约在循环开始后 1.0 秒 执行到此（首次执行时）" in await hover_text(gsk_zh, uri, 3, 0)
+    assert "加工时间：本程序段约在第 1.0 秒 开始（首次执行时）" in await hover_text(gsk_zh, uri, 3, 0)

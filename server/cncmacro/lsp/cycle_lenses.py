@@ -49,8 +49,8 @@ def elapsed_text(ls: CncMacroServer, doc: OpenDocument, line: int) -> str | None
     if seconds is None:
         return None
     shown = duration_text(seconds, ls.locale)
-    return pick(ls.locale, f"⏱ starts at ≈ {shown} into the cycle (the first time it runs)",
-                f"⏱ 约在循环开始后 {shown} 执行到此（首次执行时）")  # fmt: skip
+    return pick(ls.locale, f"Cycle time: this block starts at ≈ {shown} (the first time it runs)",
+                f"加工时间：本程序段约在第 {shown} 开始（首次执行时）")  # fmt: skip
 
 
 def refresh_code_lenses(server: CncMacroServer) -> None:
