@@ -49,8 +49,11 @@ def cycle_json(machine: Machine, program: str, locale: str | None = None) -> dic
 
 
 def write_cycle_text(machine: Machine, program: str, out: TextOut, locale: str | None = None) -> None:
-    """The totals for a machinist: the program's, then each tool's from its change."""
+    """The totals for a machinist: the program's, then each tool's from its change; nothing for
+    a run that took no time (an alarm on its first blocks)."""
     end, parts = run_totals(machine)
+    if not end.seconds and not parts:
+        return
     zh = is_chinese(locale)
     print(f"加工时间 {program}：{totals_text(end, locale)}" if zh
           else f"cycle time {program}: {totals_text(end, locale)}", file=out)  # fmt: skip

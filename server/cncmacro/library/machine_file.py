@@ -34,6 +34,10 @@ Every key is optional (docs/design.md "Machine settings")::
     [severity]                     # diagnostic code = error|warning|information|hint|off
     macro-alarm = "error"
 
+    [timing]                       # the cycle time's data (timing_settings.py)
+    rapid = { X = 30000, Z = 24000 }
+    tool_change = 2.5
+
 Errors are reported as ``MachineFileError`` with the file and the key (and, where it is known,
 the line), never as a crash: the file is read as untrusted (docs/design.md "Untrusted folders and
 files"), a regular file of at most ``MAX_MACHINE_FILE_BYTES`` in UTF-8, tables nested no deeper
