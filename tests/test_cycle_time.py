@@ -99,6 +99,14 @@ def test_a_dwell_counts_in_the_profiles_units(tmp_path: Path, profile, name, dwe
     assert cycle["seconds"] == pytest.approx(seconds, rel=0.01)
 
 
+def test_an_inch_program_moves_in_inches_and_reports_millimetres(tmp_path: Path) -> None:
+    # G20: G00 X2. is 50.8 mm at 24000 mm/min = 0.127 s; G01 X0 F20. is 2 in at 20 in/min = 6 s
+    text = lines("O1007", "G20 G90 G94", "G00 X2.", "G01 X0 F20.", "M30")
+    cycle = run_json(tmp_path, text)["cycle"]
+    assert cycle["seconds"] == pytest.approx(6.127, rel=0.01)
+    assert (cycle["cut"], cycle["rapid"]) == (pytest.approx(50.8), pytest.approx(50.8))
+
+
 def test_tool_changes_and_m_codes_take_the_machine_files_times(tmp_path: Path) -> None:
     # [timing]: tool change 5 s, M08 0.5 s, rapid X 12000 mm/min.
     #   T1 M06: 5 s | G00 X100: 100 / 12000 min = 0.5 s | G01 X0 F1000: 100 / 1000 min = 6 s  -> T1 11.5 s
