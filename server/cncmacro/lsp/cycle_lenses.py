@@ -54,8 +54,10 @@ def elapsed_text(ls: CncMacroServer, doc: OpenDocument, line: int) -> str | None
 
 
 def refresh_code_lenses(server: CncMacroServer) -> None:
-    """Ask the client for the lenses again after an analysis, when it can be asked."""
-    caps = server.client_capabilities.workspace
+    """Ask the client for the lenses again after an analysis, when it can be asked (a session
+    that was never initialised has no capabilities to ask by)."""
+    client = getattr(server.protocol, "client_capabilities", None)
+    caps = client.workspace if client is not None else None
     lenses = caps.code_lens if caps is not None else None
     if lenses is not None and lenses.refresh_support:
         server.workspace_code_lens_refresh(None)
