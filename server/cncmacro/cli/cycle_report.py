@@ -14,6 +14,7 @@ from typing import Any
 from ..analysis.cycle_summary import ToolPart, Totals, tool_name, tool_parts, totals_text
 from ..bilingual import is_chinese
 from ..machine import Machine
+from ..machine.status import RunStatus
 from .terminal import TextOut
 
 
@@ -50,9 +51,10 @@ def cycle_json(machine: Machine, program: str, locale: str | None = None) -> dic
 
 def write_cycle_text(machine: Machine, program: str, out: TextOut, locale: str | None = None) -> None:
     """The totals for a machinist: the program's, then each tool's from its change; nothing for
-    a run that took no time (an alarm on its first blocks)."""
+    a run that did not complete (an alarm, the block budget), whose time is not the program's, nor
+    for one that took no time (no move, dwell or tool change: a macro that only computes)."""
     end, parts = run_totals(machine)
-    if not end.seconds and not parts:
+    if machine.status != RunStatus.COMPLETED or (not end.seconds and not parts):
         return
     zh = is_chinese(locale)
     print(f"加工时间 {program}：{totals_text(end, locale)}" if zh
