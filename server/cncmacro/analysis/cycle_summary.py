@@ -76,8 +76,11 @@ def totals_text(t: Totals, locale: str | None = None) -> str:
     return f"≈ {time} · {t.cut:,.0f} mm cut · {t.rapid:,.0f} mm rapid"
 
 
-def tool_name(tool: float | None) -> str:
-    """``T1``, ``T0101``-style as written numbers go (``T?`` before any T)."""
+def tool_name(tool: float | None, lathe: bool = False) -> str:
+    """``T1`` on a mill; on a lathe the four digits of tool and offset, ``T0101`` (``T?``
+    before any T)."""
     if tool is None:
         return "T?"
-    return f"T{tool:g}" if tool != int(tool) else f"T{int(tool)}"
+    if tool != int(tool):
+        return f"T{tool:g}"
+    return f"T{int(tool):04d}" if lathe else f"T{int(tool)}"

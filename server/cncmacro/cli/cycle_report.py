@@ -61,5 +61,6 @@ def write_cycle_text(machine: Machine, program: str, out: TextOut, locale: str |
           else f"cycle time {program}: {totals_text(end, locale)}", file=out)  # fmt: skip
     for p in parts:
         where = f"{Path(p.file).name}:{p.line + 1}"
-        print(f"  {tool_name(p.tool)}（{where}）：{totals_text(p.totals, locale)}" if zh
-              else f"  {tool_name(p.tool)} ({where}): {totals_text(p.totals, locale)}", file=out)  # fmt: skip
+        tool = tool_name(p.tool, machine.dialect.lathe)
+        print(f"  {tool}（{where}）：{totals_text(p.totals, locale)}" if zh
+              else f"  {tool} ({where}): {totals_text(p.totals, locale)}", file=out)  # fmt: skip

@@ -31,7 +31,10 @@ def register(server: CncMacroServer) -> None:
         if timing is None:
             return []
         lenses: list[tuple[int, str]] = [(line, totals_text(t, ls.locale)) for line, t in timing.programs.items()]
-        lenses += [(line, f"{tool_name(tool)} {totals_text(t, ls.locale)}") for line, (tool, t) in timing.tools.items()]
+        lathe = doc.dialect.lathe
+        lenses += [
+            (line, f"{tool_name(tool, lathe)} {totals_text(t, ls.locale)}") for line, (tool, t) in timing.tools.items()
+        ]
         return [
             types.CodeLens(
                 range=types.Range(types.Position(line, 0), types.Position(line, 0)),
