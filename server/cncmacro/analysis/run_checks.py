@@ -97,9 +97,10 @@ class RunState:
     # file -> line -> [(stamp, #n, value)]: the value the line left last in each chunk it assigned
     # in, oldest first, so that going back to a checkpoint finds the value the line left before it
     written: dict[str, dict[int, list[tuple[int, int, Value]]]] = field(default_factory=dict)
-    # the cycle time (cycle_lenses.py): file -> line -> the clock (seconds) when the line first ran,
-    # and each tool change (stamp, file, line, T, seconds, mm cut, mm rapid before it)
-    times: dict[str, dict[int, float]] = field(default_factory=dict)
+    # the cycle time (cycle_lenses.py): the clock (seconds) at each entry of ``order``, entry by
+    # entry (a list of floats: shifting it when a run converges is one pass), and each tool change
+    # (stamp, file, line, T, seconds, mm cut, mm rapid before it)
+    clocks: list[float] = field(default_factory=list)
     tools: list[ToolRecord] = field(default_factory=list)
 
 
@@ -345,14 +346,14 @@ class EntryRun(RunObserver):
                 {f: dict(d) for f, d in st.first.items()}, list(st.order), dict(st.file_first),
                 {f: (list(a), list(b)) for f, (a, b) in st.reach.items()}, dict(st.vacant),
                 {f: {line: list(h) for line, h in d.items()} for f, d in st.written.items()},
-                {f: dict(d) for f, d in st.times.items()}, list(st.tools),
+                list(st.clocks), list(st.tools),
             )  # fmt: skip
         for _, path, line in st.order[cut:]:
             lines = st.first[path]
             if lines.get(line, -1) >= at:  # else recorded twice (converging keeps both records)
                 del lines[line]
-                st.times.get(path, {}).pop(line, None)
         del st.order[cut:]
+        del st.clocks[cut:]
         del st.tools[bisect_left(st.tools, at, key=itemgetter(0)) :]
         for path in [p for p, s in st.file_first.items() if s >= at]:
             del st.file_first[path]
@@ -407,11 +408,8 @@ class EntryRun(RunObserver):
             st.file_first[file] = step
         if line not in lines:
             lines[line] = step
-            times = st.times.get(file)
-            if times is None:
-                times = st.times[file] = {}
-            times[line] = self.machine.clock
             st.order.append((step, file, line))
+            st.clocks.append(self.machine.clock)
             reach = st.reach.get(file)
             if reach is None:
                 st.reach[file] = ([line], [step])
@@ -477,9 +475,7 @@ def _records_before(st: RunState, at: int, cut: int) -> RunState:
     out = RunState(order=st.order[:cut])
     for step, path, line in out.order:
         out.first.setdefault(path, {}).setdefault(line, step)
-        t = st.times.get(path, {}).get(line)
-        if t is not None:
-            out.times.setdefault(path, {}).setdefault(line, t)
+    out.clocks = st.clocks[:cut]
     out.tools = st.tools[: bisect_left(st.tools, at, key=itemgetter(0))]
     out.file_first = {f: s for f, s in st.file_first.items() if s < at}
     for path, (lines, steps) in st.reach.items():

@@ -209,28 +209,18 @@ def _adopt(run: EntryRun, e: Earlier, j: int, plan: tuple[list[tuple[str, int]],
 
 def _merge_times(run: EntryRun, e: Earlier, bj: int, delta: int, shift: tuple[float, float, float],
                  plan: tuple[list[tuple[str, int]], list[tuple[str, int]]]) -> None:  # fmt: skip
-    """The cycle time's records (``RunState.times`` and ``tools``) as ``_merge_records`` merges
-    the first executions: the earlier run's from step ``bj`` on, later by the time and path the
-    resumed run is ahead (``shift``: seconds, mm cut, mm rapid) and ``delta`` blocks on."""
+    """The cycle time's records (``RunState.clocks`` and ``tools``) as ``_merge_records`` merges
+    the first executions, entry for entry of ``order`` (the lines revived, then the earlier run's
+    from step ``bj`` on): later by the time and path the resumed run is ahead (``shift``: seconds,
+    mm cut, mm rapid) and ``delta`` blocks on."""
     st = run.state
     old = e.state
     dt, dc, dr = shift
-    for path, ot in old.times.items():  # the earlier run's records are not needed after this
-        if dt:
-            of = old.first.get(path, {})
-            ot = {line: t + dt if of.get(line, -1) >= bj else t for line, t in ot.items()}
-        ct = st.times.get(path)
-        if ct:
-            ot.update(ct)
-        st.times[path] = ot
-    revive, drop = plan
-    for path, line in drop:
-        st.times.get(path, {}).pop(line, None)
-    now = run.machine.clock
-    for path, line in revive:
-        st.times.setdefault(path, {})[line] = now
-    tail = old.tools[bisect_left(old.tools, bj, key=itemgetter(0)) :]
-    st.tools.extend((s + delta, f, line, t, c + dt, cut + dc, r + dr) for s, f, line, t, c, cut, r in tail)
+    st.clocks.extend([run.machine.clock] * len(plan[0]))
+    tail = old.clocks[bisect_left(old.order, (bj, "", -1)) :]
+    st.clocks.extend([c + dt for c in tail] if dt else tail)
+    tools = old.tools[bisect_left(old.tools, bj, key=itemgetter(0)) :]
+    st.tools.extend((s + delta, f, line, t, c + dt, cut + dc, r + dr) for s, f, line, t, c, cut, r in tools)
 
 
 def _merge_records(run: EntryRun, e: Earlier, bj: int, conv: int, delta: int,

@@ -105,7 +105,7 @@ class DiagnosticsEngine:
         self._task: asyncio.Task[None] | None = None
         self._published: dict[str, tuple[int | None, list[Diagnostic], list[types.Diagnostic], int]] = {}
         self._values: dict[str, tuple[int | None, LineValues]] = {}
-        self._timing: dict[str, tuple[int | None, FileTiming]] = {}
+        self._timing: dict[str, tuple[int | None, FileTiming | None]] = {}
         self._analysed_once: set[str] = set()
         # the worker's caches: per file the diagnostics last converted, and per diagnostic (with
         # the text of its lines) its protocol form and JSON form
@@ -444,7 +444,7 @@ class DiagnosticsEngine:
                 continue
             if version is not None or doc is not None:
                 self._values[uri] = (version, outcome.values.get(uri, {}))
-                self._timing[uri] = (version, outcome.timing.get(uri) or FileTiming())
+                self._timing[uri] = (version, outcome.timing.get(uri))
             self._analysed_once.add(uri)
             diags = outcome.found[uri]
             old = self._published.get(uri)
