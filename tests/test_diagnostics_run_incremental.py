@@ -49,7 +49,19 @@ def snapshot(ws: WorkspaceAnalysis, path: str) -> tuple[object, object]:
         for ds in result.diagnostics.values() for d in ds
     )  # fmt: skip
     values = {(Path(f).name, line): v for f, lines in result.values.items() for line, v in lines.items()}
-    return diags, values
+    # the cycle time (analysis/cycle_lenses.py): elapsed per line, totals per program and tool change,
+    # rounded where a converged run's sums may differ from a fresh run's in the last bits
+    timing = {
+        (Path(f).name, kind, line): tuple(round(x, 6) for x in value)
+        for f, t in result.timing.items()
+        for kind, rows in (
+            ("elapsed", {line: (seconds,) for line, seconds in t.elapsed.items()}),
+            ("program", {line: (v.seconds, v.cut, v.rapid) for line, v in t.programs.items()}),
+            ("tool", {line: (v.seconds, v.cut, v.rapid) for line, (_, v) in t.tools.items()}),
+        )
+        for line, value in rows.items()
+    }
+    return diags, (values, timing)
 
 
 def fresh(tmp: Path, texts: dict[str, str]) -> WorkspaceAnalysis:
@@ -405,7 +417,7 @@ def generated_program(draw: st.DrawFn) -> tuple[list[str], list[str]]:
     """A main program and the macro it calls; a program that reads the clock, directly or
     through indirection, or none (the clock is compared only when one of them may read it)."""
     clocked = draw(st.booleans())
-    lines = ["O0001", "G90 G17 G21", "#100=2.5", "#101=1", *(["#3001=0", "#20=3001"] if clocked else [])]
+    lines = ["O0001", "G90 G17 G21", "T1 M06", "#100=2.5", "#101=1", *(["#3001=0", "#20=3001"] if clocked else [])]
     kinds = ["move", "move", "move", "calc", "loop", "call", "jump", *(["clock", "indirect"] if clocked else [])]
     segments = draw(st.integers(2, 8))
     for label in range(1, segments + 1):
@@ -433,7 +445,7 @@ def generated_program(draw: st.DrawFn) -> tuple[list[str], list[str]]:
 
 
 GEN_LINES = ["G01 X7. Y7. Z1. F800", "G01 X1. Y1. Z1. F0.001", "#100=30", "#101=0", "#3001=500", "#20=3002", "",
-             "G65 P9003 A9.", "#150=#3001"]  # fmt: skip
+             "G65 P9003 A9.", "#150=#3001", "T2 M06", "G04 P1500"]  # fmt: skip
 GEN_EDITS = st.one_of(
     st.tuples(st.just("digit"), st.sampled_from(["1", "9", "0"])),  # typed after the X of a move
     st.tuples(st.just("line"), st.sampled_from(GEN_LINES)),

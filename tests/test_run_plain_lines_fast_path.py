@@ -24,7 +24,7 @@ def plain_line(draw: st.DrawFn, dialect: str) -> str:
     letters = AXES[dialect]
     words = []
     if draw(st.booleans()):
-        codes = ["0", "00", "1", "01", "2", "3", "90", "91", "94", "17", "18", "19", "4"]
+        codes = ["0", "00", "1", "01", "2", "3", "90", "91", "94", "95", "17", "18", "19", "4", "20", "21"]
         words.append("G" + draw(st.sampled_from(codes)))
     for letter in draw(st.lists(st.sampled_from(letters + "FSRIJK"), min_size=1, max_size=5)):
         whole = draw(st.integers(-500, 500))
@@ -58,7 +58,8 @@ def program(draw: st.DrawFn) -> tuple[str, list[str], str]:
 def outcome(dialect: str, body: list[str], mode: str) -> tuple[object, ...]:
     m = run(lines("O0001", *body, "M30"), dialect, decimal_point=mode)
     alarm = (m.alarm.number, m.alarm.line) if m.alarm else None
-    return m.status, alarm, m.moves, m.clock, dict(m.modal), dict(m.codes), m.variables()
+    lengths = (m.cut_length, m.rapid_length)  # the cycle time's path (machine/cycle_time.py)
+    return m.status, alarm, m.moves, m.clock, lengths, dict(m.modal), dict(m.codes), m.variables()
 
 
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])

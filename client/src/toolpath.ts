@@ -265,6 +265,7 @@ class ToolpathPanel implements vscode.Disposable, DebugPathListener {
       },
     };
     if (debugPage) texts.hint = vscode.l10n.t('Paused in the debugger: click a move to run to it (forward or back) or to go to its line.');
+    if (result) texts.totals = result.cycleText; // the cycle time, as the run wrote it in the editor's language
     this.panel.webview.html = toolpathHtml(
       {
         cspSource: this.panel.webview.cspSource,

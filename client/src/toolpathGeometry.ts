@@ -34,6 +34,8 @@ export interface RunResult {
   dialect?: string;
   /** whether the run's profile is a lathe (X a diameter), as `cncmacro run --json` says */
   lathe?: boolean;
+  /** the cycle time and path of the run, as `cncmacro run --json` writes them (`cycle.text`) */
+  cycleText?: string;
 }
 
 export type Plane = 'XY' | 'ZX' | 'YZ';
@@ -129,6 +131,8 @@ export function parseRunResult(text: string): RunResult | string {
   const result: RunResult = { status: r.status, alarm, blocks: isNumber(r.blocks) ? r.blocks : 0, moves };
   if (typeof r.dialect === 'string') result.dialect = r.dialect;
   if (typeof r.lathe === 'boolean') result.lathe = r.lathe;
+  const cycle = r.cycle as Record<string, unknown> | null | undefined;
+  if (cycle && typeof cycle === 'object' && typeof cycle.text === 'string') result.cycleText = cycle.text;
   return result;
 }
 

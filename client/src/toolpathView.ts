@@ -33,6 +33,8 @@ export interface Texts {
   note?: string; // e.g. only the first N moves are drawn
   hint: string;
   legend: { rapid: string; feed: string; arc: string; cycle: string; hole: string; origin: string; alarm: string };
+  /** the run's cycle time and path (`≈ 3 min 12 s · 1,842 mm cut · 6,300 mm rapid`), shown in the legend */
+  totals?: string;
   plane: string; // what the drawing shows: the plane, or the lathe's Z/X with X halved
   planeButton: string; // tooltip of the plane buttons
   verticalAxis: string; // the name on the vertical axis ("Y", "X/2")
@@ -128,6 +130,7 @@ text.axis-name.v { transform: translateY(calc(var(--u) * -${LABEL.vNameAbove}px)
   border: 1px solid var(--vscode-menu-border, rgba(128,128,128,0.5)); box-shadow: 0 2px 8px rgba(0,0,0,0.35); }
 #menu.open { display: flex; }
 #menu button { text-align: left; white-space: nowrap; }
+#legend .totals { font-weight: bold; white-space: nowrap; }
 .hint { opacity: 0.7; margin-left: auto; }
 `;
 
@@ -379,6 +382,7 @@ function legend(texts: Texts, plot: Plot, debug?: PausedPage): string {
     items.push(`<li>${legendLine('feed current', false)}${escapeHtml(debug.legend.current)}</li>`);
     items.push(`<li>${legendLine('feed ahead', false)}${escapeHtml(debug.legend.ahead)}</li>`);
   }
+  if (texts.totals) items.push(`<li class="totals">${escapeHtml(texts.totals)}</li>`);
   items.push(`<li class="plane">${escapeHtml(texts.plane)}</li>`);
   return `<ul id="legend">${items.join('')}</ul>`;
 }

@@ -46,13 +46,18 @@ async def start(
 
 
 def accept_registrations(client: LanguageClient) -> None:
-    """Accept what the server asks to register, as VS Code does; kept as ``client.registrations``."""
+    """Accept what the server asks to register, as VS Code does; kept as ``client.registrations``;
+    and answer a code lens refresh."""
     registrations: list[types.Registration] = []
     client.registrations = registrations  # type: ignore[attr-defined]
 
     @client.feature(types.CLIENT_REGISTER_CAPABILITY)
     def register_capability(params: types.RegistrationParams) -> None:
         registrations.extend(params.registrations)
+
+    @client.feature(types.WORKSPACE_CODE_LENS_REFRESH)
+    def code_lens_refresh(params: None) -> None:
+        """The lenses changed (a new analysis): VS Code asks for them again, here nothing does."""
 
 
 def open_file(client: LanguageClient, path: Path, text: str | None = None, version: int = 1) -> str:

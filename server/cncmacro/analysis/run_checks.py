@@ -69,6 +69,7 @@ FILE_BUDGETS = 3  # the runs from the programs of one file together run at most 
 LOOK_FROM = 256  # the pass of a jump back at which the run first looks whether it comes back unchanged
 
 Value = float | None
+ToolRecord = tuple[int, str, int, Value, float, float, float]
 
 
 @dataclass(slots=True)
@@ -96,6 +97,11 @@ class RunState:
     # file -> line -> [(stamp, #n, value)]: the value the line left last in each chunk it assigned
     # in, oldest first, so that going back to a checkpoint finds the value the line left before it
     written: dict[str, dict[int, list[tuple[int, int, Value]]]] = field(default_factory=dict)
+    # the cycle time (cycle_lenses.py): the clock (seconds) at each entry of ``order``, entry by
+    # entry (a list of floats: shifting it when a run converges is one pass), and each tool change
+    # (stamp, file, line, T, seconds, mm cut, mm rapid before it)
+    clocks: list[float] = field(default_factory=list)
+    tools: list[ToolRecord] = field(default_factory=list)
 
 
 SMALL_MACHINE = 20_000  # lines of compiled files under which a dropped machine is freed at once
@@ -340,12 +346,15 @@ class EntryRun(RunObserver):
                 {f: dict(d) for f, d in st.first.items()}, list(st.order), dict(st.file_first),
                 {f: (list(a), list(b)) for f, (a, b) in st.reach.items()}, dict(st.vacant),
                 {f: {line: list(h) for line, h in d.items()} for f, d in st.written.items()},
+                list(st.clocks), list(st.tools),
             )  # fmt: skip
         for _, path, line in st.order[cut:]:
             lines = st.first[path]
             if lines.get(line, -1) >= at:  # else recorded twice (converging keeps both records)
                 del lines[line]
         del st.order[cut:]
+        del st.clocks[cut:]
+        del st.tools[bisect_left(st.tools, at, key=itemgetter(0)) :]
         for path in [p for p, s in st.file_first.items() if s >= at]:
             del st.file_first[path]
         for path, (reached, steps) in list(st.reach.items()):
@@ -400,12 +409,17 @@ class EntryRun(RunObserver):
         if line not in lines:
             lines[line] = step
             st.order.append((step, file, line))
+            st.clocks.append(self.machine.clock)
             reach = st.reach.get(file)
             if reach is None:
                 st.reach[file] = ([line], [step])
             elif line > reach[0][-1]:
                 reach[0].append(line)
                 reach[1].append(step)
+
+    def tool_changed(self, file: str, line: int) -> None:
+        m = self.machine
+        self.state.tools.append((self.stamp, file, line, m.codes.get("T"), m.clock, m.cut_length, m.rapid_length))
 
     def vacant_argument(self, number: int, file: str, line: int, chain: tuple[CallSite, ...]) -> None:
         key = (file, line, number)
@@ -461,6 +475,8 @@ def _records_before(st: RunState, at: int, cut: int) -> RunState:
     out = RunState(order=st.order[:cut])
     for step, path, line in out.order:
         out.first.setdefault(path, {}).setdefault(line, step)
+    out.clocks = st.clocks[:cut]
+    out.tools = st.tools[: bisect_left(st.tools, at, key=itemgetter(0))]
     out.file_first = {f: s for f, s in st.file_first.items() if s < at}
     for path, (lines, steps) in st.reach.items():
         k = bisect_left(steps, at)

@@ -164,11 +164,13 @@ def _plan(run: EntryRun, e: Earlier, bj: int) -> tuple[list[tuple[str, int]], li
     return revive, drop
 
 
-def _shift(snap: Snapshot, delta: int, clock: float, outputs: int, notes: int) -> None:
+def _shift(snap: Snapshot, delta: int, clock: float, outputs: int, notes: int, lengths: tuple[float, float]) -> None:
     snap.blocks += delta
     if clock:
         snap.clock += clock
         snap.timer_marks = {n: v + clock for n, v in snap.timer_marks.items()}
+    if lengths != (0.0, 0.0):
+        snap.lengths = (snap.lengths[0] + lengths[0], snap.lengths[1] + lengths[1])
     moves, output, count = snap.counts
     snap.counts = (moves, output + outputs, count + notes)
 
@@ -180,19 +182,21 @@ def _adopt(run: EntryRun, e: Earlier, j: int, plan: tuple[list[tuple[str, int]],
     conv = m.blocks
     delta = conv - bj
     clock = m.clock - old_j.clock
+    lengths = (m.cut_length - old_j.lengths[0], m.rapid_length - old_j.lengths[1])
     _, out_j, notes_j = old_j.counts
     outputs = len(m.output) - out_j
     notes = len(m.notes) - notes_j
+    _merge_times(run, e, bj, delta, (clock, *lengths), plan)
     _merge_records(run, e, bj, conv, delta, plan)
     _merge_stamps(run, e, bj, delta)
     for snap in e.checkpoints[j + 1 :]:
-        _shift(snap, delta, clock, outputs, notes)
+        _shift(snap, delta, clock, outputs, notes, lengths)
         run.checkpoints.append(snap)
     run.pass_marks.extend(e.pass_marks[j + 1 :])
     run.passes = dict(e.passes)
     merged_notes = m.notes + e.notes[notes_j:]
     merged_output = m.output + e.output[out_j:]
-    _shift(e.final, delta, clock, outputs, notes)
+    _shift(e.final, delta, clock, outputs, notes, lengths)
     m.restore(e.final)
     m.notes = merged_notes
     m.output = merged_output
@@ -201,6 +205,22 @@ def _adopt(run: EntryRun, e: Earlier, j: int, plan: tuple[list[tuple[str, int]],
         run.stopped_by, run.endless_at = "endless", e.endless_at
     if m.blocks > run.max_blocks or (m.status == RunStatus.LIMIT and e.endless_at is None and delta != 0):
         run.back_to(min(m.blocks, run.max_blocks) - 1)
+
+
+def _merge_times(run: EntryRun, e: Earlier, bj: int, delta: int, shift: tuple[float, float, float],
+                 plan: tuple[list[tuple[str, int]], list[tuple[str, int]]]) -> None:  # fmt: skip
+    """The cycle time's records (``RunState.clocks`` and ``tools``) as ``_merge_records`` merges
+    the first executions, entry for entry of ``order`` (the lines revived, then the earlier run's
+    from step ``bj`` on): later by the time and path the resumed run is ahead (``shift``: seconds,
+    mm cut, mm rapid) and ``delta`` blocks on."""
+    st = run.state
+    old = e.state
+    dt, dc, dr = shift
+    st.clocks.extend([run.machine.clock] * len(plan[0]))
+    tail = old.clocks[bisect_left(old.order, (bj, "", -1)) :]
+    st.clocks.extend([c + dt for c in tail] if dt else tail)
+    tools = old.tools[bisect_left(old.tools, bj, key=itemgetter(0)) :]
+    st.tools.extend((s + delta, f, line, t, c + dt, cut + dc, r + dr) for s, f, line, t, c, cut, r in tools)
 
 
 def _merge_records(run: EntryRun, e: Earlier, bj: int, conv: int, delta: int,

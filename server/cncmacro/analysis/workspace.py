@@ -85,6 +85,7 @@ from . import static_checks
 from .block_memo import BlockMemo
 from .call_index import CallIndex
 from .caller_entries import CallerSearch
+from .cycle_lenses import FileTiming, file_timings
 from .diagnostics import UNNECESSARY, Diagnostic, diagnostic
 from .faults import RUN, internal_error
 from .profile_suggestion import suggestion
@@ -121,6 +122,7 @@ class AnalysisResult:
     version: int | None
     diagnostics: dict[str, list[Diagnostic]]
     values: dict[str, dict[int, list[tuple[int, Value]]]]
+    timing: dict[str, FileTiming] = field(default_factory=dict)  # the open files' (cycle_lenses.py)
 
 
 @dataclass(slots=True)
@@ -660,7 +662,8 @@ class WorkspaceAnalysis:
         for path, diags in by_file.items():
             diags.sort(key=Diagnostic.sort_key)
             out[path] = apply_severities(diags, self.severities)
-        return AnalysisResult(version, out, values)
+        timing = file_timings(((run, k not in entries) for k, run in self.runs.items()), self.docs)
+        return AnalysisResult(version, out, values, timing)
 
     def _not_executed(self) -> list[Diagnostic]:
         """Ranges of blocks that no run reached, in the programs that some run entered, in the

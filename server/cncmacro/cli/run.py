@@ -34,6 +34,7 @@ from ..machine.numbers import format_plain
 from ..machine.persistence_lock import LOCK_WAIT
 from ..machine.setup import prepare_run
 from ..machine.status import RunStatus
+from .cycle_report import cycle_json, write_cycle_text
 from .profiles import add_dialect_option
 from .terminal import Printable, TextOut, json_text
 
@@ -122,6 +123,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
         return 2
     machine = prepared.machine
     dialect = machine.dialect
+    program = machine.frames[0].name if machine.frames else path.name
     budget = args.max_blocks if args.max_blocks is not None else machine.settings.max_blocks
     try:
         while True:
@@ -142,12 +144,14 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
     if args.json:
         head = {"dialect": dialect.name, "lathe": dialect.lathe}
         body = result_json(result, dialect.axes, args.locale)
+        body["cycle"] = cycle_json(machine, program, args.locale)
         if machine.ended_by_main_m99:  # the sentence only: a toolpath refresh does not search the folder
             body["messages"].append(subprogram_text(path, args.locale))
         write_json({**head, **body}, out)
     else:
         remarks = subprogram_remarks(machine, path, args.dialect, args.locale) if machine.ended_by_main_m99 else []
         write_text(result, machine, Printable(out), args.locale, remarks)
+        write_cycle_text(machine, program, Printable(out), args.locale)
     return {RunStatus.ALARM: 1, RunStatus.LIMIT: 3}.get(result.status, 0)
 
 

@@ -16,6 +16,7 @@ from typing import Any
 
 from ..bilingual import Detail, detail
 from .tables import CodeDoc, CommonRange, FunctionDoc, ProgramDoc, SystemVariable, SystemVariableName
+from .timing import Timing
 
 # G65 argument specification I (docs/semantics.md §5): letter -> local variable number.
 ARGUMENTS_I = {
@@ -129,6 +130,10 @@ class Dialect:
     # Pn and G10 L20 Pn read and write, and how many extra offsets there are (G10 L20 P range)
     extra_offset_variables: int = 7001
     extra_offset_count: int = 48
+
+    # what the machine takes time for: rapid rates, tool change, M codes, dwell units (timing.py;
+    # the cycle time, machine/cycle_time.py)
+    timing: Timing = field(default_factory=Timing)
 
     def configured(self, **changes: Any) -> Dialect:
         """This profile as one machine has it (a machine file's commons, digits and variables).

@@ -34,6 +34,10 @@ Every key is optional (docs/design.md "Machine settings")::
     [severity]                     # diagnostic code = error|warning|information|hint|off
     macro-alarm = "error"
 
+    [timing]                       # the cycle time's data (timing_settings.py)
+    rapid = { X = 30000, Z = 24000 }
+    tool_change = 2.5
+
 Errors are reported as ``MachineFileError`` with the file and the key (and, where it is known,
 the line), never as a crash: the file is read as untrusted (docs/design.md "Untrusted folders and
 files"), a regular file of at most ``MAX_MACHINE_FILE_BYTES`` in UTF-8, tables nested no deeper
@@ -61,6 +65,7 @@ from ..bilingual import Detail, detail
 from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect
 from ..dialects.tables import SystemVariable
 from .files import SkippedFileError, read_bytes
+from .timing_settings import timing_changes
 
 MACHINE_FILE_NAME = ".cncmacro.toml"
 PERSISTENT_FILE_NAME = ".cncmacro-vars.json"
@@ -110,6 +115,7 @@ class MachineSettings:
     skip: dict[str, float] = field(default_factory=dict)
     severity: dict[str, str] = field(default_factory=dict)
     folder: str | None = None
+    timing: dict[str, object] = field(default_factory=dict)  # [timing]: changes to the profile's (timing_settings.py)
 
     def with_presets(self, presets: dict[int, float]) -> MachineSettings:
         """These settings with more preset variables (later ones win)."""
@@ -157,6 +163,7 @@ class _SettingsFields(TypedDict, total=False):
     skip: dict[str, float]
     severity: dict[str, str]
     folder: str | None
+    timing: dict[str, object]
 
 
 # what makes the error for a key of a mapping: the key and what is wrong with its value
@@ -271,7 +278,7 @@ def settings_from_mapping(
 
     known = {"base", "dialect", "common", "program_digits", "programs_on_control", "system_variables",
              "decimal_point", "block_delete", "persistent_file", "max_blocks", "date", "time",
-             "variables", "calls", "skip", "severity"}  # fmt: skip
+             "variables", "calls", "skip", "severity", "timing"}  # fmt: skip
     for key in data:
         if key not in known:
             names = ", ".join(sorted(known))
@@ -340,6 +347,8 @@ def settings_from_mapping(
         kw["skip"] = {str(k).upper(): float(v) for k, v in s.items()}
     if "severity" in data:
         kw["severity"] = _severity(data["severity"], fail)
+    if "timing" in data:
+        kw["timing"] = timing_changes(data["timing"], fail)
     return MachineSettings(**kw)
 
 

@@ -29,6 +29,8 @@ def machine_profile(name: str | Dialect | None, settings: MachineSettings | None
         changes["programs_on_control"] = settings.programs_on_control
     if settings.system_variables:
         changes["extra_rows"] = settings.system_variables
+    if settings.timing:
+        changes["timing"] = base.timing.changed(settings.timing)
     if not changes:
         return base
     key = (base.name, id(settings))

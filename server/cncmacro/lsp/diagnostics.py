@@ -45,10 +45,12 @@ from typing import TYPE_CHECKING, Any, cast
 from lsprotocol import types
 
 from ..analysis import Diagnostic
+from ..analysis.cycle_lenses import FileTiming
 from ..analysis.workspace import FIRST_SCREEN_LINES, AnalysisResult, Value, WorkspaceAnalysis, head_lines
 from ..bilingual import pick
 from ..syntax.document import ParsedDocument
 from .collector import QUIET_SECONDS, Collector
+from .cycle_lenses import refresh_code_lenses
 from .disk_watch import DiskStamps
 from .documents import Edit, OpenDocument, uri_to_path
 from .protocol_diagnostics import to_lsp
@@ -89,6 +91,7 @@ class Outcome:
     values: dict[str, LineValues]
     payloads: dict[str, list[dict[str, object]]]  # the items in their JSON form, as published
     on_disk: list[str] = field(default_factory=list)  # files changed on disk: nothing analysed, read them first
+    timing: dict[str, FileTiming] = field(default_factory=dict)  # per URI, the cycle time (cycle_lenses.py)
 
 
 class DiagnosticsEngine:
@@ -110,6 +113,7 @@ class DiagnosticsEngine:
         self._task: asyncio.Task[None] | None = None
         self._published: dict[str, tuple[int | None, list[Diagnostic], list[types.Diagnostic], int]] = {}
         self._values: dict[str, tuple[int | None, LineValues]] = {}
+        self._timing: dict[str, tuple[int | None, FileTiming | None]] = {}
         self._analysed_once: set[str] = set()
         self._first_shown: set[str] = set()  # huge documents whose first screen was published
         self._loading: set[str] = set()  # huge documents being read (``_read``)
@@ -347,6 +351,7 @@ class DiagnosticsEngine:
                 self.collector.closed()
         self._published.pop(uri, None)
         self._values.pop(uri, None)
+        self._timing.pop(uri, None)
         self._analysed_once.discard(uri)
         self._first_shown.discard(uri)
         self.server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
@@ -554,7 +559,8 @@ class DiagnosticsEngine:
         for uri in [u for u in self._converted if u not in found]:
             del self._converted[uri]  # a closed document, or a file without findings now
         values = {by_path[p].uri: v for p, v in result.values.items() if p in by_path}
-        return Outcome(generation, versions, found, items, values, payloads)
+        timing = {by_path[p].uri: t for p, t in result.timing.items() if p in by_path}
+        return Outcome(generation, versions, found, items, values, payloads, timing=timing)
 
     def _publish(self, outcome: Outcome) -> None:
         documents = self.server.documents.by_uri
@@ -564,6 +570,7 @@ class DiagnosticsEngine:
                 continue
             if version is not None or doc is not None:
                 self._values[uri] = (version, outcome.values.get(uri, {}))
+                self._timing[uri] = (version, outcome.timing.get(uri))
             self._analysed_once.add(uri)
             self._touched.pop(uri, None)
             diags = outcome.found[uri]
@@ -580,6 +587,7 @@ class DiagnosticsEngine:
             self.server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
         if self.server.settings.inlay_values:
             self._refresh_inlay_hints()
+        refresh_code_lenses(self.server)
 
     def _refresh_inlay_hints(self) -> None:
         caps = self.server.client_capabilities.workspace
@@ -638,6 +646,11 @@ class DiagnosticsEngine:
         return token
 
     # ---- reading results
+    def timing(self, doc: OpenDocument) -> FileTiming | None:
+        """The cycle time's facts of ``doc`` from the newest analysis, if it analysed this version."""
+        got = self._timing.get(doc.uri)
+        return got[1] if got is not None and got[0] == doc.version else None
+
     def values(self, doc: OpenDocument) -> LineValues:
         """The values the newest run left on the lines of ``doc``, if it analysed this version."""
         got = self._values.get(doc.uri)
@@ -656,6 +669,7 @@ def _merged(
     owner: dict[str, WorkspaceAnalysis] = {}
     diagnostics: dict[str, list[Diagnostic]] = {}
     values: dict[str, dict[int, list[tuple[int, Value]]]] = {}
+    timing: dict[str, FileTiming] = {}
     for machine_file, analysis, result in results:
         for path, diags in result.diagnostics.items():
             doc = by_path.get(path)
@@ -671,7 +685,11 @@ def _merged(
             doc = by_path.get(path)
             if doc is not None and doc.machine_file == machine_file:
                 values[path] = lines
-    return AnalysisResult(results[0][2].version, diagnostics, values), owner
+        for path, t in result.timing.items():
+            doc = by_path.get(path)
+            if doc is not None and doc.machine_file == machine_file:
+                timing[path] = t
+    return AnalysisResult(results[0][2].version, diagnostics, values, timing), owner
 
 
 def _disk_lines(ws: WorkspaceAnalysis, path: str) -> list[str]:

@@ -29,6 +29,7 @@ from ..machine.variables import named_number
 from ..syntax.nodes import Abbreviation, Bracket, Call, CornerWord, NamedVar, Number, Unary, Var, Word
 from ..syntax.walk import nodes_at
 from .cursor import Cursor, cursor_at
+from .cycle_lenses import elapsed_text
 from .program_docs import doc_lines
 from .texts import t
 
@@ -46,9 +47,14 @@ def register(server: CncMacroServer) -> None:
         if cur is None:
             return None
         found = hover_text(ls, cur)
+        elapsed = elapsed_text(ls, cur.doc, params.position.line)  # the cycle time (cycle_lenses.py)
         if found is None:
-            return None
+            if elapsed is None:
+                return None
+            return types.Hover(contents=types.MarkupContent(kind=types.MarkupKind.Markdown, value=elapsed))
         text, start, end = found
+        if elapsed is not None:
+            text = f"{text}\n\n---\n\n{elapsed}"
         return types.Hover(
             contents=types.MarkupContent(kind=types.MarkupKind.Markdown, value=text), range=cur.range(start, end)
         )

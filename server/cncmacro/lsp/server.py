@@ -257,6 +257,7 @@ def build_server() -> CncMacroServer:
         call_hierarchy,
         code_actions,
         completion,
+        cycle_lenses,
         folding,
         formatting,
         highlight,
@@ -345,6 +346,7 @@ def build_server() -> CncMacroServer:
         formatting,
         call_hierarchy,
         inline_values,
+        cycle_lenses,
     ):
         module.register(server)
     return server

@@ -75,7 +75,8 @@ class Move(NamedTuple):
     or 31 for a skip), the end points in work coordinates before and after, one value per
     axis in the dialect's order, the feed, and for a G02/G03 arc its centre (arcs.py): one
     value per axis like the end points (X a diameter on a lathe), the axes off the arc's
-    plane keeping their start values; None for every other move."""
+    plane keeping their start values; None for every other move. ``seconds`` is the time the
+    move takes (cycle_time.py)."""
 
     file: str
     line: int
@@ -84,6 +85,7 @@ class Move(NamedTuple):
     end: tuple[float, ...]
     feed: float
     centre: tuple[float, ...] | None
+    seconds: float
 
     def text(self, axes: tuple[str, ...], shown: list[int] | None = None) -> str:
         """``G01  X0.000 Y0.000 -> X10.000 Y5.000  F200`` for a person: the axes in ``shown``
@@ -98,6 +100,18 @@ class Move(NamedTuple):
         end = " ".join(f"{axes[i]}{self.end[i]:.3f}" for i in shown)
         feed = f"  F{format_plain(self.feed)}" if self.mode != 0.0 and self.feed else ""
         return f"{mode:<4} {start} -> {end}{feed}"
+
+
+class ToolChange(NamedTuple):
+    """A tool change (cycle_time.py): where (file, 0-based line), the T in force, and the
+    clock (seconds) and the cut and rapid path (mm) before it."""
+
+    file: str
+    line: int
+    tool: float | None
+    clock: float
+    cut: float
+    rapid: float
 
 
 @dataclass(frozen=True, slots=True)

@@ -76,6 +76,8 @@ class Snapshot:
     message: str | None
     written_system: set[int] = field(default_factory=set)
     timer_marks: dict[int, float] = field(default_factory=dict)
+    lengths: tuple[float, float] = (0.0, 0.0)  # the cut and rapid path so far (mm, cycle_time.py)
+    tool_count: int = 0  # tool changes recorded
 
 
 class Machine(VariableAccess, Motion):
@@ -658,7 +660,7 @@ class Machine(VariableAccess, Motion):
             (list(self.pos), list(self.shift), list(self.skip_pos), list(self.tool_vector)), self.extra_wcs,
             self.cycle_start_z, list(self.modal_calls), (len(self.moves), len(self.output), len(self.notes)),
             self.clock, self.blocks, self.status, self.alarm, self.message, set(self.written_system),
-            dict(self.timer_marks),
+            dict(self.timer_marks), (self.cut_length, self.rapid_length), len(self.tool_changes),
         )  # fmt: skip
 
     def restore(self, snap: Snapshot) -> None:
@@ -678,6 +680,8 @@ class Machine(VariableAccess, Motion):
         del self.output[output:]
         del self.notes[notes:]
         self.clock = snap.clock
+        self.cut_length, self.rapid_length = snap.lengths
+        del self.tool_changes[snap.tool_count :]
         self.blocks = snap.blocks
         self.status = snap.status
         self.alarm = snap.alarm

@@ -12,7 +12,6 @@ Values arrive already rounded to their address's increment.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
@@ -21,15 +20,16 @@ from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
 from .arcs import ARC_MODES, arc_centre, arc_planes
 from .calls import g_code_groups
-from .frames import Move
+from .cycle_time import INCH, MoveTimes
+from .frames import Move, ToolChange
 from .words import extra_offset_codes
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
     from ..library.machine_file import MachineSettings
+    from .observer import RunObserver
 
 Value = float | None
-RAPID_RATE = 10000.0  # mm/min, for the simulated clock
 
 WORK_BASE = 5201  # external offset of axis 1; G54 is +20, G55 +40 ... (both dialects)
 G54_1_BASE = 7001  # G54.1 P1 axis 1; each P adds 20 (fanuc; ``Dialect.extra_offset_variables``)
@@ -55,6 +55,7 @@ class Motion:
     S: dict[int, Value]
     clock: float
     written_system: set[int]
+    observer: RunObserver | None
 
     def init_motion(self) -> None:
         axes = self.dialect.axes
@@ -73,6 +74,12 @@ class Motion:
         self.cycle_start_z: float | None = None
         self.moves: list[Move] = []
         self.record_moves = True
+        # the cycle time's rules (cycle_time.py), the path so far (mm) and, while moves are
+        # recorded, the tool changes (``cncmacro run``'s totals per tool)
+        self.times = MoveTimes(self.dialect)
+        self.cut_length = 0.0
+        self.rapid_length = 0.0
+        self.tool_changes: list[ToolChange] = []
         self.g_groups = g_code_groups(self.dialect)
         self._extra_codes = extra_offset_codes(self.dialect)
         if self._extra_codes:  # the switch makes them work offset codes, whatever the table says
@@ -299,10 +306,13 @@ class Motion:
         for letter in ("F", "S", "D", "H", "B"):
             if letter in other:
                 self.codes[letter] = other[letter]
-        if "M" in other:
-            self.codes["M"] = other["M"]
         if "T" in other:
             self.select_tool(other["T"])
+            if self.times.tool_change_t:
+                self.tool_change(file, line)
+        if "M" in other:
+            self.codes["M"] = other["M"]
+            self.m_code_time(other["M"], file, line)  # after T: T1 M06 changes to T1
         if "H" in other and self.modal.get("length") in (43.0, 44.0):
             self.apply_length_offset(other["H"])
         elif not self.dialect.lathe and self.modal.get("length") == 49.0 and "Z" in self.axis_index:
@@ -392,20 +402,47 @@ class Motion:
         end: tuple[float, ...],
         centre: tuple[float, ...] | None = None,
     ) -> None:
-        """Advance the simulated clock by the move's time and record the move (with an arc's
-        centre)."""
+        """Advance the simulated clock by the move's time, add its length to the path and
+        record the move (with an arc's centre and its time), by the rules of cycle_time.py."""
         feed = self.codes.get("F") or 0.0
+        times = self.times
+        modal = self.modal
+        unit = INCH if modal.get("units") == 20.0 else 1.0
         if mode == 0.0:
-            self.clock += math.dist(start, end) / RAPID_RATE * 60.0
+            seconds = times.rapid_seconds(start, end, unit)
+            self.rapid_length += times.distance(start, end) * unit
         else:
-            rate = feed
-            per_rev = self.modal.get("feed")
-            if per_rev == 95.0 or (per_rev == 99.0 and self._lathe):
-                rate *= self.codes.get("S") or 0.0
-            if rate > 0:
-                self.clock += math.dist(start, end) / rate * 60.0
+            if centre is not None and mode in ARC_MODES:
+                length = times.arc_length(mode, modal.get("plane", 17.0), start, end, centre)
+            else:
+                length = times.distance(start, end)
+            per_rev = modal.get("feed")
+            rate = times.feed_rate(
+                feed, per_rev == 95.0 or (per_rev == 99.0 and self._lathe), self.codes.get("S") or 0.0,
+                modal.get("spindle") == 96.0, start, end, unit,
+            )  # fmt: skip
+            seconds = length / rate * 60.0 if rate > 0 else 0.0
+            self.cut_length += length * unit
+        self.clock += seconds
         if self.record_moves:
-            self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre)))
+            self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre, seconds)))
+
+    def m_code_time(self, m: float, file: str, line: int) -> None:
+        """The time of M code ``m``: a tool change (``tool_change``) or the machine file's."""
+        if m == self.times.tool_change_m:
+            self.tool_change(file, line)
+        else:
+            self.clock += self.times.m_seconds(m)
+
+    def tool_change(self, file: str, line: int) -> None:
+        """A tool change on ``line``: where a tool's part of the run starts (kept while moves
+        are recorded, told to the observer), then its time."""
+        if self.record_moves:
+            tool = self.codes.get("T")
+            self.tool_changes.append(ToolChange(file, line, tool, self.clock, self.cut_length, self.rapid_length))
+        if self.observer is not None:
+            self.observer.tool_changed(file, line)
+        self.clock += self.times.timing.tool_change_seconds
 
     # ---------------------------------------------------------------- tools
     def select_tool(self, t: float) -> None:
@@ -438,9 +475,8 @@ class Motion:
         self, g: float, axes: dict[int, float], inc: dict[int, float], other: dict[str, float], file: str, line: int
     ) -> tuple[bool, float | None]:
         lathe = self.dialect.lathe
-        if g == 4.0:  # dwell: X or U in seconds, P in milliseconds
-            secs = other.get("P", 0.0) / 1000.0 if "P" in other else next(iter({**axes, **inc}.values()), 0.0)
-            self.clock += max(0.0, secs)
+        if g == 4.0:  # dwell: P in the profile's unit, X or U in seconds (cycle_time.py)
+            self.clock += self.times.dwell_seconds(other, next(iter({**axes, **inc}.values()), None))
             return False, None
         if g == 10.0:
             self._g10(axes, inc, other)

@@ -9,8 +9,8 @@ from .frames import MODE_NAMES, Move
 
 
 def move_json(mv: Move, axes: tuple[str, ...]) -> dict[str, Any]:
-    """A move with its file, 1-based line, mode (``G01``), end points and feed; an arc
-    (G02/G03) also gets its ``centre``, axis by axis."""
+    """A move with its file, 1-based line, mode (``G01``), end points, feed and time in seconds
+    (``cycle_time.py``); an arc (G02/G03) also gets its ``centre``, axis by axis."""
     move = {
         "file": mv.file,
         "line": mv.line + 1,
@@ -18,6 +18,7 @@ def move_json(mv: Move, axes: tuple[str, ...]) -> dict[str, Any]:
         "from": dict(zip(axes, mv.start, strict=True)),
         "to": dict(zip(axes, mv.end, strict=True)),
         "feed": mv.feed,
+        "time": mv.seconds,
     }
     if mv.centre is not None:
         move["centre"] = dict(zip(axes, mv.centre, strict=True))

@@ -51,6 +51,10 @@ class RunObserver:
         """The loop head on ``do_line`` of call level ``level`` runs (``again``: the loop was
         already running, else it starts)."""
 
+    def tool_changed(self, file: str, line: int) -> None:
+        """A tool change on ``line`` of ``file`` (cycle_time.py); the machine's clock and path
+        lengths are those before it."""
+
     def came_back(self, line: int, to: int) -> bool:
         """The block on ``line`` jumped back to ``to``, at or before it, in the same frame; or
         (``line`` -1) the run went on in another frame (a call or a return) at ``to``. True

@@ -19,8 +19,8 @@ import math
 from typing import TYPE_CHECKING
 
 from .arcs import ARC_MODES
+from .cycle_time import INCH
 from .frames import Move
-from .motion import RAPID_RATE
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile
@@ -57,7 +57,11 @@ def run_straight(
     codes = m.codes
     pos = m.pos
     clock = m.clock
-    dist = math.dist
+    cut = m.cut_length
+    rapid = m.rapid_length
+    times = m.times  # the cycle time's rules (cycle_time.py)
+    dist = math.dist if times.scale is None else times.distance
+    rapid_seconds = times.rapid_seconds
     append = m.moves.append if m.record_moves else None
     path = cf.file.path
     skipped = cf.skipped
@@ -71,6 +75,8 @@ def run_straight(
     else:
         trk = None
     per_rev = modal.get("feed") == 95.0 or (lathe and modal.get("feed") == 99.0)
+    unit = INCH if modal.get("units") == 20.0 else 1.0
+    css = modal.get("spindle") == 96.0
     f = codes.get("F") or 0.0
     start = tuple(pos)
     done = 0
@@ -144,6 +150,7 @@ def run_straight(
                 break
             if trk is not None:
                 if trk[pc] < floor:
+                    m.clock, m.cut_length, m.rapid_length = clock, cut, rapid  # what the observer reads
                     first(path, pc, step + done)
                 trk[pc] = serial
             if others is not None:
@@ -151,6 +158,8 @@ def run_straight(
                     modal[group] = g
                 absolute = lathe or modal["distance"] == 90.0
                 per_rev = modal.get("feed") == 95.0 or (lathe and modal.get("feed") == 99.0)
+                unit = INCH if modal.get("units") == 20.0 else 1.0
+                css = modal.get("spindle") == 96.0
             if feed is not None:
                 codes["F"] = feed
                 f = feed or 0.0
@@ -162,15 +171,22 @@ def run_straight(
                         target[i] += v
                 end = tuple(target)
                 pos = target
+                # the time and length of the move: ``Motion._record``'s rules, inline
+                centre = m.arc_centre(mode, start, end, arc) if arc is not None and mode in ARC_MODES else None
                 if mode == 0.0:
-                    clock += dist(start, end) / RAPID_RATE * _SECONDS_PER_MINUTE
+                    seconds = rapid_seconds(start, end, unit)
+                    rapid += dist(start, end) * unit
                 else:
-                    rate = f * (codes.get("S") or 0.0) if per_rev else f
-                    if rate > 0:
-                        clock += dist(start, end) / rate * _SECONDS_PER_MINUTE
+                    if centre is None:
+                        length = dist(start, end)
+                    else:
+                        length = times.arc_length(mode, modal.get("plane", 17.0), start, end, centre)
+                    rate = times.feed_rate(f, True, codes.get("S") or 0.0, css, start, end, unit) if per_rev else f
+                    seconds = length / rate * _SECONDS_PER_MINUTE if rate > 0 else 0.0
+                    cut += length * unit
+                clock += seconds
                 if append is not None:
-                    centre = m.arc_centre(mode, start, end, arc) if arc is not None and mode in ARC_MODES else None
-                    append(_new_move(Move, (path, pc, mode, start, end, f, centre)))
+                    append(_new_move(Move, (path, pc, mode, start, end, f, centre, seconds)))
                 start = end
             done += 1
             pc += 1
@@ -181,4 +197,6 @@ def run_straight(
             pc += 1
     m.pos = pos
     m.clock = clock
+    m.cut_length = cut
+    m.rapid_length = rapid
     return done, pc

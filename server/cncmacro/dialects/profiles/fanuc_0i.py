@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from ..dialect import Dialect
 from ..tables import CommonRange
+from ..timing import Timing
 
 PROFILE = Dialect(
     name="fanuc-0i",
@@ -41,4 +42,12 @@ PROFILE = Dialect(
     modal_g_before_call="execute",
     common_ranges=(CommonRange(100, 499, False), CommonRange(500, 999, True)),
     m98_program_digits=4,
+    # typical of a small vertical machining centre; a machine file gives the machine's own
+    # (rapid rates: parameter 1420)
+    timing=Timing(
+        rapid={"X": 24000.0, "Y": 24000.0, "Z": 24000.0, "A": 10800.0},
+        tool_change_seconds=3.0,
+        tool_change_code="M6",
+        dwell_p_unit=0.001,
+    ),
 )

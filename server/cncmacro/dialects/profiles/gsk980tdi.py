@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from ..dialect import Dialect
 from ..tables import CommonRange
+from ..timing import Timing
 
 PROFILE = Dialect(
     name="gsk980tdi",
@@ -42,4 +43,14 @@ PROFILE = Dialect(
     keyword_abbreviations=False,
     if_without_then=False,
     corner_words=False,
+    # typical of a small slant-bed lathe; a machine file gives the machine's own. X's rate is
+    # the rate of the radius (the tool moves half a diameter change)
+    timing=Timing(
+        rapid={"X": 6000.0, "Z": 8000.0, "Y": 6000.0},
+        rapid_default=3600.0,
+        tool_change_seconds=1.0,
+        tool_change_code="T",
+        dwell_p_unit=0.001,
+        max_spindle_speed=3000.0,
+    ),
 )

@@ -26,6 +26,7 @@ from .. import shared_data as shared
 from ..dialect import ARGUMENTS_I
 from ..haas_programs_data import PROGRAM_DOCS as PROGRAM_DOCS  # the programs on the control, for hover
 from ..tables import CodeDoc, CommonRange, SystemVariable
+from ..timing import Timing
 from .fanuc_0i import PROFILE as FANUC_0I
 
 AXES = ("X", "Y", "Z", "A", "B", "C")
@@ -942,4 +943,14 @@ PROFILE = FANUC_0I.configured(
     extra_offset_variables=G154_LONG,
     extra_offset_count=99,
     tool_offset_bases=(2000, 2200, 2400, 2600),
+    # rapids of 1,000 in/min on X, Y, Z (a VF-2's), a typical tool change; G04 P counts seconds
+    # (written with a decimal point, as the G04 row says)
+    timing=Timing(
+        rapid={"X": 25400.0, "Y": 25400.0, "Z": 25400.0},
+        rapid_default=10800.0,
+        tool_change_seconds=2.8,
+        tool_change_code="M6",
+        dwell_p_unit=1.0,
+        max_spindle_speed=8100.0,
+    ),
 )

@@ -1,0 +1,107 @@
+"""The machine file's ``[timing]`` table: the machine's own data for the cycle time.
+
+::
+
+    [timing]
+    rapid = { X = 30000, Y = 30000, Z = 24000 }   # mm/min per axis (FANUC parameter 1420)
+    tool_change = 2.5              # seconds a tool change takes
+    tool_change_code = "M6"        # "M6" (mills) or "T" (a lathe's turret indexes on T)
+    dwell_p = "milliseconds"       # the unit of G04 P: "milliseconds" or "seconds"
+    max_spindle_speed = 3500       # rev/min, G96's limit
+
+    [timing.m_codes]               # seconds an M code takes
+    M08 = 0.5
+
+Every key is optional and goes over the profile's value (``dialects/timing.py``); ``rapid`` and
+``m_codes`` axis by axis and code by code. ``timing_changes`` checks the table and gives the
+changes as ``Timing.changed`` takes them; a wrong value is an error naming its key.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from ..bilingual import Detail, detail
+
+_KEYS = ("rapid", "tool_change", "tool_change_code", "dwell_p", "max_spindle_speed", "m_codes")
+_DWELL_UNITS = {"milliseconds": 0.001, "seconds": 1.0}
+
+
+def _number(v: object) -> float | None:
+    """``v`` as a finite number at least 0, or None."""
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        return None
+    try:
+        f = float(v)
+    except OverflowError:
+        return None
+    return f if 0.0 <= f < float("inf") else None
+
+
+def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> dict[str, object]:
+    """The changes ``[timing]`` makes to the profile's ``Timing`` (module docstring)."""
+    if not isinstance(table, dict):
+        raise fail("timing", detail("must be a table ([timing])", "必须是表（[timing]）"))
+    out: dict[str, object] = {}
+    for key in table:
+        if key not in _KEYS:
+            names = ", ".join(_KEYS)
+            raise fail(f"timing.{key}", detail(f"is not a timing setting (known: {names})",
+                                               f"不是时间设置项（可用的有：{names}）"))  # fmt: skip
+    if "rapid" in table:
+        rapid = table["rapid"]
+        rates = {str(k).upper(): _number(v) for k, v in rapid.items()} if isinstance(rapid, dict) else None
+        if rates is None or not all(len(k) == 1 and k.isascii() and k.isalpha() and r for k, r in rates.items()):
+            raise fail("timing.rapid", detail("must map axis letters to rapid rates above 0 (mm/min), "
+                                              "such as { X = 30000, Z = 24000 }",
+                                              "必须是 轴地址 = 快移速度（大于 0，mm/min）形式的表，"
+                                              "如 { X = 30000, Z = 24000 }"))  # fmt: skip
+        out["rapid"] = rates
+    if "tool_change" in table:
+        v = _number(table["tool_change"])
+        if v is None:
+            raise fail("timing.tool_change", detail("must be the seconds a tool change takes (0 or more)",
+                                                    "必须是换刀所需的秒数（不小于 0）"))  # fmt: skip
+        out["tool_change_seconds"] = v
+    if "tool_change_code" in table:
+        code = table["tool_change_code"]
+        if not isinstance(code, str) or not (code.upper() == "T" or _m_code(code) is not None):
+            raise fail("timing.tool_change_code", detail('must be an M code ("M6") or "T"',
+                                                         '必须是 M 代码（"M6"）或 "T"'))  # fmt: skip
+        m = _m_code(code)
+        out["tool_change_code"] = "T" if m is None else f"M{m:g}"
+    if "dwell_p" in table:
+        unit = table["dwell_p"]
+        if unit not in _DWELL_UNITS:
+            raise fail("timing.dwell_p", detail('must be "milliseconds" or "seconds"',
+                                                '必须是 "milliseconds"（毫秒）或 "seconds"（秒）'))  # fmt: skip
+        out["dwell_p_unit"] = _DWELL_UNITS[str(unit)]
+    if "max_spindle_speed" in table:
+        v = _number(table["max_spindle_speed"])
+        if not v:
+            raise fail("timing.max_spindle_speed", detail("must be a speed above 0 (rev/min)",
+                                                          "必须是大于 0 的转速（r/min）"))  # fmt: skip
+        out["max_spindle_speed"] = v
+    if "m_codes" in table:
+        codes = table["m_codes"]
+        bad = detail(
+            "must map M codes to seconds, such as { M08 = 0.5 }", "必须是 M 代码 = 秒数 形式的表，如 { M08 = 0.5 }"
+        )
+        if not isinstance(codes, dict):
+            raise fail("timing.m_codes", bad)
+        seconds: dict[float, float] = {}
+        for k, v in codes.items():
+            m, s = _m_code(str(k)), _number(v)
+            if m is None or s is None:
+                raise fail(f"timing.m_codes.{k}", bad)
+            seconds[m] = s
+        out["m_code_seconds"] = seconds
+    return out
+
+
+def _m_code(text: str) -> float | None:
+    """``M08`` -> 8.0; None when ``text`` is not an M code."""
+    digits = text[1:]
+    if text[:1].upper() != "M" or not digits.isascii() or not digits.isdigit() or len(digits) > 8:
+        return None
+    return float(digits)

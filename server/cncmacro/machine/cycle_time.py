@@ -1,0 +1,139 @@
+"""Cycle time and path length: the one place that decides how long a move, a dwell, a tool
+change and an M code take (docs/semantics.md §9 "Cycle time").
+
+The model, plainly: no acceleration or deceleration, every move at its rate from its first
+point to its last; exact stop (G09, G61) and cutting mode (G64) change nothing, because
+without acceleration a corner costs no time; feed and rapid overrides at 100 %.
+
+- A rapid (G00, and the moves of G28/G30) moves each axis at its own rapid traverse rate
+  (``Timing.rapid``): the move takes as long as its slowest axis, max over the axes of
+  distance / rate. That is FANUC's non-linear interpolation positioning, each axis on its
+  own, and also the time of linear-interpolation positioning, whose rate is held so that no
+  axis passes its own.
+- A feed move (G01, G02, G03, G31, a canned cycle's recorded move) takes its length divided
+  by the feed rate. The length of an arc is the length of the arc (its sweep times its
+  radius, with a helix's third axis added as the other side of a right triangle), not of the
+  chord; a full circle is one turn. Feed per minute (G94; G98 on a lathe) is F in mm/min (in/min
+  under G20); feed per revolution (G95; G99 on a lathe) is F times the spindle speed S. Under
+  G96 (constant surface speed, lathes) the spindle speed is S·1000 / (π·D) at the diameter D
+  midway along the move, never above ``Timing.max_spindle_speed``. A feed move without a feed
+  (F0, or per revolution with S0) takes no time.
+- Lengths are in mm (a G20 program's inches times 25.4); on a lathe X is a diameter, so the tool
+  moves half of an X difference. A rotary axis's degrees count as millimetres, as in a FANUC
+  feed of a move with rotary axes.
+- G04 dwells for X or U seconds, or P times ``Timing.dwell_p_unit`` (milliseconds on FANUC and
+  GSK, seconds on Haas).
+- A tool change (``Timing.tool_change_code``: M06 on a mill, a lathe's T word) takes
+  ``Timing.tool_change_seconds``; any other M code ``Timing.m_code_seconds`` for it, if listed.
+
+``MoveTimes`` holds these rules with the machine's rates worked out once; the machine's clock
+(#3001, #3002), ``cncmacro run``'s totals and the editor's code lenses all come from it.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..dialects import Dialect
+
+INCH = 25.4
+_TWO_PI = 2.0 * math.pi
+ARC_MODES = (2.0, 3.0)
+# plane code -> (first axis, second axis): the plane an arc turns in (arcs.PLANES)
+_PLANE_AXES = {17.0: ("X", "Y"), 18.0: ("Z", "X"), 19.0: ("Y", "Z")}
+
+
+class MoveTimes:
+    """The cycle-time rules (module docstring) for one machine's profile and timing data."""
+
+    def __init__(self, dialect: Dialect) -> None:
+        timing = dialect.timing
+        self.timing = timing
+        axes = dialect.axes
+        diameter = axes.index("X") if dialect.lathe and "X" in axes else -1
+        self.diameter = diameter
+        # how far the tool goes per unit of each axis: half a diameter's change on a lathe's X
+        self.scale: tuple[float, ...] | None = (
+            tuple(0.5 if i == diameter else 1.0 for i in range(len(axes))) if diameter >= 0 else None
+        )
+        # seconds per unit moved, per axis, at rapid traverse (in mm)
+        self.rapid_seconds_per_mm = tuple(
+            60.0 * (0.5 if i == diameter else 1.0) / max(timing.rapid_rate(a), 1e-9) for i, a in enumerate(axes)
+        )
+        self.planes = {
+            code: (axes.index(a), axes.index(b)) for code, (a, b) in _PLANE_AXES.items() if a in axes and b in axes
+        }
+        self.tool_change_m = float(timing.tool_change_code[1:]) if timing.tool_change_code.startswith("M") else None
+        self.tool_change_t = timing.tool_change_code == "T"
+
+    def distance(self, start: Sequence[float], end: Sequence[float]) -> float:
+        """The straight distance from ``start`` to ``end``, in program units."""
+        scale = self.scale
+        if scale is None:
+            return math.dist(start, end)
+        return math.hypot(*((b - a) * k for a, b, k in zip(start, end, scale, strict=True)))
+
+    def rapid_seconds(self, start: Sequence[float], end: Sequence[float], unit: float) -> float:
+        """Seconds a rapid takes: its slowest axis's (``unit`` is 25.4 under G20, else 1)."""
+        slowest = 0.0
+        for a, b, k in zip(start, end, self.rapid_seconds_per_mm, strict=True):
+            if a != b:
+                t = abs(b - a) * k
+                if t > slowest:
+                    slowest = t
+        return slowest * unit
+
+    def arc_length(
+        self, mode: float, plane: float, start: Sequence[float], end: Sequence[float], centre: Sequence[float]
+    ) -> float:
+        """The length of a G02 (``mode`` 2) or G03 arc from ``start`` to ``end`` about ``centre``
+        in ``plane`` (17, 18, 19), a helix's third axis included; program units."""
+        axes = self.planes.get(plane)
+        if axes is None:
+            return self.distance(start, end)
+        a, b = axes
+        ka = 0.5 if a == self.diameter else 1.0
+        kb = 0.5 if b == self.diameter else 1.0
+        sa, sb = (start[a] - centre[a]) * ka, (start[b] - centre[b]) * kb
+        ea, eb = (end[a] - centre[a]) * ka, (end[b] - centre[b]) * kb
+        r = 0.5 * (math.hypot(sa, sb) + math.hypot(ea, eb))
+        if r == 0.0:
+            return self.distance(start, end)
+        sweep = (math.atan2(eb, ea) - math.atan2(sb, sa)) % _TWO_PI  # counterclockwise
+        if mode == 2.0:
+            sweep = (_TWO_PI - sweep) % _TWO_PI
+        if sweep == 0.0 and start[a] == end[a] and start[b] == end[b]:
+            sweep = _TWO_PI  # I, J, K back to the start: a full circle
+        arc = r * sweep
+        # a helix: the move off the plane is the other side of a right triangle
+        da, db = (end[a] - start[a]) * ka, (end[b] - start[b]) * kb
+        off = self.distance(start, end) ** 2 - da * da - db * db
+        return math.sqrt(arc * arc + off) if off > 1e-12 else arc
+
+    def feed_rate(self, feed: float, per_rev: bool, speed: float, css: bool,
+                  start: Sequence[float], end: Sequence[float], unit: float) -> float:  # fmt: skip
+        """The feed in program units per minute: F, or per revolution F times the spindle's
+        speed (under G96 worked out from S and the diameter midway along the move)."""
+        if not per_rev:
+            return feed
+        if css and self.diameter >= 0:
+            d = abs(start[self.diameter] + end[self.diameter]) * 0.5 * unit  # mm
+            top = self.timing.max_spindle_speed
+            speed = min(top, speed * 1000.0 / (math.pi * d)) if d > 0.0 else top
+        return feed * speed
+
+    def dwell_seconds(self, words: dict[str, float], axis_value: float | None) -> float:
+        """G04's time: P in the profile's unit, else X (or U) in seconds."""
+        p = words.get("P")
+        if p is not None:
+            return max(0.0, p * self.timing.dwell_p_unit)
+        return max(0.0, axis_value or 0.0)
+
+    def m_seconds(self, m: float) -> float:
+        """The time of M code ``m`` (a tool change's when it is the tool change code)."""
+        if m == self.tool_change_m:
+            return self.timing.tool_change_seconds
+        return self.timing.m_code_seconds.get(m, 0.0)
