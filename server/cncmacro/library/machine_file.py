@@ -22,8 +22,9 @@ Every key is optional (docs/design.md "Machine settings")::
     M60 = { program = 9001, call = "subprogram" }   # like M98 P9001
     T = 9000                       # every T code calls O9000 (the T value in #149)
 
-    [skip]                         # where the G31 skip signal fires
-    Z = -12.5
+    [skip]                         # the part a G31 touches (skip_model.py)
+    Z = -12.5                      # planes, bores, bosses, or contacts = [...] in order
+    bore = { X = 0, Y = 0, diameter = 50 }
 
     [[system_variables]]           # variables this machine adds or describes anew
     number = 1100                  # or numbers = [1100, 1115]
@@ -61,6 +62,7 @@ from ..bilingual import Detail, detail
 from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect
 from ..dialects.tables import SystemVariable
 from .files import SkippedFileError, read_bytes
+from .skip_model import SkipModel, read_skip
 
 MACHINE_FILE_NAME = ".cncmacro.toml"
 PERSISTENT_FILE_NAME = ".cncmacro-vars.json"
@@ -107,7 +109,7 @@ class MachineSettings:
     time: int | None = None
     variables: dict[int, float] = field(default_factory=dict)
     calls: dict[str, CallCode] = field(default_factory=dict)
-    skip: dict[str, float] = field(default_factory=dict)
+    skip: SkipModel = field(default_factory=SkipModel)
     severity: dict[str, str] = field(default_factory=dict)
     folder: str | None = None
 
@@ -154,7 +156,7 @@ class _SettingsFields(TypedDict, total=False):
     time: int | None
     variables: dict[int, float]
     calls: dict[str, CallCode]
-    skip: dict[str, float]
+    skip: SkipModel
     severity: dict[str, str]
     folder: str | None
 
@@ -329,15 +331,7 @@ def settings_from_mapping(
     if "calls" in data:
         kw["calls"] = _calls(data["calls"], fail)
     if "skip" in data:
-        s = data["skip"]
-        if not isinstance(s, dict) or not all(_finite(v) for v in s.values()):
-            raise fail(
-                "skip",
-                detail(
-                    "must map axis letters to positions (finite numbers)", "必须是 轴地址 = 位置（有限的数值）形式的表"
-                ),
-            )
-        kw["skip"] = {str(k).upper(): float(v) for k, v in s.items()}
+        kw["skip"] = read_skip(data["skip"], fail)
     if "severity" in data:
         kw["severity"] = _severity(data["severity"], fail)
     return MachineSettings(**kw)
