@@ -64,7 +64,7 @@ class Motion:
         self.pos: list[float] = [0.0] * len(axes)
         self.shift: list[float] = [0.0] * len(axes)
         self.skip_pos: list[float] = [0.0] * len(axes)
-        self.skip_state = SkipState()  # contact points used, the last G31's signal (probing.py)
+        self.skip_state = SkipState()  # the contact points used (probing.py)
         self.probes: list[Probe] = []
         self.tool_vector: list[float] = [0.0] * len(axes)
         self.modal: dict[str, float] = {"motion": 0.0, "distance": 90.0, "units": 21.0, "cutter": 40.0,

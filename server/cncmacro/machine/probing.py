@@ -11,8 +11,9 @@ the profile's "skip" position rows) hold where the move ended, in work coordinat
 §4.9, "在G31(跳转功能)程序段中跳转信号接通时的刀具位置储存在变量#5061到#5064中。当G31程序段中
 的跳转信号未接通时，这些变量中储存的是指令的程序段终点值".
 
-Each G31 leaves a ``Probe`` (for the toolpath) and a ``skip`` note (for people: the run's text
-output and the debugger's console) saying where it stopped and why.
+Each G31 of a run that keeps its moves leaves a ``Probe`` (for the toolpath: ``cncmacro run
+--json`` marks the move's ``skip``) and a ``skip`` note (for people: the run's text output and
+the debugger's console) saying where it stopped and why.
 """
 
 from __future__ import annotations
@@ -34,11 +35,10 @@ _EDGE = 1e-9  # a touch this close outside the move's ends (rounding) still coun
 
 @dataclass(frozen=True, slots=True)
 class SkipState:
-    """What the run's G31 blocks have used and found so far: how many contact points of the
-    sequence, and whether the signal came on in the last G31 (part of a snapshot)."""
+    """How many contact points of the machine file's sequence the run's G31 blocks have taken
+    (part of a snapshot: going back gives them back)."""
 
     contacts_used: int = 0
-    fired: bool = False
 
 
 class Probe(NamedTuple):
@@ -58,12 +58,12 @@ def skip_block(m: Machine, target: list[float], file: str, line: int) -> None:
     start = list(m.pos)
     end, what = skip_end(m.settings.skip, m.axis_index, start, target, m.skip_state.contacts_used)
     used = m.skip_state.contacts_used + (m.skip_state.contacts_used < len(m.settings.skip.contacts))
-    m.skip_state = SkipState(used, what is not None)
-    if m.record_moves:
+    m.skip_state = SkipState(used)
+    if m.record_moves:  # a run for its diagnostics keeps neither moves nor these
         m.probes.append(Probe(file, line, len(m.moves), tuple(end), what is not None))
+        m.note("skip", _note(m, start, end, what), line)
     m._move(file, line, 31.0, end)
     m.skip_pos = list(m.pos)
-    m.note("skip", _note(m, start, end, what), line)
 
 
 def skip_end(
