@@ -115,7 +115,7 @@ text.axis-name.v { transform: translateY(calc(var(--u) * -${LABEL.vNameAbove}px)
 .move.arc .leg { stroke: var(--arc); }
 .move.cycle .leg, .move .hole { stroke: var(--cycle); }
 .move .hole { fill: none; stroke-width: 1.4; vector-effect: non-scaling-stroke; }
-.move.probe .leg { stroke: var(--probe); stroke-dasharray: 1.5 3; }
+.move.probe .leg { stroke: var(--probe); stroke-width: 2.2; stroke-dasharray: 2 3; }
 .move .contact { fill: var(--probe); stroke: var(--vscode-editor-background); stroke-width: 1; vector-effect: non-scaling-stroke; }
 .move:hover .leg, .move.selected .leg { stroke-width: 3.5; }
 .move.selected .leg { stroke: var(--vscode-editor-foreground); }
@@ -263,7 +263,9 @@ function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts): string
   out.push(`<line x1="0" y1="${n(oy)}" x2="${n(w)}" y2="${n(oy)}"/><line x1="${n(ox)}" y1="0" x2="${n(ox)}" y2="${n(h)}"/>`);
   out.push('</g><g class="moves">');
   const hr = n(plot.holeRadius);
-  for (const drawn of plot.moves) {
+  // probe moves (G31) last, on top: a retract along the same line must not hide them or their contact points
+  const ordered = [...plot.moves.filter((d) => d.kind !== 'probe'), ...plot.moves.filter((d) => d.kind === 'probe')];
+  for (const drawn of ordered) {
     const move = moves[drawn.index];
     if (!move) continue;
     const title = `${path.basename(move.file)}:${move.line}  ${moveText(move)}`;
@@ -276,7 +278,7 @@ function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts): string
     }
     if (drawn.contact) {
       const [x, y] = drawn.contact;
-      out.push(`<circle class="contact" cx="${n(x)}" cy="${n(y)}" r="${n(plot.holeRadius * 0.6)}"/>`);
+      out.push(`<circle class="contact" cx="${n(x)}" cy="${n(y)}" r="${hr}"/>`);
     }
     out.push(`<path class="hit" d="${d}${drawn.hole ? ` M${n(drawn.hole[0])} ${n(drawn.hole[1])} h0.01` : ''}"/></g>`);
   }
