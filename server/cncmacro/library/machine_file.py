@@ -200,6 +200,8 @@ def load_machine_file(path: str | Path) -> MachineSettings:
     except MachineFileError as e:
         if e.line is None and e.key is not None:
             e.line = _line_of(text, e.key)
+            if e.line is not None and isinstance(e.args[0], Detail):  # the terminal shows no file position
+                e.args = (detail(f"{e.args[0]} (line {e.line + 1})", f"{e.args[0].zh}（第 {e.line + 1} 行）"),)
         raise
     except (RecursionError, OverflowError, ValueError, TypeError) as e:  # a value no check foresaw
         raise MachineFileError(detail(f"{p}: a value cannot be used: {type(e).__name__}: {_brief(str(e))}",
