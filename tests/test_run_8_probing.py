@@ -35,6 +35,14 @@ def test_g31_plane_hit_stops_where_the_move_reaches_the_plane(tmp_path: Path) ->
     assert skip_positions(tmp_path, table, "G90 G00 X5 Y6 Z10", "G31 Z-20 F100") == (5, 6, -12.5)
 
 
+def test_g31_incremental_and_the_next_block_start_where_the_skip_stopped(tmp_path: Path) -> None:
+    """G91 G31 measures from where the tool is; the block after a touch goes on from the contact."""
+    table = "[skip]\nbore = { X = 0, Y = 0, diameter = 50 }\n"
+    program = ("G90 G00 X0 Y0 Z-5", "G91 G31 X30 F100", "G01 X-2 F500", "G90", "#104=#5001")
+    v = final(lines(*program, *SKIP_VARIABLES, "M30"), skip=skip_table(tmp_path, table))
+    assert (v[101], v[104]) == (25, 23)
+
+
 def test_g31_plane_hit_takes_the_first_plane_along_the_move(tmp_path: Path) -> None:
     """X = ±40 and Y = 30: a diagonal move from the origin reaches Y30 (halfway) before X40."""
     table = "[skip]\nX = [-40, 40]\nY = 30\n"
