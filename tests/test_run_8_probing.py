@@ -141,6 +141,7 @@ def test_g31_going_back_past_a_g31_gives_its_contact_point_back(tmp_path: Path) 
         ("[skip]\ncontacts = [{ X = 1 }, { X = true }]\n", "skip.contacts", 2, "contact 2"),
         ("[skip]\ncontacts = { X = 1 }\n", "skip.contacts", 2, "list of contact points"),
         ('base = "fanuc"\nskip = 3\n', "skip", 2, "table"),
+        ("# a hostile file\n[skip]\nX = [" + ", ".join(["1"] * 201) + "]\n", "skip", 2, "more than 200 surfaces"),
         (
             "[[skip.bore]]\nX = 0\nY = 0\ndiameter = 10\n[[skip.bore]]\nX = 0\nY = 0\ndiameter = -1\n",
             "skip.bore",

@@ -27,6 +27,9 @@ SHAPES: tuple[CircleKind, ...] = ("bore", "boss")
 # the letters any profile names an axis with: a plane or a contact point may use these
 AXIS_LETTERS: tuple[str, ...] = tuple(sorted({a for p in all_profiles() for a in p.axes}))
 _Fail = Callable[[str, Detail], Exception]
+# each G31 looks at every surface: a part to probe has a few, and a hostile file must not make a
+# run of many G31 blocks crawl (docs/robustness.md)
+MAX_SURFACES = 200
 
 
 @dataclass(frozen=True, slots=True)
@@ -101,6 +104,9 @@ def read_skip(value: object, fail: _Fail) -> SkipModel:
             known = ", ".join((*AXIS_LETTERS, *SHAPES, "contacts"))
             raise fail(f"skip.{name}", detail(f"is not an axis letter or a shape of the part (known: {known})",
                                               f"不是轴地址或工件形状（可用的有：{known}）"))  # fmt: skip
+    if len(planes) + len(circles) > MAX_SURFACES:
+        raise fail("skip", detail(f"describes more than {MAX_SURFACES} surfaces (planes, bores and bosses)",
+                                  f"描述的面（平面、孔和凸台）超过 {MAX_SURFACES} 个"))  # fmt: skip
     return SkipModel(tuple(planes), tuple(circles), contacts)
 
 
