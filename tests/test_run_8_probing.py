@@ -156,5 +156,5 @@ def test_g31_bad_skip_table_is_an_error_naming_its_line(
     with pytest.raises(MachineFileError) as e:
         skip_table(tmp_path, table)
     assert e.value.key == key and e.value.line == line - 1
-    assert words in str(e.value) and key in str(e.value) and str(e.value).endswith(f"(line {line})")
+    assert words in str(e.value) and key in str(e.value) and e.value.located().endswith(f"(line {line})")
     assert e.value.args[0].zh  # and in Chinese

@@ -81,6 +81,15 @@ class MachineFileError(ValueError):
         self.line = line
         self.key = key
 
+    def located(self) -> Detail:
+        """The message with its line (``... (line 3)``), for a reader that is not shown the file
+        (a terminal, a debug launch's error); the editor puts the message on the line instead."""
+        message = self.args[0]
+        zh = message.zh if isinstance(message, Detail) else str(message)
+        if self.line is None:
+            return detail(str(message), zh)
+        return detail(f"{message} (line {self.line + 1})", f"{zh}（第 {self.line + 1} 行）")
+
 
 @dataclass(frozen=True, slots=True)
 class CallCode:
@@ -200,8 +209,6 @@ def load_machine_file(path: str | Path) -> MachineSettings:
     except MachineFileError as e:
         if e.line is None and e.key is not None:
             e.line = _line_of(text, e.key)
-            if e.line is not None and isinstance(e.args[0], Detail):  # the terminal shows no file position
-                e.args = (detail(f"{e.args[0]} (line {e.line + 1})", f"{e.args[0].zh}（第 {e.line + 1} 行）"),)
         raise
     except (RecursionError, OverflowError, ValueError, TypeError) as e:  # a value no check foresaw
         raise MachineFileError(detail(f"{p}: a value cannot be used: {type(e).__name__}: {_brief(str(e))}",
