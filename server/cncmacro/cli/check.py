@@ -107,8 +107,8 @@ def check_paths(
                                 workspace_folders=folders)  # fmt: skip
             ws = workspace()
         except (MachineFileError, ValueError) as e:
-            problem: str = e.located() if isinstance(e, MachineFileError) else e.args[0] if e.args else str(e)
-            reason = in_language(problem, chinese)
+            said: str = e.located() if isinstance(e, MachineFileError) else e.args[0] if e.args else str(e)
+            reason = in_language(said, chinese)
             print(f"cncmacro check：{reason}" if chinese else f"cncmacro check: {reason}", file=shown_err)
             return 2
         diagnostics += _analyse(ws, files, workspace, locale)
