@@ -50,11 +50,6 @@ class Circle:
     centre: tuple[tuple[str, float], tuple[str, float]]
     diameter: float
 
-    def text(self) -> str:
-        """``bore D50 at X0 Y0``: how a note names it."""
-        at = " ".join(f"{a}{v:g}" for a, v in self.centre)
-        return f"{self.kind} D{self.diameter:g} at {at}"
-
 
 @dataclass(frozen=True, slots=True)
 class Contact:

@@ -31,6 +31,7 @@ if TYPE_CHECKING:
     from .machine import Machine
 
 _EDGE = 1e-9  # a touch this close outside the move's ends (rounding) still counts, at the end
+_SHAPE_NAMES = {"bore": detail("bore", "孔"), "boss": detail("boss", "凸台")}
 
 
 @dataclass(frozen=True, slots=True)
@@ -92,9 +93,12 @@ def skip_end(
     for circle in model.circles:
         t_circle = _circle_hit(circle, axis_index, start, target)
         if t_circle is not None and (best is None or t_circle < best[0]):
-            zh = {"bore": "孔", "boss": "凸台"}[circle.kind]
+            name = _SHAPE_NAMES[circle.kind]
             at = " ".join(f"{a}{v:g}" for a, v in circle.centre)
-            best = (t_circle, detail(f"the {circle.text()}", f"{zh} D{circle.diameter:g}（圆心 {at}）"))
+            best = (
+                t_circle,
+                detail(f"the {name} D{circle.diameter:g} at {at}", f"{name.zh} D{circle.diameter:g}（圆心 {at}）"),
+            )
     if best is None:
         return list(target), None
     t = best[0]
