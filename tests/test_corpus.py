@@ -127,6 +127,24 @@ def check_ellipse_boss(r: dict[str, Any]) -> None:
     assert min(m["to"]["Z"] for m in moves(r, "G01")) == pytest.approx(-8.0)
 
 
+def check_probe_bore(r: dict[str, Any]) -> None:
+    """The bore of the machine file (D50.02 at X120.03 Y79.985, a D45.02 circle for the ball
+    centre) touched four times by O9814: each G31 stops on its wall with the skip signal on, and
+    the macro's copies of #5061/#5062 after each touch are those contact points."""
+    touches = moves(r, "G31", "O9814.nc")
+    assert all(m["skip"] for m in touches)
+    points = [(m["to"]["X"], m["to"]["Y"]) for m in touches]
+    half_chord = (22.51**2 - 0.015**2) ** 0.5  # the X touches run along Y80, 0.015 off the centre
+    model = [(120.03 + half_chord, 80), (120.03 - half_chord, 80), (120.03, 102.495), (120.03, 57.475)]
+    assert points == [pytest.approx(p) for p in model]
+    skip_positions = [var(r, 550), var(r, 551), var(r, 552), var(r, 553)]  # #5061, #5061, #5062, #5062
+    assert skip_positions == pytest.approx([model[0][0], model[1][0], model[2][1], model[3][1]])
+    assert (var(r, 135), var(r, 136), var(r, 137)) == pytest.approx((120.03, 79.985, 50.02))
+    assert (var(r, 5221), var(r, 5222)) == pytest.approx((0.03, -0.015))  # G54 moved to the centre
+    assert r["output"] == ["BORE REPORT O1013", "CENTRE X120.030 Y79.985", "DIAMETER 50.020 ERROR 0.020",
+                           "G54 X0.030 Y-0.015"]  # fmt: skip
+
+
 # ---------------------------------------------------------------- gsk980tdi
 
 
@@ -186,6 +204,7 @@ MAINS: dict[Path, Callable[[dict[str, Any]], None]] = {
     FANUC / "pallet_change.nc": check_pallet_change,
     FANUC / "part_counter.nc": check_part_counter,
     FANUC / "ellipse_boss.nc": check_ellipse_boss,
+    FANUC / "probe_bore.nc": check_probe_bore,
     GSK / "ellipse_handle.cnc": check_ellipse_handle,
     GSK / "parabola.cnc": check_parabola,
     GSK / "thread_g32.cnc": check_thread_g32,

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from cncmacro.library.skip_model import planes_model
 from cncmacro.machine.persistence import load_persistent, save_persistent
 from running import final, lines, run
 
@@ -90,7 +91,7 @@ def test_lathe_tool_offsets_enter_the_machine_position():
 
 
 def test_g31_skip_position():
-    m = run(lines("G90 G00 Z10", "G31 Z-20 F100", "#100=#5063", "#101=#5003", "M30"), skip={"Z": -12.5})
+    m = run(lines("G90 G00 Z10", "G31 Z-20 F100", "#100=#5063", "#101=#5003", "M30"), skip=planes_model({"Z": -12.5}))
     assert m.C[100] == -12.5 and m.C[101] == -12.5
     m = run(lines("G90 G00 Z10", "G31 Z-20 F100", "#100=#5063", "M30"))
     assert m.C[100] == -20  # no signal: the programmed end point

@@ -342,12 +342,13 @@ def test_1_text_and_blocks_check_says_what_is_wrong_with_a_machine_file_in_chine
     (tmp_path / "O0001.nc").write_text("O0001\nM30\n", encoding="utf-8")
     machine = tmp_path / ".cncmacro.toml"
     for toml, en, zh in (
-        ('dialect = "mazak"\n', f"'dialect' must be {choices_text()} (not 'mazak')",
-         f"'dialect' 必须是 {choices_text(zh=True)}（不能是 'mazak'）"),
-        ("[severity]\nsyntax = 3\n", "'severity.syntax' must be one of error, warning, information, hint, off (not 3)",
-         "'severity.syntax' 必须是 error, warning, information, hint, off 之一（不能是 3）"),
-        ("[calls]\nX5 = 9000\n", "'calls.X5' must be a G or M code (G100, M50) or T",
-         "'calls.X5' 必须是 G 或 M 代码（G100、M50）或 T"),
+        ('dialect = "mazak"\n', f"'dialect' must be {choices_text()} (not 'mazak') (line 1)",
+         f"'dialect' 必须是 {choices_text(zh=True)}（不能是 'mazak'）（第 1 行）"),
+        ("[severity]\nsyntax = 3\n",
+         "'severity.syntax' must be one of error, warning, information, hint, off (not 3) (line 2)",
+         "'severity.syntax' 必须是 error, warning, information, hint, off 之一（不能是 3）（第 2 行）"),
+        ("[calls]\nX5 = 9000\n", "'calls.X5' must be a G or M code (G100, M50) or T (line 2)",
+         "'calls.X5' 必须是 G 或 M 代码（G100、M50）或 T（第 2 行）"),
     ):  # fmt: skip
         machine.write_text(toml, encoding="utf-8")
         said = {"en": f"cncmacro check: {machine}: {en}\n", "zh-CN": f"cncmacro check：{machine}：{zh}\n"}

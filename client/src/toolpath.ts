@@ -202,6 +202,8 @@ class ToolpathPanel implements vscode.Disposable, DebugPathListener {
         hole: vscode.l10n.t('hole of a drilling cycle'),
         origin: vscode.l10n.t('origin (program zero)'),
         alarm: vscode.l10n.t('where the alarm stopped the tool'),
+        probe: vscode.l10n.t('probe move (G31)'),
+        contact: vscode.l10n.t('contact point: where the skip signal came on'),
       },
       plane,
       planeButton: vscode.l10n.t('Draw the moves in this plane'),

@@ -17,6 +17,8 @@ export interface RunMove {
   to: Axes;
   feed: number;
   centre?: Axes;
+  /** a G31's: whether the skip signal came on where it stopped (its `to`: the contact point) */
+  skip?: boolean;
 }
 
 export interface RunAlarm {
@@ -40,7 +42,7 @@ export interface RunResult {
 
 export type Plane = 'XY' | 'ZX' | 'YZ';
 export const PLANES: readonly Plane[] = ['XY', 'ZX', 'YZ'];
-export type MoveKind = 'rapid' | 'feed' | 'arc' | 'cycle';
+export type MoveKind = 'rapid' | 'feed' | 'arc' | 'cycle' | 'probe';
 
 /** How the run is drawn: the horizontal and vertical axes, and whether it is a lathe (X halved). */
 export interface View {
@@ -62,6 +64,8 @@ export interface DrawnMove {
   legs: Leg[];
   /** a hole of a drilling cycle: where the marker goes, in screen units */
   hole?: [number, number];
+  /** where a G31 stopped with the skip signal on (the contact point), in screen units */
+  contact?: [number, number];
 }
 
 export interface Tick {
@@ -116,6 +120,7 @@ export function parseRunResult(text: string): RunResult | string {
     const move: RunMove = { file: o.file, line: o.line, mode: o.mode, from, to, feed: isNumber(o.feed) ? o.feed : 0 };
     const centre = axesOf(o.centre);
     if (centre) move.centre = centre;
+    if (typeof o.skip === 'boolean') move.skip = o.skip;
     moves.push(move);
   }
   let alarm: RunAlarm | null = null;
@@ -156,7 +161,8 @@ export function kindOf(mode: string): MoveKind {
   const n = Number(mode.replace(/^G/i, ''));
   if (n === 0) return 'rapid';
   if (n === 2 || n === 3) return 'arc';
-  if (n === 1 || n === 31 || n === 32 || n === 33 || n === 34) return 'feed';
+  if (n === 31) return 'probe';
+  if (n === 1 || n === 32 || n === 33 || n === 34) return 'feed';
   return 'cycle';
 }
 
@@ -364,6 +370,10 @@ export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000):
     if (kind === 'cycle' && !view.lathe) {
       const [x, y] = project(display(move.to, false));
       d.hole = [sx(x), sy(y)];
+    }
+    if (kind === 'probe' && move.skip === true) {
+      const [x, y] = project(display(move.to, view.lathe));
+      d.contact = [sx(x), sy(y)];
     }
     return d;
   });

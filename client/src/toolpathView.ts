@@ -32,7 +32,17 @@ export interface Texts {
   statusKind: 'completed' | 'alarm' | 'limit' | 'error' | 'running' | 'paused';
   note?: string; // e.g. only the first N moves are drawn
   hint: string;
-  legend: { rapid: string; feed: string; arc: string; cycle: string; hole: string; origin: string; alarm: string };
+  legend: {
+    rapid: string;
+    feed: string;
+    arc: string;
+    cycle: string;
+    hole: string;
+    origin: string;
+    alarm: string;
+    probe: string;
+    contact: string;
+  };
   /** the run's cycle time and path (`≈ 3 min 12 s · 1,842 mm cut · 6,300 mm rapid`), shown in the legend */
   totals?: string;
   plane: string; // what the drawing shows: the plane, or the lathe's Z/X with X halved
@@ -73,8 +83,9 @@ export function moveText(move: RunMove): string {
 
 const STYLE = `
 :root { --rapid: #ffa94d; --feed: #74c0fc; --arc: #63e6be; --cycle: #e599f7; --alarm: #ff6b6b; --current: #ffe066;
-  --grid: rgba(128,128,128,0.16); --axis: rgba(160,160,160,0.75); }
+  --probe: #b197fc; --grid: rgba(128,128,128,0.16); --axis: rgba(160,160,160,0.75); }
 body.vscode-light { --rapid: #d9480f; --feed: #1864ab; --arc: #087f5b; --cycle: #ae3ec9; --alarm: #c92a2a; --current: #e8590c;
+  --probe: #7048e8;
   --grid: rgba(0,0,0,0.09); --axis: rgba(0,0,0,0.5); }
 body { margin: 0; padding: 0; color: var(--vscode-foreground); background: var(--vscode-editor-background);
   font-family: var(--vscode-font-family); font-size: var(--vscode-font-size); height: 100vh;
@@ -112,6 +123,8 @@ text.axis-name.v { transform: translateY(calc(var(--u) * -${LABEL.vNameAbove}px)
 .move.arc .leg { stroke: var(--arc); }
 .move.cycle .leg, .move .hole { stroke: var(--cycle); }
 .move .hole { fill: none; stroke-width: 1.4; vector-effect: non-scaling-stroke; }
+.move.probe .leg { stroke: var(--probe); stroke-width: 2.2; stroke-dasharray: 2 3; }
+.move .contact { fill: var(--probe); stroke: var(--vscode-editor-background); stroke-width: 1; vector-effect: non-scaling-stroke; }
 .move:hover .leg, .move.selected .leg { stroke-width: 3.5; }
 .move.selected .leg { stroke: var(--vscode-editor-foreground); }
 .origin { fill: var(--vscode-foreground); stroke: var(--vscode-foreground); stroke-width: 1.2; vector-effect: non-scaling-stroke; }
@@ -317,7 +330,9 @@ function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts, debug?:
   out.push(`<line x1="0" y1="${n(oy)}" x2="${n(w)}" y2="${n(oy)}"/><line x1="${n(ox)}" y1="0" x2="${n(ox)}" y2="${n(h)}"/>`);
   out.push('</g><g class="moves">');
   const hr = n(plot.holeRadius);
-  for (const drawn of plot.moves) {
+  // probe moves (G31) last, on top: a retract along the same line must not hide them or their contact points
+  const ordered = [...plot.moves.filter((d) => d.kind !== 'probe'), ...plot.moves.filter((d) => d.kind === 'probe')];
+  for (const drawn of ordered) {
     const move = moves[drawn.index];
     if (!move) continue;
     const title = `${path.basename(move.file)}:${move.line}  ${moveText(move)}`;
@@ -327,6 +342,10 @@ function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts, debug?:
     if (drawn.hole) {
       const [x, y] = drawn.hole;
       out.push(`<circle class="hole" cx="${n(x)}" cy="${n(y)}" r="${hr}"/>`);
+    }
+    if (drawn.contact) {
+      const [x, y] = drawn.contact;
+      out.push(`<circle class="contact" cx="${n(x)}" cy="${n(y)}" r="${hr}"/>`);
     }
     out.push(`<path class="hit" d="${d}${drawn.hole ? ` M${n(drawn.hole[0])} ${n(drawn.hole[1])} h0.01` : ''}"/></g>`);
   }
@@ -366,6 +385,12 @@ function legend(texts: Texts, plot: Plot, debug?: PausedPage): string {
   ];
   if (drawn.has('arc')) items.push(`<li>${legendLine('arc', false)}${escapeHtml(l.arc)}</li>`);
   if (drawn.has('cycle')) items.push(`<li>${legendLine('cycle', false)}${escapeHtml(l.cycle)}</li>`);
+  if (drawn.has('probe')) items.push(`<li>${legendLine('probe', false)}${escapeHtml(l.probe)}</li>`);
+  if (plot.moves.some((m) => m.contact)) {
+    items.push(
+      `<li><svg viewBox="0 0 36 12"><g class="move probe"><circle class="contact" cx="18" cy="6" r="4"/></g></svg>${escapeHtml(l.contact)}</li>`,
+    );
+  }
   if (plot.moves.some((m) => m.hole)) {
     items.push(
       `<li><svg viewBox="0 0 36 12"><g class="move cycle"><circle class="hole" cx="18" cy="6" r="4.5"/></g></svg>${escapeHtml(l.hole)}</li>`,

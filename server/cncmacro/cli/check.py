@@ -107,8 +107,9 @@ def check_paths(
                                 workspace_folders=folders)  # fmt: skip
             ws = workspace()
         except (MachineFileError, ValueError) as e:
-            reason = in_language(e.args[0], True) if chinese and e.args else e
-            print(f"cncmacro check：{reason}" if chinese else f"cncmacro check: {e}", file=shown_err)
+            said: str = e.located() if isinstance(e, MachineFileError) else e.args[0] if e.args else str(e)
+            reason = in_language(said, chinese)
+            print(f"cncmacro check：{reason}" if chinese else f"cncmacro check: {reason}", file=shown_err)
             return 2
         diagnostics += _analyse(ws, files, workspace, locale)
     if not hints:

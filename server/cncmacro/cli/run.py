@@ -182,10 +182,19 @@ def result_json(result: RunResult, axes: tuple[str, ...], locale: str | None = N
         "alarm": alarm,
         "blocks": result.blocks,
         "variables": {str(k): v for k, v in result.variables.items()},
-        "moves": [move_json(mv, axes) for mv in result.moves],
+        "moves": _moves_json(result, axes),
         "output": result.output,
         "messages": [in_language(n.message, chinese) for n in result.notes if n.kind in ("message", "call")],
     }
+
+
+def _moves_json(result: RunResult, axes: tuple[str, ...]) -> list[dict[str, Any]]:
+    """The moves for ``--json``; a G31's also says whether the skip signal came on (``skip``)."""
+    moves = [move_json(mv, axes) for mv in result.moves]
+    for probe in result.probes:
+        if probe.move < len(moves):
+            moves[probe.move]["skip"] = probe.hit
+    return moves
 
 
 def write_json(result: dict[str, Any], out: TextIO) -> None:
@@ -235,7 +244,7 @@ def write_text(
             print(f"DPRNT  {note.message}", file=out)
         elif note.kind == "message":
             print(f"停止（{where}）：{text}" if chinese else f"stop at {where}: {text}", file=out)
-        elif note.kind == "call":
+        elif note.kind in ("call", "skip"):
             print(f"提示（{where}）：{text}" if chinese else f"note at {where}: {text}", file=out)
     if result.alarm is not None:
         a = result.alarm

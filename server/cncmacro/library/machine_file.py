@@ -22,8 +22,9 @@ Every key is optional (docs/design.md "Machine settings")::
     M60 = { program = 9001, call = "subprogram" }   # like M98 P9001
     T = 9000                       # every T code calls O9000 (the T value in #149)
 
-    [skip]                         # where the G31 skip signal fires
-    Z = -12.5
+    [skip]                         # the part a G31 touches (skip_model.py)
+    Z = -12.5                      # planes, bores, bosses, or contacts = [...] in order
+    bore = { X = 0, Y = 0, diameter = 50 }
 
     [[system_variables]]           # variables this machine adds or describes anew
     number = 1100                  # or numbers = [1100, 1115]
@@ -65,6 +66,7 @@ from ..bilingual import Detail, detail
 from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect
 from ..dialects.tables import SystemVariable
 from .files import SkippedFileError, read_bytes
+from .skip_model import SkipModel, read_skip
 from .timing_settings import timing_changes
 
 MACHINE_FILE_NAME = ".cncmacro.toml"
@@ -83,6 +85,15 @@ class MachineFileError(ValueError):
         super().__init__(message)
         self.line = line
         self.key = key
+
+    def located(self) -> Detail:
+        """The message with its line (``... (line 3)``), for a reader that is not shown the file
+        (a terminal, a debug launch's error); the editor puts the message on the line instead."""
+        message = self.args[0]
+        zh = message.zh if isinstance(message, Detail) else str(message)
+        if self.line is None:
+            return detail(str(message), zh)
+        return detail(f"{message} (line {self.line + 1})", f"{zh}（第 {self.line + 1} 行）")
 
 
 @dataclass(frozen=True, slots=True)
@@ -112,7 +123,7 @@ class MachineSettings:
     time: int | None = None
     variables: dict[int, float] = field(default_factory=dict)
     calls: dict[str, CallCode] = field(default_factory=dict)
-    skip: dict[str, float] = field(default_factory=dict)
+    skip: SkipModel = field(default_factory=SkipModel)
     severity: dict[str, str] = field(default_factory=dict)
     folder: str | None = None
     timing: dict[str, object] = field(default_factory=dict)  # [timing]: changes to the profile's (timing_settings.py)
@@ -160,7 +171,7 @@ class _SettingsFields(TypedDict, total=False):
     time: int | None
     variables: dict[int, float]
     calls: dict[str, CallCode]
-    skip: dict[str, float]
+    skip: SkipModel
     severity: dict[str, str]
     folder: str | None
     timing: dict[str, object]
@@ -336,15 +347,7 @@ def settings_from_mapping(
     if "calls" in data:
         kw["calls"] = _calls(data["calls"], fail)
     if "skip" in data:
-        s = data["skip"]
-        if not isinstance(s, dict) or not all(_finite(v) for v in s.values()):
-            raise fail(
-                "skip",
-                detail(
-                    "must map axis letters to positions (finite numbers)", "必须是 轴地址 = 位置（有限的数值）形式的表"
-                ),
-            )
-        kw["skip"] = {str(k).upper(): float(v) for k, v in s.items()}
+        kw["skip"] = read_skip(data["skip"], fail)
     if "severity" in data:
         kw["severity"] = _severity(data["severity"], fail)
     if "timing" in data:

@@ -31,6 +31,7 @@ from .expressions import VariableKinds
 from .frames import Frame, ModalCall, Move, Note
 from .motion import Motion
 from .observer import RunObserver
+from .probing import Probe, SkipState
 from .status import FINISHED, RunStatus
 from .straight_runs import run_straight
 from .tracking import run_tracked
@@ -53,6 +54,7 @@ class RunResult:
     output: list[str]
     notes: list[Note]
     message: str | None = None
+    probes: list[Probe] = field(default_factory=list)  # the G31 blocks (probing.py)
 
 
 @dataclass(slots=True)
@@ -78,6 +80,8 @@ class Snapshot:
     timer_marks: dict[int, float] = field(default_factory=dict)
     lengths: tuple[float, float] = (0.0, 0.0)  # the cut and rapid path so far (mm, cycle_time.py)
     tool_count: int = 0  # tool changes recorded
+    skip_state: SkipState = field(default_factory=SkipState)  # with the number of probes recorded (probing.py)
+    probes: int = 0
 
 
 class Machine(VariableAccess, Motion):
@@ -660,7 +664,8 @@ class Machine(VariableAccess, Motion):
             (list(self.pos), list(self.shift), list(self.skip_pos), list(self.tool_vector)), self.extra_wcs,
             self.cycle_start_z, list(self.modal_calls), (len(self.moves), len(self.output), len(self.notes)),
             self.clock, self.blocks, self.status, self.alarm, self.message, set(self.written_system),
-            dict(self.timer_marks), (self.cut_length, self.rapid_length), len(self.tool_changes),
+            dict(self.timer_marks), (self.cut_length, self.rapid_length), len(self.tool_changes), self.skip_state,
+            len(self.probes),
         )  # fmt: skip
 
     def restore(self, snap: Snapshot) -> None:
@@ -688,6 +693,8 @@ class Machine(VariableAccess, Motion):
         self.message = snap.message
         self.written_system = set(snap.written_system)
         self.timer_marks = dict(snap.timer_marks)
+        self.skip_state = snap.skip_state
+        del self.probes[snap.probes :]
         self.cancel_requested = False
         self.ended_by_main_m99 = False
 
@@ -728,4 +735,4 @@ class Machine(VariableAccess, Motion):
 
     def result(self) -> RunResult:
         return RunResult(self.status, self.alarm, self.blocks, self.variables(), self.moves, self.output, self.notes,
-                         self.message)  # fmt: skip
+                         self.message, self.probes)  # fmt: skip

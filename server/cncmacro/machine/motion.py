@@ -13,7 +13,7 @@ Values arrive already rounded to their address's increment.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
@@ -22,11 +22,13 @@ from .arcs import ARC_MODES, arc_centre, arc_planes
 from .calls import g_code_groups
 from .cycle_time import INCH, MoveTimes
 from .frames import Move, ToolChange
+from .probing import Probe, SkipState, skip_block
 from .words import extra_offset_codes
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
     from ..library.machine_file import MachineSettings
+    from .machine import Machine
     from .observer import RunObserver
 
 Value = float | None
@@ -63,6 +65,8 @@ class Motion:
         self.pos: list[float] = [0.0] * len(axes)
         self.shift: list[float] = [0.0] * len(axes)
         self.skip_pos: list[float] = [0.0] * len(axes)
+        self.skip_state = SkipState()  # the contact points used (probing.py)
+        self.probes: list[Probe] = []
         self.tool_vector: list[float] = [0.0] * len(axes)
         self.modal: dict[str, float] = {"motion": 0.0, "distance": 90.0, "units": 21.0, "cutter": 40.0,
                                         "length": 49.0, "canned": 80.0, "return": 98.0, "macro": 67.0,
@@ -491,21 +495,8 @@ class Motion:
                 self._move(file, line, 0.0, home)
                 return True, None
             return False, None
-        if g == 31.0:
-            target = self._target(axes, inc)
-            start = list(self.pos)
-            for letter, fire in self.settings.skip.items():
-                j = self.axis_index.get(letter)
-                if (
-                    j is not None
-                    and min(start[j], target[j]) <= fire <= max(start[j], target[j])
-                    and start[j] != target[j]
-                ):
-                    t = (fire - start[j]) / (target[j] - start[j])
-                    target = [a + (b - a) * t for a, b in zip(start, target, strict=True)]
-                    break
-            self._move(file, line, 31.0, target)
-            self.skip_pos = list(self.pos)
+        if g == 31.0:  # skip: probing.py
+            skip_block(cast("Machine", self), self._target(axes, inc), file, line)
             return True, None
         if g == 53.0:
             target = list(self.pos)

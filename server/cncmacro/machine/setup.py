@@ -85,7 +85,7 @@ def machine_settings(program: Path, machine_file: Path | str | None = None) -> M
         found = find_machine_file(program)
         return load_machine_file(found) if found is not None else MachineSettings()
     except MachineFileError as e:
-        raise SetupError(e.args[0]) from None  # its text, with the Chinese beside it
+        raise SetupError(e.located()) from None  # its text and line, with the Chinese beside it
 
 
 def prepare_run(

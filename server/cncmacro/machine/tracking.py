@@ -163,7 +163,8 @@ def _same_frames(a: list[Frame], b: list[Frame]) -> bool:
 def same_state(a: Snapshot, b: Snapshot, *, clock: bool) -> bool:
     """Whether runs continuing from ``a`` and from ``b`` behave alike (module docstring)."""
     if (a.status != b.status or a.alarm is not b.alarm or a.message != b.message or a.extra_wcs != b.extra_wcs
-            or a.modal_calls != b.modal_calls or a.written_system != b.written_system):  # fmt: skip
+            or a.modal_calls != b.modal_calls or a.written_system != b.written_system
+            or a.skip_state != b.skip_state):  # fmt: skip
         return False
     if not same_values([a.cycle_start_z], [b.cycle_start_z]):
         return False
