@@ -4,6 +4,7 @@ whole analysis; the analysis reports how far it got, and the user can stop it.""
 from __future__ import annotations
 
 import asyncio
+from pathlib import Path
 
 import pytest
 import pytest_lsp
@@ -123,3 +124,29 @@ async def test_a_huge_file_answers_hovers_and_keeps_edits_while_it_is_read(clien
     reading = reports_of(client, "huge_reading.nc", "reading")
     assert isinstance(reading[0], types.WorkDoneProgressBegin) and not reading[0].cancellable
     assert isinstance(reading[-1], types.WorkDoneProgressEnd)
+
+
+@pytest_lsp.fixture(config=config(), scope="module")
+async def big_folder(lsp_client: LanguageClient, tmp_path_factory: pytest.TempPathFactory):  # type: ignore[no-untyped-def]
+    root = tmp_path_factory.mktemp("cam_folder")
+    lines = ["O0400"] + [f"G01 X{i % 100}.5 Y{i % 37}.25 Z-{i % 7}.1 F800" for i in range(320_000)] + ["M30"]
+    (root / "O0400.nc").write_text("\n".join(lines), encoding="utf-8")  # about 9 MB: over the search limit
+    (root / "notes.nc").write_bytes(b"\x00\x01binary")
+    lsp_client.root = root  # type: ignore[attr-defined]
+    await start(lsp_client, root, "en")
+    yield
+    await lsp_client.shutdown_session()
+
+
+async def test_a_cam_file_over_the_search_limit_is_no_warning_and_is_checked_in_full_when_opened(
+    big_folder: LanguageClient,
+) -> None:
+    """A mould shop's folder holds CAM files of tens of megabytes: no call looks for them, so
+    the workspace's search passing over them is no warning; opened, one is read and checked."""
+    root: Path = big_folder.root  # type: ignore[attr-defined]
+    path = root / "O0400.nc"
+    assert path.stat().st_size > 8_000_000
+    uri = open_file(big_folder, path, version=1)
+    await diagnostics_for(big_folder, uri, 1)
+    assert (320_001, "not-executed") not in await analysed(big_folder, uri, 1)  # the run reached the end
+    assert not [m for m in big_folder.messages if "O0400.nc" in m.message]

@@ -209,3 +209,27 @@ async def test_semantic_tokens_delta_turns_the_old_answer_into_the_new_one(fanuc
     assert ("#500", "variable", ["persistent"]) in _decode(data, await _legend(fanuc_zh), lines)
     provider = fanuc_zh.server_capabilities.semantic_tokens_provider  # type: ignore[attr-defined]
     assert provider.full.delta is True
+
+
+async def test_semantic_tokens_of_a_long_file_are_those_of_its_lines_while_other_requests_are_answered(
+    fanuc_en: LanguageClient,
+) -> None:
+    """A file longer than one encoding step (lines with and without tokens, a step ending on a
+    line with tokens) gets, in one answer, the tokens its lines have one by one, and a hover sent
+    meanwhile is answered."""
+    lines = ["O0600"]
+    for i in range(45_000):
+        lines.append(f"#{100 + i % 50}=#{101 + i % 7}+1" if i % 3 == 0 else f"G01 X{i % 90}. Y{i % 13}.")
+    text = "\n".join([*lines, "M30"])
+    uri = open_file(fanuc_en, FANUC / "long_tokens.nc", text)
+    doc = types.TextDocumentIdentifier(uri)
+    full_request = fanuc_en.text_document_semantic_tokens_full_async(types.SemanticTokensParams(doc))
+    hover = await fanuc_en.text_document_hover_async(types.HoverParams(doc, types.Position(1, 1)))
+    full = await full_request
+    whole = await fanuc_en.text_document_semantic_tokens_range_async(
+        types.SemanticTokensRangeParams(doc, types.Range(types.Position(0, 0), types.Position(len(lines), 0)))
+    )
+    assert hover is not None
+    assert full is not None and whole is not None
+    assert len(full.data) == 5 * 2 * 15_000 + 5 and full.data == whole.data  # two variables a macro line
+    close_file(fanuc_en, uri)

@@ -7,7 +7,9 @@ analysis's program library and call index read through the same one), as a searc
 reads files (``library/files.py``: at most ``MAX_PROGRAM_FILES`` files and ``MAX_FOLDER_ENTRIES``
 entries per folder, each file up to ``MAX_PROGRAM_BYTES``, regular files only, ``MAX_INDEX_BYTES``
 in all, so that ``initialize`` is answered soon whatever the folder, ``/`` too); what was not read
-is kept in ``skipped`` for the server to report. A file changed on disk (an editor's file event,
+is kept in ``skipped`` for the server to report, but for a file over the size limit (a long CAM
+program: no call looks for it, and opened in the editor it is read and checked in full), which
+is only logged. A file changed on disk (an editor's file event,
 or ``disk_watch.py``) is read again, or dropped when it is gone; only a regular file is ever
 opened (a FIFO named ``O1234.nc`` would wait for a writer). Open documents take the place of
 their file on disk, so every question (which programs exist, where ``#100`` is written, who
@@ -28,7 +30,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Protocol
 
-from ..bilingual import Detail, detail
+from ..bilingual import Detail, detail, in_language
 from ..dialects.dialect import Dialect
 from ..library.file_cache import FileCache
 from ..library.files import (
@@ -36,6 +38,7 @@ from ..library.files import (
     MAX_INDEX_BYTES,
     MAX_PROGRAM_FILES,
     BinaryFileError,
+    FileTooLargeError,
     ReadScope,
     SkippedFileError,
     is_program_file,
@@ -140,6 +143,9 @@ class WorkspaceIndex:
             self.files.pop(path, None)
             if isinstance(e, BinaryFileError):
                 log.info("not indexed: %s", e)
+                return None
+            if isinstance(e, FileTooLargeError):  # a CAM file: no call looks for it, and opened it is read in full
+                log.info("not indexed: %s", in_language(e.message, False))
                 return None
             if isinstance(e, SkippedFileError):
                 return e.message

@@ -269,9 +269,13 @@ class DiagnosticsEngine:
                 return  # closed meanwhile
             if doc.uri not in self._first_shown and self.server.settings_ready.is_set():  # opened before them
                 self._publish_first_screen(self._analysis(doc.machine_file), doc.uri, doc.path, doc.lines, doc.version)
-            if token is not None:
+            if token is not None:  # the message again: an editor may show only the latest
                 done = int(100 * len(parsed.blocks) / len(parsed.lines))
-                self.server.work_done_progress.report(token, types.WorkDoneProgressReport(percentage=done))
+                lines = f"{len(parsed.lines):,}"
+                message = pick(self._locale, f"reading {lines} lines", f"读取 {lines} 行")
+                self.server.work_done_progress.report(
+                    token, types.WorkDoneProgressReport(message=message, percentage=done)
+                )
             await asyncio.sleep(0)
 
     def _ready(self) -> list[OpenDocument]:

@@ -15,11 +15,13 @@ Tokens are found per line by a small scanner that also works on lines that do no
 the label and program spans taken from the parsed block; a line's tokens are cached by its
 text, so after an edit only new lines are scanned. ``full``, ``full/delta`` (one edit: what changed
 between the common start and end of the previous answer and this one) and ``range`` requests
-are served.
+are served; a whole document is encoded ``STEP_LINES`` lines at a time, the other requests
+answered between the steps.
 """
 
 from __future__ import annotations
 
+import asyncio
 import itertools
 import re
 from functools import cache
@@ -33,6 +35,8 @@ from ..syntax.block_parser import MAX_BLOCK_CHARS
 from ..syntax.nodes import Block
 from .documents import OpenDocument
 from .positions import Encoding
+
+STEP_LINES = 20_000  # lines of a whole document's tokens encoded between answers to other requests
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -156,6 +160,31 @@ def encode(doc: OpenDocument, first: int, last: int, encoding: Encoding) -> list
     return data
 
 
+async def encode_document(doc: OpenDocument, encoding: Encoding) -> list[int]:
+    """The tokens of the whole of ``doc``, encoded a step of ``STEP_LINES`` lines at a time, the
+    editor's other requests answered between the steps (a CAM file of a million lines takes
+    seconds); an edit meanwhile starts the encoding again, a few times at most."""
+    for _ in range(3):
+        version = doc.version
+        data: list[int] = []
+        last_line = 0  # the line of the last token so far
+        count = len(doc.lines)
+        for first in range(0, count, STEP_LINES):
+            part = encode(doc, first, min(first + STEP_LINES, count) - 1, encoding)
+            if part:  # its first token's line counts from line 0: make it count from the last token
+                line = part[0]
+                part[0] = line - last_line
+                last_line = line + sum(part[5::5])
+                data += part
+            if count > STEP_LINES:
+                await asyncio.sleep(0)
+            if doc.version != version:
+                break
+        else:
+            return data
+    return data
+
+
 def register(server: CncMacroServer) -> None:
     @server.feature(
         types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL,
@@ -163,17 +192,17 @@ def register(server: CncMacroServer) -> None:
             legend=LEGEND, full=types.SemanticTokensFullDelta(delta=True), range=True
         ),
     )
-    def full(ls: CncMacroServer, params: types.SemanticTokensParams) -> types.SemanticTokens:
+    async def full(ls: CncMacroServer, params: types.SemanticTokensParams) -> types.SemanticTokens:
         doc = ls.documents.get(params.text_document.uri)
-        data = encode(doc, 0, len(doc.lines) - 1, ls.documents.encoding)
+        data = await encode_document(doc, ls.documents.encoding)
         return types.SemanticTokens(data=data, result_id=_remember(doc.uri, data))
 
     @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL_DELTA)
-    def full_delta(
+    async def full_delta(
         ls: CncMacroServer, params: types.SemanticTokensDeltaParams
     ) -> types.SemanticTokens | types.SemanticTokensDelta:
         doc = ls.documents.get(params.text_document.uri)
-        data = encode(doc, 0, len(doc.lines) - 1, ls.documents.encoding)
+        data = await encode_document(doc, ls.documents.encoding)
         old = _previous.get(doc.uri)
         result_id = _remember(doc.uri, data)
         if old is None or old[0] != params.previous_result_id:
