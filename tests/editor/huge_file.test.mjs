@@ -3,7 +3,8 @@
 // the status bar, answers a hover far down the file meanwhile, and publishes every finding at the
 // end. The program is made at test time by the benchmarks' generator (benchmarks/camgen.py), with
 // a syntax error on line 6 and, on line 900,000, a jump to a label that is not there. Screenshots
-// go to test-output/editor/. Run after npm run package:
+// go to test-output/editor/; the hover's is docs/images/huge-file-opening.png when
+// CNCMACRO_README_PICTURES is set (npm run screenshots). Run after npm run package:
 // node --test --test-concurrency=1 tests/editor/huge_file.test.mjs
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
@@ -39,9 +40,13 @@ lines[label] = lines[label][len("N99991 "):]
 open(sys.argv[1], "w").write("\\n".join(lines))
 `;
 
-async function shot(name) {
+async function shot(name, docs) {
   await page.waitForTimeout(300);
-  await page.screenshot({ path: path.join(OUTPUT, `${name}.png`) });
+  const file = path.join(OUTPUT, `${name}.png`);
+  await page.screenshot({ path: file });
+  if (process.env.CNCMACRO_README_PICTURES && docs) {
+    fs.copyFileSync(file, path.join(ROOT, 'docs', 'images', `${docs}.png`));
+  }
 }
 
 /** The status-bar text of the server's progress ("cncmacro: reading ..." / "analysing ..."), or ''. */
@@ -176,7 +181,7 @@ test('a hover far down the file, on line 500,026, names the variable and where i
   assert.match(await hover.innerText(), /written at:/);
   const far = page.locator('.markers-panel .monaco-list-row', { hasText: 'there is no N99991' });
   console.log(`the analysis ${(await far.isVisible()) ? 'had ended' : 'was still running'} when the hover showed`);
-  await shot('huge-2-hover-while-analysing');
+  await shot('huge-2-hover-while-analysing', 'huge-file-opening');
 });
 
 test('the jump to the missing label on line 900,000 is found at the end of the analysis', { timeout: 5 * STEP }, async () => {
