@@ -1,12 +1,12 @@
 // Opening a 1,000,000-line CAM program in a real VS Code: the language server shows the findings
 // of the first screen at once, reads the file in steps and then analyses it, with its progress in
 // the status bar (a click there shows the analysis in the notification centre, with Cancel),
-// answers a hover far down the file meanwhile, and publishes every finding at the end. The program is made at test time by the benchmarks' generator (benchmarks/camgen.py), with
-// a syntax error on line 6 and, on line 900,000, a jump to a label that is not there. Screenshots
-// go to test-output/editor/; the analysis's progress in the notification centre is
-// docs/images/huge-file-opening.png when
-// CNCMACRO_README_PICTURES is set (npm run screenshots). Run after npm run package:
-// node --test --test-concurrency=1 tests/editor/huge_file.test.mjs
+// answers a hover far down the file meanwhile, and publishes every finding at the end. The
+// program is made at test time by the benchmarks' generator (benchmarks/camgen.py), with a syntax
+// error on line 6 and, on line 900,000, a jump to a label that is not there. Screenshots go to
+// test-output/editor/; the analysis's progress in the notification centre is also
+// docs/images/huge-file-opening.png when CNCMACRO_README_PICTURES is set (npm run screenshots).
+// Run after npm run package: node --test --test-concurrency=1 tests/editor/huge_file.test.mjs
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
