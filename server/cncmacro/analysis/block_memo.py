@@ -73,7 +73,9 @@ class BlockMemo:
         plain = block.plain
         if plain is not None:  # plain lines are many and rarely repeat: not kept
             return None if ctx.plain_hint(plain) is None else line_facts(block, ctx)
-        entry = self._entry(block)
+        entry = self._entries.get(id(block))
+        if entry is None or entry.block is not block:
+            entry = self._entry(block)
         kept = entry.facts
         if kept is None or kept[0] is not ctx:
             kept = entry.facts = (ctx, line_facts(block, ctx))

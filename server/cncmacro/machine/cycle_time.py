@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from operator import mul, sub
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
@@ -78,13 +79,7 @@ class MoveTimes:
 
     def rapid_seconds(self, start: Sequence[float], end: Sequence[float], unit: float) -> float:
         """Seconds a rapid takes: its slowest axis's (``unit`` is 25.4 under G20, else 1)."""
-        slowest = 0.0
-        for a, b, k in zip(start, end, self.rapid_seconds_per_mm, strict=True):
-            if a != b:
-                t = abs(b - a) * k
-                if t > slowest:
-                    slowest = t
-        return slowest * unit
+        return max(map(mul, map(abs, map(sub, end, start)), self.rapid_seconds_per_mm), default=0.0) * unit
 
     def arc_length(
         self, mode: float, plane: float, start: Sequence[float], end: Sequence[float], centre: Sequence[float]

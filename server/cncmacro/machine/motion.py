@@ -421,10 +421,11 @@ class Motion:
             else:
                 length = times.distance(start, end)
             per_rev = modal.get("feed")
-            rate = times.feed_rate(
-                feed, per_rev == 95.0 or (per_rev == 99.0 and self._lathe), self.codes.get("S") or 0.0,
-                modal.get("spindle") == 96.0, start, end, unit,
-            )  # fmt: skip
+            if per_rev == 95.0 or (per_rev == 99.0 and self._lathe):
+                rate = times.feed_rate(feed, True, self.codes.get("S") or 0.0, modal.get("spindle") == 96.0,
+                                       start, end, unit)  # fmt: skip
+            else:
+                rate = feed  # per minute (``feed_rate``)
             seconds = length / rate * 60.0 if rate > 0 else 0.0
             self.cut_length += length * unit
         self.clock += seconds
