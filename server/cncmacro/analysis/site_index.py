@@ -88,8 +88,13 @@ class SiteIndex:
             lines: list[int] = []
             sites: list[Sites] = []
             block_sites = self.memo.sites
+            local = self.local_call
             for i, b in enumerate(self._blocks):
-                s = block_sites(b, self.local_call)
+                p = b.plain  # most lines of a CAM file: passed over here, without a call
+                if p is not None and "M9" not in p and "m9" not in p and "H8" not in p and "h8" not in p:
+                    if local is None or ("M" not in p and "m" not in p):
+                        continue
+                s = block_sites(b, local)
                 if s[0] or s[1]:
                     lines.append(i)
                     sites.append(s)

@@ -31,7 +31,7 @@ from .line_facts import LineContext, LineFacts
 from .static_checks import cross_line_diagnostics, findings_of
 
 _V = TypeVar("_V")
-_CHUNK = 20_000  # lines looked at between two reports of how far the look got (and chances to stop)
+_CHUNK = 5_000  # lines looked at between two reports of how far the look got (and chances to stop)
 
 
 class StaticLines:

@@ -214,20 +214,25 @@ class WorkspaceAnalysis:
         self.docs[key] = _Open(key, doc, loaded, version, real=os.path.realpath(key))
         self.stale = True
 
-    def first_screen(self, path: str, lines: list[str], extra: Sequence[int] = ()) -> list[Diagnostic]:
+    def first_screen(
+        self, path: str, lines: list[str], extra: Sequence[int] = (), head: bool = True
+    ) -> list[Diagnostic]:
         """What each of the first ``FIRST_SCREEN_LINES`` of ``lines``, and each line of
         ``extra``, earns by itself (syntax and the per-line static findings, the user's
         severities applied): what a huge document shows at once, before it is parsed in full
         and analysed, and at each edit until then. The checks that connect lines (labels,
         loops, calls) and the runs need the whole document and come with its analysis, which
-        finds these again: nothing shown here is taken back by it."""
-        head = ParsedDocument("\n".join(lines[:FIRST_SCREEN_LINES]))
-        ctx = static_checks.line_context(self.dialect_of(head.lines), self.settings, self.locale)
-        static = StaticLines(head.blocks, ctx, self.memo)
-        found, _ = static.line_diagnostics(min(head.program.read_end, len(head.lines)), path, self.locale)
+        finds these again: nothing shown here is taken back by it. ``head``: False for the lines
+        of ``extra`` alone."""
+        top = ParsedDocument("\n".join(lines[:FIRST_SCREEN_LINES]) if head else "")
+        ctx = static_checks.line_context(self.dialect_of(lines[:FIRST_SCREEN_LINES]), self.settings, self.locale)
+        found: list[Diagnostic] = []
+        if head:
+            static = StaticLines(top.blocks, ctx, self.memo)
+            found, _ = static.line_diagnostics(min(top.program.read_end, len(top.lines)), path, self.locale)
         chinese = is_chinese(self.locale)
         for line in extra:
-            block = head.cache.get(lines[line])
+            block = top.cache.get(lines[line])
             found.extend(syntax_findings(block.problems, line, path, chinese))
             facts = self.memo.facts(block, ctx)
             if facts is not None:

@@ -71,7 +71,8 @@ BURST_SECONDS = 0.05
 PROGRESS_LINES = 20_000  # a first analysis of a file this long reports progress
 PROGRESS_SECONDS = 0.25  # how often it reports
 FIRST_SCREEN_FROM = 100_000  # a file this long shows its first screen's findings before it is parsed in full
-READ_STEP_LINES = 20_000  # and is parsed in steps of this many lines, the editor answered between them
+READ_STEP_LINES = 5_000  # and is parsed in steps of this many lines, the editor answered between them
+YIELDS = 8  # turns of the event loop given to the editor's messages between two steps
 PROVISIONAL_LINES = 1_000  # edited lines (besides the first screen) whose findings show before its first analysis
 DISK_CHECK_SECONDS = 2.0  # between looks at the files the analysis read, while documents are open
 
@@ -116,6 +117,9 @@ class DiagnosticsEngine:
         self._timing: dict[str, tuple[int | None, FileTiming | None]] = {}
         self._analysed_once: set[str] = set()
         self._first_shown: set[str] = set()  # huge documents whose first screen was published
+        # per huge document not analysed yet: its first screen's lines, the analysis that
+        # checked them and their findings
+        self._first_screens: dict[str, tuple[tuple[str, ...], WorkspaceAnalysis, list[Diagnostic]]] = {}
         self._loading: set[str] = set()  # huge documents being read (``_read``)
         self._touched: dict[str, set[int]] = {}  # per huge document not analysed yet, the lines edited
         self._loads: dict[str, asyncio.Future[None]] = {}  # and their reading
@@ -264,19 +268,22 @@ class DiagnosticsEngine:
     async def _read_steps(self, doc: OpenDocument, token: str | None) -> None:
         """The steps of ``_read``, until the document is read or closed."""
         parsed = doc.parsed
+        shown = -1  # the percentage last reported
         while not parsed.parse_more(READ_STEP_LINES):
             if doc.uri not in self._loading:
                 return  # closed meanwhile
             if doc.uri not in self._first_shown and self.server.settings_ready.is_set():  # opened before them
                 self._publish_first_screen(self._analysis(doc.machine_file), doc.uri, doc.path, doc.lines, doc.version)
-            if token is not None:  # the message again: an editor may show only the latest
-                done = int(100 * len(parsed.blocks) / len(parsed.lines))
+            done = int(100 * len(parsed.blocks) / len(parsed.lines))
+            if token is not None and done != shown:  # the message again: an editor may show only the latest
+                shown = done
                 lines = f"{len(parsed.lines):,}"
                 message = pick(self._locale, f"reading {lines} lines", f"读取 {lines} 行")
                 self.server.work_done_progress.report(
                     token, types.WorkDoneProgressReport(message=message, percentage=done)
                 )
-            await asyncio.sleep(0)
+            for _ in range(YIELDS):  # a message takes a few turns of the loop to reach its handler
+                await asyncio.sleep(0)
 
     def _ready(self) -> list[OpenDocument]:
         """The open documents, but those still being read (``_read``)."""
@@ -288,8 +295,15 @@ class DiagnosticsEngine:
         ``extra``) earn by themselves (``WorkspaceAnalysis.first_screen``), before the document
         is parsed in full and analysed: the top of the file is what the editor shows first."""
         self._first_shown.add(uri)
+        top = tuple(lines[:FIRST_SCREEN_LINES])
+        kept = self._first_screens.get(uri)
         try:
-            diags = analysis.first_screen(path, lines, extra or ())
+            if kept is not None and kept[0] == top and kept[1] is analysis:  # the first screen is as it was
+                diags = kept[2] + analysis.first_screen(path, lines, extra or (), head=False)
+            else:
+                diags = analysis.first_screen(path, lines)
+                self._first_screens[uri] = (top, analysis, diags)
+                diags = diags + analysis.first_screen(path, lines, extra or (), head=False)
         except Exception:  # the whole analysis will say it
             log.exception("the first screen's findings failed")
             return
@@ -347,6 +361,7 @@ class DiagnosticsEngine:
         reading = uri in self._loading  # its reading stops
         self._loading.discard(uri)
         self._touched.pop(uri, None)
+        self._first_screens.pop(uri, None)
         with self.editing():
             doc = self.server.documents.close(uri)
             if doc is not None and not reading:
@@ -577,6 +592,7 @@ class DiagnosticsEngine:
                 self._timing[uri] = (version, outcome.timing.get(uri))
             self._analysed_once.add(uri)
             self._touched.pop(uri, None)
+            self._first_screens.pop(uri, None)
             diags = outcome.found[uri]
             old = self._published.get(uri)
             if old is not None and old[0] == version and old[1] == diags:
