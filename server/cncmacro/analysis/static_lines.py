@@ -180,7 +180,12 @@ def syntax_findings(problems: tuple[Problem, ...], line: int, file: str, chinese
 
 def _shift(table: dict[int, _V], start: int, end: int, delta: int) -> None:
     """Renumber the entries of ``table`` after an edit that replaced lines ``start``..``end``
-    (exclusive) with ``delta`` lines more: those inside it go, those after it move."""
+    (exclusive) with ``delta`` lines more: those inside it go, those after it move (none moves
+    when the count of lines stayed: the usual edit of a coordinate costs its own lines only)."""
+    if not delta:
+        for line in range(start, end):
+            table.pop(line, None)
+        return
     moved = {}
     for line in [x for x in table if x >= start]:
         value = table.pop(line)
