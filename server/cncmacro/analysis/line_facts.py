@@ -160,9 +160,15 @@ class LineContext:
 
 def _plain_hint(settings: MachineSettings, dialect: Dialect) -> Callable[[str], object]:
     """The search for ``_plain_pattern`` in a plain line, passing over at once the lines without
-    a letter that the pattern starts with (nearly every line of a CAM program: axis words)."""
-    letters = {"G", "M", *(code[:1].upper() for code in settings.calls if code[:1])}
-    first = re.compile("[" + "".join(sorted(letters | {x.lower() for x in letters})) + "]").search
+    a letter that the pattern starts with, G00 to G03 aside (nearly every line of a CAM program:
+    axis words and straight or circular moves)."""
+    letters = {"M", *(code[:1].upper() for code in settings.calls if code[:1])}
+    if "G" in letters:  # a G code the machine file makes a call: any G word may be one
+        letters.discard("G")
+        g = "[Gg]"
+    else:  # G00 to G03, most of a CAM program, need no look (``plain_line_pattern``)
+        g = r"[Gg](?!\+?0*[0-3](?:\.0*)?(?:[ \t]|$))"
+    first = re.compile("[" + "".join(sorted(letters | {x.lower() for x in letters})) + "]|" + g).search
     full = re.compile(_plain_pattern(settings, dialect)).search
 
     def hint(line: str) -> object:
