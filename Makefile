@@ -48,7 +48,7 @@ test: setup
 	node --test tests/dap/
 	npm run --silent test:grammar
 	PYTHON=$(PY) npm run --silent package
-	timeout 600 node --test --test-concurrency=1 tests/editor/
+	timeout 900 node --test --test-concurrency=1 tests/editor/
 
 # The VS Code extension: cncmacro.vsix (needs only Python >= 3.10 where it is installed). Building
 # it needs Python with pip and `npm ci`, none of the test stack.
