@@ -152,7 +152,9 @@ async def test_a_2_gb_program_file_is_named_and_never_read(client: LanguageClien
     (tmp_path / "O0002.nc").write_text("O0002\nG65 P9100\nM30\n", encoding="utf-8")
     await initialize(client, tmp_path)
     said = await shown_warning(client)
-    assert f"{tmp_path / 'O9100.nc'}: 2,147,483,648 bytes, over the limit of 8,000,000: not read" in said
+    assert (
+        f"{tmp_path / 'O9100.nc'}: 2,147,483,648 bytes, over the limit of 8,000,000: not read for the programs" in said
+    )
     assert await symbols(client) == ["O0002"]
     uri = open_file(client, tmp_path / "O0002.nc")  # its call looks for O9100 on disk
     diags = (await asyncio.wait_for(diagnostics_for(client, uri, 1), TIMEOUT)).diagnostics

@@ -138,15 +138,18 @@ async def big_folder(lsp_client: LanguageClient, tmp_path_factory: pytest.TempPa
     await lsp_client.shutdown_session()
 
 
-async def test_a_cam_file_over_the_search_limit_is_no_warning_and_is_checked_in_full_when_opened(
+async def test_a_cam_file_over_the_search_limit_is_named_as_not_searched_and_checked_in_full_when_opened(
     big_folder: LanguageClient,
 ) -> None:
-    """A mould shop's folder holds CAM files of tens of megabytes: no call looks for them, so
-    the workspace's search passing over them is no warning; opened, one is read and checked."""
+    """A mould shop's folder holds CAM files of tens of megabytes: the workspace's search for
+    called programs passes over them and says so, and says that opened, one is checked in full;
+    opened, it is."""
     root: Path = big_folder.root  # type: ignore[attr-defined]
     path = root / "O0400.nc"
     assert path.stat().st_size > 8_000_000
     uri = open_file(big_folder, path, version=1)
     await diagnostics_for(big_folder, uri, 1)
     assert (320_001, "not-executed") not in await analysed(big_folder, uri, 1)  # the run reached the end
-    assert not [m for m in big_folder.messages if "O0400.nc" in m.message]
+    said = [m.message for m in big_folder.messages if "O0400.nc" in m.message]
+    assert len(said) == 1 and "not read for the programs that calls look for" in said[0]
+    assert "opened in the editor, it is checked in full" in said[0]

@@ -7,9 +7,9 @@ analysis's program library and call index read through the same one), as a searc
 reads files (``library/files.py``: at most ``MAX_PROGRAM_FILES`` files and ``MAX_FOLDER_ENTRIES``
 entries per folder, each file up to ``MAX_PROGRAM_BYTES``, regular files only, ``MAX_INDEX_BYTES``
 in all, so that ``initialize`` is answered soon whatever the folder, ``/`` too); what was not read
-is kept in ``skipped`` for the server to report, but for a file over the size limit (a long CAM
-program: no call looks for it, and opened in the editor it is read and checked in full), which
-is only logged. A file changed on disk (an editor's file event,
+is kept in ``skipped`` for the server to report (a file over the size limit, often a long CAM
+program, is named as not read for the programs calls look for: opened in the editor it is read
+and checked in full). A file changed on disk (an editor's file event,
 or ``disk_watch.py``) is read again, or dropped when it is gone; only a regular file is ever
 opened (a FIFO named ``O1234.nc`` would wait for a writer). Open documents take the place of
 their file on disk, so every question (which programs exist, where ``#100`` is written, who
@@ -30,7 +30,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Protocol
 
-from ..bilingual import Detail, detail, in_language
+from ..bilingual import Detail, detail
 from ..dialects.dialect import Dialect
 from ..library.file_cache import FileCache
 from ..library.files import (
@@ -144,9 +144,14 @@ class WorkspaceIndex:
             if isinstance(e, BinaryFileError):
                 log.info("not indexed: %s", e)
                 return None
-            if isinstance(e, FileTooLargeError):  # a CAM file: no call looks for it, and opened it is read in full
-                log.info("not indexed: %s", in_language(e.message, False))
-                return None
+            if isinstance(e, FileTooLargeError):  # a long CAM file, or a program a call will miss
+                shown = shown_text(path)
+                return detail(
+                    f"{shown}: {e.size:,} bytes, over the limit of {e.limit:,}: not read for the programs that calls"
+                    " look for (opened in the editor, it is checked in full)",
+                    f"{shown}：{e.size:,} 字节，超过 {e.limit:,} 字节的上限：调用查找程序时不读取"
+                    "（在编辑器中打开则完整检查）",
+                )
             if isinstance(e, SkippedFileError):
                 return e.message
             reason = e.strerror or str(e)
