@@ -359,6 +359,7 @@ def add_sequence_numbers(
     changes: list[TextChange] = []
     used_by_unit: dict[int, set[int]] = {}
     previous: dict[int, int] = {}
+    numbered = set(bare)  # asked for once per line: a long program must not cost the square
     for i in plan.lines:
         unit = plan.unit_of(i)
         if unit in reached:
@@ -370,7 +371,7 @@ def add_sequence_numbers(
         if label is not None:
             previous[unit] = label
             continue
-        if i not in bare:
+        if i not in numbered:
             continue
         n = (previous.get(unit, 0) // step + 1) * step
         while n in used:
