@@ -15,10 +15,10 @@ from pathlib import Path
 from ..dialects.dialect import Dialect
 from ..library.file_cache import LoadedFile
 from ..library.machine_file import CallCode
-from ..library.programs import ProgramLibrary
+from ..library.programs import FoundProgram, ProgramLibrary
 from ..machine.jumps import first_line
 from ..syntax.program import ProgramUnit
-from .call_sites import call_site
+from .call_sites import CallSite, calls_on
 from .sites import jump_sites, local_call_kind
 
 Calls = Mapping[str, CallCode] | None
@@ -81,18 +81,8 @@ def outgoing(
     unit = f.program.unit_at(item.start)
     lines = range(item.start, min(item.end if item.label is None else unit.end, f.program.read_end))
     out: dict[CallTarget, list[Span]] = {}
-    blocks = f.program.blocks
-    for i in lines:
-        b = blocks[i]
-        if b.plain is not None and not calls and "P" not in b.plain.upper():
-            continue
-        site = call_site(b, dialect, calls)
-        if site is None:
-            continue
-        found = (
-            library.find_name(site.name, f) if site.name is not None
-            else library.find_number(site.number, f) if site.number is not None else None
-        )  # fmt: skip
+    for i, _, site in calls_on(f.program.blocks, lines, dialect, calls):
+        found = _called(library, site, f)
         if found is None or found.file.on_control:
             continue
         out.setdefault(program_item(found.file, found.unit), []).append((i, site.p.start, site.p.end))
@@ -125,24 +115,21 @@ def incoming(
     for f in files:
         dialect = dialect_for(f.lines, f.path)
         calls = calls_for(f.path)
-        blocks = f.program.blocks
-        for i in range(f.program.read_end):
-            b = blocks[i]
-            if b.plain is not None and not calls and "P" not in b.plain.upper():
-                continue
-            site = call_site(b, dialect, calls)
-            if site is None:
-                continue
+        for i, _, site in calls_on(f.program.blocks, range(f.program.read_end), dialect, calls):
             if site.number is not None and site.number != item.number:
                 continue
             if site.name is not None and site.name.upper() not in (stem, f"O{item.number}" if item.number else stem):
                 continue
-            found = (
-                library.find_name(site.name, f) if site.name is not None
-                else library.find_number(site.number, f) if site.number is not None else None
-            )  # fmt: skip
+            found = _called(library, site, f)
             if found is None or found.file.path != item.path or found.unit.start != item.start:
                 continue
             caller = program_item(f, f.program.unit_at(i))
             out.setdefault(caller, []).append((i, site.p.start, site.p.end))
     return list(out.items())
+
+
+def _called(library: ProgramLibrary, site: CallSite, f: LoadedFile) -> FoundProgram | None:
+    """The program ``site`` (a call in ``f``) runs, as the library finds it."""
+    if site.name is not None:
+        return library.find_name(site.name, f)
+    return library.find_number(site.number, f) if site.number is not None else None

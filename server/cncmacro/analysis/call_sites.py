@@ -8,7 +8,7 @@ local call (Haas ``M97 P n``) names a label of the program itself and is navigat
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass
 
 from ..dialects.dialect import Dialect
@@ -41,3 +41,13 @@ def call_site(block: Block, dialect: Dialect, calls: Mapping[str, CallCode] | No
     if call is None or call.arithmetic or call.local or call.target is None:
         return None  # G65 Hm P Q R is macro arithmetic and branches (docs/semantics.md §7), not a call
     return CallSite(call.kind, call.number, call.name, call.target, call.arguments, call.code)
+
+
+def calls_on(blocks: list[Block], lines: Iterable[int], dialect: Dialect,
+             calls: Mapping[str, CallCode] | None = None) -> Iterator[tuple[int, Block, CallSite]]:  # fmt: skip
+    """(line, block, call) for each of ``lines`` whose block calls a program it names."""
+    for i in lines:
+        b = blocks[i]
+        site = call_site(b, dialect, calls)
+        if site is not None:
+            yield i, b, site

@@ -11,7 +11,7 @@ from pathlib import Path
 
 from ..dialects.dialect import Dialect
 from ..library.machine_file import CallCode
-from .call_sites import call_site
+from .call_sites import calls_on
 from .sequence_numbers import OutsideJump
 from .sites import computed_jump_sites, jump_sites
 from .workspace_index import OpenFile, WorkspaceIndex
@@ -33,13 +33,8 @@ def outside_jumps(
             continue
         dialect = dialect_for(f.lines, f.path)
         calls = calls_for(f.path)
-        blocks = f.program.blocks
-        for i in range(f.program.read_end):
-            b = blocks[i]
-            if b.plain is not None and not calls and "Q" not in b.plain.upper():
-                continue
-            site = call_site(b, dialect, calls)
-            if site is None or site.number is None or f.program.unit_numbered(site.number) is not None:
+        for i, b, site in calls_on(f.program.blocks, range(f.program.read_end), dialect, calls):
+            if site.number is None or f.program.unit_numbered(site.number) is not None:
                 continue
             unit = program.unit_numbered(site.number)
             if unit is None:
@@ -50,10 +45,8 @@ def outside_jumps(
             out += [OutsideJump(unit.start, None, where) for k, _, _ in computed_jump_sites(b, local) if k == "M98 Q"]
     dialect = dialect_for(doc.lines, doc.path)
     calls = calls_for(doc.path)
-    for i in range(program.read_end):
-        b = program.blocks[i]
-        site = call_site(b, dialect, calls)
-        if site is None or (site.number is not None and program.unit_numbered(site.number) is not None):
+    for i, _, site in calls_on(program.blocks, range(program.read_end), dialect, calls):
+        if site.number is not None and program.unit_numbered(site.number) is not None:
             continue
         found = index.find_program(doc, site.number, site.name)
         if found is None or found.file.path == doc.path or found.file.on_control:
