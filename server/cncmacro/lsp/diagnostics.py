@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import asyncio
 import gc
+import json
 import logging
 import threading
 import time
@@ -90,7 +91,7 @@ class Outcome:
     found: dict[str, list[Diagnostic]]
     items: dict[str, list[types.Diagnostic]]
     values: dict[str, LineValues]
-    payloads: dict[str, list[dict[str, object]]]  # the items in their JSON form, as published
+    payloads: dict[str, list[str]]  # the items encoded as JSON text, as published
     on_disk: list[str] = field(default_factory=list)  # files changed on disk: nothing analysed, read them first
     timing: dict[str, FileTiming] = field(default_factory=dict)  # per URI, the cycle time (cycle_lenses.py)
 
@@ -125,8 +126,8 @@ class DiagnosticsEngine:
         self._loads: dict[str, asyncio.Future[None]] = {}  # and their reading
         # the worker's caches: per file the diagnostics last converted, and per diagnostic (with
         # the text of its lines) its protocol form and JSON form
-        self._converted: dict[str, tuple[list[Diagnostic], list[types.Diagnostic], list[dict[str, object]]]] = {}
-        self._forms: dict[tuple[object, ...], tuple[types.Diagnostic, dict[str, object]]] = {}
+        self._converted: dict[str, tuple[list[Diagnostic], list[types.Diagnostic], list[str]]] = {}
+        self._forms: dict[tuple[object, ...], tuple[types.Diagnostic, str]] = {}
         self.collector = Collector()
         self._cleaning = False
         self._opened_at = (0.0, 0.0)  # when the last two documents were opened or closed (monotonic)
@@ -551,9 +552,9 @@ class DiagnosticsEngine:
         unstructure = protocol.to_json
         uri_of = self.server.uri_for_path
         forms = self._forms
-        used: dict[tuple[object, ...], tuple[types.Diagnostic, dict[str, object]]] = {}
+        used: dict[tuple[object, ...], tuple[types.Diagnostic, str]] = {}
         items: dict[str, list[types.Diagnostic]] = {}
-        payloads: dict[str, list[dict[str, object]]] = {}
+        payloads: dict[str, list[str]] = {}
         for uri, diags in found.items():
             cached = self._converted.get(uri)
             if cached is not None and cached[0] == diags:
@@ -567,7 +568,7 @@ class DiagnosticsEngine:
                 form = used.get(key) or forms.get(key)
                 if form is None:
                     item = to_lsp(x, line_text, encoding, uri_of)
-                    form = (item, unstructure(item))
+                    form = (item, json.dumps(unstructure(item)))
                 used[key] = form
                 converted.append(form[0])
                 payload.append(form[1])
@@ -598,10 +599,7 @@ class DiagnosticsEngine:
             if old is not None and old[0] == version and old[1] == diags:
                 continue
             self._published[uri] = (version, diags, outcome.items[uri], old[3] + 1 if old else 1)
-            cast("CncMacroProtocol", self.server.protocol).send_prepared(
-                types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS,
-                {"uri": uri, "diagnostics": outcome.payloads[uri], **({} if version is None else {"version": version})},
-            )
+            cast("CncMacroProtocol", self.server.protocol).send_diagnostics(uri, version, outcome.payloads[uri])
         for uri in [u for u, p in self._published.items() if u not in outcome.versions and u not in documents]:
             del self._published[uri]  # a file that is not open, no longer with findings
             self.server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))

@@ -10,6 +10,8 @@ handler with an error response and keeps serving; the error is also logged here.
 from __future__ import annotations
 
 import asyncio
+import inspect
+import json
 import logging
 import os
 import sys
@@ -47,6 +49,10 @@ class CncMacroProtocol(LanguageServerProtocol):
     """The protocol without pygls's own copy of open documents: the server's ``Documents``
     keeps them parsed instead."""
 
+    def __init__(self, server: Any, converter: Any) -> None:
+        super().__init__(server, converter)
+        self._writing: set[asyncio.Future[Any]] = set()  # writes to a socket not yet done
+
     def _execute_handler(self, msg_id: Any, handler: Any, callback: Any, args: Any = None, kwargs: Any = None) -> None:
         """pygls keeps the future of a notification handled by a generator (didOpen, didChange,
         didClose, ...) among the requests' futures, where nothing ever removes it: one per
@@ -60,11 +66,34 @@ class CncMacroProtocol(LanguageServerProtocol):
 
         super()._execute_handler(msg_id, handler, callback, args, kwargs)
 
-    def send_prepared(self, method: str, params: dict[str, Any]) -> None:
-        """Send a notification whose parameters are already in their JSON form (the
-        diagnostics of a large file, converted once per finding on the analysis thread rather
-        than all again on each publish)."""
-        self._send_data({"jsonrpc": JsonRPCProtocol.VERSION, "method": method, "params": params})
+    def send_diagnostics(self, uri: str, version: int | None, encoded: list[str]) -> None:
+        """Publish diagnostics already encoded as JSON text, one string per finding (encoded
+        once per finding on the analysis thread: a file with a thousand findings is not
+        encoded all again on each publish)."""
+        listed = ", ".join(encoded)
+        version_part = "" if version is None else f', "version": {version}'
+        params = f'{{"uri": {json.dumps(uri)}, "diagnostics": [{listed}]{version_part}}}'
+        method = json.dumps(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+        self._send_text(f'{{"jsonrpc": "{JsonRPCProtocol.VERSION}", "method": {method}, "params": {params}}}')
+
+    def _send_text(self, body: str) -> None:
+        """Send one message's JSON text, framed as pygls frames its own."""
+        if self.writer is None:
+            return
+        data = body.encode(self.CHARSET)
+        if self._include_headers:
+            header = f"Content-Length: {len(data)}\r\nContent-Type: {self.CONTENT_TYPE}; charset={self.CHARSET}\r\n\r\n"
+            data = header.encode("ascii") + data
+        try:
+            res = self.writer.write(data)
+            if inspect.isawaitable(res):  # a socket's writer
+                task = asyncio.ensure_future(res)
+                self._writing.add(task)
+                task.add_done_callback(self._writing.discard)
+        except BrokenPipeError:
+            raise
+        except Exception:
+            log.exception("sending a message failed")
 
     def to_json(self, value: Any) -> Any:
         """``value`` (a protocol type) in its JSON form, as this protocol sends it."""
