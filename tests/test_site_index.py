@@ -91,3 +91,36 @@ def test_deleting_a_jump_or_its_label_line_updates_the_jumps_to_the_label() -> N
     assert index.jumps_to(10) == [1, 2, 3] and index.jumps_to(20) == []
     _edited(doc, index, 1, 0, 2, 0, "")  # IF .. GOTO10
     assert index.jumps_to(10) == [1, 2] and index.jumps_to(10, 2) == [2]
+
+
+def test_an_index_made_in_steps_equals_a_fresh_one_across_edits_between_the_steps() -> None:
+    """A huge document's index is made a few lines at a time while the user types: edits above,
+    inside and below the part made so far all end in the index a fresh one has."""
+    lines = [*LINES, "#101=#102*2", "N20 M99 P10", "GOTO20", "#102=#100", "X1. Y2."]
+    rnd = random.Random(23)
+    doc = ParsedDocument("\n".join(rnd.choice(lines) for _ in range(400)))
+    index = SiteIndex(doc.blocks)
+    steps = 0
+    while not index.build(7):
+        steps += 1
+        n = len(doc.lines)
+        sl = rnd.randrange(n)
+        el = min(n - 1, sl + rnd.randrange(3))
+        text = "\n".join(rnd.choice(lines) for _ in range(rnd.randrange(3)))
+        doc.apply_change(sl, 0, el, len(doc.lines[el]), text)
+        index.replaced(doc.blocks, sl, el + 1, len(split_lines(text)))
+    assert steps > 20  # it was made in many steps, edited between them
+    assert _answers(index) == _answers(SiteIndex(doc.blocks))
+
+
+def test_a_huge_index_waits_for_its_steps_and_one_of_a_document_still_read_never_is_ready() -> None:
+    short = ParsedDocument("\n".join(LINES))
+    assert SiteIndex(short.blocks).ready  # made at the first question
+    huge = ParsedDocument("\n".join(LINES * 15_000))
+    index = SiteIndex(huge.blocks)
+    assert not index.ready
+    while not index.build(50_000):
+        pass
+    assert index.ready and _answers(index) == _answers(SiteIndex(huge.blocks))
+    reading = SiteIndex(short.blocks, partial=True)
+    assert not reading.ready and not reading.build(1_000_000)

@@ -126,6 +126,26 @@ async def test_a_huge_file_answers_hovers_and_keeps_edits_while_it_is_read(clien
     assert isinstance(reading[-1], types.WorkDoneProgressEnd)
 
 
+async def test_a_huge_file_says_where_a_variable_is_written_once_it_is_indexed_without_holding_the_editor(
+    client: LanguageClient,
+) -> None:
+    """Finding every write of #100 in a huge file takes seconds: meanwhile a hover answers at
+    once and says the places are still being found; once the file is indexed (in steps, between
+    the editor's messages) the same hover lists them, the one far down too."""
+    text = huge_program().split("\n")
+    text[80_000] = "#100=2"
+    uri = open_file(client, FANUC / "huge_where.nc", "\n".join(text), version=1)
+    early = await hover_text(client, uri, 1, 1)  # while the file is read
+    assert "#100" in early and "huge_where.nc" in early.partition("still being found in")[2]
+    await analysed(client, uri, 1)
+    for _ in range(3000):
+        later = await hover_text(client, uri, 1, 1)
+        if "still being found" not in later:
+            break
+        await asyncio.sleep(0.01)
+    assert "huge_where.nc:2" in later and "huge_where.nc:80001" in later
+
+
 @pytest_lsp.fixture(config=config(), scope="module")
 async def big_folder(lsp_client: LanguageClient, tmp_path_factory: pytest.TempPathFactory):  # type: ignore[no-untyped-def]
     root = tmp_path_factory.mktemp("cam_folder")

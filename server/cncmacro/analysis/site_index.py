@@ -9,7 +9,9 @@ write it and that mention it, and from a label number to the lines that jump to 
 re-examines the lines it replaced and shifts the others. So the answer to a question costs time
 in proportion to the answer, not to the file, and an edit in proportion to the macro lines at
 most. Files on disk get one index each, made at the first question and kept by the workspace
-index (``workspace_index.py``) until it loads the file again.
+index (``workspace_index.py``) until it loads the file again. The index of a huge document
+(``STEPPED_FROM`` lines) is not made at a question on the editor's thread, which would hold the
+editor up for seconds: it is made in steps (``build``), and until then ``ready`` says so.
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ from .block_memo import NO_SITES, BlockMemo, Sites
 from .sites import VariableSite
 
 Lines = dict[int, list[int]]  # a label or variable number -> its sorted lines
+STEPPED_FROM = 100_000  # lines: the index of a document this long is made in steps (``SiteIndex.build``)
 
 
 class _Maps:
@@ -74,46 +77,81 @@ class SiteIndex:
     them the first time one is asked for. ``local_call`` is the document's dialect's local
     subprogram call code (Haas ``M97``), whose P is a jump to a label."""
 
-    def __init__(self, blocks: list[Block], local_call: float | None = None, memo: BlockMemo | None = None) -> None:
+    def __init__(
+        self, blocks: list[Block], local_call: float | None = None, memo: BlockMemo | None = None, partial: bool = False
+    ) -> None:
+        """``partial``: ``blocks`` are those of a document still being read (not ``ready``)."""
         self._blocks = blocks
+        self.partial = partial
         self.local_call = local_call
         self.memo = memo if memo is not None else BlockMemo()
         self._lines: list[int] | None = None
         self._sites: list[Sites] = []  # the sites of each of ``_lines``, as they were indexed
         self._maps: _Maps | None = None
+        # made in steps (``build``): the lines, sites and maps of the blocks before ``_next``
+        self._part: tuple[list[int], list[Sites], _Maps | None] = ([], [], None)
+        self._next = 0
+
+    @property
+    def ready(self) -> bool:
+        """Whether a question is answered at once: the index is made, or the document is short
+        enough (under ``STEPPED_FROM`` lines) to make it now."""
+        return not self.partial and (self._lines is not None or len(self._blocks) < STEPPED_FROM)
+
+    def build(self, count: int) -> bool:
+        """One step of making the index: the next ``count`` lines (the maps too); True once it
+        is made. A huge document's index is made so, between the editor's other messages."""
+        if self._lines is None and not self.partial:
+            if self._next == 0 and self._part[2] is None:
+                self._part = ([], [], _Maps())
+            self._scan_to(min(len(self._blocks), self._next + count))
+        return self._lines is not None
 
     @property
     def lines(self) -> list[int]:
         if self._lines is None:
-            lines: list[int] = []
-            sites: list[Sites] = []
-            block_sites = self.memo.sites
-            local = self.local_call
-            for i, b in enumerate(self._blocks):
-                p = b.plain  # most lines of a CAM file: passed over here, without a call
-                if p is not None and "M9" not in p and "m9" not in p and "H8" not in p and "h8" not in p:
-                    if local is None or ("M" not in p and "m" not in p):
-                        continue
-                s = block_sites(b, local)
-                if s[0] or s[1]:
-                    lines.append(i)
-                    sites.append(s)
-            self._lines, self._sites = lines, sites
+            self._scan_to(len(self._blocks))
+        assert self._lines is not None
         return self._lines
 
     @property
     def maps(self) -> _Maps:
+        lines = self.lines  # made in full first: the maps too, when steps had begun them
         if self._maps is None:
             maps = _Maps()
-            for line, sites in zip(self.lines, self._sites, strict=True):
+            for line, sites in zip(lines, self._sites, strict=True):
                 maps.add(line, sites, at_end=True)
             self._maps = maps
         return self._maps
+
+    def _scan_to(self, stop: int) -> None:
+        """Index the blocks from ``_next`` to ``stop``; the index is made once they all are."""
+        lines, sites, maps = self._part
+        block_sites = self.memo.sites
+        local = self.local_call
+        blocks = self._blocks
+        for i in range(self._next, stop):
+            b = blocks[i]
+            p = b.plain  # most lines of a CAM file: passed over here, without a call
+            if p is not None and "M9" not in p and "m9" not in p and "H8" not in p and "h8" not in p:
+                if local is None or ("M" not in p and "m" not in p):
+                    continue
+            s = block_sites(b, local)
+            if s[0] or s[1]:
+                lines.append(i)
+                sites.append(s)
+                if maps is not None:
+                    maps.add(i, s, at_end=True)
+        self._next = stop
+        if stop >= len(blocks):
+            self._lines, self._sites, self._maps = lines, sites, maps
+            self._part = ([], [], None)
 
     def replaced(self, blocks: list[Block], start: int, old_end: int, new_count: int) -> None:
         """Lines ``start``..``old_end`` (exclusive) became ``new_count`` lines (now in ``blocks``)."""
         self._blocks = blocks
         if self._lines is None:
+            self._forget_from(start)
             return
         lines = self._lines
         lo = bisect_left(lines, start)
@@ -138,6 +176,19 @@ class SiteIndex:
             lines[hi:] = [x + delta for x in lines[hi:]]
         lines[lo:hi] = fresh_lines
         self._sites[lo:hi] = fresh_sites
+
+    def _forget_from(self, start: int) -> None:
+        """An edit at ``start`` while the index is made in steps: the lines from there on are
+        looked at again."""
+        if start >= self._next:
+            return
+        lines, sites, maps = self._part
+        k = bisect_left(lines, start)
+        if maps is not None:
+            for line, s in zip(lines[k:], sites[k:], strict=True):
+                maps.remove(line, s)
+        del lines[k:], sites[k:]
+        self._next = start
 
     def between(self, start: int, end: int) -> list[int]:
         """The indexed lines in ``start``..``end`` (exclusive)."""

@@ -54,6 +54,7 @@ from .collector import QUIET_SECONDS, Collector
 from .cycle_lenses import refresh_code_lenses
 from .disk_watch import DiskStamps
 from .documents import Edit, OpenDocument, uri_to_path
+from .editor_steps import between_steps, one_step
 from .protocol_diagnostics import to_lsp
 from .settings import Settings, merged_severities, valid_severities
 
@@ -72,8 +73,7 @@ BURST_SECONDS = 0.05
 PROGRESS_LINES = 20_000  # a first analysis of a file this long reports progress
 PROGRESS_SECONDS = 0.25  # how often it reports
 FIRST_SCREEN_FROM = 100_000  # a file this long shows its first screen's findings before it is parsed in full
-READ_STEP_LINES = 5_000  # and is parsed in steps of this many lines, the editor answered between them
-YIELDS = 8  # turns of the event loop given to the editor's messages between two steps
+READ_PIECE_LINES = 250  # and is parsed in steps (``editor_steps.py``) of pieces of this many lines
 PROVISIONAL_LINES = 1_000  # edited lines (besides the first screen) whose findings show before its first analysis
 DISK_CHECK_SECONDS = 2.0  # between looks at the files the analysis read, while documents are open
 
@@ -270,7 +270,7 @@ class DiagnosticsEngine:
         """The steps of ``_read``, until the document is read or closed."""
         parsed = doc.parsed
         shown = -1  # the percentage last reported
-        while not parsed.parse_more(READ_STEP_LINES):
+        while not one_step(lambda: parsed.parse_more(READ_PIECE_LINES)):
             if doc.uri not in self._loading:
                 return  # closed meanwhile
             if doc.uri not in self._first_shown and self.server.settings_ready.is_set():  # opened before them
@@ -283,8 +283,7 @@ class DiagnosticsEngine:
                 self.server.work_done_progress.report(
                     token, types.WorkDoneProgressReport(message=message, percentage=done)
                 )
-            for _ in range(YIELDS):  # a message takes a few turns of the loop to reach its handler
-                await asyncio.sleep(0)
+            await between_steps()
 
     def _ready(self) -> list[OpenDocument]:
         """The open documents, but those still being read (``_read``)."""

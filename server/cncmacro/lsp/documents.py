@@ -134,7 +134,7 @@ class Documents:
             item.version,
             parsed,
             dialect,
-            SiteIndex(parsed.blocks, dialect.local_subprogram_code, self.block_memo),
+            SiteIndex(parsed.blocks, dialect.local_subprogram_code, self.block_memo, parsed.partial),
             machine_file,
         )
         self.by_uri[item.uri] = doc
@@ -180,7 +180,8 @@ class Documents:
             if isinstance(change, types.TextDocumentContentChangePartial) and not doc.parsed.partial:
                 doc.sites.replaced(doc.parsed.blocks, edit[0], edit[2] + 1, len(split_lines(change.text)))
             else:
-                doc.sites = SiteIndex(doc.parsed.blocks, doc.dialect.local_subprogram_code, self.block_memo)
+                local = doc.dialect.local_subprogram_code
+                doc.sites = SiteIndex(doc.parsed.blocks, local, self.block_memo, doc.parsed.partial)
         doc.version = params.text_document.version
         if header_touched:
             self._set_dialect(doc)
@@ -191,7 +192,7 @@ class Documents:
         doc.dialect = self.dialect_for(doc.parsed.lines, doc.path)
         local = doc.dialect.local_subprogram_code
         if doc.sites.local_call != local:
-            doc.sites = SiteIndex(doc.parsed.blocks, local, self.block_memo)
+            doc.sites = SiteIndex(doc.parsed.blocks, local, self.block_memo, doc.parsed.partial)
 
     def close(self, uri: str) -> OpenDocument | None:
         return self.by_uri.pop(uri, None)

@@ -31,6 +31,7 @@ from ..syntax.walk import nodes_at
 from .cursor import Cursor, cursor_at
 from .cycle_lenses import elapsed_text
 from .program_docs import doc_lines
+from .site_steps import index_soon
 from .texts import t
 
 if TYPE_CHECKING:
@@ -132,9 +133,13 @@ def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
         else:
             lines.append(t("no_argument", loc))
     elif kind in (describe.COMMON, describe.PERSISTENT):
-        places = write_places(ls, number)
+        places, pending = write_places(ls, number)
         shown = [f"{Path(path).name}:{line + 1}" for path, line in places[:MAX_PLACES]]
-        lines += _places(t("written_at", loc), shown, len(places), t("not_written", loc), loc)
+        if places or not pending:
+            lines += _places(t("written_at", loc), shown, len(places), t("not_written", loc), loc)
+        if pending:
+            names = ", ".join(Path(path).name for path in pending)
+            lines += ["", f"{t('written_at', loc)}: {t('being_found', loc).format(files=names)}"]
     return "\n".join(lines)
 
 
@@ -188,10 +193,19 @@ def _places(heading: str, entries: list[str], total: int, none: str, loc: str) -
     return ["", f"{heading}:", *_bulleted(entries, loc, total)]
 
 
-def write_places(ls: CncMacroServer, number: int) -> list[tuple[str, int]]:
+def write_places(ls: CncMacroServer, number: int) -> tuple[list[tuple[str, int]], list[str]]:
     """Every (file, line) in the workspace that assigns ``#number`` (from each file's map of
-    the lines that write each variable)."""
-    return [(f.path, i) for f in ls.index.file_sites() for i in f.sites.writes(number)]
+    the lines that write each variable), and the files whose map is not made yet (a huge file
+    being read, or indexed in steps: ``site_steps.py``)."""
+    places: list[tuple[str, int]] = []
+    pending: list[str] = []
+    for f in ls.index.file_sites():
+        if not f.sites.ready:
+            index_soon(f.sites)
+            pending.append(f.path)
+            continue
+        places += [(f.path, i) for i in f.sites.writes(number)]
+    return places, pending
 
 
 # ---------------------------------------------------------------- labels and programs

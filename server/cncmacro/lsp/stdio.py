@@ -95,42 +95,56 @@ def _shown(value: Any) -> Any:
     return value
 
 
-async def _read_messages(server: CncMacroServer, reader: StdinAsyncReader, stop: threading.Event) -> None:
-    def line_of_at_most(n: int) -> Any:
-        return reader.loop.run_in_executor(reader.executor, reader.stdin.readline, n)
+_CLOSED = ("closed", None, None)  # the client closed the stream
 
+
+def _read_one(stdin: BinaryIO, carried: int | None) -> tuple[str, Any, int | None]:
+    """On the reading thread: the next message, whole, in one call (so a message waits for one
+    turn of a busy event loop, not one per header line): ``("body", bytes, None)``,
+    ``("too long", length, carried)`` for a body over ``MAX_BODY`` read past (``carried``: the
+    length in a header met on the way, where reading goes on), or ``_CLOSED``. ``carried``
+    is such a length from the call before."""
+    length = carried
+    while True:  # the headers, up to the empty line
+        line = stdin.readline(_PIECE)
+        if not line:
+            return _CLOSED
+        m = _CONTENT_LENGTH.search(line)
+        if m is not None:
+            length = int(m.group(1))
+        elif not line.strip() and length is not None:
+            break
+    if length > MAX_BODY:
+        # Read past it a line (at most a piece) at a time; a header on the way (the length
+        # was wrong, and the next message follows) is where reading goes on.
+        left = length
+        while left > 0:
+            piece = stdin.readline(min(left, _PIECE))
+            if not piece:
+                return _CLOSED
+            left -= len(piece)
+            m = _CONTENT_LENGTH.search(piece)
+            if m is not None:
+                return ("too long", length, int(m.group(1)))
+        return ("too long", length, None)
+    body = stdin.read(length)
+    if len(body) < length:
+        return _CLOSED
+    return ("body", body, None)
+
+
+async def _read_messages(server: CncMacroServer, reader: StdinAsyncReader, stop: threading.Event) -> None:
+    loop = asyncio.get_running_loop()
     carried: int | None = None  # a header found while reading past a body that was too long
     while not stop.is_set():
-        length, carried = carried, None
-        while True:  # the headers, up to the empty line
-            line = await line_of_at_most(_PIECE)
-            if not line:
-                return  # the client closed the stream
-            m = _CONTENT_LENGTH.search(line)
-            if m is not None:
-                length = int(m.group(1))
-            elif not line.strip() and length is not None:
-                break
-        if length > MAX_BODY:
-            # Read past it a line (at most a piece) at a time; a header on the way (the length
-            # was wrong, and the next message follows) is where reading goes on.
-            left = length
-            while left > 0:
-                piece = await line_of_at_most(min(left, _PIECE))
-                if not piece:
-                    return
-                left -= len(piece)
-                m = _CONTENT_LENGTH.search(piece)
-                if m is not None:
-                    carried = int(m.group(1))
-                    break
-            _answer_error(server, None, INVALID_REQUEST, f"message of {length} bytes is too long (at most {MAX_BODY})")
-            continue
-        body = await reader.readexactly(length)
-        if len(body) < length:
+        kind, got, carried = await loop.run_in_executor(reader.executor, _read_one, reader.stdin, carried)
+        if kind == "closed":
             return
+        if kind == "too long":
+            _answer_error(server, None, INVALID_REQUEST, f"message of {got} bytes is too long (at most {MAX_BODY})")
+            continue
         try:
-            data = json.loads(body)
+            data = json.loads(got)
         except ValueError as e:  # not JSON (or not UTF-8)
             _answer_error(server, None, PARSE_ERROR, f"not a JSON message: {e}")
             continue

@@ -26,6 +26,10 @@ _TEXTS: dict[str, tuple[str, str]] = {
     "no_argument": ("no argument fills it; set it in the macro", "没有自变量对其赋值，需在宏程序中赋值"),
     "written_at": ("written at", "赋值位置"),
     "not_written": ("not written in the workspace", "工作区内没有对其赋值"),
+    "being_found": (
+        "still being found in {files} (a long file, being read or indexed); hover again in a moment",
+        "仍在 {files} 中查找（长文件，正在读取或建立索引），请稍后再次悬停",
+    ),
     "label": ("Sequence number", "顺序号"),
     "jumps": ("jumps to it", "跳转到此处"),
     "no_jumps": ("no jump names it", "没有跳转指向此处"),

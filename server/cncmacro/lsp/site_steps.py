@@ -1,0 +1,39 @@
+"""The site index of a huge document (``analysis/site_index.py``), made in steps on the editor's
+thread when a question first needs it.
+
+Made at once, the index of a million-line file takes seconds, and the editor's messages would
+wait that long. So a question that finds an index not ``ready`` answers with what it has and
+says the rest is being found, and the index is made here a step at a time (``editor_steps.py``),
+the editor's messages answered between the steps, as a huge file is read (``diagnostics.py``).
+"""
+
+from __future__ import annotations
+
+import asyncio
+import weakref
+
+from ..analysis.site_index import SiteIndex
+from .editor_steps import between_steps, one_step
+
+INDEX_PIECE_LINES = 200  # lines looked at between two looks at the clock (``editor_steps.py``)
+
+_building: weakref.WeakSet[SiteIndex] = weakref.WeakSet()
+_tasks: set[asyncio.Task[None]] = set()
+
+
+def index_soon(sites: SiteIndex) -> None:
+    """Begin making ``sites`` in steps, unless it is ready or being made."""
+    if sites.ready or sites.partial or sites in _building:
+        return
+    _building.add(sites)
+    task = asyncio.ensure_future(_steps(sites))
+    _tasks.add(task)
+    task.add_done_callback(_tasks.discard)
+
+
+async def _steps(sites: SiteIndex) -> None:
+    try:
+        while not one_step(lambda: sites.build(INDEX_PIECE_LINES)):
+            await between_steps()
+    finally:
+        _building.discard(sites)
