@@ -150,38 +150,44 @@ class SiteIndex:
     def replaced(self, blocks: list[Block], start: int, old_end: int, new_count: int) -> None:
         """Lines ``start``..``old_end`` (exclusive) became ``new_count`` lines (now in ``blocks``)."""
         self._blocks = blocks
-        if self._lines is None:
+        if self._lines is not None:
+            self._splice(self._lines, self._sites, self._maps, start, old_end, new_count)
+        elif old_end <= self._next:  # made in steps, the edit within the part made so far
+            lines, sites, maps = self._part
+            self._splice(lines, sites, maps, start, old_end, new_count)
+            self._next += new_count - (old_end - start)
+        elif start < self._next:  # across where the steps are: looked at again from the edit on
             self._forget_from(start)
-            return
-        lines = self._lines
+
+    def _splice(
+        self, lines: list[int], sites: list[Sites], maps: _Maps | None, start: int, old_end: int, new_count: int
+    ) -> None:
+        """The edit of ``replaced`` in ``lines``, their ``sites`` and ``maps``."""
         lo = bisect_left(lines, start)
         hi = bisect_left(lines, old_end)
         delta = new_count - (old_end - start)
         fresh_lines: list[int] = []
         fresh_sites: list[Sites] = []
         for k in range(new_count):
-            s = self.memo.sites(blocks[start + k], self.local_call)
+            s = self.memo.sites(self._blocks[start + k], self.local_call)
             if s[0] or s[1]:
                 fresh_lines.append(start + k)
                 fresh_sites.append(s)
-        maps = self._maps
         if maps is not None:
-            for line, sites in zip(lines[lo:hi], self._sites[lo:hi], strict=True):
-                maps.remove(line, sites)
+            for line, old in zip(lines[lo:hi], sites[lo:hi], strict=True):
+                maps.remove(line, old)
             if delta:
                 maps.shift(old_end, delta)
-            for line, sites in zip(fresh_lines, fresh_sites, strict=True):
-                maps.add(line, sites)
+            for line, new in zip(fresh_lines, fresh_sites, strict=True):
+                maps.add(line, new)
         if delta:
             lines[hi:] = [x + delta for x in lines[hi:]]
         lines[lo:hi] = fresh_lines
-        self._sites[lo:hi] = fresh_sites
+        sites[lo:hi] = fresh_sites
 
     def _forget_from(self, start: int) -> None:
-        """An edit at ``start`` while the index is made in steps: the lines from there on are
-        looked at again."""
-        if start >= self._next:
-            return
+        """An edit across ``_next`` while the index is made in steps: the lines from ``start``
+        on are looked at again."""
         lines, sites, maps = self._part
         k = bisect_left(lines, start)
         if maps is not None:

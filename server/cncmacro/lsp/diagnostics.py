@@ -57,6 +57,7 @@ from .documents import Edit, OpenDocument, uri_to_path
 from .editor_steps import between_steps, one_step
 from .protocol_diagnostics import to_lsp
 from .settings import Settings, merged_severities, valid_severities
+from .site_steps import index_soon
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -591,6 +592,8 @@ class DiagnosticsEngine:
                 self._values[uri] = (version, outcome.values.get(uri, {}))
                 self._timing[uri] = (version, outcome.timing.get(uri))
             self._analysed_once.add(uri)
+            if doc is not None:
+                index_soon(doc.sites)  # a huge document's variable index, in steps, before a hover asks
             self._touched.pop(uri, None)
             self._first_screens.pop(uri, None)
             diags = outcome.found[uri]

@@ -1,5 +1,5 @@
 """The site index of a huge document (``analysis/site_index.py``), made in steps on the editor's
-thread when a question first needs it.
+thread once its first analysis is published, or when a question needs it sooner.
 
 Made at once, the index of a million-line file takes seconds, and the editor's messages would
 wait that long. So a question that finds an index not ``ready`` answers with what it has and
