@@ -61,7 +61,8 @@ class CncMacroProtocol(LanguageServerProtocol):
             report = callback
 
             def callback(future: Any) -> None:
-                self._request_futures.pop(msg_id, None)
+                if not future.cancelled():  # cancelled by ``shutdown``, while it walks the futures
+                    self._request_futures.pop(msg_id, None)
                 report(future)
 
         super()._execute_handler(msg_id, handler, callback, args, kwargs)
