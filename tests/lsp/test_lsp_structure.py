@@ -233,3 +233,31 @@ async def test_semantic_tokens_of_a_long_file_are_those_of_its_lines_while_other
     assert full is not None and whole is not None
     assert len(full.data) == 5 * 2 * 15_000 + 5 and full.data == whole.data  # two variables a macro line
     close_file(fanuc_en, uri)
+
+
+async def test_semantic_tokens_delta_of_a_long_file_edited_in_the_middle_is_the_one_change(
+    fanuc_en: LanguageClient,
+) -> None:
+    """Tens of thousands of tokens, one variable retyped in the middle: the delta is one edit of
+    that token, and applied to the old answer it gives the new one."""
+    lines = ["O0610"]
+    for i in range(30_000):
+        lines.append(f"#{100 + i % 50}=#{101 + i % 7}+1" if i % 3 == 0 else f"G01 X{i % 90}. Y{i % 13}.")
+    uri = open_file(fanuc_en, FANUC / "long_delta.nc", "\n".join([*lines, "M30"]))
+    doc = types.TextDocumentIdentifier(uri)
+    first = await fanuc_en.text_document_semantic_tokens_full_async(types.SemanticTokensParams(doc))
+    assert first is not None and first.result_id
+    middle = 15_004  # "#103=#101+1", a macro line: #103 becomes #1, a local variable
+    assert lines[middle].startswith("#103=")
+    edit(fanuc_en, uri, 2, middle, 1, 4, "1")
+    delta = await fanuc_en.text_document_semantic_tokens_full_delta_async(
+        types.SemanticTokensDeltaParams(doc, previous_result_id=first.result_id)
+    )
+    fresh = await fanuc_en.text_document_semantic_tokens_full_async(types.SemanticTokensParams(doc))
+    close_file(fanuc_en, uri)
+    assert isinstance(delta, types.SemanticTokensDelta) and len(delta.edits) == 1
+    e = delta.edits[0]
+    assert e.delete_count <= 5 and 0 < e.start < len(first.data) - 5  # the one token, far from either end
+    data = list(first.data)
+    data[e.start : e.start + e.delete_count] = list(e.data or [])
+    assert fresh is not None and data == list(fresh.data) and data != list(first.data)

@@ -15,15 +15,16 @@ Tokens are found per line by a small scanner that also works on lines that do no
 the label and program spans taken from the parsed block; a line's tokens are cached by its
 text, so after an edit only new lines are scanned. ``full``, ``full/delta`` (one edit: what changed
 between the common start and end of the previous answer and this one) and ``range`` requests
-are served; a whole document is encoded ``STEP_LINES`` lines at a time, the other requests
-answered between the steps.
+are served; a whole document is encoded in steps of a few milliseconds (``editor_steps.py``),
+the other requests answered between the steps. A line of address words only (``Block.plain``:
+most of a CAM file) has no token and is passed over without a look at its text.
 """
 
 from __future__ import annotations
 
-import asyncio
 import itertools
 import re
+import time
 from functools import cache
 from typing import TYPE_CHECKING
 
@@ -34,9 +35,10 @@ from ..dialects.dialect import Dialect
 from ..syntax.block_parser import MAX_BLOCK_CHARS
 from ..syntax.nodes import Block
 from .documents import OpenDocument
+from .editor_steps import STEP_SECONDS, between_steps
 from .positions import Encoding
 
-STEP_LINES = 20_000  # lines of a whole document's tokens encoded between answers to other requests
+PIECE_LINES = 500  # lines of a whole document's tokens encoded between two looks at the clock
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -73,6 +75,13 @@ def _name_kinds(dialect_name: str) -> dict[str, str]:
         else:
             out.setdefault(f.name, "keyword")
     return out
+
+
+@cache
+def _letter_names(dialect_name: str) -> bool:
+    """Whether a name of the dialect's table is one letter, which a line of address words
+    (``Block.plain``) could hold."""
+    return any(len(name) == 1 for name in _name_kinds(dialect_name))
 
 
 def line_tokens(text: str, block: Block, dialect: Dialect) -> list[Token]:
@@ -141,12 +150,17 @@ def encode(doc: OpenDocument, first: int, last: int, encoding: Encoding) -> list
     prev_start = 0
     lines = doc.parsed.lines
     block_at = doc.parsed.block_at  # a line of a huge file not parsed yet is parsed on its own
+    dialect = doc.dialect
+    pass_plain = not _letter_names(dialect.name)
     for i in range(max(first, 0), min(last, len(lines) - 1) + 1):
         text = lines[i]
         if not text or len(text) > MAX_BLOCK_CHARS:
             continue  # a line too long to be a block is not read, so not coloured either
+        block = block_at(i)
+        if block.plain is not None and pass_plain:
+            continue  # address words only (most of a CAM file): nothing the grammar does not colour
         plain = encoding.plain(text)  # looked at once per line, not once per token
-        for s, e, typ, mods in _cache.get(text, block_at(i), doc.dialect):
+        for s, e, typ, mods in _cache.get(text, block, dialect):
             if plain:
                 cs, length = s, e - s
             else:
@@ -161,25 +175,28 @@ def encode(doc: OpenDocument, first: int, last: int, encoding: Encoding) -> list
 
 
 async def encode_document(doc: OpenDocument, encoding: Encoding) -> list[int]:
-    """The tokens of the whole of ``doc``, encoded a step of ``STEP_LINES`` lines at a time, the
-    editor's other requests answered between the steps (a CAM file of a million lines takes
-    seconds); an edit meanwhile starts the encoding again, a few times at most."""
+    """The tokens of the whole of ``doc``, encoded ``PIECE_LINES`` lines at a time in steps
+    (``editor_steps.py``), the editor's other requests answered between the steps (a CAM file of
+    a million lines takes a good part of a second); an edit meanwhile starts the encoding again,
+    a few times at most."""
     for _ in range(3):
         version = doc.version
         data: list[int] = []
         last_line = 0  # the line of the last token so far
         count = len(doc.lines)
-        for first in range(0, count, STEP_LINES):
-            part = encode(doc, first, min(first + STEP_LINES, count) - 1, encoding)
+        end = time.perf_counter() + STEP_SECONDS
+        for first in range(0, count, PIECE_LINES):
+            part = encode(doc, first, min(first + PIECE_LINES, count) - 1, encoding)
             if part:  # its first token's line counts from line 0: make it count from the last token
                 line = part[0]
                 part[0] = line - last_line
                 last_line = line + sum(part[5::5])
                 data += part
-            if count > STEP_LINES:
-                await asyncio.sleep(0)
-            if doc.version != version:
-                break
+            if time.perf_counter() >= end:
+                await between_steps()
+                end = time.perf_counter() + STEP_SECONDS
+                if doc.version != version:
+                    break
         else:
             return data
     return data
@@ -232,12 +249,20 @@ def _remember(uri: str, data: list[int]) -> str:
 def delta_edits(old: list[int], new: list[int]) -> list[types.SemanticTokensEdit]:
     """One edit turning ``old`` into ``new``: what lies between their common start and end."""
     n = min(len(old), len(new))
-    p = 0
-    while p < n and old[p] == new[p]:
-        p += 1
-    q = 0
-    while q < n - p and old[len(old) - 1 - q] == new[len(new) - 1 - q]:
-        q += 1
+    p = _common_start(old, new, n)
+    q = _common_start(old[::-1], new[::-1], n - p)
     if p == len(old) == len(new):
         return []
     return [types.SemanticTokensEdit(start=p, delete_count=len(old) - p - q, data=new[p : len(new) - q])]
+
+
+def _common_start(a: list[int], b: list[int], n: int) -> int:
+    """How many of the first ``n`` items ``a`` and ``b`` share: compared a slice at a time, then
+    one at a time in the slice that differs (a million-line file's tokens are millions of ints)."""
+    p = 0
+    step = 4096
+    while step:
+        while p + step <= n and a[p : p + step] == b[p : p + step]:
+            p += step
+        step //= 8
+    return p
