@@ -30,6 +30,21 @@ async def test_document_symbols_nest_labels_inside_loops(fanuc_en: LanguageClien
     assert result[0].detail == "MAIN"
 
 
+async def test_document_symbols_of_a_generated_file_with_thousands_of_loops_leave_the_loops_out(
+    fanuc_en: LanguageClient,
+) -> None:
+    """A CAM-generated file with 6,000 loops: its outline names its programs (and its few labels),
+    not 6,000 loops no one could read, and it comes at once."""
+    loop = ["#1=0", "WHILE[#1 LT 2] DO1", "G01 X1. Y1.", "#1=#1+1", "END1"]
+    text = "\n".join(["O0001 (CAM)", "N1 G00 X0", *loop * 6_000, "N2 M30", "O0002", "N5 M99"])
+    uri = open_file(fanuc_en, FANUC / "many_loops.nc", text)
+    result = await fanuc_en.text_document_document_symbol_async(
+        types.DocumentSymbolParams(types.TextDocumentIdentifier(uri))
+    )
+    close_file(fanuc_en, uri)
+    assert _tree(result) == [("O0001", 0, [("N1", 1, []), ("N2", 30_002, [])]), ("O0002", 30_003, [("N5", 30_004, [])])]
+
+
 async def test_workspace_symbols_are_the_programs(fanuc_en: LanguageClient, gsk_zh: LanguageClient) -> None:
     found = await fanuc_en.workspace_symbol_async(types.WorkspaceSymbolParams(query="drill"))
     assert [(s.name, s.location.uri.rsplit("/", 1)[-1]) for s in found] == [("O9100", "O9100.nc")]

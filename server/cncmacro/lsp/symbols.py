@@ -20,6 +20,7 @@ if TYPE_CHECKING:
     from .server import CncMacroServer
 
 MAX_LABELS = 5000  # a CAM file numbers every block; past this many, labels are left out
+MAX_LOOPS = 5000  # and a generated file may hold thousands of loops: past this many, they are left out too
 
 
 def register(server: CncMacroServer) -> None:
@@ -49,10 +50,11 @@ def register(server: CncMacroServer) -> None:
 
 def document_symbols(doc: OpenDocument, encoding: Encoding) -> list[types.DocumentSymbol]:
     program = doc.parsed.program
-    labels = sorted((line, n) for n, lines in program.labels.items() for line in lines)
-    if len(labels) > MAX_LABELS:
-        labels = []
-    loops = sorted(program.loops, key=lambda p: p.do_line)
+    labelled = sum(len(lines) for lines in program.labels.values())
+    labels = (
+        sorted((line, n) for n, lines in program.labels.items() for line in lines) if labelled <= MAX_LABELS else []
+    )
+    loops = sorted(program.loops, key=lambda p: p.do_line) if len(program.loops) <= MAX_LOOPS else []
     out: list[types.DocumentSymbol] = []
     units = program.named_units()
     for unit in units:
