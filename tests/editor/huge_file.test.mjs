@@ -1,11 +1,13 @@
 // Opening a 1,000,000-line CAM program in a real VS Code: the language server shows the findings
 // of the first screen at once, reads the file in steps and then analyses it, with its progress in
 // the status bar (a click there shows the analysis in the notification centre, with Cancel),
-// answers a hover far down the file meanwhile, and publishes every finding at the end. The
+// answers a hover far down the file meanwhile (the places a variable is written are still being
+// found then), publishes every finding at the end, and lists the places once the file is indexed. The
 // program is made at test time by the benchmarks' generator (benchmarks/camgen.py), with a syntax
 // error on line 6 and, on line 900,000, a jump to a label that is not there. Screenshots go to
 // test-output/editor/; the analysis's progress in the notification centre is also
-// docs/images/huge-file-opening.png when CNCMACRO_README_PICTURES is set (npm run screenshots).
+// docs/images/huge-file-opening.png, and the hover docs/images/huge-file-hover.png, when
+// CNCMACRO_README_PICTURES is set (npm run screenshots).
 // Run after npm run package: node --test --test-concurrency=1 tests/editor/huge_file.test.mjs
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
@@ -182,7 +184,7 @@ test('a hover far down the file, on line 500,026, names the variable and where i
   assert.match(await hover.innerText(), /written at:/);
   const far = page.locator('.markers-panel .monaco-list-row', { hasText: 'there is no N99991' });
   console.log(`the analysis ${(await far.isVisible()) ? 'had ended' : 'was still running'} when the hover showed`);
-  await shot('huge-2-hover-while-analysing');
+  await shot('huge-2-hover-while-analysing', 'huge-file-hover');
   // the status bar's progress is VS Code's silent notification of it: a click shows it in the
   // notification centre, with its bar and, for the analysis, a Cancel button
   await page.mouse.move(5, 500);
@@ -216,6 +218,21 @@ test('the jump to the missing label on line 900,000 is found at the end of the a
   await shot('huge-3-all-diagnostics');
   console.log(`progress texts seen: ${JSON.stringify([...progressSeen])}`);
   console.log(`problems: ${JSON.stringify(await page.locator('.markers-panel .monaco-list-row').allInnerTexts())}`);
+});
+
+test('once the file is indexed, the hover on #125 lists where it is written', { timeout: 3 * STEP }, async () => {
+  await page.mouse.move(5, 500);
+  await page.keyboard.press('Escape');
+  await page.keyboard.press('Control+G');
+  await page.keyboard.type('500026');
+  await page.keyboard.press('Enter');
+  await page.locator('.editor-instance .view-lines .view-line', { hasText: '#125=#108+36.42' }).waitFor();
+  const hover = await hoverAt('#125=#108+36.42', '#125', /huge\.nc:\d+/);
+  const text = await hover.innerText();
+  console.log(`hover once indexed: ${JSON.stringify(text)}`);
+  assert.match(text, /written at:/);
+  assert.doesNotMatch(text, /still being found/);
+  await shot('huge-4-hover-once-indexed');
 });
 
 test('the editor tried no host but this machine: no gallery, telemetry or update check', { timeout: STEP }, async () => {
