@@ -13,6 +13,7 @@ Values arrive already rounded to their address's increment.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from string import ascii_letters
 from typing import TYPE_CHECKING, Any, cast
 
 from ..bilingual import detail
@@ -47,6 +48,7 @@ PlainRun = tuple[_Words, _Words, _Axes, _Axes, _Words, str, int]
 _NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length"))
 _CANCEL_CYCLE = ("canned", 80.0)  # on a mill, G00-G03 cancel a drilling cycle (group 01 over group 09)
 _CENTRE_LETTERS = frozenset("RIJK")  # arc radius and centre: kept for a canned cycle's R level
+_G_WORDS_KEPT = 1000  # spellings of G words ``plain_g_word`` keeps
 
 
 class Motion:
@@ -93,6 +95,7 @@ class Motion:
         self._call_needs_distance = self.dialect.modal_call_needs_distance
         self._plain_kinds: dict[str, Any] | None = None
         self._plain_groups: dict[float, str] | None = None
+        self._plain_g_words: dict[str, tuple[str, float]] = {}
         self._arc_planes = arc_planes(self.axis_index)
         self._diameter = self.axis_index.get("X", -1) if self._lathe else -1
 
@@ -177,10 +180,27 @@ class Motion:
             }
         return groups
 
+    def plain_g_words(self) -> dict[str, tuple[str, float]]:
+        """G word as written (``G01``, ``g1``) -> its ``plain_g_groups`` group ("" for none)
+        and its value, for each one ``plain_g_word`` has read: a plain line's G word is
+        looked up, not read again (reading a number costs more than the rest of the word)."""
+        return self._plain_g_words
+
+    def plain_g_word(self, word: str) -> tuple[str, float]:
+        """Read G word ``word`` for ``plain_g_words``, and keep it there (while it holds fewer
+        than ``_G_WORDS_KEPT``: a program can spell one code many ways)."""
+        v = float(word[1:])
+        read = (self.plain_g_groups().get(v, ""), v)
+        if len(self._plain_g_words) < _G_WORDS_KEPT:
+            self._plain_g_words[word] = read
+        return read
+
     def plain_kinds(self) -> dict[str, Any]:
         """Letter (either case) -> axis index, ``-1 - index`` for an incremental letter, or
-        the letter itself for G, F, S and the arc words R, I, J, K. Empty in increment input
-        mode, where a value without a point counts least increments."""
+        the letter itself for G, F, S and the arc words R, I, J, K; every other ASCII letter
+        -> None (a ``Block.plain`` word starts with one, so looking its letter up never
+        misses). Empty in increment input mode, where a value without a point counts least
+        increments."""
         kinds = self._plain_kinds
         if kinds is not None:
             return kinds
@@ -193,6 +213,7 @@ class Motion:
             if axis in self.axis_index:
                 kinds[letter] = -1 - self.axis_index[axis]
         kinds.update({k.lower(): v for k, v in kinds.items()})
+        kinds = {**dict.fromkeys(ascii_letters), **kinds}
         self._plain_kinds = kinds
         return kinds
 

@@ -50,7 +50,7 @@ def run_straight(
     program = cf.file.program
     blocks = program.blocks
     n_blocks = len(blocks) if program.tape_end is None else program.tape_end  # nothing after the closing '%'
-    groups = m.plain_g_groups()
+    g_words = m.plain_g_words()
     lathe = m._lathe
     cycles = m._cycle_codes
     modal = m.modal
@@ -97,11 +97,9 @@ def run_straight(
         speed: float | None = None
         arc: dict[str, float] | None = None  # R, I, J, K
         for word in text.split():
-            kind = kinds.get(word[0])
-            if kind is None:
-                break
-            v = float(word[1:])
+            kind = kinds[word[0]]
             if kind.__class__ is int:
+                v = float(word[1:])
                 moved = True
                 if kind < 0:  # an incremental letter (U, V, W): added after the absolute ones
                     if inc is None:
@@ -113,8 +111,8 @@ def run_straight(
                 else:
                     target[kind] += v
             elif kind == "G":
-                group = groups.get(v)
-                if group is None:
+                group, v = g_words.get(word) or m.plain_g_word(word)
+                if not group:
                     break
                 if group == "motion":
                     new_mode = v
@@ -127,24 +125,27 @@ def run_straight(
                     others = [(group, v)]
                 else:
                     others.append((group, v))
+            elif kind is None:
+                break
             elif kind == "F":
-                feed = v
+                feed = float(word[1:])
             elif kind == "S":
-                if v % 1:
+                speed = float(word[1:])
+                if speed % 1:
                     break
-                speed = v
             elif arc is None:
-                arc = {kind: v}
+                arc = {kind: float(word[1:])}
             else:
-                arc[kind] = v
+                arc[kind] = float(word[1:])
         else:
             if arc is not None and not moved and (mode if new_mode is None else new_mode) in ARC_MODES:
                 break  # I, J, K alone are a full circle, R alone no move: the compiled path decides
             if new_mode is not None:
                 if moved and new_mode in cycles:
                     break  # a cycle decides this line: the compiled path runs it
-                mode = modal["motion"] = new_mode
-                if not lathe:
+                if new_mode != mode:
+                    mode = modal["motion"] = new_mode
+                if canned != 80.0 and not lathe:
                     canned = modal["canned"] = 80.0
             elif moved and (mode in cycles or (canned != 80.0 and not lathe)):
                 break
@@ -182,7 +183,7 @@ def run_straight(
                     else:
                         length = times.arc_length(mode, modal.get("plane", 17.0), start, end, centre)
                     rate = times.feed_rate(f, True, codes.get("S") or 0.0, css, start, end, unit) if per_rev else f
-                    seconds = length / rate * _SECONDS_PER_MINUTE if rate > 0 else 0.0
+                    seconds = length / rate * _SECONDS_PER_MINUTE if rate > 0.0 else 0.0
                     cut += length * unit
                 clock += seconds
                 if append is not None:
