@@ -78,8 +78,9 @@ class MoveTimes:
         return math.hypot(*((b - a) * k for a, b, k in zip(start, end, scale, strict=True)))
 
     def rapid_seconds(self, start: Sequence[float], end: Sequence[float], unit: float) -> float:
-        """Seconds a rapid takes: its slowest axis's (``unit`` is 25.4 under G20, else 1)."""
-        return max(map(mul, map(abs, map(sub, end, start)), self.rapid_seconds_per_mm), default=0.0) * unit
+        """Seconds a rapid takes: its slowest axis's (``unit`` is 25.4 under G20, else 1). A
+        machine has an axis at least, so ``max`` always has a value to take."""
+        return max(map(mul, map(abs, map(sub, end, start)), self.rapid_seconds_per_mm)) * unit
 
     def arc_length(
         self, mode: float, plane: float, start: Sequence[float], end: Sequence[float], centre: Sequence[float]

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 from .arcs import ARC_MODES
 from .cycle_time import INCH
 from .frames import Move
+from .motion import NOT_PLAIN, PLAIN_ARC_LETTERS, PLAIN_F, PLAIN_G, PLAIN_INCREMENTAL, PLAIN_S
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile
@@ -98,19 +99,13 @@ def run_straight(
         arc: dict[str, float] | None = None  # R, I, J, K
         for word in text.split():
             kind = kinds[word[0]]
-            if kind.__class__ is int:
-                v = float(word[1:])
+            if kind < PLAIN_INCREMENTAL:  # an axis
                 moved = True
-                if kind < 0:  # an incremental letter (U, V, W): added after the absolute ones
-                    if inc is None:
-                        inc = [(-1 - kind, v)]
-                    else:
-                        inc.append((-1 - kind, v))
-                elif line_absolute:
-                    target[kind] = v
+                if line_absolute:
+                    target[kind] = float(word[1:])
                 else:
-                    target[kind] += v
-            elif kind == "G":
+                    target[kind] += float(word[1:])
+            elif kind == PLAIN_G:
                 group, v = g_words.get(word) or m.plain_g_word(word)
                 if not group:
                     break
@@ -125,18 +120,24 @@ def run_straight(
                     others = [(group, v)]
                 else:
                     others.append((group, v))
-            elif kind is None:
-                break
-            elif kind == "F":
+            elif kind < PLAIN_G:  # an incremental letter (U, V, W): added after the absolute ones
+                moved = True
+                if inc is None:
+                    inc = [(kind - PLAIN_INCREMENTAL, float(word[1:]))]
+                else:
+                    inc.append((kind - PLAIN_INCREMENTAL, float(word[1:])))
+            elif kind == PLAIN_F:
                 feed = float(word[1:])
-            elif kind == "S":
+            elif kind == PLAIN_S:
                 speed = float(word[1:])
                 if speed % 1:
                     break
+            elif kind == NOT_PLAIN:
+                break
             elif arc is None:
-                arc = {kind: float(word[1:])}
+                arc = {PLAIN_ARC_LETTERS[kind]: float(word[1:])}
             else:
-                arc[kind] = float(word[1:])
+                arc[PLAIN_ARC_LETTERS[kind]] = float(word[1:])
         else:
             if arc is not None and not moved and (mode if new_mode is None else new_mode) in ARC_MODES:
                 break  # I, J, K alone are a full circle, R alone no move: the compiled path decides
