@@ -80,7 +80,8 @@ class MoveTimes:
     def rapid_seconds(self, start: Sequence[float], end: Sequence[float], unit: float) -> float:
         """Seconds a rapid takes: its slowest axis's (``unit`` is 25.4 under G20, else 1). A
         machine has an axis at least, so ``max`` always has a value to take."""
-        return max(map(mul, map(abs, map(sub, end, start)), self.rapid_seconds_per_mm)) * unit
+        slowest: float = max(map(mul, map(abs, map(sub, end, start)), self.rapid_seconds_per_mm))
+        return slowest * unit
 
     def arc_length(
         self, mode: float, plane: float, start: Sequence[float], end: Sequence[float], centre: Sequence[float]
