@@ -56,7 +56,6 @@ def run_straight(
     cycles = m._cycle_codes
     modal = m.modal
     codes = m.codes
-    pos = m.pos
     clock = m.clock
     cut = m.cut_length
     rapid = m.rapid_length
@@ -79,7 +78,10 @@ def run_straight(
     unit = INCH if modal.get("units") == 20.0 else 1.0
     css = modal.get("spindle") == 96.0
     f = codes.get("F") or 0.0
-    start = tuple(pos)
+    # where the tool is (after the last line run) and where the line being read sends it: one
+    # list, changed in place, that each line starts as ``start`` (a line declined is dropped)
+    start = tuple(m.pos)
+    target = list(start)
     done = 0
     while done < budget and pc < n_blocks:
         text = blocks[pc].plain
@@ -89,7 +91,6 @@ def run_straight(
                 continue
             break
         line_absolute = absolute
-        target = pos[:]
         moved = False
         inc: list[tuple[int, float]] | None = None
         others: list[tuple[str, float]] | None = None
@@ -172,7 +173,6 @@ def run_straight(
                     for i, v in inc:
                         target[i] += v
                 end = tuple(target)
-                pos = target
                 # the time and length of the move: ``Motion._record``'s rules, inline
                 centre = m.arc_centre(mode, start, end, arc) if arc is not None and mode in ARC_MODES else None
                 if mode == 0.0:
@@ -197,7 +197,8 @@ def run_straight(
     if done:  # stop on a line that does something, as ``CompiledFile.next_line`` does
         while pc < n_blocks and blocks[pc].plain is None and skipped(blocks[pc]):
             pc += 1
-    m.pos = pos
+    if done:
+        m.pos = list(start)
     m.clock = clock
     m.cut_length = cut
     m.rapid_length = rapid
