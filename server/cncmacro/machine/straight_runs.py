@@ -82,12 +82,18 @@ def run_straight(
     # list, changed in place, that each line starts as ``start`` (a line declined is dropped)
     start = tuple(m.pos)
     target = list(start)
-    done = 0
-    while done < budget and pc < n_blocks:
+    # the lines run are the lines passed but the blank and comment ones (``blanks``): the
+    # budget counts the lines run, so each of those moves ``stop`` on by one
+    first_pc = pc
+    blanks = 0
+    stop = min(n_blocks, pc + budget)
+    while pc < stop:
         text = blocks[pc].plain
         if text is None:
-            if done and skipped(blocks[pc]):  # a blank or comment line between two plain ones
+            if pc > first_pc and skipped(blocks[pc]):  # a blank or comment line between two plain ones
                 pc += 1
+                blanks += 1
+                stop = min(n_blocks, stop + 1)
                 continue
             break
         line_absolute = absolute
@@ -154,7 +160,7 @@ def run_straight(
             if trk is not None:
                 if trk[pc] < floor:
                     m.clock, m.cut_length, m.rapid_length = clock, cut, rapid  # what the observer reads
-                    first(path, pc, step + done)
+                    first(path, pc, step + pc - first_pc - blanks)
                 trk[pc] = serial
             if others is not None:
                 for group, g in others:
@@ -190,10 +196,10 @@ def run_straight(
                 if append is not None:
                     append(_new_move(Move, (path, pc, mode, start, end, f, centre, seconds)))
                 start = end
-            done += 1
             pc += 1
             continue
         break  # a word the general path must read
+    done = pc - first_pc - blanks
     if done:  # stop on a line that does something, as ``CompiledFile.next_line`` does
         while pc < n_blocks and blocks[pc].plain is None and skipped(blocks[pc]):
             pc += 1
