@@ -96,7 +96,6 @@ def run_straight(
                 stop = min(n_blocks, stop + 1)
                 continue
             break
-        line_absolute = absolute
         moved = False
         inc: list[tuple[int, float]] | None = None
         others: list[tuple[str, float]] | None = None
@@ -108,21 +107,21 @@ def run_straight(
             kind = kinds[word[0]]
             if kind < PLAIN_INCREMENTAL:  # an axis
                 moved = True
-                if line_absolute:
+                if absolute:
                     target[kind] = float(word[1:])
                 else:
                     target[kind] += float(word[1:])
             elif kind == PLAIN_G:
                 group, v = g_words.get(word) or m.plain_g_word(word)
-                if not group:
-                    break
                 if group == "motion":
                     new_mode = v
                     continue
+                if not group:
+                    break
                 if group == "distance":
                     if moved:  # G90/G91 after an axis word still governs it: the general path
                         break
-                    line_absolute = lathe or v == 90.0
+                    absolute = lathe or v == 90.0  # for the axis words after it (set again below)
                 if others is None:
                     others = [(group, v)]
                 else:
