@@ -214,8 +214,9 @@ class BlockCache:
         plain = _PLAIN_ASCII_LINE
         of_plain = Block.of_plain
         added = 0
+        short = max(map(len, lines), default=0) <= MAX_BLOCK_CHARS  # as good as always: no line to measure again
         for line in lines:
-            if len(line) <= MAX_BLOCK_CHARS and plain(line) is not None:
+            if (short or len(line) <= MAX_BLOCK_CHARS) and plain(line) is not None:
                 append(of_plain(line))  # as cheap as a lookup: not cached
                 continue
             b = blocks.get(line)
