@@ -330,7 +330,7 @@ class CompiledFile:
 
                 def if_goto(m: Machine, pc: int) -> int:
                     if test(m):
-                        return jump(m.frame, pc, target(m))
+                        return jump(m.frames[-1], pc, target(m))
                     return nxt
 
                 return if_goto
@@ -346,7 +346,7 @@ class CompiledFile:
         if isinstance(s, Goto):
             target = self.values.value(s.target)
             jump = self.jump
-            return lambda m, pc: jump(m.frame, pc, target(m))
+            return lambda m, pc: jump(m.frames[-1], pc, target(m))
         if isinstance(s, (While, Do)):
             return self.loop_head(s, pc, nxt)
         if isinstance(s, End):
@@ -431,7 +431,7 @@ class CompiledFile:
         test = self.values.condition(s.condition) if isinstance(s, While) else None
 
         def head(m: Machine, pc: int) -> int:
-            loops = m.frame.loops
+            loops = m.frames[-1].loops  # ``m.frame`` without the property's call
             if not loops or loops[-1] != pc:
                 if len(loops) >= MAX_LOOP_DEPTH:
                     raise MacroAlarm(
@@ -458,7 +458,7 @@ class CompiledFile:
             )
 
         def end(m: Machine, pc: int) -> int:
-            loops = m.frame.loops
+            loops = m.frames[-1].loops  # ``m.frame`` without the property's call
             if not loops or loops[-1] != do:
                 raise MacroAlarm(
                     LOOP_NUMBER,

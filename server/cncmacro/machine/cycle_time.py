@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from math import atan2, dist, hypot, sqrt
 from operator import mul, sub
 from typing import TYPE_CHECKING
 
@@ -64,9 +65,12 @@ class MoveTimes:
         self.rapid_seconds_per_mm = tuple(
             60.0 * (0.5 if i == diameter else 1.0) / max(timing.rapid_rate(a), 1e-9) for i, a in enumerate(axes)
         )
-        self.planes = {
-            code: (axes.index(a), axes.index(b)) for code, (a, b) in _PLANE_AXES.items() if a in axes and b in axes
-        }
+        # plane code -> its two axes (indexes) and how far the tool goes per unit of each
+        self.planes: dict[float, tuple[int, int, float, float]] = {}
+        for code, (a, b) in _PLANE_AXES.items():
+            if a in axes and b in axes:
+                i, j = axes.index(a), axes.index(b)
+                self.planes[code] = (i, j, 0.5 if i == diameter else 1.0, 0.5 if j == diameter else 1.0)
         self.tool_change_m = float(timing.tool_change_code[1:]) if timing.tool_change_code.startswith("M") else None
         self.tool_change_t = timing.tool_change_code == "T"
 
@@ -78,8 +82,10 @@ class MoveTimes:
         return math.hypot(*((b - a) * k for a, b, k in zip(start, end, scale, strict=True)))
 
     def rapid_seconds(self, start: Sequence[float], end: Sequence[float], unit: float) -> float:
-        """Seconds a rapid takes: its slowest axis's (``unit`` is 25.4 under G20, else 1)."""
-        return max(map(mul, map(abs, map(sub, end, start)), self.rapid_seconds_per_mm), default=0.0) * unit
+        """Seconds a rapid takes: its slowest axis's (``unit`` is 25.4 under G20, else 1). A
+        machine has an axis at least, so ``max`` always has a value to take."""
+        slowest: float = max(map(mul, map(abs, map(sub, end, start)), self.rapid_seconds_per_mm))
+        return slowest * unit
 
     def arc_length(
         self, mode: float, plane: float, start: Sequence[float], end: Sequence[float], centre: Sequence[float]
@@ -89,15 +95,13 @@ class MoveTimes:
         axes = self.planes.get(plane)
         if axes is None:
             return self.distance(start, end)
-        a, b = axes
-        ka = 0.5 if a == self.diameter else 1.0
-        kb = 0.5 if b == self.diameter else 1.0
+        a, b, ka, kb = axes
         sa, sb = (start[a] - centre[a]) * ka, (start[b] - centre[b]) * kb
         ea, eb = (end[a] - centre[a]) * ka, (end[b] - centre[b]) * kb
-        r = 0.5 * (math.hypot(sa, sb) + math.hypot(ea, eb))
+        r = 0.5 * (hypot(sa, sb) + hypot(ea, eb))
         if r == 0.0:
             return self.distance(start, end)
-        sweep = (math.atan2(eb, ea) - math.atan2(sb, sa)) % _TWO_PI  # counterclockwise
+        sweep = (atan2(eb, ea) - atan2(sb, sa)) % _TWO_PI  # counterclockwise
         if mode == 2.0:
             sweep = (_TWO_PI - sweep) % _TWO_PI
         if sweep == 0.0 and start[a] == end[a] and start[b] == end[b]:
@@ -105,8 +109,8 @@ class MoveTimes:
         arc = r * sweep
         # a helix: the move off the plane is the other side of a right triangle
         da, db = (end[a] - start[a]) * ka, (end[b] - start[b]) * kb
-        off = self.distance(start, end) ** 2 - da * da - db * db
-        return math.sqrt(arc * arc + off) if off > 1e-12 else arc
+        off = (dist(start, end) if self.scale is None else self.distance(start, end)) ** 2 - da * da - db * db
+        return sqrt(arc * arc + off) if off > 1e-12 else arc
 
     def feed_rate(self, feed: float, per_rev: bool, speed: float, css: bool,
                   start: Sequence[float], end: Sequence[float], unit: float) -> float:  # fmt: skip

@@ -13,7 +13,8 @@ Values arrive already rounded to their address's increment.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any, cast
+from string import ascii_letters
+from typing import TYPE_CHECKING, cast
 
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
@@ -47,6 +48,15 @@ PlainRun = tuple[_Words, _Words, _Axes, _Axes, _Words, str, int]
 _NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length"))
 _CANCEL_CYCLE = ("canned", 80.0)  # on a mill, G00-G03 cancel a drilling cycle (group 01 over group 09)
 _CENTRE_LETTERS = frozenset("RIJK")  # arc radius and centre: kept for a canned cycle's R level
+_G_WORDS_KEPT = 1000  # spellings of G words ``plain_g_word`` keeps
+# ``plain_kinds``'s codes: an absolute axis's is its index (below PLAIN_INCREMENTAL), so that
+# the common word, an axis, is told by one comparison; the others come after
+PLAIN_INCREMENTAL = 32  # plus the axis index: an incremental letter (U, V, W on a lathe)
+PLAIN_G = 64
+PLAIN_F = 65
+PLAIN_S = 66
+PLAIN_ARC_LETTERS = {67: "R", 68: "I", 69: "J", 70: "K"}  # the arc's radius and centre words
+NOT_PLAIN = 99  # a letter a plain motion line cannot hold
 
 
 class Motion:
@@ -91,8 +101,9 @@ class Motion:
         self._cycle_codes = self.dialect.cycle_codes
         self._lathe = self.dialect.lathe
         self._call_needs_distance = self.dialect.modal_call_needs_distance
-        self._plain_kinds: dict[str, Any] | None = None
+        self._plain_kinds: dict[str, int] | None = None
         self._plain_groups: dict[float, str] | None = None
+        self._plain_g_words: dict[str, tuple[str, float]] = {}
         self._arc_planes = arc_planes(self.axis_index)
         self._diameter = self.axis_index.get("X", -1) if self._lathe else -1
 
@@ -138,30 +149,29 @@ class Motion:
         extra: list[tuple[str, float]] = []
         groups = self.plain_g_groups()
         for word in text.split():
-            kind = kinds.get(word[0])
-            if kind is None:
+            kind = kinds[word[0]]
+            if kind == NOT_PLAIN:
                 return None
             v = float(word[1:])
-            if kind.__class__ is int:  # an axis, absolute (>= 0) or incremental (< 0)
-                if kind >= 0:
-                    axes.append((kind, v))
-                else:
-                    inc.append((-1 - kind, v))
-            elif kind == "G":
+            if kind < PLAIN_INCREMENTAL:
+                axes.append((kind, v))
+            elif kind < PLAIN_G:
+                inc.append((kind - PLAIN_INCREMENTAL, v))
+            elif kind == PLAIN_G:
                 group = groups.get(v)
                 if group is None:
                     return None
                 modal.append((group, v))
                 if group == "motion" and not self._lathe:
                     modal.append(_CANCEL_CYCLE)
-            elif kind == "F":
+            elif kind == PLAIN_F:
                 codes.append(("F", v))
-            elif kind == "S":
+            elif kind == PLAIN_S:
                 if v % 1:
                     return None
                 codes.append(("S", v))
             else:
-                extra.append((kind, v))
+                extra.append((PLAIN_ARC_LETTERS[kind], v))
         return tuple(modal), tuple(codes), tuple(axes), tuple(inc), tuple(extra)
 
     def plain_g_groups(self) -> dict[float, str]:
@@ -177,22 +187,42 @@ class Motion:
             }
         return groups
 
-    def plain_kinds(self) -> dict[str, Any]:
-        """Letter (either case) -> axis index, ``-1 - index`` for an incremental letter, or
-        the letter itself for G, F, S and the arc words R, I, J, K. Empty in increment input
-        mode, where a value without a point counts least increments."""
+    def plain_g_words(self) -> dict[str, tuple[str, float]]:
+        """G word as written (``G01``, ``g1``) -> its ``plain_g_groups`` group ("" for none)
+        and its value, for each one ``plain_g_word`` has read: a plain line's G word is
+        looked up, not read again (reading a number costs more than the rest of the word)."""
+        return self._plain_g_words
+
+    def plain_g_word(self, word: str) -> tuple[str, float]:
+        """Read G word ``word`` for ``plain_g_words``, and keep it there (while it holds fewer
+        than ``_G_WORDS_KEPT``: a program can spell one code many ways)."""
+        v = float(word[1:])
+        read = (self.plain_g_groups().get(v, ""), v)
+        if len(self._plain_g_words) < _G_WORDS_KEPT:
+            self._plain_g_words[word] = read
+        return read
+
+    def plain_kinds(self) -> dict[str, int]:
+        """Every ASCII letter (either case) -> its code: an axis's index, ``PLAIN_INCREMENTAL``
+        plus the index for an incremental letter, ``PLAIN_G``, ``PLAIN_F``, ``PLAIN_S``, a key
+        of ``PLAIN_ARC_LETTERS`` for R, I, J, K, and ``NOT_PLAIN`` for the others (a
+        ``Block.plain`` word starts with an ASCII letter, so looking it up never misses). Empty
+        in increment input mode, where a value without a point counts least increments, and
+        for a machine of more axes than the codes leave room for."""
         kinds = self._plain_kinds
         if kinds is not None:
             return kinds
-        if self.settings.decimal_point == "increment":
+        if self.settings.decimal_point == "increment" or len(self.axis_index) > PLAIN_INCREMENTAL:
             kinds = self._plain_kinds = {}
             return kinds
-        kinds = {"G": "G", "F": "F", "S": "S", **{c: c for c in _CENTRE_LETTERS}}
-        kinds.update(self.axis_index)
+        kinds = dict.fromkeys(ascii_letters, NOT_PLAIN)
+        codes = {"G": PLAIN_G, "F": PLAIN_F, "S": PLAIN_S, **{c: k for k, c in PLAIN_ARC_LETTERS.items()}}
+        codes.update(self.axis_index)
         for letter, axis in self.dialect.incremental_letters.items():
             if axis in self.axis_index:
-                kinds[letter] = -1 - self.axis_index[axis]
-        kinds.update({k.lower(): v for k, v in kinds.items()})
+                codes[letter] = PLAIN_INCREMENTAL + self.axis_index[axis]
+        for letter, code in codes.items():
+            kinds[letter] = kinds[letter.lower()] = code
         self._plain_kinds = kinds
         return kinds
 

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 from .arcs import ARC_MODES
 from .cycle_time import INCH
 from .frames import Move
+from .motion import NOT_PLAIN, PLAIN_ARC_LETTERS, PLAIN_F, PLAIN_G, PLAIN_INCREMENTAL, PLAIN_S
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile
@@ -50,12 +51,11 @@ def run_straight(
     program = cf.file.program
     blocks = program.blocks
     n_blocks = len(blocks) if program.tape_end is None else program.tape_end  # nothing after the closing '%'
-    groups = m.plain_g_groups()
+    g_words = m.plain_g_words()
     lathe = m._lathe
     cycles = m._cycle_codes
     modal = m.modal
     codes = m.codes
-    pos = m.pos
     clock = m.clock
     cut = m.cut_length
     rapid = m.rapid_length
@@ -78,17 +78,24 @@ def run_straight(
     unit = INCH if modal.get("units") == 20.0 else 1.0
     css = modal.get("spindle") == 96.0
     f = codes.get("F") or 0.0
-    start = tuple(pos)
-    done = 0
-    while done < budget and pc < n_blocks:
+    # where the tool is (after the last line run) and where the line being read sends it: one
+    # list, changed in place, that each line starts as ``start`` (a line declined is dropped)
+    start = tuple(m.pos)
+    target = list(start)
+    # the lines run are the lines passed but the blank and comment ones (``blanks``): the
+    # budget counts the lines run, so each of those moves ``stop`` on by one
+    first_pc = pc
+    blanks = 0
+    stop = min(n_blocks, pc + budget)
+    while pc < stop:
         text = blocks[pc].plain
         if text is None:
-            if done and skipped(blocks[pc]):  # a blank or comment line between two plain ones
+            if pc > first_pc and skipped(blocks[pc]):  # a blank or comment line between two plain ones
                 pc += 1
+                blanks += 1
+                stop = min(n_blocks, stop + 1)
                 continue
             break
-        line_absolute = absolute
-        target = pos[:]
         moved = False
         inc: list[tuple[int, float]] | None = None
         others: list[tuple[str, float]] | None = None
@@ -97,61 +104,62 @@ def run_straight(
         speed: float | None = None
         arc: dict[str, float] | None = None  # R, I, J, K
         for word in text.split():
-            kind = kinds.get(word[0])
-            if kind is None:
-                break
-            v = float(word[1:])
-            if kind.__class__ is int:
+            kind = kinds[word[0]]
+            if kind < PLAIN_INCREMENTAL:  # an axis
                 moved = True
-                if kind < 0:  # an incremental letter (U, V, W): added after the absolute ones
-                    if inc is None:
-                        inc = [(-1 - kind, v)]
-                    else:
-                        inc.append((-1 - kind, v))
-                elif line_absolute:
-                    target[kind] = v
+                if absolute:
+                    target[kind] = float(word[1:])
                 else:
-                    target[kind] += v
-            elif kind == "G":
-                group = groups.get(v)
-                if group is None:
-                    break
+                    target[kind] += float(word[1:])
+            elif kind == PLAIN_G:
+                group, v = g_words.get(word) or m.plain_g_word(word)
                 if group == "motion":
                     new_mode = v
                     continue
+                if not group:
+                    break
                 if group == "distance":
                     if moved:  # G90/G91 after an axis word still governs it: the general path
                         break
-                    line_absolute = lathe or v == 90.0
+                    absolute = lathe or v == 90.0  # for the axis words after it (set again below)
                 if others is None:
                     others = [(group, v)]
                 else:
                     others.append((group, v))
-            elif kind == "F":
-                feed = v
-            elif kind == "S":
-                if v % 1:
+            elif kind < PLAIN_G:  # an incremental letter (U, V, W): added after the absolute ones
+                moved = True
+                if inc is None:
+                    inc = [(kind - PLAIN_INCREMENTAL, float(word[1:]))]
+                else:
+                    inc.append((kind - PLAIN_INCREMENTAL, float(word[1:])))
+            elif kind == PLAIN_F:
+                feed = float(word[1:])
+            elif kind == PLAIN_S:
+                speed = float(word[1:])
+                if speed % 1:
                     break
-                speed = v
+            elif kind == NOT_PLAIN:
+                break
             elif arc is None:
-                arc = {kind: v}
+                arc = {PLAIN_ARC_LETTERS[kind]: float(word[1:])}
             else:
-                arc[kind] = v
+                arc[PLAIN_ARC_LETTERS[kind]] = float(word[1:])
         else:
             if arc is not None and not moved and (mode if new_mode is None else new_mode) in ARC_MODES:
                 break  # I, J, K alone are a full circle, R alone no move: the compiled path decides
             if new_mode is not None:
                 if moved and new_mode in cycles:
                     break  # a cycle decides this line: the compiled path runs it
-                mode = modal["motion"] = new_mode
-                if not lathe:
+                if new_mode != mode:
+                    mode = modal["motion"] = new_mode
+                if canned != 80.0 and not lathe:
                     canned = modal["canned"] = 80.0
             elif moved and (mode in cycles or (canned != 80.0 and not lathe)):
                 break
             if trk is not None:
                 if trk[pc] < floor:
                     m.clock, m.cut_length, m.rapid_length = clock, cut, rapid  # what the observer reads
-                    first(path, pc, step + done)
+                    first(path, pc, step + pc - first_pc - blanks)
                 trk[pc] = serial
             if others is not None:
                 for group, g in others:
@@ -170,7 +178,6 @@ def run_straight(
                     for i, v in inc:
                         target[i] += v
                 end = tuple(target)
-                pos = target
                 # the time and length of the move: ``Motion._record``'s rules, inline
                 centre = m.arc_centre(mode, start, end, arc) if arc is not None and mode in ARC_MODES else None
                 if mode == 0.0:
@@ -182,20 +189,21 @@ def run_straight(
                     else:
                         length = times.arc_length(mode, modal.get("plane", 17.0), start, end, centre)
                     rate = times.feed_rate(f, True, codes.get("S") or 0.0, css, start, end, unit) if per_rev else f
-                    seconds = length / rate * _SECONDS_PER_MINUTE if rate > 0 else 0.0
+                    seconds = length / rate * _SECONDS_PER_MINUTE if rate > 0.0 else 0.0
                     cut += length * unit
                 clock += seconds
                 if append is not None:
                     append(_new_move(Move, (path, pc, mode, start, end, f, centre, seconds)))
                 start = end
-            done += 1
             pc += 1
             continue
         break  # a word the general path must read
+    done = pc - first_pc - blanks
     if done:  # stop on a line that does something, as ``CompiledFile.next_line`` does
         while pc < n_blocks and blocks[pc].plain is None and skipped(blocks[pc]):
             pc += 1
-    m.pos = pos
+    if done:
+        m.pos = list(start)
     m.clock = clock
     m.cut_length = cut
     m.rapid_length = rapid

@@ -44,6 +44,10 @@ def _plain_line_pattern(possessive: str) -> str:
 
 
 _PLAIN_LINE = re.compile(_plain_line_pattern(_POSSESSIVE)).fullmatch
+# The same pattern with ``\d`` only 0-9, a tenth quicker: opening a file tries it first, and a
+# line it does not take goes to ``parse_block``, which tries ``_PLAIN_LINE`` (a line of
+# other digits, such as full-width ones, is plain all the same: it is then cached).
+_PLAIN_ASCII_LINE = re.compile(_plain_line_pattern(_POSSESSIVE), re.ASCII).fullmatch
 
 
 # Real controls read blocks of at most a few hundred characters; a longer line is reported,
@@ -207,11 +211,12 @@ class BlockCache:
         blocks = self._blocks
         out: list[Block] = []
         append = out.append
-        plain = _PLAIN_LINE
+        plain = _PLAIN_ASCII_LINE
         of_plain = Block.of_plain
         added = 0
+        short = max(map(len, lines), default=0) <= MAX_BLOCK_CHARS  # as good as always: no line to measure again
         for line in lines:
-            if len(line) <= MAX_BLOCK_CHARS and plain(line) is not None:
+            if (short or len(line) <= MAX_BLOCK_CHARS) and plain(line) is not None:
                 append(of_plain(line))  # as cheap as a lookup: not cached
                 continue
             b = blocks.get(line)
