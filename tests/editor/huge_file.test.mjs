@@ -189,7 +189,12 @@ test('a hover far down the file, on line 500,026, names the variable and where i
   // notification centre, with its bar and, for the analysis, a Cancel button
   await page.mouse.move(5, 500);
   await page.keyboard.press('Escape');
-  const item = page.locator('.statusbar-item', { hasText: /cncmacro/ }).first();
+  // the reading ends in a few seconds; then the analysis reports what it does
+  for (const end = Date.now() + 60000; Date.now() < end; await page.waitForTimeout(100)) {
+    const now = await progressText();
+    if (/checking|running|analysing/.test(now) || (await far.isVisible())) break;
+  }
+  const item = page.locator('.statusbar-item', { hasText: /cncmacro: (checking|running|analysing)/ }).first();
   if (await item.isVisible()) {
     await item.click().catch(() => undefined);
     await page.waitForTimeout(500);
