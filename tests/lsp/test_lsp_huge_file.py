@@ -126,17 +126,21 @@ async def test_a_huge_file_answers_hovers_and_keeps_edits_while_it_is_read(clien
     assert isinstance(reading[-1], types.WorkDoneProgressEnd)
 
 
-async def test_a_huge_file_says_where_a_variable_is_written_once_it_is_indexed_without_holding_the_editor(
+async def test_a_huge_file_says_where_a_variable_is_written_and_what_jumps_to_a_label_once_indexed(
     client: LanguageClient,
 ) -> None:
-    """Finding every write of #100 in a huge file takes seconds: meanwhile a hover answers at
-    once and says the places are still being found; once the file is indexed (in steps, between
-    the editor's messages) the same hover lists them, the one far down too."""
+    """Finding every write of #100, or every jump to N77, in a huge file takes seconds: meanwhile
+    a hover answers at once and says the places are still being found; once the file is indexed
+    (in steps, between the editor's messages) the same hovers list them, the ones far down too."""
     text = huge_program().split("\n")
     text[80_000] = "#100=2"
+    text[80_001] = "N77 G00 X0"
+    text[80_002] = "IF [#100 EQ 5] GOTO 77"
     uri = open_file(client, FANUC / "huge_where.nc", "\n".join(text), version=1)
     early = await hover_text(client, uri, 1, 1)  # while the file is read
     assert "#100" in early and "huge_where.nc" in early.partition("still being found in")[2]
+    label = await hover_text(client, uri, 80_001, 1)
+    assert "N77" in label and "jumps to it: still being found in huge_where.nc" in label
     await analysed(client, uri, 1)
     for _ in range(3000):
         later = await hover_text(client, uri, 1, 1)
@@ -144,6 +148,8 @@ async def test_a_huge_file_says_where_a_variable_is_written_once_it_is_indexed_w
             break
         await asyncio.sleep(0.01)
     assert "huge_where.nc:2" in later and "huge_where.nc:80001" in later
+    label = await hover_text(client, uri, 80_001, 1)
+    assert "still being found" not in label and "80003" in label
 
 
 @pytest_lsp.fixture(config=config(), scope="module")

@@ -221,6 +221,10 @@ def label_hover(ls: CncMacroServer, cur: Cursor, label: int) -> str:
     else:
         lines.append("")
         lines.append(f"N{label}: {t('not_found', loc)}")
+    if not cur.doc.sites.ready:  # a huge file not indexed yet: its jumps are still being found
+        index_soon(cur.doc.sites)
+        found = t("being_found", loc).format(files=Path(cur.doc.path).name)
+        return "\n".join([*lines, "", f"{t('jumps', loc)}: {found}"])
     jumps = [(i, j.kind) for i, j in label_jumps(cur.doc, unit.start, unit.end, label)]
     shown = [f"{t('line', loc)} {i + 1} ({kind})" for i, kind in jumps[:MAX_PLACES]]
     lines += _places(t("jumps", loc), shown, len(jumps), t("no_jumps", loc), loc)
