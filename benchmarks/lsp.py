@@ -187,6 +187,8 @@ class Session:
         self.arrivals: list[tuple[float, int | None, int]] = []  # (time, version, number of diagnostics)
         self.analysed: asyncio.Event | None = None  # set when an analysis's progress ends
         self.body_read_at = 0.0  # when the last message's bytes were read (before they are converted)
+        self.stderr_lines: list[str] = []  # what the server wrote to stderr
+        self._drainer: asyncio.Future[None] | None = None
 
         @self.client.feature(types.WINDOW_WORK_DONE_PROGRESS_CREATE)
         def create(params: types.WorkDoneProgressCreateParams) -> None:
@@ -216,6 +218,7 @@ class Session:
         """Start the server, initialize it on ``folder`` and let it settle."""
         await self.client.start_io(sys.executable, "-m", "cncmacro", "lsp")
         self._time_reads()
+        self._drain_stderr()
         await self.client.initialize_async(
             types.InitializeParams(
                 capabilities=types.ClientCapabilities(window=types.WindowClientCapabilities(work_done_progress=True)),
@@ -243,6 +246,20 @@ class Session:
             return body
 
         stream.readexactly = timed  # type: ignore[method-assign]
+
+    def _drain_stderr(self) -> None:
+        """Read what the server writes to stderr (its warnings), kept in ``stderr_lines``: a
+        pipe nobody reads fills up and would stop the server in the middle of a write."""
+        server = self.client._server
+        stream = server.stderr if server is not None else None
+        if stream is None:
+            return
+
+        async def drain() -> None:
+            while line := await stream.readline():
+                self.stderr_lines.append(line.decode("utf-8", "replace").rstrip())
+
+        self._drainer = asyncio.ensure_future(drain())
 
     def peak_mb(self) -> float | None:
         """The server's peak resident memory (Linux only)."""
