@@ -7,8 +7,10 @@ or a hover (the analysis thread holds the interpreter meanwhile). So the collect
 while an analysis runs (``paused``), what survived is frozen afterwards (the collector skips
 frozen objects), and the frozen heap is collected for real only at a quiet moment: when the
 process's memory has grown by ``GROWTH`` since the last clean-up or since a document was
-first analysed (reference cycles the edits left behind are freed only then), once no edit
-came for ``QUIET_SECONDS``, or at once when it has grown by ``MAX_GROWTH``. Memory is read
+first analysed (reference cycles the edits left behind are freed only then), once the editor
+sent nothing for ``quiet_seconds`` (longer the larger the heap: a full collection of a
+million-line file's working set holds the interpreter for over a second, and a hover then would
+wait for it), or at once when it has grown by ``MAX_GROWTH``. Memory is read
 from ``/proc/self/statm`` (counting frozen objects would walk them all); where that is
 missing, every ``ANALYSES`` analyses count as due.
 
@@ -33,6 +35,8 @@ GROWTH = 1.15
 MAX_GROWTH = 1.6
 SLACK_BYTES = 32 << 20  # growth below this is never worth a collection
 QUIET_SECONDS = 0.5
+COLLECT_SECONDS_PER_MB = 0.002  # a full collection's time per MB of resident memory, about
+QUIET_FACTOR = 3.0  # the quiet wanted before a clean-up, in times its expected length
 ANALYSES = 200
 URGENT_ANALYSES = 400
 CLOSES = 32
@@ -106,6 +110,16 @@ class Collector:
     def urgent(self) -> bool:
         """Whether it has grown so much that the clean-up cannot wait."""
         return self._grown(MAX_GROWTH) or self.closes >= CLOSES or self.since_clean >= URGENT_ANALYSES
+
+    def quiet_seconds(self) -> float:
+        """How long the editor must have sent nothing before a clean-up: ``QUIET_SECONDS``, or
+        ``QUIET_FACTOR`` times what the clean-up is expected to take (``COLLECT_SECONDS_PER_MB``
+        of resident memory), whichever is longer, so that the longer it holds the interpreter,
+        the surer it is that nobody is waiting (a million-line file: about 1.3 s, after 4 s)."""
+        now = resident_bytes()
+        if now is None:
+            return QUIET_SECONDS
+        return max(QUIET_SECONDS, QUIET_FACTOR * COLLECT_SECONDS_PER_MB * now / (1 << 20))
 
     def clean(self) -> None:
         """Collect everything (frozen included), then freeze the survivors again."""

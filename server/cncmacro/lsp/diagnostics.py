@@ -50,7 +50,7 @@ from ..analysis.cycle_lenses import FileTiming
 from ..analysis.workspace import FIRST_SCREEN_LINES, AnalysisResult, Value, WorkspaceAnalysis, head_lines
 from ..bilingual import pick
 from ..syntax.document import ParsedDocument
-from .collector import QUIET_SECONDS, Collector
+from .collector import Collector
 from .cycle_lenses import refresh_code_lenses
 from .disk_watch import DiskStamps
 from .documents import Edit, OpenDocument, uri_to_path
@@ -446,12 +446,14 @@ class DiagnosticsEngine:
         return last - before < BURST_SECONDS and now - last < BURST_SECONDS
 
     async def _clean_when_quiet(self) -> None:
-        """Collect the frozen heap once no edit came for a moment (at once when urgent)."""
+        """Collect the frozen heap once the editor sent nothing for a while (``Collector.quiet_seconds``;
+        at once when urgent)."""
         while not self.collector.urgent():
-            generation = self.generation
-            await asyncio.sleep(QUIET_SECONDS)
-            if generation == self.generation:
+            quiet = time.monotonic() - self.server.last_message_at
+            wanted = self.collector.quiet_seconds()
+            if quiet >= wanted:
                 break
+            await asyncio.sleep(wanted - quiet)
         if self._loading:
             return  # a huge file began to be read: after its first analysis
         await asyncio.get_running_loop().run_in_executor(self._executor, self.collector.clean)

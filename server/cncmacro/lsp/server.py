@@ -16,6 +16,7 @@ import logging
 import os
 import sys
 import threading
+import time
 from collections.abc import Iterable
 from pathlib import Path
 from typing import Any, cast
@@ -150,6 +151,7 @@ class CncMacroServer(LanguageServer):
         self.watching: asyncio.Future[None] | None = None  # the request for the editor's file watcher
         self.machine_file_uris: set[str] = set()  # the machine files whose problem is shown
         self.machine_files_shown: set[Path] = set()  # the machine files in use when they were last shown
+        self.last_message_at = time.monotonic()  # when the editor last sent anything (the collector waits for quiet)
 
     # ---- the workspace
     def machine_files_in_use(self) -> list[Path]:

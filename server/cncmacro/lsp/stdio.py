@@ -22,6 +22,7 @@ import json
 import logging
 import re
 import threading
+import time
 from typing import TYPE_CHECKING, Any, BinaryIO
 
 from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
@@ -153,6 +154,7 @@ async def _read_messages(server: CncMacroServer, reader: StdinAsyncReader, stop:
 
 
 def _handle(server: CncMacroServer, data: Any) -> None:
+    server.last_message_at = time.monotonic()
     protocol = server.protocol
     request_id = data.get("id") if isinstance(data, dict) else None
     is_request = isinstance(data, dict) and "method" in data and request_id is not None
