@@ -10,11 +10,14 @@ the editor's messages answered between the steps, as a huge file is read (``diag
 from __future__ import annotations
 
 import asyncio
+import logging
 import weakref
+from functools import partial
 
 from ..analysis.site_index import SiteIndex
 from .editor_steps import between_steps, one_step
 
+log = logging.getLogger(__name__)
 INDEX_PIECE_LINES = 200  # lines looked at between two looks at the clock (``editor_steps.py``)
 
 _building: weakref.WeakSet[SiteIndex] = weakref.WeakSet()
@@ -26,14 +29,25 @@ def index_soon(sites: SiteIndex) -> None:
     if sites.ready or sites.partial or sites in _building:
         return
     _building.add(sites)
-    task = asyncio.ensure_future(_steps(sites))
+    task = asyncio.ensure_future(_steps(weakref.ref(sites)))
     _tasks.add(task)
     task.add_done_callback(_tasks.discard)
 
 
-async def _steps(sites: SiteIndex) -> None:
-    try:
-        while not one_step(lambda: sites.build(INDEX_PIECE_LINES)):
-            await between_steps()
-    finally:
-        _building.discard(sites)
+async def _steps(ref: weakref.ref[SiteIndex]) -> None:
+    """The steps, holding the index only during each: one whose document was closed or edited
+    into another index meanwhile is gone, and its steps end."""
+    while True:
+        sites = ref()
+        if sites is None:
+            return
+        try:
+            done = one_step(partial(sites.build, INDEX_PIECE_LINES))
+        except Exception:  # a fault here must not stop the server: the next question begins it again
+            log.exception("indexing a document in steps failed")
+            done = True
+        if done:
+            _building.discard(sites)
+            return
+        del sites
+        await between_steps()
