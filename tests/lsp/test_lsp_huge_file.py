@@ -131,7 +131,8 @@ async def test_a_huge_file_says_where_a_variable_is_written_and_what_jumps_to_a_
 ) -> None:
     """Finding every write of #100, or every jump to N77, in a huge file takes seconds: meanwhile
     a hover answers at once and says the places are still being found; once the file is indexed
-    (in steps, between the editor's messages) the same hovers list them, the ones far down too."""
+    (in steps, between the editor's messages) the same hovers list them, the ones far down too.
+    Document highlight marks nothing until then, and then the write far down too."""
     text = huge_program().split("\n")
     text[80_000] = "#100=2"
     text[80_001] = "N77 G00 X0"
@@ -141,6 +142,7 @@ async def test_a_huge_file_says_where_a_variable_is_written_and_what_jumps_to_a_
     assert "#100" in early and "huge_where.nc" in early.partition("still being found in")[2]
     label = await hover_text(client, uri, 80_001, 1)
     assert "N77" in label and "jumps to it: still being found in huge_where.nc" in label
+    assert not await marks(client, uri, 1, 1)  # the cursor moves on at once: nothing marked yet
     await analysed(client, uri, 1)
     for _ in range(3000):
         later = await hover_text(client, uri, 1, 1)
@@ -150,6 +152,15 @@ async def test_a_huge_file_says_where_a_variable_is_written_and_what_jumps_to_a_
     assert "huge_where.nc:2" in later and "huge_where.nc:80001" in later
     label = await hover_text(client, uri, 80_001, 1)
     assert "still being found" not in label and "80003" in label
+    assert (80_000, types.DocumentHighlightKind.Write) in await marks(client, uri, 1, 1)
+
+
+async def marks(client: LanguageClient, uri: str, line: int, col: int) -> list[tuple[int, object]]:
+    """The lines the editor marks for the word at ``line``:``col`` (document highlight), and how."""
+    found = await client.text_document_document_highlight_async(
+        types.DocumentHighlightParams(types.TextDocumentIdentifier(uri), types.Position(line, col))
+    )
+    return [(h.range.start.line, h.kind) for h in found or []]
 
 
 @pytest_lsp.fixture(config=config(), scope="module")

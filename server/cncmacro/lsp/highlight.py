@@ -4,7 +4,9 @@ On ``#105`` every read and write of ``#105`` in the document is marked, writes (
 Write and the others as Read; a local (``#1``–``#33``) only within its O program, where it
 lives. On an N label, or on a jump's number (``GOTO 100``, ``M99 P100``, ``M98 Q100``, the P of
 a Haas ``M97``), the labels N100 of its program are marked as Write and each jump to it as Read.
-Where things are comes from the document's site index (``analysis/site_index.py``).
+Where things are comes from the document's site index (``analysis/site_index.py``); in a huge
+file whose index is still being made in steps (``site_steps.py``) nothing is marked meanwhile,
+rather than the editor waiting seconds at each move of the cursor.
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ from ..syntax.nodes import Var
 from ..syntax.walk import nodes_at
 from .cursor import Cursor, cursor_at
 from .navigation import label_under
+from .site_steps import index_soon
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -33,7 +36,12 @@ def register(server: CncMacroServer) -> None:
         ls: CncMacroServer, params: types.DocumentHighlightParams
     ) -> list[types.DocumentHighlight] | None:
         cur = cursor_at(ls, params.text_document.uri, params.position)
-        return None if cur is None else highlights(cur)
+        if cur is None:
+            return None
+        if not cur.doc.sites.ready:  # a huge file not indexed yet: nothing marked until it is
+            index_soon(cur.doc.sites)
+            return None
+        return highlights(cur)
 
 
 def highlights(cur: Cursor) -> list[types.DocumentHighlight] | None:
