@@ -344,3 +344,32 @@ export class CodeServer {
     if (!process.env.CNCMACRO_KEEP_EDITOR_RUN) fs.rmSync(this.dir, { recursive: true, force: true, maxRetries: 3 });
   }
 }
+
+/**
+ * A code-server for one test file, its workbench open in Chromium: `prepare(server)` first writes
+ * the file's own programs into `server.workspace`; `timeout` is the page's default wait (ms).
+ */
+export async function startWorkbench({ locale, prepare, timeout = 20000 } = {}) {
+  fs.mkdirSync(OUTPUT, { recursive: true });
+  const server = new CodeServer({ locale });
+  await server.start();
+  await prepare?.(server);
+  const page = await server.openWorkbench();
+  page.setDefaultTimeout(timeout);
+  return { server, page };
+}
+
+/**
+ * A screenshot of `page` as test-output/editor/`name`.png once `settle` ms have let hovers and
+ * panels fade in; also docs/images/`docs`.png when CNCMACRO_README_PICTURES is set
+ * (`npm run screenshots`).
+ */
+export async function screenshot(page, name, { docs, settle = 300 } = {}) {
+  if (settle) await page.waitForTimeout(settle);
+  const file = path.join(OUTPUT, `${name}.png`);
+  await page.screenshot({ path: file });
+  if (docs && process.env.CNCMACRO_README_PICTURES) {
+    fs.mkdirSync(path.join(ROOT, 'docs', 'images'), { recursive: true });
+    fs.copyFileSync(file, path.join(ROOT, 'docs', 'images', `${docs}.png`));
+  }
+}

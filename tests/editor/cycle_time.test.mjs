@@ -4,31 +4,18 @@
 // set (npm run screenshots) the lens picture is copied to docs/images/cycle-time.png, which the
 // README shows. Run: node --test tests/editor/cycle_time.test.mjs (after npm run package).
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
-import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { CodeServer, OUTPUT, ROOT } from './codeServer.mjs';
+import { screenshot, startWorkbench } from './codeServer.mjs';
 import { hoverOver, openFile } from './workbench.mjs';
 
 const STEP = 90000;
 let server;
 let page;
 
-async function shot(name, readme) {
-  await page.waitForTimeout(300);
-  const file = path.join(OUTPUT, `cycle-${name}.png`);
-  await page.screenshot({ path: file });
-  if (readme && process.env.CNCMACRO_README_PICTURES) {
-    fs.copyFileSync(file, path.join(ROOT, 'docs', 'images', `${readme}.png`));
-  }
-}
+const shot = (name, readme) => screenshot(page, `cycle-${name}`, { docs: readme });
 
 before(async () => {
-  fs.mkdirSync(OUTPUT, { recursive: true });
-  server = new CodeServer();
-  await server.start();
-  page = await server.openWorkbench();
-  page.setDefaultTimeout(20000);
+  ({ server, page } = await startWorkbench());
 }, { timeout: 180000 });
 
 after(async () => {

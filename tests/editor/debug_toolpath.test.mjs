@@ -5,24 +5,15 @@
 // picture after the step back is docs/images/debug-toolpath.png when CNCMACRO_README_PICTURES is
 // set. Run: node --test tests/editor/debug_toolpath.test.mjs (after npm run package).
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
-import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { CodeServer, OUTPUT, ROOT } from './codeServer.mjs';
+import { screenshot, startWorkbench } from './codeServer.mjs';
 import { openFile } from './workbench.mjs';
 
 const STEP = 90000;
 let server;
 let page;
 
-async function shot(name, readme) {
-  await page.waitForTimeout(400);
-  const file = path.join(OUTPUT, `${name}.png`);
-  await page.screenshot({ path: file });
-  if (process.env.CNCMACRO_README_PICTURES && readme) {
-    fs.copyFileSync(file, path.join(ROOT, 'docs', 'images', `${readme}.png`));
-  }
-}
+const shot = (name, readme) => screenshot(page, name, { docs: readme, settle: 400 });
 
 /** Click the move made on `line` and pick "Run to here" in the menu that opens there. */
 async function runToHere(view, line, picture) {
@@ -41,11 +32,7 @@ async function runToHere(view, line, picture) {
 }
 
 before(async () => {
-  fs.mkdirSync(OUTPUT, { recursive: true });
-  server = new CodeServer();
-  await server.start();
-  page = await server.openWorkbench();
-  page.setDefaultTimeout(20000);
+  ({ server, page } = await startWorkbench());
 }, { timeout: 180000 });
 
 after(async () => {

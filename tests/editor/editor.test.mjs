@@ -9,7 +9,7 @@ import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test as nodeTest } from 'node:test';
-import { CodeServer, OUTPUT, ROOT } from './codeServer.mjs';
+import { OUTPUT, ROOT, screenshot, startWorkbench } from './codeServer.mjs';
 import { exact, hoverOver, openFile as openIn, tokenColour as colourIn } from './workbench.mjs';
 import { characterColours, editorForeground, oneColour } from './workbench.mjs';
 
@@ -28,13 +28,7 @@ const README_PICTURES = {
 
 /** A screenshot; `settled` when the test has already waited for what the picture must show. */
 async function shot(name, { settled = false } = {}) {
-  if (!settled) await page.waitForTimeout(300); // let hovers and panels finish fading in
-  const file = path.join(OUTPUT, `${name}.png`);
-  await page.screenshot({ path: file });
-  if (process.env.CNCMACRO_README_PICTURES && README_PICTURES[name]) {
-    fs.mkdirSync(path.join(ROOT, 'docs', 'images'), { recursive: true });
-    fs.copyFileSync(file, path.join(ROOT, 'docs', 'images', `${README_PICTURES[name]}.png`));
-  }
+  await screenshot(page, name, { docs: README_PICTURES[name], settle: settled ? 0 : 300 });
 }
 
 const openFile = (name) => openIn(page, name);
@@ -55,11 +49,7 @@ function test(name, options, fn) {
 
 before(async () => {
   fs.rmSync(OUTPUT, { recursive: true, force: true });
-  fs.mkdirSync(OUTPUT, { recursive: true });
-  server = new CodeServer();
-  await server.start();
-  page = await server.openWorkbench();
-  page.setDefaultTimeout(WAIT);
+  ({ server, page } = await startWorkbench({ timeout: WAIT }));
 }, { timeout: 180000 });
 
 after(async () => {

@@ -3,27 +3,18 @@
 // panel and the toolpath view in Chinese. Screenshots go to test-output/editor/zh-*.png. Run with the other editor
 // tests: node --test tests/editor/ (after npm run package).
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
-import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { CodeServer, OUTPUT } from './codeServer.mjs';
+import { screenshot, startWorkbench } from './codeServer.mjs';
 import { hoverOver, openFile } from './workbench.mjs';
 
 const STEP = 60000;
 let server;
 let page;
 
-async function shot(name) {
-  await page.waitForTimeout(300);
-  await page.screenshot({ path: path.join(OUTPUT, `zh-${name}.png`) });
-}
+const shot = (name) => screenshot(page, `zh-${name}`);
 
 before(async () => {
-  fs.mkdirSync(OUTPUT, { recursive: true });
-  server = new CodeServer({ locale: 'zh-cn' });
-  await server.start();
-  page = await server.openWorkbench();
-  page.setDefaultTimeout(20000);
+  ({ server, page } = await startWorkbench({ locale: 'zh-cn' }));
 }, { timeout: 180000 });
 
 after(async () => {

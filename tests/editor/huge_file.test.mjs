@@ -11,10 +11,9 @@
 // Run after npm run package: node --test --test-concurrency=1 tests/editor/huge_file.test.mjs
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
-import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { CodeServer, OUTPUT, ROOT } from './codeServer.mjs';
+import { ROOT, screenshot, startWorkbench } from './codeServer.mjs';
 import { exact } from './workbench.mjs';
 
 const LINES = 1_000_000;
@@ -43,14 +42,7 @@ lines[label] = lines[label][len("N99991 "):]
 open(sys.argv[1], "w").write("\\n".join(lines))
 `;
 
-async function shot(name, docs) {
-  await page.waitForTimeout(300);
-  const file = path.join(OUTPUT, `${name}.png`);
-  await page.screenshot({ path: file });
-  if (process.env.CNCMACRO_README_PICTURES && docs) {
-    fs.copyFileSync(file, path.join(ROOT, 'docs', 'images', `${docs}.png`));
-  }
-}
+const shot = (name, docs) => screenshot(page, name, { docs });
 
 /** The status-bar text of the server's progress ("cncmacro: reading ..." / "analysing ..."), or ''. */
 async function progressText() {
@@ -116,17 +108,16 @@ async function until(what, check, timeout = 30000) {
 }
 
 before(async () => {
-  fs.mkdirSync(OUTPUT, { recursive: true });
-  server = new CodeServer();
-  await server.start();
-  const made = spawnSync(PYTHON, ['-c', GENERATE, path.join(server.workspace, 'huge.nc')], {
-    cwd: ROOT,
-    encoding: 'utf8',
-    timeout: 120000,
-  });
-  assert.equal(made.status, 0, `generating the program failed: ${made.stderr}`);
-  page = await server.openWorkbench();
-  page.setDefaultTimeout(20000);
+  ({ server, page } = await startWorkbench({
+    prepare: (started) => {
+      const made = spawnSync(PYTHON, ['-c', GENERATE, path.join(started.workspace, 'huge.nc')], {
+        cwd: ROOT,
+        encoding: 'utf8',
+        timeout: 120000,
+      });
+      assert.equal(made.status, 0, `generating the program failed: ${made.stderr}`);
+    },
+  }));
 }, { timeout: 240000 });
 
 after(async () => {

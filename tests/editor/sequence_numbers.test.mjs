@@ -8,7 +8,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { CodeServer, OUTPUT } from './codeServer.mjs';
+import { screenshot, startWorkbench } from './codeServer.mjs';
 import { openFile } from './workbench.mjs';
 
 const STEP = 60000;
@@ -18,10 +18,7 @@ let page;
 const LOOP = ['O0001 (RENUMBER ME)', '#1=0', 'N3 #1=#1+1', 'IF[#1 LT 3] GOTO3', 'GOTO 7', '#2=99', 'N7 M98 P0002 Q8', 'M30', 'O0002', 'N8 #3=1', 'M99', ''];
 const COMPUTED = ['O0001 (COMPUTED JUMP)', '#1=7', 'N5 GOTO #1', 'N7 #2=1', 'M30', ''];
 
-async function shot(name) {
-  await page.waitForTimeout(300);
-  await page.screenshot({ path: path.join(OUTPUT, `${name}.png`) });
-}
+const shot = (name) => screenshot(page, name);
 
 /** The editor's text, as drawn (no-break spaces read as spaces). */
 async function editorLines() {
@@ -57,14 +54,13 @@ async function until(what, check) {
 }
 
 before(async () => {
-  fs.mkdirSync(OUTPUT, { recursive: true });
-  server = new CodeServer();
-  await server.start();
-  for (const [name, lines] of Object.entries(PROGRAMS)) {
-    fs.writeFileSync(path.join(server.workspace, name), lines.join('\n'));
-  }
-  page = await server.openWorkbench();
-  page.setDefaultTimeout(20000);
+  ({ server, page } = await startWorkbench({
+    prepare: (started) => {
+      for (const [name, lines] of Object.entries(PROGRAMS)) {
+        fs.writeFileSync(path.join(started.workspace, name), lines.join('\n'));
+      }
+    },
+  }));
 }, { timeout: 180000 });
 
 after(async () => {

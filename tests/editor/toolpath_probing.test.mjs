@@ -8,7 +8,7 @@ import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { CodeServer, OUTPUT, ROOT } from './codeServer.mjs';
+import { OUTPUT, ROOT, startWorkbench } from './codeServer.mjs';
 import { exact, openFile } from './workbench.mjs';
 
 const CORPUS = path.join(ROOT, 'tests', 'corpus', 'fanuc-0i');
@@ -17,14 +17,13 @@ let server;
 let page;
 
 before(async () => {
-  fs.mkdirSync(OUTPUT, { recursive: true });
-  server = new CodeServer();
-  await server.start();
-  const folder = path.join(server.workspace, 'probing');
-  fs.mkdirSync(folder);
-  for (const name of FILES) fs.copyFileSync(path.join(CORPUS, name), path.join(folder, name));
-  page = await server.openWorkbench();
-  page.setDefaultTimeout(20000);
+  ({ server, page } = await startWorkbench({
+    prepare: (started) => {
+      const folder = path.join(started.workspace, 'probing');
+      fs.mkdirSync(folder);
+      for (const name of FILES) fs.copyFileSync(path.join(CORPUS, name), path.join(folder, name));
+    },
+  }));
 }, { timeout: 180000 });
 
 after(async () => {
