@@ -284,6 +284,8 @@ class LspTarget:
         self.features = self.server.protocol.fm.features
         self.published: list[types.PublishDiagnosticsParams] = []
         self.server.text_document_publish_diagnostics = self.published.append  # type: ignore[method-assign]
+        self.logged: list[types.LogMessageParams] = []  # e.g. a file of the workspace it cannot read
+        self.server.window_log_message = self.logged.append  # type: ignore[method-assign]
         protocol = self.server.protocol
         convert = protocol._converter  # the diagnostics already in JSON form, read back
 
@@ -312,6 +314,7 @@ class LspTarget:
         finally:
             self.server.index.scan([])  # the next case starts from an empty workspace
             self.published.clear()
+            self.logged.clear()
 
     def check(self, text: str, uri: str, positions: list[tuple[int, int]]) -> int:
         """Open ``text``, ask every request at ``positions``, edit at each, check what was
