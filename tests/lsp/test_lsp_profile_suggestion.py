@@ -84,3 +84,28 @@ async def test_an_m97_whose_label_is_missing_suggests_nothing(fanuc_en: Language
     uri = open_file(fanuc_en, FANUC / "m97_no_label.nc", "O0004\nM97 P100\nM30\n")
     diags = (await diagnostics_for(fanuc_en, uri, 1)).diagnostics
     assert [d for d in diags if d.code == "profile-suggestion"] == []
+
+
+async def test_an_8_digit_program_number_under_fanuc_0i_suggests_fanuc_30i_whose_m98_p_names_it(
+    fanuc_en: LanguageClient,
+) -> None:
+    # the 0i splits M98 P00012346 into a count and O2346; an 8-digit header says the machine names it whole
+    text = "%\nO00012345 (MAIN)\nM98 P00012346 L3\nM30\n%\n"
+    uri = open_file(fanuc_en, FANUC / "O00012345.nc", text)
+    diags = (await diagnostics_for(fanuc_en, uri, 1)).diagnostics
+    [hint] = [d for d in diags if d.code == "profile-suggestion"]
+    assert "8 digits" in hint.message and "FANUC 30i-B Custom Macro" in hint.message
+    assert "program_digits = 8" in hint.message
+    assert (hint.range.start.line, hint.range.start.character, hint.range.end.character) == (1, 0, 9)
+    actions = await actions_for(fanuc_en, uri, hint)
+    comment = next(a for a in actions if "(cncmacro: dialect=fanuc-30i)" in a.title)
+    [edit] = comment.edit.changes[uri]  # type: ignore[index, union-attr]
+    marked = open_file(fanuc_en, FANUC / "O00012345_marked.nc", text.replace("%\n", "%\n" + edit.new_text, 1))
+    diags = (await diagnostics_for(fanuc_en, marked, 1)).diagnostics
+    assert not any(d.code == "profile-suggestion" for d in diags)
+
+
+async def test_a_5_digit_program_number_suggests_nothing(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "O12345.nc", "%\nO12345 (MAIN)\nG00 X0\nM30\n%\n")
+    diags = (await diagnostics_for(fanuc_en, uri, 1)).diagnostics
+    assert not any(d.code == "profile-suggestion" for d in diags)

@@ -13,6 +13,12 @@ FANUC control, which then runs on into N100 (``local_call_lines``). Such a call,
 the program has, is the other profile's signature and gets the same suggestion. The NGC's
 ``#10000`` commons are no signature: on a FANUC control the same numbers are tool offsets, which
 FANUC tool-wear programs write (docs/profiles.md).
+
+A third sign is a program number written with more digits than ``M98 P`` names a program with
+under the profile in force: ``O00012345`` is the 8-digit program numbering of a 30i (or of a
+0i-F with that option), where ``M98 P00012346`` calls O12346 and only ``L`` counts, while a 0i
+reading it splits P into a count and a 4-digit program. Such a header names the first other
+profile whose ``M98 P`` takes that many digits.
 """
 
 from __future__ import annotations
@@ -78,6 +84,30 @@ def local_call_lines(
     return None
 
 
+# fewer written digits are no sign: 5-digit numbers are Haas's and many 0i machines' own
+LONG_HEADER_DIGITS = 6
+
+
+def long_header(program: Program, dialect: Dialect, settings: MachineSettings) -> tuple[Dialect, int, int, int] | None:
+    """The first other profile whose ``M98 P`` names a program of as many digits as an O header
+    of ``program`` is written with (at least ``LONG_HEADER_DIGITS``), where ``dialect``'s names
+    fewer, with that header (line and the span of its O word); None when there is none."""
+    for unit in program.units:
+        if unit.number is None or unit.duplicate:
+            continue
+        span = program.blocks[unit.start].program_span
+        digits = 0 if span is None else span[1] - span[0] - 1
+        if digits < LONG_HEADER_DIGITS or digits <= dialect.m98_program_digits:
+            continue
+        for name in DIALECTS:
+            other = machine_profile(name, settings)
+            if name != dialect.name and other.m98_program_digits >= digits:
+                assert span is not None
+                return other, unit.start, span[0], span[1]
+        return None
+    return None
+
+
 def suggestion_target(program: Program, dialect: Dialect, settings: MachineSettings) -> Dialect | None:
     """The profile that ``suggestion`` names for ``program`` (for its quick fixes, which are
     asked without the findings): the same choice, with the feature findings found again."""
@@ -89,7 +119,10 @@ def suggestion_target(program: Program, dialect: Dialect, settings: MachineSetti
     if features:
         return suggested_profile(program, dialect, settings, features)
     found = local_call_lines(facts, program, dialect, settings)
-    return None if found is None else found[0]
+    if found is not None:
+        return found[0]
+    header = long_header(program, dialect, settings)
+    return None if header is None else header[0]
 
 
 def suggestion(
@@ -113,7 +146,8 @@ def suggestion(
     else:
         found = local_call_lines(facts, program, dialect, settings)
         if found is None:
-            return None
+            header = long_header(program, dialect, settings)
+            return None if header is None else _header_hint(header, file, dialect, locale)
         other, calls = found
         at = (calls[0][0], calls[0][1], calls[0][0], calls[0][2])
         lines = sorted({k + 1 for k, _, _ in calls})
@@ -128,3 +162,24 @@ def suggestion(
         f'请在文件开头加上 (cncmacro: dialect={other.name})，或在 .cncmacro.toml 中设定 base = "{other.name}"',
     )
     return diagnostic(file, *at, CODE, message)
+
+
+def _header_hint(header: tuple[Dialect, int, int, int], file: str, dialect: Dialect, locale: str) -> Diagnostic:
+    """The ``profile-suggestion`` on an O header written with more digits than ``dialect``'s
+    ``M98 P`` names a program with."""
+    other, line, start, end = header
+    digits = end - start - 1
+    message = pick(
+        locale,
+        f"This program number is written with {digits} digits, as on {other.title}, where M98 P names the whole "
+        f"program and only L counts; {dialect.title} reads the digits of M98 P before the last "
+        f"{dialect.m98_program_digits} as a repeat count. If it was written for that control, add "
+        f'(cncmacro: dialect={other.name}) to its first lines, or set base = "{other.name}" (or program_digits = '
+        f"{digits} for a machine with {digits}-digit program numbers) in .cncmacro.toml",
+        f"此程序号写成 {digits} 位，与 {other.title} 相同：在该系统上 M98 P 整个是程序号，重复次数只由 L 指定；"
+        f"而 {dialect.title} 把 M98 P 最后 {dialect.m98_program_digits} 位之前的数字读作重复次数。"
+        "若程序是为该系统编写的，"
+        f'请在文件开头加上 (cncmacro: dialect={other.name})，或在 .cncmacro.toml 中设定 base = "{other.name}"'
+        f"（机床程序号为 {digits} 位时也可设定 program_digits = {digits}）",
+    )
+    return diagnostic(file, line, start, line, end, CODE, message)
