@@ -3,7 +3,10 @@
     .venv/bin/python benchmarks/fuzz.py --minutes 30 [--seed N] [--crashes DIR]
 
 Each case is checked against the invariants of ``fuzzing.py`` (no uncaught exception, every
-run within its budget, every diagnostic range inside the document). A case that breaks one is
+run within its budget, every diagnostic range inside the document, every answer one the protocol
+allows for its request) and must end within ``CASE_SECONDS`` (a hang). As root on Linux the run
+goes on without the capabilities that let root into a folder whatever its mode, so the closed
+folders of the odd workspaces are met as a user meets them. A case that breaks one is
 saved to the crashes folder (``crash-<n>.nc`` with the traceback beside it as ``.txt``) and
 the run goes on. Every few hundred cases one oversized input is tried too (long lines, deep
 brackets, many lines, operator chains and numbers thousands of characters long). At the end
@@ -14,6 +17,7 @@ tried and the slowest case; SIGINT or SIGTERM ends the run early with the same f
 from __future__ import annotations
 
 import argparse
+import os
 import random
 import signal
 import sys
@@ -48,6 +52,29 @@ def oversized(rnd: random.Random, k: int) -> str:
     return "O0001\nWHILE[1 EQ 1]DO1\n" + "#100=#100+1\n" * (size // 12) + "END1\nM30\n"
 
 
+CASE_SECONDS = 300  # a case still running after this hung somewhere a request's own limit cannot see
+
+
+class CaseHung(Exception):
+    """A case ran past ``CASE_SECONDS``."""
+
+
+def _hung(signum: int, frame: object) -> None:
+    raise CaseHung(f"the case ran past {CASE_SECONDS} s (a blocking read, or a loop without end)")
+
+
+def as_any_user() -> None:
+    """Root enters every folder whatever its mode, so the odd workspaces' closed folders would
+    test nothing: as root on Linux, run again through ``tests/hardening/unprivileged.py``, which
+    drops the capabilities that let root past a folder's mode."""
+    if not sys.platform.startswith("linux") or os.geteuid() != 0 or os.environ.get("CNCMACRO_FUZZ_AS_USER"):
+        return
+    os.environ["CNCMACRO_FUZZ_AS_USER"] = "1"
+    script = Path(__file__).resolve().parent.parent / "tests" / "hardening" / "unprivileged.py"
+    if script.is_file():
+        os.execv(sys.executable, [sys.executable, str(script), sys.executable, *sys.argv])
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--minutes", type=float, default=1.0)
@@ -68,6 +95,7 @@ def main(argv: list[str] | None = None) -> int:
     stop: list[int] = []  # SIGINT or SIGTERM: finish the case and print the figures
     signal.signal(signal.SIGINT, lambda sig, frame: stop.append(sig))
     signal.signal(signal.SIGTERM, lambda sig, frame: stop.append(sig))
+    signal.signal(signal.SIGALRM, _hung)
     while time.monotonic() < deadline and not stop:
         if n % 500 == 499:
             text = oversized(rnd, big)
@@ -76,6 +104,7 @@ def main(argv: list[str] | None = None) -> int:
             text = next(source)
         dialect = rnd.choice(DIALECTS)
         t0 = time.perf_counter()
+        signal.setitimer(signal.ITIMER_REAL, CASE_SECONDS)
         try:
             run_case(text, dialect, lsp, rnd)
         except Exception:
@@ -86,6 +115,8 @@ def main(argv: list[str] | None = None) -> int:
             stem.with_suffix(".txt").write_text(f"dialect {dialect}\n{traceback.format_exc()}", "utf-8")
             print(f"crash {crashes}: {traceback.format_exc().strip().splitlines()[-1]} -> {stem}.nc", flush=True)
             lsp = LspTarget()  # a fresh server after a failure
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
         took = time.perf_counter() - t0
         if took > slowest[0]:
             slowest = (took, f"{len(text)} chars, {text.count(chr(10)) + 1} lines")
@@ -103,4 +134,5 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
+    as_any_user()
     sys.exit(main())

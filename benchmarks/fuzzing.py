@@ -331,7 +331,22 @@ class LspTarget:
                 got = await asyncio.wait_for(got, REQUEST_SECONDS)
         except JsonRpcException:  # a request the server refuses on purpose (RequestFailed): answered
             return None
+        self._conforms(method, got)
         return got
+
+    def _conforms(self, method: str, got: object) -> None:
+        """The answer to a request is what the protocol allows for ``method``: it becomes JSON
+        (no NaN or infinity) and reads back as the method's response type."""
+        entry = types.METHOD_TO_TYPES.get(method)
+        if entry is None or entry[1] is None:
+            return  # a notification: nothing is answered
+        convert = self.server.protocol._converter
+        try:
+            raw = convert.unstructure(got)
+            json.dumps(raw, allow_nan=False)
+            convert.structure({"jsonrpc": "2.0", "id": 1, "result": raw}, entry[1])
+        except Exception as error:
+            raise InvariantError(f"{method}: the answer is not what the protocol allows: {error!r}") from error
 
     async def _settle(self) -> None:
         """Let the scheduled analyses finish."""

@@ -109,7 +109,9 @@ async def test_a_workspace_folder_of_the_whole_disk_is_searched_within_bounds(
     client: LanguageClient, tmp_path: Path
 ) -> None:
     took = await initialize(client, Path("/"))
-    assert took < 10.0, f"initialize took {took:.1f} s"
+    # a hang guard, not a timing: the index stops at its caps in about 5 s even on a busy machine,
+    # where a walk of the whole disk takes many minutes
+    assert took < 60.0, f"initialize took {took:.1f} s"
     await symbols(client, "O9999")  # answered
     await still_works(client, tmp_path)
 

@@ -1,6 +1,6 @@
 """The language server at the edges of the protocol, spoken to over stdio byte for byte (a
 client library cannot send what these tests send): a wrong ``Content-Length`` costs one
-message, not the session; a body that is not JSON, a request whose parameters do not fit and a
+message, or two when it runs into the next one's header, never the session; a body that is not JSON, a request whose parameters do not fit and a
 request after ``shutdown`` are answered with the errors JSON-RPC and LSP prescribe; ``exit``
 without ``shutdown`` ends the process with 1."""
 
@@ -52,10 +52,24 @@ def answer(sent: list[dict[str, Any]], request_id: int) -> dict[str, Any]:
     return found[0]
 
 
-def test_a_body_shorter_than_its_content_length_costs_that_message_only():
+def test_a_content_length_shorter_than_its_body_costs_that_message_only():
     short = b'Content-Length: 5\r\n\r\n{"jsonrpc": "2.0", "id": 5, "method": "shutdown"}'
     code, sent = session(INIT, INITIALIZED, short, SHUTDOWN, EXIT)
     assert answer(sent, 90)["result"] is None  # the stream is in step again
+    assert code == 0
+
+
+def test_a_content_length_longer_than_its_body_costs_that_message_and_the_next_only():
+    # the length runs into the next message's header: both are lost, and the one after is answered
+    body = json.dumps({"jsonrpc": "2.0", "id": 5, "method": "textDocument/hover", "params": HOVER_PARAMS}).encode()
+    overlong = b"Content-Length: %d\r\n\r\n" % (len(body) + 30) + body
+    swallowed = {"jsonrpc": "2.0", "id": 6, "method": "textDocument/hover", "params": HOVER_PARAMS}
+    after = {"jsonrpc": "2.0", "id": 7, "method": "textDocument/hover", "params": HOVER_PARAMS}
+    code, sent = session(INIT, INITIALIZED, overlong, swallowed, after, SHUTDOWN, EXIT)
+    assert any(m.get("error", {}).get("code") == -32700 and m.get("id") is None for m in sent)
+    assert not [m for m in sent if m.get("id") in (5, 6)]
+    assert answer(sent, 7)["error"] == {"code": -32602, "message": "document not open: file:///nowhere/O1.nc"}
+    assert answer(sent, 90)["result"] is None
     assert code == 0
 
 

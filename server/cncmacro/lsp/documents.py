@@ -19,6 +19,7 @@ from pathlib import Path
 from urllib.parse import quote, unquote_to_bytes, urlsplit
 
 from lsprotocol import types
+from pygls.exceptions import JsonRpcInvalidParams
 from pygls.uris import from_fs_path, to_fs_path
 
 from ..analysis.block_memo import BlockMemo
@@ -198,9 +199,11 @@ class Documents:
         return self.by_uri.pop(uri, None)
 
     def get(self, uri: str) -> OpenDocument:
+        """The open document ``uri``; a request about a document the client never opened is
+        answered with an invalid-params error that says so (not an internal error)."""
         doc = self.by_uri.get(uri)
         if doc is None:
-            raise KeyError(f"document not open: {uri}")
+            raise JsonRpcInvalidParams(f"document not open: {uri}")
         return doc
 
     def rechoose_dialects(self) -> None:

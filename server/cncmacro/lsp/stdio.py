@@ -2,8 +2,10 @@
 
 pygls's own loop is replaced here so that no message can break the session:
 
-- a header is found wherever it starts on its line, so a body shorter than its ``Content-Length``
-  said (whose tail runs into the next header) costs that message, not every message after it;
+- a header is found wherever it starts on its line, so a body longer than its ``Content-Length``
+  said (whose tail runs into the next header) costs that message, not every message after it; a
+  ``Content-Length`` longer than its body reads on into the next message, and costs both (a
+  reader of a byte stream cannot know the length was wrong before the bytes arrive);
 - a body longer than ``MAX_BODY`` is read past in pieces, never held, and answered with an error
   (a header met on the way, the length having been wrong, is where reading goes on);
 - a body that is not JSON is answered with a parse error (-32700), and a request whose
