@@ -2,8 +2,9 @@
 ``Dialect.local_subprogram_code`` (docs/semantics.md §5 "M97 local subprogram call"), run on the
 interpreter.
 
-Until the ``haas`` profile exists the switch is tried on ``fanuc`` with it switched on
-(``running.haas_switched``); plain ``fanuc`` must keep doing what it did before.
+The switch is tried on ``fanuc`` with it switched on (``running.haas_switched``), so that the
+rule is seen apart from the rest of the ``haas`` profile; plain ``fanuc`` must keep doing what it
+did before.
 """
 
 from __future__ import annotations

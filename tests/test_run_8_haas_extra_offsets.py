@@ -2,9 +2,9 @@
 switches ``Dialect.extra_offset_code``, ``extra_offset_aliases``, ``extra_offset_variables`` and
 ``extra_offset_count`` (docs/semantics.md §8 "G154 extra work offsets"), run on the interpreter.
 
-Until the ``haas`` profile exists the switches are tried on ``fanuc`` with them switched on
-(``running.haas_switched``), which keeps the offsets at FANUC's numbers (#7001…); plain ``fanuc``
-must keep doing what it did before.
+The switches are tried on ``fanuc`` with them switched on (``running.haas_switched``), which
+keeps the offsets at FANUC's numbers (#7001…), so that each rule is seen apart from the rest of
+the ``haas`` profile; plain ``fanuc`` must keep doing what it did before.
 """
 
 from __future__ import annotations
