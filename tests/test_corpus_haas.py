@@ -104,7 +104,7 @@ def check_probe_vise_wips(r: dict[str, Any]) -> None:
     # O9811 is kept on the control and not in the folder: the call returns at once, its results
     # stay vacant, and the program's own arithmetic moves nothing
     assert (var(r, 5221), var(r, 5222), var(r, 5223)) == (-412.35, -201.6, -355.2)
-    assert var(r, 142) is None and var(r, 101) is None
+    assert var(r, 192) is None and var(r, 101) is None
     assert r["output"] == ["VISE ERRORS X0.0000 Y0.0000 Z0.0000"] and r["messages"] == []
 
 

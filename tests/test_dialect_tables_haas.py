@@ -56,6 +56,25 @@ def test_haas_machine_state_numbers(number: int, words: str) -> None:
     assert words in text(number)
 
 
+@pytest.mark.parametrize(
+    ("number", "axis", "zh"),
+    [(1064, "X", "X轴"), (1065, "Y", "Y轴"), (1066, "Z", "Z轴"), (1067, "A", "A轴"), (1068, "B", "B轴"),
+     (1264, "C", "C轴"), (1265, "U", "U轴"), (1266, "V", "V轴"), (1267, "W", "W轴"), (1268, "T", "T轴")],
+)  # fmt: skip
+def test_axis_loads_1064_to_1068_and_1264_to_1268_are_read_only_percentages(number: int, axis: str, zh: str) -> None:
+    r = row(number)
+    assert (r.access, r.group, r.source, r.default) == ("r", "signals", "store", 0.0)
+    assert text(number) == f"{axis} axis: the highest load seen so far, in percent"
+    assert text(number, "zh").startswith(zh) and "至今的最大负载（百分比）" in text(number, "zh")
+    assert get_dialect("fanuc-0i").system_variable(number) is None
+
+
+def test_no_axis_load_rows_past_the_ten_axes() -> None:
+    assert (row(1063).first, row(1063).last) == (1000, 1063)  # the last discrete input
+    assert HAAS.system_variable(1069) is None and row(1080).first == 1080
+    assert HAAS.system_variable(1263) is None and HAAS.system_variable(1269) is None
+
+
 def test_power_on_and_part_timers_are_read_only_the_switches_are_not() -> None:
     assert [row(n).access for n in (3020, 3023, 3024, 3025, 3027, 3028)] == ["r"] * 6
     assert [row(n).access for n in (3021, 3030, 3031, 3032, 3033, 3901, 3902)] == ["rw"] * 7

@@ -27,9 +27,16 @@ def test_3026_does_not_exist_on_the_0i_alarm_115() -> None:
     assert alarm(lines("#1=#3026", "M30"), FANUC) == (115, 1)
 
 
-@pytest.mark.parametrize("number", [3026, 3020, 3027, 20001, 30001])
+@pytest.mark.parametrize("number", [3026, 3020, 3027, 1066, 1264, 20001, 30001])
 def test_haas_read_only_variables_cannot_be_written_alarm_116(number: int) -> None:
     assert alarm(lines("#1=1", f"#{number}=3", "M30"), HAAS) == (116, 2)
+
+
+@pytest.mark.parametrize("number", [3026, 3020, 3027, 1066, 1264, 20001, 30001])
+def test_the_haas_read_only_variables_do_not_exist_on_the_0i_a_write_is_alarm_115(number: int) -> None:
+    # the 0i's table (fanuc_data) has no #3020-#3027 timers and switches, axis loads, settings or
+    # parameters
+    assert alarm(lines("#1=1", f"#{number}=3", "M30"), FANUC) == (115, 2)
 
 
 def test_haas_settings_and_parameters_read_0_until_preset() -> None:
@@ -57,6 +64,20 @@ def test_haas_has_a_sixth_axis_c_in_the_position_variables() -> None:
     assert alarm(lines("#1=#5006", "M30"), FANUC) == (115, 1)
 
 
+G54_C = lines("#5226=30.", "G90 G54 G00 C10.", "#1=#5026", "#2=#5006", "M30")
+
+
+def test_haas_g54_to_g59_offsets_have_six_axes_5226_is_the_g54_c_offset() -> None:
+    got = final(G54_C, HAAS)
+    assert (got[1], got[2]) == (40.0, 10.0)  # machine C = work C + the G54 C offset
+    assert final(lines("#5326=2.", "#1=#5326", "M30"), HAAS)[1] == 2.0  # G59 C
+
+
+def test_fanuc_0i_work_offsets_have_four_axes_5226_is_alarm_115() -> None:
+    # the 0i's G54-G59 rows are #5221-#5224 ... #5321-#5324 (X Y Z A; docs/profiles.md)
+    assert alarm(G54_C, FANUC) == (115, 1)
+
+
 def test_haas_group_12_reads_the_work_coordinate_system() -> None:
     assert final(lines("G55", "#1=#4012", "M30"), HAAS)[1] == 55.0
     assert final(lines("G55", "#1=#4012", "M30"), FANUC)[1] == 67.0  # the 0i's group 12 is G66/G67
@@ -79,6 +100,11 @@ def test_10000_range_commons_do_not_exist_on_the_0i_alarm_115() -> None:
 
 def test_haas_has_no_commons_200_to_499_alarm_115() -> None:
     assert alarm(lines("#300=1", "M30"), HAAS) == (115, 1)
+
+
+def test_fanuc_0i_has_commons_200_to_499_by_the_option_that_adds_them() -> None:
+    # docs/profiles.md "Common variables": the 0i's #100-#499 with the option, allowed by default
+    assert final(lines("#300=1", "#1=#300", "M30"), FANUC)[1] == 1.0
 
 
 # ---------------------------------------------------------------------------------------------
@@ -122,9 +148,24 @@ def test_haas_g43_h_adds_length_geometry_2001_and_wear_2201() -> None:
     assert (got[1], got[2]) == (109.5, 10.0)  # machine Z = work Z + 100 - 0.5
 
 
+def test_fanuc_0i_g43_reads_2001_as_h1_wear_10001_and_2201_as_h1_geometry_11001() -> None:
+    # the same program moves to the same Z on the 0i, but there #2001 is the short number of the
+    # H1 wear (#10001) and #2201 of the H1 geometry (#11001), not Haas's length and its wear
+    text = lines("#2001=100.", "#2201=-0.5", "G90 G43 H1 G00 Z10.", "#1=#5023", "#2=#10001", "#3=#11001", "M30")
+    got = final(text, FANUC)
+    assert (got[1], got[2], got[3]) == (109.5, 100.0, -0.5)
+    haas = final(text, HAAS)  # on haas #10001 is a common, vacant, and #11001 an NGC input
+    assert haas[1] == 109.5 and 2 not in haas and haas[3] == 0.0
+
+
 def test_haas_commons_at_10001_are_no_tool_offset() -> None:
     got = final(lines("#10001=100.", "G90 G43 H1 G00 Z10.", "#1=#5023", "M30"), HAAS)
     assert got[1] == 10.0
+
+
+def test_fanuc_0i_g43_h1_adds_the_h1_wear_at_10001() -> None:
+    got = final(lines("#10001=100.", "G90 G43 H1 G00 Z10.", "#1=#5023", "M30"), FANUC)
+    assert got[1] == 110.0  # offset memory C: #10001 is the H1 wear (docs/semantics.md §8)
 
 
 def test_haas_g10_l10_and_l11_write_2001_and_2201() -> None:
