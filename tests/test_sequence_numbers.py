@@ -117,6 +117,17 @@ def test_a_computed_goto_refuses_and_names_its_line():
     assert not kept.changes and kept.kept == [3]
 
 
+def test_a_gsk_h_code_jump_whose_p_is_a_variable_refuses_and_names_its_line():
+    # G65 H81 P#1 Q#100 R5 jumps to the N label whose number #1 holds when #100 equals 5.
+    text = lines("O1000", "#1=20", "#100=5", "G65 H81 P#1 Q#100 R5", "#2=1", "N20 #3=3", "M30")
+    assert 2 not in final(text, "gsk980tdi") and final(text, "gsk980tdi")[3] == 3
+    plan = renumber(_program(text), get_dialect("gsk980tdi"), step=10)
+    assert not plan.changes and [b.line for b in plan.blockers] == [3]
+    assert "line 4" in plan.blockers[0].message and "computed" in plan.blockers[0].message
+    kept = renumber(_program(text), get_dialect("gsk980tdi"), step=10, keep_computed=True)
+    assert not kept.changes and kept.kept == [5]
+
+
 def test_a_computed_goto_in_another_program_does_not_refuse():
     text = lines("O1000", "N5 M98 P2000", "M30", "O2000", "#1=20", "GOTO [#1+10]", "N30 M99")
     plan = renumber(_program(text), get_dialect("fanuc"), step=10, lines=range(0, 3))

@@ -8,7 +8,10 @@ import subprocess
 import sys
 from pathlib import Path
 
-import tomllib
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # the same reader the package uses on 3.10 (library/machine_file.py)
+    import tomli as tomllib
 
 import cncmacro
 

@@ -1,4 +1,4 @@
-// Function breakpoints on codes (M06, T, M01, G01), the toolpath the paused run shows (the moves
+// Function breakpoints on codes (M06, T, M00, M01, G01, G81), the toolpath the paused run shows (the moves
 // run so far and the move of the block it stands on) and "run to here" on a move, forward and
 // back: `cncmacro dap` driven through a real DAP client.
 'use strict';
@@ -19,6 +19,7 @@ afterEach(async () => {
 });
 
 const PROGRAM = program('tool_changes.nc');
+const STOP_AND_DRILL = program('stop_and_drill.nc');
 
 async function continueTo() {
   const stopped = dc.waitForEvent('stopped');
@@ -66,6 +67,28 @@ describe('breaking on codes', () => {
     await dc.start();
     await dc.begin({ program: PROGRAM }, { functionBreakpoints: ['G1'] });
     assert.equal((await dc.top()).line, 6);
+  });
+
+  test('M00 stops before the program stop, which then pauses as it runs', async () => {
+    const { event } = await dc.begin({ program: STOP_AND_DRILL }, { functionBreakpoints: ['M00'] });
+    assert.equal(event.body.reason, 'function breakpoint');
+    assert.equal((await dc.top()).line, 7);
+    const paused = await continueTo();
+    assert.equal(paused.body.reason, 'pause');
+    assert.match(paused.body.description, /M00 program stop/);
+    assert.equal((await dc.top()).line, 8);
+    assert.match((await continueTo()).body.description, /program end \(M30\)/);
+  });
+
+  test('G81 stops before each block that holds it, not at a hole the modal cycle repeats', async () => {
+    const { event } = await dc.begin({ program: STOP_AND_DRILL }, { functionBreakpoints: ['G81'] });
+    assert.equal(event.body.reason, 'function breakpoint');
+    assert.equal((await dc.top()).line, 4);
+    assert.equal((await continueTo()).body.reason, 'pause'); // the M00 of line 7, not the X20. of line 5
+    assert.equal((await continueTo()).body.reason, 'function breakpoint');
+    assert.equal((await dc.top()).line, 9);
+    assert.equal(await dc.value('#1'), '1');
+    assert.match((await continueTo()).body.description, /program end \(M30\)/);
   });
 
   test('a name that is no code, or an M code with a decimal point, is unverified with the reason', async () => {

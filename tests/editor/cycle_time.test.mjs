@@ -60,3 +60,7 @@ test("the toolpath view's legend shows the run's totals", { timeout: STEP }, asy
   assert.equal((await totals.innerText()).replace(/\u00a0/g, ' '), '≈ 33 s · 359 mm cut · 292 mm rapid');
   await shot('3-toolpath-legend');
 });
+
+test('the editor tried no host but this machine: no gallery, telemetry or update check', { timeout: STEP }, async () => {
+  assert.deepEqual(server.outsideHostAttempts(), []);
+});

@@ -105,3 +105,7 @@ test('paused, the toolpath highlights the current move; step back moves it back;
   await view.locator('#status', { hasText: 'Completed' }).waitFor();
   assert.equal(await current.count(), 0);
 });
+
+test('the editor tried no host but this machine: no gallery, telemetry or update check', { timeout: STEP }, async () => {
+  assert.deepEqual(server.outsideHostAttempts(), []);
+});

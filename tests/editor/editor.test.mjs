@@ -34,21 +34,38 @@ async function shot(name, { settled = false } = {}) {
 const openFile = (name) => openIn(page, name);
 const tokenColour = (text) => colourIn(page, text);
 
+/** The picture a failing test leaves, named after the test. */
+const failedPicture = (name) => `failed-${name.replace(/[^A-Za-z0-9]+/g, '-').slice(0, 50)}.png`;
+const failedPictures = new Set();
+
 /** A test that, when it fails, leaves a picture of the workbench as it was. */
 function test(name, options, fn) {
+  failedPictures.add(failedPicture(name));
   nodeTest(name, options, async (t) => {
     try {
       await fn(t);
     } catch (e) {
-      const file = `failed-${name.replace(/[^A-Za-z0-9]+/g, '-').slice(0, 50)}.png`;
-      await page?.screenshot({ path: path.join(OUTPUT, file) }).catch(() => undefined);
+      await page?.screenshot({ path: path.join(OUTPUT, failedPicture(name)) }).catch(() => undefined);
       throw e;
     }
   });
 }
 
+/**
+ * This file's pictures of an earlier run: its screenshots, whose names start with their number
+ * (1-colours-light.png), and its tests' failure pictures. The other editor test files name
+ * theirs otherwise (cycle-, debug-, zh-, huge-, seq-, probing-) and keep them: in a run of the
+ * whole folder they run first.
+ */
+function removeOwnPictures() {
+  if (!fs.existsSync(OUTPUT)) return;
+  for (const file of fs.readdirSync(OUTPUT)) {
+    if (/^[0-9]+[a-z]?-.*\.png$/.test(file) || failedPictures.has(file)) fs.rmSync(path.join(OUTPUT, file), { force: true });
+  }
+}
+
 before(async () => {
-  fs.rmSync(OUTPUT, { recursive: true, force: true });
+  removeOwnPictures();
   ({ server, page } = await startWorkbench({ timeout: WAIT }));
 }, { timeout: 180000 });
 

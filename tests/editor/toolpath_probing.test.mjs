@@ -82,3 +82,7 @@ test('Show Toolpath draws the probe moves of a bore-measuring macro and a dot at
     throw e;
   }
 });
+
+test('the editor tried no host but this machine: no gallery, telemetry or update check', { timeout: 90000 }, async () => {
+  assert.deepEqual(server.outsideHostAttempts(), []);
+});

@@ -1,5 +1,5 @@
 """Call hierarchy, end to end: a program's callers and callees across the workspace, by every
-kind of call (``G65``, ``M98``, ``M198``, the machine file's call codes ``G100`` and ``M60``), and
+kind of call (``G65``, the modal ``G66``, ``M98``, ``M198``, the machine file's call codes ``G100`` and ``M60``), and
 Haas's local ``M97 P`` call of a label of the program itself."""
 
 from __future__ import annotations
@@ -78,3 +78,22 @@ async def test_a_haas_m97_call_enters_a_label_of_its_own_program(haas_en: Langua
     assert out is not None and [(_where(c.to), len(c.from_ranges)) for c in out] == [
         (("N100 (O1000)", "LOCAL.nc", 4), 2)
     ]
+
+
+async def test_a_g66_modal_call_is_a_call_of_its_program(fanuc_en: LanguageClient) -> None:
+    """``G66 P9100`` calls O9100 after each move until ``G67``: one call, on the G66 line."""
+    text = "O0005 (MODAL)\nG66 P9100 X10. Z-2.\nX20.\nX30.\nG67\nM30\n"
+    uri = open_file(fanuc_en, FANUC / "MODAL.nc", text)
+    [callee] = await _prepare(fanuc_en, uri, 1, 6)  # the P9100 of G66
+    [main] = await _prepare(fanuc_en, uri, 5, 0)  # M30: the program the cursor is in
+    out = await fanuc_en.call_hierarchy_outgoing_calls_async(types.CallHierarchyOutgoingCallsParams(main))
+    incoming = await fanuc_en.call_hierarchy_incoming_calls_async(types.CallHierarchyIncomingCallsParams(callee))
+    close_file(fanuc_en, uri)
+    assert _where(callee) == ("O9100", "O9100.nc", 0)
+    assert out is not None
+    assert [(_where(c.to), [(r.start.line, r.start.character) for r in c.from_ranges]) for c in out] == [
+        (("O9100", "O9100.nc", 0), [(1, 4)])
+    ]
+    assert incoming is not None
+    callers = sorted((_where(c.from_), [r.start.line for r in c.from_ranges]) for c in incoming)
+    assert callers == [(("O0001", "MAIN.nc", 0), [2, 11, 13]), (("O0005", "MODAL.nc", 0), [1])]

@@ -165,6 +165,22 @@ async def test_references_of_n100_include_the_m97_and_rename_rewrites_it(
     assert await references(fanuc_en, as_fanuc(fanuc_en)) == [(12, 0)]
 
 
+async def test_highlight_on_m97_p100_marks_the_label_not_a_program(haas_en: LanguageClient) -> None:
+    """``M97 P100`` enters the label N100 of its own program: the label and the call are marked,
+    as for a jump; ``G65 P9832`` names a program, marked alone (no O9832 in the file)."""
+    uri = open_file(haas_en, PROGRAM)
+
+    async def marks(at: tuple[int, int]) -> list[tuple[int, int, int, types.DocumentHighlightKind | None]]:
+        got = await haas_en.text_document_document_highlight_async(
+            types.DocumentHighlightParams(types.TextDocumentIdentifier(uri), types.Position(*at))
+        )
+        return [(h.range.start.line, h.range.start.character, h.range.end.character, h.kind) for h in got or []]
+
+    read, write = types.DocumentHighlightKind.Read, types.DocumentHighlightKind.Write
+    assert await marks(M97_P100) == [(8, 5, 8, read), (12, 0, 4, write)]
+    assert await marks(G65_P9832) == [(9, 4, 9, read)]
+
+
 async def test_g65_p9832_is_a_probing_macro_on_the_control(
     haas_en: LanguageClient, haas_zh: LanguageClient, fanuc_en: LanguageClient
 ) -> None:

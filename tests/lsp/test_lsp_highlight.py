@@ -1,6 +1,7 @@
 """Document highlight, end to end: the cursor on a variable marks its writes and reads in the
 file (a local only within its O program), on an N label or a jump the label and every jump to
-it; elsewhere nothing is marked."""
+it, on an O header or a call's program the header and every call to that program; elsewhere
+nothing is marked."""
 
 from __future__ import annotations
 
@@ -22,6 +23,22 @@ M30
 O0002
 #1=#100+1
 #100=#1
+M99
+"""
+
+CALLS = """O0001
+G65 P9100 X10.
+G66 P9100 Z-2.
+X5.
+G67
+M98 P9100
+M98 P30040
+M98 P0040
+M30
+O9100
+#1=#24
+M99
+O0040
 M99
 """
 
@@ -68,3 +85,37 @@ async def test_nothing_is_marked_on_a_code(fanuc_en: LanguageClient) -> None:
     result = await _highlights(fanuc_en, uri, 14, 1)  # M30
     close_file(fanuc_en, uri)
     assert not result
+
+
+async def test_a_program_header_marks_itself_and_every_call_to_it(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "CALLS.nc", CALLS)
+    on_header = await _highlights(fanuc_en, uri, 9, 2)  # O9100
+    close_file(fanuc_en, uri)
+    assert on_header == [(1, 4, 9, READ), (2, 4, 9, READ), (5, 4, 9, READ), (9, 0, 5, WRITE)]
+
+
+async def test_a_call_marks_the_program_it_names_and_the_other_calls_to_it(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "CALLS.nc", CALLS)
+    on_g65 = await _highlights(fanuc_en, uri, 1, 6)  # G65 P9100
+    on_g66 = await _highlights(fanuc_en, uri, 2, 6)  # G66 P9100 (a modal call)
+    on_m98 = await _highlights(fanuc_en, uri, 5, 6)  # M98 P9100
+    close_file(fanuc_en, uri)
+    assert on_g65 == on_g66 == on_m98 == [(1, 4, 9, READ), (2, 4, 9, READ), (5, 4, 9, READ), (9, 0, 5, WRITE)]
+
+
+async def test_an_m98_p_with_a_count_marks_the_program_of_its_last_four_digits(fanuc_en: LanguageClient) -> None:
+    """``M98 P30040`` calls O0040 three times (fanuc-0i: the last four digits name the program)."""
+    uri = open_file(fanuc_en, FANUC / "CALLS.nc", CALLS)
+    on_count = await _highlights(fanuc_en, uri, 6, 6)  # M98 P30040
+    on_header = await _highlights(fanuc_en, uri, 12, 2)  # O0040
+    close_file(fanuc_en, uri)
+    assert on_count == on_header == [(6, 4, 10, READ), (7, 4, 9, READ), (12, 0, 5, WRITE)]
+
+
+async def test_nothing_is_marked_on_a_call_argument_or_a_code_of_no_call(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "CALLS.nc", CALLS)
+    on_argument = await _highlights(fanuc_en, uri, 1, 11)  # X10. of G65 P9100 X10.
+    on_g67 = await _highlights(fanuc_en, uri, 4, 1)  # G67
+    on_m30 = await _highlights(fanuc_en, uri, 8, 1)  # M30
+    close_file(fanuc_en, uri)
+    assert not on_argument and not on_g67 and not on_m30

@@ -10,7 +10,7 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, HERE, close_file, open_file, session_fixture
+from .lsp_session import FANUC, GSK, HERE, close_file, open_file, session_fixture
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
@@ -99,6 +99,17 @@ async def test_a_computed_goto_asks_and_keeping_leaves_its_program_alone(fanuc_e
     assert _applied(text, seen["edits"][0]).split("\n")[1:7] == [
         "N10 M98 P0002", "N20 M30", "O0002", "#1=20", "GOTO #1", "N20 #2=1",
     ]  # fmt: skip
+
+
+async def test_a_gsk_h_code_jump_to_a_variable_label_asks_before_renumbering(gsk_en: LanguageClient) -> None:
+    """``G65 H81 P#1 Q#100 R5`` (gsk980tdi macro A) jumps to the label whose number #1 holds."""
+    text = "O0001\n#1=20\n#100=5\nG65 H81 P#1 Q#100 R5\n#2=1\nN20 #3=3\nM30\n"
+    uri = open_file(gsk_en, GSK / "computed_h.CNC", text)
+    seen = _editor(gsk_en, answer=None)
+    refused = await _run(gsk_en, RENUMBER, uri=uri, step=10)
+    close_file(gsk_en, uri)
+    assert not refused["applied"] and refused["refused"][0]["line"] == 4 and not seen["edits"]
+    assert "line 4" in seen["questions"][0].message and "computed" in seen["questions"][0].message
 
 
 async def test_a_label_an_m99_p_of_another_file_returns_to_is_kept(labels_en: LanguageClient) -> None:

@@ -8,12 +8,13 @@ local call (Haas ``M97 P n``) names a label of the program itself and is navigat
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Mapping
+import re
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 
 from ..dialects.dialect import Dialect
 from ..library.machine_file import CallCode
-from ..machine.calls import recognise_call
+from ..machine.calls import call_word_pattern, recognise_call
 from ..syntax.nodes import Block, Word
 
 
@@ -51,3 +52,22 @@ def calls_on(blocks: list[Block], lines: Iterable[int], dialect: Dialect,
         site = call_site(b, dialect, calls)
         if site is not None:
             yield i, b, site
+
+
+def calls_of_program(
+    texts: Sequence[str],
+    block_at: Callable[[int], Block | None],
+    number: int,
+    dialect: Dialect,
+    calls: Mapping[str, CallCode] | None = None,
+) -> Iterator[tuple[int, CallSite]]:
+    """(line, call) for each line of a document (``texts``, its blocks by ``block_at``) that calls
+    program ``number``; only the lines with a call word (``call_word_pattern``) are parsed."""
+    word = re.compile(call_word_pattern(calls or {})).search
+    for i, text in enumerate(texts):
+        if word(text) is None:
+            continue
+        b = block_at(i)
+        site = None if b is None else call_site(b, dialect, calls)
+        if site is not None and site.number == number:
+            yield i, site

@@ -11,6 +11,7 @@ label and every jump to it.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 from lsprotocol import types
@@ -75,6 +76,19 @@ def label_under(cur: Cursor) -> tuple[int, int, int, str] | None:
     return None
 
 
+def program_under(cur: Cursor, calls: Mapping[str, CallCode] | None) -> tuple[int, bool] | None:
+    """(program number, whether a call names it) when the cursor is on an O header's number or
+    on the word of a call that names its program by number (``call_sites.call_site``: ``M98
+    P30040`` names O0040); ``calls`` are the machine file's call codes."""
+    b = cur.block
+    if b.program is not None and b.program_span and b.program_span[0] <= cur.column <= b.program_span[1]:
+        return b.program, False
+    site = call_site(b, cur.doc.dialect, calls)
+    if site is not None and site.p.start <= cur.column <= site.p.end and site.number is not None:
+        return site.number, True
+    return None
+
+
 def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | None:
     encoding = ls.documents.encoding
     hit = label_under(cur)
@@ -117,14 +131,14 @@ def find_references(ls: CncMacroServer, cur: Cursor, include_declaration: bool) 
     hit = label_under(cur)
     if hit is not None:
         return label_references(cur, hit[0], include_declaration, encoding)
-    b = cur.block
-    if b.program is not None and b.program_span and b.program_span[0] <= cur.column <= b.program_span[1]:
-        return program_references(ls, cur.doc.path, b.program, include_declaration, cur)
-    site = call_site(b, cur.doc.dialect, machine_calls(ls, cur.doc.path))
-    if site is not None and site.p.start <= cur.column <= site.p.end and site.number is not None:
-        found = ls.index.find_program(cur.doc, site.number, None)
-        return program_references(ls, found.file.path if found else None, site.number, include_declaration, cur)
-    for node in reversed(nodes_at(b, cur.column)):
+    program = program_under(cur, machine_calls(ls, cur.doc.path))
+    if program is not None:
+        number, called = program
+        if not called:
+            return program_references(ls, cur.doc.path, number, include_declaration, cur)
+        found = ls.index.find_program(cur.doc, number, None)
+        return program_references(ls, found.file.path if found else None, number, include_declaration, cur)
+    for node in reversed(nodes_at(cur.block, cur.column)):
         if isinstance(node, Var):
             return variable_references(ls, cur, node.number, include_declaration)
     return None
