@@ -14,7 +14,7 @@ import pytest
 from cncmacro.dialects import fanuc_data, get_dialect, normalise_dialect
 from cncmacro.dialects.describe import describe_system_variable, variable_class
 from cncmacro.dialects.profiles import haas as data
-from cncmacro.dialects.tables import MODAL_GROUPS, CodeDoc, SystemVariable
+from cncmacro.dialects.tables import SystemVariable
 
 CJK = re.compile(r"[\u4e00-\u9fff]")
 HAAS = get_dialect("haas")
@@ -152,19 +152,6 @@ def test_haas_switches() -> None:
     assert (HAAS.program_digits, HAAS.m98_program_digits) == (5, 5)
     assert HAAS.if_without_then and not HAAS.keyword_abbreviations and not HAAS.word_format_alarms
     assert HAAS.macro_alarm_base == 3000
-
-
-@pytest.mark.parametrize("table", ["G_CODES", "M_CODES"])
-def test_codes_are_unique_and_well_formed(table: str) -> None:
-    codes: tuple[CodeDoc, ...] = getattr(data, table)
-    names = [c.code for c in codes]
-    assert len(names) == len(set(names)), [n for n in names if names.count(n) > 1]
-    for c in codes:
-        assert re.fullmatch(table[0] + r"\d{2,3}", c.code), c.code
-        assert c.group == "" or c.group in MODAL_GROUPS, c.code
-        assert c.en.strip() and CJK.search(c.zh) and not CJK.search(c.en), c.code
-        if table == "M_CODES":
-            assert c.group == "", c.code
 
 
 HAAS_G = (

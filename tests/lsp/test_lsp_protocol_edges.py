@@ -1,8 +1,8 @@
 """The language server at the edges of the protocol, spoken to over stdio byte for byte (a
 client library cannot send what these tests send): a wrong ``Content-Length`` costs one
-message, or two when it runs into the next one's header, never the session; a body that is not JSON, a request whose parameters do not fit and a
-request after ``shutdown`` are answered with the errors JSON-RPC and LSP prescribe; ``exit``
-without ``shutdown`` ends the process with 1."""
+message, or two when it runs into the next one's header, never the session; a body that is not
+JSON, a request whose parameters do not fit and a request after ``shutdown`` are answered with
+the errors JSON-RPC and LSP prescribe; ``exit`` without ``shutdown`` ends the process with 1."""
 
 from __future__ import annotations
 
