@@ -65,6 +65,7 @@ else:  # the same reader, from PyPI, before it joined the standard library
 from ..bilingual import Detail, detail
 from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect
 from ..dialects.tables import SystemVariable
+from ..dialects.timing import TimingChanges
 from .files import SkippedFileError, read_bytes
 from .skip_model import SkipModel, read_skip
 from .timing_settings import timing_changes
@@ -126,7 +127,7 @@ class MachineSettings:
     skip: SkipModel = field(default_factory=SkipModel)
     severity: dict[str, str] = field(default_factory=dict)
     folder: str | None = None
-    timing: dict[str, object] = field(default_factory=dict)  # [timing]: changes to the profile's (timing_settings.py)
+    timing: TimingChanges = field(default_factory=TimingChanges)  # [timing]: changes to the profile's
 
     def with_presets(self, presets: dict[int, float]) -> MachineSettings:
         """These settings with more preset variables (later ones win)."""
@@ -174,7 +175,7 @@ class _SettingsFields(TypedDict, total=False):
     skip: SkipModel
     severity: dict[str, str]
     folder: str | None
-    timing: dict[str, object]
+    timing: TimingChanges
 
 
 # what makes the error for a key of a mapping: the key and what is wrong with its value
