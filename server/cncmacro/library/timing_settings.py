@@ -23,6 +23,7 @@ from collections.abc import Callable
 
 from ..bilingual import Detail, detail
 from ..dialects.timing import TimingChanges
+from .toml_numbers import finite_number
 
 _KEYS = ("rapid", "tool_change", "tool_change_code", "dwell_p", "max_spindle_speed", "m_codes")
 _DWELL_UNITS = {"milliseconds": 0.001, "seconds": 1.0}
@@ -30,13 +31,8 @@ _DWELL_UNITS = {"milliseconds": 0.001, "seconds": 1.0}
 
 def _number(v: object) -> float | None:
     """``v`` as a finite number at least 0, or None."""
-    if isinstance(v, bool) or not isinstance(v, (int, float)):
-        return None
-    try:
-        f = float(v)
-    except OverflowError:
-        return None
-    return f if 0.0 <= f < float("inf") else None
+    f = finite_number(v)
+    return f if f is not None and f >= 0.0 else None
 
 
 def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> TimingChanges:
