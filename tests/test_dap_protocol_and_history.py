@@ -143,3 +143,19 @@ def test_a_session_answers_unknown_and_early_requests_with_failures():
     assert "unknown request 'fly'" in replies[0]["message"]
     assert "launch one first" in replies[1]["message"]
     assert "there is no file /no/such/file.nc" in replies[2]["message"]
+
+
+def test_each_breakpoint_request_refuses_breakpoints_that_are_not_a_list_of_objects():
+    out = io.BytesIO()
+    session = Session(MessageWriter(out))
+    requests = [
+        ("setBreakpoints", {"source": {"path": "/w/O1000.nc"}, "breakpoints": [3]}),
+        ("setFunctionBreakpoints", {"breakpoints": {"name": "O1000"}}),
+        ("setDataBreakpoints", {"breakpoints": ["#100"]}),
+    ]
+    for seq, (command, arguments) in enumerate(requests, 1):
+        message = {"seq": seq, "type": "request", "command": command, "arguments": arguments}
+        session.handle(read_message(io.BytesIO(frame(message))))
+    replies = [json.loads(part[: part.rfind(b"}") + 1]) for part in out.getvalue().split(b"\r\n\r\n")[1:]]
+    assert [(r["command"], r["success"]) for r in replies] == [(c, False) for c, _ in requests]
+    assert all("'breakpoints' must be a list of objects" in r["message"] for r in replies)

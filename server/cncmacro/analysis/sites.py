@@ -8,6 +8,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass
+from typing import Protocol
 
 from ..syntax.nodes import Assign, Block, Expr, Goto, If, Number, Var
 from ..syntax.walk import iter_nodes
@@ -120,10 +121,25 @@ def word_at(line: str, column: int) -> tuple[str, int, int] | None:
     return None
 
 
-def label_jumps(doc: object, start: int, end: int, label: int) -> Iterator[tuple[int, JumpSite]]:
+class JumpIndex(Protocol):
+    """What ``label_jumps`` asks of a document's site index (``site_index.SiteIndex``)."""
+
+    def jumps_to(self, label: int, start: int = 0, end: int | None = None) -> list[int]: ...
+
+    def sites_at(self, line: int) -> tuple[tuple[JumpSite, ...], tuple[VariableSite, ...]]: ...
+
+
+class IndexedDocument(Protocol):
+    """An open document with its site index (the language server's ``OpenDocument``)."""
+
+    @property
+    def sites(self) -> JumpIndex: ...
+
+
+def label_jumps(doc: IndexedDocument, start: int, end: int, label: int) -> Iterator[tuple[int, JumpSite]]:
     """(line, jump) for every jump to ``label`` on lines ``start`` to ``end`` of an open
     document (read from its site index: the lines that jump there, not every line)."""
-    sites = doc.sites  # type: ignore[attr-defined]
+    sites = doc.sites
     for i in sites.jumps_to(label, start, end):
         for j in sites.sites_at(i)[0]:
             if j.label == label:

@@ -157,11 +157,11 @@ class WorkspaceAnalysis:
         *,
         settings: MachineSettings | None = None,
         dialect: str | None = None,
-        search_paths: list[str] = (),  # type: ignore[assignment]
+        search_paths: Sequence[str] = (),
         locale: str = "en",
         max_blocks: int | None = None,
         severities: dict[str, str] | None = None,
-        workspace_folders: list[str] = (),  # type: ignore[assignment]
+        workspace_folders: Sequence[str] = (),
         files: FileCache | None = None,
         memo: BlockMemo | None = None,
     ) -> None:
@@ -682,8 +682,10 @@ class WorkspaceAnalysis:
         out: list[Diagnostic] = []
         found = self._unreached.ranges(self.runs, self._loaded, sorted(shown))
         for file, ranges in found.items():
-            lines = self._loaded(file).lines  # type: ignore[union-attr]
-            out += [self._unreached_diagnostic(file, lines, first, last) for first, last in ranges]
+            loaded = self._loaded(file)
+            if loaded is None:  # ``ranges`` found it loaded: only a file gone since then
+                continue
+            out += [self._unreached_diagnostic(file, loaded.lines, first, last) for first, last in ranges]
         return out
 
     def _loaded(self, file: str) -> LoadedFile | None:

@@ -196,15 +196,12 @@ class Session:
         specs = args.get("breakpoints")
         if specs is None:
             specs = [{"line": n} for n in args.get("lines") or []]
-        if not isinstance(specs, list) or not all(isinstance(s, dict) for s in specs):
-            raise RequestFailed("'breakpoints' must be a list of objects")
+        specs = _specs(specs)
         made = self.breakpoints.set_lines(path, [_asked(s, _line(s.get("line"))) for s in specs])
         return {"breakpoints": [_line_json(bp) for bp in made]}
 
     def on_setFunctionBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
-        specs = args.get("breakpoints") or []
-        if not isinstance(specs, list) or not all(isinstance(s, dict) for s in specs):
-            raise RequestFailed("'breakpoints' must be a list of objects")
+        specs = _specs(args.get("breakpoints") or [])
         made = self.breakpoints.set_functions([_asked(s, str(s.get("name", ""))) for s in specs])
         return {"breakpoints": [_json(bp) for bp in made]}
 
@@ -225,9 +222,7 @@ class Session:
                 "canPersist": True}  # fmt: skip
 
     def on_setDataBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
-        specs = args.get("breakpoints") or []
-        if not isinstance(specs, list) or not all(isinstance(s, dict) for s in specs):
-            raise RequestFailed("'breakpoints' must be a list of objects")
+        specs = _specs(args.get("breakpoints") or [])
         made = self.breakpoints.set_data([_asked(s, str(s.get("dataId", ""))) for s in specs])
         return {"breakpoints": [_json(bp) for bp in made]}
 
@@ -498,6 +493,13 @@ class Session:
 def _line(line: Any) -> int | None:
     """The 0-based line of a DAP SourceBreakpoint's ``line`` (1-based), None when it is no number."""
     return line - 1 if isinstance(line, int) and not isinstance(line, bool) else None
+
+
+def _specs(specs: object) -> list[dict[str, Any]]:
+    """A request's ``breakpoints``: a list of objects, else the request fails."""
+    if not isinstance(specs, list) or not all(isinstance(s, dict) for s in specs):
+        raise RequestFailed("'breakpoints' must be a list of objects")
+    return specs
 
 
 def _asked(spec: dict[str, Any], place: int | str | None) -> Asked:

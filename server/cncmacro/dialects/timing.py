@@ -13,6 +13,18 @@ How the interpreter uses them is ``machine/cycle_time.py``.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from typing import TypedDict
+
+
+class TimingChanges(TypedDict, total=False):
+    """A machine file's changes to a profile's ``Timing``: its fields, each optional."""
+
+    rapid: dict[str, float]
+    tool_change_seconds: float
+    tool_change_code: str
+    m_code_seconds: dict[float, float]
+    dwell_p_unit: float
+    max_spindle_speed: float
 
 
 @dataclass(frozen=True)
@@ -37,12 +49,12 @@ class Timing:
         """The rapid traverse rate of ``axis`` (mm/min or degrees/min)."""
         return self.rapid.get(axis, self.rapid_default)
 
-    def changed(self, changes: dict[str, object]) -> Timing:
+    def changed(self, changes: TimingChanges) -> Timing:
         """This timing with a machine file's ``[timing]`` values over it: ``rapid`` and
         ``m_code_seconds`` are merged axis by axis and code by code, the others replace."""
-        merged: dict[str, object] = dict(changes)
+        merged = changes.copy()
         if "rapid" in changes:
-            merged["rapid"] = {**self.rapid, **changes["rapid"]}  # type: ignore[dict-item]
+            merged["rapid"] = {**self.rapid, **changes["rapid"]}
         if "m_code_seconds" in changes:
-            merged["m_code_seconds"] = {**self.m_code_seconds, **changes["m_code_seconds"]}  # type: ignore[dict-item]
-        return replace(self, **merged)  # type: ignore[arg-type]
+            merged["m_code_seconds"] = {**self.m_code_seconds, **changes["m_code_seconds"]}
+        return replace(self, **merged)

@@ -65,9 +65,11 @@ else:  # the same reader, from PyPI, before it joined the standard library
 from ..bilingual import Detail, detail
 from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect
 from ..dialects.tables import SystemVariable
+from ..dialects.timing import TimingChanges
 from .files import SkippedFileError, read_bytes
 from .skip_model import SkipModel, read_skip
 from .timing_settings import timing_changes
+from .toml_numbers import finite_number
 
 MACHINE_FILE_NAME = ".cncmacro.toml"
 PERSISTENT_FILE_NAME = ".cncmacro-vars.json"
@@ -126,7 +128,7 @@ class MachineSettings:
     skip: SkipModel = field(default_factory=SkipModel)
     severity: dict[str, str] = field(default_factory=dict)
     folder: str | None = None
-    timing: dict[str, object] = field(default_factory=dict)  # [timing]: changes to the profile's (timing_settings.py)
+    timing: TimingChanges = field(default_factory=TimingChanges)  # [timing]: changes to the profile's
 
     def with_presets(self, presets: dict[int, float]) -> MachineSettings:
         """These settings with more preset variables (later ones win)."""
@@ -174,7 +176,7 @@ class _SettingsFields(TypedDict, total=False):
     skip: SkipModel
     severity: dict[str, str]
     folder: str | None
-    timing: dict[str, object]
+    timing: TimingChanges
 
 
 # what makes the error for a key of a mapping: the key and what is wrong with its value
@@ -467,9 +469,10 @@ def _variables(table: object, fail: _Fail) -> dict[int, float]:
         key = str(k).lstrip("#")
         if not _digits(key) or len(key) > 8:
             raise fail(f"variables.{k}", detail("is not a variable number", "不是变量号"))
-        if not _finite(v):
+        number = finite_number(v)  # a number a variable can hold
+        if number is None:
             raise fail(f"variables.{k}", detail("must be a finite number", "必须是有限的数值"))
-        out[int(key)] = float(v)
+        out[int(key)] = number
     return out
 
 
@@ -517,16 +520,6 @@ def _severity(table: object, fail: _Fail) -> dict[str, str]:
 def _digits(text: str) -> bool:
     """Whether ``text`` is ASCII digits (``str.isdigit`` takes ``²`` and ``٣`` too)."""
     return text.isascii() and text.isdigit()
-
-
-def _finite(value: object) -> bool:
-    """Whether ``value`` is a number a variable can hold (not a bool, not inf or nan)."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        return False
-    try:
-        return abs(float(value)) < float("inf")
-    except OverflowError:
-        return False
 
 
 def _code_key(code: str) -> str:

@@ -21,6 +21,7 @@ from typing import Literal
 
 from ..bilingual import Detail, detail
 from ..dialects.registry import all_profiles
+from .toml_numbers import finite_number
 
 CircleKind = Literal["bore", "boss"]
 SHAPES: tuple[CircleKind, ...] = ("bore", "boss")
@@ -105,21 +106,10 @@ def read_skip(value: object, fail: _Fail) -> SkipModel:
     return SkipModel(tuple(planes), tuple(circles), contacts)
 
 
-def _number(value: object) -> float | None:
-    """``value`` as a finite float, or None (a bool, text, inf or nan is not a position)."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        return None
-    try:
-        v = float(value)
-    except OverflowError:
-        return None
-    return v if abs(v) < float("inf") else None
-
-
 def _positions(value: object, key: str, fail: _Fail) -> list[float]:
     """A plane's position or a list of them (``-12.5``, ``[-40, 40]``)."""
     items = value if isinstance(value, list) else [value]
-    out = [_number(v) for v in items]
+    out = [finite_number(v) for v in items]
     if not items or any(v is None for v in out):
         raise fail(key, detail("must be a position or a list of positions (finite numbers), e.g. -12.5 or [-40, 40]",
                                "必须是位置或位置的列表（有限的数值），如 -12.5 或 [-40, 40]"))  # fmt: skip
@@ -137,7 +127,7 @@ def _circle(kind: CircleKind, table: object, key: str, k: int, several: bool, fa
     centre: list[tuple[str, float]] = []
     diameter: float | None = None
     for name, v in table.items():
-        number = _number(v)
+        number = finite_number(v)
         if name == "diameter":
             diameter = number
             if number is None or number <= 0:
@@ -165,7 +155,7 @@ def _contacts(value: object, fail: _Fail) -> tuple[Contact, ...]:
         point: list[tuple[str, float]] = []
         if isinstance(item, dict) and item:
             for name, v in item.items():
-                number = _number(v)
+                number = finite_number(v)
                 if str(name).upper() not in AXIS_LETTERS or len(str(name)) != 1 or number is None:
                     point = []
                     break

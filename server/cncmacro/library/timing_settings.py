@@ -22,6 +22,8 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from ..bilingual import Detail, detail
+from ..dialects.timing import TimingChanges
+from .toml_numbers import finite_number
 
 _KEYS = ("rapid", "tool_change", "tool_change_code", "dwell_p", "max_spindle_speed", "m_codes")
 _DWELL_UNITS = {"milliseconds": 0.001, "seconds": 1.0}
@@ -29,20 +31,15 @@ _DWELL_UNITS = {"milliseconds": 0.001, "seconds": 1.0}
 
 def _number(v: object) -> float | None:
     """``v`` as a finite number at least 0, or None."""
-    if isinstance(v, bool) or not isinstance(v, (int, float)):
-        return None
-    try:
-        f = float(v)
-    except OverflowError:
-        return None
-    return f if 0.0 <= f < float("inf") else None
+    f = finite_number(v)
+    return f if f is not None and f >= 0.0 else None
 
 
-def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> dict[str, object]:
+def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> TimingChanges:
     """The changes ``[timing]`` makes to the profile's ``Timing`` (module docstring)."""
     if not isinstance(table, dict):
         raise fail("timing", detail("must be a table ([timing])", "必须是表（[timing]）"))
-    out: dict[str, object] = {}
+    out: TimingChanges = {}
     for key in table:
         if key not in _KEYS:
             names = ", ".join(_KEYS)
@@ -56,7 +53,7 @@ def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> d
                                               "such as { X = 30000, Z = 24000 }",
                                               "必须是 轴地址 = 快移速度（大于 0，mm/min）形式的表，"
                                               "如 { X = 30000, Z = 24000 }"))  # fmt: skip
-        out["rapid"] = rates
+        out["rapid"] = {k: r for k, r in rates.items() if r}  # every rate is above 0 here
     if "tool_change" in table:
         v = _number(table["tool_change"])
         if v is None:

@@ -128,23 +128,22 @@ def program_items(ls: CncMacroServer, cur: Cursor, bracket: bool, start: int) ->
 
 def argument_items(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem]:
     loc = ls.locale
+    site = call_site(cur.block, cur.doc.dialect)
+    reads: set[int] = set()  # the arguments the called macro reads: first, and preselected
+    if site is not None and (site.number is not None or site.name is not None):
+        reads = ls_reads(ls, cur, site)
     out = []
     for letter, n in ARGUMENTS_I.items():
+        read = n in reads
         out.append(
             types.CompletionItem(
                 label=letter,
                 kind=types.CompletionItemKind.Field,
                 detail=f"{t('fills', loc)} #{n}",
-                sort_text=f"0{n:02d}",
+                sort_text=("!" if read else "") + f"0{n:02d}",
+                preselect=True if read else None,
             )
         )
-    site = call_site(cur.block, cur.doc.dialect)
-    if site is not None and (site.number is not None or site.name is not None):
-        reads = ls_reads(ls, cur, site)
-        for item in out:
-            if int(item.detail.split("#")[-1]) in reads:  # type: ignore[union-attr]
-                item.sort_text = "!" + (item.sort_text or "")
-                item.preselect = True
     return out
 
 

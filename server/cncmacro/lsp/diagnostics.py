@@ -477,7 +477,8 @@ class DiagnosticsEngine:
             new_documents = any(d.uri not in self._analysed_once for d in docs)
             started = time.time_ns()
             with self.collector.paused():
-                results: list[tuple[Path | None, WorkspaceAnalysis, AnalysisResult]] | None = []
+                results: list[tuple[Path | None, WorkspaceAnalysis, AnalysisResult]] = []
+                complete = True  # every machine file's analysis ran to its end
                 groups: dict[Path | None, str] = {}  # per machine file, the path of its first document
                 for d in docs:
                     groups.setdefault(d.machine_file, d.path)
@@ -486,14 +487,14 @@ class DiagnosticsEngine:
                         analysis = self.analyses[machine_file]
                         result = analysis.analyze(first, cancelled)
                         if result is None:
-                            results = None
+                            complete = False
                             break
-                        results.append((machine_file, analysis, result))  # type: ignore[union-attr]
+                        results.append((machine_file, analysis, result))
                 except Exception:  # a fault in the analysis must not stop the server
                     log.exception("the analysis failed")
-                    results = None
+                    complete = False
                 try:
-                    outcome = None if results is None else self._outcome(generation, docs, results)
+                    outcome = self._outcome(generation, docs, results) if complete else None
                 finally:
                     self._record_reads(started)
                 self.collector.settle(new_documents and outcome is not None)  # before the collector runs again

@@ -109,8 +109,9 @@ class CncMacroProtocol(LanguageServerProtocol):
         of this server) is made again with the same encoding."""
         general = params.capabilities.general
         encoding = negotiate(general.position_encodings if general is not None else None)
-        documents: Documents = self._server.documents  # type: ignore[attr-defined]
-        documents.encoding = encoding
+        server = self._server
+        assert isinstance(server, CncMacroServer)  # this protocol is made by CncMacroServer only
+        server.documents.encoding = encoding
         result = yield from super().lsp_initialize(params)
         result.capabilities.position_encoding = encoding.kind
         workspace = self.workspace

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..syntax.program import LoopPair
 from .cursor import doc_range
 from .documents import OpenDocument
 from .positions import Encoding
@@ -68,41 +69,44 @@ def document_symbols(doc: OpenDocument, encoding: Encoding) -> list[types.Docume
         # the first program's symbol holds the lead-in before its O line ('%', the dialect
         # comment), so that the breadcrumbs there name it too
         first = program.units[0].start if unit is units[0] else unit.start
+        inside: list[types.DocumentSymbol] = []
         sym = types.DocumentSymbol(
             name=name,
             detail=unit.title or "",
             kind=types.SymbolKind.Module,
             range=types.Range(types.Position(first, 0), _line_end(doc, last, encoding)),
             selection_range=doc_range(doc, unit.start, 0, len(doc.line(unit.start)), encoding),
-            children=[],
+            children=inside,
         )
-        # loops nest by their ranges; labels go into the innermost loop that holds them
-        stack: list[tuple[int, types.DocumentSymbol]] = [(last, sym)]
+        # loops nest by their ranges; labels go into the innermost loop that holds them: the
+        # stack holds each open symbol's last line and its children
+        stack: list[tuple[int, list[types.DocumentSymbol]]] = [(last, inside)]
         events = sorted(
             [(p.do_line, 0, p) for p in loops if unit.start <= p.do_line < unit.end]
             + [(line, 1, n) for line, n in labels if unit.start <= line < unit.end],
             key=lambda e: (e[0], e[1]),
         )
-        for line, kind, item in events:
+        for line, _, item in events:
             while len(stack) > 1 and stack[-1][0] < line:
                 stack.pop()
             parent = stack[-1][1]
-            if kind == 0:
-                end_line = item.end_line  # type: ignore[union-attr]
-                child = types.DocumentSymbol(
-                    name=f"DO{item.number} … END{item.number}",  # type: ignore[union-attr]
-                    kind=types.SymbolKind.Namespace,
-                    range=types.Range(types.Position(line, 0), _line_end(doc, end_line, encoding)),
-                    selection_range=doc_range(doc, line, 0, len(doc.line(line)), encoding),
-                    children=[],
+            if isinstance(item, LoopPair):
+                in_loop: list[types.DocumentSymbol] = []
+                parent.append(
+                    types.DocumentSymbol(
+                        name=f"DO{item.number} … END{item.number}",
+                        kind=types.SymbolKind.Namespace,
+                        range=types.Range(types.Position(line, 0), _line_end(doc, item.end_line, encoding)),
+                        selection_range=doc_range(doc, line, 0, len(doc.line(line)), encoding),
+                        children=in_loop,
+                    )
                 )
-                parent.children.append(child)  # type: ignore[union-attr]
-                stack.append((end_line, child))
+                stack.append((item.end_line, in_loop))
             else:
                 b = doc.block(line)
                 span = b.label_span if b is not None and b.label_span else (0, 0)
                 r = doc_range(doc, line, span[0], span[1], encoding)
-                parent.children.append(  # type: ignore[union-attr]
+                parent.append(
                     types.DocumentSymbol(name=f"N{item}", kind=types.SymbolKind.Key, range=r, selection_range=r)
                 )
         out.append(sym)

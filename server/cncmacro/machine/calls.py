@@ -330,24 +330,26 @@ def recognise_call(
         if letter == "G":
             v = w.value
             if v.__class__ is Number and v.value in MACRO_CALLS:
-                return _macro_call(words, i, dialect)
+                return _macro_call(words, i, v.value, dialect)
         elif letter == "M":
             m_at.append(i)
     if calls:
         for i, w in enumerate(words):
             if w.letter in ("G", "M"):
                 x = value(w)
-                code = f"{w.letter}{x:g}" if x is not None else None
+                if x is None:
+                    continue
+                code = f"{w.letter}{x:g}"
             elif w.letter == "T" and "T" in calls:
                 code = "T"
             else:
                 continue
-            configured = calls.get(code) if code is not None else None
+            configured = calls.get(code)
             if isinstance(configured, CallCode):
                 macro = configured.call == "macro"
                 count = next((a for a in words if a.letter == "L"), None)
-                args = tuple(a for a in words if a is not w and a.letter != "L" and not _same_code(a, code, value))  # type: ignore[arg-type]
-                return Call(code, w, i, w, configured.program, count=count, repeats=_literal_count(count),  # type: ignore[arg-type]
+                args = tuple(a for a in words if a is not w and a.letter != "L" and not _same_code(a, code, value))
+                return Call(code, w, i, w, configured.program, count=count, repeats=_literal_count(count),
                             arguments=args if macro else (), macro=macro, configured=True)  # fmt: skip
     if not m_at:
         return None
@@ -374,9 +376,10 @@ def recognise_call(
     return None
 
 
-def _macro_call(words: Sequence[Word], at: int, dialect: Dialect) -> Call:
+def _macro_call(words: Sequence[Word], at: int, g: float, dialect: Dialect) -> Call:
+    """The G65 or G66 call (``g``) of ``words[at]``."""
     code = words[at]
-    kind = "G65" if code.value.value == 65.0 else "G66"  # type: ignore[union-attr]
+    kind = "G65" if g == 65.0 else "G66"
     after = words[at + 1 :]
     p = next((w for w in after if w.letter == "P"), None)
     count = next((w for w in after if w.letter == "L"), None)
