@@ -276,3 +276,15 @@ def test_a_repeat_count_past_9999_is_an_alarm_and_haas_repeats_by_l() -> None:
     assert m.alarm is not None and m.alarm.number == 119
     m = run(lines("O1", "G00 Z10.", "G91 G81 X10. Z-5. R-8. F100 L3", "G90 G80", "M30"), "haas")
     assert [move.end[0] for move in m.moves if move.mode == 81.0] == [10.0, 20.0, 30.0]
+
+
+def test_a_bad_peck_distance_names_its_key(tmp_path: Path) -> None:
+    (tmp_path / ".cncmacro.toml").write_text("[timing]\npeck_clearance = -1\n", encoding="utf-8")
+    path = tmp_path / "MAIN.nc"
+    path.write_text("O1\nM30\n", encoding="utf-8")
+    code, _, err = cli("run", str(path))
+    assert code == 2
+    assert (
+        "'timing.peck_clearance' must be the distance in mm above the depth reached where G83's rapid back in "
+        "stops (0 or more)" in err
+    )

@@ -86,13 +86,13 @@ def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> d
                                                           "必须是大于 0 的转速（r/min）"))  # fmt: skip
         out["max_spindle_speed"] = v
     for key, what, what_zh in (("peck_retract", "G73 retracts after each peck", "G73 每次啄钻后的回退量"),
-                               ("peck_clearance", "above the last depth G83's rapid stops",
-                                "G83 快速返回时停在上次深度之上的距离")):  # fmt: skip
+                               ("peck_clearance", "above the depth reached where G83's rapid back in stops",
+                                "G83 快速返回孔内时停在已钻深度之上的距离")):  # fmt: skip
         if key in table:
             v = _number(table[key])
             if v is None:
-                raise fail(f"timing.{key}", detail(f"must be the millimetres {what} (0 or more)",
-                                                   f"必须是{what_zh}（毫米，不小于 0）"))  # fmt: skip
+                raise fail(f"timing.{key}", detail(f"must be the distance in mm {what} (0 or more)",
+                                                   f"必须是{what_zh}（mm，不小于 0）"))  # fmt: skip
             out[key] = v
     if "m_codes" in table:
         codes = table["m_codes"]
