@@ -148,3 +148,143 @@ def test_the_clock_that_3001_reads_is_the_cycle_time() -> None:
     m = run(lines("O1", "#3001=0", "T1 M06", "G01 X100. F600", "G04 P1500", "#1=#3001", "M30"))
     assert m.variables()[1] == pytest.approx(14500.0, abs=1.0)
     assert m.clock == pytest.approx(14.5)
+
+
+# ---------------------------------------------------------------- drilling canned cycles
+# fanuc-0i rapids X, Y, Z 24000 mm/min (400 mm/s): a rapid of n mm takes n / 400 s.
+
+
+def test_a_drilling_cycle_rapids_to_r_feeds_to_z_and_rapids_back_to_the_initial_level(tmp_path: Path) -> None:
+    # G98 G81 Z-10 R2 F120, initial level Z50 (where the G00 left the tool):
+    #   G00 X0 Y0 Z50:             50 mm rapid                                        = 0.125 s
+    #   hole 1 X20 Y0:  position X0 -> X20 at Z50: 20 mm rapid                         = 0.05 s
+    #                   rapid Z50 -> R2: 48 mm = 0.12 s; feed R2 -> Z-10: 12 mm at 120 = 6 s
+    #                   rapid Z-10 -> Z50 (G98): 60 mm                                  = 0.15 s   -> 6.32 s
+    #   hole 2 X40:     20 mm positioning, then the same                                          -> 6.32 s
+    #   hole 3 Y30:     30 mm positioning = 0.075 s, then the same                                 -> 6.345 s
+    #   total 19.11 s; cut 3 x 12 = 36 mm; rapid 50 + (20 + 48 + 60) + (20 + 108) + (30 + 108) = 444 mm
+    # (as one feed from the hole before at Z50 to the hole's bottom, hole 1 alone would have
+    # been sqrt(20² + 60²) = 63.2 mm at F120, 31.6 s)
+    text = lines("O1010", "G21 G90 G94 G17", "G00 X0 Y0 Z50.", "G98 G81 X20. Y0 Z-10. R2. F120", "X40.",
+                 "Y30.", "G80", "M30")  # fmt: skip
+    result = run_json(tmp_path, text)
+    cycle = result["cycle"]
+    assert cycle["seconds"] == pytest.approx(19.11, rel=0.01)
+    assert cycle["cut"] == pytest.approx(36.0, rel=0.01)
+    assert cycle["rapid"] == pytest.approx(444.0, rel=0.01)
+    assert [round(mv["time"], 3) for mv in result["moves"]] == [0.125, 6.32, 6.32, 6.345]
+    # each hole is drawn from where the tool was to the hole's bottom; Z stays in force
+    assert [(mv["to"]["X"], mv["to"]["Y"], mv["to"]["Z"]) for mv in result["moves"][1:]] == [
+        (20.0, 0.0, -10.0), (40.0, 0.0, -10.0), (40.0, 30.0, -10.0)]  # fmt: skip
+    assert [mv["from"]["Z"] for mv in result["moves"][1:]] == [50.0, 50.0, 50.0]  # back at the initial level
+
+
+@pytest.mark.parametrize(
+    ("machine_file", "seconds", "cut", "rapid"),
+    [
+        # d = 0 (the profile's): pecks to 5, 10, 14 mm below R2, each later one from where the
+        # last ended.  hole 1: position 10 mm (0.025 s), rapid Z20 -> R2 18 mm (0.045 s),
+        #   feed 5, rapid up 5 to R and down 5, feed 5, rapid up 10 and down 10, feed 4,
+        #   rapid up 14 to R (G99): feeds 14 mm at F100 = 8.4 s, rapids 44 mm = 0.11 s -> 8.58 s
+        # hole 2: position 20 mm at R2 (0.05 s), no rapid to R, the same pecks       -> 8.56 s
+        # G00 Z20: 0.05 s. Total 17.19 s; cut 28 mm; rapid 20 + (10 + 18 + 44) + (20 + 44) = 156 mm
+        ("", 17.19, 28.0, 156.0),
+        # d = 1 mm (parameter 5115): the rapid back in stops 1 mm above the last depth and the
+        # feed takes that 1 mm too: feeds 5 + 6 + 5 = 16 mm = 9.6 s, rapids 5 + 4 + 10 + 9 + 14
+        # = 42 mm = 0.105 s. Hole 1: 0.025 + 0.045 + 9.6 + 0.105 = 9.775 s, hole 2: 0.05 + 9.6 +
+        # 0.105 = 9.755 s. Total 19.58 s; cut 32 mm; rapid 20 + (10 + 18 + 42) + (20 + 42) = 152 mm
+        ("[timing]\npeck_clearance = 1\n", 19.58, 32.0, 152.0),
+    ],
+)
+def test_g83_pecks_by_q_back_to_r_and_g99_returns_to_r(tmp_path: Path, machine_file, seconds, cut, rapid) -> None:
+    text = lines("O1011", "G21 G90 G94", "G00 X0 Y0 Z20.", "G99 G83 X10. Y0 Z-12. R2. Q5. F100", "X30.", "G80",
+                 "M30")  # fmt: skip
+    result = run_json(tmp_path, text, machine_file=machine_file)
+    cycle = result["cycle"]
+    assert cycle["seconds"] == pytest.approx(seconds, rel=0.01)
+    assert (cycle["cut"], cycle["rapid"]) == (pytest.approx(cut, rel=0.01), pytest.approx(rapid, rel=0.01))
+    assert result["moves"][2]["from"]["Z"] == 2.0  # G99: the second hole starts from R
+
+
+def test_g73_retracts_d_after_each_peck(tmp_path: Path) -> None:
+    # peck_retract = 0.5 mm (parameter 5114). G98 G73 Z-12 R2 Q5 F100 from Z20:
+    #   G00 Z20: 0.05 s; position 10 mm: 0.025 s; rapid Z20 -> R2 18 mm: 0.045 s
+    #   feed 5, rapid up 0.5, feed 5.5, rapid up 0.5, feed 4.5: feeds 15 mm = 9 s, rapids 1 mm = 0.0025 s
+    #   rapid Z-12 -> Z20 (G98): 32 mm = 0.08 s
+    #   total 9.2025 s; cut 15 mm; rapid 20 + 10 + 18 + 1 + 32 = 81 mm
+    text = lines("O1012", "G21 G90 G94", "G00 X0 Y0 Z20.", "G98 G73 X10. Z-12. R2. Q5. F100", "G80", "M30")
+    cycle = run_json(tmp_path, text, machine_file="[timing]\npeck_retract = 0.5\n")["cycle"]
+    assert cycle["seconds"] == pytest.approx(9.2025, rel=0.01)
+    assert (cycle["cut"], cycle["rapid"]) == (pytest.approx(15.0), pytest.approx(81.0))
+
+
+def test_g82_dwells_p_at_the_bottom_and_k_repeats_the_hole_by_the_g91_increment(tmp_path: Path) -> None:
+    # G91: R-8 is 8 mm below the initial level Z10 (R at Z2), Z-8 is 8 mm below R (bottom Z-6);
+    # K3 drills three holes, each 15 mm further along X. Each hole:
+    #   position 15 mm: 0.0375 s; rapid Z10 -> R2 8 mm: 0.02 s; feed 8 mm at F200: 2.4 s;
+    #   dwell P500: 0.5 s; rapid Z-6 -> Z10 (G98) 16 mm: 0.04 s                      -> 2.9975 s
+    #   G00 Z10: 0.025 s. Total 0.025 + 3 x 2.9975 = 9.0175 s; cut 24 mm; rapid 10 + 3 x 39 = 127 mm
+    text = lines("O1013", "G21 G90 G94", "G00 X0 Y0 Z10.", "G91 G98 G82 X15. Z-8. R-8. P500 F200 K3", "G90 G80",
+                 "M30")  # fmt: skip
+    result = run_json(tmp_path, text)
+    cycle = result["cycle"]
+    assert cycle["seconds"] == pytest.approx(9.0175, rel=0.01)
+    assert (cycle["cut"], cycle["rapid"]) == (pytest.approx(24.0), pytest.approx(127.0))
+    holes = [(mv["to"]["X"], mv["to"]["Z"]) for mv in result["moves"][1:]]
+    assert holes == [(15.0, -6.0), (30.0, -6.0), (45.0, -6.0)]
+
+
+@pytest.mark.parametrize(
+    ("cycle_block", "seconds"),
+    [
+        # G85 boring: feed in and feed out to R, then rapid to the initial level (G98):
+        #   G00 Z20 0.05 s; position 10 mm 0.025 s; rapid Z20 -> R2 0.045 s; feed 12 mm at F120
+        #   6 s; feed 12 mm back to R 6 s; rapid R2 -> Z20 0.045 s: 12.165 s
+        ("G98 G85 X10. Z-10. R2. F120", 12.165),
+        # G84 tapping (F per minute under G94): the same moves, and with no P no dwell: 12.165 s
+        ("G98 G84 X10. Z-10. R2. F120", 12.165),
+        # G89: the same with a dwell P1000 at the bottom: 13.165 s
+        ("G98 G89 X10. Z-10. R2. P1000 F120", 13.165),
+        # G81 with the same data: feed in, rapid out Z-10 -> Z20 (0.075 s): 0.05 + 0.025 + 0.045
+        # + 6 + 0.075 = 6.195 s
+        ("G98 G81 X10. Z-10. R2. F120", 6.195),
+    ],
+)
+def test_tapping_and_feed_out_boring_come_back_to_r_at_f(tmp_path: Path, cycle_block, seconds) -> None:
+    text = lines("O1014", "G21 G90 G94", "G00 X0 Y0 Z20.", cycle_block, "G80", "M30")
+    assert run_json(tmp_path, text)["cycle"]["seconds"] == pytest.approx(seconds, rel=0.01)
+
+
+def test_the_bolt_circle_example_drills_a_hole_in_seconds_not_a_diagonal_feed() -> None:
+    # examples/fanuc/bolt_circle.nc: 18 holes by G98 G81 from the initial level Z50.
+    #   feeds: 6 x 14 mm (R2 to Z-12) at F120 = 42 s, 4 x 11 mm (R3 to Z-8) at F100 = 26.4 s,
+    #          8 x 17 mm (R2 to Z-15) at F120 = 68 s: 264 mm, 136.4 s
+    #   tool change 3 s
+    #   rapids along Z: per hole down to R and up from the bottom, 6 x (48 + 62) + 4 x (47 + 58) +
+    #          8 x (48 + 65) = 1984 mm, with G43 Z50, G00 Z100 and G28 Z0 (200 mm): 2184 mm, 5.46 s
+    #   positioning between holes, each axis at 24000 mm/min: the longer axis of each move sums
+    #          to 702.45 mm, 1.756 s (their straight lengths to 760.56 mm)
+    #   total 146.6 s; rapid 2184 + 760.56 = 2944.6 mm
+    example = Path(__file__).parent.parent / "examples" / "fanuc" / "bolt_circle.nc"
+    code, out, _ = cli("run", "--no-save", str(example))
+    assert code == 0
+    assert "cycle time O1000: ≈ 2 min 27 s · 264 mm cut · 2,945 mm rapid" in out
+
+
+def test_a_repeat_count_past_9999_is_an_alarm_and_haas_repeats_by_l() -> None:
+    m = run(lines("O1", "G00 Z10.", "G91 G81 X10. Z-5. R-8. F100 K10000", "M30"))
+    assert m.alarm is not None and m.alarm.number == 119
+    m = run(lines("O1", "G00 Z10.", "G91 G81 X10. Z-5. R-8. F100 L3", "G90 G80", "M30"), "haas")
+    assert [move.end[0] for move in m.moves if move.mode == 81.0] == [10.0, 20.0, 30.0]
+
+
+def test_a_bad_peck_distance_names_its_key(tmp_path: Path) -> None:
+    (tmp_path / ".cncmacro.toml").write_text("[timing]\npeck_clearance = -1\n", encoding="utf-8")
+    path = tmp_path / "MAIN.nc"
+    path.write_text("O1\nM30\n", encoding="utf-8")
+    code, _, err = cli("run", str(path))
+    assert code == 2
+    assert (
+        "'timing.peck_clearance' must be the distance in mm above the depth reached where G83's rapid back in "
+        "stops (0 or more)" in err
+    )

@@ -15,6 +15,7 @@ from functools import cache
 from typing import Any
 
 from ..bilingual import Detail, detail
+from .drill_cycles import DrillCycle
 from .tables import CodeDoc, CommonRange, FunctionDoc, ProgramDoc, SystemVariable, SystemVariableName
 from .timing import Timing
 
@@ -130,6 +131,12 @@ class Dialect:
     # Pn and G10 L20 Pn read and write, and how many extra offsets there are (G10 L20 P range)
     extra_offset_variables: int = 7001
     extra_offset_count: int = 48
+
+    # §9 what each drilling canned cycle of a mill does at the bottom and on the way out
+    # (drill_cycles.py; a canned code not listed drills as G81), and the word that repeats a
+    # cycle block (K on FANUC, L on Haas)
+    drill_cycles: dict[float, DrillCycle] = field(default_factory=dict)
+    cycle_repeat_letter: str = "K"
 
     # what the machine takes time for: rapid rates, tool change, M codes, dwell units (timing.py;
     # the cycle time, machine/cycle_time.py)

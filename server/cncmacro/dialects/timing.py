@@ -4,10 +4,11 @@ A ``Timing`` is one machine's: the rapid traverse rate of each axis (mm/min, deg
 rotary axis; FANUC parameter 1420, the machine builder's data sheet elsewhere), the seconds a
 tool change takes and the code that makes it (``M6`` on a mill, where T only selects the next
 tool; ``T`` on a lathe, whose turret indexes on the T word), the seconds other M codes take
-(a coolant valve, a pallet change), the unit of a dwell's P, and the spindle's top speed (the
-limit of G96 constant surface speed). Each profile module carries typical values; a machine
-file's ``[timing]`` table gives the machine's own (docs/machine-file.md, ``Timing.changed``).
-How the interpreter uses them is ``machine/cycle_time.py``.
+(a coolant valve, a pallet change), the unit of a dwell's P, the spindle's top speed (the
+limit of G96 constant surface speed) and the peck drilling cycles' retract distances. Each
+profile module carries typical values; a machine file's ``[timing]`` table gives the machine's
+own (docs/machine-file.md, ``Timing.changed``). How the interpreter uses them is
+``machine/cycle_time.py``.
 """
 
 from __future__ import annotations
@@ -44,6 +45,10 @@ class Timing:
     dwell_p_unit: float = 0.001
     # the spindle's top speed (rev/min): G96 never turns the spindle faster
     max_spindle_speed: float = 4000.0
+    # mm: how far G73 retracts after each peck (FANUC parameter 5114) and how far above the last
+    # depth G83 stops its rapid back in (parameter 5115); the machine builder sets both, 0 here
+    peck_retract: float = 0.0
+    peck_clearance: float = 0.0
 
     def rapid_rate(self, axis: str) -> float:
         """The rapid traverse rate of ``axis`` (mm/min or degrees/min)."""

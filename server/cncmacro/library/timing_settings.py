@@ -8,6 +8,8 @@
     tool_change_code = "M6"        # "M6" (mills) or "T" (a lathe's turret indexes on T)
     dwell_p = "milliseconds"       # the unit of G04 P: "milliseconds" or "seconds"
     max_spindle_speed = 3500       # rev/min, G96's limit
+    peck_retract = 0.5             # mm, G73's retract after each peck (FANUC parameter 5114)
+    peck_clearance = 1.0           # mm, where G83's rapid back in stops (parameter 5115)
 
     [timing.m_codes]               # seconds an M code takes
     M08 = 0.5
@@ -25,7 +27,8 @@ from ..bilingual import Detail, detail
 from ..dialects.timing import TimingChanges
 from .toml_numbers import finite_number
 
-_KEYS = ("rapid", "tool_change", "tool_change_code", "dwell_p", "max_spindle_speed", "m_codes")
+_KEYS = ("rapid", "tool_change", "tool_change_code", "dwell_p", "max_spindle_speed", "peck_retract",
+         "peck_clearance", "m_codes")  # fmt: skip
 _DWELL_UNITS = {"milliseconds": 0.001, "seconds": 1.0}
 
 
@@ -79,6 +82,15 @@ def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> T
             raise fail("timing.max_spindle_speed", detail("must be a speed above 0 (rev/min)",
                                                           "必须是大于 0 的转速（r/min）"))  # fmt: skip
         out["max_spindle_speed"] = v
+    for key, what, what_zh in (("peck_retract", "G73 retracts after each peck", "G73 每次啄钻后的回退量"),
+                               ("peck_clearance", "above the depth reached where G83's rapid back in stops",
+                                "G83 快速返回孔内时停在已钻深度之上的距离")):  # fmt: skip
+        if key in table:
+            v = _number(table[key])
+            if v is None:
+                raise fail(f"timing.{key}", detail(f"must be the distance in mm {what} (0 or more)",
+                                                   f"必须是{what_zh}（mm，不小于 0）"))  # fmt: skip
+            out[key] = v
     if "m_codes" in table:
         codes = table["m_codes"]
         bad = detail(

@@ -10,7 +10,7 @@ without acceleration a corner costs no time; feed and rapid overrides at 100 %.
   distance / rate. That is FANUC's non-linear interpolation positioning, each axis on its
   own, and also the time of linear-interpolation positioning, whose rate is held so that no
   axis passes its own.
-- A feed move (G01, G02, G03, G31, a canned cycle's recorded move) takes its length divided
+- A feed move (G01, G02, G03, G31, a lathe cycle's recorded move) takes its length divided
   by the feed rate. The length of an arc is the length of the arc (its sweep times its
   radius, with a helix's third axis added as the other side of a right triangle), not of the
   chord; a full circle is one turn. Feed per minute (G94; G98 on a lathe) is F in mm/min (in/min
@@ -21,6 +21,10 @@ without acceleration a corner costs no time; feed and rapid overrides at 100 %.
 - Lengths are in mm (a G20 program's inches times 25.4); on a lathe X is a diameter, so the tool
   moves half of an X difference. A rotary axis's degrees count as millimetres, as in a FANUC
   feed of a move with rotary axes.
+- A mill's drilling cycle (G73, G74, G76, G81–G89) takes the time of its steps
+  (``machine/drill_cycles.py`` lists them): the positioning as a rapid, then each rapid and
+  feed along the drilling axis and each shift across it (``cycle_seconds``), plus the dwell P.
+  Its feed steps count as cut, its rapids as rapid path.
 - G04 dwells for X or U seconds, or P times ``Timing.dwell_p_unit`` (milliseconds on FANUC and
   GSK, seconds on Haas).
 - A tool change (``Timing.tool_change_code``: M06 on a mill, a lathe's T word) takes
@@ -42,6 +46,9 @@ if TYPE_CHECKING:
     from ..dialects import Dialect
 
 INCH = 25.4
+# the kinds of a drilling cycle's steps (``cycle_seconds``): a rapid and a feed along the drilling
+# axis, and a rapid shift across it (G76, G87)
+RAPID_STEP, FEED_STEP, SHIFT_STEP = 0, 1, 2
 _TWO_PI = 2.0 * math.pi
 ARC_MODES = (2.0, 3.0)
 # plane code -> (first axis, second axis): the plane an arc turns in (arcs.PLANES)
@@ -123,6 +130,24 @@ class MoveTimes:
             top = self.timing.max_spindle_speed
             speed = min(top, speed * 1000.0 / (math.pi * d)) if d > 0.0 else top
         return feed * speed
+
+    def cycle_seconds(
+        self, steps: Sequence[tuple[int, float]], drill_axis: int, shift_axis: int, rate: float, unit: float
+    ) -> tuple[float, float, float]:
+        """The seconds, cut (mm) and rapid path (mm) of a drilling cycle's ``steps`` (kind, length
+        in program units): a feed step at ``rate`` (program units per minute; none when 0), a
+        rapid along ``drill_axis`` or a shift along ``shift_axis`` at that axis's rapid rate."""
+        seconds = cut = rapid = 0.0
+        per_mm = self.rapid_seconds_per_mm
+        for kind, length in steps:
+            if kind == FEED_STEP:
+                cut += length
+                if rate > 0:
+                    seconds += length / rate * 60.0
+            else:
+                rapid += length
+                seconds += length * unit * per_mm[drill_axis if kind == RAPID_STEP else shift_axis]
+        return seconds, cut * unit, rapid * unit
 
     def dwell_seconds(self, words: dict[str, float], axis_value: float | None) -> float:
         """G04's time: P in the profile's unit, else X (or U) in seconds."""

@@ -22,6 +22,7 @@ from .alarms import MacroAlarm
 from .arcs import ARC_MODES, arc_centre, arc_planes
 from .calls import g_code_groups
 from .cycle_time import INCH, MoveTimes
+from .drill_cycles import drill_block
 from .frames import Move, ToolChange
 from .probing import Probe, SkipState, skip_block
 from .words import extra_offset_codes
@@ -360,7 +361,7 @@ class Motion:
             return self._full_circle(mode, canned, other, file, line), None
         target = self._target(axes, incremental)
         if not self.dialect.lathe and canned != 80.0:
-            self._drill(canned, target, other, file, line)
+            drill_block(self, canned, axes, incremental, other, file, line)  # drill_cycles.py
             return True, None
         if mode in self.dialect.cycle_codes:
             self._record(file, line, mode, tuple(self.pos), tuple(target))
@@ -450,17 +451,22 @@ class Motion:
                 length = times.arc_length(mode, modal.get("plane", 17.0), start, end, centre)
             else:
                 length = times.distance(start, end)
-            per_rev = modal.get("feed")
-            if per_rev == 95.0 or (per_rev == 99.0 and self._lathe):
-                rate = times.feed_rate(feed, True, self.codes.get("S") or 0.0, modal.get("spindle") == 96.0,
-                                       start, end, unit)  # fmt: skip
-            else:
-                rate = feed  # per minute (``feed_rate``)
+            rate = self.cutting_rate(feed, start, end, unit)
             seconds = length / rate * 60.0 if rate > 0 else 0.0
             self.cut_length += length * unit
         self.clock += seconds
         if self.record_moves:
             self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre, seconds)))
+
+    def cutting_rate(self, feed: float, start: Sequence[float], end: Sequence[float], unit: float) -> float:
+        """The feed of a cutting move from ``start`` to ``end`` in program units per minute:
+        F, or per revolution F times the spindle speed (``MoveTimes.feed_rate``)."""
+        modal = self.modal
+        per_rev = modal.get("feed")
+        if per_rev == 95.0 or (per_rev == 99.0 and self._lathe):
+            return self.times.feed_rate(feed, True, self.codes.get("S") or 0.0, modal.get("spindle") == 96.0,
+                                        start, end, unit)  # fmt: skip
+        return feed  # per minute (``feed_rate``)
 
     def m_code_time(self, m: float, file: str, line: int) -> None:
         """The time of M code ``m``: a tool change (``tool_change``) or the machine file's."""
@@ -614,19 +620,3 @@ class Motion:
             num = bases[l_value] + p
             self.S[num] = other["R"] if absolute else (self.S.get(num) or 0.0) + other["R"]
             self.written_system.add(num)
-
-    # ---------------------------------------------------------------- drilling cycles
-    def _drill(self, cycle: float, target: list[float], other: dict[str, float], file: str, line: int) -> None:
-        ix = self.axis_index
-        z = ix.get("Z")
-        if self.cycle_start_z is None and z is not None:
-            self.cycle_start_z = self.pos[z]
-        end = list(target)
-        if z is not None:
-            r_level = other.get("R")
-            if r_level is not None:
-                self.codes["R"] = r_level
-            retract = self.cycle_start_z if self.modal.get("return") == 98.0 else self.codes.get("R")
-            end[z] = retract if retract is not None else self.pos[z]
-        self._record(file, line, cycle, tuple(self.pos), tuple(target))
-        self.pos[:] = end

@@ -24,6 +24,7 @@ from __future__ import annotations
 from .. import fanuc_data as fanuc
 from .. import shared_data as shared
 from ..dialect import ARGUMENTS_I
+from ..drill_cycles import HAAS_DRILL_CYCLES
 from ..haas_programs_data import PROGRAM_DOCS as PROGRAM_DOCS  # the programs on the control, for hover
 from ..tables import CodeDoc, CommonRange, SystemVariable
 from ..timing import Timing
@@ -943,6 +944,8 @@ PROFILE = FANUC_0I.configured(
     extra_offset_variables=G154_LONG,
     extra_offset_count=99,
     tool_offset_bases=(2000, 2200, 2400, 2600),
+    drill_cycles=HAAS_DRILL_CYCLES,  # its G77 back bore, G87 bore in and manual retract
+    cycle_repeat_letter="L",  # L repeats a canned cycle (K is a peck's minimum on G73/G83)
     # rapids of 1,000 in/min on X, Y, Z (a VF-2's), a typical tool change; G04 P counts seconds
     # (written with a decimal point, as the G04 row says)
     timing=Timing(

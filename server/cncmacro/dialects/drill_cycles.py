@@ -1,0 +1,79 @@
+"""What each drilling canned cycle of a mill does between its R point and its hole bottom: the
+control's data for the cycle time (docs/semantics.md §9 "Canned cycles").
+
+Every drilling cycle positions the hole at rapid at the level it is at, rapids down to the R
+point, cuts to Z and returns (G98 to the initial level, G99 to R); a ``DrillCycle`` says how it
+cuts, what it does at the bottom and how it comes out. ``machine/drill_cycles.py`` turns one
+into the moves of a hole and ``machine/cycle_time.py`` times them.
+
+FANUC's table (Series 0i-MF / 30i-B operator's manuals, "Canned cycle for drilling", the table of
+drilling, operation at the bottom and retraction of each code, and each cycle's page):
+
+* G73 high-speed peck: intermittent feed, pecks of Q, each followed by a rapid retract of d
+  (parameter 5114); rapid out.
+* G74 left-hand tapping, G84 tapping: feed in, dwell P, spindle reverses, feed out to R.
+* G76 fine boring: feed in, dwell P, oriented spindle stop, shift by Q away from the wall,
+  rapid out, shift back.
+* G81 drilling, G86 boring (spindle stop): feed in, rapid out.
+* G82 counter boring: feed in, dwell P, rapid out.
+* G83 peck drilling: pecks of Q, back to R at rapid after each and rapid down to d above the
+  last depth (parameter 5115); rapid out.
+* G85 boring: feed in, feed out to R. G89 boring: the same with a dwell P at the bottom.
+* G87 back boring: orient and shift, rapid down to the R point below the work, shift back, bore
+  upwards to Z, dwell P, orient and shift, rapid out to the initial level (G99 is not used),
+  shift back.
+* G88 boring: feed in, dwell P, spindle stop, then the operator retracts by hand; the manual
+  retract is counted as a rapid.
+
+Haas (Mill Operator's Manual 96-8000, G codes) runs G73, G74, G76, G81–G86, G88 and G89 the same
+way; its G87 is "bore in and manual retract" (G88 without the dwell) and its G77 the back bore.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+FEED = "feed"  # one cutting feed from R to Z
+PECK = "peck"  # G83: pecks of Q, back to R after each
+SHORT_PECK = "short-peck"  # G73: pecks of Q, a retract of d after each
+
+
+@dataclass(frozen=True)
+class DrillCycle:
+    """How one drilling cycle cuts (``FEED``, ``PECK``, ``SHORT_PECK``), whether it dwells P at
+    the bottom, comes out at F to R (tapping and feed-out boring), shifts by Q at the bottom
+    before a rapid out (fine boring) or bores upwards from an R point below the work (back
+    boring, which always returns to the initial level)."""
+
+    cut: str = FEED
+    dwell: bool = False
+    feed_out: bool = False
+    shift: bool = False
+    back: bool = False
+
+
+# a canned code the table does not list drills as G81 does
+PLAIN_DRILLING = DrillCycle()
+
+FANUC_DRILL_CYCLES: dict[float, DrillCycle] = {
+    73.0: DrillCycle(cut=SHORT_PECK),
+    74.0: DrillCycle(dwell=True, feed_out=True),
+    76.0: DrillCycle(dwell=True, shift=True),
+    81.0: PLAIN_DRILLING,
+    82.0: DrillCycle(dwell=True),
+    83.0: DrillCycle(cut=PECK),
+    84.0: DrillCycle(dwell=True, feed_out=True),
+    85.0: DrillCycle(feed_out=True),
+    86.0: PLAIN_DRILLING,
+    87.0: DrillCycle(dwell=True, back=True),
+    88.0: DrillCycle(dwell=True),
+    89.0: DrillCycle(dwell=True, feed_out=True),
+}
+
+HAAS_DRILL_CYCLES: dict[float, DrillCycle] = {
+    **FANUC_DRILL_CYCLES,
+    73.0: DrillCycle(cut=SHORT_PECK, dwell=True),  # P: a pause at the bottom after the last peck
+    83.0: DrillCycle(cut=PECK, dwell=True),
+    77.0: DrillCycle(back=True),
+    87.0: PLAIN_DRILLING,  # bore in, manual retract
+}

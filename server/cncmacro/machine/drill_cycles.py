@@ -1,0 +1,157 @@
+"""A mill's drilling canned cycle (G73, G74, G76, G81–G89) hole by hole: where the tool goes, which
+of its moves are rapids and which cut, and so how long a hole takes (docs/semantics.md §9
+"Canned cycles").
+
+A block in a drilling cycle with an axis word drills one hole, or K holes (L on Haas: the
+profile's ``cycle_repeat_letter``), each in five phases, as FANUC's operator's manuals describe
+them:
+
+1. position X and Y (and any other axis but Z) at rapid, at the level the tool is at;
+2. rapid to the R point;
+3. cut from R to Z at F: in one feed, or for G83 and G73 in pecks of Q (``_cut``);
+4. dwell P at the bottom where the cycle does (``DrillCycle.dwell``);
+5. come back: G98 to the initial level, G99 to R; at rapid, or for tapping and feed-out boring
+   at F up to R (then at rapid to the initial level under G98). Fine boring shifts by Q at the
+   bottom before it rapids out and back after; back boring (G87) has its own order.
+
+The hole data Z, R, Q and P stay in force from the cycle block that last gave them (the
+control keeps them while the cycle is in force; a program names them again after G80). Under
+G90 R and Z are levels; under G91 R is the distance from the initial level to R and Z the
+distance from R to the bottom. The initial level is the Z where the tool was when the block
+that named the cycle began (``Motion.cycle_start_z``). Each repetition of K under G91 moves on
+by the block's X and Y; under G90 it drills the same hole again; K0 keeps the data and drills
+nothing. The drilling axis is Z.
+
+The recorded move is one per hole, from where the tool was to the hole's bottom, its time the
+sum of the phases' (``MoveTimes.cycle_seconds``), its feed steps added to the cut path and its
+rapids to the rapid path; the tool ends at the return level.
+"""
+
+from __future__ import annotations
+
+from math import ceil, floor
+from typing import TYPE_CHECKING
+
+from ..bilingual import detail
+from ..dialects.alarms import ARGUMENT_RANGE
+from ..dialects.drill_cycles import PECK, PLAIN_DRILLING, SHORT_PECK, DrillCycle
+from .alarms import MacroAlarm
+from .cycle_time import FEED_STEP, INCH, RAPID_STEP, SHIFT_STEP
+from .frames import Move
+
+if TYPE_CHECKING:
+    from .motion import Motion
+
+# the hole data a drilling cycle keeps in ``Motion.codes`` (R under "R")
+CYCLE_Z = "cycle Z"
+CYCLE_Q = "cycle Q"
+CYCLE_P = "cycle P"
+MAX_REPEATS = 9999
+
+Steps = list[tuple[int, float]]
+
+
+def drill_block(
+    m: Motion, cycle: float, axes: dict[int, float], incremental: dict[int, float], other: dict[str, float],
+    file: str, line: int,
+) -> None:  # fmt: skip
+    """Drill the holes of one block in canned cycle ``cycle`` (module docstring)."""
+    codes = m.codes
+    for letter, key in (("R", "R"), ("Q", CYCLE_Q), ("P", CYCLE_P)):
+        if letter in other:
+            codes[key] = other[letter]
+    z = m.axis_index.get("Z")
+    plane = {i: v for i, v in axes.items() if i != z}
+    if z is not None and z in axes:
+        codes[CYCLE_Z] = axes[z]
+    repeats = _repeats(other.get(m.dialect.cycle_repeat_letter), m.dialect.cycle_repeat_letter)
+    if z is None:  # no drilling axis: the holes are only positioned
+        for _ in range(repeats):
+            m._move(file, line, 0.0, m._target(plane, incremental))
+        return
+    if m.cycle_start_z is None:
+        m.cycle_start_z = m.pos[z]
+    initial = m.cycle_start_z
+    absolute = m.modal.get("distance", 90.0) == 90.0
+    r_word, z_word = codes.get("R"), codes.get(CYCLE_Z)
+    r_level = initial if r_word is None else r_word if absolute else initial + r_word
+    bottom = r_level if z_word is None else z_word if absolute else r_level + z_word
+    spec = m.dialect.drill_cycles.get(cycle, PLAIN_DRILLING)
+    back_to = initial if spec.back or m.modal.get("return") == 98.0 else r_level
+    times = m.times
+    unit = INCH if m.modal.get("units") == 20.0 else 1.0
+    q = abs(codes.get(CYCLE_Q) or 0.0)
+    p = codes.get(CYCLE_P) or 0.0
+    dwell = times.dwell_seconds({"P": p}, None) if spec.dwell and p else 0.0
+    retract, clearance = times.timing.peck_retract / unit, times.timing.peck_clearance / unit
+    shift_axis = m.axis_index.get("X", 0)
+    feed = m.codes.get("F") or 0.0
+    for _ in range(repeats):
+        start = tuple(m.pos)
+        hole = m._target(plane, incremental)  # positioned at the level the tool is at
+        at_r, at_bottom = list(hole), list(hole)
+        at_r[z], at_bottom[z] = r_level, bottom
+        steps = hole_steps(spec, hole[z], r_level, bottom, back_to, q, retract, clearance)
+        rate = m.cutting_rate(feed, at_r, at_bottom, unit)
+        seconds, cut, rapid = times.cycle_seconds(steps, z, shift_axis, rate, unit)
+        seconds += times.rapid_seconds(start, hole, unit) + dwell
+        m.clock += seconds
+        m.cut_length += cut
+        m.rapid_length += rapid + times.distance(start, hole) * unit
+        if m.record_moves:
+            m.moves.append(Move(file, line, cycle, start, tuple(at_bottom), float(feed), None, seconds))
+        hole[z] = back_to
+        m.pos = hole
+
+
+def _repeats(k: float | None, letter: str) -> int:
+    """How many times a cycle block drills: its K (L), 1 when absent; 0 to 9999."""
+    if k is None:
+        return 1
+    if not 0 <= k <= MAX_REPEATS:
+        raise MacroAlarm(
+            ARGUMENT_RANGE,
+            detail(
+                f"{letter}{k:g}: a canned cycle's repeat count must be 0 to {MAX_REPEATS}",
+                f"{letter}{k:g}：固定循环的重复次数必须在 0～{MAX_REPEATS} 之间",
+            ),
+        )
+    return int(k)
+
+
+def hole_steps(
+    spec: DrillCycle, level: float, r_level: float, bottom: float, back_to: float, q: float, retract: float,
+    clearance: float,
+) -> Steps:  # fmt: skip
+    """The steps of one hole after positioning (``MoveTimes.cycle_seconds``'s kinds and lengths
+    in program units), from ``level`` through ``r_level`` to ``bottom`` and back to ``back_to``;
+    ``q`` is the peck depth or the shift, ``retract`` and ``clearance`` G73's and G83's d."""
+    depth = abs(bottom - r_level)
+    if spec.back:  # G87: shift, down to R below the work, shift back, bore up, shift, out, back
+        return [(SHIFT_STEP, 2.0 * q), (RAPID_STEP, abs(level - r_level)), (FEED_STEP, depth),
+                (SHIFT_STEP, 2.0 * q), (RAPID_STEP, abs(bottom - back_to))]  # fmt: skip
+    steps: Steps = [(RAPID_STEP, abs(level - r_level)), *_cut(spec.cut, depth, q, retract, clearance)]
+    if spec.shift:  # G76: shift off the wall at the bottom and back at the top
+        steps.append((SHIFT_STEP, 2.0 * q))
+    if spec.feed_out:
+        steps += [(FEED_STEP, depth), (RAPID_STEP, abs(r_level - back_to))]
+    else:
+        steps.append((RAPID_STEP, abs(bottom - back_to)))
+    return steps
+
+
+def _cut(kind: str, depth: float, q: float, retract: float, clearance: float) -> Steps:
+    """The cut from R to the bottom: one feed, or n = ⌈depth / Q⌉ pecks (the last one shorter).
+    G73 after each peck but the last rapids up d and feeds d + Q; G83 rapids up to R, rapids
+    down to d above the depth reached and feeds d + Q (d no more than the depth reached). The
+    totals of each kind are summed here, without a loop over the pecks."""
+    if kind not in (PECK, SHORT_PECK) or q <= 0.0 or depth <= q:
+        return [(FEED_STEP, depth)]
+    again = ceil(round(depth / q, 9)) - 1  # pecks after the first
+    if kind == SHORT_PECK:
+        return [(FEED_STEP, depth + again * retract), (RAPID_STEP, again * retract)]
+    # the depths reached before each later peck: q, 2q, ... again·q; d caps at the depth reached
+    reached = q * again * (again + 1) / 2.0
+    under = min(again, floor(clearance / q))  # pecks whose depth reached is within d
+    backs = q * under * (under + 1) / 2.0 + (again - under) * clearance  # Σ min(d, depth reached)
+    return [(FEED_STEP, depth + backs), (RAPID_STEP, 2.0 * reached - backs)]
