@@ -26,6 +26,8 @@ class TimingChanges(TypedDict, total=False):
     m_code_seconds: dict[float, float]
     dwell_p_unit: float
     max_spindle_speed: float
+    peck_retract: float
+    peck_clearance: float
 
 
 @dataclass(frozen=True)

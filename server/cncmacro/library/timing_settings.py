@@ -90,7 +90,10 @@ def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> T
             if v is None:
                 raise fail(f"timing.{key}", detail(f"must be the distance in mm {what} (0 or more)",
                                                    f"必须是{what_zh}（mm，不小于 0）"))  # fmt: skip
-            out[key] = v
+            if key == "peck_retract":
+                out["peck_retract"] = v
+            else:
+                out["peck_clearance"] = v
     if "m_codes" in table:
         codes = table["m_codes"]
         bad = detail(
