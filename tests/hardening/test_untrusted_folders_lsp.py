@@ -154,6 +154,7 @@ async def test_a_2_gb_program_file_is_named_and_never_read(client: LanguageClien
     (tmp_path / "O0002.nc").write_text("O0002\nG65 P9100\nM30\n", encoding="utf-8")
     await initialize(client, tmp_path)
     said = await shown_warning(client)
+    assert said.startswith("cncmacro: 1 folder or file in the workspace was not read: ")
     assert (
         f"{tmp_path / 'O9100.nc'}: 2,147,483,648 bytes, over the limit of 8,000,000: not read for the programs" in said
     )

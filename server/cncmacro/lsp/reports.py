@@ -82,6 +82,11 @@ def report_skipped(server: CncMacroServer, skipped: list[Detail]) -> None:
         message = f"cncmacro：工作区中有 {len(skipped)} 个文件夹或文件未读取：{named}"
         message += f"；其余 {more} 个见输出窗口" if more > 0 else ""
     else:
-        message = f"cncmacro: {len(skipped)} folders or files in the workspace were not read: {named}"
+        what = (
+            "1 folder or file in the workspace was not read"
+            if len(skipped) == 1
+            else (f"{len(skipped)} folders or files in the workspace were not read")
+        )
+        message = f"cncmacro: {what}: {named}"
         message += f"; {more} more in the output" if more > 0 else ""
     server.window_show_message(types.ShowMessageParams(type=types.MessageType.Warning, message=message))
