@@ -306,7 +306,8 @@ def test_fanuc_0i_finds_errors_in_the_haas_corpus_and_suggests_haas() -> None:
     suggestions = [d for d in found if d["code"] == "profile-suggestion"]
     named = {Path(d["file"]).name for d in suggestions}
     assert {"probe_bore_g154.nc", "fixture_plate_g110.nc", "circular_pockets_g13.nc", "g150_window_pocket.nc",
-            "m97_pocket_grid.nc", "engrave_serial.nc", "cover_slots_g187.nc", "face_passes_m99.nc"} <= named  # fmt: skip
+            "m97_pocket_grid.nc", "engrave_serial.nc", "cover_slots_g187.nc",
+            "face_passes_m99.nc"} <= named  # fmt: skip
     assert all("dialect=haas" in d["message"] for d in suggestions)
     assert "program-not-found" in by_file["probe_vise_wips.nc"]  # O9810-O9833 are not on a 0i
 

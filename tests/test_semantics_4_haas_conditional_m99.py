@@ -134,7 +134,9 @@ def test_4_control_flow_haas_conditional_m99_with_nc_words_is_alarm_127() -> Non
 # the other profiles refuse it
 
 
-@pytest.mark.parametrize(("profile", "title"), [("fanuc-0i", "FANUC 0i"), ("fanuc-30i", "FANUC 30i"), ("gsk980tdi", "GSK")])
+@pytest.mark.parametrize(
+    ("profile", "title"), [("fanuc-0i", "FANUC 0i"), ("fanuc-30i", "FANUC 30i"), ("gsk980tdi", "GSK")]
+)
 def test_4_control_flow_conditional_m99_is_a_dialect_feature_and_alarm_114_elsewhere(profile: str, title: str) -> None:
     errors = [d for d in check(COUNT_TO_10, profile) if d.severity == "error"]
     assert [(d.code, *at(d)) for d in errors] == [("dialect-feature", 5, 4, 24, "error")]

@@ -2,12 +2,13 @@
 block alone, before anything runs, written once for the interpreter and the static checks.
 
 ``validate_block`` lists each ``BlockProblem`` of a block in the interpreter's order: a refused
-macro-word abbreviation, IF without THEN and Haas's conditional ``[cond] M99 P n`` (alarm 114), NC words beside a macro statement
-(alarm 127), the words a ``G65``/``G66`` may not share its block with (a word before it, alarm
-127, or a modal G code the control sets first, ``Dialect.modal_g_before_call``; an O word, 127; a
-G code among its arguments, 129), a call without P (076), and, in a block of NC words that no
-code of the machine file makes a call, a G code that neither the dialect nor the machine has
-(010) and an M code written with a decimal point (007) (``machine/words.py``).
+macro-word abbreviation, IF without THEN and Haas's conditional ``[cond] M99 P n`` (alarm 114),
+NC words beside a macro statement (alarm 127), the words a ``G65``/``G66`` may not share its
+block with (a word before it, alarm 127, or a modal G code the control sets first,
+``Dialect.modal_g_before_call``; an O word, 127; a G code among its arguments, 129), a call
+without P (076), and, in a block of NC words that no code of the machine file makes a call, a G
+code that neither the dialect nor the machine has (010) and an M code written with a decimal
+point (007) (``machine/words.py``).
 
 A problem whose ``stops`` is True is an alarm: the interpreter raises the first one as the block's
 alarm when the block runs (``message``, the alarm's text), and the static checks report each as
