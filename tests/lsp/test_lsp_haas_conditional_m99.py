@@ -1,6 +1,7 @@
 """Haas's conditional jump ``[cond] M99 P n`` (docs/semantics.md §4) in the editor, through a real
-client: a Haas document that uses it has no errors, go to definition on the P leads to its N line
-and hover on the condition answers; read as ``fanuc-0i`` the line is a ``dialect-feature`` error."""
+client: a Haas document that uses it has no errors, go to definition on the P leads to its N line,
+hover on the condition answers and hover on the M99 says it is a conditional jump; read as
+``fanuc-0i`` the line is a ``dialect-feature`` error."""
 
 from __future__ import annotations
 
@@ -15,7 +16,7 @@ pytestmark = pytest.mark.asyncio(loop_scope="module")
 haas_en = session_fixture(HERE / "workspace_haas", "en")
 
 TEXT = "%\nO01050 (COUNT TO 10)\n#100=0\nN10 #100=#100+1\nN50 [#100 LT 10] M99 P10\nM30\n%\n"
-N10, P10, COND_VAR, COND_OP = (3, 0), (4, 22), (4, 6), (4, 11)  # 0-based line and column
+N10, P10, COND_VAR, COND_OP, M99 = (3, 0), (4, 22), (4, 6), (4, 11), (4, 18)  # 0-based line and column
 
 
 async def test_haas_conditional_m99_checks_clean_and_its_p_leads_to_the_label(
@@ -35,6 +36,8 @@ async def test_haas_conditional_m99_checks_clean_and_its_p_leads_to_the_label(
             types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(*COND_OP))
         )
         assert "jumps to it" in await hover_text(haas_en, uri, *N10)
+        said = await hover_text(haas_en, uri, *M99)  # not "return from a subprogram"
+        assert said.startswith("**[cond] M99 P n** — Conditional jump (Haas): to block Nn when the condition holds")
     finally:
         close_file(haas_en, uri)
     fanuc = open_file(fanuc_en, FANUC / "count.nc", TEXT)
@@ -42,5 +45,7 @@ async def test_haas_conditional_m99_checks_clean_and_its_p_leads_to_the_label(
         found = (await diagnostics_for(fanuc_en, fanuc, 1)).diagnostics
         errors = [(d.range.start.line, d.code) for d in found if d.severity == types.DiagnosticSeverity.Error]
         assert errors == [(4, "dialect-feature")]
+        said = await hover_text(fanuc_en, fanuc, *M99)
+        assert "FANUC 0i Custom Macro B does not read it: the control stops at this block with alarm 114" in said
     finally:
         close_file(fanuc_en, fanuc)
