@@ -12,6 +12,9 @@ from __future__ import annotations
 import pytest
 
 from cncmacro.analysis.sites import jump_sites
+from cncmacro.dialects import get_dialect
+from cncmacro.lsp.conditional_m99 import if_goto_rewrite
+from cncmacro.syntax.block_parser import parse_block
 from cncmacro.syntax.nodes import If, Number, Var, Word
 from conftest import block, error
 from running import alarm, final, lines, run
@@ -154,6 +157,19 @@ def test_4_control_flow_conditional_m99_refused_is_said_in_chinese() -> None:
 def test_4_control_flow_conditional_m99_refused_elsewhere_still_has_its_label_checked() -> None:
     text = lines("O1000", "#100=1", "[#100 LT 10] M99 P20", "M30")
     assert sorted(d.code for d in check(text, "fanuc-0i")) == ["dialect-feature", "undefined-label"]
+
+
+def test_4_control_flow_conditional_m99_written_as_if_goto_runs_the_same_elsewhere() -> None:
+    # the quick fix the editor offers where the profile has no conditional M99
+    rows = COUNT_TO_10.split("\n")
+    jump = rows[4]
+    assert if_goto_rewrite(parse_block(jump), jump, get_dialect(HAAS)) is None  # haas reads it: nothing to fix
+    start, end, new = if_goto_rewrite(parse_block(jump), jump, get_dialect("fanuc-0i")) or (0, 0, "")
+    assert new == "IF [#100 LT 10] GOTO 10"
+    rows[4] = rows[4][:start] + new + rows[4][end:]
+    rewritten = "\n".join(rows)
+    assert rows[4] == "N50 IF [#100 LT 10] GOTO 10" and check(rewritten, "fanuc-0i") == []
+    assert final(rewritten, "fanuc-0i") == final(COUNT_TO_10, HAAS)
 
 
 def test_4_control_flow_an_m99_word_alone_is_still_an_m99() -> None:

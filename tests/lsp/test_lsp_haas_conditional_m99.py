@@ -1,7 +1,7 @@
 """Haas's conditional jump ``[cond] M99 P n`` (docs/semantics.md §4) in the editor, through a real
 client: a Haas document that uses it has no errors, go to definition on the P leads to its N line,
 hover on the condition answers and hover on the M99 says it is a conditional jump; read as
-``fanuc-0i`` the line is a ``dialect-feature`` error."""
+``fanuc-0i`` the line is a ``dialect-feature`` error with a quick fix that writes it as IF..GOTO."""
 
 from __future__ import annotations
 
@@ -47,5 +47,19 @@ async def test_haas_conditional_m99_checks_clean_and_its_p_leads_to_the_label(
         assert errors == [(4, "dialect-feature")]
         said = await hover_text(fanuc_en, fanuc, *M99)
         assert "FANUC 0i Custom Macro B does not read it: the control stops at this block with alarm 114" in said
+        refused = [d for d in found if d.code == "dialect-feature"]
+        actions = await fanuc_en.text_document_code_action_async(
+            types.CodeActionParams(
+                types.TextDocumentIdentifier(fanuc),
+                types.Range(types.Position(4, 0), types.Position(4, 0)),
+                types.CodeActionContext(diagnostics=refused),
+            )
+        )
+        [fix] = [a for a in actions or [] if isinstance(a, types.CodeAction) and a.title.startswith("Write it as")]
+        assert fix.title == "Write it as IF [#100 LT 10] GOTO 10" and list(fix.diagnostics or []) == refused
+        assert fix.edit is not None and fix.edit.changes is not None
+        [edit] = fix.edit.changes[fanuc]
+        rewritten = (edit.range.start.line, edit.range.start.character, edit.range.end.character, edit.new_text)
+        assert rewritten == (4, 4, 24, "IF [#100 LT 10] GOTO 10")
     finally:
         close_file(fanuc_en, fanuc)

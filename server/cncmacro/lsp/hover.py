@@ -29,7 +29,7 @@ from ..machine.calls import argument_targets, letters_for_local
 from ..machine.variables import named_number
 from ..syntax.nodes import Abbreviation, Bracket, Call, CornerWord, NamedVar, Number, Unary, Var, Word
 from ..syntax.walk import nodes_at
-from .conditional_m99_hover import conditional_m99_hover
+from .conditional_m99 import conditional_m99_hover
 from .cursor import Cursor, cursor_at
 from .cycle_lenses import elapsed_text
 from .program_docs import doc_lines
