@@ -123,6 +123,14 @@ def test_4_control_flow_haas_conditional_m99_to_a_vacant_p_is_alarm_128() -> Non
     assert alarm(lines("[1 LT 2] M99 P100000", "M30"), HAAS) == (128, 1)
 
 
+def test_4_control_flow_haas_conditional_m99_into_a_loop_is_refused_as_a_goto_is() -> None:
+    text = lines("#1=0", "[#1 EQ 0] M99 P10", "WHILE [#1 LT 3] DO1", "N10 #1=#1+1", "END1", "M30")
+    m = run(text, HAAS)
+    assert m.alarm is not None and (m.alarm.number, m.alarm.line + 1) == (126, 2)
+    assert str(m.alarm.message) == "M99 P10 jumps into a WHILE/DO loop from outside it"
+    assert [d.code for d in check(text, HAAS)] == ["jump-into-loop"]
+
+
 def test_4_control_flow_haas_conditional_m99_checks_clean() -> None:
     assert check(COUNT_TO_10, HAAS) == []
 

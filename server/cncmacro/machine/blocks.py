@@ -129,8 +129,8 @@ class CompiledFile:
             raise MacroAlarm(
                 LOOP_NUMBER,
                 detail(
-                    f"GOTO {n} jumps into a WHILE/DO loop from outside it",
-                    f"GOTO {n} 从循环外转入 WHILE/DO 循环内",
+                    f"{how}{n} jumps into a WHILE/DO loop from outside it",
+                    f"{how}{n} 从循环外转入 WHILE/DO 循环内",
                 ),
                 "jump-into-loop",
             )
