@@ -94,7 +94,7 @@ def word(draw) -> str:
 
 @st.composite
 def statement(draw) -> str:
-    kind = draw(st.integers(0, 7))
+    kind = draw(st.integers(0, 8))
     var = draw(st.sampled_from(["#1", "#100", "#[#2+1]", "#3000", "#9100"]))
     if kind == 0:
         return _join(draw, [var, "=", draw(expr())])
@@ -111,6 +111,9 @@ def statement(draw) -> str:
         return _join(draw, [draw(_case("GOTO")), draw(st.sampled_from(["10", "#1", "[#2*10]"]))])
     if kind == 6:  # THEN left out (docs/semantics.md §4)
         return _join(draw, [draw(_case("IF")), draw(condition()), var, "=", draw(expr(4))])
+    if kind == 7:  # Haas's conditional M99 (docs/semantics.md §4)
+        target = draw(st.sampled_from(["10", "#5", "[#1+2]"]))
+        return _join(draw, [draw(condition()), draw(_case("M")) + "99", draw(_case("P")) + target])
     return draw(_case(draw(st.sampled_from(["POPEN", "PCLOS", "DPRNT"])))) + (
         "[X#2[53]**Y#5[53]]" if draw(st.booleans()) else ""
     )

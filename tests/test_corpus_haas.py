@@ -6,9 +6,9 @@ stops with the ``#3000`` alarm of the macro it calls with a bad argument, and ``
 finds nothing else to report in the folder. They use what a Haas has and a FANUC 0i lacks:
 5-digit program numbers, ``M97`` local subprograms, ``G154 P``/``G110``-``G129`` work offsets at
 #14001... (#7001... for P1-P20), tool offsets by tool number (#2001, #2201, #2401), tool life
-#5601/#5701, loads #1098/#1066, the NGC commons #10500..., G12/G13/G47/G150/G187/G103 and the
-probing macros O9810-O9833 kept on the control; under ``fanuc-0i`` the same folder has errors
-and a ``profile-suggestion`` naming ``haas``."""
+#5601/#5701, loads #1098/#1066, the NGC commons #10500..., G12/G13/G47/G150/G187/G103, the
+conditional jump ``[cond] M99 P n`` and the probing macros O9810-O9833 kept on the control;
+under ``fanuc-0i`` the same folder has errors and a ``profile-suggestion`` naming ``haas``."""
 
 from __future__ import annotations
 
@@ -171,6 +171,15 @@ def check_spindle_warmup(r: dict[str, Any]) -> None:
     assert r["messages"] == ["WARM-UP DONE - LOAD THE FIRST PART"]
 
 
+def check_face_passes_m99(r: dict[str, Any]) -> None:
+    # N50 [#103 GT -#101] M99 P10 branches back while the pass is above the depth (docs/semantics.md §4)
+    plunges = [m for m in moves(r, "G01") if m["line"] == 17]
+    assert [m["to"]["Z"] for m in plunges] == [-0.5, -1.0, -1.5, -2.0]
+    assert var(r, 104) == 4 and var(r, 103) == -2.0
+    stripes = [xy(m) for m in moves(r, "G01") if m["line"] in (18, 19, 20, 21)]
+    assert stripes == [(112.0, 4.0), (112.0, 16.0), (-12.0, 16.0), (-12.0, 4.0)] * 4
+
+
 MAINS: dict[str, Callable[[dict[str, Any]], None]] = {
     "flange_bolt_circles.nc": check_flange_bolt_circles,
     "g70_bolt_patterns.nc": check_g70_bolt_patterns,
@@ -189,6 +198,7 @@ MAINS: dict[str, Callable[[dict[str, Any]], None]] = {
     "two_covers_m98.nc": check_two_covers_m98,
     "cover_slots_g187.nc": check_cover_slots_g187,
     "spindle_warmup.nc": check_spindle_warmup,
+    "face_passes_m99.nc": check_face_passes_m99,
 }
 
 
@@ -289,13 +299,15 @@ def test_fanuc_0i_finds_errors_in_the_haas_corpus_and_suggests_haas() -> None:
         "m97_pocket_grid.nc": ("G103",),
         "tool_life_sister.nc": ("#5705", "#5605", "#3026"),
         "spindle_load_roughing.nc": ("#1098", "#1066"),
+        "face_passes_m99.nc": ("conditional jump", "alarm 114"),
     }.items():
         errors = " ".join(d["message"] for d in found if Path(d["file"]).name == name and d["severity"] == "error")
         assert all(w in errors for w in words), (name, errors)
     suggestions = [d for d in found if d["code"] == "profile-suggestion"]
     named = {Path(d["file"]).name for d in suggestions}
     assert {"probe_bore_g154.nc", "fixture_plate_g110.nc", "circular_pockets_g13.nc", "g150_window_pocket.nc",
-            "m97_pocket_grid.nc", "engrave_serial.nc", "cover_slots_g187.nc"} <= named  # fmt: skip
+            "m97_pocket_grid.nc", "engrave_serial.nc", "cover_slots_g187.nc",
+            "face_passes_m99.nc"} <= named  # fmt: skip
     assert all("dialect=haas" in d["message"] for d in suggestions)
     assert "program-not-found" in by_file["probe_vise_wips.nc"]  # O9810-O9833 are not on a 0i
 

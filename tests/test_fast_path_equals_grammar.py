@@ -63,7 +63,8 @@ def test_real_lines():
     "text",
     ["G65 P[CUT] L2", "DPRNT[X#2[53]]", "#1=[1 LT 2]", "IF[#1]GOTO1", "X[#1 GT 2]", "#1=SIN[#2 GT 1]", "x5y.5",
      "#1=[#_ABSIO[1]]", "[#_UO[#2+1]]=1", "#_DATE=1", "X#_ABSIO[2]", "#1=POW[2,3]", "#1=ATAN[1,2]",
-     "#1=PRM[1320,1]/[2]", "#1=ADP[#24]", "[1]=2"],
+     "#1=PRM[1320,1]/[2]", "#1=ADP[#24]", "[1]=2", "N50 [#100 LT 10] M99 P10", "[#1EQ#0]M99P#2",
+     "[#1 LT 2] M99"],
 )  # fmt: skip
 def test_lines_the_fast_path_leaves_to_the_grammar(text):
     check_line(text)

@@ -108,6 +108,14 @@ def test_haas_m97_p_is_rewritten():
     assert final(after, "haas") == final(text, "haas")
 
 
+def test_haas_conditional_m99_p_is_rewritten_as_a_goto():
+    # docs/semantics.md §4: [cond] M99 P n lands as GOTO n does
+    text = lines("O1000", "#1=0", "N4 #1=#1+1", "N8 [#1 LT 3] M99 P4", "M30")
+    after = _renumbered(text, "haas", step=10)
+    assert "N10 #1=#1+1" in after and "N20 [#1 LT 3] M99 P10" in after
+    assert final(after, "haas") == final(text, "haas") == {1: 3}
+
+
 def test_a_computed_goto_refuses_and_names_its_line():
     text = lines("O1000", "#1=20", "GOTO #1", "N20 #2=1", "M30")
     plan = renumber(_program(text), get_dialect("fanuc"), step=10)

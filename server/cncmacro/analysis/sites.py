@@ -18,7 +18,8 @@ from ..syntax.walk import iter_nodes
 class JumpSite:
     """A literal label number a block jumps to: ``kind`` is ``GOTO``, ``M99``, ``M98 Q``, ``H8x``
     or a local subprogram call (``M97 P`` where the dialect has Haas's); ``start``/``end`` cover
-    the number."""
+    the number. Haas's conditional ``[cond] M99 P n`` is an ``IF..GOTO`` (``syntax.nodes.If``):
+    its P is a ``GOTO`` site, landing as GOTO does."""
 
     label: int
     kind: str

@@ -1,18 +1,19 @@
 """Checks of a block's macro statements (docs/semantics.md §3, §4): what one line decides alone.
 
 A block with a macro statement may hold no NC words (``nc-and-macro``, alarm 127; ``N`` and an O
-header are not words), IF needs THEN where the dialect says so, and an abbreviated macro word is
-refused where the dialect does not read it: the block rules of ``machine/block_rules.py``, which
-the interpreter raises as alarms. Each statement's expressions go through ``variable_checks``; an
-assignment's target through ``check_write``. A literal ``GOTO n`` / ``IF..GOTO n`` target is
-rounded as the interpreter rounds it: outside 1–99999 it is ``label-range`` (alarm 128),
-otherwise it becomes a ``Jump`` for the cross-line label checks.
+header are not words), IF needs THEN where the dialect says so, and an abbreviated macro word and
+Haas's conditional ``[cond] M99 P n`` are refused where the dialect does not read them: the block
+rules of ``machine/block_rules.py``, which the interpreter raises as alarms. Each statement's
+expressions go through ``variable_checks``; an assignment's target through ``check_write``. A
+literal ``GOTO n`` / ``IF..GOTO n`` / conditional ``M99 P n`` target is rounded as the
+interpreter rounds it: outside 1–99999 it is ``label-range`` (alarm 128), otherwise it becomes
+a ``Jump`` for the cross-line label checks.
 """
 
 from __future__ import annotations
 
 from ..bilingual import pick
-from ..machine.block_rules import ABBREVIATION, MISSING_THEN, NC_AND_STATEMENT, validate_block
+from ..machine.block_rules import ABBREVIATION, DIALECT_FORMS, NC_AND_STATEMENT, validate_block
 from ..machine.numbers import round_half_away
 from ..syntax.nodes import Assign, Block, Expr, Goto, If, Output, Statement, While
 from .line_facts import Jump, LineContext, LineFacts, block_finding, finding
@@ -29,7 +30,7 @@ def check_statements(block: Block, ctx: LineContext, facts: LineFacts) -> None:
         if nc is not None:
             facts.findings.append(block_finding(nc, ctx.locale))
             return
-        facts.findings.extend(block_finding(p, ctx.locale) for p in problems if p.rule == MISSING_THEN)
+        facts.findings.extend(block_finding(p, ctx.locale) for p in problems if p.rule in DIALECT_FORMS)
     for s in block.statements:
         _statement(s, ctx, facts)
 
@@ -43,7 +44,7 @@ def _statement(s: Statement, ctx: LineContext, facts: LineFacts) -> None:
         scan_value(s.condition, ctx, out)
         if s.goto is not None:
             scan_value(s.goto, ctx, out)
-            literal_jump(s.goto, "GOTO ", ctx, facts)
+            literal_jump(s.goto, "GOTO " if s.m99 is None else "M99 P", ctx, facts)
         elif s.then is not None:
             _statement(s.then, ctx, facts)
     elif s.__class__ is Goto:

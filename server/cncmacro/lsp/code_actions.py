@@ -1,6 +1,8 @@
 """Code actions: split a G65/G66 block that also holds NC words, clamp an out-of-range L,
-write out a macro word written shortened (``WH`` → ``WHILE``), and name the profile a file was
-written for (``profile-suggestion``: its dialect comment, or the machine file's ``base``).
+write out a macro word written shortened (``WH`` → ``WHILE``), write Haas's conditional
+``[cond] M99 P n`` as ``IF [cond] GOTO n`` where the profile does not read it
+(``conditional_m99.py``), and name the profile a file was written for (``profile-suggestion``:
+its dialect comment, or the machine file's ``base``).
 
 docs/semantics.md §5: only N may precede G65/G66 and no other G or M code or O word may share its
 block; the split moves those words (with the label) to a block of their own just before the
@@ -27,6 +29,7 @@ from ..library.files import SkippedFileError, read_bytes
 from ..library.machine_file import MACHINE_FILE_NAME, MAX_MACHINE_FILE_BYTES, MachineSettings
 from ..machine.calls import MAX_REPEAT
 from ..syntax.nodes import Number, Word
+from .conditional_m99 import if_goto_rewrite
 from .cursor import doc_range
 from .documents import OpenDocument
 from .positions import Encoding
@@ -46,6 +49,7 @@ _TITLES = {
     "split": ("Split: move the NC words to a block before the G65", "拆分：把NC代码移到G65之前的单独程序段"),
     "clamp": ("Clamp the repeat count to {value}", "把重复次数改为{value}"),
     "expand": ("Write {word} in full", "把{text}写全为{word}"),
+    "if-goto": ("Write it as {text}", "改写为 {text}"),
 }
 
 
@@ -138,6 +142,12 @@ def register(server: CncMacroServer) -> None:
                 mine = [d for d in diags if d.range.start.character == start]
                 code = "keyword-abbreviation" if doc.dialect.keyword_abbreviations else "dialect-feature"
                 out.append(_action(doc, _title("expand", ls.locale, text=text, word=word), expand, mine, code))
+            block = doc.block(line)
+            rewrite = if_goto_rewrite(block, doc.line(line), doc.dialect) if block and block.statements else None
+            if rewrite is not None:  # [cond] M99 P n where the profile has no such jump
+                start, end, new = rewrite
+                edit = types.TextEdit(doc_range(doc, line, start, end, encoding), new)
+                out.append(_action(doc, _title("if-goto", ls.locale, text=new), edit, diags, "dialect-feature"))
         out.extend(profile_actions(ls, doc, params.context.diagnostics))
         return out
 

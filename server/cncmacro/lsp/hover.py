@@ -4,7 +4,8 @@ System variables (also by their FANUC 30i names ``[#_ABSIO[1]]``, with the numbe
 for), G/M codes, functions and the GSK ``G65 Hm`` commands are described from the dialect
 tables; a macro word written shortened (``WH``) shows the whole word; a local
 shows the argument letters that fill it (``machine.calls``); a common shows where it is
-written; an N label shows the jumps to it; an O program (or the P of a call) shows its title
+written; an N label shows the jumps to it; the ``M99`` of Haas's ``[cond] M99 P n`` says it is
+a conditional jump; an O program (or the P of a call) shows its title
 and file, or, for a program kept on the control that the profile documents (Haas's probing
 macros), what it does, the arguments it reads (those the call gives marked) and what it
 writes. Only the block under the cursor is parsed; the places come from each file's site index
@@ -28,6 +29,7 @@ from ..machine.calls import argument_targets, letters_for_local
 from ..machine.variables import named_number
 from ..syntax.nodes import Abbreviation, Bracket, Call, CornerWord, NamedVar, Number, Unary, Var, Word
 from ..syntax.walk import nodes_at
+from .conditional_m99 import conditional_m99_hover
 from .cursor import Cursor, cursor_at
 from .cycle_lenses import elapsed_text
 from .program_docs import doc_lines
@@ -74,6 +76,10 @@ def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
     for a in b.abbreviations:
         if a.start <= col <= a.end:
             return abbreviation_hover(ls, cur, a), a.start, a.end
+    if b.statements:
+        m99 = conditional_m99_hover(b, col, cur.doc.dialect, ls.locale)  # [cond] M99 P n (Haas)
+        if m99 is not None:
+            return m99
     path = nodes_at(b, col)
     for node in reversed(path):
         if isinstance(node, Var):

@@ -2,12 +2,13 @@
 block alone, before anything runs, written once for the interpreter and the static checks.
 
 ``validate_block`` lists each ``BlockProblem`` of a block in the interpreter's order: a refused
-macro-word abbreviation and IF without THEN (alarm 114), NC words beside a macro statement
-(alarm 127), the words a ``G65``/``G66`` may not share its block with (a word before it, alarm
-127, or a modal G code the control sets first, ``Dialect.modal_g_before_call``; an O word, 127; a
-G code among its arguments, 129), a call without P (076), and, in a block of NC words that no
-code of the machine file makes a call, a G code that neither the dialect nor the machine has
-(010) and an M code written with a decimal point (007) (``machine/words.py``).
+macro-word abbreviation, IF without THEN and Haas's conditional ``[cond] M99 P n`` (alarm 114),
+NC words beside a macro statement (alarm 127), the words a ``G65``/``G66`` may not share its
+block with (a word before it, alarm 127, or a modal G code the control sets first,
+``Dialect.modal_g_before_call``; an O word, 127; a G code among its arguments, 129), a call
+without P (076), and, in a block of NC words that no code of the machine file makes a call, a G
+code that neither the dialect nor the machine has (010) and an M code written with a decimal
+point (007) (``machine/words.py``).
 
 A problem whose ``stops`` is True is an alarm: the interpreter raises the first one as the block's
 alarm when the block runs (``message``, the alarm's text), and the static checks report each as
@@ -29,11 +30,21 @@ from ..dialects.alarms import DECIMAL_POINT, FORMAT, G_ARGUMENT, IMPROPER_G_CODE
 from ..dialects.dialect import Dialect
 from ..syntax.nodes import Block, If, Number, Statement, Word
 from .calls import Call, code_value, codes_before_call, g_code_name, recognise_call
-from .words import abbreviation_refused, g_code_known, m_decimal_point, missing_then, unknown_g_code
+from .words import (
+    abbreviation_refused,
+    conditional_m99_refused,
+    g_code_known,
+    m_decimal_point,
+    missing_then,
+    unknown_g_code,
+)
 
 # the rules, as ``BlockProblem.rule`` names them
 ABBREVIATION = "abbreviation"  # WH for WHILE where the dialect does not read it
 MISSING_THEN = "missing-then"  # IF [..] <statement> where the dialect needs THEN
+CONDITIONAL_M99 = "conditional-m99"  # [cond] M99 P n where the dialect does not read it
+# the forms of a macro statement a dialect may lack: raised after the block's other format alarms
+DIALECT_FORMS = (MISSING_THEN, CONDITIONAL_M99)
 NC_AND_STATEMENT = "nc-and-macro"  # NC words and a macro statement in one block
 BEFORE_CALL = "before-call"  # words before G65/G66
 O_WITH_CALL = "o-with-call"  # an O word in a G65/G66 block
@@ -79,9 +90,9 @@ def validate_block(
     if block.statements:
         if words or block.corners:
             out.append(_nc_and_statement(block))
-        elif not dialect.if_without_then:
+        elif not dialect.if_without_then or not dialect.conditional_m99:
             for s in block.statements:
-                if s.__class__ is If and s.implicit_then:
+                if s.__class__ is If and (s.implicit_then or s.m99 is not None):
                     _statement(s, dialect, out)
         return out
     if not words:
@@ -120,9 +131,12 @@ def _statement(s: Statement, dialect: Dialect, out: list[BlockProblem]) -> None:
     if s.__class__ is not If:
         return
     then = s.then
-    if s.implicit_then and then is not None:  # a dialect without if_without_then (validate_block)
+    if s.implicit_then and then is not None and not dialect.if_without_then:
         text = missing_then(dialect)
         out.append(BlockProblem(MISSING_THEN, FORMAT, text, text, then.start, then.end))
+    if s.m99 is not None and not dialect.conditional_m99:
+        text = conditional_m99_refused(dialect)
+        out.append(BlockProblem(CONDITIONAL_M99, FORMAT, text, text, s.start, s.end))
     if then is not None:
         _statement(then, dialect, out)
 

@@ -42,7 +42,7 @@ from ..syntax.nodes import (
 from ..syntax.program import ProgramUnit
 from . import block_roles, jumps
 from .alarms import MacroAlarm, raiser
-from .block_rules import MISSING_THEN, first_alarm, validate_block
+from .block_rules import DIALECT_FORMS, first_alarm, validate_block
 from .corners import with_corners
 from .expressions import ExpressionCompiler, Getter
 from .numbers import MAX_VALUE, format_value, round_half_away, to_increment
@@ -106,16 +106,18 @@ class CompiledFile:
         return c
 
     # ---------------------------------------------------------------- jumps
-    def jump(self, frame: Any, pc: int, label: float | None) -> int:
+    def jump(self, frame: Any, pc: int, label: float | None, how: str = "GOTO ") -> int:
         """The line a GOTO on line ``pc`` lands on, leaving loops it jumps out of
-        (docs/semantics.md §4: forward to the end of the program, then from its start)."""
+        (docs/semantics.md §4: forward to the end of the program, then from its start). ``how``
+        is what the block writes before the label (``"M99 P"`` for Haas's conditional jump)."""
         if label is None:
-            raise MacroAlarm(SEQUENCE_NUMBER, detail("GOTO to a vacant sequence number", "GOTO 的顺序号为空变量"))
+            said = how.strip()
+            raise MacroAlarm(SEQUENCE_NUMBER, detail(f"{said} to a vacant sequence number", f"{said} 的顺序号为空变量"))
         n = int(round_half_away(label))
         if not 1 <= n <= 99999:
             raise MacroAlarm(
                 SEQUENCE_NUMBER,
-                detail(f"GOTO {n}: a sequence number must be 1 to 99999", f"GOTO {n}：顺序号必须在 1～99999 之间"),
+                detail(f"{how}{n}: a sequence number must be 1 to 99999", f"{how}{n}：顺序号必须在 1～99999 之间"),
                 "label-range",
             )
         key = (pc, n)
@@ -127,8 +129,8 @@ class CompiledFile:
             raise MacroAlarm(
                 LOOP_NUMBER,
                 detail(
-                    f"GOTO {n} jumps into a WHILE/DO loop from outside it",
-                    f"GOTO {n} 从循环外转入 WHILE/DO 循环内",
+                    f"{how}{n} jumps into a WHILE/DO loop from outside it",
+                    f"{how}{n} 从循环外转入 WHILE/DO 循环内",
                 ),
                 "jump-into-loop",
             )
@@ -294,7 +296,7 @@ class CompiledFile:
         if block.statements or block.abbreviations:  # the block rules of a macro statement (block_rules.py)
             problems = validate_block(block, self.machine.dialect)
             problem = first_alarm(problems) if problems else None
-            if problem is not None and problem.rule != MISSING_THEN:
+            if problem is not None and problem.rule not in DIALECT_FORMS:
                 return raiser(problem.alarm, problem.message)
             if len(block.statements) > 1:
                 return raiser(STATEMENT_FORMAT, detail("one macro statement per block", "一个程序段只能有一条宏语句"))
@@ -324,13 +326,14 @@ class CompiledFile:
             return self.assign(s, nxt)
         if isinstance(s, If):  # without THEN where THEN is needed: a block rule, raised in _body
             test = self.values.condition(s.condition)
-            if s.goto is not None:
+            if s.goto is not None:  # also Haas's [cond] M99 P n (Dialect.conditional_m99)
                 target = self.values.value(s.goto)
                 jump = self.jump
+                how = "GOTO " if s.m99 is None else "M99 P"
 
                 def if_goto(m: Machine, pc: int) -> int:
                     if test(m):
-                        return jump(m.frames[-1], pc, target(m))
+                        return jump(m.frames[-1], pc, target(m), how)
                     return nxt
 
                 return if_goto

@@ -1,5 +1,6 @@
 """Words and forms a control refuses: a G code it lacks, a decimal point in an M code (docs/semantics.md
-§8), an abbreviated macro word (§1) and IF without THEN (§4) where the dialect has none of them.
+§8), an abbreviated macro word (§1), IF without THEN and the conditional M99 (§4) where the
+dialect has none of them.
 
 A G code is known when the dialect's table lists it (``G_CODES`` of its data module, codes of
 both the milling and the turning series, the 30i's and the grinding cycles), when the machine
@@ -10,9 +11,10 @@ written with a decimal point (``M30.``) is alarm 007 "illegal use of decimal poi
 (GSK980TDi, whose manuals at hand give neither a complete code list nor those alarms) both are
 only warnings and a run goes on as if the word were a one-shot code.
 
-``WH`` for WHILE is read by FANUC (``Dialect.keyword_abbreviations``) and ``IF[..] #1=2`` without
-THEN by the FANUC profiles and Haas (``Dialect.if_without_then``); a dialect without the switch
-stops with alarm 114 at such a block. The interpreter (``blocks.py``, ``nc_blocks.py``) and the static checks
+``WH`` for WHILE is read by FANUC (``Dialect.keyword_abbreviations``), ``IF[..] #1=2`` without
+THEN by the FANUC profiles and Haas (``Dialect.if_without_then``) and Haas's conditional jump
+``[cond] M99 P n`` by Haas (``Dialect.conditional_m99``); a dialect without the switch stops with
+alarm 114 at such a block. The interpreter (``blocks.py``, ``nc_blocks.py``) and the static checks
 (``analysis/call_checks.py``, ``analysis/statement_checks.py``) take their messages from here.
 """
 
@@ -107,6 +109,16 @@ def missing_then(dialect: Dialect) -> Detail:
         "stops at this block with alarm 114; write THEN before the statement (FANUC and Haas controls run it without)",
         f"缺少 THEN：{dialect.title} 只接受 IF[...] GOTO n 和 IF[...] THEN <语句>，执行到此程序段时报警 114；"
         "请在语句前写 THEN（FANUC 与哈斯系统可以省略）",
+    )
+
+
+def conditional_m99_refused(dialect: Dialect) -> Detail:
+    """What to say of Haas's conditional jump ``[cond] M99 P n`` on a dialect that does not read it."""
+    return detail(
+        f"[cond] M99 P n is Haas's conditional jump (the same as IF [cond] GOTO n); {dialect.title} does not "
+        "read a condition before M99 and stops at this block with alarm 114; write IF [cond] GOTO n",
+        f"[条件] M99 P n 是哈斯系统的条件跳转（等同于 IF [条件] GOTO n）；{dialect.title} 不接受 M99 之前的条件，"
+        "执行到此程序段时报警 114；请写作 IF [条件] GOTO n",
     )
 
 

@@ -67,6 +67,8 @@ def _item_starts(block: Block) -> set[int]:
         starts.add(s.start)
         if isinstance(s, If) and s.then is not None:
             starts.add(s.then.start)
+        if isinstance(s, If) and s.m99 is not None:  # [cond] M99 P n: M99 and P are words
+            starts.update(w.start for w in s.m99)
     return starts
 
 

@@ -205,6 +205,20 @@ class _Builder(Transformer[Token, Items]):
         then = c[3]
         return If(cond, None, then, kw.start_pos, then.end)
 
+    def m99_jump(self, c: _Children) -> If:
+        """Haas's ``[cond] M99 P n``: ``IF [cond] GOTO n`` written another way (docs/semantics.md §4);
+        whether the dialect reads it is decided later (``machine/block_rules.py``)."""
+        cond: Bracket = c[0]
+        m99: Word = c[1]
+        if not _is_m99(m99):
+            raise BlockError(_BRACKET_STARTS_BLOCK, cond.start, cond.end)
+        p: Word | None = c[2] if len(c) > 2 else None
+        if p is None or p.letter != "P" or p.value is None:
+            where = p if p is not None else m99
+            raise BlockError(_M99_NEEDS_P, where.start, where.end)
+        _check_condition(cond)
+        return If(cond, p.value, None, cond.start, p.end, m99=(m99, p))
+
     def while_stmt(self, c: _Children) -> While:
         kw: _Tok
         cond: Bracket
@@ -314,6 +328,24 @@ class _Builder(Transformer[Token, Items]):
                     raise _relation_error(a)
         comma = any(isinstance(x, Token) and x.type == "COMMA" for x in c)
         return Call(name, args, head.start_pos, last.end_pos, comma)
+
+
+_BRACKET_STARTS_BLOCK = detail(
+    "a condition in brackets starts a block only in the conditional jump [cond] M99 P n (Haas); "
+    "write IF [cond] GOTO n or IF [cond] THEN <statement>",
+    "方括号中的条件只能在条件跳转 [条件] M99 P n（哈斯）中位于程序段开头；"
+    "请写作 IF [条件] GOTO n 或 IF [条件] THEN <语句>",
+)
+_M99_NEEDS_P = detail(
+    "the conditional M99 needs P n after it: the sequence number to jump to ([cond] M99 P n)",
+    "条件 M99 之后需要 P n：要跳转到的顺序号（[条件] M99 P n）",
+)
+
+
+def _is_m99(w: Word) -> bool:
+    """Whether ``w`` is ``M99`` written as a literal (``M99``, ``M099``)."""
+    v = w.value
+    return w.letter == "M" and isinstance(v, Number) and v.value == 99 and not v.has_point and v.text[0] != "+"
 
 
 def _has_relation(expr: Expr) -> bool:

@@ -169,7 +169,9 @@ class Assign:
 class If:
     """``IF [cond] GOTO n`` (``goto`` set) or ``IF [cond] THEN statement`` (``then`` set).
     ``implicit_then`` is True when the statement follows the condition without THEN
-    (``IF[#1GT10]#2=5``, a form some controls accept, docs/semantics.md §4)."""
+    (``IF[#1GT10]#2=5``, a form some controls accept, docs/semantics.md §4). ``m99`` holds the
+    ``M99`` and ``P`` words of Haas's conditional jump ``[cond] M99 P n``, which is
+    ``IF [cond] GOTO n`` written another way: ``goto`` is then the value of that P."""
 
     condition: Bracket
     goto: Expr | None
@@ -177,6 +179,7 @@ class If:
     start: int
     end: int
     implicit_then: bool = False
+    m99: tuple[Word, Word] | None = None
 
 
 @dataclass(slots=True)

@@ -59,6 +59,8 @@ def children(node: Node) -> tuple[Node, ...]:
     if isinstance(node, Assign):
         return (node.target, node.value)
     if isinstance(node, If):
+        if node.m99 is not None:  # [cond] M99 P n: the P word holds the target
+            return (node.condition, *node.m99)
         rest = node.goto if node.goto is not None else node.then
         return (node.condition, rest) if rest is not None else (node.condition,)
     if isinstance(node, While):

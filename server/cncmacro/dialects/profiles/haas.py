@@ -12,7 +12,8 @@ and decisions"; the letters below ([Z], [H], [P], ...) are the ones it lists. In
   numbered the Haas way (group 12 is the work coordinate system), address codes #4101–#4126;
 * tool life and load #5401–#6000 and the tool data read through #8550;
 * work offsets G52/G54–G59 (#5201…), G110–G129 = G154 P1–P20 (#7001… and #14001…), G154
-  P21–P99 (#14401…); pallets #7501…; settings #20001… and parameters #30001…, read only.
+  P21–P99 (#14401…); pallets #7501…; settings #20001… and parameters #30001…, read only;
+* the conditional jump ``[cond] M99 P n``, IF [cond] GOTO n written another way ([H1]).
 
 Where Haas reads a number as FANUC 0i does (the date #3011 and time #3012), the row is
 ``fanuc_data``'s own; #3000, #3001, #3002 and #3006 work as on the 0i but are described in Haas's
@@ -936,6 +937,7 @@ PROFILE = FANUC_0I.configured(
     word_format_alarms=False,
     keyword_abbreviations=False,
     if_without_then=True,
+    conditional_m99=True,
     common_ranges=(CommonRange(100, 199, True), CommonRange(500, 999, True), CommonRange(10000, 10999, True)),
     programs_on_control=((9000, 9999),),
     local_subprogram_code=97.0,
