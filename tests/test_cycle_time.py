@@ -218,6 +218,18 @@ def test_g73_retracts_d_after_each_peck(tmp_path: Path) -> None:
     assert (cycle["cut"], cycle["rapid"]) == (pytest.approx(15.0), pytest.approx(81.0))
 
 
+def test_a_peck_q_keeps_its_decimals(tmp_path: Path) -> None:
+    # peck_retract = 0.5 mm. G98 G73 Z-10 R2 Q2.5 F100 from Z20 (a Q read as 3 would peck 4 times, not 5):
+    #   G00 Z20: 0.05 s; position 10 mm: 0.025 s; rapid Z20 -> R2 18 mm: 0.045 s
+    #   feed 2.5, then 3.0, 3.0, 3.0 (d + Q), then 2.5 (the last 2 mm + d): 14 mm = 8.4 s;
+    #   four retracts of 0.5 mm: 2 mm = 0.005 s; rapid Z-10 -> Z20 (G98): 30 mm = 0.075 s
+    #   total 8.6 s; cut 14 mm; rapid 20 + 10 + 18 + 2 + 30 = 80 mm
+    text = lines("O1016", "G21 G90 G94", "G00 X0 Y0 Z20.", "G98 G73 X10. Z-10. R2. Q2.5 F100", "G80", "M30")
+    cycle = run_json(tmp_path, text, machine_file="[timing]\npeck_retract = 0.5\n")["cycle"]
+    assert cycle["seconds"] == pytest.approx(8.6, rel=0.01)
+    assert (cycle["cut"], cycle["rapid"]) == (pytest.approx(14.0), pytest.approx(80.0))
+
+
 def test_g82_dwells_p_at_the_bottom_and_k_repeats_the_hole_by_the_g91_increment(tmp_path: Path) -> None:
     # G91: R-8 is 8 mm below the initial level Z10 (R at Z2), Z-8 is 8 mm below R (bottom Z-6);
     # K3 drills three holes, each 15 mm further along X. Each hole:

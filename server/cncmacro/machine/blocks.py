@@ -53,7 +53,10 @@ if TYPE_CHECKING:
 
 Runner = Callable[["Machine", int], int]
 
-INTEGER_LETTERS = frozenset("MSTHDNOPLBEQ")
+INTEGER_LETTERS = frozenset("MSTHDNOPLB")
+# distances whose letter may also be a whole number elsewhere (M98 Q n, a lathe cycle's P/Q labels):
+# a G83 peck Q2.5 or a thread's E11.5 keeps its decimals, never read as increments
+DECIMAL_LETTERS = frozenset("QE")
 AXIS_LETTERS = frozenset("XYZABCUVWIJKR")
 _ALARM_IN_MESSAGE = re.compile(r"\(alarm (\d+)\)")
 MAX_LOOP_DEPTH = 3
@@ -521,6 +524,8 @@ class CompiledFile:
             return round_half_away(v)
         if letter == "F":
             return v
+        if letter in DECIMAL_LETTERS:
+            return to_increment(v, 4 if self.machine.modal.get("units") == 20.0 else 3)
         if literal and not point and self.machine.settings.decimal_point == "increment":
             v = v / 1000.0
         return to_increment(v, 4 if self.machine.modal.get("units") == 20.0 else 3)
