@@ -84,4 +84,35 @@ class CncMacroClient extends DebugClient {
   }
 }
 
-module.exports = { CncMacroClient, program, PROGRAMS, PYTHON, ROOT };
+// A client started before each test of the calling file and stopped after it. What it returns
+// stands for the client of the test that runs (`dc.begin(...)`, `dc.output`); `dc.restart()`
+// stops it and starts a fresh one within the test.
+function clientPerTest() {
+  const { afterEach, beforeEach } = require('node:test');
+  let current = null;
+  const restart = async () => {
+    await current.stop();
+    current = new CncMacroClient();
+    await current.start();
+  };
+  beforeEach(async () => {
+    current = new CncMacroClient();
+    await current.start();
+  });
+  afterEach(async () => {
+    await current.stop();
+  });
+  return new Proxy({}, {
+    get(_, name) {
+      if (name === 'restart') return restart;
+      const value = current[name];
+      return typeof value === 'function' ? value.bind(current) : value;
+    },
+    set(_, name, value) {
+      current[name] = value;
+      return true;
+    },
+  });
+}
+
+module.exports = { CncMacroClient, clientPerTest, program, PROGRAMS, PYTHON, ROOT };

@@ -4,19 +4,10 @@
 'use strict';
 
 const assert = require('node:assert/strict');
-const { afterEach, beforeEach, describe, test } = require('node:test');
-const { CncMacroClient, program } = require('./client.js');
+const { describe, test } = require('node:test');
+const { clientPerTest, program } = require('./client.js');
 
-let dc;
-
-beforeEach(async () => {
-  dc = new CncMacroClient();
-  await dc.start();
-});
-
-afterEach(async () => {
-  await dc.stop();
-});
+const dc = clientPerTest();
 
 const PROGRAM = program('tool_changes.nc');
 const STOP_AND_DRILL = program('stop_and_drill.nc');
@@ -62,9 +53,7 @@ describe('breaking on codes', () => {
     await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'M1' }, { name: 'G1' }] });
     await continueTo();
     assert.equal((await dc.top()).line, 11);
-    await dc.stop();
-    dc = new CncMacroClient();
-    await dc.start();
+    await dc.restart();
     await dc.begin({ program: PROGRAM }, { functionBreakpoints: ['G1'] });
     assert.equal((await dc.top()).line, 6);
   });

@@ -6,19 +6,10 @@ const assert = require('node:assert/strict');
 const fs = require('node:fs');
 const os = require('node:os');
 const path = require('node:path');
-const { afterEach, beforeEach, describe, test } = require('node:test');
-const { CncMacroClient, program } = require('./client.js');
+const { describe, test } = require('node:test');
+const { clientPerTest, program } = require('./client.js');
 
-let dc;
-
-beforeEach(async () => {
-  dc = new CncMacroClient();
-  await dc.start();
-});
-
-afterEach(async () => {
-  await dc.stop();
-});
+const dc = clientPerTest();
 
 describe('starting and breakpoints', () => {
   test('stop on entry stops at the first block after the O header', async () => {
@@ -89,9 +80,7 @@ describe('starting and breakpoints', () => {
     await dc.begin({ program: program('main.nc') }, { functionBreakpoints: ['O0200'] });
     const frame = await dc.top();
     assert.deepEqual([frame.name, frame.line], ['O0200 (M98, level 1)', 2]);
-    await dc.stop();
-    dc = new CncMacroClient();
-    await dc.start();
+    await dc.restart();
     const { event } = await dc.begin({ program: program('alarm.nc'), set: { 100: 4 } }, { functionBreakpoints: ['N10'] });
     assert.equal(event.body.reason, 'function breakpoint');
     // the hole count #100 is given, so the IF jumps over the alarm to N10

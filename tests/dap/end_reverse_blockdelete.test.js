@@ -4,19 +4,10 @@
 'use strict';
 
 const assert = require('node:assert/strict');
-const { afterEach, beforeEach, describe, test } = require('node:test');
-const { CncMacroClient, program } = require('./client.js');
+const { describe, test } = require('node:test');
+const { clientPerTest, program } = require('./client.js');
 
-let dc;
-
-beforeEach(async () => {
-  dc = new CncMacroClient();
-  await dc.start();
-});
-
-afterEach(async () => {
-  await dc.stop();
-});
+const dc = clientPerTest();
 
 async function where() {
   const frame = await dc.top();
@@ -80,10 +71,7 @@ describe('the end of the program is a stop', () => {
     assert.equal(event.event, 'terminated');
     assert.equal((await exited).body.exitCode, 0);
     assert.equal(stops, 0);
-    await dc.stop();
-
-    dc = new CncMacroClient();
-    await dc.start();
+    await dc.restart();
     dc.on('stopped', () => { stops += 1; });
     const alarmExit = dc.waitForEvent('exited');
     await dc.begin({ program: program('alarm.nc'), noDebug: true }, { until: 'terminated' });

@@ -9,8 +9,8 @@
 'use strict';
 
 const assert = require('node:assert/strict');
-const { afterEach, beforeEach, describe, test } = require('node:test');
-const { CncMacroClient, program } = require('./client.js');
+const { describe, test } = require('node:test');
+const { clientPerTest, program } = require('./client.js');
 
 // tests/dap/programs/haas_m97.nc, line by line:
 //  1 (cncmacro: dialect=haas)         8 M97 P100         13 N100 #100=#100+1
@@ -22,16 +22,7 @@ const { CncMacroClient, program } = require('./client.js');
 //  7 #14001=12.5
 const HAAS = 'haas_m97.nc';
 
-let dc;
-
-beforeEach(async () => {
-  dc = new CncMacroClient();
-  await dc.start();
-});
-
-afterEach(async () => {
-  await dc.stop();
-});
+const dc = clientPerTest();
 
 async function frames() {
   const trace = (await dc.stackTraceRequest({ threadId: 1 })).body.stackFrames;

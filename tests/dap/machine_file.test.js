@@ -5,20 +5,11 @@
 
 const assert = require('node:assert/strict');
 const path = require('node:path');
-const { afterEach, beforeEach, test } = require('node:test');
-const { CncMacroClient } = require('./client.js');
+const { test } = require('node:test');
+const { clientPerTest } = require('./client.js');
 
 const SHOP = path.resolve(__dirname, '..', 'data', 'machine_workspace');
-let dc;
-
-beforeEach(async () => {
-  dc = new CncMacroClient();
-  await dc.start();
-});
-
-afterEach(async () => {
-  await dc.stop();
-});
+const dc = clientPerTest();
 
 test('a call to a macro kept on the control is stepped over; M98 P915101 steps into O915101', async () => {
   const { event } = await dc.begin({ program: path.join(SHOP, 'O1000.nc'), stopOnEntry: true });

@@ -6,21 +6,12 @@
 
 const assert = require('node:assert/strict');
 const path = require('node:path');
-const { afterEach, beforeEach, test } = require('node:test');
-const { CncMacroClient } = require('./client.js');
+const { test } = require('node:test');
+const { clientPerTest } = require('./client.js');
 
 const CELL = path.resolve(__dirname, '..', 'data', 'machine_30i_workspace');
 const PROGRAM = path.join(CELL, 'O3000.nc');
-let dc;
-
-beforeEach(async () => {
-  dc = new CncMacroClient();
-  await dc.start();
-});
-
-afterEach(async () => {
-  await dc.stop();
-});
+const dc = clientPerTest();
 
 async function row(frameId, scopeName, name) {
   const { variables } = await dc.scopeVariables(frameId, scopeName);

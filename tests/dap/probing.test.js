@@ -5,20 +5,11 @@
 'use strict';
 
 const assert = require('node:assert/strict');
-const { afterEach, beforeEach, test } = require('node:test');
-const { CncMacroClient, program } = require('./client.js');
+const { test } = require('node:test');
+const { clientPerTest, program } = require('./client.js');
 
 const BORE = program('probing/probe_bore.nc');
-let dc;
-
-beforeEach(async () => {
-  dc = new CncMacroClient();
-  await dc.start();
-});
-
-afterEach(async () => {
-  await dc.stop();
-});
+const dc = clientPerTest();
 
 test('the console says where each G31 stopped, and #5061 holds it', async () => {
   const breakpoints = { 'probing/probe_bore.nc': [{ line: 4 }, { line: 7 }, { line: 10 }] };

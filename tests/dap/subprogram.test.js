@@ -6,19 +6,10 @@
 'use strict';
 
 const assert = require('node:assert/strict');
-const { afterEach, beforeEach, describe, test } = require('node:test');
-const { CncMacroClient, program } = require('./client.js');
+const { describe, test } = require('node:test');
+const { clientPerTest, program } = require('./client.js');
 
-let dc;
-
-beforeEach(async () => {
-  dc = new CncMacroClient();
-  await dc.start();
-});
-
-afterEach(async () => {
-  await dc.stop();
-});
+const dc = clientPerTest();
 
 // tests/dap/programs/O0200.nc is `#103=7`, `#104=#103+1`, `M99`; main.nc calls it with M98 P0200.
 const SENTENCE =

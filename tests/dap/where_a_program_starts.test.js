@@ -5,19 +5,10 @@
 'use strict';
 
 const assert = require('node:assert/strict');
-const { afterEach, beforeEach, describe, test } = require('node:test');
-const { CncMacroClient, program } = require('./client.js');
+const { describe, test } = require('node:test');
+const { clientPerTest, program } = require('./client.js');
 
-let dc;
-
-beforeEach(async () => {
-  dc = new CncMacroClient();
-  await dc.start();
-});
-
-afterEach(async () => {
-  await dc.stop();
-});
+const dc = clientPerTest();
 
 describe('where a program starts', () => {
   test('stop on entry stands on an O line that holds a sequence number', async () => {
