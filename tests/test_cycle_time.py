@@ -134,13 +134,21 @@ def test_run_prints_the_totals_of_the_program_and_of_each_tool(tmp_path: Path) -
     assert "加工时间 O1006：≈ 18 秒 · 切削 150 mm · 快移 100 mm" in out
 
 
-def test_a_bad_timing_value_names_its_key(tmp_path: Path) -> None:
-    (tmp_path / ".cncmacro.toml").write_text("[timing]\nrapid = { X = -5 }\n", encoding="utf-8")
+@pytest.mark.parametrize(
+    ("table", "message"),
+    [
+        ("rapid = { X = -5 }", "'timing.rapid' must map axis letters to rapid rates above 0"),
+        ("peck_clearance = -1", "'timing.peck_clearance' must be the distance in mm above the depth reached where "
+                                "G83's rapid back in stops (0 or more)"),
+    ],
+)  # fmt: skip
+def test_a_bad_timing_value_names_its_key(tmp_path: Path, table: str, message: str) -> None:
+    (tmp_path / ".cncmacro.toml").write_text(f"[timing]\n{table}\n", encoding="utf-8")
     path = tmp_path / "MAIN.nc"
     path.write_text("O1\nM30\n", encoding="utf-8")
     code, _, err = cli("run", str(path))
     assert code == 2
-    assert "'timing.rapid' must map axis letters to rapid rates above 0" in err
+    assert message in err
 
 
 def test_the_clock_that_3001_reads_is_the_cycle_time() -> None:
@@ -288,15 +296,3 @@ def test_a_repeat_count_past_9999_is_an_alarm_and_haas_repeats_by_l() -> None:
     assert m.alarm is not None and m.alarm.number == 119
     m = run(lines("O1", "G00 Z10.", "G91 G81 X10. Z-5. R-8. F100 L3", "G90 G80", "M30"), "haas")
     assert [move.end[0] for move in m.moves if move.mode == 81.0] == [10.0, 20.0, 30.0]
-
-
-def test_a_bad_peck_distance_names_its_key(tmp_path: Path) -> None:
-    (tmp_path / ".cncmacro.toml").write_text("[timing]\npeck_clearance = -1\n", encoding="utf-8")
-    path = tmp_path / "MAIN.nc"
-    path.write_text("O1\nM30\n", encoding="utf-8")
-    code, _, err = cli("run", str(path))
-    assert code == 2
-    assert (
-        "'timing.peck_clearance' must be the distance in mm above the depth reached where G83's rapid back in "
-        "stops (0 or more)" in err
-    )
