@@ -6,6 +6,11 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
+from cncmacro.debugging.stepping import end_text, last_line_run
+from cncmacro.library.machine_file import MachineSettings
+from cncmacro.library.programs import ProgramLibrary
+from cncmacro.machine import Machine
+
 from .lsp_session import FANUC, GSK, close_file, edit, open_file
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
@@ -197,6 +202,37 @@ async def test_an_o_program_folds_exactly_to_its_m99(gsk_en: LanguageClient) -> 
     close_file(gsk_en, uri)
     programs = sorted((r.start_line, r.end_line) for r in ranges if r.kind is None)
     assert programs == [(0, 2), (5, 7)]
+
+
+# (a line as written, the code that ends a program there as the debugger names it, or None):
+# the codes that end a program spelled as programs spell them, and codes that do not; M29.6 is
+# M30 as the control rounds an M word (a warning on gsk980tdi, which runs on)
+_END_CASES = [
+    ("M30", "M30"), ("M02", "M02"), ("M2", "M02"), ("m030", "M30"), ("M29.6", "M30"), ("G0 X1. M30", "M30"),
+    ("N5 M99", "M99"), ("M20", None), ("M300", None), ("M3", None), ("M05 S0", None),
+]  # fmt: skip
+
+
+async def test_5_program_end_a_program_folds_where_its_run_ends_and_the_debugger_names_that_code(
+    gsk_en: LanguageClient,
+) -> None:
+    """One rule says which M codes end a program (machine/program_end.py): where a run of the
+    program ends, where the editor folds it and the code the debugger names all follow it."""
+    for line, code in _END_CASES:
+        text = f"O0100 (A)\n#1=1\n{line}\n#2=2\nG0 X0\n"
+        m = Machine("gsk980tdi", MachineSettings(max_blocks=1000), ProgramLibrary(), m99_ends_main=True)
+        m.start_file(str(GSK / "ends.CNC"), text)
+        m.run()
+        ends = code is not None
+        assert (m.status, 2 not in m.variables()) == ("completed", ends), line
+        assert end_text(m, "en") == (f"program end ({code})" if ends else "program end"), line
+        assert last_line_run(m) == (2 if ends else 4), line
+        uri = open_file(gsk_en, GSK / "ends.CNC", text)
+        ranges = await gsk_en.text_document_folding_range_async(
+            types.FoldingRangeParams(types.TextDocumentIdentifier(uri))
+        )
+        close_file(gsk_en, uri)
+        assert [(r.start_line, r.end_line) for r in ranges if r.kind is None] == [(0, 2 if ends else 4)], line
 
 
 async def test_semantic_tokens_delta_turns_the_old_answer_into_the_new_one(fanuc_zh: LanguageClient) -> None:

@@ -26,8 +26,8 @@ from ..machine import Machine
 from ..machine.block_roles import skipped
 from ..machine.commanded_axes import CommandedAxes
 from ..machine.frames import Move
+from ..machine.program_end import end_code
 from ..machine.status import FINISHED, RunStatus
-from ..syntax.nodes import Number
 from .breakpoints import Breakpoints, Hit
 from .history import History
 
@@ -270,13 +270,14 @@ class Stepper:
 
 
 def _end_code(m: Machine) -> str | None:
-    """``M30``, ``M02`` or ``M99`` when the block the main level stands on ended the run."""
+    """``M30``, ``M02`` or ``M99`` when the block the main level stands on ended the run
+    (``machine/program_end.py``)."""
     frame = m.frames[-1]
     blocks = frame.found.file.program.blocks
     if frame.pc < len(blocks):
-        for w in blocks[frame.pc].words or ():
-            if w.letter == "M" and isinstance(w.value, Number) and w.value.value in (2.0, 30.0, 99.0):
-                return f"M{int(w.value.value):02d}"
+        code = end_code(blocks[frame.pc])
+        if code is not None:
+            return f"M{int(code):02d}"
     return None
 
 

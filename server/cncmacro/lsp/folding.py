@@ -1,16 +1,16 @@
 """Folding ranges: WHILE..END loops, O programs up to exactly their last M99/M30/M02 (else up
-to the next program), and runs of comment-only lines, from the parser's ``Program`` and cached
-blocks. A program's range never ends inside one of its loops (an ``M99`` in a loop body is
-not the program's end there): it reaches the loop's END, so that the two nest, as editors
-that pair ranges by their lines need."""
+to the next program; which codes end a program is ``machine/program_end.py``'s), and runs of
+comment-only lines, from the parser's ``Program`` and cached blocks. A program's range never
+ends inside one of its loops (an ``M99`` in a loop body is not the program's end there): it
+reaches the loop's END, so that the two nest, as editors that pair ranges by their lines need."""
 
 from __future__ import annotations
 
-import re
 from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
+from ..machine.program_end import end_code
 from ..syntax.nodes import Block, Number
 from ..syntax.program import LoopPair
 
@@ -35,7 +35,7 @@ def register(server: CncMacroServer) -> None:
             while end > u.start and _is_blank(blocks[end]):
                 end -= 1
             last = end
-            while last > u.start and not _ends_program(blocks[last]):
+            while last > u.start and end_code(blocks[last]) is None:
                 last -= 1
             end = last if last > u.start else end
             end = _past_loops(program.loops, u.start, end)
@@ -69,16 +69,6 @@ def _past_loops(loops: list[LoopPair], start: int, end: int) -> int:
                 end = p.end_line
                 moved = True
     return end
-
-
-_END = re.compile(r"M0*(?:99|30|2)(?!\d)", re.IGNORECASE)
-
-
-def _ends_program(b: Block) -> bool:
-    """A block with M99, M30 or M02 (words outside comments)."""
-    if b.plain is not None:
-        return _END.search(b.plain) is not None
-    return any(w.letter == "M" and isinstance(w.value, Number) and w.value.value in (99, 30, 2) for w in b.words)
 
 
 def _is_blank(b: Block) -> bool:

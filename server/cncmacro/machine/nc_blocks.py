@@ -31,6 +31,7 @@ from .calls import (
     repeat_count,
 )
 from .hcodes import compile_h_code
+from .program_end import END_CODES, RETURN_CODE
 from .words import g_code_known, unknown_g_code
 
 if TYPE_CHECKING:
@@ -38,7 +39,7 @@ if TYPE_CHECKING:
     from .machine import Machine
     from .motion import PlainPlan, PlainRun
 
-CONTROL_M = {98.0, 99.0, 30.0, 2.0, 0.0, 198.0}
+CONTROL_M = {98.0, RETURN_CODE, *END_CODES, 0.0, 198.0}  # calls, return, end, M00
 
 
 def _literal_g(w: Word) -> float | None:
@@ -273,7 +274,7 @@ def _nc(
         if found_call is not None and found_call[1].call == "macro":
             return m.code_macro_call(*found_call, values, pc, nxt)
         nc_words = values
-        if mcontrol and (98.0 in mcontrol or 99.0 in mcontrol or 198.0 in mcontrol or local in mcontrol):
+        if mcontrol and (98.0 in mcontrol or RETURN_CODE in mcontrol or 198.0 in mcontrol or local in mcontrol):
             nc_words = [(letter, v) for letter, v in values if letter not in ("P", "L", "Q")]
         moved, skip_to = m.execute_nc(nc_words, file_path, pc)
         if found_call is not None:
@@ -288,10 +289,10 @@ def _nc(
             for text in notes:
                 m.note("call", text, pc, "repeat-count")
             return m.local_subprogram_call(words.get("P"), repeats, pc, nxt, local_kind)
-        if 99.0 in mcontrol:
+        if RETURN_CODE in mcontrol:
             p = next((v for letter, v in values if letter == "P"), None)
             return m.return_from_call(pc, p)
-        if 30.0 in mcontrol or 2.0 in mcontrol:
+        if not END_CODES.isdisjoint(mcontrol):
             return m.end_program(pc)
         if 0.0 in mcontrol:
             return m.pause(detail("M00 program stop", "M00 程序停止"), nxt)
