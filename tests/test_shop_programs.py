@@ -16,7 +16,7 @@ from cncmacro.library.machine_file import CallCode, MachineSettings
 from cncmacro.lsp.semantic_tokens import TOKEN_TYPES, line_tokens
 from cncmacro.syntax.document import ParsedDocument
 from conftest import block
-from running import alarm, final
+from running import alarm, final, run
 from static_helpers import at, check, coded, lines
 
 # ---------------------------------------------------------------- §3 bracket depth
@@ -98,6 +98,20 @@ def test_1_text_and_blocks_a_leading_percent_starts_the_tape_and_the_second_ends
 def test_1_text_and_blocks_running_into_the_closing_percent_ends_the_program():
     text = lines("O1000", "#1=1", "%", "#1=2", "M30")
     assert final(text)[1] == 1
+
+
+def test_1_text_and_blocks_what_follows_the_closing_percent_on_its_line_is_not_read():
+    text = lines("O1000", "#1=1", "% #1=2 G65 P9999 #3=[", "#1=3", "M30")
+    assert [(d.code, d.line + 1) for d in check(text)] == [("after-tape-end", 3)]
+    got = final(text)
+    assert got[1] == 1 and 2 not in got and 3 not in got
+
+
+def test_1_text_and_blocks_plain_moves_run_up_to_the_closing_percent_and_not_past_it():
+    text = lines("O1000", "G90 G0 X1. Y1.", "G1 X2. Y2. F100.", "", "%", "G1 X3. Y3.", "G1 X4. Y4.")
+    m = run(text)
+    assert m.status == "completed"
+    assert [(mv.line + 1, mv.end[:2]) for mv in m.moves] == [(2, (1.0, 1.0)), (3, (2.0, 2.0))]
 
 
 def test_1_text_and_blocks_a_dos_end_of_file_byte_without_percent_ends_the_file():

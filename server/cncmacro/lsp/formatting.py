@@ -45,7 +45,7 @@ async def format_options(ls: CncMacroServer, uri: str) -> FormatOptions:
 def edits(ls: CncMacroServer, doc: OpenDocument, first: int, last: int, options: FormatOptions) -> list[types.TextEdit]:
     encoding = ls.documents.encoding
     lines = doc.lines
-    changed = format_lines(lines, first, last, options, doc.parsed.program.tape_end)
+    changed = format_lines(lines, first, last, options, doc.parsed.program.read_end)
     return [types.TextEdit(doc_range(doc, i, 0, len(lines[i]), encoding), text) for i, text in sorted(changed.items())]
 
 

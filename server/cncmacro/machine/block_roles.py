@@ -7,8 +7,8 @@ here, so they cannot answer apart.
 
 - A line is *skipped* when running it does nothing: blank, comments only, a ``%`` mark, or a
   ``/`` block while the block delete switch is on. A plain line (``Block.plain``) never is.
-- Nothing after the tape's end is read: running into the closing ``%`` ends the program like
-  the end of the file, so the search for the next line stops there (``Program.tape_end``).
+- Nothing from the tape's end on is read: running into the closing ``%`` ends the program like
+  the end of the file, so the search for the next line stops there (``Program.read_end``).
 - An O line is a *header alone* when it holds nothing but the O word (a title and comments
   aside): a run that enters the program starts after it, and a run never stands on it. An O
   line that holds more, a sequence number (``O100 N5``), words or statements, is the program's
@@ -45,16 +45,11 @@ def passed_over(block: Block, block_delete: bool) -> bool:
     return skipped(block, block_delete) or header_only(block)
 
 
-def _read_to(program: Program) -> int:
-    """The line at which reading ends: the closing ``%``, else the file's end."""
-    return len(program.blocks) if program.tape_end is None else program.tape_end
-
-
 def next_line(program: Program, pc: int, block_delete: bool) -> int:
     """The next line after ``pc`` that does something: the closing ``%`` or the file's end
     (``len(program.blocks)``) at worst."""
     blocks = program.blocks
-    end = _read_to(program)
+    end = program.read_end
     i = pc + 1
     while i < end and skipped(blocks[i], block_delete):
         i += 1
@@ -64,7 +59,7 @@ def next_line(program: Program, pc: int, block_delete: bool) -> int:
 def first_line(program: Program, pc: int, block_delete: bool) -> int:
     """``pc`` itself if it does something, else the next line that does."""
     blocks = program.blocks
-    if pc < _read_to(program) and not skipped(blocks[pc], block_delete):
+    if pc < program.read_end and not skipped(blocks[pc], block_delete):
         return pc
     return next_line(program, pc, block_delete)
 
@@ -80,14 +75,14 @@ def entry(program: Program, unit: ProgramUnit, block_delete: bool) -> int:
 def runnable(program: Program, unit: ProgramUnit, block_delete: bool) -> bool:
     """Whether a run of ``unit`` runs a block of its own (not only its header, blank lines,
     comments and ``%`` marks)."""
-    return entry(program, unit, block_delete) < min(unit.end, _read_to(program))
+    return entry(program, unit, block_delete) < min(unit.end, program.read_end)
 
 
 def stop_line(program: Program, line: int, block_delete: bool) -> int | None:
     """The first line at or after ``line`` where a run can stand (before the block there
     runs), or None when no such line comes before the tape's end."""
     blocks = program.blocks
-    for k in range(max(0, line), _read_to(program)):
+    for k in range(max(0, line), program.read_end):
         if not passed_over(blocks[k], block_delete):
             return k
     return None

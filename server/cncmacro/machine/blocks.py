@@ -258,7 +258,7 @@ class CompiledFile:
         return watched
 
     def _compile(self, pc: int) -> Runner:
-        if pc == self.file.program.tape_end:
+        if pc == self.file.program.read_end:
             return _end_of_file  # the closing '%': the tape ends, what follows is never read
         block = self.file.program.blocks[pc]
         nxt = self.next_line(pc)

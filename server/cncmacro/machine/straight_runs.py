@@ -50,7 +50,7 @@ def run_straight(
         return 0, pc
     program = cf.file.program
     blocks = program.blocks
-    n_blocks = len(blocks) if program.tape_end is None else program.tape_end  # nothing after the closing '%'
+    n_blocks = program.read_end  # nothing from the closing '%' on
     g_words = m.plain_g_words()
     lathe = m._lathe
     cycles = m._cycle_codes

@@ -10,7 +10,12 @@ The tape ends at its closing ``%`` (docs/semantics.md §1): a ``%`` line before 
 starts the tape, the next one ends it, and a ``%`` after program text ends it at once (a line
 that starts with the DOS end-of-file character reads as such a mark). What follows the end
 (``tape_end``) is not part of the program: no unit, loop or tape mark is taken from it, and
-every layer above passes it over (``Program.read_end``).
+every layer above passes it over. Reading ends at the closing ``%`` itself (``Program.read_end``,
+the one answer to where a file's text ends for the run, the checks and the editor): a control
+reads the mark and stops, so nothing on that line after the ``%`` is read either (the parser
+keeps no block there), and running into it ends the program like the end of the file. The
+last O program still holds the line of its closing ``%`` (``ProgramUnit.end``), as the first
+holds the ``%`` that starts the tape.
 """
 
 from __future__ import annotations
@@ -82,8 +87,10 @@ class Program:
 
     @property
     def read_end(self) -> int:
-        """One past the last line that the control reads: the closing ``%``, or the file's end."""
-        return len(self.blocks) if self.tape_end is None else self.tape_end + 1
+        """The line at which reading ends: the closing ``%``, else the file's end
+        (``len(blocks)``). The lines before it are the program's text; the ``%`` line holds no
+        block and ends a run that reaches it (see the module docstring)."""
+        return len(self.blocks) if self.tape_end is None else self.tape_end
 
     def after_tape(self, line: int) -> bool:
         """True for a line after the closing ``%`` (not part of the program)."""
@@ -225,8 +232,8 @@ def update_program(program: Program, start: int, old_blocks: list[Block], new_bl
         _derive_from_markers(program)
     elif delta:
         program.shift(end, delta)
-    else:
-        program.units[-1].end = program.read_end
+    else:  # the last program holds its closing '%', as _derive_from_markers ends it
+        program.units[-1].end = len(program.blocks) if program.tape_end is None else program.tape_end + 1
 
 
 def _derive_from_markers(program: Program) -> None:
@@ -246,8 +253,8 @@ def _derive_from_markers(program: Program) -> None:
         if b.tape:
             tape_marks.append(i)
             if len(tape_marks) > 1 or _text_before(blocks, i):
-                tape_end = i  # the closing '%': nothing after it is read
-                unit.end = i + 1
+                tape_end = i  # the closing '%': reading ends here (``read_end``)
+                unit.end = i + 1  # the last program holds the line of its closing '%'
                 break
         if b.program is not None:
             _close_unit(open_loops, problems)
