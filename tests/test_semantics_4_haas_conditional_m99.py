@@ -64,7 +64,7 @@ def test_4_control_flow_conditional_m99_malformed_says_what_the_form_needs(text:
 
 
 def test_4_control_flow_conditional_m99_p_is_a_goto_jump_site() -> None:
-    [site] = jump_sites(block("N50 [#100 LT 10] M99 P10"))
+    [site] = jump_sites(block("N50 [#100 LT 10] M99 P10"), get_dialect("haas"))
     assert (site.label, site.kind, site.start, site.end) == (10, "GOTO", 22, 24)
 
 

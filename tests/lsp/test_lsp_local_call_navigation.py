@@ -16,6 +16,7 @@ from typing import Any
 from lsprotocol import types
 
 from cncmacro.dialects import Dialect, get_dialect
+from cncmacro.library.machine_file import CallCode
 from cncmacro.lsp.cursor import cursor_at
 from cncmacro.lsp.documents import Documents
 from cncmacro.lsp.hover import hover_text
@@ -37,8 +38,16 @@ class _Documents(Documents):
         return self.fixed
 
 
-def _server(dialect: Dialect) -> Any:
-    docs = _Documents(dialect)
+class _MacroM97(_Documents):
+    """Open documents all read in one given dialect, with a machine file whose ``[calls]`` makes
+    M97 a macro call of O9097."""
+
+    def calls_for(self, path: str) -> dict[str, CallCode] | None:
+        return {"M97": CallCode(9097)}
+
+
+def _server(dialect: Dialect, documents: type[_Documents] = _Documents) -> Any:
+    docs = documents(dialect)
     docs.open(types.TextDocumentItem(URI, "cncmacro", 1, TEXT))
     return SimpleNamespace(documents=docs, locale="en")
 
@@ -62,6 +71,12 @@ def test_5_references_of_n100_include_m97_p100() -> None:
     assert [(r.range.start.line, r.range.start.character) for r in found] == [(1, 5), (3, 0)]
     plain = _server(get_dialect("fanuc"))
     assert [r.range.start.line for r in find_references(plain, _at(plain, 3, 1), True) or []] == [3]
+
+
+def test_5_an_m97_the_machine_file_makes_a_call_is_no_jump_to_its_p() -> None:
+    ls = _server(haas_switched(), _MacroM97)
+    assert [r.range.start.line for r in find_references(ls, _at(ls, 3, 1), True) or []] == [3]
+    assert find_definition(ls, _at(ls, 1, 6)) is None  # P100 is an argument of the call of O9097
 
 
 def test_5_renaming_n100_rewrites_m97_p100() -> None:

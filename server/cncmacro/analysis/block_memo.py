@@ -21,9 +21,11 @@ and neither reads half an answer.
 
 from __future__ import annotations
 
+from ..dialects.dialect import Dialect
+from ..machine.jump_words import may_hold_jump
 from ..syntax.nodes import Block
 from .line_facts import LineContext, LineFacts
-from .sites import JumpSite, VariableSite, jump_sites, variable_sites
+from .sites import Calls, JumpSite, VariableSite, jump_sites, variable_sites
 from .static_checks import line_facts
 
 Sites = tuple[tuple[JumpSite, ...], tuple[VariableSite, ...]]
@@ -35,15 +37,15 @@ _LIMIT_MIN = 2_000  # entries kept while a document is edited, at least
 
 class _Entry:
     """What one block says: its facts with the context they were found under, and its sites
-    with the local call code they were found with. Each pair is one attribute, written in one
-    step, so a reader on another thread sees a whole pair or none."""
+    with the dialect and call codes they were found with. Each is one attribute, written in one
+    step, so a reader on another thread sees a whole answer or none."""
 
     __slots__ = ("block", "facts", "sites")
 
     def __init__(self, block: Block) -> None:
         self.block = block
         self.facts: tuple[LineContext, LineFacts | None] | None = None
-        self.sites: tuple[float | None, Sites] | None = None
+        self.sites: tuple[Dialect, Calls, Sites] | None = None
 
 
 class BlockMemo:
@@ -81,18 +83,18 @@ class BlockMemo:
             kept = entry.facts = (ctx, line_facts(block, ctx))
         return kept[1]
 
-    def sites(self, block: Block, local_call: float | None = None) -> Sites:
-        """The jumps and variables of ``block``; ``local_call`` is the dialect's
-        ``local_subprogram_code``."""
+    def sites(self, block: Block, dialect: Dialect, calls: Calls = None) -> Sites:
+        """The jumps and variables of ``block`` under ``dialect`` and the machine file's call
+        codes ``calls`` (which words are jumps: ``machine/jump_words.py``)."""
         plain = block.plain
         if plain is not None:
-            text = plain.upper()
-            if "M9" not in text and "H8" not in text and (local_call is None or "M" not in text):
+            if not may_hold_jump(plain):  # and no '#': a plain line holds address-number words only
                 return NO_SITES
         elif not block.statements and not block.words and not block.corners:
             return NO_SITES
         entry = self._entry(block)
         kept = entry.sites
-        if kept is None or kept[0] != local_call:
-            kept = entry.sites = (local_call, (tuple(jump_sites(block, local_call)), tuple(variable_sites(block))))
-        return kept[1]
+        if kept is None or kept[0] is not dialect or kept[1] is not calls:
+            found = (tuple(jump_sites(block, dialect, calls)), tuple(variable_sites(block)))
+            kept = entry.sites = (dialect, calls, found)
+        return kept[2]

@@ -34,6 +34,7 @@ from ..machine.calls import (
     repeat_count,
 )
 from ..machine.hcodes import ARITHMETIC, BRANCHES
+from ..machine.jump_words import return_word
 from ..machine.numbers import round_half_away
 from ..syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
 from .line_facts import CallSite, LineContext, LineFacts, ReturnJump, alarm_message, block_finding, finding
@@ -305,7 +306,7 @@ def _nc_block(
     elif call is not None:
         _subprogram_call(words, call.kind, ctx, facts)
     elif 99.0 in ms:
-        p = _last(words, "P")
+        p = return_word(words)  # the caller's label (machine/jump_words.py)
         value = _constant(p, ctx)
         if p is not None and value is not None:
             facts.returns.append(ReturnJump(int(round_half_away(value)), p.start, p.end))

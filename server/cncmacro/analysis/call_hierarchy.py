@@ -16,10 +16,11 @@ from ..dialects.dialect import Dialect
 from ..library.file_cache import LoadedFile
 from ..library.machine_file import CallCode
 from ..library.programs import FoundProgram, ProgramLibrary
+from ..machine.jump_words import local_call_kind
 from ..machine.jumps import first_line
 from ..syntax.program import ProgramUnit
 from .call_sites import CallSite, calls_on
-from .sites import jump_sites, local_call_kind
+from .sites import jump_sites
 
 Calls = Mapping[str, CallCode] | None
 Span = tuple[int, int, int]  # line, start, end
@@ -59,7 +60,7 @@ def label_item(f: LoadedFile, unit: ProgramUnit, label: int) -> CallTarget | Non
     return CallTarget(f.path, line, line + 1, unit.number, label, unit.title, span)
 
 
-def _local_calls(f: LoadedFile, unit: ProgramUnit, dialect: Dialect) -> list[tuple[int, int, int, int]]:
+def _local_calls(f: LoadedFile, unit: ProgramUnit, dialect: Dialect, calls: Calls) -> list[tuple[int, int, int, int]]:
     """(line, start, end, label) of the local subprogram calls of ``unit``."""
     code = dialect.local_subprogram_code
     if code is None:
@@ -69,7 +70,7 @@ def _local_calls(f: LoadedFile, unit: ProgramUnit, dialect: Dialect) -> list[tup
     return [
         (i, j.start, j.end, j.label)
         for i in range(unit.start, min(unit.end, f.program.read_end))
-        for j in jump_sites(blocks[i], code)
+        for j in jump_sites(blocks[i], dialect, calls)
         if j.kind == kind
     ]
 
@@ -86,7 +87,7 @@ def outgoing(
         if found is None or found.file.on_control:
             continue
         out.setdefault(program_item(found.file, found.unit), []).append((i, site.p.start, site.p.end))
-    for i, start, end, label in _local_calls(f, unit, dialect):
+    for i, start, end, label in _local_calls(f, unit, dialect, calls):
         if i in lines and (target := label_item(f, unit, label)) is not None:
             out.setdefault(target, []).append((i, start, end))
     return list(out.items())
@@ -106,7 +107,7 @@ def incoming(
         if f is None:
             return []
         unit = f.program.unit_at(item.start)
-        for i, start, end, label in _local_calls(f, unit, dialect_for(f.lines, f.path)):
+        for i, start, end, label in _local_calls(f, unit, dialect_for(f.lines, f.path), calls_for(f.path)):
             if label == item.label and label_item(f, unit, label) == item:
                 caller = program_item(f, f.program.unit_at(i))
                 out.setdefault(caller, []).append((i, start, end))

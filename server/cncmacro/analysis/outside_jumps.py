@@ -11,6 +11,8 @@ from pathlib import Path
 
 from ..dialects.dialect import Dialect
 from ..library.machine_file import CallCode
+from ..machine.jump_words import RETURN_LABEL as M99
+from ..machine.jump_words import SUBPROGRAM_LABEL as Q
 from .call_sites import calls_on
 from .sequence_numbers import OutsideJump
 from .sites import computed_jump_sites, jump_sites
@@ -40,9 +42,9 @@ def outside_jumps(
             if unit is None:
                 continue
             where = f"{Path(f.path).name}:{i + 1}"
-            local = dialect.local_subprogram_code
-            out += [OutsideJump(unit.start, j.label, where) for j in jump_sites(b, local) if j.kind == "M98 Q"]
-            out += [OutsideJump(unit.start, None, where) for k, _, _ in computed_jump_sites(b, local) if k == "M98 Q"]
+            out += [OutsideJump(unit.start, j.label, where) for j in jump_sites(b, dialect, calls) if j.kind == Q]
+            computed = computed_jump_sites(b, dialect, calls)
+            out += [OutsideJump(unit.start, None, where) for k, _, _ in computed if k == Q]
     dialect = dialect_for(doc.lines, doc.path)
     calls = calls_for(doc.path)
     for i, _, site in calls_on(program.blocks, range(program.read_end), dialect, calls):
@@ -52,10 +54,12 @@ def outside_jumps(
         if found is None or found.file.path == doc.path or found.file.on_control:
             continue
         caller = program.unit_at(i).start
-        theirs = dialect_for(found.file.lines, found.file.path).local_subprogram_code
+        theirs = dialect_for(found.file.lines, found.file.path)
+        their_calls = calls_for(found.file.path)
         for k in range(found.unit.start, min(found.unit.end, len(found.file.program.blocks))):
             fb = found.file.program.blocks[k]
             where = f"{Path(found.file.path).name}:{k + 1}"
-            out += [OutsideJump(caller, j.label, where) for j in jump_sites(fb, theirs) if j.kind == "M99"]
-            out += [OutsideJump(caller, None, where) for kind, _, _ in computed_jump_sites(fb, theirs) if kind == "M99"]
+            out += [OutsideJump(caller, j.label, where) for j in jump_sites(fb, theirs, their_calls) if j.kind == M99]
+            computed = computed_jump_sites(fb, theirs, their_calls)
+            out += [OutsideJump(caller, None, where) for kind, _, _ in computed if kind == M99]
     return out

@@ -110,7 +110,6 @@ class _FileJumps:
         self.literal: list[_Jump] = []
         self.computed: list[_Computed] = []
         blocks = program.blocks
-        local = dialect.local_subprogram_code
         self.ambiguous: set[tuple[int, int]] = set()  # (unit start, label) an M99 P may mean here or not
         self.callers: dict[int, list[int]] = {}  # unit start -> call lines of it in this file
         self.called: dict[int, int] = {}  # call line -> unit start of the program it calls
@@ -123,7 +122,7 @@ class _FileJumps:
                     self.called[i] = unit.start
         for i in range(program.read_end):
             b = blocks[i]
-            for j in jump_sites(b, local):
+            for j in jump_sites(b, dialect, calls):
                 units = self._searched(i, j.kind)
                 if j.kind == "M98 Q" and not units:  # M98 P#1 Q10: the program is computed, maybe this one
                     self.computed.append(_Computed(i, j.start, j.end, "M98 P", tuple(self.units)))
@@ -133,7 +132,7 @@ class _FileJumps:
                     continue
                 targets = {t for u in units for t in self._lands(i, j.kind, j.label, u)}
                 self.literal.append(_Jump(i, j.start, j.end, j.label, tuple(sorted(targets)), units))
-            for kind, start, end in computed_jump_sites(b, local):
+            for kind, start, end in computed_jump_sites(b, dialect, calls):
                 self.computed.append(_Computed(i, start, end, kind, self._searched(i, kind)))
 
     def _alone(self, line: int) -> bool:

@@ -20,9 +20,12 @@ from bisect import bisect_left, insort
 from collections.abc import Iterator
 from dataclasses import dataclass
 
+from ..dialects import get_dialect
+from ..dialects.dialect import Dialect
+from ..machine.jump_words import may_hold_jump
 from ..syntax.nodes import Block
 from .block_memo import NO_SITES, BlockMemo, Sites
-from .sites import VariableSite
+from .sites import Calls, JumpSite, VariableSite
 
 Lines = dict[int, list[int]]  # a label or variable number -> its sorted lines
 STEPPED_FROM = 100_000  # lines: the index of a document this long is made in steps (``SiteIndex.build``)
@@ -74,16 +77,23 @@ class _Maps:
 class SiteIndex:
     """The sorted lines of one document whose blocks have sites, found the first time they
     are asked for (not while a document is being opened), and the maps of ``_Maps`` made from
-    them the first time one is asked for. ``local_call`` is the document's dialect's local
-    subprogram call code (Haas ``M97``), whose P is a jump to a label."""
+    them the first time one is asked for. ``dialect`` and ``calls`` (the machine file's call
+    codes) decide which words are jumps (``machine/jump_words.py``: Haas ``M97 P``, gsk980tdi
+    ``G65 H8x P``, and none in a block that a configured code makes a call)."""
 
     def __init__(
-        self, blocks: list[Block], local_call: float | None = None, memo: BlockMemo | None = None, partial: bool = False
+        self,
+        blocks: list[Block],
+        dialect: Dialect | None = None,
+        calls: Calls = None,
+        memo: BlockMemo | None = None,
+        partial: bool = False,
     ) -> None:
         """``partial``: ``blocks`` are those of a document still being read (not ``ready``)."""
         self._blocks = blocks
         self.partial = partial
-        self.local_call = local_call
+        self.dialect = dialect if dialect is not None else get_dialect(None)
+        self.calls = calls
         self.memo = memo if memo is not None else BlockMemo()
         self._lines: list[int] | None = None
         self._sites: list[Sites] = []  # the sites of each of ``_lines``, as they were indexed
@@ -128,15 +138,14 @@ class SiteIndex:
         """Index the blocks from ``_next`` to ``stop``; the index is made once they all are."""
         lines, sites, maps = self._part
         block_sites = self.memo.sites
-        local = self.local_call
+        dialect, calls = self.dialect, self.calls
         blocks = self._blocks
         for i in range(self._next, stop):
             b = blocks[i]
             p = b.plain  # most lines of a CAM file: passed over here, without a call
-            if p is not None and "M9" not in p and "m9" not in p and "H8" not in p and "h8" not in p:
-                if local is None or ("M" not in p and "m" not in p):
-                    continue
-            s = block_sites(b, local)
+            if p is not None and not may_hold_jump(p):
+                continue
+            s = block_sites(b, dialect, calls)
             if s[0] or s[1]:
                 lines.append(i)
                 sites.append(s)
@@ -169,7 +178,7 @@ class SiteIndex:
         fresh_lines: list[int] = []
         fresh_sites: list[Sites] = []
         for k in range(new_count):
-            s = self.memo.sites(self._blocks[start + k], self.local_call)
+            s = self.memo.sites(self._blocks[start + k], self.dialect, self.calls)
             if s[0] or s[1]:
                 fresh_lines.append(start + k)
                 fresh_sites.append(s)
@@ -195,6 +204,15 @@ class SiteIndex:
                 maps.remove(line, s)
         del lines[k:], sites[k:]
         self._next = start
+
+    def reads_with(self, dialect: Dialect, calls: Calls) -> bool:
+        """Whether the index was made under ``dialect`` and ``calls`` (else it is made again)."""
+        return self.dialect is dialect and self.calls is calls
+
+    def jumps_of(self, block: Block) -> tuple[JumpSite, ...]:
+        """The jumps of ``block`` (a block of the document, at the cursor say) by the rule the
+        index reads its lines with."""
+        return self.memo.sites(block, self.dialect, self.calls)[0]
 
     def between(self, start: int, end: int) -> list[int]:
         """The indexed lines in ``start``..``end`` (exclusive)."""

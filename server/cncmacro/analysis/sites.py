@@ -1,25 +1,32 @@
 """Where things are mentioned on one block: jumps to N labels, variables read and written,
 function and keyword names. Every feature that searches (references, rename, hover's "written
 at", signature help's "reads") asks these questions of cached blocks, one block at a time.
+Which words of a block are jumps is the interpreter's rule (``machine/jump_words.py``, on the
+call ``recognise_call`` finds), so they depend on the dialect and the machine file's call codes.
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
+from ..dialects.dialect import Dialect
+from ..machine.jump_words import SUBPROGRAM_LABEL, jump_words, may_hold_jump
 from ..syntax.nodes import Assign, Block, Expr, Goto, If, Number, Var
 from ..syntax.walk import iter_nodes
+
+Calls = Mapping[str, object] | None  # the machine file's call codes
 
 
 @dataclass(frozen=True, slots=True)
 class JumpSite:
-    """A literal label number a block jumps to: ``kind`` is ``GOTO``, ``M99``, ``M98 Q``, ``H8x``
-    or a local subprogram call (``M97 P`` where the dialect has Haas's); ``start``/``end`` cover
-    the number. Haas's conditional ``[cond] M99 P n`` is an ``IF..GOTO`` (``syntax.nodes.If``):
-    its P is a ``GOTO`` site, landing as GOTO does."""
+    """A literal label number a block jumps to: ``kind`` is ``GOTO``, ``M99``, ``M98 Q`` (M198's
+    Q too), ``H8x`` or a local subprogram call (``M97 P`` where the dialect has Haas's), as
+    ``machine/jump_words.py`` names them; ``start``/``end`` cover the number. Haas's
+    conditional ``[cond] M99 P n`` is an ``IF..GOTO`` (``syntax.nodes.If``): its P is a ``GOTO``
+    site, landing as GOTO does."""
 
     label: int
     kind: str
@@ -41,58 +48,42 @@ def _literal_int(node: object) -> int | None:
     return None
 
 
-def local_call_kind(code: float) -> str:
-    """The ``JumpSite.kind`` of a local subprogram call with M code ``code`` (``M97 P``)."""
-    return f"M{code:g} P"
-
-
 def starts_from_the_top(kind: str) -> bool:
     """Whether a jump of this kind lands on the first N label of its program, searching from
     the program's start (``M98 Q``, a local call ``M97 P``), rather than by the GOTO or M99 P
     rule (``machine.jumps``)."""
-    return kind == "M98 Q" or (kind.startswith("M") and kind.endswith(" P"))
+    return kind == SUBPROGRAM_LABEL or (kind.startswith("M") and kind.endswith(" P"))
 
 
-def _jump_targets(block: Block, local_call: float | None) -> Iterator[tuple[str, Expr]]:
+def _jump_targets(block: Block, dialect: Dialect, calls: Calls) -> Iterator[tuple[str, Expr]]:
     """(kind, target as written) of every jump a block makes: literal or computed."""
-    if block.plain is not None:
-        text = block.plain.upper()
-        if "M9" not in text and "H8" not in text and (local_call is None or "M" not in text):
-            return
+    if block.plain is not None and not may_hold_jump(block.plain):
+        return
     for s in block.statements:
         target = s.target if isinstance(s, Goto) else s.goto if isinstance(s, If) else None
         if target is not None:
             yield "GOTO", target
     if block.words:
-        codes = {(w.letter, w.value.value) for w in block.words if isinstance(w.value, Number)}
-        for w in block.words:
-            if w.value is None:
-                continue
-            if w.letter == "P" and ("M", 99.0) in codes:
-                yield "M99", w.value
-            elif w.letter == "Q" and ("M", 98.0) in codes:
-                yield "M98 Q", w.value
-            elif w.letter == "P" and local_call is not None and ("M", local_call) in codes:
-                yield local_call_kind(local_call), w.value
-            elif w.letter == "P" and ("G", 65.0) in codes and any(("H", float(h)) in codes for h in range(80, 87)):
-                yield "H8x", w.value
+        for kind, w in jump_words(block.words, dialect, calls):
+            if w.value is not None:  # always: jump_words names no P[NAME]
+                yield kind, w.value
 
 
-def jump_sites(block: Block, local_call: float | None = None) -> list[JumpSite]:
-    """The jumps of a block to literal label numbers; ``local_call`` is the dialect's local
-    subprogram call code (``Dialect.local_subprogram_code``), whose P names a label."""
+def jump_sites(block: Block, dialect: Dialect, calls: Calls = None) -> list[JumpSite]:
+    """The jumps of a block to literal label numbers under ``dialect`` and the machine file's
+    call codes ``calls`` (``machine/jump_words.py``)."""
     out: list[JumpSite] = []
-    for kind, target in _jump_targets(block, local_call):
+    for kind, target in _jump_targets(block, dialect, calls):
         n = _literal_int(target)
         if n is not None:
             out.append(JumpSite(n, kind, target.start, target.end))
     return out
 
 
-def computed_jump_sites(block: Block, local_call: float | None = None) -> list[tuple[str, int, int]]:
+def computed_jump_sites(block: Block, dialect: Dialect, calls: Calls = None) -> list[tuple[str, int, int]]:
     """(kind, start, end) of the jumps of a block whose label the run computes: ``GOTO #1``,
     ``IF [..] GOTO [#2+10]``, ``M99 P#3``, ``G65 H81 P#4`` (the kinds of ``JumpSite``)."""
-    return [(kind, t.start, t.end) for kind, t in _jump_targets(block, local_call) if not isinstance(t, Number)]
+    return [(kind, t.start, t.end) for kind, t in _jump_targets(block, dialect, calls) if not isinstance(t, Number)]
 
 
 def variable_sites(block: Block) -> list[VariableSite]:

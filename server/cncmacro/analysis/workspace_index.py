@@ -49,6 +49,7 @@ from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..syntax.document import ParsedDocument
 from .block_memo import BlockMemo
 from .site_index import FileSites, SiteIndex
+from .sites import Calls
 
 log = logging.getLogger(__name__)
 
@@ -91,9 +92,11 @@ class WorkspaceIndex:
     the files on disk; ``files`` reads the files (a cache of its own when none is given)."""
 
     def __init__(self, open_files: Callable[[], Iterable[OpenFile]], dialect_for: Callable[[list[str], str], Dialect],
-                 memo: BlockMemo | None = None, files: FileCache | None = None) -> None:  # fmt: skip
+                 memo: BlockMemo | None = None, files: FileCache | None = None,
+                 calls_for: Callable[[str], Calls] = lambda path: None) -> None:  # fmt: skip
         self.open_files = open_files
         self.dialect_for = dialect_for
+        self.calls_for = calls_for  # the machine file's call codes for a path (which words are jumps)
         self.memo = memo if memo is not None else BlockMemo()
         self.disk = files if files is not None else FileCache()
         self.roots: list[Path] = []
@@ -200,9 +203,9 @@ class WorkspaceIndex:
             if path in open_paths:
                 continue
             hit = kept.get(path)
-            local = self.dialect_for(loaded.lines, path).local_subprogram_code
-            if hit is None or hit[1].local_call != local:
-                hit = kept[path] = (loaded, SiteIndex(loaded.program.blocks, local, self.memo))
+            dialect, calls = self.dialect_for(loaded.lines, path), self.calls_for(path)
+            if hit is None or not hit[1].reads_with(dialect, calls):
+                hit = kept[path] = (loaded, SiteIndex(loaded.program.blocks, dialect, calls, self.memo))
             yield FileSites(path, loaded.lines, hit[1])
 
     def programs(self) -> Iterator[ProgramEntry]:

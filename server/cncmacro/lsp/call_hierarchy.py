@@ -14,8 +14,8 @@ from lsprotocol import types
 
 from ..analysis.call_hierarchy import CallTarget, incoming, label_item, outgoing, program_item
 from ..analysis.call_sites import call_site
-from ..analysis.sites import jump_sites, local_call_kind
 from ..library.file_cache import LoadedFile
+from ..machine.jump_words import local_call_kind
 from .cursor import cursor_at
 from .navigation import machine_calls
 
@@ -77,7 +77,7 @@ def prepare(ls: CncMacroServer, params: types.CallHierarchyPrepareParams) -> lis
         return [_item(ls, found.file, program_item(found.file, found.unit))]
     code = doc.dialect.local_subprogram_code
     if code is not None:
-        for j in jump_sites(cur.block, code):
+        for j in doc.sites.jumps_of(cur.block):
             if j.kind == local_call_kind(code) and j.start <= cur.column <= j.end:
                 t = label_item(here, unit, j.label)
                 return None if t is None else [_item(ls, here, t)]

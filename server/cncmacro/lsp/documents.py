@@ -26,7 +26,7 @@ from ..analysis.block_memo import BlockMemo
 from ..analysis.site_index import SiteIndex
 from ..dialects.dialect import Dialect
 from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_and_source
-from ..library.machine_file import MachineSettings
+from ..library.machine_file import CallCode, MachineSettings
 from ..library.machine_files import MachineFiles
 from ..library.profiles import machine_profile
 from ..library.programs import LoadedFile
@@ -119,6 +119,11 @@ class Documents:
         workspace = machine.dialect if machine is not None else None
         return dialect_and_source(doc.parsed.lines, workspace, self.setting_dialect)[1]
 
+    def calls_for(self, path: str) -> dict[str, CallCode] | None:
+        """The call codes of the machine file that the file at ``path`` is read with, if any."""
+        machine = self.machines.settings_for(path)
+        return machine.calls if machine is not None else None
+
     def machine(self, doc: OpenDocument) -> MachineSettings | None:
         """The settings of ``doc``'s machine file (None: it has none, or a broken one)."""
         return self.machines.settings(doc.machine_file)
@@ -135,7 +140,7 @@ class Documents:
             item.version,
             parsed,
             dialect,
-            SiteIndex(parsed.blocks, dialect.local_subprogram_code, self.block_memo, parsed.partial),
+            SiteIndex(parsed.blocks, dialect, self.calls_for(path), self.block_memo, parsed.partial),
             machine_file,
         )
         self.by_uri[item.uri] = doc
@@ -146,7 +151,7 @@ class Documents:
         analysis of that machine file)."""
         doc.parsed, doc.machine_file = parsed, machine_file
         doc.dialect = self.dialect_for(parsed.lines, doc.path)
-        doc.sites = SiteIndex(parsed.blocks, doc.dialect.local_subprogram_code, self.block_memo)
+        doc.sites = SiteIndex(parsed.blocks, doc.dialect, self.calls_for(doc.path), self.block_memo)
 
     def change(
         self, params: types.DidChangeTextDocumentParams, apply: Callable[[OpenDocument, Edit], None] | None = None
@@ -181,19 +186,21 @@ class Documents:
             if isinstance(change, types.TextDocumentContentChangePartial) and not doc.parsed.partial:
                 doc.sites.replaced(doc.parsed.blocks, edit[0], edit[2] + 1, len(split_lines(change.text)))
             else:
-                local = doc.dialect.local_subprogram_code
-                doc.sites = SiteIndex(doc.parsed.blocks, local, self.block_memo, doc.parsed.partial)
+                doc.sites = SiteIndex(
+                    doc.parsed.blocks, doc.dialect, doc.sites.calls, self.block_memo, doc.parsed.partial
+                )
         doc.version = params.text_document.version
         if header_touched:
             self._set_dialect(doc)
         return doc
 
     def _set_dialect(self, doc: OpenDocument) -> None:
-        """Choose the document's dialect again; the sites change with its local call code."""
+        """Choose the document's dialect again; its jumps change with the dialect and the machine
+        file's call codes (``machine/jump_words.py``)."""
         doc.dialect = self.dialect_for(doc.parsed.lines, doc.path)
-        local = doc.dialect.local_subprogram_code
-        if doc.sites.local_call != local:
-            doc.sites = SiteIndex(doc.parsed.blocks, local, self.block_memo, doc.parsed.partial)
+        calls = self.calls_for(doc.path)
+        if not doc.sites.reads_with(doc.dialect, calls):
+            doc.sites = SiteIndex(doc.parsed.blocks, doc.dialect, calls, self.block_memo, doc.parsed.partial)
 
     def close(self, uri: str) -> OpenDocument | None:
         return self.by_uri.pop(uri, None)

@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 
 from ..analysis.call_sites import call_site
-from ..analysis.sites import jump_sites, label_jumps, word_at
+from ..analysis.sites import label_jumps, word_at
 from ..bilingual import in_language, is_chinese, pick
 from ..dialects import describe
 from ..dialects.functions_data import GSK_H_CODES
@@ -70,7 +70,7 @@ def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
         return label_hover(ls, cur, b.label), *b.label_span
     if b.program_span is not None and b.program_span[0] <= col <= b.program_span[1] and b.program is not None:
         return program_hover(ls, cur, b.program, None), *b.program_span
-    for j in jump_sites(b, cur.doc.dialect.local_subprogram_code):
+    for j in cur.doc.sites.jumps_of(b):
         if j.start <= col <= j.end:
             return label_hover(ls, cur, j.label), j.start, j.end
     for a in b.abbreviations:

@@ -19,7 +19,7 @@ from pygls.exceptions import JsonRpcException
 
 from ..analysis.call_sites import call_site
 from ..analysis.site_index import FileSites
-from ..analysis.sites import jump_sites, label_jumps, starts_from_the_top
+from ..analysis.sites import label_jumps, starts_from_the_top
 from ..dialects import describe
 from ..library.machine_file import CallCode
 from ..machine.jumps import first_line, goto_line, return_line
@@ -70,7 +70,7 @@ def label_under(cur: Cursor) -> tuple[int, int, int, str] | None:
     b = cur.block
     if b.label is not None and b.label_span and b.label_span[0] <= cur.column <= b.label_span[1]:
         return b.label, b.label_span[0], b.label_span[1], "N"
-    for j in jump_sites(b, cur.doc.dialect.local_subprogram_code):
+    for j in cur.doc.sites.jumps_of(b):
         if j.start <= cur.column <= j.end:
             return j.label, j.start, j.end, j.kind
     return None
@@ -122,8 +122,7 @@ def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | N
 
 def machine_calls(ls: CncMacroServer, path: str) -> dict[str, CallCode] | None:
     """The call codes of the machine file that the file at ``path`` is read with, if any."""
-    machine = ls.documents.machines.settings_for(path)
-    return machine.calls if machine is not None else None
+    return ls.documents.calls_for(path)
 
 
 def find_references(ls: CncMacroServer, cur: Cursor, include_declaration: bool) -> list[types.Location] | None:

@@ -143,7 +143,9 @@ class CncMacroServer(LanguageServer):
         super().__init__("cncmacro", __version__, protocol_cls=CncMacroProtocol)
         self.documents = Documents()
         documents = self.documents
-        self.index = WorkspaceIndex(documents.by_uri.values, documents.dialect_for, documents.block_memo)
+        self.index = WorkspaceIndex(
+            documents.by_uri.values, documents.dialect_for, documents.block_memo, calls_for=documents.calls_for
+        )
         self.settings = Settings()
         self.locale: str = "en"
         self.diagnostics = DiagnosticsEngine(self)
