@@ -101,6 +101,13 @@ def check_spec2_stepped_holes(r: dict[str, Any]) -> None:
     assert holes == [(10.0, 10.0, -5.0), (40.0, 10.0, -13.0), (70.0, 10.0, -21.0), (70.0, 40.0, -5.0)]
 
 
+def check_coolant_rows(r: dict[str, Any]) -> None:
+    holes = [(m["to"]["X"], m["to"]["Y"], m["to"]["Z"]) for m in moves(r, "G01", "O9170.nc")]
+    rows = [[(10.0 + 12.0 * k, y, -15.0) for k in range(4)] for y in (10.0, 30.0)]
+    assert holes == rows[0] + rows[1] + [(20.0 + 20.0 * k, 50.0, -22.0) for k in range(3)]
+    assert var(r, 140) == 8  # M8. on the last call; the M of a G65 block is its argument #13
+
+
 def check_m98_tapping_grid(r: dict[str, Any]) -> None:
     taps = moves(r, "G84")
     assert len(taps) == 20
@@ -200,6 +207,7 @@ MAINS: dict[Path, Callable[[dict[str, Any]], None]] = {
     FANUC / "circular_pocket.nc": check_circular_pocket,
     FANUC / "g66_drill_plate.nc": check_g66_drill_plate,
     FANUC / "spec2_stepped_holes.nc": check_spec2_stepped_holes,
+    FANUC / "coolant_rows.nc": check_coolant_rows,
     FANUC / "m98_tapping_grid.nc": check_m98_tapping_grid,
     FANUC / "pallet_change.nc": check_pallet_change,
     FANUC / "part_counter.nc": check_part_counter,

@@ -83,7 +83,7 @@ async def test_code_actions_split_the_g65_block_and_clamp_l(fanuc_en: LanguageCl
     )
     close_file(fanuc_en, uri)
     edits = {a.title: a.edit.changes[uri][0].new_text for a in actions}  # type: ignore[union-attr,index]
-    assert edits["Split: move the NC words to a block before the G65"] == "G00\nG65 P9100 X1. L20000"
+    assert edits["Split: move G00 to a block before the G65"] == "G00\nG65 P9100 X1. L20000"
     assert edits["Clamp the repeat count to 9999"] == "L9999"
     uri = open_file(gsk_zh, GSK / "ca.CNC", "O0001\nN5 G01 G65 P[CUT] U1. L0 (切削)\n")
     actions = await gsk_zh.text_document_code_action_async(
@@ -96,7 +96,22 @@ async def test_code_actions_split_the_g65_block_and_clamp_l(fanuc_en: LanguageCl
     close_file(gsk_zh, uri)
     texts = sorted(a.edit.changes[uri][0].new_text for a in actions)  # type: ignore[union-attr,index]
     assert texts == ["L1", "N5 G01\nG65 P[CUT] U1. L0 (切削)"]
-    assert any("拆分" in a.title for a in actions)
+    assert "拆分：把 G01 移到 G65 之前的单独程序段" in [a.title for a in actions]
+
+
+async def test_5_calls_a_letter_after_g65_is_an_argument_so_no_split_and_no_finding(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "m_argument.nc", "O0001\nN10 G65 P9100 A1. M5.\nM30\n", version=1)
+    found = await diagnostics_for(fanuc_en, uri, 1)
+    actions = await fanuc_en.text_document_code_action_async(
+        types.CodeActionParams(
+            types.TextDocumentIdentifier(uri),
+            types.Range(types.Position(1, 0), types.Position(1, 22)),
+            types.CodeActionContext(diagnostics=list(found.diagnostics)),
+        )
+    )
+    close_file(fanuc_en, uri)
+    assert [d.code for d in found.diagnostics if d.range.start.line == 1] == []  # M5. is argument M (#13)
+    assert [a.title for a in actions or []] == []
 
 
 async def test_inlay_hints_name_the_local_each_argument_fills(fanuc_en: LanguageClient, gsk_en: LanguageClient) -> None:

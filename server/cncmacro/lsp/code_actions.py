@@ -1,22 +1,25 @@
-"""Code actions: split a G65/G66 block that also holds NC words, clamp an out-of-range L,
+"""Code actions: split a G65/G66 block with words before the call, clamp an out-of-range L,
 write out a macro word written shortened (``WH`` → ``WHILE``), write Haas's conditional
 ``[cond] M99 P n`` as ``IF [cond] GOTO n`` where the profile does not read it
 (``conditional_m99.py``), and name the profile a file was written for (``profile-suggestion``:
 its dialect comment, or the machine file's ``base``).
 
-docs/semantics.md §5: only N may precede G65/G66 and no other G or M code or O word may share its
-block; the split moves those words (with the label) to a block of their own just before the
-call, so they run first as before. L must be 1..9999; the clamp writes the nearest allowed
-count. An abbreviated macro word (docs/semantics.md §1) is replaced by the whole word. Each is
-offered for the blocks in the requested range, and carries the matching diagnostics
-(``g65-nc-words``, ``repeat-count-range``, ``keyword-abbreviation`` or ``dialect-feature``)
-when the client sent them.
+docs/semantics.md §5: only N may precede G65/G66 in its block (``machine/block_rules.py``, whose
+``BEFORE_CALL`` problem is the ``g65-nc-words`` finding). The split is offered exactly where that
+rule finds the problem, and moves the words it names (with the label and a block delete) to a
+block of their own just before the call, so they run first as before (FANUC sets modal G codes
+there and then calls; elsewhere the block is alarm 127). Any other letter after the call is an
+argument (``M5.`` is M → #13) and stays. An O word in the block gets no split: on a line of its
+own it would start a program. L must be 1..9999; the clamp writes the nearest allowed count. An
+abbreviated macro word (docs/semantics.md §1) is replaced by the whole word. Each is offered for
+the blocks in the requested range, and carries the matching diagnostics (``g65-nc-words``,
+``repeat-count-range``, ``keyword-abbreviation`` or ``dialect-feature``) when the client sent them.
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -26,9 +29,10 @@ from ..analysis.call_sites import call_site
 from ..analysis.profile_suggestion import CODE, suggestion_target
 from ..bilingual import pick
 from ..library.files import SkippedFileError, read_bytes
-from ..library.machine_file import MACHINE_FILE_NAME, MAX_MACHINE_FILE_BYTES, MachineSettings
-from ..machine.calls import MAX_REPEAT
-from ..syntax.nodes import Number, Word
+from ..library.machine_file import MACHINE_FILE_NAME, MAX_MACHINE_FILE_BYTES, CallCode, MachineSettings
+from ..machine.block_rules import BEFORE_CALL, validate_block
+from ..machine.calls import MAX_REPEAT, recognise_call
+from ..syntax.nodes import Number
 from .conditional_m99 import if_goto_rewrite
 from .cursor import doc_range
 from .documents import OpenDocument
@@ -46,7 +50,7 @@ _TITLES = {
         'Set base = "{name}" in .cncmacro.toml (every file of the workspace)',
         '在 .cncmacro.toml 中设定 base = "{name}"（对工作区所有文件生效）',
     ),
-    "split": ("Split: move the NC words to a block before the G65", "拆分：把NC代码移到G65之前的单独程序段"),
+    "split": ("Split: move {words} to a block before the {name}", "拆分：把 {words} 移到 {name} 之前的单独程序段"),
     "clamp": ("Clamp the repeat count to {value}", "把重复次数改为{value}"),
     "expand": ("Write {word} in full", "把{text}写全为{word}"),
     "if-goto": ("Write it as {text}", "改写为 {text}"),
@@ -58,34 +62,27 @@ def _title(key: str, locale: str, **kw: object) -> str:
     return pick(locale, en, zh).format(**kw)
 
 
-def nc_words(doc: OpenDocument, line: int) -> list[Word]:
-    """The words that may not share the block with its G65/G66."""
+def split_edit(
+    doc: OpenDocument, line: int, encoding: Encoding, calls: Mapping[str, CallCode] | None
+) -> tuple[types.TextEdit, str, str] | None:
+    """(edit, the words moved as written, the call's name) of the split of ``line`` where the
+    words before its G65/G66 may not be there (``block_rules.BEFORE_CALL``), else None;
+    ``calls`` are the machine file's call codes."""
     block = doc.block(line)
-    if block is None:
-        return []
-    site = call_site(block, doc.dialect)
-    if site is None or site.kind not in ("G65", "G66"):
-        return []
-    out = []
-    after = False
-    for w in block.words:
-        if w is site.code:
-            after = True
-            continue
-        if not after or (w.letter in ("G", "M", "O")):
-            out.append(w)
-    return out
-
-
-def split_edit(doc: OpenDocument, line: int, encoding: Encoding) -> types.TextEdit | None:
-    words = nc_words(doc, line)
-    if not words:
+    if block is None or not block.words or block.statements:
         return None
-    block = doc.block(line)
-    assert block is not None
+    call = recognise_call(block.words, doc.dialect, calls)
+    if call is None or call.kind not in ("G65", "G66"):
+        return None
+    problems = validate_block(block, doc.dialect, calls, call=call)
+    moved = next((p.words for p in problems if p.rule == BEFORE_CALL), ())
+    if not moved:
+        return None
     text = doc.line(line)
-    cut = sorted([(w.start, w.end) for w in words] + ([block.label_span] if block.label_span else []))
+    cut = sorted([(w.start, w.end) for w in moved] + ([block.label_span] if block.label_span else []))
     first = " ".join(text[s:e] for s, e in cut)
+    if block.block_delete is not None:  # both blocks are skipped where the one was
+        first = f"{text[: cut[0][0]].strip()} {first}"
     rest, pos = [], 0
     for s, e in cut:
         rest.append(text[pos:s])
@@ -93,7 +90,8 @@ def split_edit(doc: OpenDocument, line: int, encoding: Encoding) -> types.TextEd
     rest.append(text[pos:])
     indent = text[: len(text) - len(text.lstrip())]
     second = re.sub(r"[ \t]{2,}", " ", "".join(rest).strip())
-    return types.TextEdit(doc_range(doc, line, 0, len(text), encoding), f"{indent}{first}\n{indent}{second}")
+    edit = types.TextEdit(doc_range(doc, line, 0, len(text), encoding), f"{indent}{first}\n{indent}{second}")
+    return edit, " ".join(text[w.start : w.end] for w in moved), call.kind
 
 
 def clamp_edit(doc: OpenDocument, line: int, encoding: Encoding) -> tuple[types.TextEdit, int] | None:
@@ -127,11 +125,14 @@ def register(server: CncMacroServer) -> None:
         encoding = ls.documents.encoding
         out: list[types.CodeAction] = []
         r = params.range
+        calls = ls.documents.calls_for(doc.path)
         for line in range(r.start.line, min(r.end.line, len(doc.lines) - 1) + 1):
             diags = [d for d in params.context.diagnostics if d.range.start.line == line]
-            edit = split_edit(doc, line, encoding)
-            if edit is not None:
-                out.append(_action(doc, _title("split", ls.locale), edit, diags, "g65-nc-words"))
+            split = split_edit(doc, line, encoding, calls)
+            if split is not None:
+                edit, words, name = split
+                title = _title("split", ls.locale, words=words, name=name)
+                out.append(_action(doc, title, edit, diags, "g65-nc-words"))
             clamp = clamp_edit(doc, line, encoding)
             if clamp is not None:
                 out.append(

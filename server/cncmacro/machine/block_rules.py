@@ -58,7 +58,9 @@ M_DECIMAL_POINT = "decimal-point"  # an M code written with a decimal point
 class BlockProblem:
     """One thing the block may not contain: the alarm a control gives for it, what the run's
     alarm says (``message``) and what a check without running says (``finding``), the columns
-    of the words concerned, and whether the control stops there (see the module docstring)."""
+    of the words concerned, and whether the control stops there (see the module docstring).
+    ``words`` are the words a G65/G66 may not share its block with (``BEFORE_CALL``: every word
+    before the call; ``O_WITH_CALL``: the O word), which the editor's split moves."""
 
     rule: str
     alarm: int
@@ -67,6 +69,7 @@ class BlockProblem:
     start: int
     end: int
     stops: bool = True
+    words: tuple[Word, ...] = ()
 
 
 def validate_block(
@@ -159,7 +162,7 @@ def _macro_call(
                        f"{name} 之前有 {w.letter}：程序段中 {name} 之前只允许出现 N"),
                 detail(f"{word} before {name}: only N may precede {name} in its block; {title} stops with alarm 127",
                        f"{name} 之前只允许出现 N，不能有 {word}：{title} 报警 127（停止运行）"),
-                w.start, w.end,
+                w.start, w.end, words=before,
             ))  # fmt: skip
             return
         shown = " ".join(g_code_name(c) for c in codes)
@@ -170,7 +173,7 @@ def _macro_call(
             f"{name} 之前的 {shown}：{title} 先执行 {shown}（模态保持有效），再由 {name} 调用宏程序；"
             f"{name} 之前只允许 N 的系统（GSK）会报警 127，建议把 {shown} 单独写一段",
         )
-        out.append(BlockProblem(BEFORE_CALL, NC_AND_MACRO, text, text, w.start, before[-1].end, stops=False))
+        out.append(BlockProblem(BEFORE_CALL, NC_AND_MACRO, text, text, w.start, before[-1].end, False, before))
     after = words[at + 1 :]
     for w in after:
         if w.letter == "O":  # M after G65 is the argument #13; G is alarm 129 below
@@ -179,7 +182,7 @@ def _macro_call(
                 detail(f"{name} may not share its block with an O word", f"{name} 不能与 O 代码在同一程序段"),
                 detail(f"{name} may not share its block with an O word (alarm 127)",
                        f"{name} 不能与 O 代码在同一程序段（报警 127）"),
-                w.start, w.end,
+                w.start, w.end, words=(w,),
             ))  # fmt: skip
             return
     if arithmetic:
