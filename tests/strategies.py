@@ -141,3 +141,31 @@ def line(draw) -> str:
     if draw(st.integers(0, 5)) == 0:
         text += draw(st.sampled_from([";", " (COMMENT)", "(注释)", ";(X)", " (OPEN"]))
     return text
+
+
+@st.composite
+def plain_number(draw) -> str:
+    """A number as a CAM program writes it after an address: codes near those the controls call,
+    end and refuse (0-3, 65, 97-99, 198, ...), leading zeros, a sign, up to three decimals."""
+    whole = draw(st.one_of(st.integers(0, 12), st.sampled_from([28, 30, 54, 65, 66, 80, 81, 97, 98, 99, 100, 150,
+                                                                198, 999]), st.integers(0, 9999)))  # fmt: skip
+    text = "0" * draw(st.integers(0, 2)) + str(whole)
+    form = draw(st.integers(0, 4))
+    if form == 1:
+        text += "."
+    elif form == 2:
+        text += "." + draw(st.sampled_from(["0", "00", "1", "4", "5", "6", "9", "04", "95", "999"]))
+    elif form == 3:
+        text = "." + draw(st.sampled_from(["5", "4", "05", "999"]))
+    return draw(st.sampled_from(["", "", "", "+", "-"])) + text
+
+
+@st.composite
+def plain_line(draw) -> str:
+    """A line of plain words (``Block.plain``: addresses and numbers only, not starting with N
+    or O), as a CAM program writes them, with blanks or tabs between the words."""
+    first = draw(st.sampled_from("ABCDEFGHIJKLMPQRSTUVWXYZabcdefghijklmpqrstuvwxyz"))
+    letters = draw(st.lists(st.sampled_from("GGGMMMTPQLHXYZFSRIJKDUVWABC"), max_size=5))
+    words = [f"{letter}{draw(plain_number())}" for letter in [first, *letters]]
+    gaps = [draw(st.sampled_from([" ", " ", "  ", "\t"])) for _ in words[1:]]
+    return words[0] + "".join(g + w for g, w in zip(gaps, words[1:], strict=True))

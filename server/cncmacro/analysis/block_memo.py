@@ -74,7 +74,7 @@ class BlockMemo:
         look, or a block that says nothing)."""
         plain = block.plain
         if plain is not None:  # plain lines are many and rarely repeat: not kept
-            return None if ctx.plain_hint(plain) is None else line_facts(block, ctx)
+            return line_facts(block, ctx) if ctx.plain_hint(plain) else None
         entry = self._entries.get(id(block))
         if entry is None or entry.block is not block:
             entry = self._entry(block)

@@ -26,6 +26,7 @@ from ..machine.calls import (
     Call,
     argument_targets,
     bad_name_detail,
+    call_words,
     code_value,
     macro_program_number,
     map_arguments,
@@ -36,12 +37,29 @@ from ..machine.calls import (
 from ..machine.hcodes import ARITHMETIC, BRANCHES
 from ..machine.jump_words import return_word
 from ..machine.numbers import round_half_away
+from ..machine.program_end import RETURN_CODE
+from ..machine.word_sets import WordSet
+from ..machine.words import refused_words
 from ..syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
 from .line_facts import CallSite, LineContext, LineFacts, ReturnJump, alarm_message, block_finding, finding
 from .statement_checks import literal_jump
 from .variable_checks import check_write, scan_value
 
 H_OPERATIONS = frozenset((*ARITHMETIC, *BRANCHES, 26, 99))
+
+
+def words_looked_at(ctx: LineContext) -> tuple[WordSet, ...]:
+    """The words ``check_words`` looks at (``machine/word_sets.py``); every other word of a block
+    it passes over, so a plain line without one of these is not looked at (``static_checks``):
+    the call words (``recognise_call``'s), the words a control may refuse (``validate_block``'s),
+    M99 (a return, whose P is a label) and the other profiles' local call codes (a sign of the
+    profile the program was written for). A check of another word is added here with it."""
+    return (
+        *call_words(ctx.dialect, ctx.calls),
+        *refused_words(ctx.dialect, ctx.calls),
+        WordSet("M", frozenset((RETURN_CODE,))),
+        *((WordSet("M", frozenset(ctx.foreign_local)),) if ctx.foreign_local else ()),
+    )
 
 
 def check_words(block: Block, ctx: LineContext, facts: LineFacts) -> None:
@@ -305,7 +323,7 @@ def _nc_block(
         _local_call(words, call, ctx, facts)
     elif call is not None:
         _subprogram_call(words, call.kind, ctx, facts)
-    elif 99.0 in ms:
+    elif RETURN_CODE in ms:
         p = return_word(words)  # the caller's label (machine/jump_words.py)
         value = _constant(p, ctx)
         if p is not None and value is not None:

@@ -11,7 +11,6 @@ check needs, made once per dialect, settings and locale. ``block_finding`` turns
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -23,7 +22,6 @@ from ..machine import block_rules as rules
 from ..machine.alarms import MacroAlarm
 from ..machine.block_rules import BlockProblem
 from ..machine.expressions import ExpressionCompiler, VariableKinds
-from ..machine.words import plain_line_pattern
 from .codes import default_severity
 
 RULE_CODES = {
@@ -134,11 +132,6 @@ def foreign_local_codes(dialect: Dialect) -> tuple[float, ...]:
     return tuple(sorted({c for d in BY_NAME.values() if (c := d.local_subprogram_code) is not None}))
 
 
-# A plain line (``Block.plain``) needs a look only when it holds one of these codes: a macro or
-# subprogram call, or a return that may carry P.
-_PLAIN_CALL = r"(?:^|[ \t])(?:[Gg][+]?0*6[56]|[Mm][+]?0*(?:98|99|198))(?:\.0*)?(?=[ \t]|$)"
-
-
 class LineContext:
     """The dialect, settings and locale of a check, with what they imply made once."""
 
@@ -153,50 +146,13 @@ class LineContext:
         # the other dialects, to tell a feature this one lacks from a plain mistake
         self.other_kinds = [VariableKinds(d) for d in BY_NAME.values() if d.name != dialect.name]
         self.calls = settings.calls
-        self.plain_hint = _plain_hint(settings, dialect)
+        # whether a plain line (``Block.plain``) holds a word the checks look at: made from the
+        # words they say they look at (``static_checks.line_context``); until then, every line
+        self.plain_hint: Callable[[str], bool] = _every_line
 
     def key(self) -> tuple[str, int, str]:
         return (self.dialect.name, id(self.settings), self.locale)
 
 
-def _plain_hint(settings: MachineSettings, dialect: Dialect) -> Callable[[str], object]:
-    """The search for ``_plain_pattern`` in a plain line, passing over at once the lines without
-    a letter that the pattern starts with, G00 to G03 aside (nearly every line of a CAM program:
-    axis words and straight or circular moves)."""
-    letters = {"M", *(code[:1].upper() for code in settings.calls if code[:1])}
-    if "G" in letters:  # a G code the machine file makes a call: any G word may be one
-        letters.discard("G")
-        g = "[Gg]"
-    else:  # G00 to G03, most of a CAM program, need no look (``plain_line_pattern``)
-        g = r"[Gg](?!\+?0*[0-3](?:\.0*)?(?:[ \t]|$))"
-    first = re.compile("[" + "".join(sorted(letters | {x.lower() for x in letters})) + "]|" + g).search
-    full = re.compile(_plain_pattern(settings, dialect)).search
-
-    def hint(line: str) -> object:
-        return first(line) and full(line)
-
-    return hint
-
-
-def _plain_pattern(settings: MachineSettings, dialect: Dialect) -> str:
-    """The pattern of a plain line that may need a check: the call codes, the codes that the
-    machine settings configure as calls, and words a control may refuse (``machine/words.py``)."""
-    parts = [_PLAIN_CALL, plain_line_pattern(dialect.name, settings.calls)]
-    # Haas M97: a call to a label of the program itself, or under another profile its signature
-    for local in (
-        (dialect.local_subprogram_code,) if dialect.local_subprogram_code is not None else foreign_local_codes(dialect)
-    ):
-        parts.append(rf"(?:^|[ \t])[Mm][+]?0*{local:g}(?:\.0*)?(?=[ \t]|$)")
-    for code in settings.calls:
-        letter, digits = code[:1], code[1:]
-        if not digits:
-            parts.append(rf"(?:^|[ \t])[{letter.upper()}{letter.lower()}]")
-            continue
-        try:
-            number = float(digits)
-        except ValueError:
-            continue
-        whole, _, frac = f"{number:g}".partition(".")
-        decimals = rf"\.{frac}0*" if frac else r"(?:\.0*)?"
-        parts.append(rf"(?:^|[ \t])[{letter.upper()}{letter.lower()}][+]?0*{whole}{decimals}(?=[ \t]|$)")
-    return "|".join(parts)
+def _every_line(line: str) -> bool:
+    return True

@@ -7,7 +7,8 @@ statements, the words, the variables; see ``statement_checks``, ``call_checks`` 
 part is a pure function of the block, the dialect, the machine settings and the locale, so an
 incremental analysis may cache it per block and call ``block_diagnostics`` for changed lines only
 (``static_lines`` does), then ``cross_line_diagnostics``. A plain CAM line (``Block.plain``) is
-looked at only when its text holds a call or return code; its words are never built otherwise.
+looked at only when its text holds a word ``check_words`` looks at (``words_looked_at``, made into
+one search by ``machine/word_sets.plain_search``); its words are never built otherwise.
 Syntax errors are ``syntax_check``'s: a block that does not parse is not checked here.
 """
 
@@ -16,9 +17,10 @@ from __future__ import annotations
 from ..dialects.dialect import Dialect
 from ..library.machine_file import MachineSettings
 from ..library.programs import ProgramLibrary
+from ..machine.word_sets import plain_search
 from ..syntax.nodes import Block
 from ..syntax.program import Program
-from .call_checks import check_words
+from .call_checks import check_words, words_looked_at
 from .call_targets import ProgramFinder
 from .corner_checks import check_corners
 from .diagnostics import Diagnostic
@@ -41,6 +43,7 @@ def line_context(dialect: Dialect, settings: MachineSettings, locale: str = "en"
         if len(_contexts) > 64:
             _contexts.clear()
         ctx = _contexts[key] = LineContext(dialect, settings, locale)
+        ctx.plain_hint = plain_search(words_looked_at(ctx))  # the checks say which words they look at
     return ctx
 
 
@@ -56,7 +59,7 @@ def line_facts(block: Block, ctx: LineContext) -> LineFacts | None:
 def _line_facts(block: Block, ctx: LineContext) -> LineFacts | None:
     plain = block.plain
     if plain is not None:
-        if ctx.plain_hint(plain) is None:
+        if not ctx.plain_hint(plain):
             return None
     elif block.problems and block.has_error:
         return None
@@ -105,7 +108,7 @@ def static_diagnostics(
     for line in range(program.read_end):  # nothing after the closing '%' is read
         block = program.blocks[line]
         plain = block.plain
-        if plain is not None and hint(plain) is None:
+        if plain is not None and not hint(plain):
             continue
         facts = line_facts(block, ctx)
         if facts is None:

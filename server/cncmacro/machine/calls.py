@@ -4,7 +4,8 @@ P and L, M98 counts.
 ``recognise_call`` is the one place that says what a block calls: ``G65``/``G66`` (a macro, or on
 gsk980tdi ``G65 Hm`` macro arithmetic), a G, M or T code that the machine file's ``[calls]``
 makes a call, ``M98``/``M198`` (a subprogram), or the dialect's local subprogram call (Haas ``M97
-P n``, ``Dialect.local_subprogram_code``); ``call_word_pattern`` finds the lines that may hold one.
+P n``, ``Dialect.local_subprogram_code``); ``call_word_pattern`` finds the lines that may hold one,
+``call_words`` the words it looks at in a line of plain words.
 ``map_arguments`` applies argument specifications I and II word by word, left to right, a
 later word winning on a shared variable; ``program_and_count`` splits ``M98 P30040`` into
 program 40 and count 3; ``repeat_count`` checks L. They take evaluated words and return plain
@@ -24,6 +25,7 @@ from ..library.machine_file import CallCode
 from ..syntax.nodes import Number, Word
 from .alarms import MacroAlarm
 from .numbers import round_half_away, to_increment, to_int
+from .word_sets import WordSet
 
 NOT_ARGUMENTS = frozenset("GLNOP")
 MACRO_CALLS = (65.0, 66.0)  # G65, G66
@@ -441,6 +443,25 @@ def _same_code(w: Word, code: str, value: Callable[[Word], float | None]) -> boo
         return False
     x = value(w)
     return x is not None and f"{w.letter}{x:g}" == code
+
+
+def call_words(dialect: Dialect, calls: Mapping[str, object] | None = None) -> tuple[WordSet, ...]:
+    """The words ``recognise_call`` looks at (``word_sets.py``): G65 and G66, M98, M198 and the
+    dialect's local call code, and the G and M codes the machine file's ``[calls]`` makes calls
+    (``T`` alone: every T word)."""
+    local = dialect.local_subprogram_code
+    ms = {*SUBPROGRAM_CALLS, *((local,) if local is not None else ())}
+    out = [WordSet("G", frozenset(MACRO_CALLS)), WordSet("M", frozenset(ms))]
+    for code in calls or ():
+        letter, digits = code[:1], code[1:]
+        if code == "T":
+            out.append(WordSet("T"))
+        elif letter in ("G", "M") and digits:
+            try:
+                out.append(WordSet(letter, frozenset((float(digits),))))
+            except ValueError:
+                continue
+    return tuple(out)
 
 
 def call_word_pattern(calls: Mapping[str, object], local: float | None = None) -> str:

@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING
 from ..bilingual import Detail, detail
 from ..dialects import get_dialect
 from ..syntax.nodes import Number, Word
+from .word_sets import WordSet
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -122,21 +123,14 @@ def conditional_m99_refused(dialect: Dialect) -> Detail:
     )
 
 
-def plain_line_pattern(dialect: str, calls: Mapping[str, object]) -> str:
-    """A pattern that finds, in a line of plain words, a word that may be refused: a G code
-    outside ``known_g_codes`` and the call codes, or an M code with a decimal point. The G codes
-    0 to 3 (most of a CAM program) are passed over first, at little cost."""
-    spellings = []
-    codes = set(known_g_codes(dialect))
+def refused_words(dialect: Dialect, calls: Mapping[str, object]) -> tuple[WordSet, ...]:
+    """The words the refusals look at (``word_sets.py``): a G code outside those
+    ``g_code_known`` knows, an M code written with a decimal point."""
+    known = set(known_g_codes(dialect.name)) | extra_offset_codes(dialect)
     for code in calls:
-        if code[:1] in "Gg" and code[1:]:
+        if code[:1] == "G" and code[1:]:
             try:
-                codes.add(float(code[1:]))
+                known.add(float(code[1:]))
             except ValueError:
                 continue
-    for value in sorted(codes):
-        whole, _, frac = f"{value:g}".partition(".")
-        spellings.append(rf"{whole}\.{frac}0*" if frac else rf"{whole}(?:\.0*)?")
-    end = r"(?=[ \t]|$)"
-    g = rf"[Gg]\+?(?!0*[0-3](?:\.0*)?{end})(?!0*(?:{'|'.join(spellings)}){end})[\d.]"
-    return rf"(?:^|[ \t])(?:{g}|[Mm][+-]?\d*\.)"
+    return WordSet("G", outside=frozenset(known)), WordSet("M", point=True)
