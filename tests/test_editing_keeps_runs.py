@@ -101,9 +101,9 @@ def _dialect(p: Path, lines: list[str]) -> str:
 def test_formatting_changes_no_run_and_formatting_again_changes_nothing(tmp_path: Path, options: FormatOptions):
     def edit(p: Path, lines: list[str]) -> list[str]:
         program = build_program([parse_block(x) for x in lines])
-        new = format_lines(lines, 0, len(lines) - 1, options, program.tape_end)
+        new = format_lines(lines, 0, len(lines) - 1, options, program.read_end)
         out = [new.get(i, x) for i, x in enumerate(lines)]
-        assert not format_lines(out, 0, len(out) - 1, options, program.tape_end), f"{p.name}: formatted twice"
+        assert not format_lines(out, 0, len(out) - 1, options, program.read_end), f"{p.name}: formatted twice"
         return out
 
     assert _same_runs(tmp_path, edit) > 20
