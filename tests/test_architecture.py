@@ -42,6 +42,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("syntax",),
     ("dialects",),
     ("library",),
+    ("planner",),
     ("machine",),
     ("analysis", "debugging"),
     ("cli", "lsp", "dap"),
@@ -67,6 +68,8 @@ RULES: dict[str, str] = {
     "L11": "analysis/ and debugging/ do not import one another: each stands on machine/ by itself",
     "C1": "the toolpath's geometry and page and the server's start-up (toolpathGeometry.ts, "
           "toolpathView.ts, serverProcess.ts) do not import vscode",
+    "C2": "the client knows no G code: no code of client/src names one or reads a number out of a "
+          "move's mode; what a move is (kind, plane, legs) comes from the planner",
 }  # fmt: skip
 
 # L5: the third-party packages of pyproject.toml and the parts (or files) that may import them
@@ -293,6 +296,24 @@ def client_violations(client: Path) -> list[str]:
     return out
 
 
+# C2: a G code in the client's code (not its comments, nor the texts it shows people, which are
+# translated with l10n.t): a G and digits in a string, a template or a pattern, or a mode's letter
+# stripped to read its number
+_G_CODE = re.compile(r"""['"`/][^'"`/\n]*\bG\d|\^G|replace\(/\^G""")
+_COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/|l10n\.t\('[^'\n]*'", re.S)
+
+
+def client_g_codes(client: Path) -> list[str]:
+    """Where the client's code names a G code (C2)."""
+    out = []
+    for path in sorted(client.glob("*.ts")):
+        code = _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group()), path.read_text(encoding="utf-8"))
+        for n, text in enumerate(code.splitlines(), 1):
+            if _G_CODE.search(text):
+                out.append(f"client/src/{path.name}:{n}: names a G code [C2] {RULES['C2']}")
+    return out
+
+
 def boundaries(modules: dict[str, Module]) -> dict[str, dict[str, set[str]]]:
     """For each part, the names that other parts import from it, and which parts do."""
     out: dict[str, dict[str, set[str]]] = {}
@@ -316,7 +337,7 @@ def layer_order_text() -> str:
 
 
 def test_the_package_keeps_every_rule() -> None:
-    found = violations(read_package(PACKAGE)) + client_violations(CLIENT)
+    found = violations(read_package(PACKAGE)) + client_violations(CLIENT) + client_g_codes(CLIENT)
     assert not found, "\n".join(found)
 
 
@@ -433,10 +454,35 @@ def test_a_locale_is_tested_for_chinese_only_in_bilingual(tmp_path: Path) -> Non
     ]
 
 
-@pytest.mark.parametrize("layer", ["syntax", "dialects", "library", "machine", "analysis", "debugging"])
+@pytest.mark.parametrize("layer", ["syntax", "dialects", "library", "planner", "machine", "analysis", "debugging"])
 def test_nothing_below_the_front_ends_may_import_them(tmp_path: Path, layer: str) -> None:
     modules = _package(tmp_path, {f"{layer}/x.py": "from ..lsp import server\n", "lsp/server.py": ""})
     assert [v.split(" [")[1][:2] for v in violations(modules)] == ["L1"]
+
+
+def test_the_planner_imports_nothing_of_the_macro_machine(tmp_path: Path) -> None:
+    modules = _package(tmp_path, {
+        "planner/planner.py": "from ..machine.frames import Frame\nfrom ..dialects import Dialect\n",
+        "machine/frames.py": "", "dialects/__init__.py": "",
+    })  # fmt: skip
+    assert [v.split(" [")[0] for v in violations(modules)] == [
+        "server/cncmacro/planner/planner.py:1: imports cncmacro.machine.frames, a layer above planner"
+    ]
+
+
+def test_a_client_that_reads_a_g_code_is_reported(tmp_path: Path) -> None:
+    (tmp_path / "geometry.ts").write_text(
+        "// G02 turns clockwise: a comment may say so\n"
+        "const legend = vscode.l10n.t('arc (G02/G03)');\n"
+        "const n = Number(move.mode.replace(/^G/i, ''));\n"
+        "if (move.mode === 'G03') ccw = true;\n"
+        "const text = `${move.mode} done`;\n",
+        encoding="utf-8",
+    )
+    assert [v.split(" [")[0] for v in client_g_codes(tmp_path)] == [
+        "client/src/geometry.ts:3: names a G code",
+        "client/src/geometry.ts:4: names a G code",
+    ]
 
 
 def test_the_analysis_and_the_debugger_do_not_import_one_another(tmp_path: Path) -> None:

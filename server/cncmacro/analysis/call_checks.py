@@ -34,7 +34,7 @@ from ..machine.calls import (
     repeat_count,
 )
 from ..machine.hcodes import ARITHMETIC, BRANCHES
-from ..machine.numbers import round_half_away
+from ..planner.numbers import round_half_away
 from ..syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
 from .line_facts import CallSite, LineContext, LineFacts, ReturnJump, alarm_message, block_finding, finding
 from .statement_checks import literal_jump

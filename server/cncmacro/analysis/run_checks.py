@@ -171,7 +171,7 @@ class EntryRun(RunObserver):
         self.last_run = {}  # the new machine's lines have not run (``RunObserver``)
         self.track_serial = self.track_floor = 0
         m = Machine(self.dialect, self.settings, self.library, m99_ends_main=True, observer=self)
-        m.record_moves = False
+        m.planner.record_moves = False
         m.start(self.entry)
         self.machine = m
         self.state = RunState()
@@ -409,7 +409,7 @@ class EntryRun(RunObserver):
         if line not in lines:
             lines[line] = step
             st.order.append((step, file, line))
-            st.clocks.append(self.machine.clock)
+            st.clocks.append(self.machine.planner.clock)
             reach = st.reach.get(file)
             if reach is None:
                 st.reach[file] = ([line], [step])
@@ -419,7 +419,17 @@ class EntryRun(RunObserver):
 
     def tool_changed(self, file: str, line: int) -> None:
         m = self.machine
-        self.state.tools.append((self.stamp, file, line, m.codes.get("T"), m.clock, m.cut_length, m.rapid_length))
+        self.state.tools.append(
+            (
+                self.stamp,
+                file,
+                line,
+                m.planner.codes.get("T"),
+                m.planner.clock,
+                m.planner.cut_length,
+                m.planner.rapid_length,
+            )
+        )
 
     def vacant_argument(self, number: int, file: str, line: int, chain: tuple[CallSite, ...]) -> None:
         key = (file, line, number)

@@ -20,8 +20,8 @@ from __future__ import annotations
 from ..bilingual import in_language, pick
 from ..machine.alarms import MacroAlarm
 from ..machine.expressions import MAX_BRACKETS, bracket_depth, call_problem
-from ..machine.numbers import round_half_away
 from ..machine.variables import named_number
+from ..planner.numbers import round_half_away
 from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, NamedVar, Number, Relation, Unary, Var
 from .line_facts import Finding, LineContext, alarm_message, finding
 

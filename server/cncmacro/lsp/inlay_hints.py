@@ -13,7 +13,7 @@ from lsprotocol import types
 from ..analysis.call_sites import call_site
 from ..bilingual import pick
 from ..machine.calls import argument_targets
-from ..machine.numbers import format_plain
+from ..planner.numbers import format_plain
 from .positions import Encoding
 
 if TYPE_CHECKING:

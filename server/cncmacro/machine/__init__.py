@@ -5,8 +5,9 @@ one-call form that the command line uses.
 """
 
 from .alarms import Alarm, CallSite, MacroAlarm
-from .machine import Machine, RunResult, Snapshot
+from .machine import Machine
 from .observer import RunObserver
+from .run_records import RunResult, Snapshot
 from .status import RunStatus
 
 __all__ = ["Alarm", "CallSite", "Machine", "MacroAlarm", "RunObserver", "RunResult", "RunStatus", "Snapshot"]

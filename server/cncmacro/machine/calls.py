@@ -21,32 +21,15 @@ from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, COUNT_TWICE, G_ARGUMENT, P_VALUE_RANGE
 from ..dialects.dialect import ARGUMENTS_I, Dialect
 from ..library.machine_file import CallCode
+from ..planner.modal_groups import g_code_groups
+from ..planner.numbers import round_half_away, to_increment, to_int
 from ..syntax.nodes import Number, Word
 from .alarms import MacroAlarm
-from .numbers import round_half_away, to_increment, to_int
 
 NOT_ARGUMENTS = frozenset("GLNOP")
 MACRO_CALLS = (65.0, 66.0)  # G65, G66
 SUBPROGRAM_CALLS = (98.0, 198.0)  # M98, M198
 MAX_REPEAT = 9999
-_G_GROUPS: dict[str, dict[float, str]] = {}
-
-
-def g_code_groups(dialect: Dialect) -> dict[float, str]:
-    """G code -> the name of its modal group in the dialect's code table (one-shot codes are
-    absent): what a G word in a block sets."""
-    groups = _G_GROUPS.get(dialect.data_module)
-    if groups is None:
-        groups = {}
-        for doc in dialect.g_codes():
-            try:
-                code = float(doc.code[1:])
-            except ValueError:
-                continue
-            if doc.group:
-                groups[code] = doc.group
-        _G_GROUPS[dialect.data_module] = groups
-    return groups
 
 
 def codes_before_call(words: list[tuple[str, float | None]], dialect: Dialect) -> list[float] | None:

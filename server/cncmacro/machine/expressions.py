@@ -26,9 +26,9 @@ from ..dialects.alarms import (
     OVERFLOW,
     VARIABLE_NUMBER,
 )
+from ..planner.numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away, to_increment
 from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, NamedVar, Number, Relation, Unary, Var
 from .alarms import MacroAlarm, raiser
-from .numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away, to_increment
 from .variables import named_number
 
 if TYPE_CHECKING:

@@ -34,9 +34,9 @@ from .hcodes import compile_h_code
 from .words import g_code_known, unknown_g_code
 
 if TYPE_CHECKING:
+    from ..planner.plain_words import PlainPlan, PlainRun
     from .blocks import CompiledFile, Runner
     from .machine import Machine
-    from .motion import PlainPlan, PlainRun
 
 CONTROL_M = {98.0, 99.0, 30.0, 2.0, 0.0, 198.0}
 
@@ -83,7 +83,7 @@ def _known_value(cf: CompiledFile) -> Callable[[Word], float | None]:
 def compile_plain_line(cf: CompiledFile, text: str, nxt: int) -> Runner | None:
     """``_plain_motion`` for a line kept as text (``Block.plain``), read without building
     syntax nodes; None when the line needs the general path."""
-    plan = cf.machine.plain_text_plan(text)
+    plan = cf.machine.planner.plain.text_plan(text)
     return None if plan is None else _plan_runner(cf, plan, nxt)
 
 
@@ -103,7 +103,7 @@ def _plain_motion(cf: CompiledFile, block: Block, nxt: int) -> Runner | None:
         if v is None:
             continue
         words.append((letter, v))
-    plan = cf.machine.plain_plan(words)
+    plan = cf.machine.planner.plain.plan(words)
     return None if plan is None else _plan_runner(cf, plan, nxt)
 
 
@@ -114,7 +114,7 @@ def _plan_runner(cf: CompiledFile, plan: PlainPlan, nxt: int) -> Runner:
 
 
 def _run_plain_line(plan: PlainRun, m: Machine, pc: int) -> int:
-    if m.run_plain(plan, pc) and m.modal_calls:
+    if m.planner.run_plain(plan, pc) and m.modal_calls:
         return m.modal_call(pc, plan[6])
     return plan[6]
 
@@ -148,7 +148,7 @@ def _macro_call(
 
     def evaluate(m: Machine, pc: int) -> tuple[Any, Any, int]:
         if before:
-            m.execute_nc(before, path, pc)
+            m.planner.execute_nc(before, path, pc)
         found = resolve(m)
         arguments = map_arguments([(letter, get(m)) for letter, get in arg_values], dialect)
         notes: list[str] = []
@@ -235,7 +235,7 @@ def _nc(
         plain = [(letter, v) for letter, v in constant if v is not None]
 
         def motion(m: Machine, pc: int) -> int:
-            moved, skip_to = m.execute_nc(plain, file_path, pc)
+            moved, skip_to = m.planner.execute_nc(plain, file_path, pc)
             return _after_nc(m, moved, skip_to, pc, nxt)
 
         return motion
@@ -275,7 +275,7 @@ def _nc(
         nc_words = values
         if mcontrol and (98.0 in mcontrol or 99.0 in mcontrol or 198.0 in mcontrol or local in mcontrol):
             nc_words = [(letter, v) for letter, v in values if letter not in ("P", "L", "Q")]
-        moved, skip_to = m.execute_nc(nc_words, file_path, pc)
+        moved, skip_to = m.planner.execute_nc(nc_words, file_path, pc)
         if found_call is not None:
             return m.code_subprogram_call(*found_call, values, pc, nxt)
         if 98.0 in mcontrol or 198.0 in mcontrol:

@@ -44,13 +44,6 @@ def known_g_codes(dialect: str) -> frozenset[float]:
     return frozenset(out)
 
 
-def extra_offset_codes(dialect: Dialect) -> frozenset[float]:
-    """The G codes that select an extra work offset by the dialect's switches (Haas ``G154``
-    and ``G110``–``G129``): codes of the control whether or not its table lists them."""
-    code = dialect.extra_offset_code
-    return frozenset(dialect.extra_offset_aliases if code is None else (code, *dialect.extra_offset_aliases))
-
-
 def g_code_known(value: float, dialect: Dialect, calls: Mapping[str, object]) -> bool:
     """Whether ``G<value>`` (rounded as an address value) exists for the dialect or the machine."""
     return (
