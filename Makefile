@@ -45,7 +45,7 @@ test: setup
 	npm run --silent lint:client
 	$(PY) -m pytest
 	$(PY) tests/other_pythons.py --quick
-	node --test tests/dap/
+	node --test tests/dap/ tests/client/
 	npm run --silent test:grammar
 	PYTHON=$(PY) npm run --silent package
 	timeout 900 node --test --test-concurrency=1 tests/editor/
