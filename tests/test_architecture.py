@@ -355,6 +355,44 @@ def test_architecture_md_states_the_layers_and_rules_the_test_checks() -> None:
     )
 
 
+def modules_not_in_the_code_map(root: Path, doc: str) -> list[str]:
+    """The package's modules that ARCHITECTURE.md does not name: a module is named by its path
+    under ``server/cncmacro`` (`` `planner/moves.py` ``) anywhere, by its file name alone
+    (`` `moves.py` ``, or a path ending in it) in its part's section (``### `planner/` ``), or,
+    inside a folder below a part, by that folder written as a whole (`` `dialects/profiles/` ``:
+    one module per profile)."""
+    sections: dict[str, str] = {}
+    for chunk in re.split(r"^### ", doc, flags=re.M)[1:]:
+        for part in re.findall(r"`([a-z_]+)/`", chunk.split("\n", 1)[0]):
+            sections[part] = sections.get(part, "") + chunk
+    out = []
+    for path in sorted(root.rglob("*.py")):
+        rel = path.relative_to(root).as_posix()
+        if path.name == "__init__.py" or "/" not in rel:
+            continue
+        part, folder = rel.split("/", 1)[0], rel.rsplit("/", 1)[0]
+        named_here = re.search(rf"`(?:[\w/]*/)?{re.escape(path.name)}`", sections.get(part, ""))
+        if f"`{rel}`" not in doc and not named_here and not ("/" in folder and f"`{folder}/`" in doc):
+            out.append(rel)
+    return out
+
+
+def test_every_module_is_named_in_the_code_map() -> None:
+    missing = modules_not_in_the_code_map(PACKAGE, DOC.read_text(encoding="utf-8"))
+    assert not missing, f"ARCHITECTURE.md's code map names no such module: {missing}; say what each is for"
+
+
+def test_a_module_missing_from_the_code_map_is_named(tmp_path: Path) -> None:
+    for rel in ("planner/moves.py", "planner/new_room.py", "dialects/profiles/acme.py", "bilingual.py"):
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / rel).write_text("", encoding="utf-8")
+    (tmp_path / "machine" / "frames.py").parent.mkdir()
+    (tmp_path / "machine" / "frames.py").write_text("", encoding="utf-8")
+    doc = ("### `planner/`\n\nthe stream (`moves.py`), one module per profile in `dialects/profiles/`\n\n"
+           "### `machine/`\n\n`new_room.py` is named here, in another part's section\n")
+    assert modules_not_in_the_code_map(tmp_path, doc) == ["machine/frames.py", "planner/new_room.py"]
+
+
 def test_the_files_architecture_md_names_exist() -> None:
     """A code map that names a file that was moved or renamed misleads the reader."""
     text = DOC.read_text(encoding="utf-8")
