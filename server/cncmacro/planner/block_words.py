@@ -1,8 +1,10 @@
 """What a block's words set before it moves (docs/semantics.md §8): the modal groups of its G
 codes (a G00–G03 cancels a mill's drilling cycle, G54.1 P and Haas G154 P / G110–G129 select an
 extra work offset), and F, S, D, H, B, T and M: their last values, a tool change and its time, a
-tool length offset (tool_offsets.py). ``set_modal`` returns the block's one-shot code, which
-``Planner.execute_nc`` then carries out (one_shot.py).
+tool length offset (tool_offsets.py); an M code's time (``m_code_time``) and a tool change
+(``tool_change``: where a tool's part of the run starts, told to the host, then its time).
+``set_modal`` returns the block's one-shot code, which ``Planner.execute_nc`` then carries out
+(one_shot.py).
 """
 
 from __future__ import annotations
@@ -12,6 +14,7 @@ from typing import TYPE_CHECKING
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
+from .moves import ToolChange
 from .tool_offsets import apply_length_offset, select_tool
 
 if TYPE_CHECKING:
@@ -46,10 +49,10 @@ def set_codes(p: Planner, other: dict[str, float], file: str, line: int) -> None
     if "T" in other:
         select_tool(p, other["T"])
         if p.times.tool_change_t:
-            p.tool_change(file, line)
+            tool_change(p, file, line)
     if "M" in other:
         p.codes["M"] = other["M"]
-        p.m_code_time(other["M"], file, line)  # after T: T1 M06 changes to T1
+        m_code_time(p, other["M"], file, line)  # after T: T1 M06 changes to T1
     if "H" in other and p.modal.get("length") in (43.0, 44.0):
         apply_length_offset(p, other["H"])
     elif not p.lathe and p.modal.get("length") == 49.0 and "Z" in p.axis_index:
@@ -69,3 +72,21 @@ def _extra_offset(p: Planner, g: float, other: dict[str, float]) -> int:
             detail(f"G{g:g} P{number}: P must be 1 to {count}", f"G{g:g} P{number}：P 必须在 1～{count} 之间"),
         )
     return number
+
+
+def m_code_time(p: Planner, m: float, file: str, line: int) -> None:
+    """The time of M code ``m``: a tool change (``tool_change``) or the machine file's."""
+    if m == p.times.tool_change_m:
+        tool_change(p, file, line)
+    else:
+        p.clock += p.times.m_seconds(m)
+
+
+def tool_change(p: Planner, file: str, line: int) -> None:
+    """A tool change on ``line``: where a tool's part of the run starts (kept while moves
+    are recorded, told to the host), then its time."""
+    if p.record_moves:
+        tool = p.codes.get("T")
+        p.tool_changes.append(ToolChange(file, line, tool, p.clock, p.cut_length, p.rapid_length))
+    p.host.tool_changed(file, line)
+    p.clock += p.times.timing.tool_change_seconds

@@ -292,19 +292,3 @@ class Planner:
             return self.times.feed_rate(feed, True, self.codes.get("S") or 0.0, modal.get("spindle") == 96.0,
                                         start, end, unit)  # fmt: skip
         return feed  # per minute (``feed_rate``)
-
-    def m_code_time(self, m: float, file: str, line: int) -> None:
-        """The time of M code ``m``: a tool change (``tool_change``) or the machine file's."""
-        if m == self.times.tool_change_m:
-            self.tool_change(file, line)
-        else:
-            self.clock += self.times.m_seconds(m)
-
-    def tool_change(self, file: str, line: int) -> None:
-        """A tool change on ``line``: where a tool's part of the run starts (kept while moves
-        are recorded, told to the host), then its time."""
-        if self.record_moves:
-            tool = self.codes.get("T")
-            self.tool_changes.append(ToolChange(file, line, tool, self.clock, self.cut_length, self.rapid_length))
-        self.host.tool_changed(file, line)
-        self.clock += self.times.timing.tool_change_seconds
