@@ -10,8 +10,8 @@ exception. The same reading finds the calls that open a file (``open()``, ``os.o
 ``io.open()``, ``.read_text()``/``.read_bytes()`` and their ``write`` twins; not ``Path.open``,
 whose name is shared with too much else), ``eval``/``exec``/``compile``, DAP's
 ``request_seq`` and a test of a locale for Chinese (``"zh"`` compared with or looked for in a
-string). A module loaded by name (``importlib.import_module`` in ``dialects/``) is not
-seen. Each broken rule is reported as ``server/cncmacro/<file>:<line>: what [rule] the rule``.
+string), and the classes each module defines. A module loaded by name (``importlib.import_module``
+in ``dialects/``) is not seen. Each broken rule is reported as ``server/cncmacro/<file>:<line>: what [rule] the rule``.
 
 ``LAYERS`` and ``RULES`` are the one place the rules are written for the test; ARCHITECTURE.md
 states the same order and the same rule ids, and a test below holds the two together. Run as a
@@ -65,6 +65,7 @@ RULES: dict[str, str] = {
     "L10": "only bilingual.py tells whether a locale is Chinese (is_chinese, pick); no other module "
            "tests a locale for zh",
     "L11": "analysis/ and debugging/ do not import one another: each stands on machine/ by itself",
+    "L12": "a public class name is defined once in the package: one name, one meaning",
     "C1": "the toolpath's geometry and page and the server's start-up (toolpathGeometry.ts, "
           "toolpathView.ts, serverProcess.ts) do not import vscode",
 }  # fmt: skip
@@ -130,6 +131,7 @@ class Module:
     evals: list[tuple[int, str]] = field(default_factory=list)  # (line, what) for L9
     locale_tests: list[tuple[int, str]] = field(default_factory=list)  # (line, what) for L10
     strings: dict[str, int] = field(default_factory=dict)  # string constant -> first line
+    classes: list[tuple[int, str]] = field(default_factory=list)  # (line, name) for L12
 
 
 def module_name(path: str) -> str:
@@ -201,6 +203,10 @@ class _Reader(ast.NodeVisitor):
                 self.m.opens.append((node.lineno, f".{f.attr}()"))
             if f.attr in _STRING_TESTS and any(_zh_constant(a) for a in node.args):
                 self.m.locale_tests.append((node.lineno, f".{f.attr}() of a zh string"))
+        self.generic_visit(node)
+
+    def visit_ClassDef(self, node: ast.ClassDef) -> None:
+        self.m.classes.append((node.lineno, node.name))
         self.generic_visit(node)
 
     def visit_Compare(self, node: ast.Compare) -> None:
@@ -281,6 +287,15 @@ def violations(modules: dict[str, Module]) -> list[str]:
         if m.path != LOCALE_TESTER:
             for line, what in m.locale_tests:
                 report(m, line, f"tests a locale for Chinese with {what}", "L10")
+    defined: dict[str, str] = {}  # public class name -> where it is first defined
+    for m in sorted(modules.values(), key=lambda m: m.path):
+        for line, name in m.classes:
+            if name.startswith("_"):
+                continue
+            if name in defined:
+                report(m, line, f"defines class {name}, already defined in {defined[name]}", "L12")
+            else:
+                defined[name] = f"{m.path}:{line}"
     return out
 
 
@@ -396,8 +411,13 @@ def test_each_invariant_is_reported(tmp_path: Path) -> None:
         "machine/hover.py": "import pygls.server\nimport numpy\nfrom tests.conftest import block\n",
         "lsp/debug.py": "from ..dap import session\nx = {'request_seq': 1}\n",
         "dap/session.py": "import lark\nsrc = open('O1.nc').read()\neval(src)\n",
+        "syntax/nodes.py": "class Call:\n    pass\n",
+        "machine/calls.py": "class Call:\n    pass\nclass _Entry:\n    pass\n",
+        "machine/frames.py": "class _Entry:\n    pass\n",
     })  # fmt: skip
-    rules = sorted((v.split(":")[0].removeprefix("server/cncmacro/"), v.split("[")[1][:2]) for v in violations(modules))
+    rules = sorted(
+        (v.split(":")[0].removeprefix("server/cncmacro/"), v.split("[")[1].split("]")[0]) for v in violations(modules)
+    )
     assert rules == [
         ("bilingual.py", "L2"),
         ("dap/session.py", "L5"),
@@ -408,6 +428,7 @@ def test_each_invariant_is_reported(tmp_path: Path) -> None:
         ("machine/hover.py", "L5"),
         ("machine/hover.py", "L5"),
         ("machine/hover.py", "L6"),
+        ("syntax/nodes.py", "L12"),
     ]
 
 
@@ -450,6 +471,17 @@ def test_the_analysis_and_the_debugger_do_not_import_one_another(tmp_path: Path)
         "server/cncmacro/debugging/stepping.py:1: imports cncmacro.analysis.codes",
     ]
     assert {v.split(" [")[1][:3] for v in violations(modules)} == {"L11"}
+
+
+def test_a_public_class_name_defined_twice_is_reported_where_it_is_defined_again(tmp_path: Path) -> None:
+    modules = _package(tmp_path, {
+        "analysis/line_facts.py": "class CallSite:\n    pass\n",
+        "analysis/call_sites.py": "from dataclasses import dataclass\n\n@dataclass\nclass CallSite:\n    pass\n",
+        "machine/alarms.py": "class Alarm:\n    class _Frame:\n        pass\nclass _Frame:\n    pass\n",
+    })  # fmt: skip
+    assert [v.split(" [")[0] for v in violations(modules)] == [
+        "server/cncmacro/analysis/line_facts.py:1: defines class CallSite, already defined in analysis/call_sites.py:4"
+    ]
 
 
 if __name__ == "__main__":

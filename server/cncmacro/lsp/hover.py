@@ -27,7 +27,7 @@ from ..dialects.functions_data import GSK_H_CODES
 from ..machine.alarms import MacroAlarm
 from ..machine.calls import argument_targets, letters_for_local
 from ..machine.variables import named_number
-from ..syntax.nodes import Abbreviation, Bracket, Call, CornerWord, NamedVar, Number, Unary, Var, Word
+from ..syntax.nodes import Abbreviation, Bracket, CornerWord, FunctionCall, NamedVar, Number, Unary, Var, Word
 from ..syntax.walk import nodes_at
 from .conditional_m99 import conditional_m99_hover
 from .cursor import Cursor, cursor_at
@@ -86,7 +86,7 @@ def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
             return variable_hover(ls, cur, node.number), node.start, node.end
         if isinstance(node, NamedVar):
             return named_hover(ls, cur, node), node.start, node.end
-        if isinstance(node, Call) and col <= node.start + len(node.name):
+        if isinstance(node, FunctionCall) and col <= node.start + len(node.name):
             text = function_hover(ls, cur, node.name)
             if text:
                 return text, node.start, node.start + len(node.name)
@@ -267,7 +267,7 @@ def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
     loc = ls.locale
     dialect = cur.doc.dialect
     site = call_site(cur.block, dialect)
-    if site is not None and word is site.p:
+    if site is not None and word is site.target:
         return program_hover(ls, cur, site.number, site.name, site.arguments)
     if site is not None and word in site.arguments:
         targets = argument_targets([w.letter for w in site.arguments])

@@ -4,9 +4,9 @@
 one-call form that the command line uses.
 """
 
-from .alarms import Alarm, CallSite, MacroAlarm
+from .alarms import Alarm, CallLevel, MacroAlarm
 from .machine import Machine, RunResult, Snapshot
 from .observer import RunObserver
 from .status import RunStatus
 
-__all__ = ["Alarm", "CallSite", "Machine", "MacroAlarm", "RunObserver", "RunResult", "RunStatus", "Snapshot"]
+__all__ = ["Alarm", "CallLevel", "Machine", "MacroAlarm", "RunObserver", "RunResult", "RunStatus", "Snapshot"]

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, NamedTuple
 
 from ..library.programs import FoundProgram
-from .alarms import CallSite
+from .alarms import CallLevel
 from .numbers import format_plain
 
 if TYPE_CHECKING:
@@ -124,4 +124,4 @@ class Note:
     file: str
     line: int
     subject: str | None = None  # e.g. "repeat-count" for a clamped L
-    chain: tuple[CallSite, ...] = ()  # the calls that led there, main program first
+    chain: tuple[CallLevel, ...] = ()  # the calls that led there, main program first

@@ -24,7 +24,7 @@ from ..dialects.alarms import MACRO_NESTING, P_VALUE_RANGE, PROGRAM_NOT_FOUND, S
 from ..library.machine_file import CallCode, MachineSettings
 from ..library.profiles import machine_profile
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary, is_program_name
-from .alarms import Alarm, CallSite, MacroAlarm
+from .alarms import Alarm, CallLevel, MacroAlarm
 from .blocks import CompiledFile
 from .calls import Arguments, bad_name_detail, map_arguments, repeat_count
 from .expressions import VariableKinds
@@ -291,13 +291,13 @@ class Machine(VariableAccess, Motion):
         self.output.append(text)
         self.notes.append(Note("output", text, self.frames[-1].file, pc))
 
-    def chain(self, at: int | None = None) -> tuple[CallSite, ...]:
+    def chain(self, at: int | None = None) -> tuple[CallLevel, ...]:
         """Who called whom, from the main program inward (each with the line of its call;
         the innermost with ``at``, or its frame's line)."""
         sites = []
         for k, f in enumerate(self.frames):
             line = self.frames[k + 1].call_line if k + 1 < len(self.frames) else (f.pc if at is None else at)
-            sites.append(CallSite(f.name, f.file, line, f.kind))
+            sites.append(CallLevel(f.name, f.file, line, f.kind))
         return tuple(sites)
 
     # ---------------------------------------------------------------- running
