@@ -9,9 +9,10 @@ layer above is a sign the code sits in the wrong layer), and no module today nee
 exception. The same reading finds the calls that open a file (``open()``, ``os.open()``,
 ``io.open()``, ``.read_text()``/``.read_bytes()`` and their ``write`` twins; not ``Path.open``,
 whose name is shared with too much else), ``eval``/``exec``/``compile``, DAP's
-``request_seq`` and a test of a locale for Chinese (``"zh"`` compared with or looked for in a
-string), and the classes each module defines. A module loaded by name (``importlib.import_module``
-in ``dialects/``) is not seen. Each broken rule is reported as ``server/cncmacro/<file>:<line>: what [rule] the rule``.
+``request_seq``, a test of a locale for Chinese (``"zh"`` compared with or looked for in a
+string), the classes each module defines and the Chinese text its strings hold. A module loaded
+by name (``importlib.import_module`` in ``dialects/``) is not seen. Each broken rule is reported
+as ``server/cncmacro/<file>:<line>: what [rule] the rule``.
 
 ``LAYERS`` and ``RULES`` are the one place the rules are written for the test; ARCHITECTURE.md
 states the same order and the same rule ids, and a test below holds the two together. Run as a
@@ -66,6 +67,8 @@ RULES: dict[str, str] = {
            "tests a locale for zh",
     "L11": "analysis/ and debugging/ do not import one another: each stands on machine/ by itself",
     "L12": "a public class name is defined once in the package: one name, one meaning",
+    "L13": "the language server's own words are written in lsp/texts.py, in English and Chinese side by side: "
+           "no other module of lsp/ holds Chinese text",
     "C1": "the toolpath's geometry and page and the server's start-up (toolpathGeometry.ts, "
           "toolpathView.ts, serverProcess.ts) do not import vscode",
 }  # fmt: skip
@@ -104,6 +107,10 @@ _OPEN_METHODS = {"read_text", "read_bytes", "write_text", "write_bytes"}
 LOCALE_TESTER = "bilingual.py"
 _ZH = re.compile(r"zh", re.I)
 _STRING_TESTS = {"startswith", "endswith"}
+
+# L13: the one module of lsp/ that may hold Chinese text, and how Chinese is spotted (a CJK ideograph)
+EDITOR_TEXTS = "lsp/texts.py"
+_CHINESE = re.compile(r"[\u3400-\u4dbf\u4e00-\u9fff]")
 
 # C1
 CLIENT_WITHOUT_VSCODE = ("toolpathGeometry.ts", "toolpathView.ts", "serverProcess.ts")
@@ -287,6 +294,10 @@ def violations(modules: dict[str, Module]) -> list[str]:
         if m.path != LOCALE_TESTER:
             for line, what in m.locale_tests:
                 report(m, line, f"tests a locale for Chinese with {what}", "L10")
+        if m.path.startswith("lsp/") and m.path != EDITOR_TEXTS:
+            for text, line in sorted(m.strings.items(), key=lambda item: item[1]):
+                if _CHINESE.search(text):
+                    report(m, line, f"holds the Chinese text {text[:30]!r}", "L13")
     defined: dict[str, str] = {}  # public class name -> where it is first defined
     for m in sorted(modules.values(), key=lambda m: m.path):
         for line, name in m.classes:
@@ -410,6 +421,8 @@ def test_each_invariant_is_reported(tmp_path: Path) -> None:
         "bilingual.py": "from .syntax import nodes\n",
         "machine/hover.py": "import pygls.server\nimport numpy\nfrom tests.conftest import block\n",
         "lsp/debug.py": "from ..dap import session\nx = {'request_seq': 1}\n",
+        "lsp/hover.py": "def f(n):\n    return ('a', '倒角') if n else f'{n} 行'\n",
+        "lsp/texts.py": "_TEXTS = {'cancel': ('Cancel', '取消')}\n",
         "dap/session.py": "import lark\nsrc = open('O1.nc').read()\neval(src)\n",
         "syntax/nodes.py": "class Call:\n    pass\n",
         "machine/calls.py": "class Call:\n    pass\nclass _Entry:\n    pass\n",
@@ -425,6 +438,8 @@ def test_each_invariant_is_reported(tmp_path: Path) -> None:
         ("dap/session.py", "L9"),
         ("lsp/debug.py", "L4"),
         ("lsp/debug.py", "L7"),
+        ("lsp/hover.py", "L13"),
+        ("lsp/hover.py", "L13"),
         ("machine/hover.py", "L5"),
         ("machine/hover.py", "L5"),
         ("machine/hover.py", "L6"),
