@@ -11,7 +11,8 @@ exception. The same reading finds the calls that open a file (``open()``, ``os.o
 whose name is shared with too much else), ``eval``/``exec``/``compile``, DAP's
 ``request_seq``, a test of a locale for Chinese (``"zh"`` compared with or looked for in a
 string), the classes each module defines and the Chinese text its strings hold. A module loaded
-by name (``importlib.import_module`` in ``dialects/``) is not seen. Each broken rule is reported
+by name (``importlib.import_module`` in ``dialects/``, and ``lsp/server.py``'s ``FEATURES``) is not
+seen. Each broken rule is reported
 as ``server/cncmacro/<file>:<line>: what [rule] the rule``.
 
 ``LAYERS`` and ``RULES`` are the one place the rules are written for the test; ARCHITECTURE.md

@@ -3,13 +3,14 @@
 ``CncMacroServer`` holds everything the features read. Document sync is handled here rather
 than by pygls's own text store, so that an edit goes straight to the cached parser and the
 text is never copied. Each LSP method is answered by a function in its own module (hover,
-navigation, symbols, ...), registered in ``build_server``. pygls answers an exception in a
+navigation, symbols, ...), named in ``FEATURES`` and registered by ``build_server``. pygls answers an exception in a
 handler with an error response and keeps serving; the error is also logged here.
 """
 
 from __future__ import annotations
 
 import asyncio
+import importlib
 import inspect
 import json
 import logging
@@ -284,26 +285,30 @@ async def _pull_configuration(server: CncMacroServer) -> None:
         server.apply_settings(Settings.from_mapping(result[0]))
 
 
-def build_server() -> CncMacroServer:
-    """A server with every feature registered."""
-    from . import (
-        call_hierarchy,
-        code_actions,
-        completion,
-        cycle_lenses,
-        folding,
-        formatting,
-        highlight,
-        hover,
-        inlay_hints,
-        inline_values,
-        navigation,
-        semantic_tokens,
-        sequence_numbers,
-        signature_help,
-        symbols,
-    )
+# The modules of lsp/ that answer the editor's requests, each adding its handlers with its
+# ``register(server)``, in the order ``build_server`` registers them: a new feature is one line here.
+FEATURES = (
+    "hover",
+    "navigation",
+    "highlight",
+    "symbols",
+    "folding",
+    "semantic_tokens",
+    "completion",
+    "signature_help",
+    "code_actions",
+    "inlay_hints",
+    "sequence_numbers",
+    "formatting",
+    "call_hierarchy",
+    "inline_values",
+    "cycle_lenses",
+)
 
+
+def build_server() -> CncMacroServer:
+    """A server with its own handlers (initialisation, document sync, the workspace, the client's
+    custom requests) and every module of ``FEATURES`` registered."""
     server = CncMacroServer()
 
     server.feature(types.INITIALIZE)(_initialize)
@@ -364,24 +369,8 @@ def build_server() -> CncMacroServer:
         """The control profiles this server knows (the client's picker and status bar)."""
         return profile_facts()
 
-    for module in (
-        hover,
-        navigation,
-        highlight,
-        symbols,
-        folding,
-        semantic_tokens,
-        completion,
-        signature_help,
-        code_actions,
-        inlay_hints,
-        sequence_numbers,
-        formatting,
-        call_hierarchy,
-        inline_values,
-        cycle_lenses,
-    ):
-        module.register(server)
+    for name in FEATURES:  # by name: its line in FEATURES is all a new feature needs here
+        importlib.import_module(f"{__package__}.{name}").register(server)
     return server
 
 
