@@ -18,7 +18,7 @@ import os
 import sys
 import threading
 import time
-from collections.abc import Iterable
+from collections.abc import Callable, Generator, Iterable, Iterator
 from pathlib import Path
 from typing import Any, cast
 
@@ -45,6 +45,7 @@ log = logging.getLogger(__name__)
 CONFIGURATION_TIMEOUT = 2.0  # seconds to wait for the editor's settings before analysing
 DOCUMENT_DIALECT = "cncmacro/documentDialect"  # {"uri"} -> {"dialect", "title", "lathe", "source"} or null
 PROFILES = "cncmacro/profiles"  # {} -> [{"name", "title", "summary", "summaryZh", "aliases", "lathe", ...}]
+_Handler = tuple[Callable[..., Any], tuple[Any, ...], None]  # what an lsp_method yields to pygls: handler, arguments
 
 
 class CncMacroProtocol(LanguageServerProtocol):
@@ -103,7 +104,7 @@ class CncMacroProtocol(LanguageServerProtocol):
         return self._converter.unstructure(value)
 
     @lsp_method(types.INITIALIZE)
-    def lsp_initialize(self, params: types.InitializeParams):
+    def lsp_initialize(self, params: types.InitializeParams) -> Generator[Any, Any, types.InitializeResult]:
         """pygls answers with the first encoding the client lists (``utf-8`` for Neovim and
         Helix); this server picks the one it converts cheapest (``positions.negotiate``), reads
         and writes every column in it, and says so. pygls's own workspace (it holds no document
@@ -122,17 +123,17 @@ class CncMacroProtocol(LanguageServerProtocol):
         return result
 
     @lsp_method(types.TEXT_DOCUMENT_DID_OPEN)
-    def lsp_text_document__did_open(self, params: types.DidOpenTextDocumentParams):
+    def lsp_text_document__did_open(self, params: types.DidOpenTextDocumentParams) -> Iterator[_Handler]:
         if (handler := self.fm.features.get(types.TEXT_DOCUMENT_DID_OPEN)) is not None:
             yield handler, (params,), None
 
     @lsp_method(types.TEXT_DOCUMENT_DID_CHANGE)
-    def lsp_text_document__did_change(self, params: types.DidChangeTextDocumentParams):
+    def lsp_text_document__did_change(self, params: types.DidChangeTextDocumentParams) -> Iterator[_Handler]:
         if (handler := self.fm.features.get(types.TEXT_DOCUMENT_DID_CHANGE)) is not None:
             yield handler, (params,), None
 
     @lsp_method(types.TEXT_DOCUMENT_DID_CLOSE)
-    def lsp_text_document__did_close(self, params: types.DidCloseTextDocumentParams):
+    def lsp_text_document__did_close(self, params: types.DidCloseTextDocumentParams) -> Iterator[_Handler]:
         if (handler := self.fm.features.get(types.TEXT_DOCUMENT_DID_CLOSE)) is not None:
             yield handler, (params,), None
 
