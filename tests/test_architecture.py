@@ -295,20 +295,34 @@ def violations(modules: dict[str, Module]) -> list[str]:
         if m.path != LOCALE_TESTER:
             for line, what in m.locale_tests:
                 report(m, line, f"tests a locale for Chinese with {what}", "L10")
-        if m.path.startswith("lsp/") and m.path != EDITOR_TEXTS:
-            for text, line in sorted(m.strings.items(), key=lambda item: item[1]):
-                if _CHINESE.search(text):
-                    report(m, line, f"holds the Chinese text {text[:30]!r}", "L13")
+        for line, what in _chinese_texts(m):
+            report(m, line, what, "L13")
+    for m, line, what in _classes_defined_again(modules):
+        report(m, line, what, "L12")
+    return out
+
+
+def _classes_defined_again(modules: dict[str, Module]) -> list[tuple[Module, int, str]]:
+    """L12: each public class defined again after its first definition (by path), with where that is."""
+    out = []
     defined: dict[str, str] = {}  # public class name -> where it is first defined
     for m in sorted(modules.values(), key=lambda m: m.path):
         for line, name in m.classes:
             if name.startswith("_"):
                 continue
             if name in defined:
-                report(m, line, f"defines class {name}, already defined in {defined[name]}", "L12")
+                out.append((m, line, f"defines class {name}, already defined in {defined[name]}"))
             else:
                 defined[name] = f"{m.path}:{line}"
     return out
+
+
+def _chinese_texts(m: Module) -> list[tuple[int, str]]:
+    """L13: the Chinese texts of a module of lsp/ other than lsp/texts.py."""
+    if not m.path.startswith("lsp/") or m.path == EDITOR_TEXTS:
+        return []
+    found = sorted((line, text) for text, line in m.strings.items() if _CHINESE.search(text))
+    return [(line, f"holds the Chinese text {text[:30]!r}") for line, text in found]
 
 
 def client_violations(client: Path) -> list[str]:
