@@ -9,9 +9,11 @@ layer above is a sign the code sits in the wrong layer), and no module today nee
 exception. The same reading finds the calls that open a file (``open()``, ``os.open()``,
 ``io.open()``, ``.read_text()``/``.read_bytes()`` and their ``write`` twins; not ``Path.open``,
 whose name is shared with too much else), ``eval``/``exec``/``compile``, DAP's
-``request_seq`` and a test of a locale for Chinese (``"zh"`` compared with or looked for in a
-string). A module loaded by name (``importlib.import_module`` in ``dialects/``) is not
-seen. Each broken rule is reported as ``server/cncmacro/<file>:<line>: what [rule] the rule``.
+``request_seq``, a test of a locale for Chinese (``"zh"`` compared with or looked for in a
+string), the classes each module defines and the Chinese text its strings hold. A module loaded
+by name (``importlib.import_module`` in ``dialects/``, and ``lsp/server.py``'s ``FEATURES``) is not
+seen. Each broken rule is reported
+as ``server/cncmacro/<file>:<line>: what [rule] the rule``.
 
 ``LAYERS`` and ``RULES`` are the one place the rules are written for the test; ARCHITECTURE.md
 states the same order and the same rule ids, and a test below holds the two together. Run as a
@@ -66,6 +68,9 @@ RULES: dict[str, str] = {
     "L10": "only bilingual.py tells whether a locale is Chinese (is_chinese, pick); no other module "
            "tests a locale for zh",
     "L11": "analysis/ and debugging/ do not import one another: each stands on machine/ by itself",
+    "L12": "a public class name is defined once in the package: one name, one meaning",
+    "L13": "the language server's own words are written in lsp/texts.py, in English and Chinese side by side: "
+           "no other module of lsp/ holds Chinese text",
     "C1": "the toolpath's geometry and page and the server's start-up (toolpathGeometry.ts, "
           "toolpathView.ts, serverProcess.ts) do not import vscode",
     "C2": "the client knows no G code: no code of client/src names one or reads a number out of a "
@@ -107,6 +112,10 @@ LOCALE_TESTER = "bilingual.py"
 _ZH = re.compile(r"zh", re.I)
 _STRING_TESTS = {"startswith", "endswith"}
 
+# L13: the one module of lsp/ that may hold Chinese text, and how Chinese is spotted (a CJK ideograph)
+EDITOR_TEXTS = "lsp/texts.py"
+_CHINESE = re.compile(r"[\u3400-\u4dbf\u4e00-\u9fff]")
+
 # C1
 CLIENT_WITHOUT_VSCODE = ("toolpathGeometry.ts", "toolpathView.ts", "serverProcess.ts")
 
@@ -133,6 +142,7 @@ class Module:
     evals: list[tuple[int, str]] = field(default_factory=list)  # (line, what) for L9
     locale_tests: list[tuple[int, str]] = field(default_factory=list)  # (line, what) for L10
     strings: dict[str, int] = field(default_factory=dict)  # string constant -> first line
+    classes: list[tuple[int, str]] = field(default_factory=list)  # (line, name) for L12
 
 
 def module_name(path: str) -> str:
@@ -204,6 +214,10 @@ class _Reader(ast.NodeVisitor):
                 self.m.opens.append((node.lineno, f".{f.attr}()"))
             if f.attr in _STRING_TESTS and any(_zh_constant(a) for a in node.args):
                 self.m.locale_tests.append((node.lineno, f".{f.attr}() of a zh string"))
+        self.generic_visit(node)
+
+    def visit_ClassDef(self, node: ast.ClassDef) -> None:
+        self.m.classes.append((node.lineno, node.name))
         self.generic_visit(node)
 
     def visit_Compare(self, node: ast.Compare) -> None:
@@ -284,7 +298,34 @@ def violations(modules: dict[str, Module]) -> list[str]:
         if m.path != LOCALE_TESTER:
             for line, what in m.locale_tests:
                 report(m, line, f"tests a locale for Chinese with {what}", "L10")
+        for line, what in _chinese_texts(m):
+            report(m, line, what, "L13")
+    for m, line, what in _classes_defined_again(modules):
+        report(m, line, what, "L12")
     return out
+
+
+def _classes_defined_again(modules: dict[str, Module]) -> list[tuple[Module, int, str]]:
+    """L12: each public class defined again after its first definition (by path), with where that is."""
+    out = []
+    defined: dict[str, str] = {}  # public class name -> where it is first defined
+    for m in sorted(modules.values(), key=lambda m: m.path):
+        for line, name in m.classes:
+            if name.startswith("_"):
+                continue
+            if name in defined:
+                out.append((m, line, f"defines class {name}, already defined in {defined[name]}"))
+            else:
+                defined[name] = f"{m.path}:{line}"
+    return out
+
+
+def _chinese_texts(m: Module) -> list[tuple[int, str]]:
+    """L13: the Chinese texts of a module of lsp/ other than lsp/texts.py."""
+    if not m.path.startswith("lsp/") or m.path == EDITOR_TEXTS:
+        return []
+    found = sorted((line, text) for text, line in m.strings.items() if _CHINESE.search(text))
+    return [(line, f"holds the Chinese text {text[:30]!r}") for line, text in found]
 
 
 def client_violations(client: Path) -> list[str]:
@@ -388,8 +429,10 @@ def test_a_module_missing_from_the_code_map_is_named(tmp_path: Path) -> None:
         (tmp_path / rel).write_text("", encoding="utf-8")
     (tmp_path / "machine" / "frames.py").parent.mkdir()
     (tmp_path / "machine" / "frames.py").write_text("", encoding="utf-8")
-    doc = ("### `planner/`\n\nthe stream (`moves.py`), one module per profile in `dialects/profiles/`\n\n"
-           "### `machine/`\n\n`new_room.py` is named here, in another part's section\n")
+    doc = (
+        "### `planner/`\n\nthe stream (`moves.py`), one module per profile in `dialects/profiles/`\n\n"
+        "### `machine/`\n\n`new_room.py` is named here, in another part's section\n"
+    )
     assert modules_not_in_the_code_map(tmp_path, doc) == ["machine/frames.py", "planner/new_room.py"]
 
 
@@ -454,9 +497,16 @@ def test_each_invariant_is_reported(tmp_path: Path) -> None:
         "bilingual.py": "from .syntax import nodes\n",
         "machine/hover.py": "import pygls.server\nimport numpy\nfrom tests.conftest import block\n",
         "lsp/debug.py": "from ..dap import session\nx = {'request_seq': 1}\n",
+        "lsp/hover.py": "def f(n):\n    return ('a', '倒角') if n else f'{n} 行'\n",
+        "lsp/texts.py": "_TEXTS = {'cancel': ('Cancel', '取消')}\n",
         "dap/session.py": "import lark\nsrc = open('O1.nc').read()\neval(src)\n",
+        "syntax/nodes.py": "class Call:\n    pass\n",
+        "machine/calls.py": "class Call:\n    pass\nclass _Entry:\n    pass\n",
+        "machine/frames.py": "class _Entry:\n    pass\n",
     })  # fmt: skip
-    rules = sorted((v.split(":")[0].removeprefix("server/cncmacro/"), v.split("[")[1][:2]) for v in violations(modules))
+    rules = sorted(
+        (v.split(":")[0].removeprefix("server/cncmacro/"), v.split("[")[1].split("]")[0]) for v in violations(modules)
+    )
     assert rules == [
         ("bilingual.py", "L2"),
         ("dap/session.py", "L5"),
@@ -464,9 +514,12 @@ def test_each_invariant_is_reported(tmp_path: Path) -> None:
         ("dap/session.py", "L9"),
         ("lsp/debug.py", "L4"),
         ("lsp/debug.py", "L7"),
+        ("lsp/hover.py", "L13"),
+        ("lsp/hover.py", "L13"),
         ("machine/hover.py", "L5"),
         ("machine/hover.py", "L5"),
         ("machine/hover.py", "L6"),
+        ("syntax/nodes.py", "L12"),
     ]
 
 
@@ -534,6 +587,17 @@ def test_the_analysis_and_the_debugger_do_not_import_one_another(tmp_path: Path)
         "server/cncmacro/debugging/stepping.py:1: imports cncmacro.analysis.codes",
     ]
     assert {v.split(" [")[1][:3] for v in violations(modules)} == {"L11"}
+
+
+def test_a_public_class_name_defined_twice_is_reported_where_it_is_defined_again(tmp_path: Path) -> None:
+    modules = _package(tmp_path, {
+        "analysis/line_facts.py": "class CallSite:\n    pass\n",
+        "analysis/call_sites.py": "from dataclasses import dataclass\n\n@dataclass\nclass CallSite:\n    pass\n",
+        "machine/alarms.py": "class Alarm:\n    class _Frame:\n        pass\nclass _Frame:\n    pass\n",
+    })  # fmt: skip
+    assert [v.split(" [")[0] for v in violations(modules)] == [
+        "server/cncmacro/analysis/line_facts.py:1: defines class CallSite, already defined in analysis/call_sites.py:4"
+    ]
 
 
 if __name__ == "__main__":

@@ -52,7 +52,7 @@ from ..dialects import Dialect
 from ..dialects.alarms import alarm_text
 from ..library.machine_file import MachineSettings
 from ..library.programs import FoundProgram, ProgramLibrary
-from ..machine import CallSite, Machine, Snapshot
+from ..machine import CallLevel, Machine, Snapshot
 from ..machine.calls import letters_for_local
 from ..machine.observer import RunObserver
 from ..machine.status import FINISHED, RunStatus
@@ -80,7 +80,7 @@ class VacantRead:
     number: int
     file: str
     line: int
-    chain: tuple[CallSite, ...]
+    chain: tuple[CallLevel, ...]
 
 
 @dataclass(slots=True)
@@ -431,7 +431,7 @@ class EntryRun(RunObserver):
             )
         )
 
-    def vacant_argument(self, number: int, file: str, line: int, chain: tuple[CallSite, ...]) -> None:
+    def vacant_argument(self, number: int, file: str, line: int, chain: tuple[CallLevel, ...]) -> None:
         key = (file, line, number)
         if key not in self.state.vacant:
             self.state.vacant[key] = VacantRead(self.stamp, number, file, line, chain)
@@ -626,7 +626,7 @@ def _diagnostic(
     code: str,
     en: str,
     zh: str,
-    chain: tuple[CallSite, ...],
+    chain: tuple[CallLevel, ...],
     blocks: int | None,
     in_loop: bool,
     line_text: Callable[[str, int], str],

@@ -26,8 +26,8 @@ def raiser(number: int, message: str) -> Callable[..., Any]:
 
 
 @dataclass(frozen=True, slots=True)
-class CallSite:
-    """One level of the call chain: the program and the line of the call in it."""
+class CallLevel:
+    """One level of a run's call chain (``Alarm.chain``): the program and the line of the call in it."""
 
     program: str
     file: str
@@ -44,7 +44,7 @@ class Alarm:
     message: str
     file: str
     line: int
-    chain: tuple[CallSite, ...] = ()
+    chain: tuple[CallLevel, ...] = ()
     subject: str | None = None  # e.g. "repeat-count", "label-range", "jump-into-loop"
 
     def describe(self) -> str:

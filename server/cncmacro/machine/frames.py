@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from ..library.programs import FoundProgram
-from .alarms import CallSite
+from .alarms import CallLevel
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile
@@ -78,4 +78,4 @@ class Note:
     file: str
     line: int
     subject: str | None = None  # e.g. "repeat-count" for a clamped L
-    chain: tuple[CallSite, ...] = ()  # the calls that led there, main program first
+    chain: tuple[CallLevel, ...] = ()  # the calls that led there, main program first

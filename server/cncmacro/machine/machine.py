@@ -24,7 +24,7 @@ from ..library.machine_file import MachineSettings
 from ..library.profiles import machine_profile
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..planner.planner import Planner
-from .alarms import Alarm, CallSite
+from .alarms import Alarm, CallLevel
 from .blocks import CompiledFile
 from .call_stack import CallStack
 from .expressions import VariableKinds
@@ -217,13 +217,13 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         self.output.append(text)
         self.notes.append(Note("output", text, self.frames[-1].file, pc))
 
-    def chain(self, at: int | None = None) -> tuple[CallSite, ...]:
+    def chain(self, at: int | None = None) -> tuple[CallLevel, ...]:
         """Who called whom, from the main program inward (each with the line of its call;
         the innermost with ``at``, or its frame's line)."""
         sites = []
         for k, f in enumerate(self.frames):
             line = self.frames[k + 1].call_line if k + 1 < len(self.frames) else (f.pc if at is None else at)
-            sites.append(CallSite(f.name, f.file, line, f.kind))
+            sites.append(CallLevel(f.name, f.file, line, f.kind))
         return tuple(sites)
 
     # ---------------------------------------------------------------- snapshots

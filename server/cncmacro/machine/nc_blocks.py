@@ -22,7 +22,7 @@ from ..syntax.nodes import Block, Bracket, Number, Var, Word
 from .alarms import MacroAlarm, raiser
 from .block_rules import CALL_WITHOUT_P, BlockProblem, first_alarm, validate_block
 from .calls import (
-    Call,
+    BlockCall,
     codes_before_call,
     macro_program_number,
     map_arguments,
@@ -123,7 +123,7 @@ def _run_plain_line(plan: PlainRun, m: Machine, pc: int) -> int:
 
 
 def _macro_call(
-    cf: CompiledFile, block: Block, words: list[Word], call: Call, problems: list[BlockProblem], nxt: int
+    cf: CompiledFile, block: Block, words: list[Word], call: BlockCall, problems: list[BlockProblem], nxt: int
 ) -> Runner:
     name = call.kind
     dialect = cf.machine.dialect
@@ -204,7 +204,7 @@ def _program_resolver(cf: CompiledFile, p_word: Word | None, missing: BlockProbl
 
 
 def _nc(
-    cf: CompiledFile, block: Block, words: list[Word], nxt: int, problems: list[BlockProblem], call: Call | None
+    cf: CompiledFile, block: Block, words: list[Word], nxt: int, problems: list[BlockProblem], call: BlockCall | None
 ) -> Runner:
     """An NC block: words evaluated, NC executed, then M98 / M99 / M30 / M00 and call codes."""
     items: list[tuple[str, float | None, Any]] = []  # (letter, rounded literal, or a getter)

@@ -13,7 +13,7 @@ import gc
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, cast
 
-from .alarms import Alarm, CallSite, MacroAlarm
+from .alarms import Alarm, CallLevel, MacroAlarm
 from .frames import Frame, ModalCall, Note
 from .status import CANCEL_CHECK, FINISHED, RunStatus
 from .straight_runs import run_straight
@@ -43,7 +43,7 @@ class RunLoop:
 
     if TYPE_CHECKING:
 
-        def chain(self, at: int | None = None) -> tuple[CallSite, ...]: ...
+        def chain(self, at: int | None = None) -> tuple[CallLevel, ...]: ...
 
     def run(self, max_blocks: int | None = None, *, is_limit: bool = True) -> RunStatus:
         """Run until the program ends, alarms, pauses or has run ``max_blocks`` more blocks
