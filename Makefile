@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
 
-.PHONY: demo test setup package screenshots
+.PHONY: demo test check setup package screenshots
 
 $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -36,7 +36,8 @@ demo: $(VENV)/.installed
 	@$(VENV)/bin/cncmacro check tests/data/O0999_broken.nc || echo "(cncmacro check exits with status 1 when it finds mistakes)"
 
 # Every test: lint, the Python suite (then part of it again under the oldest and the newest
-# Python on the machine, tests/other_pythons.py), the debug adapter through a real DAP client, the grammar,
+# Python on the machine, tests/other_pythons.py), the debug adapter through a real DAP client, the
+# toolpath's plot on real runs, the grammar,
 # then the .vsix is built and tested in a real VS Code (screenshots in test-output/editor/).
 test: setup
 	$(VENV)/bin/ruff check server tests benchmarks
@@ -45,10 +46,19 @@ test: setup
 	npm run --silent lint:client
 	$(PY) -m pytest
 	$(PY) tests/other_pythons.py --quick
-	node --test tests/dap/
+	node --test tests/dap/ tests/client/
 	npm run --silent test:grammar
 	PYTHON=$(PY) npm run --silent package
 	timeout 900 node --test --test-concurrency=1 tests/editor/
+
+# The everyday loop (docs/development.md): lint, types, the Python suite but its slow parts (the
+# language server over stdio, the hardening storms; both run in make test) and the toolpath's plot.
+check: $(VENV)/.installed node_modules/.installed
+	$(VENV)/bin/ruff check server tests benchmarks
+	$(VENV)/bin/ruff format --check server tests benchmarks
+	$(VENV)/bin/mypy
+	$(PY) -m pytest -x --ignore=tests/lsp --ignore=tests/hardening
+	node --test tests/client/
 
 # The VS Code extension: cncmacro.vsix (needs only Python >= 3.10 where it is installed). Building
 # it needs Python with pip and `npm ci`, none of the test stack.

@@ -9,9 +9,11 @@ layer above is a sign the code sits in the wrong layer), and no module today nee
 exception. The same reading finds the calls that open a file (``open()``, ``os.open()``,
 ``io.open()``, ``.read_text()``/``.read_bytes()`` and their ``write`` twins; not ``Path.open``,
 whose name is shared with too much else), ``eval``/``exec``/``compile``, DAP's
-``request_seq`` and a test of a locale for Chinese (``"zh"`` compared with or looked for in a
-string). A module loaded by name (``importlib.import_module`` in ``dialects/``) is not
-seen. Each broken rule is reported as ``server/cncmacro/<file>:<line>: what [rule] the rule``.
+``request_seq``, a test of a locale for Chinese (``"zh"`` compared with or looked for in a
+string), the classes each module defines and the Chinese text its strings hold. A module loaded
+by name (``importlib.import_module`` in ``dialects/``, and ``lsp/server.py``'s ``FEATURES``) is not
+seen. Each broken rule is reported
+as ``server/cncmacro/<file>:<line>: what [rule] the rule``.
 
 ``LAYERS`` and ``RULES`` are the one place the rules are written for the test; ARCHITECTURE.md
 states the same order and the same rule ids, and a test below holds the two together. Run as a
@@ -42,6 +44,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("syntax",),
     ("dialects",),
     ("library",),
+    ("planner",),
     ("machine",),
     ("analysis", "debugging"),
     ("cli", "lsp", "dap"),
@@ -65,8 +68,13 @@ RULES: dict[str, str] = {
     "L10": "only bilingual.py tells whether a locale is Chinese (is_chinese, pick); no other module "
            "tests a locale for zh",
     "L11": "analysis/ and debugging/ do not import one another: each stands on machine/ by itself",
+    "L12": "a public class name is defined once in the package: one name, one meaning",
+    "L13": "the language server's own words are written in lsp/texts.py, in English and Chinese side by side: "
+           "no other module of lsp/ holds Chinese text",
     "C1": "the toolpath's geometry and page and the server's start-up (toolpathGeometry.ts, "
           "toolpathView.ts, serverProcess.ts) do not import vscode",
+    "C2": "the client knows no G code: no code of client/src names one or reads a number out of a "
+          "move's mode; what a move is (kind, plane, legs) comes from the planner",
 }  # fmt: skip
 
 # L5: the third-party packages of pyproject.toml and the parts (or files) that may import them
@@ -104,6 +112,10 @@ LOCALE_TESTER = "bilingual.py"
 _ZH = re.compile(r"zh", re.I)
 _STRING_TESTS = {"startswith", "endswith"}
 
+# L13: the one module of lsp/ that may hold Chinese text, and how Chinese is spotted (a CJK ideograph)
+EDITOR_TEXTS = "lsp/texts.py"
+_CHINESE = re.compile(r"[\u3400-\u4dbf\u4e00-\u9fff]")
+
 # C1
 CLIENT_WITHOUT_VSCODE = ("toolpathGeometry.ts", "toolpathView.ts", "serverProcess.ts")
 
@@ -130,6 +142,7 @@ class Module:
     evals: list[tuple[int, str]] = field(default_factory=list)  # (line, what) for L9
     locale_tests: list[tuple[int, str]] = field(default_factory=list)  # (line, what) for L10
     strings: dict[str, int] = field(default_factory=dict)  # string constant -> first line
+    classes: list[tuple[int, str]] = field(default_factory=list)  # (line, name) for L12
 
 
 def module_name(path: str) -> str:
@@ -201,6 +214,10 @@ class _Reader(ast.NodeVisitor):
                 self.m.opens.append((node.lineno, f".{f.attr}()"))
             if f.attr in _STRING_TESTS and any(_zh_constant(a) for a in node.args):
                 self.m.locale_tests.append((node.lineno, f".{f.attr}() of a zh string"))
+        self.generic_visit(node)
+
+    def visit_ClassDef(self, node: ast.ClassDef) -> None:
+        self.m.classes.append((node.lineno, node.name))
         self.generic_visit(node)
 
     def visit_Compare(self, node: ast.Compare) -> None:
@@ -281,7 +298,34 @@ def violations(modules: dict[str, Module]) -> list[str]:
         if m.path != LOCALE_TESTER:
             for line, what in m.locale_tests:
                 report(m, line, f"tests a locale for Chinese with {what}", "L10")
+        for line, what in _chinese_texts(m):
+            report(m, line, what, "L13")
+    for m, line, what in _classes_defined_again(modules):
+        report(m, line, what, "L12")
     return out
+
+
+def _classes_defined_again(modules: dict[str, Module]) -> list[tuple[Module, int, str]]:
+    """L12: each public class defined again after its first definition (by path), with where that is."""
+    out = []
+    defined: dict[str, str] = {}  # public class name -> where it is first defined
+    for m in sorted(modules.values(), key=lambda m: m.path):
+        for line, name in m.classes:
+            if name.startswith("_"):
+                continue
+            if name in defined:
+                out.append((m, line, f"defines class {name}, already defined in {defined[name]}"))
+            else:
+                defined[name] = f"{m.path}:{line}"
+    return out
+
+
+def _chinese_texts(m: Module) -> list[tuple[int, str]]:
+    """L13: the Chinese texts of a module of lsp/ other than lsp/texts.py."""
+    if not m.path.startswith("lsp/") or m.path == EDITOR_TEXTS:
+        return []
+    found = sorted((line, text) for text, line in m.strings.items() if _CHINESE.search(text))
+    return [(line, f"holds the Chinese text {text[:30]!r}") for line, text in found]
 
 
 def client_violations(client: Path) -> list[str]:
@@ -290,6 +334,24 @@ def client_violations(client: Path) -> list[str]:
         for n, line in enumerate((client / name).read_text(encoding="utf-8").splitlines(), 1):
             if re.search(r"""(from|require\()\s*['"]vscode['"]""", line):
                 out.append(f"client/src/{name}:{n}: imports vscode [C1] {RULES['C1']}")
+    return out
+
+
+# C2: a G code in the client's code (not its comments, nor the texts it shows people, which are
+# translated with l10n.t): a G and digits in a string, a template or a pattern, or a mode's letter
+# stripped to read its number
+_G_CODE = re.compile(r"""['"`/][^'"`/\n]*\bG\d|\^G|replace\(/\^G""")
+_COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/|l10n\.t\('[^'\n]*'", re.S)
+
+
+def client_g_codes(client: Path) -> list[str]:
+    """Where the client's code names a G code (C2)."""
+    out = []
+    for path in sorted(client.glob("*.ts")):
+        code = _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group()), path.read_text(encoding="utf-8"))
+        for n, text in enumerate(code.splitlines(), 1):
+            if _G_CODE.search(text):
+                out.append(f"client/src/{path.name}:{n}: names a G code [C2] {RULES['C2']}")
     return out
 
 
@@ -316,7 +378,7 @@ def layer_order_text() -> str:
 
 
 def test_the_package_keeps_every_rule() -> None:
-    found = violations(read_package(PACKAGE)) + client_violations(CLIENT)
+    found = violations(read_package(PACKAGE)) + client_violations(CLIENT) + client_g_codes(CLIENT)
     assert not found, "\n".join(found)
 
 
@@ -332,6 +394,46 @@ def test_architecture_md_states_the_layers_and_rules_the_test_checks() -> None:
     assert stated == set(RULES), (
         f"rules in the doc only: {stated - set(RULES)}; in the test only: {set(RULES) - stated}"
     )
+
+
+def modules_not_in_the_code_map(root: Path, doc: str) -> list[str]:
+    """The package's modules that ARCHITECTURE.md does not name: a module is named by its path
+    under ``server/cncmacro`` (`` `planner/moves.py` ``) anywhere, by its file name alone
+    (`` `moves.py` ``, or a path ending in it) in its part's section (``### `planner/` ``), or,
+    inside a folder below a part, by that folder written as a whole (`` `dialects/profiles/` ``:
+    one module per profile)."""
+    sections: dict[str, str] = {}
+    for chunk in re.split(r"^### ", doc, flags=re.M)[1:]:
+        for part in re.findall(r"`([a-z_]+)/`", chunk.split("\n", 1)[0]):
+            sections[part] = sections.get(part, "") + chunk
+    out = []
+    for path in sorted(root.rglob("*.py")):
+        rel = path.relative_to(root).as_posix()
+        if path.name == "__init__.py" or "/" not in rel:
+            continue
+        part, folder = rel.split("/", 1)[0], rel.rsplit("/", 1)[0]
+        named_here = re.search(rf"`(?:[\w/]*/)?{re.escape(path.name)}`", sections.get(part, ""))
+        if f"`{rel}`" not in doc and not named_here and not ("/" in folder and f"`{folder}/`" in doc):
+            out.append(rel)
+    return out
+
+
+def test_every_module_is_named_in_the_code_map() -> None:
+    missing = modules_not_in_the_code_map(PACKAGE, DOC.read_text(encoding="utf-8"))
+    assert not missing, f"ARCHITECTURE.md's code map names no such module: {missing}; say what each is for"
+
+
+def test_a_module_missing_from_the_code_map_is_named(tmp_path: Path) -> None:
+    for rel in ("planner/moves.py", "planner/new_room.py", "dialects/profiles/acme.py", "bilingual.py"):
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / rel).write_text("", encoding="utf-8")
+    (tmp_path / "machine" / "frames.py").parent.mkdir()
+    (tmp_path / "machine" / "frames.py").write_text("", encoding="utf-8")
+    doc = (
+        "### `planner/`\n\nthe stream (`moves.py`), one module per profile in `dialects/profiles/`\n\n"
+        "### `machine/`\n\n`new_room.py` is named here, in another part's section\n"
+    )
+    assert modules_not_in_the_code_map(tmp_path, doc) == ["machine/frames.py", "planner/new_room.py"]
 
 
 def test_the_files_architecture_md_names_exist() -> None:
@@ -395,9 +497,16 @@ def test_each_invariant_is_reported(tmp_path: Path) -> None:
         "bilingual.py": "from .syntax import nodes\n",
         "machine/hover.py": "import pygls.server\nimport numpy\nfrom tests.conftest import block\n",
         "lsp/debug.py": "from ..dap import session\nx = {'request_seq': 1}\n",
+        "lsp/hover.py": "def f(n):\n    return ('a', '倒角') if n else f'{n} 行'\n",
+        "lsp/texts.py": "_TEXTS = {'cancel': ('Cancel', '取消')}\n",
         "dap/session.py": "import lark\nsrc = open('O1.nc').read()\neval(src)\n",
+        "syntax/nodes.py": "class Call:\n    pass\n",
+        "machine/calls.py": "class Call:\n    pass\nclass _Entry:\n    pass\n",
+        "machine/frames.py": "class _Entry:\n    pass\n",
     })  # fmt: skip
-    rules = sorted((v.split(":")[0].removeprefix("server/cncmacro/"), v.split("[")[1][:2]) for v in violations(modules))
+    rules = sorted(
+        (v.split(":")[0].removeprefix("server/cncmacro/"), v.split("[")[1].split("]")[0]) for v in violations(modules)
+    )
     assert rules == [
         ("bilingual.py", "L2"),
         ("dap/session.py", "L5"),
@@ -405,9 +514,12 @@ def test_each_invariant_is_reported(tmp_path: Path) -> None:
         ("dap/session.py", "L9"),
         ("lsp/debug.py", "L4"),
         ("lsp/debug.py", "L7"),
+        ("lsp/hover.py", "L13"),
+        ("lsp/hover.py", "L13"),
         ("machine/hover.py", "L5"),
         ("machine/hover.py", "L5"),
         ("machine/hover.py", "L6"),
+        ("syntax/nodes.py", "L12"),
     ]
 
 
@@ -433,10 +545,35 @@ def test_a_locale_is_tested_for_chinese_only_in_bilingual(tmp_path: Path) -> Non
     ]
 
 
-@pytest.mark.parametrize("layer", ["syntax", "dialects", "library", "machine", "analysis", "debugging"])
+@pytest.mark.parametrize("layer", ["syntax", "dialects", "library", "planner", "machine", "analysis", "debugging"])
 def test_nothing_below_the_front_ends_may_import_them(tmp_path: Path, layer: str) -> None:
     modules = _package(tmp_path, {f"{layer}/x.py": "from ..lsp import server\n", "lsp/server.py": ""})
     assert [v.split(" [")[1][:2] for v in violations(modules)] == ["L1"]
+
+
+def test_the_planner_imports_nothing_of_the_macro_machine(tmp_path: Path) -> None:
+    modules = _package(tmp_path, {
+        "planner/planner.py": "from ..machine.frames import Frame\nfrom ..dialects import Dialect\n",
+        "machine/frames.py": "", "dialects/__init__.py": "",
+    })  # fmt: skip
+    assert [v.split(" [")[0] for v in violations(modules)] == [
+        "server/cncmacro/planner/planner.py:1: imports cncmacro.machine.frames, a layer above planner"
+    ]
+
+
+def test_a_client_that_reads_a_g_code_is_reported(tmp_path: Path) -> None:
+    (tmp_path / "geometry.ts").write_text(
+        "// G02 turns clockwise: a comment may say so\n"
+        "const legend = vscode.l10n.t('arc (G02/G03)');\n"
+        "const n = Number(move.mode.replace(/^G/i, ''));\n"
+        "if (move.mode === 'G03') ccw = true;\n"
+        "const text = `${move.mode} done`;\n",
+        encoding="utf-8",
+    )
+    assert [v.split(" [")[0] for v in client_g_codes(tmp_path)] == [
+        "client/src/geometry.ts:3: names a G code",
+        "client/src/geometry.ts:4: names a G code",
+    ]
 
 
 def test_the_analysis_and_the_debugger_do_not_import_one_another(tmp_path: Path) -> None:
@@ -450,6 +587,17 @@ def test_the_analysis_and_the_debugger_do_not_import_one_another(tmp_path: Path)
         "server/cncmacro/debugging/stepping.py:1: imports cncmacro.analysis.codes",
     ]
     assert {v.split(" [")[1][:3] for v in violations(modules)} == {"L11"}
+
+
+def test_a_public_class_name_defined_twice_is_reported_where_it_is_defined_again(tmp_path: Path) -> None:
+    modules = _package(tmp_path, {
+        "analysis/line_facts.py": "class CallSite:\n    pass\n",
+        "analysis/call_sites.py": "from dataclasses import dataclass\n\n@dataclass\nclass CallSite:\n    pass\n",
+        "machine/alarms.py": "class Alarm:\n    class _Frame:\n        pass\nclass _Frame:\n    pass\n",
+    })  # fmt: skip
+    assert [v.split(" [")[0] for v in violations(modules)] == [
+        "server/cncmacro/analysis/line_facts.py:1: defines class CallSite, already defined in analysis/call_sites.py:4"
+    ]
 
 
 if __name__ == "__main__":

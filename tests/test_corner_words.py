@@ -34,7 +34,7 @@ def test_1_text_and_blocks_corner_words_check_clean_where_the_control_has_them(t
 def test_8_machine_corner_words_run_the_moves_as_written(profile):
     m = run(REAL, profile)
     assert m.status == "completed", m.alarm
-    ends = [(mv.line + 1, mv.mode, mv.end[:2]) for mv in m.moves]
+    ends = [(mv.line + 1, mv.mode, mv.end[:2]) for mv in m.planner.moves]
     assert ends == [
         (2, 0.0, (0.0, 0.0)),
         (3, 1.0, (50.0, 0.0)),  # no corner point inserted: the sharp corner at X50 Y0
@@ -76,7 +76,7 @@ def test_8_machine_a_vacant_corner_value_is_dropped_and_the_caller_is_told(tmp_p
     assert (d.code, d.line + 1, d.severity) == ("vacant-argument", 2, "information")
     assert "#18 (R)" in d.message
     m = run(lines("O1000", "G90 G00 X0 Y0", "G01 X50. ,R#1 F500.", "Y50.", "M30"))
-    assert m.status == "completed" and [mv.end[:2] for mv in m.moves][-2:] == [(50.0, 0.0), (50.0, 50.0)]
+    assert m.status == "completed" and [mv.end[:2] for mv in m.planner.moves][-2:] == [(50.0, 0.0), (50.0, 50.0)]
 
 
 def test_8_machine_a_corner_value_is_computed_when_the_block_runs():

@@ -1,6 +1,6 @@
 """Cycle time and path length (docs/semantics.md §9): five programs timed by hand, each within 1 %
 of ``cncmacro run --json``, the machine file's ``[timing]``, and the clock that #3001 reads
-agreeing with the cycle time (one rule, machine/cycle_time.py)."""
+agreeing with the cycle time (one rule, planner/cycle_time.py)."""
 
 from __future__ import annotations
 
@@ -155,7 +155,7 @@ def test_the_clock_that_3001_reads_is_the_cycle_time() -> None:
     # #3001 counts milliseconds: G01 X100 F600 is 10 s, the dwell 1.5 s, the tool change 3 s
     m = run(lines("O1", "#3001=0", "T1 M06", "G01 X100. F600", "G04 P1500", "#1=#3001", "M30"))
     assert m.variables()[1] == pytest.approx(14500.0, abs=1.0)
-    assert m.clock == pytest.approx(14.5)
+    assert m.planner.clock == pytest.approx(14.5)
 
 
 # ---------------------------------------------------------------- drilling canned cycles
@@ -295,4 +295,4 @@ def test_a_repeat_count_past_9999_is_an_alarm_and_haas_repeats_by_l() -> None:
     m = run(lines("O1", "G00 Z10.", "G91 G81 X10. Z-5. R-8. F100 K10000", "M30"))
     assert m.alarm is not None and m.alarm.number == 119
     m = run(lines("O1", "G00 Z10.", "G91 G81 X10. Z-5. R-8. F100 L3", "G90 G80", "M30"), "haas")
-    assert [move.end[0] for move in m.moves if move.mode == 81.0] == [10.0, 20.0, 30.0]
+    assert [move.end[0] for move in m.planner.moves if move.mode == 81.0] == [10.0, 20.0, 30.0]

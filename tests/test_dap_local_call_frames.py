@@ -60,4 +60,4 @@ def test_5_step_over_an_m97_runs_it_to_completion(tmp_path: Path) -> None:
     s.run(STEP_IN)
     s.run(STEP_OVER)  # M97 P1000 and its three blocks
     assert shown(s) == [("O0011 (main)", 4)]
-    assert s.machine.read(100) == 1 and [mv.line for mv in s.machine.moves] == [6]
+    assert s.machine.read(100) == 1 and [mv.line for mv in s.machine.planner.moves] == [6]

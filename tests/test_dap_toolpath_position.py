@@ -51,10 +51,10 @@ def test_the_current_blocks_moves_are_found_without_running_it_for_good(tmp_path
     m = stepper.machine
     while line(stepper) != 6:
         stepper.run(STEP_IN)
-    before = (m.blocks, len(m.moves), list(m.output), m.L[1], list(m.pos))
+    before = (m.blocks, len(m.planner.moves), list(m.output), m.L[1], list(m.planner.pos))
     ahead = next_moves(m)
     assert [(mv.line + 1, mv.end[0]) for mv in ahead] == [(6, 10.0)]
-    assert (m.blocks, len(m.moves), list(m.output), m.L[1], list(m.pos)) == before
+    assert (m.blocks, len(m.planner.moves), list(m.output), m.L[1], list(m.planner.pos)) == before
     while line(stepper) != 7:
         stepper.run(STEP_IN)
     assert next_moves(m) == []  # DPRNT makes no move
@@ -65,13 +65,13 @@ def test_run_to_a_move_of_a_loop_stops_at_the_pass_that_makes_it(tmp_path: Path)
     stepper = stepper_for(tmp_path)
     stop = run_to_move(stepper, 3)  # moves: line 3, then line 6 in passes 1, 2, 3, ...
     assert stop.reason == "goto"
-    assert (line(stepper), stepper.machine.L[1], len(stepper.machine.moves)) == (6, 3.0, 3)
+    assert (line(stepper), stepper.machine.L[1], len(stepper.machine.planner.moves)) == (6, 3.0, 3)
 
 
 def test_run_to_the_move_of_a_drilling_cycle_stops_at_the_cycle(tmp_path: Path) -> None:
     stepper = stepper_for(tmp_path)
     stop = run_to_move(stepper, 5)  # after the G00 and the four passes' G01
-    assert (stop.reason, line(stepper), len(stepper.machine.moves)) == ("goto", 9, 5)
+    assert (stop.reason, line(stepper), len(stepper.machine.planner.moves)) == ("goto", 9, 5)
     assert [mv.mode for mv in next_moves(stepper.machine)] == [81.0]
 
 
@@ -80,7 +80,7 @@ def test_run_back_to_a_move_behind_crosses_checkpoints(tmp_path: Path) -> None:
     run_to_move(stepper, 6)  # the G00 X0 Y0 of line 11
     assert line(stepper) == 11
     stop = run_to_move(stepper, 2)
-    assert (stop.reason, line(stepper), stepper.machine.L[1], len(stepper.machine.moves)) == ("goto", 6, 2.0, 2)
+    assert (stop.reason, line(stepper), stepper.machine.L[1], len(stepper.machine.planner.moves)) == ("goto", 6, 2.0, 2)
     assert run_to_move(stepper, 6).reason == "goto"  # and forward again, to the same block
     assert line(stepper) == 11
 

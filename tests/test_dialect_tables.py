@@ -14,7 +14,16 @@ import string
 import pytest
 
 from cncmacro.dialects import DIALECTS, fanuc_data, functions_data, get_dialect, gsk980tdi_data
-from cncmacro.dialects.tables import MODAL_GROUPS, SOURCES, CodeDoc, SystemVariable
+from cncmacro.dialects.tables import (
+    FUNCTION,
+    FUNCTION_KINDS,
+    MODAL_GROUPS,
+    OPERATOR,
+    SOURCES,
+    STATEMENT,
+    CodeDoc,
+    SystemVariable,
+)
 
 DIALECT_DATA = {"fanuc": fanuc_data, "gsk980tdi": gsk980tdi_data}
 AXES = ("X", "Y", "Z", "4th", "5th", "6th")
@@ -478,6 +487,27 @@ def test_every_function_has_a_doc():
     for f in functions_data.FUNCTIONS:
         assert f.name in f.signature, f.name
         assert f.en.strip() and CJK.search(f.zh), f.name
+
+
+@pytest.mark.parametrize("dialect", DIALECTS)
+def test_every_function_row_has_the_kind_its_signature_writes(dialect):
+    """A row's ``kind`` is how the editor colours and completes the name: every row of the
+    profile's function table and of the GSK H codes has one, the rows of one name agree on it, and
+    the signature writes the word so: a function with its name first, an operator between two
+    operands."""
+    table = (*get_dialect(dialect).functions(), *functions_data.GSK_H_CODES)
+    kinds: dict[str, set[str]] = {}
+    for f in table:
+        assert f.kind in FUNCTION_KINDS, (f.name, f.kind)
+        kinds.setdefault(f.name, set()).add(f.kind)
+        if f.kind == FUNCTION:
+            assert f.signature == f.name or f.signature.startswith(f"{f.name}["), f.signature
+        elif f.kind == OPERATOR:
+            assert re.fullmatch(rf"\[?\w+ {f.name} \w+\]?", f.signature), f.signature
+    assert {name: k for name, k in kinds.items() if len(k) > 1} == {}
+    shown = {name: k.pop() for name, k in kinds.items() if name in ("SIN", "POPEN", "AND", "GT", "IF", "THEN", "H80")}
+    assert shown == {"SIN": FUNCTION, "POPEN": FUNCTION, "AND": OPERATOR, "GT": OPERATOR, "IF": STATEMENT,
+                     "THEN": STATEMENT, "H80": STATEMENT}  # fmt: skip
 
 
 def test_both_atan_forms():

@@ -38,11 +38,11 @@ def test_vacant_in_conditions(value, relation, fanuc, gsk):
 
 def test_vacant_address_is_dropped_on_fanuc_and_zero_on_gsk():
     m = run(lines("G90 G00 X100 Y#1 Z#1", "M30"), "fanuc", presets={})
-    assert m.moves[-1].end[:3] == (100.0, 0.0, 0.0)
+    assert m.planner.moves[-1].end[:3] == (100.0, 0.0, 0.0)
     m = run(lines("G00 X100 Z50", "G00 X100 Z#1", "M30"), "gsk980tdi")
-    assert m.moves[-1].end[2] == 0.0  # G00 X100 Z#1 = G00 X100 Z0 (seed 000)
+    assert m.planner.moves[-1].end[2] == 0.0  # G00 X100 Z#1 = G00 X100 Z0 (seed 000)
     m = run(lines("G90 G00 X100 Z50", "G00 X100 Z#1", "M30"), "fanuc")
-    assert m.moves[-1].end[2] == 50.0  # the Z word is dropped
+    assert m.planner.moves[-1].end[2] == 50.0  # the Z word is dropped
 
 
 def test_zero_is_vacant_and_read_only():
@@ -87,7 +87,7 @@ def test_nine_indirection_on_gsk_only():
 
 def test_nine_indirection_in_an_address():
     m = run(lines("#100=150", "#150=500", "G00 X#9100 Z-#9100", "M30"), "gsk980tdi")
-    assert m.moves[-1].end == (500.0, 0.0, -500.0, 0.0, 0.0)
+    assert m.planner.moves[-1].end == (500.0, 0.0, -500.0, 0.0, 0.0)
 
 
 def test_comparisons_are_exact():

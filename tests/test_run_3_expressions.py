@@ -81,7 +81,7 @@ def test_round_in_an_address_rounds_to_the_least_increment():
     from running import run
 
     m = run(lines("#1=1.23456", "G90 G01 X[ROUND[#1]] Y#1 F100", "M30"))
-    assert m.moves[-1].end[:2] == (1.235, 1.235)
+    assert m.planner.moves[-1].end[:2] == (1.235, 1.235)
     assert final(lines("#1=1.23456", "#2=ROUND[#1]", "M30"))[2] == 1
 
 
@@ -89,7 +89,7 @@ def test_axis_values_round_half_away_at_the_least_increment():
     from running import run
 
     m = run(lines("G90 G00 X1.0005 Y-1.0005 Z2.00049", "M30"))
-    assert m.moves[-1].end[:3] == (1.001, -1.001, 2.0)
+    assert m.planner.moves[-1].end[:3] == (1.001, -1.001, 2.0)
 
 
 def test_integer_addresses_round_half_away():

@@ -142,6 +142,6 @@ def test_nc_words_and_a_macro_statement_in_one_block_are_alarm_127():
 
 def test_block_delete_skips_only_when_the_switch_is_on():
     m = run(lines("G90 G00 X1", "/G00 X2", "/N7 G00 X3", "M30"), block_delete=True)
-    assert [mv.end[0] for mv in m.moves] == [1.0]
+    assert [mv.end[0] for mv in m.planner.moves] == [1.0]
     m = run(lines("G90 G00 X1", "/G00 X2", "M30"))
-    assert [mv.end[0] for mv in m.moves] == [1.0, 2.0]
+    assert [mv.end[0] for mv in m.planner.moves] == [1.0, 2.0]

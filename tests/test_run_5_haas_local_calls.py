@@ -45,7 +45,7 @@ def test_5_m97_runs_from_its_n_label_to_m99_and_returns_after_the_call(haas: Dia
     v = m.variables()
     assert v[100] == 2 and v[101] == 2
     # the move inside the local subprogram is drawn like any other
-    assert [(mv.line, mv.end[0]) for mv in m.moves] == [(6, 5.0)]
+    assert [(mv.line, mv.end[0]) for mv in m.planner.moves] == [(6, 5.0)]
 
 
 def test_5_m97_l3_runs_the_local_subprogram_three_times(haas: Dialect) -> None:
@@ -114,4 +114,4 @@ def test_5_m97_is_a_plain_m_code_where_the_switch_is_off(haas: Dialect) -> None:
     assert m.status == "completed", m.alarm
     v = m.variables()
     assert v[100] == 1 and v[101] == 1  # no jump: the run ends at M30 before N1000
-    assert m.moves == []
+    assert m.planner.moves == []

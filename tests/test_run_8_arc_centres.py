@@ -20,7 +20,7 @@ def moves(*body: str, dialect: str = "fanuc") -> list[tuple[float, tuple[float, 
     """(mode, end, centre) of each move of a run of ``body`` that must complete."""
     m = run(lines("O0001", *body, "M30"), dialect)
     assert m.status == "completed", m.alarm
-    return [(mv.mode, mv.end, mv.centre) for mv in m.moves]
+    return [(mv.mode, mv.end, mv.centre) for mv in m.planner.moves]
 
 
 def test_8_machine_arc_g17_quarter_circle_with_i_j():
@@ -130,7 +130,7 @@ def cam_moves(body: list[str], under_g66: bool = False) -> list[object]:
     head = ["G66 P9000" if under_g66 else "G67"]  # the same line numbers either way
     m = run(lines("O0001", *head, *body, "G67", "M30", "O9000", "M99"))
     assert m.status == "completed", m.alarm
-    return m.moves
+    return m.planner.moves
 
 
 def test_8_machine_arc_in_a_plain_cam_run_equals_the_general_path():

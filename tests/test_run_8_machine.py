@@ -43,7 +43,7 @@ def test_positions_absolute_incremental_and_lathe_u_w():
 
 def test_moves_are_recorded_with_line_mode_from_and_to():
     m = run(lines("G90 G00 X10", "G01 Y5 F100", "G02 X20 Y15 R10", "M30"))
-    assert [(mv.line, mv.mode, mv.start[:2], mv.end[:2]) for mv in m.moves] == [
+    assert [(mv.line, mv.mode, mv.start[:2], mv.end[:2]) for mv in m.planner.moves] == [
         (0, 0.0, (0.0, 0.0), (10.0, 0.0)),
         (1, 1.0, (10.0, 0.0), (10.0, 5.0)),
         (2, 2.0, (10.0, 5.0), (20.0, 15.0)),
@@ -54,8 +54,8 @@ def test_8_machine_a_motion_code_cancels_a_drilling_cycle_on_fanuc():
     """Group 01 (G00-G03) cancels a group 09 drilling cycle: the later moves drill nothing."""
     for text in ("G00 X30. Y10.", "G00 X30. Y10. (rapid)"):  # the plain-line path and the general path
         m = run(lines("O0001", "G90 G99 G81 X10. Y10. Z-5. R2. F100.", text, "G01 X40. F200.", "M30"))
-        assert [move.mode for move in m.moves if move.line >= 2] == [0.0, 1.0]
-        assert m.moves[-1].end[:3] == (40.0, 10.0, 2.0)
+        assert [move.mode for move in m.planner.moves if move.line >= 2] == [0.0, 1.0]
+        assert m.planner.moves[-1].end[:3] == (40.0, 10.0, 2.0)
         assert m.read(4009) == 80.0
 
 

@@ -81,7 +81,7 @@ def test_g31_no_hit_ends_at_the_end_point_with_the_signal_off(tmp_path: Path) ->
     assert [n.message for n in m.notes if n.kind == "skip"] == [
         "G31 reached its end point X10: the skip signal did not come on"
     ]
-    assert not m.probes[0].hit
+    assert not m.planner.probes[0].hit
     assert skip_positions(tmp_path, "", "G90 G00 X1 Y2 Z3", "G31 Z-20 F100") == (1, 2, -20)
 
 
@@ -122,9 +122,9 @@ def test_g31_going_back_past_a_g31_gives_its_contact_point_back(tmp_path: Path) 
     m: Machine = machine(lines("G31 X10 F100", "#101=#5061", "M30"), skip=skip_table(tmp_path, table))
     before = m.snapshot()
     m.run()
-    assert m.read(101) == 1 and len(m.probes) == 1
+    assert m.read(101) == 1 and len(m.planner.probes) == 1
     m.restore(before)
-    assert m.probes == []
+    assert m.planner.probes == []
     m.run()
     assert m.read(101) == 1
 

@@ -15,7 +15,7 @@ from cncmacro.machine.evaluate import (
     is_assignment,
     set_variable,
 )
-from cncmacro.machine.machine import CANCEL_CHECK
+from cncmacro.machine.status import CANCEL_CHECK
 from running import lines, machine
 
 CALLING = lines("O0001", "#1=3", "#100=2", "G65 P9100 A2.5 B4.", "M30", "O9100", "#3=#1+#2", "M99")

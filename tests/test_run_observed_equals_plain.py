@@ -58,8 +58,9 @@ def run_in_chunks(m: Machine, chunk: int) -> list[tuple[object, ...]]:
 
 def outcome(m: Machine) -> tuple[object, ...]:
     alarm = (m.alarm.number, m.alarm.file, m.alarm.line, m.alarm.message) if m.alarm else None
-    return (m.status, alarm, m.blocks, m.variables(), list(m.moves), list(m.output), list(m.pos), m.clock,
-            dict(m.modal), dict(m.codes))  # fmt: skip
+    p = m.planner
+    return (m.status, alarm, m.blocks, m.variables(), list(p.moves), list(m.output), list(p.pos), p.clock,
+            dict(p.modal), dict(p.codes))  # fmt: skip
 
 
 def lines_run(text: str, dialect: str, blocks: int, **settings: object) -> set[tuple[str, int]]:

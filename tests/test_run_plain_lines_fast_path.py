@@ -58,8 +58,17 @@ def program(draw: st.DrawFn) -> tuple[str, list[str], str]:
 def outcome(dialect: str, body: list[str], mode: str) -> tuple[object, ...]:
     m = run(lines("O0001", *body, "M30"), dialect, decimal_point=mode)
     alarm = (m.alarm.number, m.alarm.line) if m.alarm else None
-    lengths = (m.cut_length, m.rapid_length)  # the cycle time's path (machine/cycle_time.py)
-    return m.status, alarm, m.moves, m.clock, lengths, dict(m.modal), dict(m.codes), m.variables()
+    lengths = (m.planner.cut_length, m.planner.rapid_length)  # the cycle time's path (planner/cycle_time.py)
+    return (
+        m.status,
+        alarm,
+        m.planner.moves,
+        m.planner.clock,
+        lengths,
+        dict(m.planner.modal),
+        dict(m.planner.codes),
+        m.variables(),
+    )
 
 
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -91,9 +100,9 @@ def test_plain_lines_run_in_short_steps_end_as_one_run(case: tuple[str, list[str
     assert all(does_something(text, pc) for _, pc in stops)  # never on a blank or comment line
     assert stepped.status == whole.status
     assert stepped.blocks == whole.blocks
-    assert stepped.moves == whole.moves
-    assert stepped.clock == whole.clock
-    assert dict(stepped.modal) == dict(whole.modal)
+    assert stepped.planner.moves == whole.planner.moves
+    assert stepped.planner.clock == whole.planner.clock
+    assert dict(stepped.planner.modal) == dict(whole.planner.modal)
 
 
 def does_something(text: str, pc: int) -> bool:
@@ -104,10 +113,14 @@ def does_something(text: str, pc: int) -> bool:
 def test_plain_lines_move_and_round_as_written() -> None:
     m = run(lines("O0001", "G90 G01 X10.5 Y-3. F200", "G91 X1.25 Y1", "X0.0004 Z2.", "M30"))
     assert m.status == "completed"
-    assert [move.end for move in m.moves] == [(10.5, -3.0, 0.0, 0.0), (11.75, -2.0, 0.0, 0.0), (11.75, -2.0, 2.0, 0.0)]
-    assert m.moves[-1].line == 3
+    assert [move.end for move in m.planner.moves] == [
+        (10.5, -3.0, 0.0, 0.0),
+        (11.75, -2.0, 0.0, 0.0),
+        (11.75, -2.0, 2.0, 0.0),
+    ]
+    assert m.planner.moves[-1].line == 3
 
 
 def test_plain_lines_in_increment_mode_count_least_increments() -> None:
     m = run(lines("O0001", "G90 G01 X10 Y2.5 F200", "M30"), decimal_point="increment")
-    assert m.moves[0].end[:2] == (0.01, 2.5)
+    assert m.planner.moves[0].end[:2] == (0.01, 2.5)

@@ -43,9 +43,9 @@ def test_2_values_a_different_value_or_a_zero_of_another_sign_is_another_state(t
 def test_8_machine_the_clock_counts_only_when_asked(tmp_path):
     m = _machine(tmp_path)
     a = m.snapshot()
-    m.clock += 12.5  # the same state after a slower move
+    m.planner.clock += 12.5  # the same state after a slower move
     b = m.snapshot()
     assert same_state(a, b, clock=False)
     assert not same_state(a, b, clock=True)
-    m.pos[0] += 1.0
+    m.planner.pos[0] += 1.0
     assert not same_state(a, m.snapshot(), clock=False)

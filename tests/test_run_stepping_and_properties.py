@@ -66,16 +66,18 @@ def test_snapshot_restore_rewinds_everything():
     m.step()
     snap = m.snapshot()
     m.run()
-    assert m.C[100] == 2 and len(m.moves) == 2 and m.output == ["DONE"] and m.status == "completed"
+    assert m.C[100] == 2 and len(m.planner.moves) == 2 and m.output == ["DONE"] and m.status == "completed"
     m.restore(snap)
-    assert m.C[100] is None and len(m.moves) == 1 and m.output == [] and m.pos[0] == 1 and m.frame.pc == 1
+    assert (
+        m.C[100] is None and len(m.planner.moves) == 1 and m.output == [] and m.planner.pos[0] == 1 and m.frame.pc == 1
+    )
     m.run()
-    assert m.C[100] == 2 and len(m.moves) == 2
+    assert m.C[100] == 2 and len(m.planner.moves) == 2
 
 
 def outcome(m: Machine) -> tuple[object, ...]:
     alarm = (m.alarm.number, m.alarm.line, m.alarm.message) if m.alarm else None
-    return (m.status, alarm, m.blocks, m.variables(), list(m.moves), list(m.output), m.pos)
+    return (m.status, alarm, m.blocks, m.variables(), list(m.planner.moves), list(m.output), m.planner.pos)
 
 
 # ---------------------------------------------------------------- generated programs

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from cncmacro.syntax.nodes import Binary, Bracket, Call, IndirectVar, Number, Relation, Unary, Var
+from cncmacro.syntax.nodes import Binary, Bracket, FunctionCall, IndirectVar, Number, Relation, Unary, Var
 from conftest import block, error
 
 
@@ -72,7 +72,7 @@ def test_signed_literal_word_is_one_number():
 )
 def test_every_function(name):
     v = value(f"{name}[#2]")
-    assert isinstance(v, Call) and v.name == name and len(v.args) == 1
+    assert isinstance(v, FunctionCall) and v.name == name and len(v.args) == 1
 
 
 def test_function_needs_brackets():
@@ -81,7 +81,7 @@ def test_function_needs_brackets():
 
 def test_atan_two_arguments():
     v = value("ATAN[#2]/[#3]")
-    assert isinstance(v, Call) and v.name == "ATAN" and len(v.args) == 2
+    assert isinstance(v, FunctionCall) and v.name == "ATAN" and len(v.args) == 2
 
 
 def test_atan_one_argument_then_division():
@@ -91,7 +91,7 @@ def test_atan_one_argument_then_division():
 
 def test_atan_two_arguments_inside_a_product():
     v = value("2*ATAN[#2]/[#3]")
-    assert v.op == "*" and isinstance(v.right, Call) and len(v.right.args) == 2
+    assert v.op == "*" and isinstance(v.right, FunctionCall) and len(v.right.args) == 2
 
 
 def test_comparison_outside_a_condition_is_alarm_114():

@@ -111,7 +111,7 @@ def test_1_text_and_blocks_plain_moves_run_up_to_the_closing_percent_and_not_pas
     text = lines("O1000", "G90 G0 X1. Y1.", "G1 X2. Y2. F100.", "", "%", "G1 X3. Y3.", "G1 X4. Y4.")
     m = run(text)
     assert m.status == "completed"
-    assert [(mv.line + 1, mv.end[:2]) for mv in m.moves] == [(2, (1.0, 1.0)), (3, (2.0, 2.0))]
+    assert [(mv.line + 1, mv.end[:2]) for mv in m.planner.moves] == [(2, (1.0, 1.0)), (3, (2.0, 2.0))]
 
 
 def test_1_text_and_blocks_a_dos_end_of_file_byte_without_percent_ends_the_file():

@@ -2,21 +2,39 @@
  * The geometry of a toolpath plot: the result of `cncmacro run --json` read and checked, the
  * plane it is drawn in (XY for a mill, Z across and X up for a lathe, where X is a diameter and
  * is drawn at half its value, as the radius), each move turned into SVG path data in that
- * plane (rapids, feeds, arcs as arcs when the move names its centre and as a chord when it does
- * not, canned cycles with their positioning and cutting legs), the extents, and grid lines at
- * round numbers. Nothing here knows VS Code; the webview's page is built from what it returns.
+ * plane, the extents, and grid lines at round numbers. What each move is comes from the run:
+ * its `kind` (rapid, feed, arc, probe, cycle), an arc's `plane`, `centre` and direction, a
+ * cycle's `legs` and a drilled `hole`. Nothing here knows a G code, and nothing here knows VS
+ * Code; the webview's page is built from what it returns.
  */
 
 export type Axes = Record<string, number>;
+
+export type MoveKind = 'rapid' | 'feed' | 'arc' | 'cycle' | 'probe';
+const MOVE_KINDS: readonly string[] = ['rapid', 'feed', 'arc', 'cycle', 'probe'];
+
+/** One leg of a cycle, as the run gives it: at rapid or at the feed, to a point. */
+export interface RunLeg {
+  rapid: boolean;
+  to: Axes;
+}
 
 export interface RunMove {
   file: string;
   line: number;
   mode: string;
+  kind: MoveKind;
   from: Axes;
   to: Axes;
   feed: number;
   centre?: Axes;
+  /** an arc's: the two axes it turns in, G03 turning from the first toward the second */
+  plane?: [string, string];
+  clockwise?: boolean;
+  /** a cycle's path, leg by leg from `from` */
+  legs?: RunLeg[];
+  /** a drilling cycle's hole (its bottom) */
+  hole?: Axes;
   /** a G31's: whether the skip signal came on where it stopped (its `to`: the contact point) */
   skip?: boolean;
 }
@@ -42,8 +60,6 @@ export interface RunResult {
 
 export type Plane = 'XY' | 'ZX' | 'YZ';
 export const PLANES: readonly Plane[] = ['XY', 'ZX', 'YZ'];
-export type MoveKind = 'rapid' | 'feed' | 'arc' | 'cycle' | 'probe';
-
 /** How the run is drawn: the horizontal and vertical axes, and whether it is a lathe (X halved). */
 export interface View {
   plane: Plane;
@@ -117,9 +133,30 @@ export function parseRunResult(text: string): RunResult | string {
     if (typeof o.file !== 'string' || !isNumber(o.line) || typeof o.mode !== 'string' || !from || !to) {
       return `a move of the run is malformed: ${JSON.stringify(m).slice(0, 200)}`;
     }
-    const move: RunMove = { file: o.file, line: o.line, mode: o.mode, from, to, feed: isNumber(o.feed) ? o.feed : 0 };
+    if (typeof o.kind !== 'string' || !MOVE_KINDS.includes(o.kind)) {
+      return `a move of the run has no kind: ${JSON.stringify(m).slice(0, 200)}`;
+    }
+    const kind = o.kind as MoveKind;
+    const move: RunMove = { file: o.file, line: o.line, mode: o.mode, kind, from, to, feed: isNumber(o.feed) ? o.feed : 0 };
     const centre = axesOf(o.centre);
     if (centre) move.centre = centre;
+    if (Array.isArray(o.plane) && o.plane.length === 2) {
+      const [a, b] = o.plane as unknown[];
+      if (typeof a === 'string' && typeof b === 'string') move.plane = [a, b];
+    }
+    if (typeof o.clockwise === 'boolean') move.clockwise = o.clockwise;
+    if (Array.isArray(o.legs)) {
+      const legs: RunLeg[] = [];
+      for (const l of o.legs as unknown[]) {
+        const leg = (l ?? {}) as Record<string, unknown>;
+        const at = axesOf(leg.to);
+        if (typeof leg.rapid !== 'boolean' || !at) return `a leg of a cycle is malformed: ${JSON.stringify(l).slice(0, 200)}`;
+        legs.push({ rapid: leg.rapid, to: at });
+      }
+      move.legs = legs;
+    }
+    const hole = axesOf(o.hole);
+    if (hole) move.hole = hole;
     if (typeof o.skip === 'boolean') move.skip = o.skip;
     moves.push(move);
   }
@@ -141,14 +178,9 @@ export function parseRunResult(text: string): RunResult | string {
   return result;
 }
 
-/**
- * Whether the machine that ran is a lathe: the run says so (`lathe`, from its profile), else
- * the axes the run reports, which are the profile's (GSK980TDi: X Y Z C B; FANUC: X Y Z A).
- */
+/** Whether the machine that ran is a lathe, as the run says (`lathe`, from its profile). */
 export function isLatheRun(result: RunResult): boolean {
-  if (result.lathe !== undefined) return result.lathe;
-  const first = result.moves[0];
-  return first !== undefined && 'C' in first.from && 'B' in first.from && !('A' in first.from);
+  return result.lathe === true;
 }
 
 export function viewFor(lathe: boolean, plane: Plane = 'XY'): View {
@@ -157,28 +189,12 @@ export function viewFor(lathe: boolean, plane: Plane = 'XY'): View {
   return { plane, h, v, lathe: false };
 }
 
-export function kindOf(mode: string): MoveKind {
-  const n = Number(mode.replace(/^G/i, ''));
-  if (n === 0) return 'rapid';
-  if (n === 2 || n === 3) return 'arc';
-  if (n === 31) return 'probe';
-  if (n === 1 || n === 32 || n === 33 || n === 34) return 'feed';
-  return 'cycle';
-}
-
 type P3 = Axes;
 
 /** A point as drawn: X halved on a lathe (a diameter drawn as the radius). */
 function display(p: Axes, lathe: boolean): P3 {
   return lathe && 'X' in p ? { ...p, X: (p.X ?? 0) / 2 } : p;
 }
-
-/** The arc planes (G17, G18, G19), each with its third axis, ordered so that G03 turns from `a` toward `b`. */
-const ARC_PLANES: { a: string; b: string; third: string }[] = [
-  { a: 'X', b: 'Y', third: 'Z' },
-  { a: 'Z', b: 'X', third: 'Y' },
-  { a: 'Y', b: 'Z', third: 'X' },
-];
 
 interface Arc {
   a: string; // the arc plane's axes
@@ -193,36 +209,29 @@ interface Arc {
 const get = (p: Axes, k: string): number => p[k] ?? 0;
 
 /**
- * The arc a G02/G03 move makes, from its `centre` (every axis; the axes off the arc's plane keep
- * the start's values; on a lathe X is a diameter, like the end points). The run does not say
- * which plane was selected: it is the first plane, the usual one first (XY on a mill, ZX on a
- * lathe), where the centre keeps the start's third axis, lies off the start and is as far from
- * the end as from the start. None without a centre or when no plane fits: drawn as a chord.
+ * The arc a move makes, from its `centre` and the `plane` the run gives (on a lathe X is a
+ * diameter, like the end points; the axes off the plane keep the start's values). None without
+ * a centre or a plane, or when the start lies on the centre: drawn as a chord.
  */
 function arcOf(move: RunMove, lathe: boolean): Arc | undefined {
-  if (!move.centre) return undefined;
+  if (!move.centre || !move.plane) return undefined;
+  const [a, b] = move.plane;
   const c = display(move.centre, lathe);
   const s = display(move.from, lathe);
   const e = display(move.to, lathe);
-  const planes = lathe ? [ARC_PLANES[1], ARC_PLANES[0], ARC_PLANES[2]] : ARC_PLANES;
-  for (const plane of planes) {
-    if (!plane || !(plane.a in c) || !(plane.b in c)) continue;
-    const { a, b, third } = plane;
-    if (Math.abs(get(c, third) - get(s, third)) > 1e-6) continue;
-    const ca = get(c, a);
-    const cb = get(c, b);
-    const rs = Math.hypot(get(s, a) - ca, get(s, b) - cb);
-    const re = Math.hypot(get(e, a) - ca, get(e, b) - cb);
-    if (rs < 1e-6 || Math.abs(rs - re) > Math.max(0.005, rs * 0.005)) continue;
-    const t0 = Math.atan2(get(s, b) - cb, get(s, a) - ca);
-    const t1 = Math.atan2(get(e, b) - cb, get(e, a) - ca);
-    const ccw = Number(move.mode.replace(/^G/i, '')) === 3;
-    const twoPi = 2 * Math.PI;
-    let sweep = ccw ? (t1 - t0 + twoPi) % twoPi : (t0 - t1 + twoPi) % twoPi;
-    if (sweep < 1e-9) sweep = twoPi; // the end is the start: a full circle
-    return { a, b, ca, cb, r: (rs + re) / 2, start: t0, sweep: ccw ? sweep : -sweep };
-  }
-  return undefined;
+  const ca = get(c, a);
+  const cb = get(c, b);
+  const rs = Math.hypot(get(s, a) - ca, get(s, b) - cb);
+  const re = Math.hypot(get(e, a) - ca, get(e, b) - cb);
+  // a centre the end is not as far from as the start (beyond rounding) draws no arc: a chord
+  if (rs < 1e-9 || Math.abs(rs - re) > Math.max(0.005, rs * 0.005)) return undefined;
+  const t0 = Math.atan2(get(s, b) - cb, get(s, a) - ca);
+  const t1 = Math.atan2(get(e, b) - cb, get(e, a) - ca);
+  const ccw = move.clockwise !== true;
+  const twoPi = 2 * Math.PI;
+  let sweep = ccw ? (t1 - t0 + twoPi) % twoPi : (t0 - t1 + twoPi) % twoPi;
+  if (sweep < 1e-9) sweep = twoPi; // the end is the start: a full circle
+  return { a, b, ca, cb, r: (rs + re) / 2, start: t0, sweep: ccw ? sweep : -sweep };
 }
 
 /** Points along an arc (in display units, every axis: the others move linearly, as in a helix). */
@@ -248,8 +257,7 @@ function arcPoints(move: RunMove, arc: Arc, lathe: boolean, steps: number): P3[]
 function legsOf(move: RunMove, lathe: boolean): { points: P3[]; dashed: boolean }[] {
   const s = display(move.from, lathe);
   const e = display(move.to, lathe);
-  const kind = kindOf(move.mode);
-  if (kind === 'arc') {
+  if (move.kind === 'arc') {
     const arc = arcOf(move, lathe);
     if (arc) {
       const steps = Math.max(8, Math.ceil((Math.abs(arc.sweep) / (2 * Math.PI)) * 96));
@@ -257,29 +265,16 @@ function legsOf(move: RunMove, lathe: boolean): { points: P3[]; dashed: boolean 
     }
     return [{ points: [s, e], dashed: false }];
   }
-  if (kind !== 'cycle') return [{ points: [s, e], dashed: kind === 'rapid' }];
-  const code = Number(move.mode.replace(/^G/i, ''));
-  if (lathe && (code === 90 || code === 92 || code === 94)) {
-    // the single fixed cycles: G90/G92 go in along X first, G94 along Z first, and come back
-    const first = code === 94 ? 'Z' : 'X';
-    const a = { ...s, [first]: get(e, first) };
-    const b = { ...e, [first]: get(s, first) };
-    return [
-      { points: [s, a], dashed: true },
-      { points: [a, e], dashed: false },
-      { points: [e, b], dashed: code === 92 },
-      { points: [b, s], dashed: true },
-    ];
+  if (move.legs && move.legs.length > 0) {
+    let at = s;
+    return move.legs.map((leg) => {
+      const to = display(leg.to, lathe);
+      const drawn = { points: [at, to], dashed: leg.rapid };
+      at = to;
+      return drawn;
+    });
   }
-  if (!lathe) {
-    // a drilling cycle: position over the hole at the start level, then down to its bottom
-    const above = { ...e, Z: get(s, 'Z') };
-    return [
-      { points: [s, above], dashed: true },
-      { points: [above, e], dashed: false },
-    ];
-  }
-  return [{ points: [s, e], dashed: false }];
+  return [{ points: [s, e], dashed: move.kind === 'rapid' }];
 }
 
 /** A round step (1, 2 or 5 times a power of ten) that cuts `span` into about `count` parts. */
@@ -355,7 +350,7 @@ export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000):
     return `${r2(sx(x))} ${r2(sy(y))}`;
   };
   const drawn: DrawnMove[] = moves.map((move, index) => {
-    const kind = kindOf(move.mode);
+    const kind = move.kind;
     const arc = kind === 'arc' ? arcOf(move, view.lathe) : undefined;
     let out: Leg[];
     if (arc && arc.a === planeAxes(view)[0] && arc.b === planeAxes(view)[1]) {
@@ -367,8 +362,8 @@ export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000):
       }));
     }
     const d: DrawnMove = { index, kind, legs: out };
-    if (kind === 'cycle' && !view.lathe) {
-      const [x, y] = project(display(move.to, false));
+    if (move.hole) {
+      const [x, y] = project(display(move.hole, view.lathe));
       d.hole = [sx(x), sy(y)];
     }
     if (kind === 'probe' && move.skip === true) {

@@ -72,7 +72,7 @@ export function moveText(move: RunMove): string {
   let shown = names.filter((k) => (move.from[k] ?? 0) !== (move.to[k] ?? 0));
   if (shown.length === 0) shown = names.filter((k) => ['X', 'Y', 'Z'].includes(k));
   const at = (p: Axes): string => shown.map((k) => `${k}${formatNumber(p[k] ?? 0)}`).join(' ');
-  const feed = move.mode !== 'G00' && move.feed ? `  F${formatNumber(move.feed)}` : '';
+  const feed = move.kind !== 'rapid' && move.feed ? `  F${formatNumber(move.feed)}` : '';
   const centre = move.centre
     ? `  (${Object.entries(move.centre)
         .map(([k, v]) => `${k}${formatNumber(v)}`)

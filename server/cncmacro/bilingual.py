@@ -51,8 +51,6 @@ def pick(locale: str | None, en: str, zh: str) -> str:
 
 def in_language(text: str, chinese: bool) -> str:
     """``text`` in Chinese when ``chinese`` and it has a translation, else as it is (a plain ``str``)."""
-    if chinese:
-        zh = getattr(text, "zh", None)
-        if zh is not None:
-            return zh
+    if chinese and isinstance(text, Detail):
+        return text.zh
     return str(text)

@@ -7,6 +7,8 @@ from lsprotocol import types
 from pytest_lsp import LanguageClient
 
 from cncmacro.debugging.stepping import end_text, last_line_run
+from cncmacro.dialects import get_dialect
+from cncmacro.dialects.tables import FUNCTION, FUNCTION_KINDS, OPERATOR, STATEMENT
 from cncmacro.library.machine_file import MachineSettings
 from cncmacro.library.programs import ProgramLibrary
 from cncmacro.machine import Machine
@@ -181,6 +183,36 @@ async def _legend(client: LanguageClient) -> types.SemanticTokensLegend:
     provider = caps.semantic_tokens_provider
     assert isinstance(provider, types.SemanticTokensOptions | types.SemanticTokensRegistrationOptions)
     return provider.legend
+
+
+# a row's kind -> the token type and the completion item kind the editor shows its name with
+SHOWN_AS = {
+    FUNCTION: ("function", types.CompletionItemKind.Function),
+    OPERATOR: ("operator", types.CompletionItemKind.Operator),
+    STATEMENT: ("keyword", types.CompletionItemKind.Keyword),
+}
+
+
+async def test_a_function_tables_name_is_coloured_and_completed_as_its_row_kind(fanuc_en: LanguageClient) -> None:
+    """The kind the profile's function table gives a name decides both its semantic token and its
+    completion item: SQRT and POPEN functions, GT and AND operators, IF and THEN statement words."""
+    text = "IF[SQRT[#1] GT 2 AND #2 EQ 0] THEN POPEN\n#3=\n"
+    uri = open_file(fanuc_en, FANUC / "kinds.nc", text)
+    full = await fanuc_en.text_document_semantic_tokens_full_async(
+        types.SemanticTokensParams(types.TextDocumentIdentifier(uri))
+    )
+    completion = await fanuc_en.text_document_completion_async(
+        types.CompletionParams(types.TextDocumentIdentifier(uri), types.Position(1, 3))
+    )
+    close_file(fanuc_en, uri)
+    tokens = {t[0]: t[1] for t in _decode(list(full.data), await _legend(fanuc_en), text.split("\n"))}
+    assert isinstance(completion, types.CompletionList)
+    items = {i.label: i for i in completion.items}
+    rows = {f.name: f.kind for f in get_dialect("fanuc").functions()}
+    names = ("SQRT", "POPEN", "GT", "AND", "IF", "THEN")
+    assert {rows[n] for n in names} == set(FUNCTION_KINDS)
+    assert {n: (tokens[n], items[n].kind) for n in names} == {n: SHOWN_AS[rows[n]] for n in names}
+    assert items["SQRT"].insert_text == "SQRT[$1]" and items["POPEN"].insert_text is None  # POPEN has no brackets
 
 
 async def test_semantic_tokens_on_gsk_mark_the_c_relation(gsk_en: LanguageClient) -> None:

@@ -23,7 +23,7 @@ from ..machine.alarms import MacroAlarm
 from ..machine.block_rules import BEFORE_CALL, CALL_WITHOUT_P, G_AFTER_CALL, O_WITH_CALL, BlockProblem, validate_block
 from ..machine.calls import (
     SUBPROGRAM_CALLS,
-    Call,
+    BlockCall,
     argument_targets,
     bad_name_detail,
     call_words,
@@ -36,12 +36,13 @@ from ..machine.calls import (
 )
 from ..machine.hcodes import ARITHMETIC, BRANCHES
 from ..machine.jump_words import return_word
-from ..machine.numbers import round_half_away
 from ..machine.program_end import RETURN_CODE
 from ..machine.word_sets import WordSet
 from ..machine.words import refused_words
+from ..planner.numbers import round_half_away
 from ..syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
-from .line_facts import CallSite, LineContext, LineFacts, ReturnJump, alarm_message, block_finding, finding
+from .call_sites import CallSite
+from .line_facts import LineContext, LineFacts, ReturnJump, alarm_message, block_finding, finding
 from .statement_checks import literal_jump
 from .variable_checks import check_write, scan_value
 
@@ -98,7 +99,7 @@ def _add_alarm(facts: LineFacts, w: Word, code: str, alarm: MacroAlarm, ctx: Lin
 
 
 def _macro_call(
-    words: tuple[Word, ...], call: Call, problems: list[BlockProblem], ctx: LineContext, facts: LineFacts
+    words: tuple[Word, ...], call: BlockCall, problems: list[BlockProblem], ctx: LineContext, facts: LineFacts
 ) -> None:
     name = call.kind
     rule = {p.rule: p for p in problems}
@@ -132,7 +133,7 @@ def _macro_call(
         facts.findings.append(block_finding(g_argument, ctx.locale))
     else:
         _check_arguments(list(call.arguments), ctx, facts)
-    _macro_target(call.target, name, rule.get(CALL_WITHOUT_P), ctx, facts)
+    _macro_target(call, rule.get(CALL_WITHOUT_P), ctx, facts)
     if call.count is not None:
         _check_count(call.count, ctx, facts)
 
@@ -184,16 +185,15 @@ def _first_refused(args: list[Word], ctx: LineContext) -> Word:
     return args[-1]
 
 
-def _macro_target(
-    p_word: Word | None, name: str, missing: BlockProblem | None, ctx: LineContext, facts: LineFacts
-) -> None:
+def _macro_target(call: BlockCall, missing: BlockProblem | None, ctx: LineContext, facts: LineFacts) -> None:
     dialect = ctx.dialect
+    p_word = call.target
     if p_word is None:
         assert missing is not None  # block_rules.py's CALL_WITHOUT_P
         facts.findings.append(block_finding(missing, ctx.locale))
         return
     if p_word.name is not None:
-        _named_target(p_word, name, ctx, facts)
+        _named_target(p_word, call, ctx, facts)
         return
     value = p_word.value
     if isinstance(value, Bracket) and dialect.bracket_names and isinstance(value.inner, Var):
@@ -208,10 +208,10 @@ def _macro_target(
              f"{alarm.message} on {dialect.title} (alarm {alarm.number})",
              f"{in_language(alarm.message, True)}（{dialect.title}，报警 {alarm.number}）", ctx)  # fmt: skip
         return
-    facts.calls.append(CallSite(name, program, None, p_word.start, p_word.end))
+    facts.calls.append(CallSite(call.kind, program, None, p_word, call.code, call.arguments))
 
 
-def _named_target(p_word: Word, how: str, ctx: LineContext, facts: LineFacts) -> bool:
+def _named_target(p_word: Word, call: BlockCall, ctx: LineContext, facts: LineFacts) -> bool:
     """``P[CUT]``: a dialect without bracketed names, or a name the control refuses, is an
     error (False); otherwise the name is for ``program-not-found`` to look up (True)."""
     dialect = ctx.dialect
@@ -227,7 +227,7 @@ def _named_target(p_word: Word, how: str, ctx: LineContext, facts: LineFacts) ->
              f"{in_language(text, False)} (alarm {P_VALUE_RANGE})",
              f"{in_language(text, True)}（报警 {P_VALUE_RANGE}）", ctx)  # fmt: skip
         return False
-    facts.calls.append(CallSite(how, None, name, p_word.start, p_word.end))
+    facts.calls.append(CallSite(call.kind, None, name, p_word, call.code, call.arguments))
     return True
 
 
@@ -301,7 +301,7 @@ def _h_code(g65: Word, after: tuple[Word, ...], ctx: LineContext, facts: LineFac
 
 
 def _nc_block(
-    words: tuple[Word, ...], call: Call | None, problems: list[BlockProblem], ctx: LineContext, facts: LineFacts
+    words: tuple[Word, ...], call: BlockCall | None, problems: list[BlockProblem], ctx: LineContext, facts: LineFacts
 ) -> None:
     simple = True
     for w in words:
@@ -322,7 +322,7 @@ def _nc_block(
     if call is not None and call.local:
         _local_call(words, call, ctx, facts)
     elif call is not None:
-        _subprogram_call(words, call.kind, ctx, facts)
+        _subprogram_call(words, call, ctx, facts)
     elif RETURN_CODE in ms:
         p = return_word(words)  # the caller's label (machine/jump_words.py)
         value = _constant(p, ctx)
@@ -343,17 +343,17 @@ def _last(words: tuple[Word, ...], letter: str) -> Word | None:
     return found
 
 
-def _code_call(words: tuple[Word, ...], call: Call, ctx: LineContext, facts: LineFacts) -> None:
+def _code_call(words: tuple[Word, ...], call: BlockCall, ctx: LineContext, facts: LineFacts) -> None:
     """A G, M or T code that the machine settings make a call (``Machine.call_code_for``)."""
     w = call.code
-    facts.calls.append(CallSite(call.kind, call.number, None, w.start, w.end))
+    facts.calls.append(CallSite(call.kind, call.number, None, w, w, call.arguments))
     if call.macro:
         _check_arguments(list(call.arguments), ctx, facts)
         if call.count is not None:
             _check_count(call.count, ctx, facts)
 
 
-def _local_call(words: tuple[Word, ...], call: Call, ctx: LineContext, facts: LineFacts) -> None:
+def _local_call(words: tuple[Word, ...], call: BlockCall, ctx: LineContext, facts: LineFacts) -> None:
     """Haas ``M97 P n L k`` as ``Machine.local_subprogram_call`` runs it: P is a label of the
     program itself (a ``CallSite`` on the current program, like ``M98 Q``), L a count."""
     how = call.kind
@@ -371,12 +371,15 @@ def _local_call(words: tuple[Word, ...], call: Call, ctx: LineContext, facts: Li
         literal_jump(p_word.value, f"{how} P", ctx, facts)
     if len(facts.jumps) > before:
         jump = facts.jumps.pop()
-        facts.calls.append(CallSite(how, None, None, p_word.start, p_word.end, jump.label, (jump.start, jump.end), "P"))
+        site = CallSite(how, None, None, p_word, call.code, label=jump.label, label_span=(jump.start, jump.end),
+                        label_letter="P")  # fmt: skip
+        facts.calls.append(site)
 
 
-def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts: LineFacts) -> None:
+def _subprogram_call(words: tuple[Word, ...], call: BlockCall, ctx: LineContext, facts: LineFacts) -> None:
     """``M98 P<count><program> L Q`` as ``_subprogram_target`` in ``machine/nc_blocks.py``."""
     dialect = ctx.dialect
+    how = call.kind
     p_word = _last(words, "P")
     l_word = _last(words, "L")
     q_word = _last(words, "Q")
@@ -385,9 +388,9 @@ def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts:
     q_span = (q_word.start, q_word.end) if q_word is not None else (0, 0)
     named = next((w for w in words if w.letter == "P" and w.name is not None), None)
     if named is not None:
-        if not _named_target(named, how, ctx, facts):
+        if not _named_target(named, call, ctx, facts):
             return
-        facts.calls[-1] = CallSite(how, None, named.name, named.start, named.end, q, q_span)
+        facts.calls[-1] = CallSite(how, None, named.name, named, call.code, label=q, label_span=q_span)
         if l_word is not None:
             _check_count(l_word, ctx, facts)
         return
@@ -399,7 +402,7 @@ def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts:
                  f"{how} 需要 P 指定子程序，或用 Q 调用当前程序（报警 076）", ctx)  # fmt: skip
             return
         if q is not None:
-            facts.calls.append(CallSite(how, None, None, m.start, m.end, q, q_span))
+            facts.calls.append(CallSite(how, None, None, m, m, label=q, label_span=q_span))
         if l_word is not None:
             _check_count(l_word, ctx, facts)
         return
@@ -414,7 +417,7 @@ def _subprogram_call(words: tuple[Word, ...], how: str, ctx: LineContext, facts:
     except MacroAlarm as alarm:
         _add_alarm(facts, p_word, "program-number", alarm, ctx)
         return
-    facts.calls.append(CallSite(how, program, None, p_word.start, p_word.end, q, q_span))
+    facts.calls.append(CallSite(how, program, None, p_word, call.code, label=q, label_span=q_span))
     if l_word is None:
         return
     l_value = _constant(l_word, ctx)

@@ -86,7 +86,7 @@ def outgoing(
         found = _called(library, site, f)
         if found is None or found.file.on_control:
             continue
-        out.setdefault(program_item(found.file, found.unit), []).append((i, site.p.start, site.p.end))
+        out.setdefault(program_item(found.file, found.unit), []).append((i, site.target.start, site.target.end))
     for i, start, end, label in _local_calls(f, unit, dialect, calls):
         if i in lines and (target := label_item(f, unit, label)) is not None:
             out.setdefault(target, []).append((i, start, end))
@@ -125,7 +125,7 @@ def incoming(
             if found is None or found.file.path != item.path or found.unit.start != item.start:
                 continue
             caller = program_item(f, f.program.unit_at(i))
-            out.setdefault(caller, []).append((i, site.p.start, site.p.end))
+            out.setdefault(caller, []).append((i, site.target.start, site.target.end))
     return list(out.items())
 
 

@@ -12,8 +12,8 @@ from ..bilingual import pick
 from ..dialects.dialect import Dialect
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..syntax.program import Program
+from .call_sites import CallSite
 from .diagnostics import Diagnostic, diagnostic
-from .line_facts import CallSite
 
 UNKNOWN = "unknown"
 
@@ -67,8 +67,8 @@ def not_found(site: CallSite, file: str, line: int, locale: str) -> Diagnostic:
         what = f"[{site.name}]"
     message = pick(
         locale,
-        f"{site.how} calls {what}, which is neither in this file nor found near it (alarm 76)",
-        f"{site.how} 调用的程序 {what} 不在本文件中，附近也找不到（报警 076）",
+        f"{site.kind} calls {what}, which is neither in this file nor found near it (alarm 76)",
+        f"{site.kind} 调用的程序 {what} 不在本文件中，附近也找不到（报警 076）",
     )
     end = max(site.end, site.start + 1)
     return diagnostic(file, line, site.start, line, end, "program-not-found", message)

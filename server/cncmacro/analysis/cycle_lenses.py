@@ -95,7 +95,7 @@ def file_timings(runs: Iterable[tuple[EntryRun, bool]], shown: Container[str]) -
         m = run.machine
         if m.status != RunStatus.COMPLETED:
             continue
-        end = Totals(m.clock, m.cut_length, m.rapid_length)
+        end = Totals(m.planner.clock, m.planner.cut_length, m.planner.rapid_length)
         entry = run.entry
         if own and entry.file.path in shown:
             timing(entry.file.path).programs.setdefault(entry.unit.start, end)

@@ -1,6 +1,6 @@
 """Cycle-time totals as people read them: a run's time and path, split by tool.
 
-The machine decides the time and length of everything (machine/cycle_time.py) and keeps the
+The machine decides the time and length of everything (planner/cycle_time.py) and keeps the
 clock, the cut and rapid path so far and, at each tool change, those three as they stood
 (``ToolChange``). Here they become totals: the whole run's, and each tool's, from its change
 to the next change or the end. ``totals_text`` writes them as the editor's code lens and

@@ -18,9 +18,10 @@ from bisect import bisect_right
 from ..bilingual import pick
 from ..machine.jumps import LoopSpans, goto_line
 from ..syntax.program import LoopPair, Program, ProgramUnit
+from .call_sites import CallSite
 from .call_targets import UNKNOWN, ProgramFinder, not_found
 from .diagnostics import Diagnostic, Related, diagnostic
-from .line_facts import CallSite, LineFacts
+from .line_facts import LineFacts
 
 
 def _unit_name(unit: ProgramUnit, locale: str) -> str:
@@ -116,16 +117,16 @@ class LabelChecker:
         here = self.finder.is_this_file(found)
         if here and site.number is not None:
             self._callers.setdefault(found.unit.start, []).append((line, site))
-        if site.q is None:
+        if site.label is None:
             return
-        q = site.q
+        q = site.label
         lines = found.file.program.label_lines(q, found.unit)
         loc = self.locale
         if not lines:
             where = _unit_name(found.unit, loc) if found.unit.number is not None else found.label
-            self._missing(line, site.q_span[0], site.q_span[1], q, found.unit,
-                          pick(loc, f"{site.how} {site.q_letter}{q}: there is no N{q} in {where} (alarm 128)",
-                               f"{site.how} {site.q_letter}{q}：{where} 中没有 N{q}（报警 128）"))  # fmt: skip
+            self._missing(line, site.label_span[0], site.label_span[1], q, found.unit,
+                          pick(loc, f"{site.kind} {site.label_letter}{q}: there is no N{q} in {where} (alarm 128)",
+                               f"{site.kind} {site.label_letter}{q}：{where} 中没有 N{q}（报警 128）"))  # fmt: skip
         elif len(lines) > 1 and here:
             self._duplicates[(found.unit.start, q)] = found.unit
 
@@ -146,7 +147,7 @@ class LabelChecker:
                         f"M99 P{label}：调用者 {name} 中没有可返回的 N{label}（报警 128）",
                     )
                     call = Related(self.file, call_line, site.start, site.end,
-                                   pick(loc, f"the {site.how} call", f"{site.how} 调用"))  # fmt: skip
+                                   pick(loc, f"the {site.kind} call", f"{site.kind} 调用"))  # fmt: skip
                     self._missing(line, start, end, label, caller, message, (call,))
                     return
                 if len(lines) > 1:

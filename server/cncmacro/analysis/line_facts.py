@@ -3,8 +3,8 @@
 ``LineFacts`` is the result of looking at one block with nothing but the dialect and the machine
 settings: the problems it has by itself (``Finding``, columns only, no line or file, so that a
 result can be cached per block and reused wherever the block appears) and the facts that need
-the rest of the file to judge: literal jump targets (``Jump``), calls of other programs
-(``CallSite``) and ``M99 Pn`` returns (``ReturnJump``). ``LineContext`` holds what every line's
+the rest of the file to judge: literal jump targets (``Jump``), calls with a literal target
+(``call_sites.CallSite``) and ``M99 Pn`` returns (``ReturnJump``). ``LineContext`` holds what every line's
 check needs, made once per dialect, settings and locale. ``block_finding`` turns a
 ``BlockProblem`` of ``machine/block_rules.py`` into the finding of its code (``RULE_CODES``).
 """
@@ -22,6 +22,7 @@ from ..machine import block_rules as rules
 from ..machine.alarms import MacroAlarm
 from ..machine.block_rules import BlockProblem
 from ..machine.expressions import ExpressionCompiler, VariableKinds
+from .call_sites import CallSite
 from .codes import default_severity
 
 RULE_CODES = {
@@ -80,23 +81,6 @@ class Jump:
     start: int
     end: int
     how: str  # what is written before the label: "GOTO " or "G65 H81 P"
-
-
-@dataclass(frozen=True, slots=True)
-class CallSite:
-    """A call of another program with a literal target: ``number`` (O number) or ``name``
-    (gsk980tdi ``P[CUT]``), neither for ``M98 Q`` or Haas ``M97 P`` on the current program.
-    ``start``/``end`` is the span of what names the program; ``q`` is the literal label the call
-    starts at (``M98 Q``, ``M97 P``), its span, and the letter that names it."""
-
-    how: str
-    number: int | None
-    name: str | None
-    start: int
-    end: int
-    q: int | None = None
-    q_span: tuple[int, int] = (0, 0)
-    q_letter: str = "Q"
 
 
 @dataclass(frozen=True, slots=True)

@@ -52,7 +52,7 @@ from ..dialects import Dialect
 from ..dialects.alarms import alarm_text
 from ..library.machine_file import MachineSettings
 from ..library.programs import FoundProgram, ProgramLibrary
-from ..machine import CallSite, Machine, Snapshot
+from ..machine import CallLevel, Machine, Snapshot
 from ..machine.calls import letters_for_local
 from ..machine.observer import RunObserver
 from ..machine.status import FINISHED, RunStatus
@@ -80,7 +80,7 @@ class VacantRead:
     number: int
     file: str
     line: int
-    chain: tuple[CallSite, ...]
+    chain: tuple[CallLevel, ...]
 
 
 @dataclass(slots=True)
@@ -171,7 +171,7 @@ class EntryRun(RunObserver):
         self.last_run = {}  # the new machine's lines have not run (``RunObserver``)
         self.track_serial = self.track_floor = 0
         m = Machine(self.dialect, self.settings, self.library, m99_ends_main=True, observer=self)
-        m.record_moves = False
+        m.planner.record_moves = False
         m.start(self.entry)
         self.machine = m
         self.state = RunState()
@@ -409,7 +409,7 @@ class EntryRun(RunObserver):
         if line not in lines:
             lines[line] = step
             st.order.append((step, file, line))
-            st.clocks.append(self.machine.clock)
+            st.clocks.append(self.machine.planner.clock)
             reach = st.reach.get(file)
             if reach is None:
                 st.reach[file] = ([line], [step])
@@ -419,9 +419,19 @@ class EntryRun(RunObserver):
 
     def tool_changed(self, file: str, line: int) -> None:
         m = self.machine
-        self.state.tools.append((self.stamp, file, line, m.codes.get("T"), m.clock, m.cut_length, m.rapid_length))
+        self.state.tools.append(
+            (
+                self.stamp,
+                file,
+                line,
+                m.planner.codes.get("T"),
+                m.planner.clock,
+                m.planner.cut_length,
+                m.planner.rapid_length,
+            )
+        )
 
-    def vacant_argument(self, number: int, file: str, line: int, chain: tuple[CallSite, ...]) -> None:
+    def vacant_argument(self, number: int, file: str, line: int, chain: tuple[CallLevel, ...]) -> None:
         key = (file, line, number)
         if key not in self.state.vacant:
             self.state.vacant[key] = VacantRead(self.stamp, number, file, line, chain)
@@ -616,7 +626,7 @@ def _diagnostic(
     code: str,
     en: str,
     zh: str,
-    chain: tuple[CallSite, ...],
+    chain: tuple[CallLevel, ...],
     blocks: int | None,
     in_loop: bool,
     line_text: Callable[[str, int], str],

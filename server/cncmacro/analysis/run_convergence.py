@@ -166,13 +166,14 @@ def _plan(run: EntryRun, e: Earlier, bj: int) -> tuple[list[tuple[str, int]], li
 
 def _shift(snap: Snapshot, delta: int, clock: float, outputs: int, notes: int, lengths: tuple[float, float]) -> None:
     snap.blocks += delta
+    motion = snap.motion
     if clock:
-        snap.clock += clock
+        motion.clock += clock
         snap.timer_marks = {n: v + clock for n, v in snap.timer_marks.items()}
     if lengths != (0.0, 0.0):
-        snap.lengths = (snap.lengths[0] + lengths[0], snap.lengths[1] + lengths[1])
-    moves, output, count = snap.counts
-    snap.counts = (moves, output + outputs, count + notes)
+        motion.lengths = (motion.lengths[0] + lengths[0], motion.lengths[1] + lengths[1])
+    output, count = snap.counts
+    snap.counts = (output + outputs, count + notes)
 
 
 def _adopt(run: EntryRun, e: Earlier, j: int, plan: tuple[list[tuple[str, int]], list[tuple[str, int]]]) -> None:
@@ -181,9 +182,10 @@ def _adopt(run: EntryRun, e: Earlier, j: int, plan: tuple[list[tuple[str, int]],
     bj = old_j.blocks
     conv = m.blocks
     delta = conv - bj
-    clock = m.clock - old_j.clock
-    lengths = (m.cut_length - old_j.lengths[0], m.rapid_length - old_j.lengths[1])
-    _, out_j, notes_j = old_j.counts
+    p, old_p = m.planner, old_j.motion
+    clock = p.clock - old_p.clock
+    lengths = (p.cut_length - old_p.lengths[0], p.rapid_length - old_p.lengths[1])
+    out_j, notes_j = old_j.counts
     outputs = len(m.output) - out_j
     notes = len(m.notes) - notes_j
     _merge_times(run, e, bj, delta, (clock, *lengths), plan)
@@ -216,7 +218,7 @@ def _merge_times(run: EntryRun, e: Earlier, bj: int, delta: int, shift: tuple[fl
     st = run.state
     old = e.state
     dt, dc, dr = shift
-    st.clocks.extend([run.machine.clock] * len(plan[0]))
+    st.clocks.extend([run.machine.planner.clock] * len(plan[0]))
     tail = old.clocks[bisect_left(old.order, (bj, "", -1)) :]
     st.clocks.extend([c + dt for c in tail] if dt else tail)
     tools = old.tools[bisect_left(old.tools, bj, key=itemgetter(0)) :]

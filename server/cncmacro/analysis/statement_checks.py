@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from ..bilingual import pick
 from ..machine.block_rules import ABBREVIATION, DIALECT_FORMS, NC_AND_STATEMENT, validate_block
-from ..machine.numbers import round_half_away
+from ..planner.numbers import round_half_away
 from ..syntax.nodes import Assign, Block, Expr, Goto, If, Output, Statement, While
 from .line_facts import Jump, LineContext, LineFacts, block_finding, finding
 from .variable_checks import check_write, scan_value

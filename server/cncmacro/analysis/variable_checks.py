@@ -20,9 +20,9 @@ from __future__ import annotations
 from ..bilingual import in_language, pick
 from ..machine.alarms import MacroAlarm
 from ..machine.expressions import MAX_BRACKETS, bracket_depth, call_problem
-from ..machine.numbers import round_half_away
 from ..machine.variables import named_number
-from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, NamedVar, Number, Relation, Unary, Var
+from ..planner.numbers import round_half_away
+from ..syntax.nodes import Binary, Bracket, Expr, FunctionCall, IndirectVar, NamedVar, Number, Relation, Unary, Var
 from .line_facts import Finding, LineContext, alarm_message, finding
 
 
@@ -50,7 +50,7 @@ def scan_value(node: Expr, ctx: LineContext, out: list[Finding], depth_checked: 
             push(n.right)
         elif n.__class__ is Bracket:
             push(n.inner)
-        elif n.__class__ is Call:
+        elif n.__class__ is FunctionCall:
             _check_call(n, ctx, out)
             stack.extend(n.args)
         elif n.__class__ is Unary:
@@ -215,7 +215,7 @@ def _missing(number: int, start: int, end: int, ctx: LineContext) -> Finding:
     return finding(start, end, "variable-number", message)
 
 
-def _check_call(node: Call, ctx: LineContext, out: list[Finding]) -> None:
+def _check_call(node: FunctionCall, ctx: LineContext, out: list[Finding]) -> None:
     problem = call_problem(node, ctx.dialect)
     if problem is None:
         return

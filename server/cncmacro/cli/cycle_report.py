@@ -1,6 +1,6 @@
 """``cncmacro run``'s cycle time: the totals of the program run and of each tool.
 
-The machine times every move, dwell, tool change and M code (machine/cycle_time.py); this
+The machine times every move, dwell, tool change and M code (planner/cycle_time.py); this
 module reads its clock, path lengths and tool changes after the run and writes them in the
 text output (``cycle time O1000: ≈ 3 min 12 s · 1,842 mm cut · 6,300 mm rapid``, then one line
 per tool change) and the JSON (``cycle``: ``seconds``, ``cut``, ``rapid`` and ``tools``).
@@ -20,8 +20,8 @@ from .terminal import TextOut
 
 def run_totals(machine: Machine) -> tuple[Totals, list[ToolPart]]:
     """The run's totals and each tool's part."""
-    end = Totals(machine.clock, machine.cut_length, machine.rapid_length)
-    changes = [(c.file, c.line, c.tool, Totals(c.clock, c.cut, c.rapid)) for c in machine.tool_changes]
+    end = Totals(machine.planner.clock, machine.planner.cut_length, machine.planner.rapid_length)
+    changes = [(c.file, c.line, c.tool, Totals(c.clock, c.cut, c.rapid)) for c in machine.planner.tool_changes]
     return end, tool_parts(changes, end)
 
 

@@ -28,12 +28,12 @@ from ..bilingual import in_language, is_chinese, pick
 from ..library.machine_file import parse_preset
 from ..machine import Machine, RunResult
 from ..machine.commanded_axes import CommandedAxes
-from ..machine.frames import Move
-from ..machine.move_json import move_json
-from ..machine.numbers import format_plain
 from ..machine.persistence_lock import LOCK_WAIT
 from ..machine.setup import prepare_run
 from ..machine.status import RunStatus
+from ..planner.move_json import move_json
+from ..planner.moves import Move
+from ..planner.numbers import format_plain
 from .cycle_report import cycle_json, write_cycle_text
 from .profiles import add_dialect_option
 from .terminal import Printable, TextOut, json_text

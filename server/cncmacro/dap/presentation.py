@@ -21,7 +21,7 @@ from ..bilingual import in_language, is_chinese, pick
 from ..dialects.tables import SystemVariable
 from ..machine import Machine, MacroAlarm
 from ..machine.frames import Frame
-from ..machine.numbers import format_plain
+from ..planner.numbers import format_plain
 
 LOCALS, COMMON, PERSISTENT, POSITION, MODAL, OFFSETS = range(6)
 SCOPES_PER_FRAME = 8

@@ -29,8 +29,8 @@ from ..debugging.toolpath_position import next_moves, run_to_move
 from ..library.files import SkippedFileError
 from ..machine import Machine
 from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
-from ..machine.move_json import move_json
 from ..machine.status import RunStatus
+from ..planner.move_json import move_json
 from . import presentation as show
 from .launch import LaunchConfig, Launched, LaunchError, launch
 from .protocol import Event, MessageWriter, ProtocolError, Request, Response, read_message
@@ -330,9 +330,9 @@ class Session:
         axes = m.dialect.axes
         frame = m.frames[-1]
         line = last_line_run(m) if m.status == RunStatus.COMPLETED else frame.pc
-        limit = _whole(args, "limit", 0) or len(m.moves)
+        limit = _whole(args, "limit", 0) or len(m.planner.moves)
         return {
-            "moves": [move_json(mv, axes) for mv in m.moves[:limit]], "made": len(m.moves),
+            "moves": [move_json(mv, axes) for mv in m.planner.moves[:limit]], "made": len(m.planner.moves),
             "current": [move_json(mv, axes) for mv in next_moves(m)],
             "file": frame.file, "line": line + 1, "blocks": m.blocks, "lathe": m.dialect.lathe,
         }  # fmt: skip

@@ -25,9 +25,9 @@ from ..bilingual import in_language, is_chinese, pick
 from ..machine import Machine
 from ..machine.block_roles import skipped
 from ..machine.commanded_axes import CommandedAxes
-from ..machine.frames import Move
 from ..machine.program_end import end_code
 from ..machine.status import FINISHED, RunStatus
+from ..planner.moves import Move
 from .breakpoints import Breakpoints, Hit
 from .history import History
 
@@ -73,7 +73,7 @@ class Stepper:
         self.locale: str | None = None  # the client's (set by the session): alarm details and notes in it
         self.pause_requested = False
         self.notes_sent = len(machine.notes)
-        self.moves_sent = len(machine.moves)
+        self.moves_sent = len(machine.planner.moves)
         self.commanded = CommandedAxes(machine)  # the axes the echo shows
         self.fresh = True  # nothing has run yet: a breakpoint on the first block counts
         self.stop_at_end = False  # stop where the program ends (set by the session)
@@ -93,7 +93,7 @@ class Stepper:
     def resync(self) -> None:
         """After the history moved the machine: output already shown is not shown again."""
         self.notes_sent = len(self.machine.notes)
-        self.moves_sent = len(self.machine.moves)
+        self.moves_sent = len(self.machine.planner.moves)
 
     # ---------------------------------------------------------------- running
     def run(self, mode: str, until: Callable[[Machine], bool] | None = None) -> Stop:
@@ -152,7 +152,7 @@ class Stepper:
             before = len(m.frames)
             m.step()
             self.history.record(m)
-            if len(m.notes) != self.notes_sent or len(m.moves) != self.moves_sent:
+            if len(m.notes) != self.notes_sent or len(m.planner.moves) != self.moves_sent:
                 self._flush()
             if m.finished:
                 return self._ended()
@@ -250,9 +250,9 @@ class Stepper:
     def _flush(self) -> None:
         m = self.machine
         if self.echo_motion:
-            for mv in m.moves[self.moves_sent :]:
+            for mv in m.planner.moves[self.moves_sent :]:
                 self.output(move_line(mv, m.dialect.axes, self.commanded.shown(mv)), "console")
-        self.moves_sent = len(m.moves)
+        self.moves_sent = len(m.planner.moves)
         for note in m.notes[self.notes_sent :]:
             where = f"{Path(note.file).name}:{note.line + 1}"
             if note.kind == "output":
@@ -265,7 +265,7 @@ class Stepper:
                 self.output(pick(self.locale, f"note at {where}: {text}\n", f"提示（{where}）：{text}\n"), "console")
         self.notes_sent = len(m.notes)
         if self.never_stop:  # Run Without Debugging never goes back: what was shown need not stay
-            del m.notes[:], m.output[:], m.moves[:]
+            del m.notes[:], m.output[:], m.planner.moves[:]
             self.notes_sent = self.moves_sent = 0
 
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from ..bilingual import pick
 from ..machine import Machine
-from ..machine.frames import Move
+from ..planner.moves import Move
 from .stepping import CONTINUE, Stepper, Stop
 
 
@@ -27,10 +27,10 @@ def next_moves(m: Machine) -> list[Move]:
     if m.finished:
         return []
     snap = m.snapshot()
-    made = len(m.moves)
+    made = len(m.planner.moves)
     try:
         m.step()
-        return list(m.moves[made:])
+        return list(m.planner.moves[made:])
     finally:
         m.restore(snap)
 
@@ -38,9 +38,9 @@ def next_moves(m: Machine) -> list[Move]:
 def run_to_move(stepper: Stepper, index: int) -> Stop:
     """Put the run at the block that makes move ``index``, forward or back (see above)."""
     m = stepper.machine
-    if index < len(m.moves):
+    if index < len(m.planner.moves):
         return _back_to_move(stepper, index)
-    stop = stepper.run(CONTINUE, until=lambda machine: len(machine.moves) > index)
+    stop = stepper.run(CONTINUE, until=lambda machine: len(machine.planner.moves) > index)
     if stop.reason != "goto":
         return stop  # a breakpoint, an alarm, a pause or the end came first
     if stepper._back(m.blocks - 1) is not None:
@@ -51,11 +51,11 @@ def run_to_move(stepper: Stepper, index: int) -> Stop:
 def _back_to_move(stepper: Stepper, index: int) -> Stop:
     m = stepper.machine
     target = stepper.history.earliest  # when the history does not reach back that far
-    for block, made in stepper.history.past(m, lambda machine, *_: len(machine.moves)):
+    for block, made in stepper.history.past(m, lambda machine, *_: len(machine.planner.moves)):
         if made <= index:
             target = block
             break
-    if stepper._back(target) is not None or len(m.moves) > index:
+    if stepper._back(target) is not None or len(m.planner.moves) > index:
         return Stop("entry", pick(stepper.locale, "the start of the kept history", "保留的历史的起点"))
     return Stop("goto", _arrived(stepper, index))
 

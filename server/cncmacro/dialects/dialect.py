@@ -18,6 +18,7 @@ from ..bilingual import Detail, detail
 from .drill_cycles import DrillCycle
 from .tables import CodeDoc, CommonRange, FunctionDoc, ProgramDoc, SystemVariable, SystemVariableName
 from .timing import Timing
+from .turning_cycles import SingleCycle
 
 # G65 argument specification I (docs/semantics.md §5): letter -> local variable number.
 ARGUMENTS_I = {
@@ -140,9 +141,13 @@ class Dialect:
     # cycle block (K on FANUC, L on Haas)
     drill_cycles: dict[float, DrillCycle] = field(default_factory=dict)
     cycle_repeat_letter: str = "K"
+    # §9 a lathe's single fixed cycles (G90, G92, G94): which axis each goes in along first and
+    # whether it comes out at rapid (turning_cycles.py); a turning cycle not listed is drawn as
+    # one cut from where it starts to its end point
+    single_cycles: dict[float, SingleCycle] = field(default_factory=dict)
 
     # what the machine takes time for: rapid rates, tool change, M codes, dwell units (timing.py;
-    # the cycle time, machine/cycle_time.py)
+    # the cycle time, planner/cycle_time.py)
     timing: Timing = field(default_factory=Timing)
 
     def configured(self, **changes: Any) -> Dialect:

@@ -3,8 +3,8 @@ control's data for the cycle time (docs/semantics.md §9 "Canned cycles").
 
 Every drilling cycle positions the hole at rapid at the level it is at, rapids down to the R
 point, cuts to Z and returns (G98 to the initial level, G99 to R); a ``DrillCycle`` says how it
-cuts, what it does at the bottom and how it comes out. ``machine/drill_cycles.py`` turns one
-into the moves of a hole and ``machine/cycle_time.py`` times them.
+cuts, what it does at the bottom and how it comes out. ``planner/drill_cycles.py`` turns one
+into the moves of a hole and ``planner/cycle_time.py`` times them.
 
 FANUC's table (Series 0i-MF / 30i-B operator's manuals, "Canned cycle for drilling", the table of
 drilling, operation at the bottom and retraction of each code, and each cycle's page):

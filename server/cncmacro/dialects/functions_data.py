@@ -9,51 +9,59 @@ documents the GSK980TDi macro arithmetic and branch commands ``G65 Hm P#i Q#j R#
 the alarm number for H99), Q and R are variables or constants written without ``#``.
 ``EXTRA_FUNCTIONS`` documents the functions and forms a dialect adds to the common set (the
 FANUC 30i's POW, ADP, PRM and ATAN[a,b]); a dialect names the ones it has in
-``Dialect.extra_functions`` (docs/profiles.md).
+``Dialect.extra_functions`` (docs/profiles.md). Each row says what kind of word it is
+(``tables.FUNCTION_KINDS``: a function, an operator or a statement word), by which the editor
+colours and completes it.
 """
 
 from __future__ import annotations
 
-from .tables import FunctionDoc
+from .tables import FUNCTION, OPERATOR, STATEMENT, FunctionDoc
 
 FUNCTIONS: tuple[FunctionDoc, ...] = (
     # functions
     FunctionDoc(
         "SIN",
+        FUNCTION,
         "SIN[a]",
         "Sine of a; a in degrees (90°30' is written 90.5)",
         "正弦，a以度为单位（90°30'写作90.5）",
     ),
-    FunctionDoc("COS", "COS[a]", "Cosine of a; a in degrees", "余弦，a以度为单位"),
-    FunctionDoc("TAN", "TAN[a]", "Tangent of a; a in degrees", "正切，a以度为单位"),
+    FunctionDoc("COS", FUNCTION, "COS[a]", "Cosine of a; a in degrees", "余弦，a以度为单位"),
+    FunctionDoc("TAN", FUNCTION, "TAN[a]", "Tangent of a; a in degrees", "正切，a以度为单位"),
     FunctionDoc(
         "ASIN",
+        FUNCTION,
         "ASIN[a]",
         "Arc sine of a, in degrees; a outside -1 to 1 is alarm 119",
         "反正弦，结果以度为单位；a超出-1～1时为119号报警",
     ),
     FunctionDoc(
         "ACOS",
+        FUNCTION,
         "ACOS[a]",
         "Arc cosine of a, in degrees; a outside -1 to 1 is alarm 119",
         "反余弦，结果以度为单位；a超出-1～1时为119号报警",
     ),
     FunctionDoc(
         "ATAN",
+        FUNCTION,
         "ATAN[a]/[b]",
         "Arc tangent of a/b taking the signs of both into account: the angle of the point (b, a), 0 to 360 degrees",
         "反正切a/b，按a、b的符号确定象限：点(b, a)的角度，结果为0～360度",
     ),
     FunctionDoc(
         "ATAN",
+        FUNCTION,
         "ATAN[a]",
         "Arc tangent of a, -90 to 90 degrees",
         "反正切a，结果为-90～90度",
     ),
-    FunctionDoc("SQRT", "SQRT[a]", "Square root of a; a negative is alarm 119", "平方根；a为负时为119号报警"),
-    FunctionDoc("ABS", "ABS[a]", "Absolute value of a", "绝对值"),
+    FunctionDoc("SQRT", FUNCTION, "SQRT[a]", "Square root of a; a negative is alarm 119", "平方根；a为负时为119号报警"),
+    FunctionDoc("ABS", FUNCTION, "ABS[a]", "Absolute value of a", "绝对值"),
     FunctionDoc(
         "ROUND",
+        FUNCTION,
         "ROUND[a]",
         "Rounds half away from zero: to an integer in an assignment or condition (ROUND[2.5] = 3, "
         "ROUND[-2.5] = -3); inside an NC address to the address's least increment (0.001 mm)",
@@ -62,31 +70,36 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     ),
     FunctionDoc(
         "FIX",
+        FUNCTION,
         "FIX[a]",
         "Drops the fraction, toward zero: FIX[1.7] = 1, FIX[-1.7] = -1",
         "下取整（舍去小数，向零取整）：FIX[1.7]=1，FIX[-1.7]=-1",
     ),
     FunctionDoc(
         "FUP",
+        FUNCTION,
         "FUP[a]",
         "Raises any fraction to the next integer away from zero: FUP[1.2] = 2, FUP[-1.2] = -2",
         "上取整（有小数即进位，远离零取整）：FUP[1.2]=2，FUP[-1.2]=-2",
     ),
     FunctionDoc(
         "LN",
+        FUNCTION,
         "LN[a]",
         "Natural logarithm of a; a zero or negative is alarm 119",
         "自然对数；a小于等于0时为119号报警",
     ),
-    FunctionDoc("EXP", "EXP[a]", "e raised to the power a", "指数函数，e的a次方"),
+    FunctionDoc("EXP", FUNCTION, "EXP[a]", "e raised to the power a", "指数函数，e的a次方"),
     FunctionDoc(
         "BIN",
+        FUNCTION,
         "BIN[a]",
         "Converts a BCD value to binary, for signals exchanged with the PMC (BIN[37] = 25: 0x25 read as BCD)",
         "BCD码转换为二进制，用于与PMC的信号交换（BIN[37]=25，即BCD码0x25）",
     ),
     FunctionDoc(
         "BCD",
+        FUNCTION,
         "BCD[a]",
         "Converts a binary value to BCD, for signals exchanged with the PMC (BCD[25] = 37, i.e. 0x25)",
         "二进制转换为BCD码，用于与PMC的信号交换（BCD[25]=37，即0x25）",
@@ -94,6 +107,7 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     # operators
     FunctionDoc(
         "AND",
+        OPERATOR,
         "a AND b",
         "Bitwise AND of the integers a and b (same precedence as * and /); "
         "between two bracketed conditions in IF/WHILE it means both are true",
@@ -101,6 +115,7 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     ),
     FunctionDoc(
         "OR",
+        OPERATOR,
         "a OR b",
         "Bitwise OR of the integers a and b (same precedence as + and -); "
         "between two bracketed conditions in IF/WHILE it means either is true",
@@ -108,12 +123,14 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     ),
     FunctionDoc(
         "XOR",
+        OPERATOR,
         "a XOR b",
         "Bitwise exclusive OR of the integers a and b (same precedence as + and -)",
         "按位异或（整数逐位运算，优先级同+和-）",
     ),
     FunctionDoc(
         "MOD",
+        OPERATOR,
         "a MOD b",
         "Remainder of a divided by b (same precedence as * and /); b = 0 is alarm 112",
         "a除以b的余数（优先级同*和/）；b为0时为112号报警",
@@ -121,6 +138,7 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     # relations (only inside IF and WHILE conditions)
     FunctionDoc(
         "EQ",
+        OPERATOR,
         "[a EQ b]",
         "True when a equals b exactly. On fanuc vacant differs from 0 here (vacant EQ vacant is true, "
         "0 EQ vacant is false); on gsk980tdi vacant counts as 0",
@@ -128,21 +146,28 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     ),
     FunctionDoc(
         "NE",
+        OPERATOR,
         "[a NE b]",
         "True when a differs from b. On fanuc vacant differs from 0 here (vacant NE 0 is true); "
         "on gsk980tdi vacant counts as 0",
         "a不等于b时成立。fanuc中空与0不同（空NE 0成立）；gsk980tdi中空按0处理",
     ),
-    FunctionDoc("GT", "[a GT b]", "True when a is greater than b (vacant counts as 0)", "a大于b时成立（空按0处理）"),
+    FunctionDoc(
+        "GT", OPERATOR, "[a GT b]", "True when a is greater than b (vacant counts as 0)", "a大于b时成立（空按0处理）"
+    ),
     FunctionDoc(
         "GE",
+        OPERATOR,
         "[a GE b]",
         "True when a is greater than or equal to b (vacant counts as 0)",
         "a大于或等于b时成立（空按0处理）",
     ),
-    FunctionDoc("LT", "[a LT b]", "True when a is less than b (vacant counts as 0)", "a小于b时成立（空按0处理）"),
+    FunctionDoc(
+        "LT", OPERATOR, "[a LT b]", "True when a is less than b (vacant counts as 0)", "a小于b时成立（空按0处理）"
+    ),
     FunctionDoc(
         "LE",
+        OPERATOR,
         "[a LE b]",
         "True when a is less than or equal to b (vacant counts as 0)",
         "a小于或等于b时成立（空按0处理）",
@@ -150,6 +175,7 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     # statements
     FunctionDoc(
         "IF",
+        STATEMENT,
         "IF [condition] GOTO n / IF [condition] THEN statement",
         "Conditional branch: when the condition is true, jump to block Nn, or run the one macro statement "
         "after THEN; otherwise go on with the next block",
@@ -157,6 +183,7 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     ),
     FunctionDoc(
         "GOTO",
+        STATEMENT,
         "GOTO n",
         "Jump to the block labelled Nn (n 1-99999, may be a variable or expression), searching forward "
         "to the end of the program and then from its start; not found is alarm 128",
@@ -165,12 +192,14 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     ),
     FunctionDoc(
         "THEN",
+        STATEMENT,
         "IF [condition] THEN statement",
         "Runs the single macro statement that follows when the IF condition is true",
         "IF条件成立时执行其后的一条宏程序语句",
     ),
     FunctionDoc(
         "WHILE",
+        STATEMENT,
         "WHILE [condition] DO m",
         "Loop: while the condition is true, run the blocks from DO m to END m (m = 1, 2 or 3); "
         "when it is false, go on after END m",
@@ -178,6 +207,7 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     ),
     FunctionDoc(
         "DO",
+        STATEMENT,
         "DO m",
         "Start of the loop with identification number m (1-3); loops nest at most 3 deep. "
         "DO m without WHILE loops forever",
@@ -185,24 +215,28 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     ),
     FunctionDoc(
         "END",
+        STATEMENT,
         "END m",
         "End of the loop started by DO m; goes back to its WHILE",
         "DO m循环的结束，返回到对应的WHILE",
     ),
     FunctionDoc(
         "POPEN",
+        FUNCTION,
         "POPEN",
         "Opens the external output device (reader/punch interface) before DPRNT or BPRNT",
         "打开外部输出设备（阅读机/穿孔机接口），在DPRNT或BPRNT之前指令",
     ),
     FunctionDoc(
         "PCLOS",
+        FUNCTION,
         "PCLOS",
         "Closes the external output device opened by POPEN",
         "关闭由POPEN打开的外部输出设备",
     ),
     FunctionDoc(
         "DPRNT",
+        FUNCTION,
         "DPRNT[text #i[a b] ...]",
         "Outputs text and variable values as decimal text; #i[a b] prints #i with a digits before and b "
         "after the decimal point",
@@ -210,6 +244,7 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     ),
     FunctionDoc(
         "BPRNT",
+        FUNCTION,
         "BPRNT[text #i[c] ...]",
         "Outputs text as characters and variable values in binary; #i[c] sends #i as a 32-bit binary "
         "integer with c digits after the decimal point",
@@ -220,6 +255,7 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
 EXTRA_FUNCTIONS: tuple[FunctionDoc, ...] = (
     FunctionDoc(
         "ATAN",
+        FUNCTION,
         "ATAN[a,b]",
         "Arc tangent of a/b written with a comma: the same as ATAN[a]/[b], the angle of the point (b, a), "
         "0 to 360 degrees",
@@ -227,12 +263,14 @@ EXTRA_FUNCTIONS: tuple[FunctionDoc, ...] = (
     ),
     FunctionDoc(
         "POW",
+        FUNCTION,
         "POW[a,b]",
         "a to the power b (POW[2,3] = 8); a negative a with a fractional b, or 0 to a negative power, is alarm 119",
         "a的b次方（POW[2,3]=8）；a为负数而b不是整数，或0的负数次方时为119号报警",
     ),
     FunctionDoc(
         "ADP",
+        FUNCTION,
         "ADP[a]",
         "Adds the decimal point to an argument written without one, as if X10 had been X10. (not 10 least "
         "increments); the simulated machine passes arguments as written, so the value stays as it is",
@@ -241,24 +279,28 @@ EXTRA_FUNCTIONS: tuple[FunctionDoc, ...] = (
     ),
     FunctionDoc(
         "PRM",
+        FUNCTION,
         "PRM[n]",
         "Reads parameter n (the simulated machine has no parameters: it reads 0)",
         "读取参数n（模拟机床没有参数，读出为0）",
     ),
     FunctionDoc(
         "PRM",
+        FUNCTION,
         "PRM[n,axis]",
         "Reads axis-type parameter n for the axis numbered axis (1 is the first axis); 0 on the simulated machine",
         "读取轴型参数n中第axis轴的值（1为第1轴）；模拟机床读出为0",
     ),
     FunctionDoc(
         "PRM",
+        FUNCTION,
         "PRM[n]/[bit]",
         "Reads bit bit (0-7) of bit-type parameter n; 0 on the simulated machine",
         "读取位型参数n的第bit位（0～7）；模拟机床读出为0",
     ),
     FunctionDoc(
         "PRM",
+        FUNCTION,
         "PRM[n,axis]/[bit]",
         "Reads bit bit of axis-type bit parameter n for the axis numbered axis; 0 on the simulated machine",
         "读取轴型位参数n中第axis轴的第bit位；模拟机床读出为0",
@@ -268,104 +310,132 @@ EXTRA_FUNCTIONS: tuple[FunctionDoc, ...] = (
 
 GSK_H_CODES: tuple[FunctionDoc, ...] = (
     FunctionDoc(
-        "H01", "G65 H01 P#i Q#j", "Assignment: #i = #j (Q-#j gives #i = -#j)", "赋值：#i = #j（Q-#j时#i = -#j）"
+        "H01",
+        STATEMENT,
+        "G65 H01 P#i Q#j",
+        "Assignment: #i = #j (Q-#j gives #i = -#j)",
+        "赋值：#i = #j（Q-#j时#i = -#j）",
     ),
-    FunctionDoc("H02", "G65 H02 P#i Q#j R#k", "Decimal addition: #i = #j + #k", "十进制加法：#i = #j + #k"),
-    FunctionDoc("H03", "G65 H03 P#i Q#j R#k", "Decimal subtraction: #i = #j - #k", "十进制减法：#i = #j - #k"),
-    FunctionDoc("H04", "G65 H04 P#i Q#j R#k", "Decimal multiplication: #i = #j × #k", "十进制乘法：#i = #j × #k"),
+    FunctionDoc("H02", STATEMENT, "G65 H02 P#i Q#j R#k", "Decimal addition: #i = #j + #k", "十进制加法：#i = #j + #k"),
+    FunctionDoc(
+        "H03", STATEMENT, "G65 H03 P#i Q#j R#k", "Decimal subtraction: #i = #j - #k", "十进制减法：#i = #j - #k"
+    ),
+    FunctionDoc(
+        "H04", STATEMENT, "G65 H04 P#i Q#j R#k", "Decimal multiplication: #i = #j × #k", "十进制乘法：#i = #j × #k"
+    ),
     FunctionDoc(
         "H05",
+        STATEMENT,
         "G65 H05 P#i Q#j R#k",
         "Decimal division: #i = #j ÷ #k (#k = 0 is alarm 112)",
         "十进制除法：#i = #j ÷ #k（#k为0时为112号报警）",
     ),
-    FunctionDoc("H11", "G65 H11 P#i Q#j R#k", "Binary OR: #i = #j OR #k", "二进制或运算：#i = #j OR #k"),
-    FunctionDoc("H12", "G65 H12 P#i Q#j R#k", "Binary AND: #i = #j AND #k", "二进制与运算：#i = #j AND #k"),
-    FunctionDoc("H13", "G65 H13 P#i Q#j R#k", "Binary exclusive OR: #i = #j XOR #k", "二进制异或：#i = #j XOR #k"),
-    FunctionDoc("H21", "G65 H21 P#i Q#j", "Square root: #i = √#j", "十进制开平方：#i = √#j"),
-    FunctionDoc("H22", "G65 H22 P#i Q#j", "Absolute value: #i = |#j|", "十进制取绝对值：#i = |#j|"),
+    FunctionDoc("H11", STATEMENT, "G65 H11 P#i Q#j R#k", "Binary OR: #i = #j OR #k", "二进制或运算：#i = #j OR #k"),
+    FunctionDoc("H12", STATEMENT, "G65 H12 P#i Q#j R#k", "Binary AND: #i = #j AND #k", "二进制与运算：#i = #j AND #k"),
+    FunctionDoc(
+        "H13", STATEMENT, "G65 H13 P#i Q#j R#k", "Binary exclusive OR: #i = #j XOR #k", "二进制异或：#i = #j XOR #k"
+    ),
+    FunctionDoc("H21", STATEMENT, "G65 H21 P#i Q#j", "Square root: #i = √#j", "十进制开平方：#i = √#j"),
+    FunctionDoc("H22", STATEMENT, "G65 H22 P#i Q#j", "Absolute value: #i = |#j|", "十进制取绝对值：#i = |#j|"),
     FunctionDoc(
         "H23",
+        STATEMENT,
         "G65 H23 P#i Q#j R#k",
         "Remainder: #i = #j - TRUNC(#j ÷ #k) × #k, TRUNC dropping the fraction "
         "(G65 H23 P#101 Q#4120 R100 gives the offset number of the T code)",
         "十进制取余数：#i = #j - TRUNC(#j ÷ #k) × #k，TRUNC为舍去小数部分"
         "（G65 H23 P#101 Q#4120 R100取得T代码的刀偏号）",
     ),
-    FunctionDoc("H24", "G65 H24 P#i Q#j", "BCD to binary: #i = BIN(#j)", "BCD码转换为二进制：#i = BIN(#j)"),
-    FunctionDoc("H25", "G65 H25 P#i Q#j", "Binary to BCD: #i = BCD(#j)", "二进制转换为BCD码：#i = BCD(#j)"),
+    FunctionDoc("H24", STATEMENT, "G65 H24 P#i Q#j", "BCD to binary: #i = BIN(#j)", "BCD码转换为二进制：#i = BIN(#j)"),
+    FunctionDoc("H25", STATEMENT, "G65 H25 P#i Q#j", "Binary to BCD: #i = BCD(#j)", "二进制转换为BCD码：#i = BCD(#j)"),
     FunctionDoc(
         "H26",
+        STATEMENT,
         "G65 H26 P#i Q#j R#k",
         "Multiply then divide: #i = #i × #j ÷ #k",
         "十进制乘除运算：#i = #i × #j ÷ #k",
     ),
     FunctionDoc(
         "H27",
+        STATEMENT,
         "G65 H27 P#i Q#j R#k",
         "Compound square root: #i = √(#j² + #k²)",
         "复合平方根：#i = √(#j² + #k²)",
     ),
     FunctionDoc(
-        "H31", "G65 H31 P#i Q#j R#k", "Sine: #i = #j × sin(#k), #k in degrees", "正弦：#i = #j × sin(#k)，#k单位为度"
+        "H31",
+        STATEMENT,
+        "G65 H31 P#i Q#j R#k",
+        "Sine: #i = #j × sin(#k), #k in degrees",
+        "正弦：#i = #j × sin(#k)，#k单位为度",
     ),
     FunctionDoc(
         "H32",
+        STATEMENT,
         "G65 H32 P#i Q#j R#k",
         "Cosine: #i = #j × cos(#k), #k in degrees",
         "余弦：#i = #j × cos(#k)，#k单位为度",
     ),
     FunctionDoc(
         "H33",
+        STATEMENT,
         "G65 H33 P#i Q#j R#k",
         "Tangent: #i = #j × tan(#k), #k in degrees",
         "正切：#i = #j × tan(#k)，#k单位为度",
     ),
     FunctionDoc(
         "H34",
+        STATEMENT,
         "G65 H34 P#i Q#j R#k",
         "Arc tangent: #i = ATAN(#j ÷ #k), in degrees",
         "反正切：#i = ATAN(#j ÷ #k)，单位为度",
     ),
-    FunctionDoc("H80", "G65 H80 Pn", "Unconditional branch: go to block Nn", "无条件转移：跳转至Nn程序段"),
+    FunctionDoc("H80", STATEMENT, "G65 H80 Pn", "Unconditional branch: go to block Nn", "无条件转移：跳转至Nn程序段"),
     FunctionDoc(
         "H81",
+        STATEMENT,
         "G65 H81 Pn Q#j R#k",
         "Conditional branch: go to block Nn if #j = #k, else go on",
         "条件转移：#j = #k时跳转至Nn程序段，否则顺序执行",
     ),
     FunctionDoc(
         "H82",
+        STATEMENT,
         "G65 H82 Pn Q#j R#k",
         "Conditional branch: go to block Nn if #j ≠ #k, else go on",
         "条件转移：#j ≠ #k时跳转至Nn程序段，否则顺序执行",
     ),
     FunctionDoc(
         "H83",
+        STATEMENT,
         "G65 H83 Pn Q#j R#k",
         "Conditional branch: go to block Nn if #j > #k, else go on",
         "条件转移：#j > #k时跳转至Nn程序段，否则顺序执行",
     ),
     FunctionDoc(
         "H84",
+        STATEMENT,
         "G65 H84 Pn Q#j R#k",
         "Conditional branch: go to block Nn if #j < #k, else go on",
         "条件转移：#j < #k时跳转至Nn程序段，否则顺序执行",
     ),
     FunctionDoc(
         "H85",
+        STATEMENT,
         "G65 H85 Pn Q#j R#k",
         "Conditional branch: go to block Nn if #j ≥ #k, else go on",
         "条件转移：#j ≥ #k时跳转至Nn程序段，否则顺序执行",
     ),
     FunctionDoc(
         "H86",
+        STATEMENT,
         "G65 H86 Pn Q#j R#k",
         "Conditional branch: go to block Nn if #j ≤ #k, else go on",
         "条件转移：#j ≤ #k时跳转至Nn程序段，否则顺序执行",
     ),
     FunctionDoc(
         "H99",
+        STATEMENT,
         "G65 H99 Pn",
         "User alarm 5900 + n (H99 P15 raises alarm 5915); a message may follow as (/text)",
         "产生5900+n号用户报警（H99 P15产生5915号报警）；可用(/报警内容)附加报警信息",

@@ -128,11 +128,21 @@ class CodeDoc:
     zh: str
 
 
+# What a word of the functions table is (``FunctionDoc.kind``): the editor colours and completes
+# it by this (``lsp/semantic_tokens.py``, ``lsp/completion.py``).
+FUNCTION = "function"  # written with its arguments in brackets (SIN[a]) or alone (POPEN)
+OPERATOR = "operator"  # written between two operands (a AND b, [a EQ b])
+STATEMENT = "statement"  # a word of a macro statement (IF, GOTO, THEN, WHILE, DO, END; G65 Hm)
+FUNCTION_KINDS = (FUNCTION, OPERATOR, STATEMENT)
+
+
 @dataclass(frozen=True, slots=True)
 class FunctionDoc:
-    """A function or operator: its ``signature`` as a programmer writes it and what it does."""
+    """A function, operator or statement word: its ``kind`` (one of ``FUNCTION_KINDS``), its
+    ``signature`` as a programmer writes it and what it does."""
 
     name: str
+    kind: str
     signature: str
     en: str
     zh: str

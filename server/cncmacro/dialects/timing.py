@@ -8,7 +8,7 @@ tool; ``T`` on a lathe, whose turret indexes on the T word), the seconds other M
 limit of G96 constant surface speed) and the peck drilling cycles' retract distances. Each
 profile module carries typical values; a machine file's ``[timing]`` table gives the machine's
 own (docs/machine-file.md, ``Timing.changed``). How the interpreter uses them is
-``machine/cycle_time.py``.
+``planner/cycle_time.py``.
 """
 
 from __future__ import annotations

@@ -8,7 +8,7 @@ Two ways to say where a G31 move stops, which may be combined:
   (``"miss"``: the skip signal never comes on); once they are used up the model below decides;
 - a **model** of the part's surfaces: planes (``Z = -12.5``, ``X = [-40, 40]``), bores and bosses
   (``bore = { X = 0, Y = 0, diameter = 50 }``, or ``[[skip.bore]]`` tables for several), which the
-  straight G31 move hits by geometry (``machine/probing.py``).
+  straight G31 move hits by geometry (``planner/probing.py``).
 
 This module only reads and checks the table; what a G31 does with it is the interpreter's.
 """

@@ -70,7 +70,7 @@ def prepare(ls: CncMacroServer, params: types.CallHierarchyPrepareParams) -> lis
     here = doc.as_loaded()
     unit = here.program.unit_at(cur.line)
     site = call_site(cur.block, doc.dialect, machine_calls(ls, doc.path))
-    if site is not None and site.p.start <= cur.column <= site.p.end:
+    if site is not None and site.target.start <= cur.column <= site.target.end:
         found = ls.index.find_program(doc, site.number, site.name)
         if found is None or found.file.on_control:
             return None

@@ -27,7 +27,6 @@ from lsprotocol import types
 
 from ..analysis.call_sites import call_site
 from ..analysis.profile_suggestion import CODE, suggestion_target
-from ..bilingual import pick
 from ..library.files import SkippedFileError, read_bytes
 from ..library.machine_file import MACHINE_FILE_NAME, MAX_MACHINE_FILE_BYTES, CallCode, MachineSettings
 from ..machine.block_rules import BEFORE_CALL, validate_block
@@ -37,29 +36,10 @@ from .conditional_m99 import if_goto_rewrite
 from .cursor import doc_range
 from .documents import OpenDocument
 from .positions import Encoding
+from .texts import t
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
-
-_TITLES = {
-    "comment": (
-        "Read this file as {title}: add (cncmacro: dialect={name})",
-        "按 {title} 读取此文件：加上 (cncmacro: dialect={name})",
-    ),
-    "machine": (
-        'Set base = "{name}" in .cncmacro.toml (every file of the workspace)',
-        '在 .cncmacro.toml 中设定 base = "{name}"（对工作区所有文件生效）',
-    ),
-    "split": ("Split: move {words} to a block before the {name}", "拆分：把 {words} 移到 {name} 之前的单独程序段"),
-    "clamp": ("Clamp the repeat count to {value}", "把重复次数改为{value}"),
-    "expand": ("Write {word} in full", "把{text}写全为{word}"),
-    "if-goto": ("Write it as {text}", "改写为 {text}"),
-}
-
-
-def _title(key: str, locale: str, **kw: object) -> str:
-    en, zh = _TITLES[key]
-    return pick(locale, en, zh).format(**kw)
 
 
 def split_edit(
@@ -131,24 +111,23 @@ def register(server: CncMacroServer) -> None:
             split = split_edit(doc, line, encoding, calls)
             if split is not None:
                 edit, words, name = split
-                title = _title("split", ls.locale, words=words, name=name)
-                out.append(_action(doc, title, edit, diags, "g65-nc-words"))
+                out.append(_action(doc, t("fix_split", ls.locale, words=words, name=name), edit, diags, "g65-nc-words"))
             clamp = clamp_edit(doc, line, encoding)
             if clamp is not None:
                 out.append(
-                    _action(doc, _title("clamp", ls.locale, value=clamp[1]), clamp[0], diags, "repeat-count-range")
+                    _action(doc, t("fix_clamp", ls.locale, value=clamp[1]), clamp[0], diags, "repeat-count-range")
                 )
             for expand, text, word in expand_edits(doc, line, encoding):
                 start = expand.range.start.character
                 mine = [d for d in diags if d.range.start.character == start]
                 code = "keyword-abbreviation" if doc.dialect.keyword_abbreviations else "dialect-feature"
-                out.append(_action(doc, _title("expand", ls.locale, text=text, word=word), expand, mine, code))
+                out.append(_action(doc, t("fix_expand", ls.locale, text=text, word=word), expand, mine, code))
             block = doc.block(line)
             rewrite = if_goto_rewrite(block, doc.line(line), doc.dialect) if block and block.statements else None
             if rewrite is not None:  # [cond] M99 P n where the profile has no such jump
                 start, end, new = rewrite
                 edit = types.TextEdit(doc_range(doc, line, start, end, encoding), new)
-                out.append(_action(doc, _title("if-goto", ls.locale, text=new), edit, diags, "dialect-feature"))
+                out.append(_action(doc, t("fix_if_goto", ls.locale, text=new), edit, diags, "dialect-feature"))
         out.extend(profile_actions(ls, doc, params.context.diagnostics))
         return out
 
@@ -165,14 +144,14 @@ def profile_actions(ls: CncMacroServer, doc: OpenDocument, diags: Sequence[types
     encoding = ls.documents.encoding
     at = 1 if doc.lines and doc.lines[0].strip().startswith("%") else 0
     comment = types.TextEdit(doc_range(doc, at, 0, 0, encoding), f"(cncmacro: dialect={other.name})\n")
-    title = _title("comment", ls.locale, title=other.title, name=other.name)
+    title = t("fix_comment", ls.locale, title=other.title, name=other.name)
     out = [_action(doc, title, comment, asked, CODE)]
     machine = doc.machine_file
     if machine is None and ls.roots:
         machine = Path(ls.roots[0]) / MACHINE_FILE_NAME
     if machine is not None:
         out.append(types.CodeAction(
-            title=_title("machine", ls.locale, name=other.name), kind=types.CodeActionKind.QuickFix,
+            title=t("fix_machine", ls.locale, name=other.name), kind=types.CodeActionKind.QuickFix,
             diagnostics=asked, edit=machine_file_edit(machine, other.name, encoding),
         ))  # fmt: skip
     return out

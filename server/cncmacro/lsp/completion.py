@@ -12,10 +12,9 @@ from lsprotocol import types
 
 from ..analysis.call_sites import CallSite, call_site
 from ..bilingual import pick
-from ..dialects import describe
+from ..dialects import describe, tables
 from ..dialects.dialect import ARGUMENTS_I
 from .cursor import Cursor, cursor_at
-from .semantic_tokens import _name_kinds
 from .texts import t
 
 if TYPE_CHECKING:
@@ -154,23 +153,32 @@ def ls_reads(ls: CncMacroServer, cur: Cursor, site: CallSite) -> set[int]:
     return set(locals_read(found)) if found is not None else set()
 
 
+# a row's kind in the dialect's function table -> the completion item's kind
+_ITEM_KIND = {
+    tables.FUNCTION: types.CompletionItemKind.Function,
+    tables.OPERATOR: types.CompletionItemKind.Operator,
+    tables.STATEMENT: types.CompletionItemKind.Keyword,
+}
+
+
 def keyword_items(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem]:
-    kinds = _name_kinds(cur.doc.dialect.name)
+    """The names of the dialect's function table, each as its row's ``kind`` says; a name written
+    with brackets (``SIN[a]``) is inserted with them, the cursor between."""
     out = []
     seen = set()
     for f in cur.doc.dialect.functions():
         if f.name in seen:
             continue
         seen.add(f.name)
-        kind = kinds.get(f.name, "keyword")
+        bracketed = f.kind == tables.FUNCTION and f.signature.startswith(f.name + "[")
         out.append(
             types.CompletionItem(
                 label=f.name,
-                kind=types.CompletionItemKind.Function if kind == "function" else types.CompletionItemKind.Keyword,
+                kind=_ITEM_KIND[f.kind],
                 detail=f.signature,
                 documentation=pick(ls.locale, f.en, f.zh),
-                insert_text=f"{f.name}[$1]" if kind == "function" else None,
-                insert_text_format=types.InsertTextFormat.Snippet if kind == "function" else None,
+                insert_text=f"{f.name}[$1]" if bracketed else None,
+                insert_text_format=types.InsertTextFormat.Snippet if bracketed else None,
             )
         )
     return out

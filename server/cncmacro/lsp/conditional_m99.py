@@ -8,9 +8,9 @@ that the control stops there with alarm 114. There a quick fix writes the block 
 
 from __future__ import annotations
 
-from ..bilingual import pick
 from ..dialects import Dialect
 from ..syntax.nodes import Block, If
+from .texts import t
 
 
 def if_goto_rewrite(block: Block, text: str, dialect: Dialect) -> tuple[int, int, str] | None:
@@ -37,17 +37,7 @@ def conditional_m99_hover(block: Block, column: int, dialect: Dialect, locale: s
 
 
 def _text(dialect: Dialect, locale: str) -> str:
-    head = pick(
-        locale,
-        "**[cond] M99 P n** — Conditional jump (Haas): to block Nn when the condition holds, otherwise on to "
-        "the next block; the same as IF [cond] GOTO n",
-        "**[条件] M99 P n** — 条件跳转（哈斯）：条件成立时转到 Nn 程序段，否则继续执行下一段；等同于 IF [条件] GOTO n",
-    )
+    head = t("conditional_m99", locale)
     if dialect.conditional_m99:
         return f"{head}\n\n*{dialect.title}*"
-    refused = pick(
-        locale,
-        f"{dialect.title} does not read it: the control stops at this block with alarm 114",
-        f"{dialect.title} 不接受这种写法：执行到此程序段时报警 114",
-    )
-    return f"{head}\n\n{refused}"
+    return f"{head}\n\n{t('conditional_m99_refused', locale, title=dialect.title)}"

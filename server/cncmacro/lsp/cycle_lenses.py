@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 
 from ..analysis.cycle_summary import duration_text, tool_name, totals_text
-from ..bilingual import pick
+from .texts import t
 
 if TYPE_CHECKING:
     from .documents import OpenDocument
@@ -52,8 +52,7 @@ def elapsed_text(ls: CncMacroServer, doc: OpenDocument, line: int) -> str | None
     if seconds is None:
         return None
     shown = duration_text(seconds, ls.locale)
-    return pick(ls.locale, f"Cycle time: this block starts at ≈ {shown} (the first time it runs)",
-                f"加工时间：本程序段约在第 {shown} 开始（首次执行时）")  # fmt: skip
+    return t("starts_at", ls.locale, shown=shown)
 
 
 def refresh_code_lenses(server: CncMacroServer) -> None:

@@ -48,7 +48,6 @@ from lsprotocol import types
 from ..analysis import Diagnostic
 from ..analysis.cycle_lenses import FileTiming
 from ..analysis.workspace import FIRST_SCREEN_LINES, AnalysisResult, Value, WorkspaceAnalysis, head_lines
-from ..bilingual import pick
 from ..syntax.document import ParsedDocument
 from .collector import Collector
 from .cycle_lenses import refresh_code_lenses
@@ -58,6 +57,7 @@ from .editor_steps import between_steps, one_step
 from .protocol_diagnostics import to_lsp
 from .settings import Settings, merged_severities, valid_severities
 from .site_steps import index_soon
+from .texts import t
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -279,8 +279,7 @@ class DiagnosticsEngine:
             done = int(100 * len(parsed.blocks) / len(parsed.lines))
             if token is not None and done != shown:  # the message again: an editor may show only the latest
                 shown = done
-                lines = f"{len(parsed.lines):,}"
-                message = pick(self._locale, f"reading {lines} lines", f"读取 {lines} 行")
+                message = t("reading_lines", self._locale, lines=len(parsed.lines))
                 self.server.work_done_progress.report(
                     token, types.WorkDoneProgressReport(message=message, percentage=done)
                 )
@@ -429,7 +428,7 @@ class DiagnosticsEngine:
             self._publish(outcome)
         finally:
             if token is not None:  # it ends once its findings are shown
-                done = pick(self._locale, "stopped", "已停止") if stopped() else pick(self._locale, "done", "完成")
+                done = t("stopped" if stopped() else "done", self._locale)
                 self.server.work_done_progress.end(token, types.WorkDoneProgressEnd(message=done))
         if self.collector.due() and not self._cleaning and not self._loading:  # not while a huge file is read
             self._cleaning = True
@@ -657,10 +656,8 @@ class DiagnosticsEngine:
             token,
             types.WorkDoneProgressBegin(
                 title="cncmacro",
-                message=pick(
-                    self._locale,
-                    f"{'reading' if kind == 'reading' else 'analysing'} {len(doc.lines):,} lines",
-                    f"{'读取' if kind == 'reading' else '分析'} {len(doc.lines):,} 行",
+                message=t(
+                    "reading_lines" if kind == "reading" else "analysing_lines", self._locale, lines=len(doc.lines)
                 ),
                 cancellable=cancellable,
                 percentage=0,
@@ -708,10 +705,10 @@ def _merged(
             doc = by_path.get(path)
             if doc is not None and doc.machine_file == machine_file:
                 values[path] = lines
-        for path, t in result.timing.items():
+        for path, times in result.timing.items():
             doc = by_path.get(path)
             if doc is not None and doc.machine_file == machine_file:
-                timing[path] = t
+                timing[path] = times
     return AnalysisResult(results[0][2].version, diagnostics, values, timing), owner
 
 

@@ -89,7 +89,7 @@ def program_highlights(cur: Cursor, number: int, calls: Mapping[str, CallCode] |
         if unit.number == number and b is not None and b.program == number and b.program_span:
             out.append((unit.start, b.program_span[0], b.program_span[1], WRITE))
     for i, site in calls_of_program(doc.lines, doc.block, number, doc.dialect, calls):
-        out.append((i, site.p.start, site.p.end, READ))
+        out.append((i, site.target.start, site.target.end, READ))
     return _marks(cur, sorted(out))
 
 

@@ -27,7 +27,7 @@ from ..dialects.functions_data import GSK_H_CODES
 from ..machine.alarms import MacroAlarm
 from ..machine.calls import argument_targets, letters_for_local
 from ..machine.variables import named_number
-from ..syntax.nodes import Abbreviation, Bracket, Call, CornerWord, NamedVar, Number, Unary, Var, Word
+from ..syntax.nodes import Abbreviation, Bracket, CornerWord, FunctionCall, NamedVar, Number, Unary, Var, Word
 from ..syntax.walk import nodes_at
 from .conditional_m99 import conditional_m99_hover
 from .cursor import Cursor, cursor_at
@@ -86,7 +86,7 @@ def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
             return variable_hover(ls, cur, node.number), node.start, node.end
         if isinstance(node, NamedVar):
             return named_hover(ls, cur, node), node.start, node.end
-        if isinstance(node, Call) and col <= node.start + len(node.name):
+        if isinstance(node, FunctionCall) and col <= node.start + len(node.name):
             text = function_hover(ls, cur, node.name)
             if text:
                 return text, node.start, node.start + len(node.name)
@@ -145,7 +145,7 @@ def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
             lines += _places(t("written_at", loc), shown, len(places), t("not_written", loc), loc)
         if pending:
             names = ", ".join(Path(path).name for path in pending)
-            lines += ["", f"{t('written_at', loc)}: {t('being_found', loc).format(files=names)}"]
+            lines += ["", f"{t('written_at', loc)}: {t('being_found', loc, files=names)}"]
     return "\n".join(lines)
 
 
@@ -229,7 +229,7 @@ def label_hover(ls: CncMacroServer, cur: Cursor, label: int) -> str:
         lines.append(f"N{label}: {t('not_found', loc)}")
     if not cur.doc.sites.ready:  # a huge file not indexed yet: its jumps are still being found
         index_soon(cur.doc.sites)
-        found = t("being_found", loc).format(files=Path(cur.doc.path).name)
+        found = t("being_found", loc, files=Path(cur.doc.path).name)
         return "\n".join([*lines, "", f"{t('jumps', loc)}: {found}"])
     jumps = [(i, j.kind) for i, j in label_jumps(cur.doc, unit.start, unit.end, label)]
     shown = [f"{t('line', loc)} {i + 1} ({kind})" for i, kind in jumps[:MAX_PLACES]]
@@ -248,7 +248,7 @@ def program_hover(
     if found is None and number is not None and dialect.on_control(number):
         kept = dialect.programs_on_control
         ranges = ", ".join(f"O{a:04d}" if a == b else f"O{a:04d}–O{b:04d}" for a, b in kept)
-        said = t("on_control", loc).format(title=dialect.title, ranges=ranges)
+        said = t("on_control", loc, title=dialect.title, ranges=ranges)
         doc = dialect.program_doc(number)
         if doc is not None:  # the maker documents it: what it does, reads and writes, then where it lives
             lines = doc_lines(doc, loc, {w.letter for w in given})
@@ -267,7 +267,7 @@ def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
     loc = ls.locale
     dialect = cur.doc.dialect
     site = call_site(cur.block, dialect)
-    if site is not None and word is site.p:
+    if site is not None and word is site.target:
         return program_hover(ls, cur, site.number, site.name, site.arguments)
     if site is not None and word in site.arguments:
         targets = argument_targets([w.letter for w in site.arguments])
@@ -286,51 +286,20 @@ def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
     return None
 
 
-_CORNER_TEXTS = {
-    "C": (
-        "chamfer: a straight cut of this length across the corner between this move and the next",
-        "倒角：在本段与下一段移动之间的拐角处切出此长度的直线",
-    ),
-    "R": (
-        "corner radius: an arc of this radius rounds the corner between this move and the next",
-        "拐角圆弧：以此半径的圆弧连接本段与下一段移动之间的拐角",
-    ),
-    "A": (
-        "angle of the move (direct drawing dimension programming)",
-        "移动的角度（图纸尺寸直接输入）",
-    ),
-}
-
-
 def corner_hover(ls: CncMacroServer, cur: Cursor, corner: CornerWord) -> str:
     """``,C``, ``,R`` or ``,A``: what it asks of the control and what the simulator does with it."""
     loc = ls.locale
-    en, zh = _CORNER_TEXTS[corner.letter]
-    lines = [f"**,{corner.letter}** — {pick(loc, en, zh)}", ""]
-    lines.append(
-        pick(
-            loc,
-            "The simulator runs the move as written: the toolpath shows the sharp corner.",
-            "模拟器按所写路径运行：刀路显示未倒角的尖角。",
-        )
-    )
+    lines = [f"**,{corner.letter}** — {t(f'corner_{corner.letter}', loc)}", "", t("corner_run", loc)]
     dialect = cur.doc.dialect
     if not dialect.corner_words:
-        lines.append("")
-        lines.append(
-            pick(
-                loc,
-                f"Not in the manual of *{dialect.title}*, which writes chamfers as L and corner arcs as D.",
-                f"*{dialect.title}* 的说明书中没有此写法，其倒角写作 L（直线）和 D（圆弧）。",
-            )
-        )
+        lines += ["", t("corner_not_in_manual", loc, title=dialect.title)]
     return "\n".join(lines)
 
 
 def abbreviation_hover(ls: CncMacroServer, cur: Cursor, a: Abbreviation) -> str:
     """A macro word written shortened: the whole word it stands for, then the word's own doc."""
     loc = ls.locale
-    head = pick(loc, f"**{a.text}** — short for **{a.word}**", f"**{a.text}** — **{a.word}** 的缩写")
+    head = t("short_for", loc, text=a.text, word=a.word)
     if not cur.doc.dialect.keyword_abbreviations:
         head += f" ({t('not_here', loc)}: *{cur.doc.dialect.title}*)"
     doc = function_hover(ls, cur, a.word)

@@ -11,10 +11,10 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 
 from ..analysis.call_sites import call_site
-from ..bilingual import pick
 from ..machine.calls import argument_targets
-from ..machine.numbers import format_plain
+from ..planner.numbers import format_plain
 from .positions import Encoding
+from .texts import t
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -60,7 +60,7 @@ def _value_hint(text: str, line: int, written: list[tuple[int, float | None]], l
                 encoding: Encoding) -> types.InlayHint:  # fmt: skip
     """``= 60`` at the end of the line's code (before a comment)."""
     end = len(text.split("(", 1)[0].split(";", 1)[0].rstrip())
-    shown = ", ".join(pick(locale, "<vacant>", "<空>") if v is None else format_plain(v) for _, v in written)
+    shown = ", ".join(t("vacant", locale) if v is None else format_plain(v) for _, v in written)
     return types.InlayHint(
         position=types.Position(line, encoding.to_client(text, end)),
         label=f"= {shown}",

@@ -84,7 +84,7 @@ def program_under(cur: Cursor, calls: Mapping[str, CallCode] | None) -> tuple[in
     if b.program is not None and b.program_span and b.program_span[0] <= cur.column <= b.program_span[1]:
         return b.program, False
     site = call_site(b, cur.doc.dialect, calls)
-    if site is not None and site.p.start <= cur.column <= site.p.end and site.number is not None:
+    if site is not None and site.target.start <= cur.column <= site.target.end and site.number is not None:
         return site.number, True
     return None
 
@@ -110,7 +110,7 @@ def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | N
         span = b.label_span if b is not None and b.label_span else (0, 0)
         return [_loc(cur.doc.uri, target, span[0], span[1], cur.doc.line(target), encoding)]
     site = call_site(cur.block, cur.doc.dialect, machine_calls(ls, cur.doc.path))
-    if site is not None and site.p.start <= cur.column <= site.p.end:
+    if site is not None and site.target.start <= cur.column <= site.target.end:
         found = ls.index.find_program(cur.doc, site.number, site.name)
         if found is None:
             return None
@@ -176,7 +176,7 @@ def program_references(
                 continue
             site = call_site(b, dialect, calls)
             if site is not None and site.number == number:
-                out.append(_loc(uri, i, site.p.start, site.p.end, f.lines[i], encoding))
+                out.append(_loc(uri, i, site.target.start, site.target.end, f.lines[i], encoding))
     return out
 
 

@@ -24,6 +24,7 @@ from ..bilingual import Detail, in_language, is_chinese
 from ..library.files import shown_text
 from ..library.machine_files import MachineFileState
 from .protocol_diagnostics import SEVERITY
+from .texts import t
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -70,23 +71,13 @@ def report_skipped(server: CncMacroServer, skipped: list[Detail]) -> None:
     """Name what a scan of the workspace folders did not read (nothing when it read all)."""
     if not skipped:
         return
-    chinese = _chinese(server)
     texts = [log_skipped(server, s) for s in skipped[:LOGGED]]
     if len(skipped) > LOGGED:
         more = len(skipped) - LOGGED
-        text = f"……另有 {more} 个文件夹或文件未读取" if chinese else f"... and {more} more folders or files not read"
+        text = t("more_not_read", server.locale, more=more)
         server.window_log_message(types.LogMessageParams(type=types.MessageType.Warning, message=text))
     named = "; ".join(texts[:NAMED])
     more = len(skipped) - NAMED
-    if chinese:
-        message = f"cncmacro：工作区中有 {len(skipped)} 个文件夹或文件未读取：{named}"
-        message += f"；其余 {more} 个见输出窗口" if more > 0 else ""
-    else:
-        what = (
-            "1 folder or file in the workspace was not read"
-            if len(skipped) == 1
-            else (f"{len(skipped)} folders or files in the workspace were not read")
-        )
-        message = f"cncmacro: {what}: {named}"
-        message += f"; {more} more in the output" if more > 0 else ""
+    message = t("not_read_one" if len(skipped) == 1 else "not_read", server.locale, count=len(skipped), named=named)
+    message += t("more_in_output", server.locale, more=more) if more > 0 else ""
     server.window_show_message(types.ShowMessageParams(type=types.MessageType.Warning, message=message))

@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..dialects import describe
+from ..dialects import describe, tables
 from ..dialects.dialect import Dialect
 from ..syntax.block_parser import MAX_BLOCK_CHARS
 from ..syntax.nodes import Block
@@ -57,23 +57,19 @@ _SCAN = re.compile(
 Token = tuple[int, int, int, int]  # start, end (code points), type, modifiers
 
 
+# a row's kind in the dialect's function table -> the token type of its name
+_TOKEN_TYPE = {tables.FUNCTION: "function", tables.OPERATOR: "operator", tables.STATEMENT: "keyword"}
+
+
 @cache
-def _name_kinds(dialect_name: str) -> dict[str, str]:
-    """keyword / function / operator for each name in the dialect's function table, judged by
-    how its signature is written: between two operands an operator (``a AND b``, ``[a EQ b]``),
-    with its arguments in brackets or alone a function (``SIN[a]``, ``POPEN``), otherwise a
-    statement word, a keyword (``IF [condition] THEN statement``, ``DO m``)."""
+def _token_types(dialect_name: str) -> dict[str, str]:
+    """The token type of each name in the dialect's function table, by its row's ``kind``: a
+    function, an operator, or a statement word, coloured as a keyword (``IF``, ``THEN``, ``DO``)."""
     from ..dialects import get_dialect
 
     out: dict[str, str] = {}
     for f in get_dialect(dialect_name).functions():
-        sig = f.signature.strip()
-        if re.fullmatch(rf"\[?\w+ {re.escape(f.name)} \w+\]?", sig):
-            out.setdefault(f.name, "operator")
-        elif sig == f.name or sig.startswith(f.name + "["):
-            out.setdefault(f.name, "function")
-        else:
-            out.setdefault(f.name, "keyword")
+        out.setdefault(f.name, _TOKEN_TYPE[f.kind])
     return out
 
 
@@ -81,13 +77,13 @@ def _name_kinds(dialect_name: str) -> dict[str, str]:
 def _letter_names(dialect_name: str) -> bool:
     """Whether a name of the dialect's table is one letter, which a line of address words
     (``Block.plain``) could hold."""
-    return any(len(name) == 1 for name in _name_kinds(dialect_name))
+    return any(len(name) == 1 for name in _token_types(dialect_name))
 
 
 def line_tokens(text: str, block: Block, dialect: Dialect) -> list[Token]:
     """The tokens of one line. Comments (alarm texts too) and ``;`` tails are read only to be
     passed over; numbers, address letters and G/M codes get none."""
-    kinds = _name_kinds(dialect.name)
+    kinds = _token_types(dialect.name)
     shortened = {a.start: a for a in block.abbreviations}  # ``WH`` is coloured as WHILE
     label = block.label_span
     prog = block.program_span

@@ -24,10 +24,10 @@ from ..analysis.sequence_numbers import (
     remove_unused_sequence_numbers,
     renumber,
 )
-from ..bilingual import pick
 from .cursor import doc_range
 from .documents import OpenDocument
 from .navigation import machine_calls
+from .texts import t
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -37,13 +37,7 @@ ADD = "cncmacro.server.addSequenceNumbers"
 REMOVE = "cncmacro.server.removeSequenceNumbers"
 COMMANDS = (RENUMBER, ADD, REMOVE)
 
-_LABELS = {
-    RENUMBER: ("Renumber sequence numbers", "重新编排顺序号"),
-    ADD: ("Add missing sequence numbers", "补上缺少的顺序号"),
-    REMOVE: ("Remove unused sequence numbers", "删除无用的顺序号"),
-}
-_KEEP = ("Keep those labels unchanged", "保留这些顺序号不变")
-_CANCEL = ("Cancel", "取消")
+_LABELS = {RENUMBER: "renumber", ADD: "add_numbers", REMOVE: "remove_numbers"}  # a command -> its title's key
 
 
 def _whole(value: Any, default: int) -> int | None:
@@ -117,9 +111,9 @@ async def run_command(ls: CncMacroServer, command: str, arg: dict[str, Any]) -> 
         lines = "; ".join(b.message for b in plan.blockers[:3])
         more = len(plan.blockers) - 3
         if more > 0:
-            lines += pick(loc, f"; and {more} more", f"；另有 {more} 处")
-        question = pick(loc, f"{_LABELS[command][0]}: refused. {lines}", f"{_LABELS[command][1]}：已拒绝。{lines}")
-        keep, cancel = pick(loc, *_KEEP), pick(loc, *_CANCEL)
+            lines += t("and_more", loc, more=more)
+        question = t("refused", loc, label=t(_LABELS[command], loc), text=lines)
+        keep, cancel = t("keep_labels", loc), t("cancel", loc)
         answer = await ls.window_show_message_request_async(
             types.ShowMessageRequestParams(
                 types.MessageType.Warning, question, [types.MessageActionItem(keep), types.MessageActionItem(cancel)]
@@ -141,17 +135,14 @@ async def run_command(ls: CncMacroServer, command: str, arg: dict[str, Any]) -> 
         return result
     if plan.blockers:
         if not cancelled:  # say why nothing changed
-            label = pick(loc, *_LABELS[command])
             text = "; ".join(b.message for b in plan.blockers[:3])
-            refused = pick(loc, f"{label}: refused. {text}", f"{label}：已拒绝。{text}")
+            refused = t("refused", loc, label=t(_LABELS[command], loc), text=text)
             ls.window_show_message(types.ShowMessageParams(types.MessageType.Warning, refused))
         return result
     if not plan.changes:
-        ls.window_show_message(
-            types.ShowMessageParams(types.MessageType.Info, pick(loc, "Nothing to change.", "没有需要修改的地方。"))
-        )
+        ls.window_show_message(types.ShowMessageParams(types.MessageType.Info, t("nothing_to_change", loc)))
         return result
-    label = pick(loc, *_LABELS[command])
+    label = t(_LABELS[command], loc)
     applied = await ls.workspace_apply_edit_async(
         types.ApplyWorkspaceEditParams(workspace_edit(ls, doc, plan), label=label)
     )
@@ -160,13 +151,7 @@ async def run_command(ls: CncMacroServer, command: str, arg: dict[str, Any]) -> 
         ls.window_show_message(
             types.ShowMessageParams(
                 types.MessageType.Info,
-                pick(
-                    loc,
-                    f"{label}: kept the labels on lines {', '.join(str(i) for i in result['kept'])}: a jump whose "
-                    "label is computed, or a jump of another file, may land on them.",
-                    f"{label}：第 {', '.join(str(i) for i in result['kept'])} 行的顺序号保持不变："
-                    "运算得出顺序号的跳转或其他文件的跳转可能落在这些顺序号上。",
-                ),
+                t("labels_kept", loc, label=label, lines=", ".join(str(i) for i in result["kept"])),
             )
         )
     return result

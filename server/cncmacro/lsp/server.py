@@ -3,13 +3,14 @@
 ``CncMacroServer`` holds everything the features read. Document sync is handled here rather
 than by pygls's own text store, so that an edit goes straight to the cached parser and the
 text is never copied. Each LSP method is answered by a function in its own module (hover,
-navigation, symbols, ...), registered in ``build_server``. pygls answers an exception in a
+navigation, symbols, ...), named in ``FEATURES`` and registered by ``build_server``. pygls answers an exception in a
 handler with an error response and keeps serving; the error is also logged here.
 """
 
 from __future__ import annotations
 
 import asyncio
+import importlib
 import inspect
 import json
 import logging
@@ -17,7 +18,7 @@ import os
 import sys
 import threading
 import time
-from collections.abc import Iterable
+from collections.abc import Callable, Generator, Iterable, Iterator
 from pathlib import Path
 from typing import Any, cast
 
@@ -44,6 +45,7 @@ log = logging.getLogger(__name__)
 CONFIGURATION_TIMEOUT = 2.0  # seconds to wait for the editor's settings before analysing
 DOCUMENT_DIALECT = "cncmacro/documentDialect"  # {"uri"} -> {"dialect", "title", "lathe", "source"} or null
 PROFILES = "cncmacro/profiles"  # {} -> [{"name", "title", "summary", "summaryZh", "aliases", "lathe", ...}]
+_Handler = tuple[Callable[..., Any], tuple[Any, ...], None]  # what an lsp_method yields to pygls: handler, arguments
 
 
 class CncMacroProtocol(LanguageServerProtocol):
@@ -102,7 +104,7 @@ class CncMacroProtocol(LanguageServerProtocol):
         return self._converter.unstructure(value)
 
     @lsp_method(types.INITIALIZE)
-    def lsp_initialize(self, params: types.InitializeParams):
+    def lsp_initialize(self, params: types.InitializeParams) -> Generator[Any, Any, types.InitializeResult]:
         """pygls answers with the first encoding the client lists (``utf-8`` for Neovim and
         Helix); this server picks the one it converts cheapest (``positions.negotiate``), reads
         and writes every column in it, and says so. pygls's own workspace (it holds no document
@@ -121,17 +123,17 @@ class CncMacroProtocol(LanguageServerProtocol):
         return result
 
     @lsp_method(types.TEXT_DOCUMENT_DID_OPEN)
-    def lsp_text_document__did_open(self, params: types.DidOpenTextDocumentParams):
+    def lsp_text_document__did_open(self, params: types.DidOpenTextDocumentParams) -> Iterator[_Handler]:
         if (handler := self.fm.features.get(types.TEXT_DOCUMENT_DID_OPEN)) is not None:
             yield handler, (params,), None
 
     @lsp_method(types.TEXT_DOCUMENT_DID_CHANGE)
-    def lsp_text_document__did_change(self, params: types.DidChangeTextDocumentParams):
+    def lsp_text_document__did_change(self, params: types.DidChangeTextDocumentParams) -> Iterator[_Handler]:
         if (handler := self.fm.features.get(types.TEXT_DOCUMENT_DID_CHANGE)) is not None:
             yield handler, (params,), None
 
     @lsp_method(types.TEXT_DOCUMENT_DID_CLOSE)
-    def lsp_text_document__did_close(self, params: types.DidCloseTextDocumentParams):
+    def lsp_text_document__did_close(self, params: types.DidCloseTextDocumentParams) -> Iterator[_Handler]:
         if (handler := self.fm.features.get(types.TEXT_DOCUMENT_DID_CLOSE)) is not None:
             yield handler, (params,), None
 
@@ -286,26 +288,30 @@ async def _pull_configuration(server: CncMacroServer) -> None:
         server.apply_settings(Settings.from_mapping(result[0]))
 
 
-def build_server() -> CncMacroServer:
-    """A server with every feature registered."""
-    from . import (
-        call_hierarchy,
-        code_actions,
-        completion,
-        cycle_lenses,
-        folding,
-        formatting,
-        highlight,
-        hover,
-        inlay_hints,
-        inline_values,
-        navigation,
-        semantic_tokens,
-        sequence_numbers,
-        signature_help,
-        symbols,
-    )
+# The modules of lsp/ that answer the editor's requests, each adding its handlers with its
+# ``register(server)``, in the order ``build_server`` registers them: a new feature is one line here.
+FEATURES = (
+    "hover",
+    "navigation",
+    "highlight",
+    "symbols",
+    "folding",
+    "semantic_tokens",
+    "completion",
+    "signature_help",
+    "code_actions",
+    "inlay_hints",
+    "sequence_numbers",
+    "formatting",
+    "call_hierarchy",
+    "inline_values",
+    "cycle_lenses",
+)
 
+
+def build_server() -> CncMacroServer:
+    """A server with its own handlers (initialisation, document sync, the workspace, the client's
+    custom requests) and every module of ``FEATURES`` registered."""
     server = CncMacroServer()
 
     server.feature(types.INITIALIZE)(_initialize)
@@ -366,24 +372,8 @@ def build_server() -> CncMacroServer:
         """The control profiles this server knows (the client's picker and status bar)."""
         return profile_facts()
 
-    for module in (
-        hover,
-        navigation,
-        highlight,
-        symbols,
-        folding,
-        semantic_tokens,
-        completion,
-        signature_help,
-        code_actions,
-        inlay_hints,
-        sequence_numbers,
-        formatting,
-        call_hierarchy,
-        inline_values,
-        cycle_lenses,
-    ):
-        module.register(server)
+    for name in FEATURES:  # by name: its line in FEATURES is all a new feature needs here
+        importlib.import_module(f"{__package__}.{name}").register(server)
     return server
 
 

@@ -59,7 +59,7 @@ def serve_stdio(server: CncMacroServer, stdin: BinaryIO, stdout: BinaryIO) -> in
     except KeyboardInterrupt:
         pass
     finally:
-        server.shutdown()
+        server.shutdown()  # type: ignore[no-untyped-call]  # pygls's Server.shutdown has no annotations
     return 0
 
 

@@ -1,11 +1,13 @@
-"""The words the language server itself shows (hover headings, hint labels), in English and
-simplified Chinese. What a code or variable means comes from the dialect tables, not from here."""
+"""The words the language server itself shows (hover headings and texts, hint labels, quick fix
+titles, progress and messages), in English and simplified Chinese: the one place of the editor's
+own texts, each key with both (no other module of ``lsp/`` writes Chinese). What a code or variable
+means comes from the dialect tables, what a check finds from the analysis, not from here."""
 
 from __future__ import annotations
 
 from ..bilingual import pick
 
-_TEXTS: dict[str, tuple[str, str]] = {
+TEXTS: dict[str, tuple[str, str]] = {
     "local": ("Local variable", "局部变量"),
     "common": ("Common variable (cleared at power-off)", "公共变量（断电清除）"),
     "persistent": ("Common variable (kept at power-off)", "公共变量（断电保持）"),
@@ -54,9 +56,90 @@ _TEXTS: dict[str, tuple[str, str]] = {
     "reads": ("reads", "读取"),
     "more": ("more", "更多"),
     "not_here": ("this dialect does not read abbreviations", "本系统不支持关键字缩写"),
+    "short_for": ("**{text}** — short for **{word}**", "**{text}** — **{word}** 的缩写"),
+    # hover on a corner word (``,C`` ``,R`` ``,A``)
+    "corner_C": (
+        "chamfer: a straight cut of this length across the corner between this move and the next",
+        "倒角：在本段与下一段移动之间的拐角处切出此长度的直线",
+    ),
+    "corner_R": (
+        "corner radius: an arc of this radius rounds the corner between this move and the next",
+        "拐角圆弧：以此半径的圆弧连接本段与下一段移动之间的拐角",
+    ),
+    "corner_A": ("angle of the move (direct drawing dimension programming)", "移动的角度（图纸尺寸直接输入）"),
+    "corner_run": (
+        "The simulator runs the move as written: the toolpath shows the sharp corner.",
+        "模拟器按所写路径运行：刀路显示未倒角的尖角。",
+    ),
+    "corner_not_in_manual": (
+        "Not in the manual of *{title}*, which writes chamfers as L and corner arcs as D.",
+        "*{title}* 的说明书中没有此写法，其倒角写作 L（直线）和 D（圆弧）。",
+    ),
+    # hover on the M99 of a conditional jump (Haas)
+    "conditional_m99": (
+        "**[cond] M99 P n** — Conditional jump (Haas): to block Nn when the condition holds, otherwise on to "
+        "the next block; the same as IF [cond] GOTO n",
+        "**[条件] M99 P n** — 条件跳转（哈斯）：条件成立时转到 Nn 程序段，否则继续执行下一段；等同于 IF [条件] GOTO n",
+    ),
+    "conditional_m99_refused": (
+        "{title} does not read it: the control stops at this block with alarm 114",
+        "{title} 不接受这种写法：执行到此程序段时报警 114",
+    ),
+    # hover: the cycle time
+    "starts_at": (
+        "Cycle time: this block starts at ≈ {shown} (the first time it runs)",
+        "加工时间：本程序段约在第 {shown} 开始（首次执行时）",
+    ),
+    # inlay hints
+    "vacant": ("<vacant>", "<空>"),
+    # quick fixes
+    "fix_comment": (
+        "Read this file as {title}: add (cncmacro: dialect={name})",
+        "按 {title} 读取此文件：加上 (cncmacro: dialect={name})",
+    ),
+    "fix_machine": (
+        'Set base = "{name}" in .cncmacro.toml (every file of the workspace)',
+        '在 .cncmacro.toml 中设定 base = "{name}"（对工作区所有文件生效）',
+    ),
+    "fix_split": ("Split: move {words} to a block before the {name}", "拆分：把 {words} 移到 {name} 之前的单独程序段"),
+    "fix_clamp": ("Clamp the repeat count to {value}", "把重复次数改为{value}"),
+    "fix_expand": ("Write {word} in full", "把{text}写全为{word}"),
+    "fix_if_goto": ("Write it as {text}", "改写为 {text}"),
+    # the sequence-number commands
+    "renumber": ("Renumber sequence numbers", "重新编排顺序号"),
+    "add_numbers": ("Add missing sequence numbers", "补上缺少的顺序号"),
+    "remove_numbers": ("Remove unused sequence numbers", "删除无用的顺序号"),
+    "keep_labels": ("Keep those labels unchanged", "保留这些顺序号不变"),
+    "cancel": ("Cancel", "取消"),
+    "and_more": ("; and {more} more", "；另有 {more} 处"),
+    "refused": ("{label}: refused. {text}", "{label}：已拒绝。{text}"),
+    "nothing_to_change": ("Nothing to change.", "没有需要修改的地方。"),
+    "labels_kept": (
+        "{label}: kept the labels on lines {lines}: a jump whose label is computed, or a jump of another file, "
+        "may land on them.",
+        "{label}：第 {lines} 行的顺序号保持不变：运算得出顺序号的跳转或其他文件的跳转可能落在这些顺序号上。",
+    ),
+    # work done progress of an analysis
+    "reading_lines": ("reading {lines:,} lines", "读取 {lines:,} 行"),
+    "analysing_lines": ("analysing {lines:,} lines", "分析 {lines:,} 行"),
+    "stopped": ("stopped", "已停止"),
+    "done": ("done", "完成"),
+    # folders and files the workspace scan did not read
+    "not_read_one": (
+        "cncmacro: 1 folder or file in the workspace was not read: {named}",
+        "cncmacro：工作区中有 1 个文件夹或文件未读取：{named}",
+    ),
+    "not_read": (
+        "cncmacro: {count} folders or files in the workspace were not read: {named}",
+        "cncmacro：工作区中有 {count} 个文件夹或文件未读取：{named}",
+    ),
+    "more_in_output": ("; {more} more in the output", "；其余 {more} 个见输出窗口"),
+    "more_not_read": ("... and {more} more folders or files not read", "……另有 {more} 个文件夹或文件未读取"),
 }
 
 
-def t(key: str, locale: str | None) -> str:
-    en, zh = _TEXTS[key]
-    return pick(locale, en, zh)
+def t(key: str, locale: str | None, **values: object) -> str:
+    """The text ``key`` in the language of ``locale``, its ``{name}`` places filled from ``values``."""
+    en, zh = TEXTS[key]
+    text = pick(locale, en, zh)
+    return text.format(**values) if values else text

@@ -4,9 +4,10 @@
 one-call form that the command line uses.
 """
 
-from .alarms import Alarm, CallSite, MacroAlarm
-from .machine import Machine, RunResult, Snapshot
+from .alarms import Alarm, CallLevel, MacroAlarm
+from .machine import Machine
 from .observer import RunObserver
+from .run_records import RunResult, Snapshot
 from .status import RunStatus
 
-__all__ = ["Alarm", "CallSite", "Machine", "MacroAlarm", "RunObserver", "RunResult", "RunStatus", "Snapshot"]
+__all__ = ["Alarm", "CallLevel", "Machine", "MacroAlarm", "RunObserver", "RunResult", "RunStatus", "Snapshot"]

@@ -1,6 +1,7 @@
 """Alarms as structured results: a number, a message, and where the run was.
 
-Inside the interpreter an alarm travels as ``MacroAlarm`` (number and message). The run loop
+Inside the interpreter an alarm travels as ``MacroAlarm`` (number and message: planner/alarms.py,
+where the planner raises it too). The run loop
 turns it into an ``Alarm`` with the file, the line and the call chain that reached it, which
 is what the command line, the diagnostics and the debugger show.
 """
@@ -11,19 +12,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from ..bilingual import detail
-from ..dialects.alarms import alarm_text
-
-
-class MacroAlarm(Exception):
-    """Raised while a block executes. ``message`` is a ``texts.Detail`` (English, with its
-    Chinese) where the interpreter writes it, and defaults to the alarm's standard text."""
-
-    def __init__(self, number: int, message: str | None = None, subject: str | None = None) -> None:
-        self.number = number
-        self.message = message or detail(alarm_text(number), alarm_text(number, "zh"))
-        self.subject = subject  # what the alarm is about where one number covers several things
-        super().__init__(f"alarm {number}: {self.message}")
+from ..planner.alarms import MacroAlarm as MacroAlarm
 
 
 def raiser(number: int, message: str) -> Callable[..., Any]:
@@ -37,8 +26,8 @@ def raiser(number: int, message: str) -> Callable[..., Any]:
 
 
 @dataclass(frozen=True, slots=True)
-class CallSite:
-    """One level of the call chain: the program and the line of the call in it."""
+class CallLevel:
+    """One level of a run's call chain (``Alarm.chain``): the program and the line of the call in it."""
 
     program: str
     file: str
@@ -55,7 +44,7 @@ class Alarm:
     message: str
     file: str
     line: int
-    chain: tuple[CallSite, ...] = ()
+    chain: tuple[CallLevel, ...] = ()
     subject: str | None = None  # e.g. "repeat-count", "label-range", "jump-into-loop"
 
     def describe(self) -> str:

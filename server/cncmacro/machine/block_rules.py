@@ -29,7 +29,7 @@ from ..bilingual import Detail, detail
 from ..dialects.alarms import DECIMAL_POINT, FORMAT, G_ARGUMENT, IMPROPER_G_CODE, NC_AND_MACRO, PROGRAM_NOT_FOUND
 from ..dialects.dialect import Dialect
 from ..syntax.nodes import Block, If, Number, Statement, Word
-from .calls import Call, code_value, codes_before_call, g_code_name, recognise_call
+from .calls import BlockCall, code_value, codes_before_call, g_code_name, recognise_call
 from .words import (
     abbreviation_refused,
     conditional_m99_refused,
@@ -77,7 +77,7 @@ def validate_block(
     dialect: Dialect,
     calls: Mapping[str, object] | None = None,
     value: Callable[[Word], float | None] = code_value,
-    call: Call | EllipsisType | None = ...,
+    call: BlockCall | EllipsisType | None = ...,
 ) -> list[BlockProblem]:
     """The problems of ``block`` that the block alone decides, in the interpreter's order.
     ``calls`` are the machine file's call codes; ``value`` gives a word's value when it is known

@@ -23,6 +23,7 @@ from ..dialects.alarms import (
     WRITE_PROTECTED,
 )
 from ..library.programs import LoadedFile
+from ..planner.numbers import MAX_VALUE, format_value, round_half_away, to_increment
 from ..syntax.nodes import (
     Assign,
     Block,
@@ -45,7 +46,6 @@ from .alarms import MacroAlarm, raiser
 from .block_rules import DIALECT_FORMS, first_alarm, validate_block
 from .corners import with_corners
 from .expressions import ExpressionCompiler, Getter
-from .numbers import MAX_VALUE, format_value, round_half_away, to_increment
 from .variables import out_of_range
 
 if TYPE_CHECKING:
@@ -318,7 +318,7 @@ class CompiledFile:
         n = float(label)
 
         def labelled(m: Machine, pc: int) -> int:
-            m.codes["N"] = n
+            m.planner.codes["N"] = n
             return run(m, pc)
 
         return labelled
@@ -525,10 +525,10 @@ class CompiledFile:
         if letter == "F":
             return v
         if letter in DECIMAL_LETTERS:
-            return to_increment(v, 4 if self.machine.modal.get("units") == 20.0 else 3)
+            return to_increment(v, 4 if self.machine.planner.modal.get("units") == 20.0 else 3)
         if literal and not point and self.machine.settings.decimal_point == "increment":
             v = v / 1000.0
-        return to_increment(v, 4 if self.machine.modal.get("units") == 20.0 else 3)
+        return to_increment(v, 4 if self.machine.planner.modal.get("units") == 20.0 else 3)
 
     def nc_block(self, block: Block, pc: int, nxt: int) -> Runner:
         return nc_blocks.compile_nc_block(self, block, pc, nxt)

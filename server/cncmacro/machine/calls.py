@@ -22,33 +22,16 @@ from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, COUNT_TWICE, G_ARGUMENT, P_VALUE_RANGE
 from ..dialects.dialect import ARGUMENTS_I, Dialect
 from ..library.machine_file import CallCode
+from ..planner.modal_groups import g_code_groups
+from ..planner.numbers import round_half_away, to_increment, to_int
 from ..syntax.nodes import Number, Word
 from .alarms import MacroAlarm
-from .numbers import round_half_away, to_increment, to_int
 from .word_sets import WordSet
 
 NOT_ARGUMENTS = frozenset("GLNOP")
 MACRO_CALLS = (65.0, 66.0)  # G65, G66
 SUBPROGRAM_CALLS = (98.0, 198.0)  # M98, M198
 MAX_REPEAT = 9999
-_G_GROUPS: dict[str, dict[float, str]] = {}
-
-
-def g_code_groups(dialect: Dialect) -> dict[float, str]:
-    """G code -> the name of its modal group in the dialect's code table (one-shot codes are
-    absent): what a G word in a block sets."""
-    groups = _G_GROUPS.get(dialect.data_module)
-    if groups is None:
-        groups = {}
-        for doc in dialect.g_codes():
-            try:
-                code = float(doc.code[1:])
-            except ValueError:
-                continue
-            if doc.group:
-                groups[code] = doc.group
-        _G_GROUPS[dialect.data_module] = groups
-    return groups
 
 
 def codes_before_call(words: list[tuple[str, float | None]], dialect: Dialect) -> list[float] | None:
@@ -267,7 +250,7 @@ def letters_for_local(number: int) -> tuple[str | None, str | None]:
 
 
 @dataclass(frozen=True, slots=True)
-class Call:
+class BlockCall:
     """The call a block makes. ``kind`` is ``G65``, ``G66``, ``M98``, ``M198``, the dialect's local
     call (``M97``, ``local``) or a code of the machine file (``G100``, ``M50``, ``T``,
     ``configured``); ``code`` is the word that makes it, ``at`` its index among the block's words.
@@ -321,8 +304,8 @@ def recognise_call(
     dialect: Dialect,
     calls: Mapping[str, CallCode] | Mapping[str, object] | None = None,
     value: Callable[[Word], float | None] = code_value,
-) -> Call | None:
-    """The call that a block of these ``words`` makes, or None (see ``Call``). ``calls`` are the
+) -> BlockCall | None:
+    """The call that a block of these ``words`` makes, or None (see ``BlockCall``). ``calls`` are the
     machine file's call codes; ``value`` gives a word's value when it is known without running
     (the literal by default; the interpreter also folds constant expressions). G65/G66 come
     first, wherever they stand; then a configured code, M98/M198, and the local call."""
@@ -351,8 +334,8 @@ def recognise_call(
                 macro = configured.call == "macro"
                 count = next((a for a in words if a.letter == "L"), None)
                 args = tuple(a for a in words if a is not w and a.letter != "L" and not _same_code(a, code, value))
-                return Call(code, w, i, w, configured.program, count=count, repeats=_literal_count(count),
-                            arguments=args if macro else (), macro=macro, configured=True)  # fmt: skip
+                return BlockCall(code, w, i, w, configured.program, count=count, repeats=_literal_count(count),
+                                 arguments=args if macro else (), macro=macro, configured=True)  # fmt: skip
     if not m_at:
         return None
     ms = [(i, words[i], value(words[i])) for i in m_at]
@@ -370,15 +353,17 @@ def recognise_call(
         count = _last(words, "L")
         if wanted == local:
             label = _label(p)
-            return Call(f"M{local:g}", w, i, p, label=label, count=count, repeats=_literal_count(count), local=True)
+            return BlockCall(
+                f"M{local:g}", w, i, p, label=label, count=count, repeats=_literal_count(count), local=True
+            )
         q = _last(words, "Q")
         number, repeats = _subprogram_number(p, count, dialect)
         name = p.name if p is not None else None
-        return Call("M98" if wanted == 98.0 else "M198", w, i, p, number, name, _label(q), count, repeats)
+        return BlockCall("M98" if wanted == 98.0 else "M198", w, i, p, number, name, _label(q), count, repeats)
     return None
 
 
-def _macro_call(words: Sequence[Word], at: int, g: float, dialect: Dialect) -> Call:
+def _macro_call(words: Sequence[Word], at: int, g: float, dialect: Dialect) -> BlockCall:
     """The G65 or G66 call (``g``) of ``words[at]``."""
     code = words[at]
     kind = "G65" if g == 65.0 else "G66"
@@ -386,7 +371,7 @@ def _macro_call(words: Sequence[Word], at: int, g: float, dialect: Dialect) -> C
     p = next((w for w in after if w.letter == "P"), None)
     count = next((w for w in after if w.letter == "L"), None)
     if kind == "G65" and dialect.h_codes and count is None and any(w.letter == "H" for w in after):
-        return Call(kind, code, at, p, arithmetic=True)
+        return BlockCall(kind, code, at, p, arithmetic=True)
     number = None
     if p is not None and p.value.__class__ is Number:
         try:
@@ -395,8 +380,8 @@ def _macro_call(words: Sequence[Word], at: int, g: float, dialect: Dialect) -> C
             number = None
     args = tuple(w for w in after if w.letter not in ("P", "L"))
     name = p.name if p is not None else None
-    return Call(kind, code, at, p, number, name, count=count, repeats=_literal_count(count), arguments=args,
-                macro=True)  # fmt: skip
+    return BlockCall(kind, code, at, p, number, name, count=count, repeats=_literal_count(count), arguments=args,
+                     macro=True)  # fmt: skip
 
 
 def _subprogram_number(p: Word | None, count: Word | None, dialect: Dialect) -> tuple[int | None, int | None]:

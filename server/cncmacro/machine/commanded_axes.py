@@ -16,7 +16,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from .frames import Move
+from ..planner.moves import Move
 
 if TYPE_CHECKING:
     from .machine import Machine

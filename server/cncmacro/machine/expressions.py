@@ -26,9 +26,9 @@ from ..dialects.alarms import (
     OVERFLOW,
     VARIABLE_NUMBER,
 )
-from ..syntax.nodes import Binary, Bracket, Call, Expr, IndirectVar, NamedVar, Number, Relation, Unary, Var
+from ..planner.numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away, to_increment
+from ..syntax.nodes import Binary, Bracket, Expr, FunctionCall, IndirectVar, NamedVar, Number, Relation, Unary, Var
 from .alarms import MacroAlarm, raiser
-from .numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away, to_increment
 from .variables import named_number
 
 if TYPE_CHECKING:
@@ -61,7 +61,7 @@ def bracket_depth(node: Expr) -> int:
             d += 1
             best = max(best, d)
             stack.append((n.inner, d))
-        elif isinstance(n, Call):
+        elif isinstance(n, FunctionCall):
             inner = d + 1
             best = max(best, inner)
             stack.extend((a, inner) for a in n.args)
@@ -193,7 +193,7 @@ class ExpressionCompiler:
             if isinstance(node.left, Binary) and _spine_length(node) > LONG_CHAIN:
                 return self._chain(node)
             return self._binary(node)
-        if isinstance(node, Call):
+        if isinstance(node, FunctionCall):
             return self._call(node)
         if isinstance(node, Relation):
             return raiser(
@@ -368,7 +368,7 @@ class ExpressionCompiler:
             return bitwise
         return raiser(FORMAT, detail(f"unknown operator {op}", f"未知的运算符 {op}"))
 
-    def _call(self, node: Call) -> Getter:
+    def _call(self, node: FunctionCall) -> Getter:
         name = node.name
         problem = call_problem(node, self.dialect)
         if problem is not None:
@@ -492,7 +492,7 @@ _SHAPES = {
 }
 
 
-def call_problem(node: Call, dialect: Dialect) -> tuple[str, str] | None:
+def call_problem(node: FunctionCall, dialect: Dialect) -> tuple[str, str] | None:
     """Why a call cannot run on ``dialect`` (docs/semantics.md §3), or None: (``dialect-feature``
     when the function or form is another dialect's, ``syntax`` when no dialect has it, with a
     bilingual message). Either is alarm 114 when the block runs."""

@@ -1,4 +1,5 @@
-"""The records the interpreter keeps while it runs: call frames, modal calls, moves, notes.
+"""The records the macro machine keeps while it runs: call frames, modal calls, notes (a
+run's moves are the planner's: planner/moves.py).
 
 A ``Frame`` is one program level: the main program, or a program entered by G65, G66,
 M98 or a call code. Macro calls (G65, G66, call codes) own a fresh set of locals
@@ -9,16 +10,13 @@ snapshots, so everything in them is a plain value or a list the snapshot copies.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, NamedTuple
+from typing import TYPE_CHECKING
 
 from ..library.programs import FoundProgram
-from .alarms import CallSite
-from .numbers import format_plain
+from .alarms import CallLevel
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile
-
-MODE_NAMES = {0.0: "G00", 1.0: "G01", 2.0: "G02", 3.0: "G03", 31.0: "G31"}
 
 
 @dataclass(slots=True)
@@ -70,50 +68,6 @@ class ModalCall:
     level: int
 
 
-class Move(NamedTuple):
-    """One executed motion: where (file, 0-based line), the motion code (0, 1, 2, 3, a cycle
-    or 31 for a skip), the end points in work coordinates before and after, one value per
-    axis in the dialect's order, the feed, and for a G02/G03 arc its centre (arcs.py): one
-    value per axis like the end points (X a diameter on a lathe), the axes off the arc's
-    plane keeping their start values; None for every other move. ``seconds`` is the time the
-    move takes (cycle_time.py)."""
-
-    file: str
-    line: int
-    mode: float
-    start: tuple[float, ...]
-    end: tuple[float, ...]
-    feed: float
-    centre: tuple[float, ...] | None
-    seconds: float
-
-    def text(self, axes: tuple[str, ...], shown: list[int] | None = None) -> str:
-        """``G01  X0.000 Y0.000 -> X10.000 Y5.000  F200`` for a person: the axes in ``shown``
-        (``commanded_axes.CommandedAxes`` gives those the program has named so far; without
-        them, or with none, those that moved, and every axis when none did, so that a move to
-        where the tool already is still says where that is: never an empty ``->``) and the feed
-        of a cutting move."""
-        if not shown:
-            shown = [i for i in range(len(axes)) if self.start[i] != self.end[i]] or list(range(len(axes)))
-        mode = MODE_NAMES.get(self.mode, f"G{self.mode:g}")
-        start = " ".join(f"{axes[i]}{self.start[i]:.3f}" for i in shown)
-        end = " ".join(f"{axes[i]}{self.end[i]:.3f}" for i in shown)
-        feed = f"  F{format_plain(self.feed)}" if self.mode != 0.0 and self.feed else ""
-        return f"{mode:<4} {start} -> {end}{feed}"
-
-
-class ToolChange(NamedTuple):
-    """A tool change (cycle_time.py): where (file, 0-based line), the T in force, and the
-    clock (seconds) and the cut and rapid path (mm) before it."""
-
-    file: str
-    line: int
-    tool: float | None
-    clock: float
-    cut: float
-    rapid: float
-
-
 @dataclass(frozen=True, slots=True)
 class Note:
     """Something a run noticed that is not an alarm (a clamped L, arguments out of order, a
@@ -124,4 +78,4 @@ class Note:
     file: str
     line: int
     subject: str | None = None  # e.g. "repeat-count" for a clamped L
-    chain: tuple[CallSite, ...] = ()  # the calls that led there, main program first
+    chain: tuple[CallLevel, ...] = ()  # the calls that led there, main program first

@@ -14,9 +14,9 @@ from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, DIVISION_BY_ZERO, FORMAT
+from ..planner.numbers import bcd, bin_, round_half_away
 from ..syntax.nodes import Block, IndirectVar, Number, Var, Word
 from .alarms import MacroAlarm, raiser
-from .numbers import bcd, bin_, round_half_away
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile, Runner

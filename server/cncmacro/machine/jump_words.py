@@ -9,7 +9,7 @@ the run jumps by it:
   called program starts at its Nn (kind ``M98 Q``, M198's too: it lands by the same rule);
 - the P of the dialect's local subprogram call (Haas ``M97 P n``, ``local_call_kind``), a label
   of the program itself;
-- the P of gsk980tdi's ``G65 H80``–``H86`` branches (``Call.arithmetic``; the last H and P, as
+- the P of gsk980tdi's ``G65 H80``–``H86`` branches (``BlockCall.arithmetic``; the last H and P, as
   ``hcodes.py`` reads them; kind ``H8x``). Where the control has no macro A, ``G65 H81 P1000``
   calls O1000 with the argument H and jumps nowhere;
 - the P of ``M99`` in a block that makes no call (the first P, as ``nc_blocks.py`` reads it;

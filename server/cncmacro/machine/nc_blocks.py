@@ -22,7 +22,7 @@ from ..syntax.nodes import Block, Bracket, Number, Var, Word
 from .alarms import MacroAlarm, raiser
 from .block_rules import CALL_WITHOUT_P, BlockProblem, first_alarm, validate_block
 from .calls import (
-    Call,
+    BlockCall,
     codes_before_call,
     macro_program_number,
     map_arguments,
@@ -35,9 +35,9 @@ from .program_end import END_CODES, RETURN_CODE
 from .words import g_code_known, unknown_g_code
 
 if TYPE_CHECKING:
+    from ..planner.plain_words import PlainPlan, PlainRun
     from .blocks import CompiledFile, Runner
     from .machine import Machine
-    from .motion import PlainPlan, PlainRun
 
 CONTROL_M = {98.0, RETURN_CODE, *END_CODES, 0.0, 198.0}  # calls, return, end, M00
 
@@ -84,7 +84,7 @@ def _known_value(cf: CompiledFile) -> Callable[[Word], float | None]:
 def compile_plain_line(cf: CompiledFile, text: str, nxt: int) -> Runner | None:
     """``_plain_motion`` for a line kept as text (``Block.plain``), read without building
     syntax nodes; None when the line needs the general path."""
-    plan = cf.machine.plain_text_plan(text)
+    plan = cf.machine.planner.plain.text_plan(text)
     return None if plan is None else _plan_runner(cf, plan, nxt)
 
 
@@ -104,7 +104,7 @@ def _plain_motion(cf: CompiledFile, block: Block, nxt: int) -> Runner | None:
         if v is None:
             continue
         words.append((letter, v))
-    plan = cf.machine.plain_plan(words)
+    plan = cf.machine.planner.plain.plan(words)
     return None if plan is None else _plan_runner(cf, plan, nxt)
 
 
@@ -115,7 +115,7 @@ def _plan_runner(cf: CompiledFile, plan: PlainPlan, nxt: int) -> Runner:
 
 
 def _run_plain_line(plan: PlainRun, m: Machine, pc: int) -> int:
-    if m.run_plain(plan, pc) and m.modal_calls:
+    if m.planner.run_plain(plan, pc) and m.modal_calls:
         return m.modal_call(pc, plan[6])
     return plan[6]
 
@@ -124,7 +124,7 @@ def _run_plain_line(plan: PlainRun, m: Machine, pc: int) -> int:
 
 
 def _macro_call(
-    cf: CompiledFile, block: Block, words: list[Word], call: Call, problems: list[BlockProblem], nxt: int
+    cf: CompiledFile, block: Block, words: list[Word], call: BlockCall, problems: list[BlockProblem], nxt: int
 ) -> Runner:
     name = call.kind
     dialect = cf.machine.dialect
@@ -149,7 +149,7 @@ def _macro_call(
 
     def evaluate(m: Machine, pc: int) -> tuple[Any, Any, int]:
         if before:
-            m.execute_nc(before, path, pc)
+            m.planner.execute_nc(before, path, pc)
         found = resolve(m)
         arguments = map_arguments([(letter, get(m)) for letter, get in arg_values], dialect)
         notes: list[str] = []
@@ -205,7 +205,7 @@ def _program_resolver(cf: CompiledFile, p_word: Word | None, missing: BlockProbl
 
 
 def _nc(
-    cf: CompiledFile, block: Block, words: list[Word], nxt: int, problems: list[BlockProblem], call: Call | None
+    cf: CompiledFile, block: Block, words: list[Word], nxt: int, problems: list[BlockProblem], call: BlockCall | None
 ) -> Runner:
     """An NC block: words evaluated, NC executed, then M98 / M99 / M30 / M00 and call codes."""
     items: list[tuple[str, float | None, Any]] = []  # (letter, rounded literal, or a getter)
@@ -236,7 +236,7 @@ def _nc(
         plain = [(letter, v) for letter, v in constant if v is not None]
 
         def motion(m: Machine, pc: int) -> int:
-            moved, skip_to = m.execute_nc(plain, file_path, pc)
+            moved, skip_to = m.planner.execute_nc(plain, file_path, pc)
             return _after_nc(m, moved, skip_to, pc, nxt)
 
         return motion
@@ -276,7 +276,7 @@ def _nc(
         nc_words = values
         if mcontrol and (98.0 in mcontrol or RETURN_CODE in mcontrol or 198.0 in mcontrol or local in mcontrol):
             nc_words = [(letter, v) for letter, v in values if letter not in ("P", "L", "Q")]
-        moved, skip_to = m.execute_nc(nc_words, file_path, pc)
+        moved, skip_to = m.planner.execute_nc(nc_words, file_path, pc)
         if found_call is not None:
             return m.code_subprogram_call(*found_call, values, pc, nxt)
         if 98.0 in mcontrol or 198.0 in mcontrol:

@@ -23,7 +23,7 @@ line runs again after a given point of an earlier run.
 
 from __future__ import annotations
 
-from .alarms import CallSite
+from .alarms import CallLevel
 
 Value = float | None
 
@@ -41,7 +41,7 @@ class RunObserver:
         """``line`` of ``file`` runs, as block ``step`` of the run, for the first time since the
         floor was last raised."""
 
-    def vacant_argument(self, number: int, file: str, line: int, chain: tuple[CallSite, ...]) -> None:
+    def vacant_argument(self, number: int, file: str, line: int, chain: tuple[CallLevel, ...]) -> None:
         """A macro read its local ``#number`` on ``line`` vacant, and its caller did not pass it."""
 
     def wrote(self, file: str, line: int, number: int, value: Value) -> None:

@@ -28,3 +28,5 @@ class RunStatus(str, Enum):
 
 
 FINISHED = frozenset({RunStatus.COMPLETED, RunStatus.ALARM, RunStatus.LIMIT, RunStatus.STOPPED})
+# how often (in blocks) a run loop looks whether another thread asked it to stop or pause
+CANCEL_CHECK = 4096

@@ -6,7 +6,7 @@ Compiling each into a runner and then calling it costs more than reading it: mos
 the machine's modal state, position and clock held in locals, until a line that is not
 plain motion, a line the general path must decide (a canned cycle in force, a G code of a
 group with side effects, an address with its own rounding), or the block budget. It does
-exactly what ``Motion.plain_text_plan`` and ``Motion.run_plain`` do for one line (docs/semantics.md
+exactly what ``PlainWords.text_plan`` and ``Planner.run_plain`` (planner/) do for one line (docs/semantics.md
 §8), an arc's centre from its R, I, J, K words included, and a line it declines is left
 untouched for the compiled path. Both run loops use it for a line not compiled yet, when no
 modal call (G66) is in force; such a line stays uncompiled, which also spares an analysis the
@@ -18,10 +18,10 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from .arcs import ARC_MODES
-from .cycle_time import INCH
-from .frames import Move
-from .motion import NOT_PLAIN, PLAIN_ARC_LETTERS, PLAIN_F, PLAIN_G, PLAIN_INCREMENTAL, PLAIN_S
+from ..planner.arcs import ARC_MODES
+from ..planner.cycle_time import INCH
+from ..planner.moves import Move
+from ..planner.plain_words import NOT_PLAIN, PLAIN_ARC_LETTERS, PLAIN_F, PLAIN_G, PLAIN_INCREMENTAL, PLAIN_S
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile
@@ -45,24 +45,25 @@ def run_straight(
     ``tracked`` (a run with an observer, see tracking.py: the observer and the per-line stamps
     of ``cf``'s file), each line run is stamped there as ``run_tracked`` stamps it, ``step``
     being the number of blocks run before ``pc``."""
-    kinds = m.plain_kinds()
+    p = m.planner
+    kinds = p.plain.kinds()
     if not kinds:
         return 0, pc
     program = cf.file.program
     blocks = program.blocks
     n_blocks = program.read_end  # nothing from the closing '%' on
-    g_words = m.plain_g_words()
-    lathe = m._lathe
-    cycles = m._cycle_codes
-    modal = m.modal
-    codes = m.codes
-    clock = m.clock
-    cut = m.cut_length
-    rapid = m.rapid_length
-    times = m.times  # the cycle time's rules (cycle_time.py)
+    g_words = p.plain.g_words()
+    lathe = p.lathe
+    cycles = p.cycle_codes
+    modal = p.modal
+    codes = p.codes
+    clock = p.clock
+    cut = p.cut_length
+    rapid = p.rapid_length
+    times = p.times  # the cycle time's rules (cycle_time.py)
     dist = math.dist if times.scale is None else times.distance
     rapid_seconds = times.rapid_seconds
-    append = m.moves.append if m.record_moves else None
+    append = p.moves.append if p.record_moves else None
     path = cf.file.path
     skipped = cf.skipped
     # The modal state every line reads, kept in locals and written back as lines change it.
@@ -77,10 +78,11 @@ def run_straight(
     per_rev = modal.get("feed") == 95.0 or (lathe and modal.get("feed") == 99.0)
     unit = INCH if modal.get("units") == 20.0 else 1.0
     css = modal.get("spindle") == 96.0
+    plane = modal.get("plane", 17.0)
     f = codes.get("F") or 0.0
     # where the tool is (after the last line run) and where the line being read sends it: one
     # list, changed in place, that each line starts as ``start`` (a line declined is dropped)
-    start = tuple(m.pos)
+    start = tuple(p.pos)
     target = list(start)
     # the lines run are the lines passed but the blank and comment ones (``blanks``): the
     # budget counts the lines run, so each of those moves ``stop`` on by one
@@ -112,7 +114,7 @@ def run_straight(
                 else:
                     target[kind] += float(word[1:])
             elif kind == PLAIN_G:
-                group, v = g_words.get(word) or m.plain_g_word(word)
+                group, v = g_words.get(word) or p.plain.g_word(word)
                 if group == "motion":
                     new_mode = v
                     continue
@@ -158,7 +160,7 @@ def run_straight(
                 break
             if trk is not None:
                 if trk[pc] < floor:
-                    m.clock, m.cut_length, m.rapid_length = clock, cut, rapid  # what the observer reads
+                    p.clock, p.cut_length, p.rapid_length = clock, cut, rapid  # what the observer reads
                     first(path, pc, step + pc - first_pc - blanks)
                 trk[pc] = serial
             if others is not None:
@@ -168,6 +170,7 @@ def run_straight(
                 per_rev = modal.get("feed") == 95.0 or (lathe and modal.get("feed") == 99.0)
                 unit = INCH if modal.get("units") == 20.0 else 1.0
                 css = modal.get("spindle") == 96.0
+                plane = modal.get("plane", 17.0)
             if feed is not None:
                 codes["F"] = feed
                 f = feed or 0.0
@@ -178,8 +181,8 @@ def run_straight(
                     for i, v in inc:
                         target[i] += v
                 end = tuple(target)
-                # the time and length of the move: ``Motion._record``'s rules, inline
-                centre = m.arc_centre(mode, start, end, arc) if arc is not None and mode in ARC_MODES else None
+                # the time and length of the move: ``Planner.record``'s rules, inline
+                centre = p.arc_centre(mode, start, end, arc) if arc is not None and mode in ARC_MODES else None
                 if mode == 0.0:
                     seconds = rapid_seconds(start, end, unit)
                     rapid += dist(start, end) * unit
@@ -187,13 +190,13 @@ def run_straight(
                     if centre is None:
                         length = dist(start, end)
                     else:
-                        length = times.arc_length(mode, modal.get("plane", 17.0), start, end, centre)
+                        length = times.arc_length(mode, plane, start, end, centre)
                     rate = times.feed_rate(f, True, codes.get("S") or 0.0, css, start, end, unit) if per_rev else f
                     seconds = length / rate * _SECONDS_PER_MINUTE if rate > 0.0 else 0.0
                     cut += length * unit
                 clock += seconds
                 if append is not None:
-                    append(_new_move(Move, (path, pc, mode, start, end, f, centre, seconds)))
+                    append(_new_move(Move, (path, pc, mode, start, end, f, centre, seconds, plane, None, None)))
                 start = end
             pc += 1
             continue
@@ -203,8 +206,8 @@ def run_straight(
         while pc < n_blocks and blocks[pc].plain is None and skipped(blocks[pc]):
             pc += 1
     if done:
-        m.pos = list(start)
-    m.clock = clock
-    m.cut_length = cut
-    m.rapid_length = rapid
+        p.pos = list(start)
+    p.clock = clock
+    p.cut_length = cut
+    p.rapid_length = rapid
     return done, pc

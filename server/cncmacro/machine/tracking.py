@@ -32,15 +32,14 @@ from typing import TYPE_CHECKING, Any
 from .alarms import MacroAlarm
 from .frames import Frame
 from .observer import RunObserver
-from .status import RunStatus
+from .status import CANCEL_CHECK, RunStatus
 from .straight_runs import run_straight
 from .variables import StopRequest
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile
-    from .machine import Machine, Snapshot
-
-CANCEL_CHECK = 4096
+    from .machine import Machine
+    from .run_records import Snapshot
 
 
 def track_list(observer: RunObserver, cf: CompiledFile) -> list[int]:
@@ -162,18 +161,19 @@ def _same_frames(a: list[Frame], b: list[Frame]) -> bool:
 
 def same_state(a: Snapshot, b: Snapshot, *, clock: bool) -> bool:
     """Whether runs continuing from ``a`` and from ``b`` behave alike (module docstring)."""
-    if (a.status != b.status or a.alarm is not b.alarm or a.message != b.message or a.extra_wcs != b.extra_wcs
+    am, bm = a.motion, b.motion
+    if (a.status != b.status or a.alarm is not b.alarm or a.message != b.message or am.extra_wcs != bm.extra_wcs
             or a.modal_calls != b.modal_calls or a.written_system != b.written_system
-            or a.skip_state != b.skip_state):  # fmt: skip
+            or am.skip_state != bm.skip_state):  # fmt: skip
         return False
-    if not same_values([a.cycle_start_z], [b.cycle_start_z]):
+    if not same_values([am.cycle_start_z], [bm.cycle_start_z]):
         return False
-    if clock and (a.clock != b.clock or a.timer_marks != b.timer_marks):
+    if clock and (am.clock != bm.clock or a.timer_marks != b.timer_marks):
         return False
-    if not same_values(a.C, b.C) or not _same_map(a.S, b.S) or not _same_map(a.modal, b.modal):
+    if not same_values(a.C, b.C) or not _same_map(a.S, b.S) or not _same_map(am.modal, bm.modal):
         return False
-    if not _same_map(a.codes, b.codes):
+    if not _same_map(am.codes, bm.codes):
         return False
-    if not all(same_values(x, y) for x, y in zip(a.positions, b.positions, strict=True)):
+    if not all(same_values(x, y) for x, y in zip(am.positions, bm.positions, strict=True)):
         return False
     return _same_frames(a.frames, b.frames)

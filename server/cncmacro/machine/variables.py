@@ -16,11 +16,12 @@ from typing import TYPE_CHECKING, Any
 from ..bilingual import detail
 from ..dialects.alarms import NAME_SUBSCRIPT, NO_VARIABLE_NAME, OVERFLOW, VARIABLE_NUMBER, WRITE_PROTECTED
 from ..dialects.tables import SystemVariable
+from ..planner.numbers import MAX_VALUE, round_half_away
 from .alarms import MacroAlarm
-from .numbers import MAX_VALUE, round_half_away
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
+    from ..planner.planner import Planner
     from .expressions import VariableKinds
 
 Value = float | None
@@ -96,9 +97,7 @@ class VariableAccess:
     L: list[Value]
     C: list[Value]
     S: dict[int, Value]
-    modal: dict[str, float]
-    codes: dict[str, Value]
-    clock: float
+    planner: Planner
     start_date: int
     start_time: int
     written_system: set[int]
@@ -183,12 +182,8 @@ class VariableAccess:
             target = int(row.param) + k
             target_row = self.dialect.system_variable(target)
             return self.S.get(target, target_row.default if target_row else 0.0)
-        if source == "modal":
-            return self.modal.get(row.param, row.default)
-        if source == "code":
-            return self.codes.get(row.param, row.default)
-        if source == "position":
-            return self.position_value(row.param, k)
+        if source in ("modal", "code", "position"):  # the planner's state (planner/planner.py)
+            return self.planner.read(source, row.param, row.default, k)
         if source == "timer":
             return self.timer_value(n, row.param)
         if source == "constant":
@@ -230,13 +225,13 @@ class VariableAccess:
     # ---------------------------------------------------------------- the clock
     def timer_value(self, n: int, unit: str) -> float:
         base = self.S.get(n, 0.0) or 0.0
-        seconds = self.clock - self.timer_marks.get(n, 0.0)
+        seconds = self.planner.clock - self.timer_marks.get(n, 0.0)
         scale = {"ms": 1000.0, "s": 1.0, "h": 1.0 / 3600.0}.get(unit, 1.0)
         return base + seconds * scale
 
     def set_timer(self, n: int, unit: str, value: float) -> None:
         self.S[n] = value
-        self.timer_marks[n] = self.clock
+        self.timer_marks[n] = self.planner.clock
 
     timer_marks: dict[int, float]
 
@@ -246,9 +241,5 @@ class VariableAccess:
         t = self.start_time
         start = _dt.datetime(d // 10000, max(1, d // 100 % 100), max(1, d % 100), t // 10000 % 24, t // 100 % 100 % 60,
                              t % 100 % 60)  # fmt: skip
-        now = start + _dt.timedelta(seconds=self.clock)
+        now = start + _dt.timedelta(seconds=self.planner.clock)
         return now.year * 10000 + now.month * 100 + now.day, now.hour * 10000 + now.minute * 100 + now.second
-
-    if TYPE_CHECKING:
-
-        def position_value(self, which: str, axis: int) -> Value: ...  # provided by ``Motion``

@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING
 
 from ..bilingual import Detail, detail
 from ..dialects import get_dialect
+from ..planner.modal_groups import extra_offset_codes
 from ..syntax.nodes import Number, Word
 from .word_sets import WordSet
 
@@ -43,13 +44,6 @@ def known_g_codes(dialect: str) -> frozenset[float]:
         except ValueError:
             continue
     return frozenset(out)
-
-
-def extra_offset_codes(dialect: Dialect) -> frozenset[float]:
-    """The G codes that select an extra work offset by the dialect's switches (Haas ``G154``
-    and ``G110``–``G129``): codes of the control whether or not its table lists them."""
-    code = dialect.extra_offset_code
-    return frozenset(dialect.extra_offset_aliases if code is None else (code, *dialect.extra_offset_aliases))
 
 
 def g_code_known(value: float, dialect: Dialect, calls: Mapping[str, object]) -> bool:

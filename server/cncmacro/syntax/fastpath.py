@@ -25,10 +25,10 @@ from .nodes import (
     Assign,
     Binary,
     Bracket,
-    Call,
     Do,
     End,
     Expr,
+    FunctionCall,
     Goto,
     If,
     IndirectVar,
@@ -343,7 +343,7 @@ class _Reader:
                     close = self.expect(_OP, "]")
             if self.relations and any(_has_relation(a) for a in args):
                 raise _Decline
-            return Call(text, tuple(args), s, close[3])
+            return FunctionCall(text, tuple(args), s, close[3])
         raise _Decline
 
     def bracket(self) -> Bracket:

@@ -24,11 +24,11 @@ from .nodes import (
     Assign,
     Binary,
     Bracket,
-    Call,
     CornerWord,
     Do,
     End,
     Expr,
+    FunctionCall,
     Goto,
     If,
     IndirectVar,
@@ -317,7 +317,7 @@ class _Builder(Transformer[Token, Items]):
         hash_, index = c
         return IndirectVar(index, hash_.start_pos, index.end)
 
-    def call(self, c: _Children) -> Call:
+    def call(self, c: _Children) -> FunctionCall:
         head: _Tok = c[0]
         last: _Tok = c[-1]
         name = self._word(head)
@@ -327,7 +327,7 @@ class _Builder(Transformer[Token, Items]):
                 if _has_relation(a):
                     raise _relation_error(a)
         comma = any(isinstance(x, Token) and x.type == "COMMA" for x in c)
-        return Call(name, args, head.start_pos, last.end_pos, comma)
+        return FunctionCall(name, args, head.start_pos, last.end_pos, comma)
 
 
 _BRACKET_STARTS_BLOCK = detail(
@@ -362,7 +362,7 @@ def _has_relation(expr: Expr) -> bool:
             stack.append(e.inner)
         elif isinstance(e, Unary):
             stack.append(e.operand)
-        elif isinstance(e, Call):
+        elif isinstance(e, FunctionCall):
             stack.extend(e.args)
         elif isinstance(e, IndirectVar):
             stack.append(e.index)
@@ -393,7 +393,7 @@ def _find_relation(expr: Expr) -> Relation:
             sub = getattr(e, attr, None)
             if sub is not None:
                 stack.append(sub)
-        if isinstance(e, Call):
+        if isinstance(e, FunctionCall):
             stack.extend(e.args)
     raise AssertionError("no comparison found")  # only called after _has_relation
 

@@ -110,8 +110,8 @@ class Bracket:
 
 
 @dataclass(slots=True)
-class Call:
-    """A function: ``SIN[x]`` has one argument, ``ATAN[a]/[b]`` two. ``name`` is upper case.
+class FunctionCall:
+    """A function call in an expression: ``SIN[x]`` has one argument, ``ATAN[a]/[b]`` two. ``name`` is upper case.
     ``comma`` is True when the first brackets hold two arguments separated by a comma
     (``POW[a,b]``, ``ATAN[a,b]``, ``PRM[n,axis]``); a ``/[b]`` after them adds one more."""
 
@@ -122,7 +122,7 @@ class Call:
     comma: bool = False
 
 
-Expr = Number | Var | IndirectVar | NamedVar | Unary | Binary | Relation | Bracket | Call
+Expr = Number | Var | IndirectVar | NamedVar | Unary | Binary | Relation | Bracket | FunctionCall
 Variable = Var | IndirectVar | NamedVar
 
 # ---------------------------------------------------------------- words and statements

@@ -13,11 +13,11 @@ from .nodes import (
     Binary,
     Block,
     Bracket,
-    Call,
     CornerWord,
     Do,
     End,
     Expr,
+    FunctionCall,
     Goto,
     If,
     IndirectVar,
@@ -50,7 +50,7 @@ def children(node: Node) -> tuple[Node, ...]:
         return (node.left, node.right)
     if isinstance(node, Bracket):
         return (node.inner,)
-    if isinstance(node, Call):
+    if isinstance(node, FunctionCall):
         return node.args
     if isinstance(node, Word):
         return (node.value,) if node.value is not None else ()

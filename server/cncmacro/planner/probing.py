@@ -6,7 +6,7 @@ where the skip signal comes on. The machine file's ``[skip]`` table (``library/s
 says where that is: the next unused contact point of its sequence, else the first surface of
 its model the move reaches (the smallest fraction of the way along it; surfaces at the same
 place in the order they are written). When nothing is hit the move runs to its end point and
-the signal stays off, as on the control. Either way #5061… (``Machine.skip_pos``, read through
+the signal stays off, as on the control. Either way #5061… (``Planner.skip_pos``, read through
 the profile's "skip" position rows) hold where the move ended, in work coordinates: seed 003
 §4.9, "在G31(跳转功能)程序段中跳转信号接通时的刀具位置储存在变量#5061到#5064中。当G31程序段中
 的跳转信号未接通时，这些变量中储存的是指令的程序段终点值".
@@ -28,7 +28,7 @@ from ..library.skip_model import Circle, SkipModel
 from .numbers import format_plain
 
 if TYPE_CHECKING:
-    from .machine import Machine
+    from .planner import Planner
 
 _EDGE = 1e-9  # a touch this close outside the move's ends (rounding) still counts, at the end
 _SHAPE_NAMES = {"bore": detail("bore", "孔"), "boss": detail("boss", "凸台")}
@@ -43,7 +43,7 @@ class SkipState:
 
 
 class Probe(NamedTuple):
-    """One G31: where (file, 0-based line), the index of its move in ``Machine.moves``, where it
+    """One G31: where (file, 0-based line), the index of its move in ``Planner.moves``, where it
     stopped (work coordinates, one value per axis) and whether the skip signal came on there."""
 
     file: str
@@ -53,7 +53,7 @@ class Probe(NamedTuple):
     hit: bool
 
 
-def skip_block(m: Machine, target: list[float], file: str, line: int) -> None:
+def skip_block(m: Planner, target: list[float], file: str, line: int) -> None:
     """Carry out a G31 to ``target``: move until the skip signal comes on (or to ``target``),
     set the skip position, and record the probe and its note."""
     start = list(m.pos)
@@ -62,8 +62,8 @@ def skip_block(m: Machine, target: list[float], file: str, line: int) -> None:
     m.skip_state = SkipState(used)
     if m.record_moves:  # a run for its diagnostics keeps neither moves nor these
         m.probes.append(Probe(file, line, len(m.moves), tuple(end), what is not None))
-        m.note("skip", _note(m, start, end, what), line)
-    m._move(file, line, 31.0, end)
+        m.host.note("skip", _note(m, start, end, what), line)
+    m.move(file, line, 31.0, end)
     m.skip_pos = list(m.pos)
 
 
@@ -136,7 +136,7 @@ def _circle_hit(
     return min(max(t, 0.0), 1.0)
 
 
-def _note(m: Machine, start: Sequence[float], end: Sequence[float], what: Detail | None) -> Detail:
+def _note(m: Planner, start: Sequence[float], end: Sequence[float], what: Detail | None) -> Detail:
     """``G31 stopped at X25 Y0: the skip signal came on (the bore D50 at X0 Y0)``."""
     axes = m.dialect.axes
     moved = [k for k in range(len(axes)) if start[k] != end[k]] or list(range(len(axes)))

@@ -18,13 +18,14 @@ The hole data Z, R, Q and P stay in force from the cycle block that last gave th
 control keeps them while the cycle is in force; a program names them again after G80). Under
 G90 R and Z are levels; under G91 R is the distance from the initial level to R and Z the
 distance from R to the bottom. The initial level is the Z where the tool was when the block
-that named the cycle began (``Motion.cycle_start_z``). Each repetition of K under G91 moves on
+that named the cycle began (``Planner.cycle_start_z``). Each repetition of K under G91 moves on
 by the block's X and Y; under G90 it drills the same hole again; K0 keeps the data and drills
 nothing. The drilling axis is Z.
 
 The recorded move is one per hole, from where the tool was to the hole's bottom, its time the
 sum of the phases' (``MoveTimes.cycle_seconds``), its feed steps added to the cut path and its
-rapids to the rapid path; the tool ends at the return level.
+rapids to the rapid path, and its legs the path drawn (``hole_legs``); the tool ends at the
+return level.
 """
 
 from __future__ import annotations
@@ -37,12 +38,12 @@ from ..dialects.alarms import ARGUMENT_RANGE
 from ..dialects.drill_cycles import PECK, PLAIN_DRILLING, SHORT_PECK, DrillCycle
 from .alarms import MacroAlarm
 from .cycle_time import FEED_STEP, INCH, RAPID_STEP, SHIFT_STEP
-from .frames import Move
+from .moves import DRILLING, Leg, Move
 
 if TYPE_CHECKING:
-    from .motion import Motion
+    from .planner import Planner
 
-# the hole data a drilling cycle keeps in ``Motion.codes`` (R under "R")
+# the hole data a drilling cycle keeps in ``Planner.codes`` (R under "R")
 CYCLE_Z = "cycle Z"
 CYCLE_Q = "cycle Q"
 CYCLE_P = "cycle P"
@@ -52,7 +53,7 @@ Steps = list[tuple[int, float]]
 
 
 def drill_block(
-    m: Motion, cycle: float, axes: dict[int, float], incremental: dict[int, float], other: dict[str, float],
+    m: Planner, cycle: float, axes: dict[int, float], incremental: dict[int, float], other: dict[str, float],
     file: str, line: int,
 ) -> None:  # fmt: skip
     """Drill the holes of one block in canned cycle ``cycle`` (module docstring)."""
@@ -67,7 +68,7 @@ def drill_block(
     repeats = _repeats(other.get(m.dialect.cycle_repeat_letter), m.dialect.cycle_repeat_letter)
     if z is None:  # no drilling axis: the holes are only positioned
         for _ in range(repeats):
-            m._move(file, line, 0.0, m._target(plane, incremental))
+            m.move(file, line, 0.0, m.target(plane, incremental))
         return
     if m.cycle_start_z is None:
         m.cycle_start_z = m.pos[z]
@@ -88,7 +89,7 @@ def drill_block(
     feed = m.codes.get("F") or 0.0
     for _ in range(repeats):
         start = tuple(m.pos)
-        hole = m._target(plane, incremental)  # positioned at the level the tool is at
+        hole = m.target(plane, incremental)  # positioned at the level the tool is at
         at_r, at_bottom = list(hole), list(hole)
         at_r[z], at_bottom[z] = r_level, bottom
         steps = hole_steps(spec, hole[z], r_level, bottom, back_to, q, retract, clearance)
@@ -98,10 +99,25 @@ def drill_block(
         m.clock += seconds
         m.cut_length += cut
         m.rapid_length += rapid + times.distance(start, hole) * unit
-        if m.record_moves:
-            m.moves.append(Move(file, line, cycle, start, tuple(at_bottom), float(feed), None, seconds))
+        hole_at = tuple(hole)
         hole[z] = back_to
+        if m.record_moves:
+            legs = hole_legs(hole_at, tuple(at_r), tuple(at_bottom), tuple(hole), spec.feed_out)
+            m.moves.append(Move(file, line, cycle, start, tuple(at_bottom), float(feed), None, seconds,
+                                m.modal.get("plane", 17.0), legs, DRILLING))  # fmt: skip
         m.pos = hole
+
+
+def hole_legs(
+    positioned: tuple[float, ...], at_r: tuple[float, ...], bottom: tuple[float, ...], back: tuple[float, ...],
+    feed_out: bool,
+) -> tuple[Leg, ...]:  # fmt: skip
+    """The legs a hole is drawn by: positioning at rapid, rapid to R, the cut to the bottom (the
+    pecks are not drawn one by one), and the way out to the return level: at rapid, or for
+    tapping and feed-out boring at the feed to R and then at rapid. Back boring's R point lies
+    below the work and its cut goes up, which the same legs draw."""
+    out = (Leg(False, at_r), Leg(True, back)) if feed_out else (Leg(True, back),)
+    return (Leg(True, positioned), Leg(True, at_r), Leg(False, bottom), *out)
 
 
 def _repeats(k: float | None, letter: str) -> int:

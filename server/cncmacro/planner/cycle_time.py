@@ -22,7 +22,7 @@ without acceleration a corner costs no time; feed and rapid overrides at 100 %.
   moves half of an X difference. A rotary axis's degrees count as millimetres, as in a FANUC
   feed of a move with rotary axes.
 - A mill's drilling cycle (G73, G74, G76, G81–G89) takes the time of its steps
-  (``machine/drill_cycles.py`` lists them): the positioning as a rapid, then each rapid and
+  (``planner/drill_cycles.py`` lists them): the positioning as a rapid, then each rapid and
   feed along the drilling axis and each shift across it (``cycle_seconds``), plus the dwell P.
   Its feed steps count as cut, its rapids as rapid path.
 - G04 dwells for X or U seconds, or P times ``Timing.dwell_p_unit`` (milliseconds on FANUC and
@@ -50,7 +50,6 @@ INCH = 25.4
 # axis, and a rapid shift across it (G76, G87)
 RAPID_STEP, FEED_STEP, SHIFT_STEP = 0, 1, 2
 _TWO_PI = 2.0 * math.pi
-ARC_MODES = (2.0, 3.0)
 # plane code -> (first axis, second axis): the plane an arc turns in (arcs.PLANES)
 _PLANE_AXES = {17.0: ("X", "Y"), 18.0: ("Z", "X"), 19.0: ("Y", "Z")}
 

@@ -1,0 +1,100 @@
+"""The variables of a run as sets: presets before it (``--set``, the machine file), the values kept
+at power-off, and the variables a run ends with (docs/design.md's ``variables``).
+
+``VariableSets`` is that part of ``Machine`` (machine.py); reading and writing one variable by
+number is ``VariableAccess`` (variables.py).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from .alarms import MacroAlarm
+
+if TYPE_CHECKING:
+    from ..dialects import Dialect
+    from .expressions import VariableKinds
+
+Value = float | None
+
+
+class VariableSets:
+    """Presets, kept values and a run's final variables (module docstring)."""
+
+    dialect: Dialect
+    kinds: VariableKinds
+    L: list[Value]
+    C: list[Value]
+    S: dict[int, Value]
+    preset_system: set[int]
+    written_system: set[int]
+    frames: list[Any]
+
+    if TYPE_CHECKING:
+
+        def read_system(self, n: int) -> Value: ...
+
+    def apply_presets(self, presets: dict[int, float]) -> None:
+        """Set variables before the run (``--set``, the machine file). Offsets and other
+        stored system variables may be preset even where a program may not write them;
+        computed ones (positions, modal codes) may not. ``ValueError`` says why."""
+        for n, v in presets.items():
+            kind = self.kinds.kind(n)
+            if kind == "local":
+                self.L[n] = v
+            elif kind in ("common", "persistent"):
+                self.C[n] = v
+            elif kind == "extended":
+                self.S[n] = v
+            elif kind == "system":
+                row = self.dialect.system_variable(n)
+                assert row is not None
+                if row.source == "alias":
+                    self.S[int(row.param) + n - row.first] = v
+                elif row.source in ("store", "date", "time", "timer"):
+                    self.S[n] = v
+                else:
+                    raise ValueError(f"#{n} ({row.en.split(';')[0]}) is computed by the machine and cannot be preset")
+                self.preset_system.add(n)
+            else:
+                raise ValueError(f"#{n} is not a variable of {self.dialect.title} that can be preset")
+
+    def load_persistent(self, values: dict[int, float]) -> None:
+        """Put back the values kept at power-off (the machine's persistent common ranges)."""
+        for n, v in values.items():
+            kind = self.kinds.kind(n)
+            if kind == "persistent":
+                self.C[n] = v
+            elif kind == "extended" and any(n in r for r in self.kinds.persistent):
+                self.S[n] = v
+
+    def persistent_values(self) -> dict[int, float]:
+        out: dict[int, float] = {}
+        for n in self.kinds.persistent_numbers():
+            v = self.C[n] if n < 1000 else self.S.get(n)
+            if v is not None:
+                out[n] = v
+        return out
+
+    def variables(self) -> dict[int, float]:
+        """docs/design.md's ``variables``: non-vacant level-0 locals, commons and persistent, and
+        the system variables that were preset or written (vacant ones are absent)."""
+        out: dict[int, float] = {}
+        level0 = self.frames[0].locals if self.frames else self.L
+        for n in range(1, 34):
+            v = level0[n]
+            if v is not None:
+                out[n] = v
+        for r in self.kinds.ranges:
+            for n in range(r.first, r.last + 1):
+                v = self.C[n] if n < 1000 else self.S.get(n)
+                if v is not None:
+                    out[n] = v
+        for n in sorted(self.preset_system | self.written_system):
+            try:
+                v = self.read_system(n)
+            except MacroAlarm:
+                continue
+            if v is not None:
+                out[n] = v
+        return dict(sorted(out.items()))

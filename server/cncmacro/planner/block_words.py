@@ -1,0 +1,92 @@
+"""What a block's words set before it moves (docs/semantics.md §8): the modal groups of its G
+codes (a G00–G03 cancels a mill's drilling cycle, G54.1 P and Haas G154 P / G110–G129 select an
+extra work offset), and F, S, D, H, B, T and M: their last values, a tool change and its time, a
+tool length offset (tool_offsets.py); an M code's time (``m_code_time``) and a tool change
+(``tool_change``: where a tool's part of the run starts, told to the host, then its time).
+``set_modal`` returns the block's one-shot code, which ``Planner.execute_nc`` then carries out
+(one_shot.py).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ..bilingual import detail
+from ..dialects.alarms import ARGUMENT_RANGE
+from .alarms import MacroAlarm
+from .moves import ToolChange
+from .tool_offsets import apply_length_offset, select_tool
+
+if TYPE_CHECKING:
+    from .planner import Planner
+
+
+def set_modal(p: Planner, gs: list[float], other: dict[str, float]) -> float | None:
+    """Set the modal groups of the block's G codes; returns its one-shot code, if any."""
+    one_shot_code: float | None = None
+    groups = [p.g_groups.get(g) for g in gs]
+    if "motion" in groups and "canned" not in groups and not p.lathe:
+        p.modal["canned"] = 80.0  # G00-G03 cancel a drilling cycle, as G80 does
+    for g, group in zip(gs, groups, strict=True):
+        if not group:
+            one_shot_code = g
+        elif group != "macro":  # G66/G67 are the macro machine's
+            p.modal[group] = g
+            if group == "canned" and g != 80.0:
+                p.cycle_start_z = None
+            if group == "wcs" and g == 54.1:
+                p.extra_wcs = int(other.get("P", 1))
+            elif group == "wcs" and g in p.extra_codes:
+                p.extra_wcs = _extra_offset(p, g, other)
+    return one_shot_code
+
+
+def set_codes(p: Planner, other: dict[str, float], file: str, line: int) -> None:
+    """F, S, D, H, B, T and M: their last values, a tool change, a tool length offset."""
+    for letter in ("F", "S", "D", "H", "B"):
+        if letter in other:
+            p.codes[letter] = other[letter]
+    if "T" in other:
+        select_tool(p, other["T"])
+        if p.times.tool_change_t:
+            tool_change(p, file, line)
+    if "M" in other:
+        p.codes["M"] = other["M"]
+        m_code_time(p, other["M"], file, line)  # after T: T1 M06 changes to T1
+    if "H" in other and p.modal.get("length") in (43.0, 44.0):
+        apply_length_offset(p, other["H"])
+    elif not p.lathe and p.modal.get("length") == 49.0 and "Z" in p.axis_index:
+        p.tool_vector[p.axis_index["Z"]] = 0.0
+
+
+def _extra_offset(p: Planner, g: float, other: dict[str, float]) -> int:
+    """The extra work offset a Haas ``G154 Pn`` (P1 when P is left out) or ``G110``–``G129``
+    selects; a P outside the offsets the control has is alarm 119."""
+    if g != p.dialect.extra_offset_code:
+        return p.dialect.extra_offset_aliases.index(g) + 1
+    number = int(other.get("P", 1.0))
+    count = p.dialect.extra_offset_count
+    if not 1 <= number <= count:
+        raise MacroAlarm(
+            ARGUMENT_RANGE,
+            detail(f"G{g:g} P{number}: P must be 1 to {count}", f"G{g:g} P{number}：P 必须在 1～{count} 之间"),
+        )
+    return number
+
+
+def m_code_time(p: Planner, m: float, file: str, line: int) -> None:
+    """The time of M code ``m``: a tool change (``tool_change``) or the machine file's."""
+    if m == p.times.tool_change_m:
+        tool_change(p, file, line)
+    else:
+        p.clock += p.times.m_seconds(m)
+
+
+def tool_change(p: Planner, file: str, line: int) -> None:
+    """A tool change on ``line``: where a tool's part of the run starts (kept while moves
+    are recorded, told to the host), then its time."""
+    if p.record_moves:
+        tool = p.codes.get("T")
+        p.tool_changes.append(ToolChange(file, line, tool, p.clock, p.cut_length, p.rapid_length))
+    p.host.tool_changed(file, line)
+    p.clock += p.times.timing.tool_change_seconds

@@ -1,0 +1,33 @@
+"""What the planner asks of the macro machine that runs it: the one narrow interface downward.
+
+The planner keeps no variables. The offset tables it reads (work offsets, tool offsets) and
+writes (``G10``) are the macro machine's stored system variables, reached by number through
+``stored`` and ``store``; it tells the machine of a tool change (``tool_changed``, for whoever
+watches the run) and of a remark about a block (``note``: where a ``G31`` stopped). The macro
+machine (``machine/machine.py``'s ``Machine``) is the host; a test may give any object with these
+four methods.
+"""
+
+from __future__ import annotations
+
+from typing import Protocol
+
+
+class PlannerHost(Protocol):
+    """The macro machine as the planner sees it."""
+
+    def stored(self, n: int) -> float | None:
+        """The value of stored system variable ``#n`` (an offset), None when vacant."""
+        ...
+
+    def store(self, n: int, value: float) -> None:
+        """Write stored system variable ``#n`` (a ``G10`` offset), as a program's write would."""
+        ...
+
+    def tool_changed(self, file: str, line: int) -> None:
+        """A tool change on ``line`` of ``file`` (0-based), before its time is added."""
+        ...
+
+    def note(self, kind: str, message: str, line: int | None = None, subject: str | None = None) -> None:
+        """A remark about the block on ``line`` of the program running (its current line when None)."""
+        ...

@@ -1,0 +1,127 @@
+"""The codes that act once, in the block that names them (docs/semantics.md §8): G04 dwell, G10
+offsets, G28/G30 through the intermediate point to the reference point, G31 skip (probing.py),
+G53 in machine coordinates, coordinate setting (G92 on a mill, G50 on a lathe), a lathe's turning
+cycles (turning_cycles.py), and any other one-shot code with axis words, which moves in the
+modal mode. ``G10`` writes the offset tables through the planner's host (host.py).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ..bilingual import detail
+from ..dialects.alarms import ARGUMENT_RANGE
+from .alarms import MacroAlarm
+from .positions import WORK_BASE, work_offset
+from .probing import skip_block
+
+if TYPE_CHECKING:
+    from .planner import Planner
+
+LATHE_CYCLES_WITH_PROFILE = (71.0, 72.0, 73.0)
+# a lathe's G10 P.. X Z Y: (geometry, wear) offset bases of each axis; R's and the tip's (Q)
+_LATHE_OFFSET_ROWS = {"X": (2700, 2000), "Z": (2800, 2100), "Y": (2450, 2400)}
+
+
+def one_shot(
+    p: Planner, g: float, axes: dict[int, float], inc: dict[int, float], other: dict[str, float], file: str, line: int
+) -> tuple[bool, float | None]:
+    """Carry out one-shot code ``g`` with the block's words: (moved, the label a lathe roughing
+    cycle continues after), as ``Planner.execute_nc`` returns them."""
+    if g == 4.0:  # dwell: P in the profile's unit, X or U in seconds (cycle_time.py)
+        p.clock += p.times.dwell_seconds(other, next(iter({**axes, **inc}.values()), None))
+        return False, None
+    if g == 10.0:
+        g10(p, axes, inc, other)
+        return False, None
+    if g in (28.0, 30.0):  # through the intermediate point to the reference point
+        if axes or inc:
+            p.move(file, line, 0.0, p.target(axes, inc))
+            home = list(p.pos)
+            for i in set(axes) | set(inc):
+                home[i] = 0.0 - (work_offset(p, i) + p.shift[i] + p.tool_vector[i]) + 0.0
+            p.move(file, line, 0.0, home)
+            return True, None
+        return False, None
+    if g == 31.0:  # skip: probing.py
+        skip_block(p, p.target(axes, inc), file, line)
+        return True, None
+    if g == 53.0:
+        target = list(p.pos)
+        for i, v in axes.items():
+            target[i] = v - (work_offset(p, i) + p.shift[i] + p.tool_vector[i])
+        p.move(file, line, p.modal.get("motion", 0.0), target)
+        return bool(axes), None
+    if g == p.dialect.coordinate_setting_code:
+        for i, v in axes.items():
+            p.shift[i] += p.pos[i] - v
+            p.pos[i] = v
+        return False, None
+    if p.dialect.lathe and g in p.dialect.cycle_codes:
+        p.turning_cycle(file, line, g, p.target(axes, inc))
+        if g in LATHE_CYCLES_WITH_PROFILE and "P" in other and "Q" in other:
+            return True, other["Q"]
+        return bool(axes or inc), None
+    if axes or inc:  # any other one-shot code with axis words: move in the modal mode
+        mode = p.modal.get("motion", 0.0)
+        target = p.target(axes, inc)
+        p.move(file, line, mode, target, p.block_arc(mode, target, other))
+        return True, None
+    return False, None
+
+
+def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]) -> None:
+    """G10: L2 Pn a work offset (P0 the external one), L20 Pn an extra work offset, on a lathe
+    P a tool offset (P < 10000 wear, 10000 + n geometry), on a mill L10–L13 P R a tool offset."""
+    host = p.host
+    l_value = other.get("L")
+    number = int(other.get("P", 0.0))
+    absolute = p.dialect.lathe or p.modal.get("distance", 90.0) == 90.0
+    if l_value in (2.0, 20.0):
+        base = _work_offset_base(p, l_value, number)
+        for i, v in axes.items():
+            host.store(base + i, v if absolute else (host.stored(base + i) or 0.0) + v)
+        for i, v in inc.items():
+            host.store(base + i, (host.stored(base + i) or 0.0) + v)
+        return
+    if p.dialect.lathe:
+        geometry = number >= 10000
+        n = number % 10000
+        for letter, (g_base, w_base) in _LATHE_OFFSET_ROWS.items():
+            axis = p.axis_index.get(letter)
+            if axis is None:
+                continue
+            num = (g_base if geometry else w_base) + n
+            if axis in axes:
+                host.store(num, axes[axis])
+            if axis in inc:
+                host.store(num, (host.stored(num) or 0.0) + inc[axis])
+        if "R" in other:
+            host.store((2900 if geometry else 2200) + n, other["R"])
+        if "Q" in other:
+            host.store(2300 + n, other["Q"])
+        return
+    bases = dict(zip((10.0, 11.0, 12.0, 13.0), p.dialect.tool_offset_bases, strict=True))
+    if l_value in bases and "R" in other:
+        num = bases[l_value] + number
+        host.store(num, other["R"] if absolute else (host.stored(num) or 0.0) + other["R"])
+
+
+def _work_offset_base(p: Planner, l_value: float, number: int) -> int:
+    """The variable of axis 1 of the work offset ``G10 L2 P`` or ``L20 P`` names; alarm 119 for a
+    P outside the offsets the control has."""
+    if l_value == 2.0:
+        if not 0 <= number <= 6:
+            raise MacroAlarm(
+                ARGUMENT_RANGE,
+                detail(f"G10 L2 P{number}: P must be 0 (external) to 6 (G59)",
+                       f"G10 L2 P{number}：P 必须为 0（外部偏置）～6（G59）"),
+            )  # fmt: skip
+        return WORK_BASE + 20 * number
+    count = p.dialect.extra_offset_count
+    if not 1 <= number <= count:
+        raise MacroAlarm(
+            ARGUMENT_RANGE,
+            detail(f"G10 L20 P{number}: P must be 1 to {count}", f"G10 L20 P{number}：P 必须在 1～{count} 之间"),
+        )
+    return p.dialect.extra_offset_variables + 20 * (number - 1)

@@ -1,0 +1,294 @@
+"""The motion planner: the NC side of the control (docs/semantics.md §8, §9; ARCHITECTURE.md,
+"The motion planner").
+
+The macro machine (machine/) hands the planner each NC block with its words evaluated:
+``execute_nc`` for any block, ``run_plain`` for a plain motion line decided once
+(plain_words.py). The planner owns the modal state (groups, units, plane, distance and feed
+mode), F, S, T, M, D, H, positions, work and tool offsets and coordinate setting, the cycles
+(drilling: drill_cycles.py; turning: turning_cycles.py), the skip function (probing.py), the
+one-shot codes (one_shot.py) and the time model (cycle_time.py). It emits the one stream of
+moves every front end reads (``moves``, moves.py): rapid, feed, arc (with its plane and
+centre), probe and cycle moves, each with its source block, feed and time, and the tool
+changes (``tool_changes``). The system variables that read its state (#4001…, #4101…, #5001…,
+#5021…, #3001) ask ``read``. It imports nothing of the macro machine: what it needs of it (the
+offset tables, a tool change, a remark) goes through ``PlannerHost`` (host.py).
+Values arrive already rounded to their address's increment.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+from .arcs import ARC_MODES, arc_centre, arc_planes
+from .block_words import set_codes, set_modal
+from .cycle_time import INCH, MoveTimes
+from .drill_cycles import drill_block
+from .modal_groups import extra_offset_codes, g_code_groups
+from .moves import TURNING, Leg, Move, ToolChange
+from .one_shot import one_shot
+from .plain_words import PlainRun, PlainWords
+from .positions import position_value
+from .probing import Probe, SkipState
+from .state import MODAL_DEFAULTS, PlannerState
+from .turning_cycles import turning_legs
+
+if TYPE_CHECKING:
+    from ..dialects import Dialect
+    from ..library.machine_file import MachineSettings
+    from .host import PlannerHost
+
+_new_move = tuple.__new__  # a Move without the NamedTuple constructor's keyword handling
+
+
+class Planner:
+    """The NC side of one simulated control (module docstring)."""
+
+    def __init__(self, dialect: Dialect, settings: MachineSettings, host: PlannerHost) -> None:
+        self.dialect = dialect
+        self.settings = settings
+        self.host = host
+        axes = dialect.axes
+        self.axis_index = {a: i for i, a in enumerate(axes)}
+        self.pos: list[float] = [0.0] * len(axes)
+        self.shift: list[float] = [0.0] * len(axes)
+        self.skip_pos: list[float] = [0.0] * len(axes)
+        self.skip_state = SkipState()  # the contact points used (probing.py)
+        self.probes: list[Probe] = []
+        self.tool_vector: list[float] = [0.0] * len(axes)
+        self.modal: dict[str, float] = {**MODAL_DEFAULTS, **dialect.modal_defaults}
+        self.codes: dict[str, float | None] = {}
+        self.extra_wcs = 0  # G54.1 Pn (G154 Pn, G110-G129)
+        self.cycle_start_z: float | None = None
+        self.moves: list[Move] = []
+        self.record_moves = True
+        # the cycle time's rules (cycle_time.py), the clock (#3001), the path so far (mm) and,
+        # while moves are recorded, the tool changes (``cncmacro run``'s totals per tool)
+        self.times = MoveTimes(dialect)
+        self.clock = 0.0
+        self.cut_length = 0.0
+        self.rapid_length = 0.0
+        self.tool_changes: list[ToolChange] = []
+        self.g_groups = g_code_groups(dialect)
+        self.extra_codes = extra_offset_codes(dialect)
+        if self.extra_codes:  # the switch makes them work offset codes, whatever the table says
+            self.g_groups = {**self.g_groups, **dict.fromkeys(self.extra_codes, "wcs")}
+        self.plain = PlainWords(dialect, settings, self.g_groups, self.axis_index)
+        self.cycle_codes = dialect.cycle_codes
+        self.lathe = dialect.lathe
+        self._call_needs_distance = dialect.modal_call_needs_distance
+        self._arc_planes = arc_planes(self.axis_index)
+        self._diameter = self.axis_index.get("X", -1) if self.lathe else -1
+
+    # ---------------------------------------------------------------- state for the macro machine
+    def read(self, source: str, param: str, default: float | None, index: int) -> float | None:
+        """A system variable of the planner's state (the profile's row ``source`` and ``param``):
+        a modal group's code, a code's last value, or axis ``index``'s position of a kind."""
+        if source == "modal":
+            return self.modal.get(param, default)
+        if source == "code":
+            return self.codes.get(param, default)
+        return position_value(self, param, index)
+
+    def snapshot(self) -> PlannerState:
+        return PlannerState(
+            dict(self.modal), dict(self.codes),
+            (list(self.pos), list(self.shift), list(self.skip_pos), list(self.tool_vector)), self.extra_wcs,
+            self.cycle_start_z, self.clock, (self.cut_length, self.rapid_length), len(self.moves),
+            len(self.tool_changes), self.skip_state, len(self.probes),
+        )  # fmt: skip
+
+    def restore(self, state: PlannerState) -> None:
+        self.modal = dict(state.modal)
+        self.codes = dict(state.codes)
+        pos, shift, skip, tool = state.positions
+        self.pos, self.shift, self.skip_pos, self.tool_vector = list(pos), list(shift), list(skip), list(tool)
+        self.extra_wcs = state.extra_wcs
+        self.cycle_start_z = state.cycle_start_z
+        self.clock = state.clock
+        self.cut_length, self.rapid_length = state.lengths
+        del self.moves[state.moves :]
+        del self.tool_changes[state.tool_count :]
+        self.skip_state = state.skip_state
+        del self.probes[state.probes :]
+
+    # ---------------------------------------------------------------- plain motion
+    def run_plain(self, plan: PlainRun, line: int) -> bool:
+        """Carry out a ``PlainWords`` plan with its file and next line appended; returns whether
+        the block counts as a move for a G66 call (``execute_nc``)."""
+        modal_sets, code_sets, axes, inc, _, file, _ = plan
+        modal = self.modal
+        for group, g in modal_sets:
+            modal[group] = g
+        if code_sets:
+            codes = self.codes
+            for letter, v in code_sets:
+                codes[letter] = v
+        if not axes and not inc:
+            if plan[4] and modal["motion"] in ARC_MODES:  # I, J, K alone may be a full circle
+                return self._cycle_fallback(plan, file, line)
+            return False
+        mode = modal["motion"]
+        if mode in self.cycle_codes or (modal["canned"] != 80.0 and not self.lathe):
+            return self._cycle_fallback(plan, file, line)
+        start = self.pos
+        target = start[:]
+        if self.lathe or modal["distance"] == 90.0:
+            for i, v in axes:
+                target[i] = v
+        else:
+            for i, v in axes:
+                target[i] += v
+        for i, v in inc:
+            target[i] += v
+        self.pos = target
+        extra = plan[4]
+        centre = self.arc_centre(mode, start, target, dict(extra)) if extra and mode in ARC_MODES else None
+        self.record(file, line, mode, tuple(start), tuple(target), centre)
+        return not self._call_needs_distance or target != start or centre is not None
+
+    def _cycle_fallback(self, plan: PlainRun, file: str, line: int) -> bool:
+        inverse = {v: k for k, v in self.dialect.incremental_letters.items()}
+        words = [(self.dialect.axes[i], v) for i, v in plan[2]]
+        words += [(inverse[self.dialect.axes[i]], v) for i, v in plan[3]]
+        words += plan[4]
+        return self.execute_nc(words, file, line)[0]
+
+    # ---------------------------------------------------------------- one block
+    def execute_nc(self, words: list[tuple[str, float]], file: str, line: int) -> tuple[bool, float | None]:
+        """Carry out the NC words of a block. Returns (moved, skip_label): whether the block
+        counts as a move for G66 modal calls (a move command; on a dialect whose
+        ``modal_call_needs_distance`` is set, one that goes somewhere or draws an arc) and, for a
+        lathe roughing cycle with Q, the label after which the program continues."""
+        gs: list[float] = []
+        axes: dict[int, float] = {}
+        incremental: dict[int, float] = {}
+        other: dict[str, float] = {}
+        axis_index = self.axis_index
+        inc_letters = self.dialect.incremental_letters
+        for letter, v in words:
+            if letter == "G":
+                gs.append(v)
+            elif letter in axis_index:
+                axes[axis_index[letter]] = v
+            elif letter in inc_letters and inc_letters[letter] in axis_index:
+                incremental[axis_index[inc_letters[letter]]] = v
+            else:
+                other[letter] = v
+        one = set_modal(self, gs, other)
+        set_codes(self, other, file, line)
+        if one is not None:
+            return one_shot(self, one, axes, incremental, other, file, line)
+        mode = self.modal.get("motion", 0.0)
+        canned = self.modal.get("canned", 80.0)
+        if not axes and not incremental:
+            return self._full_circle(mode, canned, other, file, line), None
+        target = self.target(axes, incremental)
+        if not self.lathe and canned != 80.0:
+            drill_block(self, canned, axes, incremental, other, file, line)  # drill_cycles.py
+            return True, None
+        if mode in self.cycle_codes:
+            self.turning_cycle(file, line, mode, target)
+            return True, None  # a turning cycle ends where it started
+        centre = self.block_arc(mode, target, other)
+        moved = not self._call_needs_distance or target != self.pos or centre is not None
+        self.move(file, line, mode, target, centre)
+        return moved, None
+
+    # ---------------------------------------------------------------- arcs
+    def arc_centre(
+        self, mode: float, start: Sequence[float], end: Sequence[float], words: dict[str, float]
+    ) -> tuple[float, ...] | None:
+        """The centre of a G02 (``mode`` 2) or G03 arc from ``start`` to ``end`` in the plane in
+        force, from the block's R, I, J, K ``words`` (arcs.py); None when they name none."""
+        plane = self._arc_planes.get(self.modal.get("plane", 17.0))
+        if plane is None:
+            return None
+        return arc_centre(mode == 2.0, plane, self._diameter, start, end, words)
+
+    def block_arc(self, mode: float, target: list[float], other: dict[str, float]) -> tuple[float, ...] | None:
+        """The centre of the move to ``target`` when ``mode`` is an arc, else None."""
+        if mode not in ARC_MODES:
+            return None
+        return self.arc_centre(mode, self.pos, target, other)
+
+    def _full_circle(self, mode: float, canned: float, other: dict[str, float], file: str, line: int) -> bool:
+        """A G02/G03 block with I, J or K but no axis word: a full circle back to the start
+        (with R instead, an arc of 0° that moves nothing). Returns whether it moved."""
+        if mode not in ARC_MODES or "R" in other or (canned != 80.0 and not self.lathe):
+            return False
+        centre = self.arc_centre(mode, self.pos, self.pos, other)
+        if centre is None:
+            return False
+        here = tuple(self.pos)
+        self.record(file, line, mode, here, here, centre)
+        return True
+
+    # ---------------------------------------------------------------- moves
+    def target(self, axes: dict[int, float], incremental: dict[int, float]) -> list[float]:
+        """Where the block's axis words send the tool (G90/G91; a lathe's U, V, W add)."""
+        target = list(self.pos)
+        absolute = self.lathe or self.modal.get("distance", 90.0) == 90.0
+        for i, v in axes.items():
+            target[i] = v if absolute else target[i] + v
+        for i, v in incremental.items():
+            target[i] = target[i] + v
+        return target
+
+    def move(
+        self, file: str, line: int, mode: float, target: list[float], centre: tuple[float, ...] | None = None
+    ) -> None:
+        """Move to ``target`` in ``mode`` (an arc about ``centre``) and record it."""
+        self.record(file, line, mode, tuple(self.pos), tuple(target), centre)
+        self.pos[:] = target
+
+    def turning_cycle(self, file: str, line: int, code: float, target: list[float]) -> None:
+        """A lathe's turning cycle to ``target``, recorded with its legs (turning_cycles.py); the
+        tool ends where it started."""
+        start = tuple(self.pos)
+        legs = turning_legs(self.dialect.single_cycles.get(code), self.axis_index, start, target)
+        self.record(file, line, code, start, tuple(target), None, legs, TURNING)
+
+    def record(
+        self,
+        file: str,
+        line: int,
+        mode: float,
+        start: tuple[float, ...],
+        end: tuple[float, ...],
+        centre: tuple[float, ...] | None = None,
+        legs: tuple[Leg, ...] | None = None,
+        cycle: str | None = None,
+    ) -> None:
+        """Advance the clock by the move's time, add its length to the path and record the move
+        (with an arc's centre and plane, a cycle's legs, its time), by cycle_time.py's rules."""
+        feed = self.codes.get("F") or 0.0
+        times = self.times
+        modal = self.modal
+        unit = INCH if modal.get("units") == 20.0 else 1.0
+        plane = modal.get("plane", 17.0)
+        if mode == 0.0:
+            seconds = times.rapid_seconds(start, end, unit)
+            self.rapid_length += times.distance(start, end) * unit
+        else:
+            if centre is not None and mode in ARC_MODES:
+                length = times.arc_length(mode, plane, start, end, centre)
+            else:
+                length = times.distance(start, end)
+            rate = self.cutting_rate(feed, start, end, unit)
+            seconds = length / rate * 60.0 if rate > 0 else 0.0
+            self.cut_length += length * unit
+        self.clock += seconds
+        if self.record_moves:
+            self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre, seconds, plane, legs,
+                                              cycle)))  # fmt: skip
+
+    def cutting_rate(self, feed: float, start: Sequence[float], end: Sequence[float], unit: float) -> float:
+        """The feed of a cutting move from ``start`` to ``end`` in program units per minute:
+        F, or per revolution F times the spindle speed (``MoveTimes.feed_rate``)."""
+        modal = self.modal
+        per_rev = modal.get("feed")
+        if per_rev == 95.0 or (per_rev == 99.0 and self.lathe):
+            return self.times.feed_rate(feed, True, self.codes.get("S") or 0.0, modal.get("spindle") == 96.0,
+                                        start, end, unit)  # fmt: skip
+        return feed  # per minute (``feed_rate``)

@@ -1,0 +1,36 @@
+"""The planner's state as a snapshot keeps it, and the modal groups a control starts with.
+
+``PlannerState`` is a copy of the planner's state at one moment (``Planner.snapshot``, inside the
+macro machine's ``Snapshot``); ``MODAL_DEFAULTS`` the modal code of each group at power-on, which
+a profile's ``modal_defaults`` change (a lathe's G18 and G98).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .probing import SkipState
+
+MODAL_DEFAULTS = {"motion": 0.0, "distance": 90.0, "units": 21.0, "cutter": 40.0, "length": 49.0, "canned": 80.0,
+                  "return": 98.0, "macro": 67.0, "spindle": 97.0, "wcs": 54.0, "cutting": 64.0, "rotation": 69.0,
+                  "mirror": 50.1, "scaling": 50.0, "polar": 15.0, "stroke": 22.0}  # fmt: skip
+
+
+@dataclass(slots=True)
+class PlannerState:
+    """A copy of the planner's state at one moment (part of the macro machine's ``Snapshot``):
+    modal groups, codes, positions (program, coordinate shift, skip, tool vector), the extra
+    work offset, a drilling cycle's initial level, the clock, the cut and rapid path, and how
+    many moves, tool changes and probes had been recorded."""
+
+    modal: dict[str, float]
+    codes: dict[str, float | None]
+    positions: tuple[list[float], list[float], list[float], list[float]]
+    extra_wcs: int
+    cycle_start_z: float | None
+    clock: float
+    lengths: tuple[float, float]
+    moves: int
+    tool_count: int
+    skip_state: SkipState
+    probes: int

@@ -1,0 +1,44 @@
+"""Tool offsets as the planner applies them (docs/semantics.md §8): a lathe's T code selects
+an offset that shifts X, Z and Y; a mill's G43/G44 H offsets Z by the tool length. The values are
+the macro machine's offset variables, read through the planner's host (host.py).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from .planner import Planner
+
+# a lathe's offset tables per axis: (geometry, wear) of offset 0
+_LATHE_OFFSETS = (("X", 2700, 2000), ("Z", 2800, 2100), ("Y", 2450, 2400))
+
+
+def select_tool(p: Planner, t: float) -> None:
+    """T: the tool in force; on a lathe its offset number (the last two digits from T100 up, else
+    the last digit) sets the tool vector from the geometry and wear tables."""
+    p.codes["T"] = t
+    if not p.dialect.lathe:
+        return
+    n = int(t)
+    offset = n % 100 if n >= 100 else n % 10
+    vec = [0.0] * len(p.pos)
+    if offset:
+        stored = p.host.stored
+        for axis, geometry, wear in _LATHE_OFFSETS:
+            if axis in p.axis_index:
+                vec[p.axis_index[axis]] = (stored(geometry + offset) or 0.0) + (stored(wear + offset) or 0.0)
+    p.tool_vector = vec
+
+
+def apply_length_offset(p: Planner, h: float) -> None:
+    """G43/G44 H: the Z tool vector is offset H's geometry plus wear (negated under G44)."""
+    n = int(h)
+    value = 0.0
+    if n:
+        geometry, wear = p.dialect.tool_offset_bases[:2]
+        value = (p.host.stored(geometry + n) or 0.0) + (p.host.stored(wear + n) or 0.0)
+    if p.modal.get("length") == 44.0:
+        value = -value
+    if "Z" in p.axis_index:
+        p.tool_vector[p.axis_index["Z"]] = value
