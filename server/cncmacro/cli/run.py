@@ -26,12 +26,12 @@ from typing import Any, TextIO
 from ..analysis.subprogram_alone import subprogram_remarks, subprogram_text
 from ..bilingual import in_language, is_chinese, pick
 from ..library.machine_file import parse_preset
+from ..library.persistence_lock import LOCK_WAIT
 from ..machine import Machine, RunResult
 from ..machine.commanded_axes import CommandedAxes
 from ..machine.frames import Move
 from ..machine.move_json import move_json
 from ..machine.numbers import format_plain
-from ..machine.persistence_lock import LOCK_WAIT
 from ..machine.setup import prepare_run
 from ..machine.status import RunStatus
 from .cycle_report import cycle_json, write_cycle_text

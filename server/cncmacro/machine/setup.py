@@ -33,10 +33,10 @@ from ..library.machine_file import (
     find_machine_file,
     load_machine_file,
 )
+from ..library.persistence import PersistentFileError, load_persistent, persistent_target, save_persistent
+from ..library.persistence_lock import LOCK_WAIT, PersistentLock, lock_persistent
 from ..library.programs import ProgramLibrary
 from .machine import Machine
-from .persistence import PersistentFileError, load_persistent, persistent_target, save_persistent
-from .persistence_lock import LOCK_WAIT, PersistentLock, lock_persistent
 
 
 class SetupError(ValueError):
