@@ -71,15 +71,15 @@ from typing import Any, Generic, TypeVar
 
 from ..bilingual import is_chinese, pick
 from ..dialects import DIALECTS, Dialect, get_dialect
-from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_from_text
+from ..library.dialect_choice import HEADER_LINES, dialect_from_text
 from ..library.file_cache import FileCache
 from ..library.files import o_number
 from ..library.machine_file import MachineSettings
-from ..library.profiles import machine_profile
+from ..library.profiles import file_profile
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..machine import block_roles
 from ..machine.status import RunStatus
-from ..syntax.document import ParsedDocument, split_lines
+from ..syntax.document import ParsedDocument
 from ..syntax.nodes import Block
 from . import static_checks
 from .block_memo import BlockMemo
@@ -312,7 +312,8 @@ class WorkspaceAnalysis:
 
     # ---------------------------------------------------------------- dialects and calls
     def dialect_of(self, lines: list[str]) -> Dialect:
-        return machine_profile(choose_dialect(lines, self.settings.dialect, self.dialect_setting), self.settings)
+        """The profile a file with these lines is read in (``file_profile``)."""
+        return file_profile(lines, self.settings, self.dialect_setting)
 
     def _calls_in(self, block: Block, d: _Open) -> bool:
         ctx = static_checks.line_context(self.dialect_of(d.doc.lines), self.settings, self.locale)
@@ -731,17 +732,6 @@ class _CalledElsewhere(Generic[_T]):
 
     def __contains__(self, item: object) -> bool:
         return self.counts.get(item, 0) > (1 if item in self.own else 0)
-
-
-def head_lines(text: str, count: int = FIRST_SCREEN_LINES) -> list[str]:
-    """The first ``count`` lines of ``text``, without splitting the rest (a file of lone CR
-    breaks is split whole)."""
-    end = -1
-    for _ in range(count):
-        end = text.find("\n", end + 1)
-        if end < 0:
-            break
-    return split_lines(text if end < 0 else text[:end])[:count]
 
 
 def _clock_reads(lines: list[str]) -> int:

@@ -47,9 +47,9 @@ from lsprotocol import types
 
 from ..analysis import Diagnostic
 from ..analysis.cycle_lenses import FileTiming
-from ..analysis.workspace import FIRST_SCREEN_LINES, AnalysisResult, Value, WorkspaceAnalysis, head_lines
+from ..analysis.workspace import FIRST_SCREEN_LINES, AnalysisResult, Value, WorkspaceAnalysis
 from ..bilingual import pick
-from ..syntax.document import ParsedDocument
+from ..syntax.document import ParsedDocument, head_lines
 from .collector import Collector
 from .cycle_lenses import refresh_code_lenses
 from .disk_watch import DiskStamps
@@ -228,7 +228,8 @@ class DiagnosticsEngine:
             analysis = self._analysis(documents.machines.path_for(path))
             if huge:
                 if self.server.settings_ready.is_set():
-                    self._publish_first_screen(analysis, item.uri, path, head_lines(item.text), item.version)
+                    top = head_lines(item.text, FIRST_SCREEN_LINES)
+                    self._publish_first_screen(analysis, item.uri, path, top, item.version)
                 doc = documents.open(item, ParsedDocument(item.text, in_steps=FIRST_SCREEN_LINES))
                 self._loading.add(item.uri)
             else:
