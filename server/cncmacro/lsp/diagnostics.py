@@ -47,7 +47,9 @@ from lsprotocol import types
 
 from ..analysis import Diagnostic
 from ..analysis.cycle_lenses import FileTiming
-from ..analysis.workspace import FIRST_SCREEN_LINES, AnalysisResult, Value, WorkspaceAnalysis
+from ..analysis.first_screen import FIRST_SCREEN_LINES
+from ..analysis.workspace import AnalysisResult, WorkspaceAnalysis
+from ..analysis.workspace_result import Value
 from ..bilingual import pick
 from ..syntax.document import ParsedDocument, head_lines
 from .collector import Collector
