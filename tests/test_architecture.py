@@ -100,9 +100,9 @@ OPENS_ALLOWED = {
     "library/files.py": "the one place program files and the machine file are read",
     "syntax/grammar.py": "reads its own grammar, block.lark, from the package (importlib.resources)",
     "lsp/collector.py": "reads /proc/self/statm, the server's own memory, not a file of the workspace",
-    "machine/persistence.py": "writes the persistent-variable file atomically (a temporary file, fsync, "
+    "library/persistence.py": "writes the persistent-variable file atomically (a temporary file, fsync, "
                               "rename); it reads the file through library.files.read_bytes",
-    "machine/persistence_lock.py": "creates and locks <file>.lock beside the persistent-variable file",
+    "library/persistence_lock.py": "creates and locks <file>.lock beside the persistent-variable file",
 }  # fmt: skip
 _OPEN_METHODS = {"read_text", "read_bytes", "write_text", "write_bytes"}
 

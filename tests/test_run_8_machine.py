@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
+from cncmacro.library.persistence import load_persistent, save_persistent
 from cncmacro.library.skip_model import planes_model
-from cncmacro.machine.persistence import load_persistent, save_persistent
 from running import final, lines, run
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"

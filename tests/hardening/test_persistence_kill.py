@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 
 from cncmacro.cli.main import main
-from cncmacro.machine.persistence import load_persistent, save_persistent
+from cncmacro.library.persistence import load_persistent, save_persistent
 
 FIRST, LAST = 500, 999  # the persistent commons of every profile
 

@@ -62,7 +62,7 @@ def test_runs_started_together_each_add_their_one(tmp_path: Path) -> None:
 def test_runs_that_keep_nothing_leave_no_lock_file_and_never_let_two_runs_in(tmp_path: Path) -> None:
     # a run that keeps nothing deletes the lock file it made; a run that was waiting on that file
     # locks the path anew, so a third run still waits for it
-    from cncmacro.machine.persistence_lock import PersistentLockError, lock_persistent
+    from cncmacro.library.persistence_lock import PersistentLockError, lock_persistent
 
     path = tmp_path / ".cncmacro-vars.json"
     first = lock_persistent(path)

@@ -28,7 +28,6 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..bilingual import pick
-from ..library.dialect_choice import choose_dialect
 from ..library.file_cache import FileCache
 from ..library.files import (
     MAX_FOLDER_ENTRIES,
@@ -40,7 +39,7 @@ from ..library.files import (
     search_program_files,
 )
 from ..library.machine_file import MachineSettings
-from ..library.profiles import machine_profile
+from ..library.profiles import file_profile
 from ..machine.calls import call_word_pattern
 from . import static_checks
 
@@ -175,7 +174,7 @@ class CallIndex:
         except (OSError, SkippedFileError):  # changed again since
             return ()
         ctx = static_checks.line_context(
-            machine_profile(choose_dialect(loaded.lines, self.settings.dialect, self.dialect), self.settings),
+            file_profile(loaded.lines, self.settings, self.dialect),
             self.settings,
             self.locale,
         )

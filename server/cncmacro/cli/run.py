@@ -26,9 +26,9 @@ from typing import Any, TextIO
 from ..analysis.subprogram_alone import subprogram_remarks, subprogram_text
 from ..bilingual import in_language, is_chinese, pick
 from ..library.machine_file import parse_preset
+from ..library.persistence_lock import LOCK_WAIT
 from ..machine import Machine, RunResult
 from ..machine.commanded_axes import CommandedAxes
-from ..machine.persistence_lock import LOCK_WAIT
 from ..machine.setup import prepare_run
 from ..machine.status import RunStatus
 from ..planner.move_json import move_json

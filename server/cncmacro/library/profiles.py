@@ -4,15 +4,50 @@
 the programs kept on the control and extra system variables. Every layer above asks
 ``machine_profile`` for the ``Dialect`` to work with, so those settings reach the interpreter,
 the checks, hover and the debugger alike.
+
+``file_profile`` is the one answer to "which profile is this file read in": docs/design.md's
+chain (``dialect_choice.py``: the file's comment, the machine file's ``base``, the setting,
+the default) with the machine file applied. ``cncmacro check`` and the language server's
+analysis, the language server's open documents, the call index and ``cncmacro run`` and the
+debugger (``machine/setup.py``) all ask it, so a file gets one profile whichever of them reads
+it; ``profile_source`` says which link of the chain decided.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from ..dialects import Dialect, get_dialect
 from ..dialects.tables import CommonRange
+from ..syntax.document import head_lines
+from .dialect_choice import HEADER_LINES, choose_dialect, dialect_and_source
 from .machine_file import MachineSettings
 
 _made: dict[tuple[str, int], tuple[MachineSettings, Dialect]] = {}
+
+
+def file_profile(source: str | Sequence[str], settings: MachineSettings | None, setting: str | None = None) -> Dialect:
+    """The profile of a file whose text (or lines) is ``source``, read with the machine file
+    ``settings`` (None: none) and ``setting`` (the editor's ``cncMacro.dialect``, ``--dialect``
+    or a launch's ``dialect``). A text's first lines are counted as an editor counts them
+    (``split_lines``), so a form feed in a comment moves no line."""
+    return machine_profile(choose_dialect(_head(source), _named(settings), setting), settings)
+
+
+def profile_source(source: str | Sequence[str], settings: MachineSettings | None, setting: str | None = None) -> str:
+    """Which link of ``file_profile``'s chain decided: ``file`` (its comment), ``workspace``
+    (the machine file), ``setting`` or ``default``."""
+    return dialect_and_source(_head(source), _named(settings), setting)[1]
+
+
+def _head(source: str | Sequence[str]) -> list[str]:
+    """The first lines of a file, where its dialect comment may be."""
+    return head_lines(source, HEADER_LINES) if isinstance(source, str) else list(source[:HEADER_LINES])
+
+
+def _named(settings: MachineSettings | None) -> str | None:
+    """The profile the machine file names (its ``base``), if any."""
+    return settings.dialect if settings is not None else None
 
 
 def machine_profile(name: str | Dialect | None, settings: MachineSettings | None) -> Dialect:

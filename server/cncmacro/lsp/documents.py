@@ -25,10 +25,10 @@ from pygls.uris import from_fs_path, to_fs_path
 from ..analysis.block_memo import BlockMemo
 from ..analysis.site_index import SiteIndex
 from ..dialects.dialect import Dialect
-from ..library.dialect_choice import HEADER_LINES, choose_dialect, dialect_and_source
+from ..library.dialect_choice import HEADER_LINES
 from ..library.machine_file import CallCode, MachineSettings
 from ..library.machine_files import MachineFiles
-from ..library.profiles import machine_profile
+from ..library.profiles import file_profile, profile_source
 from ..library.programs import LoadedFile
 from ..syntax.document import ParsedDocument, split_lines
 from ..syntax.nodes import Block
@@ -109,15 +109,11 @@ class Documents:
 
     def dialect_for(self, lines: list[str], path: str) -> Dialect:
         """The dialect of the file at ``path`` with these lines, under its machine file."""
-        machine = self.machines.settings_for(path)
-        workspace = machine.dialect if machine is not None else None
-        return machine_profile(choose_dialect(lines, workspace, self.setting_dialect), machine)
+        return file_profile(lines, self.machines.settings_for(path), self.setting_dialect)
 
     def dialect_source(self, doc: OpenDocument) -> str:
-        """Which link of the dialect chain decided for ``doc`` (``dialect_and_source``)."""
-        machine = self.machines.settings(doc.machine_file)
-        workspace = machine.dialect if machine is not None else None
-        return dialect_and_source(doc.parsed.lines, workspace, self.setting_dialect)[1]
+        """Which link of the dialect chain decided for ``doc`` (``profile_source``)."""
+        return profile_source(doc.parsed.lines, self.machines.settings(doc.machine_file), self.setting_dialect)
 
     def calls_for(self, path: str) -> dict[str, CallCode] | None:
         """The call codes of the machine file that the file at ``path`` is read with, if any."""

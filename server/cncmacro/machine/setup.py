@@ -23,8 +23,6 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from ..bilingual import detail
-from ..dialects import get_dialect
-from ..library.dialect_choice import HEADER_LINES, choose_dialect
 from ..library.files import SkippedFileError, decode_program, read_program
 from ..library.machine_file import (
     PERSISTENT_FILE_NAME,
@@ -33,10 +31,11 @@ from ..library.machine_file import (
     find_machine_file,
     load_machine_file,
 )
+from ..library.persistence import PersistentFileError, load_persistent, persistent_target, save_persistent
+from ..library.persistence_lock import LOCK_WAIT, PersistentLock, lock_persistent
+from ..library.profiles import file_profile
 from ..library.programs import ProgramLibrary
 from .machine import Machine
-from .persistence import PersistentFileError, load_persistent, persistent_target, save_persistent
-from .persistence_lock import LOCK_WAIT, PersistentLock, lock_persistent
 
 
 class SetupError(ValueError):
@@ -129,8 +128,8 @@ def prepare_run(
         settings = replace(settings, block_delete=block_delete)
     if max_blocks is not None:
         settings = replace(settings, max_blocks=max_blocks)
-    chosen = choose_dialect(source.text.splitlines()[:HEADER_LINES], settings.dialect, dialect)
-    machine = Machine(get_dialect(chosen), settings, ProgramLibrary(search_paths or []), m99_ends_main=m99_ends_main)
+    profile = file_profile(source.text, settings, dialect)
+    machine = Machine(profile, settings, ProgramLibrary(search_paths or []), m99_ends_main=m99_ends_main)
     if machine.preset_problems:
         raise SetupError(machine.preset_problems[0])
     try:

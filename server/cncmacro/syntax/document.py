@@ -21,6 +21,17 @@ def split_lines(text: str) -> list[str]:
     return text.split("\n")
 
 
+def head_lines(text: str, count: int) -> list[str]:
+    """The first ``count`` lines of ``text`` as ``split_lines`` counts them, without splitting
+    the rest (a file of lone CR breaks is split whole)."""
+    end = -1
+    for _ in range(count):
+        end = text.find("\n", end + 1)
+        if end < 0:
+            break
+    return split_lines(text if end < 0 else text[:end])[:count]
+
+
 class ParsedDocument:
     """The lines, blocks and program of one document, updated in place by edits."""
 

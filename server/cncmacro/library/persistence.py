@@ -33,7 +33,7 @@ import time
 from pathlib import Path
 
 from ..bilingual import Detail, detail
-from ..library.files import FileTooLargeError, NotAFileError, read_bytes
+from .files import FileTooLargeError, NotAFileError, read_bytes
 
 STALE_SECONDS = 60.0
 MAX_BYTES = 1 << 20  # a full file of 1,000 variables is about 30 kB
