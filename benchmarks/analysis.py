@@ -27,7 +27,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "server"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from camgen import cam_program
-from cncmacro.analysis.call_index import CallIndex
+from cncmacro.analysis.indexes.call_index import CallIndex
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.library.machine_file import MachineSettings
 

@@ -16,7 +16,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from camgen import cam_program
-from cncmacro.analysis.static_checks import static_diagnostics
+from cncmacro.analysis.checks.static_checks import static_diagnostics
 from cncmacro.dialects import get_dialect
 from cncmacro.library.machine_file import MachineSettings
 from cncmacro.library.programs import ProgramLibrary

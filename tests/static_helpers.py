@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
+from cncmacro.analysis.checks.static_checks import static_diagnostics
 from cncmacro.analysis.diagnostics import Diagnostic
-from cncmacro.analysis.static_checks import static_diagnostics
 from cncmacro.dialects import get_dialect
 from cncmacro.library.machine_file import MachineSettings
 from cncmacro.library.programs import ProgramLibrary

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import pytest
 
-from cncmacro.analysis.sequence_numbers import renumber
-from cncmacro.analysis.sites import jump_sites
+from cncmacro.analysis.editing.sequence_numbers import renumber
+from cncmacro.analysis.indexes.sites import jump_sites
 from cncmacro.dialects import get_dialect
 from cncmacro.library.machine_file import CallCode
 from cncmacro.syntax.block_parser import parse_block

@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 
+from cncmacro.analysis.checks.line_facts import RULE_CODES
 from cncmacro.analysis.codes import CODES, FOUND, MACRO_ALARM, RUN, SEVERITIES, STATIC, alarm_code, default_severity
-from cncmacro.analysis.line_facts import RULE_CODES
 from cncmacro.dialects.alarms import ALARMS
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -20,12 +20,12 @@ PACKAGE = ROOT / "server" / "cncmacro"
 
 # the calls that make a finding, and where each takes the code (argument index; or ``code=``)
 CODE_ARGUMENT = {
-    "finding": 2,  # analysis/line_facts.py
+    "finding": 2,  # analysis/checks/line_facts.py
     "diagnostic": 5,  # analysis/diagnostics.py
     "Finding": 3,
     "Diagnostic": 6,  # also lsprotocol's types.Diagnostic, which takes code=
-    "_add": 2,  # analysis/call_checks.py
-    "_diagnostic": 2,  # analysis/run_checks.py
+    "_add": 2,  # analysis/checks/call_checks.py
+    "_diagnostic": 2,  # analysis/runs/run_checks.py
     "default_severity": 0,
 }
 SEVERITY_ARGUMENT = {"Finding": 2, "Diagnostic": 5}

@@ -49,7 +49,7 @@ def snapshot(ws: WorkspaceAnalysis, path: str) -> tuple[object, object]:
         for ds in result.diagnostics.values() for d in ds
     )  # fmt: skip
     values = {(Path(f).name, line): v for f, lines in result.values.items() for line, v in lines.items()}
-    # the cycle time (analysis/cycle_lenses.py): elapsed per line, totals per program and tool change,
+    # the cycle time (analysis/runs/cycle_lenses.py): elapsed per line, totals per program and tool change,
     # rounded where a converged run's sums may differ from a fresh run's in the last bits
     timing = {
         (Path(f).name, kind, line): tuple(round(x, 6) for x in value)

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from cncmacro.analysis.checks.static_checks import static_diagnostics
 from cncmacro.analysis.diagnostics import Diagnostic
-from cncmacro.analysis.static_checks import static_diagnostics
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.dialects import Dialect, get_dialect
 from cncmacro.library.machine_file import MachineSettings

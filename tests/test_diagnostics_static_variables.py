@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from cncmacro.analysis.static_checks import block_diagnostics
+from cncmacro.analysis.checks.static_checks import block_diagnostics
 from cncmacro.dialects import get_dialect
 from cncmacro.library.dialect_choice import dialect_from_text
 from cncmacro.library.machine_file import MachineSettings
@@ -168,7 +168,7 @@ def test_1_text_and_blocks_block_diagnostics_checks_one_line_alone():
 
 
 def test_2_profile_suggestion_names_the_control_a_file_reads_cleanly_on():
-    from cncmacro.analysis.profile_suggestion import suggested_profile
+    from cncmacro.analysis.checks.profile_suggestion import suggested_profile
     from cncmacro.dialects import get_dialect
     from cncmacro.syntax.document import ParsedDocument
 

@@ -16,7 +16,7 @@ from typing import Any
 
 import pytest
 
-from cncmacro.analysis.sequence_numbers import (
+from cncmacro.analysis.editing.sequence_numbers import (
     SequencePlan,
     add_sequence_numbers,
     remove_unused_sequence_numbers,

@@ -11,9 +11,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from cncmacro.analysis.call_checks import check_words
-from cncmacro.analysis.line_facts import LineFacts
-from cncmacro.analysis.static_checks import line_context
+from cncmacro.analysis.checks.call_checks import check_words
+from cncmacro.analysis.checks.line_facts import LineFacts
+from cncmacro.analysis.checks.static_checks import line_context
 from cncmacro.dialects import BY_NAME
 from cncmacro.library.machine_file import CallCode, MachineSettings
 from cncmacro.syntax.block_parser import parse_block

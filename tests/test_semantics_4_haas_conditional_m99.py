@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import pytest
 
-from cncmacro.analysis.sites import jump_sites
+from cncmacro.analysis.indexes.sites import jump_sites
 from cncmacro.dialects import get_dialect
 from cncmacro.lsp.conditional_m99 import if_goto_rewrite
 from cncmacro.syntax.block_parser import parse_block

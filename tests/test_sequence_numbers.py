@@ -4,7 +4,7 @@ before and after the edit; a jump whose label is computed refuses the edit, nami
 
 from __future__ import annotations
 
-from cncmacro.analysis.sequence_numbers import (
+from cncmacro.analysis.editing.sequence_numbers import (
     OutsideJump,
     SequencePlan,
     add_sequence_numbers,

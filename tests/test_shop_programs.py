@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from cncmacro.analysis.static_checks import static_diagnostics
+from cncmacro.analysis.checks.static_checks import static_diagnostics
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.debugging.breakpoints import Asked, Breakpoints
 from cncmacro.dialects import get_dialect

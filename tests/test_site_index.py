@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import random
 
-from cncmacro.analysis.site_index import SiteIndex
+from cncmacro.analysis.indexes.site_index import SiteIndex
 from cncmacro.syntax.document import ParsedDocument, split_lines
 
 LINES = ["G01 X1. Y2.", "#100=#100+1", "N10 G00 X0", "IF[#1 GT 2] GOTO10", "M99 P10", "(NOTE)", "G65 H81 P10 Q#1 R0"]

@@ -19,7 +19,7 @@ import pytest
 
 import cncmacro.syntax
 from bilingual_checks import CJK, PROSE, QUOTED, called_name, detail_problems, literal_parts
-from cncmacro.analysis.call_index import CallIndex
+from cncmacro.analysis.indexes.call_index import CallIndex
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.bilingual import in_language
 from cncmacro.cli.check import check_paths
@@ -363,7 +363,7 @@ def test_1_text_and_blocks_too_many_files_for_the_caller_search_is_said_in_chine
 ) -> None:
     for k in range(1, 4):
         (tmp_path / f"O{k:04d}.nc").write_text(f"O{k:04d}\nM30\n", encoding="utf-8")
-    with caplog.at_level(logging.WARNING, logger="cncmacro.analysis.call_index"):
+    with caplog.at_level(logging.WARNING, logger="cncmacro.analysis.indexes.call_index"):
         assert CallIndex([str(tmp_path)], MachineSettings(), None, "zh-CN", max_files=2).size == 0
         assert CallIndex([str(tmp_path)], MachineSettings(), None, "en", max_files=2).size == 0
     assert [r.getMessage() for r in caplog.records] == [

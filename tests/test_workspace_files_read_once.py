@@ -11,9 +11,9 @@ from pathlib import Path
 
 import pytest
 
-from cncmacro.analysis.site_index import SiteIndex
+from cncmacro.analysis.indexes.site_index import SiteIndex
+from cncmacro.analysis.indexes.workspace_index import WorkspaceIndex
 from cncmacro.analysis.workspace import WorkspaceAnalysis
-from cncmacro.analysis.workspace_index import WorkspaceIndex
 from cncmacro.dialects import get_dialect
 from cncmacro.library import files
 from cncmacro.library.programs import LoadedFile

@@ -15,8 +15,8 @@ from pathlib import Path
 
 import pytest
 
+from cncmacro.analysis.indexes.workspace_index import WorkspaceIndex
 from cncmacro.analysis.workspace import WorkspaceAnalysis
-from cncmacro.analysis.workspace_index import WorkspaceIndex
 from cncmacro.dap.protocol import MessageWriter, Request
 from cncmacro.dap.session import Session
 from cncmacro.library.files import find_program_files

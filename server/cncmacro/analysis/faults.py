@@ -12,8 +12,8 @@ from __future__ import annotations
 import logging
 
 from ..bilingual import pick
+from .checks.line_facts import LineFacts, finding
 from .diagnostics import Diagnostic, diagnostic
-from .line_facts import LineFacts, finding
 
 log = logging.getLogger(__name__)
 

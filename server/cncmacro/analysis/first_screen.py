@@ -14,12 +14,12 @@ from collections.abc import Sequence
 
 from ..bilingual import is_chinese
 from ..syntax.document import ParsedDocument
-from . import static_checks
-from .block_memo import BlockMemo
+from .checks import static_checks
+from .checks.line_facts import LineContext
+from .checks.static_lines import StaticLines, syntax_findings
 from .diagnostics import Diagnostic
-from .line_facts import LineContext
+from .indexes.block_memo import BlockMemo
 from .severity import apply_severities
-from .static_lines import StaticLines, syntax_findings
 
 FIRST_SCREEN_LINES = 2_000  # the lines of a huge document checked first, before the whole
 

@@ -72,19 +72,19 @@ from ..library.programs import FoundProgram, ProgramLibrary
 from ..machine import block_roles
 from ..syntax.document import ParsedDocument
 from ..syntax.nodes import Block
-from . import static_checks
-from .block_memo import BlockMemo
-from .clock_reads import DiskClockReads
+from .checks import static_checks
+from .checks.profile_suggestion import suggestion
+from .checks.static_lines import StaticLines
 from .diagnostics import Diagnostic
-from .disk_callers import DiskCallers, Targets
-from .entry_runs import EntryRuns
 from .first_screen import FIRST_SCREEN_LINES, first_screen_findings
-from .open_programs import OpenProgram, RunKey, open_programs
-from .profile_suggestion import suggestion
-from .run_checks import MAX_RECORDS, MAX_SECONDS, EntryRun
+from .indexes.block_memo import BlockMemo
+from .indexes.disk_callers import DiskCallers, Targets
+from .indexes.open_programs import OpenProgram, RunKey, open_programs
+from .runs.clock_reads import DiskClockReads
+from .runs.entry_runs import EntryRuns
+from .runs.run_checks import MAX_RECORDS, MAX_SECONDS, EntryRun
+from .runs.unreached import UnreachedRanges
 from .severity import check_overrides
-from .static_lines import StaticLines
-from .unreached import UnreachedRanges
 from .workspace_documents import WorkspaceDocument
 from .workspace_result import AnalysisResult, gather
 

@@ -18,9 +18,9 @@ from ..library.dialect_choice import HEADER_LINES, dialect_from_text
 from ..library.programs import LoadedFile
 from ..syntax.document import ParsedDocument
 from ..syntax.nodes import Block
-from .clock_reads import clock_reads
+from .checks.static_lines import StaticLines
 from .diagnostics import Diagnostic
-from .static_lines import StaticLines
+from .runs.clock_reads import clock_reads
 
 
 @dataclass(slots=True)

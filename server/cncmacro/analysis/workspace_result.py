@@ -18,14 +18,14 @@ from dataclasses import dataclass, field
 
 from ..bilingual import pick
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
-from .cycle_lenses import FileTiming, file_timings
 from .diagnostics import UNNECESSARY, Diagnostic, diagnostic
-from .entry_runs import EntryRuns
 from .faults import RUN, internal_error
-from .open_programs import RunKey
-from .run_checks import FILE_BUDGETS, not_run_diagnostic, run_diagnostics
+from .indexes.open_programs import RunKey
+from .runs.cycle_lenses import FileTiming, file_timings
+from .runs.entry_runs import EntryRuns
+from .runs.run_checks import FILE_BUDGETS, not_run_diagnostic, run_diagnostics
+from .runs.unreached import UnreachedRanges
 from .severity import apply_severities
-from .unreached import UnreachedRanges
 from .workspace_documents import WorkspaceDocument
 
 log = logging.getLogger(__name__)

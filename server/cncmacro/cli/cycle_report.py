@@ -11,7 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from ..analysis.cycle_summary import ToolPart, Totals, tool_name, tool_parts, totals_text
+from ..analysis.runs.cycle_summary import ToolPart, Totals, tool_name, tool_parts, totals_text
 from ..bilingual import is_chinese
 from ..machine import Machine
 from ..machine.status import RunStatus

@@ -23,7 +23,7 @@ import sys
 from pathlib import Path
 from typing import Any, TextIO
 
-from ..analysis.subprogram_alone import subprogram_remarks, subprogram_text
+from ..analysis.runs.subprogram_alone import subprogram_remarks, subprogram_text
 from ..bilingual import in_language, is_chinese, pick
 from ..library.machine_file import parse_preset
 from ..library.persistence_lock import LOCK_WAIT

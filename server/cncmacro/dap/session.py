@@ -20,7 +20,7 @@ from functools import partial
 from pathlib import Path
 from typing import Any, BinaryIO
 
-from ..analysis.subprogram_alone import LAUNCH_REPEAT, subprogram_remarks
+from ..analysis.runs.subprogram_alone import LAUNCH_REPEAT, subprogram_remarks
 from ..bilingual import detail
 from ..debugging.breakpoints import Asked, Breakpoint, Breakpoints, LineBreakpoint
 from ..debugging.history import History

@@ -1,8 +1,8 @@
 """Program files read from disk and parsed, each once until it changes.
 
 ``FileCache`` is the one reader of a workspace's program files: the program library's lookups
-(``programs.py``), the index of who calls whom (``analysis/call_index.py``) and the language
-server's workspace index (``analysis/workspace_index.py``) all read through the same one, so a
+(``programs.py``), the index of who calls whom (``analysis/indexes/call_index.py``) and the language
+server's workspace index (``analysis/indexes/workspace_index.py``) all read through the same one, so a
 file is read (``files.read_program``, with its limits) and parsed (``load_text``, with the shared
 block cache) once, not once per reader. An entry is kept by the file's (modification time,
 size), looked at with one ``stat`` each time it is asked for: a file changed on disk is read

@@ -1,6 +1,6 @@
 """Call hierarchy (``textDocument/prepareCallHierarchy``, ``callHierarchy/incomingCalls``,
 ``callHierarchy/outgoingCalls``): the programs that call a program and the ones it calls, across
-the workspace, as ``analysis/call_hierarchy.py`` finds them. The cursor on a call's ``P`` (or a
+the workspace, as ``analysis/editing/call_hierarchy.py`` finds them. The cursor on a call's ``P`` (or a
 call code) names the called program, on ``M97 P`` the label it enters; anywhere else the program
 the cursor is in. An item carries its file and first line in ``data``.
 """
@@ -12,8 +12,8 @@ from typing import TYPE_CHECKING, Any
 
 from lsprotocol import types
 
-from ..analysis.call_hierarchy import CallTarget, incoming, label_item, outgoing, program_item
-from ..analysis.call_sites import call_site
+from ..analysis.editing.call_hierarchy import CallTarget, incoming, label_item, outgoing, program_item
+from ..analysis.indexes.call_sites import call_site
 from ..library.file_cache import LoadedFile
 from ..machine.jump_words import local_call_kind
 from .cursor import cursor_at

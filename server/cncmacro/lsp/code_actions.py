@@ -25,8 +25,8 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..analysis.call_sites import call_site
-from ..analysis.profile_suggestion import CODE, suggestion_target
+from ..analysis.checks.profile_suggestion import CODE, suggestion_target
+from ..analysis.indexes.call_sites import call_site
 from ..library.files import SkippedFileError, read_bytes
 from ..library.machine_file import MACHINE_FILE_NAME, MAX_MACHINE_FILE_BYTES, CallCode, MachineSettings
 from ..machine.block_rules import BEFORE_CALL, validate_block

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..analysis.call_sites import CallSite, call_site
+from ..analysis.indexes.call_sites import CallSite, call_site
 from ..bilingual import pick
 from ..dialects import describe, tables
 from ..dialects.dialect import ARGUMENTS_I

@@ -5,7 +5,7 @@ elapsed time in the hover of any block.
 run started from and completed, and ``T2 ≈ 48 s · 310 mm cut · 1,020 mm rapid`` above each tool
 change (that tool's part, up to the next change or the end). The hover of a block adds when it
 first starts. All of it comes from the analysis the server already runs
-(``analysis/cycle_lenses.py``): a request runs nothing, and a document edited since its last
+(``analysis/runs/cycle_lenses.py``): a request runs nothing, and a document edited since its last
 analysis shows nothing until the next one.
 """
 
@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..analysis.cycle_summary import duration_text, tool_name, totals_text
+from ..analysis.runs.cycle_summary import duration_text, tool_name, totals_text
 from .texts import t
 
 if TYPE_CHECKING:

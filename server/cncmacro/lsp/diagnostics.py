@@ -36,8 +36,8 @@ from typing import TYPE_CHECKING, cast
 
 from lsprotocol import types
 
-from ..analysis.cycle_lenses import FileTiming
 from ..analysis.first_screen import FIRST_SCREEN_LINES
+from ..analysis.runs.cycle_lenses import FileTiming
 from ..analysis.workspace import WorkspaceAnalysis
 from ..analysis.workspace_result import AnalysisResult
 from ..syntax.document import ParsedDocument, head_lines

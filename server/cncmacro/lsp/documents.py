@@ -22,8 +22,8 @@ from lsprotocol import types
 from pygls.exceptions import JsonRpcInvalidParams
 from pygls.uris import from_fs_path, to_fs_path
 
-from ..analysis.block_memo import BlockMemo
-from ..analysis.site_index import SiteIndex
+from ..analysis.indexes.block_memo import BlockMemo
+from ..analysis.indexes.site_index import SiteIndex
 from ..dialects.dialect import Dialect
 from ..library.dialect_choice import HEADER_LINES
 from ..library.machine_file import CallCode, MachineSettings

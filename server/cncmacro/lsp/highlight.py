@@ -8,8 +8,8 @@ a Haas ``M97``), the labels N100 of its program are marked as Write and each jum
 On an O header's number, or on the word of a call that names a program (``G65 P9100``,
 ``G66 P9100``, ``M98 P9100``, with the profile's count digits: ``M98 P30040`` names O0040; a
 machine file's call code), the headers of that program in the file are marked as Write and each
-call to it as Read; what a call names is ``analysis/call_sites.py``'s, as for go to definition.
-Where things are comes from the document's site index (``analysis/site_index.py``); in a huge
+call to it as Read; what a call names is ``analysis/indexes/call_sites.py``'s, as for go to definition.
+Where things are comes from the document's site index (``analysis/indexes/site_index.py``); in a huge
 file whose index is still being made in steps (``site_steps.py``) nothing is marked meanwhile,
 rather than the editor waiting seconds at each move of the cursor.
 """
@@ -21,8 +21,8 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..analysis.call_sites import calls_of_program
-from ..analysis.sites import label_jumps
+from ..analysis.indexes.call_sites import calls_of_program
+from ..analysis.indexes.sites import label_jumps
 from ..dialects import describe
 from ..library.machine_file import CallCode
 from ..syntax.nodes import Var

@@ -9,7 +9,7 @@ a conditional jump; an O program (or the P of a call) shows its title
 and file, or, for a program kept on the control that the profile documents (Haas's probing
 macros), what it does, the arguments it reads (those the call gives marked) and what it
 writes. Only the block under the cursor is parsed; the places come from each file's site index
-(``analysis/site_index.py``), in time proportional to how many there are.
+(``analysis/indexes/site_index.py``), in time proportional to how many there are.
 """
 
 from __future__ import annotations
@@ -19,8 +19,8 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..analysis.call_sites import call_site
-from ..analysis.sites import label_jumps, word_at
+from ..analysis.indexes.call_sites import call_site
+from ..analysis.indexes.sites import label_jumps, word_at
 from ..bilingual import in_language, is_chinese, pick
 from ..dialects import describe
 from ..dialects.functions_data import GSK_H_CODES

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..analysis.call_sites import call_site
+from ..analysis.indexes.call_sites import call_site
 from ..machine.calls import argument_targets
 from ..planner.numbers import format_plain
 from .positions import Encoding

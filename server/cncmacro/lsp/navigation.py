@@ -17,9 +17,9 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
 
-from ..analysis.call_sites import call_site
-from ..analysis.site_index import FileSites
-from ..analysis.sites import label_jumps, starts_from_the_top
+from ..analysis.indexes.call_sites import call_site
+from ..analysis.indexes.site_index import FileSites
+from ..analysis.indexes.sites import label_jumps, starts_from_the_top
 from ..dialects import describe
 from ..library.machine_file import CallCode
 from ..machine.jumps import first_line, goto_line, return_line

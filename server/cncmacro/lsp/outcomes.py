@@ -21,7 +21,7 @@ from typing import Any
 from lsprotocol import types
 
 from ..analysis import Diagnostic
-from ..analysis.cycle_lenses import FileTiming
+from ..analysis.runs.cycle_lenses import FileTiming
 from ..analysis.workspace import WorkspaceAnalysis
 from ..analysis.workspace_result import AnalysisResult, Value
 from .documents import OpenDocument

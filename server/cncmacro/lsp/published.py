@@ -19,8 +19,8 @@ from typing import TYPE_CHECKING, cast
 from lsprotocol import types
 
 from ..analysis import Diagnostic
-from ..analysis.cycle_lenses import FileTiming
 from ..analysis.first_screen import FIRST_SCREEN_LINES
+from ..analysis.runs.cycle_lenses import FileTiming
 from ..analysis.workspace import WorkspaceAnalysis
 from .cycle_lenses import refresh_code_lenses
 from .documents import OpenDocument

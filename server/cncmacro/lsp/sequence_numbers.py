@@ -1,6 +1,6 @@
 """The sequence-number commands (``workspace/executeCommand``): renumber the N labels of a file or
 a selection with a step, add sequence numbers to the blocks without one, remove the ones nothing
-jumps to. The analysis (``analysis/sequence_numbers.py``) decides every change; this module asks
+jumps to. The analysis (``analysis/editing/sequence_numbers.py``) decides every change; this module asks
 the editor whether to keep the labels a computed jump could reach when one refuses the edit
 (``window/showMessageRequest``), applies the result (``workspace/applyEdit``) and answers with
 what it did, for a client that wants to say more.
@@ -16,8 +16,8 @@ from typing import TYPE_CHECKING, Any
 
 from lsprotocol import types
 
-from ..analysis.outside_jumps import outside_jumps
-from ..analysis.sequence_numbers import (
+from ..analysis.editing.outside_jumps import outside_jumps
+from ..analysis.editing.sequence_numbers import (
     MAX_SEQUENCE_NUMBER,
     SequencePlan,
     add_sequence_numbers,

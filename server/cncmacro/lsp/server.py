@@ -29,7 +29,7 @@ from pygls.protocol.language_server import lsp_method
 from pygls.workspace import Workspace
 
 from .. import __version__
-from ..analysis.workspace_index import WorkspaceIndex
+from ..analysis.indexes.workspace_index import WorkspaceIndex
 from ..dialects.registry import profile_facts
 from ..library.machine_file import MACHINE_FILE_NAME
 from ..syntax.block_parser import warm_up

@@ -12,8 +12,8 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..analysis.call_sites import call_site
-from ..analysis.sites import variable_sites
+from ..analysis.indexes.call_sites import call_site
+from ..analysis.indexes.sites import variable_sites
 from ..library.programs import FoundProgram
 from ..machine.calls import argument_targets, letters_for_local
 from .cursor import cursor_at

@@ -1,4 +1,4 @@
-"""The site index of a huge document (``analysis/site_index.py``), made in steps on the editor's
+"""The site index of a huge document (``analysis/indexes/site_index.py``), made in steps on the editor's
 thread once its first analysis is published, or when a question needs it sooner.
 
 Made at once, the index of a million-line file takes seconds, and the editor's messages would
@@ -14,7 +14,7 @@ import logging
 import weakref
 from functools import partial
 
-from ..analysis.site_index import SiteIndex
+from ..analysis.indexes.site_index import SiteIndex
 from .editor_steps import between_steps, one_step
 
 log = logging.getLogger(__name__)

@@ -1,5 +1,5 @@
 """Which words of a block of NC words name a label the run jumps to (docs/semantics.md §4, §5),
-as the interpreter reads them, for the editor's searches (``analysis/sites.py``: go to
+as the interpreter reads them, for the editor's searches (``analysis/indexes/sites.py``: go to
 definition, references, rename, renumbering) and the static checks of ``M99 P``.
 
 Which call a block makes is ``recognise_call``'s (``calls.py``), and a word is a jump only where
@@ -18,7 +18,7 @@ the run jumps by it:
 A block that makes any other call jumps by none of its words: a G65/G66 macro call's M99 and Q
 are its arguments M and Q, and a code the machine file's ``[calls]`` makes a call (``M97 = 9097``
 on a Haas) is that call, whose P is no label. ``GOTO n`` and ``IF [..] GOTO n`` (Haas's
-conditional ``[cond] M99 P n`` among them) are statements, not words: ``analysis/sites.py``
+conditional ``[cond] M99 P n`` among them) are statements, not words: ``analysis/indexes/sites.py``
 reads them from the syntax.
 """
 

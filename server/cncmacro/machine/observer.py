@@ -16,7 +16,7 @@ nothing for any of this. With an observer:
   ``Snapshot`` can be taken).
 
 The methods here do nothing: a subclass overrides what it needs. The analysis's ``EntryRun``
-(``analysis/run_checks.py``) is one; it sets ``track_serial`` before each chunk it runs,
+(``analysis/runs/run_checks.py``) is one; it sets ``track_serial`` before each chunk it runs,
 raises ``track_floor`` when it goes back to a checkpoint, and reads ``last_run`` to decide whether an edited
 line runs again after a given point of an earlier run.
 """

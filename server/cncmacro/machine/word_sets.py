@@ -5,7 +5,7 @@ Nearly every line of a CAM program is plain words that no rule looks at (``G01 X
 the static checks pass over such a line without building its words. Which lines they look at is
 not written here: each rule says which words it looks at (``recognise_call``'s call words in
 ``calls.py``, the words a control may refuse in ``words.py``, the checks' own in
-``analysis/call_checks.py``) as ``WordSet``s, and ``plain_search`` makes the search from them, so
+``analysis/checks/call_checks.py``) as ``WordSet``s, and ``plain_search`` makes the search from them, so
 that a rule that looks at a word is never passed over on a plain line.
 
 A set names its words by address and code as the interpreter reads them, rounded (``M97.6`` is

@@ -15,7 +15,7 @@ only warnings and a run goes on as if the word were a one-shot code.
 THEN by the FANUC profiles and Haas (``Dialect.if_without_then``) and Haas's conditional jump
 ``[cond] M99 P n`` by Haas (``Dialect.conditional_m99``); a dialect without the switch stops with
 alarm 114 at such a block. The interpreter (``blocks.py``, ``nc_blocks.py``) and the static checks
-(``analysis/call_checks.py``, ``analysis/statement_checks.py``) take their messages from here.
+(``analysis/checks/call_checks.py``, ``analysis/checks/statement_checks.py``) take their messages from here.
 """
 
 from __future__ import annotations

@@ -1,0 +1,74 @@
+"""Finding the programs that calls name, for ``program-not-found`` (docs/semantics.md §5).
+
+A call's literal target is looked up as the interpreter looks it up: among the O programs of
+the calling file first, then through the ``ProgramLibrary`` near the file (``find_number``,
+and on gsk980tdi ``find_name`` for ``P[CUT]``). Without a library only the file's own programs
+are known, so a target that is not among them is left to the run rather than reported.
+"""
+
+from __future__ import annotations
+
+from ...bilingual import pick
+from ...dialects.dialect import Dialect
+from ...library.programs import FoundProgram, LoadedFile, ProgramLibrary
+from ...syntax.program import Program
+from ..diagnostics import Diagnostic, diagnostic
+from ..indexes.call_sites import CallSite
+
+UNKNOWN = "unknown"
+
+
+class ProgramFinder:
+    """Looks up call targets for one file, each target once."""
+
+    def __init__(self, program: Program, file: str, dialect: Dialect, library: ProgramLibrary | None) -> None:
+        self.dialect = dialect
+        self.program = program
+        self.near = LoadedFile(file, [], program, dialect.name)
+        self.library = library
+        self._numbers: dict[int, FoundProgram | None] = {}
+        self._names: dict[str, FoundProgram | None] = {}
+
+    def find(self, site: CallSite, line: int) -> FoundProgram | str | None:
+        """The program ``site`` calls; None when it does not exist; ``UNKNOWN`` when that
+        cannot be told without a library."""
+        if site.number is None and site.name is None:
+            return FoundProgram(self.near, self.program.unit_at(line))  # M98 Q: the current program
+        if site.number is not None:
+            number = site.number
+            if number not in self._numbers:
+                unit = self.program.unit_numbered(number)
+                if unit is not None:
+                    self._numbers[number] = FoundProgram(self.near, unit)
+                elif self.library is None:
+                    return UNKNOWN
+                else:
+                    found = self.library.find_number(number, self.near)
+                    if found is None and self.dialect.on_control(number):
+                        found = self.library.control_program(number)
+                    self._numbers[number] = found
+            return self._numbers[number]
+        name = site.name or ""
+        if self.library is None:
+            return UNKNOWN
+        if name not in self._names:
+            self._names[name] = self.library.find_name(name, self.near)
+        return self._names[name]
+
+    def is_this_file(self, found: FoundProgram) -> bool:
+        return found.file is self.near
+
+
+def not_found(site: CallSite, file: str, line: int, locale: str) -> Diagnostic:
+    """The ``program-not-found`` diagnostic of a call whose program does not exist."""
+    if site.number is not None:
+        what = f"O{site.number:04d}"
+    else:
+        what = f"[{site.name}]"
+    message = pick(
+        locale,
+        f"{site.kind} calls {what}, which is neither in this file nor found near it (alarm 76)",
+        f"{site.kind} 调用的程序 {what} 不在本文件中，附近也找不到（报警 076）",
+    )
+    end = max(site.end, site.start + 1)
+    return diagnostic(file, line, site.start, line, end, "program-not-found", message)

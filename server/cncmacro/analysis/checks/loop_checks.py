@@ -1,0 +1,85 @@
+"""Loop checks across lines (docs/semantics.md §4): ``loop-number`` and ``loop-mismatch``.
+
+The pairs and the unpaired markers come from ``syntax/program.py``. A DO or END number must be
+a whole 1, 2 or 3, and loops may nest at most 3 deep (``loop-number``, alarm 126, as the
+interpreter's ``loop_number`` and ``MAX_LOOP_DEPTH`` decide). A DO without its END (124), an
+END without a DO (126) and crossing loops (126) are ``loop-mismatch``; a marker whose number is
+already wrong is reported once, as ``loop-number``, because that is the alarm the control gives.
+"""
+
+from __future__ import annotations
+
+from ...bilingual import pick
+from ...machine.blocks import MAX_LOOP_DEPTH
+from ...syntax.nodes import Block, Do, End, Number, While
+from ...syntax.program import Program
+from ..diagnostics import Diagnostic, Related, diagnostic
+
+
+def _valid_number(num: Number) -> bool:
+    v = num.value
+    return v == int(v) and 1 <= v <= 3
+
+
+def _marker_span(block: Block) -> tuple[int, int]:
+    for s in block.statements:
+        if isinstance(s, (While, Do, End)):
+            return s.start, s.end
+    return 0, 1
+
+
+def loop_diagnostics(program: Program, file: str, locale: str) -> list[Diagnostic]:
+    """Every loop-number and loop-mismatch finding of ``program``."""
+    out: list[Diagnostic] = []
+    blocks = program.blocks
+    bad_lines: set[int] = set()
+    for line in program.markers:
+        if program.after_tape(line):
+            break  # past the closing '%': not read
+        marker = blocks[line].loop_marker()
+        if marker is None or _valid_number(marker[1]):
+            continue
+        kind, num = marker
+        bad_lines.add(line)
+        start, end = num.start, num.end
+        out.append(
+            diagnostic(file, line, start, line, max(end, start + 1), "loop-number",
+                       pick(locale, f"{kind} {num.text}: the loop number must be 1, 2 or 3 (alarm 126)",
+                            f"{kind} {num.text}：循环号必须为 1、2 或 3（报警 126）"))
+        )  # fmt: skip
+    open_ends: list[int] = []
+    for pair in sorted(program.loops, key=lambda p: p.do_line):
+        while open_ends and open_ends[-1] < pair.do_line:
+            open_ends.pop()
+        open_ends.append(pair.end_line)
+        if len(open_ends) > MAX_LOOP_DEPTH and pair.do_line not in bad_lines:
+            start, end = _marker_span(blocks[pair.do_line])
+            out.append(
+                diagnostic(file, pair.do_line, start, pair.do_line, end, "loop-number",
+                           pick(locale, f"loops nested {len(open_ends)} deep; at most {MAX_LOOP_DEPTH} (alarm 126)",
+                                f"循环嵌套 {len(open_ends)} 层，最多 {MAX_LOOP_DEPTH} 层（报警 126）"))
+            )  # fmt: skip
+    for problem in program.loop_problems:
+        if problem.line in bad_lines:
+            continue
+        line = problem.line
+        start, end = _marker_span(blocks[line])
+        n = problem.number
+        related: tuple[Related, ...] = ()
+        if problem.kind == "do-without-end":
+            message = pick(locale, f"DO {n} has no END {n} (alarm 124)", f"DO {n} 没有对应的 END {n}（报警 124）")
+        elif problem.kind == "end-without-do":
+            message = pick(locale, f"END {n} has no DO {n} before it (alarm 126)",
+                           f"END {n} 之前没有对应的 DO {n}（报警 126）")  # fmt: skip
+        else:
+            other = problem.other_line if problem.other_line is not None else line
+            message = pick(
+                locale,
+                f"END {n} closes its loop while the loop opened on line {other + 1} is still open: "
+                "loops may not cross (alarm 126)",
+                f"END {n} 结束循环时，第 {other + 1} 行开始的循环尚未结束：循环不能交叉（报警 126）",
+            )
+            o_start, o_end = _marker_span(blocks[other])
+            related = (Related(file, other, o_start, o_end, pick(locale, "the inner loop", "内层循环")),)
+        out.append(diagnostic(file, line, start, line, end, "loop-mismatch", message, related))
+    return out

@@ -1,0 +1,243 @@
+"""The index of program files across the workspace, kept fresh by file events: which programs
+exist, where each file's labels and variables are, which program a call names.
+
+At start every program file under the workspace folders is read and parsed once (through its
+``FileCache``, ``library/file_cache.py``, the one reader of the workspace's files: the
+analysis's program library and call index read through the same one), as a search of a workspace folder
+reads files (``library/files.py``: at most ``MAX_PROGRAM_FILES`` files and ``MAX_FOLDER_ENTRIES``
+entries per folder, each file up to ``MAX_PROGRAM_BYTES``, regular files only, ``MAX_INDEX_BYTES``
+in all, so that ``initialize`` is answered soon whatever the folder, ``/`` too); what was not read
+is kept in ``skipped`` for the server to report (a file over the size limit, often a long CAM
+program, is named as not read for the programs calls look for: opened in the editor it is read
+and checked in full). A file changed on disk (an editor's file event,
+or ``disk_watch.py``) is read again, or dropped when it is gone; only a regular file is ever
+opened (a FIFO named ``O1234.nc`` would wait for a writer). Open documents take the place of
+their file on disk, so every question (which programs exist, where ``#100`` is written, who
+calls O9100) sees the editor's text: the index knows them through ``open_files``, a function
+giving the open documents (``OpenFile``: path, lines, parsed text, site index), and reads each
+one's dialect through ``dialect_for``. Each file on disk gets a site index (``site_index.py``)
+at the first search, kept while the file is. Program lookup for a call goes through
+``library.programs.ProgramLibrary``. It knows nothing of a protocol: the language server makes
+one over its documents.
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Protocol
+
+from ...bilingual import Detail, detail
+from ...dialects.dialect import Dialect
+from ...library.file_cache import FileCache
+from ...library.files import (
+    MAX_FOLDER_ENTRIES,
+    MAX_INDEX_BYTES,
+    MAX_PROGRAM_FILES,
+    BinaryFileError,
+    FileTooLargeError,
+    ReadScope,
+    SkippedFileError,
+    is_program_file,
+    search_program_files,
+    shown_text,
+)
+from ...library.programs import FoundProgram, LoadedFile, ProgramLibrary
+from ...syntax.document import ParsedDocument
+from .block_memo import BlockMemo
+from .site_index import FileSites, SiteIndex
+from .sites import Calls
+
+log = logging.getLogger(__name__)
+
+
+@dataclass(frozen=True, slots=True)
+class ProgramEntry:
+    """One O program of the workspace (or a file without a header, named by its file)."""
+
+    name: str  # O9100, or the file's stem
+    number: int | None
+    title: str | None
+    path: str
+    line: int
+    end: int
+    first: bool  # the file's first program (what a call by the file's name runs)
+
+
+class OpenFile(Protocol):
+    """A document open in an editor, as the index sees it (the language server's
+    ``OpenDocument``)."""
+
+    @property
+    def path(self) -> str: ...
+
+    @property
+    def lines(self) -> list[str]: ...
+
+    @property
+    def parsed(self) -> ParsedDocument: ...
+
+    @property
+    def sites(self) -> SiteIndex: ...
+
+    def as_loaded(self) -> LoadedFile: ...
+
+
+class WorkspaceIndex:
+    """Parsed program files under the workspace folders, with the open documents on top.
+    ``memo`` is the per-line fact cache of the open documents (``block_memo.py``), shared by
+    the files on disk; ``files`` reads the files (a cache of its own when none is given)."""
+
+    def __init__(self, open_files: Callable[[], Iterable[OpenFile]], dialect_for: Callable[[list[str], str], Dialect],
+                 memo: BlockMemo | None = None, files: FileCache | None = None,
+                 calls_for: Callable[[str], Calls] = lambda path: None) -> None:  # fmt: skip
+        self.open_files = open_files
+        self.dialect_for = dialect_for
+        self.calls_for = calls_for  # the machine file's call codes for a path (which words are jumps)
+        self.memo = memo if memo is not None else BlockMemo()
+        self.disk = files if files is not None else FileCache()
+        self.roots: list[Path] = []
+        self.files: dict[str, LoadedFile] = {}
+        self.skipped: list[Detail] = []  # what the last scan did not read, and why
+        self._sites: dict[str, tuple[LoadedFile, SiteIndex]] = {}  # the files' site indexes, by path
+
+    def scan(self, roots: list[str]) -> int:
+        """Read every program file under ``roots``; the number of files indexed."""
+        self.roots = [Path(r) for r in roots if r]
+        self.files.clear()
+        self.skipped = []
+        read = 0
+        for root in self.roots:
+            if not os.path.isdir(root):
+                continue
+            found = search_program_files(root, MAX_PROGRAM_FILES, MAX_FOLDER_ENTRIES)
+            self.skipped += found.skipped
+            for k, p in enumerate(found.files):
+                if read > MAX_INDEX_BYTES:
+                    self.skipped.append(_index_full(root, len(found.files) - k))
+                    break
+                problem = self.reload(str(p))
+                if problem is not None:
+                    self.skipped.append(problem)
+                elif str(p) in self.files:
+                    read += sum(len(line) + 1 for line in self.files[str(p)].lines)
+        return len(self.files)
+
+    def reload(self, path: str) -> Detail | None:
+        """Read one file again (created, changed or deleted on disk); why it was not read, if it
+        was not (a binary file is only logged: it is no program). The file cache reads it again
+        at the next question, wherever it is."""
+        self.disk.forget(path)
+        if ReadScope.of(self.roots).refusal(path) is not None:
+            return None  # only program files under the workspace folders are read
+        try:
+            os.lstat(path)
+        except FileNotFoundError:  # gone (a file that cannot be looked at is said so below)
+            self.files.pop(path, None)
+            return None
+        except OSError:
+            pass
+        try:
+            loaded = self.disk.load(path)
+        except (OSError, SkippedFileError) as e:
+            self.files.pop(path, None)
+            if isinstance(e, BinaryFileError):
+                log.info("not indexed: %s", e)
+                return None
+            if isinstance(e, FileTooLargeError):  # a long CAM file, or a program a call will miss
+                shown = shown_text(path)
+                return detail(
+                    f"{shown}: {e.size:,} bytes, over the limit of {e.limit:,}: not read for the programs that calls"
+                    " look for (opened in the editor, it is checked in full)",
+                    f"{shown}：{e.size:,} 字节，超过 {e.limit:,} 字节的上限：调用查找程序时不读取"
+                    "（在编辑器中打开则完整检查）",
+                )
+            if isinstance(e, SkippedFileError):
+                return e.message
+            reason = e.strerror or str(e)
+            shown = shown_text(path)
+            return detail(f"{shown}: cannot read ({reason})", f"{shown}：无法读取（{reason}）")
+        self.files[path] = loaded
+        return None
+
+    def refresh_folder(self, folder: str) -> None:
+        """A folder's entries changed: its program files that are new are read, the ones gone
+        dropped (the others are read again by their own change)."""
+        here = Path(folder)
+        try:
+            names = os.listdir(here)
+        except OSError:
+            names = []
+        present = {str(here / n) for n in names if not n.startswith(".") and is_program_file(here / n)}
+        for path in [p for p in self.files if Path(p).parent == here and p not in present]:
+            del self.files[path]
+        for path in sorted(present - self.files.keys()):
+            self.reload(path)
+
+    # ---- views
+    def loaded_files(self) -> Iterator[LoadedFile]:
+        """Every program file: open documents as the editor has them, the rest as on disk."""
+        open_paths = set()
+        for doc in self.open_files():
+            open_paths.add(doc.path)
+            yield doc.as_loaded()
+        for path, loaded in self.files.items():
+            if path not in open_paths:
+                yield loaded
+
+    def file_sites(self) -> Iterator[FileSites]:
+        """Every program file with its site index: open documents as the editor has them (their
+        own index), the others as on disk (an index per loaded file, kept while it is)."""
+        open_paths = set()
+        for doc in self.open_files():
+            open_paths.add(doc.path)
+            yield FileSites(doc.path, doc.lines, doc.sites)
+        files = self.files
+        kept = self._sites
+        for path in [p for p, (loaded, _) in kept.items() if files.get(p) is not loaded]:
+            del kept[path]
+        for path, loaded in files.items():
+            if path in open_paths:
+                continue
+            hit = kept.get(path)
+            dialect, calls = self.dialect_for(loaded.lines, path), self.calls_for(path)
+            if hit is None or not hit[1].reads_with(dialect, calls):
+                hit = kept[path] = (loaded, SiteIndex(loaded.program.blocks, dialect, calls, self.memo))
+            yield FileSites(path, loaded.lines, hit[1])
+
+    def programs(self) -> Iterator[ProgramEntry]:
+        """Every program, named as the outline names it (``Program.named_units``)."""
+        for f in self.loaded_files():
+            units = f.program.named_units()
+            for u in units:
+                if u.number is None and u.end - u.start <= 0:
+                    continue
+                name = f"O{u.number:04d}" if u.number is not None else Path(f.path).stem
+                yield ProgramEntry(name, u.number, u.title, f.path, u.start, u.end, u is units[0])
+
+    def library(self, near: OpenFile | None) -> ProgramLibrary:
+        """A program library over the workspace folders with the open documents' text (the
+        files on disk read through the index's cache)."""
+        texts = {d.path: d.parsed.text for d in self.open_files() if near is None or d is not near}
+        return ProgramLibrary(folders=list(self.roots), texts=texts, files=self.disk)
+
+    def find_program(self, doc: OpenFile, number: int | None, name: str | None) -> FoundProgram | None:
+        """The program a call in ``doc`` names, found as the program library finds it."""
+        lib = self.library(doc)
+        near = doc.as_loaded()
+        if name is not None:
+            return lib.find_name(name, near)
+        if number is not None:
+            return lib.find_number(number, near)
+        return None
+
+
+def _index_full(root: Path, left: int) -> Detail:
+    shown = shown_text(str(root))
+    return detail(
+        f"{shown}: {left:,} program files are not indexed: the index holds {MAX_INDEX_BYTES:,} bytes of text already",
+        f"{shown}：{left:,} 个程序文件未编入索引：索引已有 {MAX_INDEX_BYTES:,} 字节的文本",
+    )
