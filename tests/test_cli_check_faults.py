@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from cncmacro.analysis import static_checks
+from cncmacro.analysis.checks import static_checks
 from cncmacro.analysis.runs.run_checks import EntryRun
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.cli.check import check_paths

@@ -10,8 +10,8 @@ import subprocess
 import sys
 from pathlib import Path
 
-from cncmacro.analysis import run_checks
 from cncmacro.analysis.diagnostics import Diagnostic
+from cncmacro.analysis.runs import run_checks
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.library.machine_file import MachineSettings
 

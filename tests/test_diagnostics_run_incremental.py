@@ -8,7 +8,7 @@ from pathlib import Path
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from cncmacro.analysis import run_checks, unreached
+from cncmacro.analysis.runs import run_checks, unreached
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.library.machine_file import MachineSettings
 

@@ -9,7 +9,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from cncmacro.analysis import run_checks
+from cncmacro.analysis.runs import run_checks
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 
 
