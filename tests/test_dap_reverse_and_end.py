@@ -10,7 +10,7 @@ from pathlib import Path
 
 from cncmacro.debugging.breakpoints import Asked, Breakpoints
 from cncmacro.debugging.history import History
-from cncmacro.debugging.stepping import CONTINUE, STEP_IN, Stepper, Stop
+from cncmacro.debugging.stepping import CONTINUE, STEP_IN, Stepper, Stop, last_line_run
 from running import lines, machine
 
 LOOP = lines(
@@ -190,3 +190,15 @@ def test_1_block_delete_a_breakpoint_on_a_deleted_block_is_not_verified_while_th
         (2, True, 6, None), (3, False, None, "this block is skipped: block delete is on"),
         (4, False, None, "this block is skipped: block delete is on"),
     ]  # fmt: skip
+
+
+def test_5_program_end_a_code_from_a_variable_ends_the_run_and_the_debugger_names_it(tmp_path):
+    # M#3 with #3=30 is M30 to the run: the end stop says so, the last line run is the M#3 line
+    # (line 3), and one step back lands before it, on line 3 again with the run not over.
+    stepper, _bps, _path = session(tmp_path, lines("#3=30", "#100=1", "M#3", "#101=2"))
+    stop = stepper.run(CONTINUE)
+    assert (stop.reason, stop.description) == ("step", "program end (M30)")
+    m = stepper.machine
+    assert (last_line_run(m) + 1, m.C[100], m.C[101]) == (3, 1.0, None)
+    stepper.step_back()
+    assert (m.status, m.frames[-1].pc + 1, m.C[100]) == ("paused", 3, 1.0)

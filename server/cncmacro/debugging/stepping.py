@@ -25,7 +25,6 @@ from ..bilingual import in_language, is_chinese, pick
 from ..machine import Machine
 from ..machine.block_roles import skipped
 from ..machine.commanded_axes import CommandedAxes
-from ..machine.program_end import end_code
 from ..machine.status import FINISHED, RunStatus
 from ..planner.moves import Move
 from .breakpoints import Breakpoints, Hit
@@ -270,15 +269,11 @@ class Stepper:
 
 
 def _end_code(m: Machine) -> str | None:
-    """``M30``, ``M02`` or ``M99`` when the block the main level stands on ended the run
-    (``machine/program_end.py``)."""
-    frame = m.frames[-1]
-    blocks = frame.found.file.program.blocks
-    if frame.pc < len(blocks):
-        code = end_code(blocks[frame.pc])
-        if code is not None:
-            return f"M{int(code):02d}"
-    return None
+    """``M30``, ``M02`` or ``M99`` when a code ended the completed run (``Machine.ended_with``,
+    as the run evaluated it: ``M#3`` with ``#3=30`` is M30), None when it ran off its end."""
+    if m.status != RunStatus.COMPLETED or m.ended_with is None:
+        return None
+    return f"M{int(m.ended_with):02d}"
 
 
 def end_text(m: Machine, locale: str | None) -> str:

@@ -44,6 +44,7 @@ class CallStack:
     status: RunStatus
     m99_ends_main: bool
     ended_by_main_m99: bool
+    ended_with: float | None
     message: str | None
     notes: list[Note]
 
@@ -149,6 +150,7 @@ class CallStack:
             if self.m99_ends_main:
                 self.status = RunStatus.COMPLETED
                 self.ended_by_main_m99 = True
+                self.ended_with = 99.0
                 frame.pc = pc
                 return -1
             frame.loops.clear()
@@ -189,8 +191,10 @@ class CallStack:
         self.frames[-1].pc = pc
         return -1
 
-    def end_program(self, pc: int) -> int:
-        """M30 / M02: the run is complete; modal calls are cancelled."""
+    def end_program(self, pc: int, code: float) -> int:
+        """M30 / M02 (``code``, as the run evaluated it): the run is complete and keeps the code
+        it ended with; modal calls are cancelled."""
+        self.ended_with = code
         self.modal_calls.clear()
         self.planner.modal["macro"] = 67.0
         self.status = RunStatus.COMPLETED

@@ -62,6 +62,9 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         # set when an M99 of the main program ended the run (``m99_ends_main``): a subprogram
         # run on its own stopped after one pass (``cncmacro run`` says so); a restore clears it
         self.ended_by_main_m99 = False
+        # the code that ended a completed run (30, 2, or 99 for a main program's M99 that ends
+        # it), as the run evaluated it; None while it runs or when it ran off its program's end
+        self.ended_with: float | None = None
         # who hears of the run (the analysis, see observer.py); None for plain runs, which pay
         # nothing for it: it is fixed before the first block is compiled
         self.observer = observer
@@ -231,7 +234,7 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         return Snapshot(
             self._copy_frames(self.frames), list(self.C), dict(self.S), self.planner.snapshot(),
             list(self.modal_calls), (len(self.output), len(self.notes)), self.blocks, self.status, self.alarm,
-            self.message, set(self.written_system), dict(self.timer_marks),
+            self.message, set(self.written_system), dict(self.timer_marks), self.ended_with,
         )  # fmt: skip
 
     def restore(self, snap: Snapshot) -> None:
@@ -250,6 +253,7 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         self.message = snap.message
         self.written_system = set(snap.written_system)
         self.timer_marks = dict(snap.timer_marks)
+        self.ended_with = snap.ended_with
         self.cancel_requested = False
         self.ended_by_main_m99 = False
 

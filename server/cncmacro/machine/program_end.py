@@ -5,9 +5,10 @@ modal calls); ``M99`` (``RETURN_CODE``) ends a called program, returning to its 
 ends a main program where the run is told to (``Machine.m99_ends_main``), else runs it again.
 A code is read as the interpreter rounds an M word (``M2.`` is M02, ``M030`` is M30).
 
-The interpreter dispatches on these codes (``nc_blocks.py``); the debugger names the code that
-ended a run (``debugging/stepping.py``) and the editor folds an O program up to its last end
-(``lsp/folding.py``) by ``end_code``, so that the three cannot disagree.
+The interpreter dispatches on these codes (``nc_blocks.py``) and keeps the one that ended a run
+(``Machine.ended_with``, which the debugger names: ``debugging/stepping.py``); the editor folds
+an O program up to its last end (``lsp/folding.py``) by ``end_code``, the same rule read from the
+block's text.
 """
 
 from __future__ import annotations

@@ -48,3 +48,4 @@ class Snapshot:
     message: str | None
     written_system: set[int] = field(default_factory=set)
     timer_marks: dict[int, float] = field(default_factory=dict)
+    ended_with: float | None = None  # the end code a completed run stopped at (``Machine.ended_with``)
