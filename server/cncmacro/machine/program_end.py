@@ -7,7 +7,7 @@ A code is read as the interpreter rounds an M word (``M2.`` is M02, ``M030`` is 
 
 The interpreter dispatches on these codes (``nc_blocks.py``); the debugger names the code that
 ended a run (``debugging/stepping.py``) and the editor folds an O program up to its last end
-(``lsp/folding.py``) by ``end_code``, so that the three cannot disagree.
+(``ide/folding.py``) by ``end_code``, so that the three cannot disagree.
 """
 
 from __future__ import annotations
