@@ -47,6 +47,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("planner",),
     ("machine",),
     ("analysis", "debugging"),
+    ("ide",),
     ("cli", "lsp", "dap"),
     ("__main__",),
 )
@@ -71,6 +72,9 @@ RULES: dict[str, str] = {
     "L12": "a public class name is defined once in the package: one name, one meaning",
     "L13": "the language server's own words are written in lsp/texts.py, in English and Chinese side by side: "
            "no other module of lsp/ holds Chinese text",
+    "L14": "the editor's features answered in ide/ are only converted in lsp/: a module of lsp/ imports "
+           "nothing of syntax/ but those LSP_READS_SYNTAX names (features not yet moved to ide/, and the "
+           "parse the server holds), a list that only shrinks",
     "C1": "the toolpath's geometry and page and the server's start-up (toolpathGeometry.ts, "
           "toolpathView.ts, serverProcess.ts) do not import vscode",
     "C2": "the client knows no G code: no code of client/src names one or reads a number out of a "
@@ -115,6 +119,22 @@ _STRING_TESTS = {"startswith", "endswith"}
 # L13: the one module of lsp/ that may hold Chinese text, and how Chinese is spotted (a CJK ideograph)
 EDITOR_TEXTS = "lsp/texts.py"
 _CHINESE = re.compile(r"[\u3400-\u4dbf\u4e00-\u9fff]")
+
+# L14: the modules of lsp/ that still import syntax/, and why. A feature moved to ide/ leaves this
+# list; an entry whose module no longer imports syntax/ is reported, so that the list only shrinks.
+LSP_READS_SYNTAX = {
+    "lsp/code_actions.py": "the quick fixes: a feature not yet moved to ide/",
+    "lsp/conditional_m99.py": "the quick fix of Haas's conditional M99: a feature not yet moved to ide/",
+    "lsp/formatting.py": "formatting: a feature not yet moved to ide/",
+    "lsp/hover.py": "hover: a feature not yet moved to ide/",
+    "lsp/navigation.py": "definition, references and rename: a feature not yet moved to ide/",
+    "lsp/semantic_tokens.py": "semantic tokens: a feature not yet moved to ide/",
+    "lsp/cursor.py": "the cursor holds the block under it, for the features not yet moved",
+    "lsp/documents.py": "an open document holds its parse (ParsedDocument), updated by each edit",
+    "lsp/diagnostics.py": "parses a huge file's first screen before its analysis",
+    "lsp/collector.py": "weighs the parser's block cache between edits",
+    "lsp/server.py": "warms the parser up at start",
+}  # fmt: skip
 
 # C1
 CLIENT_WITHOUT_VSCODE = ("toolpathGeometry.ts", "toolpathView.ts", "serverProcess.ts")
@@ -279,6 +299,8 @@ def violations(modules: dict[str, Module]) -> list[str]:
                         report(m, imp.line, f"imports {imp.target}", "L4")
                 elif target != part and layer_of(target) == layer_of(part):
                     report(m, imp.line, f"imports {imp.target}", "L11")
+                if part == "lsp" and target == "syntax" and m.path not in LSP_READS_SYNTAX:
+                    report(m, imp.line, f"imports {imp.target}: ask ide/", "L14")
                 if imp.target == DAP_WIRE and m.path not in DAP_WIRE_USERS:
                     report(m, imp.line, f"imports {imp.target}", "L7")
             elif top in NOT_THE_PACKAGE:
@@ -303,6 +325,20 @@ def violations(modules: dict[str, Module]) -> list[str]:
     for m, line, what in _classes_defined_again(modules):
         report(m, line, what, "L12")
     return out
+
+
+def needless_syntax_allowances(modules: dict[str, Module], allowed: dict[str, str] = LSP_READS_SYNTAX) -> list[str]:
+    """L14: the entries of ``allowed`` whose module is gone or no longer imports syntax/."""
+    reading = {
+        m.path
+        for m in modules.values()
+        if any(part_of(i.target) == "syntax" for i in m.imports if i.target.split(".")[0] == "cncmacro")
+    }
+    return [
+        f"server/cncmacro/{path}: imports nothing of syntax/: take it out of LSP_READS_SYNTAX [L14] {RULES['L14']}"
+        for path in sorted(allowed)
+        if path not in reading
+    ]
 
 
 def _classes_defined_again(modules: dict[str, Module]) -> list[tuple[Module, int, str]]:
@@ -380,6 +416,11 @@ def layer_order_text() -> str:
 def test_the_package_keeps_every_rule() -> None:
     found = violations(read_package(PACKAGE)) + client_violations(CLIENT) + client_g_codes(CLIENT)
     assert not found, "\n".join(found)
+
+
+def test_the_lsp_modules_allowed_to_import_syntax_still_do() -> None:
+    stale = needless_syntax_allowances(read_package(PACKAGE))
+    assert not stale, "\n".join(stale)
 
 
 def test_every_part_of_the_package_has_a_layer() -> None:
@@ -607,3 +648,28 @@ if __name__ == "__main__":
             print(f"{part}: used from above as")
             for name, users in sorted(found.get(part, {}).items()):
                 print(f"    {name}  <- {', '.join(sorted(users))}")
+
+
+def test_a_feature_moved_to_ide_that_imports_syntax_again_is_reported(tmp_path: Path) -> None:
+    modules = _package(tmp_path, {
+        "lsp/folding.py": "from ..ide.folding import folding_ranges\nfrom ..syntax.nodes import Block\n",
+        "lsp/hover.py": "from ..syntax.walk import nodes_at\n",
+        "ide/folding.py": "from ..syntax.program import Program\n",
+        "syntax/nodes.py": "", "syntax/walk.py": "", "syntax/program.py": "",
+    })  # fmt: skip
+    assert [v.split(" [")[0] for v in violations(modules)] == [
+        "server/cncmacro/lsp/folding.py:2: imports cncmacro.syntax.nodes: ask ide/"
+    ]
+
+
+def test_an_lsp_module_allowed_to_import_syntax_that_no_longer_does_is_reported(tmp_path: Path) -> None:
+    modules = _package(tmp_path, {
+        "lsp/hover.py": "from ..syntax.walk import nodes_at\n",
+        "lsp/symbols.py": "from ..ide.symbols import document_symbols\n",
+        "syntax/walk.py": "", "ide/symbols.py": "",
+    })  # fmt: skip
+    allowed = {"lsp/hover.py": "not yet moved", "lsp/symbols.py": "not yet moved", "lsp/gone.py": "deleted since"}
+    assert [v.split(":")[0] for v in needless_syntax_allowances(modules, allowed)] == [
+        "server/cncmacro/lsp/gone.py",
+        "server/cncmacro/lsp/symbols.py",
+    ]

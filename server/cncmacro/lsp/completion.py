@@ -14,6 +14,7 @@ from ..analysis.indexes.call_sites import CallSite, call_site
 from ..bilingual import pick
 from ..dialects import describe, tables
 from ..dialects.dialect import ARGUMENTS_I
+from ..ide.signature_help import locals_read
 from .cursor import Cursor, cursor_at
 from .texts import t
 
@@ -147,8 +148,6 @@ def argument_items(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem
 
 
 def ls_reads(ls: CncMacroServer, cur: Cursor, site: CallSite) -> set[int]:
-    from .signature_help import locals_read
-
     found = ls.index.find_program(cur.doc, site.number, site.name)
     return set(locals_read(found)) if found is not None else set()
 

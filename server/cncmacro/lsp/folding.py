@@ -1,8 +1,4 @@
-"""Folding ranges: WHILE..END loops, O programs up to exactly their last M99/M30/M02 (else up
-to the next program; which codes end a program is ``machine/program_end.py``'s), and runs of
-comment-only lines, from the parser's ``Program`` and cached blocks. A program's range never
-ends inside one of its loops (an ``M99`` in a loop body is not the program's end there): it
-reaches the loop's END, so that the two nest, as editors that pair ranges by their lines need."""
+"""Folding ranges: ``ide/folding.py``'s folds of a document as the protocol's ``FoldingRange``."""
 
 from __future__ import annotations
 
@@ -10,9 +6,7 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types
 
-from ..machine.program_end import end_code
-from ..syntax.nodes import Block, Number
-from ..syntax.program import LoopPair
+from ..ide.folding import folding_ranges
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
@@ -21,60 +15,12 @@ if TYPE_CHECKING:
 def register(server: CncMacroServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_FOLDING_RANGE)
     def folding_range(ls: CncMacroServer, params: types.FoldingRangeParams) -> list[types.FoldingRange]:
-        doc = ls.documents.get(params.text_document.uri)
-        program = doc.parsed.program
-        blocks = doc.parsed.blocks
-        out: list[types.FoldingRange] = []
-        for p in program.loops:
-            if p.end_line > p.do_line:
-                out.append(types.FoldingRange(start_line=p.do_line, end_line=p.end_line))
-        for u in program.units:
-            if u.number is None:
-                continue
-            end = u.end - 1
-            while end > u.start and _is_blank(blocks[end]):
-                end -= 1
-            last = end
-            while last > u.start and end_code(blocks[last]) is None:
-                last -= 1
-            end = last if last > u.start else end
-            end = _past_loops(program.loops, u.start, end)
-            if end > u.start:
-                out.append(types.FoldingRange(start_line=u.start, end_line=end))
-        run_start = None
-        for i, b in enumerate(blocks):
-            comment_only = b.plain is None and bool(b.comments) and b.is_empty
-            if comment_only and run_start is None:
-                run_start = i
-            elif not comment_only and run_start is not None:
-                if i - 1 > run_start:
-                    out.append(
-                        types.FoldingRange(start_line=run_start, end_line=i - 1, kind=types.FoldingRangeKind.Comment)
-                    )
-                run_start = None
-        if run_start is not None and len(blocks) - 1 > run_start:
-            out.append(
-                types.FoldingRange(start_line=run_start, end_line=len(blocks) - 1, kind=types.FoldingRangeKind.Comment)
+        parsed = ls.documents.get(params.text_document.uri).parsed
+        return [
+            types.FoldingRange(
+                start_line=f.start_line,
+                end_line=f.end_line,
+                kind=types.FoldingRangeKind.Comment if f.comment else None,
             )
-        return out
-
-
-def _past_loops(loops: list[LoopPair], start: int, end: int) -> int:
-    """``end``, moved to the END of every loop that starts in ``start``..``end`` and ends after it."""
-    moved = True
-    while moved:
-        moved = False
-        for p in loops:
-            if start <= p.do_line <= end < p.end_line:
-                end = p.end_line
-                moved = True
-    return end
-
-
-def _is_blank(b: Block) -> bool:
-    """A line after a program's end: empty, or a ``%`` mark."""
-    if b.plain is not None:
-        return False
-    if b.tape:
-        return True
-    return b.is_empty and not b.comments and not any(w.letter == "M" and isinstance(w.value, Number) for w in b.words)
+            for f in folding_ranges(parsed.program, parsed.blocks)
+        ]

@@ -11,7 +11,6 @@ label and every jump to it.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 from lsprotocol import types
@@ -21,6 +20,7 @@ from ..analysis.indexes.call_sites import call_site
 from ..analysis.indexes.site_index import FileSites
 from ..analysis.indexes.sites import label_jumps, starts_from_the_top
 from ..dialects import describe
+from ..ide.under_cursor import label_under, program_under
 from ..library.machine_file import CallCode
 from ..machine.jumps import first_line, goto_line, return_line
 from ..syntax.nodes import Var
@@ -48,7 +48,7 @@ def register(server: CncMacroServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_PREPARE_RENAME)
     def prepare_rename(ls: CncMacroServer, params: types.PrepareRenameParams) -> types.Range | None:
         cur = cursor_at(ls, params.text_document.uri, params.position)
-        target = None if cur is None else label_under(cur)
+        target = None if cur is None else label_under(cur.doc, cur.block, cur.column)
         if cur is None or target is None:
             return None
         return cur.range(target[1], target[2])
@@ -65,33 +65,9 @@ def _loc(uri: str, line: int, start: int, end: int, text: str, encoding: Encodin
     return types.Location(uri, encoding.range(line, text, start, end))
 
 
-def label_under(cur: Cursor) -> tuple[int, int, int, str] | None:
-    """(label number, start, end, kind) when the cursor is on an N label or a jump's number."""
-    b = cur.block
-    if b.label is not None and b.label_span and b.label_span[0] <= cur.column <= b.label_span[1]:
-        return b.label, b.label_span[0], b.label_span[1], "N"
-    for j in cur.doc.sites.jumps_of(b):
-        if j.start <= cur.column <= j.end:
-            return j.label, j.start, j.end, j.kind
-    return None
-
-
-def program_under(cur: Cursor, calls: Mapping[str, CallCode] | None) -> tuple[int, bool] | None:
-    """(program number, whether a call names it) when the cursor is on an O header's number or
-    on the word of a call that names its program by number (``call_sites.call_site``: ``M98
-    P30040`` names O0040); ``calls`` are the machine file's call codes."""
-    b = cur.block
-    if b.program is not None and b.program_span and b.program_span[0] <= cur.column <= b.program_span[1]:
-        return b.program, False
-    site = call_site(b, cur.doc.dialect, calls)
-    if site is not None and site.target.start <= cur.column <= site.target.end and site.number is not None:
-        return site.number, True
-    return None
-
-
 def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | None:
     encoding = ls.documents.encoding
-    hit = label_under(cur)
+    hit = label_under(cur.doc, cur.block, cur.column)
     if hit is not None and hit[3] != "N":
         label, _, _, kind = hit
         program = cur.doc.parsed.program
@@ -127,10 +103,10 @@ def machine_calls(ls: CncMacroServer, path: str) -> dict[str, CallCode] | None:
 
 def find_references(ls: CncMacroServer, cur: Cursor, include_declaration: bool) -> list[types.Location] | None:
     encoding = ls.documents.encoding
-    hit = label_under(cur)
+    hit = label_under(cur.doc, cur.block, cur.column)
     if hit is not None:
         return label_references(cur, hit[0], include_declaration, encoding)
-    program = program_under(cur, machine_calls(ls, cur.doc.path))
+    program = program_under(cur.doc, cur.block, cur.column, machine_calls(ls, cur.doc.path))
     if program is not None:
         number, called = program
         if not called:
@@ -209,7 +185,7 @@ def refused(message: str) -> JsonRpcException:
 
 
 def rename_label(ls: CncMacroServer, cur: Cursor, new_name: str) -> types.WorkspaceEdit | None:
-    hit = label_under(cur)
+    hit = label_under(cur.doc, cur.block, cur.column)
     if hit is None:
         return None
     text = new_name.strip().upper().lstrip("N")

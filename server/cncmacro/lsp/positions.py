@@ -18,9 +18,11 @@ Every column the server reads from or sends to the client goes through one ``Enc
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from lsprotocol import types
+
+from ..ide.spans import Region, Span
 
 _ASTRAL = re.compile("[\U00010000-\U0010ffff]")
 _CONTINUATION = bytes(range(0x80, 0xC0))  # the bytes of a UTF-8 sequence after its first
@@ -109,3 +111,16 @@ def negotiate(offered: Sequence[str] | None) -> Encoding:
         if offered and encoding.kind in offered:
             return encoding
     return UTF16
+
+
+def client_span(encoding: Encoding, line: Callable[[int], str], span: Span) -> types.Range:
+    """The client's range of ``span`` (``line``: the text of a line by its number)."""
+    return encoding.range(span.line, line(span.line), span.start, span.end)
+
+
+def client_region(encoding: Encoding, line: Callable[[int], str], region: Region) -> types.Range:
+    """The client's range of ``region`` (``line``: the text of a line by its number)."""
+    return types.Range(
+        types.Position(region.start_line, encoding.to_client(line(region.start_line), region.start_column)),
+        types.Position(region.end_line, encoding.to_client(line(region.end_line), region.end_column)),
+    )

@@ -27,14 +27,13 @@ def doc_lines(doc: ProgramDoc, locale: str, given: Collection[str] = ()) -> list
     return lines
 
 
-def signature(doc: ProgramDoc, locale: str, typed: str | None) -> types.SignatureHelp:
+def signature(doc: ProgramDoc, locale: str, active: int | None) -> types.SignatureHelp:
     """Signature help for a G65 call to ``doc``'s program: its argument letters, the one being
-    typed (``typed``) active."""
+    typed (the ``active``-th) active."""
     letters = [letter for letter, _, _ in doc.arguments]
     params = [
         types.ParameterInformation(label=letter, documentation=pick(locale, en, zh)) for letter, en, zh in doc.arguments
     ]
-    active = letters.index(typed) if typed in letters else None
     sig = types.SignatureInformation(
         label=f"O{doc.number:04d}(" + ", ".join(letters) + ")",
         documentation=f"{pick(locale, doc.title, doc.title_zh)}: {pick(locale, doc.en, doc.zh)}",

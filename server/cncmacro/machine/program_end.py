@@ -7,7 +7,7 @@ A code is read as the interpreter rounds an M word (``M2.`` is M02, ``M030`` is 
 
 The interpreter dispatches on these codes (``nc_blocks.py``) and keeps the one that ended a run
 (``Machine.ended_with``, which the debugger names: ``debugging/stepping.py``); the editor folds
-an O program up to its last end (``lsp/folding.py``) by ``end_code``, the same rule read from the
+an O program up to its last end (``ide/folding.py``) by ``end_code``, the same rule read from the
 block's text.
 """
 
