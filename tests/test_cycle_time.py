@@ -296,3 +296,23 @@ def test_a_repeat_count_past_9999_is_an_alarm_and_haas_repeats_by_l() -> None:
     assert m.alarm is not None and m.alarm.number == 119
     m = run(lines("O1", "G00 Z10.", "G91 G81 X10. Z-5. R-8. F100 L3", "G90 G80", "M30"), "haas")
     assert [move.end[0] for move in m.planner.moves if move.mode == 81.0] == [10.0, 20.0, 30.0]
+
+
+def test_9_lathe_single_cycles_are_timed_leg_by_leg_and_a_thread_at_its_lead_per_revolution(tmp_path: Path) -> None:
+    # gsk980tdi rapids: X 6000 mm/min (of the radius), Z 8000 mm/min; S500; the tool at X50 Z2.
+    # G99 G90 X40 Z-30 F0.2 (100 mm/min):
+    #   in along X at rapid: 5 mm radius / 6000 = 0.05 s;   cut along Z: 32 mm / 100 = 19.2 s
+    #   out along X at the feed: 5 mm / 100 = 3 s;           back along Z at rapid: 32 / 8000 = 0.24 s
+    #   = 22.49 s (as one diagonal cut it was 32.39 mm / 100 = 19.43 s)
+    # G98 G92 X48 Z-20 F1.5: a thread's F is the lead per revolution even under G98: 1.5 x 500
+    # = 750 mm/min. In: 1 mm / 6000 = 0.01 s; thread: 22 / 750 = 1.76 s; out at rapid: 0.01 s;
+    # back: 22 / 8000 = 0.165 s = 1.945 s (per minute it was 22.02 mm / 1.5 mm/min: 14.7 min)
+    # G99 G94 X20 Z-2 F0.1 (50 mm/min):
+    #   in along Z at rapid: 4 / 8000 = 0.03 s;   face along X: 15 mm / 50 = 18 s
+    #   out along Z at the feed: 4 / 50 = 4.8 s;  back along X at rapid: 15 / 6000 = 0.15 s = 22.98 s
+    text = lines("O0009", "M03 S500", "G00 X50. Z2.", "G99 G90 X40. Z-30. F0.2", "G98 G92 X48. Z-20. F1.5",
+                 "G99 G94 X20. Z-2. F0.1", "M30")  # fmt: skip
+    result = run_json(tmp_path, text, "O0009.CNC", 'base = "gsk980tdi"\n')
+    cycles = [mv for mv in result["moves"] if mv["kind"] == "cycle"]
+    assert [round(mv["time"], 3) for mv in cycles] == [22.49, 1.945, 22.98]
+    assert result["cycle"]["cut"] == pytest.approx(5 + 32 + 22 + 15 + 4, rel=0.001)  # the cutting legs, mm

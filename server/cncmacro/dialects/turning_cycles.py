@@ -15,15 +15,17 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class SingleCycle:
-    """A single fixed cycle: the axis it goes in along first, and whether it comes out along it
-    at rapid (a thread's pull-out) rather than at the feed."""
+    """A single fixed cycle: the axis it goes in along first, whether it comes out along it at
+    rapid (a thread's pull-out) rather than at the feed, and whether it cuts a thread (its F is
+    the lead, per revolution)."""
 
     first: str
     rapid_out: bool = False
+    thread: bool = False
 
 
 LATHE_SINGLE_CYCLES: dict[float, SingleCycle] = {
     90.0: SingleCycle("X"),
-    92.0: SingleCycle("X", rapid_out=True),
+    92.0: SingleCycle("X", rapid_out=True, thread=True),
     94.0: SingleCycle("Z"),
 }

@@ -31,7 +31,7 @@ from .plain_words import PlainRun, PlainWords
 from .positions import position_value
 from .probing import Probe, SkipState
 from .state import MODAL_DEFAULTS, PlannerState
-from .turning_cycles import turning_legs
+from .turning_cycles import single_cycle, turning_legs
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -245,9 +245,13 @@ class Planner:
     def turning_cycle(self, file: str, line: int, code: float, target: list[float]) -> None:
         """A lathe's turning cycle to ``target``, recorded with its legs (turning_cycles.py); the
         tool ends where it started."""
-        start = tuple(self.pos)
-        legs = turning_legs(self.dialect.single_cycles.get(code), self.axis_index, start, target)
-        self.record(file, line, code, start, tuple(target), None, legs, TURNING)
+        single = self.dialect.single_cycles.get(code)
+        if single is not None:
+            single_cycle(self, file, line, code, single, target)
+        else:  # timed as the one cut it is drawn as, until its passes are planned
+            start = tuple(self.pos)
+            legs = turning_legs(None, self.axis_index, start, target)
+            self.record(file, line, code, start, tuple(target), None, legs, TURNING)
 
     def record(
         self,
