@@ -5,7 +5,10 @@ copy of the bundled examples to run them in, is in conftest.py)."""
 from __future__ import annotations
 
 import io
+import json
 import sys
+from pathlib import Path
+from typing import Any
 
 from cncmacro.cli.main import main
 
@@ -21,3 +24,16 @@ def cli(*args: str) -> tuple[int, str, str]:
     finally:
         sys.stdout, sys.stderr = old
     return code, out.getvalue(), err.getvalue()
+
+
+def run_json(folder: Path, text: str, name: str = "MAIN.nc", machine_file: str | None = None) -> dict[str, Any]:
+    """``cncmacro run --json`` of ``text`` saved as ``name`` in ``folder`` (with ``machine_file`` as its
+    ``.cncmacro.toml``): the result object, the run having exited 0."""
+    if machine_file is not None:
+        (folder / ".cncmacro.toml").write_text(machine_file, encoding="utf-8")
+    path = folder / name
+    path.write_text(text, encoding="utf-8")
+    code, out, err = cli("run", "--json", "--no-save", str(path))
+    assert code == 0, err
+    result: dict[str, Any] = json.loads(out)
+    return result

@@ -4,24 +4,13 @@ agreeing with the cycle time (one rule, planner/cycle_time.py)."""
 
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 
 import pytest
 
-from cli_capture import cli
+from cli_capture import cli, run_json
 from running import lines, run
-
-
-def run_json(tmp_path: Path, text: str, name: str = "MAIN.nc", machine_file: str | None = None) -> dict:
-    if machine_file is not None:
-        (tmp_path / ".cncmacro.toml").write_text(machine_file, encoding="utf-8")
-    path = tmp_path / name
-    path.write_text(text, encoding="utf-8")
-    code, out, err = cli("run", "--json", "--no-save", str(path))
-    assert code == 0, err
-    return json.loads(out)
 
 
 def test_feed_per_minute_and_each_axis_at_its_own_rapid_rate(tmp_path: Path) -> None:

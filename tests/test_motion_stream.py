@@ -6,21 +6,14 @@ single fixed cycles' legs (docs/semantics.md §9)."""
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
-from cli_capture import cli
+from cli_capture import run_json
 from running import lines
 
 
 def moves(tmp_path: Path, text: str, name: str = "MAIN.nc", machine_file: str | None = None) -> list[dict]:
-    if machine_file is not None:
-        (tmp_path / ".cncmacro.toml").write_text(machine_file, encoding="utf-8")
-    path = tmp_path / name
-    path.write_text(text, encoding="utf-8")
-    code, out, err = cli("run", "--json", "--no-save", str(path))
-    assert code == 0, err
-    return json.loads(out)["moves"]
+    return list(run_json(tmp_path, text, name, machine_file)["moves"])
 
 
 def xyz(point: dict) -> tuple[float, float, float]:

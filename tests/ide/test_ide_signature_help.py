@@ -7,11 +7,12 @@ from __future__ import annotations
 from cncmacro.analysis.indexes.workspace_index import WorkspaceIndex
 from cncmacro.dialects import get_dialect
 from cncmacro.ide.signature_help import DocumentedSignature, MacroArgument, MacroSignature, signature_help
+from cncmacro.lsp.documents import OpenDocument
 
-from .documents import Document, document
+from .documents import document
 
 
-def _index(doc: Document) -> WorkspaceIndex:
+def _index(doc: OpenDocument) -> WorkspaceIndex:
     return WorkspaceIndex(lambda: [doc], lambda lines, path: doc.dialect)
 
 

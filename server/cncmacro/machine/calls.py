@@ -349,14 +349,14 @@ def recognise_call(
         if wanted == 198.0 and any(x == 98.0 for _, _, x in ms):
             continue
         i, w = hit
-        p = _last(words, "P")
-        count = _last(words, "L")
+        p = last_word(words, "P")
+        count = last_word(words, "L")
         if wanted == local:
             label = _label(p)
             return BlockCall(
                 f"M{local:g}", w, i, p, label=label, count=count, repeats=_literal_count(count), local=True
             )
-        q = _last(words, "Q")
+        q = last_word(words, "Q")
         number, repeats = _subprogram_number(p, count, dialect)
         name = p.name if p is not None else None
         return BlockCall("M98" if wanted == 98.0 else "M198", w, i, p, number, name, _label(q), count, repeats)
@@ -415,7 +415,8 @@ def _label(w: Word | None) -> int | None:
     return int(round_half_away(x)) if abs(x) < 1e9 else None
 
 
-def _last(words: Sequence[Word], letter: str) -> Word | None:
+def last_word(words: Sequence[Word], letter: str) -> Word | None:
+    """The last word of ``letter`` in ``words`` (the one a control takes when a letter is written twice)."""
     found = None
     for w in words:
         if w.letter == letter:

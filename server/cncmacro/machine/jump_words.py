@@ -28,7 +28,7 @@ from collections.abc import Mapping, Sequence
 
 from ..dialects.dialect import Dialect
 from ..syntax.nodes import Number, Word
-from .calls import code_value, recognise_call
+from .calls import code_value, last_word, recognise_call
 from .hcodes import BRANCHES
 from .program_end import RETURN_CODE
 
@@ -68,8 +68,8 @@ def _jump_word(words: Sequence[Word], dialect: Dialect, calls: Mapping[str, obje
             return None if p is None else (RETURN_LABEL, p)
         return None
     if call.arithmetic:
-        h = _last(words, "H")
-        p = _last(words, "P")
+        h = last_word(words, "H")
+        p = last_word(words, "P")
         v = h.value if h is not None else None
         if p is not None and isinstance(v, Number) and int(v.value) in BRANCHES:
             return BRANCH_LABEL, p
@@ -77,7 +77,7 @@ def _jump_word(words: Sequence[Word], dialect: Dialect, calls: Mapping[str, obje
     if call.local:
         return None if call.target is None else (f"{call.kind} P", call.target)  # local_call_kind
     if call.kind in ("M98", "M198"):
-        q = _last(words, "Q")
+        q = last_word(words, "Q")
         return None if q is None else (SUBPROGRAM_LABEL, q)
     return None
 
@@ -85,11 +85,3 @@ def _jump_word(words: Sequence[Word], dialect: Dialect, calls: Mapping[str, obje
 def return_word(words: Sequence[Word]) -> Word | None:
     """The P word of an ``M99`` block that names the caller's label it returns to: the first."""
     return next((w for w in words if w.letter == "P"), None)
-
-
-def _last(words: Sequence[Word], letter: str) -> Word | None:
-    found = None
-    for w in words:
-        if w.letter == letter:
-            found = w
-    return found
