@@ -319,7 +319,10 @@ class CompiledFile:
 
         def labelled(m: Machine, pc: int) -> int:
             m.planner.codes["N"] = n
-            return run(m, pc)
+            after = run(m, pc)
+            if after >= 0 and m.frames[-1].end_line == pc:  # the last block of a lathe cycle's shape
+                return m.leave_shape(pc)
+            return after
 
         return labelled
 

@@ -11,8 +11,16 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
-from ..dialects.alarms import MACRO_NESTING, P_VALUE_RANGE, PROGRAM_NOT_FOUND, SUBPROGRAM_NESTING
+from ..dialects.alarms import (
+    CYCLE_BLOCK_NOT_FOUND,
+    MACRO_NESTING,
+    P_VALUE_RANGE,
+    PROGRAM_NOT_FOUND,
+    SHAPE_COMMAND,
+    SUBPROGRAM_NESTING,
+)
 from ..library.programs import FoundProgram, is_program_name
+from ..planner.lathe_cycles import end_shape
 from .alarms import MacroAlarm
 from .calls import Arguments, bad_name_detail, map_arguments, repeat_count
 from .frames import Frame, ModalCall, Note
@@ -22,6 +30,7 @@ if TYPE_CHECKING:
     from ..dialects import Dialect
     from ..library.machine_file import CallCode, MachineSettings
     from ..library.programs import LoadedFile, ProgramLibrary
+    from ..planner.lathe_cycles import ShapeCall
     from ..planner.planner import Planner
     from .blocks import CompiledFile
     from .expressions import VariableKinds
@@ -81,6 +90,11 @@ class CallStack:
         return found
 
     def _check_depth(self, macro: bool) -> None:
+        if self.frames and self.frames[-1].end_line >= 0:
+            raise MacroAlarm(SHAPE_COMMAND, detail(f"no program call in the shape of {self.frames[-1].kind} "
+                                                   "(M98, M99, G65, G66 are not allowed there)",
+                                                   f"{self.frames[-1].kind}的形状程序中不能调用程序（不允许M98、M99、G65、G66）"),
+                             "shape-command")  # fmt: skip
         if len(self.frames) > self.dialect.subprogram_levels:
             raise MacroAlarm(
                 SUBPROGRAM_NESTING,
@@ -146,6 +160,8 @@ class CallStack:
     def return_from_call(self, pc: int, p: float | None) -> int:
         """M99 (Pn): back to the caller, or the next pass of a repeated call."""
         frame = self.frames[-1]
+        if frame.end_line >= 0:
+            self._check_depth(macro=False)  # M99 in a cycle's shape: the same alarm as a call
         if len(self.frames) == 1:
             if self.m99_ends_main:
                 self.status = RunStatus.COMPLETED
@@ -209,12 +225,46 @@ class CallStack:
         self.notes.append(Note("message", message, f.file, nxt))
         return -1
 
-    def skip_past_label(self, pc: int, label: float) -> int:
-        """A lathe roughing cycle ``G71 P Q``: continue after the block labelled Q."""
-        f = self.frames[-1]
-        lines = f.found.file.program.label_lines(int(label), f.found.unit)
-        after = [x for x in lines if x > pc]
-        return f.code.next_line(after[0]) if after else f.code.next_line(pc)
+    def enter_shape(self, call: ShapeCall, pc: int, nxt: int) -> int:
+        """A lathe cycle naming its finishing shape (``G71 P Q``, ``G70 P Q``;
+        planner/lathe_cycles.py): run the blocks N(P) to N(Q) of the program running as a level
+        of their own, sharing its locals, while the planner reads them (roughing) or makes
+        their moves (G70). The block N(P) is looked for after the cycle block first, then from
+        the program's start; N(Q) at or after N(P). Afterwards a roughing cycle goes on after
+        N(Q) when the shape follows it, a finishing cycle (or a shape elsewhere) after its
+        own block."""
+        caller = self.frames[-1]
+        if caller.end_line >= 0:
+            raise MacroAlarm(SHAPE_COMMAND, detail(f"G{call.code:g} inside the shape of another cycle",
+                                                   f"在另一个循环的形状程序中指令了G{call.code:g}"))  # fmt: skip
+        program = caller.found.file.program
+        unit = caller.found.unit
+        firsts = program.label_lines(int(call.first), unit)
+        first = next((x for x in firsts if x > pc), firsts[0] if firsts else None)
+        lasts = [] if first is None else [x for x in program.label_lines(int(call.last), unit) if x >= first]
+        if first is None or not lasts:
+            missing = call.first if first is None else call.last
+            letter = "P" if first is None else "Q"
+            raise MacroAlarm(CYCLE_BLOCK_NOT_FOUND,
+                             detail(f"G{call.code:g}: no block N{missing:g} in this program for its {letter}",
+                                    f"G{call.code:g}：本程序中没有其{letter}指定的程序段N{missing:g}"),
+                             "shape-label")  # fmt: skip
+        last = lasts[0]
+        roughing = call.code != 70.0
+        back = caller.code.next_line(last) if roughing and first > pc else nxt
+        caller.pc = pc
+        frame = Frame(caller.found, caller.code, first, f"G{call.code:g}", caller.locals, caller.macro_level,
+                      pc, back, 0, first, end_line=last)  # fmt: skip
+        self.frames.append(frame)
+        return -1
+
+    def leave_shape(self, pc: int) -> int:
+        """The block N(Q) of a lathe cycle's shape is done: the planner plans the passes (or
+        returns to the start point) and the run goes on where ``enter_shape`` said."""
+        frame = self.frames.pop()
+        end_shape(self.planner)
+        self.frames[-1].pc = frame.return_pc
+        return -1
 
     def set_modal_call(self, found: FoundProgram, arguments: Arguments, repeats: int) -> None:
         """G66: the macro is called after each later move; modal group 12 (#4012) reads 66."""

@@ -2,7 +2,8 @@
 run's moves are the planner's: planner/moves.py).
 
 A ``Frame`` is one program level: the main program, or a program entered by G65, G66,
-M98 or a call code. Macro calls (G65, G66, call codes) own a fresh set of locals
+M98 or a call code, or a lathe cycle's finishing shape (G70–G73 P Q: the blocks N(P) to N(Q)
+of the program running, ended by ``end_line``). Macro calls (G65, G66, call codes) own a fresh set of locals
 ``#1–#33``; a subprogram (M98) shares its caller's. Frames are small and copied whole by
 snapshots, so everything in them is a plain value or a list the snapshot copies.
 """
@@ -27,7 +28,7 @@ class Frame:
     found: FoundProgram
     code: CompiledFile
     pc: int
-    kind: str  # "main", "G65", "G66", "M98", or the calling code ("M50", "G100", "T")
+    kind: str  # "main", "G65", "G66", "M98", the calling code ("M50", "G100", "T") or a shape cycle ("G71")
     locals: list[float | None]
     macro_level: int
     call_line: int = -1  # the caller's line that made the call
@@ -39,6 +40,7 @@ class Frame:
     loops: list[int] = field(default_factory=list)
     modal: ModalCall | None = None  # the ModalCall that made this frame, if a G66 did
     written: set[int] | None = None  # analysis runs: the locals this macro level assigned itself
+    end_line: int = -1  # a shape cycle's frame: the line of its block N(Q), after which it ends
 
     @property
     def file(self) -> str:
@@ -52,7 +54,7 @@ class Frame:
         f = Frame(
             self.found, self.code, self.pc, self.kind, locals_copy, self.macro_level, self.call_line, self.return_pc,
             self.repeats, self.start_pc, self.arguments, self.letters, list(self.loops), self.modal,
-            None if self.written is None else set(self.written),
+            None if self.written is None else set(self.written), self.end_line,
         )  # fmt: skip
         return f
 

@@ -35,6 +35,7 @@ from .program_end import END_CODES, RETURN_CODE
 from .words import g_code_known, unknown_g_code
 
 if TYPE_CHECKING:
+    from ..planner.lathe_cycles import ShapeCall
     from ..planner.plain_words import PlainPlan, PlainRun
     from .blocks import CompiledFile, Runner
     from .machine import Machine
@@ -301,13 +302,13 @@ def _nc(
     return general
 
 
-def _after_nc(m: Machine, moved: bool, skip_to: float | None, pc: int, nxt: int) -> int:
-    """Where a block goes after its NC words ran: a G66 call after a move, past a lathe
-    cycle's profile, or on to the next line."""
+def _after_nc(m: Machine, moved: bool, shape: ShapeCall | None, pc: int, nxt: int) -> int:
+    """Where a block goes after its NC words ran: into a lathe cycle's finishing shape, a
+    G66 call after a move, or on to the next line."""
+    if shape is not None:
+        return m.enter_shape(shape, pc, nxt)
     if moved and m.modal_calls:
         return m.modal_call(pc, nxt)
-    if skip_to is not None:
-        return m.skip_past_label(pc, skip_to)
     return nxt
 
 

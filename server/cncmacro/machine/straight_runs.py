@@ -47,7 +47,7 @@ def run_straight(
     being the number of blocks run before ``pc``."""
     p = m.planner
     kinds = p.plain.kinds()
-    if not kinds:
+    if not kinds or p.shape is not None:  # a lathe cycle's shape: the compiled path reads it
         return 0, pc
     program = cf.file.program
     blocks = program.blocks
@@ -196,7 +196,7 @@ def run_straight(
                     cut += length * unit
                 clock += seconds
                 if append is not None:
-                    append(_new_move(Move, (path, pc, mode, start, end, f, centre, seconds, plane, None, None)))
+                    append(_new_move(Move, (path, pc, mode, start, end, f, centre, seconds, plane, None, None, None)))
                 start = end
             pc += 1
             continue

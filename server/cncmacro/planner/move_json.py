@@ -16,7 +16,8 @@ def move_json(mv: Move, axes: tuple[str, ...]) -> dict[str, Any]:
     turns in, ordered so that G03 turns from the first toward the second (G17 X Y, G18 Z X,
     G19 Y Z), and whether it turns ``clockwise``; a cycle gets its ``legs`` (each ``rapid`` or
     not, ``to`` a point) and its ``cycle`` (``drilling`` or ``turning``), and a drilling cycle's
-    hole its ``hole`` (where it was drilled to: its bottom)."""
+    hole its ``hole`` (where it was drilled to: its bottom); a pass of a lathe cycle names the
+    cycle in ``pass_of`` (``G71``)."""
     kind = move_kind(mv)
     move: dict[str, Any] = {
         "file": mv.file,
@@ -38,6 +39,8 @@ def move_json(mv: Move, axes: tuple[str, ...]) -> dict[str, Any]:
     if kind == CYCLE and mv.legs is not None:
         move["cycle"] = mv.cycle
         move["legs"] = [{"rapid": leg.rapid, "to": dict(zip(axes, leg.end, strict=True))} for leg in mv.legs]
+    if mv.pass_of is not None:
+        move["pass_of"] = mv.pass_of
     if mv.cycle == DRILLING:
         move["hole"] = dict(zip(axes, mv.end, strict=True))
     return move

@@ -43,7 +43,9 @@ class Move(NamedTuple):
     cycle): the canonical straight moves it is made of, in order, each a ``Leg`` from where the
     one before it ended (the first from ``start``); None for a move that is one straight line or
     one arc from ``start`` to ``end``. ``cycle`` says which kind of cycle a move with legs
-    belongs to: ``DRILLING`` (a drilling cycle's hole, drilled at ``end``) or ``TURNING``."""
+    belongs to: ``DRILLING`` (a drilling cycle's hole, drilled at ``end``) or ``TURNING``.
+    ``pass_of`` names the lathe cycle (``G71``) whose pass this move is, a move of its own
+    planned from the cycle block (lathe_cycles.py); None for any other move."""
 
     file: str
     line: int
@@ -56,6 +58,7 @@ class Move(NamedTuple):
     plane: float = 17.0
     legs: tuple[Leg, ...] | None = None
     cycle: str | None = None
+    pass_of: str | None = None
 
     def text(self, axes: tuple[str, ...], shown: list[int] | None = None) -> str:
         """``G01  X0.000 Y0.000 -> X10.000 Y5.000  F200`` for a person: the axes in ``shown``

@@ -12,22 +12,22 @@ from typing import TYPE_CHECKING
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
+from .lathe_cycles import ShapeCall, lathe_cycle
 from .positions import WORK_BASE, work_offset
 from .probing import skip_block
 
 if TYPE_CHECKING:
     from .planner import Planner
 
-LATHE_CYCLES_WITH_PROFILE = (71.0, 72.0, 73.0)
 # a lathe's G10 P.. X Z Y: (geometry, wear) offset bases of each axis; R's and the tip's (Q)
 _LATHE_OFFSET_ROWS = {"X": (2700, 2000), "Z": (2800, 2100), "Y": (2450, 2400)}
 
 
 def one_shot(
     p: Planner, g: float, axes: dict[int, float], inc: dict[int, float], other: dict[str, float], file: str, line: int
-) -> tuple[bool, float | None]:
-    """Carry out one-shot code ``g`` with the block's words: (moved, the label a lathe roughing
-    cycle continues after), as ``Planner.execute_nc`` returns them."""
+) -> tuple[bool, ShapeCall | None]:
+    """Carry out one-shot code ``g`` with the block's words: (moved, the shape a lathe cycle
+    names), as ``Planner.execute_nc`` returns them."""
     if g == 4.0:  # dwell: P in the profile's unit, X or U in seconds (cycle_time.py)
         p.clock += p.times.dwell_seconds(other, next(iter({**axes, **inc}.values()), None))
         return False, None
@@ -58,10 +58,7 @@ def one_shot(
             p.pos[i] = v
         return False, None
     if p.dialect.lathe and g in p.dialect.cycle_codes:
-        p.turning_cycle(file, line, g, p.target(axes, inc))
-        if g in LATHE_CYCLES_WITH_PROFILE and "P" in other and "Q" in other:
-            return True, other["Q"]
-        return bool(axes or inc), None
+        return lathe_cycle(p, g, axes, inc, other, file, line)
     if axes or inc:  # any other one-shot code with axis words: move in the modal mode
         mode = p.modal.get("motion", 0.0)
         target = p.target(axes, inc)

@@ -24,6 +24,7 @@ from .arcs import ARC_MODES, arc_centre, arc_planes
 from .block_words import set_codes, set_modal
 from .cycle_time import INCH, MoveTimes
 from .drill_cycles import drill_block
+from .lathe_cycles import ShapeCall, ShapeReading
 from .modal_groups import extra_offset_codes, g_code_groups
 from .moves import TURNING, Leg, Move, ToolChange
 from .one_shot import one_shot
@@ -60,6 +61,8 @@ class Planner:
         self.codes: dict[str, float | None] = {}
         self.extra_wcs = 0  # G54.1 Pn (G154 Pn, G110-G129)
         self.cycle_start_z: float | None = None
+        self.cycle_params: dict[float, dict[str, float]] = {}  # a lathe cycle's first block (lathe_cycles.py)
+        self.shape: ShapeReading | None = None  # the shape cycle under way
         self.moves: list[Move] = []
         self.record_moves = True
         # the cycle time's rules (cycle_time.py), the clock (#3001), the path so far (mm) and,
@@ -96,6 +99,7 @@ class Planner:
             (list(self.pos), list(self.shift), list(self.skip_pos), list(self.tool_vector)), self.extra_wcs,
             self.cycle_start_z, self.clock, (self.cut_length, self.rapid_length), len(self.moves),
             len(self.tool_changes), self.skip_state, len(self.probes),
+            {k: dict(v) for k, v in self.cycle_params.items()}, None if self.shape is None else self.shape.copy(),
         )  # fmt: skip
 
     def restore(self, state: PlannerState) -> None:
@@ -111,6 +115,8 @@ class Planner:
         del self.tool_changes[state.tool_count :]
         self.skip_state = state.skip_state
         del self.probes[state.probes :]
+        self.cycle_params = {k: dict(v) for k, v in state.cycle_params.items()}
+        self.shape = None if state.shape is None else state.shape.copy()
 
     # ---------------------------------------------------------------- plain motion
     def run_plain(self, plan: PlainRun, line: int) -> bool:
@@ -155,11 +161,12 @@ class Planner:
         return self.execute_nc(words, file, line)[0]
 
     # ---------------------------------------------------------------- one block
-    def execute_nc(self, words: list[tuple[str, float]], file: str, line: int) -> tuple[bool, float | None]:
-        """Carry out the NC words of a block. Returns (moved, skip_label): whether the block
+    def execute_nc(self, words: list[tuple[str, float]], file: str, line: int) -> tuple[bool, ShapeCall | None]:
+        """Carry out the NC words of a block. Returns (moved, shape): whether the block
         counts as a move for G66 modal calls (a move command; on a dialect whose
         ``modal_call_needs_distance`` is set, one that goes somewhere or draws an arc) and, for a
-        lathe roughing cycle with Q, the label after which the program continues."""
+        lathe cycle that names a finishing shape (G70–G73 P Q), the shape the macro machine is
+        to run (lathe_cycles.py)."""
         gs: list[float] = []
         axes: dict[int, float] = {}
         incremental: dict[int, float] = {}
@@ -263,9 +270,16 @@ class Planner:
         centre: tuple[float, ...] | None = None,
         legs: tuple[Leg, ...] | None = None,
         cycle: str | None = None,
+        pass_of: str | None = None,
     ) -> None:
         """Advance the clock by the move's time, add its length to the path and record the move
-        (with an arc's centre and plane, a cycle's legs, its time), by cycle_time.py's rules."""
+        (with an arc's centre and plane, a cycle's legs, its time, the lathe cycle it is a pass
+        of), by cycle_time.py's rules. While a roughing cycle reads its shape, the move is kept as
+        a segment of the shape instead (lathe_cycles.py)."""
+        shape = self.shape
+        if shape is not None and shape.reading:
+            shape.segments.append((mode, start, end, centre))
+            return
         feed = self.codes.get("F") or 0.0
         times = self.times
         modal = self.modal
@@ -285,7 +299,7 @@ class Planner:
         self.clock += seconds
         if self.record_moves:
             self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre, seconds, plane, legs,
-                                              cycle)))  # fmt: skip
+                                              cycle, pass_of)))  # fmt: skip
 
     def cutting_rate(self, feed: float, start: Sequence[float], end: Sequence[float], unit: float) -> float:
         """The feed of a cutting move from ``start`` to ``end`` in program units per minute:

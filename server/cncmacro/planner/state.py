@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .lathe_cycles import ShapeReading
 from .probing import SkipState
 
 MODAL_DEFAULTS = {"motion": 0.0, "distance": 90.0, "units": 21.0, "cutter": 40.0, "length": 49.0, "canned": 80.0,
@@ -21,7 +22,8 @@ class PlannerState:
     """A copy of the planner's state at one moment (part of the macro machine's ``Snapshot``):
     modal groups, codes, positions (program, coordinate shift, skip, tool vector), the extra
     work offset, a drilling cycle's initial level, the clock, the cut and rapid path, and how
-    many moves, tool changes and probes had been recorded."""
+    many moves, tool changes and probes had been recorded, and a lathe's cycle parameters and
+    the shape cycle under way (lathe_cycles.py)."""
 
     modal: dict[str, float]
     codes: dict[str, float | None]
@@ -34,3 +36,5 @@ class PlannerState:
     tool_count: int
     skip_state: SkipState
     probes: int
+    cycle_params: dict[float, dict[str, float]]
+    shape: ShapeReading | None

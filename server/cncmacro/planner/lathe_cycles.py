@@ -1,0 +1,184 @@
+"""A lathe's multiple repetitive cycles in the planner (docs/semantics.md, "Lathe cycles"):
+what each block of G70–G76 means and the moves it makes.
+
+- **The first block** of G71, G72, G73, G74, G75 and G76 (the one without P and Q, or without an
+  end point) only sets the cycle's parameters, kept until the next such block: its U and W are
+  not moves (``params``).
+- **G71, G72, G73 with P and Q** name the finishing shape, the blocks from N(P) to N(Q). The
+  planner answers with a ``ShapeCall``; the macro machine runs those blocks while the planner
+  *reads* them (``begin_shape``: every move of theirs is kept as a shape segment instead of
+  being made, their F, S and T are ignored), and when the block N(Q) is done it calls
+  ``end_shape``, which turns the shape into the passes (stock_removal.py) and records them as
+  the cycle block's moves. The tool is back at the start point.
+- **G70 P Q** runs the shape blocks as they are written, with their own F, S and T, then
+  returns to the start point at rapid.
+- **G74, G75, G76** and the single cycles G90, G92, G94 are planned by their own modules
+  (``MULTIPLE_CYCLES``; turning_cycles.py); a code no module plans yet is recorded as one cut.
+
+Every move of a cycle is recorded with the cycle block's line and ``pass_of`` (its code), so
+the toolpath view draws each pass and the debugger knows which pass it is on.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, NamedTuple
+
+from .stock_removal import Point, Segment, Step, pattern_passes, rough_passes, translate
+
+if TYPE_CHECKING:
+    from .planner import Planner
+
+ROUGHING = frozenset({71.0, 72.0, 73.0})
+FINISHING = 70.0
+SHAPE_CODES = ROUGHING | {FINISHING}
+# G71–G73's own words: in their blocks U and W are parameters (depths, allowances), never moves
+_PARAMETER_UW = SHAPE_CODES
+
+
+class ShapeCall(NamedTuple):
+    """A cycle that names a finishing shape: its code and the labels P (first block) and Q
+    (last). The planner has begun the shape (``begin_shape``) when it answers one."""
+
+    code: float
+    first: float
+    last: float
+
+
+@dataclass(slots=True)
+class ShapeReading:
+    """A shape cycle under way: its code, block (file, line), words, where the tool started,
+    whether the shape is being read (G71–G73) rather than run (G70), the codes its reading set
+    aside, and the segments read so far (mode, start, end, centre), in work coordinates."""
+
+    code: float
+    file: str
+    line: int
+    words: dict[str, float]
+    start: tuple[float, ...]
+    reading: bool
+    kept_codes: dict[str, float | None]
+    segments: list[tuple[float, tuple[float, ...], tuple[float, ...], tuple[float, ...] | None]] = field(
+        default_factory=list
+    )
+
+    def copy(self) -> ShapeReading:
+        return ShapeReading(self.code, self.file, self.line, dict(self.words), self.start, self.reading,
+                            dict(self.kept_codes), list(self.segments))  # fmt: skip
+
+
+# code -> the planner of a cycle's second block: (planner, block words with U/W, file, line, end point)
+MultipleCycle = Callable[["Planner", dict[str, float], str, int, list[float]], None]
+MULTIPLE_CYCLES: dict[float, MultipleCycle] = {}
+
+
+def block_words(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]) -> dict[str, float]:
+    """The block's words by letter again (X, Z as given; U, W as written)."""
+    words = dict(other)
+    names = p.dialect.axes
+    back = {v: k for k, v in p.dialect.incremental_letters.items()}
+    for i, v in axes.items():
+        words[names[i]] = v
+    for i, v in inc.items():
+        words[back[names[i]]] = v
+    return words
+
+
+def lathe_cycle(
+    p: Planner, g: float, axes: dict[int, float], inc: dict[int, float], other: dict[str, float], file: str, line: int
+) -> tuple[bool, ShapeCall | None]:
+    """Carry out a block of lathe cycle ``g`` (module docstring): (moved, the shape to read or run)."""
+    if g in SHAPE_CODES:
+        words = block_words(p, axes, inc, other)
+        if "P" in words and "Q" in words:
+            call = ShapeCall(g, words["P"], words["Q"])
+            begin_shape(p, call, words, file, line)
+            return True, call
+        if g != FINISHING:
+            p.cycle_params[g] = words
+        return False, None
+    plan = MULTIPLE_CYCLES.get(g)
+    if plan is not None:
+        if not axes and not inc:  # the first block: its parameters
+            p.cycle_params[g] = dict(other)
+            return False, None
+        plan(p, block_words(p, axes, inc, other), file, line, p.target(axes, inc))
+        return True, None
+    p.turning_cycle(file, line, g, p.target(axes, inc))
+    return bool(axes or inc), None
+
+
+def begin_shape(p: Planner, call: ShapeCall, words: dict[str, float], file: str, line: int) -> None:
+    """The machine is about to run the blocks of ``call``'s shape: read them (G71–G73) or run
+    them (G70) from where the tool is."""
+    reading = call.code in ROUGHING
+    kept = {k: p.codes.get(k) for k in ("F", "S", "T")} if reading else {}
+    p.shape = ShapeReading(call.code, file, line, words, tuple(p.pos), reading, kept)
+
+
+def end_shape(p: Planner) -> None:
+    """The block N(Q) is done: plan and record the roughing passes (G71–G73) or return to the
+    start point (G70). The tool ends where the cycle started."""
+    shape = p.shape
+    if shape is None:
+        return
+    p.shape = None
+    start = list(shape.start)
+    if not shape.reading:
+        p.move(shape.file, shape.line, 0.0, start)
+        return
+    for k, v in shape.kept_codes.items():
+        p.codes[k] = v
+    p.pos[:] = start
+    steps, to_plane, from_plane = _roughing_steps(p, shape)
+    at = list(start)
+    for step in steps:
+        end = list(at)
+        x, z = from_plane(step.end)
+        end[p.axis_index["X"]], end[p.axis_index["Z"]] = x, z
+        centre = None
+        if step.centre is not None:
+            c = list(end)
+            c[p.axis_index["X"]], c[p.axis_index["Z"]] = from_plane(step.centre)
+            centre = tuple(c)
+        p.record(shape.file, shape.line, step.mode, tuple(at), tuple(end), centre, pass_of=f"G{shape.code:g}")
+        at = end
+    p.pos[:] = start
+    del to_plane
+
+
+def _roughing_steps(
+    p: Planner, shape: ShapeReading
+) -> tuple[list[Step], Callable[[tuple[float, ...]], Point], Callable[[Point], tuple[float, float]]]:
+    """The passes of a roughing cycle in its own plane, and the conversions to and from it."""
+    xi, zi = p.axis_index["X"], p.axis_index["Z"]
+    facing = shape.code == 72.0
+
+    def to_plane(q: tuple[float, ...]) -> Point:
+        return (q[zi], q[xi] / 2.0) if facing else (q[xi] / 2.0, q[zi])
+
+    def from_plane(q: Point) -> tuple[float, float]:
+        return (q[1] * 2.0, q[0]) if facing else (q[0] * 2.0, q[1])
+
+    segments = [Segment(m, to_plane(a), to_plane(b), None if c is None else to_plane(c))
+                for m, a, b, c in shape.segments]  # fmt: skip
+    if not segments:
+        return [], to_plane, from_plane
+    words = shape.words
+    first = p.cycle_params.get(shape.code, {})
+    du, dw = words.get("U", 0.0) / 2.0, words.get("W", 0.0)
+    allowance = (dw, du) if facing else (du, dw)
+    moved = translate(segments, *allowance)
+    moved[0] = Segment(moved[0].mode, to_plane(shape.start), moved[0].end, moved[0].centre)
+    start = to_plane(shape.start)
+    if shape.code == 73.0:
+        relief = (first.get("U", 0.0), first.get("W", 0.0))
+        count = round(first.get("R", 1.0))
+        return pattern_passes(start, moved, relief, count), to_plane, from_plane
+    depth = first.get("W" if facing else "U", 0.0)
+    retract = first.get("R", 0.0)
+    approach = 0.0 if segments[0].mode == 0.0 else 1.0
+    # G18: G03 turns from Z toward X, so counterclockwise in (z, x) (G72's plane), clockwise in (x, z)
+    ccw_mode = 3.0 if facing else 2.0
+    return rough_passes(start, moved, depth, retract, approach, ccw_mode), to_plane, from_plane
