@@ -25,6 +25,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, NamedTuple
 
+from .cycle_rules import check_cycle_block, check_shape
 from .stock_removal import Point, Segment, Step, pattern_passes, rough_passes, translate
 
 if TYPE_CHECKING:
@@ -91,6 +92,7 @@ def lathe_cycle(
     """Carry out a block of lathe cycle ``g`` (module docstring): (moved, the shape to read or run)."""
     if g in SHAPE_CODES:
         words = block_words(p, axes, inc, other)
+        check_cycle_block(p, g, words)
         if "P" in words and "Q" in words:
             call = ShapeCall(g, words["P"], words["Q"])
             begin_shape(p, call, words, file, line)
@@ -103,7 +105,9 @@ def lathe_cycle(
         if not axes and not inc:  # the first block: its parameters
             p.cycle_params[g] = dict(other)
             return False, None
-        plan(p, block_words(p, axes, inc, other), file, line, p.target(axes, inc))
+        words = block_words(p, axes, inc, other)
+        check_cycle_block(p, g, words)
+        plan(p, words, file, line, p.target(axes, inc))
         return True, None
     p.turning_cycle(file, line, g, p.target(axes, inc))
     return bool(axes or inc), None
@@ -130,6 +134,7 @@ def end_shape(p: Planner) -> None:
         return
     for k, v in shape.kept_codes.items():
         p.codes[k] = v
+    check_shape(p, shape)
     p.pos[:] = start
     steps, to_plane, from_plane = _roughing_steps(p, shape)
     at = list(start)
