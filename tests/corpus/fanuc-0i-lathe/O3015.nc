@@ -1,0 +1,9 @@
+%
+O3015 (ONE OIL GROOVE W3 D2 - MOVES W-10 EACH CALL)
+(cncmacro: dialect=fanuc-0i-lathe)
+N10 G00 W-10.
+N20 G01 X30. F0.05
+N30 G04 X0.3
+N40 G00 X36.
+N50 M99
+%
