@@ -1,6 +1,8 @@
 """Running the machine until the debugger should stop: continue, step in, over and out.
 
-One step is one block. Step in runs one block (into a call). Step over runs blocks until the
+One step is one block. Step in runs one block (into a call). A lathe roughing cycle (G71–G73
+P Q) is one step with its shape: while the planner reads the shape no step or breakpoint stops
+in it; a G70 runs its shape as a level that step in enters (docs/semantics.md §10.2). Step over runs blocks until the
 program level is back where it started (a G65, M98 or G66 call runs to completion). Step out
 runs until the level is above where it started (past the M99). Any of them stops at a
 breakpoint, an alarm, an ``M00``/``#3006`` pause, the block budget, the end of the program
@@ -158,6 +160,12 @@ class Stepper:
             now = len(m.frames)
             if until is not None and until(m):
                 return Stop("goto")
+            shape = m.planner.shape
+            if shape is not None and shape.reading:  # a roughing cycle reads its shape: one step, no stop inside
+                stop = self._status_stop()
+                if stop is not None:
+                    return stop
+                continue
             hit = self.breakpoints.check(m, now > before)  # counts the visit, also when a step lands here
             stop = self._status_stop()
             if stop is not None:
