@@ -135,3 +135,19 @@ def test_10_the_run_goes_on_after_the_shape_once_roughing_is_done(tmp_path: Path
     result = run_json(tmp_path, text, "O0002.CNC", f'base = "{dialect}"\n')
     # read once while roughing (the macro statement in the shape runs), once by G70
     assert result["variables"]["101"] == 1 and result["variables"]["102"] == 2
+
+
+@pytest.mark.parametrize("dialect", ["gsk980tdi", "fanuc-0i-lathe"])
+def test_10_g71_cuts_a_pocket_level_by_level_entering_it_from_above(tmp_path: Path, dialect: str) -> None:
+    # A = X50 Z2; Δd 2, e 0.5; shape X30, Z-10, X40 (a ridge), Z-15, X30 (the pocket), Z-25, X50.
+    # Levels X46 and X42 pass over the ridge (X40): one cut each to Z-25, where the shape comes up.
+    # Levels X38 and X34 meet the ridge at Z-10 and go on in the pocket from Z-15 to Z-25: out to
+    # X50, over to Z-15, down to the level above (X42, X38) at rapid, in at the feed, along to Z-25.
+    moves = passes(tmp_path, dialect, "G00 X50. Z2.", "G71 U2. R0.5", "G71 P10 Q20 U0 W0 F0.2", "N10 G00 X30.",
+                   "G01 Z-10.", "X40.", "Z-15.", "X30.", "Z-25.", "N20 X50.")  # fmt: skip
+    feeds = [e for mv, e in zip(moves, ends(moves), strict=True) if mv["kind"] == "feed"]
+    assert [e for e in feeds if e[0] == 46.0] == [(46.0, -25.0)]
+    assert [e for e in feeds if e[0] == 38.0] == [(38.0, -10.0), (38.0, -15.0), (38.0, -25.0)]
+    at = ends(moves)
+    plunge = at.index((38.0, -15.0))
+    assert at[plunge - 3 : plunge] == [(50.0, -9.5), (50.0, -15.0), (42.0, -15.0)]
