@@ -91,3 +91,16 @@ def test_10_a_breakpoint_in_the_shape_stops_only_when_g70_runs_it(tmp_path: Path
     assert any(mv.pass_of == "G71" for mv in s.machine.planner.moves)  # the roughing is done already
     stop = s.run(CONTINUE)
     assert stop.reason != "breakpoint"
+
+
+@pytest.mark.parametrize("dialect", LATHES)
+def test_10_step_back_over_a_g71_returns_to_its_block_with_its_passes_undone(tmp_path: Path, dialect: str) -> None:
+    s = stepper(tmp_path, dialect)
+    for _ in range(3):
+        s.run(STEP_IN)  # G00, G71 U R, G71 P Q (the roughing)
+    assert shown(s) == [("O0001 (main)", 8)]
+    s.step_back()
+    assert shown(s) == [("O0001 (main)", 4)]  # the G71 P Q block again, not inside its shape
+    assert not any(mv.pass_of == "G71" for mv in s.machine.planner.moves)
+    s.run(STEP_IN)
+    assert shown(s) == [("O0001 (main)", 8)]

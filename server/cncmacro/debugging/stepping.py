@@ -160,8 +160,7 @@ class Stepper:
             now = len(m.frames)
             if until is not None and until(m):
                 return Stop("goto")
-            shape = m.planner.shape
-            if shape is not None and shape.reading:  # a roughing cycle reads its shape: one step, no stop inside
+            if _reading_shape(m):  # a roughing cycle reads its shape: one step, no stop inside
                 stop = self._status_stop()
                 if stop is not None:
                     return stop
@@ -213,6 +212,8 @@ class Stepper:
         if m.status == RunStatus.COMPLETED and _end_code(m) is None:
             back = 2  # running off the file's end (or into the next O header) counted as a block
         if self._back(m.blocks - back) is None:
+            while _reading_shape(m) and self._back(m.blocks - 1) is None:
+                pass  # a roughing cycle was one step forward: back to its block
             return Stop("step")
         return Stop("entry", pick(self.locale, "the start of the kept history", "保留的历史的起点"))
 
@@ -310,3 +311,9 @@ def last_line_run(m: Machine) -> int:
 def move_line(mv: Move, axes: tuple[str, ...], shown: list[int]) -> str:
     """An echoed move with the axes in ``shown`` (those the program has commanded so far)."""
     return f"{Path(mv.file).name}:{mv.line + 1} {mv.text(axes, shown)}\n"
+
+
+def _reading_shape(m: Machine) -> bool:
+    """Whether a lathe roughing cycle is reading its shape (no step stops inside it)."""
+    shape = m.planner.shape
+    return shape is not None and shape.reading
