@@ -151,3 +151,17 @@ def test_10_g71_cuts_a_pocket_level_by_level_entering_it_from_above(tmp_path: Pa
     at = ends(moves)
     plunge = at.index((38.0, -15.0))
     assert at[plunge - 3 : plunge] == [(50.0, -9.5), (50.0, -15.0), (42.0, -15.0)]
+
+
+@pytest.mark.parametrize("dialect", ["gsk980tdi", "fanuc-0i-lathe"])
+def test_10_g71_meets_an_arc_of_the_shape_where_the_circle_crosses_the_level(tmp_path: Path, dialect: str) -> None:
+    # A = X40 Z2; shape X20, Z-10, G02 X30 Z-15 R5 (a fillet about X30 Z-10: radius 15, Z-10), X40.
+    # On the radius: (r - 15)² + (z + 10)² = 25. Level X28 (r 14): z = -10 - √24 = -14.899;
+    # level X24 (r 12): z = -10 - √16 = -14. Arcs are followed in chords of 2°: within 0.01.
+    moves = passes(tmp_path, dialect, "G00 X40. Z2.", "G71 U2. R0.5", "G71 P10 Q20 U0 W0 F0.2", "N10 G00 X20.",
+                   "G01 Z-10.", "G02 X30. Z-15. R5.", "N20 G01 X40.")  # fmt: skip
+    cut = {mv["to"]["X"]: mv["to"]["Z"] for mv in moves if mv["kind"] == "feed" and mv["from"]["X"] == mv["to"]["X"]}
+    assert cut[28.0] == pytest.approx(-10 - 24**0.5, abs=0.01)
+    assert cut[24.0] == pytest.approx(-14.0, abs=0.01)
+    arc = [mv for mv in moves if mv["kind"] == "arc"]
+    assert [(a["to"]["X"], a["to"]["Z"], a["centre"]["X"], a["centre"]["Z"]) for a in arc] == [(30.0, -15.0, 30.0, -10.0)]
