@@ -114,7 +114,7 @@ def check_g75_grooves(r: dict[str, Any]) -> None:
 def check_g74_face_drill(r: dict[str, Any]) -> None:
     pecks = sorted({round(m["to"]["Z"], 3) for m in r["moves"] if m.get("pass_of") == "G74" and m["line"] == 18
                     and m["mode"] != "G00"}, reverse=True)  # fmt: skip
-    assert pecks == [-6.0 * k for k in range(1, 7)] + [-40.0]  # Q6 pecks, the last to Z-40
+    assert pecks == [3.0 - 6.0 * k for k in range(1, 8)] + [-40.0]  # Q6 pecks from the start Z3, the last to Z-40
 
 
 def check_ellipse_while(r: dict[str, Any]) -> None:
@@ -207,7 +207,7 @@ def check_o2009(r: dict[str, Any]) -> None:
 def check_o2010(r: dict[str, Any]) -> None:
     pecks = sorted({round(m["to"]["Z"], 3) for m in r["moves"] if m.get("pass_of") == "G74" and m["line"] == 17
                     and m["mode"] != "G00"}, reverse=True)  # fmt: skip
-    assert pecks == [-5.0 * k for k in range(1, 13)]
+    assert pecks == [3.0 - 5.0 * k for k in range(1, 13)] + [-60.0]  # Q5 pecks from the start Z3, the last to Z-60
 
 
 def check_o2011(r: dict[str, Any]) -> None:
