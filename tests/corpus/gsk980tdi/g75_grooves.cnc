@@ -1,7 +1,7 @@
 (cncmacro: dialect=gsk980tdi)
 O0218 (WIDE GROOVE AND PART-OFF - G75 切槽 切断)
 (宽槽: D40 外圆上 Z-20 到 Z-32 槽宽 12, 槽底 D30; 切槽刀宽 4, 左刀尖对刀)
-(G75 R 退刀量; 第二段 P 每次 X 切深 um 半径值, Q Z 向移动量 um, F 进给)
+(G75 R 退刀量; 第二段 P 每次 X 切深 um 直径值, Q Z 向移动量 um, F 进给)
 G00 X100 Z100
 T0202 (切槽刀 刃宽 4)
 M03 S450
