@@ -178,8 +178,9 @@ def check_o2004(r: dict[str, Any]) -> None:
 
 
 def check_o2005(r: dict[str, Any]) -> None:
-    assert cycle_ends(r, "G90") == [(42.0, -60.0), (38.5, -60.0), (38.5, -40.0), (38.5, -40.0), (38.5, -40.0),
-                                    (38.0, -40.0), (38.0, -60.0)]  # fmt: skip
+    assert cycle_ends(r, "G90") == [(42.0, -44.0), (38.5, -44.0), (38.5, -40.0), (38.5, -40.0), (38.5, -40.0),
+                                    (38.0, -40.0), (38.0, -44.0)]  # fmt: skip
+    assert cycle_ends(r, "G94") == [(-1.0, 1.0), (-1.0, 0.0), (38.5, -44.0)]  # Z0 repeats the facing
 
 
 def check_o2006(r: dict[str, Any]) -> None:

@@ -1,7 +1,7 @@
 %
 O2006 (M30X2 THREAD - G92 STRAIGHT INFEED)
 (cncmacro: dialect=fanuc-0i-lathe)
-(螺纹 M30X2-6g 长 35, 退刀槽 5X2; 大径车至 D29.8, 底径 30-2.6=27.4)
+(螺纹 M30X2-6g 长 35, 退刀槽 5X2; 毛坯 D35, 大径车至 D29.8, 底径 30-2.6=27.4)
 N10 G28 U0 W0
 N20 T0101
 N30 G50 S2000
