@@ -33,6 +33,11 @@ def test_g74_to_g76_with_an_end_point_are_the_second_block() -> None:
     assert _at("G76 U-2.6 W-30. P1300 Q400 F2.", 22)[:2] == (SECOND_BLOCK, "Q(Δd)")  # type: ignore[index]
 
 
+def test_words_written_without_spaces_are_read_one_by_one() -> None:
+    assert _at("G71U2.R1.", 6)[:2] == (FIRST_BLOCK, "R(e)")  # type: ignore[index]  # R starts where U2. ends
+    assert _at("G71P10Q20U0.5W0.1", 9)[:2] == (SECOND_BLOCK, "U(Δu)")  # type: ignore[index]
+
+
 def test_a_letter_the_block_does_not_take_and_the_g_word_itself_say_nothing() -> None:
     assert _at("G71 U2. R1. X5.", 12) is None  # X is no word of G71's first block
     assert _at("G71 U2. R1.", 1) is None  # the code has its own hover

@@ -67,11 +67,12 @@ def cycle_word_at(dialect: Dialect, block: Block, column: int) -> CycleWordAt | 
         return None
     cycle, g = found
     form = cycle.form_of([w.letter for w in block.words])
-    for w in block.words:
-        if w is not g and w.start <= column <= w.end:
-            meaning = form.word(w.letter)
-            return None if meaning is None else CycleWordAt(cycle.code, form, meaning, w.start, w.end)
-    return None
+    under = [w for w in block.words if w.start <= column <= w.end]  # two where words touch: the right one
+    if not under or under[-1] is g:
+        return None
+    w = under[-1]
+    meaning = form.word(w.letter)
+    return None if meaning is None else CycleWordAt(cycle.code, form, meaning, w.start, w.end)
 
 
 def cycle_form_of(dialect: Dialect, block: Block) -> tuple[str, CycleForm] | None:
