@@ -212,13 +212,13 @@ def _spindle(g50_extra: tuple[CycleWord, ...]) -> list[CycleWords]:
             w(
                 "X",
                 "",
-                "X the tool's position is given (a diameter): sets the work coordinates",
+                "the X the tool is at from now on (a diameter): sets the work coordinates",
                 "设定刀具当前位置的X坐标（直径值），建立工件坐标系",
             ),
             w(
                 "Z",
                 "",
-                "Z the tool's position is given: sets the work coordinates",
+                "the Z the tool is at from now on: sets the work coordinates",
                 "设定刀具当前位置的Z坐标，建立工件坐标系",
             ),
             *g50_extra,
@@ -263,8 +263,8 @@ GSK980TDI_CYCLE_WORDS: dict[float, CycleWords] = by_code(
     *_single_cycles((THREADS_PER_INCH,)),
     *_spindle(
         (
-            w("U", "", "X the tool's position moves by (a diameter), incremental", "刀具当前位置X坐标的增量（直径值）"),
-            w("W", "", "Z the tool's position moves by, incremental", "刀具当前位置Z坐标的增量"),
+            w("U", "", "change of the tool's X coordinate (a diameter)", "刀具当前位置X坐标的增量（直径值）"),
+            w("W", "", "change of the tool's Z coordinate", "刀具当前位置Z坐标的增量"),
         )
     ),
 )
