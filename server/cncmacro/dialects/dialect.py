@@ -15,6 +15,7 @@ from functools import cache
 from typing import Any
 
 from ..bilingual import Detail, detail
+from .cycle_words import CycleWords
 from .drill_cycles import DrillCycle
 from .tables import CodeDoc, CommonRange, FunctionDoc, ProgramDoc, SystemVariable, SystemVariableName
 from .timing import Timing
@@ -145,6 +146,10 @@ class Dialect:
     # whether it comes out at rapid (turning_cycles.py); a turning cycle not listed is drawn as
     # one cut from where it starts to its end point
     single_cycles: dict[float, SingleCycle] = field(default_factory=dict)
+    # what each letter of a cycle block means, by G code (cycle_words.py: a lathe's G70–G76 with
+    # their first and second blocks, G90/G92/G94, G32, G50, G96/G97; a mill's drilling cycles),
+    # for the editor's hover, signature help and completion
+    cycle_words: dict[float, CycleWords] = field(default_factory=dict)
 
     # what the machine takes time for: rapid rates, tool change, M codes, dwell units (timing.py;
     # the cycle time, planner/cycle_time.py)
