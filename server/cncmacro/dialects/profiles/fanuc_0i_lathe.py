@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from ..fanuc_lathe_data import LATHE_OFFSETS
 from ..timing import Timing
 from ..turning_cycles import LATHE_SINGLE_CYCLES
 from .fanuc_0i import PROFILE as FANUC_0I
@@ -24,6 +25,7 @@ PROFILE = replace(
     aliases=("fanuc-0i-t", "0i-tf", "0i-td", "fanuc-0i-tf", "fanuc-lathe"),
     data_module="fanuc_lathe_data",
     lathe=True,
+    lathe_offsets=LATHE_OFFSETS,
     axes=("X", "Z", "C", "Y"),
     modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0}),
     modal_defaults={"plane": 18.0, "feed": 99.0},
