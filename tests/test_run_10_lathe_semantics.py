@@ -7,12 +7,15 @@ short numbers of its tool offsets). Every expected value is worked out by hand i
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import NamedTuple
 
 import pytest
 
 from cncmacro.dialects import get_dialect
 from cncmacro.library.dialect_choice import dialect_from_text
+from cncmacro.library.machine_file import MachineFileError, MachineSettings, load_machine_file
+from cncmacro.library.profiles import machine_profile
 from running import final, lines, run
 
 
@@ -184,3 +187,40 @@ def test_10_1_fanuc_lathe_starts_in_g18_and_g99() -> None:
 def test_10_1_fanuc_lathe_answers_to_its_aliases(alias: str) -> None:
     assert get_dialect(alias).name == "fanuc-0i-lathe"
     assert dialect_from_text([f"(cncmacro: dialect={alias})", "G00 X50"]) == "fanuc-0i-lathe"
+
+
+# ---------------------------------------------------------------------------------------------
+# the 30i lathes: ``lathe = true`` in the machine file
+
+
+def _machine_file(tmp_path: Path, text: str) -> MachineSettings:
+    path = tmp_path / ".cncmacro.toml"
+    path.write_text(text, encoding="utf-8")
+    return load_machine_file(path)
+
+
+def test_10_1_fanuc_30i_with_lathe_true_runs_as_a_lathe(tmp_path: Path) -> None:
+    settings = _machine_file(tmp_path, 'base = "fanuc-30i"\nlathe = true\n')
+    profile = machine_profile(None, settings)
+    assert profile.lathe and profile.name == "fanuc-30i" and profile.variable_names
+    presets = {15001: -200.0, 10001: 0.1}
+    program = lines("G97 S500 M03", "G00 X50 Z10", "T0101", "#100=#5021", "#101=[#_ABSIO[1]]", "#102=#4005",
+                    "#103=#4016", "#104=#2701", "G01 W-10 F0.2", "M30")  # fmt: skip
+    m = run(program, profile, presets=presets)
+    assert m.status == "completed", m.alarm
+    # machine X: 50 + (-200 + 0.1) = -149.9; #5001 (ABSIO) 50; G99 and G18 at power-on; #2701 is #15001
+    assert m.C[100] == pytest.approx(-149.9) and (m.C[101], m.C[102], m.C[103], m.C[104]) == (50.0, 99.0, 18.0, -200.0)
+    # G99 F0.2 at S500: 100 mm/min, W-10 in 6 s
+    assert m.planner.moves[-1].seconds == pytest.approx(6.0)
+    # without the key the 30i is a mill: #15001 does not exist, #4005 reads G94 feed per minute
+    assert not machine_profile("fanuc-30i", None).lathe
+
+
+@pytest.mark.parametrize(("text", "wanted"), [
+    ('base = "fanuc-0i"\nlathe = true\n', "fanuc-0i-lathe"),
+    ('base = "gsk980tdi"\nlathe = false\n', "is a lathe"),
+    ('base = "fanuc-30i"\nlathe = 1\n', "true or false"),
+])  # fmt: skip
+def test_10_1_lathe_key_is_refused_where_it_means_nothing(tmp_path: Path, text: str, wanted: str) -> None:
+    with pytest.raises(MachineFileError, match=wanted):
+        _machine_file(tmp_path, text)

@@ -126,6 +126,10 @@ class Dialect:
     # numbers of offsets 1-64
     lathe_offsets: LatheOffsets = GSK_LATHE_OFFSETS
 
+    # §10.1 the same control as a lathe, which a machine file's ``lathe = true`` selects (the 30i
+    # lathes: ``fanuc-30i``'s); None: the profile has no lathe form
+    lathe_variant: Dialect | None = None
+
     # §2 system variable names [#_NAME] and [#_NAME[n]] (the data module's SYSTEM_VARIABLE_NAMES)
     variable_names: bool = False
     # §3 functions beyond the common set: names (POW, ADP, PRM) and extra forms by signature (ATAN[a,b])

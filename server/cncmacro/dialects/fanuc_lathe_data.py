@@ -54,25 +54,31 @@ def _short_count(short: int) -> int:
     return 49 if short in (2400, 2450) else SHORT_COUNT
 
 
-_TOOL_OFFSETS: tuple[SystemVariable, ...] = (
-    *(
-        SystemVariable(long + 1, long + OFFSET_COUNT, "rw", "tool",
-                       f"Tool offset {{index}}: {en} (G10 P{{index}} writes wear, G10 P(10000+{{index}}) "
-                       "geometry; X values on the diameter)",
-                       f"{{index}}号刀补的{zh}（G10 P{{index}}写磨损值，G10 P(10000+{{index}})写几何形状值；"
-                       "X为直径值）", unit)
-        for long, _, en, zh, unit in _OFFSET_KINDS
-    ),
-    *(
-        SystemVariable(short + 1, short + _short_count(short), "rw", "tool",
-                       f"Tool offset {{index}}: {en}; short number for #{long + 1}… (#{short + 1} = #{long + 1}), "
-                       f"usable with {SHORT_COUNT} offsets or fewer",
-                       f"{{index}}号刀补的{zh}；#{long + 1}…的另一编号（#{short + 1}即#{long + 1}），"
-                       f"刀补数不超过{SHORT_COUNT}组时可用", unit, "alias", str(long + 1))
-        for long, short, en, zh, unit in _OFFSET_KINDS
-        if short is not None
-    ),
-)  # fmt: skip
+def tool_offset_rows(count: int) -> tuple[SystemVariable, ...]:
+    """The tool offsets of a FANUC lathe with ``count`` offsets at the long numbers (#10001…) and
+    their short numbers (#2001…) for offsets 1-64 (the 30i lathe has 999)."""
+    return (
+        *(
+            SystemVariable(long + 1, long + count, "rw", "tool",
+                           f"Tool offset {{index}}: {en} (G10 P{{index}} writes wear, G10 P(10000+{{index}}) "
+                           "geometry; X values on the diameter)",
+                           f"{{index}}号刀补的{zh}（G10 P{{index}}写磨损值，G10 P(10000+{{index}})写几何形状值；"
+                           "X为直径值）", unit)
+            for long, _, en, zh, unit in _OFFSET_KINDS
+        ),
+        *(
+            SystemVariable(short + 1, short + _short_count(short), "rw", "tool",
+                           f"Tool offset {{index}}: {en}; short number for #{long + 1}… (#{short + 1} = #{long + 1}), "
+                           f"usable with {SHORT_COUNT} offsets or fewer",
+                           f"{{index}}号刀补的{zh}；#{long + 1}…的另一编号（#{short + 1}即#{long + 1}），"
+                           f"刀补数不超过{SHORT_COUNT}组时可用", unit, "alias", str(long + 1))
+            for long, short, en, zh, unit in _OFFSET_KINDS
+            if short is not None
+        ),
+    )  # fmt: skip
+
+
+_TOOL_OFFSETS = tool_offset_rows(OFFSET_COUNT)
 
 # ---------------------------------------------------------------------------------------------
 # modal information of G-code system A: group number -> (name in MODAL_GROUPS, its codes)
@@ -90,7 +96,8 @@ MODAL_GROUP_CODES: dict[int, tuple[str, str]] = {
 }
 
 
-def _modal_row(group: int) -> SystemVariable:
+def modal_row(group: int) -> SystemVariable:
+    """#4000+group: the modal G code of system A's ``group`` (vacant for a group not kept)."""
     return shared.modal_group_row(
         4000 + group,
         group,
@@ -108,7 +115,7 @@ def _modal_row(group: int) -> SystemVariable:
 
 
 # the code letters of a lathe beside those both controls have (shared_data.CODE_LETTERS)
-_CODE_LETTERS: tuple[tuple[int, str, str, str], ...] = (
+LATHE_CODE_LETTERS: tuple[tuple[int, str, str, str], ...] = (
     (4102, "B", "B code (second auxiliary function) last commanded", "最近指令的B代码（第2辅助功能）"),
     (
         4120,
@@ -125,11 +132,11 @@ _CODE_LETTERS: tuple[tuple[int, str, str, str], ...] = (
 )
 
 _MODAL: tuple[SystemVariable, ...] = (
-    *(_modal_row(group) for group in range(1, 23)),
-    *shared.code_letter_rows((*shared.CODE_LETTERS, *_CODE_LETTERS)),
+    *(modal_row(group) for group in range(1, 23)),
+    *shared.code_letter_rows((*shared.CODE_LETTERS, *LATHE_CODE_LETTERS)),
 )
 
-_TOOL_OFFSET_IN_EFFECT = SystemVariable(
+TOOL_OFFSET_IN_EFFECT = SystemVariable(
     5081,
     5084,
     "r",
@@ -143,17 +150,17 @@ _TOOL_OFFSET_IN_EFFECT = SystemVariable(
 )
 
 
-def _mill_only(row: SystemVariable) -> bool:
+def mill_only(row: SystemVariable) -> bool:
     """A 0i mill row a lathe reads otherwise: the H/D tool offsets, the modal information and code
     letters, the tool length offset in effect, and the work offsets' short numbers #2500-#2806."""
     return row.group in ("tool", "modal") or row.first == 5081 or 2500 <= row.first <= 2806
 
 
 SYSTEM_VARIABLES: tuple[SystemVariable, ...] = (
-    *(row for row in fanuc.SYSTEM_VARIABLES if not _mill_only(row)),
+    *(row for row in fanuc.SYSTEM_VARIABLES if not mill_only(row)),
     *_TOOL_OFFSETS,
     *_MODAL,
-    _TOOL_OFFSET_IN_EFFECT,
+    TOOL_OFFSET_IN_EFFECT,
 )
 
 G_CODES: tuple[CodeDoc, ...] = (
