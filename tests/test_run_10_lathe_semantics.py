@@ -7,6 +7,8 @@ short numbers of its tool offsets). Every expected value is worked out by hand i
 
 from __future__ import annotations
 
+import re
+from itertools import pairwise
 from pathlib import Path
 from typing import NamedTuple
 
@@ -224,3 +226,22 @@ def test_10_1_fanuc_30i_with_lathe_true_runs_as_a_lathe(tmp_path: Path) -> None:
 def test_10_1_lathe_key_is_refused_where_it_means_nothing(tmp_path: Path, text: str, wanted: str) -> None:
     with pytest.raises(MachineFileError, match=wanted):
         _machine_file(tmp_path, text)
+
+
+def test_10_1_fanuc_30i_lathe_tables_hold_together() -> None:
+    """The 30i lathe's tables (not a registry profile, so not in the checks every profile passes):
+    no two rows overlap, every alias names a stored row of its access, every name a row, and no
+    row of the mill's tool offsets or G54.1 numbers is left where the lathe's offsets are."""
+    profile = get_dialect("fanuc-30i").lathe_variant
+    assert profile is not None
+    rows = sorted(profile.system_variables(), key=lambda r: r.first)
+    assert all(a.last < b.first for a, b in pairwise(rows))
+    for r in rows:
+        assert re.search(r"[\u4e00-\u9fff]", r.zh), r
+        if r.source == "alias":
+            target = profile.system_variable(int(r.param))
+            assert target is not None and target.source == "store" and target.access == r.access, r
+    for name in profile.system_variable_names():
+        assert profile.system_variable(name.first) is not None, name
+    assert "X wear" in profile.system_variable(10001).en and "Y wear" in profile.system_variable(14001).en
+    assert profile.system_variable(4003).default is None  # no G90/G91 group on system A

@@ -49,10 +49,16 @@ SYSTEM_VARIABLES: tuple[SystemVariable, ...] = (
     lathe.TOOL_OFFSET_IN_EFFECT,
 )
 
-# the mill's H and D offset names name numbers that are X, Z, radius and tip offsets here
-SYSTEM_VARIABLE_NAMES: tuple[SystemVariableName, ...] = tuple(
-    name for name in mill.SYSTEM_VARIABLE_NAMES if not 10001 <= name.first <= 13999
-)
+
+def _kept(name: SystemVariableName) -> bool:
+    """A 30i name a lathe keeps: not the H and D offsets' (their numbers are X, Z, radius and tip
+    offsets here), and only where a row of the lathe's has its numbers (no D or H code letter)."""
+    if 10001 <= name.first <= 13999:
+        return False
+    return all(any(row.first <= n <= row.last for row in SYSTEM_VARIABLES) for n in (name.first, name.last))
+
+
+SYSTEM_VARIABLE_NAMES: tuple[SystemVariableName, ...] = tuple(filter(_kept, mill.SYSTEM_VARIABLE_NAMES))
 
 G_CODES: tuple[CodeDoc, ...] = lathe.G_CODES
 M_CODES: tuple[CodeDoc, ...] = mill.M_CODES

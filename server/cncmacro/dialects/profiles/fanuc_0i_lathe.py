@@ -1,10 +1,11 @@
 """FANUC 0i-TF lathe control, G-code system A: the ``fanuc-0i-lathe`` profile.
 
-Tables: ``dialects/fanuc_lathe_data.py``. The macro language is the 0i's (``fanuc_0i``); what a
-lathe changes is the NC side: X is a diameter and U and W move incrementally, ``G50`` sets
-coordinates (and with S clamps the spindle), ``G90``/``G92``/``G94`` are the single fixed cycles
-and ``G70``–``G76`` the multiple repetitive cycles, the plane is G18 and ``G99`` (feed per
-revolution) is in force at power-on (docs/profiles.md, "fanuc-0i-lathe").
+Tables: ``dialects/fanuc_lathe_data.py`` (a lathe's tool offsets, where ``lathe_offsets`` points,
+system A's modal groups). The macro language is the 0i's (``fanuc_0i``); what a lathe changes is
+the NC side: X is a diameter and U and W move incrementally, ``G50`` sets coordinates (and with S
+clamps the spindle), ``G90``/``G92``/``G94`` are the single fixed cycles and ``G70``–``G76`` the
+multiple repetitive cycles, the plane is G18 and ``G99`` (feed per revolution) is in force at
+power-on (docs/profiles.md, "fanuc-0i-lathe: sources and decisions"; docs/semantics.md §10.1).
 """
 
 from __future__ import annotations
