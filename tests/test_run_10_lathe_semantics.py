@@ -245,3 +245,15 @@ def test_10_1_fanuc_30i_lathe_tables_hold_together() -> None:
         assert profile.system_variable(name.first) is not None, name
     assert "X wear" in profile.system_variable(10001).en and "Y wear" in profile.system_variable(14001).en
     assert profile.system_variable(4003).default is None  # no G90/G91 group on system A
+
+
+@pytest.mark.parametrize("block", ["G53 X0 Z0", "G22", "G27 X0", "G52 Z0", "G09 G01 W-1 F0.1", "G12.1", "G68"])
+def test_10_1_fanuc_lathe_knows_the_codes_of_a_lathe(block: str) -> None:
+    """A code a 0i-TF has is no alarm 010 (docs/profiles.md, fanuc-0i-lathe decisions)."""
+    assert run(lines(block, "M30"), "fanuc-0i-lathe").status == "completed"
+
+
+def test_10_1_fanuc_lathe_refuses_a_mill_code() -> None:
+    """G43 (tool length offset) is a mill's code: alarm 010 on the lathe, as on the control."""
+    m = run(lines("G43 H1", "M30"), "fanuc-0i-lathe")
+    assert m.status == "alarm" and m.alarm is not None and m.alarm.number == 10

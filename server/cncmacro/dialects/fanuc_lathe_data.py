@@ -89,9 +89,11 @@ MODAL_GROUP_CODES: dict[int, tuple[str, str]] = {
     5: ("feed", "G98, G99"),
     6: ("units", "G20, G21"),
     7: ("cutter", "G40, G41, G42"),
+    9: ("stroke", "G22, G23"),
     10: ("canned", "G80, G83-G89"),
     12: ("macro", "G66, G67"),
     14: ("wcs", "G54-G59"),
+    15: ("cutting", "G61-G64"),
     16: ("plane", "G17, G18, G19"),
 }
 
@@ -163,7 +165,16 @@ SYSTEM_VARIABLES: tuple[SystemVariable, ...] = (
     TOOL_OFFSET_IN_EFFECT,
 )
 
+# codes a 0i-TF has that read the same as on the 0i mill's table (``fanuc_data``), so that a lathe
+# program is never told that a code of its control does not exist (docs/profiles.md)
+_MILL_ROWS = {c.code: c for c in fanuc.G_CODES}
+_SAME_AS_MILL = ("G07.1", "G09", "G11", "G12.1", "G13.1", "G22", "G23", "G25", "G26", "G27", "G29", "G30.1",
+                 "G36", "G37", "G52", "G53", "G61", "G63", "G64", "G107", "G112", "G113", "G50.2", "G51.2")  # fmt: skip
+
 G_CODES: tuple[CodeDoc, ...] = (
+    *(_MILL_ROWS[code] for code in _SAME_AS_MILL),
+    CodeDoc("G68", "", "Mirror image for double turrets (balance cut) on", "双刀架镜像（平衡切削）开"),
+    CodeDoc("G69", "", "Mirror image for double turrets (balance cut) off", "双刀架镜像（平衡切削）关"),
     *shared.codes("G00", "G01"),
     CodeDoc(
         "G02",
