@@ -450,7 +450,9 @@ _MODAL: tuple[SystemVariable, ...] = (
 _POSITION_KINDS = (
     (5001, "end", "end point of the previous block, work coordinates", "前一程序段的终点（工件坐标系）"),
     (5021, "machine", "present position, machine coordinates", "当前位置（机床坐标系）"),
-    (5041, "current", "present position, work coordinates", "当前位置（工件坐标系）"),
+    # Haas's present work position is read as the programmed one, without the tool length offset
+    # (docs/profiles.md, haas); FANUC's #5041 includes it (docs/semantics.md §10.1)
+    (5041, "end", "present position, work coordinates", "当前位置（工件坐标系）"),
     (
         5061,
         "skip",
