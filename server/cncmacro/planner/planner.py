@@ -183,7 +183,11 @@ class Planner:
             else:
                 other[letter] = v
         one = set_modal(self, gs, other)
-        set_codes(self, other, file, line)
+        if self.lathe and one == self.dialect.coordinate_setting_code and "S" in other:
+            # G50 S is the spindle speed clamp (docs/semantics.md §10.4), not a spindle speed
+            set_codes(self, {k: v for k, v in other.items() if k != "S"}, file, line)
+        else:
+            set_codes(self, other, file, line)
         if one is not None:
             return one_shot(self, one, axes, incremental, other, file, line)
         mode = self.modal.get("motion", 0.0)
