@@ -3,7 +3,7 @@ GSK980TDi and a FANUC 0i-TF lathe. ``cncmacro check`` finds nothing in them (no 
 warning, and no information either: ``ALLOWED_INFOS`` is empty), every main program runs to
 completion in a time a lathe could take for it (10 s to 30 min, some cutting), and each does what
 its programmer meant: the passes of a cycle where the control makes them, a thread's last pass
-at the root diameter, an offset written. O2016's time is worked out by hand.
+at the root diameter, an offset written. O2016's and g92_thread_m24's times are worked out by hand.
 
 Programs that use a feature the simulated lathe does not run as the control does yet are listed
 in ``WAITING`` with what they wait for; their tests are expected to fail (strictly: a test that
@@ -347,11 +347,6 @@ def test_wear_offset_update_stops_on_an_error_over_the_limit() -> None:
     assert status == 1 and r["alarm"]["number"] == 5941  # #3000=41 on a GSK: 5900 + 41
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="waits for lathe tool offsets: G10 P1 U-0.01 adds to the X wear of offset 1, which #2001 reads "
-    "(0i-TF, offsets 1-64); today #2001 stays as it was",
-)
 def test_o2013_steps_the_wear_by_g10_and_alarms_over_the_limit() -> None:
     # the 20th part calls O9013: G10 P1 U-0.01 adds to the X wear -0.195, #2001 reads -0.205, over the limit C0.2
     status, r = run_json(FANUC_T / "O2013.nc", "510=19", "2001=-0.195")
