@@ -17,7 +17,8 @@
  *
  * While a debug session is paused (`Page.debug`), each move is `done` (run so far), `current`
  * (the block the run stands on makes it: drawn thick in a colour of its own, a ring where the
- * tool is) or `ahead` (faint), and a click on a move opens a small menu: "Run to here" posts
+ * tool is; less thick when the block makes many, as a lathe cycle its passes, so that each
+ * shows) or `ahead` (faint), and a click on a move opens a small menu: "Run to here" posts
  * `runTo`, "Go to its line" posts `reveal`.
  */
 import * as path from 'node:path';
@@ -151,6 +152,8 @@ text.axis-name.v { transform: translateY(calc(var(--u) * -${LABEL.vNameAbove}px)
 #status.paused { color: var(--current); font-weight: bold; }
 .move.ahead { opacity: 0.25; }
 .move.current .leg, #legend .move.current .leg { stroke: var(--current); stroke-width: 5; }
+.moves.many-current .move.current .leg { stroke-width: 2.5; } /* a lathe cycle's passes: each still seen */
+.moves.many-current .move.current .leg.dashed { stroke-width: 1.6; }
 .tool { fill: none; stroke: var(--current); stroke-width: 2.5; vector-effect: non-scaling-stroke; pointer-events: none; }
 #menu { position: absolute; display: none; flex-direction: column; gap: 2px; padding: 4px; z-index: 2;
   background: var(--vscode-menu-background, var(--vscode-editor-background)); color: var(--vscode-menu-foreground);
@@ -361,7 +364,7 @@ function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts, debug?:
     }
     out.push('</g>');
   }
-  out.push('<g class="moves">');
+  out.push(`<g class="moves${debug && debug.current > 1 ? ' many-current' : ''}">`);
   const hr = n(plot.holeRadius);
   // probe moves (G31) last, on top: a retract along the same line must not hide them or their contact points
   const ordered = [...plot.moves.filter((d) => d.kind !== 'probe'), ...plot.moves.filter((d) => d.kind === 'probe')];

@@ -1,6 +1,6 @@
 (cncmacro: dialect=gsk980tdi)
 O0400 (STEPPED SHAFT WITH AN M20 THREAD - ROUGH, FINISH, THREAD)
-(阶梯轴：G71 粗车, G70 精车, G90 切槽前车端, G92 车螺纹)
+(阶梯轴: G71 粗车, G70 精车, G92 车螺纹; 换刀点 X60 Z20)
 #1=20.      (THREAD MAJOR DIAMETER / 螺纹大径)
 #2=1.5      (LEAD / 螺距)
 T0101
@@ -19,7 +19,7 @@ G02 X36. Z-49. R4.
 G01 Z-60.
 N20 G01 X44.
 G70 P10 Q20
-G00 X100. Z100.
+G00 X60. Z20.
 T0303
 G00 X24. Z3.
 #3=#1-0.8
@@ -27,5 +27,5 @@ WHILE[#3 GE [#1-1.95]]DO1
 G92 X#3 Z-26. F#2
 #3=#3-0.4
 END1
-G00 X100. Z100.
+G00 X60. Z20.
 M30
