@@ -65,7 +65,7 @@ check: $(VENV)/.installed node_modules/.installed
 package: node_modules/.installed
 	PYTHON=$(PYTHON) npm run --silent package
 
-# The four pictures of the README (docs/images/), taken in a real VS Code by the editor tests.
+# The pictures of the README (docs/images/), taken in a real VS Code by the editor tests.
 screenshots: setup
 	PYTHON=$(PY) npm run --silent package
 	timeout 600 npm run --silent screenshots

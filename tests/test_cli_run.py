@@ -27,6 +27,7 @@ ROOT = Path(__file__).resolve().parent.parent
         ("gsk980tdi/O9580.nc", "completed"),
         ("gsk980tdi/ellipse_turning.nc", "completed"),
         ("gsk980tdi/thread_parabola.nc", "completed"),
+        ("gsk980tdi/shaft_g71.nc", "completed"),
     ],
 )
 def test_every_example_runs(examples, name, status):
@@ -58,6 +59,16 @@ def test_json_moves_one_to_a_line(examples):
     assert out.splitlines()[1] == ' "dialect": "fanuc-0i",'  # the rest stays indented
     # the machine the run was made on (a plot draws a lathe otherwise)
     assert r["dialect"] == "fanuc-0i" and r["lathe"] is False
+    assert "lathe_axes" not in r  # a mill has no spindle axis to draw
+
+
+def test_json_names_a_lathes_axes_so_a_plot_draws_it_as_a_lathe(examples):
+    """On a lathe the run says which axis is the spindle's (Z, drawn across with its centre line),
+    which is radial (X, drawn up) and that X is programmed as a diameter."""
+    _code, out, _ = cli("run", "--json", str(examples / "gsk980tdi/shaft_g71.nc"))
+    r = json.loads(out)
+    assert (r["dialect"], r["lathe"]) == ("gsk980tdi", True)
+    assert r["lathe_axes"] == {"spindle": "Z", "radial": "X", "diameter": True}
 
 
 def test_json_arc_moves_carry_their_centre(tmp_path):

@@ -1,8 +1,8 @@
 """Where a paused run stands on its toolpath (docs/debugging.md "The toolpath while paused"): the
 moves of the current block are found by running it and putting the machine back, so nothing is
-printed, counted or kept; "run to here" on a move stops before the block that makes it (a
-drilling cycle's too), going back across checkpoints for a move behind, and in a loop at the
-pass that makes it."""
+printed, counted or kept (a lathe cycle that names its shape: every pass it makes); "run to
+here" on a move stops before the block that makes it (a drilling cycle's too), going back
+across checkpoints for a move behind, and in a loop at the pass that makes it."""
 
 from __future__ import annotations
 
@@ -89,3 +89,39 @@ def test_run_to_a_move_past_the_end_stops_at_the_end(tmp_path: Path) -> None:
     stepper = stepper_for(tmp_path)
     stop = run_to_move(stepper, 99)
     assert stop.description is not None and stop.description.startswith("program end")
+
+
+ROUGH_AND_FINISH = lines(
+    "O0500",  # 1
+    "G99 G00 X40. Z2.",  # 2
+    "G71 U2. R1.",  # 3
+    "G71 P10 Q20 U0 W0 F0.2",  # 4
+    "N10 G00 X30.",  # 5
+    "N20 G01 Z-20.",  # 6
+    "G70 P10 Q20",  # 7
+    "M30",  # 8
+)
+
+
+def test_the_current_moves_of_a_shape_cycle_are_all_its_passes(tmp_path: Path) -> None:
+    (tmp_path / "MAIN.nc").write_text(ROUGH_AND_FINISH, encoding="utf-8")
+    m = machine(ROUGH_AND_FINISH, "gsk980tdi", folder=tmp_path)
+    stepper = Stepper(m, Breakpoints(), History(interval=5), lambda _text, _category: None)
+    while line(stepper) != 4:
+        stepper.run(STEP_IN)
+    before = (m.blocks, len(m.planner.moves), list(m.planner.pos), len(m.frames))
+    ahead = next_moves(m)
+    # U2. is a radius: X falls 4 a pass from X40, to X36, X32 and the shape's X30; each pass is
+    # in, cut to Z-20., out by R1. (X+2, Z+1) and back to Z2.: 3 passes x 4 moves
+    assert len(ahead) == 12 and {(mv.line + 1, mv.pass_of) for mv in ahead} == {(4, "G71")}
+    assert [mv.end[0] for mv in ahead if mv.mode == 1.0] == [36.0, 32.0, 30.0]
+    assert (m.blocks, len(m.planner.moves), list(m.planner.pos), len(m.frames)) == before
+    while line(stepper) != 7:
+        stepper.run(STEP_IN)
+    # G70 runs the shape as written (lines 5 and 6) and returns to its start point X40. Z2.
+    z = m.dialect.axes.index("Z")
+    assert [(mv.line + 1, mv.mode, mv.end[0], mv.end[z]) for mv in next_moves(m)] == [
+        (5, 0.0, 30.0, 2.0),
+        (6, 1.0, 30.0, -20.0),
+        (7, 0.0, 40.0, 2.0),
+    ]

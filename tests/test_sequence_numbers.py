@@ -188,3 +188,31 @@ def test_an_m99_p_of_a_lone_program_keeps_its_label():
     assert _renumbered(text, step=10).splitlines()[1:4] == ["N10 #1=#1+1", "N5 #2=2", "M99 P5"]
     computed = lines("O2000", "N3 #1=#1+1", "M99 P#1")
     assert [b.line for b in renumber(_program(computed), get_dialect("fanuc"), step=10).blockers] == [2]
+
+
+LATHE_SHAPE = lines(
+    "O0001",
+    "G00 X40. Z2.",
+    "G71 U2. R0.5",
+    "N5 G71 P10 Q20 U0.4 W0.1 F0.2",
+    "N10 G00 X30.",
+    "G01 Z-20. F0.1",
+    "N20 X40.",
+    "#100=#5001",
+    "G70 P10 Q20",
+    "#101=#5001",
+    "M30",
+)
+
+
+def test_the_labels_of_a_lathe_cycles_shape_are_kept_and_renumbered_with_its_p_and_q() -> None:
+    # G71/G70 P10 Q20 name the shape N10..N20: removing unused labels keeps them (only N5 goes);
+    # renumbering rewrites P and Q with them, and the run is the same.
+    d = get_dialect("gsk980tdi")
+    removed = _apply(LATHE_SHAPE, remove_unused_sequence_numbers(_program(LATHE_SHAPE), d))
+    assert "N10 G00 X30." in removed and "N20 X40." in removed and "N5 " not in removed
+    renumbered = _renumbered(LATHE_SHAPE, "gsk980tdi", step=100)
+    assert "G71 P200 Q300" in renumbered and "G70 P200 Q300" in renumbered
+    assert "N200 G00 X30." in renumbered and "N300 X40." in renumbered
+    for text in (removed, renumbered):
+        assert final(text, "gsk980tdi") == final(LATHE_SHAPE, "gsk980tdi")

@@ -7,7 +7,9 @@
  * (a called program's too) at its line. A program that is not open in the editor is run from its
  * file. While a debug session of the program is paused, the panel draws the run so far, the
  * current block's move highlighted and the rest faint, and a click on a move offers "run to here"
- * (toolpathDebug.ts).
+ * (toolpathDebug.ts). A lathe (as the run or the debug adapter says) is drawn as a lathe: what its
+ * radial scale reads (radius or diameter) and whether the mirrored half is drawn are the user's
+ * picks, kept for the next panels and sessions (the extension's global state).
  */
 import { type ChildProcess, spawn } from 'node:child_process';
 import * as path from 'node:path';
@@ -18,11 +20,13 @@ import { cncmacroCommand, serverEnvironment, serverLayout } from './serverProces
 import * as settings from './settings';
 import {
   formatNumber,
-  isLatheRun,
+  latheAxesOf,
   parseRunResult,
   type Plane,
   PLANES,
   plot,
+  RADIAL_SCALES,
+  type RadialScale,
   type RunMove,
   type RunResult,
   viewFor,
@@ -33,6 +37,9 @@ import { MAX_DRAWN_MOVES, nonce, type Texts, toolpathHtml } from './toolpathView
 const VIEW_TYPE = 'cncMacro.toolpath';
 const MAX_OUTPUT_BYTES = 256 * 1024 * 1024; // a run that prints more is stopped
 const EDIT_QUIET_MS = 800; // an edit is drawn once typing pauses this long
+// a lathe's picks, kept in the extension's global state
+const RADIAL_SCALE_KEY = 'cncMacro.toolpath.radialScale';
+const BOTH_HALVES_KEY = 'cncMacro.toolpath.bothHalves';
 
 type Outcome = { result: RunResult } | { error: string };
 
@@ -204,6 +211,16 @@ class ToolpathPanel implements vscode.Disposable, DebugPathListener {
         alarm: vscode.l10n.t('where the alarm stopped the tool'),
         probe: vscode.l10n.t('probe move (G31)'),
         contact: vscode.l10n.t('contact point: where the skip signal came on'),
+        spindle: vscode.l10n.t('spindle axis (centre line, X0)'),
+        mirror: vscode.l10n.t('the other half, mirrored'),
+      },
+      passOf: vscode.l10n.t('pass of {0}'),
+      lathe: {
+        radius: vscode.l10n.t('Radius'),
+        diameter: vscode.l10n.t('Diameter'),
+        scaleTip: vscode.l10n.t('What the X scale reads: the radius or the diameter (the drawing stays to scale)'),
+        bothHalves: vscode.l10n.t('Both halves'),
+        bothHalvesTip: vscode.l10n.t('Also draw the other half of the part, mirrored about the spindle axis'),
       },
       plane,
       planeButton: vscode.l10n.t('Draw the moves in this plane'),
@@ -225,8 +242,8 @@ class ToolpathPanel implements vscode.Disposable, DebugPathListener {
     if (!result && !debug) return;
     const paused = debug ? pausedMoves(result?.moves, debug) : undefined;
     const all = paused?.moves ?? result?.moves ?? [];
-    const lathe = debug?.lathe ?? (result ? isLatheRun(result) : false);
-    const view = viewFor(lathe, this.plane);
+    const lathe = debug ? latheAxesOf(debug) : result ? latheAxesOf(result) : undefined;
+    const view = viewFor(lathe, this.plane, { scale: this.radialScale(), bothHalves: this.bothHalves() });
     const moves = all.length > MAX_DRAWN_MOVES ? all.slice(0, MAX_DRAWN_MOVES) : all;
     this.drawn = moves;
     const drawn = plot(moves, view, !paused && result?.status === 'alarm');
@@ -250,11 +267,19 @@ class ToolpathPanel implements vscode.Disposable, DebugPathListener {
     } else if (moves.length === 0) {
       note = vscode.l10n.t('The run made no moves.');
     }
+    const diameters = view.lathe?.scale === 'diameter';
     const plane = lathe
-      ? vscode.l10n.t('Lathe: Z across, X up. X is a diameter: it is drawn at X/2, the radius.')
+      ? diameters
+        ? vscode.l10n.t('Lathe: {0} across (the spindle axis), {1} up, to scale; the {1} scale reads diameters.', lathe.spindle, lathe.radial)
+        : vscode.l10n.t('Lathe: {0} across (the spindle axis), {1} up, to scale; the {1} scale reads radii.', lathe.spindle, lathe.radial)
       : vscode.l10n.t('The {0} plane, {1} across and {2} up, equal scales.', view.plane, view.h, view.v);
     const kind: Texts['statusKind'] = paused ? 'paused' : result ? this.statusKind(result) : 'running';
-    const texts = this.texts(status, kind, lathe ? 'X/2' : view.v, plane, note);
+    const vertical = !lathe
+      ? view.v
+      : diameters
+        ? vscode.l10n.t('{0} (diameter)', lathe.radial)
+        : vscode.l10n.t('{0} (radius)', lathe.radial);
+    const texts = this.texts(status, kind, vertical, plane, note);
     const debugPage = paused && {
       done: paused.done,
       current: paused.current,
@@ -283,6 +308,16 @@ class ToolpathPanel implements vscode.Disposable, DebugPathListener {
     );
   }
 
+  /** What a lathe's radial scale reads, as the user last picked (diameters, as programmed, at first). */
+  private radialScale(): RadialScale {
+    const kept = this.context.globalState.get<string>(RADIAL_SCALE_KEY);
+    return RADIAL_SCALES.find((s) => s === kept) ?? 'diameter';
+  }
+
+  private bothHalves(): boolean {
+    return this.context.globalState.get<boolean>(BOTH_HALVES_KEY) === true;
+  }
+
   private statusKind(result: RunResult): Texts['statusKind'] {
     return result.status === 'alarm' ? 'alarm' : result.status === 'limit' ? 'limit' : 'completed';
   }
@@ -305,12 +340,17 @@ class ToolpathPanel implements vscode.Disposable, DebugPathListener {
 
   private onMessage(message: unknown): void {
     if (message === null || typeof message !== 'object') return;
-    const m = message as { type?: unknown; index?: unknown; plane?: unknown };
+    const m = message as { type?: unknown; index?: unknown; plane?: unknown; value?: unknown };
     if (m.type === 'refresh') {
       void this.refresh();
     } else if (m.type === 'plane' && typeof m.plane === 'string' && (PLANES as readonly string[]).includes(m.plane)) {
       this.plane = m.plane as Plane;
       this.draw();
+    } else if (m.type === 'radialScale' && typeof m.value === 'string') {
+      const scale = RADIAL_SCALES.find((s) => s === m.value);
+      if (scale) void this.context.globalState.update(RADIAL_SCALE_KEY, scale).then(() => this.draw());
+    } else if (m.type === 'bothHalves') {
+      void this.context.globalState.update(BOTH_HALVES_KEY, !this.bothHalves()).then(() => this.draw());
     } else if (m.type === 'reveal' && typeof m.index === 'number') {
       void this.revealMove(m.index);
     } else if (m.type === 'runTo' && typeof m.index === 'number' && this.debug) {

@@ -10,7 +10,7 @@
 import * as path from 'node:path';
 import * as vscode from 'vscode';
 import { DEBUG_TYPE } from './debugAdapter';
-import { parseRunResult, type RunMove } from './toolpathGeometry';
+import { type LatheAxes, parseLatheAxes, parseRunResult, type RunMove } from './toolpathGeometry';
 import { MAX_DRAWN_MOVES } from './toolpathView';
 
 /** What the paused run says of its toolpath (the adapter's `toolpath` response). */
@@ -21,7 +21,8 @@ export interface DebugPath {
   current: RunMove[]; // made by the block the run stands on, not run yet
   file: string;
   line: number;
-  lathe: boolean | undefined;
+  lathe: boolean | undefined; // whether the machine is a lathe, and its axes (`lathe_axes`), as the adapter says
+  latheAxes: LatheAxes | undefined;
 }
 
 /** Whoever draws a program's toolpath: the panels, by the program's path. */
@@ -50,6 +51,7 @@ function readBody(session: vscode.DebugSession, body: unknown): DebugPath | unde
     file: typeof b.file === 'string' ? b.file : '',
     line: typeof b.line === 'number' ? b.line : 0,
     lathe: typeof b.lathe === 'boolean' ? b.lathe : undefined,
+    latheAxes: parseLatheAxes(b.lathe_axes),
   };
 }
 

@@ -1,11 +1,17 @@
 /**
  * The geometry of a toolpath plot: the result of `cncmacro run --json` read and checked, the
- * plane it is drawn in (XY for a mill, Z across and X up for a lathe, where X is a diameter and
- * is drawn at half its value, as the radius), each move turned into SVG path data in that
- * plane, the extents, and grid lines at round numbers. What each move is comes from the run:
- * its `kind` (rapid, feed, arc, probe, cycle), an arc's `plane`, `centre` and direction, a
- * cycle's `legs` and a drilled `hole`. Nothing here knows a G code, and nothing here knows VS
- * Code; the webview's page is built from what it returns.
+ * plane it is drawn in, each move turned into SVG path data in that plane, the extents, and
+ * grid lines at round numbers. What each move is comes from the run: its `kind` (rapid, feed,
+ * arc, probe, cycle), an arc's `plane`, `centre` and direction, a cycle's `legs`, a drilled
+ * `hole` and the cycle a lathe pass belongs to (`pass_of`). Nothing here knows a G code, and
+ * nothing here knows VS Code; the webview's page is built from what it returns.
+ *
+ * A mill is drawn in XY, ZX or YZ. A lathe (the run says so: `lathe` and `lathe_axes`, from
+ * its profile) is drawn to scale with its spindle axis across and its radial axis up, the
+ * spindle's centre line (radial 0) marked; a radial axis programmed as a diameter is drawn at
+ * half its value, the radius, so that arcs stay round, and its scale reads radii or diameters
+ * as the user picks. The other half of the part, mirrored about the centre line, can be drawn
+ * too.
  */
 
 export type Axes = Record<string, number>;
@@ -37,6 +43,16 @@ export interface RunMove {
   hole?: Axes;
   /** a G31's: whether the skip signal came on where it stopped (its `to`: the contact point) */
   skip?: boolean;
+  /** a lathe cycle's pass: the cycle it belongs to, as the run names it */
+  passOf?: string;
+}
+
+/** A lathe's axes as the run names them: the spindle's (drawn across), the radial one (drawn
+ * up, its 0 the spindle's centre line) and whether the radial axis is programmed as a diameter. */
+export interface LatheAxes {
+  spindle: string;
+  radial: string;
+  diameter: boolean;
 }
 
 export interface RunAlarm {
@@ -52,20 +68,33 @@ export interface RunResult {
   blocks: number;
   moves: RunMove[];
   dialect?: string;
-  /** whether the run's profile is a lathe (X a diameter), as `cncmacro run --json` says */
+  /** whether the run's profile is a lathe, as `cncmacro run --json` says */
   lathe?: boolean;
+  /** a lathe's axes, as `cncmacro run --json` says (`lathe_axes`) */
+  latheAxes?: LatheAxes;
   /** the cycle time and path of the run, as `cncmacro run --json` writes them (`cycle.text`) */
   cycleText?: string;
 }
 
 export type Plane = 'XY' | 'ZX' | 'YZ';
 export const PLANES: readonly Plane[] = ['XY', 'ZX', 'YZ'];
-/** How the run is drawn: the horizontal and vertical axes, and whether it is a lathe (X halved). */
+
+/** What the radial scale of a lathe reads: the radius (the drawing's own units) or the diameter. */
+export type RadialScale = 'radius' | 'diameter';
+export const RADIAL_SCALES: readonly RadialScale[] = ['radius', 'diameter'];
+
+/** How a lathe is drawn: its axes, what the radial scale reads, and whether the mirrored half is drawn. */
+export interface LatheView extends LatheAxes {
+  scale: RadialScale;
+  bothHalves: boolean;
+}
+
+/** How the run is drawn: the horizontal and vertical axes, and a lathe's view when it is one. */
 export interface View {
-  plane: Plane;
+  plane: Plane | 'lathe';
   h: string;
   v: string;
-  lathe: boolean;
+  lathe?: LatheView;
 }
 
 /** One leg of a move: SVG path data in screen units, dashed for the rapid part of a cycle. */
@@ -100,6 +129,10 @@ export interface Plot {
   holeRadius: number;
   /** the extents of the moves in program units, per axis X, Y, Z (X as written: a diameter on a lathe) */
   extents: { axis: string; min: number; max: number }[];
+  /** a lathe's spindle centre line (radial 0): its screen y, drawn across the whole width */
+  spindle?: number;
+  /** a lathe drawn with both halves: the screen y about which the moves are mirrored (the centre line) */
+  mirror?: number;
 }
 
 const isNumber = (v: unknown): v is number => typeof v === 'number' && Number.isFinite(v);
@@ -158,6 +191,7 @@ export function parseRunResult(text: string): RunResult | string {
     const hole = axesOf(o.hole);
     if (hole) move.hole = hole;
     if (typeof o.skip === 'boolean') move.skip = o.skip;
+    if (typeof o.pass_of === 'string') move.passOf = o.pass_of;
     moves.push(move);
   }
   let alarm: RunAlarm | null = null;
@@ -173,27 +207,53 @@ export function parseRunResult(text: string): RunResult | string {
   const result: RunResult = { status: r.status, alarm, blocks: isNumber(r.blocks) ? r.blocks : 0, moves };
   if (typeof r.dialect === 'string') result.dialect = r.dialect;
   if (typeof r.lathe === 'boolean') result.lathe = r.lathe;
+  const axes = parseLatheAxes(r.lathe_axes);
+  if (axes) result.latheAxes = axes;
   const cycle = r.cycle as Record<string, unknown> | null | undefined;
   if (cycle && typeof cycle === 'object' && typeof cycle.text === 'string') result.cycleText = cycle.text;
   return result;
 }
 
-/** Whether the machine that ran is a lathe, as the run says (`lathe`, from its profile). */
-export function isLatheRun(result: RunResult): boolean {
-  return result.lathe === true;
+/** A lathe's axes as the run sends them (`lathe_axes`); undefined when absent or malformed. */
+export function parseLatheAxes(raw: unknown): LatheAxes | undefined {
+  if (raw === null || typeof raw !== 'object') return undefined;
+  const a = raw as Record<string, unknown>;
+  if (typeof a.spindle !== 'string' || typeof a.radial !== 'string' || typeof a.diameter !== 'boolean') return undefined;
+  if (a.spindle === a.radial) return undefined;
+  return { spindle: a.spindle, radial: a.radial, diameter: a.diameter };
 }
 
-export function viewFor(lathe: boolean, plane: Plane = 'XY'): View {
-  if (lathe) return { plane: 'ZX', h: 'Z', v: 'X', lathe: true };
+/** The lathe's axes when the machine that ran is a lathe, as the run says (`lathe` and `lathe_axes`, from its profile). */
+export function latheAxesOf(result: { lathe?: boolean; latheAxes?: LatheAxes }): LatheAxes | undefined {
+  return result.lathe === true ? result.latheAxes : undefined;
+}
+
+/** The view of a run: a lathe's (its spindle axis across, its radial axis up) or a mill's in `plane`. */
+export function viewFor(
+  lathe: LatheAxes | undefined,
+  plane: Plane = 'XY',
+  options: { scale?: RadialScale; bothHalves?: boolean } = {},
+): View {
+  if (lathe) {
+    const view: LatheView = { ...lathe, scale: options.scale ?? 'diameter', bothHalves: options.bothHalves ?? false };
+    return { plane: 'lathe', h: lathe.spindle, v: lathe.radial, lathe: view };
+  }
   const [h, v] = plane === 'XY' ? ['X', 'Y'] : plane === 'ZX' ? ['Z', 'X'] : ['Y', 'Z'];
-  return { plane, h, v, lathe: false };
+  return { plane, h, v };
+}
+
+/** What one unit drawn up reads on a lathe's radial scale: 2 when it reads diameters, else 1. */
+export function radialFactor(view: View): number {
+  return view.lathe?.scale === 'diameter' ? 2 : 1;
 }
 
 type P3 = Axes;
 
-/** A point as drawn: X halved on a lathe (a diameter drawn as the radius). */
-function display(p: Axes, lathe: boolean): P3 {
-  return lathe && 'X' in p ? { ...p, X: (p.X ?? 0) / 2 } : p;
+/** A point as drawn: on a lathe whose radial axis is a diameter, that axis halved (the radius). */
+function display(p: Axes, view: View): P3 {
+  const lathe = view.lathe;
+  if (!lathe?.diameter || !(lathe.radial in p)) return p;
+  return { ...p, [lathe.radial]: (p[lathe.radial] ?? 0) / 2 };
 }
 
 interface Arc {
@@ -213,12 +273,12 @@ const get = (p: Axes, k: string): number => p[k] ?? 0;
  * diameter, like the end points; the axes off the plane keep the start's values). None without
  * a centre or a plane, or when the start lies on the centre: drawn as a chord.
  */
-function arcOf(move: RunMove, lathe: boolean): Arc | undefined {
+function arcOf(move: RunMove, view: View): Arc | undefined {
   if (!move.centre || !move.plane) return undefined;
   const [a, b] = move.plane;
-  const c = display(move.centre, lathe);
-  const s = display(move.from, lathe);
-  const e = display(move.to, lathe);
+  const c = display(move.centre, view);
+  const s = display(move.from, view);
+  const e = display(move.to, view);
   const ca = get(c, a);
   const cb = get(c, b);
   const rs = Math.hypot(get(s, a) - ca, get(s, b) - cb);
@@ -235,9 +295,9 @@ function arcOf(move: RunMove, lathe: boolean): Arc | undefined {
 }
 
 /** Points along an arc (in display units, every axis: the others move linearly, as in a helix). */
-function arcPoints(move: RunMove, arc: Arc, lathe: boolean, steps: number): P3[] {
-  const s = display(move.from, lathe);
-  const e = display(move.to, lathe);
+function arcPoints(move: RunMove, arc: Arc, view: View, steps: number): P3[] {
+  const s = display(move.from, view);
+  const e = display(move.to, view);
   const out: P3[] = [];
   for (let i = 0; i <= steps; i++) {
     const f = i / steps;
@@ -254,21 +314,21 @@ function arcPoints(move: RunMove, arc: Arc, lathe: boolean, steps: number): P3[]
 }
 
 /** The 3-D legs of a move (before projection), each with whether it is a rapid leg. */
-function legsOf(move: RunMove, lathe: boolean): { points: P3[]; dashed: boolean }[] {
-  const s = display(move.from, lathe);
-  const e = display(move.to, lathe);
+function legsOf(move: RunMove, view: View): { points: P3[]; dashed: boolean }[] {
+  const s = display(move.from, view);
+  const e = display(move.to, view);
   if (move.kind === 'arc') {
-    const arc = arcOf(move, lathe);
+    const arc = arcOf(move, view);
     if (arc) {
       const steps = Math.max(8, Math.ceil((Math.abs(arc.sweep) / (2 * Math.PI)) * 96));
-      return [{ points: arcPoints(move, arc, lathe, steps), dashed: false }];
+      return [{ points: arcPoints(move, arc, view, steps), dashed: false }];
     }
     return [{ points: [s, e], dashed: false }];
   }
   if (move.legs && move.legs.length > 0) {
     let at = s;
     return move.legs.map((leg) => {
-      const to = display(leg.to, lathe);
+      const to = display(leg.to, view);
       const drawn = { points: [at, to], dashed: leg.rapid };
       at = to;
       return drawn;
@@ -302,7 +362,8 @@ export function formatNumber(n: number): string {
 
 /** The plot of `moves` in `view`, `size` screen units across the longer side. */
 export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000): Plot {
-  const legs = moves.map((m) => legsOf(m, view.lathe));
+  const legs = moves.map((m) => legsOf(m, view));
+  const mirrored = view.lathe?.bothHalves === true; // the other half: every point at minus its radial value
   const project = (p: P3): [number, number] => [get(p, view.h), get(p, view.v)];
   let x0 = 0;
   let x1 = 0;
@@ -314,8 +375,8 @@ export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000):
         const [x, y] = project(p);
         x0 = Math.min(x0, x);
         x1 = Math.max(x1, x);
-        y0 = Math.min(y0, y);
-        y1 = Math.max(y1, y);
+        y0 = Math.min(y0, y, mirrored ? -y : y);
+        y1 = Math.max(y1, y, mirrored ? -y : y);
       }
     }
   }
@@ -351,7 +412,7 @@ export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000):
   };
   const drawn: DrawnMove[] = moves.map((move, index) => {
     const kind = move.kind;
-    const arc = kind === 'arc' ? arcOf(move, view.lathe) : undefined;
+    const arc = kind === 'arc' ? arcOf(move, view) : undefined;
     let out: Leg[];
     if (arc && arc.a === planeAxes(view)[0] && arc.b === planeAxes(view)[1]) {
       out = [{ d: svgArc(move, arc, view, pt, k), dashed: false }];
@@ -363,18 +424,20 @@ export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000):
     }
     const d: DrawnMove = { index, kind, legs: out };
     if (move.hole) {
-      const [x, y] = project(display(move.hole, view.lathe));
+      const [x, y] = project(display(move.hole, view));
       d.hole = [sx(x), sy(y)];
     }
     if (kind === 'probe' && move.skip === true) {
-      const [x, y] = project(display(move.to, view.lathe));
+      const [x, y] = project(display(move.to, view));
       d.contact = [sx(x), sy(y)];
     }
     return d;
   });
   const step = niceStep(Math.max(w, h), 8); // one step on both axes: the scales are equal
-  const ticks = (lo: number, hi: number, at: (v: number) => number): Tick[] =>
-    ticksBetween(lo, hi, step).map((value) => ({ value, at: at(value) }));
+  // a lathe's radial scale reading diameters labels each line at twice its radius (square cells still)
+  const f = radialFactor(view);
+  const ticks = (lo: number, hi: number, at: (v: number) => number, factor = 1): Tick[] =>
+    ticksBetween(lo * factor, hi * factor, step * factor).map((value) => ({ value, at: at(value / factor) }));
   const last = moves[moves.length - 1];
   const extents = ['X', 'Y', 'Z'].flatMap((axis) => {
     let min = Infinity;
@@ -395,12 +458,14 @@ export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000):
     moves: drawn,
     origin: [sx(0), sy(0)],
     xTicks: ticks(x0, x0 + w, sx),
-    yTicks: ticks(y0, y0 + h, sy),
+    yTicks: ticks(y0, y0 + h, sy, f),
     holeRadius: Math.max(3, Math.min(10, size * 0.006)),
     extents,
   };
+  if (view.lathe) result.spindle = sy(0);
+  if (mirrored) result.mirror = sy(0);
   if (ended && last) {
-    const [x, y] = project(display(last.to, view.lathe));
+    const [x, y] = project(display(last.to, view));
     result.end = [sx(x), sy(y)];
   }
   return result;
@@ -417,7 +482,7 @@ function planeAxes(view: View): [string, string] {
  * up, G19 YZ). A full circle is drawn as two halves.
  */
 function svgArc(move: RunMove, arc: Arc, view: View, pt: (p: P3) => string, k: number): string {
-  const s = display(move.from, view.lathe);
+  const s = display(move.from, view);
   const r = Math.round(arc.r * k * 100) / 100;
   const clockwise = arc.sweep < 0 ? 1 : 0;
   const parts = [`M${pt(s)}`];
@@ -427,7 +492,7 @@ function svgArc(move: RunMove, arc: Arc, view: View, pt: (p: P3) => string, k: n
     const t = arc.start + until;
     const p: P3 = { [arc.a]: arc.ca + arc.r * Math.cos(t), [arc.b]: arc.cb + arc.r * Math.sin(t) };
     const large = Math.abs(until - done) > Math.PI ? 1 : 0;
-    parts.push(`A${r} ${r} 0 ${large} ${clockwise} ${until === arc.sweep ? pt(display(move.to, view.lathe)) : pt(p)}`);
+    parts.push(`A${r} ${r} 0 ${large} ${clockwise} ${until === arc.sweep ? pt(display(move.to, view)) : pt(p)}`);
     done = until;
   }
   return parts.join(' ');

@@ -3,8 +3,12 @@
  * with a `<title>` naming its file, line and block, over grid lines with their coordinates, the
  * origin marked), a legend and a status line, under a strict Content-Security-Policy where the
  * one style sheet and the one script carry a nonce and nothing is loaded from anywhere. The
- * script posts `reveal` (a move was clicked), `refresh` and `plane` to the extension, and zooms
- * (mouse wheel) and pans (drag) by changing the SVG's viewBox. The texts arrive translated.
+ * script posts `reveal` (a move was clicked), `refresh`, `plane` and, on a lathe, `radialScale`
+ * (radius or diameter) and `bothHalves` to the extension, and zooms (mouse wheel) and pans (drag)
+ * by changing the SVG's viewBox. The texts arrive translated.
+ *
+ * A lathe's drawing has its spindle's centre line across it, dash-dotted, and, with both halves
+ * on, every move again mirrored about that line, faint and not clickable.
  *
  * The grid labels and axis names keep their size and their distance from the drawing in screen
  * pixels, whatever the zoom: the script fits the drawing into the view with margins of so many
@@ -13,11 +17,12 @@
  *
  * While a debug session is paused (`Page.debug`), each move is `done` (run so far), `current`
  * (the block the run stands on makes it: drawn thick in a colour of its own, a ring where the
- * tool is) or `ahead` (faint), and a click on a move opens a small menu: "Run to here" posts
+ * tool is; less thick when the block makes many, as a lathe cycle its passes, so that each
+ * shows) or `ahead` (faint), and a click on a move opens a small menu: "Run to here" posts
  * `runTo`, "Go to its line" posts `reveal`.
  */
 import * as path from 'node:path';
-import { type Axes, formatNumber, type Plot, type RunMove, type View, PLANES } from './toolpathGeometry';
+import { type Axes, formatNumber, type Plot, PLANES, RADIAL_SCALES, type RunMove, type View } from './toolpathGeometry';
 
 export interface Texts {
   refresh: string;
@@ -42,7 +47,13 @@ export interface Texts {
     alarm: string;
     probe: string;
     contact: string;
+    spindle: string; // a lathe's centre line
+    mirror: string; // a lathe's other half, mirrored
   };
+  /** a lathe cycle's pass in a move's tooltip: "pass of {0}", {0} the cycle as the run names it */
+  passOf: string;
+  /** a lathe's buttons: the radial scale in radii or diameters, and the mirrored half */
+  lathe?: { radius: string; diameter: string; scaleTip: string; bothHalves: string; bothHalvesTip: string };
   /** the run's cycle time and path (`≈ 3 min 12 s · 1,842 mm cut · 6,300 mm rapid`), shown in the legend */
   totals?: string;
   plane: string; // what the drawing shows: the plane, or the lathe's Z/X with X halved
@@ -66,8 +77,9 @@ export function nonce(): string {
   return out;
 }
 
-/** `G01  X0 Y0 -> X10 Y5  F200`: the axes that moved (all of them when none did). */
-export function moveText(move: RunMove): string {
+/** `G01  X0 Y0 -> X10 Y5  F200`: the axes that moved (all of them when none did); a lathe
+ * cycle's pass ends with `passOf` filled with its cycle. */
+export function moveText(move: RunMove, passOf = '{0}'): string {
   const names = [...new Set([...Object.keys(move.from), ...Object.keys(move.to)])];
   let shown = names.filter((k) => (move.from[k] ?? 0) !== (move.to[k] ?? 0));
   if (shown.length === 0) shown = names.filter((k) => ['X', 'Y', 'Z'].includes(k));
@@ -78,7 +90,8 @@ export function moveText(move: RunMove): string {
         .map(([k, v]) => `${k}${formatNumber(v)}`)
         .join(' ')})`
     : '';
-  return `${move.mode}  ${at(move.from)} → ${at(move.to)}${feed}${centre}`;
+  const pass = move.passOf ? `  (${passOf.replace('{0}', move.passOf)})` : '';
+  return `${move.mode}  ${at(move.from)} → ${at(move.to)}${feed}${centre}${pass}`;
 }
 
 const STYLE = `
@@ -127,6 +140,8 @@ text.axis-name.v { transform: translateY(calc(var(--u) * -${LABEL.vNameAbove}px)
 .move .contact { fill: var(--probe); stroke: var(--vscode-editor-background); stroke-width: 1; vector-effect: non-scaling-stroke; }
 .move:hover .leg, .move.selected .leg { stroke-width: 3.5; }
 .move.selected .leg { stroke: var(--vscode-editor-foreground); }
+.spindle { stroke: var(--axis); stroke-width: 1.2; stroke-dasharray: 14 3 2 3; vector-effect: non-scaling-stroke; }
+.mirror { opacity: 0.3; pointer-events: none; }
 .origin { fill: var(--vscode-foreground); stroke: var(--vscode-foreground); stroke-width: 1.2; vector-effect: non-scaling-stroke; }
 .origin circle { fill: none; }
 .end { stroke: var(--alarm); stroke-width: 3; vector-effect: non-scaling-stroke; }
@@ -137,6 +152,8 @@ text.axis-name.v { transform: translateY(calc(var(--u) * -${LABEL.vNameAbove}px)
 #status.paused { color: var(--current); font-weight: bold; }
 .move.ahead { opacity: 0.25; }
 .move.current .leg, #legend .move.current .leg { stroke: var(--current); stroke-width: 5; }
+.moves.many-current .move.current .leg { stroke-width: 2.5; } /* a lathe cycle's passes: each still seen */
+.moves.many-current .move.current .leg.dashed { stroke-width: 1.6; }
 .tool { fill: none; stroke: var(--current); stroke-width: 2.5; vector-effect: non-scaling-stroke; pointer-events: none; }
 #menu { position: absolute; display: none; flex-direction: column; gap: 2px; padding: 4px; z-index: 2;
   background: var(--vscode-menu-background, var(--vscode-editor-background)); color: var(--vscode-menu-foreground);
@@ -152,7 +169,7 @@ const SCRIPT = `
 const vscode = acquireVsCodeApi();
 const svg = document.getElementById('plot');
 for (const b of document.querySelectorAll('button[data-post]')) {
-  b.addEventListener('click', () => vscode.postMessage({ type: b.dataset.post, plane: b.dataset.plane }));
+  b.addEventListener('click', () => vscode.postMessage({ type: b.dataset.post, plane: b.dataset.plane, value: b.dataset.value }));
 }
 if (svg) {
   const base = svg.getAttribute('viewBox');
@@ -327,15 +344,34 @@ function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts, debug?:
   out.push(`<text class="axis-name v" x="0" y="0" text-anchor="start">↑ ${escapeHtml(texts.verticalAxis)}</text>`);
   const [ox, oy] = plot.origin;
   out.push('</g><g class="axes">');
-  out.push(`<line x1="0" y1="${n(oy)}" x2="${n(w)}" y2="${n(oy)}"/><line x1="${n(ox)}" y1="0" x2="${n(ox)}" y2="${n(h)}"/>`);
-  out.push('</g><g class="moves">');
+  // a lathe: the spindle's centre line across the whole drawing instead of the horizontal axis
+  if (plot.spindle === undefined) out.push(`<line x1="0" y1="${n(oy)}" x2="${n(w)}" y2="${n(oy)}"/>`);
+  out.push(`<line x1="${n(ox)}" y1="0" x2="${n(ox)}" y2="${n(h)}"/>`);
+  if (plot.spindle !== undefined) {
+    const y = n(plot.spindle);
+    out.push(
+      `<line class="spindle" x1="0" y1="${y}" x2="${n(w)}" y2="${y}"><title>${escapeHtml(texts.legend.spindle)}</title></line>`,
+    );
+  }
+  out.push('</g>');
+  if (plot.mirror !== undefined) {
+    // the other half: the same legs mirrored about the centre line (y' = 2m - y), faint
+    out.push(`<g class="mirror" transform="matrix(1 0 0 -1 0 ${n(2 * plot.mirror)})">`);
+    for (const drawn of plot.moves) {
+      out.push(`<g class="move ${drawn.kind}">`);
+      for (const leg of drawn.legs) out.push(`<path class="leg${leg.dashed ? ' dashed' : ''}" d="${leg.d}"/>`);
+      out.push('</g>');
+    }
+    out.push('</g>');
+  }
+  out.push(`<g class="moves${debug && debug.current > 1 ? ' many-current' : ''}">`);
   const hr = n(plot.holeRadius);
   // probe moves (G31) last, on top: a retract along the same line must not hide them or their contact points
   const ordered = [...plot.moves.filter((d) => d.kind !== 'probe'), ...plot.moves.filter((d) => d.kind === 'probe')];
   for (const drawn of ordered) {
     const move = moves[drawn.index];
     if (!move) continue;
-    const title = `${path.basename(move.file)}:${move.line}  ${moveText(move)}`;
+    const title = `${path.basename(move.file)}:${move.line}  ${moveText(move, texts.passOf)}`;
     const d = drawn.legs.map((l) => l.d).join(' ');
     out.push(`<g class="move ${drawn.kind}${pausedClass(drawn.index, debug)}" data-index="${drawn.index}" data-line="${move.line}"><title>${escapeHtml(title)}</title>`);
     for (const leg of drawn.legs) out.push(`<path class="leg${leg.dashed ? ' dashed' : ''}" d="${leg.d}"/>`);
@@ -396,6 +432,12 @@ function legend(texts: Texts, plot: Plot, debug?: PausedPage): string {
       `<li><svg viewBox="0 0 36 12"><g class="move cycle"><circle class="hole" cx="18" cy="6" r="4.5"/></g></svg>${escapeHtml(l.hole)}</li>`,
     );
   }
+  if (plot.spindle !== undefined) {
+    items.push(`<li><svg viewBox="0 0 36 12"><line class="spindle" x1="0" y1="6" x2="36" y2="6"/></svg>${escapeHtml(l.spindle)}</li>`);
+  }
+  if (plot.mirror !== undefined) {
+    items.push(`<li><svg viewBox="0 0 36 12"><g class="mirror move feed"><path class="leg" d="M2 6 L34 6"/></g></svg>${escapeHtml(l.mirror)}</li>`);
+  }
   items.push(
     `<li><svg viewBox="0 0 36 12"><g class="origin"><circle cx="18" cy="6" r="5"/><path d="M18 6 L23 6 A5 5 0 0 0 18 1 Z M18 6 L13 6 A5 5 0 0 0 18 11 Z"/></g></svg>${escapeHtml(l.origin)}</li>`,
   );
@@ -436,9 +478,20 @@ export function toolpathHtml(page: Page, nonceValue: string): string {
             `<button data-post="plane" data-plane="${p}" title="${escapeHtml(t.planeButton)}"${p === page.view?.plane ? ' class="on"' : ''}>${p}</button>`,
         ).join('')
       : '';
+  const lathe = page.view?.lathe;
+  const latheButtons =
+    lathe && t.lathe
+      ? RADIAL_SCALES.map(
+          (scale) =>
+            `<button data-post="radialScale" data-value="${scale}" title="${escapeHtml(t.lathe?.scaleTip ?? '')}"` +
+            `${scale === lathe.scale ? ' class="on"' : ''}>${escapeHtml(t.lathe?.[scale] ?? scale)}</button>`,
+        ).join('') +
+        `<button id="both-halves" data-post="bothHalves" title="${escapeHtml(t.lathe.bothHalvesTip)}"` +
+        `${lathe.bothHalves ? ' class="on"' : ''}>${escapeHtml(t.lathe.bothHalves)}</button>`
+      : '';
   const body: string[] = [
     `<header><button id="refresh" data-post="refresh">${escapeHtml(t.refresh)}</button>`,
-    page.plot ? `<button id="fit">${escapeHtml(t.fit)}</button>${planeButtons}` : '',
+    page.plot ? `<button id="fit">${escapeHtml(t.fit)}</button>${planeButtons}${latheButtons}` : '',
     `<span class="source">${escapeHtml(t.source)}</span>`,
     page.plot ? `<span class="hint">${escapeHtml(t.hint)}</span>` : '',
     '</header>',

@@ -40,7 +40,7 @@ function runJson(name, text, machineFile) {
 
 test('a drilled hole is drawn by its four legs: position and rapid to R dashed, the cut solid, the way out dashed', () => {
   const run = runJson('MAIN.nc', 'O0001\nG90 G00 X0 Y0 Z50.\nG98 G81 X10. Y10. Z-10. R2. F100\nG80\nM30\n');
-  const view = geometry.viewFor(geometry.isLatheRun(run), 'ZX');
+  const view = geometry.viewFor(geometry.latheAxesOf(run), 'ZX');
   const drawn = geometry.plot(run.moves, view, false).moves[1];
   assert.equal(drawn.kind, 'cycle');
   assert.deepEqual(drawn.legs.map((leg) => leg.dashed), [true, true, false, true]);
@@ -57,18 +57,18 @@ test('an arc is drawn in the plane the run names: a G18 arc is an SVG arc in the
   const run = runJson('ARC.nc', 'O0002\nG90 G00 X0 Y0 Z0\nG18 G02 X10. Z10. R10. F100\nM30\n');
   const arc = run.moves[1];
   assert.deepEqual([arc.kind, arc.plane, arc.clockwise], ['arc', ['Z', 'X'], true]);
-  const zx = geometry.plot(run.moves, geometry.viewFor(false, 'ZX'), false).moves[1];
+  const zx = geometry.plot(run.moves, geometry.viewFor(undefined, 'ZX'), false).moves[1];
   assert.match(zx.legs[0].d, / A/);
   // G02 seen from +Y in the Z-across, X-up view turns clockwise on the screen: sweep flag 1
   assert.match(zx.legs[0].d, /A[\d.]+ [\d.]+ 0 [01] 1 /);
-  const xy = geometry.plot(run.moves, geometry.viewFor(false, 'XY'), false).moves[1];
+  const xy = geometry.plot(run.moves, geometry.viewFor(undefined, 'XY'), false).moves[1];
   assert.doesNotMatch(xy.legs[0].d, / A/);
 });
 
 test('a lathe G90 cycle is drawn by the legs the run gives, X halved as a radius', () => {
   const run = runJson('O0003.CNC', 'O0003\nG00 X50. Z2.\nG90 X40. Z-30. F0.2\nM30\n', 'base = "gsk980tdi"\n');
   assert.equal(run.lathe, true);
-  const drawn = geometry.plot(run.moves, geometry.viewFor(true), false).moves[1];
+  const drawn = geometry.plot(run.moves, geometry.viewFor(geometry.latheAxesOf(run)), false).moves[1];
   assert.deepEqual(drawn.legs.map((leg) => leg.dashed), [true, false, false, true]);
   assert.equal(drawn.hole, undefined);
 });

@@ -11,6 +11,7 @@ const dc = clientPerTest();
 
 const PROGRAM = program('tool_changes.nc');
 const STOP_AND_DRILL = program('stop_and_drill.nc');
+const LATHE_ROUGH = program('lathe_rough.nc');
 
 async function continueTo() {
   const stopped = dc.waitForEvent('stopped');
@@ -136,6 +137,42 @@ describe('the toolpath of a paused run', () => {
       .breakpoints;
     assert.match(made[0].message, /请写顺序号（N100）、程序号（O9100）或 G、M、T 代码/);
     assert.match(made[1].message, /M代码不能带小数点/);
+  });
+
+  test('a lathe is sent as one: lathe true and its axes, Z the spindle axis, X radial and a diameter', async () => {
+    await dc.begin({ program: LATHE_ROUGH, stopOnEntry: true });
+    const path = await toolpath();
+    assert.equal(path.lathe, true);
+    assert.deepEqual(path.lathe_axes, { spindle: 'Z', radial: 'X', diameter: true });
+  });
+
+  test('a mill is sent as no lathe, without lathe axes', async () => {
+    await dc.begin({ program: PROGRAM, stopOnEntry: true });
+    const path = await toolpath();
+    assert.equal(path.lathe, false);
+    assert.equal(path.lathe_axes, undefined);
+  });
+
+  test('paused at a G71 P Q block, every pass is a move of the current block; at the G70 block, the finishing cut', async () => {
+    await dc.begin({ program: LATHE_ROUGH }, { breakpoints: { 'lathe_rough.nc': [{ line: 5 }, { line: 8 }] } });
+    let path = await toolpath();
+    assert.equal(path.line, 5);
+    assert.equal(path.moves.length, 1); // G00 X40. Z2. of line 3
+    // From X40 with U2. (radius) per pass: cuts at X36, X32, then the shape's X30; each pass is
+    // in, cut, pulled back R1. (X+2 on the diameter, Z+1) and back to Z2: 3 x 4 moves = 12
+    assert.equal(path.current.length, 12);
+    assert.ok(path.current.every((m) => m.line === 5 && m.pass_of === 'G71'));
+    assert.deepEqual(path.current.filter((m) => m.kind === 'feed').map((m) => m.to.X), [36, 32, 30]);
+    assert.deepEqual(path.current.filter((m) => m.kind === 'rapid').map((m) => m.to.X), [36, 38, 38, 32, 34, 34, 30, 40, 40]);
+    assert.equal((await dc.top()).line, 5); // looking ahead ran nothing for good: still before the G71 block
+    await continueTo();
+    path = await toolpath();
+    assert.equal(path.line, 8);
+    assert.equal(path.moves.length, 13);
+    // G70 runs the shape as written (N10 G00 X30., N20 G01 Z-20.) and goes back to the start X40 Z2
+    assert.deepEqual(path.current.map((m) => [m.line, m.kind, m.to.X, m.to.Z]), [
+      [6, 'rapid', 30, 2], [7, 'feed', 30, -20], [8, 'rapid', 40, 2],
+    ]);
   });
 
   test('a block without a move has no current move', async () => {

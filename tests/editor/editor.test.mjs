@@ -320,7 +320,7 @@ test('Show Toolpath draws each move of the run, and a click on a move goes to it
   await shot('9b-toolpath-click');
 });
 
-test('Show Toolpath draws a GSK lathe program with Z across and X halved, the radius', { timeout: 2 * STEP }, async () => {
+test('Show Toolpath draws a GSK lathe program with Z across and X up, to scale, the X scale in diameters', { timeout: 2 * STEP }, async () => {
   const folder = path.join(ROOT, 'examples', 'gsk980tdi');
   const moves = movesOf(folder, 'ellipse_turning.nc');
   fs.copyFileSync(path.join(folder, 'ellipse_turning.nc'), path.join(server.workspace, 'ellipse_turning.nc'));
@@ -336,7 +336,7 @@ test('Show Toolpath draws a GSK lathe program with Z across and X halved, the ra
   await status.waitFor({ timeout: 45000 });
   assert.equal(await view.locator('#plot g.move').count(), moves.length);
   assert.equal(await view.locator('#plot g.move.feed').count(), moves.filter((m) => m.mode === 'G01').length);
-  assert.match(await view.locator('#legend').innerText(), /X is a diameter: it is drawn at X\/2, the radius/);
+  assert.match(await view.locator('#legend').innerText(), /Lathe: Z across \(the spindle axis\), X up, to scale; the X scale reads diameters/);
   assert.match(await status.innerText(), /extents X 0 … 100, Z -45 … 100/);
   await shot('9c-toolpath-lathe');
 

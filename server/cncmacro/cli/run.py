@@ -31,7 +31,7 @@ from ..machine import Machine, RunResult
 from ..machine.commanded_axes import CommandedAxes
 from ..machine.setup import prepare_run
 from ..machine.status import RunStatus
-from ..planner.move_json import move_json
+from ..planner.move_json import machine_json, move_json
 from ..planner.moves import Move
 from ..planner.numbers import format_plain
 from .cycle_report import cycle_json, write_cycle_text
@@ -142,7 +142,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
                        f"cncmacro run：无法保存断电保持的公共变量（#500–#999）：{e}"), file=shown_err)  # fmt: skip
     result = machine.result()
     if args.json:
-        head = {"dialect": dialect.name, "lathe": dialect.lathe}
+        head = machine_json(dialect)
         body = result_json(result, dialect.axes, args.locale)
         body["cycle"] = cycle_json(machine, program, args.locale)
         if machine.ended_by_main_m99:  # the sentence only: a toolpath refresh does not search the folder

@@ -30,7 +30,7 @@ from ..library.files import SkippedFileError
 from ..machine import Machine
 from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
 from ..machine.status import RunStatus
-from ..planner.move_json import move_json
+from ..planner.move_json import machine_json, move_json
 from . import presentation as show
 from .launch import LaunchConfig, Launched, LaunchError, launch
 from .protocol import Event, MessageWriter, ProtocolError, Request, Response, read_message
@@ -334,7 +334,7 @@ class Session:
         return {
             "moves": [move_json(mv, axes) for mv in m.planner.moves[:limit]], "made": len(m.planner.moves),
             "current": [move_json(mv, axes) for mv in next_moves(m)],
-            "file": frame.file, "line": line + 1, "blocks": m.blocks, "lathe": m.dialect.lathe,
+            "file": frame.file, "line": line + 1, "blocks": m.blocks, **machine_json(m.dialect),
         }  # fmt: skip
 
     def on_runToMove(self, args: dict[str, Any]) -> dict[str, Any]:

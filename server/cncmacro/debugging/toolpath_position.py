@@ -3,7 +3,10 @@
 The toolpath view draws, while a debug session is paused, the moves run so far and the move
 the block the run stands on is about to make (``next_moves``: that block is run on the machine
 and the machine put back as it was, ``Machine.snapshot``/``restore``, so nothing is shown, counted
-or kept). A block that makes no move (a macro statement, a call, an M code) has none.
+or kept). A block that makes no move (a macro statement, a call, an M code) has none. A lathe
+cycle that names its finishing shape (``G71 P Q``, ``G70 P Q``) runs that shape as a level of its
+own: its moves are the passes (or the finishing cut) made once the shape's last block is done,
+so the block is followed until that level ends, and every pass is the block's.
 
 "Run to here" on a move: ``run_to_move`` puts the run at the block that makes the move with
 that number (0 for the first move of the run), before it runs. A move still to come is reached
@@ -21,6 +24,8 @@ from ..machine import Machine
 from ..planner.moves import Move
 from .stepping import CONTINUE, Stepper, Stop
 
+SHAPE_BLOCKS = 10_000  # a shape's blocks followed for its cycle's moves, at most
+
 
 def next_moves(m: Machine) -> list[Move]:
     """The moves the block at the machine's pc makes (none when the run is over)."""
@@ -28,8 +33,11 @@ def next_moves(m: Machine) -> list[Move]:
         return []
     snap = m.snapshot()
     made = len(m.planner.moves)
+    depth = len(m.frames)
     try:
         m.step()
+        if len(m.frames) > depth and m.frames[-1].end_line >= 0 and not m.finished:  # a shape cycle's level
+            m.run_until(lambda machine: len(machine.frames) <= depth, max_blocks=SHAPE_BLOCKS)
         return list(m.planner.moves[made:])
     finally:
         m.restore(snap)

@@ -13,7 +13,10 @@ the run jumps by it:
   ``hcodes.py`` reads them; kind ``H8x``). Where the control has no macro A, ``G65 H81 P1000``
   calls O1000 with the argument H and jumps nowhere;
 - the P of ``M99`` in a block that makes no call (the first P, as ``nc_blocks.py`` reads it;
-  ``return_word``): a return to a label of the caller, or in a main program on from its own.
+  ``return_word``): a return to a label of the caller, or in a main program on from its own;
+- on a lathe, the P and Q of a ``G70``–``G73`` block that has both (kind ``G71 P``, ``G71 Q``):
+  the first and last blocks of the cycle's finishing shape, which the run runs
+  (``planner/lathe_cycles.py``; found as ``call_stack.enter_shape`` finds them).
 
 A block that makes any other call jumps by none of its words: a G65/G66 macro call's M99 and Q
 are its arguments M and Q, and a code the machine file's ``[calls]`` makes a call (``M97 = 9097``
@@ -27,6 +30,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 
 from ..dialects.dialect import Dialect
+from ..planner.lathe_cycles import SHAPE_CODES
 from ..syntax.nodes import Number, Word
 from .calls import code_value, last_word, recognise_call
 from .hcodes import BRANCHES
@@ -44,9 +48,16 @@ def local_call_kind(code: float) -> str:
 
 def may_hold_jump(text: str) -> bool:
     """Whether a plain line (``Block.plain``, address-number words only) may hold a jump word:
-    every one needs an M word (M98, M198, M99, the local call) or an H word (G65 H8x). Lines
-    without either, nearly every line of a CAM program, are passed over at once."""
-    return "M" in text or "m" in text or "H" in text or "h" in text
+    every one needs an M word (M98, M198, M99, the local call), an H word (G65 H8x) or, a
+    lathe cycle's shape, a P and a Q. Lines without them, nearly every line of a CAM program,
+    are passed over at once."""
+    return (
+        "M" in text
+        or "m" in text
+        or "H" in text
+        or "h" in text
+        or (("P" in text or "p" in text) and ("Q" in text or "q" in text))
+    )
 
 
 def jump_words(
@@ -54,6 +65,9 @@ def jump_words(
 ) -> list[tuple[str, Word]]:
     """(kind, word) for each word of ``words`` that names a label the run jumps to, literal or
     computed (see the module docstring); ``calls`` are the machine file's call codes."""
+    shape = _shape_words(words, dialect)
+    if shape:
+        return shape
     if not any(w.letter == "M" or w.letter == "H" for w in words):
         return []
     found = _jump_word(words, dialect, calls)
@@ -80,6 +94,20 @@ def _jump_word(words: Sequence[Word], dialect: Dialect, calls: Mapping[str, obje
         q = last_word(words, "Q")
         return None if q is None else (SUBPROGRAM_LABEL, q)
     return None
+
+
+def _shape_words(words: Sequence[Word], dialect: Dialect) -> list[tuple[str, Word]]:
+    """The P and Q of a lathe's ``G70``–``G73`` block with both (the last of each, as the
+    block's words are read), or none."""
+    if not dialect.lathe:
+        return []
+    code = next((code_value(w) for w in words if w.letter == "G" and code_value(w) in SHAPE_CODES), None)
+    if code is None or code not in dialect.cycle_codes:
+        return []
+    p, q = last_word(words, "P"), last_word(words, "Q")
+    if p is None or q is None or p.value is None or q.value is None:
+        return []
+    return [(f"G{code:g} P", p), (f"G{code:g} Q", q)]
 
 
 def return_word(words: Sequence[Word]) -> Word | None:

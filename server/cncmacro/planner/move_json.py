@@ -1,12 +1,31 @@
 """A move as JSON (docs/design.md's run object): what ``cncmacro run --json`` prints and what
-the debug adapter sends the toolpath view, in one form."""
+the debug adapter sends the toolpath view, in one form; and the machine the moves were made on
+(``machine_json``: its profile, whether it is a lathe and the roles of a lathe's axes), so that
+the view draws a lathe as a lathe without guessing."""
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .arcs import PLANES
 from .moves import ARC, CYCLE, DRILLING, MODE_NAMES, Move, move_kind
+
+if TYPE_CHECKING:
+    from ..dialects import Dialect
+
+LATHE_PLANE = 18.0  # a lathe turns in the ZX plane: its first axis is the spindle's, its second the radial one
+
+
+def machine_json(dialect: Dialect) -> dict[str, Any]:
+    """The machine the moves were made on: its profile (``dialect``), whether it is a ``lathe``
+    and, for a lathe, ``lathe_axes``: the ``spindle`` axis (Z: the view draws it across, with the
+    centre line at radial 0), the ``radial`` axis (X, drawn up) and whether the radial axis is
+    programmed as a ``diameter`` (on every lathe profile it is: docs/semantics.md §8)."""
+    head: dict[str, Any] = {"dialect": dialect.name, "lathe": dialect.lathe}
+    spindle, radial = PLANES[LATHE_PLANE][:2]
+    if dialect.lathe and spindle in dialect.axes and radial in dialect.axes:
+        head["lathe_axes"] = {"spindle": spindle, "radial": radial, "diameter": True}
+    return head
 
 
 def move_json(mv: Move, axes: tuple[str, ...]) -> dict[str, Any]:
