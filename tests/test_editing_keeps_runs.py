@@ -117,54 +117,17 @@ def _applied(lines: list[str], plan: SequencePlan) -> list[str]:
     return out
 
 
-# Programs whose G70-G73 name their finishing shape by P(ns) and Q(nf): renumbering and removing
-# labels do not yet count P and Q of these blocks as jumps to N labels (renumbered, G71 P80 Q180
-# names labels that are gone and the run alarms; removing drops N80 and N180 as unused). They are
-# left out of those two edits until the edits keep them (the strict xfail below).
-SHAPE_LABELS = frozenset({
-    "corpus/fanuc-0i-lathe/O2001.nc", "corpus/fanuc-0i-lathe/O2002.nc", "corpus/fanuc-0i-lathe/O2003.nc",
-    "corpus/fanuc-0i-lathe/O2004.nc", "corpus/fanuc-0i-lathe/O2013.nc", "corpus/fanuc-0i-lathe/O2016.nc",
-    "corpus/gsk980tdi/g71_id_bushing.cnc", "corpus/gsk980tdi/g71_stepped_shaft.cnc",
-    "corpus/gsk980tdi/g72_flange_face.cnc", "corpus/gsk980tdi/g73_forging.cnc", "corpus/gsk980tdi/pname_partoff.cnc",
-})  # fmt: skip
-
-
-def _sequence_edit(p: Path, lines: list[str], how: str, step: int = 10) -> list[str]:
-    program = build_program([parse_block(x) for x in lines])
-    dialect = get_dialect(_dialect(p, lines))
-    if how == "renumber":
-        plan = renumber(program, dialect, step=step, keep_computed=True)
-    elif how == "add":
-        plan = add_sequence_numbers(program, dialect, step=5, keep_computed=True)
-    else:
-        plan = remove_unused_sequence_numbers(program, dialect, keep_computed=True)
-    return _applied(lines, plan)
-
-
 @pytest.mark.parametrize("how", ["renumber", "add", "remove"])
 def test_sequence_number_edits_change_no_run(tmp_path: Path, how: str):
     def edit(p: Path, lines: list[str]) -> list[str]:
-        if how != "add" and "/".join(p.parts[-3:]) in SHAPE_LABELS:
-            return lines
-        return _sequence_edit(p, lines, how)
+        program = build_program([parse_block(x) for x in lines])
+        dialect = get_dialect(_dialect(p, lines))
+        if how == "renumber":
+            plan = renumber(program, dialect, step=10, keep_computed=True)
+        elif how == "add":
+            plan = add_sequence_numbers(program, dialect, step=5, keep_computed=True)
+        else:
+            plan = remove_unused_sequence_numbers(program, dialect, keep_computed=True)
+        return _applied(lines, plan)
 
     assert _same_runs(tmp_path, edit) > 5
-
-
-@pytest.mark.xfail(
-    strict=True,
-    reason="waits for the sequence-number edits to know G70-G73 P(ns) Q(nf) as labels: renumbered, "
-    "G71 P70 Q110 names labels that are gone (the run alarms); removing the unused labels drops N70 and N110",
-)
-@pytest.mark.parametrize("how", ["renumber", "remove"])
-def test_sequence_number_edits_keep_the_shape_of_g70_to_g73(tmp_path: Path, how: str):
-    source = ROOT / "tests" / "corpus" / "fanuc-0i-lathe"
-    for name in ("O2016.nc", ".cncmacro.toml"):
-        shutil.copyfile(source / name, tmp_path / name)
-    path = tmp_path / "O2016.nc"
-    before = _run(path, tmp_path)
-    lines = path.read_text(encoding="utf-8").split("\n")
-    new = _sequence_edit(path, lines, how, step=5)  # N10, N20, ... renumbered N5, N10, ...
-    assert new != lines
-    path.write_text("\n".join(new), encoding="utf-8")
-    assert _run(path, tmp_path) == before
