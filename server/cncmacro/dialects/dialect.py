@@ -16,6 +16,7 @@ from typing import Any
 
 from ..bilingual import Detail, detail
 from .drill_cycles import DrillCycle
+from .lathe_cycle_rules import LatheCycleRules
 from .tables import CodeDoc, CommonRange, FunctionDoc, ProgramDoc, SystemVariable, SystemVariableName
 from .timing import Timing
 from .turning_cycles import SingleCycle
@@ -145,6 +146,9 @@ class Dialect:
     # whether it comes out at rapid (turning_cycles.py); a turning cycle not listed is drawn as
     # one cut from where it starts to its end point
     single_cycles: dict[float, SingleCycle] = field(default_factory=dict)
+    # §10.5 what the control refuses in its multiple repetitive cycles G70–G76
+    # (lathe_cycle_rules.py); None on a mill, whose G73/G74/G76 are drilling cycles
+    lathe_cycles: LatheCycleRules | None = None
 
     # what the machine takes time for: rapid rates, tool change, M codes, dwell units (timing.py;
     # the cycle time, planner/cycle_time.py)

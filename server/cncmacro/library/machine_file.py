@@ -119,6 +119,9 @@ class MachineSettings:
     system_variables: tuple[SystemVariable, ...] = ()
     decimal_point: str = "calculator"
     block_delete: bool = False
+    # §10.5 the machine checks that a G71/G72 shape is monotone (FANUC's parameter, always on):
+    # a shape that is not is then an error, not a warning
+    shape_monotone_check: bool = False
     persistent_file: str | None = None
     max_blocks: int = DEFAULT_MAX_BLOCKS
     date: int | None = None
@@ -167,6 +170,7 @@ class _SettingsFields(TypedDict, total=False):
     system_variables: tuple[SystemVariable, ...]
     decimal_point: str
     block_delete: bool
+    shape_monotone_check: bool
     persistent_file: str | None
     max_blocks: int
     date: int | None
@@ -280,6 +284,14 @@ def find_machine_file(start: str | Path) -> Path | None:
     return None
 
 
+def _flag(data: dict[str, object], key: str, fail: Callable[[str, Detail], MachineFileError]) -> bool:
+    """The value of a true/false key, or its clear error."""
+    value = data[key]
+    if not isinstance(value, bool):
+        raise fail(key, detail("must be true or false", "必须是 true 或 false"))
+    return value
+
+
 def settings_from_mapping(
     data: dict[str, object], source: str = "settings", folder: str | None = None
 ) -> MachineSettings:
@@ -290,7 +302,7 @@ def settings_from_mapping(
         return MachineFileError(detail(f"{source}: '{shown}' {what}", f"{source}：'{shown}' {what.zh}"), key=key)
 
     known = {"base", "dialect", "common", "program_digits", "programs_on_control", "system_variables",
-             "decimal_point", "block_delete", "persistent_file", "max_blocks", "date", "time",
+             "decimal_point", "block_delete", "shape_monotone_check", "persistent_file", "max_blocks", "date", "time",
              "variables", "calls", "skip", "severity", "timing"}  # fmt: skip
     for key in data:
         if key not in known:
@@ -327,10 +339,9 @@ def settings_from_mapping(
                                                '必须是 "calculator" 或 "increment"'))  # fmt: skip
         kw["decimal_point"] = point
     if "block_delete" in data:
-        block_delete = data["block_delete"]
-        if not isinstance(block_delete, bool):
-            raise fail("block_delete", detail("must be true or false", "必须是 true 或 false"))
-        kw["block_delete"] = block_delete
+        kw["block_delete"] = _flag(data, "block_delete", fail)
+    if "shape_monotone_check" in data:
+        kw["shape_monotone_check"] = _flag(data, "shape_monotone_check", fail)
     if "persistent_file" in data:
         pf = data["persistent_file"]
         if (not isinstance(pf, str) or not pf or "\0" in pf or Path(pf).is_absolute()

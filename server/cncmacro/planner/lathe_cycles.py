@@ -51,7 +51,8 @@ class ShapeCall(NamedTuple):
 class ShapeReading:
     """A shape cycle under way: its code, block (file, line), words, where the tool started,
     whether the shape is being read (G71–G73) rather than run (G70), the codes its reading set
-    aside, and the segments read so far (mode, start, end, centre), in work coordinates."""
+    aside, the segments read so far (mode, start, end, centre), in work coordinates, and the axes
+    (by index) its first block with an axis word names (both X and Z: a type II shape)."""
 
     code: float
     file: str
@@ -63,10 +64,11 @@ class ShapeReading:
     segments: list[tuple[float, tuple[float, ...], tuple[float, ...], tuple[float, ...] | None]] = field(
         default_factory=list
     )
+    first_axes: frozenset[int] | None = None
 
     def copy(self) -> ShapeReading:
         return ShapeReading(self.code, self.file, self.line, dict(self.words), self.start, self.reading,
-                            dict(self.kept_codes), list(self.segments))  # fmt: skip
+                            dict(self.kept_codes), list(self.segments), self.first_axes)  # fmt: skip
 
 
 # code -> the planner of a cycle's second block: (planner, block words with U/W, file, line, end point)
@@ -103,6 +105,7 @@ def lathe_cycle(
     plan = MULTIPLE_CYCLES.get(g)
     if plan is not None:
         if not axes and not inc:  # the first block: its parameters
+            check_cycle_block(p, g, dict(other))
             p.cycle_params[g] = dict(other)
             return False, None
         words = block_words(p, axes, inc, other)

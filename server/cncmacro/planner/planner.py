@@ -190,6 +190,9 @@ class Planner:
         canned = self.modal.get("canned", 80.0)
         if not axes and not incremental:
             return self._full_circle(mode, canned, other, file, line), None
+        shape = self.shape
+        if shape is not None and shape.first_axes is None:  # the shape's first block: type I or II
+            shape.first_axes = frozenset(axes) | frozenset(incremental)
         target = self.target(axes, incremental)
         if not self.lathe and canned != 80.0:
             drill_block(self, canned, axes, incremental, other, file, line)  # drill_cycles.py

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from ..lathe_cycle_rules import FANUC_LATHE_RULES
 from ..timing import Timing
 from ..turning_cycles import LATHE_SINGLE_CYCLES
 from .fanuc_0i import PROFILE as FANUC_0I
@@ -31,6 +32,7 @@ PROFILE = replace(
     cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0}),
     drill_cycles={},
     single_cycles=LATHE_SINGLE_CYCLES,
+    lathe_cycles=FANUC_LATHE_RULES,
     # typical of a small slant-bed lathe; a machine file gives the machine's own (parameter 1420)
     timing=Timing(
         rapid={"X": 12000.0, "Z": 15000.0, "C": 10800.0, "Y": 8000.0},
