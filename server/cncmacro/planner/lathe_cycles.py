@@ -34,6 +34,8 @@ if TYPE_CHECKING:
 ROUGHING = frozenset({71.0, 72.0, 73.0})
 FINISHING = 70.0
 SHAPE_CODES = ROUGHING | {FINISHING}
+# the cycles whose blocks the control checks (cycle_rules.py), planned or not
+CHECKED_CYCLES = SHAPE_CODES | {74.0, 75.0, 76.0}
 # G71–G73's own words: in their blocks U and W are parameters (depths, allowances), never moves
 _PARAMETER_UW = SHAPE_CODES
 
@@ -103,15 +105,16 @@ def lathe_cycle(
             p.cycle_params[g] = words
         return False, None
     plan = MULTIPLE_CYCLES.get(g)
-    if plan is not None:
+    if plan is not None or g in CHECKED_CYCLES:
         if not axes and not inc:  # the first block: its parameters
             check_cycle_block(p, g, dict(other))
             p.cycle_params[g] = dict(other)
             return False, None
         words = block_words(p, axes, inc, other)
         check_cycle_block(p, g, words)
-        plan(p, words, file, line, p.target(axes, inc))
-        return True, None
+        if plan is not None:
+            plan(p, words, file, line, p.target(axes, inc))
+            return True, None
     p.turning_cycle(file, line, g, p.target(axes, inc))
     return bool(axes or inc), None
 

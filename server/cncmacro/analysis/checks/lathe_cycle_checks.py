@@ -7,8 +7,9 @@ from variables): this module only gathers what the text says, in text order with
 program: the position the tool is at (from literal X/Z, U/W words; unknown after a call, a
 reference return or a word from a variable), the motion mode in force, the last first block of
 each cycle. A finding about the cycle block marks its word (or the block); one about the shape's
-geometry marks the cycle block, as the run's alarm does; a command not allowed in the shape
-marks that command. Findings only the text decides: the block N(P) or N(Q) not in the program
+geometry marks the block N(Q) where it is an error (the run stops there, when the shape has been
+read) and the cycle block where it is a warning (the run notes it there); a command not allowed
+in the shape marks that command. Findings only the text decides: the block N(P) or N(Q) not in the program
 (PS0063), a label of the shape used twice (``duplicate-label``), M98/M99/G65/G66 in the shape
 (PS0325), a G code outside GSK's list, a chamfer or corner R ending the shape (PS0069) or in a
 thread block (PS0050), more blocks than GSK's 200. Nothing here runs on a profile without
@@ -280,7 +281,11 @@ class _Unit:
         known_steps = steps if exact else steps[:1]
         for f in shape_findings(rules, g, r.values, start if exact else None, known_steps, type_two,
                                 self.ctx.settings.shape_monotone_check):  # fmt: skip
-            self.mark(line, block, r, f, "cycle-shape")
+            if f.sure:  # where the run stops: the block N(Q), when the shape has been read
+                s, e = self.whole(program.blocks[last])
+                self.add(last, s, e, "cycle-shape", f.message, f.alarm, True)
+            else:  # where the run notes it: the cycle block
+                self.mark(line, block, r, f, "cycle-shape")
 
     def shape_commands(self, at: int, g: float, r: _Read) -> None:
         """PS0325: a call or return in the shape; on GSK a G code outside its list (a warning)."""
