@@ -8,11 +8,11 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+
 from analysis_helpers import analyse_files
+from cncmacro.library.machine_file import MachineFileError, MachineSettings, settings_from_mapping
 from running import alarm, run
 from static_helpers import at, check, coded, lines
-
-from cncmacro.library.machine_file import MachineSettings, MachineFileError, settings_from_mapping
 
 LATHES = ["gsk980tdi", "fanuc-0i-lathe"]
 
