@@ -263,3 +263,9 @@ def test_10_5_the_machine_file_key_must_be_true_or_false() -> None:
     assert settings_from_mapping({"shape_monotone_check": True}).shape_monotone_check
     with pytest.raises(MachineFileError, match="shape_monotone_check"):
         settings_from_mapping({"shape_monotone_check": "yes"})
+
+
+def test_10_5_fanuc_15s_one_block_g76_is_not_judged_by_the_two_block_rules() -> None:
+    # G76 X Z I K D F A: K is the height and D the first depth there, P the cutting method
+    text = lines("O0001", "G00 X32. Z5.", "G76 X27.4 Z-30. K1300 D400 F2. A60 P1", "M30")
+    assert findings(text, "fanuc-0i-lathe", "cycle-block") == []

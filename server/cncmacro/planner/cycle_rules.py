@@ -137,6 +137,8 @@ def block_findings(
                                         f"{shown}",
                                         f"G76：刀尖角度 {angle:g}°（P 的末两位）不是 {shown} 之一"))  # fmt: skip
             return out
+        if "K" in present or "D" in present:
+            return out  # the one-block form of FANUC 15 (K the height, D the first depth): not judged
         k, d = words.get("P"), words.get("Q")
         for letter, v, what, what_zh in (("P", k, "thread height", "螺纹牙高"),
                                          ("Q", d, "first depth of cut", "第一次切深")):  # fmt: skip
@@ -201,7 +203,7 @@ def shape_findings(
     if not steps:
         return out
     c = f"G{g:g}"
-    if steps[0][0] not in (0.0, 1.0):
+    if steps[0][0] in (2.0, 3.0):  # an arc (another mode in force, G32 or G90, is left alone)
         out.append(_finding(rules, A.SHAPE_FIRST_BLOCK, K.FIRST_BLOCK, None,
                             f"{c}: the first move of the shape is G{steps[0][0]:02g}, not G00 or G01",
                             f"{c}：形状程序的第一个移动是 G{steps[0][0]:02g}，不是 G00 或 G01"))  # fmt: skip
