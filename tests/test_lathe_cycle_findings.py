@@ -269,3 +269,10 @@ def test_10_5_fanuc_15s_one_block_g76_is_not_judged_by_the_two_block_rules() -> 
     # G76 X Z I K D F A: K is the height and D the first depth there, P the cutting method
     text = lines("O0001", "G00 X32. Z5.", "G76 X27.4 Z-30. K1300 D400 F2. A60 P1", "M30")
     assert findings(text, "fanuc-0i-lathe", "cycle-block") == []
+
+
+@pytest.mark.parametrize("dialect", LATHES)
+def test_10_5_g76_depths_in_different_units_are_not_compared(dialect: str) -> None:
+    # Q50 is 0.050 mm (increments), P0.975 is 0.975 mm: 50 > 0.975 says nothing
+    text = lines("O0001", "G00 X32. Z5.", "G76 P010060 Q50 R0.05", "G76 X27.4 Z-30. P0.975 Q0.1 F1.5", "M30")
+    assert findings(text, dialect, "cycle-block") == []

@@ -151,7 +151,9 @@ def block_findings(
                                     f"G76: the {what} {letter}{v:g} is not above zero",
                                     f"G76：{what_zh} {letter}{v:g} 不大于零"))  # fmt: skip
         least = None if first is None else first.get("Q")
-        if least is not None and k is not None and k > 0 and least > k:
+        # both in the same unit: least input increments (whole numbers) or mm (a decimal point)
+        same_unit = least is not None and k is not None and (least == int(least)) == (k == int(k))
+        if least is not None and k is not None and same_unit and k > 0 and least > k:
             out.append(_finding(rules, A.THREAD_MIN_DEPTH, K.THREAD_MIN_DEPTH, "P",
                                 f"G76: the minimum depth of cut Q{least:g} of the first block is larger than the "
                                 f"thread height P{k:g}",
