@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from analysis_helpers import analyse_files
+from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.library.machine_file import MachineFileError, MachineSettings, settings_from_mapping
 from running import alarm, run
 from static_helpers import at, check, coded, lines
@@ -276,3 +277,20 @@ def test_10_5_g76_depths_in_different_units_are_not_compared(dialect: str) -> No
     # Q50 is 0.050 mm (increments), P0.975 is 0.975 mm: 50 > 0.975 says nothing
     text = lines("O0001", "G00 X32. Z5.", "G76 P010060 Q50 R0.05", "G76 X27.4 Z-30. P0.975 Q0.1 F1.5", "M30")
     assert findings(text, dialect, "cycle-block") == []
+
+
+@pytest.mark.parametrize("dialect", LATHES)
+def test_10_5_an_error_of_the_text_and_of_the_run_is_shown_once(dialect: str, tmp_path: Path) -> None:
+    # the depth U0 (cycle-block, line 3) and, with the check on, Z turning back (cycle-shape, at N20: line 8)
+    depth = shape(*TURNING, first="G71 U0 R0.5")
+    found = [d for d in analyse_files(tmp_path, {"A.nc": depth}, dialect) if d.code.startswith("cycle")]
+    assert [(d.line + 1, d.code, d.severity) for d in found] == [(3, "cycle-block", "error")]
+    text = shape(*Z_BACK)
+    ws = WorkspaceAnalysis(settings=MachineSettings(shape_monotone_check=True), dialect=dialect)
+    path = tmp_path / "B.nc"
+    path.write_text(text, encoding="utf-8")
+    ws.open(str(path), text, 1)
+    result = ws.analyze(str(path))
+    assert result is not None
+    found = [d for ds in result.diagnostics.values() for d in ds if d.code.startswith("cycle")]
+    assert [(d.line + 1, d.code, d.severity) for d in found] == [(8, "cycle-shape", "error")]
