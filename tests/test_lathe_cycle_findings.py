@@ -294,3 +294,17 @@ def test_10_5_an_error_of_the_text_and_of_the_run_is_shown_once(dialect: str, tm
     assert result is not None
     found = [d for ds in result.diagnostics.values() for d in ds if d.code.startswith("cycle")]
     assert [(d.line + 1, d.code, d.severity) for d in found] == [(8, "cycle-shape", "error")]
+
+
+@pytest.mark.parametrize("dialect", LATHES)
+def test_10_5_g72s_shape_turning_back_along_x_is_ps0329_and_along_z_ps0064(dialect: str) -> None:
+    # FANUC's alarms name the plane's axes: PS0064 the first (Z), PS0329 the second (X), whichever cycle
+    # G72 faces along X: X 42 -> 30 -> 35 turns back (PS0329); type I, Z -20 -> -10 -> -15 turns back (PS0064)
+    x_back = shape("N500 G00 Z-20.", "G01 X30.", "X35. Z-10.", "N600 Z2.", first="G72 W1. R0.5",
+                   cycle="G72 P500 Q600 U0.2 W0.1 F0.2")  # fmt: skip
+    found = coded(check(x_back, dialect), "cycle-shape")
+    assert [at(d)[3] for d in found] == ["warning"] and "(alarm 329)" in found[0].message
+    z_back = shape("N500 G00 Z-20.", "G01 X30. Z-10.", "X20. Z-15.", "N600 X0 Z2.", first="G72 W1. R0.5",
+                   cycle="G72 P500 Q600 U0.2 W0.1 F0.2")  # fmt: skip
+    found = coded(check(z_back, dialect), "cycle-shape")
+    assert [at(d)[3] for d in found] == ["warning"] and "(alarm 64)" in found[0].message

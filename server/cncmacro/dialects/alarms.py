@@ -78,7 +78,7 @@ ALARMS: dict[int, AlarmDoc] = {
             THREAD_CORNER, "chamfering or corner R in a thread cutting block", "螺纹切削程序段中指令了倒角或拐角R"
         ),
         AlarmDoc(CYCLE_P_Q_MISSING, "P or Q is not in the multiple repetitive cycle block", "复合循环程序段中没有P或Q"),
-        AlarmDoc(CYCLE_BAD_VALUE, "illegal command in a multiple repetitive cycle", "复合循环中的指令不当"),
+        AlarmDoc(CYCLE_BAD_VALUE, "illegal depth of cut in the rough cutting cycle", "粗车循环的切削量不当"),
         AlarmDoc(
             CYCLE_BLOCK_NOT_FOUND, "the block of the specified sequence number is not found", "未找到指定顺序号的程序段"
         ),
@@ -93,24 +93,24 @@ ALARMS: dict[int, AlarmDoc] = {
         AlarmDoc(
             SHAPE_LAST_BLOCK, "the last block of the shape program is an illegal command", "形状程序的最后一段指令不当"
         ),
-        AlarmDoc(
-            TOOL_ANGLE, "illegal command in the threading cycle (tool tip angle)", "螺纹切削循环指令不当（刀尖角度）"
-        ),
+        AlarmDoc(TOOL_ANGLE, "illegal tool nose angle in the threading cycle", "螺纹切削循环中的刀尖角度不当"),
         AlarmDoc(
             THREAD_MIN_DEPTH,
-            "illegal command in the threading cycle (minimum depth of cut larger than the thread height)",
-            "螺纹切削循环指令不当（最小切深大于螺纹牙高）",
+            "illegal depth of cut in the threading cycle (the minimum depth above the thread height)",
+            "螺纹切削循环中的切削量不当（最小切深大于螺纹牙高）",
         ),
         AlarmDoc(
             THREAD_DEPTH,
-            "illegal command in the threading cycle (thread height or depth of cut zero or negative)",
-            "螺纹切削循环指令不当（牙高或切深为零或负值）",
+            "illegal thread command in the threading cycle (height or depth of cut zero or negative)",
+            "螺纹切削循环中的螺纹指令不当（牙高或切深为零或负值）",
         ),
         AlarmDoc(
             GROOVE_RELIEF, "illegal relief amount in the drilling cycle (G74/G75)", "钻孔循环（G74/G75）的退刀量不当"
         ),
         AlarmDoc(
-            GROOVE_END_POINT, "illegal end point in the drilling cycle (G74/G75)", "钻孔循环（G74/G75）的终点不当"
+            GROOVE_END_POINT,
+            "illegal end point command in the drilling cycle (G74/G75)",
+            "钻孔循环（G74/G75）的终点不当",
         ),
         AlarmDoc(
             GROOVE_AMOUNT,
@@ -122,7 +122,7 @@ ALARMS: dict[int, AlarmDoc] = {
             "illegal repeat count in the pattern repeating cycle (G73)",
             "封闭切削循环（G73）的重复次数不当",
         ),
-        AlarmDoc(SHAPE_PAST_START, "the finishing shape goes past the starting point", "精加工形状超出了起点"),
+        AlarmDoc(SHAPE_PAST_START, "the finishing shape goes over the starting point", "精加工形状超出了循环起点"),
         AlarmDoc(SHAPE_COMMAND, "unavailable command in the shape program", "形状程序中有不可用的指令"),
         AlarmDoc(
             SHAPE_NOT_MONOTONE_X,

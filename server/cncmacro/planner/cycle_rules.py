@@ -41,10 +41,11 @@ Step = tuple[float, float, float]
 
 @dataclass(frozen=True, slots=True)
 class CycleFinding:
-    """What a control says of a cycle: its alarm, the finding's kind, the word it is about (for
-    the static check's mark; None for the block), the message, and whether it is sure."""
+    """What a control says of a cycle: its alarm (None where none is documented), the finding's
+    kind, the word it is about (for the static check's mark; None for the block), the message,
+    and whether it is sure (a sure finding always has its alarm)."""
 
-    alarm: int
+    alarm: int | None
     kind: str
     letter: str | None
     message: Detail
@@ -161,6 +162,12 @@ def block_findings(
     return out
 
 
+def _monotone_alarm(axis: str) -> int:
+    """The alarm of a shape that is not monotone along ``axis``: PS0064 for the plane's first
+    axis (Z in the lathe's ZX plane), PS0329 for its second (X), by FANUC's alarm list."""
+    return A.SHAPE_NOT_MONOTONE if axis == "Z" else A.SHAPE_NOT_MONOTONE_X
+
+
 def check_on(rules: LatheCycleRules, words: dict[str, float], machine_checks: bool) -> bool:
     """Whether the control checks that a G71/G72 shape is monotone: the machine file says so,
     or the profile's check word is 1 in the cycle block (GSK980TDi: K1)."""
@@ -227,7 +234,7 @@ def shape_findings(
         how_zh = f"警告：系统只在{switch_zh}或机床文件打开检查时才检查此项"
     turns, at = _turns(along[1:])
     if at is not None:
-        out.append(CycleFinding(A.SHAPE_NOT_MONOTONE, MONOTONE, None,
+        out.append(CycleFinding(_monotone_alarm(along_name), MONOTONE, None,
                                 detail(f"{c}: the shape turns back along {along_name} at its move {at + 1}; "
                                        f"{along_name} must only increase or only decrease ({how})",
                                        f"{c}：形状在第 {at + 1} 个移动处沿 {along_name} 折返；"
@@ -235,7 +242,7 @@ def shape_findings(
                                 sure))  # fmt: skip
     turns, at = _turns(across[1:])
     if not type_two and at is not None:
-        out.append(CycleFinding(A.SHAPE_NOT_MONOTONE_X, MONOTONE, None,
+        out.append(CycleFinding(_monotone_alarm(across_name), MONOTONE, None,
                                 detail(f"{c}: the type I shape turns back along {across_name} at its move {at + 1}; "
                                        f"a pocket needs type II (name both axes in its first block) ({how})",
                                        f"{c}：I 型形状在第 {at + 1} 个移动处沿 {across_name} 折返；"
@@ -243,7 +250,7 @@ def shape_findings(
                                 sure))  # fmt: skip
     pockets = (turns + 1) // 2
     if type_two and pockets > rules.pockets:
-        out.append(CycleFinding(A.CYCLE_BAD_VALUE, POCKETS, None,
+        out.append(CycleFinding(None, POCKETS, None,
                                 detail(f"{c}: the type II shape has {pockets} pockets, more than the {rules.pockets} "
                                        "the control takes",
                                        f"{c}：II 型形状有 {pockets} 个凹槽，超过系统允许的 {rules.pockets} 个"),
@@ -267,7 +274,7 @@ def _report(p: Planner, found: list[CycleFinding], subject: str) -> None:
     """Stop with the first sure finding; note the others (warnings) and go on. ``subject`` is
     the diagnostic's (``cycle-block`` or ``cycle-shape``, analysis/codes.py)."""
     for f in found:
-        if f.sure:
+        if f.sure and f.alarm is not None:
             raise MacroAlarm(f.alarm, f.message, subject)
     for f in found:
         p.host.note("cycle", f.message, None, subject)
