@@ -142,6 +142,7 @@ def test_10_5_a_type_i_pocket_is_a_ps0329_warning_and_type_ii_is_legal(dialect: 
     on = MachineSettings(shape_monotone_check=True)
     assert findings(shape("N10 G00 X20. W0", *body), dialect, "cycle-shape", settings=on) == []
     assert alarm(type_one, dialect, shape_monotone_check=True) == (329, 9)
+    assert run(shape("N10 G00 X20. W0", *body), dialect, shape_monotone_check=True).status == "completed"
 
 
 def test_10_5_more_pockets_than_the_profile_takes_is_a_warning() -> None:
@@ -308,3 +309,42 @@ def test_10_5_g72s_shape_turning_back_along_x_is_ps0329_and_along_z_ps0064(diale
                    cycle="G72 P500 Q600 U0.2 W0.1 F0.2")  # fmt: skip
     found = coded(check(z_back, dialect), "cycle-shape")
     assert [at(d)[3] for d in found] == ["warning"] and "(alarm 64)" in found[0].message
+
+
+RUN_CASES = [
+    # (what, program lines after "O0001", alarm, 1-based line): each value comes from #1, so only the run sees it
+    ("G73 passes", ["#1=0", "G00 X45. Z2.", "G73 U3. W0 R#1", "G73 P10 Q20 U0.2 F0.2", *TURNING], 321, 4),
+    ("G76 minimum depth", ["#1=1500", "G00 X32. Z5.", "G76 P010060 Q#1 R0.05", "G76 X27.4 Z-30. P1300 Q400 F2."],
+     316, 5),
+    ("G75 zero step", ["#1=0", "G00 X42. Z2.", "G75 R0.5", "G75 X20. Z-20. P500 Q#1 F0.05"], 319, 5),
+    ("G76 first depth", ["#1=-0.4", "G00 X32. Z5.", "G76 P010060 Q100 R0.05", "G76 X27.4 Z-30. P1300 Q#1 F2."],
+     317, 5),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("dialect", LATHES)
+@pytest.mark.parametrize(("what", "body", "number", "line"), RUN_CASES, ids=[c[0] for c in RUN_CASES])
+def test_10_5_a_value_from_a_variable_is_found_at_run_time(
+    dialect: str, what: str, body: list[str], number: int, line: int
+) -> None:
+    text = lines("O0001", *body, "M30")
+    assert findings(text, dialect, "cycle-block") == []  # nothing the text alone shows
+    assert alarm(text, dialect) == (number, line)
+
+
+def test_10_5_a_g76_tool_angle_from_a_variable_is_ps0315_at_run_time_on_fanuc() -> None:
+    text = lines("O0001", "#1=20045", "G00 X32. Z5.", "G76 P#1 Q100 R0.05", "G76 X27.4 Z-30. P1300 Q400 F2.", "M30")
+    assert alarm(text, "fanuc-0i-lathe") == (315, 4)
+    assert run(text, "gsk980tdi").status == "completed"
+
+
+@pytest.mark.parametrize("dialect", LATHES)
+def test_10_5_shape_warnings_from_variables_are_noted_by_the_run(dialect: str, tmp_path: Path) -> None:
+    # #1 = 25: X 20 -> 30 -> 25 is a type I pocket (PS0329); #2 = 44 takes the shape past the start X42 (PS0322)
+    text = lines("O0001", "#1=25.", "#2=44.", "G00 X42. Z2.", "G71 U1. R0.5", "G71 P10 Q20 U0.2 W0.1 F0.2",
+                 "N10 G00 X20.", "G01 Z-10.", "X30. Z-20.", "X#1 Z-30.", "N20 X#2 Z-35.", "M30")  # fmt: skip
+    assert coded(check(text, dialect), "cycle-shape") == []
+    found = [d for d in analyse_files(tmp_path, {"MAIN.nc": text}, dialect) if d.code == "cycle-shape"]
+    # both in one finding of the cycle block (one finding of a code per line)
+    assert [(d.line + 1, d.severity) for d in found] == [(6, "warning")]
+    assert "type I shape turns back along X" in found[0].message and "past the start point" in found[0].message

@@ -271,13 +271,15 @@ def shape_findings(
 
 # ---------------------------------------------------------------- at run time
 def _report(p: Planner, found: list[CycleFinding], subject: str) -> None:
-    """Stop with the first sure finding; note the others (warnings) and go on. ``subject`` is
-    the diagnostic's (``cycle-block`` or ``cycle-shape``, analysis/codes.py)."""
+    """Stop with the first sure finding; note the others (warnings), together, and go on.
+    ``subject`` is the diagnostic's (``cycle-block`` or ``cycle-shape``, analysis/codes.py)."""
     for f in found:
         if f.sure and f.alarm is not None:
             raise MacroAlarm(f.alarm, f.message, subject)
-    for f in found:
-        p.host.note("cycle", f.message, None, subject)
+    if found:  # one note: the analysis shows one finding of a code per line
+        en = "; ".join(str(f.message) for f in found)
+        zh = "；".join(f.message.zh for f in found)
+        p.host.note("cycle", detail(en, zh), None, subject)
 
 
 def check_cycle_block(p: Planner, g: float, words: dict[str, float]) -> None:
