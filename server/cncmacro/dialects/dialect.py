@@ -17,6 +17,7 @@ from typing import Any
 from ..bilingual import Detail, detail
 from .cycle_words import CycleWords
 from .drill_cycles import DrillCycle
+from .lathe_cycle_rules import LatheCycleRules
 from .tables import CodeDoc, CommonRange, FunctionDoc, LatheOffsets, ProgramDoc, SystemVariable, SystemVariableName
 from .timing import Timing
 from .turning_cycles import SingleCycle
@@ -164,6 +165,9 @@ class Dialect:
     # their first and second blocks, G90/G92/G94, G32, G50, G96/G97; a mill's drilling cycles),
     # for the editor's hover, signature help and completion
     cycle_words: dict[float, CycleWords] = field(default_factory=dict)
+    # §10.5 what the control refuses in its multiple repetitive cycles G70–G76
+    # (lathe_cycle_rules.py); None on a mill, whose G73/G74/G76 are drilling cycles
+    lathe_cycles: LatheCycleRules | None = None
 
     # what the machine takes time for: rapid rates, tool change, M codes, dwell units (timing.py;
     # the cycle time, planner/cycle_time.py)

@@ -34,6 +34,8 @@ if TYPE_CHECKING:
 ROUGHING = frozenset({71.0, 72.0, 73.0})
 FINISHING = 70.0
 SHAPE_CODES = ROUGHING | {FINISHING}
+# the cycles whose blocks the control checks (cycle_rules.py), planned or not
+CHECKED_CYCLES = SHAPE_CODES | {74.0, 75.0, 76.0}
 # G71–G73's own words: in their blocks U and W are parameters (depths, allowances), never moves
 _PARAMETER_UW = SHAPE_CODES
 
@@ -51,7 +53,8 @@ class ShapeCall(NamedTuple):
 class ShapeReading:
     """A shape cycle under way: its code, block (file, line), words, where the tool started,
     whether the shape is being read (G71–G73) rather than run (G70), the codes its reading set
-    aside, and the segments read so far (mode, start, end, centre), in work coordinates."""
+    aside, the segments read so far (mode, start, end, centre), in work coordinates, and the axes
+    (by index) its first block with an axis word names (both X and Z: a type II shape)."""
 
     code: float
     file: str
@@ -63,10 +66,11 @@ class ShapeReading:
     segments: list[tuple[float, tuple[float, ...], tuple[float, ...], tuple[float, ...] | None]] = field(
         default_factory=list
     )
+    first_axes: frozenset[int] | None = None
 
     def copy(self) -> ShapeReading:
         return ShapeReading(self.code, self.file, self.line, dict(self.words), self.start, self.reading,
-                            dict(self.kept_codes), list(self.segments))  # fmt: skip
+                            dict(self.kept_codes), list(self.segments), self.first_axes)  # fmt: skip
 
 
 # code -> the planner of a cycle's second block: (planner, block words with U/W, file, line, end point)
@@ -101,14 +105,16 @@ def lathe_cycle(
             p.cycle_params[g] = words
         return False, None
     plan = MULTIPLE_CYCLES.get(g)
-    if plan is not None:
+    if plan is not None or g in CHECKED_CYCLES:
         if not axes and not inc:  # the first block: its parameters
+            check_cycle_block(p, g, dict(other))
             p.cycle_params[g] = dict(other)
             return False, None
         words = block_words(p, axes, inc, other)
         check_cycle_block(p, g, words)
-        plan(p, words, file, line, p.target(axes, inc))
-        return True, None
+        if plan is not None:
+            plan(p, words, file, line, p.target(axes, inc))
+            return True, None
     p.turning_cycle(file, line, g, p.target(axes, inc))
     return bool(axes or inc), None
 

@@ -137,6 +137,8 @@ class Planner:
         mode = modal["motion"]
         if mode in self.cycle_codes or (modal["canned"] != 80.0 and not self.lathe):
             return self._cycle_fallback(plan, file, line)
+        if self.shape is not None:
+            self._shape_axes(frozenset(i for i, _ in axes) | frozenset(i for i, _ in inc))
         start = self.pos
         target = start[:]
         if self.lathe or modal["distance"] == 90.0:
@@ -152,6 +154,13 @@ class Planner:
         centre = self.arc_centre(mode, start, target, dict(extra)) if extra and mode in ARC_MODES else None
         self.record(file, line, mode, tuple(start), tuple(target), centre)
         return not self._call_needs_distance or target != start or centre is not None
+
+    def _shape_axes(self, named: frozenset[int]) -> None:
+        """A block of a lathe cycle's shape names the axes ``named`` (by index): the first such
+        block says whether the shape is type I or II (lathe_cycles.py)."""
+        shape = self.shape
+        if shape is not None and shape.first_axes is None:
+            shape.first_axes = named
 
     def _cycle_fallback(self, plan: PlainRun, file: str, line: int) -> bool:
         inverse = {v: k for k, v in self.dialect.incremental_letters.items()}
@@ -194,6 +203,8 @@ class Planner:
         canned = self.modal.get("canned", 80.0)
         if not axes and not incremental:
             return self._full_circle(mode, canned, other, file, line), None
+        if self.shape is not None:
+            self._shape_axes(frozenset(axes) | frozenset(incremental))
         target = self.target(axes, incremental)
         if not self.lathe and canned != 80.0:
             drill_block(self, canned, axes, incremental, other, file, line)  # drill_cycles.py

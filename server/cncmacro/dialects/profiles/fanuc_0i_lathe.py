@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..fanuc_lathe_data import LATHE_OFFSETS
+from ..lathe_cycle_rules import FANUC_LATHE_RULES
 from ..lathe_cycle_words import FANUC_LATHE_CYCLE_WORDS
 from ..timing import Timing
 from ..turning_cycles import LATHE_SINGLE_CYCLES
@@ -36,6 +37,7 @@ PROFILE = replace(
     drill_cycles={},
     single_cycles=LATHE_SINGLE_CYCLES,
     cycle_words=FANUC_LATHE_CYCLE_WORDS,
+    lathe_cycles=FANUC_LATHE_RULES,
     # typical of a small slant-bed lathe; a machine file gives the machine's own (parameter 1420)
     timing=Timing(
         rapid={"X": 12000.0, "Z": 15000.0, "C": 10800.0, "Y": 8000.0},
