@@ -18,7 +18,7 @@ from ..bilingual import Detail, detail
 from .drill_cycles import DrillCycle
 from .tables import CodeDoc, CommonRange, FunctionDoc, ProgramDoc, SystemVariable, SystemVariableName
 from .timing import Timing
-from .turning_cycles import SingleCycle
+from .turning_cycles import LatheCycles, SingleCycle
 
 # G65 argument specification I (docs/semantics.md §5): letter -> local variable number.
 ARGUMENTS_I = {
@@ -145,6 +145,9 @@ class Dialect:
     # whether it comes out at rapid (turning_cycles.py); a turning cycle not listed is drawn as
     # one cut from where it starts to its end point
     single_cycles: dict[float, SingleCycle] = field(default_factory=dict)
+    # §10.3 a lathe's threads and grooving cycles as its manual has them: the thread codes, the
+    # word of a variable lead, whether G74/G75's X amounts are diameters (turning_cycles.py)
+    lathe_cycles: LatheCycles = field(default_factory=LatheCycles)
 
     # what the machine takes time for: rapid rates, tool change, M codes, dwell units (timing.py;
     # the cycle time, planner/cycle_time.py)

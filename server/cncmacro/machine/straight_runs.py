@@ -19,9 +19,10 @@ import math
 from typing import TYPE_CHECKING
 
 from ..planner.arcs import ARC_MODES
-from ..planner.cycle_time import INCH
+from ..planner.cycle_time import INCH, SPEED_CLAMP
 from ..planner.moves import Move
 from ..planner.plain_words import NOT_PLAIN, PLAIN_ARC_LETTERS, PLAIN_F, PLAIN_G, PLAIN_INCREMENTAL, PLAIN_S
+from ..planner.turning_cycles import forget_single_cycle
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile
@@ -29,7 +30,6 @@ if TYPE_CHECKING:
     from .observer import RunObserver
 
 _new_move = tuple.__new__
-_SECONDS_PER_MINUTE = 60.0
 
 
 def run_straight(
@@ -55,6 +55,7 @@ def run_straight(
     g_words = p.plain.g_words()
     lathe = p.lathe
     cycles = p.cycle_codes
+    lead_modes = p.times.variable_lead  # a variable-lead thread reads its own word: the compiled path
     modal = p.modal
     codes = p.codes
     clock = p.clock
@@ -149,11 +150,15 @@ def run_straight(
         else:
             if arc is not None and not moved and (mode if new_mode is None else new_mode) in ARC_MODES:
                 break  # I, J, K alone are a full circle, R alone no move: the compiled path decides
+            if moved and (mode if new_mode is None else new_mode) in lead_modes:
+                break
             if new_mode is not None:
                 if moved and new_mode in cycles:
                     break  # a cycle decides this line: the compiled path runs it
                 if new_mode != mode:
                     mode = modal["motion"] = new_mode
+                    if lathe and new_mode not in p.dialect.single_cycles:
+                        forget_single_cycle(p)  # a single cycle's modal words (planner/turning_cycles.py)
                 if canned != 80.0 and not lathe:
                     canned = modal["canned"] = 80.0
             elif moved and (mode in cycles or (canned != 80.0 and not lathe)):
@@ -191,8 +196,8 @@ def run_straight(
                         length = dist(start, end)
                     else:
                         length = times.arc_length(mode, plane, start, end, centre)
-                    rate = times.feed_rate(f, True, codes.get("S") or 0.0, css, start, end, unit) if per_rev else f
-                    seconds = length / rate * _SECONDS_PER_MINUTE if rate > 0.0 else 0.0
+                    seconds = times.feed_seconds(mode, length, f, per_rev, codes.get("S") or 0.0, css,
+                                                 codes.get(SPEED_CLAMP), start, end, unit)  # fmt: skip
                     cut += length * unit
                 clock += seconds
                 if append is not None:

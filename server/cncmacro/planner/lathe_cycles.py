@@ -13,7 +13,8 @@ what each block of G70–G76 means and the moves it makes.
 - **G70 P Q** runs the shape blocks as they are written, with their own F, S and T, then
   returns to the start point at rapid.
 - **G74, G75, G76** and the single cycles G90, G92, G94 are planned by their own modules
-  (``MULTIPLE_CYCLES``; turning_cycles.py); a code no module plans yet is recorded as one cut.
+  (``MULTIPLE_CYCLES``: groove_cycles.py, thread_cycles.py; turning_cycles.py); a code no
+  module plans is recorded as one cut.
 
 Every move of a cycle is recorded with the cycle block's line and ``pass_of`` (its code), so
 the toolpath view draws each pass and the debugger knows which pass it is on.
@@ -26,7 +27,9 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, NamedTuple
 
 from .cycle_rules import check_cycle_block, check_shape
+from .groove_cycles import diameter_grooving, face_grooving
 from .stock_removal import Point, Segment, Step, pattern_passes, rough_passes, translate
+from .thread_cycles import multiple_thread
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -71,7 +74,11 @@ class ShapeReading:
 
 # code -> the planner of a cycle's second block: (planner, block words with U/W, file, line, end point)
 MultipleCycle = Callable[["Planner", dict[str, float], str, int, list[float]], None]
-MULTIPLE_CYCLES: dict[float, MultipleCycle] = {}
+MULTIPLE_CYCLES: dict[float, MultipleCycle] = {
+    74.0: face_grooving,  # groove_cycles.py
+    75.0: diameter_grooving,
+    76.0: multiple_thread,  # thread_cycles.py
+}
 
 
 def block_words(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]) -> dict[str, float]:
@@ -109,7 +116,7 @@ def lathe_cycle(
         check_cycle_block(p, g, words)
         plan(p, words, file, line, p.target(axes, inc))
         return True, None
-    p.turning_cycle(file, line, g, p.target(axes, inc))
+    p.turning_cycle(file, line, g, axes, inc, other)
     return bool(axes or inc), None
 
 

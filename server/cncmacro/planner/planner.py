@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING
 
 from .arcs import ARC_MODES, arc_centre, arc_planes
 from .block_words import set_codes, set_modal
-from .cycle_time import INCH, MoveTimes
+from .cycle_time import INCH, SPEED_CLAMP, MoveTimes
 from .drill_cycles import drill_block
 from .lathe_cycles import ShapeCall, ShapeReading
 from .modal_groups import extra_offset_codes, g_code_groups
@@ -32,7 +32,7 @@ from .plain_words import PlainRun, PlainWords
 from .positions import position_value
 from .probing import Probe, SkipState
 from .state import MODAL_DEFAULTS, PlannerState
-from .turning_cycles import single_cycle, turning_legs
+from .turning_cycles import forget_single_cycle, single_cycle, single_cycle_target, turning_legs
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -126,6 +126,8 @@ class Planner:
         modal = self.modal
         for group, g in modal_sets:
             modal[group] = g
+            if group == "motion" and self.cycle_params and g not in self.dialect.single_cycles:
+                forget_single_cycle(self)
         if code_sets:
             codes = self.codes
             for letter, v in code_sets:
@@ -135,7 +137,7 @@ class Planner:
                 return self._cycle_fallback(plan, file, line)
             return False
         mode = modal["motion"]
-        if mode in self.cycle_codes or (modal["canned"] != 80.0 and not self.lathe):
+        if mode in self.cycle_codes or mode in self.times.variable_lead or (modal["canned"] != 80.0 and not self.lathe):
             return self._cycle_fallback(plan, file, line)
         start = self.pos
         target = start[:]
@@ -183,8 +185,12 @@ class Planner:
             else:
                 other[letter] = v
         one = set_modal(self, gs, other)
+        if one is not None and self.lathe and one == self.dialect.coordinate_setting_code and "S" in other:
+            self.codes[SPEED_CLAMP] = other.pop("S")  # G50 S: the spindle's top speed, not a speed
         set_codes(self, other, file, line)
         if one is not None:
+            if one != 4.0 and self.cycle_params:
+                forget_single_cycle(self)
             return one_shot(self, one, axes, incremental, other, file, line)
         mode = self.modal.get("motion", 0.0)
         canned = self.modal.get("canned", 80.0)
@@ -195,11 +201,12 @@ class Planner:
             drill_block(self, canned, axes, incremental, other, file, line)  # drill_cycles.py
             return True, None
         if mode in self.cycle_codes:
-            self.turning_cycle(file, line, mode, target)
+            self.turning_cycle(file, line, mode, axes, incremental, other)
             return True, None  # a turning cycle ends where it started
         centre = self.block_arc(mode, target, other)
         moved = not self._call_needs_distance or target != self.pos or centre is not None
-        self.move(file, line, mode, target, centre)
+        lead = self.times.variable_lead.get(mode)
+        self.move(file, line, mode, target, centre, other.get(lead, 0.0) if lead else 0.0)
         return moved, None
 
     # ---------------------------------------------------------------- arcs
@@ -243,19 +250,30 @@ class Planner:
         return target
 
     def move(
-        self, file: str, line: int, mode: float, target: list[float], centre: tuple[float, ...] | None = None
+        self,
+        file: str,
+        line: int,
+        mode: float,
+        target: list[float],
+        centre: tuple[float, ...] | None = None,
+        lead_change: float = 0.0,
     ) -> None:
-        """Move to ``target`` in ``mode`` (an arc about ``centre``) and record it."""
-        self.record(file, line, mode, tuple(self.pos), tuple(target), centre)
+        """Move to ``target`` in ``mode`` (an arc about ``centre``; a variable-lead thread whose
+        lead changes by ``lead_change`` per revolution) and record it."""
+        self.record(file, line, mode, tuple(self.pos), tuple(target), centre, lead_change=lead_change)
         self.pos[:] = target
 
-    def turning_cycle(self, file: str, line: int, code: float, target: list[float]) -> None:
-        """A lathe's turning cycle to ``target``, recorded with its legs (turning_cycles.py); the
-        tool ends where it started."""
+    def turning_cycle(
+        self, file: str, line: int, code: float, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]
+    ) -> None:
+        """A lathe's turning cycle to the block's end point, recorded with its legs
+        (turning_cycles.py; a single cycle's words are modal); the tool ends where it started."""
         single = self.dialect.single_cycles.get(code)
         if single is not None:
-            single_cycle(self, file, line, code, single, target)
+            target, taper = single_cycle_target(self, code, axes, inc, other)
+            single_cycle(self, file, line, code, single, target, taper)
         else:  # timed as the one cut it is drawn as, until its passes are planned
+            target = self.target(axes, inc)
             start = tuple(self.pos)
             legs = turning_legs(None, self.axis_index, start, target)
             self.record(file, line, code, start, tuple(target), None, legs, TURNING)
@@ -271,6 +289,7 @@ class Planner:
         legs: tuple[Leg, ...] | None = None,
         cycle: str | None = None,
         pass_of: str | None = None,
+        lead_change: float = 0.0,
     ) -> None:
         """Advance the clock by the move's time, add its length to the path and record the move
         (with an arc's centre and plane, a cycle's legs, its time, the lathe cycle it is a pass
@@ -293,20 +312,27 @@ class Planner:
                 length = times.arc_length(mode, plane, start, end, centre)
             else:
                 length = times.distance(start, end)
-            rate = self.cutting_rate(feed, start, end, unit)
-            seconds = length / rate * 60.0 if rate > 0 else 0.0
+            seconds = self.feed_seconds(mode, length, feed, start, end, unit, lead_change)
             self.cut_length += length * unit
         self.clock += seconds
         if self.record_moves:
             self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre, seconds, plane, legs,
                                               cycle, pass_of)))  # fmt: skip
 
-    def cutting_rate(self, feed: float, start: Sequence[float], end: Sequence[float], unit: float) -> float:
-        """The feed of a cutting move from ``start`` to ``end`` in program units per minute:
-        F, or per revolution F times the spindle speed (``MoveTimes.feed_rate``)."""
+    def feed_seconds(self, mode: float, length: float, feed: float, start: Sequence[float], end: Sequence[float],
+                     unit: float, lead_change: float = 0.0) -> float:  # fmt: skip
+        """The seconds of a cutting move in ``mode`` from ``start`` to ``end``, ``length`` long, by
+        the feed mode, spindle speed, G96 and G50 S clamp in force (``MoveTimes.feed_seconds``)."""
         modal = self.modal
         per_rev = modal.get("feed")
-        if per_rev == 95.0 or (per_rev == 99.0 and self.lathe):
-            return self.times.feed_rate(feed, True, self.codes.get("S") or 0.0, modal.get("spindle") == 96.0,
-                                        start, end, unit)  # fmt: skip
-        return feed  # per minute (``feed_rate``)
+        codes = self.codes
+        return self.times.feed_seconds(mode, length, feed, per_rev == 95.0 or (per_rev == 99.0 and self.lathe),
+                                       codes.get("S") or 0.0, modal.get("spindle") == 96.0, codes.get(SPEED_CLAMP),
+                                       start, end, unit, lead_change)  # fmt: skip
+
+    def cutting_rate(self, feed: float, start: Sequence[float], end: Sequence[float], unit: float) -> float:
+        """The feed of a G01 from ``start`` to ``end`` in program units per minute, as
+        ``feed_seconds`` times it (a mill's drilling cycle, drill_cycles.py)."""
+        length = self.times.distance(start, end)
+        seconds = self.feed_seconds(1.0, length, feed, start, end, unit)
+        return length / seconds * 60.0 if seconds > 0.0 else 0.0
