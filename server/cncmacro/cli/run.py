@@ -244,7 +244,7 @@ def write_text(
             print(f"DPRNT  {note.message}", file=out)
         elif note.kind == "message":
             print(f"停止（{where}）：{text}" if chinese else f"stop at {where}: {text}", file=out)
-        elif note.kind in ("call", "skip"):
+        elif note.kind in ("call", "skip", "feed"):
             print(f"提示（{where}）：{text}" if chinese else f"note at {where}: {text}", file=out)
     if result.alarm is not None:
         a = result.alarm

@@ -22,6 +22,7 @@ from ..planner.arcs import ARC_MODES
 from ..planner.cycle_time import INCH, SPEED_CLAMP
 from ..planner.moves import Move
 from ..planner.plain_words import NOT_PLAIN, PLAIN_ARC_LETTERS, PLAIN_F, PLAIN_G, PLAIN_INCREMENTAL, PLAIN_S
+from ..planner.planner import FEED_HINT_GIVEN
 from ..planner.turning_cycles import forget_single_cycle
 
 if TYPE_CHECKING:
@@ -56,6 +57,7 @@ def run_straight(
     lathe = p.lathe
     cycles = p.cycle_codes
     lead_modes = p.times.variable_lead  # a variable-lead thread reads its own word: the compiled path
+    feed_hint = p.feed_hint
     modal = p.modal
     codes = p.codes
     clock = p.clock
@@ -150,8 +152,13 @@ def run_straight(
         else:
             if arc is not None and not moved and (mode if new_mode is None else new_mode) in ARC_MODES:
                 break  # I, J, K alone are a full circle, R alone no move: the compiled path decides
-            if moved and (mode if new_mode is None else new_mode) in lead_modes:
+            line_mode = mode if new_mode is None else new_mode
+            if moved and line_mode in lead_modes:
                 break
+            line_f = f if feed is None else feed
+            if (feed_hint and moved and line_mode != 0.0 and (others is not None or not per_rev)
+                    and 0.0 < line_f < 1.0 and FEED_HINT_GIVEN not in codes):  # fmt: skip
+                break  # a per-minute feed below 1: the compiled path looks at it (``feed_per_minute_hint``)
             if new_mode is not None:
                 if moved and new_mode in cycles:
                     break  # a cycle decides this line: the compiled path runs it

@@ -20,6 +20,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
+from ..bilingual import detail
 from .arcs import ARC_MODES, arc_centre, arc_planes
 from .block_words import set_codes, set_modal
 from .cycle_time import INCH, SPEED_CLAMP, MoveTimes
@@ -40,6 +41,8 @@ if TYPE_CHECKING:
     from .host import PlannerHost
 
 _new_move = tuple.__new__  # a Move without the NamedTuple constructor's keyword handling
+# the ``codes`` key set once a run has been told that its per-minute feed looks per revolution
+FEED_HINT_GIVEN = "G99-hint"
 
 
 class Planner:
@@ -82,6 +85,8 @@ class Planner:
         self._call_needs_distance = dialect.modal_call_needs_distance
         self._arc_planes = arc_planes(self.axis_index)
         self._diameter = self.axis_index.get("X", -1) if self.lathe else -1
+        # a lathe that powers on in G98 (per minute): a cutting F below 1 there lacks a G99
+        self.feed_hint = self.lathe and dialect.modal_defaults.get("feed") == 98.0
 
     # ---------------------------------------------------------------- state for the macro machine
     def read(self, source: str, param: str, default: float | None, index: int) -> float | None:
@@ -314,10 +319,30 @@ class Planner:
                 length = times.distance(start, end)
             seconds = self.feed_seconds(mode, length, feed, start, end, unit, lead_change)
             self.cut_length += length * unit
+            if self.feed_hint and 0.0 < feed < 1.0:
+                self.feed_per_minute_hint(mode, feed, line)
         self.clock += seconds
         if self.record_moves:
             self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre, seconds, plane, legs,
                                               cycle, pass_of)))  # fmt: skip
+
+    def feed_per_minute_hint(self, mode: float, feed: float, line: int) -> None:
+        """On a lathe that powers on in G98 (``feed_hint``: gsk980tdi), a cut at F below 1 under
+        G98 is a feed per revolution without its G99 (0.2 mm/min cuts nothing): a note, once a
+        run, that the analysis shows as a ``feed-per-minute`` hint (docs/semantics.md §10.4)."""
+        if self.modal.get("feed") != 98.0 or mode in self.times.thread_modes or FEED_HINT_GIVEN in self.codes:
+            return
+        self.codes[FEED_HINT_GIVEN] = 1.0
+        f = f"F{feed:g}"
+        self.host.note(
+            "feed",
+            detail(f"{f} under G98 is {feed:g} mm/min: a cutting feed below 1 per minute almost surely means per "
+                   "revolution, and this control powers on in G98 (feed per minute); add G99 before the cut",
+                   f"G98（每分钟进给）下 {f} 即 {feed:g} mm/min：每分钟进给小于 1 几乎肯定是每转进给，"
+                   "本系统上电默认为 G98，请在切削前加 G99"),
+            line,
+            "feed-per-minute",
+        )  # fmt: skip
 
     def feed_seconds(self, mode: float, length: float, feed: float, start: Sequence[float], end: Sequence[float],
                      unit: float, lead_change: float = 0.0) -> float:  # fmt: skip

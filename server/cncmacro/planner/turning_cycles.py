@@ -118,9 +118,11 @@ def single_cycle(
     scale = 2.0 if first is not None and first == p.times.diameter else 1.0  # R is a radius on X
     legs = turning_legs(cycle, p.axis_index, start, target, taper * scale)
     seconds = time_legs(p, start, legs, cycle.thread)
+    feed = p.codes.get("F") or 0.0
+    if p.feed_hint and 0.0 < feed < 1.0 and not cycle.thread:
+        p.feed_per_minute_hint(1.0, feed, line)
     if p.record_moves:
-        feed = float(p.codes.get("F") or 0.0)
-        p.moves.append(Move(file, line, code, start, tuple(target), feed, None, seconds,
+        p.moves.append(Move(file, line, code, start, tuple(target), float(feed), None, seconds,
                             p.modal.get("plane", 17.0), legs, TURNING))  # fmt: skip
 
 
