@@ -184,7 +184,7 @@ def result_json(result: RunResult, axes: tuple[str, ...], locale: str | None = N
         "variables": {str(k): v for k, v in result.variables.items()},
         "moves": _moves_json(result, axes),
         "output": result.output,
-        "messages": [in_language(n.message, chinese) for n in result.notes if n.kind in ("message", "call")],
+        "messages": [in_language(n.message, chinese) for n in result.notes if n.kind in ("message", "call", "feed")],
     }
 
 
