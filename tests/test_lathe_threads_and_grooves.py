@@ -162,9 +162,12 @@ def test_g96_turns_the_spindle_by_the_diameter_along_the_cut_clamped_by_g50_s(tm
 
 @pytest.mark.parametrize("profile", PROFILES)
 def test_g50_s_is_the_spindle_clamp_not_a_spindle_speed(tmp_path: Path, profile: str) -> None:
-    # G97 S800, then G50 S2500: the spindle still turns at 800; 10 mm at 0.2 x 800 = 160 mm/min = 3.75 s
-    result = run_lathe(tmp_path, profile, "G97 S800 M03", "G50 S2500", "G00 X40. Z0", "G99 G01 Z-10. F0.2", "M30")
+    # G97 S800, then G50 S2500: the spindle still turns at 800; 10 mm at 0.2 x 800 = 160 mm/min = 3.75 s;
+    # the S code (#4119) still reads 800, and the surface speed once G96 S180 is given
+    result = run_lathe(tmp_path, profile, "G97 S800 M03", "G50 S2500", "#100=#4119", "G00 X40. Z0",
+                       "G99 G01 Z-10. F0.2", "G96 S180", "#101=#4119", "M30")  # fmt: skip
     assert result["moves"][-1]["time"] == pytest.approx(3.75, rel=0.001)
+    assert (result["variables"]["100"], result["variables"]["101"]) == (800.0, 180.0)
 
 
 @pytest.mark.parametrize("profile", PROFILES)
