@@ -277,7 +277,7 @@ class Planner:
         if single is not None:
             target, taper = single_cycle_target(self, code, axes, inc, other)
             single_cycle(self, file, line, code, single, target, taper)
-        else:  # timed as the one cut it is drawn as, until its passes are planned
+        else:  # a cycle no module plans (gsk980tdi's drilling cycles): timed as the one cut it is drawn as
             target = self.target(axes, inc)
             start = tuple(self.pos)
             legs = turning_legs(None, self.axis_index, start, target)

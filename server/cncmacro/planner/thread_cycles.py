@@ -25,12 +25,11 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from .turning_cycles import in_increments
+from .turning_cycles import THREAD_MODE, in_increments
 
 if TYPE_CHECKING:
     from .planner import Planner
 
-THREAD_MODE = 32.0  # each pass's cut is a thread, timed as G32 (cycle_time.py)
 _MOST_PASSES = 9999  # a Δd too small for k is cut in this many roughing passes at most
 
 

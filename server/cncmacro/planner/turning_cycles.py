@@ -7,7 +7,7 @@ the first (at the feed, or at rapid for a thread's pull-out) and returns at rapi
 started. R tapers the cut: it is where the cut starts less where it ends, along the first axis
 (G90, G92: a radius, so the cut starts at X + 2R; G94: along Z, at Z + R).
 
-X (U), Z (W) and R are modal (``single_cycle_words``): a following block of the cycle that
+X (U), Z (W) and R are modal (``single_cycle_target``): a following block of the cycle that
 gives only X (or only Z) cuts again to the other coordinate of the last cycle block, with its R
 (and F), until a G code of the motion group other than these cycles or a one-shot code other
 than G04 clears them (``forget_single_cycle``; FANUC 0i-TF and GSK980TDi: the single cycles'
@@ -32,6 +32,8 @@ if TYPE_CHECKING:
 
 # the ``Planner.cycle_params`` key of the modal words of the single cycle in force
 SINGLE_CYCLE_WORDS = -1.0
+# the mode a cycle's thread cut is timed and drawn as (G32 on both lathe profiles; cycle_time.py)
+THREAD_MODE = 32.0
 
 
 def turning_legs(
@@ -64,7 +66,7 @@ def time_legs(p: Planner, start: tuple[float, ...], legs: tuple[Leg, ...], threa
     times = p.times
     unit = INCH if p.modal.get("units") == 20.0 else 1.0
     feed = p.codes.get("F") or 0.0
-    mode = 32.0 if thread else 1.0
+    mode = THREAD_MODE if thread else 1.0
     seconds = 0.0
     at: tuple[float, ...] = start
     for leg in legs:
