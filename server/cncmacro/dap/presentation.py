@@ -59,6 +59,11 @@ def frame_name(frames: list[Frame], level: int) -> str:
     f = frames[level]
     if level == 0:
         return f"{f.name} (main)"
+    if f.end_line >= 0:  # a lathe cycle's finishing shape
+        return (
+            f"{f.name} ({f.kind} shape N{f.found.file.program.blocks[f.start_pc].label}–"
+            f"N{f.found.file.program.blocks[f.end_line].label})"
+        )
     return f"{f.name} ({f.kind}, level {level})"
 
 

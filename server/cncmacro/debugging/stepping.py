@@ -1,6 +1,8 @@
 """Running the machine until the debugger should stop: continue, step in, over and out.
 
-One step is one block. Step in runs one block (into a call). Step over runs blocks until the
+One step is one block. Step in runs one block (into a call). A lathe roughing cycle (G71–G73
+P Q) is one step with its shape: while the planner reads the shape no step or breakpoint stops
+in it; a G70 runs its shape as a level that step in enters (docs/semantics.md §10.2). Step over runs blocks until the
 program level is back where it started (a G65, M98 or G66 call runs to completion). Step out
 runs until the level is above where it started (past the M99). Any of them stops at a
 breakpoint, an alarm, an ``M00``/``#3006`` pause, the block budget, the end of the program
@@ -158,6 +160,11 @@ class Stepper:
             now = len(m.frames)
             if until is not None and until(m):
                 return Stop("goto")
+            if _reading_shape(m):  # a roughing cycle reads its shape: one step, no stop inside
+                stop = self._status_stop()
+                if stop is not None:
+                    return stop
+                continue
             hit = self.breakpoints.check(m, now > before)  # counts the visit, also when a step lands here
             stop = self._status_stop()
             if stop is not None:
@@ -205,6 +212,8 @@ class Stepper:
         if m.status == RunStatus.COMPLETED and _end_code(m) is None:
             back = 2  # running off the file's end (or into the next O header) counted as a block
         if self._back(m.blocks - back) is None:
+            while _reading_shape(m) and self._back(m.blocks - 1) is None:
+                pass  # a roughing cycle was one step forward: back to its block
             return Stop("step")
         return Stop("entry", pick(self.locale, "the start of the kept history", "保留的历史的起点"))
 
@@ -302,3 +311,9 @@ def last_line_run(m: Machine) -> int:
 def move_line(mv: Move, axes: tuple[str, ...], shown: list[int]) -> str:
     """An echoed move with the axes in ``shown`` (those the program has commanded so far)."""
     return f"{Path(mv.file).name}:{mv.line + 1} {mv.text(axes, shown)}\n"
+
+
+def _reading_shape(m: Machine) -> bool:
+    """Whether a lathe roughing cycle is reading its shape (no step stops inside it)."""
+    shape = m.planner.shape
+    return shape is not None and shape.reading

@@ -15,8 +15,9 @@ from functools import cache
 from typing import Any
 
 from ..bilingual import Detail, detail
+from .cycle_words import CycleWords
 from .drill_cycles import DrillCycle
-from .tables import CodeDoc, CommonRange, FunctionDoc, ProgramDoc, SystemVariable, SystemVariableName
+from .tables import CodeDoc, CommonRange, FunctionDoc, LatheOffsets, ProgramDoc, SystemVariable, SystemVariableName
 from .timing import Timing
 from .turning_cycles import LatheCycles, SingleCycle
 
@@ -25,6 +26,11 @@ ARGUMENTS_I = {
     "A": 1, "B": 2, "C": 3, "I": 4, "J": 5, "K": 6, "D": 7, "E": 8, "F": 9, "H": 11, "M": 13,
     "Q": 17, "R": 18, "S": 19, "T": 20, "U": 21, "V": 22, "W": 23, "X": 24, "Y": 25, "Z": 26,
 }  # fmt: skip
+
+# the GSK980TDi's tool offsets (seed 000 §3.28.1), the default of ``Dialect.lathe_offsets``
+GSK_LATHE_OFFSETS = LatheOffsets(
+    axes=(("X", 2700, 2000), ("Z", 2800, 2100), ("Y", 2450, 2400)), radius=(2900, 2200), tip=2300
+)
 
 
 @dataclass(frozen=True)
@@ -115,6 +121,15 @@ class Dialect:
     # geometry and wear; G10 L10, L11, L12 and L13 write them in that order. FANUC memory C keeps
     # them at #11001, #10001, #13001, #12001; Haas at #2001, #2201, #2401, #2601.
     tool_offset_bases: tuple[int, int, int, int] = (11000, 10000, 13000, 12000)
+    # §10.1 where a lathe keeps its tool offsets (X, Z, Y geometry and wear, nose radius, tip):
+    # the T code's offset number selects them and G10 P writes them. The GSK980TDi keeps them at
+    # #2001…/#2701… (the default); the FANUC 0i-TF at #10001…/#15001…, with #2001… as the short
+    # numbers of offsets 1-64
+    lathe_offsets: LatheOffsets = GSK_LATHE_OFFSETS
+
+    # §10.1 the same control as a lathe, which a machine file's ``lathe = true`` selects (the 30i
+    # lathes: ``fanuc-30i``'s); None: the profile has no lathe form
+    lathe_variant: Dialect | None = None
 
     # §2 system variable names [#_NAME] and [#_NAME[n]] (the data module's SYSTEM_VARIABLE_NAMES)
     variable_names: bool = False
@@ -148,6 +163,10 @@ class Dialect:
     # §10.3 a lathe's threads and grooving cycles as its manual has them: the thread codes, the
     # word of a variable lead, whether G74/G75's X amounts are diameters (turning_cycles.py)
     lathe_cycles: LatheCycles = field(default_factory=LatheCycles)
+    # what each letter of a cycle block means, by G code (cycle_words.py: a lathe's G70–G76 with
+    # their first and second blocks, G90/G92/G94, G32, G50, G96/G97; a mill's drilling cycles),
+    # for the editor's hover, signature help and completion
+    cycle_words: dict[float, CycleWords] = field(default_factory=dict)
 
     # what the machine takes time for: rapid rates, tool change, M codes, dwell units (timing.py;
     # the cycle time, planner/cycle_time.py)

@@ -79,6 +79,18 @@ class SystemVariable:
 
 
 @dataclass(frozen=True, slots=True)
+class LatheOffsets:
+    """Where a lathe keeps tool offset n (#base + n): ``axes`` holds (axis letter, geometry base,
+    wear base) for each axis the offset shifts, ``radius`` the (geometry, wear) bases of the tool
+    nose radius and ``tip`` the base of the imaginary tool nose direction. A T code's offset number
+    selects them (planner/tool_offsets.py); ``G10 P`` writes them (planner/one_shot.py)."""
+
+    axes: tuple[tuple[str, int, int], ...]
+    radius: tuple[int, int]
+    tip: int
+
+
+@dataclass(frozen=True, slots=True)
 class CommonRange:
     """A range of common variables ``#first``–``#last``; ``persistent`` ones keep their values
     when the power is off (FANUC #500–#999), the others are cleared (#100–#499)."""

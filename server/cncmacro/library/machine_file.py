@@ -129,6 +129,7 @@ class MachineSettings:
     severity: dict[str, str] = field(default_factory=dict)
     folder: str | None = None
     timing: TimingChanges = field(default_factory=TimingChanges)  # [timing]: changes to the profile's
+    lathe: bool = False  # the profile's lathe form (``lathe = true``: fanuc-30i's lathes)
 
     def with_presets(self, presets: dict[int, float]) -> MachineSettings:
         """These settings with more preset variables (later ones win)."""
@@ -177,6 +178,7 @@ class _SettingsFields(TypedDict, total=False):
     severity: dict[str, str]
     folder: str | None
     timing: TimingChanges
+    lathe: bool
 
 
 # what makes the error for a key of a mapping: the key and what is wrong with its value
@@ -291,7 +293,7 @@ def settings_from_mapping(
 
     known = {"base", "dialect", "common", "program_digits", "programs_on_control", "system_variables",
              "decimal_point", "block_delete", "persistent_file", "max_blocks", "date", "time",
-             "variables", "calls", "skip", "severity", "timing"}  # fmt: skip
+             "variables", "calls", "skip", "severity", "timing", "lathe"}  # fmt: skip
     for key in data:
         if key not in known:
             names = ", ".join(sorted(known))
@@ -309,6 +311,8 @@ def settings_from_mapping(
                 raise fail(key, detail(f"must be {choices_text()} (not {_brief(value)})",
                                        f"必须是 {choices_text(zh=True)}（不能是 {_brief(value)}）"))  # fmt: skip
             kw["dialect"] = d
+    if "lathe" in data:
+        kw["lathe"] = _lathe(data["lathe"], str(kw.get("dialect") or DEFAULT_DIALECT), fail)
     if "common" in data:
         kw["common"] = _common(data["common"], str(kw.get("dialect") or DEFAULT_DIALECT), fail)
     if "program_digits" in data:
@@ -327,10 +331,7 @@ def settings_from_mapping(
                                                '必须是 "calculator" 或 "increment"'))  # fmt: skip
         kw["decimal_point"] = point
     if "block_delete" in data:
-        block_delete = data["block_delete"]
-        if not isinstance(block_delete, bool):
-            raise fail("block_delete", detail("must be true or false", "必须是 true 或 false"))
-        kw["block_delete"] = block_delete
+        kw["block_delete"] = _boolean(data["block_delete"], "block_delete", fail)
     if "persistent_file" in data:
         pf = data["persistent_file"]
         if (not isinstance(pf, str) or not pf or "\0" in pf or Path(pf).is_absolute()
@@ -355,6 +356,28 @@ def settings_from_mapping(
     if "timing" in data:
         kw["timing"] = timing_changes(data["timing"], fail)
     return MachineSettings(**kw)
+
+
+def _boolean(value: object, key: str, fail: _Fail) -> bool:
+    """A key that is true or false."""
+    if not isinstance(value, bool):
+        raise fail(key, detail("must be true or false", "必须是 true 或 false"))
+    return value
+
+
+def _lathe(value: object, profile: str, fail: _Fail) -> bool:
+    """``lathe = true``: the profile's lathe form (docs/machine-file.md). Only a profile that has
+    one takes it; a lathe profile is a lathe already, and ``false`` keeps the profile as it is."""
+    value = _boolean(value, "lathe", fail)
+    base = get_dialect(profile)
+    if value and not base.lathe and base.lathe_variant is None:
+        raise fail("lathe", detail(f"is not a setting of {profile}, which has no lathe form "
+                                   "(a FANUC 0i lathe is base = \"fanuc-0i-lathe\"; the 30i's is base = \"fanuc-30i\")",
+                                   f"不适用于 {profile}：它没有车床形式（FANUC 0i 车床请用 base = \"fanuc-0i-lathe\"；"
+                                   "30i 车床为 base = \"fanuc-30i\"）"))  # fmt: skip
+    if not value and base.lathe:
+        raise fail("lathe", detail(f"cannot be false: {profile} is a lathe", f"不能为 false：{profile} 是车床"))
+    return value
 
 
 def _common(value: object, profile: str, fail: _Fail) -> tuple[tuple[int, int], ...]:

@@ -1,7 +1,8 @@
 """The profile as one machine has it: a built-in profile with a machine file applied.
 
 ``.cncmacro.toml`` may name the machine's common ranges, the digits of an M98 program number,
-the programs kept on the control and extra system variables. Every layer above asks
+the programs kept on the control, extra system variables and the profile's lathe form
+(``lathe = true``). Every layer above asks
 ``machine_profile`` for the ``Dialect`` to work with, so those settings reach the interpreter,
 the checks, hover and the debugger alike.
 
@@ -55,6 +56,8 @@ def machine_profile(name: str | Dialect | None, settings: MachineSettings | None
     base = name if isinstance(name, Dialect) else get_dialect(name or (settings.dialect if settings else None))
     if settings is None:
         return base
+    if settings.lathe and not base.lathe and base.lathe_variant is not None:
+        base = base.lathe_variant  # ``lathe = true``: the control's lathe form (fanuc-30i)
     changes: dict[str, object] = {}
     if settings.common is not None:
         changes["common_ranges"] = tuple(_common_range(base, first, last) for first, last in settings.common)

@@ -1,7 +1,9 @@
 """Completion: system variables (with their descriptions) after ``#``, N labels after ``GOTO``,
-programs after the ``P`` of a call, G65/G66 argument letters with the locals they fill, and the
-keywords and functions of the dialect. Everything offered comes from the dialect tables, the
-parser's labels and the workspace index."""
+programs after the ``P`` of a call, G65/G66 argument letters with the locals they fill, the
+letters of a cycle block not yet written with what each means there (``G71 `` after a first
+block offers P, Q, U, W, F; ``ide/cycle_words.py``), and the keywords and functions of the
+dialect. Everything offered comes from the dialect tables, the parser's labels and the workspace
+index."""
 
 from __future__ import annotations
 
@@ -14,6 +16,7 @@ from ..analysis.indexes.call_sites import CallSite, call_site
 from ..bilingual import pick
 from ..dialects import describe, tables
 from ..dialects.dialect import ARGUMENTS_I
+from ..ide.cycle_words import cycle_signature
 from ..ide.signature_help import locals_read
 from .cursor import Cursor, cursor_at
 from .texts import t
@@ -25,6 +28,7 @@ EXPAND_RANGE = 8  # a table row covering more numbers than this is offered by it
 _HASH = re.compile(r"#(\d*)$")
 _GOTO = re.compile(r"GOTO\s*(\d*)$", re.I)
 _P = re.compile(r"P(\[?)([\w\u4e00-\u9fff]*)$", re.I)
+_NEW_WORD = re.compile(r"(?:\s|(?<=[\s\d.])[A-Za-z])$")  # the cursor starts a word (or its letter)
 _CALL = re.compile(r"\b(G0*65|G0*66|M0*98)\b|(G0*65|G0*66|M0*98)(?=\s*P)", re.I)
 
 
@@ -52,6 +56,8 @@ def complete(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem]:
     items: list[types.CompletionItem] = []
     if in_call:
         items += argument_items(ls, cur)
+    elif _NEW_WORD.search(before):
+        items += cycle_letter_items(ls, cur)
     items += keyword_items(ls, cur)
     return items
 
@@ -142,6 +148,29 @@ def argument_items(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem
                 detail=f"{t('fills', loc)} #{n}",
                 sort_text=("!" if read else "") + f"0{n:02d}",
                 preselect=True if read else None,
+            )
+        )
+    return out
+
+
+def cycle_letter_items(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem]:
+    """The letters of the cycle block being typed that it does not have yet, in the manual's
+    order, each with what it means in this block."""
+    cycle = cycle_signature(cur.doc, cur.line, cur.column)
+    if cycle is None:
+        return []
+    name = pick(ls.locale, *cycle.form.name)
+    out = []
+    for k, w in enumerate(cycle.form.words):
+        if w.letter in cycle.given:
+            continue
+        out.append(
+            types.CompletionItem(
+                label=w.letter,
+                kind=types.CompletionItemKind.Field,
+                detail=f"{cycle.code} {name}: {w.piece}" if name else f"{cycle.code}: {w.piece}",
+                documentation=pick(ls.locale, w.en, w.zh),
+                sort_text=f"!{k:02d}",
             )
         )
     return out

@@ -5,11 +5,13 @@ for), G/M codes, functions and the GSK ``G65 Hm`` commands are described from th
 tables; a macro word written shortened (``WH``) shows the whole word; a local
 shows the argument letters that fill it (``machine.calls``); a common shows where it is
 written; an N label shows the jumps to it; the ``M99`` of Haas's ``[cond] M99 P n`` says it is
-a conditional jump; an O program (or the P of a call) shows its title
-and file, or, for a program kept on the control that the profile documents (Haas's probing
-macros), what it does, the arguments it reads (those the call gives marked) and what it
-writes. Only the block under the cursor is parsed; the places come from each file's site index
-(``analysis/indexes/site_index.py``), in time proportional to how many there are.
+a conditional jump; a letter of a cycle block says what it means in that block (a lathe's G71
+first block or second, ``ide/cycle_words.py``), and the cycle's G code which block it is; an O
+program (or the P of a call) shows its title and file, or, for a program kept on the control that
+the profile documents (Haas's probing macros), what it does, the arguments it reads (those the
+call gives marked) and what it writes. Only the block under the cursor is parsed; the places come
+from each file's site index (``analysis/indexes/site_index.py``), in time proportional to how many
+there are.
 """
 
 from __future__ import annotations
@@ -23,7 +25,9 @@ from ..analysis.indexes.call_sites import call_site
 from ..analysis.indexes.sites import label_jumps, word_at
 from ..bilingual import in_language, is_chinese, pick
 from ..dialects import describe
+from ..dialects.cycle_words import CycleForm
 from ..dialects.functions_data import GSK_H_CODES
+from ..ide.cycle_words import cycle_form_of, cycle_word_at
 from ..machine.alarms import MacroAlarm
 from ..machine.calls import argument_targets, letters_for_local
 from ..machine.variables import named_number
@@ -278,12 +282,29 @@ def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
         h = _H_CODES.get(f"H{int(word.value.value):02d}")
         if h is not None:
             return f"```\n{h.signature}\n```\n{pick(loc, h.en, h.zh)}\n\n*{dialect.title}*"
+    cycle = cycle_word_at(dialect, cur.block, word.start)
+    if cycle is not None:  # a letter of a cycle block: what it means in this block
+        name = pick(loc, *cycle.form.name)
+        head = f"**{cycle.code}**" + (f" {name}" if name else "")
+        meaning = f"**{cycle.word.piece}**: {pick(loc, cycle.word.en, cycle.word.zh)}"
+        return f"{head} — {meaning}\n\n{_form_line(cycle.code, cycle.form, loc)} · *{dialect.title}*"
     if word.letter in ("G", "M") and isinstance(word.value, Number):
         doc = describe.code_doc(dialect, word.letter, word.value.value)
         if doc is not None:
             group = f"{t('modal', loc)}: {doc.group}" if doc.group else t("one_shot", loc)
-            return f"**{doc.code}** — {pick(loc, doc.en, doc.zh)}\n\n{group} · *{dialect.title}*"
+            text = f"**{doc.code}** — {pick(loc, doc.en, doc.zh)}\n\n{group} · *{dialect.title}*"
+            form = cycle_form_of(dialect, cur.block) if word.letter == "G" else None
+            if form is not None and form[0] == doc.code:  # a cycle's code: the block it writes
+                text += f"\n\n{t('this_block', loc)}: {_form_line(form[0], form[1], loc)}"
+            return text
     return None
+
+
+def _form_line(code: str, form: CycleForm, loc: str | None) -> str:
+    """A cycle block's form and, for a two-block cycle, which block it is: ``G71 U(Δd) R(e)``
+    (first block)."""
+    name = pick(loc, *form.name)
+    return f"`{form.text(code)}`" + (f" ({name})" if name else "")
 
 
 def corner_hover(ls: CncMacroServer, cur: Cursor, corner: CornerWord) -> str:

@@ -54,6 +54,7 @@ TEXTS: dict[str, tuple[str, str]] = {
     "one_shot": ("one-shot", "非模态"),
     "fills": ("fills", "赋值给"),
     "reads": ("reads", "读取"),
+    "this_block": ("this block", "本程序段"),
     "more": ("more", "更多"),
     "not_here": ("this dialect does not read abbreviations", "本系统不支持关键字缩写"),
     "short_for": ("**{text}** — short for **{word}**", "**{text}** — **{word}** 的缩写"),

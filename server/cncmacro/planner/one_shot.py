@@ -19,9 +19,6 @@ from .probing import skip_block
 if TYPE_CHECKING:
     from .planner import Planner
 
-# a lathe's G10 P.. X Z Y: (geometry, wear) offset bases of each axis; R's and the tip's (Q)
-_LATHE_OFFSET_ROWS = {"X": (2700, 2000), "Z": (2800, 2100), "Y": (2450, 2400)}
-
 
 def one_shot(
     p: Planner, g: float, axes: dict[int, float], inc: dict[int, float], other: dict[str, float], file: str, line: int
@@ -84,7 +81,8 @@ def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[s
     if p.dialect.lathe:
         geometry = number >= 10000
         n = number % 10000
-        for letter, (g_base, w_base) in _LATHE_OFFSET_ROWS.items():
+        offsets = p.dialect.lathe_offsets
+        for letter, g_base, w_base in offsets.axes:
             axis = p.axis_index.get(letter)
             if axis is None:
                 continue
@@ -94,9 +92,9 @@ def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[s
             if axis in inc:
                 host.store(num, (host.stored(num) or 0.0) + inc[axis])
         if "R" in other:
-            host.store((2900 if geometry else 2200) + n, other["R"])
+            host.store(offsets.radius[0 if geometry else 1] + n, other["R"])
         if "Q" in other:
-            host.store(2300 + n, other["Q"])
+            host.store(offsets.tip + n, other["Q"])
         return
     bases = dict(zip((10.0, 11.0, 12.0, 13.0), p.dialect.tool_offset_bases, strict=True))
     if l_value in bases and "R" in other:

@@ -190,9 +190,12 @@ class Planner:
             else:
                 other[letter] = v
         one = set_modal(self, gs, other)
-        if one is not None and self.lathe and one == self.dialect.coordinate_setting_code and "S" in other:
-            self.codes[SPEED_CLAMP] = other.pop("S")  # G50 S: the spindle's top speed, not a speed
-        set_codes(self, other, file, line)
+        if self.lathe and one == self.dialect.coordinate_setting_code and "S" in other:
+            # G50 S is the spindle speed clamp (docs/semantics.md §10.4), not a spindle speed
+            self.codes[SPEED_CLAMP] = other["S"]
+            set_codes(self, {k: v for k, v in other.items() if k != "S"}, file, line)
+        else:
+            set_codes(self, other, file, line)
         if one is not None:
             if one != 4.0 and self.cycle_params:
                 forget_single_cycle(self)

@@ -31,12 +31,15 @@ def machine_position(p: Planner, axis: int) -> float:
 
 
 def position_value(p: Planner, which: str, axis: int) -> float | None:
-    """Axis ``axis``'s position of a kind (the profile's position rows: the block end point, the
-    current position, machine coordinates, the skip position, the tool vector)."""
+    """Axis ``axis``'s position of a kind (the profile's position rows: the block end point without
+    the tool offset, the current position and machine coordinates with it, the skip position, the
+    tool vector; docs/semantics.md §10.1). On a lathe X reads as a diameter in each of them."""
     if axis >= len(p.pos):
         return 0.0
-    if which in ("end", "current"):
+    if which == "end":  # the programmed end point: without the tool offset
         return p.pos[axis]
+    if which == "current":  # where the tool is in work coordinates: with the tool offset
+        return p.pos[axis] + p.tool_vector[axis]
     if which == "machine":
         return machine_position(p, axis)
     if which == "skip":

@@ -11,7 +11,11 @@ shape) an arc.
 G71/G72 (FANUC 0i-TF and GSK980TDi manuals, "stock removal in turning/facing"): from the start
 point A the tool steps in by the depth Δd, cuts along ``b`` until it meets the finishing shape
 (offset by the allowances), pulls back by e at 45°, returns along ``b`` at rapid and steps in
-again, until the next level would pass the shape's first point; then it cuts once along the
+again, until the next level would pass the shape's first point. Where the shape dips below a
+level again further along (a pocket, type II), the level is cut there too: out to A's depth, over
+to where the shape goes below the level, down at rapid to the level above and in at the feed,
+along to where the shape comes back up, pulled back by e; and back to A's depth and along ``b``
+before the next level; then it cuts once along the
 shape offset by the allowances and returns to A at rapid: out along ``a`` to A's depth (or stays
 where it is when the shape ended beyond it), back along ``b``, and in to A.
 
@@ -27,6 +31,7 @@ from itertools import pairwise
 from typing import NamedTuple
 
 Point = tuple[float, float]
+MAX_LEVELS = 200_000  # a depth of cut so small that more levels than this are planned stops there
 _ARC_STEP = math.radians(2.0)  # arcs are followed in chords of at most 2° to find where a level meets them
 
 
@@ -79,15 +84,26 @@ def shape_polyline(shape: list[Segment], ccw_mode: float) -> list[Point]:
     return pts
 
 
-def meets_level(pts: list[Point], level: float, side: float) -> float | None:
-    """Where, along ``b``, the chain ``pts`` first comes back up to depth ``level`` from below it
-    (``side``: the sign of the way the depth grows into the part); None when it never does."""
+def deeper_runs(pts: list[Point], level: float, side: float, b_start: float, end_b: float) -> list[Point]:
+    """The stretches along ``b``, in cutting order, where the chain ``pts`` lies deeper than
+    ``level`` (``side``: the sign of the way the depth grows into the part): each (where the cut
+    at that level starts, where it meets the shape). The first starts at ``b_start`` when the
+    chain starts deeper; one still deeper at the chain's end runs to ``end_b``."""
+    runs: list[Point] = []
+    inside = bool(pts) and side * (pts[0][0] - level) > 0
+    b_in = b_start
     for (a0, b0), (a1, b1) in pairwise(pts):
-        d0 = side * (a0 - level)  # > 0: the shape lies deeper than the level here
+        d0 = side * (a0 - level)
         d1 = side * (a1 - level)
-        if d0 > 0 >= d1:
-            return b0 + (b1 - b0) * d0 / (d0 - d1)
-    return None
+        if inside and d0 > 0 >= d1:
+            runs.append((b_in, b0 + (b1 - b0) * d0 / (d0 - d1)))
+            inside = False
+        elif not inside and d0 <= 0 < d1:
+            b_in = b0 + (b1 - b0) * d0 / (d0 - d1)
+            inside = True
+    if inside:
+        runs.append((b_in, end_b))
+    return runs
 
 
 def translate(shape: list[Segment], da: float, db: float) -> list[Segment]:
@@ -121,22 +137,29 @@ def rough_passes(
     end_b = shape[-1].end[1]
     along = math.copysign(1.0, end_b - first[1]) if end_b != first[1] else -1.0
     steps: list[Step] = []
-    if side:
-        k = 1
-        while True:
-            level = a_start + side * depth * k
-            if side * (level - first[0]) >= 0:
-                break
-            b_cut = meets_level(pts, level, side)
-            b_end = end_b if b_cut is None else b_cut
-            steps.append(Step(approach, (level, b_start)))
-            steps.append(Step(1.0, (level, b_end)))
-            out = level - side * retract
-            steps.append(Step(0.0, (out, b_end - along * retract)))
+    k = 1
+    while side and k <= MAX_LEVELS:
+        level = a_start + side * depth * k
+        if side * (level - first[0]) >= 0:
+            break
+        runs = deeper_runs(pts, level, side, b_start, end_b)
+        out = level - side * retract
+        for n, (b_in, b_out) in enumerate(runs):
+            if n == 0 and b_in == b_start:  # in from the stock's end, at the level
+                steps.append(Step(approach, (level, b_start)))
+            else:  # a pocket: over the shape at A's depth, down to the level above, in at the feed
+                steps.append(Step(0.0, (a_start, steps[-1].end[1] if steps else b_start)))
+                steps.append(Step(0.0, (a_start, b_in)))
+                steps.append(Step(0.0, (level - side * depth, b_in)))
+                steps.append(Step(1.0, (level, b_in)))
+            steps.append(Step(1.0, (level, b_out)))
+            steps.append(Step(0.0, (out, b_out - along * retract)))
+        if len(runs) > 1:
+            steps.append(Step(0.0, (a_start, steps[-1].end[1])))
+            steps.append(Step(0.0, (a_start, b_start)))
+        elif runs:
             steps.append(Step(0.0, (out, b_start)))
-            k += 1
-            if k > 1_000_000:
-                break
+        k += 1
     steps.append(Step(approach, first))
     steps.extend(along_shape(shape[1:]))
     last = steps[-1].end

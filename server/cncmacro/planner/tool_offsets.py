@@ -1,6 +1,9 @@
-"""Tool offsets as the planner applies them (docs/semantics.md §8): a lathe's T code selects
-an offset that shifts X, Z and Y; a mill's G43/G44 H offsets Z by the tool length. The values are
-the macro machine's offset variables, read through the planner's host (host.py).
+"""Tool offsets as the planner applies them (docs/semantics.md §8, §10.1): a lathe's T code
+selects an offset whose geometry and wear shift X, Z and Y; a mill's G43/G44 H offsets Z by the
+tool length. Either sets the tool vector, which the machine position (#5021…) and the current
+position (#5041…) include and the programmed path (the moves, #5001…) does not. The values are
+the macro machine's offset variables (where the profile keeps them: ``Dialect.lathe_offsets``,
+``Dialect.tool_offset_bases``), read through the planner's host (host.py).
 """
 
 from __future__ import annotations
@@ -10,13 +13,11 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from .planner import Planner
 
-# a lathe's offset tables per axis: (geometry, wear) of offset 0
-_LATHE_OFFSETS = (("X", 2700, 2000), ("Z", 2800, 2100), ("Y", 2450, 2400))
-
 
 def select_tool(p: Planner, t: float) -> None:
     """T: the tool in force; on a lathe its offset number (the last two digits from T100 up, else
-    the last digit) sets the tool vector from the geometry and wear tables."""
+    the last digit) sets the tool vector from the geometry and wear tables, and offset 0 (T0100)
+    cancels it."""
     p.codes["T"] = t
     if not p.dialect.lathe:
         return
@@ -25,7 +26,7 @@ def select_tool(p: Planner, t: float) -> None:
     vec = [0.0] * len(p.pos)
     if offset:
         stored = p.host.stored
-        for axis, geometry, wear in _LATHE_OFFSETS:
+        for axis, geometry, wear in p.dialect.lathe_offsets.axes:
             if axis in p.axis_index:
                 vec[p.axis_index[axis]] = (stored(geometry + offset) or 0.0) + (stored(wear + offset) or 0.0)
     p.tool_vector = vec

@@ -7,6 +7,7 @@ extension of #100–#199; a machine file narrows it) and #500–#999 kept at pow
 from __future__ import annotations
 
 from ..dialect import Dialect
+from ..drill_cycle_words import FANUC_DRILL_CYCLE_WORDS
 from ..drill_cycles import FANUC_DRILL_CYCLES
 from ..tables import CommonRange
 from ..timing import Timing
@@ -37,6 +38,7 @@ PROFILE = Dialect(
     coordinate_setting_code=92.0,
     cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
     drill_cycles=FANUC_DRILL_CYCLES,
+    cycle_words=FANUC_DRILL_CYCLE_WORDS,
     ijk_order_matters=True,
     word_format_alarms=True,
     keyword_abbreviations=True,

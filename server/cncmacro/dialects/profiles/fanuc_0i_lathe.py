@@ -1,16 +1,19 @@
 """FANUC 0i-TF lathe control, G-code system A: the ``fanuc-0i-lathe`` profile.
 
-Tables: ``dialects/fanuc_lathe_data.py``. The macro language is the 0i's (``fanuc_0i``); what a
-lathe changes is the NC side: X is a diameter and U and W move incrementally, ``G50`` sets
-coordinates (and with S clamps the spindle), ``G90``/``G92``/``G94`` are the single fixed cycles
-and ``G70``–``G76`` the multiple repetitive cycles, the plane is G18 and ``G99`` (feed per
-revolution) is in force at power-on (docs/profiles.md, "fanuc-0i-lathe").
+Tables: ``dialects/fanuc_lathe_data.py`` (a lathe's tool offsets, where ``lathe_offsets`` points,
+system A's modal groups). The macro language is the 0i's (``fanuc_0i``); what a lathe changes is
+the NC side: X is a diameter and U and W move incrementally, ``G50`` sets coordinates (and with S
+clamps the spindle), ``G90``/``G92``/``G94`` are the single fixed cycles and ``G70``–``G76`` the
+multiple repetitive cycles, the plane is G18 and ``G99`` (feed per revolution) is in force at
+power-on (docs/profiles.md, "fanuc-0i-lathe: sources and decisions"; docs/semantics.md §10.1).
 """
 
 from __future__ import annotations
 
 from dataclasses import replace
 
+from ..fanuc_lathe_data import LATHE_OFFSETS
+from ..lathe_cycle_words import FANUC_LATHE_CYCLE_WORDS
 from ..timing import Timing
 from ..turning_cycles import FANUC_LATHE_CYCLES, LATHE_SINGLE_CYCLES
 from .fanuc_0i import PROFILE as FANUC_0I
@@ -24,6 +27,7 @@ PROFILE = replace(
     aliases=("fanuc-0i-t", "0i-tf", "0i-td", "fanuc-0i-tf", "fanuc-lathe"),
     data_module="fanuc_lathe_data",
     lathe=True,
+    lathe_offsets=LATHE_OFFSETS,
     axes=("X", "Z", "C", "Y"),
     modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0}),
     modal_defaults={"plane": 18.0, "feed": 99.0},
@@ -32,6 +36,7 @@ PROFILE = replace(
     drill_cycles={},
     single_cycles=LATHE_SINGLE_CYCLES,
     lathe_cycles=FANUC_LATHE_CYCLES,
+    cycle_words=FANUC_LATHE_CYCLE_WORDS,
     # typical of a small slant-bed lathe; a machine file gives the machine's own (parameter 1420)
     timing=Timing(
         rapid={"X": 12000.0, "Z": 15000.0, "C": 10800.0, "Y": 8000.0},

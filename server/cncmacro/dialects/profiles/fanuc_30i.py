@@ -29,6 +29,7 @@ from .. import fanuc_data as fanuc
 from .. import shared_data as shared
 from ..tables import CodeDoc, CommonRange, SystemVariable, SystemVariableName
 from .fanuc_0i import PROFILE as FANUC_0I
+from .fanuc_0i_lathe import PROFILE as FANUC_0I_LATHE
 
 AXES = 4
 
@@ -326,7 +327,7 @@ M_CODES: tuple[CodeDoc, ...] = tuple(_m98() if c.code == "M98" else c for c in f
 # M98 P, and the common ranges the 30i can have (#100-#499 and #500-#999 with the option that
 # adds commons, #98000-#98499 extended; docs/profiles.md)
 
-PROFILE = FANUC_0I.configured(
+_MILL = FANUC_0I.configured(
     name="fanuc-30i",
     title="FANUC 30i-B Custom Macro",
     summary="FANUC 30i/31i/32i-B (and 30i-class horizontal machining centres): names, 8-digit programs",
@@ -338,3 +339,22 @@ PROFILE = FANUC_0I.configured(
     m98_program_digits=8,
     common_ranges=(CommonRange(100, 499, False), CommonRange(500, 999, True), CommonRange(98000, 98499, True)),
 )
+
+# the 30i lathes, system A (``lathe = true`` in the machine file; docs/profiles.md "fanuc-30i
+# lathes"): the 30i's macro language with the NC side and power-on state of the 0i-TF lathe
+LATHE = _MILL.configured(
+    title="FANUC 30i-B lathe (G-code system A)",
+    data_module="fanuc_30i_lathe_data",
+    lathe=True,
+    lathe_offsets=FANUC_0I_LATHE.lathe_offsets,
+    axes=FANUC_0I_LATHE.axes,
+    modal_call_codes=FANUC_0I_LATHE.modal_call_codes,
+    modal_defaults=FANUC_0I_LATHE.modal_defaults,
+    coordinate_setting_code=FANUC_0I_LATHE.coordinate_setting_code,
+    cycle_codes=FANUC_0I_LATHE.cycle_codes,
+    drill_cycles=FANUC_0I_LATHE.drill_cycles,
+    single_cycles=FANUC_0I_LATHE.single_cycles,
+    timing=FANUC_0I_LATHE.timing,
+)
+
+PROFILE = _MILL.configured(lathe_variant=LATHE)

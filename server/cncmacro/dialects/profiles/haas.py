@@ -450,7 +450,9 @@ _MODAL: tuple[SystemVariable, ...] = (
 _POSITION_KINDS = (
     (5001, "end", "end point of the previous block, work coordinates", "前一程序段的终点（工件坐标系）"),
     (5021, "machine", "present position, machine coordinates", "当前位置（机床坐标系）"),
-    (5041, "current", "present position, work coordinates", "当前位置（工件坐标系）"),
+    # Haas's present work position is read as the programmed one, without the tool length offset
+    # (docs/profiles.md, haas); FANUC's #5041 includes it (docs/semantics.md §10.1)
+    (5041, "end", "present position, work coordinates", "当前位置（工件坐标系）"),
     (
         5061,
         "skip",
@@ -947,6 +949,7 @@ PROFILE = FANUC_0I.configured(
     extra_offset_count=99,
     tool_offset_bases=(2000, 2200, 2400, 2600),
     drill_cycles=HAAS_DRILL_CYCLES,  # its G77 back bore, G87 bore in and manual retract
+    cycle_words={},  # Haas repeats with L and reads more letters in G73 and G83: not described yet
     cycle_repeat_letter="L",  # L repeats a canned cycle (K is a peck's minimum on G73/G83)
     # rapids of 1,000 in/min on X, Y, Z (a VF-2's), a typical tool change; G04 P counts seconds
     # (written with a decimal point, as the G04 row says)
