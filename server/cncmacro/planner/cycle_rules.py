@@ -285,7 +285,7 @@ def _report(p: Planner, found: list[CycleFinding], subject: str) -> None:
 def check_cycle_block(p: Planner, g: float, words: dict[str, float]) -> None:
     """Refuse a block of lathe cycle ``g`` whose ``words`` (U and W by letter) the control
     alarms on; the first block's parameters are in ``p.cycle_params``."""
-    rules = p.dialect.lathe_cycles
+    rules = p.dialect.cycle_rules
     if rules is None:
         return
     travel: dict[str, float | None] = {}
@@ -302,7 +302,7 @@ def check_cycle_block(p: Planner, g: float, words: dict[str, float]) -> None:
 
 def check_shape(p: Planner, shape: ShapeReading) -> None:
     """Refuse a finishing shape, read in full, that the control alarms on."""
-    rules = p.dialect.lathe_cycles
+    rules = p.dialect.cycle_rules
     if rules is None:
         return
     xi, zi = p.axis_index["X"], p.axis_index["Z"]

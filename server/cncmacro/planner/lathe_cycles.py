@@ -13,7 +13,8 @@ what each block of G70–G76 means and the moves it makes.
 - **G70 P Q** runs the shape blocks as they are written, with their own F, S and T, then
   returns to the start point at rapid.
 - **G74, G75, G76** and the single cycles G90, G92, G94 are planned by their own modules
-  (``MULTIPLE_CYCLES``; turning_cycles.py); a code no module plans yet is recorded as one cut.
+  (``MULTIPLE_CYCLES``: groove_cycles.py, thread_cycles.py; turning_cycles.py); a code no
+  module plans is recorded as one cut.
 
 Every move of a cycle is recorded with the cycle block's line and ``pass_of`` (its code), so
 the toolpath view draws each pass and the debugger knows which pass it is on.
@@ -26,7 +27,9 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, NamedTuple
 
 from .cycle_rules import check_cycle_block, check_shape
+from .groove_cycles import diameter_grooving, face_grooving
 from .stock_removal import Point, Segment, Step, pattern_passes, rough_passes, translate
+from .thread_cycles import multiple_thread
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -75,7 +78,11 @@ class ShapeReading:
 
 # code -> the planner of a cycle's second block: (planner, block words with U/W, file, line, end point)
 MultipleCycle = Callable[["Planner", dict[str, float], str, int, list[float]], None]
-MULTIPLE_CYCLES: dict[float, MultipleCycle] = {}
+MULTIPLE_CYCLES: dict[float, MultipleCycle] = {
+    74.0: face_grooving,  # groove_cycles.py
+    75.0: diameter_grooving,
+    76.0: multiple_thread,  # thread_cycles.py
+}
 
 
 def block_words(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]) -> dict[str, float]:
@@ -97,7 +104,7 @@ def lathe_cycle(
     if g in SHAPE_CODES:
         words = block_words(p, axes, inc, other)
         check_cycle_block(p, g, words)
-        if "P" in words and "Q" in words:
+        if ("P" in words and "Q" in words) if g == FINISHING else second_block(p, g, words):
             call = ShapeCall(g, words["P"], words["Q"])
             begin_shape(p, call, words, file, line)
             return True, call
@@ -106,17 +113,25 @@ def lathe_cycle(
         return False, None
     plan = MULTIPLE_CYCLES.get(g)
     if plan is not None or g in CHECKED_CYCLES:
-        if not axes and not inc:  # the first block: its parameters
+        words = block_words(p, axes, inc, other)
+        if not second_block(p, g, words):  # the first block: its parameters
             check_cycle_block(p, g, dict(other))
             p.cycle_params[g] = dict(other)
             return False, None
-        words = block_words(p, axes, inc, other)
         check_cycle_block(p, g, words)
         if plan is not None:
             plan(p, words, file, line, p.target(axes, inc))
             return True, None
-    p.turning_cycle(file, line, g, p.target(axes, inc))
+    p.turning_cycle(file, line, g, axes, inc, other)
     return bool(axes or inc), None
+
+
+def second_block(p: Planner, g: float, words: dict[str, float]) -> bool:
+    """Whether a block of two-block cycle ``g`` with ``words`` is its second, the one that cuts:
+    the profile's rule (``Dialect.cycle_words``, dialects/cycle_words.py: G71–G73 with P and Q,
+    G74–G76 with an end point), which the editor's hover follows too."""
+    described = p.dialect.cycle_words.get(g)
+    return described is not None and described.is_second(words)
 
 
 def begin_shape(p: Planner, call: ShapeCall, words: dict[str, float], file: str, line: int) -> None:

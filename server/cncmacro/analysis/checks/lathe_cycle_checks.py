@@ -13,7 +13,7 @@ in the shape marks that command. Findings only the text decides: the block N(P) 
 (PS0063), a label of the shape used twice (``duplicate-label``), M98/M99/G65/G66 in the shape
 (PS0325), a G code outside GSK's list, a chamfer or corner R ending the shape (PS0069) or in a
 thread block (PS0050), more blocks than GSK's 200. Nothing here runs on a profile without
-``Dialect.lathe_cycles`` (a mill's G73/G74/G76 are drilling cycles).
+``Dialect.cycle_rules`` (a mill's G73/G74/G76 are drilling cycles).
 """
 
 from __future__ import annotations
@@ -103,7 +103,7 @@ def _next(at: float | None, r: _Read, absolute: str, incremental: str) -> float 
 
 def lathe_cycle_diagnostics(program: Program, file: str, ctx: LineContext) -> list[Diagnostic]:
     """Every finding of the lathe cycles of ``program`` (module docstring)."""
-    rules = ctx.dialect.lathe_cycles
+    rules = ctx.dialect.cycle_rules
     if rules is None:
         return []
     out: list[Diagnostic] = []
