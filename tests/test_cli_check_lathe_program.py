@@ -1,13 +1,14 @@
 """``cncmacro check`` on a lathe program read under a mill profile (docs/profiles.md "How a lathe
 program is recognised"): the ``profile-suggestion`` is shown at information level and leaves the
-exit status alone; the mill corpora and a lathe profile get none."""
+exit status alone; the mill corpora and a lathe profile get none; with the comment its quick fix
+writes, the program runs as the lathe."""
 
 from __future__ import annotations
 
 import json
 from pathlib import Path
 
-from cli_capture import cli
+from cli_capture import cli, run_json
 
 CORPUS = Path(__file__).resolve().parent / "corpus"
 SHAFT = (
@@ -40,3 +41,17 @@ def test_check_finds_no_lathe_program_in_the_mill_corpora():
         assert code == 0, mill
         found = [d for d in json.loads(out) if d["code"] == "profile-suggestion" and "lathe" in d["message"]]
         assert found == [], mill
+
+
+def test_with_the_comment_of_the_quick_fix_a_g92_thread_runs_as_a_turning_cycle(tmp_path):
+    thread = "%\nO0100 (THREAD)\nT0303\nG97 S600 M03\nG00 X32. Z5.\nG92 X29.2 Z-30. F1.5\nG00 X100. Z100.\nM30\n%\n"
+    mill = run_json(tmp_path, thread, "MILL.nc")
+    # read as a mill, G92 (line 6) sets coordinates: the rapids of lines 5 and 7 are the only moves
+    assert (mill["dialect"], [(m["line"], m["kind"]) for m in mill["moves"]]) == (
+        "fanuc-0i",
+        [(5, "rapid"), (7, "rapid")],
+    )
+    fixed = thread.replace("%\n", "%\n(cncmacro: dialect=fanuc-0i-lathe)\n", 1)  # the line the quick fix writes
+    lathe = run_json(tmp_path, fixed, "LATHE.nc")
+    assert lathe["dialect"] == "fanuc-0i-lathe" and lathe["lathe"] is True
+    assert [(m["line"], m["kind"]) for m in lathe["moves"]] == [(6, "rapid"), (7, "cycle"), (8, "rapid")]
