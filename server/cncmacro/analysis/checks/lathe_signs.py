@@ -47,6 +47,8 @@ _LATHE_CYCLES = frozenset((*_SHAPE_CYCLES, 74.0, 75.0, 76.0))
 _NOT_MOVES = frozenset((4.0, 10.0, 65.0, 66.0))  # dwell, data setting, macro calls: U and W are no moves
 _SIGN_CODES = frozenset((50.0, *_LATHE_CYCLES, 92.0, 96.0, 99.0))
 _INCREMENTAL = ("U", "W")
+_OTHER_LETTERS = frozenset(("T", *_INCREMENTAL))  # the signs that need no G code
+_SIGN_WHOLE = frozenset(int(c) for c in _SIGN_CODES)
 ORDINARY_NEEDED = 2
 
 
@@ -84,18 +86,14 @@ def block_signs(words: Sequence[Word], dialect: Dialect) -> list[LatheSign]:
     """The lathe signs of a block of NC words (no macro call) read under ``dialect``; none on a
     lathe profile. A sign is in the text: the G codes and the T and F values that make one are
     literal, the other words are counted whatever their value."""
-    if dialect.lathe or not words:
+    if dialect.lathe or not _may_sign(words):
         return []
-    by: dict[str, Word] = {}  # the first word of each address, whatever its value
-    codes: list[tuple[float, Word]] = []
-    for w in words:
-        if w.letter == "G":
-            code = code_value(w)
-            if code is not None:
-                codes.append((code, w))
-        else:
-            by.setdefault(w.letter, w)
+    codes = [(c, w) for w in words if w.letter == "G" and (c := code_value(w)) is not None]
     g = {c for c, _ in codes}
+    by: dict[str, Word] = {}  # the first word of each other address, whatever its value
+    for w in words:
+        if w.letter != "G":
+            by.setdefault(w.letter, w)
     out: list[LatheSign] = []
 
     def add(kind: str, first: Word, *rest: Word, labels: tuple[int, int] | None = None) -> None:
@@ -126,6 +124,24 @@ def block_signs(words: Sequence[Word], dialect: Dialect) -> list[LatheSign]:
         if moved is not None:
             add(INCREMENTAL, moved)
     return out
+
+
+def _may_sign(words: Sequence[Word]) -> bool:
+    """Whether a block may hold a sign: a T, U or W word, or a G code whose whole part (or the
+    next whole number, for ``G69.99``) is one of the signs'. Most blocks (moves, arcs) do not,
+    and are passed over at this cost only."""
+    for w in words:
+        letter = w.letter
+        if letter == "G":
+            v = w.value
+            if v.__class__ is not Number:
+                continue
+            x = v.value
+            if int(x) in _SIGN_WHOLE or int(x) + 1 in _SIGN_WHOLE:
+                return True
+        elif letter in _OTHER_LETTERS:
+            return True
+    return False
 
 
 def _value(w: Word) -> float:
