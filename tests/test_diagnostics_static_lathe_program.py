@@ -102,11 +102,13 @@ def test_under_a_lathe_profile_nothing_is_suggested(tmp_path):
 
 
 def test_a_mill_profile_offers_its_own_control_s_lathe_else_fanuc_0i_lathe(tmp_path):
-    assert lathe_forms("fanuc-0i")[0].name == "fanuc-0i-lathe"
-    own_30i = "fanuc-30i-lathe" if "fanuc-30i-lathe" in DIALECTS else "fanuc-0i-lathe"  # a 30i lathe, once there is one
-    for mill, lathe in (("fanuc-30i", own_30i), ("haas", "fanuc-0i-lathe")):
-        [hint] = suggestions(tmp_path, SHAFT, mill)
-        assert f"mill profile {mill}" in hint.message and f"Choose the lathe profile {lathe} " in hint.message
+    assert lathe_forms("fanuc-0i")[0].name == "fanuc-0i-lathe" and "fanuc-haas-lathe" not in DIALECTS
+    [hint] = suggestions(tmp_path, SHAFT, "haas")
+    assert "mill profile haas" in hint.message and "Choose the lathe profile fanuc-0i-lathe " in hint.message
+    # fanuc-30i has a lathe form of its own, which the machine file's lathe = true chooses
+    [hint] = suggestions(tmp_path, SHAFT, "fanuc-30i")
+    assert "mill profile fanuc-30i" in hint.message and "Choose its lathe form, FANUC 30i-B lathe" in hint.message
+    assert 'Set lathe = true in .cncmacro.toml (with base = "fanuc-30i")' in hint.message
 
 
 def test_a_lathe_program_with_gsk_macro_a_arithmetic_is_offered_gsk980tdi(tmp_path):

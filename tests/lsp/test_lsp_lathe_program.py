@@ -149,6 +149,29 @@ async def test_the_machine_file_quick_fix_changes_the_base_of_one_that_exists(sh
     assert (answer.dialect, answer.lathe) == ("fanuc-0i-lathe", True)  # type: ignore[attr-defined]
 
 
+async def test_under_fanuc_30i_the_quick_fix_sets_lathe_true_its_own_lathe_form(shop: LanguageClient) -> None:
+    root: Path = shop.root  # type: ignore[attr-defined]
+    folder = root / "cell_30i"
+    folder.mkdir()
+    machine = folder / ".cncmacro.toml"
+    machine.write_text('base = "fanuc-30i"\nlathe = false\n[severity]\nsyntax = "error"\n', "utf-8")
+    uri = open_file(shop, folder / "shaft.nc", LATHE)
+    [hint] = hints((await published_where(shop, {uri: lambda d: bool(hints(d))}, timeout=30))[uri])
+    actions = await actions_for(shop, uri, hint)
+    assert [a.title for a in actions] == [
+        "Set lathe = true in .cncmacro.toml: a FANUC 30i-B lathe (G-code system A) (every file of the workspace)"
+    ]  # no comment names the lathe form
+    assert actions[0].edit is not None and actions[0].edit.changes is not None
+    fixed = applied(machine.read_text("utf-8"), actions[0].edit.changes[machine.as_uri()])
+    assert fixed == 'base = "fanuc-30i"\nlathe = true\n[severity]\nsyntax = "error"\n'
+    machine.write_text(fixed, "utf-8")
+    changed = types.FileEvent(uri=machine.as_uri(), type=types.FileChangeType.Changed)
+    shop.workspace_did_change_watched_files(types.DidChangeWatchedFilesParams(changes=[changed]))
+    await published_where(shop, {uri: lambda d: not hints(d)}, timeout=30)
+    answer = await dialect_of(shop, uri)
+    assert (answer.dialect, answer.lathe) == ("fanuc-30i", True)  # type: ignore[attr-defined]
+
+
 async def test_a_lathe_program_under_a_lathe_profile_gets_no_suggestion(shop: LanguageClient) -> None:
     root: Path = shop.root  # type: ignore[attr-defined]
     for lathe in ("fanuc-0i-lathe", "gsk980tdi"):

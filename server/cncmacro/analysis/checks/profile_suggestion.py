@@ -22,8 +22,9 @@ profile whose ``M98 P`` takes that many digits.
 
 A lathe program read under a mill profile has no finding at all, and runs wrongly: a ``G92``
 thread shifts coordinates, U and W move nothing. When its lathe signs are strong enough
-(``lathe_signs.py``) it gets the suggestion first, naming the mill's own lathe profile
-(``registry.lathe_forms``: ``fanuc-0i-lathe`` for ``fanuc-0i``), or the first lathe profile that
+(``lathe_signs.py``) it gets the suggestion first, naming the control's own lathe form
+(``Dialect.lathe_variant``: ``fanuc-30i``'s, which the machine file's ``lathe = true`` chooses),
+else its lathe profile (``registry.lathe_forms``: ``fanuc-0i-lathe``), or the first lathe profile that
 reads the file without a feature finding where that one does not (a GSK980TDi's ``G65 H``
 arithmetic).
 """
@@ -134,6 +135,8 @@ def lathe_program(
     evidence = lathe_evidence({k: f.lathe_signs for k, f in facts.items() if f.lathe_signs}, program)
     if evidence is None:
         return None
+    if dialect.lathe_variant is not None:  # the control's own lathe form: fanuc-30i with lathe = true
+        return machine_profile(dialect.lathe_variant, settings), evidence
     forms = lathe_forms(dialect.name)
     if not forms:
         return None
@@ -233,6 +236,17 @@ def _lathe_hint(other: Dialect, evidence: LatheEvidence, file: str, dialect: Dia
     en = ", ".join(f"{s.shown} on line {k + 1}" for k, s in shown) + more
     zh = "，".join(f"第 {k + 1} 行 {s.shown}" for k, s in shown) + more
     line, sign = evidence.signs[0]
+    if other.name == dialect.name:  # its own lathe form, which the machine file's lathe = true chooses
+        message = pick(
+            locale,
+            f"This looks like a lathe program ({en}); it is read under the mill profile {dialect.name} "
+            f"({dialect.title}). Choose its lathe form, {other.title}? Set lathe = true in .cncmacro.toml "
+            f'(with base = "{dialect.name}")',
+            f"这看起来是车床程序（{zh}），现在按铣床系统 {dialect.name}（{dialect.title}）读取。"
+            f"是否选择其车床形式 {other.title}？请在 .cncmacro.toml 中设定 lathe = true"
+            f'（以及 base = "{dialect.name}"）',
+        )
+        return diagnostic(file, line, sign.start, line, sign.end, CODE, message)
     message = pick(
         locale,
         f"This looks like a lathe program ({en}); it is read under the mill profile {dialect.name} ({dialect.title}). "
