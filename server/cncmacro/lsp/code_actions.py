@@ -2,7 +2,8 @@
 write out a macro word written shortened (``WH`` → ``WHILE``), write Haas's conditional
 ``[cond] M99 P n`` as ``IF [cond] GOTO n`` where the profile does not read it
 (``conditional_m99.py``), and name the profile a file was written for (``profile-suggestion``:
-its dialect comment, or the machine file's ``base``).
+its dialect comment, or the machine file's ``base``; for a lathe program under ``fanuc-30i``, the
+machine file's ``lathe = true``, which no comment can say).
 
 docs/semantics.md §5: only N may precede G65/G66 in its block (``machine/block_rules.py``, whose
 ``BEFORE_CALL`` problem is the ``g65-nc-words`` finding). The split is offered exactly where that
