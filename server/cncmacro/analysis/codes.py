@@ -159,8 +159,9 @@ CODES: dict[str, Code] = _codes(
          detail("A ,C/,R/,A corner word without a G01/G02/G03 move, or on a profile whose manual lacks it.",
                 "没有 G01/G02/G03 移动的 ,C/,R/,A 拐角代码，或所选系统的手册中没有该代码。")),
     Code("profile-suggestion", INFORMATION,
-         detail("The file reads cleanly as another profile: likely written for it.",
-                "按另一个系统读取时文件没有问题：很可能是为该系统编写的。")),
+         detail("The file reads cleanly as another profile, or looks like a lathe program under a mill profile: "
+                "likely written for it.",
+                "按另一个系统读取时文件没有问题，或在铣床系统下看起来是车床程序：很可能是为该系统编写的。")),
     Code("nesting-depth", ERROR,
          detail("Macro or subprogram nesting is exceeded when the program runs.", "运行时宏程序或子程序嵌套超出上限。"),
          RUN, (SUBPROGRAM_NESTING, MACRO_NESTING)),
