@@ -673,3 +673,13 @@ def test_an_lsp_module_allowed_to_import_syntax_that_no_longer_does_is_reported(
         "server/cncmacro/lsp/gone.py",
         "server/cncmacro/lsp/symbols.py",
     ]
+
+
+def test_every_switch_of_a_profile_is_declared_once() -> None:
+    # A dataclass takes a second declaration of a field name silently, the last type winning:
+    # two switches of one name would read each other's data (Dialect.lathe_cycles was once both
+    # the lathe cycles' data and their rules).
+    tree = ast.parse((PACKAGE / "dialects" / "dialect.py").read_text(encoding="utf-8"))
+    dialect = next(n for n in tree.body if isinstance(n, ast.ClassDef) and n.name == "Dialect")
+    names = [n.target.id for n in dialect.body if isinstance(n, ast.AnnAssign) and isinstance(n.target, ast.Name)]
+    assert len(names) == len(set(names)), sorted({n for n in names if names.count(n) > 1})

@@ -25,6 +25,8 @@ def plain_line(draw: st.DrawFn, dialect: str) -> str:
     words = []
     if draw(st.booleans()):
         codes = ["0", "00", "1", "01", "2", "3", "90", "91", "94", "95", "17", "18", "19", "4", "20", "21"]
+        if dialect == "gsk980tdi":  # a lathe's threads (G34 declined), feed modes and constant surface speed
+            codes += ["32", "34", "96", "97", "98", "99"]
         words.append("G" + draw(st.sampled_from(codes)))
     for letter in draw(st.lists(st.sampled_from(letters + "FSRIJK"), min_size=1, max_size=5)):
         whole = draw(st.integers(-500, 500))
@@ -42,7 +44,18 @@ def plain_line(draw: st.DrawFn, dialect: str) -> str:
 # them and go on after them, and a cycle they start must take over the plain lines that follow.
 OTHERS = {
     "fanuc": ["", "(a comment)", "G81 Z-2. R1. F100", "G80", "M03 S500", "G83 Z-4. R1. Q1. F80", "G00 X1 (x)"],
-    "gsk980tdi": ["", "(a comment)", "G90 X20. Z-5. F0.2", "M03 S500", "G71 U1. R0.5", "G00 X1 (x)"],
+    "gsk980tdi": [
+        "",
+        "(a comment)",
+        "G90 X20. Z-5. F0.2",
+        "M03 S500",
+        "G71 U1. R0.5",
+        "G00 X1 (x)",
+        "G50 S1500",
+        "G96 S120",
+        "G92 X20. Z-5. R-1. F1.5",
+        "G98 F0.2",
+    ],
 }
 
 

@@ -29,7 +29,8 @@ LOOP_NUMBER = 126
 NC_AND_MACRO = 127
 SEQUENCE_NUMBER = 128
 G_ARGUMENT = 129
-# a lathe's multiple repetitive cycles and threads (FANUC 0i-TF PS alarms; docs/semantics.md, lathe)
+# a lathe's multiple repetitive cycles and threads: the FANUC 0i-TF PS alarms, their texts in plain
+# words (docs/semantics.md §10.5)
 THREAD_CORNER = 50
 CYCLE_P_Q_MISSING = 61
 CYCLE_BAD_VALUE = 62
@@ -73,9 +74,11 @@ ALARMS: dict[int, AlarmDoc] = {
         AlarmDoc(NC_AND_MACRO, "NC word and macro statement in one block", "NC代码与宏语句在同一程序段"),
         AlarmDoc(SEQUENCE_NUMBER, "sequence number not found", "未找到顺序号"),
         AlarmDoc(G_ARGUMENT, "illegal address in the argument list", "自变量中使用了非法地址"),
-        AlarmDoc(THREAD_CORNER, "illegal command in thread cutting mode", "螺纹切削方式中的指令不当"),
-        AlarmDoc(CYCLE_P_Q_MISSING, "P or Q missing in a multiple repetitive cycle", "复合循环程序段中未指定P或Q"),
-        AlarmDoc(CYCLE_BAD_VALUE, "illegal command in a multiple repetitive cycle", "复合循环中的指令不当"),
+        AlarmDoc(
+            THREAD_CORNER, "chamfering or corner R in a thread cutting block", "螺纹切削程序段中指令了倒角或拐角R"
+        ),
+        AlarmDoc(CYCLE_P_Q_MISSING, "P or Q is not in the multiple repetitive cycle block", "复合循环程序段中没有P或Q"),
+        AlarmDoc(CYCLE_BAD_VALUE, "illegal depth of cut in the rough cutting cycle", "粗车循环的切削量不当"),
         AlarmDoc(
             CYCLE_BLOCK_NOT_FOUND, "the block of the specified sequence number is not found", "未找到指定顺序号的程序段"
         ),
@@ -85,28 +88,42 @@ ALARMS: dict[int, AlarmDoc] = {
             "精加工形状不是单调变化（第1轴）",
         ),
         AlarmDoc(
-            SHAPE_FIRST_BLOCK, "the first block of the shape program is not G00 or G01", "形状程序的第一段不是G00或G01"
+            SHAPE_FIRST_BLOCK, "G00/G01 is not in the first block of the shape program", "形状程序的第一段中没有G00/G01"
         ),
         AlarmDoc(
             SHAPE_LAST_BLOCK, "the last block of the shape program is an illegal command", "形状程序的最后一段指令不当"
         ),
-        AlarmDoc(TOOL_ANGLE, "illegal angle of the tool tip", "刀尖角度指令不当"),
+        AlarmDoc(TOOL_ANGLE, "illegal tool nose angle in the threading cycle", "螺纹切削循环中的刀尖角度不当"),
         AlarmDoc(
             THREAD_MIN_DEPTH,
-            "illegal cutting depth (minimum depth larger than the thread height)",
-            "切深指令不当（最小切深大于螺纹牙高）",
+            "illegal depth of cut in the threading cycle (the minimum depth above the thread height)",
+            "螺纹切削循环中的切削量不当（最小切深大于螺纹牙高）",
         ),
         AlarmDoc(
             THREAD_DEPTH,
-            "illegal thread command (height or depth zero or negative)",
-            "螺纹指令不当（牙高或切深为零或负值）",
+            "illegal thread command in the threading cycle (height or depth of cut zero or negative)",
+            "螺纹切削循环中的螺纹指令不当（牙高或切深为零或负值）",
         ),
-        AlarmDoc(GROOVE_RELIEF, "illegal relief amount", "退刀量指令不当"),
-        AlarmDoc(GROOVE_END_POINT, "illegal end point", "终点指令不当"),
-        AlarmDoc(GROOVE_AMOUNT, "illegal movement or cutting amount", "移动量或切深指令不当"),
-        AlarmDoc(REPEAT_COUNT, "illegal repeat count", "重复次数指令不当"),
-        AlarmDoc(SHAPE_PAST_START, "the finishing shape goes past the starting point", "精加工形状超出了起点"),
-        AlarmDoc(SHAPE_COMMAND, "a command not allowed in the shape program", "形状程序中有不可用的指令"),
+        AlarmDoc(
+            GROOVE_RELIEF, "illegal relief amount in the drilling cycle (G74/G75)", "钻孔循环（G74/G75）的退刀量不当"
+        ),
+        AlarmDoc(
+            GROOVE_END_POINT,
+            "illegal end point command in the drilling cycle (G74/G75)",
+            "钻孔循环（G74/G75）的终点不当",
+        ),
+        AlarmDoc(
+            GROOVE_AMOUNT,
+            "illegal movement or cut amount in the drilling cycle (G74/G75)",
+            "钻孔循环（G74/G75）的移动量或切削量不当",
+        ),
+        AlarmDoc(
+            REPEAT_COUNT,
+            "illegal repeat count in the pattern repeating cycle (G73)",
+            "封闭切削循环（G73）的重复次数不当",
+        ),
+        AlarmDoc(SHAPE_PAST_START, "the finishing shape goes over the starting point", "精加工形状超出了循环起点"),
+        AlarmDoc(SHAPE_COMMAND, "unavailable command in the shape program", "形状程序中有不可用的指令"),
         AlarmDoc(
             SHAPE_NOT_MONOTONE_X,
             "the finishing shape is not a monotonous change (second axis)",

@@ -17,9 +17,10 @@ from typing import Any
 from ..bilingual import Detail, detail
 from .cycle_words import CycleWords
 from .drill_cycles import DrillCycle
+from .lathe_cycle_rules import LatheCycleRules
 from .tables import CodeDoc, CommonRange, FunctionDoc, LatheOffsets, ProgramDoc, SystemVariable, SystemVariableName
 from .timing import Timing
-from .turning_cycles import SingleCycle
+from .turning_cycles import LatheCycles, SingleCycle
 
 # G65 argument specification I (docs/semantics.md §5): letter -> local variable number.
 ARGUMENTS_I = {
@@ -160,10 +161,16 @@ class Dialect:
     # whether it comes out at rapid (turning_cycles.py); a turning cycle not listed is drawn as
     # one cut from where it starts to its end point
     single_cycles: dict[float, SingleCycle] = field(default_factory=dict)
+    # §10.3 a lathe's threads and grooving cycles as its manual has them: the thread codes, the
+    # word of a variable lead, whether G74/G75's X amounts are diameters (turning_cycles.py)
+    lathe_cycles: LatheCycles = field(default_factory=LatheCycles)
     # what each letter of a cycle block means, by G code (cycle_words.py: a lathe's G70–G76 with
     # their first and second blocks, G90/G92/G94, G32, G50, G96/G97; a mill's drilling cycles),
     # for the editor's hover, signature help and completion
     cycle_words: dict[float, CycleWords] = field(default_factory=dict)
+    # §10.5 what the control refuses in its multiple repetitive cycles G70–G76
+    # (lathe_cycle_rules.py); None on a mill, whose G73/G74/G76 are drilling cycles
+    cycle_rules: LatheCycleRules | None = None
 
     # what the machine takes time for: rapid rates, tool change, M codes, dwell units (timing.py;
     # the cycle time, planner/cycle_time.py)

@@ -16,6 +16,7 @@ from . import profiles
 from .dialect import Dialect
 
 DEFAULT_PROFILE = "fanuc-0i"
+LATHE_SUFFIX = "-lathe"  # a control's lathe profile is named after its mill's: fanuc-0i-lathe
 
 
 @cache
@@ -32,6 +33,17 @@ def all_profiles() -> tuple[Dialect, ...]:
     if len(set(names)) != len(names):
         raise RuntimeError(f"two profile modules share a name: {names}")
     return tuple(found)
+
+
+def lathe_forms(mill: str) -> tuple[Dialect, ...]:
+    """The lathe profiles to offer for a lathe program read as the profile ``mill``: its own
+    control's lathe (``mill`` + ``LATHE_SUFFIX``) where there is one, else the default
+    profile's, then every other lathe profile in the registry's order."""
+    lathes = [d for d in all_profiles() if d.lathe]
+    first = [d for d in lathes if d.name == mill + LATHE_SUFFIX] or [
+        d for d in lathes if d.name == DEFAULT_PROFILE + LATHE_SUFFIX
+    ]
+    return (*first, *(d for d in lathes if d not in first))
 
 
 @cache

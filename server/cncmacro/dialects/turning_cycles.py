@@ -1,16 +1,21 @@
-"""The path of a lathe's single fixed cycles (G90, G92, G94): the control's data for the planner
-(docs/semantics.md §9).
+"""The path of a lathe's single fixed cycles (G90, G92, G94) and what differs between lathe
+controls in their threads and grooving cycles: the control's data for the planner
+(docs/semantics.md §9, §10.3).
 
 Each goes in along one axis at rapid, cuts along the other to the end point, comes back out
 along the first (at the feed; a thread's G92 pulls out at rapid) and returns along the second
 at rapid to where it started (the GSK980TDi programming manual's G90 axial cutting cycle, G92
 thread cutting cycle and G94 radial cutting cycle). G90 and G92 go in along X first and cut
 along Z; G94 goes in along Z first and faces along X. ``planner/turning_cycles.py`` turns one into its legs.
+
+``LatheCycles`` holds what the two lathe manuals say differently (``Dialect.lathe_cycles``):
+which G codes cut a thread, the word of a variable lead's change per revolution, and whether
+G74/G75's X amounts are diameters.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 
 @dataclass(frozen=True)
@@ -29,3 +34,27 @@ LATHE_SINGLE_CYCLES: dict[float, SingleCycle] = {
     92.0: SingleCycle("X", rapid_out=True, thread=True),
     94.0: SingleCycle("Z"),
 }
+
+
+@dataclass(frozen=True)
+class LatheCycles:
+    """A lathe control's threading and grooving data (docs/semantics.md §10.3):
+
+    - ``thread_codes``: the modal G codes that cut a thread, their F the lead per revolution
+      whatever G98/G99 says (G32, G34 on both lathe profiles; GSK's G33 taps instead);
+    - ``variable_lead``: a variable-lead thread code and the word that gives its lead's change
+      per revolution (G34: K on the FANUC 0i-TF, R on the GSK980TDi);
+    - ``groove_x_on_diameter``: whether G74/G75's P(Δi) and G74's R(Δd), amounts along X, are
+      diameters (GSK980TDi §3.23.5/§3.23.6 say so) rather than radii;
+    - ``increment``: the millimetres of one unit of a cycle's P and Q written without a decimal
+      point (the least input increment, 0.001 mm; a tenth of that in inches under G20).
+    """
+
+    thread_codes: frozenset[float] = frozenset()
+    variable_lead: dict[float, str] = field(default_factory=dict)
+    groove_x_on_diameter: bool = False
+    increment: float = 0.001
+
+
+FANUC_LATHE_CYCLES = LatheCycles(frozenset({32.0, 34.0}), {34.0: "K"})
+GSK_LATHE_CYCLES = LatheCycles(frozenset({32.0, 34.0}), {34.0: "R"}, groove_x_on_diameter=True)

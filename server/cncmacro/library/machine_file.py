@@ -119,6 +119,9 @@ class MachineSettings:
     system_variables: tuple[SystemVariable, ...] = ()
     decimal_point: str = "calculator"
     block_delete: bool = False
+    # §10.5 the machine checks that a G71/G72 shape is monotone (FANUC's parameter, always on):
+    # a shape that is not is then an error, not a warning
+    shape_monotone_check: bool = False
     persistent_file: str | None = None
     max_blocks: int = DEFAULT_MAX_BLOCKS
     date: int | None = None
@@ -168,6 +171,7 @@ class _SettingsFields(TypedDict, total=False):
     system_variables: tuple[SystemVariable, ...]
     decimal_point: str
     block_delete: bool
+    shape_monotone_check: bool
     persistent_file: str | None
     max_blocks: int
     date: int | None
@@ -282,6 +286,10 @@ def find_machine_file(start: str | Path) -> Path | None:
     return None
 
 
+# the keys that are true or false
+_SWITCH_KEYS: tuple[Literal["block_delete", "shape_monotone_check"], ...] = ("block_delete", "shape_monotone_check")
+
+
 def settings_from_mapping(
     data: dict[str, object], source: str = "settings", folder: str | None = None
 ) -> MachineSettings:
@@ -292,7 +300,7 @@ def settings_from_mapping(
         return MachineFileError(detail(f"{source}: '{shown}' {what}", f"{source}：'{shown}' {what.zh}"), key=key)
 
     known = {"base", "dialect", "common", "program_digits", "programs_on_control", "system_variables",
-             "decimal_point", "block_delete", "persistent_file", "max_blocks", "date", "time",
+             "decimal_point", "block_delete", "shape_monotone_check", "persistent_file", "max_blocks", "date", "time",
              "variables", "calls", "skip", "severity", "timing", "lathe"}  # fmt: skip
     for key in data:
         if key not in known:
@@ -316,22 +324,16 @@ def settings_from_mapping(
     if "common" in data:
         kw["common"] = _common(data["common"], str(kw.get("dialect") or DEFAULT_DIALECT), fail)
     if "program_digits" in data:
-        v = data["program_digits"]
-        if not isinstance(v, int) or isinstance(v, bool) or not 4 <= v <= 8:
-            raise fail("program_digits", detail("must be a whole number from 4 to 8", "必须是 4 到 8 之间的整数"))
-        kw["program_digits"] = v
+        kw["program_digits"] = _program_digits(data["program_digits"], fail)
     if "programs_on_control" in data:
         kw["programs_on_control"] = _program_ranges(data["programs_on_control"], fail)
     if "system_variables" in data:
         kw["system_variables"] = _system_variables(data["system_variables"], fail)
     if "decimal_point" in data:
-        point = data["decimal_point"]
-        if not isinstance(point, str) or point not in ("calculator", "increment"):
-            raise fail("decimal_point", detail('must be "calculator" or "increment"',
-                                               '必须是 "calculator" 或 "increment"'))  # fmt: skip
-        kw["decimal_point"] = point
-    if "block_delete" in data:
-        kw["block_delete"] = _boolean(data["block_delete"], "block_delete", fail)
+        kw["decimal_point"] = _decimal_point(data["decimal_point"], fail)
+    for key in _SWITCH_KEYS:
+        if key in data:
+            kw[key] = _boolean(data[key], key, fail)
     if "persistent_file" in data:
         pf = data["persistent_file"]
         if (not isinstance(pf, str) or not pf or "\0" in pf or Path(pf).is_absolute()
@@ -356,6 +358,21 @@ def settings_from_mapping(
     if "timing" in data:
         kw["timing"] = timing_changes(data["timing"], fail)
     return MachineSettings(**kw)
+
+
+def _program_digits(v: object, fail: _Fail) -> int:
+    """``program_digits``: a whole number from 4 to 8."""
+    if not isinstance(v, int) or isinstance(v, bool) or not 4 <= v <= 8:
+        raise fail("program_digits", detail("must be a whole number from 4 to 8", "必须是 4 到 8 之间的整数"))
+    return v
+
+
+def _decimal_point(point: object, fail: _Fail) -> str:
+    """``decimal_point``: "calculator" or "increment"."""
+    if not isinstance(point, str) or point not in ("calculator", "increment"):
+        raise fail("decimal_point", detail('must be "calculator" or "increment"',
+                                           '必须是 "calculator" 或 "increment"'))  # fmt: skip
+    return point
 
 
 def _boolean(value: object, key: str, fail: _Fail) -> bool:

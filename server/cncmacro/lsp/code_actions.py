@@ -2,7 +2,8 @@
 write out a macro word written shortened (``WH`` → ``WHILE``), write Haas's conditional
 ``[cond] M99 P n`` as ``IF [cond] GOTO n`` where the profile does not read it
 (``conditional_m99.py``), and name the profile a file was written for (``profile-suggestion``:
-its dialect comment, or the machine file's ``base``).
+its dialect comment, or the machine file's ``base``; for a lathe program under ``fanuc-30i``, the
+machine file's ``lathe = true``, which no comment can say).
 
 docs/semantics.md §5: only N may precede G65/G66 in its block (``machine/block_rules.py``, whose
 ``BEFORE_CALL`` problem is the ``g65-nc-words`` finding). The split is offered exactly where that
@@ -142,26 +143,35 @@ def profile_actions(ls: CncMacroServer, doc: OpenDocument, diags: Sequence[types
     if other is None:
         return []
     encoding = ls.documents.encoding
-    at = 1 if doc.lines and doc.lines[0].strip().startswith("%") else 0
-    comment = types.TextEdit(doc_range(doc, at, 0, 0, encoding), f"(cncmacro: dialect={other.name})\n")
-    title = t("fix_comment", ls.locale, title=other.title, name=other.name)
-    out = [_action(doc, title, comment, asked, CODE)]
+    # the profile's own lathe form (fanuc-30i's): no comment names it, only the machine file's ``lathe = true``
+    variant = other.lathe and other.name == doc.dialect.name
+    out = []
+    if not variant:
+        at = 1 if doc.lines and doc.lines[0].strip().startswith("%") else 0
+        comment = types.TextEdit(doc_range(doc, at, 0, 0, encoding), f"(cncmacro: dialect={other.name})\n")
+        out.append(_action(doc, t("fix_comment", ls.locale, title=other.title, name=other.name), comment, asked, CODE))
     machine = doc.machine_file
     if machine is None and ls.roots:
         machine = Path(ls.roots[0]) / MACHINE_FILE_NAME
     if machine is not None:
+        title = (
+            t("fix_machine_lathe", ls.locale, title=other.title)
+            if variant
+            else t("fix_machine", ls.locale, name=other.name)
+        )
         out.append(types.CodeAction(
-            title=t("fix_machine", ls.locale, name=other.name), kind=types.CodeActionKind.QuickFix,
-            diagnostics=asked, edit=machine_file_edit(machine, other.name, encoding),
+            title=title, kind=types.CodeActionKind.QuickFix,
+            diagnostics=asked, edit=machine_file_edit(machine, other.name, encoding, lathe=variant),
         ))  # fmt: skip
     return out
 
 
-def machine_file_edit(path: Path, name: str, encoding: Encoding) -> types.WorkspaceEdit:
+def machine_file_edit(path: Path, name: str, encoding: Encoding, *, lathe: bool = False) -> types.WorkspaceEdit:
     """``base = "name"`` in the machine file at ``path``: the ``base`` or ``dialect`` line
-    replaced, else written first; the file is created when it does not exist."""
+    replaced, else written first; the file is created when it does not exist. With ``lathe``,
+    ``lathe = true`` is written after it, in place of a ``lathe`` line before the first table."""
     uri = path.as_uri()
-    line = f'base = "{name}"'
+    line = f'base = "{name}"' + ("\nlathe = true" if lathe else "")
     start = types.Range(types.Position(0, 0), types.Position(0, 0))
     if not path.is_file():
         return types.WorkspaceEdit(document_changes=[
@@ -173,16 +183,22 @@ def machine_file_edit(path: Path, name: str, encoding: Encoding) -> types.Worksp
         lines = read_bytes(path, MAX_MACHINE_FILE_BYTES).decode("utf-8").split("\n")
     except (OSError, SkippedFileError, UnicodeDecodeError):
         lines = []
+    edits: list[types.TextEdit] = []
+    for k, text in enumerate(lines):
+        if re.match(r"\s*\[", text):  # keys after a table header belong to it: write before it
+            break
+        if lathe and re.match(r"\s*lathe\s*=", text):  # the old lathe line goes
+            edits.append(types.TextEdit(types.Range(types.Position(k, 0), types.Position(k + 1, 0)), ""))
     for k, text in enumerate(lines):
         if re.match(r"\s*(base|dialect)\s*=", text):
-            edit = types.TextEdit(encoding.range(k, text, 0, len(text)), line)
+            edits.append(types.TextEdit(encoding.range(k, text, 0, len(text)), line))
             break
-        if re.match(r"\s*\[", text):  # keys after a table header belong to it: write before it
-            edit = types.TextEdit(types.Range(types.Position(k, 0), types.Position(k, 0)), line + "\n")
+        if re.match(r"\s*\[", text):
+            edits.append(types.TextEdit(types.Range(types.Position(k, 0), types.Position(k, 0)), line + "\n"))
             break
     else:
-        edit = types.TextEdit(types.Range(types.Position(0, 0), types.Position(0, 0)), line + "\n")
-    return types.WorkspaceEdit(changes={uri: [edit]})
+        edits.append(types.TextEdit(types.Range(types.Position(0, 0), types.Position(0, 0)), line + "\n"))
+    return types.WorkspaceEdit(changes={uri: edits})
 
 
 def _action(

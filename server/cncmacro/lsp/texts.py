@@ -102,6 +102,10 @@ TEXTS: dict[str, tuple[str, str]] = {
         'Set base = "{name}" in .cncmacro.toml (every file of the workspace)',
         '在 .cncmacro.toml 中设定 base = "{name}"（对工作区所有文件生效）',
     ),
+    "fix_machine_lathe": (
+        "Set lathe = true in .cncmacro.toml: a {title} (every file of the workspace)",
+        "在 .cncmacro.toml 中设定 lathe = true：{title}（对工作区所有文件生效）",
+    ),
     "fix_split": ("Split: move {words} to a block before the {name}", "拆分：把 {words} 移到 {name} 之前的单独程序段"),
     "fix_clamp": ("Clamp the repeat count to {value}", "把重复次数改为{value}"),
     "fix_expand": ("Write {word} in full", "把{text}写全为{word}"),

@@ -19,9 +19,11 @@ import math
 from typing import TYPE_CHECKING
 
 from ..planner.arcs import ARC_MODES
-from ..planner.cycle_time import INCH
+from ..planner.cycle_time import INCH, SPEED_CLAMP
 from ..planner.moves import Move
 from ..planner.plain_words import NOT_PLAIN, PLAIN_ARC_LETTERS, PLAIN_F, PLAIN_G, PLAIN_INCREMENTAL, PLAIN_S
+from ..planner.planner import FEED_HINT_GIVEN
+from ..planner.turning_cycles import forget_single_cycle
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile
@@ -29,7 +31,6 @@ if TYPE_CHECKING:
     from .observer import RunObserver
 
 _new_move = tuple.__new__
-_SECONDS_PER_MINUTE = 60.0
 
 
 def run_straight(
@@ -55,6 +56,8 @@ def run_straight(
     g_words = p.plain.g_words()
     lathe = p.lathe
     cycles = p.cycle_codes
+    lead_modes = p.times.variable_lead  # a variable-lead thread reads its own word: the compiled path
+    feed_hint = p.feed_hint
     modal = p.modal
     codes = p.codes
     clock = p.clock
@@ -149,11 +152,20 @@ def run_straight(
         else:
             if arc is not None and not moved and (mode if new_mode is None else new_mode) in ARC_MODES:
                 break  # I, J, K alone are a full circle, R alone no move: the compiled path decides
+            line_mode = mode if new_mode is None else new_mode
+            if moved and line_mode in lead_modes:
+                break
+            line_f = f if feed is None else feed
+            if (feed_hint and moved and line_mode != 0.0 and (others is not None or not per_rev)
+                    and 0.0 < line_f < 1.0 and FEED_HINT_GIVEN not in codes):  # fmt: skip
+                break  # a per-minute feed below 1: the compiled path looks at it (``feed_per_minute_hint``)
             if new_mode is not None:
                 if moved and new_mode in cycles:
                     break  # a cycle decides this line: the compiled path runs it
                 if new_mode != mode:
                     mode = modal["motion"] = new_mode
+                    if lathe and new_mode not in p.dialect.single_cycles:
+                        forget_single_cycle(p)  # a single cycle's modal words (planner/turning_cycles.py)
                 if canned != 80.0 and not lathe:
                     canned = modal["canned"] = 80.0
             elif moved and (mode in cycles or (canned != 80.0 and not lathe)):
@@ -191,8 +203,8 @@ def run_straight(
                         length = dist(start, end)
                     else:
                         length = times.arc_length(mode, plane, start, end, centre)
-                    rate = times.feed_rate(f, True, codes.get("S") or 0.0, css, start, end, unit) if per_rev else f
-                    seconds = length / rate * _SECONDS_PER_MINUTE if rate > 0.0 else 0.0
+                    seconds = times.feed_seconds(mode, length, f, per_rev, codes.get("S") or 0.0, css,
+                                                 codes.get(SPEED_CLAMP), start, end, unit)  # fmt: skip
                     cut += length * unit
                 clock += seconds
                 if append is not None:

@@ -16,6 +16,7 @@ from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
 from .moves import ToolChange
 from .tool_offsets import apply_length_offset, select_tool
+from .turning_cycles import forget_single_cycle
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -32,6 +33,8 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float]) -> float | N
             one_shot_code = g
         elif group != "macro":  # G66/G67 are the macro machine's
             p.modal[group] = g
+            if group == "motion" and g not in p.dialect.single_cycles:
+                forget_single_cycle(p)  # a single cycle's modal words (turning_cycles.py)
             if group == "canned" and g != 80.0:
                 p.cycle_start_z = None
             if group == "wcs" and g == 54.1:

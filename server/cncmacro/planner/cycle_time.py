@@ -14,10 +14,13 @@ without acceleration a corner costs no time; feed and rapid overrides at 100 %.
   by the feed rate. The length of an arc is the length of the arc (its sweep times its
   radius, with a helix's third axis added as the other side of a right triangle), not of the
   chord; a full circle is one turn. Feed per minute (G94; G98 on a lathe) is F in mm/min (in/min
-  under G20); feed per revolution (G95; G99 on a lathe) is F times the spindle speed S. Under
-  G96 (constant surface speed, lathes) the spindle speed is S·1000 / (π·D) at the diameter D
-  midway along the move, never above ``Timing.max_spindle_speed``. A feed move without a feed
-  (F0, or per revolution with S0) takes no time.
+  under G20); feed per revolution (G95; G99 on a lathe) is F per turn of the spindle at S
+  rev/min. Under G96 (constant surface speed, lathes) the spindle turns at S·1000 / (π·D) at
+  each point of the move, D the diameter there, never above the G50 S clamp nor
+  ``Timing.max_spindle_speed``: the time is integrated along the move in closed form
+  (``per_rev_minutes``). A lathe's thread (``LatheCycles.thread_codes``: G32, G34) moves its
+  long axis by the lead F per revolution whatever G98/G99 says; G34's lead grows by its change
+  per revolution. A feed move without a feed (F0, or per revolution with S0) takes no time.
 - Lengths are in mm (a G20 program's inches times 25.4); on a lathe X is a diameter, so the tool
   moves half of an X difference. A rotary axis's degrees count as millimetres, as in a FANUC
   feed of a move with rotary axes.
@@ -38,6 +41,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from itertools import pairwise
 from math import atan2, dist, hypot, sqrt
 from operator import mul, sub
 from typing import TYPE_CHECKING
@@ -46,6 +50,8 @@ if TYPE_CHECKING:
     from ..dialects import Dialect
 
 INCH = 25.4
+# the planner's ``codes`` key of the spindle's top speed a lathe's ``G50 S`` sets (G96's clamp)
+SPEED_CLAMP = "S-clamp"
 # the kinds of a drilling cycle's steps (``cycle_seconds``): a rapid and a feed along the drilling
 # axis, and a rapid shift across it (G76, G87)
 RAPID_STEP, FEED_STEP, SHIFT_STEP = 0, 1, 2
@@ -77,6 +83,9 @@ class MoveTimes:
             if a in axes and b in axes:
                 i, j = axes.index(a), axes.index(b)
                 self.planes[code] = (i, j, 0.5 if i == diameter else 1.0, 0.5 if j == diameter else 1.0)
+        cycles = dialect.lathe_cycles
+        self.thread_modes = cycles.thread_codes
+        self.variable_lead = cycles.variable_lead
         self.tool_change_m = float(timing.tool_change_code[1:]) if timing.tool_change_code.startswith("M") else None
         self.tool_change_t = timing.tool_change_code == "T"
 
@@ -118,17 +127,55 @@ class MoveTimes:
         off = (dist(start, end) if self.scale is None else self.distance(start, end)) ** 2 - da * da - db * db
         return sqrt(arc * arc + off) if off > 1e-12 else arc
 
-    def feed_rate(self, feed: float, per_rev: bool, speed: float, css: bool,
-                  start: Sequence[float], end: Sequence[float], unit: float) -> float:  # fmt: skip
-        """The feed in program units per minute: F, or per revolution F times the spindle's
-        speed (under G96 worked out from S and the diameter midway along the move)."""
-        if not per_rev:
-            return feed
-        if css and self.diameter >= 0:
-            d = abs(start[self.diameter] + end[self.diameter]) * 0.5 * unit  # mm
-            top = self.timing.max_spindle_speed
-            speed = min(top, speed * 1000.0 / (math.pi * d)) if d > 0.0 else top
-        return feed * speed
+    def long_axis(self, start: Sequence[float], end: Sequence[float]) -> float:
+        """How far a thread's long axis moves from ``start`` to ``end`` (X by its radius): the
+        axis its lead is measured along."""
+        scale = self.scale
+        if scale is None:
+            return max(map(abs, map(sub, end, start)), default=0.0)
+        return max((abs(b - a) * k for a, b, k in zip(start, end, scale, strict=True)), default=0.0)
+
+    def feed_seconds(self, mode: float, length: float, feed: float, per_rev: bool, speed: float, css: bool,
+                     clamp: float | None, start: Sequence[float], end: Sequence[float], unit: float,
+                     lead_change: float = 0.0) -> float:  # fmt: skip
+        """Seconds of a cutting move in ``mode`` of ``length`` (program units) at ``feed``: per
+        minute, or per revolution at spindle ``speed`` (S; under ``css`` a surface speed, the
+        spindle clamped at ``clamp``, ``G50 S``). A thread's (``thread_modes``) is per revolution,
+        along its long axis, its lead growing by ``lead_change`` per revolution (G34)."""
+        if mode in self.thread_modes:
+            length = self.long_axis(start, end)
+            if lead_change and length > 0.0 and feed > 0.0:
+                feed = _mean_lead(length, feed, lead_change)
+        elif not per_rev:
+            return length / feed * 60.0 if feed > 0.0 else 0.0
+        return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit) * 60.0
+
+    def per_rev_minutes(self, length: float, feed: float, speed: float, css: bool, clamp: float | None,
+                        start: Sequence[float], end: Sequence[float], unit: float) -> float:  # fmt: skip
+        """Minutes to move ``length`` at ``feed`` per revolution. At a constant ``speed``,
+        length / (F·S). Under G96 (``css``) the spindle turns at 1000·V / (π·D) (V = S), D the
+        diameter where the tool is, never above ``clamp`` and the spindle's top speed: over a
+        straight move D changes linearly, so dt = dl·π·D / (1000·V·F) integrates to the piece's
+        length times its mean diameter where the spindle is not clamped, and to length / (F·top)
+        where it is; the move is cut where |D| passes 0 or the clamp's diameter."""
+        if feed <= 0.0 or length <= 0.0:
+            return 0.0
+        d = self.diameter
+        if not css or d < 0:
+            return length / (feed * speed) if speed > 0.0 else 0.0
+        top = self.timing.max_spindle_speed if clamp is None else min(clamp, self.timing.max_spindle_speed)
+        if speed <= 0.0 or top <= 0.0:
+            return 0.0
+        x0, x1 = start[d] * unit, end[d] * unit  # diameters, mm
+        surface = 1000.0 * speed / math.pi  # rev/min times the diameter (mm) at surface speed S
+        knee = surface / top  # below this diameter the spindle turns at its top speed
+        cuts = sorted({0.0, 1.0, *(t for v in (0.0, knee, -knee) if (t := _crossing(x0, x1, v)) is not None)})
+        minutes = 0.0
+        for a, b in pairwise(cuts):
+            mean = 0.5 * (abs(x0 + (x1 - x0) * a) + abs(x0 + (x1 - x0) * b))
+            piece = length * (b - a)
+            minutes += piece / (feed * top) if mean <= knee else piece * mean / (feed * surface)
+        return minutes
 
     def cycle_seconds(
         self, steps: Sequence[tuple[int, float]], drill_axis: int, shift_axis: int, rate: float, unit: float
@@ -160,3 +207,21 @@ class MoveTimes:
         if m == self.tool_change_m:
             return self.timing.tool_change_seconds
         return self.timing.m_code_seconds.get(m, 0.0)
+
+
+def _crossing(x0: float, x1: float, v: float) -> float | None:
+    """Where (0 to 1) a straight move from ``x0`` to ``x1`` passes ``v``, if strictly inside."""
+    if (x0 - v) * (x1 - v) < 0.0:
+        return (v - x0) / (x1 - x0)
+    return None
+
+
+def _mean_lead(length: float, lead: float, change: float) -> float:
+    """The mean lead of a variable-lead thread ``length`` long that starts at ``lead`` and grows
+    by ``change`` per revolution: after N turns it has gone F·N + K·N²/2, so N = (√(F² + 2·K·L)
+    − F) / K; a lead that would shrink below zero first keeps ``lead``."""
+    root = lead * lead + 2.0 * change * length
+    if root < 0.0:
+        return lead
+    turns = (math.sqrt(root) - lead) / change
+    return length / turns if turns > 0.0 else lead

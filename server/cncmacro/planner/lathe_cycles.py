@@ -13,7 +13,8 @@ what each block of G70–G76 means and the moves it makes.
 - **G70 P Q** runs the shape blocks as they are written, with their own F, S and T, then
   returns to the start point at rapid.
 - **G74, G75, G76** and the single cycles G90, G92, G94 are planned by their own modules
-  (``MULTIPLE_CYCLES``; turning_cycles.py); a code no module plans yet is recorded as one cut.
+  (``MULTIPLE_CYCLES``: groove_cycles.py, thread_cycles.py; turning_cycles.py); a code no
+  module plans is recorded as one cut.
 
 Every move of a cycle is recorded with the cycle block's line and ``pass_of`` (its code), so
 the toolpath view draws each pass and the debugger knows which pass it is on.
@@ -26,7 +27,9 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, NamedTuple
 
 from .cycle_rules import check_cycle_block, check_shape
+from .groove_cycles import diameter_grooving, face_grooving
 from .stock_removal import Point, Segment, Step, pattern_passes, rough_passes, translate
+from .thread_cycles import multiple_thread
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -34,6 +37,8 @@ if TYPE_CHECKING:
 ROUGHING = frozenset({71.0, 72.0, 73.0})
 FINISHING = 70.0
 SHAPE_CODES = ROUGHING | {FINISHING}
+# the cycles whose blocks the control checks (cycle_rules.py), planned or not
+CHECKED_CYCLES = SHAPE_CODES | {74.0, 75.0, 76.0}
 # G71–G73's own words: in their blocks U and W are parameters (depths, allowances), never moves
 _PARAMETER_UW = SHAPE_CODES
 
@@ -51,7 +56,8 @@ class ShapeCall(NamedTuple):
 class ShapeReading:
     """A shape cycle under way: its code, block (file, line), words, where the tool started,
     whether the shape is being read (G71–G73) rather than run (G70), the codes its reading set
-    aside, and the segments read so far (mode, start, end, centre), in work coordinates."""
+    aside, the segments read so far (mode, start, end, centre), in work coordinates, and the axes
+    (by index) its first block with an axis word names (both X and Z: a type II shape)."""
 
     code: float
     file: str
@@ -63,15 +69,20 @@ class ShapeReading:
     segments: list[tuple[float, tuple[float, ...], tuple[float, ...], tuple[float, ...] | None]] = field(
         default_factory=list
     )
+    first_axes: frozenset[int] | None = None
 
     def copy(self) -> ShapeReading:
         return ShapeReading(self.code, self.file, self.line, dict(self.words), self.start, self.reading,
-                            dict(self.kept_codes), list(self.segments))  # fmt: skip
+                            dict(self.kept_codes), list(self.segments), self.first_axes)  # fmt: skip
 
 
 # code -> the planner of a cycle's second block: (planner, block words with U/W, file, line, end point)
 MultipleCycle = Callable[["Planner", dict[str, float], str, int, list[float]], None]
-MULTIPLE_CYCLES: dict[float, MultipleCycle] = {}
+MULTIPLE_CYCLES: dict[float, MultipleCycle] = {
+    74.0: face_grooving,  # groove_cycles.py
+    75.0: diameter_grooving,
+    76.0: multiple_thread,  # thread_cycles.py
+}
 
 
 def block_words(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]) -> dict[str, float]:
@@ -93,7 +104,7 @@ def lathe_cycle(
     if g in SHAPE_CODES:
         words = block_words(p, axes, inc, other)
         check_cycle_block(p, g, words)
-        if "P" in words and "Q" in words:
+        if ("P" in words and "Q" in words) if g == FINISHING else second_block(p, g, words):
             call = ShapeCall(g, words["P"], words["Q"])
             begin_shape(p, call, words, file, line)
             return True, call
@@ -101,16 +112,26 @@ def lathe_cycle(
             p.cycle_params[g] = words
         return False, None
     plan = MULTIPLE_CYCLES.get(g)
-    if plan is not None:
-        if not axes and not inc:  # the first block: its parameters
+    if plan is not None or g in CHECKED_CYCLES:
+        words = block_words(p, axes, inc, other)
+        if not second_block(p, g, words):  # the first block: its parameters
+            check_cycle_block(p, g, dict(other))
             p.cycle_params[g] = dict(other)
             return False, None
-        words = block_words(p, axes, inc, other)
         check_cycle_block(p, g, words)
-        plan(p, words, file, line, p.target(axes, inc))
-        return True, None
-    p.turning_cycle(file, line, g, p.target(axes, inc))
+        if plan is not None:
+            plan(p, words, file, line, p.target(axes, inc))
+            return True, None
+    p.turning_cycle(file, line, g, axes, inc, other)
     return bool(axes or inc), None
+
+
+def second_block(p: Planner, g: float, words: dict[str, float]) -> bool:
+    """Whether a block of two-block cycle ``g`` with ``words`` is its second, the one that cuts:
+    the profile's rule (``Dialect.cycle_words``, dialects/cycle_words.py: G71–G73 with P and Q,
+    G74–G76 with an end point), which the editor's hover follows too."""
+    described = p.dialect.cycle_words.get(g)
+    return described is not None and described.is_second(words)
 
 
 def begin_shape(p: Planner, call: ShapeCall, words: dict[str, float], file: str, line: int) -> None:

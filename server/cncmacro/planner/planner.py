@@ -20,9 +20,10 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
+from ..bilingual import detail
 from .arcs import ARC_MODES, arc_centre, arc_planes
 from .block_words import set_codes, set_modal
-from .cycle_time import INCH, MoveTimes
+from .cycle_time import INCH, SPEED_CLAMP, MoveTimes
 from .drill_cycles import drill_block
 from .lathe_cycles import ShapeCall, ShapeReading
 from .modal_groups import extra_offset_codes, g_code_groups
@@ -32,7 +33,7 @@ from .plain_words import PlainRun, PlainWords
 from .positions import position_value
 from .probing import Probe, SkipState
 from .state import MODAL_DEFAULTS, PlannerState
-from .turning_cycles import single_cycle, turning_legs
+from .turning_cycles import forget_single_cycle, single_cycle, single_cycle_target, turning_legs
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -40,6 +41,8 @@ if TYPE_CHECKING:
     from .host import PlannerHost
 
 _new_move = tuple.__new__  # a Move without the NamedTuple constructor's keyword handling
+# the ``codes`` key set once a run has been told that its per-minute feed looks per revolution
+FEED_HINT_GIVEN = "G99-hint"
 
 
 class Planner:
@@ -82,6 +85,8 @@ class Planner:
         self._call_needs_distance = dialect.modal_call_needs_distance
         self._arc_planes = arc_planes(self.axis_index)
         self._diameter = self.axis_index.get("X", -1) if self.lathe else -1
+        # a lathe that powers on in G98 (per minute): a cutting F below 1 there lacks a G99
+        self.feed_hint = self.lathe and dialect.modal_defaults.get("feed") == 98.0
 
     # ---------------------------------------------------------------- state for the macro machine
     def read(self, source: str, param: str, default: float | None, index: int) -> float | None:
@@ -126,6 +131,8 @@ class Planner:
         modal = self.modal
         for group, g in modal_sets:
             modal[group] = g
+            if group == "motion" and self.cycle_params and g not in self.dialect.single_cycles:
+                forget_single_cycle(self)
         if code_sets:
             codes = self.codes
             for letter, v in code_sets:
@@ -135,8 +142,10 @@ class Planner:
                 return self._cycle_fallback(plan, file, line)
             return False
         mode = modal["motion"]
-        if mode in self.cycle_codes or (modal["canned"] != 80.0 and not self.lathe):
+        if mode in self.cycle_codes or mode in self.times.variable_lead or (modal["canned"] != 80.0 and not self.lathe):
             return self._cycle_fallback(plan, file, line)
+        if self.shape is not None:
+            self._shape_axes(frozenset(i for i, _ in axes) | frozenset(i for i, _ in inc))
         start = self.pos
         target = start[:]
         if self.lathe or modal["distance"] == 90.0:
@@ -152,6 +161,13 @@ class Planner:
         centre = self.arc_centre(mode, start, target, dict(extra)) if extra and mode in ARC_MODES else None
         self.record(file, line, mode, tuple(start), tuple(target), centre)
         return not self._call_needs_distance or target != start or centre is not None
+
+    def _shape_axes(self, named: frozenset[int]) -> None:
+        """A block of a lathe cycle's shape names the axes ``named`` (by index): the first such
+        block says whether the shape is type I or II (lathe_cycles.py)."""
+        shape = self.shape
+        if shape is not None and shape.first_axes is None:
+            shape.first_axes = named
 
     def _cycle_fallback(self, plan: PlainRun, file: str, line: int) -> bool:
         inverse = {v: k for k, v in self.dialect.incremental_letters.items()}
@@ -185,25 +201,31 @@ class Planner:
         one = set_modal(self, gs, other)
         if self.lathe and one == self.dialect.coordinate_setting_code and "S" in other:
             # G50 S is the spindle speed clamp (docs/semantics.md §10.4), not a spindle speed
+            self.codes[SPEED_CLAMP] = other["S"]
             set_codes(self, {k: v for k, v in other.items() if k != "S"}, file, line)
         else:
             set_codes(self, other, file, line)
         if one is not None:
+            if one != 4.0 and self.cycle_params:
+                forget_single_cycle(self)
             return one_shot(self, one, axes, incremental, other, file, line)
         mode = self.modal.get("motion", 0.0)
         canned = self.modal.get("canned", 80.0)
         if not axes and not incremental:
             return self._full_circle(mode, canned, other, file, line), None
+        if self.shape is not None:
+            self._shape_axes(frozenset(axes) | frozenset(incremental))
         target = self.target(axes, incremental)
         if not self.lathe and canned != 80.0:
             drill_block(self, canned, axes, incremental, other, file, line)  # drill_cycles.py
             return True, None
         if mode in self.cycle_codes:
-            self.turning_cycle(file, line, mode, target)
+            self.turning_cycle(file, line, mode, axes, incremental, other)
             return True, None  # a turning cycle ends where it started
         centre = self.block_arc(mode, target, other)
         moved = not self._call_needs_distance or target != self.pos or centre is not None
-        self.move(file, line, mode, target, centre)
+        lead = self.times.variable_lead.get(mode)
+        self.move(file, line, mode, target, centre, other.get(lead, 0.0) if lead else 0.0)
         return moved, None
 
     # ---------------------------------------------------------------- arcs
@@ -247,19 +269,30 @@ class Planner:
         return target
 
     def move(
-        self, file: str, line: int, mode: float, target: list[float], centre: tuple[float, ...] | None = None
+        self,
+        file: str,
+        line: int,
+        mode: float,
+        target: list[float],
+        centre: tuple[float, ...] | None = None,
+        lead_change: float = 0.0,
     ) -> None:
-        """Move to ``target`` in ``mode`` (an arc about ``centre``) and record it."""
-        self.record(file, line, mode, tuple(self.pos), tuple(target), centre)
+        """Move to ``target`` in ``mode`` (an arc about ``centre``; a variable-lead thread whose
+        lead changes by ``lead_change`` per revolution) and record it."""
+        self.record(file, line, mode, tuple(self.pos), tuple(target), centre, lead_change=lead_change)
         self.pos[:] = target
 
-    def turning_cycle(self, file: str, line: int, code: float, target: list[float]) -> None:
-        """A lathe's turning cycle to ``target``, recorded with its legs (turning_cycles.py); the
-        tool ends where it started."""
+    def turning_cycle(
+        self, file: str, line: int, code: float, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]
+    ) -> None:
+        """A lathe's turning cycle to the block's end point, recorded with its legs
+        (turning_cycles.py; a single cycle's words are modal); the tool ends where it started."""
         single = self.dialect.single_cycles.get(code)
         if single is not None:
-            single_cycle(self, file, line, code, single, target)
-        else:  # timed as the one cut it is drawn as, until its passes are planned
+            target, taper = single_cycle_target(self, code, axes, inc, other)
+            single_cycle(self, file, line, code, single, target, taper)
+        else:  # a cycle no module plans (gsk980tdi's drilling cycles): timed as the one cut it is drawn as
+            target = self.target(axes, inc)
             start = tuple(self.pos)
             legs = turning_legs(None, self.axis_index, start, target)
             self.record(file, line, code, start, tuple(target), None, legs, TURNING)
@@ -275,6 +308,7 @@ class Planner:
         legs: tuple[Leg, ...] | None = None,
         cycle: str | None = None,
         pass_of: str | None = None,
+        lead_change: float = 0.0,
     ) -> None:
         """Advance the clock by the move's time, add its length to the path and record the move
         (with an arc's centre and plane, a cycle's legs, its time, the lathe cycle it is a pass
@@ -297,20 +331,47 @@ class Planner:
                 length = times.arc_length(mode, plane, start, end, centre)
             else:
                 length = times.distance(start, end)
-            rate = self.cutting_rate(feed, start, end, unit)
-            seconds = length / rate * 60.0 if rate > 0 else 0.0
+            seconds = self.feed_seconds(mode, length, feed, start, end, unit, lead_change)
             self.cut_length += length * unit
+            if self.feed_hint and 0.0 < feed < 1.0:
+                self.feed_per_minute_hint(mode, feed, line)
         self.clock += seconds
         if self.record_moves:
             self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre, seconds, plane, legs,
                                               cycle, pass_of)))  # fmt: skip
 
-    def cutting_rate(self, feed: float, start: Sequence[float], end: Sequence[float], unit: float) -> float:
-        """The feed of a cutting move from ``start`` to ``end`` in program units per minute:
-        F, or per revolution F times the spindle speed (``MoveTimes.feed_rate``)."""
+    def feed_per_minute_hint(self, mode: float, feed: float, line: int) -> None:
+        """On a lathe that powers on in G98 (``feed_hint``: gsk980tdi), a cut at F below 1 under
+        G98 is a feed per revolution without its G99 (0.2 mm/min cuts nothing): a note, once a
+        run, that the analysis shows as a ``feed-per-minute`` hint (docs/semantics.md §10.4)."""
+        if self.modal.get("feed") != 98.0 or mode in self.times.thread_modes or FEED_HINT_GIVEN in self.codes:
+            return
+        self.codes[FEED_HINT_GIVEN] = 1.0
+        f = f"F{feed:g}"
+        self.host.note(
+            "feed",
+            detail(f"{f} under G98 is {feed:g} mm/min: a cutting feed below 1 per minute almost surely means per "
+                   "revolution, and this control powers on in G98 (feed per minute); add G99 before the cut",
+                   f"G98（每分钟进给）下 {f} 即 {feed:g} mm/min：每分钟进给小于 1 几乎肯定是每转进给，"
+                   "本系统上电默认为 G98，请在切削前加 G99"),
+            line,
+            "feed-per-minute",
+        )  # fmt: skip
+
+    def feed_seconds(self, mode: float, length: float, feed: float, start: Sequence[float], end: Sequence[float],
+                     unit: float, lead_change: float = 0.0) -> float:  # fmt: skip
+        """The seconds of a cutting move in ``mode`` from ``start`` to ``end``, ``length`` long, by
+        the feed mode, spindle speed, G96 and G50 S clamp in force (``MoveTimes.feed_seconds``)."""
         modal = self.modal
         per_rev = modal.get("feed")
-        if per_rev == 95.0 or (per_rev == 99.0 and self.lathe):
-            return self.times.feed_rate(feed, True, self.codes.get("S") or 0.0, modal.get("spindle") == 96.0,
-                                        start, end, unit)  # fmt: skip
-        return feed  # per minute (``feed_rate``)
+        codes = self.codes
+        return self.times.feed_seconds(mode, length, feed, per_rev == 95.0 or (per_rev == 99.0 and self.lathe),
+                                       codes.get("S") or 0.0, modal.get("spindle") == 96.0, codes.get(SPEED_CLAMP),
+                                       start, end, unit, lead_change)  # fmt: skip
+
+    def cutting_rate(self, feed: float, start: Sequence[float], end: Sequence[float], unit: float) -> float:
+        """The feed of a G01 from ``start`` to ``end`` in program units per minute, as
+        ``feed_seconds`` times it (a mill's drilling cycle, drill_cycles.py)."""
+        length = self.times.distance(start, end)
+        seconds = self.feed_seconds(1.0, length, feed, start, end, unit)
+        return length / seconds * 60.0 if seconds > 0.0 else 0.0

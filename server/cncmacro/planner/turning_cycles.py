@@ -1,10 +1,17 @@
-"""A lathe's turning cycle as the legs it is drawn and timed by (docs/semantics.md §9).
+"""A lathe's single turning cycle as the legs it is drawn and timed by (docs/semantics.md §9,
+§10.3).
 
 A single fixed cycle (G90, G92, G94: ``Dialect.single_cycles``, dialects/turning_cycles.py) goes
 in along its first axis at rapid, cuts along the other to the end point, comes back out along
 the first (at the feed, or at rapid for a thread's pull-out) and returns at rapid to where it
-started. Any other turning cycle (G70–G76 so far) is one cut from where it starts to its end
-point, until its passes are planned.
+started. R tapers the cut: it is where the cut starts less where it ends, along the first axis
+(G90, G92: a radius, so the cut starts at X + 2R; G94: along Z, at Z + R).
+
+X (U), Z (W) and R are modal (``single_cycle_target``): a following block of the cycle that
+gives only X (or only Z) cuts again to the other coordinate of the last cycle block, with its R
+(and F), until a G code of the motion group other than these cycles or a one-shot code other
+than G04 clears them (``forget_single_cycle``; FANUC 0i-TF and GSK980TDi: the single cycles'
+examples that step X alone, then Z alone with R).
 
 A single cycle is timed leg by leg (``time_legs``, by cycle_time.py's rules): a rapid leg at the
 axes' rapid rates, a cutting leg at the feed in force, except a thread's (G92), whose F is the
@@ -23,16 +30,26 @@ if TYPE_CHECKING:
     from ..dialects.turning_cycles import SingleCycle
     from .planner import Planner
 
+# the ``Planner.cycle_params`` key of the modal words of the single cycle in force
+SINGLE_CYCLE_WORDS = -1.0
+# the mode a cycle's thread cut is timed and drawn as (G32 on both lathe profiles; cycle_time.py)
+THREAD_MODE = 32.0
+
 
 def turning_legs(
-    cycle: SingleCycle | None, axis_index: Mapping[str, int], start: Sequence[float], end: Sequence[float]
+    cycle: SingleCycle | None,
+    axis_index: Mapping[str, int],
+    start: Sequence[float],
+    end: Sequence[float],
+    taper: float = 0.0,
 ) -> tuple[Leg, ...]:
-    """The legs of a turning cycle from ``start`` to its end point ``end`` (module docstring)."""
+    """The legs of a turning cycle from ``start`` to its end point ``end`` (module docstring),
+    ``taper`` the cut's start less its end along the first axis, in that axis's units."""
     first = None if cycle is None else axis_index.get(cycle.first)
     if cycle is None or first is None:
         return (Leg(False, tuple(end)),)
     inside = list(start)
-    inside[first] = end[first]
+    inside[first] = end[first] + taper
     out = list(end)
     out[first] = start[first]
     return (
@@ -49,6 +66,7 @@ def time_legs(p: Planner, start: tuple[float, ...], legs: tuple[Leg, ...], threa
     times = p.times
     unit = INCH if p.modal.get("units") == 20.0 else 1.0
     feed = p.codes.get("F") or 0.0
+    mode = THREAD_MODE if thread else 1.0
     seconds = 0.0
     at: tuple[float, ...] = start
     for leg in legs:
@@ -57,26 +75,61 @@ def time_legs(p: Planner, start: tuple[float, ...], legs: tuple[Leg, ...], threa
             seconds += times.rapid_seconds(at, leg.end, unit)
             p.rapid_length += length * unit
         else:
-            speed = p.codes.get("S") or 0.0
-            rate = (
-                times.feed_rate(feed, True, speed, False, at, leg.end, unit)
-                if thread
-                else p.cutting_rate(feed, at, leg.end, unit)
-            )
-            seconds += length / rate * 60.0 if rate > 0 else 0.0
+            cut_mode = mode if leg is legs[1] else 1.0  # only the cut along the thread is threaded
+            seconds += p.feed_seconds(cut_mode, length, feed, at, leg.end, unit)
             p.cut_length += length * unit
         at = leg.end
     p.clock += seconds
     return seconds
 
 
-def single_cycle(p: Planner, file: str, line: int, code: float, cycle: SingleCycle, target: list[float]) -> None:
-    """Run single cycle ``code`` from where the tool is to ``target`` and back: time its legs and
-    record it as one move with them."""
+def single_cycle_target(
+    p: Planner, code: float, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]
+) -> tuple[list[float], float]:
+    """The end point and taper R of single cycle ``code``'s block: its X (U), Z (W) and R, and
+    for those it leaves out the last cycle block's (module docstring). Kept for the next block."""
+    kept = p.cycle_params.get(SINGLE_CYCLE_WORDS, {})
+    same = kept.get("G") == code
+    names = p.dialect.axes
+    target = list(p.pos)
+    for i, name in enumerate(names):
+        if i in axes:
+            target[i] = axes[i]
+        elif i in inc:
+            target[i] += inc[i]
+        elif same and name in kept:
+            target[i] = kept[name]
+    taper = other.get("R", kept.get("R", 0.0) if same else 0.0)
+    p.cycle_params[SINGLE_CYCLE_WORDS] = {"G": code, "R": taper, **dict(zip(names, target, strict=True))}
+    return target, taper
+
+
+def forget_single_cycle(p: Planner) -> None:
+    """A G code of the motion group other than a single cycle, or a one-shot code other than
+    G04: the single cycle's modal words are cleared (module docstring)."""
+    p.cycle_params.pop(SINGLE_CYCLE_WORDS, None)
+
+
+def single_cycle(
+    p: Planner, file: str, line: int, code: float, cycle: SingleCycle, target: list[float], taper: float = 0.0
+) -> None:
+    """Run single cycle ``code`` from where the tool is to ``target`` and back, its cut tapered by
+    ``taper`` (R): time its legs and record it as one move with them."""
     start = tuple(p.pos)
-    legs = turning_legs(cycle, p.axis_index, start, target)
+    first = p.axis_index.get(cycle.first)
+    scale = 2.0 if first is not None and first == p.times.diameter else 1.0  # R is a radius on X
+    legs = turning_legs(cycle, p.axis_index, start, target, taper * scale)
     seconds = time_legs(p, start, legs, cycle.thread)
+    feed = p.codes.get("F") or 0.0
+    if p.feed_hint and 0.0 < feed < 1.0 and not cycle.thread:
+        p.feed_per_minute_hint(1.0, feed, line)
     if p.record_moves:
-        feed = float(p.codes.get("F") or 0.0)
-        p.moves.append(Move(file, line, code, start, tuple(target), feed, None, seconds,
+        p.moves.append(Move(file, line, code, start, tuple(target), float(feed), None, seconds,
                             p.modal.get("plane", 17.0), legs, TURNING))  # fmt: skip
+
+
+def in_increments(p: Planner, value: float) -> float:
+    """A lathe cycle's P or Q amount written without a decimal point, in program units: ``value``
+    least input increments (``LatheCycles.increment``: 0.001 mm, 0.0001 inch under G20)."""
+    step = p.dialect.lathe_cycles.increment
+    return value * (step / 10.0 if p.modal.get("units") == 20.0 else step)

@@ -42,6 +42,7 @@ from ...machine.words import refused_words
 from ...planner.numbers import round_half_away
 from ...syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
 from ..indexes.call_sites import CallSite
+from .lathe_signs import block_signs, sign_words
 from .line_facts import LineContext, LineFacts, ReturnJump, alarm_message, block_finding, finding
 from .statement_checks import literal_jump
 from .variable_checks import check_write, scan_value
@@ -53,13 +54,15 @@ def words_looked_at(ctx: LineContext) -> tuple[WordSet, ...]:
     """The words ``check_words`` looks at (``machine/word_sets.py``); every other word of a block
     it passes over, so a plain line without one of these is not looked at (``static_checks``):
     the call words (``recognise_call``'s), the words a control may refuse (``validate_block``'s),
-    M99 (a return, whose P is a label) and the other profiles' local call codes (a sign of the
-    profile the program was written for). A check of another word is added here with it."""
+    M99 (a return, whose P is a label), the other profiles' local call codes and, under a mill
+    profile, the words that show a lathe program (signs of the profile the program was written
+    for: ``lathe_signs.py``). A check of another word is added here with it."""
     return (
         *call_words(ctx.dialect, ctx.calls),
         *refused_words(ctx.dialect, ctx.calls),
         WordSet("M", frozenset((RETURN_CODE,))),
         *((WordSet("M", frozenset(ctx.foreign_local)),) if ctx.foreign_local else ()),
+        *sign_words(ctx.dialect),
     )
 
 
@@ -71,6 +74,8 @@ def check_words(block: Block, ctx: LineContext, facts: LineFacts) -> None:
         _macro_call(block.words, call, problems, ctx, facts)
         return
     _nc_block(block.words, call, problems, ctx, facts)
+    if call is None:
+        facts.lathe_signs.extend(block_signs(block.words, ctx.dialect))
 
 
 def _literal(w: Word) -> float | None:

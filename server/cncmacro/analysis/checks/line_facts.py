@@ -24,6 +24,7 @@ from ...machine.block_rules import BlockProblem
 from ...machine.expressions import ExpressionCompiler, VariableKinds
 from ..codes import default_severity
 from ..indexes.call_sites import CallSite
+from .lathe_signs import LatheSign
 
 RULE_CODES = {
     rules.ABBREVIATION: "dialect-feature",
@@ -103,9 +104,11 @@ class LineFacts:
     # another profile's local subprogram call (Haas M97 P n read under a profile without one):
     # (its M code, the label P names, the span of that label), for profile_suggestion.py
     foreign_calls: list[tuple[float, int, int, int]] = field(default_factory=list)
+    # signs of a lathe program read under a mill profile (lathe_signs.py), for profile_suggestion.py
+    lathe_signs: list[LatheSign] = field(default_factory=list)
 
     def __bool__(self) -> bool:
-        return bool(self.findings or self.jumps or self.calls or self.returns or self.foreign_calls)
+        return bool(self.findings or self.jumps or self.calls or self.returns or self.foreign_calls or self.lathe_signs)
 
 
 def foreign_local_codes(dialect: Dialect) -> tuple[float, ...]:

@@ -19,6 +19,14 @@ under the profile in force: ``O00012345`` is the 8-digit program numbering of a 
 0i-F with that option), where ``M98 P00012346`` calls O12346 and only ``L`` counts, while a 0i
 reading it splits P into a count and a 4-digit program. Such a header names the first other
 profile whose ``M98 P`` takes that many digits.
+
+A lathe program read under a mill profile has no finding at all, and runs wrongly: a ``G92``
+thread shifts coordinates, U and W move nothing. When its lathe signs are strong enough
+(``lathe_signs.py``) it gets the suggestion first, naming the control's own lathe form
+(``Dialect.lathe_variant``: ``fanuc-30i``'s, which the machine file's ``lathe = true`` chooses),
+else its lathe profile (``registry.lathe_forms``: ``fanuc-0i-lathe``), or the first lathe profile that
+reads the file without a feature finding where that one does not (a GSK980TDi's ``G65 H``
+arithmetic).
 """
 
 from __future__ import annotations
@@ -27,10 +35,12 @@ from collections.abc import Mapping
 
 from ...bilingual import pick
 from ...dialects import DIALECTS, Dialect
+from ...dialects.registry import lathe_forms
 from ...library.machine_file import MachineSettings
 from ...library.profiles import machine_profile
 from ...syntax.program import Program
 from ..diagnostics import Diagnostic, diagnostic
+from .lathe_signs import LatheEvidence, lathe_evidence
 from .line_facts import LineFacts
 
 CODE = "profile-suggestion"
@@ -39,17 +49,21 @@ FEATURE_CODES = ("dialect-feature", "unknown-g-code")
 
 
 def suggested_profile(
-    program: Program, dialect: Dialect, settings: MachineSettings, lines: list[int] | None = None
+    program: Program,
+    dialect: Dialect,
+    settings: MachineSettings,
+    lines: list[int] | None = None,
+    among: tuple[str, ...] = DIALECTS,
 ) -> Dialect | None:
-    """The first other profile under which ``program`` has no ``dialect-feature`` or
-    ``unknown-g-code`` finding, or None when no profile reads it all. Both findings belong to
-    one block, so only ``lines`` (the blocks that have them under ``dialect``) are checked again;
-    without ``lines`` every block is."""
+    """The first other profile (of ``among``) under which ``program`` has no
+    ``dialect-feature`` or ``unknown-g-code`` finding, or None when no profile reads it all.
+    Both findings belong to one block, so only ``lines`` (the blocks that have them under
+    ``dialect``) are checked again; without ``lines`` every block is."""
     from .static_checks import line_context, line_facts  # the per-block checks, once per profile tried
 
     blocks = program.blocks
     wanted = range(len(blocks)) if lines is None else lines
-    for name in DIALECTS:
+    for name in among:
         if name == dialect.name:
             continue
         other = machine_profile(name, settings)
@@ -108,6 +122,29 @@ def long_header(program: Program, dialect: Dialect, settings: MachineSettings) -
     return None
 
 
+def lathe_program(
+    facts: Mapping[int, LineFacts], program: Program, dialect: Dialect, settings: MachineSettings, features: list[int]
+) -> tuple[Dialect, LatheEvidence] | None:
+    """The lathe profile to offer for ``program`` read under the mill profile ``dialect`` when
+    its signs make it a lathe program (``lathe_signs.lathe_evidence``), with the evidence; None
+    under a lathe profile or when the evidence is short. ``features`` are the lines with
+    feature findings under ``dialect``: the first lathe that reads them cleanly is offered,
+    else the mill's own lathe."""
+    if dialect.lathe:
+        return None
+    evidence = lathe_evidence({k: f.lathe_signs for k, f in facts.items() if f.lathe_signs}, program)
+    if evidence is None:
+        return None
+    if dialect.lathe_variant is not None:  # the control's own lathe form: fanuc-30i with lathe = true
+        return machine_profile(dialect.lathe_variant, settings), evidence
+    forms = lathe_forms(dialect.name)
+    if not forms:
+        return None
+    names = tuple(d.name for d in forms)
+    other = suggested_profile(program, dialect, settings, features, names) if features else None
+    return other or machine_profile(names[0], settings), evidence
+
+
 def suggestion_target(program: Program, dialect: Dialect, settings: MachineSettings) -> Dialect | None:
     """The profile that ``suggestion`` names for ``program`` (for its quick fixes, which are
     asked without the findings): the same choice, with the feature findings found again."""
@@ -116,6 +153,9 @@ def suggestion_target(program: Program, dialect: Dialect, settings: MachineSetti
     ctx = line_context(dialect, settings)
     facts = {k: f for k, b in enumerate(program.blocks) if (f := line_facts(b, ctx)) is not None}
     features = [k for k, f in facts.items() if any(x.code in FEATURE_CODES for x in f.findings)]
+    lathe = lathe_program(facts, program, dialect, settings, features)
+    if lathe is not None:
+        return lathe[0]
     if features:
         return suggested_profile(program, dialect, settings, features)
     found = local_call_lines(facts, program, dialect, settings)
@@ -135,8 +175,11 @@ def suggestion(
     locale: str,
 ) -> Diagnostic | None:
     """The ``profile-suggestion`` for a file whose findings are ``own``, placed on its first
-    ``dialect-feature`` finding; None when there is nothing to suggest."""
+    strong lathe sign or ``dialect-feature`` finding; None when there is nothing to suggest."""
     features = [d for d in own if d.code in FEATURE_CODES]
+    lathe = lathe_program(facts, program, dialect, settings, sorted({d.line for d in features}))
+    if lathe is not None:
+        return _lathe_hint(*lathe, file, dialect, locale)
     if features:
         other = suggested_profile(program, dialect, settings, sorted({d.line for d in features}))
         if other is None:
@@ -183,3 +226,34 @@ def _header_hint(header: tuple[Dialect, int, int, int], file: str, dialect: Dial
         f"（机床程序号为 {digits} 位时也可设定 program_digits = {digits}）",
     )
     return diagnostic(file, line, start, line, end, CODE, message)
+
+
+def _lathe_hint(other: Dialect, evidence: LatheEvidence, file: str, dialect: Dialect, locale: str) -> Diagnostic:
+    """The ``profile-suggestion`` for a lathe program read under the mill profile ``dialect``,
+    on its first strong sign, naming the signs found (the first of each kind, at most four)."""
+    shown = evidence.signs[:4]
+    more = " …" if len(evidence.signs) > 4 else ""
+    en = ", ".join(f"{s.shown} on line {k + 1}" for k, s in shown) + more
+    zh = "，".join(f"第 {k + 1} 行 {s.shown}" for k, s in shown) + more
+    line, sign = evidence.signs[0]
+    if other.name == dialect.name:  # its own lathe form, which the machine file's lathe = true chooses
+        message = pick(
+            locale,
+            f"This looks like a lathe program ({en}); it is read under the mill profile {dialect.name} "
+            f"({dialect.title}). Choose its lathe form, {other.title}? Set lathe = true in .cncmacro.toml "
+            f'(with base = "{dialect.name}")',
+            f"这看起来是车床程序（{zh}），现在按铣床系统 {dialect.name}（{dialect.title}）读取。"
+            f"是否选择其车床形式 {other.title}？请在 .cncmacro.toml 中设定 lathe = true"
+            f'（以及 base = "{dialect.name}"）',
+        )
+        return diagnostic(file, line, sign.start, line, sign.end, CODE, message)
+    message = pick(
+        locale,
+        f"This looks like a lathe program ({en}); it is read under the mill profile {dialect.name} ({dialect.title}). "
+        f"Choose the lathe profile {other.name} ({other.title})? Add (cncmacro: dialect={other.name}) to its first "
+        f'lines, or set base = "{other.name}" in .cncmacro.toml',
+        f"这看起来是车床程序（{zh}），现在按铣床系统 {dialect.name}（{dialect.title}）读取。"
+        f"是否选择车床系统 {other.name}（{other.title}）？请在文件开头加上 (cncmacro: dialect={other.name})，"
+        f'或在 .cncmacro.toml 中设定 base = "{other.name}"',
+    )
+    return diagnostic(file, line, sign.start, line, sign.end, CODE, message)

@@ -6,7 +6,8 @@ statements, the words, the variables; see ``statement_checks``, ``call_checks`` 
 ``loop_checks``, and ``label_checks`` with the program lookups of ``call_targets``). The per-line
 part is a pure function of the block, the dialect, the machine settings and the locale, so an
 incremental analysis may cache it per block and call ``block_diagnostics`` for changed lines only
-(``static_lines`` does), then ``cross_line_diagnostics``. A plain CAM line (``Block.plain``) is
+(``static_lines`` does), then ``cross_line_diagnostics`` (with ``lathe_cycle_checks`` on a lathe).
+A plain CAM line (``Block.plain``) is
 looked at only when its text holds a word ``check_words`` looks at (``words_looked_at``, made into
 one search by ``machine/word_sets.plain_search``); its words are never built otherwise.
 Syntax errors are ``syntax_check``'s: a block that does not parse is not checked here.
@@ -26,6 +27,7 @@ from .call_checks import check_words, words_looked_at
 from .call_targets import ProgramFinder
 from .corner_checks import check_corners
 from .label_checks import LabelChecker
+from .lathe_cycle_checks import lathe_cycle_diagnostics
 from .line_facts import LineContext, LineFacts
 from .loop_checks import loop_diagnostics
 from .statement_checks import check_abbreviations, check_statements
@@ -117,7 +119,7 @@ def static_diagnostics(
             out.extend(findings_of(facts, line, file))
         if facts.jumps or facts.calls or facts.returns:
             collected.append((line, facts))
-    out.extend(cross_line_diagnostics(program, file, ctx.dialect, library, locale, collected))
+    out.extend(cross_line_diagnostics(program, file, ctx.dialect, library, locale, collected, ctx))
     out.sort(key=Diagnostic.sort_key)
     return out
 
@@ -129,9 +131,11 @@ def cross_line_diagnostics(
     library: ProgramLibrary | None,
     locale: str,
     collected: list[tuple[int, LineFacts]],
+    ctx: LineContext | None = None,
 ) -> list[Diagnostic]:
-    """What connects the lines: repeated O numbers, loops, and the labels and call targets of
-    ``collected`` (the lines with jumps, calls or returns, in line order, with their facts). A
+    """What connects the lines: repeated O numbers, loops, the labels and call targets of
+    ``collected`` (the lines with jumps, calls or returns, in line order, with their facts) and,
+    with the line context ``ctx``, a lathe's cycles and their shapes (``lathe_cycle_checks``). A
     fault of the checker here is one ``internal-error`` on the file's first line (faults.py)."""
     try:
         out = duplicate_program_diagnostics(program, file, locale)
@@ -139,6 +143,8 @@ def cross_line_diagnostics(
         out.extend(tape_diagnostics(program, file, locale))
         finder = ProgramFinder(program, file, dialect, library)
         out.extend(LabelChecker(program, file, finder, locale).run(collected))
+        if ctx is not None:
+            out.extend(lathe_cycle_diagnostics(program, file, ctx))
     except Exception as e:  # a bug must not cost the per-line findings
         return [internal_error(file, 0, FILE, e, locale)]
     return out

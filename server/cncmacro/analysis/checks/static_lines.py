@@ -163,7 +163,7 @@ class StaticLines:
         kept = self._cross
         if kept is None or kept[0] is not program or kept[1] is not library:
             kept = self._cross = (program, library, cross_line_diagnostics(program, file, dialect, library, locale,
-                                                                           collected))  # fmt: skip
+                                                                           collected, self.ctx))  # fmt: skip
         out.extend(kept[2])
         return out
 

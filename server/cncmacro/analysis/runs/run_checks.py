@@ -589,6 +589,16 @@ def run_diagnostics(
             d = _diagnostic(note.file, note.line, "repeat-count-range", en, zh, note.chain, None, False, line_text,
                             locale, milder=True)  # fmt: skip
             out.append(d)
+        elif note.kind == "cycle" and note.subject is not None:  # a lathe cycle's warning (planner/cycle_rules.py)
+            code = alarm_code(0, note.subject, base)
+            en = in_language(note.message, False)
+            zh = in_language(note.message, True)
+            out.append(_diagnostic(note.file, note.line, code, en, zh, note.chain, None, False, line_text, locale,
+                                   milder=True))  # fmt: skip
+        elif note.kind == "feed":  # a per-minute feed that looks per revolution (planner.py)
+            en, zh = in_language(note.message, False), in_language(note.message, True)
+            out.append(_diagnostic(note.file, note.line, "feed-per-minute", en, zh, note.chain, None, False, line_text,
+                                   locale))  # fmt: skip
     for read in run.state.vacant.values():
         spec1, spec2 = letters_for_local(read.number)
         letter = spec1 or spec2 or "?"

@@ -13,9 +13,10 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..fanuc_lathe_data import LATHE_OFFSETS
+from ..lathe_cycle_rules import FANUC_LATHE_RULES
 from ..lathe_cycle_words import FANUC_LATHE_CYCLE_WORDS
 from ..timing import Timing
-from ..turning_cycles import LATHE_SINGLE_CYCLES
+from ..turning_cycles import FANUC_LATHE_CYCLES, LATHE_SINGLE_CYCLES
 from .fanuc_0i import PROFILE as FANUC_0I
 
 PROFILE = replace(
@@ -35,7 +36,9 @@ PROFILE = replace(
     cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0}),
     drill_cycles={},
     single_cycles=LATHE_SINGLE_CYCLES,
+    lathe_cycles=FANUC_LATHE_CYCLES,
     cycle_words=FANUC_LATHE_CYCLE_WORDS,
+    cycle_rules=FANUC_LATHE_RULES,
     # typical of a small slant-bed lathe; a machine file gives the machine's own (parameter 1420)
     timing=Timing(
         rapid={"X": 12000.0, "Z": 15000.0, "C": 10800.0, "Y": 8000.0},

@@ -354,6 +354,9 @@ LATHE = _MILL.configured(
     cycle_codes=FANUC_0I_LATHE.cycle_codes,
     drill_cycles=FANUC_0I_LATHE.drill_cycles,
     single_cycles=FANUC_0I_LATHE.single_cycles,
+    lathe_cycles=FANUC_0I_LATHE.lathe_cycles,
+    cycle_rules=FANUC_0I_LATHE.cycle_rules,
+    cycle_words=FANUC_0I_LATHE.cycle_words,
     timing=FANUC_0I_LATHE.timing,
 )
 

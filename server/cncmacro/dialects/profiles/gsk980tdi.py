@@ -8,10 +8,11 @@ bracketed program names and ``#9xxx`` indirection.
 from __future__ import annotations
 
 from ..dialect import Dialect
+from ..lathe_cycle_rules import GSK980TDI_RULES
 from ..lathe_cycle_words import GSK980TDI_CYCLE_WORDS
 from ..tables import CommonRange
 from ..timing import Timing
-from ..turning_cycles import LATHE_SINGLE_CYCLES
+from ..turning_cycles import GSK_LATHE_CYCLES, LATHE_SINGLE_CYCLES
 
 PROFILE = Dialect(
     name="gsk980tdi",
@@ -39,7 +40,9 @@ PROFILE = Dialect(
     coordinate_setting_code=50.0,
     cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0, 83.0, 84.0, 87.0, 88.0}),
     single_cycles=LATHE_SINGLE_CYCLES,
+    lathe_cycles=GSK_LATHE_CYCLES,
     cycle_words=GSK980TDI_CYCLE_WORDS,
+    cycle_rules=GSK980TDI_RULES,
     common_ranges=(CommonRange(100, 199, False), CommonRange(500, 999, True)),
     m98_program_digits=4,
     modal_call_needs_distance=True,
