@@ -102,10 +102,10 @@ def test_machine_file_program_digits_default_splits_the_count() -> None:
     [
         ({"base": "mazak-m"}, "'base'"),
         ({"base": "fanuc-0i", "dialect": "fanuc-0i"}, "'dialect'"),
-        ({"common": [[100, 199], [150, 300]]}, "'common'"),
+        ({"common": [[50, 199]]}, "'common'"),
         ({"common": [[100, 199], [1000, 1100]]}, "'common'"),
         ({"common": "100-199"}, "'common'"),
-        ({"base": "gsk980tdi", "common": [[100, 499]]}, "'common'"),
+        ({"base": "gsk980tdi", "common": [[300, 200]]}, "'common'"),
         ({"program_digits": 3}, "'program_digits'"),
         ({"program_digits": "6"}, "'program_digits'"),
         ({"programs_on_control": ["O9000-O8000"]}, "'programs_on_control'"),

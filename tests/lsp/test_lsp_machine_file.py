@@ -1,6 +1,7 @@
 """The machine file through the language server (docs/profiles.md "The machine file"): the
 workspace ``tests/data/machine_workspace`` narrows the commons, keeps O9000-O9999 on the control,
-reads M98 P with 6-digit program numbers and adds a builder's system variable; and the client
+reads M98 P with 6-digit program numbers, adds a builder's system variable and pallet code
+(``[codes]``) and keeps subprograms as ``.txt`` files (``extensions``); and the client
 learns the profiles from ``cncmacro/profiles``."""
 
 from __future__ import annotations
@@ -8,6 +9,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from lsprotocol import types
+from pygls import uris
 from pytest_lsp import LanguageClient
 
 from cncmacro.dialects import DIALECTS
@@ -47,3 +50,16 @@ async def test_machine_file_commons_the_machine_lacks_are_errors(shop: LanguageC
     assert found == [(2, "variable-number"), (3, "program-not-found")]
     [missing] = [d for d in diags if d.code == "variable-number"]
     assert "#100-#199, #500-#999" in missing.message
+
+
+async def test_machine_file_builder_code_hovers_and_txt_subprogram_is_found(shop: LanguageClient) -> None:
+    uri = open_file(shop, SHOP / "O1002.nc")
+    diags = (await diagnostics_for(shop, uri, 1)).diagnostics
+    assert [(d.range.start.line, d.code) for d in diags if d.severity is not None and d.severity <= 2] == []
+    said = await hover_text(shop, uri, 2, 2)  # G120.1
+    assert "Pallet change position (machine builder's code)" in said
+    found = await shop.text_document_definition_async(
+        types.DefinitionParams(types.TextDocumentIdentifier(uri), types.Position(3, 5))  # M98 P1004
+    )
+    targets = found if isinstance(found, list) else [found]
+    assert [Path(uris.to_fs_path(t.uri)).name for t in targets if t is not None] == ["1004.txt"]

@@ -132,7 +132,7 @@ class WorkspaceAnalysis:
         # reads the files on disk, each once; a cache given here is told of changes by its owner
         self._own_files = files is None
         self.files = files if files is not None else FileCache()
-        self.library = ProgramLibrary(self.search_paths, files=self.files)
+        self.library = ProgramLibrary(self.search_paths, files=self.files, extensions=self.settings.extensions)
         self.workspace_folders = [str(p) for p in workspace_folders]
         self.callers = DiskCallers()  # the open programs' callers on disk, and the runs that start there
         # the not-executed ranges, kept across edits
@@ -193,7 +193,7 @@ class WorkspaceAnalysis:
 
     def _reload(self) -> None:
         """A fresh library (disk files looked at again), the open documents still in it."""
-        self.library = ProgramLibrary(self.search_paths, files=self.files)
+        self.library = ProgramLibrary(self.search_paths, files=self.files, extensions=self.settings.extensions)
         self.callers.entries = None
         for d in self.docs.values():
             d.loaded = self.library.add_parsed(d.path, d.doc.lines, d.doc.program)
@@ -213,7 +213,10 @@ class WorkspaceAnalysis:
         settings = settings or MachineSettings()
         budget = max_blocks if max_blocks is not None else settings.max_blocks
         if settings != self.settings or dialect != self.dialect_setting or budget != self.max_blocks:
+            extensions_changed = settings.extensions != self.settings.extensions
             self.settings, self.dialect_setting, self.max_blocks = settings, dialect, budget
+            if extensions_changed:
+                self._reload()  # other files are programs now
             for d in self.docs.values():
                 d.own = d.static = d.targets = None
             self._unreached.forget()

@@ -31,9 +31,23 @@ from .. import __version__
 from ..analysis import Diagnostic
 from ..analysis.faults import FILE, internal_error
 from ..analysis.workspace import WorkspaceAnalysis
-from ..bilingual import in_language, is_chinese, pick
-from ..library.files import MAX_PROGRAM_BYTES, SkippedFileError, read_program, search_program_files, shown_text
-from ..library.machine_file import MachineFileError, MachineSettings, find_machine_file, load_machine_file
+from ..bilingual import Detail, detail, in_language, is_chinese, pick
+from ..library.files import (
+    MAX_PROGRAM_BYTES,
+    SkippedFileError,
+    program_files_looked_for,
+    read_program,
+    search_program_files,
+    shown_text,
+)
+from ..library.machine_file import (
+    MachineFileError,
+    MachineSettings,
+    common_beyond_profile,
+    find_machine_file,
+    load_machine_file,
+)
+from ..library.profiles import typed_profile_wins
 from .sarif import to_sarif
 from .terminal import Printable, json_text, printable
 
@@ -75,32 +89,31 @@ def check_paths(
             print(pick(locale, en, zh), file=shown_err)
             unreadable = True
             continue
-        found = search_program_files(root)
-        for problem in found.skipped:
+        try:
+            found, problems = _program_files(root, machine)
+        except MachineFileError as e:
+            reason = in_language(e.located(), chinese)
+            print(f"cncmacro check：{reason}" if chinese else f"cncmacro check: {reason}", file=shown_err)
+            return 2
+        for problem in problems:
             print(f"cncmacro：{problem.zh}" if chinese else f"cncmacro: {problem}", file=shown_err)
             unreadable = True
         searched = root.is_dir()  # a file named on the command line is read whole
-        for path in found.files:
-            try:
-                source = read_program(path, MAX_PROGRAM_BYTES if searched else None)
-            except SkippedFileError as e:
-                print(f"cncmacro：{e.message.zh}" if chinese else f"cncmacro: {e}", file=shown_err)
+        for path in found:
+            text = _read(path, searched, locale, shown_err)
+            if text is None:
                 unreadable = True
-                continue
-            except OSError as e:
-                why, shown = e.strerror or e, shown_text(str(path))
-                print(pick(locale, f"cncmacro: {shown}: cannot read: {why}", f"cncmacro：{shown}：无法读取：{why}"),
-                      file=shown_err)  # fmt: skip
-                unreadable = True
-                continue
-            sources.append((path, source.text))
+            else:
+                sources.append((path, text))
     groups: dict[Path | None, list[tuple[Path, str]]] = {}
     for path, text in sources:
         groups.setdefault(Path(machine) if machine else find_machine_file(path), []).append((path, text))
     diagnostics: list[Diagnostic] = []
     for machine_file, files in groups.items():  # each file with the machine settings nearest to it
         try:
-            settings = load_machine_file(machine_file) if machine_file is not None else MachineSettings()
+            settings = _machine_settings(machine_file)
+            if machine_file is not None:
+                settings = _noted(settings, machine_file, dialect, chinese, shown_err)
             folders = [*dict.fromkeys(str(path.parent) for path, _ in files), *(search_paths or [])]
             workspace = partial(WorkspaceAnalysis, settings=settings, dialect=dialect, search_paths=search_paths or [],
                                 locale=locale, max_blocks=max_blocks, severities=settings.severity,
@@ -126,6 +139,60 @@ def check_paths(
     if unreadable:
         return 2
     return 1 if any(d.severity == "error" for d in diagnostics) else 0
+
+
+def _machine_settings(machine_file: Path | None) -> MachineSettings:
+    """The settings of ``machine_file`` (None: the defaults); ``MachineFileError`` says what is wrong."""
+    return load_machine_file(machine_file) if machine_file is not None else MachineSettings()
+
+
+def _read(path: Path, searched: bool, locale: str, err: Printable) -> str | None:
+    """The text of the program file ``path`` (one found by searching a folder up to
+    ``MAX_PROGRAM_BYTES``), or None when it is not read, which is said on ``err``."""
+    try:
+        return read_program(path, MAX_PROGRAM_BYTES if searched else None).text
+    except SkippedFileError as e:
+        print(f"cncmacro：{e.message.zh}" if is_chinese(locale) else f"cncmacro: {e}", file=err)
+    except OSError as e:
+        why, shown = e.strerror or e, shown_text(str(path))
+        print(pick(locale, f"cncmacro: {shown}: cannot read: {why}", f"cncmacro：{shown}：无法读取：{why}"), file=err)
+    return None
+
+
+def _program_files(root: Path, machine: str | None) -> tuple[list[Path], list[Detail]]:
+    """The program files under ``root`` (``root`` itself when it is a file: a file named on the
+    command line is a program whatever its name), with the endings that the machine file
+    (``machine``, else the one nearest to ``root``) adds, and what was not read or not found.
+    ``MachineFileError`` when that machine file cannot be used."""
+    extensions = _machine_settings(Path(machine) if machine else find_machine_file(root)).extensions
+    found = search_program_files(root, extensions=extensions)
+    if found.files or found.skipped:
+        return found.files, found.skipped
+    return [], [_no_programs(str(root), extensions)]
+
+
+def _no_programs(folder: str, extensions: frozenset[str]) -> Detail:
+    """What to say of a folder in which no file is a program (``files.is_program_file``)."""
+    shown, looked = shown_text(folder), program_files_looked_for(extensions)
+    return detail(f"{shown}: no program files in this folder (looked for {looked}); a machine whose programs end "
+                  'otherwise names the ending in .cncmacro.toml: extensions = [".txt"]',
+                  f"{shown}：此文件夹中没有程序文件（查找的是{looked.zh}）；程序使用其他扩展名时，"
+                  '请在 .cncmacro.toml 中设定 extensions = [".txt"]')  # fmt: skip
+
+
+def _noted(
+    settings: MachineSettings, machine_file: Path, typed: str | None, chinese: bool, err: Printable
+) -> MachineSettings:
+    """The settings to check with when ``typed`` is the command line's ``--dialect``; what a person
+    should know of the machine file (its profile overridden, the common ranges it adds) is said on
+    ``err``, as notes that change no exit status."""
+    shown = shown_text(str(machine_file))
+    settings, overridden = typed_profile_wins(settings, typed, shown)
+    added = common_beyond_profile(settings, typed)
+    for note in (overridden, added and detail(f"{shown}: common {added}", f"{shown}：common {added.zh}")):
+        if note is not None:
+            print(f"cncmacro：注意：{note.zh}" if chinese else f"cncmacro: note: {note}", file=err)
+    return settings
 
 
 def _analyse(ws: WorkspaceAnalysis, files: list[tuple[Path, str]], workspace: Callable[[], WorkspaceAnalysis],

@@ -111,7 +111,7 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
         prepared = prepare_run(
             path, machine_file=args.machine, dialect=args.dialect, presets=presets,
             search_paths=[Path(p) for p in args.path], data=sys.stdin.buffer.read() if args.stdin else None,
-            saving=not args.no_save, wait=args.wait, m99_ends_main=not args.repeat,
+            saving=not args.no_save, wait=args.wait, m99_ends_main=not args.repeat, typed=True,
         )  # fmt: skip
     except ValueError as e:
         if not args.stdin and path.is_dir():
@@ -121,6 +121,8 @@ def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | 
         else:
             print(f"cncmacro run: {e}", file=shown_err)
         return 2
+    for note in prepared.notes:
+        print(f"cncmacro：注意：{note.zh}" if is_chinese(args.locale) else f"cncmacro: note: {note}", file=shown_err)
     machine = prepared.machine
     dialect = machine.dialect
     program = machine.frames[0].name if machine.frames else path.name

@@ -130,7 +130,7 @@ class Launched:
         machine_folder = self.machine.settings.folder
         if machine_folder:
             folders.append(Path(machine_folder))
-        return ReadScope.of(folders, [self.config.program])
+        return ReadScope.of(folders, [self.config.program], self.machine.settings.extensions)
 
     def save(self) -> str | None:
         """Write ``#500–#999`` back unless ``noSave`` and let the next run have them (a launch

@@ -106,6 +106,9 @@ class Dialect:
     m98_program_digits: int = 4
     # system variables a machine file adds or describes anew; they win over the profile's rows
     extra_rows: tuple[SystemVariable, ...] = ()
+    # plain G and M codes a machine file declares (``[codes]``: codes the machine builder added,
+    # Doosan's G120.1): listed before the table's, they run as plain codes and hover with their text
+    extra_codes: tuple[CodeDoc, ...] = ()
     # programs kept on the control rather than in the workspace (the profile's, as Haas's
     # O9000-O9999, or a machine file's ``programs_on_control``): a call to one returns at once
     programs_on_control: tuple[tuple[int, int], ...] = ()
@@ -232,10 +235,12 @@ class Dialect:
         return None
 
     def g_codes(self) -> tuple[CodeDoc, ...]:
-        return _tables(self.data_module)[2]
+        """The G codes: the machine file's (``extra_codes``), then the profile's table."""
+        return tuple(c for c in self.extra_codes if c.code[0] == "G") + _tables(self.data_module)[2]
 
     def m_codes(self) -> tuple[CodeDoc, ...]:
-        return _tables(self.data_module)[3]
+        """The M codes: the machine file's (``extra_codes``), then the profile's table."""
+        return tuple(c for c in self.extra_codes if c.code[0] == "M") + _tables(self.data_module)[3]
 
     def system_variable_names(self) -> tuple[SystemVariableName, ...]:
         """The ``[#_NAME]`` names, empty for a dialect without them."""

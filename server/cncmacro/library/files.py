@@ -35,8 +35,13 @@ from pathlib import Path
 
 from ..bilingual import Detail, detail
 
-# Program files are found by these endings (any case), or by an O-number name without one.
+# Program files are found by these endings (any case), the endings a machine file adds
+# (``extensions``), an O-number name without one, or text that starts as a program does.
 PROGRAM_SUFFIXES = frozenset({".nc", ".cnc", ".mac", ".prg", ".tap", ".eia"})
+# How much of a file with another ending is read to see whether it starts as a program does: ``%``,
+# ``O1234`` or ``<NAME>`` after blank lines and comments (a GSK or DNC folder of ``.txt`` programs)
+HEAD_BYTES = 512
+_PROGRAM_HEADER = re.compile(rb"%|[Oo]\d|<[^<>\n]+>")
 # A name that spells a program number: O, or no O, then digits (``O1234``, ``o0040``, ``1234``).
 _O_NUMBER = re.compile(r"([Oo]?)(\d+)")
 MAX_NUMBER_DIGITS = 8  # the longest program number of any control (O12345678)
@@ -207,13 +212,70 @@ def o_number(name: str, bare: bool = False) -> int | None:
     return int(m.group(2))
 
 
-def is_program_file(path: Path) -> bool:
-    """True for a file whose name says it holds a program: a known ending, or ``O1234`` without
-    one (an O and digits, however many: ``O123456789`` is read, though it names no number)."""
-    if path.suffix.lower() in PROGRAM_SUFFIXES:
+def is_program_file(path: Path, extensions: frozenset[str] = frozenset()) -> bool:
+    """True for a file that holds a program: the one rule of which files are programs, for the
+    checker's folder search, the callee search of a run, the editor and the debugger. Its name
+    says so (a known ending, one of the machine file's ``extensions``, or ``O1234`` without an
+    ending: an O and digits, however many, ``O123456789`` is read though it names no number), or
+    its first ``HEAD_BYTES`` do (``starts_like_program``)."""
+    if _named_as_program(path, extensions):
+        return True
+    return starts_like_program(path)
+
+
+def program_files_looked_for(extensions: frozenset[str] = frozenset()) -> Detail:
+    """What ``is_program_file`` takes for a program, for a person told that a folder has none."""
+    endings = ", ".join(sorted(PROGRAM_SUFFIXES | extensions))
+    return detail(
+        f"files ending in {endings} (any case), files named O1234 without an ending, and files whose text "
+        "starts with %, O1234 or <NAME>",
+        f"扩展名为 {endings}（不分大小写）的文件、无扩展名的 O1234 文件，以及内容以 %、O1234 或 <名称> 开头的文件",
+    )
+
+
+def _named_as_program(path: Path, extensions: frozenset[str]) -> bool:
+    suffix = path.suffix.lower()
+    if suffix in PROGRAM_SUFFIXES or suffix in extensions:
         return True
     m = _O_NUMBER.fullmatch(path.name)
     return not path.suffix and m is not None and bool(m.group(1))
+
+
+def starts_like_program(path: Path) -> bool:
+    """Whether the regular file at ``path`` starts as a program does: ``%``, ``O1234`` or a
+    ``<NAME>`` header after blank lines and comments. Only its first ``HEAD_BYTES`` are read; a
+    file with a NUL there (binary), one that is no regular file or cannot be read is not one."""
+    try:
+        head = _read_head(path)
+    except OSError:
+        return False
+    if b"\0" in head:
+        return False
+    at = 3 if head.startswith(codecs.BOM_UTF8) else 0
+    while at < len(head):  # past blank lines and comments: ``( ... )`` to its close, ``;`` to the line's end
+        byte = head[at : at + 1]
+        if byte.isspace():
+            at += 1
+        elif byte in (b"(", b";"):
+            ends = [e for e in (head.find(b")" if byte == b"(" else b"\n", at), head.find(b"\n", at)) if e >= 0]
+            if not ends:
+                return False
+            at = min(ends) + 1
+        else:
+            return _PROGRAM_HEADER.match(head, at) is not None
+    return False
+
+
+def _read_head(path: Path) -> bytes:
+    """The first ``HEAD_BYTES`` of the regular file at ``path`` (``b""`` for anything else)."""
+    name = os.fspath(path)
+    if not stat.S_ISREG(os.stat(name).st_mode):
+        return b""
+    fd = os.open(name, _OPEN_FLAGS)
+    with open(fd, "rb", closefd=True) as f:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            return b""
+        return f.read(HEAD_BYTES)
 
 
 @dataclass(slots=True)
@@ -226,8 +288,12 @@ class FolderSearch:
     complete: bool = True
 
 
-def search_program_files(root: Path, max_files: int | None = None, max_entries: int | None = None) -> FolderSearch:
-    """Program files under ``root`` (itself, if it is not a folder), hidden folders and files
+def search_program_files(
+    root: Path, max_files: int | None = None, max_entries: int | None = None, extensions: frozenset[str] = frozenset()
+) -> FolderSearch:
+    """Program files under ``root`` (itself, if it is not a folder: a file the person names is a
+    program whatever its name), as ``is_program_file`` knows them (``extensions``: the machine
+    file's), hidden folders and files
     skipped, links to folders not followed, a link to a file only when it stays inside
     ``root``. The folders are walked one after another, never by recursion, so any depth is
     fine (a path too long for the system is a folder that cannot be read). A folder that cannot
@@ -253,7 +319,7 @@ def search_program_files(root: Path, max_files: int | None = None, max_entries: 
                             f"{shown}: more than {max_entries:,} entries: the search for program files stopped there",
                             f"{shown}：条目超过 {max_entries:,} 个：程序文件的查找到此为止"))  # fmt: skip
                         break
-                    path = _program_entry(entry, root, inside)
+                    path = _program_entry(entry, root, inside, extensions)
                     if path is None:
                         continue
                     if max_files is not None and len(found.files) == max_files:
@@ -274,7 +340,7 @@ def search_program_files(root: Path, max_files: int | None = None, max_entries: 
     return found
 
 
-def _program_entry(entry: os.DirEntry[str], root: Path, folders: list[Path]) -> Path | None:
+def _program_entry(entry: os.DirEntry[str], root: Path, folders: list[Path], extensions: frozenset[str]) -> Path | None:
     """The path of ``entry`` when it is a program file to read; a folder to search is added
     to ``folders`` (not a hidden one, not a link)."""
     if entry.name.startswith("."):
@@ -289,20 +355,21 @@ def _program_entry(entry: os.DirEntry[str], root: Path, folders: list[Path]) -> 
         is_file = entry.is_file()
     except OSError:
         link, is_file = True, True  # cannot be looked at: reading it says why
-    if is_file and is_program_file(path) and (not link or stays_inside(path, root)):
+    if is_file and is_program_file(path, extensions) and (not link or stays_inside(path, root)):
         return path
     return None
 
 
-def find_program_files(root: Path) -> list[Path]:
+def find_program_files(root: Path, extensions: frozenset[str] = frozenset()) -> list[Path]:
     """Program files under ``root`` (itself, if it is a file), sorted, as ``search_program_files``
     finds them without limits (folders that cannot be read are left out)."""
-    return search_program_files(root).files
+    return search_program_files(root, extensions=extensions).files
 
 
-def program_files_in(folder: Path) -> list[Path]:
-    """The program files directly in ``folder`` (not below it), sorted; none when it cannot be
-    read, at most ``MAX_FOLDER_ENTRIES`` entries looked at."""
+def program_files_in(folder: Path, extensions: frozenset[str] = frozenset()) -> list[Path]:
+    """The program files directly in ``folder`` (not below it), as ``is_program_file`` knows them
+    (``extensions``: the machine file's), sorted; none when it cannot be read, at most
+    ``MAX_FOLDER_ENTRIES`` entries looked at."""
     files: list[Path] = []
     try:
         with os.scandir(folder) as listing:
@@ -311,7 +378,7 @@ def program_files_in(folder: Path) -> list[Path]:
                     break
                 path = Path(entry.path)
                 try:
-                    if entry.is_file() and is_program_file(path):
+                    if entry.is_file() and is_program_file(path, extensions):
                         files.append(path)
                 except OSError:
                     continue
@@ -367,17 +434,21 @@ class ReadScope:
 
     folders: tuple[Path, ...]
     files: frozenset[str] = frozenset()
+    extensions: frozenset[str] = frozenset()  # the machine file's endings of program files
 
     @classmethod
-    def of(cls, folders: Iterable[str | Path], files: Iterable[str | Path] = ()) -> ReadScope:
-        return cls(tuple(dict.fromkeys(Path(f) for f in folders)), frozenset(os.path.realpath(f) for f in files))
+    def of(
+        cls, folders: Iterable[str | Path], files: Iterable[str | Path] = (), extensions: frozenset[str] = frozenset()
+    ) -> ReadScope:
+        return cls(tuple(dict.fromkeys(Path(f) for f in folders)), frozenset(os.path.realpath(f) for f in files),
+                   extensions)  # fmt: skip
 
     def refusal(self, path: str | Path) -> RefusedFileError | None:
         """Why ``path`` may not be read (the error that reading it raises), or None."""
         p = Path(path)
         if self.files and os.path.realpath(p) in self.files:
             return None
-        if not is_program_file(p):
+        if not is_program_file(p, self.extensions):
             return RefusedFileError(p, "not a program file", "不是程序文件")
         if not any(stays_inside(p, f) for f in self.folders):
             where = ", ".join(shown_text(str(f)) for f in self.folders) or "-"

@@ -5,6 +5,7 @@ Every key is optional (docs/design.md "Machine settings")::
 
     dialect = "gsk980tdi"
     common = [100, 499]            # the volatile common range (default 100-199)
+    extensions = [".txt", ".min"]  # more endings of program files (files.is_program_file)
     decimal_point = "increment"    # or "calculator" (default): how X10 without a point is read
     block_delete = true            # skip blocks that start with '/'
     persistent_file = ".cncmacro-vars.json"   # keeps #500-#999 between runs (a path inside this folder)
@@ -15,6 +16,9 @@ Every key is optional (docs/design.md "Machine settings")::
     [variables]                    # preset values: offsets, counters, commons
     2001 = 0.5
     100 = 3
+
+    [codes]                        # plain codes the machine builder added, with their text for hover
+    "G120.1" = { en = "Pallet change position", zh = "托盘交换位置" }
 
     [calls]                        # codes that call programs (seed 001, seed 003 ch. 8)
     G100 = 9010                    # like G65 P9010
@@ -47,7 +51,6 @@ than the parser can go, digits only ASCII ones, and a value is shown in a messag
 
 from __future__ import annotations
 
-import itertools
 import os
 import re
 import stat
@@ -55,7 +58,7 @@ import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path, PureWindowsPath
-from typing import Literal, TypedDict
+from typing import Literal, TypedDict, cast
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -64,7 +67,8 @@ else:  # the same reader, from PyPI, before it joined the standard library
 
 from ..bilingual import Detail, detail
 from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect
-from ..dialects.tables import SystemVariable
+from ..dialects.describe import code_key
+from ..dialects.tables import CodeDoc, SystemVariable
 from ..dialects.timing import TimingChanges
 from .files import SkippedFileError, read_bytes
 from .skip_model import SkipModel, read_skip
@@ -133,6 +137,8 @@ class MachineSettings:
     folder: str | None = None
     timing: TimingChanges = field(default_factory=TimingChanges)  # [timing]: changes to the profile's
     lathe: bool = False  # the profile's lathe form (``lathe = true``: fanuc-30i's lathes)
+    extensions: frozenset[str] = frozenset()  # more endings of program files (``.txt``), lower case
+    codes: tuple[CodeDoc, ...] = ()  # [codes]: plain G and M codes of this machine, with their text
 
     def with_presets(self, presets: dict[int, float]) -> MachineSettings:
         """These settings with more preset variables (later ones win)."""
@@ -183,6 +189,8 @@ class _SettingsFields(TypedDict, total=False):
     folder: str | None
     timing: TimingChanges
     lathe: bool
+    extensions: frozenset[str]
+    codes: tuple[CodeDoc, ...]
 
 
 # what makes the error for a key of a mapping: the key and what is wrong with its value
@@ -301,7 +309,7 @@ def settings_from_mapping(
 
     known = {"base", "dialect", "common", "program_digits", "programs_on_control", "system_variables",
              "decimal_point", "block_delete", "shape_monotone_check", "persistent_file", "max_blocks", "date", "time",
-             "variables", "calls", "skip", "severity", "timing", "lathe"}  # fmt: skip
+             "variables", "calls", "skip", "severity", "timing", "lathe", "extensions", "codes"}  # fmt: skip
     for key in data:
         if key not in known:
             names = ", ".join(sorted(known))
@@ -323,14 +331,13 @@ def settings_from_mapping(
         kw["lathe"] = _lathe(data["lathe"], str(kw.get("dialect") or DEFAULT_DIALECT), fail)
     if "common" in data:
         kw["common"] = _common(data["common"], str(kw.get("dialect") or DEFAULT_DIALECT), fail)
-    if "program_digits" in data:
-        kw["program_digits"] = _program_digits(data["program_digits"], fail)
-    if "programs_on_control" in data:
-        kw["programs_on_control"] = _program_ranges(data["programs_on_control"], fail)
-    if "system_variables" in data:
-        kw["system_variables"] = _system_variables(data["system_variables"], fail)
-    if "decimal_point" in data:
-        kw["decimal_point"] = _decimal_point(data["decimal_point"], fail)
+    readers: dict[str, Callable[[object, _Fail], object]] = {
+        "extensions": _extensions, "program_digits": _program_digits, "programs_on_control": _program_ranges,
+        "system_variables": _system_variables, "decimal_point": _decimal_point,
+    }  # fmt: skip
+    for key, read in readers.items():  # the keys whose value is read by itself
+        if key in data:
+            cast("dict[str, object]", kw)[key] = read(data[key], fail)
     for key in _SWITCH_KEYS:
         if key in data:
             kw[key] = _boolean(data[key], key, fail)
@@ -351,6 +358,8 @@ def settings_from_mapping(
         kw["variables"] = _variables(data["variables"], fail)
     if "calls" in data:
         kw["calls"] = _calls(data["calls"], fail)
+    if "codes" in data:
+        kw["codes"] = _codes(data["codes"], kw.get("calls", {}), fail)
     if "skip" in data:
         kw["skip"] = read_skip(data["skip"], fail)
     if "severity" in data:
@@ -358,6 +367,23 @@ def settings_from_mapping(
     if "timing" in data:
         kw["timing"] = timing_changes(data["timing"], fail)
     return MachineSettings(**kw)
+
+
+def _extensions(value: object, fail: _Fail) -> frozenset[str]:
+    """``extensions``: endings of this machine's program files beyond the known ones (``.txt``),
+    each with or without its dot, any case."""
+    bad = detail('must be a list of file endings such as [".txt", ".min"]',
+                 '必须是文件扩展名的列表，如 [".txt", ".min"]')  # fmt: skip
+    if not isinstance(value, list):
+        raise fail("extensions", bad)
+    out: set[str] = set()
+    for item in value:
+        ending = item.strip().lower() if isinstance(item, str) else ""
+        ending = ending if ending.startswith(".") else f".{ending}"
+        if not re.fullmatch(r"\.[\w-]{1,15}", ending) or not ending.isascii():
+            raise fail("extensions", bad)
+        out.add(ending)
+    return frozenset(out)
 
 
 def _program_digits(v: object, fail: _Fail) -> int:
@@ -398,17 +424,18 @@ def _lathe(value: object, profile: str, fail: _Fail) -> bool:
 
 
 def _common(value: object, profile: str, fail: _Fail) -> tuple[tuple[int, int], ...]:
-    """``common``: a list of ``[first, last]`` ranges the profile allows, or the older single
-    ``[first, last]`` below #500 (the volatile range; the profile's #500-#999 stay)."""
+    """``common``: a list of ``[first, last]`` ranges, or the older single ``[first, last]`` below
+    #500 (the volatile range; the profile's #500-#999 stay). The machine file describes the real
+    machine, so a range beyond the profile's list is taken (an OKK 30i's #900000-#907399) as long as
+    it is no local variable (below #100) and overlaps none of the profile's system variables;
+    ranges that overlap or touch are one range."""
     dialect = get_dialect(profile)
-    allowed = ", ".join(r.text() for r in dialect.common_ranges)
-    bad = detail(f"must be a list of ranges such as [[100, 499], [500, 999]] within {allowed} ({dialect.name})",
-                 f"必须是变量号范围的列表，如 [[100, 499], [500, 999]]，"
-                 f"且在 {allowed} 之内（{dialect.name}）")  # fmt: skip
+    bad = detail("must be a list of ranges such as [[100, 499], [500, 999]], each from #100 up",
+                 "必须是变量号范围的列表，如 [[100, 499], [500, 999]]，且每个范围从 #100 起")  # fmt: skip
 
     def pair(x: object) -> tuple[int, int] | None:
         if isinstance(x, list) and len(x) == 2 and all(isinstance(v, int) and not isinstance(v, bool) for v in x):
-            return (x[0], x[1]) if x[0] <= x[1] else None
+            return (x[0], x[1]) if 100 <= x[0] <= x[1] <= 99_999_999 else None
         return None
 
     if not isinstance(value, list) or not value:
@@ -425,16 +452,48 @@ def _common(value: object, profile: str, fail: _Fail) -> tuple[tuple[int, int], 
             if p is None:
                 raise fail("common", bad)
             ranges.append(p)
-    for first, last in ranges:
-        if dialect.allows_common(first, last) is None and not (single and (first, last) == single):
-            raise fail("common", bad)
-    if single is not None and not 100 <= single[0]:
-        raise fail("common", bad)
-    ordered = sorted(ranges)
-    for (_, a_last), (b_first, _) in itertools.pairwise(ordered):
-        if b_first <= a_last:
-            raise fail("common", detail("has ranges that overlap", "中的范围有重叠"))
-    return tuple(ordered)
+    merged: list[tuple[int, int]] = []
+    for first, last in sorted(ranges):
+        if merged and first <= merged[-1][1] + 1:
+            merged[-1] = (merged[-1][0], max(last, merged[-1][1]))
+        else:
+            merged.append((first, last))
+    for first, last in merged:
+        for row in dialect.system_variables():
+            if row.first <= last and first <= row.last:
+                held = f"#{row.first}" if row.first == row.last else f"#{row.first}-#{row.last}"
+                raise fail("common", detail(
+                    f"#{first}-#{last} overlaps the system variables {held} of {dialect.name} ({row.en}): "
+                    "a common range cannot hold them",
+                    f"#{first}-#{last} 与 {dialect.name} 的系统变量 {held}（{row.zh}）重叠："
+                    "公共变量范围不能包含它们"))  # fmt: skip
+    return tuple(merged)
+
+
+def common_beyond_profile(settings: MachineSettings, profile: str | None = None) -> Detail | None:
+    """A note on the common ranges of ``settings`` that the profile (``profile``, else the machine
+    file's, else the default) does not list, so that a person sees what the machine file added;
+    None when it adds none."""
+    if settings.common is None:
+        return None
+    dialect = get_dialect(profile or settings.dialect or DEFAULT_DIALECT)
+    added: list[tuple[int, int]] = []
+    for first, last in settings.common:
+        at = first
+        for r in sorted(dialect.common_ranges, key=lambda r: r.first):
+            if r.last < at or r.first > last:
+                continue
+            if r.first > at:
+                added.append((at, r.first - 1))
+            at = max(at, r.last + 1)
+        if at <= last:
+            added.append((at, last))
+    if not added:
+        return None
+    shown = ", ".join(f"#{a}-#{b}" for a, b in added)
+    listed = ", ".join(r.text() for r in dialect.common_ranges)
+    return detail(f"{shown}: common variables of this machine beyond {dialect.name}'s list ({listed})",
+                  f"{shown}：本机床在 {dialect.name} 所列范围（{listed}）之外的公共变量")  # fmt: skip
 
 
 def _program_ranges(value: object, fail: _Fail) -> tuple[tuple[int, int], ...]:
@@ -539,6 +598,35 @@ def _calls(table: object, fail: _Fail) -> dict[str, CallCode]:
             raise fail(f"calls.{k}", detail("must be a program number or {program = N, call = ...}",
                                             "必须是程序号或 {program = N, call = ...}"))  # fmt: skip
     return out
+
+
+def _codes(table: object, calls: dict[str, CallCode], fail: _Fail) -> tuple[CodeDoc, ...]:
+    """``[codes]``: plain G and M codes the machine builder added (``"G120.1" = { en = "...", zh =
+    "..." }``): no call, no motion, no alarm; ``en`` and ``zh`` are what hover says of them."""
+    if not isinstance(table, dict):
+        raise fail("codes", detail('must be a table of code = { en = "...", zh = "..." }',
+                                   '必须是 代码 = { en = "...", zh = "..." } 形式的表'))  # fmt: skip
+    out: list[CodeDoc] = []
+    for k, v in table.items():
+        code = str(k).strip().upper()
+        number = code[1:]
+        if not ((code[:1] == "G" and re.fullmatch(r"\d{1,4}(\.\d)?", number))
+                or (code[:1] == "M" and re.fullmatch(r"\d{1,8}", number))):  # fmt: skip
+            raise fail(f"codes.{k}", detail("must be a G code (G120, G120.1) or an M code without a decimal point",
+                                            "必须是 G 代码（G120、G120.1）或不带小数点的 M 代码"))  # fmt: skip
+        if _code_key(code) in calls:
+            raise fail(f"codes.{k}", detail("is also in [calls]: a code either calls a program or is a plain code",
+                                            "同时出现在 [calls] 中：一个代码要么调用程序，要么是普通代码"))  # fmt: skip
+        if not isinstance(v, dict) or not isinstance(v.get("en"), str) or not v["en"].strip():
+            raise fail(f"codes.{k}", detail('must say what the code does: { en = "...", zh = "..." }',
+                                            '必须说明该代码的作用：{ en = "...", zh = "..." }'))  # fmt: skip
+        unknown = sorted(set(v) - {"en", "zh"})
+        zh = v.get("zh", v["en"])
+        if unknown or not isinstance(zh, str):
+            raise fail(f"codes.{k}", detail("takes en and zh, both text", "只接受 en 和 zh，且都必须是文字"))
+        en = v["en"].strip()
+        out.append(CodeDoc(code_key(code[0], float(number)), "", en, zh.strip() or en))
+    return tuple(out)
 
 
 def _severity(table: object, fail: _Fail) -> dict[str, str]:

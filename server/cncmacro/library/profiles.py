@@ -11,13 +11,18 @@ chain (``dialect_choice.py``: the file's comment, the machine file's ``base``, t
 the default) with the machine file applied. ``cncmacro check`` and the language server's
 analysis, the language server's open documents, the call index and ``cncmacro run`` and the
 debugger (``machine/setup.py``) all ask it, so a file gets one profile whichever of them reads
-it; ``profile_source`` says which link of the chain decided.
+it; ``profile_source`` says which link of the chain decided. On the command line the profile a
+person types (``--dialect``) wins over the machine file's: ``typed_profile_wins`` gives the
+settings to read with and the note that says so.
 """
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
+from dataclasses import replace
 
+from ..bilingual import Detail, detail
 from ..dialects import Dialect, get_dialect
 from ..dialects.tables import CommonRange
 from ..syntax.document import head_lines
@@ -41,6 +46,24 @@ def profile_source(source: str | Sequence[str], settings: MachineSettings | None
     return dialect_and_source(_head(source), _named(settings), setting)[1]
 
 
+def typed_profile_wins(
+    settings: MachineSettings, typed: str | None, machine_file: str
+) -> tuple[MachineSettings, Detail | None]:
+    """``settings`` with the profile a person typed on the command line (``--dialect``) in place
+    of the machine file's, and a note naming both when they differ (None when nothing was
+    overridden). A file's own ``(cncmacro: dialect=..)`` comment still wins over both."""
+    named = settings.dialect
+    if typed is None or named is None:
+        return settings, None
+    settings = replace(settings, dialect=None)
+    if typed == named:
+        return settings, None
+    return settings, detail(
+        f"--dialect {typed} is used: it overrides {named}, the profile that {machine_file} names",
+        f"使用 --dialect {typed}：它取代了 {machine_file} 指定的系统类型 {named}",
+    )
+
+
 def _head(source: str | Sequence[str]) -> list[str]:
     """The first lines of a file, where its dialect comment may be."""
     return head_lines(source, HEADER_LINES) if isinstance(source, str) else list(source[:HEADER_LINES])
@@ -60,13 +83,16 @@ def machine_profile(name: str | Dialect | None, settings: MachineSettings | None
         base = base.lathe_variant  # ``lathe = true``: the control's lathe form (fanuc-30i)
     changes: dict[str, object] = {}
     if settings.common is not None:
-        changes["common_ranges"] = tuple(_common_range(base, first, last) for first, last in settings.common)
+        ranges = (r for first, last in settings.common for r in _common_ranges(base, first, last))
+        changes["common_ranges"] = tuple(ranges)
     if settings.program_digits is not None:
         changes["m98_program_digits"] = settings.program_digits
     if settings.programs_on_control:
         changes["programs_on_control"] = settings.programs_on_control
     if settings.system_variables:
         changes["extra_rows"] = settings.system_variables
+    if settings.codes:
+        changes["extra_codes"] = settings.codes
     if settings.timing:
         changes["timing"] = base.timing.changed(settings.timing)
     if not changes:
@@ -82,7 +108,13 @@ def machine_profile(name: str | Dialect | None, settings: MachineSettings | None
     return profile
 
 
-def _common_range(base: Dialect, first: int, last: int) -> CommonRange:
-    """A machine's common range, kept at power-off where the profile's range around it is."""
-    around = base.allows_common(first, last)
-    return CommonRange(first, last, around.persistent if around is not None else first >= 500)
+def _common_ranges(base: Dialect, first: int, last: int) -> list[CommonRange]:
+    """A machine's common range, cut where the profile's ranges begin and end: each piece inside
+    one of them is kept at power-off as it is; a piece outside them is kept from #500 up."""
+    ends = (n for r in base.common_ranges for n in (r.first, r.last + 1))
+    cuts = sorted({first, last + 1, *(n for n in ends if first < n <= last)})
+    out = []
+    for a, b in itertools.pairwise(cuts):
+        around = base.allows_common(a, b - 1)
+        out.append(CommonRange(a, b - 1, around.persistent if around is not None else a >= 500))
+    return out

@@ -3,7 +3,10 @@
 ``G65 P9100``, ``M98 P0040`` and (on gsk980tdi) ``G65 P[CUT]`` name a program. It is looked
 up first among the O programs of the calling file, then in the calling file's folder and each
 extra folder, in order: a file named after the number (``O9100.nc``, ``O9100.CNC``,
-``9100.nc``, ``O9100``), then any program file whose text has an ``O9100`` header. A bracketed
+``9100.nc``, ``O9100``), then any program file whose text has an ``O9100`` header. The program
+files of a folder are the ones ``files.is_program_file`` knows (with the machine file's
+``extensions``), and every file given to the library by its text (a file named on the command
+line, a document open in the editor), whatever its name. A bracketed
 name is a file name (``CUT.CNC``), or an O number when it looks like one (``P[O1004]``).
 Only files inside those folders are ever read: a name with a path in it is never found, and a
 link in a folder that leads out of it (and out of every extra folder) is not followed. Files are
@@ -67,14 +70,17 @@ class ProgramLibrary:
         texts: dict[str, str] | None = None,
         cache: BlockCache | None = None,
         files: FileCache | None = None,
+        extensions: frozenset[str] = frozenset(),
     ) -> None:
         self.folders = [Path(f) for f in folders or []]
+        self.extensions = extensions  # the machine file's endings of program files
         self.texts = dict(texts or {})
         self.cache = cache if cache is not None else shared_cache
         self.disk = files if files is not None else FileCache(self.cache)
         self._files: dict[str, LoadedFile | None] = {}
         self._listing: dict[Path, list[Path]] = {}
         self._stems: dict[Path, dict[str, list[Path]]] = {}  # folder -> lower-case stem -> its files
+        self._given: set[str] = set(self.texts)  # files given by their text: programs whatever their name
 
     # ---- files
     def load(self, path: str | Path) -> LoadedFile | None:
@@ -99,6 +105,7 @@ class ProgramLibrary:
         in the editor)."""
         self.texts[path] = text
         self._files.pop(path, None)
+        self._give(path)
         loaded = self.load(path)
         assert loaded is not None
         return loaded
@@ -107,8 +114,17 @@ class ProgramLibrary:
         """Register a file that the caller keeps parsed (a document open in an editor): it
         replaces the file on disk, and nothing is read or parsed again."""
         self.texts.pop(path, None)
+        self._give(path)
         loaded = self._files[path] = LoadedFile(path, lines, program, dialect_from_text(lines))
         return loaded
+
+    def _give(self, path: str) -> None:
+        """``path`` is a program of its folder from now on, whatever its name."""
+        if path not in self._given:
+            self._given.add(path)
+            folder = Path(path).parent
+            self._listing.pop(folder, None)
+            self._stems.pop(folder, None)
 
     def read_from_disk(self) -> tuple[list[str], list[str]]:
         """What this library's answers rest on: the files it read (or failed to read) from disk
@@ -131,7 +147,9 @@ class ProgramLibrary:
         files = self._listing.get(folder)
         if files is None:
             allowed = [folder, *self.folders]
-            files = [p for p in program_files_in(folder) if any(stays_inside(p, f) for f in allowed)]
+            files = [p for p in program_files_in(folder, self.extensions) if any(stays_inside(p, f) for f in allowed)]
+            listed = {str(p) for p in files}
+            files += sorted(Path(p) for p in self._given if Path(p).parent == folder and p not in listed)
             self._listing[folder] = files
         return files
 

@@ -120,6 +120,12 @@ class Documents:
         machine = self.machines.settings_for(path)
         return machine.calls if machine is not None else None
 
+    def extensions_for(self, path: str) -> frozenset[str]:
+        """The endings of program files that the machine file of ``path`` (a file or folder) adds."""
+        machines = self.machines
+        machine = machines.settings(machines.path_in(path) if os.path.isdir(path) else machines.path_for(path))
+        return machine.extensions if machine is not None else frozenset()
+
     def machine(self, doc: OpenDocument) -> MachineSettings | None:
         """The settings of ``doc``'s machine file (None: it has none, or a broken one)."""
         return self.machines.settings(doc.machine_file)

@@ -146,8 +146,9 @@ class CncMacroServer(LanguageServer):
         self.documents = Documents()
         documents = self.documents
         self.index = WorkspaceIndex(
-            documents.by_uri.values, documents.dialect_for, documents.block_memo, calls_for=documents.calls_for
-        )
+            documents.by_uri.values, documents.dialect_for, documents.block_memo, calls_for=documents.calls_for,
+            extensions_for=documents.extensions_for,
+        )  # fmt: skip
         self.settings = Settings()
         self.locale: str = "en"
         self.diagnostics = DiagnosticsEngine(self)

@@ -22,7 +22,7 @@ import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..bilingual import detail
+from ..bilingual import Detail, detail
 from ..library.files import SkippedFileError, decode_program, read_program
 from ..library.machine_file import (
     PERSISTENT_FILE_NAME,
@@ -33,7 +33,7 @@ from ..library.machine_file import (
 )
 from ..library.persistence import PersistentFileError, load_persistent, persistent_target, save_persistent
 from ..library.persistence_lock import LOCK_WAIT, PersistentLock, lock_persistent
-from ..library.profiles import file_profile
+from ..library.profiles import file_profile, typed_profile_wins
 from ..library.programs import ProgramLibrary
 from .machine import Machine
 
@@ -52,6 +52,7 @@ class PreparedRun:
     lock: PersistentLock | None = None
     saved: bool = False
     stored: dict[int, float] = field(default_factory=dict)  # the file's values when the run started
+    notes: list[Detail] = field(default_factory=list)  # what the person should know of the setup
 
     def save(self) -> None:
         """Write ``#500–#999`` back atomically, once, when the run changed one of them, and let
@@ -100,6 +101,7 @@ def prepare_run(
     saving: bool = True,
     wait: float = LOCK_WAIT,
     m99_ends_main: bool = False,
+    typed: bool = False,
 ) -> PreparedRun:
     """Read ``program`` and its machine settings and start a machine at its first block.
     ``data`` is the program's content when it does not come from the file (an editor's unsaved
@@ -107,7 +109,8 @@ def prepare_run(
     is ``saving`` waits at most ``wait`` seconds for the persistent file's lock and holds it
     until ``save`` or ``release``. ``m99_ends_main`` ends the run at an ``M99`` of the main
     program (a subprogram run on its own, one pass) instead of running it again from its start
-    as a control does."""
+    as a control does. ``typed``: ``dialect`` is what a person typed on the command line, which
+    wins over the machine file's profile (``typed_profile_wins``; its note is kept in ``notes``)."""
     try:
         source = read_program(program, max_bytes=None) if data is None else decode_program(data, str(program))
     except SkippedFileError as e:  # binary, a folder, a FIFO: its message names the file and says so
@@ -124,12 +127,18 @@ def prepare_run(
             detail(f"cannot read the program {program}: {why}", f"无法读取程序 {program}：{why.zh}")
         ) from None
     settings = machine_settings(program, machine_file)
+    notes: list[Detail] = []
+    if typed and settings.folder is not None:
+        where = str(machine_file) if machine_file is not None else str(find_machine_file(program))
+        settings, overridden = typed_profile_wins(settings, dialect, where)
+        notes += [overridden] if overridden is not None else []
     if block_delete is not None:
         settings = replace(settings, block_delete=block_delete)
     if max_blocks is not None:
         settings = replace(settings, max_blocks=max_blocks)
     profile = file_profile(source.text, settings, dialect)
-    machine = Machine(profile, settings, ProgramLibrary(search_paths or []), m99_ends_main=m99_ends_main)
+    library = ProgramLibrary(search_paths or [], extensions=settings.extensions)
+    machine = Machine(profile, settings, library, m99_ends_main=m99_ends_main)
     if machine.preset_problems:
         raise SetupError(machine.preset_problems[0])
     try:
@@ -137,7 +146,7 @@ def prepare_run(
         lock = lock_persistent(persistent, wait) if saving else None
     except (MachineFileError, PersistentFileError) as e:
         raise SetupError(e.args[0]) from None  # keeps a Chinese text
-    prepared = PreparedRun(machine, persistent, lock=lock)
+    prepared = PreparedRun(machine, persistent, lock=lock, notes=notes)
     try:
         stored = load_persistent(persistent)
         held = set(machine.kinds.persistent_numbers())

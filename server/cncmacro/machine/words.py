@@ -46,11 +46,17 @@ def known_g_codes(dialect: str) -> frozenset[float]:
     return frozenset(out)
 
 
+def machine_g_codes(dialect: Dialect) -> frozenset[float]:
+    """The G codes a machine file declares as plain codes (``Dialect.extra_codes``)."""
+    return frozenset(float(c.code[1:]) for c in dialect.extra_codes if c.code[0] == "G")
+
+
 def g_code_known(value: float, dialect: Dialect, calls: Mapping[str, object]) -> bool:
     """Whether ``G<value>`` (rounded as an address value) exists for the dialect or the machine."""
     return (
         value in known_g_codes(dialect.name)
         or f"G{value:g}" in calls
+        or value in machine_g_codes(dialect)
         or value == dialect.extra_offset_code
         or value in dialect.extra_offset_aliases
     )
@@ -61,15 +67,17 @@ def unknown_g_code(shown: str, dialect: Dialect) -> Detail:
     if dialect.word_format_alarms:
         return detail(
             f"G{shown}: {dialect.title} has no such G code (alarm 010 improper G code); a code that the "
-            "machine maps to a macro belongs in the machine file's [calls]",
+            "machine maps to a macro belongs in the machine file's [calls], one the machine builder added "
+            "in its [codes]",
             f"G{shown}：{dialect.title} 没有这个G代码（报警 010 G代码不当）；若机床把它设为宏程序调用，"
-            "请写入机床文件的 '[calls]' 表",
+            "请写入机床文件的 '[calls]' 表；若是机床厂家增加的代码，请写入 '[codes]' 表",
         )
     return detail(
         f"G{shown} is not in the {dialect.title} G-code table: the control alarms on a G code it does not have; "
-        "a code that the machine maps to a macro belongs in the machine file's [calls]",
+        "a code that the machine maps to a macro belongs in the machine file's [calls], one the machine builder added "
+        "in its [codes]",
         f"G{shown} 不在 {dialect.title} 的G代码表中：系统没有的G代码会报警；若机床把它设为宏程序调用，"
-        "请写入机床文件的 '[calls]' 表",
+        "请写入机床文件的 '[calls]' 表；若是机床厂家增加的代码，请写入 '[codes]' 表",
     )
 
 
@@ -120,7 +128,7 @@ def conditional_m99_refused(dialect: Dialect) -> Detail:
 def refused_words(dialect: Dialect, calls: Mapping[str, object]) -> tuple[WordSet, ...]:
     """The words the refusals look at (``word_sets.py``): a G code outside those
     ``g_code_known`` knows, an M code written with a decimal point."""
-    known = set(known_g_codes(dialect.name)) | extra_offset_codes(dialect)
+    known = set(known_g_codes(dialect.name)) | extra_offset_codes(dialect) | machine_g_codes(dialect)
     for code in calls:
         if code[:1] == "G" and code[1:]:
             try:

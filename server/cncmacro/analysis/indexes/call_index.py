@@ -143,7 +143,8 @@ class CallIndex:
         """The program files under the folders, or None when there are more than allowed."""
         seen: dict[str, None] = {}
         for folder in self.folders:
-            found = search_program_files(folder, self.max_files - len(seen), MAX_FOLDER_ENTRIES)
+            left = self.max_files - len(seen)
+            found = search_program_files(folder, left, MAX_FOLDER_ENTRIES, self.settings.extensions)
             seen.update((str(p), None) for p in found.files)
             for problem in found.skipped:
                 log.info("%s", pick(self.locale, str(problem), problem.zh))

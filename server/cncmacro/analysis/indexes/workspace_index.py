@@ -89,12 +89,15 @@ class OpenFile(Protocol):
 class WorkspaceIndex:
     """Parsed program files under the workspace folders, with the open documents on top.
     ``memo`` is the per-line fact cache of the open documents (``block_memo.py``), shared by
-    the files on disk; ``files`` reads the files (a cache of its own when none is given)."""
+    the files on disk; ``files`` reads the files (a cache of its own when none is given);
+    ``extensions_for`` gives the machine file's endings of program files for a path."""
 
     def __init__(self, open_files: Callable[[], Iterable[OpenFile]], dialect_for: Callable[[list[str], str], Dialect],
                  memo: BlockMemo | None = None, files: FileCache | None = None,
-                 calls_for: Callable[[str], Calls] = lambda path: None) -> None:  # fmt: skip
+                 calls_for: Callable[[str], Calls] = lambda path: None,
+                 extensions_for: Callable[[str], frozenset[str]] = lambda path: frozenset()) -> None:  # fmt: skip
         self.open_files = open_files
+        self.extensions_for = extensions_for
         self.dialect_for = dialect_for
         self.calls_for = calls_for  # the machine file's call codes for a path (which words are jumps)
         self.memo = memo if memo is not None else BlockMemo()
@@ -113,7 +116,7 @@ class WorkspaceIndex:
         for root in self.roots:
             if not os.path.isdir(root):
                 continue
-            found = search_program_files(root, MAX_PROGRAM_FILES, MAX_FOLDER_ENTRIES)
+            found = search_program_files(root, MAX_PROGRAM_FILES, MAX_FOLDER_ENTRIES, self.extensions_for(str(root)))
             self.skipped += found.skipped
             for k, p in enumerate(found.files):
                 if read > MAX_INDEX_BYTES:
@@ -131,7 +134,7 @@ class WorkspaceIndex:
         was not (a binary file is only logged: it is no program). The file cache reads it again
         at the next question, wherever it is."""
         self.disk.forget(path)
-        if ReadScope.of(self.roots).refusal(path) is not None:
+        if ReadScope.of(self.roots, extensions=self.extensions_for(path)).refusal(path) is not None:
             return None  # only program files under the workspace folders are read
         try:
             os.lstat(path)
@@ -171,7 +174,8 @@ class WorkspaceIndex:
             names = os.listdir(here)
         except OSError:
             names = []
-        present = {str(here / n) for n in names if not n.startswith(".") and is_program_file(here / n)}
+        extensions = self.extensions_for(folder)
+        present = {str(here / n) for n in names if not n.startswith(".") and is_program_file(here / n, extensions)}
         for path in [p for p in self.files if Path(p).parent == here and p not in present]:
             del self.files[path]
         for path in sorted(present - self.files.keys()):
@@ -222,7 +226,8 @@ class WorkspaceIndex:
         """A program library over the workspace folders with the open documents' text (the
         files on disk read through the index's cache)."""
         texts = {d.path: d.parsed.text for d in self.open_files() if near is None or d is not near}
-        return ProgramLibrary(folders=list(self.roots), texts=texts, files=self.disk)
+        extensions = self.extensions_for(near.path if near is not None else str(self.roots[0]) if self.roots else "")
+        return ProgramLibrary(folders=list(self.roots), texts=texts, files=self.disk, extensions=extensions)
 
     def find_program(self, doc: OpenFile, number: int | None, name: str | None) -> FoundProgram | None:
         """The program a call in ``doc`` names, found as the program library finds it."""
