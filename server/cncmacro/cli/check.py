@@ -7,9 +7,12 @@ runs of the machine find (from each program nothing calls; called programs throu
 callers, also those on disk in the checked files' folders and the search paths, whose own
 findings are not printed). Hints (``not-executed``) are printed only with ``--hints``. Exit status: 0 when no
 error was found, 1 when one was, 2 on bad usage or unreadable input (a missing path, a binary
-file, a folder or file that cannot be read, a file found in a folder that is larger than
-``MAX_PROGRAM_BYTES`` or is no regular file, a bad machine file). Whatever is not read is named
-on standard error; the others are still checked. A file name that is not UTF-8 is written as
+file, a folder or file that cannot be read, a folder in which no file is a program, a file found
+in a folder that is larger than ``MAX_PROGRAM_BYTES`` or is no regular file, a bad machine
+file). Whatever is not read is named on standard error; the others are still checked.
+``--dialect`` wins over the machine file's profile, and what a person should know of a
+machine file (that override, the common ranges it adds to the profile's) is a note on standard
+error. A file name that is not UTF-8 is written as
 ``files.shown_text`` shows it (SARIF's URIs keep its bytes). ``--locale zh-CN`` writes the
 messages and what goes to standard error in Chinese; the format around them
 (``file:line:col: severity: message [code]``, the JSON and SARIF keys and values other than the

@@ -28,7 +28,7 @@ def build_parser() -> argparse.ArgumentParser:
         "check", help="report problems in program files", description="Report problems in program files."
     )
     check.add_argument("paths", nargs="+", metavar="PATH", help="program files, or folders to search for them")
-    add_dialect_option(check, "when neither the file nor the machine file names one")
+    add_dialect_option(check, "over the machine file's (a file's own dialect comment still wins)")
     check.add_argument(
         "--format", choices=("text", "json", "sarif"), default="text", help="output format (default text)"
     )

@@ -55,7 +55,7 @@ def add_run_parser(sub: Any) -> None:
         description="Run a program on the simulated machine: the moves it makes, its alarms and its final variables.",
     )
     run.add_argument("file", metavar="FILE", help="the program to run")
-    add_dialect_option(run, "when neither the file nor the machine file names one")
+    add_dialect_option(run, "over the machine file's (a file's own dialect comment still wins)")
     run.add_argument(
         "--path", action="append", default=[], metavar="DIR", help="another folder where called programs are looked up"
     )

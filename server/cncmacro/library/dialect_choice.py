@@ -1,7 +1,9 @@
 """Which dialect a file is read in: docs/design.md's chain, first match wins.
 
 A comment in the first lines of the file ``(cncmacro: dialect=gsk980tdi)``; then the workspace
-setting (``.cncmacro.toml``), then the editor or command-line setting, then ``fanuc``.
+setting (``.cncmacro.toml``), then the editor or command-line setting, then ``fanuc``. On the
+command line ``--dialect`` goes before the machine file: the front end takes the machine file's
+profile out first (``profiles.typed_profile_wins``).
 """
 
 from __future__ import annotations
