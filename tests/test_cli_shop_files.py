@@ -55,6 +55,8 @@ def test_machine_file_extensions_make_txt_files_programs_for_check_and_run(tmp_p
 def test_folder_without_programs_says_what_it_looked_for_and_exits_two(tmp_path: Path) -> None:
     write(tmp_path, "notes.txt", "G90 G54 is the start of every program\n")
     (tmp_path / "photo.bin").write_bytes(b"O1234\0\0\0")  # looks like a program, but binary
+    write(tmp_path, "page.html", "<html>\n<body>O1234</body>\n")  # a tag, not a program name
+    write(tmp_path, "print.ps", "%!PS-Adobe-3.0\n")  # % not alone on its line
     code, out, err = cli("check", str(tmp_path))
     assert code == 2 and out == ""
     assert "no program files in this folder" in err and ".nc" in err and "extensions" in err

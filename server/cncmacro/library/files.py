@@ -41,7 +41,9 @@ PROGRAM_SUFFIXES = frozenset({".nc", ".cnc", ".mac", ".prg", ".tap", ".eia"})
 # How much of a file with another ending is read to see whether it starts as a program does: ``%``,
 # ``O1234`` or ``<NAME>`` after blank lines and comments (a GSK or DNC folder of ``.txt`` programs)
 HEAD_BYTES = 512
-_PROGRAM_HEADER = re.compile(rb"%|[Oo]\d|<[^<>\n]+>")
+# ``%`` alone on its line, ``O1234`` (not ``O1st``), or a program name ``<CUT-1.NC>`` (upper case,
+# as a control writes it: ``<html>`` and ``<?xml`` are no programs)
+_PROGRAM_HEADER = re.compile(rb"(?:%[ \t]*(?:\r?\n|\r|$)|[Oo]\d+(?![\w.])|<[A-Z0-9_][A-Z0-9_.+\-]*>)")
 # A name that spells a program number: O, or no O, then digits (``O1234``, ``o0040``, ``1234``).
 _O_NUMBER = re.compile(r"([Oo]?)(\d+)")
 MAX_NUMBER_DIGITS = 8  # the longest program number of any control (O12345678)
@@ -267,15 +269,17 @@ def starts_like_program(path: Path) -> bool:
 
 
 def _read_head(path: Path) -> bytes:
-    """The first ``HEAD_BYTES`` of the regular file at ``path`` (``b""`` for anything else)."""
+    """The first ``HEAD_BYTES`` of the regular file at ``path`` (``b""`` for anything else, and
+    for a file that says it is empty: the files of ``/proc`` are never read)."""
     name = os.fspath(path)
-    if not stat.S_ISREG(os.stat(name).st_mode):
+    st = os.stat(name)
+    if not stat.S_ISREG(st.st_mode) or st.st_size == 0:  # an empty file, or one of /proc's
         return b""
     fd = os.open(name, _OPEN_FLAGS)
     with open(fd, "rb", closefd=True) as f:
         if not stat.S_ISREG(os.fstat(fd).st_mode):
             return b""
-        return f.read(HEAD_BYTES)
+        return f.read(HEAD_BYTES) or b""  # None: nothing to read yet (a non-blocking read)
 
 
 @dataclass(slots=True)
