@@ -3,8 +3,10 @@ file's ``(cncmacro: dialect=..)`` comment, then its machine file's ``base``, the
 (``--dialect``, the editor's ``cncMacro.dialect``, a launch's ``dialect``), then fanuc, with
 the machine file applied. ``cncmacro check``, the language server (its findings and the
 dialect it tells the status bar) and the debugger give the same program the same profile
-and the same machine: each says that ``#160`` is not a common variable of this machine,
-naming the profile and the machine file's ranges, ``#100-#149, #500-#999``."""
+and the same machine (but what a person types on the command line, ``--dialect``, comes before
+the machine file's ``base``: docs/cli.md "Which dialect a file is read in"): each says that
+``#160`` is not a common variable of this machine, naming the profile and the machine file's
+ranges, ``#100-#149, #500-#999``."""
 
 from __future__ import annotations
 
@@ -112,7 +114,8 @@ async def test_dialect_selection_check_the_editor_and_the_debugger_read_a_file_i
     found, dialect, decided = await by_editor(client, program, setting)
     assert (dialect, decided) == (profile, source)
     assert machine in found
-    assert machine in by_check(program, setting)
+    typed = setting if source == "workspace" and setting else profile  # --dialect over the machine file
+    assert f"({get_dialect(typed).title}: {RANGES};" in by_check(program, setting)
     assert machine in by_debugger(program, setting)
 
 
