@@ -122,6 +122,22 @@ def test_haas_probing_macro_o9832_is_on_the_control() -> None:
     assert alarm(lines("G65 P9832", "#1=1", "M30"), FANUC) == (76, 1)
 
 
+# the body counts its passes in #1 and files each pass's #1 at #(100 + #1)
+G65_L3 = lines("G65 P100 L3 A1.", "M30", "O100", "#1=#1+1", "#[100+#1]=#1", "M99")
+
+
+def test_haas_g65_l_sets_the_arguments_on_the_first_pass_only_locals_carry_over() -> None:
+    # pass 1: #1 = 1 + 1 = 2 -> #102; pass 2 keeps #1: 2 + 1 = 3 -> #103; pass 3: 4 -> #104
+    got = final(G65_L3, HAAS)
+    assert (got.get(102), got.get(103), got.get(104)) == (2.0, 3.0, 4.0)
+
+
+def test_fanuc_0i_g65_l_fills_each_pass_from_the_arguments_again() -> None:
+    # every pass starts from A1.: #1 = 1 + 1 = 2 -> #102 three times; #103 and #104 stay vacant
+    got = final(G65_L3, FANUC)
+    assert (got.get(102), got.get(103), got.get(104)) == (2.0, None, None)
+
+
 # ---------------------------------------------------------------------------------------------
 # §8 words: G codes outside the table are warnings, Haas codes are in it; §1 whole words only
 

@@ -113,6 +113,10 @@ class Dialect:
     # §5 a modal G code before G65/G66 in its block: "alarm" (only N may precede the call, alarm 127)
     # or "execute" (the G code takes effect and stays in force, then the macro is called)
     modal_g_before_call: str = "alarm"
+    # §5 G65 P.. L k (k > 1): whether a pass after the first starts with the locals as the pass
+    # before left them (Haas: the arguments are set on the first pass only) or with a fresh level
+    # filled from the call's arguments again (False: each pass a call of its own)
+    macro_repeat_keeps_locals: bool = False
     # §5 G66 calls after a block that moves some distance (True: ``G0 U0 W0`` calls nothing) or
     # after any block with a move command (False)
     modal_call_needs_distance: bool = False

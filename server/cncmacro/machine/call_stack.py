@@ -176,7 +176,7 @@ class CallStack:
         if frame.repeats > 0 and p is None:
             frame.repeats -= 1
             frame.loops.clear()
-            if frame.locals is not self.frames[-2].locals:
+            if frame.locals is not self.frames[-2].locals and not self.dialect.macro_repeat_keeps_locals:
                 local: list[Value] = [None] * 34
                 for k, v in frame.arguments.items():
                     local[k] = v

@@ -943,6 +943,7 @@ PROFILE = FANUC_0I.configured(
     common_ranges=(CommonRange(100, 199, True), CommonRange(500, 999, True), CommonRange(10000, 10999, True)),
     programs_on_control=((9000, 9999),),
     local_subprogram_code=97.0,
+    macro_repeat_keeps_locals=True,  # G65 L: the arguments are set on the first pass only ([H5])
     extra_offset_code=154.0,
     extra_offset_aliases=tuple(float(g) for g in range(110, 130)),
     extra_offset_variables=G154_LONG,
