@@ -122,6 +122,35 @@ def test_haas_probing_macro_o9832_is_on_the_control() -> None:
     assert alarm(lines("G65 P9832", "#1=1", "M30"), FANUC) == (76, 1)
 
 
+# §2 address variables: #4101-#4126 hold each letter's last value on Haas, only codes on FANUC
+ADDRESSES = lines(
+    "#6=#4124",  # no X written yet: vacant
+    "G00 X1.3 Y2.",
+    "#7=#4124",  # X1.3
+    "G01 Z-1. F10.",
+    "G02 X3. R1.",  # from X1.3 Y2. to X3. Y2.: a chord of 1.7 under a radius of 1
+    "#1=#4124",  # X: the G02's 3.
+    "#2=#4125",  # Y: still the G00's 2.
+    "#3=#4126",  # Z: -1.
+    "#4=#4118",  # R: 1.
+    "#5=#4109",  # F: 10.
+    "M30",
+)
+
+
+def test_haas_4101_to_4126_hold_the_last_value_of_every_address_axes_and_r_too() -> None:
+    got = final(ADDRESSES, HAAS)
+    assert (got.get(6), got[7]) == (None, 1.3)
+    assert (got[1], got[2], got[3], got[4], got[5]) == (3.0, 2.0, -1.0, 1.0, 10.0)
+
+
+@pytest.mark.parametrize("dialect", [FANUC, "fanuc-30i"])
+def test_fanuc_4101_to_4130_hold_only_codes_4124_is_alarm_115(dialect: str) -> None:
+    # FANUC's modal information table has B D F H M N O S T (and P) at #4101-#4130, no axis
+    assert alarm(ADDRESSES, dialect) == (115, 1)
+    assert final(lines("G01 X1. F10.", "#5=#4109", "M30"), dialect)[5] == 10.0
+
+
 # the body counts its passes in #1 and files each pass's #1 at #(100 + #1)
 G65_L3 = lines("G65 P100 L3 A1.", "M30", "O100", "#1=#1+1", "#[100+#1]=#1", "M99")
 

@@ -28,6 +28,14 @@ ARGUMENTS_I = {
     "Q": 17, "R": 18, "S": 19, "T": 20, "U": 21, "V": 22, "W": 23, "X": 24, "Y": 25, "Z": 26,
 }  # fmt: skip
 
+
+def last_address_key(letter: str) -> str:
+    """Where the planner keeps the last value written for address ``letter`` on a profile whose
+    ``Dialect.last_address_letters`` names it: a system variable row reads it with
+    ``source="code"`` and this key as its ``param``."""
+    return f"{letter} last"
+
+
 # the GSK980TDi's tool offsets (seed 000 §3.28.1), the default of ``Dialect.lathe_offsets``
 GSK_LATHE_OFFSETS = LatheOffsets(
     axes=(("X", 2700, 2000), ("Z", 2800, 2100), ("Y", 2450, 2400)), radius=(2900, 2200), tip=2300
@@ -106,6 +114,11 @@ class Dialect:
     m98_program_digits: int = 4
     # system variables a machine file adds or describes anew; they win over the profile's rows
     extra_rows: tuple[SystemVariable, ...] = ()
+    # §2 address letters whose last value written in a block the address variables read, beside
+    # the codes every profile keeps (F, S, T, M, D, H, B, N, O): on Haas every letter of
+    # #4101-#4126, the axis, arc and cycle words too; none on FANUC and GSK, whose #4101-#4130
+    # hold only those codes (``last_address_key`` names where each is kept)
+    last_address_letters: frozenset[str] = frozenset()
     # programs kept on the control rather than in the workspace (the profile's, as Haas's
     # O9000-O9999, or a machine file's ``programs_on_control``): a call to one returns at once
     programs_on_control: tuple[tuple[int, int], ...] = ()
