@@ -10,7 +10,10 @@ from __future__ import annotations
 
 import pytest
 
-from running import alarm, final, lines, machine, run
+from cncmacro.library.machine_file import MachineSettings
+from cncmacro.library.programs import ProgramLibrary
+from cncmacro.machine import Machine
+from running import FIXED_CLOCK, alarm, final, lines, machine, run
 
 HAAS = "haas"
 FANUC = "fanuc-0i"
@@ -149,6 +152,41 @@ def test_fanuc_4101_to_4130_hold_only_codes_4124_is_alarm_115(dialect: str) -> N
     # FANUC's modal information table has B D F H M N O S T (and P) at #4101-#4130, no axis
     assert alarm(ADDRESSES, dialect) == (115, 1)
     assert final(lines("G01 X1. F10.", "#5=#4109", "M30"), dialect)[5] == 10.0
+
+
+# §5 M99 Pn in a main program: a branch to Nn on Haas ("N50 M99 P10 branches to N10")
+COUNTED_LOOP = lines(
+    "O01000",
+    "#100=0",
+    "N10 #100=#100+1",
+    "IF [#100 GE 3] GOTO 60",
+    "N50 M99 P10",
+    "N60 #101=1",
+    "M30",
+)
+
+
+def one_pass_run(text: str, dialect: str) -> Machine:
+    """``text`` run as ``cncmacro run`` and ``cncmacro check`` run a program: one pass, a main
+    program's M99 ending it."""
+    m = Machine(dialect, MachineSettings(**FIXED_CLOCK), ProgramLibrary(), m99_ends_main=True)
+    m.start_file("/nonexistent-test-folder/O01000.nc", text)
+    m.run()
+    return m
+
+
+def test_haas_m99_p_in_the_main_program_branches_to_n_in_every_run() -> None:
+    # passes at N10: #100 = 1, 2, 3; at 3 the IF leaves for N60, which sets #101 and M30 ends
+    m = one_pass_run(COUNTED_LOOP, HAAS)
+    assert m.status == "completed" and not m.ended_by_main_m99 and m.ended_with == 30.0
+    assert (m.variables()[100], m.variables()[101]) == (3.0, 1.0)
+
+
+def test_fanuc_0i_one_pass_run_stops_at_the_main_programs_m99_p() -> None:
+    # run alone, a FANUC program's M99 P10 is most often a subprogram's return to its caller's N10
+    m = one_pass_run(COUNTED_LOOP, FANUC)
+    assert m.status == "completed" and m.ended_by_main_m99
+    assert (m.variables()[100], m.variables().get(101)) == (1.0, None)
 
 
 # the body counts its passes in #1 and files each pass's #1 at #(100 + #1)

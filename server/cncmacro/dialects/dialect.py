@@ -126,6 +126,10 @@ class Dialect:
     # §5 a modal G code before G65/G66 in its block: "alarm" (only N may precede the call, alarm 127)
     # or "execute" (the G code takes effect and stays in force, then the macro is called)
     modal_g_before_call: str = "alarm"
+    # §5 ``M99 Pn`` in the main program: True, a branch to Nn in every run, as GOTO n (Haas: "M99
+    # P10 branches to N10"); False, the main program's end, which a run of one pass stops at
+    # (``m99_ends_main``) and the debugger and ``--repeat`` continue from Nn
+    main_m99_p_jumps: bool = False
     # §5 G65 P.. L k (k > 1): whether a pass after the first starts with the locals as the pass
     # before left them (Haas: the arguments are set on the first pass only) or with a fresh level
     # filled from the call's arguments again (False: each pass a call of its own)

@@ -544,6 +544,8 @@ def run_diagnostics(
         code = alarm_code(a.number, a.subject, base)
         if code == MACRO_ALARM or (a.file, a.line) not in invalid:
             out.append(_alarm_diagnostic(run, code, line_text, locale))
+    elif m.status == RunStatus.LIMIT and run.stopped_by in (None, "endless") and m.in_main_loop():
+        pass  # the main program's loop back (Haas M99 Pn): a production loop, which never ends
     elif m.status == RunStatus.LIMIT and m.frames and run.endless_at is not None:
         path, line = run.endless_at
         en = (

@@ -950,6 +950,7 @@ PROFILE = FANUC_0I.configured(
     common_ranges=(CommonRange(100, 199, True), CommonRange(500, 999, True), CommonRange(10000, 10999, True)),
     programs_on_control=((9000, 9999),),
     local_subprogram_code=97.0,
+    main_m99_p_jumps=True,  # N50 M99 P10 in a main program branches to N10 ([H1], [H5])
     macro_repeat_keeps_locals=True,  # G65 L: the arguments are set on the first pass only ([H5])
     last_address_letters=LAST_ADDRESS_LETTERS,  # #4101-#4126: every letter's last value ([Z])
     extra_offset_code=154.0,
