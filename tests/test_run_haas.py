@@ -257,6 +257,13 @@ def test_haas_g10_l10_and_l11_write_2001_and_2201() -> None:
     assert [got[k] for k in (1, 2, 3, 4)] == [120.0, -0.2, 5.0, 0.1]
 
 
+def test_haas_g10_l1_is_l11_the_length_wear_read_back_at_2201_plus_p() -> None:
+    # G10 L1 P2 R0.2 writes H2's wear #2202 = 0.2; under G91 L1 P2 R0.05 adds: 0.2 + 0.05 = 0.25;
+    # the geometry #2002 stays 0
+    got = final(lines("G90 G10 L1 P2 R0.2", "#1=#2202", "G91 G10 L1 P2 R0.05", "#2=#2202", "#3=#2002", "M30"), HAAS)
+    assert (got[1], got[2], got[3]) == (0.2, 0.25, 0.0)
+
+
 def test_fanuc_0i_g10_l10_writes_11001_not_2001() -> None:
     got = final(lines("G90 G10 L10 P3 R120.", "#1=#11003", "M30"), FANUC)
     assert got[1] == 120.0

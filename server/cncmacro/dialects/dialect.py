@@ -143,6 +143,9 @@ class Dialect:
     # geometry and wear; G10 L10, L11, L12 and L13 write them in that order. FANUC memory C keeps
     # them at #11001, #10001, #13001, #12001; Haas at #2001, #2201, #2401, #2601.
     tool_offset_bases: tuple[int, int, int, int] = (11000, 10000, 13000, 12000)
+    # §8 other L numbers of G10 that write a tool offset, each as the L10-L13 it stands for
+    # (Haas: "L1 or L11", the length wear); none on FANUC and GSK
+    g10_tool_l_aliases: tuple[tuple[float, float], ...] = ()
     # §10.1 where a lathe keeps its tool offsets (X, Z, Y geometry and wear, nose radius, tip):
     # the T code's offset number selects them and G10 P writes them. The GSK980TDi keeps them at
     # #2001…/#2701… (the default); the FANUC 0i-TF at #10001…/#15001…, with #2001… as the short
