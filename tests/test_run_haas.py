@@ -189,6 +189,22 @@ def test_fanuc_0i_one_pass_run_stops_at_the_main_programs_m99_p() -> None:
     assert (m.variables()[100], m.variables().get(101)) == (1.0, None)
 
 
+# §5 DPRNT on Haas ([H5] p. 125): the manual's own example, and a format it calls illegal
+
+
+def test_haas_dprnt_prints_the_whole_part_even_when_no_place_is_reserved_for_it() -> None:
+    # #1 = 1.5436: [44] 1.5436; [03] keeps one whole place: 1 and .5436 rounded to 3 places,
+    # 1.544; [40] the whole part alone: 1; each * prints a space
+    m = run(lines("#1=1.5436", "DPRNT[X#1[44]*Z#1[03]*T#1[40]]", "M30"), HAAS)
+    assert m.status == "completed" and m.output == ["X1.5436 Z1.544 T1"]
+
+
+@pytest.mark.parametrize("fmt", ["54", "45", "36", "00"])
+def test_haas_dprnt_format_of_more_than_8_places_or_none_is_alarm_114(fmt: str) -> None:
+    # 5 + 4 = 9 places, 4 + 5, 3 + 6 = 9, 0 + 0 = 0: the manual's illegal formats
+    assert alarm(lines("#1=1.5436", f"DPRNT[X#1[{fmt}]]", "M30"), HAAS) == (114, 2)
+
+
 # the body counts its passes in #1 and files each pass's #1 at #(100 + #1)
 G65_L3 = lines("G65 P100 L3 A1.", "M30", "O100", "#1=#1+1", "#[100+#1]=#1", "M99")
 

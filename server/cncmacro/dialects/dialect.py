@@ -126,6 +126,11 @@ class Dialect:
     # §5 a modal G code before G65/G66 in its block: "alarm" (only N may precede the call, alarm 127)
     # or "execute" (the G code takes effect and stays in force, then the macro is called)
     modal_g_before_call: str = "alarm"
+    # §5 DPRNT ``#i[ab]``: the most places a format may reserve, a + b (0: no limit; Haas 8, a
+    # format of none or more is alarm 114 there), and whether the whole part is printed in full
+    # (Haas: at least one digit, the field widened past a) or as its last a digits (FANUC)
+    dprnt_places: int = 0
+    dprnt_whole_part: bool = False
     # §5 ``M99 Pn`` in the main program: True, a branch to Nn in every run, as GOTO n (Haas: "M99
     # P10 branches to N10"); False, the main program's end, which a run of one pass stops at
     # (``m99_ends_main``) and the debugger and ``--repeat`` continue from Nn
