@@ -205,6 +205,25 @@ def test_haas_dprnt_format_of_more_than_8_places_or_none_is_alarm_114(fmt: str) 
     assert alarm(lines("#1=1.5436", f"DPRNT[X#1[{fmt}]]", "M30"), HAAS) == (114, 2)
 
 
+# §6 alarm numbers: Haas documents none of FANUC's, so its alarms are shown without one
+
+
+@pytest.mark.parametrize(
+    ("program", "fanuc_number"),
+    [
+        (lines("GOTO 99", "M30"), 128),  # no N99: FANUC 128
+        (lines("#3000=1(HOLE COUNT MISSING)", "M30"), 3001),  # FANUC 3000 + 1
+        (lines("#1=0", "#2=1/#1", "M30"), 112),  # division by zero: FANUC 112
+    ],
+)
+def test_haas_alarms_are_shown_without_fanucs_numbers(program: str, fanuc_number: int) -> None:
+    haas, fanuc = run(program, HAAS), run(program, FANUC)
+    assert haas.alarm is not None and fanuc.alarm is not None
+    assert haas.alarm.shown is None and not any(ch.isdigit() for ch in haas.alarm.words())
+    assert haas.alarm.words() == "alarm" and haas.alarm.words("zh-CN") == "报警"
+    assert fanuc.alarm.shown == fanuc_number and fanuc.alarm.words() == f"alarm {fanuc_number}"
+
+
 # the body counts its passes in #1 and files each pass's #1 at #(100 + #1)
 G65_L3 = lines("G65 P100 L3 A1.", "M30", "O100", "#1=#1+1", "#[100+#1]=#1", "M99")
 

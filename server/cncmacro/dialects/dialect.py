@@ -126,6 +126,10 @@ class Dialect:
     # §5 a modal G code before G65/G66 in its block: "alarm" (only N may precede the call, alarm 127)
     # or "execute" (the G code takes effect and stays in force, then the macro is called)
     modal_g_before_call: str = "alarm"
+    # §6 the alarm numbers the control itself shows, of those the interpreter raises (FANUC 0i's,
+    # the GSK's, 3000+n / 5900+n for #3000): None, every one (FANUC, GSK); a set, only these, the
+    # others shown without a number (Haas, whose manuals document none of them)
+    documented_alarms: frozenset[int] | None = None
     # §5 DPRNT ``#i[ab]``: the most places a format may reserve, a + b (0: no limit; Haas 8, a
     # format of none or more is alarm 114 there), and whether the whole part is printed in full
     # (Haas: at least one digit, the field widened past a) or as its last a digits (FANUC)
@@ -209,6 +213,12 @@ class Dialect:
         """This profile as one machine has it (a machine file's commons, digits and variables).
         ``changes`` are fields of ``Dialect`` by name; an unknown name is a ``TypeError``."""
         return replace(self, **changes)
+
+    def shown_alarm(self, number: int) -> int | None:
+        """The number a person is shown for the interpreter's alarm ``number`` on this control,
+        or None where the control documents none (``documented_alarms``)."""
+        documented = self.documented_alarms
+        return number if documented is None or number in documented else None
 
     def on_control(self, number: int) -> bool:
         """Whether program ``number`` lives on the control (the profile or a machine file says so)."""

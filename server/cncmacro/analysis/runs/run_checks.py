@@ -510,11 +510,11 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
     a = m.alarm
     assert a is not None
     if code == MACRO_ALARM:
-        en = f"the run reaches macro alarm {a.number}: {a.message}"
-        zh = f"运行到宏程序报警 {a.number}：{in_language(a.message, True)}"
+        en = f"the run reaches macro {a.words()}: {a.message}"
+        zh = f"运行到宏程序{a.words('zh')}：{in_language(a.message, True)}"
     else:
-        en = f"{a.message} (alarm {a.number})"
-        zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{in_language(a.message, True)}"
+        en = f"{a.message} ({a.words()})"
+        zh = f"{alarm_text(a.number, 'zh')}（{a.words('zh')}）：{in_language(a.message, True)}"
     in_loop = bool(m.frames and m.frames[-1].loops)
     if in_loop:
         do_line = m.frames[-1].loops[-1]

@@ -950,6 +950,7 @@ PROFILE = FANUC_0I.configured(
     common_ranges=(CommonRange(100, 199, True), CommonRange(500, 999, True), CommonRange(10000, 10999, True)),
     programs_on_control=((9000, 9999),),
     local_subprogram_code=97.0,
+    documented_alarms=frozenset(),  # no Haas source numbers FANUC's alarms or #3000=n: none shown
     dprnt_places=8,  # DPRNT #1[54] is illegal, #1[03] prints 1.544 ([H5] p. 125)
     dprnt_whole_part=True,
     main_m99_p_jumps=True,  # N50 M99 P10 in a main program branches to N10 ([H1], [H5])
