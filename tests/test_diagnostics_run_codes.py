@@ -194,3 +194,12 @@ def test_a_block_the_static_check_finds_in_error_is_not_repeated_by_the_run_unde
         files = {"O0001.nc": f"O0001\n{line}\nM30\n", "O9001.nc": "O9001\nM99\n"}
         diags = analyse(tmp_path, files, dialect=dialect)
         assert [(d.line, d.code) for d in diags if d.severity == "error"] == [(1, code)], (dialect, line)
+
+
+def test_6_alarms_a_haas_finding_names_no_fanuc_alarm_number(tmp_path):
+    """The same missing N99 and division by zero: "(alarm 128)" and "(alarm 112)" on the 0i,
+    "(alarm)" on Haas, which documents neither number."""
+    text = "O01000\nIF [#1 EQ 0] GOTO 99\n#2=1/#3\nM30\n"
+    for dialect, shown in (("fanuc-0i", ("alarm 128", "alarm 112")), ("haas", ("alarm", "alarm"))):
+        diags = [d for d in analyse(tmp_path, {"O01000.nc": text}, dialect) if d.severity == "error"]
+        assert [d.message.rsplit("(", 1)[1].rstrip(")") for d in diags] == list(shown), dialect

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail, in_language
 from ..dialects.alarms import (
+    FORMAT,
     LOOP_NUMBER,
     MISSING_END,
     SEQUENCE_NUMBER,
@@ -485,14 +486,22 @@ class CompiledFile:
             return lambda m, pc: nxt
         # the literal text, or the variable's getter with its format
         parts: list[str | tuple[Getter, int | None, int | None]] = []
+        dialect = self.machine.dialect
+        most, whole_part = dialect.dprnt_places, dialect.dprnt_whole_part
         for p in s.parts:
             if p.variable is not None:
+                places = (p.digits or 0) + (p.decimals or 0)
+                if most and p.digits is not None and not 0 < places <= most:
+                    shown = f"[{p.digits}{p.decimals if p.decimals is not None else ''}]"
+                    return raiser(FORMAT, detail(
+                        f"DPRNT format {shown}: the places before and after the point must be 1 to {most} in all",
+                        f"DPRNT 格式 {shown}：小数点前后的位数合计必须在 1～{most} 之间"))  # fmt: skip
                 parts.append((self.values.value(p.variable), p.digits, p.decimals))
             else:
                 parts.append(p.text or "")
 
         def dprnt(m: Machine, pc: int) -> int:
-            text = "".join(p if isinstance(p, str) else format_value(p[0](m), p[1], p[2]) for p in parts)
+            text = "".join(p if isinstance(p, str) else format_value(p[0](m), p[1], p[2], whole_part) for p in parts)
             m.print_line(text, pc)
             return nxt
 

@@ -62,6 +62,10 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         # set when an M99 of the main program ended the run (``m99_ends_main``): a subprogram
         # run on its own stopped after one pass (``cncmacro run`` says so); a restore clears it
         self.ended_by_main_m99 = False
+        # the main program's last loop back by ``M99 Pn`` where the profile makes it a branch
+        # (``Dialect.main_m99_p_jumps``): (file, the line of Nn, the line of the M99), the loop a
+        # shop writes to run a program for ever; a restore clears it
+        self.main_loop: tuple[str, int, int] | None = None
         # the code that ended a completed run (30, 2, or 99 for a main program's M99 that ends
         # it), as the run evaluated it; None while it runs or when it ran off its program's end
         self.ended_with: float | None = None
@@ -230,6 +234,17 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         return tuple(sites)
 
     # ---------------------------------------------------------------- snapshots
+    def in_main_loop(self) -> bool:
+        """Whether the main program stands in its loop back (``main_loop``): between the line
+        of Nn and the ``M99 Pn`` that branches back to it, the loop a shop writes on purpose to
+        run a program for ever (a bar feeder, a warm-up), which no run of it ends."""
+        loop = self.main_loop
+        if loop is None or not self.frames:
+            return False
+        path, first, last = loop
+        main = self.frames[0]
+        return main.file == path and first <= main.pc <= last
+
     def snapshot(self) -> Snapshot:
         return Snapshot(
             self._copy_frames(self.frames), list(self.C), dict(self.S), self.planner.snapshot(),
@@ -256,6 +271,7 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         self.ended_with = snap.ended_with
         self.cancel_requested = False
         self.ended_by_main_m99 = False
+        self.main_loop = None
 
     @staticmethod
     def _copy_frames(frames: list[Frame]) -> list[Frame]:

@@ -88,16 +88,20 @@ def bin_(x: float) -> float:
     return float(int(digits))
 
 
-def format_value(x: float | None, digits: int | None, decimals: int | None) -> str:
+def format_value(x: float | None, digits: int | None, decimals: int | None, whole_part: bool = False) -> str:
     """How DPRNT prints ``#i[ab]``: ``a`` digits before the point and ``b`` after it,
-    rounded; vacant prints as 0. Without a format the value prints as the control shows it."""
+    rounded; vacant prints as 0. Without a format the value prints as the control shows it.
+    With ``whole_part`` (``Dialect.dprnt_whole_part``) the whole part is printed in full, at
+    least one digit however few ``a`` reserves, and ``[a0]`` prints it without the fraction
+    (Haas: 1.5436 as ``[40]`` is 1)."""
     v = 0.0 if x is None else x
     if digits is None:
         return format_plain(v)
     b = decimals or 0
-    text = f"{abs(v):.{b}f}"
+    text = str(int(abs(v))) if whole_part and not b else f"{abs(v):.{b}f}"
     whole, _, frac = text.partition(".")
-    whole = whole[-digits:] if digits > 0 else ""
+    if not whole_part:
+        whole = whole[-digits:] if digits > 0 else ""
     sign = "-" if v < 0 and float(text) != 0 else ""
     return f"{sign}{whole or '0'}" + (f".{frac}" if b else "")
 

@@ -199,6 +199,13 @@ class Planner:
                 incremental[axis_index[inc_letters[letter]]] = v
             else:
                 other[letter] = v
+        last_keys = self.plain.last_keys
+        if last_keys:  # the profile's address variables read every letter's last value
+            codes = self.codes
+            for letter, v in words:
+                key = last_keys.get(letter)
+                if key is not None:
+                    codes[key] = v
         one = set_modal(self, gs, other)
         if self.lathe and one == self.dialect.coordinate_setting_code and "S" in other:
             # G50 S is the spindle speed clamp (docs/semantics.md §10.4), not a spindle speed

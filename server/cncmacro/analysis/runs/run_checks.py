@@ -510,11 +510,11 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
     a = m.alarm
     assert a is not None
     if code == MACRO_ALARM:
-        en = f"the run reaches macro alarm {a.number}: {a.message}"
-        zh = f"运行到宏程序报警 {a.number}：{in_language(a.message, True)}"
+        en = f"the run reaches macro {a.words()}: {a.message}"
+        zh = f"运行到宏程序{a.words('zh')}：{in_language(a.message, True)}"
     else:
-        en = f"{a.message} (alarm {a.number})"
-        zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{in_language(a.message, True)}"
+        en = f"{a.message} ({a.words()})"
+        zh = f"{alarm_text(a.number, 'zh')}（{a.words('zh')}）：{in_language(a.message, True)}"
     in_loop = bool(m.frames and m.frames[-1].loops)
     if in_loop:
         do_line = m.frames[-1].loops[-1]
@@ -544,6 +544,8 @@ def run_diagnostics(
         code = alarm_code(a.number, a.subject, base)
         if code == MACRO_ALARM or (a.file, a.line) not in invalid:
             out.append(_alarm_diagnostic(run, code, line_text, locale))
+    elif m.status == RunStatus.LIMIT and run.stopped_by in (None, "endless") and m.in_main_loop():
+        pass  # the main program's loop back (Haas M99 Pn): a production loop, which never ends
     elif m.status == RunStatus.LIMIT and m.frames and run.endless_at is not None:
         path, line = run.endless_at
         en = (
