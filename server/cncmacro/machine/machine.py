@@ -33,6 +33,7 @@ from .observer import RunObserver
 from .run_loop import RunLoop
 from .run_records import RunResult, Snapshot
 from .status import FINISHED, RunStatus
+from .unknown_values import seed_unknowns
 from .variable_sets import VariableSets
 from .variables import VariableAccess
 
@@ -50,6 +51,7 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         *,
         m99_ends_main: bool = False,
         observer: RunObserver | None = None,
+        kept_unknown: bool = False,
     ) -> None:
         self.settings = settings or MachineSettings()
         if dialect is None or isinstance(dialect, str):
@@ -97,6 +99,11 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
                 self.apply_presets({n: v})
             except ValueError as e:
                 self.preset_problems.append(e.args[0] if e.args else str(e))
+        # an analysis run: what the machine keeps and nothing here gives is unknown, not vacant
+        # (unknown_values.py); fixed before the first block is compiled, as ``observer`` is
+        self.kept_unknown = kept_unknown
+        if kept_unknown:
+            seed_unknowns(self.kinds, self.C)
 
     def discard(self) -> None:
         """Break the reference cycles of a machine nobody will run again (its compiled files
@@ -171,8 +178,10 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
 
     # ---------------------------------------------------------------- the planner's host (planner/host.py)
     def stored(self, n: int) -> Value:
-        """Stored system variable ``#n`` (an offset the planner reads)."""
-        return self.S.get(n)
+        """Stored system variable ``#n`` (an offset the planner reads); one written from an
+        unknown value counts as vacant for the motion (unknown_values.py)."""
+        v = self.S.get(n)
+        return None if v is not None and v != v else v
 
     def store(self, n: int, value: float) -> None:
         """The planner writes stored system variable ``#n`` (``G10``)."""
