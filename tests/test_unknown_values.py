@@ -49,7 +49,7 @@ def test_a_kept_common_from_the_persistent_file_the_machine_file_names(tmp_path:
     assert code == 0
     assert found == [
         "3:1: information: the analysis run stops here: this block depends on a value computed from #706 (line 2), "
-        "which the machine keeps and this folder does not give; set it under [variables] in .cncmacro.toml (or in "
+        "which the machine keeps; this folder does not give it; set it under [variables] in .cncmacro.toml (or in "
         "the persistent file it names) to check further [unknown-value]"
     ]
 
@@ -58,8 +58,8 @@ def test_a_branch_on_a_kept_common_names_it(tmp_path: Path) -> None:
     code, found = check(tmp_path, "O0100\nIF [#500 EQ 1] GOTO 10\nG00 X10.\nN10 M30\n")
     assert code == 0
     assert found == [
-        "2:1: information: the analysis run stops here: this block depends on #500, which the machine keeps and this "
-        "folder does not give; set it under [variables] in .cncmacro.toml (or in the persistent file it names) to "
+        "2:1: information: the analysis run stops here: this block depends on #500, which the machine keeps; this "
+        "folder does not give it; set it under [variables] in .cncmacro.toml (or in the persistent file it names) to "
         "check further [unknown-value]"
     ]
 
@@ -82,6 +82,23 @@ def test_what_the_program_could_set_itself_stays_vacant(tmp_path: Path) -> None:
         code, found = check(tmp_path, f"O0100\n#2=10/{variable}\nM30\n")
         assert code == 1
         assert found[0] == "2:1: error: division by zero (the divisor is vacant) (alarm 112) [division-by-zero]"
+
+
+def test_a_macro_checked_without_its_caller_gets_notes_not_alarms(tmp_path: Path) -> None:
+    # O9010 returns with M99 and no program here calls it: its arguments are unknown, not
+    # vacant. ``#20 EQ #0`` is false for an unknown (a value, not vacant), so the argument check
+    # raises no #3000; the offset read by the tool number T (#20) stops the run with a note
+    text = "O9010 (MACRO)\nIF [#20 EQ #0] THEN #3000=1 (T MISSING)\n#30=#[2000+#20]\nG01 Z-#30 F100\nM99\n"
+    code, found = check(tmp_path, text)
+    assert code == 0
+    assert found == [
+        "3:1: information: the analysis run stops here: this block depends on #20 (T), which a caller passes; checked "
+        "without its caller, this macro has no arguments; a program in the folder that calls it has it checked with "
+        "the caller's [unknown-value]"
+    ]
+    # a main program (it ends in M30) starts with vacant locals, as on the control: the alarm
+    code, found = check(tmp_path, text.replace("M99", "M30"))
+    assert code == 0 and found[0] == "2:1: warning: the run reaches macro alarm 3001: T MISSING [macro-alarm]"
 
 
 def test_cncmacro_run_keeps_the_kept_common_vacant(tmp_path: Path) -> None:

@@ -73,8 +73,7 @@ async def test_a_finding_in_an_open_macro_comes_through_its_caller_with_the_call
 ) -> None:
     macro = open_saved(fanuc_en, tmp_path / "O9200.nc", "O9200 (DIVIDE)\n#3=#2/#1\nM99\n")
     got = await diagnostics_for(fanuc_en, macro, 1)
-    assert codes(got) == [(1, "division-by-zero"), (2, "not-executed")]  # run on its own: vacant arguments
-    assert not got.diagnostics[0].related_information
+    assert codes(got) == []  # run on its own, its arguments are unknown (no caller): #2/#1 is no alarm
     call_line = "(𝑥 CALL) G65 P9200 A0 B2."  # an astral character: UTF-16 columns differ
     main = open_file(fanuc_en, tmp_path / "MAIN.nc", f"O0001\n{call_line}\nM30\n")
     got = (await published_where(fanuc_en, {macro: lambda items: any(d.related_information for d in items)}))[macro]

@@ -461,7 +461,7 @@ class ExpressionCompiler:
         left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local" and not self.watch
         exact = op in ("EQ", "NE") and self.dialect.vacant_differs_in_eq
         if self.unknowns:
-            return _decided(op, self._value(node.left), self._value(node.right), exact)
+            return _decided(op, self._value(node.left), self._value(node.right), exact, _is_vacant_test(node))
         if left_local and rc and not exact:
             assert isinstance(node.left, Var)
             n = node.left.number
@@ -580,14 +580,18 @@ _RELATIONS: dict[str, Callable[[float, float], bool]] = {
 }  # fmt: skip
 
 
-def _decided(op: str, a: Getter, b: Getter, exact: bool) -> Test:
+def _decided(op: str, a: Getter, b: Getter, exact: bool, vacant_test: bool) -> Test:
     """Relation ``op`` of ``a`` and ``b`` where values may be unknown (an analysis run): as
-    ``_relation`` decides it, but a side that is unknown stops the path (``UnknownValue``)."""
+    ``_relation`` decides it, but a side that is unknown stops the path (``UnknownValue``). An
+    unknown is a value, not vacant: where the profile tells vacant from 0 (``exact``),
+    ``[x EQ #0]`` (``vacant_test``) is false and ``[x NE #0]`` true for an unknown ``x``."""
     relation = _RELATIONS[op]
 
     def decided(m: Machine) -> bool:
         x, y = a(m), b(m)
         if x != x or y != y:  # NaN; vacant (None) equals itself
+            if exact and vacant_test:
+                return op == "NE"
             raise UnknownValue
         if exact:
             return _same(x, y) == (op == "EQ")

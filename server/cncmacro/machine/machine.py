@@ -33,7 +33,7 @@ from .observer import RunObserver
 from .run_loop import RunLoop
 from .run_records import RunResult, Snapshot
 from .status import FINISHED, RunStatus
-from .unknown_values import seed_unknowns
+from .unknown_values import UNKNOWN, seed_unknowns
 from .variable_sets import VariableSets
 from .variables import VariableAccess
 
@@ -104,6 +104,14 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         self.kept_unknown = kept_unknown
         if kept_unknown:
             seed_unknowns(self.kinds, self.C)
+
+    def unknown_arguments(self) -> None:
+        """The main program is a macro run without its caller (an analysis run): its arguments
+        (the locals #1–#33 at level 0) are values a call would pass, unknown rather than vacant
+        (unknown_values.py)."""
+        for n in range(1, 34):
+            if self.L[n] is None:
+                self.L[n] = UNKNOWN
 
     def discard(self) -> None:
         """Break the reference cycles of a machine nobody will run again (its compiled files

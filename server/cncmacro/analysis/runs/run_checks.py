@@ -61,7 +61,7 @@ from ...planner.alarms import UNKNOWN_VALUE
 from ..codes import MACRO_ALARM, alarm_code
 from ..diagnostics import Diagnostic, Related, diagnostic
 from .run_convergence import Earlier, keep_earlier, try_converge
-from .unknown_stops import named_persistent_values, unknown_value_text
+from .unknown_stops import named_persistent_values, runs_as_macro, unknown_value_text
 
 CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again before converging
 MAX_SECONDS = 30.0  # wall-clock limit of one run
@@ -176,6 +176,8 @@ class EntryRun(RunObserver):
         m.load_persistent(named_persistent_values(self.settings))
         m.planner.record_moves = False
         m.start(self.entry)
+        if runs_as_macro(self.entry):  # checked without its caller: its arguments are unknown
+            m.unknown_arguments()
         self.machine = m
         self.state = RunState()
         self.checkpoints = [m.snapshot()]
@@ -515,7 +517,7 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
     if a.subject == UNKNOWN_VALUE:
         ran = sorted((line for line in run.state.first.get(a.file, {}) if line < a.line), reverse=True)
         en, zh = unknown_value_text(line_text(a.file, a.line), ((n, line_text(a.file, n)) for n in ran), m.kinds,
-                                    m.dialect)  # fmt: skip
+                                    m.dialect, runs_as_macro(run.entry))  # fmt: skip
     elif code == MACRO_ALARM:
         en = f"the run reaches macro alarm {a.number}: {a.message}"
         zh = f"运行到宏程序报警 {a.number}：{in_language(a.message, True)}"

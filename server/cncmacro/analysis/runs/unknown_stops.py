@@ -11,18 +11,41 @@ not "not executed" (``unknown_stop``).
 from __future__ import annotations
 
 import logging
+import re
 from collections.abc import Iterable
 
 from ...dialects import Dialect
 from ...library.machine_file import MachineFileError, MachineSettings
 from ...library.persistence import PersistentFileError, load_persistent
+from ...library.programs import FoundProgram
 from ...machine import Machine
+from ...machine.calls import letters_for_local
 from ...machine.expressions import VariableKinds
 from ...machine.status import RunStatus
 from ...machine.unknown_values import assigned, is_kept, variables_in
 from ...planner.alarms import UNKNOWN_VALUE
+from ...syntax.nodes import Number
 
 log = logging.getLogger(__name__)
+_RETURN_OR_END = re.compile(r"M\s*0*(?:99|30|2)(?![\d.])", re.IGNORECASE)  # may hold M99, M30 or M02
+
+
+def runs_as_macro(found: FoundProgram) -> bool:
+    """Whether ``found``, run on its own, is a macro or subprogram checked without its caller: it
+    returns with M99 and has no M30 or M02. Its arguments are then unknown, not vacant
+    (``Machine.unknown_arguments``): the alarms it would reach only because no caller passed them
+    are not the program's. Only the lines that may hold such a word are read."""
+    returns = ends = False
+    lines, blocks = found.file.lines, found.file.program.blocks
+    for i in range(found.unit.start, min(found.unit.end, len(blocks))):
+        if i >= len(lines) or _RETURN_OR_END.search(lines[i]) is None:
+            continue
+        for w in blocks[i].words:
+            if w.letter == "M" and isinstance(w.value, Number):
+                v = w.value.value
+                returns = returns or v == 99.0
+                ends = ends or v in (30.0, 2.0)
+    return returns and not ends
 
 
 def named_persistent_values(settings: MachineSettings) -> dict[int, float]:
@@ -38,39 +61,55 @@ def named_persistent_values(settings: MachineSettings) -> dict[int, float]:
 
 
 def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: VariableKinds,
-                       dialect: Dialect) -> tuple[str, str]:  # fmt: skip
+                       dialect: Dialect, arguments: bool) -> tuple[str, str]:  # fmt: skip
     """The note (English, Chinese) for a run stopped on block ``text`` by an unknown value. It
-    names at most three kept variables the block's value comes from: the block's own that no
+    names at most three variables the block's value comes from: the block's own that no
     ``earlier`` block (that ran before it in its file: (line, text), nearest first) assigned,
-    and through each ``#n=...`` of those blocks, the variables of its expression, with its line."""
-    wanted: dict[int, int | None] = dict.fromkeys(variables_in(text))  # variable -> the line it is read on
+    and through each ``#n=...`` of those blocks, the variables of its expression, with its line;
+    the ones the machine keeps and, in a macro checked without its caller (``arguments``), the
+    arguments #1–#33 a call would pass."""
+    own = assigned(text)
+    wanted: dict[int, int | None] = dict.fromkeys(variables_in(own[1] if own else text))  # variable -> its line
     for line, before in earlier:
         a = assigned(before)
         if a is not None and a[0] in wanted:
             del wanted[a[0]]
             for n in variables_in(a[1]):
                 wanted.setdefault(n, line)
-    kept = [(n, line) for n, line in wanted.items() if is_kept(n, kinds, dialect)][:3]
-    if not kept:
-        which = "on a value the machine keeps (a common kept at power-off, an offset)"
-        which_zh = "取决于机床上保存的数值（断电保持的公共变量、补偿值）"
+    named = [(n, line) for n, line in wanted.items() if is_kept(n, kinds, dialect) or (arguments and 1 <= n <= 33)]
+    kept = [(n, line) for n, line in named[:3] if not 1 <= n <= 33]
+    passed = [(n, line) for n, line in named[:3] if 1 <= n <= 33]
+    parts, parts_zh = [], []
+    if kept:
+        names, names_zh = _names(kept)
+        parts.append(f"{names}, which the machine keeps")
+        parts_zh.append(f"机床上保存的 {names_zh}")
+    if passed:
+        names, names_zh = _names(passed, letters=True)
+        parts.append(f"{names}, which a caller passes")
+        parts_zh.append(f"调用者传递的自变量 {names_zh}")
+    if not parts:
+        which, which_zh = "on a value the machine keeps (a common kept at power-off, an offset)", "机床上保存的数值"
+    elif any(line is not None for _, line in named[:3]):
+        which, which_zh = "on a value computed from " + " and ".join(parts), "由" + "和".join(parts_zh) + "算出的值"
     else:
-        names = ", ".join(f"#{n}" if line is None else f"#{n} (line {line + 1})" for n, line in kept)
-        names_zh = "、".join(f"#{n}" if line is None else f"#{n}（第 {line + 1} 行）" for n, line in kept)
-        if all(line is None for _, line in kept):
-            which, which_zh = f"on {names}, which the machine keeps", f"取决于 {names_zh}，其值保存在机床上"
-        else:
-            which = f"on a value computed from {names}, which the machine keeps"
-            which_zh = f"取决于由 {names_zh} 算出的值，其值保存在机床上"
-    en = (
-        f"the analysis run stops here: this block depends {which} and this folder does not give; "
-        "set it under [variables] in .cncmacro.toml (or in the persistent file it names) to check further"
-    )
-    zh = (
-        f"分析运行在此停止：本程序段{which_zh}，而文件夹中没有给出；在 .cncmacro.toml 的 [variables]"
-        "（或它指定的断电保持变量文件）中给出该值即可继续检查"
-    )
-    return en, zh
+        which, which_zh = "on " + " and ".join(parts), "和".join(parts_zh)
+    if passed and not kept:
+        tail = (
+            "checked without its caller, this macro has no arguments; a program in the folder that calls it has it "
+            "checked with the caller's"
+        )
+        tail_zh = "单独检查时没有调用者传递自变量；文件夹中有调用它的程序时，会以调用者的自变量检查它"
+    else:
+        tail = (
+            "this folder does not give it; set it under [variables] in .cncmacro.toml (or in the persistent file "
+            "it names) to check further"
+        )
+        tail_zh = (
+            "文件夹中没有给出该值；在 .cncmacro.toml 的 [variables]（或它指定的断电保持变量文件）中给出即可继续检查"
+        )
+    return (f"the analysis run stops here: this block depends {which}; {tail}",
+            f"分析运行在此停止：本程序段取决于{which_zh}；{tail_zh}")  # fmt: skip
 
 
 def unknown_stop(m: Machine) -> list[tuple[str, int]]:
@@ -86,3 +125,15 @@ def unknown_stop(m: Machine) -> list[tuple[str, int]]:
 def after_a_stop(stops: list[tuple[str, int]], file: str, first: int) -> bool:
     """Whether lines from ``first`` on in ``file`` come after one of the ``stops``."""
     return any(f == file and first > line for f, line in stops)
+
+
+def _names(found: list[tuple[int, int | None]], letters: bool = False) -> tuple[str, str]:
+    """``#706 (line 2), #20 (T)``: each variable, its argument letter and the line it is read on."""
+    en, zh = [], []
+    for n, line in found:
+        letter = letters_for_local(n)[0] if letters else None
+        tags = [t for t in (letter, None if line is None else f"line {line + 1}") if t]
+        tags_zh = [t for t in (letter, None if line is None else f"第 {line + 1} 行") if t]
+        en.append(f"#{n}" + (f" ({', '.join(tags)})" if tags else ""))
+        zh.append(f"#{n}" + (f"（{'，'.join(tags_zh)}）" if tags_zh else ""))
+    return ", ".join(en), "、".join(zh)
