@@ -107,3 +107,16 @@ def test_cncmacro_run_keeps_the_kept_common_vacant(tmp_path: Path) -> None:
     (tmp_path / "O0100.nc").write_text(GRINDER, encoding="utf-8")
     code, out, err = cli("run", "--no-save", str(tmp_path / "O0100.nc"))
     assert code != 0 and "112" in out + err
+
+
+def test_the_tool_in_the_spindle_before_any_t_is_unknown(tmp_path: Path) -> None:
+    # Haas: #3026 is the tool in the spindle; before the program loads one the machine has one
+    # loaded, so #[2400+#3026] (its diameter) is unknown, not the diameter of tool 0 (#2400,
+    # which does not exist: alarm 115)
+    text = "O0100\n#1=#[2400+#3026]\nIF [#1 GT 10.] GOTO 10\nN10 M30\n"
+    code, found = check(tmp_path, text, None, "--dialect", "haas")
+    assert code == 0
+    assert [f.split(": ")[1] for f in found] == ["information"] and found[0].startswith("2:1: ")
+    # after T2 M06 it is tool 2: #2402 given as 12 in [variables], the program runs to its end
+    loaded = text.replace("O0100\n", "O0100\nT2 M06\n")
+    assert check(tmp_path, loaded, "[variables]\n2402 = 12.0\n", "--dialect", "haas") == (0, [])

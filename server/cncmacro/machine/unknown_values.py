@@ -1,14 +1,17 @@
-"""Values the machine has and the folder does not: unknown, not vacant (docs/semantics.md §2, "Unknown, not vacant").
+"""Values the machine has and the folder does not: unknown, not vacant (docs/semantics.md §2,
+"Unknown, not vacant").
 
 A program reads values the control keeps from one day to the next: the commons kept at power-off
-(#500–#999, the extended ranges), the tool and work offset tables. Offline, nothing says what
-they hold; taking them as vacant or 0 makes a production program's ``#641=#640/#706`` a
-"division by zero" the control never raises. So an analysis run (``check`` and the editor:
-``Machine(kept_unknown=True)``) reads each of them that neither the machine file's
-``[variables]`` nor the persistent file gives as **unknown**: NaN, which every arithmetic
-operation and function carries on (an unknown divisor divides to unknown, no alarm). Vacant
-stays vacant where the program itself could have set the value: locals, arguments a caller did
-not pass, the commons cleared at power-on (#100–#199).
+(#500–#999, the extended ranges), the tool and work offset tables, the tool loaded in the
+spindle before the program commands a T. Offline, nothing says what they hold; taking them as
+vacant or 0 makes a production program's ``#641=#640/#706`` a "division by zero" the control
+never raises. So an analysis run (``check`` and the editor: ``Machine(kept_unknown=True)``)
+reads each of them that neither the machine file's ``[variables]`` nor the persistent file
+gives as **unknown**: NaN, which every arithmetic operation and function carries on (an unknown
+divisor divides to unknown, no alarm). A macro checked without its caller gets unknown
+arguments (``Machine.unknown_arguments``). Vacant stays vacant where the program itself could
+have set the value: a main program's locals, arguments a caller did not pass, the commons
+cleared at power-on (#100–#199).
 
 Where the run must decide something with an unknown (a branch, an address word sent to the
 NC, a variable, label or program number made from it) the control would use its value; the
@@ -68,8 +71,14 @@ def is_kept(n: int, kinds: VariableKinds, dialect: Dialect) -> bool:
         return True
     if kind == "system":
         row = dialect.system_variable(n)
-        return row is not None and row.group in KEPT_GROUPS
+        return row is not None and (row.group in KEPT_GROUPS or is_tool(n, dialect))
     return False
+
+
+def is_tool(n: int, dialect: Dialect) -> bool:
+    """Whether system variable ``#n`` reads the tool number (FANUC #4120, Haas #3026)."""
+    row = dialect.system_variable(n)
+    return row is not None and row.source == "code" and row.param == "T"
 
 
 def assigned(text: str) -> tuple[int, str] | None:

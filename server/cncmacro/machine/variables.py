@@ -187,6 +187,8 @@ class VariableAccess:
                 return self.S.get(target, UNKNOWN)
             return self.S.get(target, target_row.default if target_row else 0.0)
         if source in ("modal", "code", "position"):  # the planner's state (planner/planner.py)
+            if source == "code" and row.param == "T" and self.kept_unknown and self.planner.codes.get("T") is None:
+                return UNKNOWN  # the tool loaded before the program commands one: the machine knows it
             return self.planner.read(source, row.param, row.default, k)
         if source == "timer":
             return self.timer_value(n, row.param)

@@ -22,7 +22,7 @@ from ...machine import Machine
 from ...machine.calls import letters_for_local
 from ...machine.expressions import VariableKinds
 from ...machine.status import RunStatus
-from ...machine.unknown_values import assigned, is_kept, variables_in
+from ...machine.unknown_values import assigned, is_kept, is_tool, variables_in
 from ...planner.alarms import UNKNOWN_VALUE
 from ...syntax.nodes import Number
 
@@ -80,10 +80,16 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     kept = [(n, line) for n, line in named[:3] if not 1 <= n <= 33]
     passed = [(n, line) for n, line in named[:3] if 1 <= n <= 33]
     parts, parts_zh = [], []
+    tool = [(n, line) for n, line in kept if is_tool(n, dialect)]
+    kept = [(n, line) for n, line in kept if not is_tool(n, dialect)]
     if kept:
         names, names_zh = _names(kept)
         parts.append(f"{names}, which the machine keeps")
         parts_zh.append(f"机床上保存的 {names_zh}")
+    if tool:
+        names, names_zh = _names(tool)
+        parts.append(f"{names}, the tool loaded before the program commands one")
+        parts_zh.append(f"程序指令换刀前主轴上的刀具 {names_zh}")
     if passed:
         names, names_zh = _names(passed, letters=True)
         parts.append(f"{names}, which a caller passes")
@@ -94,7 +100,10 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
         which, which_zh = "on a value computed from " + " and ".join(parts), "由" + "和".join(parts_zh) + "算出的值"
     else:
         which, which_zh = "on " + " and ".join(parts), "和".join(parts_zh)
-    if passed and not kept:
+    if tool and not kept and not passed:
+        tail = "no tool change (T_ M06) comes before it in this run, so the tool in the spindle is not known here"
+        tail_zh = "本次运行中它之前没有换刀（T_ M06），因此这里不知道主轴上的刀具"
+    elif passed and not kept:
         tail = (
             "checked without its caller, this macro has no arguments; a program in the folder that calls it has it "
             "checked with the caller's"
