@@ -24,6 +24,7 @@ from ..dialects.alarms import (
     WRITE_PROTECTED,
 )
 from ..library.programs import LoadedFile
+from ..planner.alarms import UnknownValue
 from ..planner.numbers import MAX_VALUE, format_value, round_half_away, to_increment
 from ..syntax.nodes import (
     Assign,
@@ -76,8 +77,9 @@ class CompiledFile:
         self.end_do = {p.end_line: p.do_line for p in file.program.loops}
         self._jumps: dict[tuple[int, int], tuple[int, int]] = {}
         self._spans: jumps.LoopSpans | None = None  # made at the first jump that is not cached
-        self.values = ExpressionCompiler(machine.kinds, watch=machine.watching)
-        self.addresses = ExpressionCompiler(machine.kinds, in_address=True, watch=machine.watching)
+        self.values = ExpressionCompiler(machine.kinds, watch=machine.watching, unknowns=machine.kept_unknown)
+        self.addresses = ExpressionCompiler(machine.kinds, in_address=True, watch=machine.watching,
+                                            unknowns=machine.kept_unknown)  # fmt: skip
 
     def reset(self) -> None:
         """Forget every compiled line, loop pair and jump: the file's text changed in place
@@ -378,7 +380,7 @@ class CompiledFile:
 
                 def set_local(m: Machine, pc: int) -> int:
                     v = value(m)
-                    if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
+                    if v is not None and not -MAX_VALUE <= v <= MAX_VALUE and v == v:  # NaN: unknown, kept
                         raise out_of_range(n, v)
                     m.L[n] = v
                     return nxt
@@ -388,7 +390,7 @@ class CompiledFile:
 
                 def set_common(m: Machine, pc: int) -> int:
                     v = value(m)
-                    if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
+                    if v is not None and not -MAX_VALUE <= v <= MAX_VALUE and v == v:  # NaN: unknown, kept
                         raise out_of_range(n, v)
                     m.C[n] = v
                     return nxt
@@ -530,6 +532,8 @@ class CompiledFile:
     def round_for(self, letter: str, v: float | None, literal: bool, point: bool) -> float | None:
         if v is None:
             return 0.0 if self.machine.dialect.vacant_address_is_zero else None
+        if v != v:  # an address from an unknown value (machine/unknown_values.py)
+            raise UnknownValue
         if letter == "G":
             return to_increment(v, 1) if v != int(v) else float(v)
         if letter in INTEGER_LETTERS:

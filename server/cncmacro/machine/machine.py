@@ -33,6 +33,7 @@ from .observer import RunObserver
 from .run_loop import RunLoop
 from .run_records import RunResult, Snapshot
 from .status import FINISHED, RunStatus
+from .unknown_values import UNKNOWN, seed_unknowns
 from .variable_sets import VariableSets
 from .variables import VariableAccess
 
@@ -50,6 +51,7 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         *,
         m99_ends_main: bool = False,
         observer: RunObserver | None = None,
+        kept_unknown: bool = False,
     ) -> None:
         self.settings = settings or MachineSettings()
         if dialect is None or isinstance(dialect, str):
@@ -101,6 +103,19 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
                 self.apply_presets({n: v})
             except ValueError as e:
                 self.preset_problems.append(e.args[0] if e.args else str(e))
+        # an analysis run: what the machine keeps and nothing here gives is unknown, not vacant
+        # (unknown_values.py); fixed before the first block is compiled, as ``observer`` is
+        self.kept_unknown = kept_unknown
+        if kept_unknown:
+            seed_unknowns(self.kinds, self.C)
+
+    def unknown_arguments(self) -> None:
+        """The main program is a macro run without its caller (an analysis run): its arguments
+        (the locals #1–#33 at level 0) are values a call would pass, unknown rather than vacant
+        (unknown_values.py)."""
+        for n in range(1, 34):
+            if self.L[n] is None:
+                self.L[n] = UNKNOWN
 
     def discard(self) -> None:
         """Break the reference cycles of a machine nobody will run again (its compiled files
@@ -175,8 +190,10 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
 
     # ---------------------------------------------------------------- the planner's host (planner/host.py)
     def stored(self, n: int) -> Value:
-        """Stored system variable ``#n`` (an offset the planner reads)."""
-        return self.S.get(n)
+        """Stored system variable ``#n`` (an offset the planner reads); one written from an
+        unknown value counts as vacant for the motion (unknown_values.py)."""
+        v = self.S.get(n)
+        return None if v is not None and v != v else v
 
     def store(self, n: int, value: float) -> None:
         """The planner writes stored system variable ``#n`` (``G10``)."""
