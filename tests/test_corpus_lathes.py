@@ -1,6 +1,7 @@
 """The lathe corpora (tests/corpus/gsk980tdi and tests/corpus/fanuc-0i-lathe): shop programs of a
 GSK980TDi and a FANUC 0i-TF lathe. ``cncmacro check`` finds nothing in them (no error, no
-warning, and no information either: ``ALLOWED_INFOS`` is empty), every main program runs to
+warning, and no information either: ``ALLOWED_INFOS`` is empty; their branches on a part counter or a
+wear value kept on the machine stop the analysis with an ``unknown-value`` hint), every main program runs to
 completion in a time a lathe could take for it (10 s to 30 min, some cutting), and each does what
 its programmer meant: the passes of a cycle where the control makes them, a thread's last pass
 at the root diameter, an offset written. O2016's and g92_thread_m24's times are worked out by hand.

@@ -57,9 +57,11 @@ from ...machine.calls import letters_for_local
 from ...machine.observer import RunObserver
 from ...machine.status import FINISHED, RunStatus
 from ...machine.tracking import same_state
+from ...planner.alarms import UNKNOWN_VALUE
 from ..codes import MACRO_ALARM, alarm_code
 from ..diagnostics import Diagnostic, Related, diagnostic
 from .run_convergence import Earlier, keep_earlier, try_converge
+from .unknown_stops import named_persistent_values, runs_as_macro, unknown_value_text
 
 CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again before converging
 MAX_SECONDS = 30.0  # wall-clock limit of one run
@@ -170,9 +172,12 @@ class EntryRun(RunObserver):
             drop_machine(self.machine)
         self.last_run = {}  # the new machine's lines have not run (``RunObserver``)
         self.track_serial = self.track_floor = 0
-        m = Machine(self.dialect, self.settings, self.library, m99_ends_main=True, observer=self)
+        m = Machine(self.dialect, self.settings, self.library, m99_ends_main=True, observer=self, kept_unknown=True)
+        m.load_persistent(named_persistent_values(self.settings))
         m.planner.record_moves = False
         m.start(self.entry)
+        if runs_as_macro(self.entry):  # checked without its caller: its arguments are unknown
+            m.unknown_arguments()
         self.machine = m
         self.state = RunState()
         self.checkpoints = [m.snapshot()]
@@ -509,12 +514,16 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
     m = run.machine
     a = m.alarm
     assert a is not None
-    if code == MACRO_ALARM:
-        en = f"the run reaches macro alarm {a.number}: {a.message}"
-        zh = f"运行到宏程序报警 {a.number}：{in_language(a.message, True)}"
+    if a.subject == UNKNOWN_VALUE:
+        ran = sorted((line for line in run.state.first.get(a.file, {}) if line < a.line), reverse=True)
+        en, zh = unknown_value_text(line_text(a.file, a.line), ((n, line_text(a.file, n)) for n in ran), m.kinds,
+                                    m.dialect, runs_as_macro(run.entry))  # fmt: skip
+    elif code == MACRO_ALARM:
+        en = f"the run reaches macro {a.words()}: {a.message}"
+        zh = f"运行到宏程序{a.words('zh')}：{in_language(a.message, True)}"
     else:
-        en = f"{a.message} (alarm {a.number})"
-        zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{in_language(a.message, True)}"
+        en = f"{a.message} ({a.words()})"
+        zh = f"{alarm_text(a.number, 'zh')}（{a.words('zh')}）：{in_language(a.message, True)}"
     in_loop = bool(m.frames and m.frames[-1].loops)
     if in_loop:
         do_line = m.frames[-1].loops[-1]
@@ -544,6 +553,8 @@ def run_diagnostics(
         code = alarm_code(a.number, a.subject, base)
         if code == MACRO_ALARM or (a.file, a.line) not in invalid:
             out.append(_alarm_diagnostic(run, code, line_text, locale))
+    elif m.status == RunStatus.LIMIT and run.stopped_by in (None, "endless") and m.in_main_loop():
+        pass  # the main program's loop back (Haas M99 Pn): a production loop, which never ends
     elif m.status == RunStatus.LIMIT and m.frames and run.endless_at is not None:
         path, line = run.endless_at
         en = (
