@@ -119,10 +119,10 @@ CODES: dict[str, Code] = _codes(
          BOTH, subjects=("jump-into-loop",)),
     Code("g65-nc-words", ERROR,
          detail("G65/G66 shares its block with another G or M code, an O word or a prior word (a modal G code "
-                "before it is a warning where the control sets it and calls).",
+                "before it is a hint where the control sets it and calls).",
                 "G65/G66 与其他 G 或 M 代码、O 代码或其前面的代码在同一程序段"
-                "（系统先执行其前的模态 G 代码再调用时为警告）。"),
-         milder=WARNING),
+                "（系统先执行其前的模态 G 代码再调用时为提示）。"),
+         milder=HINT),
     Code("argument-address", ERROR,
          detail("G, L, N, O or P used as a macro argument (alarm 129).",
                 "G、L、N、O 或 P 用作宏程序自变量（报警 129）。"),
