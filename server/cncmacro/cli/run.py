@@ -35,6 +35,7 @@ from ..planner.move_json import machine_json, move_json
 from ..planner.moves import Move
 from ..planner.numbers import format_plain
 from .cycle_report import cycle_json, write_cycle_text
+from .locale_option import add_locale_option
 from .profiles import add_dialect_option
 from .terminal import Printable, TextOut, json_text
 
@@ -69,10 +70,7 @@ def add_run_parser(sub: Any) -> None:
     run.add_argument("--machine", metavar="FILE", help="machine settings (default: the nearest .cncmacro.toml)")
     run.add_argument("--max-blocks", type=int, metavar="N", help="stop after N blocks (default 1000000)")
     run.add_argument("--json", action="store_true", help="print the result as JSON")
-    run.add_argument(
-        "--locale", choices=("en", "zh-CN"), default="en",
-        help="language of the text output, alarm details and notes (default en)",
-    )  # fmt: skip
+    add_locale_option(run, "the text output, alarm details and notes")
     run.add_argument(
         "--no-save", action="store_true", help="do not write #500-#999 back to the persistent-variable file"
     )

@@ -571,18 +571,21 @@ def _code_key(code: str) -> str:
 
 
 def parse_preset(text: str) -> tuple[int, float]:
-    """``100=5`` or ``#2001=0.5`` from ``--set``; ``ValueError`` with a plain message."""
+    """``100=5`` or ``#2001=0.5`` from ``--set`` (the ``#`` may be left out; spaces around the
+    parts are allowed); ``ValueError`` with a plain message that shows the expected form."""
+    form = detail("write it as NUMBER=VALUE, e.g. --set 100=5 or --set '#100=5'",
+                  "应写成 变量号=数值，例如 --set 100=5 或 --set '#100=5'")  # fmt: skip
     name, sep, value = text.partition("=")
-    name = name.strip().lstrip("#")
-    if not sep or not name.isdigit():
-        raise ValueError(detail(f"--set {text!r}: write it as NUMBER=VALUE, e.g. --set 100=5",
-                                f"--set {text!r}：应写成 变量号=数值，例如 --set 100=5"))  # fmt: skip
+    name = name.strip()
+    name = name[1:].strip() if name.startswith("#") else name
+    if not sep or not name.isascii() or not name.isdigit():
+        raise ValueError(detail(f"--set {text!r}: {form}", f"--set {text!r}：{form.zh}"))
     try:
         v = float(value)
     except ValueError:
-        raise ValueError(detail(f"--set {text!r}: {value.strip()!r} is not a number",
-                                f"--set {text!r}：{value.strip()!r} 不是数值")) from None  # fmt: skip
+        raise ValueError(detail(f"--set {text!r}: {value.strip()!r} is not a number; {form}",
+                                f"--set {text!r}：{value.strip()!r} 不是数值；{form.zh}")) from None  # fmt: skip
     if v != v or v in (float("inf"), float("-inf")):
-        raise ValueError(detail(f"--set {text!r}: the value must be a finite number",
-                                f"--set {text!r}：数值必须是有限数"))  # fmt: skip
+        raise ValueError(detail(f"--set {text!r}: the value must be a finite number; {form}",
+                                f"--set {text!r}：数值必须是有限数；{form.zh}"))  # fmt: skip
     return int(name), v
