@@ -19,7 +19,11 @@ control characters in them are shown escaped, never sent raw.
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, TextIO
 
@@ -92,7 +96,35 @@ def add_run_parser(sub: Any) -> None:
 
 
 def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | None = None) -> int:
-    """Run the program; text goes to ``out`` with control characters escaped."""
+    """Run the program; text goes to ``out`` with control characters escaped. Ctrl-C, and a
+    ``SIGTERM`` or ``SIGHUP`` (a closed terminal), end the run through its clean-up: the lock
+    of the persistent variables is let go and its file deleted."""
+    with _ended_cleanly():
+        return _run(args, out, err)
+
+
+@contextmanager
+def _ended_cleanly() -> Iterator[None]:
+    """While the run lasts, ``SIGTERM`` and ``SIGHUP`` raise ``SystemExit(128 + signal)`` as
+    Ctrl-C raises ``KeyboardInterrupt``, so that ``finally`` and ``except`` blocks run; the
+    handlers before are put back after (only the main thread may set them)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    names = [getattr(signal, n) for n in ("SIGTERM", "SIGHUP") if hasattr(signal, n)]
+    before = {n: signal.signal(n, _exit_on_signal) for n in names}
+    try:
+        yield
+    finally:
+        for n, handler in before.items():
+            signal.signal(n, handler)
+
+
+def _exit_on_signal(number: int, frame: object) -> None:
+    raise SystemExit(128 + number)
+
+
+def _run(args: argparse.Namespace, out: TextIO | None, err: TextIO | None) -> int:
     out = out or sys.stdout
     shown_err = Printable(err or sys.stderr)
     path = Path(args.file)
