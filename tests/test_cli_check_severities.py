@@ -33,3 +33,43 @@ def test_a_modal_g_code_before_g65_stays_an_error_where_the_control_stops_with_a
     code, out, _ = cli("check", "--dialect", "gsk980tdi", str(folder))
     assert code == 1
     assert ":2:1: error: G90 before G65" in out and "alarm 127" in out
+
+
+# ---------------------------------------------------------------- endless loops
+
+
+def test_a_while_loop_whose_condition_nothing_in_it_changes_is_an_error(tmp_path):
+    # #1 is 1 and the body writes only #2: WHILE [#1 LT 10] is true at every pass
+    folder = _folder(tmp_path, O0001="O0001\n#1=1\nWHILE[#1 LT 10]DO1\n#2=5\nG00 X#2\nEND1\nM30\n")
+    code, out, _ = cli("check", str(folder))
+    assert code == 1
+    assert ":6:1: error: an endless loop: line 6 comes back" in out and "[endless-loop]" in out
+    code, out, _ = cli("check", "--locale", "zh-CN", str(folder))
+    assert code == 1 and "死循环：第 6 行" in out
+
+
+def test_an_if_goto_back_on_an_unchanged_local_is_an_error_too(tmp_path):
+    folder = _folder(tmp_path, O0001="O0001\n#1=0\nN5 IF[#1 LT 3] GOTO5\nM30\n")
+    code, out, _ = cli("check", str(folder))
+    assert code == 1 and ":3:1: error: an endless loop" in out
+
+
+def test_a_loop_on_a_common_variable_is_a_warning_another_path_or_the_operator_could_end(tmp_path):
+    folder = _folder(tmp_path, O0001="O0001\n#100=1\nWHILE[#100 LT 10]DO1\n#2=5\nEND1\nM30\n")
+    code, out, _ = cli("check", str(folder))
+    assert code == 0
+    assert ":5:1: warning: an endless loop" in out and "another path of the control or the operator" in out
+
+
+def test_endless_loops_a_shop_writes_on_purpose_or_that_wait_for_the_machine_are_no_error(tmp_path):
+    programs = {
+        "O0001": "O0001\nN1 G00 X0\nG00 X10.\nGOTO1\nM30\n",  # a warm-up: unconditional GOTO back
+        "O0002": "O0002\nDO1\nG00 X0\nEND1\nM30\n",  # DO without WHILE
+        "O0003": "O0003\nWHILE[#1004 EQ 0]DO1\nEND1\nM30\n",  # waits for an input signal
+        "O0004": "O0004\nWHILE[#1 LT 3]DO1\nM98 P5\nEND1\nM30\n",  # calls a program
+        "O0005": "O0005\nM99\n",
+    }
+    code, out, err = cli("check", str(_folder(tmp_path, **programs)))
+    assert code == 0, out + err
+    assert "error" not in out and "warning" not in out and "[endless-loop]" not in out
+    assert out.count("information: an endless loop") == 4

@@ -178,6 +178,12 @@ CODES: dict[str, Code] = _codes(
          RUN),
     Code("vacant-argument", INFORMATION,
          detail("A macro reads an argument that a caller never passes.", "宏程序读取了调用者没有传递的自变量。"), RUN),
+    Code("endless-loop", ERROR,
+         detail("A WHILE loop or IF..GOTO back whose condition nothing in it changes: the control never leaves it "
+                "(a warning where the loop reads common variables another path or the operator could change).",
+                "WHILE 循环或向回转移的 IF..GOTO，其条件在循环内无任何改变：控制器永远不会离开"
+                "（循环读取其他通道或操作者可能修改的公共变量时为警告）。"),
+         RUN, milder=WARNING),
     Code("run-limit", INFORMATION,
          detail("The analysis run stopped at its block budget (a possible endless loop), or in an endless "
                 "loop that comes back with nothing changed.",

@@ -27,7 +27,9 @@ loop for ever is analysed in bounded time too), a wall-clock limit (``max_second
 rewind, across cancelled and resumed advances) and a cap on what the machine records
 (``max_records`` notes: messages, DPRNT output, call remarks). A run that reaches one stops
 with a ``run-limit`` diagnostic saying which. A run that comes back to the same place with an
-equal state can never end, and stops there sooner, with a ``run-limit`` diagnostic that says so:
+equal state can never end, and stops there sooner, with a diagnostic that says so (an
+``endless-loop`` error where the control surely never leaves it, ``endless_loops.py``, else
+``run-limit``):
 at a jump back or a change of frame the machine asks ``came_back``, which counts the passes of
 each; at the ``LOOK_FROM``-th pass and every power of two after it, the run pauses there and
 keeps a ``Snapshot``, and compares it with the state at the next pass (``look``,
@@ -59,6 +61,7 @@ from ...machine.status import FINISHED, RunStatus
 from ...machine.tracking import same_state
 from ..codes import MACRO_ALARM, alarm_code
 from ..diagnostics import Diagnostic, Related, diagnostic
+from .endless_loops import SHARED, loop_certainty
 from .run_convergence import Earlier, keep_earlier, try_converge
 
 CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again before converging
@@ -160,7 +163,7 @@ class EntryRun(RunObserver):
         self.back_passes: dict[int, int] = {}
         self.watches: dict[int, tuple[int, Snapshot]] = {}
         self.looking: tuple[int, int, int, int] | None = None  # (key, pass, line, to)
-        self.endless_at: tuple[str, int] | None = None
+        self.endless_at: tuple[str, int, int] | None = None  # (file, jump line or -1, line jumped to)
         self.restart()
 
     # ---------------------------------------------------------------- running
@@ -251,7 +254,7 @@ class EntryRun(RunObserver):
             self.watches[key] = (k, snap)
         elif same_state(kept[1], snap, clock=self.may_read_clock(self.last_run)):
             self.stopped_by = "endless"
-            self.endless_at = (m.frames[-1].file, line if line >= 0 else to)
+            self.endless_at = (m.frames[-1].file, line, to)
             m.status = RunStatus.LIMIT
         return m.status
 
@@ -526,6 +529,29 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
     return _diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale)
 
 
+def _endless_diagnostic(
+    run: EntryRun, at: tuple[str, int, int], line_text: Callable[[str, int], str], locale: str
+) -> Diagnostic:
+    """The endless loop the run found at ``at`` (file, jump line or -1, line jumped to): an
+    ``endless-loop`` error, or warning, where the control surely never leaves it
+    (``endless_loops.loop_certainty``), else the run's ``run-limit`` note."""
+    m = run.machine
+    path, jump, to = at
+    line = jump if jump >= 0 else to
+    en = (
+        f"an endless loop: line {line + 1} comes back with every variable and position unchanged; "
+        "the control would never leave it"
+    )
+    zh = f"死循环：第 {line + 1} 行再次执行时所有变量和位置都没有变化，控制器永远不会离开这里"
+    certainty = loop_certainty(lambda k: line_text(path, k), jump, to, m.kinds)
+    if certainty == SHARED:
+        en += " unless another path of the control or the operator changes the common variables it reads"
+        zh += "，除非其他通道或操作者修改了它读取的公共变量"
+    code = "run-limit" if certainty is None else "endless-loop"
+    return _diagnostic(path, line, code, en, zh, m.chain(), None, False, line_text, locale,
+                       milder=certainty == SHARED)  # fmt: skip
+
+
 def run_diagnostics(
     run: EntryRun,
     line_text: Callable[[str, int], str],
@@ -545,13 +571,7 @@ def run_diagnostics(
         if code == MACRO_ALARM or (a.file, a.line) not in invalid:
             out.append(_alarm_diagnostic(run, code, line_text, locale))
     elif m.status == RunStatus.LIMIT and m.frames and run.endless_at is not None:
-        path, line = run.endless_at
-        en = (
-            f"an endless loop: line {line + 1} comes back with every variable and position unchanged; "
-            "the control would never leave it"
-        )
-        zh = f"死循环：第 {line + 1} 行再次执行时所有变量和位置都没有变化，控制器永远不会离开这里"
-        out.append(_diagnostic(path, line, "run-limit", en, zh, m.chain(), None, False, line_text, locale))
+        out.append(_endless_diagnostic(run, run.endless_at, line_text, locale))
     elif m.status == RunStatus.LIMIT and m.frames:
         f = m.frames[-1]
         if run.stopped_by == "time":
