@@ -6,6 +6,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from cli_capture import cli
 
 
@@ -73,3 +75,46 @@ def test_endless_loops_a_shop_writes_on_purpose_or_that_wait_for_the_machine_are
     assert code == 0, out + err
     assert "error" not in out and "warning" not in out and "[endless-loop]" not in out
     assert out.count("information: an endless loop") == 4
+
+
+# ---------------------------------------------------------------- macro alarms
+
+
+def test_a_macro_alarm_a_main_program_surely_reaches_is_an_error(tmp_path):
+    # #1 = 2 is set by the program; 2 GT 1 on every run, so the control stops there every cycle
+    folder = _folder(tmp_path, O1000="O1000\n#1=2\nIF[#1 GT 1] THEN #3000=1(TOO BIG)\nM30\n")
+    code, out, _ = cli("check", str(folder))
+    assert code == 1
+    assert out.endswith(":3:1: error: the run reaches macro alarm 3001: TOO BIG [macro-alarm]\n")
+
+
+def test_a_macro_alarm_reached_through_a_macro_from_a_main_program_is_an_error(tmp_path):
+    folder = _folder(
+        tmp_path,
+        O1005="O1005\n#100=3\nG65 P9000 A#100\nM30\n",  # #100 set by the program before it is passed
+        O9000="O9000\nIF[#1 GT 1] THEN #3000=2(A TOO BIG)\nM99\n",
+    )
+    code, out, _ = cli("check", str(folder))
+    assert code == 1 and ": error: the run reaches macro alarm 3002: A TOO BIG" in out
+
+
+@pytest.mark.parametrize(
+    "program",
+    [
+        "O1001\nIF[#500 EQ #0] THEN #3000=1(SET 500)\nM30\n",  # a kept common: the machine's, not the folder's
+        "O1001\nIF[#2001 LT 0.1] THEN #3000=1(OFFSET)\nM30\n",  # a tool offset
+        "O1001\nIF[#1004 EQ 0] THEN #3000=1(NO AIR)\nM30\n",  # an input signal
+        "O1001\n#1=#5021\nIF[#1 EQ 0] THEN #3000=1(HOME)\nM30\n",  # a machine position, through a local
+        "O1001\nIF[#100 EQ #0] THEN #3000=1(SET 100)\nM30\n",  # a common the program never set
+    ],
+)
+def test_a_macro_alarm_on_a_path_that_depends_on_the_machine_stays_a_warning(tmp_path, program):
+    code, out, _ = cli("check", str(_folder(tmp_path, O1001=program)))
+    assert code == 0
+    assert ": warning: the run reaches macro alarm 3001" in out
+
+
+def test_a_macro_checked_alone_without_its_caller_keeps_its_alarm_a_warning(tmp_path):
+    folder = _folder(tmp_path, O9100="O9100\nIF[#1 EQ #0] THEN #3000=1(A MISSING)\nM99\n")
+    code, out, _ = cli("check", str(folder))
+    assert code == 0 and ": warning: the run reaches macro alarm 3001: A MISSING" in out

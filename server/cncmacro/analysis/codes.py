@@ -172,10 +172,13 @@ CODES: dict[str, Code] = _codes(
          detail("A SQRT, ASIN, ACOS or LN argument out of range, found by running (119).",
                 "运行时发现 SQRT、ASIN、ACOS 或 LN 的自变量超出范围（119）。"),
          RUN, (OVERFLOW, ARGUMENT_RANGE)),
-    Code(MACRO_ALARM, WARNING,
-         detail("A run of the program reaches #3000= or G65 H99 (a macro alarm).",
-                "程序运行到 #3000= 或 G65 H99（宏程序报警）。"),
-         RUN),
+    Code(MACRO_ALARM, ERROR,
+         detail("A run of the program reaches #3000= or G65 H99 (a macro alarm): an error where every run of a main "
+                "program stops there, a warning where the path depends on values the machine knows or the macro is "
+                "checked without its caller.",
+                "程序运行到 #3000= 或 G65 H99（宏程序报警）：主程序每次运行都会在此停止时为错误；"
+                "路径取决于机床上的数值或宏程序未经调用者单独检查时为警告。"),
+         RUN, milder=WARNING),
     Code("vacant-argument", INFORMATION,
          detail("A macro reads an argument that a caller never passes.", "宏程序读取了调用者没有传递的自变量。"), RUN),
     Code("endless-loop", ERROR,

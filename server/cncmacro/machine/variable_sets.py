@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from ..bilingual import detail
+from ..bilingual import Detail, detail
 from .alarms import MacroAlarm
 
 if TYPE_CHECKING:
@@ -55,9 +55,9 @@ class VariableSets:
                 elif row.source in ("store", "date", "time", "timer"):
                     self.S[n] = v
                 else:
-                    en, zh = row.en.split(";")[0].split(" (")[0], row.zh.split("；")[0].split("（")[0]
-                    raise ValueError(detail(f"#{n} ({en}) is computed by the machine and cannot be preset",
-                                            f"#{n}（{zh}）由机床计算，不能预设"))  # fmt: skip
+                    name = Detail(row.en.split(";")[0].split(" (")[0], row.zh.split("；")[0].split("（")[0])
+                    raise ValueError(detail(f"#{n} ({name}) is computed by the machine and cannot be preset",
+                                            f"#{n}（{name.zh}）由机床计算，不能预设"))  # fmt: skip
                 self.preset_system.add(n)
             else:
                 raise ValueError(detail(

@@ -19,8 +19,7 @@ ends in the simulation; whether it never ends on the machine depends on what dec
   see change; a loop that calls a program may be fed by what that program reads from the
   machine (a probing cycle).
 
-The lines are read as text, comments left out: a ``#n`` that is not the target of an
-assignment (``#n=`` at the start of a statement) is a read.
+The lines are read as text (``line_reads.py``).
 """
 
 from __future__ import annotations
@@ -29,13 +28,11 @@ import re
 from collections.abc import Callable
 
 from ...machine.expressions import VariableKinds
+from .line_reads import INDIRECT, code_of, reads
 
 CERTAIN = "certain"
 SHARED = "shared"
 
-_COMMENT = re.compile(r"\([^)]*\)?")
-_TARGET = re.compile(r"^\s*(?:/\d?\s*)?(?:N\d+\s*)?#\s*(?:\d+|\[.*?\])\s*=(?!=)")
-_REFERENCE = re.compile(r"#\s*(\d+|\[|_)")
 _CALL = re.compile(r"(?<![A-Z_])(?:G\s*0*6[56]|M\s*0*9[78])(?!\d)", re.I)
 _WHILE = re.compile(r"(?<![A-Z])WHILE\s*\[", re.I)
 _END = re.compile(r"(?<![A-Z])END\s*\d", re.I)
@@ -49,23 +46,19 @@ def loop_certainty(line_text: Callable[[int], str], line: int, to: int, kinds: V
     run came back through a call or a return) is None."""
     if line < 0 or to > line:
         return None
-    jump = _COMMENT.sub("", line_text(line))
-    head = _COMMENT.sub("", line_text(to))
+    jump = code_of(line_text(line))
+    head = code_of(line_text(to))
     if not (_IF_GOTO.search(jump) or (_END.search(jump) and _WHILE.search(head))):
         return None
     shared = False
     for k in range(to, line + 1):
-        text = _COMMENT.sub("", line_text(k))
-        if _CALL.search(text):
+        code = code_of(line_text(k))
+        if _CALL.search(code):
             return None
-        target = _TARGET.match(text)
-        for ref in _REFERENCE.finditer(text, target.end() if target else 0):
-            number = ref.group(1)
-            if not number.isdigit():
-                return None  # #[...] or a #_NAME: the machine's, or anything
-            kind = kinds.kind(int(number))
+        for number in reads(code):
+            kind = "indirect" if number == INDIRECT else kinds.kind(number)
             if kind in _SHARED_KINDS:
                 shared = True
-            elif kind != "local" and kind != "vacant":
-                return None
+            elif kind not in ("local", "vacant"):
+                return None  # a system variable, #[...] or a #_NAME: the machine's, or anything
     return SHARED if shared else CERTAIN

@@ -63,6 +63,7 @@ from ..codes import MACRO_ALARM, alarm_code
 from ..diagnostics import Diagnostic, Related, diagnostic
 from .endless_loops import SHARED, loop_certainty
 from .run_convergence import Earlier, keep_earlier, try_converge
+from .sure_alarms import surely_reached
 
 CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again before converging
 MAX_SECONDS = 30.0  # wall-clock limit of one run
@@ -526,7 +527,14 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
             kind = "WHILE" if "WHILE" in line_text(a.file, do_line).upper() else "DO"
             en += f", in iteration {k} of the {kind} loop at line {do_line + 1}"
             zh += f"，第 {do_line + 1} 行 {kind} 循环的第 {k} 次迭代"
-    return _diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale)
+    milder = False
+    if code == MACRO_ALARM:  # an error where every run of the main program stops there (sure_alarms.py)
+        entry = run.entry
+        entry_lines = entry.file.lines[entry.unit.start : entry.unit.end]
+        path = [(f, line) for _, f, line in run.state.order]
+        path.append((a.file, a.line))
+        milder = not surely_reached(entry_lines, path, line_text, m.kinds)
+    return _diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale, milder=milder)
 
 
 def _endless_diagnostic(
