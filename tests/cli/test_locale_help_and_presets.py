@@ -92,7 +92,7 @@ def test_a_bad_set_says_the_form_it_expects(tmp_path, preset):
     assert code == 2
     assert "write it as NUMBER=VALUE, e.g. --set 100=5 or --set '#100=5'" in err
     _, _, err = cli("run", "--no-save", "--locale", "zh-CN", "--set", preset, _program(tmp_path))
-    assert "应写成 变量号=数值" in err
+    assert "应写成“变量号=数值”" in err
 
 
 def test_a_variable_that_cannot_be_preset_is_named_plainly_in_both_languages(tmp_path):

@@ -49,7 +49,7 @@ from dataclasses import dataclass, field
 from operator import itemgetter
 from pathlib import Path
 
-from ...bilingual import in_language, pick
+from ...bilingual import Detail, in_language, pick
 from ...dialects import Dialect
 from ...dialects.alarms import alarm_text
 from ...library.machine_file import MachineSettings
@@ -518,7 +518,10 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
         zh = f"运行到宏程序报警 {a.number}：{in_language(a.message, True)}"
     else:
         en = f"{a.message} (alarm {a.number})"
-        zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{in_language(a.message, True)}"
+        if isinstance(a.message, Detail):  # its Chinese says what the alarm is: no title before it
+            zh = f"{a.message.zh}（报警 {a.number}）"
+        else:  # a text without Chinese: the alarm's title in Chinese says what it is
+            zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{a.message}"
     in_loop = bool(m.frames and m.frames[-1].loops)
     if in_loop:
         do_line = m.frames[-1].loops[-1]
@@ -633,9 +636,9 @@ def run_diagnostics(
         caller = read.chain[-2] if len(read.chain) >= 2 else None
         how = read.chain[-1].how
         who = f"{caller.program} line {caller.line + 1} ({how})" if caller else "its caller"
-        who_zh = f"{caller.program} 第 {caller.line + 1} 行（{how}）" if caller else "调用者"
+        who_zh = f" {caller.program} 第 {caller.line + 1} 行（{how}）" if caller else "调用者"
         en = f"#{read.number} ({letter}) is read, but {who} does not pass {letter}"
-        zh = f"读取了 #{read.number}（{letter}），但 {who_zh} 没有传递 {letter}"
+        zh = f"读取了 #{read.number}（{letter}），但{who_zh}没有传递 {letter}"
         out.append(_diagnostic(read.file, read.line, "vacant-argument", en, zh, read.chain, None, False, line_text,
                                locale))  # fmt: skip
     return out
@@ -676,9 +679,9 @@ def _diagnostic(
     callers = chain[:-1]
     hows = [c.how for c in chain[1:]]  # how each caller called the next level
     if callers:
-        path = " → ".join(f"{c.program}:{c.line + 1} ({how})" for c, how in zip(callers, hows, strict=True))
-        en += f"; reached from {path}"
-        zh += f"；调用路径 {path}"
+        steps = list(zip(callers, hows, strict=True))
+        en += "; reached from " + " → ".join(f"{c.program}:{c.line + 1} ({how})" for c, how in steps)
+        zh += "；调用路径 " + "→".join(f"{c.program}:{c.line + 1}（{how}）" for c, how in steps)
     if blocks is not None and (in_loop or callers):
         en += f", at block {blocks} of the run" + (" (inside a loop)" if in_loop else "")
         zh += f"，运行的第 {blocks} 个程序段" + ("（循环中）" if in_loop else "")
