@@ -221,14 +221,15 @@ def test_haas_corpus_has_twenty_programs_with_5_digit_numbers_on_tape() -> None:
 def test_a_missing_hole_count_stops_with_the_macros_alarm() -> None:
     status, r = run_json(HAAS / "bad_hole_count.nc")
     assert status == 1 and r["status"] == "alarm"
-    assert r["alarm"]["number"] == 3001 and r["alarm"]["message"] == "HOLE COUNT H MISSING"
+    # no Haas source numbers a #3000=1 alarm: none is shown (docs/semantics.md §6), the text is
+    assert r["alarm"]["number"] is None and r["alarm"]["message"] == "HOLE COUNT H MISSING"
     assert Path(r["alarm"]["file"]).name == "O08100.nc" and r["alarm"]["line"] == 5
     assert moves(r, "G81") == []  # stopped before a hole
 
 
 def test_the_fixture_plate_alarms_when_the_order_is_complete() -> None:
     status, r = run_json(HAAS / "fixture_plate_g110.nc", "3901=1200")
-    assert status == 1 and r["alarm"]["number"] == 3010 and r["alarm"]["line"] == 6
+    assert status == 1 and r["alarm"]["message"] == "ORDER COMPLETE - SEE THE FOREMAN" and r["alarm"]["line"] == 6
 
 
 def test_the_sister_tool_takes_over_when_t5_reaches_its_life_limit() -> None:
@@ -250,12 +251,12 @@ def test_a_high_spindle_load_backs_the_feed_off_each_pass() -> None:
 
 def test_a_z_axis_overload_stops_the_roughing() -> None:
     status, r = run_json(HAAS / "spindle_load_roughing.nc", "1066=200")
-    assert status == 1 and r["alarm"]["number"] == 3041
+    assert status == 1 and r["alarm"]["message"] == "Z AXIS OVERLOAD - TOOL PULLED OUT?"
 
 
 def test_a_tool_length_off_the_setup_sheet_stops_the_check() -> None:
     status, r = run_json(HAAS / "tool_length_check.nc", "2003=119.5")
-    assert status == 1 and r["alarm"]["number"] == 3053
+    assert status == 1 and r["alarm"]["number"] is None  # no number shown on Haas (semantics §6)
     assert r["alarm"]["message"] == "TOOL LENGTH DIFFERS FROM THE SETUP SHEET"
     assert r["output"][-1] == "T2 L131.800 W0.000 OK"  # T1 and T2 passed before T3
 

@@ -97,3 +97,16 @@ def test_4_control_flow_an_edit_before_an_endless_loop_finds_it_again_as_from_sc
     assert again == found(scratch) and again[0][2].startswith(ENDLESS)
     [run] = ws.runs.values()
     assert run.rerun_blocks < 5000  # the loops were not run again to their end
+
+
+def test_5_calls_a_haas_main_programs_loop_back_by_m99_p_is_a_production_loop_not_reported(tmp_path):
+    """Haas branches to N10 at a main program's M99 P10 for ever: a warm-up that changes nothing,
+    or a part loop that counts its parts, is the shop's production loop, reported by nothing."""
+    warm_up = "O01000\nG00 X0 Y0\nN10 G01 X10. F100.\nG01 X0\nN50 M99 P10\nM30\n"
+    counted = "O01000\n#100=0\nN10 #100=#100+1\nG00 X#100\nN50 M99 P10\nM30\n"
+    for text in (warm_up, counted):
+        diags = analyse(tmp_path, {"O01000.nc": text}, "haas", max_blocks=20_000)
+        assert [(d.code, d.message) for d in diags if d.severity != "hint"] == []
+    # the same warm-up closed by GOTO 10 is still the endless loop it is
+    goto = warm_up.replace("M99 P10", "GOTO 10")
+    assert endless_at(tmp_path, {"O01000.nc": goto}, dialect="haas") == ("O01000.nc", 5)

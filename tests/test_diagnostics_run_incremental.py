@@ -48,7 +48,9 @@ def snapshot(ws: WorkspaceAnalysis, path: str) -> tuple[object, object]:
          tuple((Path(r.file).name, r.line) for r in d.related))
         for ds in result.diagnostics.values() for d in ds
     )  # fmt: skip
-    values = {(Path(f).name, line): v for f, lines in result.values.items() for line, v in lines.items()}
+    # an unknown value (NaN: a kept common, docs/semantics.md §2) equals no other, so it is compared by name
+    values = {(Path(f).name, line): [(n, "unknown" if x is not None and x != x else x) for n, x in v]
+              for f, lines in result.values.items() for line, v in lines.items()}  # fmt: skip
     # the cycle time (analysis/runs/cycle_lenses.py): elapsed per line, totals per program and tool change,
     # rounded where a converged run's sums may differ from a fresh run's in the last bits
     timing = {

@@ -14,6 +14,7 @@ import string
 import pytest
 
 from cncmacro.dialects import DIALECTS, fanuc_data, functions_data, get_dialect, gsk980tdi_data
+from cncmacro.dialects.dialect import last_address_key
 from cncmacro.dialects.tables import (
     FUNCTION,
     FUNCTION_KINDS,
@@ -95,6 +96,9 @@ def test_every_row_is_well_formed(dialect):
         assert r.source in SOURCES, where
         if r.source == "modal":
             assert r.param in MODAL_GROUPS, where
+        elif r.source == "code":  # a code the planner keeps, or a letter's last value (Haas #4124 X)
+            kept = {last_address_key(letter) for letter in get_dialect(dialect).last_address_letters}
+            assert r.param in PARAMS["code"] | kept, where
         elif r.source in PARAMS:
             assert r.param in PARAMS[r.source], where
         elif r.source == "alias":

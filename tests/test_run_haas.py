@@ -10,7 +10,10 @@ from __future__ import annotations
 
 import pytest
 
-from running import alarm, final, lines, machine, run
+from cncmacro.library.machine_file import MachineSettings
+from cncmacro.library.programs import ProgramLibrary
+from cncmacro.machine import Machine
+from running import FIXED_CLOCK, alarm, final, lines, machine, run
 
 HAAS = "haas"
 FANUC = "fanuc-0i"
@@ -122,6 +125,121 @@ def test_haas_probing_macro_o9832_is_on_the_control() -> None:
     assert alarm(lines("G65 P9832", "#1=1", "M30"), FANUC) == (76, 1)
 
 
+# §2 address variables: #4101-#4126 hold each letter's last value on Haas, only codes on FANUC
+ADDRESSES = lines(
+    "#6=#4124",  # no X written yet: vacant
+    "G00 X1.3 Y2.",
+    "#7=#4124",  # X1.3
+    "G01 Z-1. F10.",
+    "G02 X3. R1.",  # from X1.3 Y2. to X3. Y2.: a chord of 1.7 under a radius of 1
+    "#1=#4124",  # X: the G02's 3.
+    "#2=#4125",  # Y: still the G00's 2.
+    "#3=#4126",  # Z: -1.
+    "#4=#4118",  # R: 1.
+    "#5=#4109",  # F: 10.
+    "M30",
+)
+
+
+def test_haas_4101_to_4126_hold_the_last_value_of_every_address_axes_and_r_too() -> None:
+    got = final(ADDRESSES, HAAS)
+    assert (got.get(6), got[7]) == (None, 1.3)
+    assert (got[1], got[2], got[3], got[4], got[5]) == (3.0, 2.0, -1.0, 1.0, 10.0)
+
+
+@pytest.mark.parametrize("dialect", [FANUC, "fanuc-30i"])
+def test_fanuc_4101_to_4130_hold_only_codes_4124_is_alarm_115(dialect: str) -> None:
+    # FANUC's modal information table has B D F H M N O S T (and P) at #4101-#4130, no axis
+    assert alarm(ADDRESSES, dialect) == (115, 1)
+    assert final(lines("G01 X1. F10.", "#5=#4109", "M30"), dialect)[5] == 10.0
+
+
+# §5 M99 Pn in a main program: a branch to Nn on Haas ("N50 M99 P10 branches to N10")
+COUNTED_LOOP = lines(
+    "O01000",
+    "#100=0",
+    "N10 #100=#100+1",
+    "IF [#100 GE 3] GOTO 60",
+    "N50 M99 P10",
+    "N60 #101=1",
+    "M30",
+)
+
+
+def one_pass_run(text: str, dialect: str) -> Machine:
+    """``text`` run as ``cncmacro run`` and ``cncmacro check`` run a program: one pass, a main
+    program's M99 ending it."""
+    m = Machine(dialect, MachineSettings(**FIXED_CLOCK), ProgramLibrary(), m99_ends_main=True)
+    m.start_file("/nonexistent-test-folder/O01000.nc", text)
+    m.run()
+    return m
+
+
+def test_haas_m99_p_in_the_main_program_branches_to_n_in_every_run() -> None:
+    # passes at N10: #100 = 1, 2, 3; at 3 the IF leaves for N60, which sets #101 and M30 ends
+    m = one_pass_run(COUNTED_LOOP, HAAS)
+    assert m.status == "completed" and not m.ended_by_main_m99 and m.ended_with == 30.0
+    assert (m.variables()[100], m.variables()[101]) == (3.0, 1.0)
+
+
+def test_fanuc_0i_one_pass_run_stops_at_the_main_programs_m99_p() -> None:
+    # run alone, a FANUC program's M99 P10 is most often a subprogram's return to its caller's N10
+    m = one_pass_run(COUNTED_LOOP, FANUC)
+    assert m.status == "completed" and m.ended_by_main_m99
+    assert (m.variables()[100], m.variables().get(101)) == (1.0, None)
+
+
+# §5 DPRNT on Haas ([H5] p. 125): the manual's own example, and a format it calls illegal
+
+
+def test_haas_dprnt_prints_the_whole_part_even_when_no_place_is_reserved_for_it() -> None:
+    # #1 = 1.5436: [44] 1.5436; [03] keeps one whole place: 1 and .5436 rounded to 3 places,
+    # 1.544; [40] the whole part alone: 1; each * prints a space
+    m = run(lines("#1=1.5436", "DPRNT[X#1[44]*Z#1[03]*T#1[40]]", "M30"), HAAS)
+    assert m.status == "completed" and m.output == ["X1.5436 Z1.544 T1"]
+
+
+@pytest.mark.parametrize("fmt", ["54", "45", "36", "00"])
+def test_haas_dprnt_format_of_more_than_8_places_or_none_is_alarm_114(fmt: str) -> None:
+    # 5 + 4 = 9 places, 4 + 5, 3 + 6 = 9, 0 + 0 = 0: the manual's illegal formats
+    assert alarm(lines("#1=1.5436", f"DPRNT[X#1[{fmt}]]", "M30"), HAAS) == (114, 2)
+
+
+# §6 alarm numbers: Haas documents none of FANUC's, so its alarms are shown without one
+
+
+@pytest.mark.parametrize(
+    ("program", "fanuc_number"),
+    [
+        (lines("GOTO 99", "M30"), 128),  # no N99: FANUC 128
+        (lines("#3000=1(HOLE COUNT MISSING)", "M30"), 3001),  # FANUC 3000 + 1
+        (lines("#1=0", "#2=1/#1", "M30"), 112),  # division by zero: FANUC 112
+    ],
+)
+def test_haas_alarms_are_shown_without_fanucs_numbers(program: str, fanuc_number: int) -> None:
+    haas, fanuc = run(program, HAAS), run(program, FANUC)
+    assert haas.alarm is not None and fanuc.alarm is not None
+    assert haas.alarm.shown is None and not any(ch.isdigit() for ch in haas.alarm.words())
+    assert haas.alarm.words() == "alarm" and haas.alarm.words("zh-CN") == "报警"
+    assert fanuc.alarm.shown == fanuc_number and fanuc.alarm.words() == f"alarm {fanuc_number}"
+
+
+# the body counts its passes in #1 and files each pass's #1 at #(100 + #1)
+G65_L3 = lines("G65 P100 L3 A1.", "M30", "O100", "#1=#1+1", "#[100+#1]=#1", "M99")
+
+
+def test_haas_g65_l_sets_the_arguments_on_the_first_pass_only_locals_carry_over() -> None:
+    # pass 1: #1 = 1 + 1 = 2 -> #102; pass 2 keeps #1: 2 + 1 = 3 -> #103; pass 3: 4 -> #104
+    got = final(G65_L3, HAAS)
+    assert (got.get(102), got.get(103), got.get(104)) == (2.0, 3.0, 4.0)
+
+
+def test_fanuc_0i_g65_l_fills_each_pass_from_the_arguments_again() -> None:
+    # every pass starts from A1.: #1 = 1 + 1 = 2 -> #102 three times; #103 and #104 stay vacant
+    got = final(G65_L3, FANUC)
+    assert (got.get(102), got.get(103), got.get(104)) == (2.0, None, None)
+
+
 # ---------------------------------------------------------------------------------------------
 # §8 words: G codes outside the table are warnings, Haas codes are in it; §1 whole words only
 
@@ -172,6 +290,13 @@ def test_haas_g10_l10_and_l11_write_2001_and_2201() -> None:
     got = final(lines("G90 G10 L10 P3 R120.", "G10 L11 P3 R-0.2", "G10 L12 P3 R5.", "G10 L13 P3 R0.1",
                       "#1=#2003", "#2=#2203", "#3=#2403", "#4=#2603", "M30"), HAAS)  # fmt: skip
     assert [got[k] for k in (1, 2, 3, 4)] == [120.0, -0.2, 5.0, 0.1]
+
+
+def test_haas_g10_l1_is_l11_the_length_wear_read_back_at_2201_plus_p() -> None:
+    # G10 L1 P2 R0.2 writes H2's wear #2202 = 0.2; under G91 L1 P2 R0.05 adds: 0.2 + 0.05 = 0.25;
+    # the geometry #2002 stays 0
+    got = final(lines("G90 G10 L1 P2 R0.2", "#1=#2202", "G91 G10 L1 P2 R0.05", "#2=#2202", "#3=#2002", "M30"), HAAS)
+    assert (got[1], got[2], got[3]) == (0.2, 0.25, 0.0)
 
 
 def test_fanuc_0i_g10_l10_writes_11001_not_2001() -> None:

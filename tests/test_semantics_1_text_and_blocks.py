@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import pytest
 
+from analysis_helpers import analyse_files
 from cncmacro.syntax import parse_block
 from cncmacro.syntax.nodes import Assign, Goto, If, While
 from conftest import block, error
@@ -111,6 +112,24 @@ def test_program_header_with_title_and_statements():
 def test_program_number_must_be_whole():
     b = parse_block("O12.5")
     assert b.program is None and b.problems
+
+
+@pytest.mark.parametrize("dialect", ["fanuc-0i", "fanuc-30i", "haas", "gsk980tdi"])
+def test_a_program_number_written_with_a_decimal_point_is_an_error_as_o12_34_is(tmp_path, dialect):
+    # O takes no decimal point (FANUC alarm 007): "O1234." is refused as "O12.34" is, with the
+    # same finding on the O line (line 0), and no other error or warning in these programs
+    found = {}
+    for header in ("O1234.", "O12.34"):
+        diags = analyse_files(tmp_path, {"MAIN.nc": f"{header}\n#1=1\nM30\n"}, dialect)
+        found[header] = [(d.line, d.severity, d.code, d.message) for d in diags if d.severity in ("error", "warning")]
+    assert (
+        found["O1234."]
+        == found["O12.34"]
+        == [
+            (0, "error", "syntax", "a program number must be a whole number written without a decimal point"),
+        ]
+    )
+    assert parse_block("O1234").program == 1234 and not parse_block("O1234").problems
 
 
 def test_lower_case_is_read_as_upper_case():

@@ -202,7 +202,8 @@ CASES = {
         "用 AND/OR 连接条件时，每个条件都要加方括号：[[#1 EQ 0] OR [#2 LT 0]]",
     ),
     "sequence_number_with_decimals": (
-        "N1.5 G01 X1", "a sequence number must be a whole number", "顺序号必须是整数",
+        "N1.5 G01 X1", "a sequence number must be a whole number written without a decimal point",
+        "顺序号必须是不带小数点的整数",
     ),
     "second_block_after_the_end_of_block_mark": (
         "X1 ; Y2", "text after the end-of-block ';': one line holds one block, so this text is not read",

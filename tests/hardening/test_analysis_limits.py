@@ -91,7 +91,7 @@ def test_a_run_stopped_as_a_macro_runs_off_its_end_is_reported_on_its_last_line(
 def _endless_programs(count: int, then: str = "") -> str:
     out = ["%"]
     for k in range(count):
-        out += [f"O{1000 + k}", "WHILE[#1000 EQ 0]DO1", "#1=#1+1", "END1", "M99"]
+        out += [f"O{1000 + k}", "WHILE[#1000 EQ 0]DO1", "#1=#1+1", "END1", "M30"]  # main programs: #1 starts vacant
     out += [then, "%"] if then else ["%"]
     return "\n".join(out) + "\n"
 

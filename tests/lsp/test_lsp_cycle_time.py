@@ -70,3 +70,14 @@ async def test_lenses_and_hover_in_chinese_on_a_lathe(gsk_zh: LanguageClient) ->
         (1, "T0101 ≈ 31 秒 · 切削 50 mm · 快移 0 mm"),  # its part begins with its own change
     ]
     assert "加工时间：本程序段约在 1.0 秒时开始（首次执行时）" in await hover_text(gsk_zh, uri, 3, 0)
+
+
+async def test_a_grooving_cycles_pecks_are_in_the_lens(gsk_en: LanguageClient) -> None:
+    # gsk980tdi: rapid Z 8000 mm/min; G99 F0.1 at S500 is 50 mm/min. From Z0, G00 Z2: 2 mm rapid.
+    # G74 R0.5 / G74 Z-11 Q3000: feeds Z2 -> -1 (3 mm), then from each retract of 0.5 by 3.5 mm
+    # to -4, -7, -10, and the last 1.5 mm to -11: 15 mm cut, 18 s; four retracts of 0.5 and the
+    # 13 mm back to Z2 at rapid: 15 mm, 0.1125 s. The program: 18.13 s, 15 mm cut, 17 mm rapid.
+    text = "O0008\nG99 G97 S500 M03\nG00 X0 Z2.\nG74 R0.5\nG74 Z-11. Q3000 F0.1\nM30\n"
+    uri = open_file(gsk_en, GSK / "O0008.CNC", text)
+    await diagnostics_for(gsk_en, uri, 1)
+    assert await lenses(gsk_en, uri) == [(0, "≈ 18 s · 15 mm cut · 17 mm rapid")]

@@ -34,6 +34,19 @@ async def test_an_assignment_shows_the_value_it_left(fanuc_values: LanguageClien
     assert (2, 10, "= 45") in await value_hints(fanuc_values, uri, 5)
 
 
+async def test_a_value_the_machine_keeps_shows_as_unknown(
+    fanuc_values: LanguageClient, gsk_values_zh: LanguageClient
+) -> None:
+    # #706 is a common kept on the machine, #1 a local never set (docs/semantics.md §2)
+    text = "O0100\n#10=#706*2\n#11=#1\nM30\n"
+    uri = open_file(fanuc_values, FANUC / "values_unknown.nc", text)
+    await diagnostics_for(fanuc_values, uri, 1)
+    assert await value_hints(fanuc_values, uri, 4) == [(1, 10, "= <unknown>"), (2, 6, "= <vacant>")]
+    uri = open_file(gsk_values_zh, GSK / "values_unknown.CNC", text.replace("O0100", "O0004"))
+    await diagnostics_for(gsk_values_zh, uri, 1)
+    assert await value_hints(gsk_values_zh, uri, 4) == [(1, 10, "= <未知>"), (2, 6, "= <空>")]
+
+
 async def test_values_are_off_by_default(fanuc_en: LanguageClient) -> None:
     uri = open_file(fanuc_en, FANUC / "values_off.nc", "O0100\n#1=6\n#10=360/#1\nM30\n")
     await diagnostics_for(fanuc_en, uri, 1)

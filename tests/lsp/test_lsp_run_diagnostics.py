@@ -73,8 +73,7 @@ async def test_a_finding_in_an_open_macro_comes_through_its_caller_with_the_call
 ) -> None:
     macro = open_saved(fanuc_en, tmp_path / "O9200.nc", "O9200 (DIVIDE)\n#3=#2/#1\nM99\n")
     got = await diagnostics_for(fanuc_en, macro, 1)
-    assert codes(got) == [(1, "division-by-zero"), (2, "not-executed")]  # run on its own: vacant arguments
-    assert not got.diagnostics[0].related_information
+    assert codes(got) == []  # run on its own, its arguments are unknown (no caller): #2/#1 is no alarm
     call_line = "(𝑥 CALL) G65 P9200 A0 B2."  # an astral character: UTF-16 columns differ
     main = open_file(fanuc_en, tmp_path / "MAIN.nc", f"O0001\n{call_line}\nM30\n")
     got = (await published_where(fanuc_en, {macro: lambda items: any(d.related_information for d in items)}))[macro]
@@ -165,3 +164,18 @@ async def test_5_calls_a_macro_opened_alone_is_analysed_through_its_caller_on_di
     finally:
         caller.unlink()
         macro.unlink()
+
+
+async def test_a_kept_common_is_unknown_a_branch_on_it_is_a_note_and_nothing_is_faded(fanuc_zh: LanguageClient) -> None:
+    # #706 is kept on the machine: 10/#706 is no alarm; IF on the result stops the run with a
+    # note naming #706, and the alarm block after it is not faded as unreached
+    text = "O0100\n#641=10/#706\nIF [#641 GT 2] GOTO 10\n#3000=1 (WORN)\nN10 M30\n"
+    uri = open_file(fanuc_zh, FANUC / "run_unknown.nc", text)
+    got = await diagnostics_for(fanuc_zh, uri, 1)
+    assert codes(got) == [(2, "unknown-value")]
+    (note,) = got.diagnostics
+    assert note.severity == types.DiagnosticSeverity.Information
+    assert "#706（第 2 行）" in note.message and "[variables]" in note.message
+    edit(fanuc_zh, uri, 2, 1, 8, 12, "4")  # #641=10/4: known again, the branch jumps over the alarm
+    got = await diagnostics_for(fanuc_zh, uri, 2)
+    assert codes(got) == [(3, "not-executed")]

@@ -201,7 +201,7 @@ def result_json(result: RunResult, axes: tuple[str, ...], locale: str | None = N
     if result.alarm is not None:
         a = result.alarm
         alarm = {
-            "number": a.number,
+            "number": a.shown,  # null where the control documents no number (Haas)
             "message": in_language(a.message, chinese),
             "file": a.file,
             "line": a.line + 1,
@@ -279,7 +279,7 @@ def write_text(
     if result.alarm is not None:
         a = result.alarm
         text = in_language(a.message, chinese)
-        print(f"报警 {a.number}：{text}" if chinese else f"ALARM {a.number}: {text}", file=out)
+        print(f"{a.words(locale)}：{text}" if chinese else f"{a.words().upper()}: {text}", file=out)
         print(f"  位置 {a.file}:{a.line + 1}" if chinese else f"  at {a.file}:{a.line + 1}", file=out)
         for site in reversed(a.chain[:-1]):
             at = f"{site.file}:{site.line + 1}"

@@ -472,8 +472,8 @@ class Session:
         message = show.detail_text(a.message, self.locale)
         chain = "\n".join(f"{c.program} ({c.how}) at {Path(c.file).name}:{c.line + 1}" for c in reversed(a.chain))
         return {
-            "exceptionId": f"alarm {a.number}", "description": f"ALARM {a.number}: {message}", "breakMode": "always",
-            "details": {"message": message, "typeName": f"alarm {a.number}", "stackTrace": chain},
+            "exceptionId": a.words(), "description": f"{a.words().upper()}: {message}", "breakMode": "always",
+            "details": {"message": message, "typeName": a.words(), "stackTrace": chain},
         }  # fmt: skip
 
     def on_source(self, args: dict[str, Any]) -> dict[str, Any]:

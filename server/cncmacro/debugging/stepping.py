@@ -191,7 +191,7 @@ class Stepper:
         m = self.machine
         if m.status == RunStatus.ALARM and m.alarm is not None:
             a = m.alarm
-            text = f"ALARM {a.number}: {in_language(a.message, is_chinese(self.locale))}"
+            text = f"{a.words().upper()}: {in_language(a.message, is_chinese(self.locale))}"
             if self.filters.alarms:
                 return Stop("exception", text, text)
             self.output(text + "\n", "stderr")

@@ -4,6 +4,9 @@ The numbers are FANUC 0i's where the manuals give no other (every dialect shares
 GSK-only numbers (291, 293) come from seeds 001 and 002, the FANUC 30i's for variable names
 (1098, 1099) from its alarm list (docs/profiles.md). A macro alarm raised by ``#3000``
 (3000+n on fanuc, 5900+n on gsk980tdi) or ``G65 H99`` carries the program's own text instead.
+These numbers name an alarm inside the interpreter on every profile; what a person is shown is
+the profile's (``Dialect.documented_alarms``, ``Dialect.shown_alarm``, ``alarm_words``): Haas
+documents none of them, so its alarms are shown without a number.
 """
 
 from __future__ import annotations
@@ -135,6 +138,14 @@ ALARMS: dict[int, AlarmDoc] = {
         AlarmDoc(NAME_SUBSCRIPT, "illegal subscript [ ] of a variable name", "变量名的下标[ ]错误"),
     )
 }
+
+
+def alarm_words(shown: int | None, locale: str = "en") -> str:
+    """How a person reads an alarm's number: "alarm 128" ("报警 128"), or "alarm" ("报警")
+    alone where the profile documents no number for it (``Dialect.shown_alarm``)."""
+    if shown is None:
+        return pick(locale, "alarm", "报警")
+    return pick(locale, f"alarm {shown}", f"报警 {shown}")
 
 
 def alarm_text(number: int, locale: str = "en") -> str:

@@ -28,6 +28,14 @@ ARGUMENTS_I = {
     "Q": 17, "R": 18, "S": 19, "T": 20, "U": 21, "V": 22, "W": 23, "X": 24, "Y": 25, "Z": 26,
 }  # fmt: skip
 
+
+def last_address_key(letter: str) -> str:
+    """Where the planner keeps the last value written for address ``letter`` on a profile whose
+    ``Dialect.last_address_letters`` names it: a system variable row reads it with
+    ``source="code"`` and this key as its ``param``."""
+    return f"{letter} last"
+
+
 # the GSK980TDi's tool offsets (seed 000 §3.28.1), the default of ``Dialect.lathe_offsets``
 GSK_LATHE_OFFSETS = LatheOffsets(
     axes=(("X", 2700, 2000), ("Z", 2800, 2100), ("Y", 2450, 2400)), radius=(2900, 2200), tip=2300
@@ -106,6 +114,11 @@ class Dialect:
     m98_program_digits: int = 4
     # system variables a machine file adds or describes anew; they win over the profile's rows
     extra_rows: tuple[SystemVariable, ...] = ()
+    # §2 address letters whose last value written in a block the address variables read, beside
+    # the codes every profile keeps (F, S, T, M, D, H, B, N, O): on Haas every letter of
+    # #4101-#4126, the axis, arc and cycle words too; none on FANUC and GSK, whose #4101-#4130
+    # hold only those codes (``last_address_key`` names where each is kept)
+    last_address_letters: frozenset[str] = frozenset()
     # programs kept on the control rather than in the workspace (the profile's, as Haas's
     # O9000-O9999, or a machine file's ``programs_on_control``): a call to one returns at once
     programs_on_control: tuple[tuple[int, int], ...] = ()
@@ -113,6 +126,23 @@ class Dialect:
     # §5 a modal G code before G65/G66 in its block: "alarm" (only N may precede the call, alarm 127)
     # or "execute" (the G code takes effect and stays in force, then the macro is called)
     modal_g_before_call: str = "alarm"
+    # §6 the alarm numbers the control itself shows, of those the interpreter raises (FANUC 0i's,
+    # the GSK's, 3000+n / 5900+n for #3000): None, every one (FANUC, GSK); a set, only these, the
+    # others shown without a number (Haas, whose manuals document none of them)
+    documented_alarms: frozenset[int] | None = None
+    # §5 DPRNT ``#i[ab]``: the most places a format may reserve, a + b (0: no limit; Haas 8, a
+    # format of none or more is alarm 114 there), and whether the whole part is printed in full
+    # (Haas: at least one digit, the field widened past a) or as its last a digits (FANUC)
+    dprnt_places: int = 0
+    dprnt_whole_part: bool = False
+    # §5 ``M99 Pn`` in the main program: True, a branch to Nn in every run, as GOTO n (Haas: "M99
+    # P10 branches to N10"); False, the main program's end, which a run of one pass stops at
+    # (``m99_ends_main``) and the debugger and ``--repeat`` continue from Nn
+    main_m99_p_jumps: bool = False
+    # §5 G65 P.. L k (k > 1): whether a pass after the first starts with the locals as the pass
+    # before left them (Haas: the arguments are set on the first pass only) or with a fresh level
+    # filled from the call's arguments again (False: each pass a call of its own)
+    macro_repeat_keeps_locals: bool = False
     # §5 G66 calls after a block that moves some distance (True: ``G0 U0 W0`` calls nothing) or
     # after any block with a move command (False)
     modal_call_needs_distance: bool = False
@@ -122,6 +152,9 @@ class Dialect:
     # geometry and wear; G10 L10, L11, L12 and L13 write them in that order. FANUC memory C keeps
     # them at #11001, #10001, #13001, #12001; Haas at #2001, #2201, #2401, #2601.
     tool_offset_bases: tuple[int, int, int, int] = (11000, 10000, 13000, 12000)
+    # §8 other L numbers of G10 that write a tool offset, each as the L10-L13 it stands for
+    # (Haas: "L1 or L11", the length wear); none on FANUC and GSK
+    g10_tool_l_aliases: tuple[tuple[float, float], ...] = ()
     # §10.1 where a lathe keeps its tool offsets (X, Z, Y geometry and wear, nose radius, tip):
     # the T code's offset number selects them and G10 P writes them. The GSK980TDi keeps them at
     # #2001…/#2701… (the default); the FANUC 0i-TF at #10001…/#15001…, with #2001… as the short
@@ -180,6 +213,12 @@ class Dialect:
         """This profile as one machine has it (a machine file's commons, digits and variables).
         ``changes`` are fields of ``Dialect`` by name; an unknown name is a ``TypeError``."""
         return replace(self, **changes)
+
+    def shown_alarm(self, number: int) -> int | None:
+        """The number a person is shown for the interpreter's alarm ``number`` on this control,
+        or None where the control documents none (``documented_alarms``)."""
+        documented = self.documented_alarms
+        return number if documented is None or number in documented else None
 
     def on_control(self, number: int) -> bool:
         """Whether program ``number`` lives on the control (the profile or a machine file says so)."""

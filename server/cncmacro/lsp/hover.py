@@ -169,7 +169,9 @@ def named_hover(ls: CncMacroServer, cur: Cursor, node: NamedVar) -> str:
     try:
         number = named_number(dialect, node.name, subscript, node.index is not None)
     except MacroAlarm as alarm:
-        return f"{head} — {in_language(alarm.message, is_chinese(loc))} ({alarm.number})"
+        shown_no = dialect.shown_alarm(alarm.number)
+        tail = f" ({shown_no})" if shown_no is not None else ""
+        return f"{head} — {in_language(alarm.message, is_chinese(loc))}{tail}"
     shown = f"{node.text}[{subscript:g}]" if node.index is not None and subscript is not None else node.text
     return f"**{shown}** = **#{number}**\n\n" + variable_hover(ls, cur, number)
 

@@ -60,7 +60,8 @@ def _value_hint(text: str, line: int, written: list[tuple[int, float | None]], l
                 encoding: Encoding) -> types.InlayHint:  # fmt: skip
     """``= 60`` at the end of the line's code (before a comment)."""
     end = len(text.split("(", 1)[0].split(";", 1)[0].rstrip())
-    shown = ", ".join(t("vacant", locale) if v is None else format_plain(v) for _, v in written)
+    shown = ", ".join(t("vacant", locale) if v is None else t("unknown", locale) if v != v else format_plain(v)
+                      for _, v in written)  # fmt: skip
     return types.InlayHint(
         position=types.Position(line, encoding.to_client(text, end)),
         label=f"= {shown}",

@@ -93,6 +93,7 @@ TEXTS: dict[str, tuple[str, str]] = {
     ),
     # inlay hints
     "vacant": ("<vacant>", "<空>"),
+    "unknown": ("<unknown>", "<未知>"),  # a value only the machine has (docs/semantics.md §2)
     # quick fixes
     "fix_comment": (
         "Read this file as {title}: add (cncmacro: dialect={name})",

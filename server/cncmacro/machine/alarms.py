@@ -12,6 +12,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
+from ..dialects.alarms import alarm_words
 from ..planner.alarms import MacroAlarm as MacroAlarm
 
 
@@ -46,6 +47,13 @@ class Alarm:
     line: int
     chain: tuple[CallLevel, ...] = ()
     subject: str | None = None  # e.g. "repeat-count", "label-range", "jump-into-loop"
+    # the number the control shows (``Dialect.shown_alarm``): ``number`` on FANUC and GSK, None
+    # on a profile that documents no number for it (Haas); ``number`` stays the interpreter's
+    shown: int | None = None
+
+    def words(self, locale: str | None = "en") -> str:
+        """ "alarm 128" ("报警 128"), or "alarm" alone where the control documents no number."""
+        return alarm_words(self.shown, locale or "en")
 
     def describe(self) -> str:
-        return f"alarm {self.number}: {self.message}"
+        return f"{self.words()}: {self.message}"

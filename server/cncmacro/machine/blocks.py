@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail, in_language
 from ..dialects.alarms import (
+    FORMAT,
     LOOP_NUMBER,
     MISSING_END,
     SEQUENCE_NUMBER,
@@ -23,6 +24,7 @@ from ..dialects.alarms import (
     WRITE_PROTECTED,
 )
 from ..library.programs import LoadedFile
+from ..planner.alarms import UnknownValue
 from ..planner.numbers import MAX_VALUE, format_value, round_half_away, to_increment
 from ..syntax.nodes import (
     Assign,
@@ -75,8 +77,9 @@ class CompiledFile:
         self.end_do = {p.end_line: p.do_line for p in file.program.loops}
         self._jumps: dict[tuple[int, int], tuple[int, int]] = {}
         self._spans: jumps.LoopSpans | None = None  # made at the first jump that is not cached
-        self.values = ExpressionCompiler(machine.kinds, watch=machine.watching)
-        self.addresses = ExpressionCompiler(machine.kinds, in_address=True, watch=machine.watching)
+        self.values = ExpressionCompiler(machine.kinds, watch=machine.watching, unknowns=machine.kept_unknown)
+        self.addresses = ExpressionCompiler(machine.kinds, in_address=True, watch=machine.watching,
+                                            unknowns=machine.kept_unknown)  # fmt: skip
 
     def reset(self) -> None:
         """Forget every compiled line, loop pair and jump: the file's text changed in place
@@ -377,7 +380,7 @@ class CompiledFile:
 
                 def set_local(m: Machine, pc: int) -> int:
                     v = value(m)
-                    if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
+                    if v is not None and not -MAX_VALUE <= v <= MAX_VALUE and v == v:  # NaN: unknown, kept
                         raise out_of_range(n, v)
                     m.L[n] = v
                     return nxt
@@ -387,7 +390,7 @@ class CompiledFile:
 
                 def set_common(m: Machine, pc: int) -> int:
                     v = value(m)
-                    if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
+                    if v is not None and not -MAX_VALUE <= v <= MAX_VALUE and v == v:  # NaN: unknown, kept
                         raise out_of_range(n, v)
                     m.C[n] = v
                     return nxt
@@ -485,14 +488,22 @@ class CompiledFile:
             return lambda m, pc: nxt
         # the literal text, or the variable's getter with its format
         parts: list[str | tuple[Getter, int | None, int | None]] = []
+        dialect = self.machine.dialect
+        most, whole_part = dialect.dprnt_places, dialect.dprnt_whole_part
         for p in s.parts:
             if p.variable is not None:
+                places = (p.digits or 0) + (p.decimals or 0)
+                if most and p.digits is not None and not 0 < places <= most:
+                    shown = f"[{p.digits}{p.decimals if p.decimals is not None else ''}]"
+                    return raiser(FORMAT, detail(
+                        f"DPRNT format {shown}: the places before and after the point must be 1 to {most} in all",
+                        f"DPRNT 格式 {shown}：小数点前后的位数合计必须在 1～{most} 之间"))  # fmt: skip
                 parts.append((self.values.value(p.variable), p.digits, p.decimals))
             else:
                 parts.append(p.text or "")
 
         def dprnt(m: Machine, pc: int) -> int:
-            text = "".join(p if isinstance(p, str) else format_value(p[0](m), p[1], p[2]) for p in parts)
+            text = "".join(p if isinstance(p, str) else format_value(p[0](m), p[1], p[2], whole_part) for p in parts)
             m.print_line(text, pc)
             return nxt
 
@@ -521,6 +532,8 @@ class CompiledFile:
     def round_for(self, letter: str, v: float | None, literal: bool, point: bool) -> float | None:
         if v is None:
             return 0.0 if self.machine.dialect.vacant_address_is_zero else None
+        if v != v:  # an address from an unknown value (machine/unknown_values.py)
+            raise UnknownValue
         if letter == "G":
             return to_increment(v, 1) if v != int(v) else float(v)
         if letter in INTEGER_LETTERS:

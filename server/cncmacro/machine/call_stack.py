@@ -53,6 +53,7 @@ class CallStack:
     status: RunStatus
     m99_ends_main: bool
     ended_by_main_m99: bool
+    main_loop: tuple[str, int, int] | None
     ended_with: float | None
     message: str | None
     notes: list[Note]
@@ -163,6 +164,11 @@ class CallStack:
         if frame.end_line >= 0:
             self._check_depth(macro=False)  # M99 in a cycle's shape: the same alarm as a call
         if len(self.frames) == 1:
+            if p is not None and self.dialect.main_m99_p_jumps:  # Haas: a branch, as GOTO n
+                frame.loops.clear()
+                target = frame.code.label_from_start(frame.found.unit, int(p))
+                self.main_loop = (frame.file, target, pc)
+                return target
             if self.m99_ends_main:
                 self.status = RunStatus.COMPLETED
                 self.ended_by_main_m99 = True
@@ -176,7 +182,7 @@ class CallStack:
         if frame.repeats > 0 and p is None:
             frame.repeats -= 1
             frame.loops.clear()
-            if frame.locals is not self.frames[-2].locals:
+            if frame.locals is not self.frames[-2].locals and not self.dialect.macro_repeat_keeps_locals:
                 local: list[Value] = [None] * 34
                 for k, v in frame.arguments.items():
                     local[k] = v

@@ -13,6 +13,7 @@ runs, since a program may well never reach the block. ``call_problem`` judges a 
 from __future__ import annotations
 
 import math
+import operator
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, Literal, overload
 
@@ -26,9 +27,11 @@ from ..dialects.alarms import (
     OVERFLOW,
     VARIABLE_NUMBER,
 )
+from ..planner.alarms import UnknownValue
 from ..planner.numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away, to_increment
 from ..syntax.nodes import Binary, Bracket, Expr, FunctionCall, IndirectVar, NamedVar, Number, Relation, Unary, Var
 from .alarms import MacroAlarm, raiser
+from .unknown_values import UNKNOWN, kept_extended
 from .variables import named_number
 
 if TYPE_CHECKING:
@@ -136,7 +139,8 @@ class VariableKinds:
 class ExpressionCompiler:
     """Compiles expression and condition nodes into closures for one dialect and machine."""
 
-    def __init__(self, kinds: VariableKinds, in_address: bool = False, watch: bool = False) -> None:
+    def __init__(self, kinds: VariableKinds, in_address: bool = False, watch: bool = False,
+                 unknowns: bool = False) -> None:  # fmt: skip
         self.kinds = kinds
         self.dialect = kinds.dialect
         self.in_address = in_address
@@ -144,6 +148,9 @@ class ExpressionCompiler:
         # ``Machine.vacant_local(n, line)``; ``line`` is set by the block compiler.
         self.watch = watch
         self.line = -1
+        # For the analysis only: values may be unknown (NaN, unknown_values.py); a function
+        # gives unknown for unknown, a condition on one stops the path (``UnknownValue``)
+        self.unknowns = unknowns
 
     # ---------------------------------------------------------------- values
     def value(self, node: Expr) -> Getter:
@@ -222,6 +229,8 @@ class ExpressionCompiler:
         if kind == "system":
             return lambda m: m.read_system(n)
         if kind == "extended":
+            if self.unknowns and kept_extended(self.kinds, n):
+                return lambda m: m.S.get(n, UNKNOWN)
             return lambda m: m.S.get(n)
         return raiser(
             VARIABLE_NUMBER,
@@ -361,9 +370,10 @@ class ExpressionCompiler:
             bitop = _BITWISE[op]
 
             def bitwise(m: Machine) -> Value:
-                x = _whole(a(m) or 0.0)
-                y = _whole(b(m) or 0.0)
-                return float(bitop(x, y))
+                u, v = a(m) or 0.0, b(m) or 0.0
+                if u != u or v != v:  # unknown (machine/unknown_values.py)
+                    return math.nan
+                return float(bitop(_whole(u), _whole(v)))
 
             return bitwise
         return raiser(FORMAT, detail(f"unknown operator {op}", f"未知的运算符 {op}"))
@@ -390,6 +400,13 @@ class ExpressionCompiler:
             return atan2
         f = _FUNCTIONS[name]
         arg = args[0]
+        if self.unknowns:  # an unknown argument gives an unknown result (even ROUND in an address)
+
+            def call_unknown(m: Machine) -> Value:
+                x = arg(m) or 0.0
+                return x if x != x else to_increment(x) if name == "ROUND" and self.in_address else f(x)
+
+            return call_unknown
         if name == "ROUND" and self.in_address:
             return lambda m: to_increment(arg(m) or 0.0)
 
@@ -443,6 +460,8 @@ class ExpressionCompiler:
         rc, rv = self.constant(node.right)
         left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local" and not self.watch
         exact = op in ("EQ", "NE") and self.dialect.vacant_differs_in_eq
+        if self.unknowns:
+            return _decided(op, self._value(node.left), self._value(node.right), exact, _is_vacant_test(node))
         if left_local and rc and not exact:
             assert isinstance(node.left, Var)
             n = node.left.number
@@ -521,6 +540,8 @@ def _pow(args: list[Getter], comma: bool) -> Getter:
     def power(m: Machine) -> Value:
         a = base(m) or 0.0
         b = exponent(m) or 0.0
+        if a != a or b != b:  # unknown (machine/unknown_values.py)
+            return math.nan
         if (a < 0 and b != int(b)) or (a == 0 and b < 0):
             raise MacroAlarm(
                 ARGUMENT_RANGE,
@@ -552,6 +573,31 @@ def _prm(args: list[Getter], comma: bool) -> Getter:
 
 
 _EXTRA: dict[str, Callable[[list[Getter], bool], Getter]] = {"POW": _pow, "ADP": _adp, "PRM": _prm}
+
+
+_RELATIONS: dict[str, Callable[[float, float], bool]] = {
+    "EQ": operator.eq, "NE": operator.ne, "LT": operator.lt, "LE": operator.le, "GT": operator.gt, "GE": operator.ge,
+}  # fmt: skip
+
+
+def _decided(op: str, a: Getter, b: Getter, exact: bool, vacant_test: bool) -> Test:
+    """Relation ``op`` of ``a`` and ``b`` where values may be unknown (an analysis run): as
+    ``_relation`` decides it, but a side that is unknown stops the path (``UnknownValue``). An
+    unknown is a value, not vacant: where the profile tells vacant from 0 (``exact``),
+    ``[x EQ #0]`` (``vacant_test``) is false and ``[x NE #0]`` true for an unknown ``x``."""
+    relation = _RELATIONS[op]
+
+    def decided(m: Machine) -> bool:
+        x, y = a(m), b(m)
+        if x != x or y != y:  # NaN; vacant (None) equals itself
+            if exact and vacant_test:
+                return op == "NE"
+            raise UnknownValue
+        if exact:
+            return _same(x, y) == (op == "EQ")
+        return relation(x or 0.0, y or 0.0)
+
+    return decided
 
 
 def _is_vacant_test(node: Relation) -> bool:
@@ -630,7 +676,7 @@ def _mod(a: Value, d: Value) -> Value:
 
 def _bitwise(op: str) -> Callable[[Value, Value], Value]:
     bitop = _BITWISE[op]
-    return lambda a, b: float(bitop(_whole(a or 0.0), _whole(b or 0.0)))
+    return lambda a, b: math.nan if a != a or b != b else float(bitop(_whole(a or 0.0), _whole(b or 0.0)))
 
 
 def _whole(x: float) -> int:

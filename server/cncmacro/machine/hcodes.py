@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, DIVISION_BY_ZERO, FORMAT
+from ..planner.alarms import UnknownValue
 from ..planner.numbers import bcd, bin_, round_half_away
 from ..syntax.nodes import Block, IndirectVar, Number, Var, Word
 from .alarms import MacroAlarm, raiser
@@ -133,7 +134,10 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int, block: Block |
         jump = cf.jump
 
         def branch(m: Machine, pc: int) -> int:
-            if test(q(m), r(m)):
+            j, k = q(m), r(m)
+            if j != j or k != k:  # a branch on an unknown (unknown_values.py)
+                raise UnknownValue
+            if test(j, k):
                 return jump(m.frame, pc, target(m))
             return nxt
 
@@ -174,7 +178,8 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int, block: Block |
         )
 
     def arithmetic(m: Machine, pc: int) -> int:
-        m.write(where(m), op(q(m), r(m)))
+        j, k = q(m), r(m)
+        m.write(where(m), math.nan if j != j or k != k else op(j, k))  # unknown in, unknown out
         return nxt
 
     return arithmetic

@@ -33,6 +33,7 @@ from .observer import RunObserver
 from .run_loop import RunLoop
 from .run_records import RunResult, Snapshot
 from .status import FINISHED, RunStatus
+from .unknown_values import UNKNOWN, seed_unknowns
 from .variable_sets import VariableSets
 from .variables import VariableAccess
 
@@ -50,6 +51,7 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         *,
         m99_ends_main: bool = False,
         observer: RunObserver | None = None,
+        kept_unknown: bool = False,
     ) -> None:
         self.settings = settings or MachineSettings()
         if dialect is None or isinstance(dialect, str):
@@ -62,6 +64,10 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         # set when an M99 of the main program ended the run (``m99_ends_main``): a subprogram
         # run on its own stopped after one pass (``cncmacro run`` says so); a restore clears it
         self.ended_by_main_m99 = False
+        # the main program's last loop back by ``M99 Pn`` where the profile makes it a branch
+        # (``Dialect.main_m99_p_jumps``): (file, the line of Nn, the line of the M99), the loop a
+        # shop writes to run a program for ever; a restore clears it
+        self.main_loop: tuple[str, int, int] | None = None
         # the code that ended a completed run (30, 2, or 99 for a main program's M99 that ends
         # it), as the run evaluated it; None while it runs or when it ran off its program's end
         self.ended_with: float | None = None
@@ -97,6 +103,19 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
                 self.apply_presets({n: v})
             except ValueError as e:
                 self.preset_problems.append(e.args[0] if e.args else str(e))
+        # an analysis run: what the machine keeps and nothing here gives is unknown, not vacant
+        # (unknown_values.py); fixed before the first block is compiled, as ``observer`` is
+        self.kept_unknown = kept_unknown
+        if kept_unknown:
+            seed_unknowns(self.kinds, self.C)
+
+    def unknown_arguments(self) -> None:
+        """The main program is a macro run without its caller (an analysis run): its arguments
+        (the locals #1–#33 at level 0) are values a call would pass, unknown rather than vacant
+        (unknown_values.py)."""
+        for n in range(1, 34):
+            if self.L[n] is None:
+                self.L[n] = UNKNOWN
 
     def discard(self) -> None:
         """Break the reference cycles of a machine nobody will run again (its compiled files
@@ -171,8 +190,10 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
 
     # ---------------------------------------------------------------- the planner's host (planner/host.py)
     def stored(self, n: int) -> Value:
-        """Stored system variable ``#n`` (an offset the planner reads)."""
-        return self.S.get(n)
+        """Stored system variable ``#n`` (an offset the planner reads); one written from an
+        unknown value counts as vacant for the motion (unknown_values.py)."""
+        v = self.S.get(n)
+        return None if v is not None and v != v else v
 
     def store(self, n: int, value: float) -> None:
         """The planner writes stored system variable ``#n`` (``G10``)."""
@@ -230,6 +251,17 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         return tuple(sites)
 
     # ---------------------------------------------------------------- snapshots
+    def in_main_loop(self) -> bool:
+        """Whether the main program stands in its loop back (``main_loop``): between the line
+        of Nn and the ``M99 Pn`` that branches back to it, the loop a shop writes on purpose to
+        run a program for ever (a bar feeder, a warm-up), which no run of it ends."""
+        loop = self.main_loop
+        if loop is None or not self.frames:
+            return False
+        path, first, last = loop
+        main = self.frames[0]
+        return main.file == path and first <= main.pc <= last
+
     def snapshot(self) -> Snapshot:
         return Snapshot(
             self._copy_frames(self.frames), list(self.C), dict(self.S), self.planner.snapshot(),
@@ -256,6 +288,7 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         self.ended_with = snap.ended_with
         self.cancel_requested = False
         self.ended_by_main_m99 = False
+        self.main_loop = None
 
     @staticmethod
     def _copy_frames(frames: list[Frame]) -> list[Frame]:

@@ -21,6 +21,7 @@ from .tracking import run_tracked
 from .variables import StopRequest
 
 if TYPE_CHECKING:
+    from ..dialects import Dialect
     from ..library.machine_file import MachineSettings
     from .machine import Machine
     from .observer import RunObserver
@@ -30,6 +31,7 @@ class RunLoop:
     """The run loop of ``Machine`` (module docstring)."""
 
     settings: MachineSettings
+    dialect: Dialect
     observer: RunObserver | None
     frames: list[Frame]
     modal_calls: list[ModalCall]
@@ -124,7 +126,8 @@ class RunLoop:
         f = self.frames[-1]
         if isinstance(e, MacroAlarm):
             f.pc = pc
-            self.alarm = Alarm(e.number, e.message, f.file, pc, self.chain(), e.subject)
+            shown = self.dialect.shown_alarm(e.number)
+            self.alarm = Alarm(e.number, e.message, f.file, pc, self.chain(), e.subject, shown)
             self.status = RunStatus.ALARM
         else:
             f.pc = f.code.next_line(pc)

@@ -26,6 +26,9 @@ from ..planner.planner import FEED_HINT_GIVEN
 from ..planner.turning_cycles import forget_single_cycle
 
 if TYPE_CHECKING:
+    from collections.abc import Sequence
+
+    from ..syntax.nodes import Block
     from .blocks import CompiledFile
     from .machine import Machine
     from .observer import RunObserver
@@ -214,6 +217,8 @@ def run_straight(
             continue
         break  # a word the general path must read
     done = pc - first_pc - blanks
+    if done and p.plain.last_keys:
+        _keep_last_words(p.plain.last_keys, codes, blocks, first_pc, pc)
     if done:  # stop on a line that does something, as ``CompiledFile.next_line`` does
         while pc < n_blocks and blocks[pc].plain is None and skipped(blocks[pc]):
             pc += 1
@@ -223,3 +228,18 @@ def run_straight(
     p.cut_length = cut
     p.rapid_length = rapid
     return done, pc
+
+
+def _keep_last_words(
+    last_keys: dict[str, str], codes: dict[str, float | None], blocks: Sequence[Block], first: int, end: int
+) -> None:
+    """The last value of each letter the profile's address variables read, from the plain lines
+    ``first``..``end`` just run (``Dialect.last_address_letters``): no macro statement runs
+    between them, so only the last line to write a letter counts, as one pass after the run."""
+    for pc in range(first, end):
+        text = blocks[pc].plain
+        if text is not None:
+            for word in text.split():
+                key = last_keys.get(word[0].upper())
+                if key is not None:
+                    codes[key] = float(word[1:])

@@ -123,15 +123,16 @@ def run_tracked(m: Machine, observer: RunObserver, max_blocks: int | None, is_li
 
 
 def same_values(a: Iterable[Any], b: Iterable[Any]) -> bool:
-    """Equal sequences of values (floats or vacant), a zero's sign included."""
+    """Equal sequences of values (floats or vacant), a zero's sign included; two unknowns (NaN,
+    unknown_values.py) are alike."""
     a, b = list(a), list(b)
-    if a != b:
+    if a != b and (len(a) != len(b) or not all(x == y or (x != x and y != y) for x, y in zip(a, b, strict=True))):
         return False
     return all(math.copysign(1.0, x) == math.copysign(1.0, y) for x, y in zip(a, b, strict=True) if x == 0.0)
 
 
 def _same_map(a: dict[Any, Any], b: dict[Any, Any]) -> bool:
-    if a != b:
+    if a.keys() != b.keys():
         return False
     return same_values(a.values(), (b[k] for k in a))
 

@@ -18,6 +18,7 @@ from ..dialects.alarms import NAME_SUBSCRIPT, NO_VARIABLE_NAME, OVERFLOW, VARIAB
 from ..dialects.tables import SystemVariable
 from ..planner.numbers import MAX_VALUE, round_half_away
 from .alarms import MacroAlarm
+from .unknown_values import KEPT_GROUPS, UNKNOWN, kept_extended
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -98,6 +99,7 @@ class VariableAccess:
     C: list[Value]
     S: dict[int, Value]
     planner: Planner
+    kept_unknown: bool
     start_date: int
     start_time: int
     written_system: set[int]
@@ -117,7 +119,7 @@ class VariableAccess:
         """The number ``#[index]`` names: rounded half away from zero (vacant is #0)."""
         if index is None:
             return 0
-        if not -MAX_VALUE <= index <= MAX_VALUE:
+        if abs(index) > MAX_VALUE:  # an unknown (NaN) index: round_half_away says so
             raise MacroAlarm(VARIABLE_NUMBER, detail("variable number out of range", "变量号超出范围"))
         return int(round_half_away(index))
 
@@ -136,7 +138,7 @@ class VariableAccess:
         if kind == "system":
             return self.read_system(n)
         if kind == "extended":
-            return self.S.get(n)
+            return self.S.get(n, UNKNOWN if self.kept_unknown and kept_extended(self.kinds, n) else None)
         raise MacroAlarm(
             VARIABLE_NUMBER,
             self.dialect.missing_variable(n),
@@ -145,7 +147,7 @@ class VariableAccess:
     def write(self, index: Value, value: Value, message: str | None = None) -> None:
         """``#[index] = value``, with every check the control makes."""
         n = self.variable_number(index)
-        if value is not None and not -MAX_VALUE <= value <= MAX_VALUE:
+        if value is not None and not -MAX_VALUE <= value <= MAX_VALUE and value == value:  # NaN: unknown, kept
             raise out_of_range(n, value)
         kind = self.kinds.kind(n)
         if kind == "local":
@@ -177,12 +179,16 @@ class VariableAccess:
         source = row.source
         k = n - row.first
         if source == "store":
-            return self.S.get(n, row.default)
+            return self.S.get(n, UNKNOWN if self.kept_unknown and row.group in KEPT_GROUPS else row.default)
         if source == "alias":
             target = int(row.param) + k
             target_row = self.dialect.system_variable(target)
+            if target_row is not None and self.kept_unknown and target_row.group in KEPT_GROUPS:
+                return self.S.get(target, UNKNOWN)
             return self.S.get(target, target_row.default if target_row else 0.0)
         if source in ("modal", "code", "position"):  # the planner's state (planner/planner.py)
+            if source == "code" and row.param == "T" and self.kept_unknown and self.planner.codes.get("T") is None:
+                return UNKNOWN  # the tool loaded before the program commands one: the machine knows it
             return self.planner.read(source, row.param, row.default, k)
         if source == "timer":
             return self.timer_value(n, row.param)

@@ -19,3 +19,25 @@ class MacroAlarm(Exception):
         self.message = message or detail(alarm_text(number), alarm_text(number, "zh"))
         self.subject = subject  # what the alarm is about where one number covers several things
         super().__init__(f"alarm {number}: {self.message}")
+
+
+UNKNOWN_VALUE = "unknown-value"  # the subject of ``UnknownValue``
+
+
+class UnknownValue(MacroAlarm):
+    """An analysis run reached a block whose outcome depends on a value the machine has and the
+    folder does not (a common kept at power-off, an offset: machine/unknown_values.py): a branch
+    on it, an address or variable number made from it. The control decides with its value; the
+    run stops that path there, with a note rather than an alarm (docs/semantics.md §2, "Unknown, not vacant")."""
+
+    def __init__(self) -> None:
+        super().__init__(
+            0,
+            detail("this block depends on a value only the machine has", "本程序段取决于只有机床上才有的数值"),
+            UNKNOWN_VALUE,
+        )
+
+
+def is_unknown(v: float | None) -> bool:
+    """Whether ``v`` is unknown (NaN: the machine has a value, the folder does not)."""
+    return v is not None and v != v

@@ -90,11 +90,14 @@ class MoveTimes:
         self.tool_change_t = timing.tool_change_code == "T"
 
     def distance(self, start: Sequence[float], end: Sequence[float]) -> float:
-        """The straight distance from ``start`` to ``end``, in program units."""
-        scale = self.scale
-        if scale is None:
-            return math.dist(start, end)
-        return math.hypot(*((b - a) * k for a, b, k in zip(start, end, scale, strict=True)))
+        """The straight distance from ``start`` to ``end``, in program units: on a lathe X moves
+        by half its difference (a diameter), so three quarters of its square come off."""
+        d = self.diameter
+        if d < 0:
+            return dist(start, end)
+        full = dist(start, end)
+        dx = end[d] - start[d]
+        return sqrt(max(full * full - 0.75 * dx * dx, 0.0))
 
     def rapid_seconds(self, start: Sequence[float], end: Sequence[float], unit: float) -> float:
         """Seconds a rapid takes: its slowest axis's (``unit`` is 25.4 under G20, else 1). A
@@ -133,7 +136,7 @@ class MoveTimes:
         scale = self.scale
         if scale is None:
             return max(map(abs, map(sub, end, start)), default=0.0)
-        return max((abs(b - a) * k for a, b, k in zip(start, end, scale, strict=True)), default=0.0)
+        return max(map(mul, map(abs, map(sub, end, start)), scale), default=0.0)
 
     def feed_seconds(self, mode: float, length: float, feed: float, per_rev: bool, speed: float, css: bool,
                      clamp: float | None, start: Sequence[float], end: Sequence[float], unit: float,

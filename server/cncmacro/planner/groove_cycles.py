@@ -21,6 +21,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from .cycle_passes import Pass, record_passes
 from .turning_cycles import in_increments
 
 if TYPE_CHECKING:
@@ -85,16 +86,17 @@ def _grooving(
     way = (e_peck > a_peck) - (e_peck < a_peck)
     shift_way = (e_shift > a_shift) - (e_shift < a_shift)
     off = -shift_way if shift_way else 1  # the bottom's relief: against the columns' way
-    pass_of = f"G{code:g}"
+    passes: list[Pass] = []
     at = start
 
     def go(mode: float, peck_at: float, shift_at: float) -> None:
         nonlocal at
+        if at[pi] == peck_at and at[si] == shift_at:
+            return
         end = list(at)
         end[pi], end[si] = peck_at, shift_at
-        if tuple(end) != at:
-            p.record(file, line, mode, at, tuple(end), pass_of=pass_of)
-            at = tuple(end)
+        passes.append((mode, at, tuple(end), None))
+        at = passes[-1][2]
 
     columns = [a_shift, *_steps(a_shift, e_shift, shift)]
     for n, column in enumerate(columns):
@@ -108,3 +110,4 @@ def _grooving(
         if n < len(columns) - 1:
             go(0.0, a_peck, columns[n + 1])
     go(0.0, a_peck, a_shift)
+    record_passes(p, file, line, passes, f"G{code:g}")

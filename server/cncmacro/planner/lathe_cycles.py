@@ -26,6 +26,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, NamedTuple
 
+from .cycle_passes import Pass, record_passes
 from .cycle_rules import check_cycle_block, check_shape
 from .groove_cycles import diameter_grooving, face_grooving
 from .stock_removal import Point, Segment, Step, pattern_passes, rough_passes, translate
@@ -157,40 +158,37 @@ def end_shape(p: Planner) -> None:
         p.codes[k] = v
     check_shape(p, shape)
     p.pos[:] = start
-    steps, to_plane, from_plane = _roughing_steps(p, shape)
-    at = list(start)
-    for step in steps:
+    xi, zi = p.axis_index["X"], p.axis_index["Z"]
+    facing = shape.code == 72.0
+    passes: list[Pass] = []
+    at = tuple(start)
+    for step in _roughing_steps(p, shape, xi, zi, facing):
         end = list(at)
-        x, z = from_plane(step.end)
-        end[p.axis_index["X"]], end[p.axis_index["Z"]] = x, z
+        a, b = step.end
+        end[xi], end[zi] = (b * 2.0, a) if facing else (a * 2.0, b)
         centre = None
         if step.centre is not None:
             c = list(end)
-            c[p.axis_index["X"]], c[p.axis_index["Z"]] = from_plane(step.centre)
+            a, b = step.centre
+            c[xi], c[zi] = (b * 2.0, a) if facing else (a * 2.0, b)
             centre = tuple(c)
-        p.record(shape.file, shape.line, step.mode, tuple(at), tuple(end), centre, pass_of=f"G{shape.code:g}")
-        at = end
+        passes.append((step.mode, at, tuple(end), centre))
+        at = passes[-1][2]
+    record_passes(p, shape.file, shape.line, passes, f"G{shape.code:g}")
     p.pos[:] = start
-    del to_plane
 
 
-def _roughing_steps(
-    p: Planner, shape: ShapeReading
-) -> tuple[list[Step], Callable[[tuple[float, ...]], Point], Callable[[Point], tuple[float, float]]]:
-    """The passes of a roughing cycle in its own plane, and the conversions to and from it."""
-    xi, zi = p.axis_index["X"], p.axis_index["Z"]
-    facing = shape.code == 72.0
+def _roughing_steps(p: Planner, shape: ShapeReading, xi: int, zi: int, facing: bool) -> list[Step]:
+    """The passes of a roughing cycle in its own plane: (X radius, Z) for G71 and G73, (Z, X
+    radius) for G72 (``facing``); ``xi`` and ``zi`` are the X and Z axes' indexes."""
 
     def to_plane(q: tuple[float, ...]) -> Point:
         return (q[zi], q[xi] / 2.0) if facing else (q[xi] / 2.0, q[zi])
 
-    def from_plane(q: Point) -> tuple[float, float]:
-        return (q[1] * 2.0, q[0]) if facing else (q[0] * 2.0, q[1])
-
     segments = [Segment(m, to_plane(a), to_plane(b), None if c is None else to_plane(c))
                 for m, a, b, c in shape.segments]  # fmt: skip
     if not segments:
-        return [], to_plane, from_plane
+        return []
     words = shape.words
     first = p.cycle_params.get(shape.code, {})
     du, dw = words.get("U", 0.0) / 2.0, words.get("W", 0.0)
@@ -201,10 +199,10 @@ def _roughing_steps(
     if shape.code == 73.0:
         relief = (first.get("U", 0.0), first.get("W", 0.0))
         count = round(first.get("R", 1.0))
-        return pattern_passes(start, moved, relief, count), to_plane, from_plane
+        return pattern_passes(start, moved, relief, count)
     depth = first.get("W" if facing else "U", 0.0)
     retract = first.get("R", 0.0)
     approach = 0.0 if segments[0].mode == 0.0 else 1.0
     # G18: G03 turns from Z toward X, so counterclockwise in (z, x) (G72's plane), clockwise in (x, z)
     ccw_mode = 3.0 if facing else 2.0
-    return rough_passes(start, moved, depth, retract, approach, ccw_mode), to_plane, from_plane
+    return rough_passes(start, moved, depth, retract, approach, ccw_mode)

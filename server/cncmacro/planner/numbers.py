@@ -15,14 +15,17 @@ from decimal import ROUND_HALF_UP, Decimal, InvalidOperation
 
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, OVERFLOW
-from .alarms import MacroAlarm
+from .alarms import MacroAlarm, UnknownValue
 
 # The largest magnitude a variable holds (FANUC: about 10**47); beyond it is alarm 111.
 MAX_VALUE = 1e47
 
 
 def round_half_away(x: float) -> float:
-    """Round to a whole number, halves away from zero (never banker's rounding)."""
+    """Round to a whole number, halves away from zero (never banker's rounding). An unknown
+    value (NaN) cannot be made whole: ``UnknownValue``."""
+    if x != x:
+        raise UnknownValue
     if x >= 0:
         f = math.floor(x)
         return float(f + 1 if x - f >= 0.5 else f)
@@ -32,7 +35,7 @@ def round_half_away(x: float) -> float:
 
 def to_int(x: float) -> int:
     """The integer an integer address (M, S, T, H, D, P, L, N) receives."""
-    if not -MAX_VALUE <= x <= MAX_VALUE:
+    if abs(x) > MAX_VALUE:  # an unknown (NaN) is not too large: round_half_away says so
         raise MacroAlarm(OVERFLOW, detail(f"value {x} is too large for an address", f"数值 {x} 超出地址的允许范围"))
     return int(round_half_away(x))
 
@@ -49,7 +52,10 @@ def fup(x: float) -> float:
 
 def to_increment(x: float, places: int = 3) -> float:
     """Round ``x`` to ``places`` decimals, halves away from zero, judged on its shortest
-    decimal form (what was written or computed, as the control sees it)."""
+    decimal form (what was written or computed, as the control sees it). An unknown value
+    (NaN) has no increment: ``UnknownValue``."""
+    if x != x:
+        raise UnknownValue
     scaled = x * _SCALE[places]
     f = math.floor(scaled)
     frac = scaled - f
@@ -88,16 +94,22 @@ def bin_(x: float) -> float:
     return float(int(digits))
 
 
-def format_value(x: float | None, digits: int | None, decimals: int | None) -> str:
+def format_value(x: float | None, digits: int | None, decimals: int | None, whole_part: bool = False) -> str:
     """How DPRNT prints ``#i[ab]``: ``a`` digits before the point and ``b`` after it,
-    rounded; vacant prints as 0. Without a format the value prints as the control shows it."""
+    rounded; vacant prints as 0, unknown (NaN) as ``?``. Without a format the value prints as
+    the control shows it. With ``whole_part`` (``Dialect.dprnt_whole_part``) the whole part is
+    printed in full, at least one digit however few ``a`` reserves, and ``[a0]`` prints it
+    without the fraction (Haas: 1.5436 as ``[40]`` is 1)."""
     v = 0.0 if x is None else x
+    if v != v:
+        return "?"
     if digits is None:
         return format_plain(v)
     b = decimals or 0
-    text = f"{abs(v):.{b}f}"
+    text = str(int(abs(v))) if whole_part and not b else f"{abs(v):.{b}f}"
     whole, _, frac = text.partition(".")
-    whole = whole[-digits:] if digits > 0 else ""
+    if not whole_part:
+        whole = whole[-digits:] if digits > 0 else ""
     sign = "-" if v < 0 and float(text) != 0 else ""
     return f"{sign}{whole or '0'}" + (f".{frac}" if b else "")
 
@@ -106,6 +118,8 @@ def format_plain(v: float | None) -> str:
     """A value for people: vacant, a whole number without point, or up to 6 decimals."""
     if v is None:
         return "<vacant>"
+    if v != v:
+        return "<unknown>"
     if v == int(v) and abs(v) < 1e15:
         return str(int(v))
     text = f"{v:.6f}".rstrip("0").rstrip(".")

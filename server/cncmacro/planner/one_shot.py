@@ -66,7 +66,8 @@ def one_shot(
 
 def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]) -> None:
     """G10: L2 Pn a work offset (P0 the external one), L20 Pn an extra work offset, on a lathe
-    P a tool offset (P < 10000 wear, 10000 + n geometry), on a mill L10–L13 P R a tool offset."""
+    P a tool offset (P < 10000 wear, 10000 + n geometry), on a mill L10–L13 P R a tool offset (and the
+    L numbers ``Dialect.g10_tool_l_aliases`` gives as one of them, Haas's L1)."""
     host = p.host
     l_value = other.get("L")
     number = int(other.get("P", 0.0))
@@ -97,6 +98,8 @@ def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[s
             host.store(offsets.tip + n, other["Q"])
         return
     bases = dict(zip((10.0, 11.0, 12.0, 13.0), p.dialect.tool_offset_bases, strict=True))
+    for alias, same in p.dialect.g10_tool_l_aliases:  # Haas L1 = L11
+        bases[alias] = bases[same]
     if l_value in bases and "R" in other:
         num = bases[l_value] + number
         host.store(num, other["R"] if absolute else (host.stored(num) or 0.0) + other["R"])

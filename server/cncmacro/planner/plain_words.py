@@ -13,6 +13,8 @@ from __future__ import annotations
 from string import ascii_letters
 from typing import TYPE_CHECKING
 
+from ..dialects.dialect import last_address_key
+
 if TYPE_CHECKING:
     from ..dialects import Dialect
     from ..library.machine_file import MachineSettings
@@ -52,6 +54,9 @@ class PlainWords:
         self._kinds: dict[str, int] | None = None
         self._groups: dict[float, str] | None = None
         self._g_words: dict[str, tuple[str, float]] = {}
+        # letter -> where its last value is kept, for the letters the profile's address
+        # variables read (``Dialect.last_address_letters``; empty on FANUC and GSK)
+        self.last_keys = {letter: last_address_key(letter) for letter in dialect.last_address_letters}
 
     def text_plan(self, text: str) -> PlainPlan | None:
         """``plan`` read straight from a ``Block.plain`` line: whitespace-separated
@@ -91,7 +96,16 @@ class PlainWords:
                 codes.append(("S", v))
             else:
                 extra.append((PLAIN_ARC_LETTERS[kind], v))
+            if self.last_keys:
+                self._keep_last(word[0].upper(), v, codes)
         return tuple(modal), tuple(codes), tuple(axes), tuple(inc), tuple(extra)
+
+    def _keep_last(self, letter: str, v: float, codes: list[tuple[str, float]]) -> None:
+        """Add the last value of ``letter`` to a plan's codes when the profile's address
+        variables read it (``last_keys``)."""
+        key = self.last_keys.get(letter)
+        if key is not None:
+            codes.append((key, v))
 
     def g_groups_plain(self) -> dict[float, str]:
         """G code -> modal group, for the G codes a plain line may carry: those of a modal
@@ -175,4 +189,6 @@ class PlainWords:
                 extra.append((letter, v))
             else:
                 return None
+            if self.last_keys:
+                self._keep_last(letter, v, codes)
         return tuple(modal), tuple(codes), tuple(axes), tuple(inc), tuple(extra)

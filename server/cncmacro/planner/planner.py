@@ -85,6 +85,7 @@ class Planner:
         self._call_needs_distance = dialect.modal_call_needs_distance
         self._arc_planes = arc_planes(self.axis_index)
         self._diameter = self.axis_index.get("X", -1) if self.lathe else -1
+        self._incremental_names = {v: k for k, v in dialect.incremental_letters.items()}  # X -> U on a lathe
         # a lathe that powers on in G98 (per minute): a cutting F below 1 there lacks a G99
         self.feed_hint = self.lathe and dialect.modal_defaults.get("feed") == 98.0
 
@@ -170,9 +171,9 @@ class Planner:
             shape.first_axes = named
 
     def _cycle_fallback(self, plan: PlainRun, file: str, line: int) -> bool:
-        inverse = {v: k for k, v in self.dialect.incremental_letters.items()}
-        words = [(self.dialect.axes[i], v) for i, v in plan[2]]
-        words += [(inverse[self.dialect.axes[i]], v) for i, v in plan[3]]
+        names, inverse = self.dialect.axes, self._incremental_names
+        words = [(names[i], v) for i, v in plan[2]]
+        words += [(inverse[names[i]], v) for i, v in plan[3]]
         words += plan[4]
         return self.execute_nc(words, file, line)[0]
 
@@ -198,6 +199,13 @@ class Planner:
                 incremental[axis_index[inc_letters[letter]]] = v
             else:
                 other[letter] = v
+        last_keys = self.plain.last_keys
+        if last_keys:  # the profile's address variables read every letter's last value
+            codes = self.codes
+            for letter, v in words:
+                key = last_keys.get(letter)
+                if key is not None:
+                    codes[key] = v
         one = set_modal(self, gs, other)
         if self.lathe and one == self.dialect.coordinate_setting_code and "S" in other:
             # G50 S is the spindle speed clamp (docs/semantics.md §10.4), not a spindle speed

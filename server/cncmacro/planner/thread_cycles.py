@@ -25,6 +25,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+from .cycle_passes import Pass, record_passes
 from .turning_cycles import THREAD_MODE, in_increments
 
 if TYPE_CHECKING:
@@ -70,6 +71,7 @@ def multiple_thread(p: Planner, words: dict[str, float], file: str, line: int, t
     inward = 1.0 if xd > xa else -1.0  # the way the passes go deeper along X
     along = (zd > za) - (zd < za)  # the way the thread runs along Z
     flank = math.tan(math.radians(angle / 2.0))
+    passes: list[Pass] = []
     for depth in thread_depths(first, least, height, allowance, finishing):
         z_in = za + along * depth * flank
         share = (z_in - zd) / (za - zd) if za != zd else 0.0  # along the thread's line, from its end
@@ -81,5 +83,6 @@ def multiple_thread(p: Planner, words: dict[str, float], file: str, line: int, t
         for mode, x, z in points:
             end = list(at)
             end[xi], end[zi] = x, z
-            p.record(file, line, mode, at, tuple(end), pass_of="G76")
-            at = tuple(end)
+            passes.append((mode, at, tuple(end), None))
+            at = passes[-1][2]
+    record_passes(p, file, line, passes, "G76")

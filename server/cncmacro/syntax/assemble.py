@@ -116,25 +116,26 @@ _PROGRAM_NUMBER = (
         "a program number must be written as a number, not a variable or expression",
         "程序号必须直接写成数字，不能使用变量或表达式",
     ),
-    detail("a program number must be a whole number", "程序号必须是整数"),
+    detail("a program number must be a whole number written without a decimal point", "程序号必须是不带小数点的整数"),
 )
 _SEQUENCE_NUMBER = (
     detail(
         "a sequence number must be written as a number, not a variable or expression",
         "顺序号必须直接写成数字，不能使用变量或表达式",
     ),
-    detail("a sequence number must be a whole number", "顺序号必须是整数"),
+    detail("a sequence number must be a whole number written without a decimal point", "顺序号必须是不带小数点的整数"),
 )
 
 
 def _whole_literal(w: Word, not_literal: Detail, not_whole: Detail, problems: list[Problem]) -> int | None:
-    """The value of an O or N word, which must be a whole literal number (what to say when it
-    is not a literal, and when it is not whole)."""
+    """The value of an O or N word, which must be a whole literal number written without a
+    decimal point (``O1234.`` as ``O12.34``: an address that takes no decimal point, FANUC alarm
+    007); what to say when it is not a literal, and when it is not whole."""
     v = w.value
     if not isinstance(v, Number):
         problems.append(Problem(not_literal, w.start, w.end))
         return None
-    if v.value != int(v.value) or v.value < 0:
+    if v.has_point or v.value != int(v.value) or v.value < 0:
         problems.append(Problem(not_whole, w.start, w.end))
         return None
     return int(v.value)

@@ -17,7 +17,7 @@ targets ``Jump`` facts; ``M99 Pn`` a ``ReturnJump``.
 from __future__ import annotations
 
 from ...bilingual import in_language, pick
-from ...dialects.alarms import P_VALUE_RANGE
+from ...dialects.alarms import P_VALUE_RANGE, SEQUENCE_NUMBER
 from ...library.programs import is_program_name
 from ...machine.alarms import MacroAlarm
 from ...machine.block_rules import BEFORE_CALL, CALL_WITHOUT_P, G_AFTER_CALL, O_WITH_CALL, BlockProblem, validate_block
@@ -43,7 +43,7 @@ from ...planner.numbers import round_half_away
 from ...syntax.nodes import Block, Bracket, IndirectVar, Number, Var, Word
 from ..indexes.call_sites import CallSite
 from .lathe_signs import block_signs, sign_words
-from .line_facts import LineContext, LineFacts, ReturnJump, alarm_message, block_finding, finding
+from .line_facts import LineContext, LineFacts, ReturnJump, alarm_message, alarm_named, block_finding, finding
 from .statement_checks import literal_jump
 from .variable_checks import check_write, scan_value
 
@@ -97,7 +97,7 @@ def _add(facts: LineFacts, w: Word, code: str, en: str, zh: str, ctx: LineContex
 
 def _add_alarm(facts: LineFacts, w: Word, code: str, alarm: MacroAlarm, ctx: LineContext) -> None:
     """A finding of ``code`` on the word ``w``: the alarm the interpreter raises for it."""
-    facts.findings.append(finding(w.start, w.end, code, alarm_message(alarm, ctx.locale)))
+    facts.findings.append(finding(w.start, w.end, code, alarm_message(alarm, ctx.locale, ctx.dialect)))
 
 
 # ---------------------------------------------------------------- G65 / G66
@@ -210,8 +210,9 @@ def _macro_target(call: BlockCall, missing: BlockProblem | None, ctx: LineContex
         program = macro_program_number(number, dialect)
     except MacroAlarm as alarm:
         _add(facts, p_word, "program-number",
-             f"{alarm.message} on {dialect.title} (alarm {alarm.number})",
-             f"{in_language(alarm.message, True)}（{dialect.title}，报警 {alarm.number}）", ctx)  # fmt: skip
+             f"{alarm.message} on {dialect.title} ({alarm_named(alarm.number, dialect)[0]})",
+             f"{in_language(alarm.message, True)}（{dialect.title}，{alarm_named(alarm.number, dialect)[1]}）",
+             ctx)  # fmt: skip
         return
     facts.calls.append(CallSite(call.kind, program, None, p_word, call.code, call.arguments))
 
@@ -368,8 +369,9 @@ def _local_call(words: tuple[Word, ...], call: BlockCall, ctx: LineContext, fact
         _check_count(l_word, ctx, facts)
     if p_word is None:
         m = call.code
-        _add(facts, m, "undefined-label", f"{how} needs P: the N line to call (alarm 128)",
-             f"{how} 需要用 P 指定调用的 N 程序段（报警 128）", ctx)  # fmt: skip
+        en, zh = alarm_named(SEQUENCE_NUMBER, ctx.dialect)
+        _add(facts, m, "undefined-label", f"{how} needs P: the N line to call ({en})",
+             f"{how} 需要用 P 指定调用的 N 程序段（{zh}）", ctx)  # fmt: skip
         return
     before = len(facts.jumps)
     if p_word.value is not None:  # a literal label in range, or label-range (not P[NAME])

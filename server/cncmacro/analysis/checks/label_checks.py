@@ -16,6 +16,8 @@ from __future__ import annotations
 from bisect import bisect_right
 
 from ...bilingual import pick
+from ...dialects import Dialect
+from ...dialects.alarms import SEQUENCE_NUMBER, alarm_words
 from ...machine.jumps import LoopSpans, goto_line
 from ...syntax.program import LoopPair, Program, ProgramUnit
 from ..diagnostics import Diagnostic, Related, diagnostic
@@ -33,8 +35,11 @@ def _unit_name(unit: ProgramUnit, locale: str) -> str:
 class LabelChecker:
     """The cross-line label and call checks of one file."""
 
-    def __init__(self, program: Program, file: str, finder: ProgramFinder, locale: str) -> None:
+    def __init__(self, program: Program, file: str, finder: ProgramFinder, locale: str, dialect: Dialect) -> None:
         self.program = program
+        # "alarm 128" as the control shows it ("alarm" alone where it documents no number)
+        shown = dialect.shown_alarm(SEQUENCE_NUMBER)
+        self._alarm, self._alarm_zh = alarm_words(shown), alarm_words(shown, "zh")
         self.file = file
         self.finder = finder
         self.locale = locale
@@ -78,8 +83,9 @@ class LabelChecker:
         loc = self.locale
         if not lines:
             self._missing(line, start, end, label, unit,
-                          pick(loc, f"{how}{label}: there is no N{label} in {_unit_name(unit, loc)} (alarm 128)",
-                               f"{how}{label}：{_unit_name(unit, loc)} 中没有 N{label}（报警 128）"))  # fmt: skip
+                          pick(loc, f"{how}{label}: there is no N{label} in {_unit_name(unit, loc)} ({self._alarm})",
+                               f"{how}{label}：{_unit_name(unit, loc)} 中没有 N{label}"
+                               f"（{self._alarm_zh}）"))  # fmt: skip
             return
         if len(lines) > 1:
             self._duplicates[(unit.start, label)] = unit
@@ -125,8 +131,9 @@ class LabelChecker:
         if not lines:
             where = _unit_name(found.unit, loc) if found.unit.number is not None else found.label
             self._missing(line, site.label_span[0], site.label_span[1], q, found.unit,
-                          pick(loc, f"{site.kind} {site.label_letter}{q}: there is no N{q} in {where} (alarm 128)",
-                               f"{site.kind} {site.label_letter}{q}：{where} 中没有 N{q}（报警 128）"))  # fmt: skip
+                          pick(loc, f"{site.kind} {site.label_letter}{q}: there is no N{q} in {where} ({self._alarm})",
+                               f"{site.kind} {site.label_letter}{q}：{where} 中没有 N{q}"
+                               f"（{self._alarm_zh}）"))  # fmt: skip
         elif len(lines) > 1 and here:
             self._duplicates[(found.unit.start, q)] = found.unit
 
@@ -143,8 +150,8 @@ class LabelChecker:
                     name = _unit_name(caller, loc)
                     message = pick(
                         loc,
-                        f"M99 P{label}: the caller {name} has no N{label} to return to (alarm 128)",
-                        f"M99 P{label}：调用者 {name} 中没有可返回的 N{label}（报警 128）",
+                        f"M99 P{label}: the caller {name} has no N{label} to return to ({self._alarm})",
+                        f"M99 P{label}：调用者 {name} 中没有可返回的 N{label}（{self._alarm_zh}）",
                     )
                     call = Related(self.file, call_line, site.start, site.end,
                                    pick(loc, f"the {site.kind} call", f"{site.kind} 调用"))  # fmt: skip
@@ -160,8 +167,8 @@ class LabelChecker:
                 name = _unit_name(unit, loc)
                 message = pick(
                     loc,
-                    f"M99 P{label} in the main program jumps to N{label}, which is not in {name} (alarm 128)",
-                    f"主程序中的 M99 P{label} 跳转到 N{label}，但 {name} 中没有（报警 128）",
+                    f"M99 P{label} in the main program jumps to N{label}, which is not in {name} ({self._alarm})",
+                    f"主程序中的 M99 P{label} 跳转到 N{label}，但 {name} 中没有（{self._alarm_zh}）",
                 )
                 self._missing(line, start, end, label, unit, message)
             elif len(lines) > 1:

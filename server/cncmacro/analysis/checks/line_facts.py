@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 
 from ...bilingual import in_language, is_chinese, pick
 from ...dialects import BY_NAME, Dialect
+from ...dialects.alarms import alarm_words
 from ...library.machine_file import MachineSettings
 from ...library.profiles import machine_profile
 from ...machine import block_rules as rules
@@ -57,13 +58,18 @@ def finding(start: int, end: int, code: str, message: str, *, milder: bool = Fal
     return Finding(start, end, default_severity(code, milder), code, message)
 
 
-def alarm_message(alarm: MacroAlarm, locale: str) -> str:
-    """The alarm the interpreter would raise, as a check's message: its text and its number."""
-    return pick(
-        locale,
-        f"{alarm.message} (alarm {alarm.number})",
-        f"{in_language(alarm.message, True)}（报警 {alarm.number}）",
-    )
+def alarm_named(number: int, dialect: Dialect) -> tuple[str, str]:
+    """Alarm ``number`` as a check's message names it, English and Chinese: "alarm 128", or
+    "alarm" alone where ``dialect`` documents no number for it."""
+    shown = dialect.shown_alarm(number)
+    return alarm_words(shown), alarm_words(shown, "zh")
+
+
+def alarm_message(alarm: MacroAlarm, locale: str, dialect: Dialect) -> str:
+    """The alarm the interpreter would raise, as a check's message: its text and the number
+    the control shows (none where ``dialect`` documents none)."""
+    en, zh = alarm_named(alarm.number, dialect)
+    return pick(locale, f"{alarm.message} ({en})", f"{in_language(alarm.message, True)}（{zh}）")
 
 
 def block_finding(problem: BlockProblem, locale: str) -> Finding:

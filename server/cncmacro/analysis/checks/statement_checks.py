@@ -13,10 +13,11 @@ a ``Jump`` for the cross-line label checks.
 from __future__ import annotations
 
 from ...bilingual import pick
+from ...dialects.alarms import SEQUENCE_NUMBER
 from ...machine.block_rules import ABBREVIATION, DIALECT_FORMS, NC_AND_STATEMENT, validate_block
 from ...planner.numbers import round_half_away
 from ...syntax.nodes import Assign, Block, Expr, Goto, If, Output, Statement, While
-from .line_facts import Jump, LineContext, LineFacts, block_finding, finding
+from .line_facts import Jump, LineContext, LineFacts, alarm_named, block_finding, finding
 from .variable_checks import check_write, scan_value
 
 MAX_LABEL = 99999
@@ -79,6 +80,7 @@ def literal_jump(target: Expr, how: str, ctx: LineContext, facts: LineFacts) -> 
     n = round_half_away(value) if abs(value) < 1e12 else value
     if not 1 <= n <= MAX_LABEL:
         shown = f"{n:.0f}" if abs(n) < 1e12 else f"{n:g}"
+        en, zh = alarm_named(SEQUENCE_NUMBER, ctx.dialect)
         facts.findings.append(
             finding(
                 target.start,
@@ -86,8 +88,8 @@ def literal_jump(target: Expr, how: str, ctx: LineContext, facts: LineFacts) -> 
                 "label-range",
                 pick(
                     ctx.locale,
-                    f"{how}{shown}: a sequence number must be 1 to {MAX_LABEL} (alarm 128)",
-                    f"{how}{shown}：顺序号必须在 1～{MAX_LABEL} 之间（报警 128）",
+                    f"{how}{shown}: a sequence number must be 1 to {MAX_LABEL} ({en})",
+                    f"{how}{shown}：顺序号必须在 1～{MAX_LABEL} 之间（{zh}）",
                 ),
             )
         )

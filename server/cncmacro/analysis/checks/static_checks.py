@@ -142,7 +142,7 @@ def cross_line_diagnostics(
         out.extend(loop_diagnostics(program, file, locale))
         out.extend(tape_diagnostics(program, file, locale))
         finder = ProgramFinder(program, file, dialect, library)
-        out.extend(LabelChecker(program, file, finder, locale).run(collected))
+        out.extend(LabelChecker(program, file, finder, locale, dialect).run(collected))
         if ctx is not None:
             out.extend(lathe_cycle_diagnostics(program, file, ctx))
     except Exception as e:  # a bug must not cost the per-line findings

@@ -112,7 +112,7 @@ def named_variable_number(node: NamedVar, ctx: LineContext, out: list[Finding]) 
     try:
         return named_number(d, node.name, subscript, node.index is not None)
     except MacroAlarm as alarm:
-        out.append(finding(node.start, node.end, "variable-number", alarm_message(alarm, ctx.locale)))
+        out.append(finding(node.start, node.end, "variable-number", alarm_message(alarm, ctx.locale, d)))
         return None
 
 

@@ -59,11 +59,13 @@ from ...machine.calls import letters_for_local
 from ...machine.observer import RunObserver
 from ...machine.status import FINISHED, RunStatus
 from ...machine.tracking import same_state
+from ...planner.alarms import UNKNOWN_VALUE
 from ..codes import MACRO_ALARM, alarm_code
 from ..diagnostics import Diagnostic, Related, diagnostic
 from .endless_loops import SHARED, loop_certainty
 from .run_convergence import Earlier, keep_earlier, try_converge
 from .sure_alarms import surely_reached
+from .unknown_stops import named_persistent_values, runs_as_macro, unknown_value_text
 
 CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again before converging
 MAX_SECONDS = 30.0  # wall-clock limit of one run
@@ -174,9 +176,12 @@ class EntryRun(RunObserver):
             drop_machine(self.machine)
         self.last_run = {}  # the new machine's lines have not run (``RunObserver``)
         self.track_serial = self.track_floor = 0
-        m = Machine(self.dialect, self.settings, self.library, m99_ends_main=True, observer=self)
+        m = Machine(self.dialect, self.settings, self.library, m99_ends_main=True, observer=self, kept_unknown=True)
+        m.load_persistent(named_persistent_values(self.settings))
         m.planner.record_moves = False
         m.start(self.entry)
+        if runs_as_macro(self.entry):  # checked without its caller: its arguments are unknown
+            m.unknown_arguments()
         self.machine = m
         self.state = RunState()
         self.checkpoints = [m.snapshot()]
@@ -513,15 +518,19 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
     m = run.machine
     a = m.alarm
     assert a is not None
-    if code == MACRO_ALARM:
-        en = f"the run reaches macro alarm {a.number}: {a.message}"
-        zh = f"运行到宏程序报警 {a.number}：{in_language(a.message, True)}"
+    if a.subject == UNKNOWN_VALUE:
+        ran = sorted((line for line in run.state.first.get(a.file, {}) if line < a.line), reverse=True)
+        en, zh = unknown_value_text(line_text(a.file, a.line), ((n, line_text(a.file, n)) for n in ran), m.kinds,
+                                    m.dialect, runs_as_macro(run.entry))  # fmt: skip
+    elif code == MACRO_ALARM:
+        en = f"the run reaches macro {a.words()}: {a.message}"
+        zh = f"运行到宏程序{a.words('zh')}：{in_language(a.message, True)}"
     else:
-        en = f"{a.message} (alarm {a.number})"
+        en = f"{a.message} ({a.words()})"
         if isinstance(a.message, Detail):  # its Chinese says what the alarm is: no title before it
-            zh = f"{a.message.zh}（报警 {a.number}）"
+            zh = f"{a.message.zh}（{a.words('zh')}）"
         else:  # a text without Chinese: the alarm's title in Chinese says what it is
-            zh = f"{alarm_text(a.number, 'zh')}（报警 {a.number}）：{a.message}"
+            zh = f"{alarm_text(a.number, 'zh')}（{a.words('zh')}）：{a.message}"
     in_loop = bool(m.frames and m.frames[-1].loops)
     if in_loop:
         do_line = m.frames[-1].loops[-1]
@@ -532,11 +541,9 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
             zh += f"，第 {do_line + 1} 行 {kind} 循环的第 {k} 次迭代"
     milder = False
     if code == MACRO_ALARM:  # an error where every run of the main program stops there (sure_alarms.py)
-        entry = run.entry
-        entry_lines = entry.file.lines[entry.unit.start : entry.unit.end]
         path = [(f, line) for _, f, line in run.state.order]
         path.append((a.file, a.line))
-        milder = not surely_reached(entry_lines, path, line_text, m.kinds)
+        milder = runs_as_macro(run.entry) or not surely_reached(path, line_text, m.kinds)
     return _diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale, milder=milder)
 
 
@@ -581,6 +588,8 @@ def run_diagnostics(
         code = alarm_code(a.number, a.subject, base)
         if code == MACRO_ALARM or (a.file, a.line) not in invalid:
             out.append(_alarm_diagnostic(run, code, line_text, locale))
+    elif m.status == RunStatus.LIMIT and run.stopped_by in (None, "endless") and m.in_main_loop():
+        pass  # the main program's loop back (Haas M99 Pn): a production loop, which never ends
     elif m.status == RunStatus.LIMIT and m.frames and run.endless_at is not None:
         out.append(_endless_diagnostic(run, run.endless_at, line_text, locale))
     elif m.status == RunStatus.LIMIT and m.frames:

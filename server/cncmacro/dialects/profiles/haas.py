@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from .. import fanuc_data as fanuc
 from .. import shared_data as shared
-from ..dialect import ARGUMENTS_I
+from ..dialect import ARGUMENTS_I, last_address_key
 from ..drill_cycles import HAAS_DRILL_CYCLES
 from ..haas_programs_data import PROGRAM_DOCS as PROGRAM_DOCS  # the programs on the control, for hover
 from ..tables import CodeDoc, CommonRange, SystemVariable
@@ -399,10 +399,14 @@ def _modal_row(group: int) -> SystemVariable:
     )
 
 
-_CODE_LETTERS = {"B", "D", "F", "H", "M", "S", "T"}
+# the codes the planner keeps on every profile (B is an axis on Haas, so not among them)
+_CODE_LETTERS = {"D", "F", "H", "M", "S", "T", "N", "O"}
 # #4100 + the local variable an argument letter fills (A #4101, I #4104, D #4107, F #4109, Z #4126);
 # #4114 and #4115 are N and O as on FANUC
 _ADDRESSES = {4100 + n: letter for letter, n in ARGUMENTS_I.items()} | {4114: "N", 4115: "O"}
+# the other letters: each block's axis, arc and cycle words leave their value there ([Z]:
+# #4101-#4126 the last block's address codes; docs/profiles.md "Variables and ranges")
+LAST_ADDRESS_LETTERS = frozenset(_ADDRESSES.values()) - _CODE_LETTERS
 
 
 def _address_row(number: int) -> SystemVariable:
@@ -417,7 +421,7 @@ def _address_row(number: int) -> SystemVariable:
             f"无对应地址：#{number - 4100}没有对应的自变量字母；为空",
             default=None,
         )
-    if letter in _CODE_LETTERS or letter in {"N", "O"}:
+    if letter in _CODE_LETTERS:
         return SystemVariable(
             number,
             number,
@@ -433,8 +437,11 @@ def _address_row(number: int) -> SystemVariable:
         number,
         "r",
         "modal",
-        f"Address {letter}: its value in the previous block; vacant here (not simulated) unless the machine presets it",
-        f"地址{letter}：前一程序段的值；模拟机床不记录，未预设时为空",
+        f"Address {letter}: its value in the previous block (the last one written); "
+        f"vacant until a block writes {letter}",
+        f"地址{letter}：前一程序段的值（最近一次指令的值）；尚无程序段指令{letter}时为空",
+        source="code",
+        param=last_address_key(letter),
         default=None,
     )
 
@@ -943,11 +950,18 @@ PROFILE = FANUC_0I.configured(
     common_ranges=(CommonRange(100, 199, True), CommonRange(500, 999, True), CommonRange(10000, 10999, True)),
     programs_on_control=((9000, 9999),),
     local_subprogram_code=97.0,
+    documented_alarms=frozenset(),  # no Haas source numbers FANUC's alarms or #3000=n: none shown
+    dprnt_places=8,  # DPRNT #1[54] is illegal, #1[03] prints 1.544 ([H5] p. 125)
+    dprnt_whole_part=True,
+    main_m99_p_jumps=True,  # N50 M99 P10 in a main program branches to N10 ([H1], [H5])
+    macro_repeat_keeps_locals=True,  # G65 L: the arguments are set on the first pass only ([H5])
+    last_address_letters=LAST_ADDRESS_LETTERS,  # #4101-#4126: every letter's last value ([Z])
     extra_offset_code=154.0,
     extra_offset_aliases=tuple(float(g) for g in range(110, 130)),
     extra_offset_variables=G154_LONG,
     extra_offset_count=99,
     tool_offset_bases=(2000, 2200, 2400, 2600),
+    g10_tool_l_aliases=((1.0, 11.0),),  # G10 L1 = L11, the length wear ([U])
     drill_cycles=HAAS_DRILL_CYCLES,  # its G77 back bore, G87 bore in and manual retract
     cycle_words={},  # Haas repeats with L and reads more letters in G73 and G83: not described yet
     cycle_repeat_letter="L",  # L repeats a canned cycle (K is a peck's minimum on G73/G83)

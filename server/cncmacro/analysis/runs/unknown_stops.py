@@ -1,0 +1,148 @@
+"""What the analysis says where a run stops on a value only the machine has (an ``unknown-value``
+note, machine/unknown_values.py), and the values it can be given instead.
+
+The note names the variables of the block the machine keeps (commons kept at power-off, offsets)
+and the two places a value can come from: ``[variables]`` in the machine file, or the
+persistent-variable file the machine file names (``persistent_file``), which the analysis
+reads as ``cncmacro run`` does. The run stopped there, not the program: the blocks after it are
+not "not executed" (``unknown_stop``).
+"""
+
+from __future__ import annotations
+
+import logging
+import re
+from collections.abc import Iterable
+
+from ...dialects import Dialect
+from ...library.machine_file import MachineFileError, MachineSettings
+from ...library.persistence import PersistentFileError, load_persistent
+from ...library.programs import FoundProgram
+from ...machine import Machine
+from ...machine.calls import letters_for_local
+from ...machine.expressions import VariableKinds
+from ...machine.status import RunStatus
+from ...machine.unknown_values import assigned, is_kept, is_tool, variables_in
+from ...planner.alarms import UNKNOWN_VALUE
+from ...syntax.nodes import Number
+
+log = logging.getLogger(__name__)
+_RETURN_OR_END = re.compile(r"M\s*0*(?:99|30|2)(?![\d.])", re.IGNORECASE)  # may hold M99, M30 or M02
+
+
+def runs_as_macro(found: FoundProgram) -> bool:
+    """Whether ``found``, run on its own, is a macro or subprogram checked without its caller: it
+    returns with M99 and has no M30 or M02. Its arguments are then unknown, not vacant
+    (``Machine.unknown_arguments``): the alarms it would reach only because no caller passed them
+    are not the program's. Only the lines that may hold such a word are read."""
+    returns = ends = False
+    lines, blocks = found.file.lines, found.file.program.blocks
+    for i in range(found.unit.start, min(found.unit.end, len(blocks))):
+        if i >= len(lines) or _RETURN_OR_END.search(lines[i]) is None:
+            continue
+        for w in blocks[i].words:
+            if w.letter == "M" and isinstance(w.value, Number):
+                v = w.value.value
+                returns = returns or v == 99.0
+                ends = ends or v in (30.0, 2.0)
+    return returns and not ends
+
+
+def named_persistent_values(settings: MachineSettings) -> dict[int, float]:
+    """The values of the persistent file the machine file names (none without one). A file that
+    cannot be read or is damaged gives none: its values stay unknown, and ``cncmacro run``,
+    which reads it too, says why."""
+    try:
+        path = settings.persistent_path()
+        return load_persistent(path) if path is not None else {}
+    except (MachineFileError, PersistentFileError, OSError) as e:
+        log.info("the persistent file is not used by the analysis: %s", e)
+        return {}
+
+
+def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: VariableKinds,
+                       dialect: Dialect, arguments: bool) -> tuple[str, str]:  # fmt: skip
+    """The note (English, Chinese) for a run stopped on block ``text`` by an unknown value. It
+    names at most three variables the block's value comes from: the block's own that no
+    ``earlier`` block (that ran before it in its file: (line, text), nearest first) assigned,
+    and through each ``#n=...`` of those blocks, the variables of its expression, with its line;
+    the ones the machine keeps and, in a macro checked without its caller (``arguments``), the
+    arguments #1–#33 a call would pass."""
+    own = assigned(text)
+    wanted: dict[int, int | None] = dict.fromkeys(variables_in(own[1] if own else text))  # variable -> its line
+    for line, before in earlier:
+        a = assigned(before)
+        if a is not None and a[0] in wanted:
+            del wanted[a[0]]
+            for n in variables_in(a[1]):
+                wanted.setdefault(n, line)
+    named = [(n, line) for n, line in wanted.items() if is_kept(n, kinds, dialect) or (arguments and 1 <= n <= 33)]
+    kept = [(n, line) for n, line in named[:3] if not 1 <= n <= 33]
+    passed = [(n, line) for n, line in named[:3] if 1 <= n <= 33]
+    parts, parts_zh = [], []
+    tool = [(n, line) for n, line in kept if is_tool(n, dialect)]
+    kept = [(n, line) for n, line in kept if not is_tool(n, dialect)]
+    if kept:
+        names, names_zh = _names(kept)
+        parts.append(f"{names}, which the machine keeps")
+        parts_zh.append(f"机床上保存的 {names_zh}")
+    if tool:
+        names, names_zh = _names(tool)
+        parts.append(f"{names}, the tool loaded before the program commands one")
+        parts_zh.append(f"程序指令换刀前主轴上的刀具 {names_zh}")
+    if passed:
+        names, names_zh = _names(passed, letters=True)
+        parts.append(f"{names}, which a caller passes")
+        parts_zh.append(f"调用者传递的自变量 {names_zh}")
+    if not parts:
+        which, which_zh = "on a value the machine keeps (a common kept at power-off, an offset)", "机床上保存的数值"
+    elif any(line is not None for _, line in named[:3]):
+        which, which_zh = "on a value computed from " + " and ".join(parts), "由" + "和".join(parts_zh) + "算出的值"
+    else:
+        which, which_zh = "on " + " and ".join(parts), "和".join(parts_zh)
+    if tool and not kept and not passed:
+        tail = "no tool change (T_ M06) comes before it in this run, so the tool in the spindle is not known here"
+        tail_zh = "本次运行中它之前没有换刀（T_ M06），因此这里不知道主轴上的刀具"
+    elif passed and not kept:
+        tail = (
+            "checked without its caller, this macro has no arguments; a program in the folder that calls it has it "
+            "checked with the caller's"
+        )
+        tail_zh = "单独检查时没有调用者传递自变量；文件夹中有调用它的程序时，会以调用者的自变量检查它"
+    else:
+        tail = (
+            "this folder does not give it; set it under [variables] in .cncmacro.toml (or in the persistent file "
+            "it names) to check further"
+        )
+        tail_zh = (
+            "文件夹中没有给出该值；在 .cncmacro.toml 的 [variables]（或它指定的断电保持变量文件）中给出即可继续检查"
+        )
+    return (f"the analysis run stops here: this block depends {which}; {tail}",
+            f"分析运行在此停止：本程序段取决于{which_zh}；{tail_zh}")  # fmt: skip
+
+
+def unknown_stop(m: Machine) -> list[tuple[str, int]]:
+    """Where a run stopped on an unknown value: (file, line) of the block and of each call
+    that led to it; none when it did not. What follows each in its file was not reached because
+    the run stopped, not because the program never goes there."""
+    a = m.alarm
+    if m.status != RunStatus.ALARM or a is None or a.subject != UNKNOWN_VALUE:
+        return []
+    return [(a.file, a.line), *((c.file, c.line) for c in a.chain)]
+
+
+def after_a_stop(stops: list[tuple[str, int]], file: str, first: int) -> bool:
+    """Whether lines from ``first`` on in ``file`` come after one of the ``stops``."""
+    return any(f == file and first > line for f, line in stops)
+
+
+def _names(found: list[tuple[int, int | None]], letters: bool = False) -> tuple[str, str]:
+    """``#706 (line 2), #20 (T)``: each variable, its argument letter and the line it is read on."""
+    en, zh = [], []
+    for n, line in found:
+        letter = letters_for_local(n)[0] if letters else None
+        tags = [t for t in (letter, None if line is None else f"line {line + 1}") if t]
+        tags_zh = [t for t in (letter, None if line is None else f"第 {line + 1} 行") if t]
+        en.append(f"#{n}" + (f" ({', '.join(tags)})" if tags else ""))
+        zh.append(f"#{n}" + (f"（{'，'.join(tags_zh)}）" if tags_zh else ""))
+    return ", ".join(en), "、".join(zh)

@@ -1,0 +1,87 @@
+"""Values the machine has and the folder does not: unknown, not vacant (docs/semantics.md §2,
+"Unknown, not vacant").
+
+A program reads values the control keeps from one day to the next: the commons kept at power-off
+(#500–#999, the extended ranges), the tool and work offset tables, the tool loaded in the
+spindle before the program commands a T. Offline, nothing says what they hold; taking them as
+vacant or 0 makes a production program's ``#641=#640/#706`` a "division by zero" the control
+never raises. So an analysis run (``check`` and the editor: ``Machine(kept_unknown=True)``)
+reads each of them that neither the machine file's ``[variables]`` nor the persistent file
+gives as **unknown**: NaN, which every arithmetic operation and function carries on (an unknown
+divisor divides to unknown, no alarm). A macro checked without its caller gets unknown
+arguments (``Machine.unknown_arguments``). Vacant stays vacant where the program itself could
+have set the value: a main program's locals, arguments a caller did not pass, the commons
+cleared at power-on (#100–#199).
+
+Where the run must decide something with an unknown (a branch, an address word sent to the
+NC, a variable, label or program number made from it) the control would use its value; the
+run stops that path there with ``UnknownValue`` (planner/alarms.py), a note that names the
+variable and how to give it, and the text after it is still checked, not faded as unreached.
+The motion takes an offset written from an unknown as 0 (``Machine.stored``). ``cncmacro run``
+and the debugger, which simulate one machine, keep reading these values as vacant (0 for the
+offsets).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..dialects import Dialect
+    from .expressions import VariableKinds
+
+UNKNOWN = math.nan
+# the groups of stored system variables the machine keeps (dialects/tables.py): its offsets
+KEPT_GROUPS = frozenset({"tool", "work"})
+_NUMBER = re.compile(r"#\s*(\d+)")
+_ASSIGNMENT = re.compile(r"\s*(?:N\d+\s*)?#\s*(\d+)\s*=(.*)", re.IGNORECASE)
+
+
+def seed_unknowns(kinds: VariableKinds, commons: list[float | None]) -> None:
+    """Make every kept common below #1000 that has no value unknown (``commons`` is
+    ``Machine.C``, after the presets and the persistent file)."""
+    for r in kinds.persistent:
+        for n in range(r.first, min(r.last, 999) + 1):
+            if commons[n] is None:
+                commons[n] = UNKNOWN
+
+
+def kept_extended(kinds: VariableKinds, n: int) -> bool:
+    """Whether extended common ``#n`` (#1000 up) is kept at power-off."""
+    return any(r.first <= n <= r.last for r in kinds.persistent)
+
+
+def kept_variables(text: str, kinds: VariableKinds, dialect: Dialect) -> list[int]:
+    """The variables of a block's ``text`` whose value the machine keeps (the commons kept at
+    power-off and the offsets), in order, each once."""
+    return [n for n in variables_in(text) if is_kept(n, kinds, dialect)]
+
+
+def variables_in(text: str) -> list[int]:
+    """The ``#n`` of ``text`` with a literal number, in order, each once."""
+    return list(dict.fromkeys(int(match.group(1)) for match in _NUMBER.finditer(text)))
+
+
+def is_kept(n: int, kinds: VariableKinds, dialect: Dialect) -> bool:
+    """Whether the machine keeps ``#n`` from one day to the next (module docstring)."""
+    kind = kinds.kind(n)
+    if kind == "persistent" or (kind == "extended" and kept_extended(kinds, n)):
+        return True
+    if kind == "system":
+        row = dialect.system_variable(n)
+        return row is not None and (row.group in KEPT_GROUPS or is_tool(n, dialect))
+    return False
+
+
+def is_tool(n: int, dialect: Dialect) -> bool:
+    """Whether system variable ``#n`` reads the tool number (FANUC #4120, Haas #3026)."""
+    row = dialect.system_variable(n)
+    return row is not None and row.source == "code" and row.param == "T"
+
+
+def assigned(text: str) -> tuple[int, str] | None:
+    """``(n, the expression)`` of a block ``#n=expression`` with a literal ``n``, else None."""
+    match = _ASSIGNMENT.match(text)
+    return (int(match.group(1)), match.group(2)) if match else None

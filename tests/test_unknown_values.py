@@ -1,0 +1,122 @@
+"""Values the machine has and the folder does not are unknown, not vacant (docs/semantics.md §2,
+"Unknown, not vacant"), through ``cncmacro check``: a kept common or an offset as a divisor is no
+alarm; a branch or a move on one stops the analysis run with an ``unknown-value`` note that
+names the variable, and the blocks after it are not faded; a value given in ``[variables]`` or in
+the persistent file the machine file names is used; what the program could have set itself
+stays vacant."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from cli_capture import cli
+
+# a production grinder's wear compensation: #706 is a count kept on the machine
+GRINDER = "O0100\n#641=#640/#706\n#642=#641*2\nM30\n"
+
+
+def check(folder: Path, text: str, machine_file: str | None = None, *extra: str) -> tuple[int, list[str]]:
+    """(exit status, findings as ``line: severity: ... [code]`` without the file name)."""
+    (folder / "O0100.nc").write_text(text, encoding="utf-8")
+    if machine_file is not None:
+        (folder / ".cncmacro.toml").write_text(machine_file, encoding="utf-8")
+    code, out, err = cli("check", "--hints", *extra, str(folder / "O0100.nc"))
+    assert err == ""
+    return code, [line.split(":", 1)[1] for line in out.splitlines()]
+
+
+def test_a_kept_common_as_divisor_is_no_alarm(tmp_path: Path) -> None:
+    assert check(tmp_path, GRINDER) == (0, [])
+
+
+def test_a_kept_common_given_zero_in_variables_is_the_alarm_the_control_raises(tmp_path: Path) -> None:
+    code, found = check(tmp_path, GRINDER, "[variables]\n640 = 3.0\n706 = 0\n")
+    assert code == 1
+    assert found == ["2:1: error: division by zero (alarm 112) [division-by-zero]",
+                     "3:1: hint: no analysis run reaches these 2 lines [not-executed]"]  # fmt: skip
+
+
+def test_a_kept_common_from_the_persistent_file_the_machine_file_names(tmp_path: Path) -> None:
+    # #706 = 4 from the persistent file: #641 = 10 / 4 = 2.5, so IF [#641 GT 2] jumps over the alarm
+    text = "O0100\n#641=10/#706\nIF [#641 GT 2] GOTO 10\n#3000=1 (WORN)\nN10 M30\n"
+    (tmp_path / "vars.json").write_text(json.dumps({"variables": {"706": 4.0}}), encoding="utf-8")
+    code, found = check(tmp_path, text, 'persistent_file = "vars.json"\n')
+    assert (code, found) == (0, ["4:1: hint: no analysis run reaches this block [not-executed]"])
+    # without it the branch cannot be decided: a note, the alarm block not faded, exit 0
+    (tmp_path / ".cncmacro.toml").unlink()
+    code, found = check(tmp_path, text)
+    assert code == 0
+    assert found == [
+        "3:1: information: the analysis run stops here: this block depends on a value computed from #706 (line 2), "
+        "which the machine keeps; this folder does not give it; set it under [variables] in .cncmacro.toml (or in "
+        "the persistent file it names) to check further [unknown-value]"
+    ]
+
+
+def test_a_branch_on_a_kept_common_names_it(tmp_path: Path) -> None:
+    code, found = check(tmp_path, "O0100\nIF [#500 EQ 1] GOTO 10\nG00 X10.\nN10 M30\n")
+    assert code == 0
+    assert found == [
+        "2:1: information: the analysis run stops here: this block depends on #500, which the machine keeps; this "
+        "folder does not give it; set it under [variables] in .cncmacro.toml (or in the persistent file it names) to "
+        "check further [unknown-value]"
+    ]
+
+
+def test_a_move_by_the_tool_diameter_from_the_offset_table_stops_with_a_note(tmp_path: Path) -> None:
+    # Haas: #2401 is the diameter geometry of tool 1; a stepover of 40 % of it, divided into the width
+    text = "O0100\n#1=#2401*0.4\n#2=FUP[50/#1]\nG01 X#1 F500\nM30\n"
+    code, found = check(tmp_path, text, None, "--dialect", "haas")
+    assert code == 0
+    assert [f.split(": ")[1] for f in found] == ["information"]
+    assert found[0].startswith("4:1: information: the analysis run stops here: this block depends on a value "
+                               "computed from #2401 (line 2)")  # fmt: skip
+    # the diameter given, the program runs to its end: 12.7 x 0.4 = 5.08, FUP[50 / 5.08] = 10
+    assert check(tmp_path, text, "[variables]\n2401 = 12.7\n", "--dialect", "haas") == (0, [])
+
+
+def test_what_the_program_could_set_itself_stays_vacant(tmp_path: Path) -> None:
+    # a local never set and a common cleared at power-on (#100 on fanuc) divide to alarm 112
+    for variable in ("#1", "#100"):
+        code, found = check(tmp_path, f"O0100\n#2=10/{variable}\nM30\n")
+        assert code == 1
+        assert found[0] == "2:1: error: division by zero (the divisor is vacant) (alarm 112) [division-by-zero]"
+
+
+def test_a_macro_checked_without_its_caller_gets_notes_not_alarms(tmp_path: Path) -> None:
+    # O9010 returns with M99 and no program here calls it: its arguments are unknown, not
+    # vacant. ``#20 EQ #0`` is false for an unknown (a value, not vacant), so the argument check
+    # raises no #3000; the offset read by the tool number T (#20) stops the run with a note
+    text = "O9010 (MACRO)\nIF [#20 EQ #0] THEN #3000=1 (T MISSING)\n#30=#[2000+#20]\nG01 Z-#30 F100\nM99\n"
+    code, found = check(tmp_path, text)
+    assert code == 0
+    assert found == [
+        "3:1: information: the analysis run stops here: this block depends on #20 (T), which a caller passes; checked "
+        "without its caller, this macro has no arguments; a program in the folder that calls it has it checked with "
+        "the caller's [unknown-value]"
+    ]
+    # a main program (it ends in M30) starts with vacant locals, as on the control: the alarm
+    code, found = check(tmp_path, text.replace("M99", "M30"))
+    assert code == 0 and found[0] == "2:1: warning: the run reaches macro alarm 3001: T MISSING [macro-alarm]"
+
+
+def test_cncmacro_run_keeps_the_kept_common_vacant(tmp_path: Path) -> None:
+    # the simulated machine has no value for #706 either: run stops where the control with a
+    # vacant #706 would, with alarm 112
+    (tmp_path / "O0100.nc").write_text(GRINDER, encoding="utf-8")
+    code, out, err = cli("run", "--no-save", str(tmp_path / "O0100.nc"))
+    assert code != 0 and "112" in out + err
+
+
+def test_the_tool_in_the_spindle_before_any_t_is_unknown(tmp_path: Path) -> None:
+    # Haas: #3026 is the tool in the spindle; before the program loads one the machine has one
+    # loaded, so #[2400+#3026] (its diameter) is unknown, not the diameter of tool 0 (#2400,
+    # which does not exist: alarm 115)
+    text = "O0100\n#1=#[2400+#3026]\nIF [#1 GT 10.] GOTO 10\nN10 M30\n"
+    code, found = check(tmp_path, text, None, "--dialect", "haas")
+    assert code == 0
+    assert [f.split(": ")[1] for f in found] == ["information"] and found[0].startswith("2:1: ")
+    # after T2 M06 it is tool 2: #2402 given as 12 in [variables], the program runs to its end
+    loaded = text.replace("O0100\n", "O0100\nT2 M06\n")
+    assert check(tmp_path, loaded, "[variables]\n2402 = 12.0\n", "--dialect", "haas") == (0, [])
