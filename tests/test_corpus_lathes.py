@@ -1,7 +1,7 @@
 """The lathe corpora (tests/corpus/gsk980tdi and tests/corpus/fanuc-0i-lathe): shop programs of a
 GSK980TDi and a FANUC 0i-TF lathe. ``cncmacro check`` finds nothing in them (no error, no
-warning, and no information but the ``unknown-value`` notes of ``ALLOWED_INFOS``: their branches
-on a part counter or a wear value kept on the machine, which the folder does not give), every main program runs to
+warning, and no information either: ``ALLOWED_INFOS`` is empty; their branches on a part counter or a
+wear value kept on the machine stop the analysis with an ``unknown-value`` hint), every main program runs to
 completion in a time a lathe could take for it (10 s to 30 min, some cutting), and each does what
 its programmer meant: the passes of a cycle where the control makes them, a thread's last pass
 at the root diameter, an offset written. O2016's and g92_thread_m24's times are worked out by hand.
@@ -26,11 +26,8 @@ from test_corpus import CORPUS, GSK, moves, run, run_json, var
 
 FANUC_T = CORPUS / "fanuc-0i-lathe"
 
-# (file name, diagnostic code) of the information findings the lathe programs may have: a branch
-# on a value the machine keeps (docs/semantics.md §2, "Unknown, not vacant")
-ALLOWED_INFOS: frozenset[tuple[str, str]] = frozenset(
-    {("O2013.nc", "unknown-value"), ("wear_comp.cnc", "unknown-value"), ("wear_offset_update.cnc", "unknown-value")}
-)
+# (file name, diagnostic code) of the information findings the lathe programs may have: none
+ALLOWED_INFOS: frozenset[tuple[str, str]] = frozenset()
 
 
 def cuts(r: dict[str, Any], line: int) -> list[dict[str, Any]]:

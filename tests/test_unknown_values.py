@@ -1,6 +1,6 @@
 """Values the machine has and the folder does not are unknown, not vacant (docs/semantics.md §2,
 "Unknown, not vacant"), through ``cncmacro check``: a kept common or an offset as a divisor is no
-alarm; a branch or a move on one stops the analysis run with an ``unknown-value`` note that
+alarm; a branch or a move on one stops the analysis run with an ``unknown-value`` hint that
 names the variable, and the blocks after it are not faded; a value given in ``[variables]`` or in
 the persistent file the machine file names is used; what the program could have set itself
 stays vacant."""
@@ -48,7 +48,7 @@ def test_a_kept_common_from_the_persistent_file_the_machine_file_names(tmp_path:
     code, found = check(tmp_path, text)
     assert code == 0
     assert found == [
-        "3:1: information: the analysis run stops here: this block depends on a value computed from #706 (line 2), "
+        "3:1: hint: the analysis run stops here: this block depends on a value computed from #706 (line 2), "
         "which the machine keeps; this folder does not give it; set it under [variables] in .cncmacro.toml (or in "
         "the persistent file it names) to check further [unknown-value]"
     ]
@@ -58,7 +58,7 @@ def test_a_branch_on_a_kept_common_names_it(tmp_path: Path) -> None:
     code, found = check(tmp_path, "O0100\nIF [#500 EQ 1] GOTO 10\nG00 X10.\nN10 M30\n")
     assert code == 0
     assert found == [
-        "2:1: information: the analysis run stops here: this block depends on #500, which the machine keeps; this "
+        "2:1: hint: the analysis run stops here: this block depends on #500, which the machine keeps; this "
         "folder does not give it; set it under [variables] in .cncmacro.toml (or in the persistent file it names) to "
         "check further [unknown-value]"
     ]
@@ -69,8 +69,8 @@ def test_a_move_by_the_tool_diameter_from_the_offset_table_stops_with_a_note(tmp
     text = "O0100\n#1=#2401*0.4\n#2=FUP[50/#1]\nG01 X#1 F500\nM30\n"
     code, found = check(tmp_path, text, None, "--dialect", "haas")
     assert code == 0
-    assert [f.split(": ")[1] for f in found] == ["information"]
-    assert found[0].startswith("4:1: information: the analysis run stops here: this block depends on a value "
+    assert [f.split(": ")[1] for f in found] == ["hint"]
+    assert found[0].startswith("4:1: hint: the analysis run stops here: this block depends on a value "
                                "computed from #2401 (line 2)")  # fmt: skip
     # the diameter given, the program runs to its end: 12.7 x 0.4 = 5.08, FUP[50 / 5.08] = 10
     assert check(tmp_path, text, "[variables]\n2401 = 12.7\n", "--dialect", "haas") == (0, [])
@@ -92,7 +92,7 @@ def test_a_macro_checked_without_its_caller_gets_notes_not_alarms(tmp_path: Path
     code, found = check(tmp_path, text)
     assert code == 0
     assert found == [
-        "3:1: information: the analysis run stops here: this block depends on #20 (T), which a caller passes; checked "
+        "3:1: hint: the analysis run stops here: this block depends on #20 (T), which a caller passes; checked "
         "without its caller, this macro has no arguments; a program in the folder that calls it has it checked with "
         "the caller's [unknown-value]"
     ]
@@ -117,7 +117,7 @@ def test_the_tool_in_the_spindle_before_any_t_is_unknown(tmp_path: Path) -> None
     text = "O0100\n#1=#[2400+#3026]\nIF [#1 GT 10.] GOTO 10\nN10 M30\n"
     code, found = check(tmp_path, text, None, "--dialect", "haas")
     assert code == 0
-    assert [f.split(": ")[1] for f in found] == ["information"] and found[0].startswith("2:1: ")
+    assert [f.split(": ")[1] for f in found] == ["hint"] and found[0].startswith("2:1: ")
     # after T2 M06 it is tool 2: #2402 given as 12 in [variables], the program runs to its end
     loaded = text.replace("O0100\n", "O0100\nT2 M06\n")
     assert check(tmp_path, loaded, "[variables]\n2402 = 12.0\n", "--dialect", "haas") == (0, [])

@@ -181,7 +181,7 @@ CODES: dict[str, Code] = _codes(
          RUN, milder=WARNING),
     Code("vacant-argument", INFORMATION,
          detail("A macro reads an argument that a caller never passes.", "宏程序读取了调用者没有传递的自变量。"), RUN),
-    Code("unknown-value", INFORMATION,
+    Code("unknown-value", HINT,
          detail("The run stops where the program decides something with a value only the machine has (a common "
                 "kept at power-off, an offset) and the folder does not give, or with an argument of a macro checked "
                 "without its caller: set it under [variables] in .cncmacro.toml, or in the persistent file it names, "
