@@ -153,8 +153,8 @@ CASES = {
         "repeat-count-range",
         3,
         "L0: the repeat count must be 1 to 9999 (alarm 119)",
-        "自变量超出范围（报警 119）",
-        "L0：重复次数必须在 1～9999 之间",
+        None,
+        "L0：重复次数必须在 1～9999 之间（报警 119）",
     ),
     "5_calls_l0_repeat_count_written_in_the_call": (
         "fanuc",
@@ -180,8 +180,8 @@ CASES = {
         "undefined-label",
         3,
         "N99 not found in O0001 (alarm 128)",
-        "未找到顺序号（报警 128）",
-        "O0001 中未找到 N99",
+        None,
+        "O0001 中未找到 N99（报警 128）",
     ),
     "5_calls_macro_nesting_too_deep": (
         "fanuc",
@@ -190,9 +190,9 @@ CASES = {
         2,
         "more than 4 nested macro calls (G65/G66) (alarm 122); reached from O0001:2 (G65) → O9001:2 (G65) → "
         "O9001:2 (G65) → O9001:2 (G65), at block 5 of the run",
-        "宏程序调用嵌套过深（报警 122）",
-        "宏程序调用（G65/G66）嵌套超过 4 层；调用路径 O0001:2 (G65) → O9001:2 (G65) → O9001:2 (G65) → "
-        "O9001:2 (G65)，运行的第 5 个程序段",
+        None,
+        "宏程序调用（G65/G66）嵌套超过 4 层（报警 122）；调用路径 O0001:2（G65）→O9001:2（G65）→O9001:2（G65）→"
+        "O9001:2（G65），运行的第 5 个程序段",
     ),
     "3_expressions_division_by_a_vacant_divisor": (
         "fanuc",
@@ -200,8 +200,8 @@ CASES = {
         "division-by-zero",
         2,
         "division by zero (the divisor is vacant) (alarm 112)",
-        "除数为零（报警 112）",
-        "除数为零（除数为空变量）",
+        None,
+        "除数为零（除数为空变量）（报警 112）",
     ),
     "8_simulated_machine_write_to_a_read_only_system_variable": (
         "fanuc",
@@ -209,8 +209,8 @@ CASES = {
         "write-protected",
         3,
         "#5001 is read-only (alarm 116)",
-        "变量禁止写入（报警 116）",
-        "#5001 是只读变量，不能写入",
+        None,
+        "#5001 是只读变量，不能写入（报警 116）",
     ),
     "2_values_and_variables_a_variable_number_that_does_not_exist": (
         "fanuc",
@@ -218,8 +218,8 @@ CASES = {
         "variable-number",
         3,
         "#50 does not exist on FANUC 0i Custom Macro B (alarm 115)",
-        "变量号超出范围（报警 115）",
-        "FANUC 0i Custom Macro B 没有变量 #50",
+        None,
+        "FANUC 0i Custom Macro B 没有变量 #50（报警 115）",
     ),
     "5_calls_more_than_ten_i_arguments": (
         "fanuc",
@@ -245,8 +245,8 @@ CASES = {
         "division-by-zero",
         3,
         "G65 H05: division by zero (R is 0) (alarm 112)",
-        "除数为零（报警 112）",
-        "G65 H05：除数为零（R 为 0）",
+        None,
+        "G65 H05：除数为零（R 为 0）（报警 112）",
     ),
     "7_gsk_macro_a_h99_user_alarm": (
         "gsk980tdi",
@@ -310,9 +310,11 @@ def test_6_alarms_check_with_locale_zh_cn_writes_the_details_in_chinese(tmp_path
     assert en["L0.nc"] == ("repeat-count-range", "L0: the repeat count must be 1 to 9999 (alarm 119)")
     assert en["DIVIDE.nc"] == ("division-by-zero", "division by zero (alarm 112)")
     assert en["H05.nc"] == ("division-by-zero", "G65 H05: division by zero (R is 0) (alarm 112)")
-    assert zh["L0.nc"] == ("repeat-count-range", "自变量超出范围（报警 119）：L0：重复次数必须在 1～9999 之间")
-    assert zh["GOTO.nc"] == ("undefined-label", "未找到顺序号（报警 128）：O0002 中未找到 N99")
-    assert zh["H05.nc"] == ("division-by-zero", "除数为零（报警 112）：G65 H05：除数为零（R 为 0）")
+    # the detail says what the alarm is, and the number follows it as in English: no title before it
+    assert zh["L0.nc"] == ("repeat-count-range", "L0：重复次数必须在 1～9999 之间（报警 119）")
+    assert zh["GOTO.nc"] == ("undefined-label", "O0002 中未找到 N99（报警 128）")
+    assert zh["H05.nc"] == ("division-by-zero", "G65 H05：除数为零（R 为 0）（报警 112）")
+    assert zh["DIVIDE.nc"] == ("division-by-zero", "除数为零（报警 112）")  # said once
     for name, (code, message) in zh.items():
         assert en[name][0] == code
         assert_chinese(message)

@@ -59,10 +59,11 @@ def test_5_calls_computed_program_not_found(tmp_path):
     assert found(near, "program-not-found") == []
 
 
-def test_6_alarms_macro_alarm_shows_number_and_text_as_a_warning(tmp_path):
+def test_6_alarms_macro_alarm_shows_number_and_text(tmp_path):
+    # a main program that sets #1 itself reaches the alarm on every run: an error
     diags = analyse(tmp_path, {"O0001.nc": "O0001\n#1=1\nIF[#1 EQ 1] THEN #3000=7(TOOL BROKEN)\nM30\n"})
     [d] = [d for d in diags if d.code == "macro-alarm"]
-    assert (d.line + 1, d.severity) == (3, "warning")
+    assert (d.line + 1, d.severity) == (3, "error")
     assert "3007" in d.message and "TOOL BROKEN" in d.message
     near = analyse(tmp_path, {"O0001.nc": "O0001\n#1=2\nIF[#1 EQ 1] THEN #3000=7(TOOL BROKEN)\nM30\n"})
     assert found(near, "macro-alarm") == []

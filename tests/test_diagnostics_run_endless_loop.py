@@ -14,8 +14,8 @@ ENDLESS = "an endless loop"
 
 
 def limits(diags: list[Diagnostic]) -> list[tuple[str, int, str]]:
-    """(file name, 1-based line, message) of each ``run-limit`` finding."""
-    return [(Path(d.file).name, d.line + 1, d.message) for d in diags if d.code == "run-limit"]
+    """(file name, 1-based line, message) of each ``run-limit`` and ``endless-loop`` finding."""
+    return [(Path(d.file).name, d.line + 1, d.message) for d in diags if d.code in ("run-limit", "endless-loop")]
 
 
 def endless_at(tmp_path: Path, files: dict[str, str], **kw: object) -> tuple[str, int]:
@@ -88,7 +88,7 @@ def test_4_control_flow_an_edit_before_an_endless_loop_finds_it_again_as_from_sc
 
     ws = WorkspaceAnalysis(settings=MachineSettings(date=20261122, time=80000))
     ws.open(path, "\n".join(lines), 1)
-    assert [(line, code) for line, code, _ in found(ws)] == [(8, "run-limit"), (9, "not-executed")]
+    assert [(line, code) for line, code, _ in found(ws)] == [(8, "endless-loop"), (9, "not-executed")]
     ws.change(path, 2, 3, 2, 4, "2", 2)
     lines[2] = "#5=2"
     again = found(ws)

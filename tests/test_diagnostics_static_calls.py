@@ -21,15 +21,15 @@ def test_5_calls_a_modal_g_code_before_g65_is_alarm_127_on_gsk980tdi():
     assert alarm(text, "gsk980tdi") == (127, 2)
 
 
-def test_5_calls_a_modal_g_code_before_g65_is_a_warning_on_fanuc_that_says_what_the_control_does():
+def test_5_calls_a_modal_g_code_before_g65_is_a_hint_on_fanuc_that_says_what_the_control_does():
     text = lines("O1000", "G90 G54 G65 P1001 A1", "M30", "O1001", "M99")
     [d] = coded(check(text), "g65-nc-words")
-    assert at(d) == (2, 0, 7, "warning")
+    assert at(d) == (2, 0, 7, "hint")
     assert "sets G90 G54 (it stays in force) and then G65 calls the macro" in d.message
     [zh] = coded(check(text, locale="zh-CN"), "g65-nc-words")
     assert "先执行 G90 G54" in zh.message
     g66 = lines("O1000", "G54 G66 P1001 A1", "G67", "M30", "O1001", "M99")
-    assert [at(d) for d in coded(check(g66), "g65-nc-words")] == [(2, 0, 3, "warning")]
+    assert [at(d) for d in coded(check(g66), "g65-nc-words")] == [(2, 0, 3, "hint")]
 
 
 def test_5_calls_a_modal_g_code_before_g65_takes_effect_and_the_macro_is_called_on_fanuc():

@@ -87,13 +87,13 @@ def test_levels_rules_and_related_locations(tmp_path: Path, monkeypatch: pytest.
         Diagnostic("O9100.nc", 6, 0, 6, 30, "warning", "macro-alarm", "ALARM 3001: HOLE COUNT MISSING", (caller,)),
         Diagnostic("O9100.nc", 9, 3, 9, 6, "information", "vacant-argument", "#2 (B) is never passed"),
         Diagnostic("O9100.nc", 20, 0, 22, 4, "hint", "not-executed", "never reached", tags=("unnecessary",)),
-        Diagnostic("O9100.nc", 3, 0, 3, 5, "error", "macro-alarm", "made an error by the settings"),
+        Diagnostic("O9100.nc", 3, 0, 3, 5, "error", "macro-alarm", "one every run reaches"),
     ]
     log = to_sarif(diagnostics, "0.1.0")
     assert_sarif_structure(log)
     run = log["runs"][0]
     rules = {r["id"]: r["defaultConfiguration"]["level"] for r in run["tool"]["driver"]["rules"]}
-    assert rules == {"macro-alarm": "warning", "not-executed": "note", "vacant-argument": "note"}
+    assert rules == {"macro-alarm": "error", "not-executed": "note", "vacant-argument": "note"}  # its default
     assert [r["level"] for r in run["results"]] == ["warning", "note", "note", "error"]
     related = run["results"][0]["relatedLocations"]
     assert related[0]["message"]["text"] == "called from O1000 with G65 P9100"

@@ -453,9 +453,15 @@ def test_1_text_and_blocks_run_with_locale_zh_cn_notes_limits_and_status_words(t
     bad = cli("run", "--no-save", "--max-blocks", "0", "--locale", "zh-CN", str(f))
     assert (bad.returncode, bad.stderr) == (2, "cncmacro run：--max-blocks 至少为 1\n")
     bad = cli("run", "--no-save", "--set", "100=x", "--locale", "zh-CN", str(f))
-    assert (bad.returncode, bad.stderr) == (2, "cncmacro run：--set '100=x'：'x' 不是数值\n")
+    assert (bad.returncode, bad.stderr) == (
+        2, "cncmacro run：--set '100=x'：'x' 不是数值；应写成“变量号=数值”，例如 --set 100=5 或 --set '#100=5'\n"
+    )  # fmt: skip
     bad = cli("run", "--no-save", "--set", "100=x", str(f))
-    assert (bad.returncode, bad.stderr) == (2, "cncmacro run: --set '100=x': 'x' is not a number\n")
+    assert (bad.returncode, bad.stderr) == (
+        2,
+        "cncmacro run: --set '100=x': 'x' is not a number; write it as NUMBER=VALUE, "
+        "e.g. --set 100=5 or --set '#100=5'\n",
+    )  # fmt: skip
 
 
 def test_1_text_and_blocks_run_with_locale_zh_cn_reports_a_line_that_does_not_parse_in_chinese(

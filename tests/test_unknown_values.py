@@ -96,9 +96,10 @@ def test_a_macro_checked_without_its_caller_gets_notes_not_alarms(tmp_path: Path
         "without its caller, this macro has no arguments; a program in the folder that calls it has it checked with "
         "the caller's [unknown-value]"
     ]
-    # a main program (it ends in M30) starts with vacant locals, as on the control: the alarm
+    # a main program (it ends in M30) starts with vacant locals, as on the control: every run
+    # reaches the alarm, an error (docs/semantics.md §6, macro alarms the program surely reaches)
     code, found = check(tmp_path, text.replace("M99", "M30"))
-    assert code == 0 and found[0] == "2:1: warning: the run reaches macro alarm 3001: T MISSING [macro-alarm]"
+    assert code == 1 and found[0] == "2:1: error: the run reaches macro alarm 3001: T MISSING [macro-alarm]"
 
 
 def test_cncmacro_run_keeps_the_kept_common_vacant(tmp_path: Path) -> None:

@@ -9,12 +9,15 @@ text the program wrote itself (a ``#3000`` message) unchanged. A ``Detail`` surv
 and pickling; string operations on it (an f-string, ``+``) give a plain English ``str``.
 
 Where both texts are at hand (a check's message, a table row's ``en``/``zh``, a word of the
-editor), ``pick(locale, en, zh)`` chooses. ``is_chinese`` is the one place that says which
+editor), ``pick(locale, en, zh)`` chooses, and ``listed`` writes a list as each language does.
+``is_chinese`` is the one place that says which
 locales read Chinese: any ``zh`` locale (``zh``, ``zh-cn``, ``zh-CN``, ``zh_TW``), in any case.
 This module imports nothing of the package, so that every layer may use it.
 """
 
 from __future__ import annotations
+
+from collections.abc import Iterable
 
 
 class Detail(str):
@@ -47,6 +50,12 @@ def is_chinese(locale: str | None) -> bool:
 def pick(locale: str | None, en: str, zh: str) -> str:
     """``zh`` for a Chinese locale (``is_chinese``), else ``en``."""
     return zh if is_chinese(locale) else en
+
+
+def listed(locale: str | None, items: Iterable[object]) -> str:
+    """The items written as a list in the language of ``locale``: ``19, 20`` in English,
+    ``19、20`` in Chinese (its enumeration comma; an ASCII comma between Chinese words is wrong)."""
+    return ("、" if is_chinese(locale) else ", ").join(str(item) for item in items)
 
 
 def in_language(text: str, chinese: bool) -> str:

@@ -69,7 +69,7 @@ async def test_lenses_and_hover_in_chinese_on_a_lathe(gsk_zh: LanguageClient) ->
         (0, "≈ 31 秒 · 切削 50 mm · 快移 0 mm"),
         (1, "T0101 ≈ 31 秒 · 切削 50 mm · 快移 0 mm"),  # its part begins with its own change
     ]
-    assert "加工时间：本程序段约在第 1.0 秒 开始（首次执行时）" in await hover_text(gsk_zh, uri, 3, 0)
+    assert "加工时间：本程序段约在 1.0 秒时开始（首次执行时）" in await hover_text(gsk_zh, uri, 3, 0)
 
 
 async def test_a_grooving_cycles_pecks_are_in_the_lens(gsk_en: LanguageClient) -> None:

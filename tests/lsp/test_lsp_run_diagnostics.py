@@ -60,11 +60,11 @@ async def test_blocks_no_run_reaches_are_hints_tagged_unnecessary(fanuc_en: Lang
     assert "2 lines" in hint.message
 
 
-async def test_a_macro_alarm_is_a_warning_with_its_number_and_text(fanuc_en: LanguageClient) -> None:
+async def test_a_macro_alarm_every_run_reaches_is_an_error_with_its_number_and_text(fanuc_en: LanguageClient) -> None:
     uri = open_file(fanuc_en, FANUC / "run_alarm.nc", "O0100\n#1=6\n#3000=12(SPINDLE NOT READY)\nM30\n")
     got = await diagnostics_for(fanuc_en, uri, 1)
     (alarm,) = [d for d in got.diagnostics if d.code == "macro-alarm"]
-    assert alarm.range.start.line == 2 and alarm.severity == types.DiagnosticSeverity.Warning
+    assert alarm.range.start.line == 2 and alarm.severity == types.DiagnosticSeverity.Error
     assert "3012" in alarm.message and "SPINDLE NOT READY" in alarm.message
 
 
@@ -121,7 +121,8 @@ async def test_gsk_h99_alarm_and_division_found_by_running_in_chinese(gsk_zh: La
     uri = open_file(gsk_zh, GSK / "run_h99.CNC", text)
     got = await diagnostics_for(gsk_zh, uri, 1)
     assert codes(got) == [(4, "not-executed"), (5, "macro-alarm"), (6, "not-executed")]
-    assert got.diagnostics[1].severity == types.DiagnosticSeverity.Warning and "3005" in got.diagnostics[1].message
+    # #2 = 5 x 2 = 10 on every run: the main program always reaches the alarm, an error
+    assert got.diagnostics[1].severity == types.DiagnosticSeverity.Error and "3005" in got.diagnostics[1].message
     edit(gsk_zh, uri, 2, 5, 3, 16, "#3=#2/#1")  # the division by zero comes first now
     got = await diagnostics_for(gsk_zh, uri, 2)
     assert codes(got) == [(4, "not-executed"), (5, "division-by-zero"), (6, "not-executed")]
@@ -132,13 +133,13 @@ async def test_run_findings_follow_the_severity_setting(fanuc_en: LanguageClient
     uri = open_file(fanuc_en, FANUC / "run_sev.nc", "O0100\n#3000=1(STOP)\nM30\n")
     got = await diagnostics_for(fanuc_en, uri, 1)
     assert [(str(d.code), d.severity) for d in got.diagnostics] == [
-        ("macro-alarm", types.DiagnosticSeverity.Warning),
+        ("macro-alarm", types.DiagnosticSeverity.Error),
         ("not-executed", types.DiagnosticSeverity.Hint),
     ]
-    fanuc_en.set_configuration({"severity": {"macro-alarm": "error", "not-executed": "off"}}, section="cncMacro")
+    fanuc_en.set_configuration({"severity": {"macro-alarm": "warning", "not-executed": "off"}}, section="cncMacro")
     fanuc_en.workspace_did_change_configuration(types.DidChangeConfigurationParams(settings=None))
     items = (await published_where(fanuc_en, {uri: lambda items: len(items) == 1}))[uri]
-    assert [(str(d.code), d.severity) for d in items] == [("macro-alarm", types.DiagnosticSeverity.Error)]
+    assert [(str(d.code), d.severity) for d in items] == [("macro-alarm", types.DiagnosticSeverity.Warning)]
     fanuc_en.set_configuration({}, section="cncMacro")
     fanuc_en.workspace_did_change_configuration(types.DidChangeConfigurationParams(settings=None))
     await published_where(fanuc_en, {uri: lambda items: len(items) == 2})

@@ -146,6 +146,17 @@ async def test_the_question_is_in_chinese(fanuc_zh: LanguageClient) -> None:
     assert "第 3 行" in question.message and [a.title for a in question.actions] == ["保留这些顺序号不变", "取消"]
 
 
+async def test_the_labels_kept_are_listed_as_chinese_lists_them(fanuc_zh: LanguageClient) -> None:
+    # GOTO #1 in O0002 may land on its N20 or N30 (lines 7 and 8): keeping both names two lines, with 、
+    text = "O0001\nN1 M98 P0002\nN2 M30\nO0002\n#1=20\nGOTO #1\nN20 #2=1\nN30 #3=1\nM99\n"
+    uri = open_file(fanuc_zh, FANUC / "kept_zh.nc", text)
+    _editor(fanuc_zh, answer="保留这些顺序号不变")
+    kept = await _run(fanuc_zh, RENUMBER, uri=uri, step=10)
+    close_file(fanuc_zh, uri)
+    assert kept["applied"] and kept["kept"] == [7, 8], kept
+    assert "第 7、8 行的顺序号保持不变" in fanuc_zh.messages[-1].message
+
+
 async def test_bad_arguments_get_a_message_not_a_crash(fanuc_en: LanguageClient) -> None:
     _editor(fanuc_en)
     uri = open_file(fanuc_en, FANUC / "bad_args.nc", "O0001\nN1 #1=1\nM30\n")

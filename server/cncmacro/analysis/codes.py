@@ -119,10 +119,10 @@ CODES: dict[str, Code] = _codes(
          BOTH, subjects=("jump-into-loop",)),
     Code("g65-nc-words", ERROR,
          detail("G65/G66 shares its block with another G or M code, an O word or a prior word (a modal G code "
-                "before it is a warning where the control sets it and calls).",
+                "before it is a hint where the control sets it and calls).",
                 "G65/G66 与其他 G 或 M 代码、O 代码或其前面的代码在同一程序段"
-                "（系统先执行其前的模态 G 代码再调用时为警告）。"),
-         milder=WARNING),
+                "（系统先执行其前的模态 G 代码再调用时为提示）。"),
+         milder=HINT),
     Code("argument-address", ERROR,
          detail("G, L, N, O or P used as a macro argument (alarm 129).",
                 "G、L、N、O 或 P 用作宏程序自变量（报警 129）。"),
@@ -172,10 +172,13 @@ CODES: dict[str, Code] = _codes(
          detail("A SQRT, ASIN, ACOS or LN argument out of range, found by running (119).",
                 "运行时发现 SQRT、ASIN、ACOS 或 LN 的自变量超出范围（119）。"),
          RUN, (OVERFLOW, ARGUMENT_RANGE)),
-    Code(MACRO_ALARM, WARNING,
-         detail("A run of the program reaches #3000= or G65 H99 (a macro alarm).",
-                "程序运行到 #3000= 或 G65 H99（宏程序报警）。"),
-         RUN),
+    Code(MACRO_ALARM, ERROR,
+         detail("A run of the program reaches #3000= or G65 H99 (a macro alarm): an error where every run of a main "
+                "program stops there, a warning where the path depends on values the machine knows or the macro is "
+                "checked without its caller.",
+                "程序运行到 #3000= 或 G65 H99（宏程序报警）：主程序每次运行都会在此停止时为错误；"
+                "路径取决于机床上的数值或宏程序未经调用者单独检查时为警告。"),
+         RUN, milder=WARNING),
     Code("vacant-argument", INFORMATION,
          detail("A macro reads an argument that a caller never passes.", "宏程序读取了调用者没有传递的自变量。"), RUN),
     Code("unknown-value", HINT,
@@ -187,6 +190,12 @@ CODES: dict[str, Code] = _codes(
                 "没有给出这个值，分析运行在此停止：在 .cncmacro.toml 的 [variables] 或它指定的断电保持变量文件中给出"
                 "该值即可继续检查。"),
          RUN, subjects=("unknown-value",)),
+    Code("endless-loop", ERROR,
+         detail("A WHILE loop or IF..GOTO back whose condition nothing in it changes: the control never leaves it "
+                "(a warning where the loop reads common variables another path or the operator could change).",
+                "WHILE 循环或向回转移的 IF..GOTO，其条件在循环内无任何改变：控制器永远不会离开"
+                "（循环读取其他通道或操作者可能修改的公共变量时为警告）。"),
+         RUN, milder=WARNING),
     Code("run-limit", INFORMATION,
          detail("The analysis run stopped at its block budget (a possible endless loop), or in an endless "
                 "loop that comes back with nothing changed.",

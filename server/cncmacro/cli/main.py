@@ -10,7 +10,9 @@ import argparse
 import sys
 
 from .. import __version__
+from ..dialects.registry import all_profiles
 from .check import main_check
+from .locale_option import add_locale_option
 from .profiles import add_dialect_option, add_profiles_parser
 from .run import add_run_parser
 
@@ -18,8 +20,9 @@ from .run import add_run_parser
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="cncmacro",
-        description="Check CNC custom-macro programs (FANUC 0i and 30i Macro B, GSK980TDi) "
-        "before they reach a machine.",
+        description="Check CNC custom-macro programs before they reach a machine. Controls: "
+        + "; ".join(f"{d.title} ({d.name})" for d in all_profiles())
+        + " (cncmacro profiles lists them).",
     )
     parser.add_argument("--version", action="version", version=f"cncmacro {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
@@ -35,7 +38,7 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument(
         "--path", action="append", default=[], metavar="DIR", help="another folder where called programs are looked up"
     )
-    check.add_argument("--locale", choices=("en", "zh-CN"), default="en", help="language of the messages (default en)")
+    add_locale_option(check, "the messages")
     check.add_argument(
         "--max-blocks", type=int, metavar="N", help="block budget of each analysis run (default 1000000)"
     )

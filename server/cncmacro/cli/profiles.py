@@ -38,9 +38,10 @@ def main_profiles(args: argparse.Namespace) -> int:
     if args.json:
         sys.stdout.write(json_text(facts, indent=1) + "\n")
         return 0
+    width = max(len(f["name"]) for f in facts) + 1
     for f in facts:
         kind = "lathe" if f["lathe"] else "mill"
         also = f" (also: {', '.join(f['aliases'])})" if f["aliases"] else ""
         default = " [default]" if f["default"] else ""
-        print(f"{f['name']:<12} {f['title']} — {f['summary']}; {kind}{default}{also}")
+        print(f"{f['name']:<{width}} {f['title']} — {f['summary']}; {kind}{default}{also}")
     return 0

@@ -19,7 +19,11 @@ control characters in them are shown escaped, never sent raw.
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, TextIO
 
@@ -35,6 +39,7 @@ from ..planner.move_json import machine_json, move_json
 from ..planner.moves import Move
 from ..planner.numbers import format_plain
 from .cycle_report import cycle_json, write_cycle_text
+from .locale_option import add_locale_option
 from .profiles import add_dialect_option
 from .terminal import Printable, TextOut, json_text
 
@@ -69,10 +74,7 @@ def add_run_parser(sub: Any) -> None:
     run.add_argument("--machine", metavar="FILE", help="machine settings (default: the nearest .cncmacro.toml)")
     run.add_argument("--max-blocks", type=int, metavar="N", help="stop after N blocks (default 1000000)")
     run.add_argument("--json", action="store_true", help="print the result as JSON")
-    run.add_argument(
-        "--locale", choices=("en", "zh-CN"), default="en",
-        help="language of the text output, alarm details and notes (default en)",
-    )  # fmt: skip
+    add_locale_option(run, "the text output, alarm details and notes")
     run.add_argument(
         "--no-save", action="store_true", help="do not write #500-#999 back to the persistent-variable file"
     )
@@ -94,7 +96,35 @@ def add_run_parser(sub: Any) -> None:
 
 
 def main_run(args: argparse.Namespace, out: TextIO | None = None, err: TextIO | None = None) -> int:
-    """Run the program; text goes to ``out`` with control characters escaped."""
+    """Run the program; text goes to ``out`` with control characters escaped. Ctrl-C, and a
+    ``SIGTERM`` or ``SIGHUP`` (a closed terminal), end the run through its clean-up: the lock
+    of the persistent variables is let go and its file deleted."""
+    with _ended_cleanly():
+        return _run(args, out, err)
+
+
+@contextmanager
+def _ended_cleanly() -> Iterator[None]:
+    """While the run lasts, ``SIGTERM`` and ``SIGHUP`` raise ``SystemExit(128 + signal)`` as
+    Ctrl-C raises ``KeyboardInterrupt``, so that ``finally`` and ``except`` blocks run; the
+    handlers before are put back after (only the main thread may set them)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    names = [getattr(signal, n) for n in ("SIGTERM", "SIGHUP") if hasattr(signal, n)]
+    before = {n: signal.signal(n, _exit_on_signal) for n in names}
+    try:
+        yield
+    finally:
+        for n, handler in before.items():
+            signal.signal(n, handler)
+
+
+def _exit_on_signal(number: int, frame: object) -> None:
+    raise SystemExit(128 + number)
+
+
+def _run(args: argparse.Namespace, out: TextIO | None, err: TextIO | None) -> int:
     out = out or sys.stdout
     shown_err = Printable(err or sys.stderr)
     path = Path(args.file)

@@ -238,10 +238,11 @@ class Dialect:
         """What to tell a programmer about ``#number`` when it does not exist (English, Chinese):
         below #1000 it names the machine's common ranges, which a machine file may widen."""
         if 100 <= number < 1000:
-            ranges = ", ".join(r.text() for r in self.common_ranges)
+            shown = [r.text() for r in self.common_ranges]
+            ranges = Detail(", ".join(shown), "、".join(shown))
             return detail(f"#{number} is not a common variable of this machine ({self.title}: {ranges}; "
                           "a machine with more sets 'common' in .cncmacro.toml)",
-                          f"#{number} 不是本机床的公共变量（{self.title}：{ranges}；"
+                          f"#{number} 不是本机床的公共变量（{self.title}：{ranges.zh}；"
                           "机床有更多公共变量时，请在机床设置文件中设定）")  # fmt: skip
         return detail(f"#{number} does not exist on {self.title}", f"{self.title} 没有变量 #{number}")
 

@@ -146,7 +146,7 @@ _CONTROL: tuple[SystemVariable, ...] = (
         "alarm",
         "Macro alarm: #3000=n (message) with n 0-200 stops the program with alarm 3000+n; "
         "the message (up to 26 characters) is shown with it. Cannot be read",
-        "宏程序报警：执行#3000=n（报警信息）（n为0～200）时CNC停止运行并报警，报警号为3000+n，"
+        "宏程序报警：执行#3000=n（报警信息）（n为0～200）时CNC停止运行，发出报警 3000+n，"
         "可附不超过26个字符的报警信息。不可读",
         source="alarm",
     ),

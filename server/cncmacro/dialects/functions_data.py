@@ -437,7 +437,7 @@ GSK_H_CODES: tuple[FunctionDoc, ...] = (
         "H99",
         STATEMENT,
         "G65 H99 Pn",
-        "User alarm 5900 + n (H99 P15 raises alarm 5915); a message may follow as (/text)",
-        "产生5900+n号用户报警（H99 P15产生5915号报警）；可用(/报警内容)附加报警信息",
+        "User alarm 5900+n (H99 P15 raises alarm 5915); a message may follow as (/text)",
+        "产生用户报警 5900+n（H99 P15 产生报警 5915）；可用 (/报警内容) 附加报警信息",
     ),
 )

@@ -99,7 +99,7 @@ _CONTROL: tuple[SystemVariable, ...] = (
         "alarm",
         "Macro alarm: #3000=n (message) stops the program with alarm 5900+n (5900-5999); "
         "the message may be left out. Cannot be read",
-        "宏程序报警：执行#3000=n（报警内容）时系统停止运行并报警，报警号为n+5900（范围5900～5999），"
+        "宏程序报警：执行#3000=n（报警内容）时系统停止运行，发出报警 5900+n（范围5900～5999），"
         "报警内容可省略。只能写不能读",
         source="alarm",
     ),
@@ -131,7 +131,7 @@ _CONTROL: tuple[SystemVariable, ...] = (
         "rw",
         "time",
         "System date as a decimal number YYYYMMDD (year/month/day)",
-        "系统时间 年/月/日，以十进制数YYYYMMDD表示",
+        "系统日期（年/月/日），以十进制数YYYYMMDD表示",
         "",
         "date",
     ),
@@ -141,7 +141,7 @@ _CONTROL: tuple[SystemVariable, ...] = (
         "rw",
         "time",
         "System time of day as a decimal number HHMMSS (hour/minute/second)",
-        "系统时间 时/分/秒，以十进制数HHMMSS表示",
+        "系统时间（时/分/秒），以十进制数HHMMSS表示",
         "",
         "time",
     ),

@@ -164,7 +164,10 @@ _CODES: dict[str, CodeDoc] = {
             "G97", "spindle", "Constant surface speed control cancel (S in rev/min)", "恒线速度控制取消（S单位r/min）"
         ),
         CodeDoc(
-            "M01", "", "Optional stop (only when the optional stop switch is on)", "选择停止（选择停止开关打开时有效）"
+            "M01",
+            "",
+            "Optional stop (only when the optional stop switch is on)",
+            "选择停止（仅在选择停止开关打开时有效）",
         ),
         CodeDoc("M02", "", "End of program; modal macro calls are cleared", "程序结束，清除模态宏调用"),
         CodeDoc("M03", "", "Spindle on clockwise", "主轴正转"),

@@ -543,7 +543,7 @@ def _system_variables(value: object, fail: _Fail) -> tuple[SystemVariable, ...]:
             first, last = row["numbers"]
         else:
             raise fail(where, detail("needs number = N or numbers = [first, last]",
-                                     "需要 number = 变量号 或 numbers = [起始号, 结束号]"))  # fmt: skip
+                                     "需要“number = 变量号”或“numbers = [起始号,结束号]”"))  # fmt: skip
         if not 1000 <= first <= last <= 99_999_999:
             raise fail(where, detail("system variables are numbered from #1000 up", "系统变量号从 #1000 开始"))
         access = row.get("access", "rw")
@@ -562,7 +562,7 @@ def _system_variables(value: object, fail: _Fail) -> tuple[SystemVariable, ...]:
 
 def _variables(table: object, fail: _Fail) -> dict[int, float]:
     if not isinstance(table, dict):
-        raise fail("variables", detail("must be a table of number = value", "必须是 变量号 = 数值 形式的表"))
+        raise fail("variables", detail("must be a table of number = value", "必须是“变量号 = 数值”形式的表"))
     out: dict[int, float] = {}
     for k, v in table.items():
         key = str(k).lstrip("#")
@@ -577,7 +577,7 @@ def _variables(table: object, fail: _Fail) -> dict[int, float]:
 
 def _calls(table: object, fail: _Fail) -> dict[str, CallCode]:
     if not isinstance(table, dict):
-        raise fail("calls", detail("must be a table of code = program", "必须是 代码 = 程序号 形式的表"))
+        raise fail("calls", detail("must be a table of code = program", "必须是“代码 = 程序号”形式的表"))
     out: dict[str, CallCode] = {}
     for k, v in table.items():
         code = str(k).upper()
@@ -634,7 +634,7 @@ def _severity(table: object, fail: _Fail) -> dict[str, str]:
     checked where the diagnostics are made (the analysis layer knows the codes)."""
     if not isinstance(table, dict):
         raise fail("severity", detail("must be a table of diagnostic code = severity",
-                                      "必须是 诊断代码 = 严重程度 形式的表"))  # fmt: skip
+                                      "必须是“诊断代码 = 严重程度”形式的表"))  # fmt: skip
     out: dict[str, str] = {}
     for k, v in table.items():
         if not isinstance(v, str) or v.strip().lower() not in SEVERITY_VALUES:
@@ -659,18 +659,21 @@ def _code_key(code: str) -> str:
 
 
 def parse_preset(text: str) -> tuple[int, float]:
-    """``100=5`` or ``#2001=0.5`` from ``--set``; ``ValueError`` with a plain message."""
+    """``100=5`` or ``#2001=0.5`` from ``--set`` (the ``#`` may be left out; spaces around the
+    parts are allowed); ``ValueError`` with a plain message that shows the expected form."""
+    form = detail("write it as NUMBER=VALUE, e.g. --set 100=5 or --set '#100=5'",
+                  "应写成“变量号=数值”，例如 --set 100=5 或 --set '#100=5'")  # fmt: skip
     name, sep, value = text.partition("=")
-    name = name.strip().lstrip("#")
-    if not sep or not name.isdigit():
-        raise ValueError(detail(f"--set {text!r}: write it as NUMBER=VALUE, e.g. --set 100=5",
-                                f"--set {text!r}：应写成 变量号=数值，例如 --set 100=5"))  # fmt: skip
+    name = name.strip()
+    name = name[1:].strip() if name.startswith("#") else name
+    if not sep or not name.isascii() or not name.isdigit():
+        raise ValueError(detail(f"--set {text!r}: {form}", f"--set {text!r}：{form.zh}"))
     try:
         v = float(value)
     except ValueError:
-        raise ValueError(detail(f"--set {text!r}: {value.strip()!r} is not a number",
-                                f"--set {text!r}：{value.strip()!r} 不是数值")) from None  # fmt: skip
+        raise ValueError(detail(f"--set {text!r}: {value.strip()!r} is not a number; {form}",
+                                f"--set {text!r}：{value.strip()!r} 不是数值；{form.zh}")) from None  # fmt: skip
     if v != v or v in (float("inf"), float("-inf")):
-        raise ValueError(detail(f"--set {text!r}: the value must be a finite number",
-                                f"--set {text!r}：数值必须是有限数"))  # fmt: skip
+        raise ValueError(detail(f"--set {text!r}: the value must be a finite number; {form}",
+                                f"--set {text!r}：数值必须是有限数；{form.zh}"))  # fmt: skip
     return int(name), v

@@ -6,11 +6,13 @@ start together or not; a debug session holds it from its launch until it ends. T
 taken on a sibling file, ``<name>.lock`` beside the (link-resolved) variable file, never on the
 variable file itself: a save renames a new file over that one, and a lock on the replaced file
 would guard nothing. The lock file holds the process number of the run that has the lock, for
-the message of a run that waits for it in vain. It stays while there is a variable file to
-guard; a run that leaves none (it kept nothing) deletes it while it still holds the lock
-(``PersistentLock.remove``), so that nothing of it is left beside the program. A run that was
-waiting on the deleted file finds, once it has the lock, that the path no longer names the file
-it locked, and locks the path anew: two runs never hold locks on two different files. A run
+the message of a run that waits for it in vain. A run deletes it while it still holds the lock
+(``PersistentLock.remove``) when it is done, saved or not, so that nothing of it is left beside
+the programs. A run that was waiting on the deleted file finds, once it has the lock, that the
+path no longer names the file it locked, and locks the path anew: two runs never hold locks on
+two different files. A lock file left behind by a run that was killed (``kill -9``, a power
+cut) blocks nobody: the system lets go of a dead process's locks, so the next run takes it at
+once and deletes it when it is done. A run
 that only reads (``--no-save``, ``noSave``) takes no lock: the atomic rename already gives it
 a whole file.
 
@@ -74,9 +76,9 @@ class PersistentLock:
             os.close(fd)
 
     def remove(self) -> None:
-        """Delete the lock file while this run still holds it, then release it: for a run that
-        leaves no variable file for the lock to guard. Where the file cannot be deleted (a
-        folder that is not writable; Windows, while another run has it open) it stays."""
+        """Delete the lock file while this run still holds it, then release it: the run is over.
+        Where the file cannot be deleted (a folder that is not writable; Windows, while another
+        run has it open) it stays."""
         if self.fd is not None:
             try:
                 os.unlink(self.path)

@@ -163,6 +163,6 @@ def _contacts(value: object, fail: _Fail) -> tuple[Contact, ...]:
         if not point:
             raise fail("skip.contacts", detail(
                 f'contact {k} must be a table of axis = position ({{ X = 24.98, Y = 0 }}) or "miss"',
-                f'第 {k} 个接触点必须是 轴地址 = 位置 形式的表（{{ X = 24.98, Y = 0 }}）或 "miss"'))  # fmt: skip
+                f'第 {k} 个接触点必须是“轴地址 = 位置”形式的表（{{ X = 24.98, Y = 0 }}）或 "miss"'))  # fmt: skip
         out.append(Contact(tuple(point)))
     return tuple(out)

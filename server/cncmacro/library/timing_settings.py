@@ -54,7 +54,7 @@ def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> T
         if rates is None or not all(len(k) == 1 and k.isascii() and k.isalpha() and r for k, r in rates.items()):
             raise fail("timing.rapid", detail("must map axis letters to rapid rates above 0 (mm/min), "
                                               "such as { X = 30000, Z = 24000 }",
-                                              "必须是 轴地址 = 快移速度（大于 0，mm/min）形式的表，"
+                                              "必须是“轴地址 = 快移速度”（大于 0，mm/min）形式的表，"
                                               "如 { X = 30000, Z = 24000 }"))  # fmt: skip
         out["rapid"] = {k: r for k, r in rates.items() if r}  # every rate is above 0 here
     if "tool_change" in table:
@@ -97,7 +97,7 @@ def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> T
     if "m_codes" in table:
         codes = table["m_codes"]
         bad = detail(
-            "must map M codes to seconds, such as { M08 = 0.5 }", "必须是 M 代码 = 秒数 形式的表，如 { M08 = 0.5 }"
+            "must map M codes to seconds, such as { M08 = 0.5 }", "必须是“M 代码 = 秒数”形式的表，如 { M08 = 0.5 }"
         )
         if not isinstance(codes, dict):
             raise fail("timing.m_codes", bad)

@@ -24,6 +24,7 @@ from ..analysis.editing.sequence_numbers import (
     remove_unused_sequence_numbers,
     renumber,
 )
+from ..bilingual import listed
 from .cursor import doc_range
 from .documents import OpenDocument
 from .navigation import machine_calls
@@ -151,7 +152,7 @@ async def run_command(ls: CncMacroServer, command: str, arg: dict[str, Any]) -> 
         ls.window_show_message(
             types.ShowMessageParams(
                 types.MessageType.Info,
-                t("labels_kept", loc, label=label, lines=", ".join(str(i) for i in result["kept"])),
+                t("labels_kept", loc, label=label, lines=listed(loc, result["kept"])),
             )
         )
     return result

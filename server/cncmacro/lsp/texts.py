@@ -13,9 +13,9 @@ TEXTS: dict[str, tuple[str, str]] = {
     "persistent": ("Common variable (kept at power-off)", "公共变量（断电保持）"),
     "system": ("System variable", "系统变量"),
     "null": ("#0: always vacant, read-only", "#0：总是空，只读"),
-    "undefined": ("No such variable in this dialect (alarm 115)", "该系统中不存在此变量（115号报警）"),
+    "undefined": ("No such variable in this dialect (alarm 115)", "该系统中不存在此变量（报警 115）"),
     "name": ("System variable name", "系统变量名"),
-    "no_names": ("This dialect has no system variable names (alarm 114)", "该系统不支持系统变量名（114号报警）"),
+    "no_names": ("This dialect has no system variable names (alarm 114)", "该系统不支持系统变量名（报警 114）"),
     "r": ("read-only", "只读"),
     "w": ("write-only", "只写"),
     "rw": ("read/write", "可读写"),
@@ -89,7 +89,7 @@ TEXTS: dict[str, tuple[str, str]] = {
     # hover: the cycle time
     "starts_at": (
         "Cycle time: this block starts at ≈ {shown} (the first time it runs)",
-        "加工时间：本程序段约在第 {shown} 开始（首次执行时）",
+        "加工时间：本程序段约在 {shown}时开始（首次执行时）",
     ),
     # inlay hints
     "vacant": ("<vacant>", "<空>"),
@@ -108,8 +108,8 @@ TEXTS: dict[str, tuple[str, str]] = {
         "在 .cncmacro.toml 中设定 lathe = true：{title}（对工作区所有文件生效）",
     ),
     "fix_split": ("Split: move {words} to a block before the {name}", "拆分：把 {words} 移到 {name} 之前的单独程序段"),
-    "fix_clamp": ("Clamp the repeat count to {value}", "把重复次数改为{value}"),
-    "fix_expand": ("Write {word} in full", "把{text}写全为{word}"),
+    "fix_clamp": ("Clamp the repeat count to {value}", "把重复次数改为 {value}"),
+    "fix_expand": ("Write {word} in full", "把 {text} 写全为 {word}"),
     "fix_if_goto": ("Write it as {text}", "改写为 {text}"),
     # the sequence-number commands
     "renumber": ("Renumber sequence numbers", "重新编排顺序号"),

@@ -202,7 +202,7 @@ def _macro_call(
         out.append(BlockProblem(
             CALL_WITHOUT_P, PROGRAM_NOT_FOUND,
             detail(f"{name} needs P: the program to call", f"{name} 需要用 P 指定被调用的程序"),
-            detail(f"{name} needs P: the program to call (alarm 76)", f"{name} 需要 P 指定被调用的程序（报警 076）"),
+            detail(f"{name} needs P: the program to call (alarm 76)", f"{name} 需要 P 指定被调用的程序（报警 76）"),
             call.start, call.end,
         ))  # fmt: skip
 

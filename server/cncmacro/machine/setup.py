@@ -9,8 +9,9 @@ will save them holds the file's lock (``persistence_lock``) from before it reads
 ``PreparedRun.save`` has written them back, so runs that share the file take turns; values in
 the file that this machine does not hold (the 30i's ``#98000–`` under a 0i profile) are
 written back as they were. The file is written only when the run changed a persistent
-variable (a run that keeps nothing leaves no file, nor a lock file, beside the program; a file
-whose values did not change is left as it is), for ``cncmacro run`` and the debugger alike.
+variable (a run that keeps nothing leaves no file beside the program; a file whose values did
+not change is left as it is), for ``cncmacro run`` and the debugger alike; the lock file is
+deleted when the run lets the file go, whether it saved or not.
 Every mistake a person can make here
 (an unreadable or binary program, a bad machine file, a damaged persistent file, a preset of
 a variable that cannot be preset) is a ``SetupError`` whose message says what is wrong.
@@ -18,7 +19,6 @@ a variable that cannot be preset) is a ``SetupError`` whose message says what is
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -57,7 +57,7 @@ class PreparedRun:
     def save(self) -> None:
         """Write ``#500–#999`` back atomically, once, when the run changed one of them, and let
         the next run have the file (``OSError`` passes through). A run that changed none writes
-        nothing; when there is no file either, it deletes the lock file it made."""
+        nothing."""
         if self.saved:
             return
         self.saved = True
@@ -65,15 +65,14 @@ class PreparedRun:
             values = {**self.kept, **self.machine.persistent_values()}
             if values != self.stored:
                 save_persistent(self.persistent_file, values)
-            elif self.lock is not None and not os.path.lexists(self.persistent_file):
-                self.lock.remove()
         finally:
             self.release()
 
     def release(self) -> None:
-        """Let the next run have the file without writing it."""
+        """Let the next run have the file without writing it, deleting the lock file: nothing
+        of the lock is left beside the programs once the run is over."""
         if self.lock is not None:
-            self.lock.release()
+            self.lock.remove()
             self.lock = None
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from ..bilingual import Detail, detail
 from .alarms import MacroAlarm
 
 if TYPE_CHECKING:
@@ -54,10 +55,16 @@ class VariableSets:
                 elif row.source in ("store", "date", "time", "timer"):
                     self.S[n] = v
                 else:
-                    raise ValueError(f"#{n} ({row.en.split(';')[0]}) is computed by the machine and cannot be preset")
+                    name = Detail(row.en.split(";")[0].split(" (")[0], row.zh.split("；")[0].split("（")[0])
+                    raise ValueError(detail(f"#{n} ({name}) is computed by the machine and cannot be preset",
+                                            f"#{n}（{name.zh}）由机床计算，不能预设"))  # fmt: skip
                 self.preset_system.add(n)
             else:
-                raise ValueError(f"#{n} is not a variable of {self.dialect.title} that can be preset")
+                raise ValueError(detail(
+                    f"#{n} is not a variable of {self.dialect.title} that can be preset "
+                    "(local #1-#33, common and persistent variables, offsets and other stored system variables can)",
+                    f"#{n} 不是 {self.dialect.title} 可预设的变量"
+                    "（可预设局部变量 #1～#33、公共变量与断电保持变量、刀补等存储型系统变量）"))  # fmt: skip
 
     def load_persistent(self, values: dict[int, float]) -> None:
         """Put back the values kept at power-off (the machine's persistent common ranges)."""

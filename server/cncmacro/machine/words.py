@@ -90,7 +90,7 @@ def m_decimal_point(word: Word) -> Detail | None:
     whole = text.split(".")[0] or "0"
     return detail(
         f"M{text}: an M code takes no decimal point (alarm 007 illegal use of decimal point); write M{whole}",
-        f"M{text}：M代码不能带小数点（报警 007 小数点使用不当）；请写作 M{whole}",
+        f"M{text}：M代码不能带小数点（报警 007）；请写作 M{whole}",
     )
 
 

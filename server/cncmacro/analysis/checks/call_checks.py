@@ -406,7 +406,7 @@ def _subprogram_call(words: tuple[Word, ...], call: BlockCall, ctx: LineContext,
         if q_word is None:
             _add(facts, m, "program-not-found",
                  f"{how} needs P (the program), or Q to call the current program (alarm 76)",
-                 f"{how} 需要 P 指定子程序，或用 Q 调用当前程序（报警 076）", ctx)  # fmt: skip
+                 f"{how} 需要 P 指定子程序，或用 Q 调用当前程序（报警 76）", ctx)  # fmt: skip
             return
         if q is not None:
             facts.calls.append(CallSite(how, None, None, m, m, label=q, label_span=q_span))

@@ -68,7 +68,7 @@ def not_found(site: CallSite, file: str, line: int, locale: str) -> Diagnostic:
     message = pick(
         locale,
         f"{site.kind} calls {what}, which is neither in this file nor found near it (alarm 76)",
-        f"{site.kind} 调用的程序 {what} 不在本文件中，附近也找不到（报警 076）",
+        f"{site.kind} 调用的程序 {what} 不在本文件中，附近也找不到（报警 76）",
     )
     end = max(site.end, site.start + 1)
     return diagnostic(file, line, site.start, line, end, "program-not-found", message)

@@ -244,5 +244,5 @@ def _index_full(root: Path, left: int) -> Detail:
     shown = shown_text(str(root))
     return detail(
         f"{shown}: {left:,} program files are not indexed: the index holds {MAX_INDEX_BYTES:,} bytes of text already",
-        f"{shown}：{left:,} 个程序文件未编入索引：索引已有 {MAX_INDEX_BYTES:,} 字节的文本",
+        f"{shown}：{left:,} 个程序文件未编入索引：已编入的文本已达 {MAX_INDEX_BYTES:,} 字节",
     )

@@ -27,7 +27,9 @@ loop for ever is analysed in bounded time too), a wall-clock limit (``max_second
 rewind, across cancelled and resumed advances) and a cap on what the machine records
 (``max_records`` notes: messages, DPRNT output, call remarks). A run that reaches one stops
 with a ``run-limit`` diagnostic saying which. A run that comes back to the same place with an
-equal state can never end, and stops there sooner, with a ``run-limit`` diagnostic that says so:
+equal state can never end, and stops there sooner, with a diagnostic that says so (an
+``endless-loop`` error where the control surely never leaves it, ``endless_loops.py``, else
+``run-limit``):
 at a jump back or a change of frame the machine asks ``came_back``, which counts the passes of
 each; at the ``LOOK_FROM``-th pass and every power of two after it, the run pauses there and
 keeps a ``Snapshot``, and compares it with the state at the next pass (``look``,
@@ -47,7 +49,7 @@ from dataclasses import dataclass, field
 from operator import itemgetter
 from pathlib import Path
 
-from ...bilingual import in_language, pick
+from ...bilingual import Detail, in_language, pick
 from ...dialects import Dialect
 from ...dialects.alarms import alarm_text
 from ...library.machine_file import MachineSettings
@@ -60,7 +62,9 @@ from ...machine.tracking import same_state
 from ...planner.alarms import UNKNOWN_VALUE
 from ..codes import MACRO_ALARM, alarm_code
 from ..diagnostics import Diagnostic, Related, diagnostic
+from .endless_loops import SHARED, loop_certainty
 from .run_convergence import Earlier, keep_earlier, try_converge
+from .sure_alarms import surely_reached
 from .unknown_stops import named_persistent_values, runs_as_macro, unknown_value_text
 
 CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again before converging
@@ -162,7 +166,7 @@ class EntryRun(RunObserver):
         self.back_passes: dict[int, int] = {}
         self.watches: dict[int, tuple[int, Snapshot]] = {}
         self.looking: tuple[int, int, int, int] | None = None  # (key, pass, line, to)
-        self.endless_at: tuple[str, int] | None = None
+        self.endless_at: tuple[str, int, int] | None = None  # (file, jump line or -1, line jumped to)
         self.restart()
 
     # ---------------------------------------------------------------- running
@@ -256,7 +260,7 @@ class EntryRun(RunObserver):
             self.watches[key] = (k, snap)
         elif same_state(kept[1], snap, clock=self.may_read_clock(self.last_run)):
             self.stopped_by = "endless"
-            self.endless_at = (m.frames[-1].file, line if line >= 0 else to)
+            self.endless_at = (m.frames[-1].file, line, to)
             m.status = RunStatus.LIMIT
         return m.status
 
@@ -523,7 +527,10 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
         zh = f"运行到宏程序{a.words('zh')}：{in_language(a.message, True)}"
     else:
         en = f"{a.message} ({a.words()})"
-        zh = f"{alarm_text(a.number, 'zh')}（{a.words('zh')}）：{in_language(a.message, True)}"
+        if isinstance(a.message, Detail):  # its Chinese says what the alarm is: no title before it
+            zh = f"{a.message.zh}（{a.words('zh')}）"
+        else:  # a text without Chinese: the alarm's title in Chinese says what it is
+            zh = f"{alarm_text(a.number, 'zh')}（{a.words('zh')}）：{a.message}"
     in_loop = bool(m.frames and m.frames[-1].loops)
     if in_loop:
         do_line = m.frames[-1].loops[-1]
@@ -532,7 +539,35 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
             kind = "WHILE" if "WHILE" in line_text(a.file, do_line).upper() else "DO"
             en += f", in iteration {k} of the {kind} loop at line {do_line + 1}"
             zh += f"，第 {do_line + 1} 行 {kind} 循环的第 {k} 次迭代"
-    return _diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale)
+    milder = False
+    if code == MACRO_ALARM:  # an error where every run of the main program stops there (sure_alarms.py)
+        path = [(f, line) for _, f, line in run.state.order]
+        path.append((a.file, a.line))
+        milder = runs_as_macro(run.entry) or not surely_reached(path, line_text, m.kinds)
+    return _diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale, milder=milder)
+
+
+def _endless_diagnostic(
+    run: EntryRun, at: tuple[str, int, int], line_text: Callable[[str, int], str], locale: str
+) -> Diagnostic:
+    """The endless loop the run found at ``at`` (file, jump line or -1, line jumped to): an
+    ``endless-loop`` error, or warning, where the control surely never leaves it
+    (``endless_loops.loop_certainty``), else the run's ``run-limit`` note."""
+    m = run.machine
+    path, jump, to = at
+    line = jump if jump >= 0 else to
+    en = (
+        f"an endless loop: line {line + 1} comes back with every variable and position unchanged; "
+        "the control would never leave it"
+    )
+    zh = f"死循环：第 {line + 1} 行再次执行时所有变量和位置都没有变化，控制器永远不会离开这里"
+    certainty = loop_certainty(lambda k: line_text(path, k), jump, to, m.kinds)
+    if certainty == SHARED:
+        en += " unless another path of the control or the operator changes the common variables it reads"
+        zh += "，除非其他通道或操作者修改了它读取的公共变量"
+    code = "run-limit" if certainty is None else "endless-loop"
+    return _diagnostic(path, line, code, en, zh, m.chain(), None, False, line_text, locale,
+                       milder=certainty == SHARED)  # fmt: skip
 
 
 def run_diagnostics(
@@ -556,13 +591,7 @@ def run_diagnostics(
     elif m.status == RunStatus.LIMIT and run.stopped_by in (None, "endless") and m.in_main_loop():
         pass  # the main program's loop back (Haas M99 Pn): a production loop, which never ends
     elif m.status == RunStatus.LIMIT and m.frames and run.endless_at is not None:
-        path, line = run.endless_at
-        en = (
-            f"an endless loop: line {line + 1} comes back with every variable and position unchanged; "
-            "the control would never leave it"
-        )
-        zh = f"死循环：第 {line + 1} 行再次执行时所有变量和位置都没有变化，控制器永远不会离开这里"
-        out.append(_diagnostic(path, line, "run-limit", en, zh, m.chain(), None, False, line_text, locale))
+        out.append(_endless_diagnostic(run, run.endless_at, line_text, locale))
     elif m.status == RunStatus.LIMIT and m.frames:
         f = m.frames[-1]
         if run.stopped_by == "time":
@@ -616,9 +645,9 @@ def run_diagnostics(
         caller = read.chain[-2] if len(read.chain) >= 2 else None
         how = read.chain[-1].how
         who = f"{caller.program} line {caller.line + 1} ({how})" if caller else "its caller"
-        who_zh = f"{caller.program} 第 {caller.line + 1} 行（{how}）" if caller else "调用者"
+        who_zh = f" {caller.program} 第 {caller.line + 1} 行（{how}）" if caller else "调用者"
         en = f"#{read.number} ({letter}) is read, but {who} does not pass {letter}"
-        zh = f"读取了 #{read.number}（{letter}），但 {who_zh} 没有传递 {letter}"
+        zh = f"读取了 #{read.number}（{letter}），但{who_zh}没有传递 {letter}"
         out.append(_diagnostic(read.file, read.line, "vacant-argument", en, zh, read.chain, None, False, line_text,
                                locale))  # fmt: skip
     return out
@@ -659,9 +688,9 @@ def _diagnostic(
     callers = chain[:-1]
     hows = [c.how for c in chain[1:]]  # how each caller called the next level
     if callers:
-        path = " → ".join(f"{c.program}:{c.line + 1} ({how})" for c, how in zip(callers, hows, strict=True))
-        en += f"; reached from {path}"
-        zh += f"；调用路径 {path}"
+        steps = list(zip(callers, hows, strict=True))
+        en += "; reached from " + " → ".join(f"{c.program}:{c.line + 1} ({how})" for c, how in steps)
+        zh += "；调用路径 " + "→".join(f"{c.program}:{c.line + 1}（{how}）" for c, how in steps)
     if blocks is not None and (in_loop or callers):
         en += f", at block {blocks} of the run" + (" (inside a loop)" if in_loop else "")
         zh += f"，运行的第 {blocks} 个程序段" + ("（循环中）" if in_loop else "")

@@ -59,7 +59,7 @@ class Earlier:
     files: frozenset[str]
     serials: Serials
     resume: int  # the step the resumed run went back to (the earliest, over several rewinds)
-    endless_at: tuple[str, int] | None  # where the run found an endless loop, when it stopped so
+    endless_at: tuple[str, int, int] | None  # where the run found an endless loop (file, line, to), when it stopped so
     changed: dict[str, set[int]] = field(default_factory=dict)  # file -> edited lines
     reads_clock: bool | None = None  # decided at the first comparison
     by_key: dict[tuple[Any, ...], list[int]] = field(default_factory=dict)

@@ -540,7 +540,7 @@ _PALLETS: tuple[SystemVariable, ...] = (
         "rw",
         "control",
         "Pallet {index}: priority in the pallet schedule (read only while the pallet is loaded)",
-        "{index}号托盘：托盘调度中的优先级（托盘装载时只读）",
+        "{index}号托盘：在托盘调度中的优先级（托盘装载时只读）",
     ),
     SystemVariable(
         7601,
@@ -807,7 +807,7 @@ M_CODES: tuple[CodeDoc, ...] = (
         "M01",
         "",
         "Optional stop (when the optional stop switch, #3033, is on)",
-        "选择停止（选择停止开关#3033打开时有效）",
+        "选择停止（仅在选择停止开关#3033打开时有效）",
     ),
     _g("M02", "", "Program end", "程序结束"),
     _g("M03", "", "Spindle forward (clockwise) at S", "主轴正转（顺时针），转速S"),

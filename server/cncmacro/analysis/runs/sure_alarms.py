@@ -1,0 +1,54 @@
+"""Whether every run of a main program reaches the macro alarm the analysis run reached.
+
+A ``#3000=`` (or GSK ``G65 H99``) alarm that a run reaches is the program's own stop. Where
+the run went there on nothing but what the program set itself, the control goes the same way
+every time and stops there on every cycle: an error (docs/semantics.md §6, "Macro alarms the
+program surely reaches"). Where the path may depend on what the machine knows and the folder
+does not, the analysis run only guessed it (a ``macro-alarm`` warning):
+
+- the run did not start at a main program: a subprogram or macro checked alone, without the
+  caller that would pass its arguments (``unknown_stops.runs_as_macro``: it returns with ``M99``
+  and has no ``M30`` or ``M02``), is run with them unknown; the caller decides;
+- a line the run went through, the alarm's included, reads a value the program did not set:
+  a system variable (offsets, positions, parameters, inputs, the clock), a persistent common
+  (``#500``–, kept at power-off: a value in the folder's variable file may not be the one the
+  machine holds when the program runs), an extended common,
+  anything through ``#[..]`` or a ``#_`` name, or a common variable before any line the run
+  went through wrote it (the operator or an earlier program may have left a value there).
+
+Locals count as set by the program: a main program's start vacant, a macro's come from its
+caller's arguments, which the run went through. The lines are read as text
+(``line_reads.py``), in the order the run first ran them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+
+from ...machine.expressions import VariableKinds
+from .line_reads import INDIRECT, code_of, reads, written
+
+
+def surely_reached(
+    path: Iterable[tuple[str, int]],
+    line_text: Callable[[str, int], str],
+    kinds: VariableKinds,
+) -> bool:
+    """Whether the run of a main program, through the (file, line) of ``path`` in the order it
+    first ran them (the alarm's line last), reached its alarm on values the program set itself
+    (see the module docstring)."""
+    set_by_program: set[int] = set()
+    for file, line in path:
+        code = code_of(line_text(file, line))
+        for number in reads(code):
+            if number == INDIRECT:
+                return False
+            kind = kinds.kind(number)
+            if kind == "common" and number not in set_by_program:
+                return False
+            if kind not in ("local", "vacant", "common"):
+                return False
+        target = written(code)
+        if target is not None and target != INDIRECT:
+            set_by_program.add(target)
+    return True

@@ -1,0 +1,133 @@
+"""``cncmacro check`` on shop programs: the severity a finding gets is the one a machinist
+should meet (issue "never cry wolf"): an error where the control surely stops, a hint where
+it runs the block as written."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from cli_capture import cli
+
+
+def _folder(tmp_path: Path, **programs: str) -> Path:
+    for name, text in programs.items():
+        (tmp_path / f"{name}.nc").write_text(text, encoding="utf-8")
+    return tmp_path
+
+
+# ---------------------------------------------------------------- g65-nc-words
+
+
+def test_a_modal_g_code_before_g65_on_fanuc_is_only_a_hint_and_check_is_quiet(tmp_path):
+    folder = _folder(tmp_path, O1000="O1000\nG90 G54 G65 P1001 A1.\nM30\n", O1001="O1001\n#100=#1\nM99\n")
+    for profile in ("fanuc-0i", "fanuc-30i"):
+        code, out, err = cli("check", "--dialect", profile, str(folder))
+        assert (code, out) == (0, ""), out + err  # nothing to say by default
+        code, out, _ = cli("check", "--hints", "--dialect", profile, str(folder))
+        assert code == 0
+        assert ":2:1: hint: G90 G54 before G65" in out and "[g65-nc-words]" in out
+
+
+def test_a_modal_g_code_before_g65_stays_an_error_where_the_control_stops_with_alarm_127(tmp_path):
+    folder = _folder(tmp_path, O1000="O1000\nG90 G54 G65 P1001 A1.\nM30\n", O1001="O1001\n#100=#1\nM99\n")
+    code, out, _ = cli("check", "--dialect", "gsk980tdi", str(folder))
+    assert code == 1
+    assert ":2:1: error: G90 before G65" in out and "alarm 127" in out
+
+
+# ---------------------------------------------------------------- endless loops
+
+
+def test_a_while_loop_whose_condition_nothing_in_it_changes_is_an_error(tmp_path):
+    # #1 is 1 and the body writes only #2: WHILE [#1 LT 10] is true at every pass
+    folder = _folder(tmp_path, O0001="O0001\n#1=1\nWHILE[#1 LT 10]DO1\n#2=5\nG00 X#2\nEND1\nM30\n")
+    code, out, _ = cli("check", str(folder))
+    assert code == 1
+    assert ":6:1: error: an endless loop: line 6 comes back" in out and "[endless-loop]" in out
+    code, out, _ = cli("check", "--locale", "zh-CN", str(folder))
+    assert code == 1 and "死循环：第 6 行" in out
+
+
+def test_an_if_goto_back_on_an_unchanged_local_is_an_error_too(tmp_path):
+    folder = _folder(tmp_path, O0001="O0001\n#1=0\nN5 IF[#1 LT 3] GOTO5\nM30\n")
+    code, out, _ = cli("check", str(folder))
+    assert code == 1 and ":3:1: error: an endless loop" in out
+
+
+def test_a_loop_on_a_common_variable_is_a_warning_another_path_or_the_operator_could_end(tmp_path):
+    folder = _folder(tmp_path, O0001="O0001\n#100=1\nWHILE[#100 LT 10]DO1\n#2=5\nEND1\nM30\n")
+    code, out, _ = cli("check", str(folder))
+    assert code == 0
+    assert ":5:1: warning: an endless loop" in out and "another path of the control or the operator" in out
+
+
+def test_endless_loops_a_shop_writes_on_purpose_or_that_wait_for_the_machine_are_no_error(tmp_path):
+    programs = {
+        "O0001": "O0001\nN1 G00 X0\nG00 X10.\nGOTO1\nM30\n",  # a warm-up: unconditional GOTO back
+        "O0002": "O0002\nDO1\nG00 X0\nEND1\nM30\n",  # DO without WHILE
+        "O0003": "O0003\nWHILE[#1004 EQ 0]DO1\nEND1\nM30\n",  # waits for an input signal
+        "O0004": "O0004\nWHILE[#1 LT 3]DO1\nM98 P5\nEND1\nM30\n",  # calls a program
+        "O0005": "O0005\nM99\n",
+    }
+    code, out, err = cli("check", str(_folder(tmp_path, **programs)))
+    assert code == 0, out + err
+    assert "error" not in out and "warning" not in out and "[endless-loop]" not in out
+    assert out.count("information: an endless loop") == 4
+
+
+# ---------------------------------------------------------------- macro alarms
+
+
+def test_a_macro_alarm_a_main_program_surely_reaches_is_an_error(tmp_path):
+    # #1 = 2 is set by the program; 2 GT 1 on every run, so the control stops there every cycle
+    folder = _folder(tmp_path, O1000="O1000\n#1=2\nIF[#1 GT 1] THEN #3000=1(TOO BIG)\nM30\n")
+    code, out, _ = cli("check", str(folder))
+    assert code == 1
+    assert out.endswith(":3:1: error: the run reaches macro alarm 3001: TOO BIG [macro-alarm]\n")
+
+
+def test_a_macro_alarm_reached_through_a_macro_from_a_main_program_is_an_error(tmp_path):
+    folder = _folder(
+        tmp_path,
+        O1005="O1005\n#100=3\nG65 P9000 A#100\nM30\n",  # #100 set by the program before it is passed
+        O9000="O9000\nIF[#1 GT 1] THEN #3000=2(A TOO BIG)\nM99\n",
+    )
+    code, out, _ = cli("check", str(folder))
+    assert code == 1 and ": error: the run reaches macro alarm 3002: A TOO BIG" in out
+
+
+@pytest.mark.parametrize(
+    "program",
+    [
+        "O1001\nIF[#1004 EQ 0] THEN #3000=1(NO AIR)\nM30\n",  # an input signal
+        "O1001\n#1=#5021\nIF[#1 EQ 0] THEN #3000=1(HOME)\nM30\n",  # a machine position, through a local
+        "O1001\nIF[#100 EQ #0] THEN #3000=1(SET 100)\nM30\n",  # a common the program never set
+        "O1001\n#1=#3001\n#3000=1(CLOCK)\nM30\n",  # the clock
+    ],
+)
+def test_a_macro_alarm_on_a_path_that_depends_on_the_machine_stays_a_warning(tmp_path, program):
+    code, out, _ = cli("check", str(_folder(tmp_path, O1001=program)))
+    assert code == 0
+    assert ": warning: the run reaches macro alarm 3001" in out
+
+
+@pytest.mark.parametrize(
+    "programs",
+    [
+        {"O1001": "O1001\nIF[#500 EQ #0] THEN #3000=1(SET 500)\nM30\n"},  # a kept common: the machine's
+        {"O1001": "O1001\nIF[#2001 LT 0.1] THEN #3000=1(OFFSET)\nM30\n"},  # a tool offset
+        {"O9100": "O9100\nIF[#1 EQ #0] THEN #3000=1(A MISSING)\nM99\n"},  # a macro checked without its caller
+    ],
+)
+def test_a_macro_alarm_behind_a_value_only_the_machine_or_the_caller_has_is_never_an_error(tmp_path, programs):
+    code, out, _ = cli("check", "--hints", str(_folder(tmp_path, **programs)))
+    assert code == 0 and ": error:" not in out, out
+
+
+def test_a_macro_checked_alone_that_reaches_its_alarm_keeps_it_a_warning(tmp_path):
+    # no caller in the folder: the caller decides whether the macro is called this way at all
+    folder = _folder(tmp_path, O9100="O9100\n#3000=1(CALL ME WITH A)\nM99\n")
+    code, out, _ = cli("check", str(folder))
+    assert code == 0 and ": warning: the run reaches macro alarm 3001: CALL ME WITH A" in out
