@@ -605,7 +605,7 @@ def _codes(table: object, calls: dict[str, CallCode], fail: _Fail) -> tuple[Code
     "..." }``): no call, no motion, no alarm; ``en`` and ``zh`` are what hover says of them."""
     if not isinstance(table, dict):
         raise fail("codes", detail('must be a table of code = { en = "...", zh = "..." }',
-                                   '必须是 代码 = { en = "...", zh = "..." } 形式的表'))  # fmt: skip
+                                   '必须是表，每项形如 G120.1 = { en = "...", zh = "..." }'))  # fmt: skip
     out: list[CodeDoc] = []
     for k, v in table.items():
         code = str(k).strip().upper()

@@ -195,13 +195,14 @@ def suggestion(
         at = (calls[0][0], calls[0][1], calls[0][0], calls[0][2])
         lines = sorted({k + 1 for k, _, _ in calls})
     where = ", ".join(str(n) for n in lines[:5]) + (" …" if len(lines) > 5 else "")
+    where_zh = "、".join(str(n) for n in lines[:5]) + ("……" if len(lines) > 5 else "")
     word = "line" if len(lines) == 1 else "lines"
     message = pick(
         locale,
         f"This file uses what {other.title} has and {dialect.title} lacks ({word} {where}). If it was written for "
         f'that control, add (cncmacro: dialect={other.name}) to its first lines, or set base = "{other.name}" '
         "in .cncmacro.toml",
-        f"此文件用到了 {other.title} 才有而 {dialect.title} 没有的功能（第 {where} 行）。若程序是为该系统编写的，"
+        f"此文件用到了 {other.title} 才有而 {dialect.title} 没有的功能（第 {where_zh} 行）。若程序是为该系统编写的，"
         f'请在文件开头加上 (cncmacro: dialect={other.name})，或在 .cncmacro.toml 中设定 base = "{other.name}"',
     )
     return diagnostic(file, *at, CODE, message)
