@@ -72,7 +72,7 @@ test('the toolpath view speaks Chinese, and a short view keeps its axis names an
   const status = view.locator('#status', { hasText: '完成' });
   await status.waitFor({ timeout: 45000 });
   assert.match(await status.innerText(), /个程序段，\d+ 段运动/);
-  assert.match(await view.locator('#legend').innerText(), /快速定位 \(G00\)[\s\S]*固定循环/);
+  assert.match(await view.locator('#legend').innerText(), /快速定位（G00）[\s\S]*固定循环/);
   assert.ok(await page.locator('.part.panel').isVisible(), 'the bottom panel is open');
   await shot('4-toolpath');
 
