@@ -180,7 +180,8 @@ class EntryRun(RunObserver):
         m.load_persistent(named_persistent_values(self.settings))
         m.planner.record_moves = False
         m.start(self.entry)
-        if runs_as_macro(self.entry):  # checked without its caller: its arguments are unknown
+        self.as_macro = runs_as_macro(self.entry)  # read once a run: the notes ask again
+        if self.as_macro:  # checked without its caller: its arguments are unknown
             m.unknown_arguments()
         self.machine = m
         self.state = RunState()
@@ -521,7 +522,7 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
     if a.subject == UNKNOWN_VALUE:
         ran = sorted((line for line in run.state.first.get(a.file, {}) if line < a.line), reverse=True)
         en, zh = unknown_value_text(line_text(a.file, a.line), ((n, line_text(a.file, n)) for n in ran), m.kinds,
-                                    m.dialect, runs_as_macro(run.entry))  # fmt: skip
+                                    m.dialect, run.as_macro)  # fmt: skip
     elif code == MACRO_ALARM:
         en = f"the run reaches macro {a.words()}: {a.message}"
         zh = f"运行到宏程序{a.words('zh')}：{in_language(a.message, True)}"
@@ -543,7 +544,7 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
     if code == MACRO_ALARM:  # an error where every run of the main program stops there (sure_alarms.py)
         path = [(f, line) for _, f, line in run.state.order]
         path.append((a.file, a.line))
-        milder = runs_as_macro(run.entry) or not surely_reached(path, line_text, m.kinds)
+        milder = run.as_macro or not surely_reached(path, line_text, m.kinds)
     return _diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale, milder=milder)
 
 
