@@ -26,7 +26,11 @@ def skipped(block: Block, block_delete: bool) -> bool:
     block while the block delete switch is on)."""
     if block.plain is not None:
         return False
-    return block.is_empty or block.tape or (block_delete and block.block_delete is not None)
+    return (
+        block.is_empty
+        or (block.tape and not block.code_before_mark)
+        or (block_delete and block.block_delete is not None)
+    )
 
 
 def header_only(block: Block) -> bool:

@@ -105,8 +105,9 @@ def _number(tok: _Tok) -> Number:
 
 
 def _varnum(tok: _Tok) -> Var:
-    _literal(tok[1:].strip(), tok.start_pos, tok.end_pos)  # its length is checked
-    return Var(int(tok[1:].strip()), tok.start_pos, tok.end_pos)
+    digits = tok[1:].strip().rstrip(".")  # ``#504.`` is #504
+    _literal(digits, tok.start_pos, tok.end_pos)  # its length is checked
+    return Var(int(digits), tok.start_pos, tok.end_pos)
 
 
 _DPRNT_PIECE = re.compile(r"#[ \t]*(\d+)(?:[ \t]*\[[ \t]*(\d)[ \t]*(\d)[ \t]*\])?|\[|\]|.", re.S)

@@ -126,6 +126,17 @@ def describe_error(code: str, err: UnexpectedInput) -> Problem:
                     f"关系运算符 '{tok}' 只能用在 IF 或 WHILE 条件的 [ ] 中",
                 )
             return Problem(message, start, end)
+        if tok.type == "NUMBER" and str(tok).startswith(".") and _VARIABLE_BEFORE(code[:start]):
+            shown, whole = _fraction_in_variable(code[:start].rstrip() + str(tok))
+            return Problem(
+                detail(
+                    f"a variable number is a whole number: '{shown}' names no variable (write {whole}, "
+                    f"or {whole}. with a point alone, which reads as {whole})",
+                    f"变量号必须是整数：'{shown}' 不是变量（应写成 {whole}；只带小数点的 {whole}. 按 {whole} 读取）",
+                ),
+                start,
+                end,
+            )
         if tok.type == "NUMBER" and "NUMBER" not in expected_set and expected_set != {"NAMED_VAR"}:
             return Problem(
                 detail(
@@ -141,6 +152,16 @@ def describe_error(code: str, err: UnexpectedInput) -> Problem:
         return Problem(detail(f"unexpected '{tok}'{expected}", f"此处不应出现 '{tok}'{expected.zh}"), start, end)
     pos = getattr(err, "pos_in_stream", 0) or 0
     return Problem(detail("the block does not parse", "程序段无法解析"), pos, pos + 1)
+
+
+_VARIABLE_BEFORE = re.compile(r"#[ \t]*\d+$").search
+
+
+def _fraction_in_variable(written: str) -> tuple[str, str]:
+    """``#2.5`` and ``#2`` from the text up to a fraction after a variable number."""
+    m = re.search(r"#[ \t]*\d+\.\d+$", written)
+    shown = m.group(0) if m else written
+    return shown, shown.split(".")[0]
 
 
 def _unclosed_problem(code: str, bracket: int, at: int) -> Problem:

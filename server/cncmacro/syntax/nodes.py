@@ -313,7 +313,8 @@ class Block:
     ``words`` holds the NC words other than those two, in order; ``statements`` the macro
     statements; ``corners`` the comma words (``,C5.``, ``,R#1``), kept apart from ``words``
     because they are no address of their own (``,R`` is not ``R``). ``block_delete`` is None,
-    0 for ``/`` or 1–9 for ``/n``. ``tape`` marks a ``%`` line. ``problems`` are the syntax
+    0 for ``/`` or 1–9 for ``/n``. ``tape`` marks a ``%`` line, or a ``%`` after the code of its
+    line (``M30%``, ``code_before_mark``). ``problems`` are the syntax
     errors and warnings of the line; a block with an error has no words or statements.
     ``structural`` is True when the block has a label, O header, ``%`` mark or loop marker (see
     program.py). ``abbreviations`` lists the macro words written shortened (``WH[..]DO1``), in
@@ -410,6 +411,17 @@ class Block:
             and not self.corners
             and not self.statements
             and not self.has_error
+        )
+
+    @property
+    def code_before_mark(self) -> bool:
+        """True for a ``%`` written after code on its line (``M30%``): the code is a block
+        that runs, and the mark after it ends the tape (docs/semantics.md §1)."""
+        return self.tape and (
+            self.label is not None
+            or self.program is not None
+            or bool(self.words or self.corners or self.statements)
+            or self.has_error
         )
 
     def comment_after(self, column: int) -> str | None:

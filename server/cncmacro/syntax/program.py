@@ -10,7 +10,9 @@ The tape ends at its closing ``%`` (docs/semantics.md §1): a ``%`` line before 
 starts the tape, the next one ends it, and a ``%`` after program text ends it at once (a line
 that starts with the DOS end-of-file character reads as such a mark). What follows the end
 (``tape_end``) is not part of the program: no unit, loop or tape mark is taken from it, and
-every layer above passes it over. Reading ends at the closing ``%`` itself (``Program.read_end``,
+every layer above passes it over. A ``%`` written after the code of its line (``M30%``) is
+always a closing mark, and that code is read: reading ends after that line. Otherwise reading
+ends at the closing ``%`` itself (``Program.read_end``,
 the one answer to where a file's text ends for the run, the checks and the editor): a control
 reads the mark and stops, so nothing on that line after the ``%`` is read either (the parser
 keeps no block there), and running into it ends the program like the end of the file. The
@@ -90,7 +92,10 @@ class Program:
         """The line at which reading ends: the closing ``%``, else the file's end
         (``len(blocks)``). The lines before it are the program's text; the ``%`` line holds no
         block and ends a run that reaches it (see the module docstring)."""
-        return len(self.blocks) if self.tape_end is None else self.tape_end
+        end = self.tape_end
+        if end is None:
+            return len(self.blocks)
+        return end + 1 if self.blocks[end].code_before_mark else end  # ``M30%``: its M30 is read
 
     def after_tape(self, line: int) -> bool:
         """True for a line after the closing ``%`` (not part of the program)."""
@@ -252,7 +257,7 @@ def _derive_from_markers(program: Program) -> None:
         b = blocks[i]
         if b.tape:
             tape_marks.append(i)
-            if len(tape_marks) > 1 or _text_before(blocks, i):
+            if len(tape_marks) > 1 or b.code_before_mark or _text_before(blocks, i):
                 tape_end = i  # the closing '%': reading ends here (``read_end``)
                 unit.end = i + 1  # the last program holds the line of its closing '%'
                 break
