@@ -100,3 +100,25 @@ def test_2_variable_number_with_decimals_names_the_rule_while_o_stays_whole(tmp_
     assert code == 1
     assert f"{path}:2:6: error: a variable number is a whole number: '#2.5' names no variable" in out
     assert f"{path}:4:1: error: a program number must be a whole number written without a decimal point" in out
+
+
+# ---- §1: one program's end and the next one's O number on one line (a dump file)
+
+
+def test_1_end_and_next_program_number_on_one_line_start_that_program(tmp_path: Path) -> None:
+    main = write(tmp_path, "MAIN.nc", "O1003\nM98 P0809\nM98 P0810\nM30\n")
+    write(tmp_path, "DUMP.nc", "O0809\nG00 X9.\nM99O0810 (SECOND)\nG00 X1.\nM99\n")
+    assert cli("check", str(main)) == (0, "", "")  # O0810 is found inside DUMP.nc
+    assert cli("check", str(tmp_path)) == (0, "", "")
+    result = run(main)
+    # O0809 moves to X9 and returns at the M99 of line 3; O0810 starts after line 3, moves to X1, returns
+    assert [(Path(m["file"]).name, m["line"]) for m in result["moves"]] == [("DUMP.nc", 2), ("DUMP.nc", 4)]
+    assert moves(result) == [(2, {"X": 0.0}, {"X": 9.0}), (4, {"X": 9.0}, {"X": 1.0})]
+
+
+def test_1_end_code_before_next_program_number_ends_a_main_program(tmp_path: Path) -> None:
+    path = write(tmp_path, "PARTS.nc", "O0001\nG00 X1.\nM30O0002\nG00 X5.\nM30\n")
+    result = run(path)
+    # O0001 runs G00 X1. and ends at its M30; O0002's G00 X5. is not run
+    assert (result["status"], result["blocks"]) == ("completed", 2)
+    assert moves(result) == [(2, {"X": 0.0}, {"X": 1.0})]

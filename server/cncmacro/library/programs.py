@@ -177,7 +177,8 @@ class ProgramLibrary:
                 found = self._unit_in(p, number)
                 if found is not None:
                     return found
-        header = re.compile(rf"(?m)^[ \t/%]*(?:N\d+[ \t]*)?O0*{number}(?!\d)", re.I)
+        # an O header at the start of a line, or after the end of the program before it (M99O0810)
+        header = re.compile(rf"(?m)(?:^[ \t/%]*(?:N\d+[ \t]*)?|M0*(?:99|30|2)[ \t]*)O0*{number}(?!\d)", re.I)
         for folder in folders:
             for p in self._folder_files(folder):
                 loaded = self._files.get(str(p))

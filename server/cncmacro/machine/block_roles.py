@@ -9,6 +9,8 @@ here, so they cannot answer apart.
   ``/`` block while the block delete switch is on. A plain line (``Block.plain``) never is.
 - Nothing from the tape's end on is read: running into the closing ``%`` ends the program like
   the end of the file, so the search for the next line stops there (``Program.read_end``).
+- ``M99O0810`` (one program's end and the next one's number on one line) is the last block of
+  the program above it and the header alone of O0810.
 - An O line is a *header alone* when it holds nothing but the O word (a title and comments
   aside): a run that enters the program starts after it, and a run never stands on it. An O
   line that holds more, a sequence number (``O100 N5``), words or statements, is the program's
@@ -34,14 +36,19 @@ def skipped(block: Block, block_delete: bool) -> bool:
 
 
 def header_only(block: Block) -> bool:
-    """True for an O line that holds nothing to run: no sequence number, words or statements."""
-    return (
-        block.program is not None
-        and block.label is None
-        and not block.words
-        and not block.corners
-        and not block.statements
+    """True for an O line that holds nothing to run: no sequence number, words or statements; or
+    whose words end the program before it (``M99O0810``, ``joined_header``)."""
+    return block.program is not None and (
+        (block.label is None and not block.words and not block.corners and not block.statements) or joined_header(block)
     )
+
+
+def joined_header(block: Block) -> bool:
+    """True for the end of one program and the next one's O number on one line (``M99O0810``,
+    in a file that holds several programs): the words run as the last block of the program
+    above, and the program whose number follows starts after the line."""
+    span = block.program_span
+    return block.program is not None and span is not None and bool(block.words) and block.words[0].start < span[0]
 
 
 def passed_over(block: Block, block_delete: bool) -> bool:

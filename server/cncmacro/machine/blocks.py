@@ -288,6 +288,13 @@ class CompiledFile:
         return self._body(block, pc, nxt)
 
     def _header(self, block: Block, pc: int, nxt: int) -> Runner:
+        if block_roles.joined_header(block):  # M99O0810: the M99 ends the program above
+            end = self._body(block, pc, nxt)
+
+            def joined(m: Machine, pc: int) -> int:
+                return end(m, pc) if m.frame.found.unit.start != pc else nxt
+
+            return joined
         rest = None if block_roles.header_only(block) else self._body(block, pc, nxt)
 
         def header(m: Machine, pc: int) -> int:

@@ -81,6 +81,13 @@ def assemble(items: Sequence[Item], prep: Prepared) -> Block:
                 if isinstance(target, Assign):
                     target.message = comment_after(prep.comments, target.end)
             statements.append(item)
+    if program is None and not statements and len(words) > 1 and words[-1].letter == "O" and _ends_program(words[-2]):
+        w = words[-1]  # M99O0810: one program's end and the next one's number on one line (a dump file)
+        number = _whole_literal(w, *_PROGRAM_NUMBER, problems)
+        if number is not None:
+            program, program_span = number, (w.start, w.end)
+            title = comment_after(prep.comments, w.end)
+            words.pop()
     stmts = tuple(statements)
     structural = (
         label is not None or program is not None or prep.tape or any(isinstance(s, (While, Do, End)) for s in stmts)
@@ -106,7 +113,7 @@ def assemble(items: Sequence[Item], prep: Prepared) -> Block:
 def assemble_words(words: list[Word], prep: Prepared) -> Block:
     """``assemble`` for a line of NC words only (the fast path's plain blocks)."""
     first = words[0].letter if words else ""
-    if first == "O" or first == "N" or prep.problems or prep.comments or prep.tape:
+    if first == "O" or first == "N" or prep.problems or prep.comments or prep.tape or words[-1].letter == "O":
         return assemble(words, prep)
     return Block(block_delete=prep.block_delete, words=tuple(words))
 
@@ -139,6 +146,13 @@ def _whole_literal(w: Word, not_literal: Detail, not_whole: Detail, problems: li
         problems.append(Problem(not_whole, w.start, w.end))
         return None
     return int(v.value)
+
+
+def _ends_program(w: Word) -> bool:
+    """``M99``, ``M30`` or ``M02`` written as a literal: a word after which an O word starts the
+    next program (docs/semantics.md §1)."""
+    v = w.value
+    return w.letter == "M" and isinstance(v, Number) and not v.has_point and v.value in (99.0, 30.0, 2.0)
 
 
 def _first_comment_text(comments: tuple[Comment, ...]) -> str | None:

@@ -26,7 +26,8 @@ from .messages import describe_error
 from .nodes import Block, Problem
 
 # A line of whitespace-separated address-number words with at most three decimals, not
-# starting with N or O: the CAM norm (``G01 X12.5 Y-3.``). Its ``split()`` gives exactly its
+# starting with N or O and with no O after the first word (``M99 O0810`` ends one program and
+# starts the next, assemble.py): the CAM norm (``G01 X12.5 Y-3.``). Its ``split()`` gives exactly its
 # words, its axis values are on the 0.001 grid already, and ``assemble_words`` would give it
 # neither a label nor a header; the interpreter compiles it straight from its text.
 # From Python 3.11 the quantifiers are possessive: a word that fails can never match with
@@ -39,7 +40,7 @@ _POSSESSIVE = "+" if sys.version_info >= (3, 11) else ""
 def _plain_line_pattern(possessive: str) -> str:
     """The plain-line pattern, with ``possessive`` ("+" or "") after each quantifier (``@``)."""
     number = r"[+-]?@(?:\d{1,15}@(?:\.\d{0,3}@)?@|\.\d{1,3}@)"
-    template = r"[ \t]*@[A-MP-Za-mp-z]" + number + r"(?:[ \t]+@[A-Za-z]" + number + r")*@[ \t]*@"
+    template = r"[ \t]*@[A-MP-Za-mp-z]" + number + r"(?:[ \t]+@[A-NP-Za-np-z]" + number + r")*@[ \t]*@"
     return template.replace("@", possessive)
 
 
@@ -122,7 +123,7 @@ def parse_block(line: str) -> Block:
     if not has_special(line):  # no comment, ';', '/' or '%'
         words = plain_words(line)
         if words is not None:
-            if words[0].letter not in ("O", "N"):
+            if words[0].letter not in ("O", "N") and words[-1].letter != "O":
                 return Block(words=tuple(words))
             return assemble_words(words, Prepared(line))  # a label or header: read once, not again
     prep = prepare(line)
