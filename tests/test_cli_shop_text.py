@@ -9,6 +9,8 @@ import json
 from pathlib import Path
 from typing import Any
 
+import pytest
+
 from cli_capture import cli
 
 
@@ -122,3 +124,37 @@ def test_1_end_code_before_next_program_number_ends_a_main_program(tmp_path: Pat
     # O0001 runs G00 X1. and ends at its M30; O0002's G00 X5. is not run
     assert (result["status"], result["blocks"]) == ("completed", 2)
     assert moves(result) == [(2, {"X": 0.0}, {"X": 1.0})]
+
+
+# ---- §4: Haas's IF governs the rest of its block
+
+
+HAAS_IF = "O01004\n#1=1\nIF [#1 GT 0] G01 X1. F10.\nIF [#1 LT 0] G01 X7. F10.\nIF [#1 GE 1] #101=5 G00 Y2.\nM30\n"
+
+
+def test_4_haas_if_runs_the_words_after_it_only_when_the_condition_holds(tmp_path: Path) -> None:
+    path = write(tmp_path, "O01004.nc", HAAS_IF)
+    assert cli("check", "--dialect", "haas", str(path)) == (0, "", "")
+    result = run(path, "--dialect", "haas")
+    # #1 = 1: [1 GT 0] holds (X1.), [1 LT 0] does not (no X7.), [1 GE 1] holds (#101 = 5, then Y2.)
+    assert moves(result) == [(3, {"X": 0.0}, {"X": 1.0}), (5, {"Y": 0.0}, {"Y": 2.0})]
+    assert result["variables"] == {"1": 1.0, "101": 5.0}
+
+
+def test_4_haas_if_with_nothing_after_it_warns_that_it_governs_nothing(tmp_path: Path) -> None:
+    path = write(tmp_path, "O01005.nc", "O01005\n#1=1\nIF [#1 GT 0]\nG00 X5.\nM30\n")
+    code, out, _ = cli("check", "--dialect", "haas", str(path))
+    assert code == 0 and out.startswith(f"{path}:3:1: warning: IF [...] with nothing after it") and "[empty-if]" in out
+    assert moves(run(path, "--dialect", "haas")) == [(4, {"X": 0.0}, {"X": 5.0})]
+
+
+@pytest.mark.parametrize("dialect", ["fanuc-0i", "fanuc-30i", "gsk980tdi"])
+def test_4_if_before_nc_words_is_alarm_114_where_the_if_governs_no_block(tmp_path: Path, dialect: str) -> None:
+    path = write(tmp_path, "O1004.nc", "O1004\n#1=1\nIF [#1 GT 0] G01 X1. F10.\nIF [#1 GT 0]\nM30\n")
+    code, out, _ = cli("check", "--dialect", dialect, str(path))
+    assert code == 1
+    assert "3:1: error: IF [...] followed by NC words:" in out and "alarm 114" in out
+    assert "4:1: error: IF [...] with nothing after it:" in out and "[dialect-feature]" in out
+    code, out, _ = cli("run", "--json", "--no-save", "--dialect", dialect, str(path))
+    alarm = json.loads(out)["alarm"]
+    assert (alarm["number"], alarm["line"]) == (114, 3)

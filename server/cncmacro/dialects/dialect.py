@@ -98,6 +98,10 @@ class Dialect:
     # §4 Haas's conditional jump ``[cond] M99 P n`` (IF [cond] GOTO n written another way) is read;
     # elsewhere it is a ``dialect-feature`` error and the run stops there with alarm 114
     conditional_m99: bool = False
+    # §4 an IF that is followed by NC words, or by nothing, governs the rest of its block: the words
+    # run when the condition holds and are passed over when it does not (Haas); elsewhere it is a
+    # ``dialect-feature`` error and the run stops there with alarm 114
+    if_governs_block: bool = False
     # §1 §8 the manual documents the comma words ,C ,R (chamfer, corner radius) and ,A (angle) on a
     # move (FANUC, Haas); without it they are read and run alike but earn a ``corner-word`` warning
     corner_words: bool = True

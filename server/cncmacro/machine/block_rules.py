@@ -2,9 +2,10 @@
 block alone, before anything runs, written once for the interpreter and the static checks.
 
 ``validate_block`` lists each ``BlockProblem`` of a block in the interpreter's order: a refused
-macro-word abbreviation, IF without THEN and Haas's conditional ``[cond] M99 P n`` (alarm 114),
-NC words beside a macro statement (alarm 127), the words a ``G65``/``G66`` may not share its
-block with (a word before it, alarm 127, or a modal G code the control sets first,
+macro-word abbreviation, IF without THEN, Haas's conditional ``[cond] M99 P n`` and an IF before
+NC words or nothing (alarm 114; on Haas such an IF governs the rest of its block,
+``Dialect.if_governs_block``), NC words beside a macro statement (alarm 127), the words a
+``G65``/``G66`` may not share its block with (a word before it, alarm 127, or a modal G code the control sets first,
 ``Dialect.modal_g_before_call``; an O word, 127; a G code among its arguments, 129), a call
 without P (076), and, in a block of NC words that no code of the machine file makes a call, a G
 code that neither the dialect nor the machine has (010) and an M code written with a decimal
@@ -34,6 +35,7 @@ from .words import (
     abbreviation_refused,
     conditional_m99_refused,
     g_code_known,
+    if_block_refused,
     m_decimal_point,
     missing_then,
     unknown_g_code,
@@ -43,8 +45,9 @@ from .words import (
 ABBREVIATION = "abbreviation"  # WH for WHILE where the dialect does not read it
 MISSING_THEN = "missing-then"  # IF [..] <statement> where the dialect needs THEN
 CONDITIONAL_M99 = "conditional-m99"  # [cond] M99 P n where the dialect does not read it
+IF_BLOCK = "if-block"  # IF [cond] before NC words or nothing, where the IF governs no block
 # the forms of a macro statement a dialect may lack: raised after the block's other format alarms
-DIALECT_FORMS = (MISSING_THEN, CONDITIONAL_M99)
+DIALECT_FORMS = (MISSING_THEN, CONDITIONAL_M99, IF_BLOCK)
 NC_AND_STATEMENT = "nc-and-macro"  # NC words and a macro statement in one block
 BEFORE_CALL = "before-call"  # words before G65/G66
 O_WITH_CALL = "o-with-call"  # an O word in a G65/G66 block
@@ -91,9 +94,22 @@ def validate_block(
             out.append(BlockProblem(ABBREVIATION, FORMAT, text, text, a.start, a.end))
     words = block.words
     if block.statements:
+        first = block.statements[0]
+        # an IF without GOTO, alone in the block: on Haas it governs the rest of the block
+        governing = first if isinstance(first, If) and first.goto is None and len(block.statements) == 1 else None
         if words or block.corners:
-            out.append(_nc_and_statement(block))
-        elif not dialect.if_without_then or not dialect.conditional_m99:
+            if governing is None or (governing.then is not None and not dialect.if_governs_block):
+                out.append(_nc_and_statement(block))
+                return out
+            if not dialect.if_governs_block:
+                text = if_block_refused(dialect, True)
+                out.append(BlockProblem(IF_BLOCK, FORMAT, text, text, governing.start, governing.end))
+                return out
+        elif governing is not None and governing.then is None and not dialect.if_governs_block:
+            text = if_block_refused(dialect, False)
+            out.append(BlockProblem(IF_BLOCK, FORMAT, text, text, governing.start, governing.end))
+            return out
+        if not dialect.if_without_then or not dialect.conditional_m99:
             for s in block.statements:
                 if s.__class__ is If and (s.implicit_then or s.m99 is not None):
                     _statement(s, dialect, out)

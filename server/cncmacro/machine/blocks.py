@@ -316,7 +316,11 @@ class CompiledFile:
             if problem is not None:
                 return raiser(problem.alarm, problem.message)
         if block.statements:
-            run = self.statement(block.statements[0], pc, nxt)
+            first = block.statements[0]
+            if (block.words or block.corners) and first.__class__ is If:  # an IF that governs its block (Haas)
+                run = self.governing_if(first, block, pc, nxt)
+            else:
+                run = self.statement(first, pc, nxt)
         elif block.words:
             run = self.nc_block(block, pc, nxt)
         else:
@@ -353,7 +357,13 @@ class CompiledFile:
                     return nxt
 
                 return if_goto
-            assert s.then is not None
+            if s.then is None:  # IF [cond] alone (Haas): the condition is worked out, and governs nothing
+
+                def if_alone(m: Machine, pc: int) -> int:
+                    test(m)
+                    return nxt
+
+                return if_alone
             then = self.statement(s.then, pc, nxt)
             if self.machine.watching and isinstance(s.then, Assign):
                 then = self._reporting(s.then, then)
@@ -373,6 +383,26 @@ class CompiledFile:
         if isinstance(s, Output):
             return self.output(s, nxt)
         return raiser(STATEMENT_FORMAT, detail("unknown statement", "未知的语句"))
+
+    def governing_if(self, s: If, block: Block, pc: int, nxt: int) -> Runner:
+        """Haas's IF before NC words (``IF [#1 NE #0] G01 X#24``, ``IF [#1 GE 180] #101=0 M99``):
+        when the condition holds, its THEN statement (if any) and then the block's words run; when
+        it does not, the rest of the block is passed over (``Dialect.if_governs_block``; the block
+        rules refuse it elsewhere)."""
+        test = self.values.condition(s.condition)
+        then = self.statement(s.then, pc, nxt) if s.then is not None else None
+        if then is not None and self.machine.watching and isinstance(s.then, Assign):
+            then = self._reporting(s.then, then)
+        words = self.nc_block(block, pc, nxt) if block.words else None
+
+        def governed(m: Machine, pc: int) -> int:
+            if not test(m):
+                return nxt
+            if then is not None:
+                then(m, pc)
+            return words(m, pc) if words is not None else nxt
+
+        return governed
 
     def assign(self, s: Assign, nxt: int) -> Runner:
         value = self.values.value(s.value)

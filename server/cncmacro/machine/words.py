@@ -12,9 +12,10 @@ written with a decimal point (``M30.``) is alarm 007 "illegal use of decimal poi
 only warnings and a run goes on as if the word were a one-shot code.
 
 ``WH`` for WHILE is read by FANUC (``Dialect.keyword_abbreviations``), ``IF[..] #1=2`` without
-THEN by the FANUC profiles and Haas (``Dialect.if_without_then``) and Haas's conditional jump
-``[cond] M99 P n`` by Haas (``Dialect.conditional_m99``); a dialect without the switch stops with
-alarm 114 at such a block. The interpreter (``blocks.py``, ``nc_blocks.py``) and the static checks
+THEN by the FANUC profiles and Haas (``Dialect.if_without_then``), Haas's conditional jump
+``[cond] M99 P n`` and an IF that governs the NC words after it, ``IF [..] G01 X1.``, by Haas
+(``Dialect.conditional_m99``, ``Dialect.if_governs_block``); a dialect without the switch stops
+with alarm 114 at such a block. The interpreter (``blocks.py``, ``nc_blocks.py``) and the static checks
 (``analysis/checks/call_checks.py``, ``analysis/checks/statement_checks.py``) take their messages from here.
 """
 
@@ -112,6 +113,24 @@ def missing_then(dialect: Dialect) -> Detail:
         "stops at this block with alarm 114; write THEN before the statement (FANUC and Haas controls run it without)",
         f"缺少 THEN：{dialect.title} 只接受 IF[...] GOTO n 和 IF[...] THEN <语句>，执行到此程序段时报警 114；"
         "请在语句前写 THEN（FANUC 与哈斯系统可以省略）",
+    )
+
+
+def if_block_refused(dialect: Dialect, words: bool) -> Detail:
+    """What to say of ``IF [cond]`` followed by NC words (``words``) or by nothing, on a dialect
+    whose IF governs no block (``Dialect.if_governs_block`` off)."""
+    if words:
+        return detail(
+            f"IF [...] followed by NC words: {dialect.title} runs only IF[...] GOTO n and IF[...] THEN <macro "
+            "statement>, and stops at this block with alarm 114 (a Haas control runs the words when the condition "
+            "holds); jump over the block instead: IF [reverse condition] GOTO n",
+            f"IF [...] 之后是 NC 代码：{dialect.title} 只接受 IF[...] GOTO n 和 IF[...] THEN <宏语句>，"
+            "执行到此程序段时报警 114（哈斯系统在条件成立时执行这些代码）；请改为用 IF [相反条件] GOTO n 跳过该程序段",
+        )
+    return detail(
+        f"IF [...] with nothing after it: {dialect.title} needs GOTO n or THEN <macro statement> after the "
+        "condition and stops at this block with alarm 114",
+        f"IF [...] 之后没有内容：{dialect.title} 要求条件之后写 GOTO n 或 THEN <宏语句>，执行到此程序段时报警 114",
     )
 
 

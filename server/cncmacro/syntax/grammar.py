@@ -193,6 +193,9 @@ class _Builder(Transformer[Token, Items]):
         kw: _Tok = c[0]
         cond: Bracket = c[1]
         then: Statement
+        if len(c) == 2:  # IF [cond] alone: it governs the rest of the block (words) or nothing
+            _check_condition(cond)
+            return If(cond, None, None, kw.start_pos, cond.end)
         if len(c) == 3:  # IF [cond] statement: THEN left out
             then = c[2]
             _check_condition(cond)

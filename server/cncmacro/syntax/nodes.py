@@ -171,7 +171,9 @@ class If:
     ``implicit_then`` is True when the statement follows the condition without THEN
     (``IF[#1GT10]#2=5``, a form some controls accept, docs/semantics.md §4). ``m99`` holds the
     ``M99`` and ``P`` words of Haas's conditional jump ``[cond] M99 P n``, which is
-    ``IF [cond] GOTO n`` written another way: ``goto`` is then the value of that P."""
+    ``IF [cond] GOTO n`` written another way: ``goto`` is then the value of that P. With neither
+    ``goto`` nor ``then`` the IF governs the rest of its block, the NC words after it or nothing
+    (Haas: ``IF [#1 NE #0] G01 X#24``, ``Dialect.if_governs_block``)."""
 
     condition: Bracket
     goto: Expr | None

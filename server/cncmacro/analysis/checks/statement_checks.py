@@ -1,7 +1,8 @@
 """Checks of a block's macro statements (docs/semantics.md §3, §4): what one line decides alone.
 
 A block with a macro statement may hold no NC words (``nc-and-macro``, alarm 127; ``N`` and an O
-header are not words), IF needs THEN where the dialect says so, and an abbreviated macro word and
+header are not words; on Haas an IF governs the words after it, and an IF with nothing after it
+is ``empty-if``), IF needs THEN where the dialect says so, and an abbreviated macro word and
 Haas's conditional ``[cond] M99 P n`` are refused where the dialect does not read them: the block
 rules of ``machine/block_rules.py``, which the interpreter raises as alarms. Each statement's
 expressions go through ``variable_checks``; an assignment's target through ``check_write``. A
@@ -32,6 +33,9 @@ def check_statements(block: Block, ctx: LineContext, facts: LineFacts) -> None:
             facts.findings.append(block_finding(nc, ctx.locale))
             return
         facts.findings.extend(block_finding(p, ctx.locale) for p in problems if p.rule in DIALECT_FORMS)
+    first = block.statements[0]
+    if first.__class__ is If and ctx.dialect.if_governs_block and not (block.words or block.corners):
+        _empty_if(first, ctx, facts)
     for s in block.statements:
         _statement(s, ctx, facts)
 
@@ -57,6 +61,22 @@ def _statement(s: Statement, ctx: LineContext, facts: LineFacts) -> None:
         for part in s.parts:
             if part.variable is not None:
                 scan_value(part.variable, ctx, out)
+
+
+def _empty_if(s: If, ctx: LineContext, facts: LineFacts) -> None:
+    """``IF [..]`` alone where an IF governs the rest of its block (Haas): it governs nothing, so
+    the block after it runs whether the condition holds or not, which the writer seldom meant."""
+    if s.goto is not None or s.then is not None:
+        return
+    message = pick(
+        ctx.locale,
+        "IF [...] with nothing after it: the condition governs only the rest of its own block, so it does "
+        "nothing here and the next block runs whether it holds or not; put the words on this line, or jump: "
+        "IF [...] GOTO n",
+        "IF [...] 之后没有内容：条件只控制同一程序段中其后的代码，此处不起作用，无论条件是否成立下一程序段都会执行；"
+        "请把代码写在同一行，或用 IF [...] GOTO n 跳转",
+    )
+    facts.findings.append(finding(s.start, s.end, "empty-if", message))
 
 
 def check_abbreviations(block: Block, ctx: LineContext, facts: LineFacts) -> None:

@@ -947,6 +947,7 @@ PROFILE = FANUC_0I.configured(
     keyword_abbreviations=False,
     if_without_then=True,
     conditional_m99=True,
+    if_governs_block=True,
     common_ranges=(CommonRange(100, 199, True), CommonRange(500, 999, True), CommonRange(10000, 10999, True)),
     programs_on_control=((9000, 9999),),
     local_subprogram_code=97.0,
