@@ -158,3 +158,18 @@ def test_4_if_before_nc_words_is_alarm_114_where_the_if_governs_no_block(tmp_pat
     code, out, _ = cli("run", "--json", "--no-save", "--dialect", dialect, str(path))
     alarm = json.loads(out)["alarm"]
     assert (alarm["number"], alarm["line"]) == (114, 3)
+
+
+# ---- docs/cli.md: --set when a shell cut off the rest of the line
+
+
+@pytest.mark.parametrize(
+    ("locale", "said"), [("en", "quote it (--set '#3026=1')"), ("zh-CN", "加引号（--set '#3026=1'）")]
+)
+def test_set_cut_off_by_a_shell_comment_says_to_leave_out_or_quote_the_hash(
+    tmp_path: Path, locale: str, said: str
+) -> None:
+    path = write(tmp_path, "O1000.nc", "O1000\nM30\n")
+    # ``cncmacro run FILE --set #3026=1`` in a shell: the shell drops '#3026=1' as a comment
+    code, _, err = cli("run", "--locale", locale, str(path), "--set")
+    assert code == 2 and "--set: expected one argument" in err and said in err

@@ -10,9 +10,10 @@ import argparse
 import sys
 
 from .. import __version__
+from ..bilingual import is_chinese, pick
 from ..dialects.registry import all_profiles
 from .check import main_check
-from .locale_option import add_locale_option
+from .locale_option import add_locale_option, environment_locale, locale_argument
 from .profiles import add_dialect_option, add_profiles_parser
 from .run import add_run_parser
 
@@ -74,13 +75,48 @@ def main_lsp(args: argparse.Namespace) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
+    given = sys.argv[1:] if argv is None else argv
+    try:
+        args = build_parser().parse_args(argv)
+    except SystemExit as e:
+        if e.code == 2 and given and given[-1] == "--set":
+            print(_set_hint(given), file=sys.stderr)
+        raise
     try:
         return int(args.handler(args))
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:
         return 0
+
+
+def _set_hint(given: list[str]) -> str:
+    """What to say when ``--set`` is the last thing the command got: a shell took the ``#`` of an
+    unquoted ``--set #3026=1`` for the start of a comment and dropped the rest of the line."""
+    chinese = is_chinese(locale_in(given) or environment_locale())
+    return pick(
+        "zh-CN" if chinese else "en",
+        "cncmacro run: --set got no variable: a shell reads an unquoted '#' as the start of a comment and "
+        "drops the rest of the line; leave the '#' out (--set 3026=1) or quote it (--set '#3026=1')",
+        "cncmacro run：--set 没有收到变量：shell 把未加引号的 '#' 当作注释开始，忽略了该行其余部分；"
+        "请省略 '#'（--set 3026=1）或加引号（--set '#3026=1'）",
+    )
+
+
+def locale_in(given: list[str]) -> str | None:
+    """The language a ``--locale`` among ``given`` asks for, if one does and it is known."""
+    for i, a in enumerate(given):
+        text = (
+            a.partition("=")[2]
+            if a.startswith("--locale=")
+            else (given[i + 1] if a == "--locale" and i + 1 < len(given) else None)
+        )
+        if text is not None:
+            try:
+                return locale_argument(text)
+            except argparse.ArgumentTypeError:
+                return None
+    return None
 
 
 if __name__ == "__main__":
