@@ -243,6 +243,10 @@ CODES: dict[str, Code] = _codes(
     Code("machine-file", ERROR,
          detail("The machine file (.cncmacro.toml) cannot be used: the defaults stand in.",
                 "机床文件（.cncmacro.toml）无法使用：改用默认设置。")),
+    Code("machine-file-note", INFORMATION,
+         detail("What the machine file (.cncmacro.toml) adds to its profile: common variable ranges the profile "
+                "does not list.",
+                "机床文件（.cncmacro.toml）在其系统配置之外增加的内容：配置未列出的公共变量范围。")),
 )  # fmt: skip
 
 _BY_ALARM: dict[int, str] = {n: c.name for c in CODES.values() for n in c.alarms}

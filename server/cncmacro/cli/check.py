@@ -46,7 +46,7 @@ from ..library.files import (
 from ..library.machine_file import (
     MachineFileError,
     MachineSettings,
-    common_beyond_profile,
+    common_note,
     find_machine_file,
     load_machine_file,
 )
@@ -191,8 +191,7 @@ def _noted(
     ``err``, as notes that change no exit status."""
     shown = shown_text(str(machine_file))
     settings, overridden = typed_profile_wins(settings, typed, shown)
-    added = common_beyond_profile(settings, typed)
-    for note in (overridden, added and detail(f"{shown}: common {added}", f"{shown}：common {added.zh}")):
+    for note in (overridden, common_note(settings, shown, typed)):
         if note is not None:
             print(f"cncmacro：注意：{note.zh}" if chinese else f"cncmacro: note: {note}", file=err)
     return settings

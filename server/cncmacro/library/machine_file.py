@@ -65,7 +65,7 @@ if sys.version_info >= (3, 11):
 else:  # the same reader, from PyPI, before it joined the standard library
     import tomli as tomllib
 
-from ..bilingual import Detail, detail
+from ..bilingual import Detail, detail, listed
 from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect
 from ..dialects.describe import code_key
 from ..dialects.tables import CodeDoc, SystemVariable
@@ -139,6 +139,8 @@ class MachineSettings:
     lathe: bool = False  # the profile's lathe form (``lathe = true``: fanuc-30i's lathes)
     extensions: frozenset[str] = frozenset()  # more endings of program files (``.txt``), lower case
     codes: tuple[CodeDoc, ...] = ()  # [codes]: plain G and M codes of this machine, with their text
+    # the 0-based line of ``common`` in the file (where the editor shows ``common_note``)
+    common_line: int | None = field(default=None, compare=False)
 
     def with_presets(self, presets: dict[int, float]) -> MachineSettings:
         """These settings with more preset variables (later ones win)."""
@@ -228,7 +230,7 @@ def load_machine_file(path: str | Path) -> MachineSettings:
     except ValueError as e:  # tomllib lets through, e.g., a number too long to convert
         raise MachineFileError(detail(f"{p}: not a usable TOML file: {e}", f"{p}：无法使用的 TOML 文件：{e}")) from e
     try:
-        return settings_from_mapping(parsed, str(p), folder=str(p.parent))
+        settings = settings_from_mapping(parsed, str(p), folder=str(p.parent))
     except MachineFileError as e:
         if e.line is None and e.key is not None:
             e.line = _line_of(text, e.key)
@@ -236,6 +238,7 @@ def load_machine_file(path: str | Path) -> MachineSettings:
     except (RecursionError, OverflowError, ValueError, TypeError) as e:  # a value no check foresaw
         raise MachineFileError(detail(f"{p}: a value cannot be used: {type(e).__name__}: {_brief(str(e))}",
                                       f"{p}：有无法使用的值：{type(e).__name__}：{_brief(str(e))}")) from e  # fmt: skip
+    return settings if settings.common is None else replace(settings, common_line=_line_of(text, "common"))
 
 
 def _line_of(text: str, key: str) -> int | None:
@@ -490,10 +493,22 @@ def common_beyond_profile(settings: MachineSettings, profile: str | None = None)
             added.append((at, last))
     if not added:
         return None
-    shown = ", ".join(f"#{a}-#{b}" for a, b in added)
-    listed = ", ".join(r.text() for r in dialect.common_ranges)
-    return detail(f"{shown}: common variables of this machine beyond {dialect.name}'s list ({listed})",
-                  f"{shown}：本机床在 {dialect.name} 所列范围（{listed}）之外的公共变量")  # fmt: skip
+    ranges = [f"#{a}-#{b}" for a, b in added]
+    profile_ranges = [r.text() for r in dialect.common_ranges]
+    return detail(f"{listed('en', ranges)}: common variables of this machine beyond {dialect.name}'s list "
+                  f"({listed('en', profile_ranges)})",
+                  f"{listed('zh', ranges)}：本机床在 {dialect.name} 所列范围（{listed('zh', profile_ranges)}）"
+                  "之外的公共变量")  # fmt: skip
+
+
+def common_note(settings: MachineSettings, shown: str, profile: str | None = None) -> Detail | None:
+    """The note on the common ranges the machine file at ``shown`` adds to the profile
+    (``common_beyond_profile``), as ``cncmacro check`` prints it and the editor shows it on the
+    machine file; None when it adds none."""
+    added = common_beyond_profile(settings, profile)
+    if added is None:
+        return None
+    return detail(f"{shown}: common {added}", f"{shown}：common {added.zh}")
 
 
 def _program_ranges(value: object, fail: _Fail) -> tuple[tuple[int, int], ...]:
