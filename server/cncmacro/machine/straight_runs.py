@@ -162,21 +162,11 @@ def run_straight(
             if (feed_hint and moved and line_mode != 0.0 and (others is not None or not per_rev)
                     and 0.0 < line_f < 1.0 and FEED_HINT_GIVEN not in codes):  # fmt: skip
                 break  # a per-minute feed below 1: the compiled path looks at it (``feed_per_minute_hint``)
-            if new_mode is not None:
-                if moved and new_mode in cycles:
-                    break  # a cycle decides this line: the compiled path runs it
-                if new_mode != mode:
-                    mode = modal["motion"] = new_mode
-                    if lathe and new_mode not in p.dialect.single_cycles:
-                        forget_single_cycle(p)  # a single cycle's modal words (planner/turning_cycles.py)
-                if canned != 80.0 and not lathe:
-                    canned = modal["canned"] = 80.0
-            elif moved and (mode in cycles or (canned != 80.0 and not lathe)):
-                break
             centre = None
             if arc is not None and moved and line_mode in ARC_MODES:
                 # the arc's centre in the plane this line leaves in force; an arc the control finds
-                # fault with (``Planner.arc_fault``) is the general path's to report
+                # fault with (``Planner.arc_fault``) is the general path's to report,
+                # the line left untouched
                 line_plane = plane
                 if others is not None:
                     for group, g in others:
@@ -189,6 +179,17 @@ def run_straight(
                 centre = p.arc_centre(line_mode, start, arc_end, arc, line_plane)
                 if centre is not None and p.arc_fault(start, arc_end, centre, arc, line_plane) is not None:
                     break
+            if new_mode is not None:
+                if moved and new_mode in cycles:
+                    break  # a cycle decides this line: the compiled path runs it
+                if new_mode != mode:
+                    mode = modal["motion"] = new_mode
+                    if lathe and new_mode not in p.dialect.single_cycles:
+                        forget_single_cycle(p)  # a single cycle's modal words (planner/turning_cycles.py)
+                if canned != 80.0 and not lathe:
+                    canned = modal["canned"] = 80.0
+            elif moved and (mode in cycles or (canned != 80.0 and not lathe)):
+                break
             if trk is not None:
                 if trk[pc] < floor:
                     p.clock, p.cut_length, p.rapid_length = clock, cut, rapid  # what the observer reads
