@@ -91,6 +91,9 @@ class Dialect:
     # known: a G code outside the table and the machine's call codes is alarm 010, a decimal point
     # in an M code alarm 007; without this switch both are warnings and a run goes on
     word_format_alarms: bool = False
+    # §8 "Arcs": I, J, K whose end point is off the start's circle by more than the tolerance is
+    # alarm PS0020 (FANUC's list); without this switch the run notes it and goes on
+    arc_radius_alarm: bool = False
     # §1 the first two or more letters of a macro word stand for the word (WH for WHILE)
     keyword_abbreviations: bool = False
     # §4 IF [cond] <statement> without THEN runs the statement (FANUC profiles, Haas); elsewhere

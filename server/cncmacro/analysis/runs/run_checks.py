@@ -636,6 +636,10 @@ def run_diagnostics(
             zh = in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, code, en, zh, note.chain, None, False, line_text, locale,
                                    milder=True))  # fmt: skip
+        elif note.kind in ("arc", "units") and note.subject is not None:  # planner/arc_checks.py, planner/units.py
+            en, zh = in_language(note.message, False), in_language(note.message, True)
+            out.append(_diagnostic(note.file, note.line, note.subject, en, zh, note.chain, None, False, line_text,
+                                   locale, milder=note.subject == "arc-radius"))  # fmt: skip
         elif note.kind == "feed":  # a per-minute feed that looks per revolution (planner.py)
             en, zh = in_language(note.message, False), in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, "feed-per-minute", en, zh, note.chain, None, False, line_text,
