@@ -135,3 +135,15 @@ def test_a_macro_checked_alone_that_reaches_its_alarm_keeps_it_a_warning(tmp_pat
     code, out, _ = cli("check", str(folder))
     assert code == 0 and ": warning: the run reaches macro alarm 3001: CALL ME WITH A" in out
 
+
+def test_a_macro_checked_alone_whose_alarm_depends_on_its_arguments_is_only_information(tmp_path):
+    # a probe macro refuses S and T together; checked alone its arguments are unknown (a value,
+    # not vacant), so both tests of #19 and #20 fall through to the alarm: the caller decides
+    macro = "O9100\nIF [#19 EQ #0] GOTO 10\nIF [#20 EQ #0] GOTO 10\n#3000=91 (S AND T BOTH GIVEN)\nN10 M99\n"
+    code, out, _ = cli("check", str(_folder(tmp_path, O9100=macro)))
+    assert code == 0
+    assert out.endswith(": information: the run reaches macro alarm 3091: S AND T BOTH GIVEN [macro-alarm]\n")
+    assert out.count("\n") == 1
+    # a caller that passes both: the run goes through it and the control stops on every cycle
+    code, out, _ = cli("check", str(_folder(tmp_path, O1001="O1001\nG65 P9100 S1. T2.\nM30\n")))
+    assert code == 1 and ": error: the run reaches macro alarm 3091: S AND T BOTH GIVEN" in out
