@@ -147,3 +147,14 @@ def test_a_macro_checked_alone_whose_alarm_depends_on_its_arguments_is_only_info
     # a caller that passes both: the run goes through it and the control stops on every cycle
     code, out, _ = cli("check", str(_folder(tmp_path, O1001="O1001\nG65 P9100 S1. T2.\nM30\n")))
     assert code == 1 and ": error: the run reaches macro alarm 3091: S AND T BOTH GIVEN" in out
+
+
+def test_a_macro_checked_alone_whose_alarm_depends_on_the_callers_tool_length_is_only_information(tmp_path):
+    # #4111 is the H in effect, which the caller's G43 sets before it calls the macro
+    macro = "O9100\nIF [#4111 GT 0] GOTO 5\n#3000=89 (NO TOOL LENGTH ACTIVE)\nN5 M99\n"
+    code, out, _ = cli("check", str(_folder(tmp_path, O9100=macro)))
+    assert code == 0 and ":3:1: information: the run reaches macro alarm 3089: NO TOOL LENGTH ACTIVE" in out
+    # a caller with G43 H1 passes the test; one without it is run and warned about
+    assert cli("check", str(_folder(tmp_path, O1001="O1001\nG43 H1 Z50.\nG65 P9100\nM30\n"))) == (0, "", "")
+    code, out, _ = cli("check", str(_folder(tmp_path, O1001="O1001\nG65 P9100\nM30\n")))
+    assert code == 0 and ": warning: the run reaches macro alarm 3089" in out

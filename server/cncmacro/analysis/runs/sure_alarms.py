@@ -8,10 +8,11 @@ does not, the analysis run only guessed it (a ``macro-alarm`` warning):
 
 - the run did not start at a main program: a subprogram or macro checked alone, without the
   caller that would pass its arguments (``unknown_stops.runs_as_macro``: it returns with ``M99``
-  and has no ``M30`` or ``M02``), is run with them unknown; the caller decides. Where a line of
-  its own file on the path read an argument before writing it (``surely_reached`` with
-  ``arguments_of`` that file is false), the alarm is the caller's to reach or not: only
-  information;
+  and has no ``M30`` or ``M02``), is run with them unknown; the caller decides. Where its path
+  read anything it did not set itself (``surely_reached`` with ``arguments_of`` its file is
+  false: an argument read in that file before it was written, the caller's modal state or
+  position, any other system variable, a common), the alarm is the caller's to reach or not:
+  only information;
 - a line the run went through, the alarm's included, reads a value the program did not set:
   a system variable (offsets, positions, parameters, inputs, the clock), a persistent common
   (``#500``–, kept at power-off: a value in the folder's variable file may not be the one the
