@@ -133,6 +133,9 @@ class Dialect:
     # the GSK's, 3000+n / 5900+n for #3000): None, every one (FANUC, GSK); a set, only these, the
     # others shown without a number (Haas, whose manuals document none of them)
     documented_alarms: frozenset[int] | None = None
+    # §6 of those, the alarms the control surely has but whose number no source gives (gsk980tdi's
+    # over-travel and offset number alarms): shown without a number
+    unnumbered_alarms: frozenset[int] = frozenset()
     # §5 DPRNT ``#i[ab]``: the most places a format may reserve, a + b (0: no limit; Haas 8, a
     # format of none or more is alarm 114 there), and whether the whole part is printed in full
     # (Haas: at least one digit, the field widened past a) or as its last a digits (FANUC)
@@ -221,6 +224,8 @@ class Dialect:
         """The number a person is shown for the interpreter's alarm ``number`` on this control,
         or None where the control documents none (``documented_alarms``)."""
         documented = self.documented_alarms
+        if number in self.unnumbered_alarms:
+            return None
         return number if documented is None or number in documented else None
 
     def on_control(self, number: int) -> bool:

@@ -88,6 +88,10 @@ class MoveTimes:
         self.variable_lead = cycles.variable_lead
         self.tool_change_m = float(timing.tool_change_code[1:]) if timing.tool_change_code.startswith("M") else None
         self.tool_change_t = timing.tool_change_code == "T"
+        # the machine file's [limits]: the highest cutting feed (mm/min) and, where it gives the
+        # spindle's top speed, that speed for every S (not only G96's); infinite without them
+        self.top_feed = math.inf
+        self.top_speed = math.inf
 
     def distance(self, start: Sequence[float], end: Sequence[float]) -> float:
         """The straight distance from ``start`` to ``end``, in program units: on a lathe X moves
@@ -150,13 +154,20 @@ class MoveTimes:
             if lead_change and length > 0.0 and feed > 0.0:
                 feed = _mean_lead(length, feed, lead_change)
         elif not per_rev:
+            if feed * unit > self.top_feed:  # the control clamps the feed at its highest
+                feed = self.top_feed / unit
             return length / feed * 60.0 if feed > 0.0 else 0.0
-        return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit) * 60.0
+        else:
+            return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit) * 60.0
+        return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit, False) * 60.0
 
     def per_rev_minutes(self, length: float, feed: float, speed: float, css: bool, clamp: float | None,
-                        start: Sequence[float], end: Sequence[float], unit: float) -> float:  # fmt: skip
+                        start: Sequence[float], end: Sequence[float], unit: float,
+                        feed_clamp: bool = True) -> float:  # fmt: skip
         """Minutes to move ``length`` at ``feed`` per revolution. At a constant ``speed``,
-        length / (F·S). Under G96 (``css``) the spindle turns at 1000·V / (π·D) (V = S), D the
+        length / (F·S), S never above ``top_speed`` and F·S never above ``top_feed`` (a thread's,
+        without ``feed_clamp``, follows the spindle whatever its rate).
+        Under G96 (``css``) the spindle turns at 1000·V / (π·D) (V = S), D the
         diameter where the tool is, never above ``clamp`` and the spindle's top speed: over a
         straight move D changes linearly, so dt = dl·π·D / (1000·V·F) integrates to the piece's
         length times its mean diameter where the spindle is not clamped, and to length / (F·top)
@@ -165,7 +176,12 @@ class MoveTimes:
             return 0.0
         d = self.diameter
         if not css or d < 0:
-            return length / (feed * speed) if speed > 0.0 else 0.0
+            if speed <= 0.0:
+                return 0.0
+            rate = feed * min(speed, self.top_speed)  # the spindle at its top speed at most
+            if feed_clamp and rate * unit > self.top_feed:  # the control clamps the feed at its highest
+                rate = self.top_feed / unit
+            return length / rate
         top = self.timing.max_spindle_speed if clamp is None else min(clamp, self.timing.max_spindle_speed)
         if speed <= 0.0 or top <= 0.0:
             return 0.0

@@ -13,6 +13,7 @@ from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
 from .lathe_cycles import ShapeCall, lathe_cycle
+from .machine_limits import g53_bounds, leaves_travel
 from .positions import WORK_BASE, work_offset
 from .probing import skip_block
 
@@ -47,7 +48,14 @@ def one_shot(
         target = list(p.pos)
         for i, v in axes.items():
             target[i] = v - (work_offset(p, i) + p.shift[i] + p.tool_vector[i])
-        p.move(file, line, p.modal.get("motion", 0.0), target)
+        mode = p.modal.get("motion", 0.0)
+        if p.travel is not None:  # machine coordinates: checked whether the offsets are known or not
+            here = tuple(p.pos)
+            stop = leaves_travel(p, g53_bounds(p, list(axes)), mode, 17.0, here, tuple(target), None, None)
+            if stop is not None:
+                p.move(file, line, mode, list(stop[0]))
+                raise stop[1]
+        p.move(file, line, mode, target)
         return bool(axes), None
     if g == p.dialect.coordinate_setting_code:
         for i, v in axes.items():

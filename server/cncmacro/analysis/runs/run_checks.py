@@ -636,6 +636,10 @@ def run_diagnostics(
             zh = in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, code, en, zh, note.chain, None, False, line_text, locale,
                                    milder=True))  # fmt: skip
+        elif note.kind == "limits" and note.subject is not None:  # the machine's [limits] (machine_limits.py)
+            code = alarm_code(0, note.subject, base)
+            en, zh = in_language(note.message, False), in_language(note.message, True)
+            out.append(_diagnostic(note.file, note.line, code, en, zh, note.chain, None, False, line_text, locale))
         elif note.kind == "feed":  # a per-minute feed that looks per revolution (planner.py)
             en, zh = in_language(note.message, False), in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, "feed-per-minute", en, zh, note.chain, None, False, line_text,

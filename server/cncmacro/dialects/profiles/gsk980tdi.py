@@ -7,6 +7,7 @@ bracketed program names and ``#9xxx`` indirection.
 
 from __future__ import annotations
 
+from ..alarms import OFFSET_NUMBER, OVERTRAVEL_MINUS, OVERTRAVEL_PLUS
 from ..dialect import Dialect
 from ..lathe_cycle_rules import GSK980TDI_RULES
 from ..lathe_cycle_words import GSK980TDI_CYCLE_WORDS
@@ -26,6 +27,9 @@ PROFILE = Dialect(
     nine_indirection=True,
     c_relations=True,
     macro_alarm_base=5900,
+    # the soft limits and the offset numbers are the machine's (docs/semantics.md §9.3); no source
+    # at hand gives the GSK980TDi's numbers for these alarms
+    unnumbered_alarms=frozenset({OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER}),
     h_codes=True,
     bracket_names=True,
     program_digits=4,
