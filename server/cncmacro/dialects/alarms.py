@@ -51,7 +51,7 @@ REPEAT_COUNT = 321
 SHAPE_PAST_START = 322
 SHAPE_COMMAND = 325
 SHAPE_NOT_MONOTONE_X = 329
-# the machine's limits (docs/semantics.md §9.3, the machine file's [limits]): FANUC 0i's PS0030 and
+# the machine's limits (docs/semantics.md §11, the machine file's [limits]): FANUC 0i's PS0030 and
 # OT0500/OT0501 (stored stroke check 1, the soft limits)
 OFFSET_NUMBER = 30
 OVERTRAVEL_PLUS = 500

@@ -1,5 +1,5 @@
 """The machine's limits as a run meets them (the machine file's ``[limits]``,
-library/limits_settings.py; docs/semantics.md §9.3).
+library/limits_settings.py; docs/semantics.md §11).
 
 - **Travel.** A move that leaves an axis's travel (its soft limits, in machine coordinates) stops
   where it crosses the limit with the control's over-travel alarm (FANUC OT0500 on the + side,

@@ -27,7 +27,7 @@ PROFILE = Dialect(
     nine_indirection=True,
     c_relations=True,
     macro_alarm_base=5900,
-    # the soft limits and the offset numbers are the machine's (docs/semantics.md §9.3); no source
+    # the soft limits and the offset numbers are the machine's (docs/semantics.md §11); no source
     # at hand gives the GSK980TDi's numbers for these alarms
     unnumbered_alarms=frozenset({OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER}),
     h_codes=True,
