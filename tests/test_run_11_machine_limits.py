@@ -7,7 +7,7 @@ import pytest
 
 from cncmacro.library.limits_settings import MachineLimits
 from cncmacro.library.machine_file import MachineFileError, settings_from_mapping
-from running import lines, run
+from running import lines, machine, run
 
 TRAVEL = {"X": (-500.0, 0.0), "Y": (-400.0, 0.0), "Z": (-450.0, 0.0)}
 LIMITS = MachineLimits(TRAVEL, feed=5000.0, spindle=8000.0, tools=((1, 24),), offsets=((1, 200),))
@@ -177,3 +177,25 @@ def test_the_rapid_rate_and_top_speed_are_given_once():
         with pytest.raises(MachineFileError) as e:
             settings_from_mapping({"timing": timing, "limits": limits})
         assert e.value.key == key and "same fact" in str(e.value)
+
+
+def test_a_drilling_cycle_whose_bottom_is_past_the_travel_alarms_on_its_block():
+    # G54 Z-100: the bottom Z-400. is machine Z-500, 50 past the - limit -450
+    m = run(lines("G90 G54 G00 X0 Y0 Z50.", "G81 X10. Y10. Z-400. R2. F100", "M30"), limits=LIMITS, presets=G54)
+    assert m.alarm is not None and (m.alarm.number, m.alarm.line + 1) == (501, 2)
+    assert "Z-" in m.alarm.message and "machine Z-500.000, 50.000 mm past" in m.alarm.message
+
+
+def test_a_roughing_cycle_pass_past_the_travel_alarms_in_a_check_run_too():
+    # fanuc-0i-lathe, Z travel [-15, 10], the work offsets given as 0: the G71 passes cut to the
+    # shape's Z-20. plus the W0.1 allowance, Z-19.9, 4.9 past the - limit; the alarm is on the
+    # shape's last block N20, where the run has read the shape and plans the passes
+    text = lines("G00 X42. Z2.", "G71 U1. R0.5", "G71 P10 Q20 U0.2 W0.1 F0.2", "N10 G00 X30.", "G01 Z-20.",
+                 "N20 X42.", "M30")  # fmt: skip
+    limits = MachineLimits({"Z": (-15.0, 10.0)})
+    for keep in (True, False):  # cncmacro run, and an analysis run, which keeps no moves
+        m = machine(text, "fanuc-0i-lathe", limits=limits, presets={5221: 0.0, 5222: 0.0, 5223: 0.0})
+        m.planner.record_moves = keep
+        m.run()
+        assert m.alarm is not None and (m.alarm.number, m.alarm.line + 1) == (501, 6)
+        assert "4.900 mm past" in m.alarm.message

@@ -168,8 +168,18 @@ def run_straight(
             if (feed_hint and moved and line_mode != 0.0 and (others is not None or not per_rev)
                     and 0.0 < line_f < 1.0 and FEED_HINT_GIVEN not in codes):  # fmt: skip
                 break  # a per-minute feed below 1: the compiled path looks at it (``feed_per_minute_hint``)
-            if bounds is not None and moved and _leaves(p, bounds, others, line_mode, plane, start, target, inc, arc):
-                break  # the move leaves the machine's travel: the compiled path stops it there with the alarm
+            if bounds is not None and moved:
+                if others is None and inc is None and arc is None:  # the common line, checked here
+                    out = False
+                    for i, low, high, _ in bounds:
+                        e = target[i]
+                        if (e > high and e > start[i]) or (e < low and e < start[i]):
+                            out = True
+                            break
+                else:
+                    out = _leaves(p, bounds, others, line_mode, plane, start, target, inc, arc)
+                if out:
+                    break  # the move leaves the machine's travel: the compiled path stops it there with the alarm
             if speed is not None and spindle_top is not None and speed > spindle_top:
                 break  # an S above the spindle's top speed: the compiled path says so
             if new_mode is not None:
