@@ -159,6 +159,7 @@ def test_limits_are_read_from_the_machine_file():
     [
         ({"travel": {"X": [0, -500]}}, "limits.travel.X", "lowest 0 above its highest -500"),
         ({"travel": {"X": 5}}, "limits.travel.X", "[lowest, highest]"),
+        ({"travel": {"W": [0, 1]}}, "limits.travel.W", "is not an axis of the profile (X, Y, Z"),
         ({"feed": -1}, "limits.feed", "above 0"),
         ({"tools": [24]}, "limits.tools", "[first, last]"),
         ({"speed": 1}, "limits.speed", "is not a limit of the machine"),

@@ -58,7 +58,7 @@ def read_limits(
             raise fail(f"limits.{key}", detail(f"is not a limit of the machine (known: {names})",
                                                f"不是机床限制的设置项（可用的有：{names}）"))  # fmt: skip
     timing = timing.copy()
-    travel = _travel(table["travel"], fail) if "travel" in table else {}
+    travel = _travel(table["travel"], axes, fail) if "travel" in table else {}
     feed = _rate(table, "feed", fail) if "feed" in table else None
     spindle = None
     if "rapid" in table:
@@ -107,8 +107,11 @@ def _rate(table: dict[str, object], key: str, fail: Callable[[str, Detail], Exce
     return v
 
 
-def _travel(value: object, fail: Callable[[str, Detail], Exception]) -> dict[str, tuple[float, float]]:
-    """``travel``: axis letter -> [lowest, highest] in machine coordinates."""
+def _travel(
+    value: object, axes: tuple[str, ...], fail: Callable[[str, Detail], Exception]
+) -> dict[str, tuple[float, float]]:
+    """``travel``: axis letter -> [lowest, highest] in machine coordinates, for an axis of the
+    profile (``axes``): a letter it does not have would never be checked."""
     bad = detail("must map axis letters to [lowest, highest] in machine coordinates, "
                  "such as { X = [-500, 0], Z = [-450, 0] }",
                  "必须是“轴地址 = [最小值，最大值]”（机床坐标）形式的表，"
@@ -124,6 +127,10 @@ def _travel(value: object, fail: Callable[[str, Detail], Exception]) -> dict[str
         low, high = pair
         if low is None or high is None:
             raise fail(f"limits.travel.{k}", bad)
+        if axis not in axes:
+            names = ", ".join(axes)
+            raise fail(f"limits.travel.{k}", detail(f"is not an axis of the profile ({names})",
+                                                    f"不是该系统的轴（{names}）"))  # fmt: skip
         if low > high:
             raise fail(f"limits.travel.{k}", detail(f"gives its lowest {low:g} above its highest {high:g}",
                                                     f"最小值 {low:g} 大于最大值 {high:g}"))  # fmt: skip
