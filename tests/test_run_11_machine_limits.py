@@ -200,3 +200,15 @@ def test_a_roughing_cycle_pass_past_the_travel_alarms_in_a_check_run_too():
         m.run()
         assert m.alarm is not None and (m.alarm.number, m.alarm.line + 1) == (501, 6)
         assert "4.900 mm past" in m.alarm.message
+
+
+def test_g52_shifts_the_program_position_without_moving_and_the_travel_follows():
+    # G54 X-300; G52 X310.: program X15. is work X325., machine X25., 25 past the + limit
+    m = run(lines("G90 G54 G00 X0 Y0", "G52 X310.", "#100=#5001", "#101=#5021", "G00 X15.", "M30"),
+            limits=LIMITS, presets=G54)  # fmt: skip
+    assert [mv.line + 1 for mv in m.planner.moves] == [1, 5]  # G52 itself moves nothing
+    assert (m.C[100], m.C[101]) == (-310.0, -300.0)  # program X0 - 310; the machine position stays
+    assert m.alarm is not None and (m.alarm.number, m.alarm.line + 1) == (500, 5)
+    assert "machine X25.000, 25.000 mm past" in m.alarm.message
+    m = run(lines("G52 X310.", "G52 X0", "#100=#5001", "M30"))
+    assert m.C[100] == 0.0  # G52 X0 cancels it

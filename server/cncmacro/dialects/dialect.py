@@ -82,6 +82,9 @@ class Dialect:
     modal_defaults: dict[str, float] = field(default_factory=dict)
     # which G code sets the coordinate system (G92 on a mill, G50 on this lathe)
     coordinate_setting_code: float = 92.0
+    # §8 the code that sets a local coordinate system (G52 IP: its origin in work coordinates, IP0
+    # cancels; FANUC's and Haas's), None where the control has none
+    local_coordinate_code: float | None = 52.0
     # which G codes are canned cycles that leave the tool where it started
     cycle_codes: frozenset[float] = frozenset()
     # §5 fanuc wants I, J, K in that order within each set (a warning otherwise)

@@ -1,6 +1,7 @@
 """The codes that act once, in the block that names them (docs/semantics.md §8): G04 dwell, G10
 offsets, G28/G30 through the intermediate point to the reference point, G31 skip (probing.py),
-G53 in machine coordinates, coordinate setting (G92 on a mill, G50 on a lathe), a lathe's turning
+G53 in machine coordinates, G52's local coordinate system, coordinate setting (G92 on a mill,
+G50 on a lathe), a lathe's turning
 cycles (turning_cycles.py), and any other one-shot code with axis words, which moves in the
 modal mode. ``G10`` writes the offset tables through the planner's host (host.py).
 """
@@ -19,6 +20,8 @@ from .probing import skip_block
 
 if TYPE_CHECKING:
     from .planner import Planner
+
+LOCAL_ORIGIN = "G52-"  # the ``codes`` key of G52's origin on an axis, with the axis's index after it
 
 
 def one_shot(
@@ -57,6 +60,9 @@ def one_shot(
                 raise stop[1]
         p.move(file, line, mode, target)
         return bool(axes), None
+    if g == p.dialect.local_coordinate_code:
+        local_coordinates(p, axes)
+        return False, None
     if g == p.dialect.coordinate_setting_code:
         for i, v in axes.items():
             p.shift[i] += p.pos[i] - v
@@ -70,6 +76,19 @@ def one_shot(
         p.move(file, line, mode, target, p.block_arc(mode, target, other))
         return True, None
     return False, None
+
+
+def local_coordinates(p: Planner, axes: dict[int, float]) -> None:
+    """G52: the local coordinate system's origin on each named axis is its value in the work
+    coordinate system (0 cancels it). The tool does not move: the program position moves by the
+    change, the coordinate shift takes it up, so the machine position (positions.py) stays. The
+    origin is kept with the codes, as a snapshot keeps them."""
+    for i, v in axes.items():
+        key = f"{LOCAL_ORIGIN}{i}"
+        change = v - (p.codes.get(key) or 0.0)
+        p.codes[key] = v
+        p.shift[i] += change
+        p.pos[i] -= change
 
 
 def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]) -> None:

@@ -42,6 +42,7 @@ PROFILE = Dialect(
     modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0, 5.0}),
     modal_defaults={"plane": 18.0, "feed": 98.0},
     coordinate_setting_code=50.0,
+    local_coordinate_code=None,  # no G52 in the GSK980TDi's G codes
     cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0, 83.0, 84.0, 87.0, 88.0}),
     single_cycles=LATHE_SINGLE_CYCLES,
     lathe_cycles=GSK_LATHE_CYCLES,
