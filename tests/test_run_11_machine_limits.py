@@ -212,3 +212,11 @@ def test_g52_shifts_the_program_position_without_moving_and_the_travel_follows()
     assert "machine X25.000, 25.000 mm past" in m.alarm.message
     m = run(lines("G52 X310.", "G52 X0", "#100=#5001", "M30"))
     assert m.C[100] == 0.0  # G52 X0 cancels it
+
+
+def test_a_lathe_cycles_d_is_no_offset_number():
+    # gsk980tdi's G75 takes D (the relief at the end of a cut) in increments: D500 is no offset
+    limits = MachineLimits(offsets=((1, 32),))
+    m = run(lines("G00 X50. Z2.", "G75 R0.5", "G75 X30. Z-10. P2000 Q3000 D500 F0.1", "M30"), "gsk980tdi",
+            limits=limits)  # fmt: skip
+    assert m.status == "completed", m.alarm

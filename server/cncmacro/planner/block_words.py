@@ -71,7 +71,7 @@ def machine_limits(p: Planner, other: dict[str, float], file: str, line: int) ->
         spindle_speed(p, other["S"], line, file)
     if "T" in other:
         tool_number(p, other["T"], line)
-    for letter in ("D", "H"):
+    for letter in ("D", "H") if not p.lathe else ():  # a lathe's offset is its T's (a D there may be a cycle's)
         if letter in other:
             offset_number(p, letter, other[letter], int(other[letter]))
 
