@@ -375,7 +375,10 @@ def settings_from_mapping(
     if "timing" in data:
         kw["timing"] = timing_changes(data["timing"], fail)
     if "limits" in data:
-        axes = get_dialect(str(kw.get("dialect") or DEFAULT_DIALECT)).axes
+        profile = get_dialect(str(kw.get("dialect") or DEFAULT_DIALECT))
+        if kw.get("lathe") and profile.lathe_variant is not None:  # ``lathe = true``: its lathe form's axes
+            profile = profile.lathe_variant
+        axes = profile.axes
         kw["limits"], kw["timing"] = read_limits(data["limits"], kw.get("timing", {}), axes, fail)
     return MachineSettings(**kw)
 
