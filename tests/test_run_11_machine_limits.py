@@ -220,3 +220,20 @@ def test_a_lathe_cycles_d_is_no_offset_number():
     m = run(lines("G00 X50. Z2.", "G75 R0.5", "G75 X30. Z-10. P2000 Q3000 D500 F0.1", "M30"), "gsk980tdi",
             limits=limits)  # fmt: skip
     assert m.status == "completed", m.alarm
+
+
+def test_a_roughing_cycles_passes_are_timed_at_the_clamped_feed_whether_moves_are_kept_or_not():
+    # the same G71 at F10000 per minute on a machine whose highest feed is 5000 takes as long as at
+    # F5000 on one without [limits], in a run that keeps its moves and in one that does not
+    def clock(feed: str, keep: bool, **kw: object) -> float:
+        text = lines("G98 G00 X42. Z2.", "G71 U1. R0.5", f"G71 P10 Q20 U0.2 W0.1 {feed}", "N10 G00 X30.",
+                     "G01 Z-20.", "N20 X42.", "M30")  # fmt: skip
+        m = machine(text, "fanuc-0i-lathe", **kw)  # type: ignore[arg-type]
+        m.planner.record_moves = keep
+        m.run()
+        assert m.status == "completed"
+        return m.planner.clock
+
+    for keep in (True, False):
+        clamped = clock("F10000.", keep, limits=MachineLimits(feed=5000.0))
+        assert clamped == pytest.approx(clock("F5000.", keep)) and clamped > clock("F10000.", keep)

@@ -51,12 +51,14 @@ def run_straight(
     ``tracked`` (a run with an observer, see tracking.py: the observer and the per-line stamps
     of ``cf``'s file), each line run is stamped there as ``run_tracked`` stamps it, ``step``
     being the number of blocks run before ``pc``."""
+    program = cf.file.program
+    blocks = program.blocks
+    if pc >= program.read_end or blocks[pc].plain is None:  # not a plain line: nothing to set up
+        return 0, pc
     p = m.planner
     kinds = p.plain.kinds()
     if not kinds or p.shape is not None:  # a lathe cycle's shape: the compiled path reads it
         return 0, pc
-    program = cf.file.program
-    blocks = program.blocks
     n_blocks = program.read_end  # nothing from the closing '%' on
     g_words = p.plain.g_words()
     lathe = p.lathe

@@ -6,15 +6,15 @@ While moves are kept (a ``run``, the debugger, the toolpath) each pass goes thro
 a travel, which ``record`` checks. A run for diagnostics keeps no moves
 (``Planner.record_moves`` is False): there the passes only advance the clock and the path
 lengths, and ``record_passes`` does that in one loop with the planner's state read once, by
-the same rules of cycle_time.py, so that a program of thousands of cycles (each of a hundred
-passes) checks as fast as a mill program of as many blocks. The two ways give the same clock
-and lengths (tests/test_lathe_cycle_passes.py).
+the same rules of cycle_time.py. A pass moves X and Z alone (each cycle builds it from the one
+before with those two changed), so a straight one's length and rapid time are read from them.
+The two ways give the same clock and lengths (tests/test_lathe_cycle_passes.py).
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterable
-from operator import mul, sub
+from math import sqrt
 from typing import TYPE_CHECKING
 
 from .arcs import ARC_MODES
@@ -36,25 +36,42 @@ def record_passes(p: Planner, file: str, line: int, passes: Iterable[Pass], pass
             record(file, line, mode, start, end, centre, pass_of=pass_of)
         return
     times = p.times
-    distance = times.distance
-    rapid_rates = times.rapid_seconds_per_mm
     feed = p.codes.get("F") or 0.0
     modal = p.modal
     unit = INCH if modal.get("units") == 20.0 else 1.0
     plane = modal.get("plane", 17.0)
-    feed_seconds = p.feed_seconds
-    seconds = cut = rapid = 0.0
     hint = p.feed_hint and 0.0 < feed < 1.0
+    per_rev = modal.get("feed") == 95.0 or (modal.get("feed") == 99.0 and p.lathe)
+    # a straight cut's rate, the same all along it (None under G96: the general rule)
+    rate = times.straight_rate(feed, per_rev, p.codes.get("S") or 0.0, modal.get("spindle") == 96.0, unit)
+    xi, zi = times.diameter, p.axis_index.get("Z", -1)
+    if xi < 0 or zi < 0:
+        rate = None  # not a lathe's X (a diameter) and Z
+    else:
+        rx, rz = times.rapid_seconds_per_mm[xi], times.rapid_seconds_per_mm[zi]
+    threads = times.thread_modes
+    seconds = cut = rapid = 0.0
     for mode, start, end, centre in passes:
-        if mode == 0.0:
-            seconds += max(map(mul, map(abs, map(sub, end, start)), rapid_rates)) * unit
-            rapid += distance(start, end)
+        if rate is not None and centre is None and mode not in threads:
+            # a lathe cycle's pass moves X (a diameter: the tool goes half of it) and Z only
+            dx, dz = end[xi] - start[xi], end[zi] - start[zi]
+            length = sqrt(0.25 * dx * dx + dz * dz)
+            if mode == 0.0:
+                seconds += max(abs(dx) * rx, abs(dz) * rz) * unit
+                rapid += length
+                continue
+            if rate > 0.0 and length > 0.0:
+                seconds += length / rate * 60.0
+        elif mode == 0.0:
+            seconds += times.rapid_seconds(start, end, unit)
+            rapid += times.distance(start, end)
             continue
-        if centre is not None and mode in ARC_MODES:
-            length = times.arc_length(mode, plane, start, end, centre)
         else:
-            length = distance(start, end)
-        seconds += feed_seconds(mode, length, feed, start, end, unit)
+            if centre is not None and mode in ARC_MODES:
+                length = times.arc_length(mode, plane, start, end, centre)
+            else:
+                length = times.distance(start, end)
+            seconds += p.feed_seconds(mode, length, feed, start, end, unit)
         cut += length
         if hint:
             p.feed_per_minute_hint(mode, feed, line)

@@ -153,13 +153,27 @@ class MoveTimes:
             length = self.long_axis(start, end)
             if lead_change and length > 0.0 and feed > 0.0:
                 feed = _mean_lead(length, feed, lead_change)
-        elif not per_rev:
-            if feed * unit > self.top_feed:  # the control clamps the feed at its highest
-                feed = self.top_feed / unit
-            return length / feed * 60.0 if feed > 0.0 else 0.0
         else:
-            return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit) * 60.0
+            rate = self.straight_rate(feed, per_rev, speed, css, unit)
+            if rate is not None:
+                return length / rate * 60.0 if rate > 0.0 and length > 0.0 else 0.0
         return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit, False) * 60.0
+
+    def straight_rate(self, feed: float, per_rev: bool, speed: float, css: bool, unit: float = 1.0) -> float | None:
+        """How fast a cutting move that is not a thread goes, in program units per minute, where
+        that is the same all along it: F per minute, or F per revolution times S (S never above
+        ``top_speed``), never above ``top_feed`` (mm/min; ``unit`` is 25.4 under G20, else 1):
+        the control clamps both. 0 where it does not move (no feed, or per revolution at S0);
+        None under G96 on a lathe, where the rate follows the diameter (``per_rev_minutes``)."""
+        if not per_rev:
+            rate = feed if feed > 0.0 else 0.0
+        elif css and self.diameter >= 0:
+            return None
+        else:
+            rate = feed * min(speed, self.top_speed) if feed > 0.0 and speed > 0.0 else 0.0
+        if rate * unit > self.top_feed:  # the control clamps the feed at its highest
+            rate = self.top_feed / unit
+        return rate
 
     def per_rev_minutes(self, length: float, feed: float, speed: float, css: bool, clamp: float | None,
                         start: Sequence[float], end: Sequence[float], unit: float,
