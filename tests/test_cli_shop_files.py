@@ -81,6 +81,27 @@ def test_search_reads_only_the_head_of_files_with_other_endings(tmp_path: Path) 
     assert time.perf_counter() - started < 5  # reading 240 MB whole would take far longer
 
 
+def test_callee_in_a_sibling_folder_of_the_checked_tree_is_found(tmp_path: Path) -> None:
+    # a shop keeps main programs and macros in two folders of one machine; the control holds
+    # them all in one memory, so the main program's G65 P5100 finds the macro next door
+    mains, macros = tmp_path / "main", tmp_path / "macros"
+    mains.mkdir()
+    macros.mkdir()
+    write(tmp_path, ".cncmacro.toml", 'base = "fanuc-30i"\n')
+    write(mains, "O1001.nc", "O1001\nG65 P5100 A2.\n#101=#100\nM30\n")
+    write(macros, "O5100.nc", "O5100\n#100=#1*3\nM99\n")
+    assert cli("check", str(tmp_path)) == (0, "", "")
+    assert cli("check", str(mains / "O1001.nc"), str(macros / "O5100.nc")) == (0, "", "")
+    # the run goes through the macro with the caller's argument: 10/[#100-6] divides by zero,
+    # #100 = A x 3 = 2 x 3 = 6, so 6 - 6 = 0 (alarm 112)
+    write(mains, "O1001.nc", "O1001\nG65 P5100 A2.\n#101=10/[#100-6]\nM30\n")
+    code, out, _ = cli("check", str(tmp_path))
+    assert code == 1 and "O1001.nc:3:" in out and "[division-by-zero]" in out
+    # named alone, the main program still does not see the other folder
+    code, out, _ = cli("check", str(mains / "O1001.nc"))
+    assert code == 1 and "[program-not-found]" in out
+
+
 # ---- 2. codes the machine builder added
 
 

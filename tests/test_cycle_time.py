@@ -88,12 +88,14 @@ def test_a_dwell_counts_in_the_profiles_units(tmp_path: Path, profile, name, dwe
     assert cycle["seconds"] == pytest.approx(seconds, rel=0.01)
 
 
-def test_an_inch_program_moves_in_inches_and_reports_millimetres(tmp_path: Path) -> None:
-    # G20: G00 X2. is 50.8 mm at 24000 mm/min = 0.127 s; G01 X0 F20. is 2 in at 20 in/min = 6 s
+def test_an_inch_program_moves_in_inches_and_reports_inches(tmp_path: Path) -> None:
+    # G20: G00 X2. is 50.8 mm at 24000 mm/min = 0.127 s; G01 X0 F20. is 2 in at 20 in/min = 6 s;
+    # the path is shown in the program's unit: 2 in cut, 2 in rapid (docs/semantics.md §9)
     text = lines("O1007", "G20 G90 G94", "G00 X2.", "G01 X0 F20.", "M30")
     cycle = run_json(tmp_path, text)["cycle"]
     assert cycle["seconds"] == pytest.approx(6.127, rel=0.01)
-    assert (cycle["cut"], cycle["rapid"]) == (pytest.approx(50.8), pytest.approx(50.8))
+    assert (cycle["cut"], cycle["rapid"], cycle["unit"]) == (pytest.approx(2.0), pytest.approx(2.0), "in")
+    assert cycle["text"] == "≈ 6.1 s · 2.0 in cut · 2.0 in rapid"
 
 
 def test_tool_changes_and_m_codes_take_the_machine_files_times(tmp_path: Path) -> None:

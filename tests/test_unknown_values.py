@@ -121,3 +121,23 @@ def test_the_tool_in_the_spindle_before_any_t_is_unknown(tmp_path: Path) -> None
     # after T2 M06 it is tool 2: #2402 given as 12 in [variables], the program runs to its end
     loaded = text.replace("O0100\n", "O0100\nT2 M06\n")
     assert check(tmp_path, loaded, "[variables]\n2402 = 12.0\n", "--dialect", "haas") == (0, [])
+
+
+# a touch probe switched on by M51 and checked through the interface input #1004 (UI004), with
+# the shop's own alarm when it stays off: the sensor's state is the machine's, not the folder's
+PROBE_ON = "O0100\nM51\nG04 X1.\nIF [#1004 EQ 1] GOTO 9\n#3000=7 (PROBE NOT ON)\nN9 G00 Z50.\nM30\n"
+
+
+def test_an_input_signal_is_unknown_not_zero(tmp_path: Path) -> None:
+    # read as 0 offline, #1004 EQ 1 was false and the run reached alarm 3007 on every check
+    code, found = check(tmp_path, PROBE_ON)
+    assert code == 0
+    assert found == [
+        "4:1: hint: the analysis run stops here: this block depends on #1004, an input signal the machine sends; "
+        "this folder does not give it; set it under [variables] in .cncmacro.toml to check further [unknown-value]"
+    ]
+    # the signal given: on (1) jumps over the alarm to N9; off (0) reaches 3000 + 7 = 3007
+    assert check(tmp_path, PROBE_ON, "[variables]\n1004 = 1\n") == (
+        0, ["5:1: hint: no analysis run reaches this block [not-executed]"])  # fmt: skip
+    code, found = check(tmp_path, PROBE_ON, "[variables]\n1004 = 0\n")
+    assert code == 0 and found[0] == "5:1: warning: the run reaches macro alarm 3007: PROBE NOT ON [macro-alarm]"

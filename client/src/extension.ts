@@ -1,17 +1,22 @@
 /**
  * The extension's entry point: output channels, the language server, the debugger, the
- * commands, the toolpath view and the dialect status-bar item, and the reaction to settings
- * changes and to another interpreter picked in the Python extension.
+ * commands, the toolpath view and the dialect status-bar item, the `.txt` programs, and the
+ * reaction to settings changes and to another interpreter picked in the Python extension.
+ *
+ * The extension wakes for every plain-text file as well (to find the `.txt` programs among
+ * them), so the language server starts only once a CNC macro program is open: a README read in
+ * another project starts no Python.
  */
 import * as vscode from 'vscode';
 import { registerCommands } from './commands';
 import { registerDebugger } from './debugAdapter';
-import { ServerController } from './languageClient';
+import { LANGUAGE_ID, ServerController } from './languageClient';
 import { onDidChangePythonExtensionEnvironment } from './python';
 import { pythonPath, SECTION } from './settings';
 import { registerSequenceNumberCommands } from './sequenceNumbers';
 import { DialectStatus } from './statusBar';
 import { registerToolpath } from './toolpath';
+import { programFirstLine, registerTxtPrograms } from './txtPrograms';
 
 let controller: ServerController | undefined;
 
@@ -27,6 +32,9 @@ export function activate(context: vscode.ExtensionContext): void {
   registerSequenceNumberCommands(context);
   context.subscriptions.push(
     vscode.workspace.onDidChangeConfiguration(async (e) => {
+      if (!server.wanted) {
+        return; // not started yet: it reads the settings when it starts
+      }
       if (e.affectsConfiguration(`${SECTION}.python.path`)) {
         log.info('cncMacro.python.path changed: restarting the language server');
         await server.restart();
@@ -39,14 +47,34 @@ export function activate(context: vscode.ExtensionContext): void {
       }
     }),
     onDidChangePythonExtensionEnvironment(async () => {
-      if (pythonPath()) {
+      if (pythonPath() || !server.wanted) {
         return; // cncMacro.python.path wins over the Python extension's choice
       }
       log.info("the Python extension's interpreter changed: restarting the language server");
       await server.restart();
     }),
   );
-  void server.start();
+  startWithFirstProgram(context, server);
+  const firstLine = programFirstLine(context.extension.packageJSON);
+  if (firstLine) {
+    registerTxtPrograms(context, firstLine);
+  }
+}
+
+/** Start the language server now if a CNC macro program is open, else when the first one opens. */
+function startWithFirstProgram(context: vscode.ExtensionContext, server: ServerController): void {
+  const isProgram = (d: vscode.TextDocument): boolean => d.languageId === LANGUAGE_ID;
+  if (vscode.workspace.textDocuments.some(isProgram)) {
+    void server.start();
+    return;
+  }
+  const opened = vscode.workspace.onDidOpenTextDocument((d) => {
+    if (isProgram(d)) {
+      opened.dispose();
+      void server.start();
+    }
+  });
+  context.subscriptions.push(opened);
 }
 
 export async function deactivate(): Promise<void> {

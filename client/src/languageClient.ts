@@ -84,8 +84,16 @@ export class ServerController implements vscode.Disposable {
     return this.client?.isRunning() ?? false;
   }
 
+  /** Whether the server was asked to start (it runs, starts, or failed to and waits for a fix). */
+  get wanted(): boolean {
+    return this.asked;
+  }
+
+  private asked = false;
+
   /** Find Python (telling the user when there is none that fits) and start the server. */
   start(): Promise<void> {
+    this.asked = true;
     this.starting ??= this.doStart().finally(() => {
       this.starting = undefined;
     });

@@ -22,6 +22,11 @@ export class DialectStatus implements vscode.Disposable {
     this.item.command = 'cncMacro.selectDialect';
     this.subscriptions.push(
       vscode.window.onDidChangeActiveTextEditor(() => this.update()),
+      vscode.workspace.onDidOpenTextDocument((d) => {
+        if (d === vscode.window.activeTextEditor?.document) {
+          this.update(); // its language changed (a .txt program given CNC Macro)
+        }
+      }),
       vscode.workspace.onDidChangeConfiguration((e) => {
         if (e.affectsConfiguration(`${settings.SECTION}.dialect`)) {
           this.update(1000); // after the server has the new setting

@@ -136,7 +136,7 @@ describe('the toolpath of a paused run', () => {
     const made = (await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'X5' }, { name: 'M6.5' }] })).body
       .breakpoints;
     assert.match(made[0].message, /请写顺序号（N100）、程序号（O9100）或 G、M、T 代码/);
-    assert.match(made[1].message, /M代码不能带小数点/);
+    assert.match(made[1].message, /M代码只能写整数/);
   });
 
   test('a lathe is sent as one: lathe true and its axes, Z the spindle axis, X radial and a diameter', async () => {

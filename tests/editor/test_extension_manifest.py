@@ -79,8 +79,29 @@ def test_the_language_claims_the_file_names_the_checker_reads() -> None:
     for pattern in language["filenamePatterns"]:
         digits = pattern.count("[0-9]")
         assert is_program_file(Path("O" + "1" * digits))
-    first_line = re.compile(language["firstLine"])
-    assert first_line.match("%") and first_line.match("O1234 (MAIN)") and not first_line.match("G00 X0")
+
+
+# First lines of files: programs as controls and DNC folders keep them, and ordinary text
+FIRST_LINES = [
+    "%", "% ", "O1234", "O0810 (DRILL)", "o0040", "O1234(MAIN)", "  O9100", "<CUT-1.NC>", "(PART 12) O0100",
+    "O123456789", "G00 X0", "%PDF-1.4", "% of the parts", "O1st operation", "O12.5", "Setup notes for O1000",
+    "README", "<html>", "<?xml version='1.0'?>", "(A COMMENT ALONE)", "", "O",
+]  # fmt: skip
+
+
+def test_a_txt_file_opens_as_a_program_exactly_when_its_first_line_starts_one(tmp_path: Path) -> None:
+    """The manifest's ``firstLine`` (which VS Code reads for files of no known ending, and the
+    client for plain-text ``.txt`` files) takes a first line exactly when the server's rule of
+    which files are programs (``files.starts_like_program``) takes a file of that one line."""
+    first_line = re.compile(_manifest()["contributes"]["languages"][0]["firstLine"])
+    taken = []
+    for k, line in enumerate(FIRST_LINES):
+        path = tmp_path / f"{k}.txt"
+        path.write_text(line + "\n", encoding="utf-8")
+        assert bool(first_line.match(line)) == is_program_file(path), line
+        taken += [line] if first_line.match(line) else []
+    assert taken == ["%", "% ", "O1234", "O0810 (DRILL)", "o0040", "O1234(MAIN)", "  O9100", "<CUT-1.NC>",
+                     "(PART 12) O0100", "O123456789"]  # fmt: skip
 
 
 def test_the_debugger_documents_every_launch_attribute_the_adapter_reads() -> None:

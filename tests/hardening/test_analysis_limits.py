@@ -91,7 +91,7 @@ def test_a_run_stopped_as_a_macro_runs_off_its_end_is_reported_on_its_last_line(
 def _endless_programs(count: int, then: str = "") -> str:
     out = ["%"]
     for k in range(count):
-        out += [f"O{1000 + k}", "WHILE[#1000 EQ 0]DO1", "#1=#1+1", "END1", "M30"]  # main programs: #1 starts vacant
+        out += [f"O{1000 + k}", "WHILE[#100 EQ #0]DO1", "#1=#1+1", "END1", "M30"]  # main programs: #1 starts vacant
     out += [then, "%"] if then else ["%"]
     return "\n".join(out) + "\n"
 
@@ -124,12 +124,12 @@ def test_the_file_budget_follows_edits_that_end_an_endless_program(tmp_path: Pat
     ws.open(path, text, 1)
     before = ws.analyze(path)
     assert before is not None and any("was not run" in d.message for d in before.diagnostics[path])
-    ws.change(path, 2, 0, 2, len("WHILE[#1000 EQ 0]DO1"), "WHILE[#1 LT 3]DO1", 2)
+    ws.change(path, 2, 0, 2, len("WHILE[#100 EQ #0]DO1"), "WHILE[#1 LT 3]DO1", 2)
     after = ws.analyze(path)
     assert after is not None
     assert not any("was not run" in d.message for d in after.diagnostics[path])
     fresh = WorkspaceAnalysis(max_blocks=2_000)
-    fresh.open(path, text.replace("WHILE[#1000 EQ 0]DO1", "WHILE[#1 LT 3]DO1", 1), 2)
+    fresh.open(path, text.replace("WHILE[#100 EQ #0]DO1", "WHILE[#1 LT 3]DO1", 1), 2)
     again = fresh.analyze(path)
     assert again is not None
     assert after.diagnostics[path] == again.diagnostics[path]

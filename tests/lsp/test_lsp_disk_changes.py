@@ -197,3 +197,21 @@ async def test_a_fifo_named_like_a_program_is_never_opened(watching: LanguageCli
         release(fifo)
         if uri is not None:
             close_file(watching, uri)
+
+
+async def test_a_txt_callee_no_watcher_covers_is_read_again_when_it_changes(watching: LanguageClient) -> None:
+    """``1234.txt`` is a program by its first line (``O1234``), but neither its ending nor its name
+    is one the editor's watcher reports: with the watcher in force it is still looked at."""
+    root: Path = watching.root  # type: ignore[attr-defined]
+    macro = root / "1234.txt"
+    macro.write_text(MACRO, "utf-8")
+    macro_uri = macro.as_uri()
+    uri = open_file(watching, root / "MAIN5.nc", MAIN)
+    try:
+        await published_where(watching, {macro_uri: lambda d: division_lines(d) == [1]}, timeout=10)
+        rewrite(macro, "O1234 (RING)\n#10=360/[#1+2]\n#11=1/[#1-2]\nM99\n")  # no file event comes
+        got = await published_where(watching, {macro_uri: lambda d: division_lines(d) == [2]}, timeout=10)
+        assert division_lines(got[macro_uri]) == [2]
+    finally:
+        close_file(watching, uri)
+        macro.unlink()

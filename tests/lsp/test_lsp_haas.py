@@ -5,6 +5,7 @@ workspace, which names no profile) gets none of it, and a ``profile-suggestion``
 
 from __future__ import annotations
 
+import re
 from collections.abc import AsyncIterator
 from pathlib import Path
 
@@ -212,3 +213,32 @@ async def test_the_haas_program_is_clean_and_as_fanuc_0i_it_suggests_haas(
     [hint] = [d for d in found if d.code == "profile-suggestion"]
     assert hint.message.startswith("This file uses what Haas NGC mill has and FANUC 0i Custom Macro B lacks")
     assert "(cncmacro: dialect=haas)" in hint.message and 'base = "haas"' in hint.message
+
+
+# §6: Haas documents none of FANUC's alarm numbers, so hover names an alarm without one
+ALARM_WORDS = "O02000\n#1=#12000+SQRT[2]\n#2=#_ABC\nM30\n"
+T12000, SQRT, NAME = (1, 4), (1, 11), (2, 4)
+NUMBERED = re.compile(r"alarm\s*\d|报警\s*\d|\d\s*号报警", re.IGNORECASE)
+
+
+async def test_hover_names_an_alarm_without_fanucs_number_on_haas(
+    haas_en: LanguageClient, haas_zh: LanguageClient, fanuc_en: LanguageClient
+) -> None:
+    uri = open_file(haas_en, HAAS / "O02000.nc", ALARM_WORDS)
+    undefined = await hover_text(haas_en, uri, *T12000)
+    assert "No such variable in this dialect (alarm)" in undefined
+    sqrt = await hover_text(haas_en, uri, *SQRT)
+    assert "Square root of a; a negative is alarm" in sqrt
+    names = await hover_text(haas_en, uri, *NAME)
+    assert "This dialect has no system variable names (alarm)" in names
+    assert [t for t in (undefined, sqrt, names) if NUMBERED.search(t)] == []
+    zh_uri = open_file(haas_zh, HAAS / "O02000.nc", ALARM_WORDS)
+    chinese = [await hover_text(haas_zh, zh_uri, *at) for at in (T12000, SQRT, NAME)]
+    assert "该系统中不存在此变量（报警）" in chinese[0] and "平方根；a为负时为报警" in chinese[1]
+    assert "该系统不支持系统变量名（报警）" in chinese[2]
+    assert [t for t in chinese if NUMBERED.search(t)] == []
+    # the same words on fanuc-0i keep FANUC's numbers: 115 no such variable, 119 argument out of range
+    fanuc = open_file(fanuc_en, FANUC / "O02000.nc", ALARM_WORDS)
+    assert "No such variable in this dialect (alarm 115)" in await hover_text(fanuc_en, fanuc, *T12000)
+    assert "Square root of a; a negative is alarm 119" in await hover_text(fanuc_en, fanuc, *SQRT)
+    assert "This dialect has no system variable names (alarm 114)" in await hover_text(fanuc_en, fanuc, *NAME)

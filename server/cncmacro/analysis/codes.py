@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 from ..bilingual import Detail, detail
 from ..dialects.alarms import (
+    ARC_RADIUS,
     ARGUMENT_RANGE,
     BRACKET_NESTING,
     COUNT_TWICE,
@@ -223,6 +224,22 @@ CODES: dict[str, Code] = _codes(
                 "top speed.",
                 "S 超过机床文件 [limits] 中的主轴最高转速：系统以最高转速旋转。"),
          RUN, subjects=("spindle-limit",)),
+    Code("arc-radius", ERROR,
+         detail("An I, J, K arc whose end point is off the start's circle by more than the arc tolerance "
+                "(alarm 20, PS0020 on FANUC; a warning on controls whose manuals at hand give no alarm for it).",
+                "I、J、K 圆弧的终点偏离起点所在圆周超过圆弧允差（FANUC 报警 20，PS0020；"
+                "手头手册未给出报警的系统为警告）。"),
+         RUN, (ARC_RADIUS,), ("arc-radius",), milder=WARNING),
+    Code("arc-short-radius", WARNING,
+         detail("An R arc whose radius is shorter than half the chord: no arc of that radius reaches the end point.",
+                "R 圆弧的半径小于弦长的一半：该半径的圆弧到不了终点。"), RUN),
+    Code("arc-r-full-circle", WARNING,
+         detail("An R arc whose end point is its start: the control makes no move; a full circle takes I, J or K.",
+                "R 圆弧的终点就是起点：系统不移动；整圆须用 I、J 或 K。"), RUN),
+    Code("unit-change", WARNING,
+         detail("G20/G21 changes the unit after the program has moved: FANUC has it at the program's start, "
+                "before the coordinate system is set.",
+                "程序移动之后用 G20/G21 改变了单位：FANUC 要求在程序开头、设定坐标系之前指定。"), RUN),
     Code("not-executed", HINT,
          detail("Blocks that the analysis runs never reached.", "分析运行从未到达的程序段。"), RUN),
     Code("decimal-point", ERROR,
@@ -262,6 +279,10 @@ CODES: dict[str, Code] = _codes(
     Code("machine-file", ERROR,
          detail("The machine file (.cncmacro.toml) cannot be used: the defaults stand in.",
                 "机床文件（.cncmacro.toml）无法使用：改用默认设置。")),
+    Code("machine-file-note", INFORMATION,
+         detail("What the machine file (.cncmacro.toml) adds to its profile: common variable ranges the profile "
+                "does not list.",
+                "机床文件（.cncmacro.toml）在其系统配置之外增加的内容：配置未列出的公共变量范围。")),
 )  # fmt: skip
 
 _BY_ALARM: dict[int, str] = {n: c.name for c in CODES.values() for n in c.alarms}

@@ -16,7 +16,8 @@ from ..bilingual import is_chinese
 from ..syntax.document import ParsedDocument
 from .checks import static_checks
 from .checks.line_facts import LineContext
-from .checks.static_lines import StaticLines, syntax_findings
+from .checks.static_lines import StaticLines
+from .checks.syntax_check import syntax_findings
 from .diagnostics import Diagnostic
 from .indexes.block_memo import BlockMemo
 from .severity import apply_severities
@@ -37,7 +38,7 @@ def first_screen_findings(path: str, lines: list[str], extra: Sequence[int], hea
     chinese = is_chinese(locale)
     for line in extra:
         block = top.cache.get(lines[line])
-        found.extend(syntax_findings(block.problems, line, path, chinese))
+        found.extend(syntax_findings(block.problems, line, path, chinese, ctx.dialect))
         facts = memo.facts(block, ctx)
         if facts is not None:
             found.extend(static_checks.findings_of(facts, line, path))

@@ -5,7 +5,9 @@ nearest to each file, else the defaults) and each group is opened in a ``Workspa
 with its own settings (call codes, presets, severities): syntax, the static checks, and what bounded
 runs of the machine find (from each program nothing calls; called programs through their
 callers, also those on disk in the checked files' folders and the search paths, whose own
-findings are not printed). Hints (``not-executed``) are printed only with ``--hints``. Exit status: 0 when no
+findings are not printed). A call finds its program in the folder of any checked file (one
+machine's programs, held in one memory on the control) and in the search paths. Hints
+(``not-executed``) are printed only with ``--hints``. Exit status: 0 when no
 error was found, 1 when one was, 2 on bad usage or unreadable input (a missing path, a binary
 file, a folder or file that cannot be read, a folder in which no file is a program, a file found
 in a folder that is larger than ``MAX_PROGRAM_BYTES`` or is no regular file, a bad machine
@@ -46,7 +48,7 @@ from ..library.files import (
 from ..library.machine_file import (
     MachineFileError,
     MachineSettings,
-    common_beyond_profile,
+    common_note,
     find_machine_file,
     load_machine_file,
 )
@@ -117,8 +119,12 @@ def check_paths(
             settings = _machine_settings(machine_file)
             if machine_file is not None:
                 settings = _noted(settings, machine_file, dialect, chinese, shown_err)
-            folders = [*dict.fromkeys(str(path.parent) for path, _ in files), *(search_paths or [])]
-            workspace = partial(WorkspaceAnalysis, settings=settings, dialect=dialect, search_paths=search_paths or [],
+            checked = [*dict.fromkeys(str(path.parent) for path, _ in files)]
+            folders = [*checked, *(search_paths or [])]
+            # the checked files are one machine's programs, held in one memory on the control:
+            # a call finds a program in any of their folders, not only the caller's
+            callee_folders = [*(search_paths or []), *(f for f in checked if f not in (search_paths or []))]
+            workspace = partial(WorkspaceAnalysis, settings=settings, dialect=dialect, search_paths=callee_folders,
                                 locale=locale, max_blocks=max_blocks, severities=settings.severity,
                                 workspace_folders=folders)  # fmt: skip
             ws = workspace()
@@ -191,8 +197,7 @@ def _noted(
     ``err``, as notes that change no exit status."""
     shown = shown_text(str(machine_file))
     settings, overridden = typed_profile_wins(settings, typed, shown)
-    added = common_beyond_profile(settings, typed)
-    for note in (overridden, added and detail(f"{shown}: common {added}", f"{shown}：common {added.zh}")):
+    for note in (overridden, common_note(settings, shown, typed)):
         if note is not None:
             print(f"cncmacro：注意：{note.zh}" if chinese else f"cncmacro: note: {note}", file=err)
     return settings

@@ -3,7 +3,8 @@
 The machine times every move, dwell, tool change and M code (planner/cycle_time.py); this
 module reads its clock, path lengths and tool changes after the run and writes them in the
 text output (``cycle time O1000: ≈ 3 min 12 s · 1,842 mm cut · 6,300 mm rapid``, then one line
-per tool change) and the JSON (``cycle``: ``seconds``, ``cut``, ``rapid`` and ``tools``).
+per tool change) and the JSON (``cycle``: ``seconds``, ``cut``, ``rapid``, their ``unit`` and
+``tools``): the path in the program's unit, inches for a ``G20`` program.
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from ..analysis.runs.cycle_summary import ToolPart, Totals, tool_name, tool_parts, totals_text
+from ..analysis.runs.cycle_summary import ToolPart, Totals, end_totals, tool_name, tool_parts, totals_text
 from ..bilingual import is_chinese
 from ..machine import Machine
 from ..machine.status import RunStatus
@@ -20,20 +21,23 @@ from .terminal import TextOut
 
 def run_totals(machine: Machine) -> tuple[Totals, list[ToolPart]]:
     """The run's totals and each tool's part."""
-    end = Totals(machine.planner.clock, machine.planner.cut_length, machine.planner.rapid_length)
+    end = end_totals(machine.planner)
     changes = [(c.file, c.line, c.tool, Totals(c.clock, c.cut, c.rapid)) for c in machine.planner.tool_changes]
     return end, tool_parts(changes, end)
 
 
 def cycle_json(machine: Machine, program: str, locale: str | None = None) -> dict[str, Any]:
-    """``cycle`` of ``--json``: seconds, mm cut and mm rapid, for the program and per tool, and
-    the program's as a person reads them (``text``, in ``locale``: the toolpath's legend)."""
+    """``cycle`` of ``--json``: seconds, the cut and rapid path in ``unit`` (the program's: mm, or
+    in for a ``G20`` program), for the program and per tool, and the program's as a person reads
+    them (``text``, in ``locale``: the toolpath's legend)."""
     end, parts = run_totals(machine)
+    cut, rapid = end.shown()
     return {
         "program": program,
         "seconds": end.seconds,
-        "cut": end.cut,
-        "rapid": end.rapid,
+        "cut": cut,
+        "rapid": rapid,
+        "unit": end.unit,
         "text": totals_text(end, locale),
         "tools": [
             {
@@ -41,8 +45,8 @@ def cycle_json(machine: Machine, program: str, locale: str | None = None) -> dic
                 "file": p.file,
                 "line": p.line + 1,
                 "seconds": p.totals.seconds,
-                "cut": p.totals.cut,
-                "rapid": p.totals.rapid,
+                "cut": p.totals.shown()[0],
+                "rapid": p.totals.shown()[1],
             }
             for p in parts
         ],

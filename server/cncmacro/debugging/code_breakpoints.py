@@ -19,6 +19,7 @@ import re
 from dataclasses import dataclass
 
 from ..bilingual import Detail, detail
+from ..dialects import DEFAULT_DIALECT, get_dialect
 from ..machine import Machine, MacroAlarm
 from ..machine.calls import code_value, recognise_call
 from ..machine.expressions import ExpressionCompiler
@@ -65,7 +66,8 @@ def read_code_name(name: str, machine: Machine | None) -> CodeName | Detail:
         )
     word = words[0]
     if word.letter == "M":
-        problem = m_decimal_point(word)
+        # before a launch the default profile says it (its alarm number)
+        problem = m_decimal_point(word, machine.dialect if machine is not None else get_dialect(DEFAULT_DIALECT))
         if problem is not None:
             return problem
     value = code_value(word)

@@ -6,18 +6,22 @@ GSK-only numbers (291, 293) come from seeds 001 and 002, the FANUC 30i's for var
 (3000+n on fanuc, 5900+n on gsk980tdi) or ``G65 H99`` carries the program's own text instead.
 These numbers name an alarm inside the interpreter on every profile; what a person is shown is
 the profile's (``Dialect.documented_alarms``, ``Dialect.shown_alarm``, ``alarm_words``): Haas
-documents none of them, so its alarms are shown without a number.
+documents none of them, so its alarms are shown without a number. A message that names an alarm
+writes it with ``Dialect.alarm_said`` ("alarm 127", or "alarm") or ``Dialect.alarm_titled`` (with
+its text), never with the number typed into the sentence.
 """
 
 from __future__ import annotations
 
-from ..bilingual import pick
+from ..bilingual import Detail, detail, pick
 from .tables import AlarmDoc
 
 DECIMAL_POINT = 7
 IMPROPER_G_CODE = 10
+ARC_RADIUS = 20  # PS0020: I, J, K whose end is off the start's circle (docs/semantics.md §8, "Arcs")
 PROGRAM_NOT_FOUND = 76
 SUBPROGRAM_NESTING = 77
+DUPLICATE_PROGRAM = 73
 OVERFLOW = 111
 DIVISION_BY_ZERO = 112
 FORMAT = 114
@@ -66,7 +70,9 @@ ALARMS: dict[int, AlarmDoc] = {
     for a in (
         AlarmDoc(DECIMAL_POINT, "illegal use of decimal point", "小数点使用不当"),
         AlarmDoc(IMPROPER_G_CODE, "improper G code", "G代码不当"),
+        AlarmDoc(ARC_RADIUS, "over tolerance of radius", "圆弧半径超差"),
         AlarmDoc(PROGRAM_NOT_FOUND, "program not found", "未找到程序"),
+        AlarmDoc(DUPLICATE_PROGRAM, "program number already in use", "程序号已被使用"),
         AlarmDoc(SUBPROGRAM_NESTING, "subprogram nesting too deep", "子程序嵌套过深"),
         AlarmDoc(OVERFLOW, "calculated value out of range", "运算结果超出范围"),
         AlarmDoc(DIVISION_BY_ZERO, "division by zero", "除数为零"),
@@ -148,12 +154,34 @@ ALARMS: dict[int, AlarmDoc] = {
 }
 
 
-def alarm_words(shown: int | None, locale: str = "en") -> str:
+def shown_number(number: int, documented: frozenset[int] | None) -> int | None:
+    """The number a person is shown for alarm ``number`` on a control that documents
+    ``documented`` (``Dialect.documented_alarms``: None, every one)."""
+    return number if documented is None or number in documented else None
+
+
+def alarm_words(shown: int | None, locale: str = "en", width: int = 0) -> str:
     """How a person reads an alarm's number: "alarm 128" ("报警 128"), or "alarm" ("报警")
-    alone where the profile documents no number for it (``Dialect.shown_alarm``)."""
+    alone where the profile documents no number for it (``Dialect.shown_alarm``). ``width``
+    pads the number with zeros as a message writes it ("alarm 007")."""
     if shown is None:
         return pick(locale, "alarm", "报警")
-    return pick(locale, f"alarm {shown}", f"报警 {shown}")
+    return pick(locale, f"alarm {shown:0{width}d}", f"报警 {shown:0{width}d}")
+
+
+def alarm_said(shown: int | None, width: int = 0) -> Detail:
+    """``alarm_words`` in both languages, for a message that names the alarm: "(alarm 127)",
+    "stops with alarm 127", and where no number is shown "(alarm)", "stops with alarm"."""
+    return detail(alarm_words(shown, "en", width), alarm_words(shown, "zh", width))
+
+
+def alarm_titled(shown: int | None, number: int, width: int = 0) -> Detail:
+    """The alarm named with its text: "alarm 010 improper G code" ("报警 010 G代码不当"), or, where
+    no number is shown, "alarm: improper G code" ("报警：G代码不当")."""
+    doc = ALARMS[number]
+    if shown is None:
+        return detail(f"alarm: {doc.en}", f"报警：{doc.zh}")
+    return detail(f"alarm {shown:0{width}d} {doc.en}", f"报警 {shown:0{width}d} {doc.zh}")
 
 
 def alarm_text(number: int, locale: str = "en") -> str:

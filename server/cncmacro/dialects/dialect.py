@@ -15,6 +15,7 @@ from functools import cache
 from typing import Any
 
 from ..bilingual import Detail, detail
+from .alarms import alarm_said, alarm_titled, shown_number
 from .cycle_words import CycleWords
 from .drill_cycles import DrillCycle
 from .lathe_cycle_rules import LatheCycleRules
@@ -93,6 +94,9 @@ class Dialect:
     # known: a G code outside the table and the machine's call codes is alarm 010, a decimal point
     # in an M code alarm 007; without this switch both are warnings and a run goes on
     word_format_alarms: bool = False
+    # §8 "Arcs": I, J, K whose end point is off the start's circle by more than the tolerance is
+    # alarm PS0020 (FANUC's list); without this switch the run notes it and goes on
+    arc_radius_alarm: bool = False
     # §1 the first two or more letters of a macro word stand for the word (WH for WHILE)
     keyword_abbreviations: bool = False
     # §4 IF [cond] <statement> without THEN runs the statement (FANUC profiles, Haas); elsewhere
@@ -226,10 +230,21 @@ class Dialect:
     def shown_alarm(self, number: int) -> int | None:
         """The number a person is shown for the interpreter's alarm ``number`` on this control,
         or None where the control documents none (``documented_alarms``)."""
-        documented = self.documented_alarms
         if number in self.unnumbered_alarms:
             return None
-        return number if documented is None or number in documented else None
+        return shown_number(number, self.documented_alarms)
+
+    def alarm_said(self, number: int, width: int = 0) -> Detail:
+        """The interpreter's alarm ``number`` as a message names it on this control (English,
+        Chinese): "alarm 127" ("报警 127"), or "alarm" ("报警") alone where it documents no number;
+        ``width`` pads the number with zeros ("alarm 007"). The one way a check, a hover or a block
+        rule writes an alarm into its text (docs/semantics.md §6)."""
+        return alarm_said(self.shown_alarm(number), width)
+
+    def alarm_titled(self, number: int, width: int = 0) -> Detail:
+        """Alarm ``number`` with its text: "alarm 010 improper G code", or "alarm: improper G code"
+        where this control documents no number for it."""
+        return alarm_titled(self.shown_alarm(number), number, width)
 
     def on_control(self, number: int) -> bool:
         """Whether program ``number`` lives on the control (the profile or a machine file says so)."""
@@ -308,8 +323,9 @@ class Dialect:
         return _tables(self.data_module)[5].get(number)
 
     def functions(self) -> tuple[FunctionDoc, ...]:
-        """The common functions, then the forms ``extra_functions`` adds (by name or signature)."""
-        return _functions(self.extra_functions)
+        """The common functions, then the forms ``extra_functions`` adds (by name or signature),
+        each alarm their texts name as this control shows it."""
+        return _functions_shown(self.extra_functions, self.documented_alarms)
 
 
 _Tables = tuple[
@@ -336,3 +352,15 @@ def _functions(extra: frozenset[str]) -> tuple[FunctionDoc, ...]:
     mod = importlib.import_module(f"{__package__}.functions_data")
     added = tuple(f for f in mod.EXTRA_FUNCTIONS if f.name in extra or f.signature in extra)
     return (*mod.FUNCTIONS, *added)
+
+
+@cache
+def _functions_shown(extra: frozenset[str], documented: frozenset[int] | None) -> tuple[FunctionDoc, ...]:
+    """``_functions`` with each ``{alarm}`` of a text filled as a control documenting ``documented`` shows it."""
+    out = []
+    for f in _functions(extra):
+        if f.alarm is not None:
+            said = alarm_said(shown_number(f.alarm, documented))
+            f = replace(f, en=f.en.replace("{alarm}", said), zh=f.zh.replace("{alarm}", said.zh))
+        out.append(f)
+    return tuple(out)

@@ -16,6 +16,7 @@ colours and completes it.
 
 from __future__ import annotations
 
+from .alarms import ARGUMENT_RANGE, DIVISION_BY_ZERO, SEQUENCE_NUMBER
 from .tables import FUNCTION, OPERATOR, STATEMENT, FunctionDoc
 
 FUNCTIONS: tuple[FunctionDoc, ...] = (
@@ -33,15 +34,17 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
         "ASIN",
         FUNCTION,
         "ASIN[a]",
-        "Arc sine of a, in degrees; a outside -1 to 1 is alarm 119",
-        "反正弦，结果以度为单位；a超出-1～1时为119号报警",
+        "Arc sine of a, in degrees; a outside -1 to 1 is {alarm}",
+        "反正弦，结果以度为单位；a超出-1～1时为{alarm}",
+        ARGUMENT_RANGE,
     ),
     FunctionDoc(
         "ACOS",
         FUNCTION,
         "ACOS[a]",
-        "Arc cosine of a, in degrees; a outside -1 to 1 is alarm 119",
-        "反余弦，结果以度为单位；a超出-1～1时为119号报警",
+        "Arc cosine of a, in degrees; a outside -1 to 1 is {alarm}",
+        "反余弦，结果以度为单位；a超出-1～1时为{alarm}",
+        ARGUMENT_RANGE,
     ),
     FunctionDoc(
         "ATAN",
@@ -57,7 +60,14 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
         "Arc tangent of a, -90 to 90 degrees",
         "反正切a，结果为-90～90度",
     ),
-    FunctionDoc("SQRT", FUNCTION, "SQRT[a]", "Square root of a; a negative is alarm 119", "平方根；a为负时为119号报警"),
+    FunctionDoc(
+        "SQRT",
+        FUNCTION,
+        "SQRT[a]",
+        "Square root of a; a negative is {alarm}",
+        "平方根；a为负时为{alarm}",
+        ARGUMENT_RANGE,
+    ),
     FunctionDoc("ABS", FUNCTION, "ABS[a]", "Absolute value of a", "绝对值"),
     FunctionDoc(
         "ROUND",
@@ -86,8 +96,9 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
         "LN",
         FUNCTION,
         "LN[a]",
-        "Natural logarithm of a; a zero or negative is alarm 119",
-        "自然对数；a小于等于0时为119号报警",
+        "Natural logarithm of a; a zero or negative is {alarm}",
+        "自然对数；a小于等于0时为{alarm}",
+        ARGUMENT_RANGE,
     ),
     FunctionDoc("EXP", FUNCTION, "EXP[a]", "e raised to the power a", "指数函数，e的a次方"),
     FunctionDoc(
@@ -132,8 +143,9 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
         "MOD",
         OPERATOR,
         "a MOD b",
-        "Remainder of a divided by b (same precedence as * and /); b = 0 is alarm 112",
-        "a除以b的余数（优先级同*和/）；b为0时为112号报警",
+        "Remainder of a divided by b (same precedence as * and /); b = 0 is {alarm}",
+        "a除以b的余数（优先级同*和/）；b为0时为{alarm}",
+        DIVISION_BY_ZERO,
     ),
     # relations (only inside IF and WHILE conditions)
     FunctionDoc(
@@ -186,9 +198,10 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
         STATEMENT,
         "GOTO n",
         "Jump to the block labelled Nn (n 1-99999, may be a variable or expression), searching forward "
-        "to the end of the program and then from its start; not found is alarm 128",
+        "to the end of the program and then from its start; not found is {alarm}",
         "无条件转移到顺序号为Nn的程序段（n为1～99999，可用变量或表达式），先向后检索到程序结尾，"
-        "再从程序开头检索；找不到时为128号报警",
+        "再从程序开头检索；找不到时为{alarm}",
+        SEQUENCE_NUMBER,
     ),
     FunctionDoc(
         "THEN",
@@ -265,8 +278,9 @@ EXTRA_FUNCTIONS: tuple[FunctionDoc, ...] = (
         "POW",
         FUNCTION,
         "POW[a,b]",
-        "a to the power b (POW[2,3] = 8); a negative a with a fractional b, or 0 to a negative power, is alarm 119",
-        "a的b次方（POW[2,3]=8）；a为负数而b不是整数，或0的负数次方时为119号报警",
+        "a to the power b (POW[2,3] = 8); a negative a with a fractional b, or 0 to a negative power, is {alarm}",
+        "a的b次方（POW[2,3]=8）；a为负数而b不是整数，或0的负数次方时为{alarm}",
+        ARGUMENT_RANGE,
     ),
     FunctionDoc(
         "ADP",

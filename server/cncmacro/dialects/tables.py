@@ -158,6 +158,9 @@ class FunctionDoc:
     signature: str
     en: str
     zh: str
+    # the alarm the text names where it writes ``{alarm}``, filled as the profile shows it
+    # (``Dialect.functions``: "alarm 119", or "alarm" where the profile documents no number)
+    alarm: int | None = None
 
 
 @dataclass(frozen=True, slots=True)

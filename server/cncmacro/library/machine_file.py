@@ -70,7 +70,7 @@ if sys.version_info >= (3, 11):
 else:  # the same reader, from PyPI, before it joined the standard library
     import tomli as tomllib
 
-from ..bilingual import Detail, detail
+from ..bilingual import Detail, detail, listed
 from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect
 from ..dialects.describe import code_key
 from ..dialects.tables import CodeDoc, SystemVariable
@@ -84,6 +84,10 @@ from .toml_numbers import finite_number
 MACHINE_FILE_NAME = ".cncmacro.toml"
 PERSISTENT_FILE_NAME = ".cncmacro-vars.json"
 DEFAULT_MAX_BLOCKS = 1_000_000
+# §8 "Arcs": the arc radius tolerance (mm) where the machine file gives none; FANUC's parameter
+# 3410 is the machine builder's and has no published value: 0.02 mm passes every arc a CAM
+# system rounds to 0.001 and still finds an end point or centre that is wrong
+DEFAULT_ARC_TOLERANCE = 0.02
 SEVERITY_VALUES = ("error", "warning", "information", "hint", "off")
 MAX_MACHINE_FILE_BYTES = 1_000_000  # a machine file is a few hundred bytes
 
@@ -132,6 +136,8 @@ class MachineSettings:
     # §10.5 the machine checks that a G71/G72 shape is monotone (FANUC's parameter, always on):
     # a shape that is not is then an error, not a warning
     shape_monotone_check: bool = False
+    # §8 "Arcs" the arc radius tolerance in mm (FANUC's parameter 3410; 0: not checked)
+    arc_tolerance: float = DEFAULT_ARC_TOLERANCE
     persistent_file: str | None = None
     max_blocks: int = DEFAULT_MAX_BLOCKS
     date: int | None = None
@@ -146,6 +152,8 @@ class MachineSettings:
     extensions: frozenset[str] = frozenset()  # more endings of program files (``.txt``), lower case
     codes: tuple[CodeDoc, ...] = ()  # [codes]: plain G and M codes of this machine, with their text
     limits: MachineLimits | None = None  # [limits]: the machine's travel, feed, spindle, tools; None: unchecked
+    # the 0-based line of ``common`` in the file (where the editor shows ``common_note``)
+    common_line: int | None = field(default=None, compare=False)
 
     def with_presets(self, presets: dict[int, float]) -> MachineSettings:
         """These settings with more preset variables (later ones win)."""
@@ -185,6 +193,7 @@ class _SettingsFields(TypedDict, total=False):
     decimal_point: str
     block_delete: bool
     shape_monotone_check: bool
+    arc_tolerance: float
     persistent_file: str | None
     max_blocks: int
     date: int | None
@@ -236,7 +245,7 @@ def load_machine_file(path: str | Path) -> MachineSettings:
     except ValueError as e:  # tomllib lets through, e.g., a number too long to convert
         raise MachineFileError(detail(f"{p}: not a usable TOML file: {e}", f"{p}：无法使用的 TOML 文件：{e}")) from e
     try:
-        return settings_from_mapping(parsed, str(p), folder=str(p.parent))
+        settings = settings_from_mapping(parsed, str(p), folder=str(p.parent))
     except MachineFileError as e:
         if e.line is None and e.key is not None:
             e.line = _line_of(text, e.key)
@@ -244,6 +253,7 @@ def load_machine_file(path: str | Path) -> MachineSettings:
     except (RecursionError, OverflowError, ValueError, TypeError) as e:  # a value no check foresaw
         raise MachineFileError(detail(f"{p}: a value cannot be used: {type(e).__name__}: {_brief(str(e))}",
                                       f"{p}：有无法使用的值：{type(e).__name__}：{_brief(str(e))}")) from e  # fmt: skip
+    return settings if settings.common is None else replace(settings, common_line=_line_of(text, "common"))
 
 
 def _line_of(text: str, key: str) -> int | None:
@@ -316,8 +326,9 @@ def settings_from_mapping(
         return MachineFileError(detail(f"{source}: '{shown}' {what}", f"{source}：'{shown}' {what.zh}"), key=key)
 
     known = {"base", "dialect", "common", "program_digits", "programs_on_control", "system_variables",
-             "decimal_point", "block_delete", "shape_monotone_check", "persistent_file", "max_blocks", "date", "time",
-             "variables", "calls", "skip", "severity", "timing", "lathe", "extensions", "codes", "limits"}  # fmt: skip
+             "decimal_point", "block_delete", "shape_monotone_check", "arc_tolerance", "persistent_file",
+             "max_blocks", "date", "time", "variables", "calls", "skip", "severity", "timing", "lathe", "extensions",
+             "codes", "limits"}  # fmt: skip
     for key in data:
         if key not in known:
             names = ", ".join(sorted(known))
@@ -341,7 +352,7 @@ def settings_from_mapping(
         kw["common"] = _common(data["common"], str(kw.get("dialect") or DEFAULT_DIALECT), fail)
     readers: dict[str, Callable[[object, _Fail], object]] = {
         "extensions": _extensions, "program_digits": _program_digits, "programs_on_control": _program_ranges,
-        "system_variables": _system_variables, "decimal_point": _decimal_point,
+        "system_variables": _system_variables, "decimal_point": _decimal_point, "arc_tolerance": _arc_tolerance,
     }  # fmt: skip
     for key, read in readers.items():  # the keys whose value is read by itself
         if key in data:
@@ -405,6 +416,14 @@ def _program_digits(v: object, fail: _Fail) -> int:
     if not isinstance(v, int) or isinstance(v, bool) or not 4 <= v <= 8:
         raise fail("program_digits", detail("must be a whole number from 4 to 8", "必须是 4 到 8 之间的整数"))
     return v
+
+
+def _arc_tolerance(v: object, fail: _Fail) -> float:
+    """``arc_tolerance``: how far apart (mm) an arc's start and end may be from its centre, 0 to 1."""
+    if not isinstance(v, (int, float)) or isinstance(v, bool) or not 0.0 <= v <= 1.0:
+        raise fail("arc_tolerance", detail("must be a number of mm from 0 to 1 (0: not checked)",
+                                           "必须是 0 到 1 之间的毫米数（0：不检查）"))  # fmt: skip
+    return float(v)
 
 
 def _decimal_point(point: object, fail: _Fail) -> str:
@@ -504,10 +523,22 @@ def common_beyond_profile(settings: MachineSettings, profile: str | None = None)
             added.append((at, last))
     if not added:
         return None
-    shown = ", ".join(f"#{a}-#{b}" for a, b in added)
-    listed = ", ".join(r.text() for r in dialect.common_ranges)
-    return detail(f"{shown}: common variables of this machine beyond {dialect.name}'s list ({listed})",
-                  f"{shown}：本机床在 {dialect.name} 所列范围（{listed}）之外的公共变量")  # fmt: skip
+    ranges = [f"#{a}-#{b}" for a, b in added]
+    profile_ranges = [r.text() for r in dialect.common_ranges]
+    return detail(f"{listed('en', ranges)}: common variables of this machine beyond {dialect.name}'s list "
+                  f"({listed('en', profile_ranges)})",
+                  f"{listed('zh', ranges)}：本机床在 {dialect.name} 所列范围（{listed('zh', profile_ranges)}）"
+                  "之外的公共变量")  # fmt: skip
+
+
+def common_note(settings: MachineSettings, shown: str, profile: str | None = None) -> Detail | None:
+    """The note on the common ranges the machine file at ``shown`` adds to the profile
+    (``common_beyond_profile``), as ``cncmacro check`` prints it and the editor shows it on the
+    machine file; None when it adds none."""
+    added = common_beyond_profile(settings, profile)
+    if added is None:
+        return None
+    return detail(f"{shown}: common {added}", f"{shown}：common {added.zh}")
 
 
 def _program_ranges(value: object, fail: _Fail) -> tuple[tuple[int, int], ...]:

@@ -8,7 +8,9 @@ that the control stops there with alarm 114. There a quick fix writes the block 
 
 from __future__ import annotations
 
+from ..bilingual import pick
 from ..dialects import Dialect
+from ..dialects.alarms import FORMAT
 from ..syntax.nodes import Block, If
 from .texts import t
 
@@ -40,4 +42,6 @@ def _text(dialect: Dialect, locale: str) -> str:
     head = t("conditional_m99", locale)
     if dialect.conditional_m99:
         return f"{head}\n\n*{dialect.title}*"
-    return f"{head}\n\n{t('conditional_m99_refused', locale, title=dialect.title)}"
+    said = dialect.alarm_said(FORMAT)
+    refused = t("conditional_m99_refused", locale, title=dialect.title, alarm=pick(locale, said, said.zh))
+    return f"{head}\n\n{refused}"

@@ -11,12 +11,15 @@ each file the analysis read from disk and each folder it listed, plus the places
 file is looked for (above the first workspace folder and above each document opened), and
 ``changed`` names those that differ. That is a handful of ``stat`` calls
 (the programs the open ones call, not the workspace), made when an analysis starts and now and
-then while documents are open. With the editor's watcher in force, only the paths outside the
-workspace folders (which no watcher covers) are looked at.
+then while documents are open. With the editor's watcher in force, only the paths its patterns
+do not cover are looked at: those outside the workspace folders, the folders, and the programs
+known by their text or by a machine file's ``extensions`` (``1234.txt`` that starts with
+``O1234``), which no fixed pattern names (``watched``).
 """
 
 from __future__ import annotations
 
+import fnmatch
 import os
 import stat
 import time
@@ -42,6 +45,13 @@ def watch_globs() -> list[str]:
     """The glob patterns of the program files and the machine file, in any case."""
     endings = [f"**/*{_any_case(suffix)}" for suffix in sorted(PROGRAM_SUFFIXES)]
     return [*endings, "**/[oO][0-9]*", f"**/{MACHINE_FILE_NAME}"]
+
+
+def watched(path: str) -> bool:
+    """Whether a file at ``path`` under a workspace folder is one the editor's watcher reports
+    (its name matches one of ``watch_globs``)."""
+    name = os.path.basename(path)
+    return any(fnmatch.fnmatchcase(name, glob.removeprefix("**/")) for glob in watch_globs())
 
 
 def watch_registration() -> types.RegistrationParams:
@@ -139,7 +149,7 @@ class DiskStamps:
         out = []
         for kept in (self._fixed, self._stamps):
             for path, before in kept.items():
-                if self.evented and self._under_roots(path):
+                if self.evented and self._reported(path):
                     continue
                 now = stamp_of(path)
                 if now != before:
@@ -147,8 +157,11 @@ class DiskStamps:
                     out.append(path)
         return out
 
-    def _under_roots(self, path: str) -> bool:
-        inside = self._inside.get(path)
-        if inside is None:
-            inside = self._inside[path] = any(stays_inside(Path(path), r) for r in self._roots)
-        return inside
+    def _reported(self, path: str) -> bool:
+        """Whether the editor's watcher reports changes of ``path``: a file its patterns name
+        under a workspace folder (a folder's new files it reports only by their names)."""
+        reported = self._inside.get(path)
+        if reported is None:
+            under = any(stays_inside(Path(path), r) for r in self._roots)
+            reported = self._inside[path] = under and not os.path.isdir(path) and watched(path)
+        return reported

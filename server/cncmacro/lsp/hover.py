@@ -25,6 +25,7 @@ from ..analysis.indexes.call_sites import call_site
 from ..analysis.indexes.sites import label_jumps, word_at
 from ..bilingual import in_language, is_chinese, pick
 from ..dialects import describe
+from ..dialects.alarms import FORMAT, VARIABLE_NUMBER
 from ..dialects.cycle_words import CycleForm
 from ..dialects.functions_data import GSK_H_CODES
 from ..ide.cycle_words import cycle_form_of, cycle_word_at
@@ -118,7 +119,8 @@ def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
     if kind == describe.SYSTEM:
         doc = describe.describe_system_variable(dialect, number, loc)
         if doc is None:
-            lines = [f"**#{number}** — {t('undefined', loc)}"]
+            said = dialect.alarm_said(VARIABLE_NUMBER)
+            lines = [f"**#{number}** — {t('undefined', loc, alarm=pick(loc, said, said.zh))}"]
         else:
             lines.append("")
             lines.append(doc.text)
@@ -160,7 +162,8 @@ def named_hover(ls: CncMacroServer, cur: Cursor, node: NamedVar) -> str:
     dialect = cur.doc.dialect
     head = f"**{node.text}**"
     if not dialect.variable_names:
-        return f"{head} — {t('no_names', loc)}\n\n*{dialect.title}*"
+        said = dialect.alarm_said(FORMAT)
+        return f"{head} — {t('no_names', loc, alarm=pick(loc, said, said.zh))}\n\n*{dialect.title}*"
     row = dialect.variable_name(node.name)
     subscript = _literal(node.index.inner) if node.index is not None else None
     if row is not None and node.index is not None and subscript is None:

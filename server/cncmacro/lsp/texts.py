@@ -13,9 +13,9 @@ TEXTS: dict[str, tuple[str, str]] = {
     "persistent": ("Common variable (kept at power-off)", "公共变量（断电保持）"),
     "system": ("System variable", "系统变量"),
     "null": ("#0: always vacant, read-only", "#0：总是空，只读"),
-    "undefined": ("No such variable in this dialect (alarm 115)", "该系统中不存在此变量（报警 115）"),
+    "undefined": ("No such variable in this dialect ({alarm})", "该系统中不存在此变量（{alarm}）"),
     "name": ("System variable name", "系统变量名"),
-    "no_names": ("This dialect has no system variable names (alarm 114)", "该系统不支持系统变量名（报警 114）"),
+    "no_names": ("This dialect has no system variable names ({alarm})", "该系统不支持系统变量名（{alarm}）"),
     "r": ("read-only", "只读"),
     "w": ("write-only", "只写"),
     "rw": ("read/write", "可读写"),
@@ -83,8 +83,8 @@ TEXTS: dict[str, tuple[str, str]] = {
         "**[条件] M99 P n** — 条件跳转（哈斯）：条件成立时转到 Nn 程序段，否则继续执行下一段；等同于 IF [条件] GOTO n",
     ),
     "conditional_m99_refused": (
-        "{title} does not read it: the control stops at this block with alarm 114",
-        "{title} 不接受这种写法：执行到此程序段时报警 114",
+        "{title} does not read it: the control stops at this block with {alarm}",
+        "{title} 不接受这种写法：执行到此程序段时{alarm}",
     ),
     # hover: the cycle time
     "starts_at": (

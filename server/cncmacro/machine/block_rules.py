@@ -92,7 +92,7 @@ def validate_block(
     words = block.words
     if block.statements:
         if words or block.corners:
-            out.append(_nc_and_statement(block))
+            out.append(_nc_and_statement(block, dialect))
         elif not dialect.if_without_then or not dialect.conditional_m99:
             for s in block.statements:
                 if s.__class__ is If and (s.implicit_then or s.m99 is not None):
@@ -113,17 +113,17 @@ def validate_block(
     return out
 
 
-def _nc_and_statement(block: Block) -> BlockProblem:
+def _nc_and_statement(block: Block, dialect: Dialect) -> BlockProblem:
     w = block.words[0] if block.words else block.corners[0]
     letter = w.letter if block.words else f",{w.letter}"
+    alarm = dialect.alarm_said(NC_AND_MACRO)
     return BlockProblem(
         NC_AND_STATEMENT,
         NC_AND_MACRO,
         detail(f"{letter} word and a macro statement in one block", f"{letter} 代码与宏语句在同一程序段"),
         detail(
-            f"the NC word {letter} and a macro statement in one block (alarm 127); "
-            "only N may precede a macro statement",
-            f"NC代码 {letter} 与宏语句在同一程序段（报警 127）；宏语句之前只允许 N",
+            f"the NC word {letter} and a macro statement in one block ({alarm}); only N may precede a macro statement",
+            f"NC代码 {letter} 与宏语句在同一程序段（{alarm.zh}）；宏语句之前只允许 N",
         ),
         w.start,
         w.end,
@@ -153,6 +153,7 @@ def _macro_call(
         codes = codes_before_call([(w.letter, _raw_g(w)) for w in before], dialect)
         w = before[0]
         title = dialect.title
+        alarm = dialect.alarm_said(NC_AND_MACRO)
         if codes is None:
             g = _raw_g(w)
             word = g_code_name(g) if w.letter == "G" and g is not None else w.letter
@@ -160,18 +161,18 @@ def _macro_call(
                 BEFORE_CALL, NC_AND_MACRO,
                 detail(f"{w.letter} before {name}: only N may precede {name} in its block",
                        f"{name} 之前有 {w.letter}：程序段中 {name} 之前只允许出现 N"),
-                detail(f"{word} before {name}: only N may precede {name} in its block; {title} stops with alarm 127",
-                       f"{name} 之前只允许出现 N，不能有 {word}：{title} 报警 127（停止运行）"),
+                detail(f"{word} before {name}: only N may precede {name} in its block; {title} stops with {alarm}",
+                       f"{name} 之前只允许出现 N，不能有 {word}：{title} {alarm.zh}（停止运行）"),
                 w.start, w.end, words=before,
             ))  # fmt: skip
             return
         shown = " ".join(g_code_name(c) for c in codes)
         text = detail(
             f"{shown} before {name}: {title} sets {shown} (it stays in force) and then {name} calls the macro; "
-            f"controls that allow only N before {name} (GSK) stop with alarm 127, so {shown} is better on a block "
+            f"controls that allow only N before {name} (GSK) stop with {alarm}, so {shown} is better on a block "
             "of its own",
             f"{name} 之前的 {shown}：{title} 先执行 {shown}（模态保持有效），再由 {name} 调用宏程序；"
-            f"{name} 之前只允许 N 的系统（GSK）会报警 127，建议把 {shown} 单独写一段",
+            f"{name} 之前只允许 N 的系统（GSK）会{alarm.zh}，建议把 {shown} 单独写一段",
         )
         out.append(BlockProblem(BEFORE_CALL, NC_AND_MACRO, text, text, w.start, before[-1].end, False, before))
     after = words[at + 1 :]
@@ -180,8 +181,8 @@ def _macro_call(
             out.append(BlockProblem(
                 O_WITH_CALL, NC_AND_MACRO,
                 detail(f"{name} may not share its block with an O word", f"{name} 不能与 O 代码在同一程序段"),
-                detail(f"{name} may not share its block with an O word (alarm 127)",
-                       f"{name} 不能与 O 代码在同一程序段（报警 127）"),
+                detail(f"{name} may not share its block with an O word ({dialect.alarm_said(NC_AND_MACRO)})",
+                       f"{name} 不能与 O 代码在同一程序段（{dialect.alarm_said(NC_AND_MACRO).zh}）"),
                 w.start, w.end, words=(w,),
             ))  # fmt: skip
             return
@@ -192,8 +193,8 @@ def _macro_call(
             out.append(BlockProblem(
                 G_AFTER_CALL, G_ARGUMENT,
                 detail(f"G after {name}: a G code cannot be an argument", f"{name} 之后有 G：G 代码不能作为自变量"),
-                detail(f"G after {name}: a G code cannot be an argument (alarm 129)",
-                       f"{name} 之后的 G 代码不能作为自变量（报警 129）"),
+                detail(f"G after {name}: a G code cannot be an argument ({dialect.alarm_said(G_ARGUMENT)})",
+                       f"{name} 之后的 G 代码不能作为自变量（{dialect.alarm_said(G_ARGUMENT).zh}）"),
                 w.start, w.end,
             ))  # fmt: skip
             break
@@ -202,7 +203,8 @@ def _macro_call(
         out.append(BlockProblem(
             CALL_WITHOUT_P, PROGRAM_NOT_FOUND,
             detail(f"{name} needs P: the program to call", f"{name} 需要用 P 指定被调用的程序"),
-            detail(f"{name} needs P: the program to call (alarm 76)", f"{name} 需要 P 指定被调用的程序（报警 76）"),
+            detail(f"{name} needs P: the program to call ({dialect.alarm_said(PROGRAM_NOT_FOUND)})",
+                   f"{name} 需要 P 指定被调用的程序（{dialect.alarm_said(PROGRAM_NOT_FOUND).zh}）"),
             call.start, call.end,
         ))  # fmt: skip
 
@@ -231,7 +233,7 @@ def _refused_words(
                 text = unknown_g_code(shown, dialect)
                 out.append(BlockProblem(UNKNOWN_G_CODE, IMPROPER_G_CODE, text, text, w.start, w.end, stops))
         elif w.letter == "M":
-            point = m_decimal_point(w)
+            point = m_decimal_point(w, dialect)
             if point is not None:
                 out.append(BlockProblem(M_DECIMAL_POINT, DECIMAL_POINT, point, point, w.start, w.end, stops))
 

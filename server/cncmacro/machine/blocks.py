@@ -10,7 +10,6 @@ lookups in the syntax tree. Jumps are resolved once per (line, label) and cached
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
@@ -60,7 +59,6 @@ INTEGER_LETTERS = frozenset("MSTHDNOPLB")
 # a G83 peck Q2.5 or a thread's E11.5 keeps its decimals, never read as increments
 DECIMAL_LETTERS = frozenset("QE")
 AXIS_LETTERS = frozenset("XYZABCUVWIJKR")
-_ALARM_IN_MESSAGE = re.compile(r"\(alarm (\d+)\)")
 MAX_LOOP_DEPTH = 3
 
 
@@ -274,8 +272,7 @@ class CompiledFile:
             return lambda m, pc: nxt
         if block.has_error:
             problem = next(p for p in block.problems if p.severity == "error")
-            said = _ALARM_IN_MESSAGE.search(problem.message)
-            number = int(said.group(1)) if said else STATEMENT_FORMAT
+            number = problem.alarm if problem.alarm is not None else STATEMENT_FORMAT
             return raiser(
                 number,
                 detail(

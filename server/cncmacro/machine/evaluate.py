@@ -122,8 +122,9 @@ def _guarded(machine: Machine, level: int | None, action: Callable[[], _T]) -> _
         try:
             return action()
         except MacroAlarm as e:
+            said = machine.dialect.alarm_said(e.number)
             raise EvaluationError(
-                detail(f"alarm {e.number}: {e.message}", f"报警 {e.number}：{in_language(e.message, True)}")
+                detail(f"{said}: {e.message}", f"{said.zh}：{in_language(e.message, True)}")
             ) from None
         except StopRequest as e:
             raise EvaluationError(

@@ -8,9 +8,9 @@ plain motion, a line the general path must decide (a canned cycle in force, a G 
 group with side effects, an address with its own rounding), or the block budget. It does
 exactly what ``PlainWords.text_plan`` and ``Planner.run_plain`` (planner/) do for one line (docs/semantics.md
 §8), an arc's centre from its R, I, J, K words included, and a line it declines is left
-untouched for the compiled path. Both run loops use it for a line not compiled yet, when no
-modal call (G66) is in force; such a line stays uncompiled, which also spares an analysis the
-memory of a runner per line.
+untouched for the compiled path: so is an arc the control finds fault with (planner/arc_checks.py).
+Both run loops use it for a line not compiled yet, when no modal call (G66) is in force; such a
+line stays uncompiled, which also spares an analysis the memory of a runner per line.
 """
 
 from __future__ import annotations
@@ -184,6 +184,23 @@ def run_straight(
                     break  # the move leaves the machine's travel: the compiled path stops it there with the alarm
             if speed is not None and spindle_top is not None and speed > spindle_top:
                 break  # an S above the spindle's top speed: the compiled path says so
+            centre = None
+            if arc is not None and moved and line_mode in ARC_MODES:
+                # the arc's centre in the plane this line leaves in force; an arc the control finds
+                # fault with (``Planner.arc_fault``) is the general path's to report,
+                # the line left untouched
+                line_plane = plane
+                if others is not None:
+                    for group, g in others:
+                        if group == "plane":
+                            line_plane = g
+                arc_end = list(target)
+                if inc is not None:
+                    for i, v in inc:
+                        arc_end[i] += v
+                centre = p.arc_centre(line_mode, start, arc_end, arc, line_plane)
+                if centre is not None and p.arc_fault(start, arc_end, centre, arc, line_plane) is not None:
+                    break
             if new_mode is not None:
                 if moved and new_mode in cycles:
                     break  # a cycle decides this line: the compiled path runs it
@@ -219,7 +236,6 @@ def run_straight(
                         target[i] += v
                 end = tuple(target)
                 # the time and length of the move: ``Planner.record``'s rules, inline
-                centre = p.arc_centre(mode, start, end, arc) if arc is not None and mode in ARC_MODES else None
                 if mode == 0.0:
                     seconds = rapid_seconds(start, end, unit)
                     rapid += dist(start, end) * unit

@@ -3,7 +3,9 @@
 
 A program reads values the control keeps from one day to the next: the commons kept at power-off
 (#500–#999, the extended ranges), the tool and work offset tables, the tool loaded in the
-spindle before the program commands a T. Offline, nothing says what they hold; taking them as
+spindle before the program commands a T; and what the machine sends the program as it runs,
+the interface input signals (FANUC #1000–#1015 and #1032, Haas #1000–#1063…: a probe switched
+on, a pallet in place), which a program may read but never write. Offline, nothing says what they hold; taking them as
 vacant or 0 makes a production program's ``#641=#640/#706`` a "division by zero" the control
 never raises. So an analysis run (``check`` and the editor: ``Machine(kept_unknown=True)``)
 reads each of them that neither the machine file's ``[variables]`` nor the persistent file
@@ -73,6 +75,18 @@ def is_kept(n: int, kinds: VariableKinds, dialect: Dialect) -> bool:
         row = dialect.system_variable(n)
         return row is not None and (row.group in KEPT_GROUPS or is_tool(n, dialect))
     return False
+
+
+def is_input(n: int, dialect: Dialect) -> bool:
+    """Whether system variable ``#n`` is an input signal the machine sends: a row of the
+    ``signals`` group that a program cannot write (module docstring)."""
+    row = dialect.system_variable(n)
+    return row is not None and is_input_row(row.group, row.access)
+
+
+def is_input_row(group: str, access: str) -> bool:
+    """Whether a system-variable row of ``group`` and ``access`` is an input signal."""
+    return group == "signals" and "w" not in access
 
 
 def is_tool(n: int, dialect: Dialect) -> bool:

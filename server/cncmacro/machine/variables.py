@@ -18,7 +18,7 @@ from ..dialects.alarms import NAME_SUBSCRIPT, NO_VARIABLE_NAME, OVERFLOW, VARIAB
 from ..dialects.tables import SystemVariable
 from ..planner.numbers import MAX_VALUE, round_half_away
 from .alarms import MacroAlarm
-from .unknown_values import KEPT_GROUPS, UNKNOWN, kept_extended
+from .unknown_values import KEPT_GROUPS, UNKNOWN, is_input_row, kept_extended
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -179,7 +179,8 @@ class VariableAccess:
         source = row.source
         k = n - row.first
         if source == "store":
-            return self.S.get(n, UNKNOWN if self.kept_unknown and row.group in KEPT_GROUPS else row.default)
+            machine_has = row.group in KEPT_GROUPS or is_input_row(row.group, row.access)
+            return self.S.get(n, UNKNOWN if self.kept_unknown and machine_has else row.default)
         if source == "alias":
             target = int(row.param) + k
             target_row = self.dialect.system_variable(target)

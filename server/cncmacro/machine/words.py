@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING
 
 from ..bilingual import Detail, detail
 from ..dialects import get_dialect
+from ..dialects.alarms import DECIMAL_POINT, FORMAT, IMPROPER_G_CODE
 from ..planner.modal_groups import extra_offset_codes
 from ..syntax.nodes import Number, Word
 from .word_sets import WordSet
@@ -65,11 +66,12 @@ def g_code_known(value: float, dialect: Dialect, calls: Mapping[str, object]) ->
 def unknown_g_code(shown: str, dialect: Dialect) -> Detail:
     """What to say of ``G<shown>`` that the dialect's table and the machine's call codes lack."""
     if dialect.word_format_alarms:
+        alarm = dialect.alarm_titled(IMPROPER_G_CODE, 3)
         return detail(
-            f"G{shown}: {dialect.title} has no such G code (alarm 010 improper G code); a code that the "
+            f"G{shown}: {dialect.title} has no such G code ({alarm}); a code that the "
             "machine maps to a macro belongs in the machine file's [calls], one the machine builder added "
             "in its [codes]",
-            f"G{shown}：{dialect.title} 没有这个G代码（报警 010 G代码不当）；若机床把它设为宏程序调用，"
+            f"G{shown}：{dialect.title} 没有这个G代码（{alarm.zh}）；若机床把它设为宏程序调用，"
             "请写入机床文件的 '[calls]' 表；若是机床厂家增加的代码，请写入 '[codes]' 表",
         )
     return detail(
@@ -81,47 +83,51 @@ def unknown_g_code(shown: str, dialect: Dialect) -> Detail:
     )
 
 
-def m_decimal_point(word: Word) -> Detail | None:
+def m_decimal_point(word: Word, dialect: Dialect) -> Detail | None:
     """What to say of an M code written with a decimal point (``M30.``), or None."""
     value = word.value
     if word.letter != "M" or value.__class__ is not Number or not value.has_point:
         return None
     text = value.text
     whole = text.split(".")[0] or "0"
+    alarm = dialect.alarm_titled(DECIMAL_POINT, 3)
     return detail(
-        f"M{text}: an M code takes no decimal point (alarm 007 illegal use of decimal point); write M{whole}",
-        f"M{text}：M代码不能带小数点（报警 007）；请写作 M{whole}",
+        f"M{text}: an M code takes no decimal point ({alarm}); write M{whole}",
+        f"M{text}：M代码只能写整数（{alarm.zh}）；请写作 M{whole}",
     )
 
 
 def abbreviation_refused(text: str, word: str, dialect: Dialect) -> Detail:
     """What to say of a macro word written shortened (``text`` for ``word``) on a dialect that
     does not read abbreviations."""
+    alarm = dialect.alarm_said(FORMAT)
     return detail(
         f"'{text}' for {word}: abbreviated macro words are a FANUC feature that {dialect.title} does not "
-        f"have; the control stops here with alarm 114; write {word}",
+        f"have; the control stops here with {alarm}; write {word}",
         f"'{text}' 表示 {word}：宏语句关键字的缩写是 FANUC 的功能，{dialect.title} 不支持；"
-        f"系统执行到此处报警 114；请写作 {word}",
+        f"系统执行到此处{alarm.zh}；请写作 {word}",
     )
 
 
 def missing_then(dialect: Dialect) -> Detail:
     """What to say of ``IF [cond] <statement>`` without THEN on a dialect that needs THEN."""
+    alarm = dialect.alarm_said(FORMAT)
     return detail(
         f"THEN is missing: {dialect.title} runs only IF[...] GOTO n and IF[...] THEN <statement>, and "
-        "stops at this block with alarm 114; write THEN before the statement (FANUC and Haas controls run it without)",
-        f"缺少 THEN：{dialect.title} 只接受 IF[...] GOTO n 和 IF[...] THEN <语句>，执行到此程序段时报警 114；"
+        f"stops at this block with {alarm}; write THEN before the statement (FANUC and Haas controls run it without)",
+        f"缺少 THEN：{dialect.title} 只接受 IF[...] GOTO n 和 IF[...] THEN <语句>，执行到此程序段时{alarm.zh}；"
         "请在语句前写 THEN（FANUC 与哈斯系统可以省略）",
     )
 
 
 def conditional_m99_refused(dialect: Dialect) -> Detail:
     """What to say of Haas's conditional jump ``[cond] M99 P n`` on a dialect that does not read it."""
+    alarm = dialect.alarm_said(FORMAT)
     return detail(
         f"[cond] M99 P n is Haas's conditional jump (the same as IF [cond] GOTO n); {dialect.title} does not "
-        "read a condition before M99 and stops at this block with alarm 114; write IF [cond] GOTO n",
+        f"read a condition before M99 and stops at this block with {alarm}; write IF [cond] GOTO n",
         f"[条件] M99 P n 是哈斯系统的条件跳转（等同于 IF [条件] GOTO n）；{dialect.title} 不接受 M99 之前的条件，"
-        "执行到此程序段时报警 114；请写作 IF [条件] GOTO n",
+        f"执行到此程序段时{alarm.zh}；请写作 IF [条件] GOTO n",
     )
 
 

@@ -7,13 +7,17 @@ from the start point whatever G90/G91 says. R names the radius instead: R > 0 th
 most 180°, R < 0 the longer one; R wins over I, J, K in the same block. On a lathe X is a
 diameter while I is a radius value (the GSK980 convention: I is the centre's X distance from
 the start "用半径表示"), so the geometry is worked in radius terms and the centre's X is given
-back as a diameter, like the end points. The seed manuals say nothing about arcs; these are
-this project's decisions where they are silent: a radius shorter than half the chord puts the
-centre at the chord's midpoint (a half circle, no alarm); R with the end at the start is an
-arc of 0° (the tool does not move; the centre is the start); I, J, K with the end at the
+back as a diameter, like the end points. R with the end at the start is an arc of 0° (the tool
+does not move; the centre is the start: FANUC's operator's manuals); a radius shorter than half
+the chord puts the centre at the chord's midpoint (a half circle); I, J, K with the end at the
 start (or no axis word at all) is a full circle; an arc without R or an offset word of its
 plane has no centre (None). The axes off the plane (the helical axis too) keep their start
 values.
+
+``arc_fault`` is the one rule of an arc the control cannot cut as written (docs/semantics.md
+§8, "Arcs"): I, J, K whose end point is farther from the centre or nearer to it than the start
+by more than the tolerance (FANUC's alarm PS0020, parameter 3410), an R shorter than half the
+chord by more than the tolerance, and R with the end at the start (no move at all).
 """
 
 from __future__ import annotations
@@ -21,6 +25,11 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 
 ARC_MODES = (2.0, 3.0)
+
+# what ``arc_fault`` finds
+RADIUS_MISMATCH = "arc-radius"  # I, J, K: the end is not on the start's circle
+SHORT_RADIUS = "arc-short-radius"  # R shorter than half the chord
+R_FULL_CIRCLE = "arc-r-full-circle"  # R with the end at the start: the tool does not move
 
 # plane code -> (first axis, second axis, first offset word, second offset word)
 PLANES: dict[float, tuple[str, str, str, str]] = {
@@ -82,3 +91,42 @@ def arc_centre(
     centre[a] = ca / scale_a
     centre[b] = cb / scale_b
     return tuple(centre)
+
+
+def arc_fault(
+    plane: Plane,
+    diameter: int,
+    start: Sequence[float],
+    end: Sequence[float],
+    centre: Sequence[float],
+    words: Mapping[str, float],
+    tolerance: float,
+) -> tuple[str, float, float] | None:
+    """What is wrong with the arc from ``start`` to ``end`` about ``centre`` (``arc_centre``'s) in
+    ``plane``, as the block's R, I, J, K ``words`` wrote it, with ``tolerance`` in the program's
+    unit: ``(RADIUS_MISMATCH, start radius, end radius)`` when they differ by more than the
+    tolerance, ``(SHORT_RADIUS, |R|, half the chord)`` when R falls short of half the chord by more
+    than the tolerance, ``(R_FULL_CIRCLE, |R|, 0)`` for R with the end at the start; None for an
+    arc the control cuts as written. A tolerance of 0 checks nothing (FANUC's parameter 3410 = 0)."""
+    a, b = plane[0], plane[1]
+    scale_a = 0.5 if a == diameter else 1.0
+    scale_b = 0.5 if b == diameter else 1.0
+    r = words.get("R")
+    if r is not None:
+        da = (end[a] - start[a]) * scale_a
+        db = (end[b] - start[b]) * scale_b
+        if da == 0.0 and db == 0.0:
+            return (R_FULL_CIRCLE, abs(r), 0.0) if r != 0.0 else None
+        half = 0.5 * (da * da + db * db) ** 0.5
+        if tolerance > 0.0 and half - abs(r) > tolerance:
+            return SHORT_RADIUS, abs(r), half
+        return None
+    if tolerance <= 0.0:
+        return None
+    ca = centre[a] * scale_a
+    cb = centre[b] * scale_b
+    r0 = ((start[a] * scale_a - ca) ** 2 + (start[b] * scale_b - cb) ** 2) ** 0.5
+    r1 = ((end[a] * scale_a - ca) ** 2 + (end[b] * scale_b - cb) ** 2) ** 0.5
+    if abs(r1 - r0) > tolerance:
+        return RADIUS_MISMATCH, r0, r1
+    return None

@@ -18,13 +18,14 @@ from .machine_limits import offset_number, spindle_speed, tool_number
 from .moves import ToolChange
 from .tool_offsets import apply_length_offset, select_tool
 from .turning_cycles import forget_single_cycle
+from .units import UNITS_GROUP, unit_change
 
 if TYPE_CHECKING:
     from .planner import Planner
 
 
-def set_modal(p: Planner, gs: list[float], other: dict[str, float]) -> float | None:
-    """Set the modal groups of the block's G codes; returns its one-shot code, if any."""
+def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -> float | None:
+    """Set the modal groups of the block's G codes (on ``line``); returns its one-shot code, if any."""
     one_shot_code: float | None = None
     groups = [p.g_groups.get(g) for g in gs]
     if "motion" in groups and "canned" not in groups and not p.lathe:
@@ -33,6 +34,8 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float]) -> float | N
         if not group:
             one_shot_code = g
         elif group != "macro":  # G66/G67 are the macro machine's
+            if group == UNITS_GROUP:
+                unit_change(p, g, line)  # units.py
             p.modal[group] = g
             if group == "motion" and g not in p.dialect.single_cycles:
                 forget_single_cycle(p)  # a single cycle's modal words (turning_cycles.py)

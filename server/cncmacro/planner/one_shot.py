@@ -73,7 +73,7 @@ def one_shot(
     if axes or inc:  # any other one-shot code with axis words: move in the modal mode
         mode = p.modal.get("motion", 0.0)
         target = p.target(axes, inc)
-        p.move(file, line, mode, target, p.block_arc(mode, target, other))
+        p.move(file, line, mode, target, p.block_arc(mode, target, other, line))
         return True, None
     return False, None
 

@@ -22,7 +22,8 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from ..bilingual import detail
-from .arcs import ARC_MODES, arc_centre, arc_planes
+from .arc_checks import arc_finding
+from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
 from .cycle_time import INCH, SPEED_CLAMP, MoveTimes
 from .drill_cycles import drill_block
@@ -87,6 +88,8 @@ class Planner:
         self._call_needs_distance = dialect.modal_call_needs_distance
         self._arc_planes = arc_planes(self.axis_index)
         self._diameter = self.axis_index.get("X", -1) if self.lathe else -1
+        # the arc radius tolerance in mm (FANUC parameter 3410; the machine file's ``arc_tolerance``)
+        self.arc_tolerance = settings.arc_tolerance
         self._incremental_names = {v: k for k, v in dialect.incremental_letters.items()}  # X -> U on a lathe
         # a lathe that powers on in G98 (per minute): a cutting F below 1 there lacks a G99
         self.feed_hint = self.lathe and dialect.modal_defaults.get("feed") == 98.0
@@ -179,7 +182,7 @@ class Planner:
             target[i] += v
         self.pos = target
         extra = plan[4]
-        centre = self.arc_centre(mode, start, target, dict(extra)) if extra and mode in ARC_MODES else None
+        centre = self.checked_arc(mode, start, target, dict(extra), line) if extra and mode in ARC_MODES else None
         self.record(file, line, mode, tuple(start), tuple(target), centre)
         return not self._call_needs_distance or target != start or centre is not None
 
@@ -226,7 +229,7 @@ class Planner:
                 key = last_keys.get(letter)
                 if key is not None:
                     codes[key] = v
-        one = set_modal(self, gs, other)
+        one = set_modal(self, gs, other, line)
         if self.lathe and one == self.dialect.coordinate_setting_code and "S" in other:
             # G50 S is the spindle speed clamp (docs/semantics.md §10.4), not a spindle speed
             self.codes[SPEED_CLAMP] = other["S"]
@@ -250,7 +253,7 @@ class Planner:
         if mode in self.cycle_codes:
             self.turning_cycle(file, line, mode, axes, incremental, other)
             return True, None  # a turning cycle ends where it started
-        centre = self.block_arc(mode, target, other)
+        centre = self.block_arc(mode, target, other, line)
         moved = not self._call_needs_distance or target != self.pos or centre is not None
         lead = self.times.variable_lead.get(mode)
         self.move(file, line, mode, target, centre, other.get(lead, 0.0) if lead else 0.0)
@@ -258,25 +261,55 @@ class Planner:
 
     # ---------------------------------------------------------------- arcs
     def arc_centre(
-        self, mode: float, start: Sequence[float], end: Sequence[float], words: dict[str, float]
-    ) -> tuple[float, ...] | None:
+        self, mode: float, start: Sequence[float], end: Sequence[float], words: dict[str, float],
+        plane_code: float | None = None,
+    ) -> tuple[float, ...] | None:  # fmt: skip
         """The centre of a G02 (``mode`` 2) or G03 arc from ``start`` to ``end`` in the plane in
-        force, from the block's R, I, J, K ``words`` (arcs.py); None when they name none."""
-        plane = self._arc_planes.get(self.modal.get("plane", 17.0))
+        force (or ``plane_code``'s), from the block's R, I, J, K ``words`` (arcs.py); None when
+        they name none."""
+        plane = self._arc_planes.get(self.modal.get("plane", 17.0) if plane_code is None else plane_code)
         if plane is None:
             return None
         return arc_centre(mode == 2.0, plane, self._diameter, start, end, words)
 
-    def block_arc(self, mode: float, target: list[float], other: dict[str, float]) -> tuple[float, ...] | None:
-        """The centre of the move to ``target`` when ``mode`` is an arc, else None."""
+    def arc_fault(
+        self, start: Sequence[float], end: Sequence[float], centre: Sequence[float], words: dict[str, float],
+        plane_code: float | None = None,
+    ) -> tuple[str, float, float] | None:  # fmt: skip
+        """What the control finds wrong with an arc about ``centre`` (``arcs.arc_fault``) in the
+        plane in force (or ``plane_code``'s), with the machine's tolerance in the program's unit."""
+        plane = self._arc_planes.get(self.modal.get("plane", 17.0) if plane_code is None else plane_code)
+        if plane is None:
+            return None
+        tolerance = self.arc_tolerance / 25.4 if self.modal.get("units") == 20.0 else self.arc_tolerance
+        return arc_fault(plane, self._diameter, start, end, centre, words, tolerance)
+
+    def checked_arc(
+        self, mode: float, start: Sequence[float], end: Sequence[float], words: dict[str, float], line: int
+    ) -> tuple[float, ...] | None:
+        """``arc_centre``, and the control's finding on the arc of ``line`` (arc_checks.py)."""
+        centre = self.arc_centre(mode, start, end, words)
+        if centre is not None:
+            fault = self.arc_fault(start, end, centre, words)
+            if fault is not None:
+                arc_finding(self, fault, line)
+        return centre
+
+    def block_arc(
+        self, mode: float, target: list[float], other: dict[str, float], line: int
+    ) -> tuple[float, ...] | None:
+        """The centre of the move to ``target`` on ``line`` when ``mode`` is an arc, else None."""
         if mode not in ARC_MODES:
             return None
-        return self.arc_centre(mode, self.pos, target, other)
+        return self.checked_arc(mode, self.pos, target, other, line)
 
     def _full_circle(self, mode: float, canned: float, other: dict[str, float], file: str, line: int) -> bool:
         """A G02/G03 block with I, J or K but no axis word: a full circle back to the start
         (with R instead, an arc of 0° that moves nothing). Returns whether it moved."""
-        if mode not in ARC_MODES or "R" in other or (canned != 80.0 and not self.lathe):
+        if mode not in ARC_MODES or (canned != 80.0 and not self.lathe):
+            return False
+        if "R" in other:
+            self.checked_arc(mode, self.pos, self.pos, other, line)  # an arc of 0°: a finding, no move
             return False
         centre = self.arc_centre(mode, self.pos, self.pos, other)
         if centre is None:

@@ -66,11 +66,12 @@ RELATION_NAMES = {"==": "EQ", "!=": "NE", ">": "GT", ">=": "GE", "<": "LT", "<="
 class BlockError(Exception):
     """A rule of the language broken by a line that the grammar itself accepts."""
 
-    def __init__(self, message: Detail, start: int, end: int) -> None:
+    def __init__(self, message: Detail, start: int, end: int, alarm: int | None = None) -> None:
         super().__init__(message)
         self.message = message
         self.start = start
         self.end = end
+        self.alarm = alarm  # the alarm's number, named by whoever shows the message (``Problem.alarm``)
 
 
 def _start(x: _Tok | Expr) -> int:
@@ -84,6 +85,10 @@ def _end(x: _Tok | Expr) -> int:
 # No control reads a number this long (FANUC: alarm 003, too many digits), and a float cannot
 # hold one of 309 digits: the line is not read.
 MAX_NUMBER_CHARS = 24
+# the alarms of the two rules below (FANUC's numbers, dialects/alarms.py's, which this layer does
+# not import): too many digits, and a comparison outside a condition
+TOO_MANY_DIGITS = 3
+ILLEGAL_FORMAT = 114
 
 
 def _literal(text: str, start: int, end: int) -> Number:
@@ -91,11 +96,12 @@ def _literal(text: str, start: int, end: int) -> Number:
     if digits > MAX_NUMBER_CHARS:
         raise BlockError(
             detail(
-                f"a number of {digits} digits is too long to read (at most {MAX_NUMBER_CHARS}; alarm 003)",
-                f"数字有 {digits} 位，太长无法读取（最多 {MAX_NUMBER_CHARS} 位；报警 003）",
+                f"a number of {digits} digits is too long to read: at most {MAX_NUMBER_CHARS}",
+                f"数字有 {digits} 位，太长无法读取：最多 {MAX_NUMBER_CHARS} 位",
             ),
             start,
             end,
+            TOO_MANY_DIGITS,
         )
     return Number(float(text), text, start, end)
 
@@ -375,11 +381,12 @@ def _relation_error(expr: Expr) -> BlockError:
     rel = _find_relation(expr)
     return BlockError(
         detail(
-            f"the comparison '{rel.spelling}' is allowed only in an IF or WHILE condition (alarm 114)",
-            f"关系运算符 '{rel.spelling}' 只能用在 IF 或 WHILE 的条件中（报警 114）",
+            f"the comparison '{rel.spelling}' is allowed only in an IF or WHILE condition",
+            f"关系运算符 '{rel.spelling}' 只能用在 IF 或 WHILE 的条件中",
         ),
         rel.start,
         rel.end,
+        ILLEGAL_FORMAT,
     )
 
 

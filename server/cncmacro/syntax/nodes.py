@@ -279,12 +279,16 @@ class Abbreviation:
 
 @dataclass(slots=True)
 class Problem:
-    """A syntax problem on one block, ready to become a diagnostic."""
+    """A syntax problem on one block, ready to become a diagnostic. ``alarm`` is the number of
+    the alarm a control raises for it (FANUC's, as the interpreter numbers its alarms), kept out
+    of ``message``: the analysis and the run name it as the profile shows it (docs/semantics.md
+    §6); None where the run stops with its format alarm and the message names none."""
 
     message: str
     start: int
     end: int
     severity: str = "error"
+    alarm: int | None = None
 
 
 _FIELDS = (

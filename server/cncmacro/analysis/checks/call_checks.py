@@ -17,7 +17,7 @@ targets ``Jump`` facts; ``M99 Pn`` a ``ReturnJump``.
 from __future__ import annotations
 
 from ...bilingual import in_language, pick
-from ...dialects.alarms import P_VALUE_RANGE, SEQUENCE_NUMBER
+from ...dialects.alarms import FORMAT, P_VALUE_RANGE, PROGRAM_NOT_FOUND, SEQUENCE_NUMBER
 from ...library.programs import is_program_name
 from ...machine.alarms import MacroAlarm
 from ...machine.block_rules import BEFORE_CALL, CALL_WITHOUT_P, G_AFTER_CALL, O_WITH_CALL, BlockProblem, validate_block
@@ -230,8 +230,8 @@ def _named_target(p_word: Word, call: BlockCall, ctx: LineContext, facts: LineFa
     if not is_program_name(name):
         text = bad_name_detail(name)
         _add(facts, p_word, "program-number",
-             f"{in_language(text, False)} (alarm {P_VALUE_RANGE})",
-             f"{in_language(text, True)}（报警 {P_VALUE_RANGE}）", ctx)  # fmt: skip
+             f"{in_language(text, False)} ({dialect.alarm_said(P_VALUE_RANGE)})",
+             f"{in_language(text, True)}（{dialect.alarm_said(P_VALUE_RANGE).zh}）", ctx)  # fmt: skip
         return False
     facts.calls.append(CallSite(call.kind, None, name, p_word, call.code, call.arguments))
     return True
@@ -258,25 +258,26 @@ def _check_count(l_word: Word, ctx: LineContext, facts: LineFacts) -> None:
 
 def _h_code(g65: Word, after: tuple[Word, ...], ctx: LineContext, facts: LineFacts) -> None:
     """``G65 Hm P Q R`` as ``machine/hcodes.py`` compiles it."""
+    alarm = ctx.dialect.alarm_said(FORMAT)
     extra = next((w for w in after if w.letter not in "HPQR"), None)
     if extra is not None:
         _add(facts, extra, "argument-address",
-             f"G65 H takes only P, Q and R, not {extra.letter} (alarm 114)",
-             f"G65 H 只能带 P、Q、R，不能带 {extra.letter}（报警 114）", ctx)  # fmt: skip
+             f"G65 H takes only P, Q and R, not {extra.letter} ({alarm})",
+             f"G65 H 只能带 P、Q、R，不能带 {extra.letter}（{alarm.zh}）", ctx)  # fmt: skip
         return
     by_letter = {w.letter: w for w in after}
     h_word = by_letter["H"]
     h_value = _literal(h_word)
     if h_value is None:
         _add(facts, h_word, "argument-address",
-             "G65 H needs a literal operation number such as H01 (alarm 114)",
-             "G65 H 需要写明运算号，例如 H01（报警 114）", ctx)  # fmt: skip
+             f"G65 H needs a literal operation number such as H01 ({alarm})",
+             f"G65 H 需要写明运算号，例如 H01（{alarm.zh}）", ctx)  # fmt: skip
         return
     h = int(h_value)
     if h not in H_OPERATIONS:
         _add(facts, h_word, "argument-address",
-             f"G65 H{h:02d} is not an operation of {ctx.dialect.title} (alarm 114)",
-             f"G65 H{h:02d} 不是 {ctx.dialect.title} 的运算指令（报警 114）", ctx)  # fmt: skip
+             f"G65 H{h:02d} is not an operation of {ctx.dialect.title} ({alarm})",
+             f"G65 H{h:02d} 不是 {ctx.dialect.title} 的运算指令（{alarm.zh}）", ctx)  # fmt: skip
         return
     for letter in "QR":
         w = by_letter.get(letter)
@@ -285,7 +286,7 @@ def _h_code(g65: Word, after: tuple[Word, ...], ctx: LineContext, facts: LineFac
     p_word = by_letter.get("P")
     if p_word is None or p_word.value is None:
         _add(facts, h_word, "argument-address",
-             f"G65 H{h:02d} needs P (alarm 114)", f"G65 H{h:02d} 需要 P（报警 114）", ctx)  # fmt: skip
+             f"G65 H{h:02d} needs P ({alarm})", f"G65 H{h:02d} 需要 P（{alarm.zh}）", ctx)  # fmt: skip
         return
     if h in BRANCHES or h == 99:
         scan_value(p_word.value, ctx, facts.findings)
@@ -295,8 +296,8 @@ def _h_code(g65: Word, after: tuple[Word, ...], ctx: LineContext, facts: LineFac
     destination = p_word.value
     if not isinstance(destination, (Var, IndirectVar)):
         _add(facts, p_word, "argument-address",
-             f"G65 H{h:02d}: P names the result variable, e.g. P#100 (alarm 114)",
-             f"G65 H{h:02d}：P 指定存放结果的变量，例如 P#100（报警 114）", ctx)  # fmt: skip
+             f"G65 H{h:02d}: P names the result variable, e.g. P#100 ({alarm})",
+             f"G65 H{h:02d}：P 指定存放结果的变量，例如 P#100（{alarm.zh}）", ctx)  # fmt: skip
         return
     if h == 26:
         scan_value(destination, ctx, facts.findings)
@@ -404,9 +405,10 @@ def _subprogram_call(words: tuple[Word, ...], call: BlockCall, ctx: LineContext,
     if p_word is None:
         m = next(w for w in words if w.letter == "M" and code_value(w) in SUBPROGRAM_CALLS)
         if q_word is None:
+            not_found = ctx.dialect.alarm_said(PROGRAM_NOT_FOUND)
             _add(facts, m, "program-not-found",
-                 f"{how} needs P (the program), or Q to call the current program (alarm 76)",
-                 f"{how} 需要 P 指定子程序，或用 Q 调用当前程序（报警 76）", ctx)  # fmt: skip
+                 f"{how} needs P (the program), or Q to call the current program ({not_found})",
+                 f"{how} 需要 P 指定子程序，或用 Q 调用当前程序（{not_found.zh}）", ctx)  # fmt: skip
             return
         if q is not None:
             facts.calls.append(CallSite(how, None, None, m, m, label=q, label_span=q_span))

@@ -9,6 +9,7 @@ are known, so a target that is not among them is left to the run rather than rep
 from __future__ import annotations
 
 from ...bilingual import pick
+from ...dialects.alarms import PROGRAM_NOT_FOUND
 from ...dialects.dialect import Dialect
 from ...library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ...syntax.program import Program
@@ -59,16 +60,17 @@ class ProgramFinder:
         return found.file is self.near
 
 
-def not_found(site: CallSite, file: str, line: int, locale: str) -> Diagnostic:
+def not_found(site: CallSite, file: str, line: int, locale: str, dialect: Dialect) -> Diagnostic:
     """The ``program-not-found`` diagnostic of a call whose program does not exist."""
     if site.number is not None:
         what = f"O{site.number:04d}"
     else:
         what = f"[{site.name}]"
+    alarm = dialect.alarm_said(PROGRAM_NOT_FOUND)
     message = pick(
         locale,
-        f"{site.kind} calls {what}, which is neither in this file nor found near it (alarm 76)",
-        f"{site.kind} 调用的程序 {what} 不在本文件中，附近也找不到（报警 76）",
+        f"{site.kind} calls {what}, which is neither in this file nor found near it ({alarm})",
+        f"{site.kind} 调用的程序 {what} 不在本文件中，附近也找不到（{alarm.zh}）",
     )
     end = max(site.end, site.start + 1)
     return diagnostic(file, line, site.start, line, end, "program-not-found", message)

@@ -17,7 +17,7 @@ from bisect import bisect_right
 
 from ...bilingual import pick
 from ...dialects import Dialect
-from ...dialects.alarms import SEQUENCE_NUMBER, alarm_words
+from ...dialects.alarms import SEQUENCE_NUMBER
 from ...machine.jumps import LoopSpans, goto_line
 from ...syntax.program import LoopPair, Program, ProgramUnit
 from ..diagnostics import Diagnostic, Related, diagnostic
@@ -38,11 +38,12 @@ class LabelChecker:
     def __init__(self, program: Program, file: str, finder: ProgramFinder, locale: str, dialect: Dialect) -> None:
         self.program = program
         # "alarm 128" as the control shows it ("alarm" alone where it documents no number)
-        shown = dialect.shown_alarm(SEQUENCE_NUMBER)
-        self._alarm, self._alarm_zh = alarm_words(shown), alarm_words(shown, "zh")
+        said = dialect.alarm_said(SEQUENCE_NUMBER)
+        self._alarm, self._alarm_zh = str(said), said.zh
         self.file = file
         self.finder = finder
         self.locale = locale
+        self.dialect = dialect
         self.out: list[Diagnostic] = []
         self._starts = [u.start for u in program.units]
         self._duplicates: dict[tuple[int, int], ProgramUnit] = {}  # (unit start, label) -> unit
@@ -117,7 +118,7 @@ class LabelChecker:
         if found == UNKNOWN:
             return
         if found is None:
-            self.out.append(not_found(site, self.file, line, self.locale))
+            self.out.append(not_found(site, self.file, line, self.locale, self.dialect))
             return
         assert not isinstance(found, str)
         here = self.finder.is_this_file(found)

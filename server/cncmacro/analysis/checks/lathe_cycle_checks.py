@@ -149,7 +149,8 @@ class _Unit:
     def add(self, line: int, start: int, end: int, code: str, message: Detail, alarm: int | None, sure: bool) -> None:
         text = pick(self.ctx.locale, str(message), message.zh)
         if alarm is not None:
-            text += pick(self.ctx.locale, f" (alarm {alarm})", f"（报警 {alarm}）")
+            said = self.ctx.dialect.alarm_said(alarm)
+            text += pick(self.ctx.locale, f" ({said})", f"（{said.zh}）")
         self.out.append(diagnostic(self.file, line, start, line, max(end, start + 1), code, text, milder=not sure))
 
     def whole(self, block: Block) -> tuple[int, int]:

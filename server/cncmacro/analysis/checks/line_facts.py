@@ -16,7 +16,6 @@ from dataclasses import dataclass, field
 
 from ...bilingual import in_language, is_chinese, pick
 from ...dialects import BY_NAME, Dialect
-from ...dialects.alarms import alarm_words
 from ...library.machine_file import MachineSettings
 from ...library.profiles import machine_profile
 from ...machine import block_rules as rules
@@ -61,8 +60,8 @@ def finding(start: int, end: int, code: str, message: str, *, milder: bool = Fal
 def alarm_named(number: int, dialect: Dialect) -> tuple[str, str]:
     """Alarm ``number`` as a check's message names it, English and Chinese: "alarm 128", or
     "alarm" alone where ``dialect`` documents no number for it."""
-    shown = dialect.shown_alarm(number)
-    return alarm_words(shown), alarm_words(shown, "zh")
+    said = dialect.alarm_said(number)
+    return str(said), said.zh
 
 
 def alarm_message(alarm: MacroAlarm, locale: str, dialect: Dialect) -> str:

@@ -10,6 +10,8 @@ already wrong is reported once, as ``loop-number``, because that is the alarm th
 from __future__ import annotations
 
 from ...bilingual import pick
+from ...dialects.alarms import LOOP_NUMBER, MISSING_END
+from ...dialects.dialect import Dialect
 from ...machine.blocks import MAX_LOOP_DEPTH
 from ...syntax.nodes import Block, Do, End, Number, While
 from ...syntax.program import Program
@@ -28,9 +30,11 @@ def _marker_span(block: Block) -> tuple[int, int]:
     return 0, 1
 
 
-def loop_diagnostics(program: Program, file: str, locale: str) -> list[Diagnostic]:
-    """Every loop-number and loop-mismatch finding of ``program``."""
+def loop_diagnostics(program: Program, file: str, locale: str, dialect: Dialect) -> list[Diagnostic]:
+    """Every loop-number and loop-mismatch finding of ``program``, its alarms as ``dialect`` shows them."""
     out: list[Diagnostic] = []
+    loop = dialect.alarm_said(LOOP_NUMBER)
+    missing = dialect.alarm_said(MISSING_END)
     blocks = program.blocks
     bad_lines: set[int] = set()
     for line in program.markers:
@@ -44,8 +48,8 @@ def loop_diagnostics(program: Program, file: str, locale: str) -> list[Diagnosti
         start, end = num.start, num.end
         out.append(
             diagnostic(file, line, start, line, max(end, start + 1), "loop-number",
-                       pick(locale, f"{kind} {num.text}: the loop number must be 1, 2 or 3 (alarm 126)",
-                            f"{kind} {num.text}：循环号必须为 1、2 或 3（报警 126）"))
+                       pick(locale, f"{kind} {num.text}: the loop number must be 1, 2 or 3 ({loop})",
+                            f"{kind} {num.text}：循环号必须为 1、2 或 3（{loop.zh}）"))
         )  # fmt: skip
     open_ends: list[int] = []
     for pair in sorted(program.loops, key=lambda p: p.do_line):
@@ -56,8 +60,8 @@ def loop_diagnostics(program: Program, file: str, locale: str) -> list[Diagnosti
             start, end = _marker_span(blocks[pair.do_line])
             out.append(
                 diagnostic(file, pair.do_line, start, pair.do_line, end, "loop-number",
-                           pick(locale, f"loops nested {len(open_ends)} deep; at most {MAX_LOOP_DEPTH} (alarm 126)",
-                                f"循环嵌套 {len(open_ends)} 层，最多 {MAX_LOOP_DEPTH} 层（报警 126）"))
+                           pick(locale, f"loops nested {len(open_ends)} deep; at most {MAX_LOOP_DEPTH} ({loop})",
+                                f"循环嵌套 {len(open_ends)} 层，最多 {MAX_LOOP_DEPTH} 层（{loop.zh}）"))
             )  # fmt: skip
     for problem in program.loop_problems:
         if problem.line in bad_lines:
@@ -67,17 +71,17 @@ def loop_diagnostics(program: Program, file: str, locale: str) -> list[Diagnosti
         n = problem.number
         related: tuple[Related, ...] = ()
         if problem.kind == "do-without-end":
-            message = pick(locale, f"DO {n} has no END {n} (alarm 124)", f"DO {n} 没有对应的 END {n}（报警 124）")
+            message = pick(locale, f"DO {n} has no END {n} ({missing})", f"DO {n} 没有对应的 END {n}（{missing.zh}）")
         elif problem.kind == "end-without-do":
-            message = pick(locale, f"END {n} has no DO {n} before it (alarm 126)",
-                           f"END {n} 之前没有对应的 DO {n}（报警 126）")  # fmt: skip
+            message = pick(locale, f"END {n} has no DO {n} before it ({loop})",
+                           f"END {n} 之前没有对应的 DO {n}（{loop.zh}）")  # fmt: skip
         else:
             other = problem.other_line if problem.other_line is not None else line
             message = pick(
                 locale,
                 f"END {n} closes its loop while the loop opened on line {other + 1} is still open: "
-                "loops may not cross (alarm 126)",
-                f"END {n} 结束循环时，第 {other + 1} 行开始的循环尚未结束：循环不能交叉（报警 126）",
+                f"loops may not cross ({loop})",
+                f"END {n} 结束循环时，第 {other + 1} 行开始的循环尚未结束：循环不能交叉（{loop.zh}）",
             )
             o_start, o_end = _marker_span(blocks[other])
             related = (Related(file, other, o_start, o_end, pick(locale, "the inner loop", "内层循环")),)

@@ -138,8 +138,8 @@ def cross_line_diagnostics(
     with the line context ``ctx``, a lathe's cycles and their shapes (``lathe_cycle_checks``). A
     fault of the checker here is one ``internal-error`` on the file's first line (faults.py)."""
     try:
-        out = duplicate_program_diagnostics(program, file, locale)
-        out.extend(loop_diagnostics(program, file, locale))
+        out = duplicate_program_diagnostics(program, file, locale, dialect)
+        out.extend(loop_diagnostics(program, file, locale, dialect))
         out.extend(tape_diagnostics(program, file, locale))
         finder = ProgramFinder(program, file, dialect, library)
         out.extend(LabelChecker(program, file, finder, locale, dialect).run(collected))

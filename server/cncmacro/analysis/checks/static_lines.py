@@ -20,7 +20,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TypeVar
 
-from ...bilingual import in_language, is_chinese
+from ...bilingual import is_chinese
 from ...dialects.dialect import Dialect
 from ...library.programs import ProgramLibrary
 from ...syntax.nodes import Block, Problem
@@ -29,6 +29,7 @@ from ..diagnostics import Diagnostic
 from ..indexes.block_memo import BlockMemo
 from .line_facts import LineContext, LineFacts
 from .static_checks import cross_line_diagnostics, findings_of
+from .syntax_check import syntax_findings
 
 _V = TypeVar("_V")
 _CHUNK = 5_000  # lines looked at between two reports of how far the look got (and chances to stop)
@@ -144,7 +145,7 @@ class StaticLines:
         for line in sorted(self.problems):
             if line >= read_end:
                 break
-            out.extend(syntax_findings(self.problems[line], line, file, chinese))
+            out.extend(syntax_findings(self.problems[line], line, file, chinese, self.ctx.dialect))
         collected: list[tuple[int, LineFacts]] = []
         for line in sorted(self.facts):
             if line >= read_end:
@@ -166,16 +167,6 @@ class StaticLines:
                                                                            collected, self.ctx))  # fmt: skip
         out.extend(kept[2])
         return out
-
-
-def syntax_findings(problems: tuple[Problem, ...], line: int, file: str, chinese: bool) -> list[Diagnostic]:
-    """The syntax problems of the block on ``line`` as diagnostics."""
-    return [
-        Diagnostic(
-            file, line, p.start, line, max(p.end, p.start + 1), p.severity, "syntax", in_language(p.message, chinese)
-        )
-        for p in problems
-    ]
 
 
 def _shift(table: dict[int, _V], start: int, end: int, delta: int) -> None:

@@ -8,14 +8,23 @@ blocks are dead text however correct they look.
 
 from __future__ import annotations
 
-from ...bilingual import pick
+from ...bilingual import detail, pick
+from ...dialects.alarms import DUPLICATE_PROGRAM
+from ...dialects.dialect import Dialect
 from ...syntax.program import Program
 from ..diagnostics import Diagnostic, Related, diagnostic
 
 
-def duplicate_program_diagnostics(program: Program, file: str, locale: str) -> list[Diagnostic]:
-    """One ``duplicate-program`` warning on each header that repeats an earlier O number."""
+def duplicate_program_diagnostics(program: Program, file: str, locale: str, dialect: Dialect) -> list[Diagnostic]:
+    """One ``duplicate-program`` warning on each header that repeats an earlier O number; the
+    alarm a FANUC control gives when it loads the copy is named with its number only where
+    ``dialect`` shows it."""
     out: list[Diagnostic] = []
+    if dialect.shown_alarm(DUPLICATE_PROGRAM) is None:
+        loading = detail("an alarm", "输入时报警")
+    else:
+        said = dialect.alarm_said(DUPLICATE_PROGRAM, 3)
+        loading = detail(f"FANUC {said}", f"FANUC 输入时{said.zh}")
     for unit in program.units:
         if not unit.duplicate or unit.number is None:
             continue
@@ -27,11 +36,11 @@ def duplicate_program_diagnostics(program: Program, file: str, locale: str) -> l
         start, end = block.program_span or (0, 1)
         en = (
             f"{name} is already the program at line {kept.start + 1}: the control keeps that one and ignores "
-            "this copy (loading it is FANUC alarm 073), so nothing calls or runs the blocks below"
+            f"this copy (loading it is {loading}), so nothing calls or runs the blocks below"
         )
         zh = (
             f"{name} 与第 {kept.start + 1} 行的程序号重复：系统只保留前一个程序，此处的程序被忽略"
-            "（FANUC 输入时报警 073），下面的程序段不会被调用或运行"
+            f"（{loading.zh}），下面的程序段不会被调用或运行"
         )
         kept_span = program.blocks[kept.start].program_span or (0, 1)
         related = (Related(file, kept.start, kept_span[0], kept_span[1],

@@ -18,6 +18,7 @@ and access rights from the dialect tables, never from a list of our own.
 from __future__ import annotations
 
 from ...bilingual import in_language, pick
+from ...dialects.alarms import BRACKET_NESTING, FORMAT, VARIABLE_NUMBER, WRITE_PROTECTED
 from ...machine.alarms import MacroAlarm
 from ...machine.expressions import MAX_BRACKETS, bracket_depth, call_problem
 from ...machine.variables import named_number
@@ -96,8 +97,8 @@ def named_variable_number(node: NamedVar, ctx: LineContext, out: list[Finding]) 
                 pick(
                     ctx.locale,
                     f"{node.text}: system variable names are {feature}; on {d.title} write the variable number "
-                    "(alarm 114)",
-                    f"{node.text}：系统变量名{feature_zh}；在 {d.title} 上请写变量号（报警 114）",
+                    f"({d.alarm_said(FORMAT)})",
+                    f"{node.text}：系统变量名{feature_zh}；在 {d.title} 上请写变量号（{d.alarm_said(FORMAT).zh}）",
                 ),
             )
         )
@@ -135,13 +136,15 @@ def check_write(target: Var | IndirectVar | NamedVar, ctx: LineContext, out: lis
         number = target.number
     kind = ctx.kinds.kind(number)
     loc = ctx.locale
+    protected = ctx.dialect.alarm_said(WRITE_PROTECTED)
+    vacant = f"#0 恒为空，不能赋值（{protected.zh}）"
     if kind == "vacant":
         out.append(
             finding(
                 target.start,
                 target.end,
                 "write-protected",
-                pick(loc, "#0 is always vacant and cannot be written (alarm 116)", "#0 恒为空，不能赋值（报警 116）"),
+                pick(loc, f"#0 is always vacant and cannot be written ({protected})", vacant),
             )
         )
     elif kind == "none":
@@ -157,8 +160,8 @@ def check_write(target: Var | IndirectVar | NamedVar, ctx: LineContext, out: lis
                     pick(
                         loc,
                         f"#{number} is a read-only system variable on {ctx.dialect.title}; "
-                        "it cannot be written (alarm 116)",
-                        f"#{number} 在 {ctx.dialect.title} 上为只读系统变量，不能赋值（报警 116）",
+                        f"it cannot be written ({protected})",
+                        f"#{number} 在 {ctx.dialect.title} 上为只读系统变量，不能赋值（{protected.zh}）",
                     ),
                 )
             )
@@ -171,6 +174,7 @@ def _check_read(number: int, start: int, end: int, ctx: LineContext, out: list[F
     elif kind == "system":
         row = ctx.dialect.system_variable(number)
         if row is not None and row.access == "w":
+            alarm = ctx.dialect.alarm_said(VARIABLE_NUMBER)
             out.append(
                 finding(
                     start,
@@ -178,8 +182,8 @@ def _check_read(number: int, start: int, end: int, ctx: LineContext, out: list[F
                     "write-only",
                     pick(
                         ctx.locale,
-                        f"#{number} can only be written, not read, on {ctx.dialect.title} (alarm 115)",
-                        f"#{number} 在 {ctx.dialect.title} 上只能写入，不能读取（报警 115）",
+                        f"#{number} can only be written, not read, on {ctx.dialect.title} ({alarm})",
+                        f"#{number} 在 {ctx.dialect.title} 上只能写入，不能读取（{alarm.zh}）",
                     ),
                 )
             )
@@ -188,6 +192,7 @@ def _check_read(number: int, start: int, end: int, ctx: LineContext, out: list[F
 def _missing(number: int, start: int, end: int, ctx: LineContext) -> Finding:
     d = ctx.dialect
     loc = ctx.locale
+    alarm = d.alarm_said(VARIABLE_NUMBER)
     other = next((k.dialect for k in ctx.other_kinds if k.kind(number) == "indirect9"), None)
     if other is not None:
         return finding(
@@ -197,21 +202,21 @@ def _missing(number: int, start: int, end: int, ctx: LineContext) -> Finding:
             pick(
                 loc,
                 f"#{number}: indirection by #9 and a common variable number is a {other.title} feature; "
-                f"on {d.title} #{number} does not exist (alarm 115), write #[#{number - 9000}]",
+                f"on {d.title} #{number} does not exist ({alarm}), write #[#{number - 9000}]",
                 f"#{number}：#9 加公共变量号的变量置换是 {other.title} 的功能；{d.title} 上没有 #{number}"
-                f"（报警 115），请写作 #[#{number - 9000}]",
+                f"（{alarm.zh}），请写作 #[#{number - 9000}]",
             ),
         )
     if d.nine_indirection and 9000 <= number <= 9999:
         message = pick(
             loc,
             f"#{number}: on {d.title} #9 followed by a number is indirection through a common "
-            f"variable, and #{number - 9000} is not one (alarm 115)",
-            f"#{number}：在 {d.title} 上 #9 后接公共变量号表示变量置换，而 #{number - 9000} 不是公共变量（报警 115）",
+            f"variable, and #{number - 9000} is not one ({alarm})",
+            f"#{number}：在 {d.title} 上 #9 后接公共变量号表示变量置换，而 #{number - 9000} 不是公共变量（{alarm.zh}）",
         )
     else:
         said = d.missing_variable(number)
-        message = pick(loc, f"{said} (alarm 115)", f"{said.zh}（报警 115）")
+        message = pick(loc, f"{said} ({alarm})", f"{said.zh}（{alarm.zh}）")
     return finding(start, end, "variable-number", message)
 
 
@@ -220,12 +225,13 @@ def _check_call(node: FunctionCall, ctx: LineContext, out: list[Finding]) -> Non
     if problem is None:
         return
     code, message = problem
+    alarm = ctx.dialect.alarm_said(FORMAT)
     out.append(
         finding(
             node.start,
             node.end,
             code,
-            pick(ctx.locale, f"{message} (alarm 114)", f"{in_language(message, True)}（报警 114）"),
+            pick(ctx.locale, f"{message} ({alarm})", f"{in_language(message, True)}（{alarm.zh}）"),
         )
     )
 
@@ -233,6 +239,7 @@ def _check_call(node: FunctionCall, ctx: LineContext, out: list[Finding]) -> Non
 def _check_relation(node: Relation, ctx: LineContext, out: list[Finding]) -> None:
     if node.spelling.isalpha() or ctx.dialect.c_relations:
         return
+    alarm = ctx.dialect.alarm_said(FORMAT)
     out.append(
         finding(
             node.start,
@@ -240,21 +247,22 @@ def _check_relation(node: Relation, ctx: LineContext, out: list[Finding]) -> Non
             "dialect-feature",
             pick(
                 ctx.locale,
-                f"'{node.spelling}' is not a relation on {ctx.dialect.title}; write {node.op} (alarm 114)",
-                f"{ctx.dialect.title} 不支持关系运算符“{node.spelling}”，请写作 {node.op}（报警 114）",
+                f"'{node.spelling}' is not a relation on {ctx.dialect.title}; write {node.op} ({alarm})",
+                f"{ctx.dialect.title} 不支持关系运算符“{node.spelling}”，请写作 {node.op}（{alarm.zh}）",
             ),
         )
     )
 
 
 def _bracket_finding(start: int, end: int, depth: int, ctx: LineContext) -> Finding:
+    alarm = ctx.dialect.alarm_said(BRACKET_NESTING)
     return finding(
         start,
         end,
         "bracket-depth",
         pick(
             ctx.locale,
-            f"brackets nested {depth} deep; at most {MAX_BRACKETS} are allowed (alarm 118)",
-            f"括号嵌套 {depth} 层，最多允许 {MAX_BRACKETS} 层（报警 118）",
+            f"brackets nested {depth} deep; at most {MAX_BRACKETS} are allowed ({alarm})",
+            f"括号嵌套 {depth} 层，最多允许 {MAX_BRACKETS} 层（{alarm.zh}）",
         ),
     )

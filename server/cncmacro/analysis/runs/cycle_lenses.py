@@ -24,7 +24,7 @@ from collections.abc import Container, Iterable, Iterator
 from dataclasses import dataclass, field
 
 from ...machine.status import RunStatus
-from .cycle_summary import Totals, tool_parts
+from .cycle_summary import Totals, end_totals, tool_parts
 from .run_checks import EntryRun
 
 _Source = tuple[dict[int, int], list[tuple[int, str, int]], list[float]]
@@ -95,7 +95,7 @@ def file_timings(runs: Iterable[tuple[EntryRun, bool]], shown: Container[str]) -
         m = run.machine
         if m.status != RunStatus.COMPLETED:
             continue
-        end = Totals(m.planner.clock, m.planner.cut_length, m.planner.rapid_length)
+        end = end_totals(m.planner)
         entry = run.entry
         if own and entry.file.path in shown:
             timing(entry.file.path).programs.setdefault(entry.unit.start, end)

@@ -5,30 +5,50 @@ clock, the cut and rapid path so far and, at each tool change, those three as th
 (``ToolChange``). Here they become totals: the whole run's, and each tool's, from its change
 to the next change or the end. ``totals_text`` writes them as the editor's code lens and
 ``cncmacro run`` show them: ``≈ 3 min 12 s · 1,842 mm cut · 6,300 mm rapid`` (in Chinese
-``≈ 3 分 12 秒 · 切削 1,842 mm · 快移 6,300 mm``).
+``≈ 3 分 12 秒 · 切削 1,842 mm · 快移 6,300 mm``). The path is kept in mm and shown in the
+program's unit: a ``G20`` program's in inches (``72.5 in cut``; planner/units.py).
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from ...bilingual import is_chinese
+from ...planner.units import INCH, MM, length_unit
+
+if TYPE_CHECKING:
+    from ...planner.planner import Planner
+
+MM_PER_INCH = 25.4
 
 
 @dataclass(frozen=True, slots=True)
 class Totals:
-    """Seconds, and the cut (feed) and rapid path in mm."""
+    """Seconds, and the cut (feed) and rapid path in mm, shown in ``unit`` (``mm`` or ``in``)."""
 
     seconds: float = 0.0
     cut: float = 0.0
     rapid: float = 0.0
+    unit: str = MM
 
     def __add__(self, other: Totals) -> Totals:
-        return Totals(self.seconds + other.seconds, self.cut + other.cut, self.rapid + other.rapid)
+        return Totals(self.seconds + other.seconds, self.cut + other.cut, self.rapid + other.rapid, self.unit)
 
     def __sub__(self, other: Totals) -> Totals:
-        return Totals(self.seconds - other.seconds, self.cut - other.cut, self.rapid - other.rapid)
+        return Totals(self.seconds - other.seconds, self.cut - other.cut, self.rapid - other.rapid, self.unit)
+
+    def shown(self) -> tuple[float, float]:
+        """The cut and rapid path in ``unit``."""
+        if self.unit == INCH:
+            return self.cut / MM_PER_INCH, self.rapid / MM_PER_INCH
+        return self.cut, self.rapid
+
+
+def end_totals(planner: Planner) -> Totals:
+    """A run's totals as its planner ends them, in the unit the program is in at its end."""
+    return Totals(planner.clock, planner.cut_length, planner.rapid_length, length_unit(planner.modal.get("units")))
 
 
 @dataclass(frozen=True, slots=True)
@@ -48,7 +68,8 @@ def tool_parts(changes: Sequence[tuple[str, int, float | None, Totals]], end: To
     out: list[ToolPart] = []
     for k, (file, line, tool, before) in enumerate(changes):
         after = changes[k + 1][3] if k + 1 < len(changes) else end
-        out.append(ToolPart(file, line, tool, after - before))
+        part = after - before
+        out.append(ToolPart(file, line, tool, Totals(part.seconds, part.cut, part.rapid, end.unit)))
     return out
 
 
@@ -69,11 +90,13 @@ def duration_text(seconds: float, locale: str | None = None) -> str:
 
 
 def totals_text(t: Totals, locale: str | None = None) -> str:
-    """``≈ 3 min 12 s · 1,842 mm cut · 6,300 mm rapid``."""
+    """``≈ 3 min 12 s · 1,842 mm cut · 6,300 mm rapid`` (a ``G20`` program's: ``72.5 in cut``)."""
     time = duration_text(t.seconds, locale)
+    cut, rapid = t.shown()
+    form = ",.1f" if t.unit == INCH else ",.0f"
     if is_chinese(locale):
-        return f"≈ {time} · 切削 {t.cut:,.0f} mm · 快移 {t.rapid:,.0f} mm"
-    return f"≈ {time} · {t.cut:,.0f} mm cut · {t.rapid:,.0f} mm rapid"
+        return f"≈ {time} · 切削 {cut:{form}} {t.unit} · 快移 {rapid:{form}} {t.unit}"
+    return f"≈ {time} · {cut:{form}} {t.unit} cut · {rapid:{form}} {t.unit} rapid"
 
 
 def tool_name(tool: float | None, lathe: bool = False) -> str:

@@ -45,7 +45,7 @@ from __future__ import annotations
 import time
 from bisect import bisect_left
 from collections.abc import Callable, Container, Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from operator import itemgetter
 from pathlib import Path
 
@@ -540,12 +540,15 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
             kind = "WHILE" if "WHILE" in line_text(a.file, do_line).upper() else "DO"
             en += f", in iteration {k} of the {kind} loop at line {do_line + 1}"
             zh += f"，第 {do_line + 1} 行 {kind} 循环的第 {k} 次迭代"
-    milder = False
+    milder = callers_to_decide = False
     if code == MACRO_ALARM:  # an error where every run of the main program stops there (sure_alarms.py)
         path = [(f, line) for _, f, line in run.state.order]
         path.append((a.file, a.line))
-        milder = run.as_macro or not surely_reached(path, line_text, m.kinds)
-    return _diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale, milder=milder)
+        sure = surely_reached(path, line_text, m.kinds, arguments_of=run.entry.file.path if run.as_macro else None)
+        milder = run.as_macro or not sure
+        callers_to_decide = run.as_macro and not sure  # a macro alone on arguments it was not passed
+    found = _diagnostic(a.file, a.line, code, en, zh, a.chain, m.blocks, in_loop, line_text, locale, milder=milder)
+    return replace(found, severity="information") if callers_to_decide else found
 
 
 def _endless_diagnostic(
@@ -636,10 +639,11 @@ def run_diagnostics(
             zh = in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, code, en, zh, note.chain, None, False, line_text, locale,
                                    milder=True))  # fmt: skip
-        elif note.kind == "limits" and note.subject is not None:  # the machine's [limits] (machine_limits.py)
-            code = alarm_code(0, note.subject, base)
+        elif note.kind in ("arc", "units", "limits") and note.subject is not None:
+            # planner/arc_checks.py, planner/units.py, planner/machine_limits.py: the subject is the code
             en, zh = in_language(note.message, False), in_language(note.message, True)
-            out.append(_diagnostic(note.file, note.line, code, en, zh, note.chain, None, False, line_text, locale))
+            out.append(_diagnostic(note.file, note.line, note.subject, en, zh, note.chain, None, False, line_text,
+                                   locale, milder=note.subject == "arc-radius"))  # fmt: skip
         elif note.kind == "feed":  # a per-minute feed that looks per revolution (planner.py)
             en, zh = in_language(note.message, False), in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, "feed-per-minute", en, zh, note.chain, None, False, line_text,

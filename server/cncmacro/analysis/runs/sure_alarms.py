@@ -8,7 +8,11 @@ does not, the analysis run only guessed it (a ``macro-alarm`` warning):
 
 - the run did not start at a main program: a subprogram or macro checked alone, without the
   caller that would pass its arguments (``unknown_stops.runs_as_macro``: it returns with ``M99``
-  and has no ``M30`` or ``M02``), is run with them unknown; the caller decides;
+  and has no ``M30`` or ``M02``), is run with them unknown; the caller decides. Where its path
+  read anything it did not set itself (``surely_reached`` with ``arguments_of`` its file is
+  false: an argument read in that file before it was written, the caller's modal state or
+  position, any other system variable, a common), the alarm is the caller's to reach or not:
+  only information;
 - a line the run went through, the alarm's included, reads a value the program did not set:
   a system variable (offsets, positions, parameters, inputs, the clock), a persistent common
   (``#500``–, kept at power-off: a value in the folder's variable file may not be the one the
@@ -33,10 +37,13 @@ def surely_reached(
     path: Iterable[tuple[str, int]],
     line_text: Callable[[str, int], str],
     kinds: VariableKinds,
+    arguments_of: str | None = None,
 ) -> bool:
     """Whether the run of a main program, through the (file, line) of ``path`` in the order it
     first ran them (the alarm's line last), reached its alarm on values the program set itself
-    (see the module docstring)."""
+    (see the module docstring). With ``arguments_of`` (the file of a macro run without its
+    caller) a local that a line of that file reads before the path wrote it is an argument the
+    caller passes, not set by the program."""
     set_by_program: set[int] = set()
     for file, line in path:
         code = code_of(line_text(file, line))
@@ -44,8 +51,9 @@ def surely_reached(
             if number == INDIRECT:
                 return False
             kind = kinds.kind(number)
-            if kind == "common" and number not in set_by_program:
-                return False
+            if kind in ("common", "local") and number not in set_by_program:
+                if kind == "common" or file == arguments_of:
+                    return False
             if kind not in ("local", "vacant", "common"):
                 return False
         target = written(code)

@@ -22,7 +22,7 @@ from ...machine import Machine
 from ...machine.calls import letters_for_local
 from ...machine.expressions import VariableKinds
 from ...machine.status import RunStatus
-from ...machine.unknown_values import assigned, is_kept, is_tool, variables_in
+from ...machine.unknown_values import assigned, is_input, is_kept, is_tool, variables_in
 from ...planner.alarms import UNKNOWN_VALUE
 from ...syntax.nodes import Number
 
@@ -76,16 +76,23 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
             del wanted[a[0]]
             for n in variables_in(a[1]):
                 wanted.setdefault(n, line)
-    named = [(n, line) for n, line in wanted.items() if is_kept(n, kinds, dialect) or (arguments and 1 <= n <= 33)]
+    named = [(n, line) for n, line in wanted.items()
+             if is_kept(n, kinds, dialect) or is_input(n, dialect) or (arguments and 1 <= n <= 33)]  # fmt: skip
     kept = [(n, line) for n, line in named[:3] if not 1 <= n <= 33]
     passed = [(n, line) for n, line in named[:3] if 1 <= n <= 33]
     parts, parts_zh = [], []
     tool = [(n, line) for n, line in kept if is_tool(n, dialect)]
-    kept = [(n, line) for n, line in kept if not is_tool(n, dialect)]
+    inputs = [(n, line) for n, line in kept if is_input(n, dialect)]
+    kept = [(n, line) for n, line in kept if not is_tool(n, dialect) and not is_input(n, dialect)]
     if kept:
         names, names_zh = _names(kept)
         parts.append(f"{names}, which the machine keeps")
         parts_zh.append(f"机床上保存的 {names_zh}")
+    if inputs:
+        names, names_zh = _names(inputs)
+        one = len(inputs) == 1
+        parts.append(f"{names}, {'an input signal' if one else 'input signals'} the machine sends")
+        parts_zh.append(f"机床送来的输入信号 {names_zh}")
     if tool:
         names, names_zh = _names(tool)
         parts.append(f"{names}, the tool loaded before the program commands one")
@@ -103,6 +110,9 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     if tool and not kept and not passed:
         tail = "no tool change (T_ M06) comes before it in this run, so the tool in the spindle is not known here"
         tail_zh = "本次运行中它之前没有换刀（T_ M06），因此这里不知道主轴上的刀具"
+    elif inputs and not kept and not passed and not tool:
+        tail = "this folder does not give it; set it under [variables] in .cncmacro.toml to check further"
+        tail_zh = "文件夹中没有给出该值；在 .cncmacro.toml 的 [variables] 中给出即可继续检查"
     elif passed and not kept:
         tail = (
             "checked without its caller, this macro has no arguments; a program in the folder that calls it has it "

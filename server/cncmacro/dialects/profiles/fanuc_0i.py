@@ -41,6 +41,7 @@ PROFILE = Dialect(
     cycle_words=FANUC_DRILL_CYCLE_WORDS,
     ijk_order_matters=True,
     word_format_alarms=True,
+    arc_radius_alarm=True,
     keyword_abbreviations=True,
     if_without_then=True,
     modal_g_before_call="execute",

@@ -52,6 +52,7 @@ PROFILE = Dialect(
     m98_program_digits=4,
     modal_call_needs_distance=True,
     word_format_alarms=False,
+    arc_radius_alarm=False,  # no alarm for it in the manuals at hand: a warning (docs/semantics.md §8, "Arcs")
     keyword_abbreviations=False,
     if_without_then=False,
     corner_words=False,
