@@ -216,7 +216,9 @@ def result_json(result: RunResult, axes: tuple[str, ...], locale: str | None = N
         "variables": {str(k): v for k, v in result.variables.items()},
         "moves": _moves_json(result, axes),
         "output": result.output,
-        "messages": [in_language(n.message, chinese) for n in result.notes if n.kind in ("message", "call", "feed")],
+        "messages": [
+            in_language(n.message, chinese) for n in result.notes if n.kind in ("message", "call", "feed", "limits")
+        ],
     }
 
 
@@ -276,7 +278,7 @@ def write_text(
             print(f"DPRNT  {note.message}", file=out)
         elif note.kind == "message":
             print(f"停止（{where}）：{text}" if chinese else f"stop at {where}: {text}", file=out)
-        elif note.kind in ("call", "skip", "feed"):
+        elif note.kind in ("call", "skip", "feed", "limits"):
             print(f"提示（{where}）：{text}" if chinese else f"note at {where}: {text}", file=out)
     if result.alarm is not None:
         a = result.alarm

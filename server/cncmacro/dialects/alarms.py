@@ -55,6 +55,11 @@ REPEAT_COUNT = 321
 SHAPE_PAST_START = 322
 SHAPE_COMMAND = 325
 SHAPE_NOT_MONOTONE_X = 329
+# the machine's limits (docs/semantics.md §11, the machine file's [limits]): FANUC 0i's PS0030 and
+# OT0500/OT0501 (stored stroke check 1, the soft limits)
+OFFSET_NUMBER = 30
+OVERTRAVEL_PLUS = 500
+OVERTRAVEL_MINUS = 501
 P_VALUE_RANGE = 291
 COUNT_TWICE = 293
 NO_VARIABLE_NAME = 1098
@@ -138,6 +143,9 @@ ALARMS: dict[int, AlarmDoc] = {
             "the finishing shape is not a monotonous change (second axis)",
             "精加工形状不是单调变化（第2轴）",
         ),
+        AlarmDoc(OFFSET_NUMBER, "illegal offset number", "刀补号不当"),
+        AlarmDoc(OVERTRAVEL_PLUS, "+ overtravel (soft limit 1)", "+ 向超程（软限位 1）"),
+        AlarmDoc(OVERTRAVEL_MINUS, "- overtravel (soft limit 1)", "- 向超程（软限位 1）"),
         AlarmDoc(P_VALUE_RANGE, "P value out of range", "P值超出范围"),
         AlarmDoc(COUNT_TWICE, "repeat count given in both P and L", "P和L同时指定了调用次数"),
         AlarmDoc(NO_VARIABLE_NAME, "no such variable name", "没有该变量名"),

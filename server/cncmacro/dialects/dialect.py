@@ -83,6 +83,9 @@ class Dialect:
     modal_defaults: dict[str, float] = field(default_factory=dict)
     # which G code sets the coordinate system (G92 on a mill, G50 on this lathe)
     coordinate_setting_code: float = 92.0
+    # §8 the code that sets a local coordinate system (G52 IP: its origin in work coordinates, IP0
+    # cancels; FANUC's and Haas's), None where the control has none
+    local_coordinate_code: float | None = 52.0
     # which G codes are canned cycles that leave the tool where it started
     cycle_codes: frozenset[float] = frozenset()
     # §5 fanuc wants I, J, K in that order within each set (a warning otherwise)
@@ -141,6 +144,9 @@ class Dialect:
     # the GSK's, 3000+n / 5900+n for #3000): None, every one (FANUC, GSK); a set, only these, the
     # others shown without a number (Haas, whose manuals document none of them)
     documented_alarms: frozenset[int] | None = None
+    # §6 of those, the alarms the control surely has but whose number no source gives (gsk980tdi's
+    # over-travel and offset number alarms): shown without a number
+    unnumbered_alarms: frozenset[int] = frozenset()
     # §5 DPRNT ``#i[ab]``: the most places a format may reserve, a + b (0: no limit; Haas 8, a
     # format of none or more is alarm 114 there), and whether the whole part is printed in full
     # (Haas: at least one digit, the field widened past a) or as its last a digits (FANUC)
@@ -228,6 +234,8 @@ class Dialect:
     def shown_alarm(self, number: int) -> int | None:
         """The number a person is shown for the interpreter's alarm ``number`` on this control,
         or None where the control documents none (``documented_alarms``)."""
+        if number in self.unnumbered_alarms:
+            return None
         return shown_number(number, self.documented_alarms)
 
     def alarm_said(self, number: int, width: int = 0) -> Detail:

@@ -21,6 +21,7 @@ class TimingChanges(TypedDict, total=False):
     """A machine file's changes to a profile's ``Timing``: its fields, each optional."""
 
     rapid: dict[str, float]
+    rapid_default: float
     tool_change_seconds: float
     tool_change_code: str
     m_code_seconds: dict[float, float]

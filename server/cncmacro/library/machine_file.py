@@ -43,6 +43,11 @@ Every key is optional (docs/design.md "Machine settings")::
     rapid = { X = 30000, Z = 24000 }
     tool_change = 2.5
 
+    [limits]                       # what the machine can do (limits_settings.py)
+    travel = { X = [-500, 0], Y = [-400, 0], Z = [-450, 0] }
+    feed = 10000
+    tools = [1, 24]
+
 Errors are reported as ``MachineFileError`` with the file and the key (and, where it is known,
 the line), never as a crash: the file is read as untrusted (docs/design.md "Untrusted folders and
 files"), a regular file of at most ``MAX_MACHINE_FILE_BYTES`` in UTF-8, tables nested no deeper
@@ -71,6 +76,7 @@ from ..dialects.describe import code_key
 from ..dialects.tables import CodeDoc, SystemVariable
 from ..dialects.timing import TimingChanges
 from .files import SkippedFileError, read_bytes
+from .limits_settings import MachineLimits, read_limits
 from .skip_model import SkipModel, read_skip
 from .timing_settings import timing_changes
 from .toml_numbers import finite_number
@@ -145,6 +151,7 @@ class MachineSettings:
     lathe: bool = False  # the profile's lathe form (``lathe = true``: fanuc-30i's lathes)
     extensions: frozenset[str] = frozenset()  # more endings of program files (``.txt``), lower case
     codes: tuple[CodeDoc, ...] = ()  # [codes]: plain G and M codes of this machine, with their text
+    limits: MachineLimits | None = None  # [limits]: the machine's travel, feed, spindle, tools; None: unchecked
     # the 0-based line of ``common`` in the file (where the editor shows ``common_note``)
     common_line: int | None = field(default=None, compare=False)
 
@@ -200,6 +207,7 @@ class _SettingsFields(TypedDict, total=False):
     lathe: bool
     extensions: frozenset[str]
     codes: tuple[CodeDoc, ...]
+    limits: MachineLimits | None
 
 
 # what makes the error for a key of a mapping: the key and what is wrong with its value
@@ -320,7 +328,7 @@ def settings_from_mapping(
     known = {"base", "dialect", "common", "program_digits", "programs_on_control", "system_variables",
              "decimal_point", "block_delete", "shape_monotone_check", "arc_tolerance", "persistent_file",
              "max_blocks", "date", "time", "variables", "calls", "skip", "severity", "timing", "lathe", "extensions",
-             "codes"}  # fmt: skip
+             "codes", "limits"}  # fmt: skip
     for key in data:
         if key not in known:
             names = ", ".join(sorted(known))
@@ -377,6 +385,12 @@ def settings_from_mapping(
         kw["severity"] = _severity(data["severity"], fail)
     if "timing" in data:
         kw["timing"] = timing_changes(data["timing"], fail)
+    if "limits" in data:
+        profile = get_dialect(str(kw.get("dialect") or DEFAULT_DIALECT))
+        if kw.get("lathe") and profile.lathe_variant is not None:  # ``lathe = true``: its lathe form's axes
+            profile = profile.lathe_variant
+        axes = profile.axes
+        kw["limits"], kw["timing"] = read_limits(data["limits"], kw.get("timing", {}), axes, fail)
     return MachineSettings(**kw)
 
 

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 
 from ..planner.arcs import ARC_MODES
 from ..planner.cycle_time import INCH, SPEED_CLAMP
+from ..planner.machine_limits import Bounds, leaves_travel, outside, program_bounds
 from ..planner.moves import Move
 from ..planner.plain_words import NOT_PLAIN, PLAIN_ARC_LETTERS, PLAIN_F, PLAIN_G, PLAIN_INCREMENTAL, PLAIN_S
 from ..planner.planner import FEED_HINT_GIVEN
@@ -28,6 +29,7 @@ from ..planner.turning_cycles import forget_single_cycle
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
+    from ..planner.planner import Planner
     from ..syntax.nodes import Block
     from .blocks import CompiledFile
     from .machine import Machine
@@ -92,6 +94,10 @@ def run_straight(
     # list, changed in place, that each line starts as ``start`` (a line declined is dropped)
     start = tuple(p.pos)
     target = list(start)
+    # the machine file's [limits] (planner/machine_limits.py): the travel in program coordinates
+    # under the offsets in force, which no plain line changes, and the spindle's top speed
+    bounds = program_bounds(p) if p.travel is not None else None
+    spindle_top = p.spindle_top
     # the lines run are the lines passed but the blank and comment ones (``blanks``): the
     # budget counts the lines run, so each of those moves ``stop`` on by one
     first_pc = pc
@@ -164,6 +170,20 @@ def run_straight(
             if (feed_hint and moved and line_mode != 0.0 and (others is not None or not per_rev)
                     and 0.0 < line_f < 1.0 and FEED_HINT_GIVEN not in codes):  # fmt: skip
                 break  # a per-minute feed below 1: the compiled path looks at it (``feed_per_minute_hint``)
+            if bounds is not None and moved:
+                if others is None and inc is None and arc is None:  # the common line, checked here
+                    out = False
+                    for i, low, high, _ in bounds:
+                        e = target[i]
+                        if (e > high and e > start[i]) or (e < low and e < start[i]):
+                            out = True
+                            break
+                else:
+                    out = _leaves(p, bounds, others, line_mode, plane, start, target, inc, arc)
+                if out:
+                    break  # the move leaves the machine's travel: the compiled path stops it there with the alarm
+            if speed is not None and spindle_top is not None and speed > spindle_top:
+                break  # an S above the spindle's top speed: the compiled path says so
             centre = None
             if arc is not None and moved and line_mode in ARC_MODES:
                 # the arc's centre in the plane this line leaves in force; an arc the control finds
@@ -246,6 +266,32 @@ def run_straight(
     p.cut_length = cut
     p.rapid_length = rapid
     return done, pc
+
+
+def _leaves(
+    p: Planner,
+    bounds: Bounds,
+    others: list[tuple[str, float]] | None,
+    mode: float,
+    plane: float,
+    start: tuple[float, ...],
+    target: list[float],
+    inc: list[tuple[int, float]] | None,
+    arc: dict[str, float] | None,
+) -> bool:
+    """Whether a plain line's move from ``start`` to ``target`` (with its incremental words
+    ``inc``, an arc's words ``arc``) leaves ``bounds``; a line that also sets modal codes (a unit
+    or plane among them) is left to the compiled path, which checks it under those codes."""
+    if others is not None:
+        return True
+    end = list(target)
+    if inc is not None:
+        for i, v in inc:
+            end[i] += v
+    if arc is not None and mode in ARC_MODES:
+        centre = p.arc_centre(mode, start, end, arc)
+        return leaves_travel(p, bounds, mode, plane, start, tuple(end), centre, None) is not None
+    return outside(bounds, start, end)
 
 
 def _keep_last_words(

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
+from .machine_limits import offset_number, spindle_speed, tool_number
 from .moves import ToolChange
 from .tool_offsets import apply_length_offset, select_tool
 from .turning_cycles import forget_single_cycle
@@ -52,6 +53,8 @@ def set_codes(p: Planner, other: dict[str, float], file: str, line: int) -> None
     for letter in ("F", "S", "D", "H", "B"):
         if letter in other:
             p.codes[letter] = other[letter]
+    if p.settings.limits is not None:  # the machine's spindle, tools and offsets (machine_limits.py)
+        machine_limits(p, other, file, line)
     if "T" in other:
         select_tool(p, other["T"])
         if p.times.tool_change_t:
@@ -63,6 +66,17 @@ def set_codes(p: Planner, other: dict[str, float], file: str, line: int) -> None
         apply_length_offset(p, other["H"])
     elif not p.lathe and p.modal.get("length") == 49.0 and "Z" in p.axis_index:
         p.tool_vector[p.axis_index["Z"]] = 0.0
+
+
+def machine_limits(p: Planner, other: dict[str, float], file: str, line: int) -> None:
+    """What the machine file's ``[limits]`` says of a block's S, T, D and H (machine_limits.py)."""
+    if "S" in other:
+        spindle_speed(p, other["S"], line, file)
+    if "T" in other:
+        tool_number(p, other["T"], line)
+    for letter in ("D", "H") if not p.lathe else ():  # a lathe's offset is its T's (a D there may be a cycle's)
+        if letter in other:
+            offset_number(p, letter, other[letter], int(other[letter]))
 
 
 def _extra_offset(p: Planner, g: float, other: dict[str, float]) -> int:

@@ -2,7 +2,8 @@
 roughing, G74/G75's pecks, G76's thread passes).
 
 While moves are kept (a ``run``, the debugger, the toolpath) each pass goes through
-``Planner.record`` and becomes a ``Move``. A run for diagnostics keeps no moves
+``Planner.record`` and becomes a ``Move``; so it does where the machine file's ``[limits]`` gives
+a travel, which ``record`` checks. A run for diagnostics keeps no moves
 (``Planner.record_moves`` is False): there the passes only advance the clock and the path
 lengths, and ``record_passes`` does that in one loop with the planner's state read once, by
 the same rules of cycle_time.py. A pass moves X and Z alone (each cycle builds it from the one
@@ -29,7 +30,7 @@ Pass = tuple[float, tuple[float, ...], tuple[float, ...], "tuple[float, ...] | N
 def record_passes(p: Planner, file: str, line: int, passes: Iterable[Pass], pass_of: str) -> None:
     """Record the passes of lathe cycle ``pass_of`` (e.g. "G75") of block ``line`` of ``file``."""
     shape = p.shape
-    if p.record_moves or (shape is not None and shape.reading):
+    if p.record_moves or (shape is not None and shape.reading) or p.travel is not None:  # record checks the travel
         record = p.record
         for mode, start, end, centre in passes:
             record(file, line, mode, start, end, centre, pass_of=pass_of)
@@ -42,7 +43,7 @@ def record_passes(p: Planner, file: str, line: int, passes: Iterable[Pass], pass
     hint = p.feed_hint and 0.0 < feed < 1.0
     per_rev = modal.get("feed") == 95.0 or (modal.get("feed") == 99.0 and p.lathe)
     # a straight cut's rate, the same all along it (None under G96: the general rule)
-    rate = times.straight_rate(feed, per_rev, p.codes.get("S") or 0.0, modal.get("spindle") == 96.0)
+    rate = times.straight_rate(feed, per_rev, p.codes.get("S") or 0.0, modal.get("spindle") == 96.0, unit)
     xi, zi = times.diameter, p.axis_index.get("Z", -1)
     if xi < 0 or zi < 0:
         rate = None  # not a lathe's X (a diameter) and Z

@@ -88,6 +88,10 @@ class MoveTimes:
         self.variable_lead = cycles.variable_lead
         self.tool_change_m = float(timing.tool_change_code[1:]) if timing.tool_change_code.startswith("M") else None
         self.tool_change_t = timing.tool_change_code == "T"
+        # the machine file's [limits]: the highest cutting feed (mm/min) and, where it gives the
+        # spindle's top speed, that speed for every S (not only G96's); infinite without them
+        self.top_feed = math.inf
+        self.top_speed = math.inf
 
     def distance(self, start: Sequence[float], end: Sequence[float]) -> float:
         """The straight distance from ``start`` to ``end``, in program units: on a lathe X moves
@@ -150,26 +154,34 @@ class MoveTimes:
             if lead_change and length > 0.0 and feed > 0.0:
                 feed = _mean_lead(length, feed, lead_change)
         else:
-            rate = self.straight_rate(feed, per_rev, speed, css)
+            rate = self.straight_rate(feed, per_rev, speed, css, unit)
             if rate is not None:
                 return length / rate * 60.0 if rate > 0.0 and length > 0.0 else 0.0
-        return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit) * 60.0
+        return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit, False) * 60.0
 
-    def straight_rate(self, feed: float, per_rev: bool, speed: float, css: bool) -> float | None:
+    def straight_rate(self, feed: float, per_rev: bool, speed: float, css: bool, unit: float = 1.0) -> float | None:
         """How fast a cutting move that is not a thread goes, in program units per minute, where
-        that is the same all along it: F per minute, or F per revolution times S. 0 where it
-        does not move (no feed, or per revolution at S0); None under G96 on a lathe, where the
-        rate follows the diameter (``per_rev_minutes``)."""
+        that is the same all along it: F per minute, or F per revolution times S (S never above
+        ``top_speed``), never above ``top_feed`` (mm/min; ``unit`` is 25.4 under G20, else 1):
+        the control clamps both. 0 where it does not move (no feed, or per revolution at S0);
+        None under G96 on a lathe, where the rate follows the diameter (``per_rev_minutes``)."""
         if not per_rev:
-            return feed if feed > 0.0 else 0.0
-        if css and self.diameter >= 0:
+            rate = feed if feed > 0.0 else 0.0
+        elif css and self.diameter >= 0:
             return None
-        return feed * speed if feed > 0.0 and speed > 0.0 else 0.0
+        else:
+            rate = feed * min(speed, self.top_speed) if feed > 0.0 and speed > 0.0 else 0.0
+        if rate * unit > self.top_feed:  # the control clamps the feed at its highest
+            rate = self.top_feed / unit
+        return rate
 
     def per_rev_minutes(self, length: float, feed: float, speed: float, css: bool, clamp: float | None,
-                        start: Sequence[float], end: Sequence[float], unit: float) -> float:  # fmt: skip
+                        start: Sequence[float], end: Sequence[float], unit: float,
+                        feed_clamp: bool = True) -> float:  # fmt: skip
         """Minutes to move ``length`` at ``feed`` per revolution. At a constant ``speed``,
-        length / (F·S). Under G96 (``css``) the spindle turns at 1000·V / (π·D) (V = S), D the
+        length / (F·S), S never above ``top_speed`` and F·S never above ``top_feed`` (a thread's,
+        without ``feed_clamp``, follows the spindle whatever its rate).
+        Under G96 (``css``) the spindle turns at 1000·V / (π·D) (V = S), D the
         diameter where the tool is, never above ``clamp`` and the spindle's top speed: over a
         straight move D changes linearly, so dt = dl·π·D / (1000·V·F) integrates to the piece's
         length times its mean diameter where the spindle is not clamped, and to length / (F·top)
@@ -178,7 +190,12 @@ class MoveTimes:
             return 0.0
         d = self.diameter
         if not css or d < 0:
-            return length / (feed * speed) if speed > 0.0 else 0.0
+            if speed <= 0.0:
+                return 0.0
+            rate = feed * min(speed, self.top_speed)  # the spindle at its top speed at most
+            if feed_clamp and rate * unit > self.top_feed:  # the control clamps the feed at its highest
+                rate = self.top_feed / unit
+            return length / rate
         top = self.timing.max_spindle_speed if clamp is None else min(clamp, self.timing.max_spindle_speed)
         if speed <= 0.0 or top <= 0.0:
             return 0.0

@@ -38,6 +38,7 @@ from ..dialects.alarms import ARGUMENT_RANGE
 from ..dialects.drill_cycles import PECK, PLAIN_DRILLING, SHORT_PECK, DrillCycle
 from .alarms import MacroAlarm
 from .cycle_time import FEED_STEP, INCH, RAPID_STEP, SHIFT_STEP
+from .machine_limits import leaves_travel, program_bounds
 from .moves import DRILLING, Leg, Move
 
 if TYPE_CHECKING:
@@ -101,10 +102,19 @@ def drill_block(
         m.rapid_length += rapid + times.distance(start, hole) * unit
         hole_at = tuple(hole)
         hole[z] = back_to
+        if not m.record_moves and m.travel is None:
+            m.pos = hole
+            continue
+        legs = hole_legs(hole_at, tuple(at_r), tuple(at_bottom), tuple(hole), spec.feed_out)
+        plane_code = m.modal.get("plane", 17.0)
+        stop = None
+        if m.travel is not None:  # the machine's soft limits (machine_limits.py): the hole is drawn whole
+            stop = leaves_travel(m, program_bounds(m), cycle, plane_code, start, tuple(at_bottom), None, legs)
         if m.record_moves:
-            legs = hole_legs(hole_at, tuple(at_r), tuple(at_bottom), tuple(hole), spec.feed_out)
             m.moves.append(Move(file, line, cycle, start, tuple(at_bottom), float(feed), None, seconds,
-                                m.modal.get("plane", 17.0), legs, DRILLING))  # fmt: skip
+                                plane_code, legs, DRILLING))  # fmt: skip
+        if stop is not None:
+            raise stop[1]
         m.pos = hole
 
 

@@ -1,6 +1,7 @@
 """The codes that act once, in the block that names them (docs/semantics.md §8): G04 dwell, G10
 offsets, G28/G30 through the intermediate point to the reference point, G31 skip (probing.py),
-G53 in machine coordinates, coordinate setting (G92 on a mill, G50 on a lathe), a lathe's turning
+G53 in machine coordinates, G52's local coordinate system, coordinate setting (G92 on a mill,
+G50 on a lathe), a lathe's turning
 cycles (turning_cycles.py), and any other one-shot code with axis words, which moves in the
 modal mode. ``G10`` writes the offset tables through the planner's host (host.py).
 """
@@ -13,11 +14,14 @@ from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
 from .lathe_cycles import ShapeCall, lathe_cycle
+from .machine_limits import g53_bounds, leaves_travel
 from .positions import WORK_BASE, work_offset
 from .probing import skip_block
 
 if TYPE_CHECKING:
     from .planner import Planner
+
+LOCAL_ORIGIN = "G52-"  # the ``codes`` key of G52's origin on an axis, with the axis's index after it
 
 
 def one_shot(
@@ -47,8 +51,18 @@ def one_shot(
         target = list(p.pos)
         for i, v in axes.items():
             target[i] = v - (work_offset(p, i) + p.shift[i] + p.tool_vector[i])
-        p.move(file, line, p.modal.get("motion", 0.0), target)
+        mode = p.modal.get("motion", 0.0)
+        if p.travel is not None:  # machine coordinates: checked whether the offsets are known or not
+            here = tuple(p.pos)
+            stop = leaves_travel(p, g53_bounds(p, list(axes)), mode, 17.0, here, tuple(target), None, None)
+            if stop is not None:
+                p.move(file, line, mode, list(stop[0]))
+                raise stop[1]
+        p.move(file, line, mode, target)
         return bool(axes), None
+    if g == p.dialect.local_coordinate_code:
+        local_coordinates(p, axes)
+        return False, None
     if g == p.dialect.coordinate_setting_code:
         for i, v in axes.items():
             p.shift[i] += p.pos[i] - v
@@ -62,6 +76,19 @@ def one_shot(
         p.move(file, line, mode, target, p.block_arc(mode, target, other, line))
         return True, None
     return False, None
+
+
+def local_coordinates(p: Planner, axes: dict[int, float]) -> None:
+    """G52: the local coordinate system's origin on each named axis is its value in the work
+    coordinate system (0 cancels it). The tool does not move: the program position moves by the
+    change, the coordinate shift takes it up, so the machine position (positions.py) stays. The
+    origin is kept with the codes, as a snapshot keeps them."""
+    for i, v in axes.items():
+        key = f"{LOCAL_ORIGIN}{i}"
+        change = v - (p.codes.get(key) or 0.0)
+        p.codes[key] = v
+        p.shift[i] += change
+        p.pos[i] -= change
 
 
 def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]) -> None:

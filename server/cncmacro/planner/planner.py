@@ -17,6 +17,7 @@ Values arrive already rounded to their address's increment.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
@@ -27,6 +28,7 @@ from .block_words import set_codes, set_modal
 from .cycle_time import INCH, SPEED_CLAMP, MoveTimes
 from .drill_cycles import drill_block
 from .lathe_cycles import ShapeCall, ShapeReading
+from .machine_limits import leaves_travel, program_bounds, spindle_speed
 from .modal_groups import extra_offset_codes, g_code_groups
 from .moves import TURNING, Leg, Move, ToolChange
 from .one_shot import one_shot
@@ -91,6 +93,20 @@ class Planner:
         self._incremental_names = {v: k for k, v in dialect.incremental_letters.items()}  # X -> U on a lathe
         # a lathe that powers on in G98 (per minute): a cutting F below 1 there lacks a G99
         self.feed_hint = self.lathe and dialect.modal_defaults.get("feed") == 98.0
+        # the machine file's [limits] (machine_limits.py): the travel of each limited axis of this
+        # machine by index (mm, machine coordinates), the spindle's top speed where it is the
+        # machine's own, and the feed and speed clamps of the time; None and infinite without them
+        limits = settings.limits
+        self.travel: tuple[tuple[int, float, float], ...] | None = None
+        self.spindle_top: float | None = None
+        if limits is not None:
+            travel = tuple(
+                (self.axis_index[a], lo, hi) for a, (lo, hi) in limits.travel.items() if a in self.axis_index
+            )
+            self.travel = travel or None
+            self.spindle_top = limits.spindle
+            self.times.top_feed = limits.feed or math.inf
+            self.times.top_speed = limits.spindle or math.inf
 
     # ---------------------------------------------------------------- state for the macro machine
     def read(self, source: str, param: str, default: float | None, index: int) -> float | None:
@@ -141,6 +157,10 @@ class Planner:
             codes = self.codes
             for letter, v in code_sets:
                 codes[letter] = v
+            if self.spindle_top is not None:
+                for letter, v in code_sets:
+                    if letter == "S":
+                        spindle_speed(self, v, line, file)
         if not axes and not inc:
             if plan[4] and modal["motion"] in ARC_MODES:  # I, J, K alone may be a full circle
                 return self._cycle_fallback(plan, file, line)
@@ -364,6 +384,11 @@ class Planner:
         modal = self.modal
         unit = INCH if modal.get("units") == 20.0 else 1.0
         plane = modal.get("plane", 17.0)
+        stop = None
+        if self.travel is not None:  # the machine's soft limits: the move stops where it leaves them
+            stop = leaves_travel(self, program_bounds(self), mode, plane, start, end, centre, legs)
+            if stop is not None:
+                end = stop[0]
         if mode == 0.0:
             seconds = times.rapid_seconds(start, end, unit)
             self.rapid_length += times.distance(start, end) * unit
@@ -380,6 +405,8 @@ class Planner:
         if self.record_moves:
             self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre, seconds, plane, legs,
                                               cycle, pass_of)))  # fmt: skip
+        if stop is not None:
+            raise stop[1]
 
     def feed_per_minute_hint(self, mode: float, feed: float, line: int) -> None:
         """On a lathe that powers on in G98 (``feed_hint``: gsk980tdi), a cut at F below 1 under

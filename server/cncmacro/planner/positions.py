@@ -14,13 +14,17 @@ if TYPE_CHECKING:
 WORK_BASE = 5201  # external offset of axis 1; G54 is +20, G55 +40 ... (every profile)
 
 
-def work_offset(p: Planner, axis: int) -> float:
-    """The work offset of ``axis`` in force: the coordinate system's plus the external."""
+def work_offset_variable(p: Planner, axis: int) -> int:
+    """The variable that holds ``axis``'s value of the work offset in force (G54–G59, an extra one)."""
     wcs = p.modal.get("wcs", 54.0)
     if p.extra_wcs and (wcs == 54.1 or wcs in p.extra_codes):
-        n = p.dialect.extra_offset_variables + 20 * (p.extra_wcs - 1) + axis
-    else:
-        n = WORK_BASE + 20 * (int(wcs) - 53) + axis
+        return p.dialect.extra_offset_variables + 20 * (p.extra_wcs - 1) + axis
+    return WORK_BASE + 20 * (int(wcs) - 53) + axis
+
+
+def work_offset(p: Planner, axis: int) -> float:
+    """The work offset of ``axis`` in force: the coordinate system's plus the external."""
+    n = work_offset_variable(p, axis)
     return (p.host.stored(n) or 0.0) + (p.host.stored(WORK_BASE + axis) or 0.0)
 
 

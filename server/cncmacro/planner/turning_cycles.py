@@ -24,6 +24,7 @@ from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from .cycle_time import INCH
+from .machine_limits import leaves_travel, program_bounds
 from .moves import TURNING, Leg, Move
 
 if TYPE_CHECKING:
@@ -123,9 +124,14 @@ def single_cycle(
     feed = p.codes.get("F") or 0.0
     if p.feed_hint and 0.0 < feed < 1.0 and not cycle.thread:
         p.feed_per_minute_hint(1.0, feed, line)
+    stop = None
+    if p.travel is not None:  # the machine's soft limits (machine_limits.py): the cycle is drawn whole
+        stop = leaves_travel(p, program_bounds(p), code, p.modal.get("plane", 17.0), start, start, None, legs)
     if p.record_moves:
         p.moves.append(Move(file, line, code, start, tuple(target), float(feed), None, seconds,
                             p.modal.get("plane", 17.0), legs, TURNING))  # fmt: skip
+    if stop is not None:
+        raise stop[1]
 
 
 def in_increments(p: Planner, value: float) -> float:

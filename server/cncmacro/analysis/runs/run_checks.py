@@ -639,7 +639,8 @@ def run_diagnostics(
             zh = in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, code, en, zh, note.chain, None, False, line_text, locale,
                                    milder=True))  # fmt: skip
-        elif note.kind in ("arc", "units") and note.subject is not None:  # planner/arc_checks.py, planner/units.py
+        elif note.kind in ("arc", "units", "limits") and note.subject is not None:
+            # planner/arc_checks.py, planner/units.py, planner/machine_limits.py: the subject is the code
             en, zh = in_language(note.message, False), in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, note.subject, en, zh, note.chain, None, False, line_text,
                                    locale, milder=note.subject == "arc-radius"))  # fmt: skip

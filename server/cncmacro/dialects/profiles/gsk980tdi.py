@@ -7,6 +7,7 @@ bracketed program names and ``#9xxx`` indirection.
 
 from __future__ import annotations
 
+from ..alarms import OFFSET_NUMBER, OVERTRAVEL_MINUS, OVERTRAVEL_PLUS
 from ..dialect import Dialect
 from ..lathe_cycle_rules import GSK980TDI_RULES
 from ..lathe_cycle_words import GSK980TDI_CYCLE_WORDS
@@ -26,6 +27,9 @@ PROFILE = Dialect(
     nine_indirection=True,
     c_relations=True,
     macro_alarm_base=5900,
+    # the soft limits and the offset numbers are the machine's (docs/semantics.md §11); no source
+    # at hand gives the GSK980TDi's numbers for these alarms
+    unnumbered_alarms=frozenset({OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER}),
     h_codes=True,
     bracket_names=True,
     program_digits=4,
@@ -38,6 +42,7 @@ PROFILE = Dialect(
     modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0, 5.0}),
     modal_defaults={"plane": 18.0, "feed": 98.0},
     coordinate_setting_code=50.0,
+    local_coordinate_code=None,  # no G52 in the GSK980TDi's G codes
     cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0, 83.0, 84.0, 87.0, 88.0}),
     single_cycles=LATHE_SINGLE_CYCLES,
     lathe_cycles=GSK_LATHE_CYCLES,
