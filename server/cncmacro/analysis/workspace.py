@@ -144,6 +144,14 @@ class WorkspaceAnalysis:
         """The runs, by the program each starts from."""
         return self._runs.runs
 
+    def set_search_paths(self, folders: list[str]) -> None:
+        """The folders a call looks in beyond its file's own (``library/callee_folders.py``)
+        changed: the library looks again."""
+        folders = [str(p) for p in folders]
+        if folders != self.search_paths:
+            self.search_paths = folders
+            self._reload()
+
     def set_workspace_folders(self, folders: list[str]) -> None:
         """The folders whose program files may call the open ones (the editor's workspace
         folders; for the command line the checked files' folders and the search paths)."""

@@ -37,6 +37,7 @@ from ..analysis import Diagnostic
 from ..analysis.faults import FILE, internal_error
 from ..analysis.workspace import WorkspaceAnalysis
 from ..bilingual import Detail, detail, in_language, is_chinese, pick
+from ..library.callee_folders import callee_folders
 from ..library.files import (
     MAX_PROGRAM_BYTES,
     SkippedFileError,
@@ -121,10 +122,9 @@ def check_paths(
                 settings = _noted(settings, machine_file, dialect, chinese, shown_err)
             checked = [*dict.fromkeys(str(path.parent) for path, _ in files)]
             folders = [*checked, *(search_paths or [])]
-            # the checked files are one machine's programs, held in one memory on the control:
-            # a call finds a program in any of their folders, not only the caller's
-            callee_folders = [*(search_paths or []), *(f for f in checked if f not in (search_paths or []))]
-            workspace = partial(WorkspaceAnalysis, settings=settings, dialect=dialect, search_paths=callee_folders,
+            # the checked files are one machine's programs: a call finds a program in any of their folders
+            callees = callee_folders(search_paths or [], (path for path, _ in files))
+            workspace = partial(WorkspaceAnalysis, settings=settings, dialect=dialect, search_paths=callees,
                                 locale=locale, max_blocks=max_blocks, severities=settings.severity,
                                 workspace_folders=folders)  # fmt: skip
             ws = workspace()

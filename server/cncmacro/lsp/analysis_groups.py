@@ -4,7 +4,9 @@ As ``cncmacro check`` makes one analysis per group of files, each open document 
 analysis of its own machine file (``OpenDocument.machine_file``, the nearest ``.cncmacro.toml``
 above it; None for the defaults), which holds it: the server's ``Documents`` show its
 ``ParsedDocument``, so each document is parsed once. With one machine file there is one
-analysis. Each analysis has its machine file's settings with the editor's over them
+analysis. A call in an analysis looks for its program in the folders of the workspace's program
+files read with its machine file (the workspace index's ``callee_folders``, the rule
+``cncmacro check`` follows). Each analysis has its machine file's settings with the editor's over them
 (``options``); every one reads the files on disk through the workspace index's cache. A
 machine file created, changed or deleted moves the documents whose nearest one changed to the
 analysis of their new one (``regroup``). An analysis left without documents goes, but the last
@@ -16,7 +18,7 @@ inside its ``editing()``, or on the worker thread that holds the lock.
 
 from __future__ import annotations
 
-from collections.abc import Container, Iterator
+from collections.abc import Callable, Container, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -30,23 +32,31 @@ from .settings import Settings, merged_severities, valid_severities
 class AnalysisGroups:
     """See the module docstring."""
 
-    def __init__(self, documents: Documents, files: FileCache) -> None:
+    def __init__(
+        self, documents: Documents, files: FileCache, callee_folders: Callable[[Path | None], list[str]]
+    ) -> None:
         self.documents = documents
         self._files = files
-        self._search_paths: list[str] = []
+        self._callee_folders = callee_folders  # where a call looks beyond its file's folder, per machine file
         self._folders: list[str] = []
         self.locale = "en"
         self.editor = Settings()  # the editor's settings in force
-        self.analyses: dict[Path | None, WorkspaceAnalysis] = {None: self._made()}
+        self.analyses: dict[Path | None, WorkspaceAnalysis] = {None: self._made(None)}
 
-    def _made(self) -> WorkspaceAnalysis:
-        return WorkspaceAnalysis(search_paths=self._search_paths, workspace_folders=self._folders, locale=self.locale,
-                                 files=self._files, memo=self.documents.block_memo)  # fmt: skip
+    def _made(self, machine_file: Path | None) -> WorkspaceAnalysis:
+        return WorkspaceAnalysis(search_paths=self._callee_folders(machine_file), workspace_folders=self._folders,
+                                 locale=self.locale, files=self._files, memo=self.documents.block_memo)  # fmt: skip
+
+    def _find_callees(self) -> None:
+        """Program files came, went or moved to another machine file: each analysis's calls look
+        in the folders of its machine's programs as they are now."""
+        for machine_file, analysis in self.analyses.items():
+            analysis.set_search_paths(self._callee_folders(machine_file))
 
     def start(self, machine_file: Path | None, folders: list[str], locale: str) -> None:
         """A fresh analysis for the session (at ``initialize``, before any document opens), for
         ``machine_file`` (the first workspace folder's)."""
-        self._search_paths, self._folders, self.locale = list(folders), list(folders), locale
+        self._folders, self.locale = list(folders), locale
         self.analyses = {}
         self.of(machine_file)
 
@@ -82,7 +92,7 @@ class AnalysisGroups:
         if analysis is None:
             for unused in [k for k, a in self.analyses.items() if not a.docs]:
                 del self.analyses[unused]  # the one kept when its last document left, say
-            analysis = self.analyses[machine_file] = self._made()
+            analysis = self.analyses[machine_file] = self._made(machine_file)
             analysis.configure(**self.options(machine_file))
         return analysis
 
@@ -99,6 +109,7 @@ class AnalysisGroups:
         only notes it: it is handed to its analysis once read). The paths of those moved."""
         documents = self.documents
         documents.machines.forget()
+        self._find_callees()
         moved = []
         for doc in documents.by_uri.values():
             machine_file = documents.machines.path_for(doc.path)
@@ -127,6 +138,7 @@ class AnalysisGroups:
 
     def files_changed(self, paths: list[str]) -> None:
         """Files changed on disk (created, changed, deleted)."""
+        self._find_callees()
         for analysis in self.analyses.values():
             for path in paths:
                 analysis.file_changed(path)
@@ -134,6 +146,7 @@ class AnalysisGroups:
     def folders_changed(self, folders: list[str]) -> None:
         """The editor's workspace folders changed: callers are looked for in the new ones."""
         self._folders = list(folders)
+        self._find_callees()
         for analysis in self.analyses.values():
             analysis.set_workspace_folders(folders)
 

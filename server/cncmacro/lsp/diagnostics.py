@@ -73,7 +73,8 @@ class DiagnosticsEngine:
 
     def __init__(self, server: CncMacroServer, delay: float = DEBOUNCE_SECONDS) -> None:
         self.server = server
-        self.groups = AnalysisGroups(server.documents, server.index.disk)  # per machine file
+        # one analysis per machine file
+        self.groups = AnalysisGroups(server.documents, server.index.disk, server.index.callee_folders)
         self.published = Published(server)
         self.delay = delay
         self.lock = threading.Lock()  # held by the analysis, and by the editor's thread to change anything

@@ -120,10 +120,14 @@ class Documents:
         machine = self.machines.settings_for(path)
         return machine.calls if machine is not None else None
 
+    def machine_file_of(self, path: str) -> Path | None:
+        """The machine file that ``path`` (a file or folder) is read with."""
+        machines = self.machines
+        return machines.path_in(path) if os.path.isdir(path) else machines.path_for(path)
+
     def extensions_for(self, path: str) -> frozenset[str]:
         """The endings of program files that the machine file of ``path`` (a file or folder) adds."""
-        machines = self.machines
-        machine = machines.settings(machines.path_in(path) if os.path.isdir(path) else machines.path_for(path))
+        machine = self.machines.settings(self.machine_file_of(path))
         return machine.extensions if machine is not None else frozenset()
 
     def machine(self, doc: OpenDocument) -> MachineSettings | None:

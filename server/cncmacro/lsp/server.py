@@ -147,7 +147,7 @@ class CncMacroServer(LanguageServer):
         documents = self.documents
         self.index = WorkspaceIndex(
             documents.by_uri.values, documents.dialect_for, documents.block_memo, calls_for=documents.calls_for,
-            extensions_for=documents.extensions_for,
+            extensions_for=documents.extensions_for, machine_of=documents.machine_file_of,
         )  # fmt: skip
         self.settings = Settings()
         self.locale: str = "en"

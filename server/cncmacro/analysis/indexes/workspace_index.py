@@ -17,7 +17,8 @@ calls O9100) sees the editor's text: the index knows them through ``open_files``
 giving the open documents (``OpenFile``: path, lines, parsed text, site index), and reads each
 one's dialect through ``dialect_for``. Each file on disk gets a site index (``site_index.py``)
 at the first search, kept while the file is. Program lookup for a call goes through
-``library.programs.ProgramLibrary``. It knows nothing of a protocol: the language server makes
+``library.programs.ProgramLibrary``, in the folders of the programs read with the calling
+file's machine file (``library/callee_folders.py``). It knows nothing of a protocol: the language server makes
 one over its documents.
 """
 
@@ -32,6 +33,7 @@ from typing import Protocol
 
 from ...bilingual import Detail, detail
 from ...dialects.dialect import Dialect
+from ...library.callee_folders import callee_folders
 from ...library.file_cache import FileCache
 from ...library.files import (
     MAX_FOLDER_ENTRIES,
@@ -90,13 +92,16 @@ class WorkspaceIndex:
     """Parsed program files under the workspace folders, with the open documents on top.
     ``memo`` is the per-line fact cache of the open documents (``block_memo.py``), shared by
     the files on disk; ``files`` reads the files (a cache of its own when none is given);
-    ``extensions_for`` gives the machine file's endings of program files for a path."""
+    ``extensions_for`` gives the machine file's endings of program files for a path, ``machine_of``
+    the machine file it is read with."""
 
     def __init__(self, open_files: Callable[[], Iterable[OpenFile]], dialect_for: Callable[[list[str], str], Dialect],
                  memo: BlockMemo | None = None, files: FileCache | None = None,
                  calls_for: Callable[[str], Calls] = lambda path: None,
-                 extensions_for: Callable[[str], frozenset[str]] = lambda path: frozenset()) -> None:  # fmt: skip
+                 extensions_for: Callable[[str], frozenset[str]] = lambda path: frozenset(),
+                 machine_of: Callable[[str], Path | None] = lambda path: None) -> None:  # fmt: skip
         self.open_files = open_files
+        self.machine_of = machine_of  # the machine file a path is read with
         self.extensions_for = extensions_for
         self.dialect_for = dialect_for
         self.calls_for = calls_for  # the machine file's call codes for a path (which words are jumps)
@@ -222,12 +227,21 @@ class WorkspaceIndex:
                 name = f"O{u.number:04d}" if u.number is not None else Path(f.path).stem
                 yield ProgramEntry(name, u.number, u.title, f.path, u.start, u.end, u is units[0])
 
+    def callee_folders(self, machine_file: Path | None) -> list[str]:
+        """The folders a call in a file read with ``machine_file`` looks in beyond its own: the
+        folders of the workspace's program files read with that machine file
+        (``library/callee_folders.py``, the rule ``cncmacro check`` follows)."""
+        return callee_folders((), (p for p in self.files if self.machine_of(p) == machine_file))
+
     def library(self, near: OpenFile | None) -> ProgramLibrary:
-        """A program library over the workspace folders with the open documents' text (the
-        files on disk read through the index's cache)."""
+        """A program library over the folders of the machine's programs (``near``'s machine,
+        else the first workspace folder's) with the open documents' text (the files on disk
+        read through the index's cache)."""
         texts = {d.path: d.parsed.text for d in self.open_files() if near is None or d is not near}
-        extensions = self.extensions_for(near.path if near is not None else str(self.roots[0]) if self.roots else "")
-        return ProgramLibrary(folders=list(self.roots), texts=texts, files=self.disk, extensions=extensions)
+        where = near.path if near is not None else str(self.roots[0]) if self.roots else ""
+        folders = self.callee_folders(self.machine_of(where)) if where else list(map(str, self.roots))
+        extensions = self.extensions_for(where)
+        return ProgramLibrary(folders=folders, texts=texts, files=self.disk, extensions=extensions)
 
     def find_program(self, doc: OpenFile, number: int | None, name: str | None) -> FoundProgram | None:
         """The program a call in ``doc`` names, found as the program library finds it."""
