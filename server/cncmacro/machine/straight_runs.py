@@ -98,6 +98,7 @@ def run_straight(
     # under the offsets in force, which no plain line changes, and the spindle's top speed
     bounds = program_bounds(p) if p.travel is not None else None
     spindle_top = p.spindle_top
+    arc_centre, arc_fault = p.arc_centre, p.arc_fault
     # the lines run are the lines passed but the blank and comment ones (``blanks``): the
     # budget counts the lines run, so each of those moves ``stop`` on by one
     first_pc = pc
@@ -194,12 +195,13 @@ def run_straight(
                     for group, g in others:
                         if group == "plane":
                             line_plane = g
-                arc_end = list(target)
+                arc_end = target
                 if inc is not None:
+                    arc_end = list(target)
                     for i, v in inc:
                         arc_end[i] += v
-                centre = p.arc_centre(line_mode, start, arc_end, arc, line_plane)
-                if centre is not None and p.arc_fault(start, arc_end, centre, arc, line_plane) is not None:
+                centre = arc_centre(line_mode, start, arc_end, arc, line_plane)
+                if centre is not None and arc_fault(start, arc_end, centre, arc, line_plane) is not None:
                     break
             if new_mode is not None:
                 if moved and new_mode in cycles:

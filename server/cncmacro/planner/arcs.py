@@ -115,9 +115,12 @@ def arc_fault(
     if r is not None:
         da = (end[a] - start[a]) * scale_a
         db = (end[b] - start[b]) * scale_b
-        if da == 0.0 and db == 0.0:
+        chord2 = da * da + db * db
+        if chord2 == 0.0:
             return (R_FULL_CIRCLE, abs(r), 0.0) if r != 0.0 else None
-        half = 0.5 * (da * da + db * db) ** 0.5
+        if 4.0 * r * r >= chord2:
+            return None  # R reaches half the chord: the arc is cut as written
+        half = 0.5 * chord2**0.5
         if tolerance > 0.0 and half - abs(r) > tolerance:
             return SHORT_RADIUS, abs(r), half
         return None
