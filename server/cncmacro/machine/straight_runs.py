@@ -90,6 +90,10 @@ def run_straight(
     css = modal.get("spindle") == 96.0
     plane = modal.get("plane", 17.0)
     f = codes.get("F") or 0.0
+    # a straight cut's rate (``MoveTimes.straight_rate``: None under G96 on a lathe), worked
+    # out again only when a line changes F, S or the modes it reads; a thread is timed by its lead
+    threads = times.thread_modes
+    rate = times.straight_rate(f, per_rev, codes.get("S") or 0.0, css, unit)
     # where the tool is (after the last line run) and where the line being read sends it: one
     # list, changed in place, that each line starts as ``start`` (a line declined is dropped)
     start = tuple(p.pos)
@@ -232,6 +236,8 @@ def run_straight(
                 f = feed or 0.0
             if speed is not None:
                 codes["S"] = speed
+            if others is not None or feed is not None or speed is not None:
+                rate = times.straight_rate(f, per_rev, codes.get("S") or 0.0, css, unit)
             if moved:
                 if inc is not None:
                     for i, v in inc:
@@ -246,8 +252,11 @@ def run_straight(
                         length = dist(start, end)
                     else:
                         length = times.arc_length(mode, plane, start, end, centre)
-                    seconds = times.feed_seconds(mode, length, f, per_rev, codes.get("S") or 0.0, css,
-                                                 codes.get(SPEED_CLAMP), start, end, unit)  # fmt: skip
+                    if rate is not None and mode not in threads:
+                        seconds = length / rate * 60.0 if rate > 0.0 and length > 0.0 else 0.0
+                    else:
+                        seconds = times.feed_seconds(mode, length, f, per_rev, codes.get("S") or 0.0, css,
+                                                     codes.get(SPEED_CLAMP), start, end, unit)  # fmt: skip
                     cut += length * unit
                 clock += seconds
                 if append is not None:
