@@ -106,7 +106,7 @@ OPENS_ALLOWED = {
     "lsp/collector.py": "reads /proc/self/statm, the server's own memory, not a file of the workspace",
     "library/persistence.py": "writes the persistent-variable file atomically (a temporary file, fsync, "
                               "rename); it reads the file through library.files.read_bytes",
-    "library/persistence_lock.py": "creates and locks <file>.lock beside the persistent-variable file",
+    "library/persistence_lock.py": "creates and locks <file>.cncmacro-lock beside the persistent-variable file",
 }  # fmt: skip
 _OPEN_METHODS = {"read_text", "read_bytes", "write_text", "write_bytes"}
 

@@ -18,7 +18,7 @@ from cli_capture import cli
 
 posix_only = pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
 
-LOCK = ".cncmacro-vars.json.lock"
+LOCK = ".cncmacro-vars.json.cncmacro-lock"
 
 
 def _names(folder: Path) -> list[str]:

@@ -94,7 +94,7 @@ def test_a_run_that_waits_in_vain_says_so_and_changes_nothing(tmp_path: Path, pr
 
     vars_file = tmp_path / ".cncmacro-vars.json"
     vars_file.write_text('{"variables": {"500": 7.0}}\n', encoding="utf-8")
-    with open(tmp_path / ".cncmacro-vars.json.lock", "w") as held:  # another run has the file
+    with open(tmp_path / ".cncmacro-vars.json.cncmacro-lock", "w") as held:  # another run has the file
         fcntl.flock(held, fcntl.LOCK_EX)
         held.write(f"{os.getpid()}\n")
         held.flush()

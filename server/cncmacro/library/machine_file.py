@@ -77,6 +77,7 @@ from ..dialects.tables import CodeDoc, SystemVariable
 from ..dialects.timing import TimingChanges
 from .files import SkippedFileError, read_bytes
 from .limits_settings import MachineLimits, read_limits
+from .persistence import led_outside
 from .skip_model import SkipModel, read_skip
 from .timing_settings import timing_changes
 from .toml_numbers import finite_number
@@ -171,9 +172,9 @@ class MachineSettings:
         if p.is_absolute() or not self.folder:
             return p
         p = Path(self.folder) / p
-        root = Path(os.path.realpath(self.folder))
-        target = Path(os.path.realpath(p))
-        if not target.is_relative_to(root):
+        target = led_outside(p, Path(self.folder))
+        if target is not None:
+            root = Path(os.path.realpath(self.folder))
             raise MachineFileError(detail(
                 f"'persistent_file' {self.persistent_file!r} leads through a link to {target}, "
                 f"outside the machine file's folder {root}",

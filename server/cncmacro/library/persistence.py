@@ -43,10 +43,30 @@ class PersistentFileError(ValueError):
     """The file exists but does not hold persistent variables (its argument is a ``Detail``)."""
 
 
-def persistent_target(path: Path, saving: bool = True) -> Path:
+def led_outside(path: Path, folder: Path) -> Path | None:
+    """Where ``path`` leads once its links (of its folders and of itself) are followed, when
+    that is outside ``folder`` (links followed too); None when it stays inside. The one rule of
+    where a persistent-variable file, and so its lock, may be: a run never writes outside the
+    folder the file is named in."""
+    target = Path(os.path.realpath(path))
+    return None if target.is_relative_to(Path(os.path.realpath(folder))) else target
+
+
+def persistent_target(path: Path, saving: bool = True, folder: Path | None = None) -> Path:
     """The file that ``path`` names once its symbolic links are followed (``path`` itself
     when it is none). ``PersistentFileError`` for a link that leads to no file, when ``saving``
-    would make one there (a run that only reads finds every variable vacant)."""
+    would make one there (a run that only reads finds every variable vacant), and for one that
+    leads outside ``folder`` when it is given (``led_outside``), before anything there is read,
+    locked or written."""
+    if folder is not None:
+        outside = led_outside(path, folder)
+        if outside is not None:
+            raise PersistentFileError(detail(
+                f"{path}: the persistent-variable file is a link to {outside}, outside the folder {folder}; "
+                "nothing is read or written there. Remove the link, or name the file with 'persistent_file' "
+                "in a machine file",
+                f"{path}：断电保持变量文件是指向 {outside} 的链接，在文件夹 {folder} 之外；"
+                "不会在那里读写任何内容。请删除该链接，或在机床设置文件中用 'persistent_file' 指定文件"))  # fmt: skip
     target = Path(os.path.realpath(path))
     if saving and os.path.islink(path) and not target.exists():
         raise PersistentFileError(detail(

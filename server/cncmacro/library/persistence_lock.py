@@ -3,10 +3,13 @@
 A run that will save ``#500–#999`` holds an exclusive advisory lock from before it reads the
 file until it has written it back, so two runs that each add 1 to ``#500`` add 2, whether they
 start together or not; a debug session holds it from its launch until it ends. The lock is
-taken on a sibling file, ``<name>.lock`` beside the (link-resolved) variable file, never on the
-variable file itself: a save renames a new file over that one, and a lock on the replaced file
-would guard nothing. The lock file holds the process number of the run that has the lock, for
-the message of a run that waits for it in vain. A run deletes it while it still holds the lock
+taken on a sibling file, ``<name>.cncmacro-lock`` beside the (link-resolved) variable file, never
+on the variable file itself: a save renames a new file over that one, and a lock on the replaced
+file would guard nothing. The lock file holds the process number of the run that has the lock, for
+the message of a run that waits for it in vain. A file of that name that holds anything else is
+not a lock of ours and is never written, truncated or deleted: the run is refused, saying so
+(a ``persistent_file = "yarn"`` must not cost a shop its ``yarn.lock``; the name's own suffix
+makes the clash unlikely, the check makes it harmless). A run deletes it while it still holds the lock
 (``PersistentLock.remove``) when it is done, saved or not, so that nothing of it is left beside
 the programs. A run that was waiting on the deleted file finds, once it has the lock, that the
 path no longer names the file it locked, and locks the path anew: two runs never hold locks on
@@ -45,6 +48,8 @@ except ImportError:  # POSIX
     msvcrt = None  # type: ignore[assignment]
 
 LOCK_WAIT = 10.0
+LOCK_SUFFIX = ".cncmacro-lock"
+_LOCK_TEXT_MAX = 32  # a process number and a newline: a longer file is not a lock of ours
 POLL_SECONDS = 0.01
 _NOT_WRITABLE = (errno.EACCES, errno.EPERM, errno.EROFS)
 
@@ -89,7 +94,7 @@ class PersistentLock:
 
 def lock_file_of(path: Path) -> Path:
     """The lock file beside the persistent-variable file ``path``."""
-    return path.with_name(path.name + ".lock")
+    return path.with_name(path.name + LOCK_SUFFIX)
 
 
 def lock_persistent(path: Path, wait: float = LOCK_WAIT) -> PersistentLock:
@@ -158,7 +163,29 @@ def _open(lock_path: Path) -> int:
     if not stat.S_ISREG(os.fstat(fd).st_mode):
         os.close(fd)
         raise OSError(errno.EINVAL, "the lock file is not a regular file")
+    if not _holds_a_lock(fd):
+        os.close(fd)
+        raise PersistentFileError(detail(
+            f"{lock_path}: this file is not a lock of cncmacro's (it holds something else), so it is "
+            "left as it is and the persistent variables are not used; move it, or name another "
+            "'persistent_file' in the machine file",
+            f"{lock_path}：该文件不是 cncmacro 的锁文件（其中有别的内容），因此保持原样，不使用断电保持变量；"
+            "请移走该文件，或在机床设置文件中另指定 'persistent_file'"))  # fmt: skip
     return fd
+
+
+def _holds_a_lock(fd: int) -> bool:
+    """Whether the open file is empty or holds only a process number (a lock of ours, maybe left
+    by a run that was killed). Where another run's lock keeps it from being read (Windows locks
+    the byte it holds), it is one."""
+    try:
+        if os.fstat(fd).st_size > _LOCK_TEXT_MAX:
+            return False
+        os.lseek(fd, 0, os.SEEK_SET)
+        text = os.read(fd, _LOCK_TEXT_MAX + 1)
+    except OSError:
+        return True
+    return text.strip().isdigit() or not text.strip()
 
 
 def _try_lock(fd: int, lock_path: Path) -> bool:

@@ -19,6 +19,7 @@ a variable that cannot be preset) is a ``SetupError`` whose message says what is
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -36,6 +37,16 @@ from ..library.persistence_lock import LOCK_WAIT, PersistentLock, lock_persisten
 from ..library.profiles import file_profile, typed_profile_wins
 from ..library.programs import ProgramLibrary
 from .machine import Machine
+
+
+def _home(program: Path, settings: MachineSettings) -> Path:
+    """The folder a default persistent file's link may lead within: the machine file's folder when
+    the program is in it, else the program's own."""
+    if settings.folder:
+        folder = Path(settings.folder)
+        if Path(os.path.realpath(program)).is_relative_to(Path(os.path.realpath(folder))):
+            return folder
+    return program.parent
 
 
 class SetupError(ValueError):
@@ -141,7 +152,11 @@ def prepare_run(
     if machine.preset_problems:
         raise SetupError(machine.preset_problems[0])
     try:
-        persistent = persistent_target(settings.persistent_path() or (program.parent / PERSISTENT_FILE_NAME), saving)
+        named = settings.persistent_path()
+        if named is not None:
+            persistent = persistent_target(named, saving)
+        else:  # the default beside the program: a link may lead only within the machine's folder
+            persistent = persistent_target(program.parent / PERSISTENT_FILE_NAME, saving, _home(program, settings))
         lock = lock_persistent(persistent, wait) if saving else None
     except (MachineFileError, PersistentFileError) as e:
         raise SetupError(e.args[0]) from None  # keeps a Chinese text
