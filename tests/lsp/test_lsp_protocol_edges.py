@@ -105,3 +105,44 @@ def test_a_request_after_shutdown_gets_an_invalid_request_error():
 def test_exit_without_shutdown_ends_the_process_with_1():
     code, _ = session(INIT, INITIALIZED, EXIT)
     assert code == 1
+
+
+def test_a_message_nested_too_deeply_is_a_parse_error_and_the_server_lives_on():
+    # 100,000 arrays inside each other: deeper than any decoder goes; it used to end the process
+    deep = b'{"jsonrpc":"2.0","id":3,"method":"initialize","params":{"x":' + b"[" * 100_000 + b"]" * 100_000 + b"}}"
+    code, sent = session(b"Content-Length: %d\r\n\r\n" % len(deep) + deep, INIT, INITIALIZED, SHUTDOWN, EXIT)
+    refused = [m for m in sent if m.get("error", {}).get("code") == -32700 and m.get("id") is None]
+    assert refused and "nested too deeply" in refused[0]["error"]["message"]
+    assert "capabilities" in answer(sent, 1)["result"]  # the next message is served
+    assert answer(sent, 90)["result"] is None
+    assert code == 0
+
+
+def test_messages_json_rpc_does_not_allow_get_an_invalid_request_error_and_the_session_goes_on():
+    object_id = {"jsonrpc": "2.0", "id": {"a": 1}, "method": "textDocument/hover", "params": HOVER_PARAMS}
+    array_id = {"jsonrpc": "2.0", "id": [4], "method": "textDocument/hover", "params": HOVER_PARAMS}
+    no_version = {"id": 5, "method": "textDocument/hover", "params": HOVER_PARAMS}
+    batch = b"Content-Length: 2\r\n\r\n[]"
+    code, sent = session(INIT, INITIALIZED, object_id, array_id, no_version, batch, SHUTDOWN, EXIT)
+    refused = [m["error"] for m in sent if m.get("id") is None and "error" in m]
+    assert [e["code"] for e in refused] == [-32600] * 4
+    assert "batch" in refused[3]["message"]
+    assert not [m for m in sent if m.get("id") == 5]  # never served as a request
+    assert answer(sent, 90)["result"] is None
+    assert code == 0
+
+
+def test_requests_before_a_successful_initialize_get_server_not_initialized():
+    early = {"jsonrpc": "2.0", "id": 2, "method": "shutdown"}
+    refused_init = {"jsonrpc": "2.0", "id": 3, "method": "initialize", "params": {"capabilities": 5}}
+    text = {"uri": "file:///nowhere/O1.nc", "languageId": "cnc-macro", "version": 1, "text": "O1\nM30\n"}
+    opened = {"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": {"textDocument": text}}
+    hover = {"jsonrpc": "2.0", "id": 4, "method": "textDocument/hover", "params": HOVER_PARAMS}
+    code, sent = session(early, refused_init, opened, hover, INIT, SHUTDOWN, EXIT)
+    assert answer(sent, 2)["error"]["code"] == -32002  # shutdown before initialize
+    assert answer(sent, 3)["error"]["code"] == -32602  # an initialize whose parameters do not fit
+    assert answer(sent, 4)["error"]["code"] == -32002  # and the document was not taken either
+    assert not [m for m in sent if m.get("method") == "textDocument/publishDiagnostics"]
+    assert "capabilities" in answer(sent, 1)["result"]
+    assert answer(sent, 90)["result"] is None
+    assert code == 0

@@ -158,6 +158,7 @@ class CncMacroServer(LanguageServer):
         self.machine_file_uris: set[str] = set()  # the machine files whose problem is shown
         self.machine_files_shown: set[Path] = set()  # the machine files in use when they were last shown
         self.last_message_at = time.monotonic()  # when the editor last sent anything (the collector waits for quiet)
+        self.initialize_accepted = False  # an initialize request was understood (before it: LSP's -32002)
 
     # ---- the workspace
     def machine_files_in_use(self) -> list[Path]:

@@ -43,6 +43,7 @@ _CONTENT_LENGTH = re.compile(rb"Content-Length:[ \t]*(\d{1,20})", re.IGNORECASE)
 PARSE_ERROR = -32700
 INVALID_REQUEST = -32600
 INVALID_PARAMS = -32602
+SERVER_NOT_INITIALIZED = -32002
 
 
 def serve_stdio(server: CncMacroServer, stdin: BinaryIO, stdout: BinaryIO) -> int:
@@ -151,27 +152,56 @@ async def _read_messages(server: CncMacroServer, reader: StdinAsyncReader, stop:
         except ValueError as e:  # not JSON (or not UTF-8)
             _answer_error(server, None, PARSE_ERROR, f"not a JSON message: {e}")
             continue
+        except RecursionError:  # arrays or objects nested deeper than the decoder goes
+            _answer_error(server, None, PARSE_ERROR, "not a JSON message: nested too deeply")
+            continue
         _handle(server, data)
         await asyncio.sleep(0)  # let the handlers' tasks run between messages
+
+
+def _not_a_message(data: Any) -> str | None:
+    """Why ``data`` is not a JSON-RPC 2.0 message the protocol carries, or None: LSP has no
+    batches, every message names ``"jsonrpc": "2.0"``, and an id is a number or a string."""
+    if isinstance(data, list):
+        return "a batch of messages is not part of the Language Server Protocol: send them one by one"
+    if not isinstance(data, dict):
+        return "a message is a JSON object"
+    if data.get("jsonrpc") != "2.0":
+        return 'a message says "jsonrpc": "2.0"'
+    request_id = data.get("id")
+    if request_id is not None and (request_id.__class__ is bool or not isinstance(request_id, (int, str))):
+        return "an id is a number or a string"
+    return None
 
 
 def _handle(server: CncMacroServer, data: Any) -> None:
     server.last_message_at = time.monotonic()
     protocol = server.protocol
-    request_id = data.get("id") if isinstance(data, dict) else None
-    is_request = isinstance(data, dict) and "method" in data and request_id is not None
-    if is_request and protocol._shutdown and data.get("method") != "exit":
+    wrong = _not_a_message(data)
+    if wrong is not None:
+        _answer_error(server, None, INVALID_REQUEST, wrong)
+        return
+    request_id = data.get("id")
+    method = data.get("method")
+    is_request = method is not None and request_id is not None
+    if is_request and protocol._shutdown and method != "exit":
         _answer_error(server, request_id, INVALID_REQUEST, "the server is shutting down")
         return
+    if not server.initialize_accepted and method not in (None, "initialize", "exit"):
+        if is_request:  # LSP: before initialize, a request is refused and a notification dropped
+            _answer_error(server, request_id, SERVER_NOT_INITIALIZED, f"{method} before a successful initialize")
+        return
     try:
-        message = protocol.structure_message(data) if isinstance(data, dict) else data
+        message = protocol.structure_message(data)
     except JsonRpcException as e:
         if is_request:
             code = INVALID_PARAMS if isinstance(e, JsonRpcInvalidParams) else e.code
-            _answer_error(server, request_id, code, f"the parameters of {data.get('method')} do not fit it")
+            _answer_error(server, request_id, code, f"the parameters of {method} do not fit it")
         else:
             log.warning("message not understood: %s", e)
         return
+    if method == "initialize":
+        server.initialize_accepted = True
     try:
         protocol.handle_message(message)
     except Exception as e:  # a fault in one message must not end the session
