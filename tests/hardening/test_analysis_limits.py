@@ -146,3 +146,19 @@ def test_check_of_a_file_of_endless_programs_names_those_it_did_not_run(tmp_path
     assert len([x for x in lines if "was not run" in x]) == 30 - run_checks.FILE_BUDGETS
     first_left_out = run_checks.FILE_BUDGETS
     assert f"{f}:{5 * first_left_out + 2}:1: information: O{1000 + first_left_out} was not run" in r.stdout
+
+
+# each program counts to 10**8 before it ends: far beyond any time limit of these tests
+_COUNTS_LONG = "O{n:04d}\n#1=0\nWHILE[#1 LT 1]DO1\n#2=#2+1\nIF[#2 GT 100000000]THEN#1=1\nEND1\nM30\n"
+
+
+def test_the_programs_of_one_file_share_one_runs_time_whatever_max_blocks_says(tmp_path: Path) -> None:
+    # three long programs in one file, a budget raised to 10**12 blocks: the file's analysis
+    # takes the time of one run (0.4 s here, 30 s by default), not three, and says why
+    text = "%\n" + "".join(_COUNTS_LONG.format(n=n) for n in (1, 2, 3)) + "%\n"
+    ws, found = analysed(tmp_path, text, max_blocks=10**12, max_seconds=0.4)
+    assert sum(run.elapsed for run in ws.runs.values()) < 0.4 + 0.3  # one chunk past the limit at most
+    messages = [message for code, message in found if code == "run-limit"]
+    assert any("time limit" in m for m in messages)
+    assert [m.split(" ")[0] for m in messages if "was not run" in m] == ["O0002", "O0003"]
+    assert all("0.4 s" in m for m in messages if "was not run" in m)

@@ -326,7 +326,7 @@ class WorkspaceAnalysis:
             self.progress = Progress(pick(self.locale, f"running {found.label}", f"运行 {found.label}"),
                                      STATIC_SHARE + (1 - STATIC_SHARE) * n / len(primary))  # fmt: skip
 
-        if not self._runs.advance(primary, self.max_blocks, should_cancel, running, self.locale):
+        if not self._runs.advance(primary, self.max_blocks, should_cancel, running, self.locale, self.max_seconds):
             return None
         return self._result(version)
 
@@ -348,4 +348,4 @@ class WorkspaceAnalysis:
     def _result(self, version: int | None) -> AnalysisResult:
         own = {path: list(self._own(d)) for path, d in self.docs.items()}
         return gather(version, own, self.docs, self.library, self._runs, self.callers.entries or {},
-                      self._unreached, self.max_blocks, self.locale, self.severities)  # fmt: skip
+                      self._unreached, self.max_blocks, self.locale, self.severities, self.max_seconds)  # fmt: skip

@@ -23,7 +23,7 @@ from .faults import RUN, internal_error
 from .indexes.open_programs import RunKey
 from .runs.cycle_lenses import FileTiming, file_timings
 from .runs.entry_runs import EntryRuns
-from .runs.run_checks import FILE_BUDGETS, not_run_diagnostic, run_diagnostics
+from .runs.run_checks import FILE_BUDGETS, MAX_SECONDS, not_run_diagnostic, run_diagnostics
 from .runs.unknown_stops import after_a_stop, unknown_stop
 from .runs.unreached import UnreachedRanges
 from .severity import apply_severities
@@ -66,7 +66,7 @@ class _Files:
 def gather(version: int | None, own: dict[str, list[Diagnostic]], docs: Mapping[str, WorkspaceDocument],
            library: ProgramLibrary, runs: EntryRuns, entries: Mapping[RunKey, FoundProgram],
            unreached: UnreachedRanges, max_blocks: int, locale: str,
-           severities: dict[str, str]) -> AnalysisResult:  # fmt: skip
+           severities: dict[str, str], max_seconds: float = MAX_SECONDS) -> AnalysisResult:  # fmt: skip
     """The result of the analysis: ``own`` is each open file's own findings (a list of its
     own, which this extends), ``entries`` the callers on disk that ran."""
     files = _Files(docs, library)
@@ -81,10 +81,10 @@ def gather(version: int | None, own: dict[str, list[Diagnostic]], docs: Mapping[
     for k, x in runs.failed.items():
         if k not in entries or x.file in docs:
             by_file.setdefault(x.file, []).append(x)
-    for found_entry in runs.not_run.values():
+    for found_entry, spent in runs.not_run.values():
         if found_entry.file.path in docs:
             by_file.setdefault(found_entry.file.path, []).append(
-                not_run_diagnostic(found_entry, FILE_BUDGETS * max_blocks, locale)
+                not_run_diagnostic(found_entry, FILE_BUDGETS * max_blocks, locale, spent, max_seconds)
             )
     for k, run in runs.runs.items():
         shown = docs if k in entries else None  # a caller on disk: findings in open files only

@@ -4,7 +4,10 @@
 the runs back after edits (``run_rewind.py``), drops the ones whose program no longer runs on
 its own, and advances the others within their budgets: each run its own ``max_blocks``, and
 the runs from the programs of one file together ``FILE_BUDGETS`` times that, in the order of
-the files; a program whose file's share is spent is not run (``not_run``: ``check`` names it).
+the files; and, whatever ``max_blocks`` says, the runs of one file together the time of one run
+(``max_seconds``): no setting makes a file's analysis outlast what a person waits for. A
+program whose file's share is spent is not run (``not_run``, with the share that was spent:
+``check`` names it).
 A bug in one run costs that run only: it is dropped and its fault (``failed``) is reported
 where it started, the other runs and the static findings go on.
 """
@@ -20,7 +23,7 @@ from ..diagnostics import Diagnostic
 from ..faults import RUN, internal_error
 from ..indexes.open_programs import RunKey
 from ..workspace_documents import WorkspaceDocument
-from .run_checks import FILE_BUDGETS, EntryRun
+from .run_checks import FILE_BUDGETS, MAX_SECONDS, EntryRun
 from .run_rewind import rewind
 from .unreached import UnreachedRanges
 
@@ -33,7 +36,8 @@ class EntryRuns:
     def __init__(self, unreached: UnreachedRanges, start: Callable[[FoundProgram, int], EntryRun]) -> None:
         self.runs: dict[RunKey, EntryRun] = {}
         self.failed: dict[RunKey, Diagnostic] = {}  # runs that failed by a fault of the checker
-        self.not_run: dict[RunKey, FoundProgram] = {}  # entries left out: their file's budget was spent
+        # entries left out, with what their file had spent: its blocks ("blocks") or its time ("time")
+        self.not_run: dict[RunKey, tuple[FoundProgram, str]] = {}
         self._unreached = unreached  # the not-executed ranges, told of each run taken back
         self._start = start
 
@@ -66,33 +70,38 @@ class EntryRuns:
             run.discard()
 
     def advance(self, primary: Mapping[RunKey, FoundProgram], max_blocks: int, should_cancel: Callable[[], bool] | None,
-                running: Callable[[int, FoundProgram], None], locale: str) -> bool:  # fmt: skip
+                running: Callable[[int, FoundProgram], None], locale: str,
+                max_seconds: float = MAX_SECONDS) -> bool:  # fmt: skip
         """Run each program of ``primary`` to its end or its budget; False when ``should_cancel``
         said stop (the runs go on from where they are the next time). ``running(n, found)`` is
-        told before the ``n``-th."""
+        told before the ``n``-th. ``max_seconds`` is one run's time limit, and one file's."""
         self.failed = {}
         self.not_run = {}
         file_budget = FILE_BUDGETS * max_blocks
         spent: dict[str, int] = {}  # blocks run by the runs from each file so far
+        took: dict[str, float] = {}  # and the seconds they took
         for n, (k, found) in enumerate(primary.items()):
             running(n, found)
             file = found.file.path
             left = file_budget - spent.get(file, 0)
-            if left <= 0:  # the runs before it used up the file's share: it is not run
+            seconds = max_seconds - took.get(file, 0.0)
+            if left <= 0 or seconds <= 0:  # the runs before it used up the file's share: it is not run
                 self.drop(k)
-                self.not_run[k] = found
+                self.not_run[k] = (found, "blocks" if left <= 0 else "time")
                 continue
             try:
-                if not self._advance(k, found, should_cancel, min(max_blocks, left), max_blocks, file_budget):
+                if not self._advance(k, found, should_cancel, min(max_blocks, left), max_blocks, file_budget, seconds):
                     return False
-                spent[file] = spent.get(file, 0) + self.runs[k].machine.blocks
+                run = self.runs[k]
+                spent[file] = spent.get(file, 0) + run.machine.blocks
+                took[file] = took.get(file, 0.0) + run.elapsed
             except Exception as e:  # a bug in one run must not cost the others and the static findings
                 self.drop(k)
                 self.failed[k] = internal_error(found.file.path, found.unit.start, RUN, e, locale)
         return True
 
     def _advance(self, k: RunKey, found: FoundProgram, should_cancel: Callable[[], bool] | None, budget: int,
-                 max_blocks: int, file_budget: int) -> bool:  # fmt: skip
+                 max_blocks: int, file_budget: int, seconds: float) -> bool:  # fmt: skip
         run = self.runs.get(k)
         if run is None:
             run = self.runs[k] = self._start(found, budget)
@@ -109,4 +118,6 @@ class EntryRuns:
                 run.back_to(min(m.blocks, budget) - 1)
                 self._unreached.rewound(run)
         run.file_budget = file_budget if budget < max_blocks else None
+        if run.elapsed <= seconds:  # a run that ended within the share it had keeps its end
+            run.max_seconds = min(run.own_seconds, seconds)
         return run.advance(should_cancel)

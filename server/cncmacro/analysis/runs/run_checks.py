@@ -144,7 +144,8 @@ class EntryRun(RunObserver):
         self.library = library
         self.max_blocks = max(1, max_blocks)
         self.file_budget: int | None = None  # set when the file's share, not the run's own budget, is the limit
-        self.max_seconds = max_seconds
+        self.max_seconds = max_seconds  # this run's time limit: its own, or what its file has left of it
+        self.own_seconds = max_seconds
         self.max_records = max_records
         self.interval = CHUNK  # blocks between checkpoints
         self.elapsed = 0.0  # seconds spent running since the start or the last rewind
@@ -598,7 +599,16 @@ def run_diagnostics(
         out.append(_endless_diagnostic(run, run.endless_at, line_text, locale))
     elif m.status == RunStatus.LIMIT and m.frames:
         f = m.frames[-1]
-        if run.stopped_by == "time":
+        if run.stopped_by == "time" and run.max_seconds < run.own_seconds:
+            en = (
+                f"the analysis run stopped here after {m.blocks} blocks and {run.max_seconds:.3g} s: the programs "
+                f"of one file share {run.own_seconds:g} s of analysis, and those before it used the rest"
+            )
+            zh = (
+                f"分析运行在 {m.blocks} 个程序段、{run.max_seconds:.3g} 秒后于此处停止："
+                f"一个文件中的程序共用 {run.own_seconds:g} 秒分析时间，其余已被它之前的程序用完"
+            )
+        elif run.stopped_by == "time":
             en = f"the analysis run stopped here after {m.blocks} blocks and {run.max_seconds:g} s, its time limit"
             zh = f"分析运行在 {m.blocks} 个程序段、{run.max_seconds:g} 秒后于此处停止（达到时间上限）"
         elif run.stopped_by == "records":
@@ -662,16 +672,25 @@ def run_diagnostics(
     return out
 
 
-def not_run_diagnostic(entry: FoundProgram, file_budget: int, locale: str) -> Diagnostic:
+def not_run_diagnostic(entry: FoundProgram, file_budget: int, locale: str, spent: str = "blocks",
+                       seconds: float = MAX_SECONDS) -> Diagnostic:  # fmt: skip
     """The program ``entry`` was not run: the runs before it in its file used up the file's
-    budget. Marked on its first line, where a run would have started."""
+    budget of blocks (``spent`` "blocks") or its time (``seconds``, "time"). Marked on its first
+    line, where a run would have started."""
     number = entry.unit.number
     name = f"O{number:04d}" if number is not None else display_name(entry.file.path)
-    en = (
-        f"{name} was not run: the programs before it in this file together ran {file_budget} blocks, "
-        "the budget of one file's analysis (are they endless loops?)"
-    )
-    zh = f"{name} 未运行：本文件中它之前的程序共运行了 {file_budget} 个程序段，达到一个文件的分析上限（是否有死循环？）"
+    if spent == "time":
+        en = (
+            f"{name} was not run: the programs before it in this file took {seconds:g} s, the time of one "
+            "file's analysis (do they wait for a signal, or loop for ever?)"
+        )
+        zh = f"{name} 未运行：本文件中它之前的程序共用了 {seconds:g} 秒，达到一个文件的分析时间上限（是否在等待信号或死循环？）"
+    else:
+        en = (
+            f"{name} was not run: the programs before it in this file together ran {file_budget} blocks, "
+            "the budget of one file's analysis (are they endless loops?)"
+        )
+        zh = f"{name} 未运行：本文件中它之前的程序共运行了 {file_budget} 个程序段，达到一个文件的分析上限（是否有死循环？）"
     line = entry.unit.start
     text = entry.file.lines[line] if line < len(entry.file.lines) else ""
     start = len(text) - len(text.lstrip())
