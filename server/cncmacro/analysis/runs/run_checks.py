@@ -684,13 +684,19 @@ def not_run_diagnostic(entry: FoundProgram, file_budget: int, locale: str, spent
             f"{name} was not run: the programs before it in this file took {seconds:g} s, the time of one "
             "file's analysis (do they wait for a signal, or loop for ever?)"
         )
-        zh = f"{name} 未运行：本文件中它之前的程序共用了 {seconds:g} 秒，达到一个文件的分析时间上限（是否在等待信号或死循环？）"
+        zh = (
+            f"{name} 未运行：本文件中它之前的程序共用了 {seconds:g} 秒，"
+            "达到一个文件的分析时间上限（是否在等待信号或死循环？）"
+        )
     else:
         en = (
             f"{name} was not run: the programs before it in this file together ran {file_budget} blocks, "
             "the budget of one file's analysis (are they endless loops?)"
         )
-        zh = f"{name} 未运行：本文件中它之前的程序共运行了 {file_budget} 个程序段，达到一个文件的分析上限（是否有死循环？）"
+        zh = (
+            f"{name} 未运行：本文件中它之前的程序共运行了 {file_budget} 个程序段，"
+            "达到一个文件的分析上限（是否有死循环？）"
+        )
     line = entry.unit.start
     text = entry.file.lines[line] if line < len(entry.file.lines) else ""
     start = len(text) - len(text.lstrip())
