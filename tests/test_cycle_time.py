@@ -128,9 +128,13 @@ def test_run_prints_the_totals_of_the_program_and_of_each_tool(tmp_path: Path) -
 @pytest.mark.parametrize(
     ("table", "message"),
     [
-        ("rapid = { X = -5 }", "'timing.rapid' must map axis letters to rapid rates above 0"),
+        ("rapid = { X = -5 }", "'timing.rapid' must map axis letters to rapid rates (above 0, at most 1000000 mm/min)"),
         ("peck_clearance = -1", "'timing.peck_clearance' must be the distance in mm above the depth reached where "
-                                "G83's rapid back in stops (0 or more)"),
+                                "G83's rapid back in stops (0 to 100000)"),
+        # finite, but beyond any machine: two tool changes would make the cycle time infinite
+        ("tool_change = 1e308", "'timing.tool_change' must be the seconds a tool change takes (0 to 3600)"),
+        ("m_codes = { M08 = 1e300 }", "'timing.m_codes.M08' must map M codes to seconds (0 to 3600)"),
+        ("max_spindle_speed = 1e50", "'timing.max_spindle_speed' must be a speed in rev/min (above 0, at most"),
     ],
 )  # fmt: skip
 def test_a_bad_timing_value_names_its_key(tmp_path: Path, table: str, message: str) -> None:

@@ -164,6 +164,10 @@ def test_limits_are_read_from_the_machine_file():
         ({"tools": [24]}, "limits.tools", "[first, last]"),
         ({"speed": 1}, "limits.speed", "is not a limit of the machine"),
         ({"rapid": {"X": 0}}, "limits.rapid", "above 0"),
+        # finite, but beyond any machine (toml_numbers.TOPS)
+        ({"feed": 1e300}, "limits.feed", "at most 1000000"),
+        ({"spindle": 1e12}, "limits.spindle", "at most 1000000 (rev/min)"),
+        ({"travel": {"X": [-1e300, 0]}}, "limits.travel.X", "[lowest, highest]"),
     ],
 )
 def test_a_bad_limit_is_an_error_naming_its_key(table, key, words):

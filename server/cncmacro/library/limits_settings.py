@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 
 from ..bilingual import Detail, detail
 from ..dialects.timing import TimingChanges
-from .toml_numbers import finite_number
+from .toml_numbers import TOPS, finite_number, machine_quantity, quantity_range
 
 _KEYS = ("travel", "feed", "rapid", "spindle", "tools", "offsets")
 
@@ -66,11 +66,12 @@ def read_limits(
             raise fail("limits.rapid", _twice("rapid", "[timing] rapid"))
         rapid = table["rapid"]
         if isinstance(rapid, dict):
-            rates = {str(k).upper(): _positive(v) for k, v in rapid.items()}
+            rates = {str(k).upper(): machine_quantity(v, "rate", above_zero=True) for k, v in rapid.items()}
             if not all(len(k) == 1 and k.isascii() and k.isalpha() and r for k, r in rates.items()):
-                raise fail("limits.rapid", detail("must be a rate above 0 (mm/min) or a table of axis = rate, "
+                rng = quantity_range("rate", True)
+                raise fail("limits.rapid", detail(f"must be a rate ({rng} mm/min) or a table of axis = rate, "
                                                   "such as { X = 30000, Z = 24000 }",
-                                                  "必须是大于 0 的速度（mm/min），或“轴地址 = 速度”形式的表，"
+                                                  f"必须是速度（{rng} mm/min），或“轴地址 = 速度”形式的表，"
                                                   "如 { X = 30000, Z = 24000 }"))  # fmt: skip
             timing["rapid"] = {k: r for k, r in rates.items() if r}
         else:
@@ -80,7 +81,7 @@ def read_limits(
     if "spindle" in table:
         if "max_spindle_speed" in timing:
             raise fail("limits.spindle", _twice("spindle", "[timing] max_spindle_speed"))
-        spindle = _rate(table, "spindle", fail, "rev/min", "r/min")
+        spindle = _rate(table, "spindle", fail, "rev/min", "r/min", "speed")
         timing["max_spindle_speed"] = spindle
     tools = _ranges(table["tools"], "limits.tools", fail) if "tools" in table else None
     offsets = _ranges(table["offsets"], "limits.offsets", fail) if "offsets" in table else None
@@ -92,19 +93,21 @@ def _twice(key: str, other: str) -> Detail:
                   f"与 {other} 是同一项数据：只在其中一个表中给出")  # fmt: skip
 
 
-def _positive(v: object) -> float | None:
-    """``v`` as a finite number above 0, or None."""
-    f = finite_number(v)
-    return f if f is not None and f > 0.0 else None
-
-
 def _rate(table: dict[str, object], key: str, fail: Callable[[str, Detail], Exception], unit: str = "mm/min",
-          unit_zh: str = "mm/min") -> float:  # fmt: skip
-    """A rate above 0 under ``key``."""
-    v = _positive(table[key])
+          unit_zh: str = "mm/min", kind: str = "rate") -> float:  # fmt: skip
+    """A rate (or with ``kind`` "speed" a spindle speed) above 0 under ``key``, at most what a
+    machine can have (``toml_numbers.machine_quantity``)."""
+    v = machine_quantity(table[key], kind, above_zero=True)
     if v is None:
-        raise fail(f"limits.{key}", detail(f"must be a number above 0 ({unit})", f"必须是大于 0 的数值（{unit_zh}）"))
+        rng = quantity_range(kind, True)
+        raise fail(f"limits.{key}", detail(f"must be a number {rng} ({unit})", f"必须是数值，{rng}（{unit_zh}）"))
     return v
+
+
+def _coordinate(v: object) -> float | None:
+    """A machine coordinate: a finite number within a machine's travel either side of zero."""
+    f = finite_number(v)
+    return f if f is not None and abs(f) <= TOPS["length"] else None
 
 
 def _travel(
@@ -121,7 +124,7 @@ def _travel(
     out: dict[str, tuple[float, float]] = {}
     for k, v in value.items():
         axis = str(k).upper()
-        pair = [finite_number(x) for x in v] if isinstance(v, list) and len(v) == 2 else None
+        pair = [_coordinate(x) for x in v] if isinstance(v, list) and len(v) == 2 else None
         if len(axis) != 1 or not axis.isascii() or not axis.isalpha() or pair is None:
             raise fail(f"limits.travel.{k}", bad)
         low, high = pair

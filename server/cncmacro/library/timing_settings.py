@@ -25,17 +25,16 @@ from collections.abc import Callable
 
 from ..bilingual import Detail, detail
 from ..dialects.timing import TimingChanges
-from .toml_numbers import finite_number
+from .toml_numbers import machine_quantity, quantity_range
 
 _KEYS = ("rapid", "tool_change", "tool_change_code", "dwell_p", "max_spindle_speed", "peck_retract",
          "peck_clearance", "m_codes")  # fmt: skip
 _DWELL_UNITS = {"milliseconds": 0.001, "seconds": 1.0}
 
 
-def _number(v: object) -> float | None:
-    """``v`` as a finite number at least 0, or None."""
-    f = finite_number(v)
-    return f if f is not None and f >= 0.0 else None
+def _number(v: object, kind: str) -> float | None:
+    """``v`` as a machine's figure of ``kind``, 0 or more (``toml_numbers.machine_quantity``), or None."""
+    return machine_quantity(v, kind)
 
 
 def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> TimingChanges:
@@ -50,18 +49,20 @@ def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> T
                                                f"不是时间设置项（可用的有：{names}）"))  # fmt: skip
     if "rapid" in table:
         rapid = table["rapid"]
-        rates = {str(k).upper(): _number(v) for k, v in rapid.items()} if isinstance(rapid, dict) else None
+        rates = {str(k).upper(): _number(v, "rate") for k, v in rapid.items()} if isinstance(rapid, dict) else None
         if rates is None or not all(len(k) == 1 and k.isascii() and k.isalpha() and r for k, r in rates.items()):
-            raise fail("timing.rapid", detail("must map axis letters to rapid rates above 0 (mm/min), "
+            rng = quantity_range("rate", True)
+            raise fail("timing.rapid", detail(f"must map axis letters to rapid rates ({rng} mm/min), "
                                               "such as { X = 30000, Z = 24000 }",
-                                              "必须是“轴地址 = 快移速度”（大于 0，mm/min）形式的表，"
+                                              f"必须是“轴地址 = 快移速度”（{rng} mm/min）形式的表，"
                                               "如 { X = 30000, Z = 24000 }"))  # fmt: skip
         out["rapid"] = {k: r for k, r in rates.items() if r}  # every rate is above 0 here
     if "tool_change" in table:
-        v = _number(table["tool_change"])
+        v = _number(table["tool_change"], "seconds")
         if v is None:
-            raise fail("timing.tool_change", detail("must be the seconds a tool change takes (0 or more)",
-                                                    "必须是换刀所需的秒数（不小于 0）"))  # fmt: skip
+            rng = quantity_range("seconds")
+            raise fail("timing.tool_change", detail(f"must be the seconds a tool change takes ({rng})",
+                                                    f"必须是换刀所需的秒数（{rng}）"))  # fmt: skip
         out["tool_change_seconds"] = v
     if "tool_change_code" in table:
         code = table["tool_change_code"]
@@ -77,33 +78,37 @@ def timing_changes(table: object, fail: Callable[[str, Detail], Exception]) -> T
                                                 '必须是 "milliseconds"（毫秒）或 "seconds"（秒）'))  # fmt: skip
         out["dwell_p_unit"] = _DWELL_UNITS[str(unit)]
     if "max_spindle_speed" in table:
-        v = _number(table["max_spindle_speed"])
+        v = _number(table["max_spindle_speed"], "speed")
         if not v:
-            raise fail("timing.max_spindle_speed", detail("must be a speed above 0 (rev/min)",
-                                                          "必须是大于 0 的转速（r/min）"))  # fmt: skip
+            rng = quantity_range("speed", True)
+            raise fail("timing.max_spindle_speed", detail(f"must be a speed in rev/min ({rng})",
+                                                          f"必须是转速，r/min（{rng}）"))  # fmt: skip
         out["max_spindle_speed"] = v
     for key, what, what_zh in (("peck_retract", "G73 retracts after each peck", "G73 每次啄钻后的回退量"),
                                ("peck_clearance", "above the depth reached where G83's rapid back in stops",
                                 "G83 快速返回孔内时停在已钻深度之上的距离")):  # fmt: skip
         if key in table:
-            v = _number(table[key])
+            v = _number(table[key], "length")
             if v is None:
-                raise fail(f"timing.{key}", detail(f"must be the distance in mm {what} (0 or more)",
-                                                   f"必须是{what_zh}（mm，不小于 0）"))  # fmt: skip
+                rng = quantity_range("length")
+                raise fail(f"timing.{key}", detail(f"must be the distance in mm {what} ({rng})",
+                                                   f"必须是{what_zh}（mm，{rng}）"))  # fmt: skip
             if key == "peck_retract":
                 out["peck_retract"] = v
             else:
                 out["peck_clearance"] = v
     if "m_codes" in table:
         codes = table["m_codes"]
+        rng = quantity_range("seconds")
         bad = detail(
-            "must map M codes to seconds, such as { M08 = 0.5 }", "必须是“M 代码 = 秒数”形式的表，如 { M08 = 0.5 }"
+            f"must map M codes to seconds ({rng}), such as {{ M08 = 0.5 }}",
+            f"必须是“M 代码 = 秒数”（{rng}）形式的表，如 {{ M08 = 0.5 }}",
         )
         if not isinstance(codes, dict):
             raise fail("timing.m_codes", bad)
         seconds: dict[float, float] = {}
         for k, v in codes.items():
-            m, s = _m_code(str(k)), _number(v)
+            m, s = _m_code(str(k)), _number(v, "seconds")
             if m is None or s is None:
                 raise fail(f"timing.m_codes.{k}", bad)
             seconds[m] = s
