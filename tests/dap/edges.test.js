@@ -46,6 +46,12 @@ describe('the edges of the adapter', () => {
     await dc.start();
   });
 
+  test('a preset beyond what a variable holds is refused at launch, naming the variable', async () => {
+    // 1e50 is a finite number, but beyond the control's ±1e47: it used to stop the run with an internal error
+    await assert.rejects(dc.launchRequest({ program: program('main.nc'), noSave: true, set: { 500: 1e50 } }),
+      /#500 = 1e\+50 is beyond what a variable holds/);
+  });
+
   test('a message nested too deeply to read is refused and the adapter goes on', async () => {
     await dc.begin({ program: program('main.nc'), stopOnEntry: true });
     const body = '['.repeat(100000) + ']'.repeat(100000);

@@ -62,3 +62,38 @@ async def test_a_document_uri_with_a_nul_is_analysed_and_stops_nothing(fanuc_en:
     assert "division-by-zero" in [d.code for d in (await diagnostics_for(fanuc_en, other, 1)).diagnostics]
     close_file(fanuc_en, other)
     close_file(fanuc_en, odd)
+
+
+def _run(*args: str) -> tuple[int, str]:
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-m", "cncmacro", "run", *args], capture_output=True, text=True, timeout=60)
+    return done.returncode, done.stderr
+
+
+MOVE_TO_500 = "O0001\nG01 X#500 F100\nM30\n"
+
+
+@pytest.mark.parametrize(
+    ("where", "words"),
+    [
+        ("set", "#500 = 1e+50 is beyond what a variable holds (±1e+47)"),
+        ("machine file", "'variables.500' must be a number a variable holds (±1e+47 at most) (line 2)"),
+        ("persistent file", "#500 holds 1e+50, which no variable of a control can hold"),
+    ],
+)
+def test_a_value_beyond_what_a_variable_holds_is_refused_where_it_comes_in(tmp_path: Path, where: str, words: str):
+    # a program that computes such a value gets alarm 111; one given from outside used to end the
+    # run in an OverflowError traceback when the program moved to it
+    program = tmp_path / "O0001.nc"
+    program.write_text(MOVE_TO_500, encoding="utf-8")
+    args = [str(program)]
+    if where == "set":
+        args += ["--set", "#500=1e50"]
+    elif where == "machine file":
+        (tmp_path / ".cncmacro.toml").write_text("[variables]\n500 = 1e50\n", encoding="utf-8")
+    else:
+        (tmp_path / ".cncmacro-vars.json").write_text('{"variables": {"500": 1e50}}', encoding="utf-8")
+    code, err = _run(*args)
+    assert code == 2 and words in err and "Traceback" not in err

@@ -23,6 +23,9 @@ PROGRAM_NOT_FOUND = 76
 SUBPROGRAM_NESTING = 77
 DUPLICATE_PROGRAM = 73
 OVERFLOW = 111
+# The largest magnitude a variable holds (FANUC: about 10**47); beyond it is alarm 111 (OVERFLOW),
+# and a value from outside the program (a preset, the machine file, the persistent file) is refused.
+MAX_VALUE = 1e47
 DIVISION_BY_ZERO = 112
 FORMAT = 114
 VARIABLE_NUMBER = 115

@@ -72,6 +72,7 @@ else:  # the same reader, from PyPI, before it joined the standard library
 
 from ..bilingual import Detail, detail, listed
 from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect
+from ..dialects.alarms import MAX_VALUE
 from ..dialects.describe import code_key
 from ..dialects.tables import CodeDoc, SystemVariable
 from ..dialects.timing import TimingChanges
@@ -615,8 +616,9 @@ def _variables(table: object, fail: _Fail) -> dict[int, float]:
         if not _digits(key) or len(key) > 8:
             raise fail(f"variables.{k}", detail("is not a variable number", "不是变量号"))
         number = finite_number(v)  # a number a variable can hold
-        if number is None:
-            raise fail(f"variables.{k}", detail("must be a finite number", "必须是有限的数值"))
+        if number is None or abs(number) > MAX_VALUE:
+            raise fail(f"variables.{k}", detail(f"must be a number a variable holds (±{MAX_VALUE:g} at most)",
+                                                f"必须是变量可保存的数值（绝对值不超过 {MAX_VALUE:g}）"))  # fmt: skip
         out[int(key)] = number
     return out
 

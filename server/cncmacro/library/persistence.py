@@ -33,6 +33,7 @@ import time
 from pathlib import Path
 
 from ..bilingual import Detail, detail
+from ..dialects.alarms import MAX_VALUE
 from .files import FileTooLargeError, NotAFileError, read_bytes
 
 STALE_SECONDS = 60.0
@@ -106,7 +107,7 @@ def load_persistent(path: Path) -> dict[int, float]:
             raise damaged(why) from None
         if value is None:
             continue
-        if not math.isfinite(value):
+        if not math.isfinite(value) or abs(value) > MAX_VALUE:
             raise PersistentFileError(detail(
                 f"{path}: #{number} holds {v!r}, which no variable of a control can hold: "
                 "write a number, or 'null' for vacant",

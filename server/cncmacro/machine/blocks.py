@@ -17,6 +17,7 @@ from ..bilingual import detail, in_language
 from ..dialects.alarms import (
     FORMAT,
     LOOP_NUMBER,
+    MAX_VALUE,
     MISSING_END,
     SEQUENCE_NUMBER,
     STATEMENT_FORMAT,
@@ -24,7 +25,7 @@ from ..dialects.alarms import (
 )
 from ..library.programs import LoadedFile
 from ..planner.alarms import UnknownValue
-from ..planner.numbers import MAX_VALUE, format_value, round_half_away, to_increment
+from ..planner.numbers import format_value, round_half_away, to_increment
 from ..syntax.nodes import (
     Assign,
     Block,

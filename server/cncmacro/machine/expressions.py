@@ -24,11 +24,12 @@ from ..dialects.alarms import (
     BRACKET_NESTING,
     DIVISION_BY_ZERO,
     FORMAT,
+    MAX_VALUE,
     OVERFLOW,
     VARIABLE_NUMBER,
 )
 from ..planner.alarms import UnknownValue
-from ..planner.numbers import MAX_VALUE, bcd, bin_, fix, fup, round_half_away, to_increment
+from ..planner.numbers import bcd, bin_, fix, fup, round_half_away, to_increment
 from ..syntax.nodes import Binary, Bracket, Expr, FunctionCall, IndirectVar, NamedVar, Number, Relation, Unary, Var
 from .alarms import MacroAlarm, raiser
 from .unknown_values import UNKNOWN, kept_extended

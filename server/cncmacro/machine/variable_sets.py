@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from ..bilingual import Detail, detail
+from ..dialects.alarms import MAX_VALUE
 from .alarms import MacroAlarm
 
 if TYPE_CHECKING:
@@ -40,6 +41,9 @@ class VariableSets:
         stored system variables may be preset even where a program may not write them;
         computed ones (positions, modal codes) may not. ``ValueError`` says why."""
         for n, v in presets.items():
+            if v is not None and not -MAX_VALUE <= v <= MAX_VALUE:
+                raise ValueError(detail(f"#{n} = {v:g} is beyond what a variable holds (±{MAX_VALUE:g})",
+                                        f"#{n} = {v:g} 超出变量可保存的范围（±{MAX_VALUE:g}）"))  # fmt: skip
             kind = self.kinds.kind(n)
             if kind == "local":
                 self.L[n] = v

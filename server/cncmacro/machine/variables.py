@@ -14,9 +14,9 @@ import datetime as _dt
 from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
-from ..dialects.alarms import NAME_SUBSCRIPT, NO_VARIABLE_NAME, OVERFLOW, VARIABLE_NUMBER, WRITE_PROTECTED
+from ..dialects.alarms import MAX_VALUE, NAME_SUBSCRIPT, NO_VARIABLE_NAME, OVERFLOW, VARIABLE_NUMBER, WRITE_PROTECTED
 from ..dialects.tables import SystemVariable
-from ..planner.numbers import MAX_VALUE, round_half_away
+from ..planner.numbers import round_half_away
 from .alarms import MacroAlarm
 from .unknown_values import KEPT_GROUPS, UNKNOWN, is_input_row, kept_extended
 

@@ -14,11 +14,8 @@ import math
 from decimal import ROUND_HALF_UP, Decimal, InvalidOperation
 
 from ..bilingual import detail
-from ..dialects.alarms import ARGUMENT_RANGE, OVERFLOW
+from ..dialects.alarms import ARGUMENT_RANGE, MAX_VALUE, OVERFLOW
 from .alarms import MacroAlarm, UnknownValue
-
-# The largest magnitude a variable holds (FANUC: about 10**47); beyond it is alarm 111.
-MAX_VALUE = 1e47
 
 
 def round_half_away(x: float) -> float:
