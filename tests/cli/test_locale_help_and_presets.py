@@ -105,3 +105,28 @@ def test_a_variable_that_cannot_be_preset_is_named_plainly_in_both_languages(tmp
     assert err == "cncmacro run：#3026（主轴上的刀具：当前装在主轴上的刀具号）由机床计算，不能预设\n"
     _, _, err = cli("run", "--no-save", "--set", "#9999=1", program)
     assert err.startswith("cncmacro run: #9999 is not a variable of FANUC 0i Custom Macro B that can be preset (")
+
+
+def test_a_per_axis_variable_that_cannot_be_preset_names_its_axis_not_a_placeholder(tmp_path):
+    program = _program(tmp_path)
+    code, _, err = cli("run", "--no-save", "--set", "#5001=1", program)
+    assert code == 2
+    assert err == "cncmacro run: #5001 (X axis block end position, work coordinates, without tool offset) " \
+        "is computed by the machine and cannot be preset\n"  # fmt: skip
+    _, _, err = cli("run", "--no-save", "--locale", "zh-cn", "--set", "#5002=1", program)
+    assert err == "cncmacro run：#5002（第2轴（Y）程序段终点位置）由机床计算，不能预设\n"
+
+
+def test_a_machine_file_number_of_thousands_of_digits_is_named_with_its_line(tmp_path):
+    # Python refuses to convert more than 4300 digits; its own words used to reach the user
+    (tmp_path / ".cncmacro.toml").write_text('dialect = "haas"\nmax_blocks = ' + "9" * 5000 + "\n", encoding="utf-8")
+    code, _, err = cli("run", "--no-save", _program(tmp_path))
+    assert code == 2
+    assert "a number of 5000 digits, more than any setting can use (line 2)" in err
+    assert "set_int_max_str_digits" not in err
+
+
+def test_a_machine_file_budget_of_no_block_is_refused(tmp_path):
+    (tmp_path / ".cncmacro.toml").write_text("max_blocks = 0\n", encoding="utf-8")
+    code, _, err = cli("run", "--no-save", _program(tmp_path))
+    assert code == 2 and "'max_blocks' must be at least 1" in err

@@ -245,6 +245,13 @@ def load_machine_file(path: str | Path) -> MachineSettings:
         raise MachineFileError(detail(f"{p}: not a usable TOML file: its tables or arrays are nested too deeply",
                                       f"{p}：无法使用的 TOML 文件：表或数组嵌套过深")) from e  # fmt: skip
     except ValueError as e:  # tomllib lets through, e.g., a number too long to convert
+        long = re.search(r"[0-9_]{4000,}", text)  # Python's limit on converting digits (4300)
+        if long is not None:
+            line = text.count("\n", 0, long.start())
+            raise MachineFileError(detail(f"{p}: a number of {len(long.group())} digits, "
+                                          "more than any setting can use",
+                                          f"{p}：数字有 {len(long.group())} 位，超出任何设置可用的范围"),
+                                   line) from e  # fmt: skip
         raise MachineFileError(detail(f"{p}: not a usable TOML file: {e}", f"{p}：无法使用的 TOML 文件：{e}")) from e
     try:
         settings = settings_from_mapping(parsed, str(p), folder=str(p.parent))
@@ -374,6 +381,9 @@ def settings_from_mapping(
             v = data[key]
             if not isinstance(v, int) or isinstance(v, bool) or v < 0:
                 raise fail(key, detail("must be a whole number", "必须是非负整数"))
+            if key == "max_blocks" and v < 1:  # a budget of no block runs nothing, and says the budget ran out
+                raise fail(key, detail("must be at least 1 (the blocks an analysis run may run)",
+                                       "必须不小于 1（一次分析运行可执行的程序段数）"))  # fmt: skip
             kw[key] = v
     if "variables" in data:
         kw["variables"] = _variables(data["variables"], fail)

@@ -7,10 +7,12 @@ number is ``VariableAccess`` (variables.py).
 
 from __future__ import annotations
 
+import re
 from typing import TYPE_CHECKING, Any
 
 from ..bilingual import Detail, detail
 from ..dialects.alarms import MAX_VALUE
+from ..dialects.describe import describe_system_variable
 from .alarms import MacroAlarm
 
 if TYPE_CHECKING:
@@ -59,7 +61,11 @@ class VariableSets:
                 elif row.source in ("store", "date", "time", "timer"):
                     self.S[n] = v
                 else:
-                    name = Detail(row.en.split(";")[0].split(" (")[0], row.zh.split("；")[0].split("（")[0])
+                    described = {lang: describe_system_variable(self.dialect, n, lang) for lang in ("en", "zh-CN")}
+                    en, zh = (d.text if d is not None else "" for d in described.values())  # ``{axis}`` filled in
+                    axis_first = re.match(r"第\d+轴（[^）]*）[^（；]*", zh)  # 第2轴（Y）程序段终点位置
+                    short_zh = axis_first.group() if axis_first else zh.split("；")[0].split("（")[0]
+                    name = Detail(en.split(";")[0].split(" (")[0], short_zh)
                     raise ValueError(detail(f"#{n} ({name}) is computed by the machine and cannot be preset",
                                             f"#{n}（{name.zh}）由机床计算，不能预设"))  # fmt: skip
                 self.preset_system.add(n)
