@@ -378,13 +378,7 @@ def settings_from_mapping(
         kw["persistent_file"] = pf
     for key in _WHOLE_NUMBER_KEYS:
         if key in data:
-            v = data[key]
-            if not isinstance(v, int) or isinstance(v, bool) or v < 0:
-                raise fail(key, detail("must be a whole number", "必须是非负整数"))
-            if key == "max_blocks" and v < 1:  # a budget of no block runs nothing, and says the budget ran out
-                raise fail(key, detail("must be at least 1 (the blocks an analysis run may run)",
-                                       "必须不小于 1（一次分析运行可执行的程序段数）"))  # fmt: skip
-            kw[key] = v
+            kw[key] = _whole_number(key, data[key], fail)
     if "variables" in data:
         kw["variables"] = _variables(data["variables"], fail)
     if "calls" in data:
@@ -615,6 +609,16 @@ def _system_variables(value: object, fail: _Fail) -> tuple[SystemVariable, ...]:
             raise fail(where, detail("zh and unit must be text", "zh 和 unit 必须是文字"))
         out.append(SystemVariable(first, last, access, "signals", en.strip(), zh.strip() or en.strip(), unit))
     return tuple(out)
+
+
+def _whole_number(key: str, v: object, fail: _Fail) -> int:
+    """``max_blocks``, ``date`` or ``time``: a whole number, 0 or more (``max_blocks`` 1 or more)."""
+    if not isinstance(v, int) or isinstance(v, bool) or v < 0:
+        raise fail(key, detail("must be a whole number", "必须是非负整数"))
+    if key == "max_blocks" and v < 1:  # a budget of no block runs nothing, and says the budget ran out
+        raise fail(key, detail("must be at least 1 (the blocks an analysis run may run)",
+                               "必须不小于 1（一次分析运行可执行的程序段数）"))  # fmt: skip
+    return v
 
 
 def _variables(table: object, fail: _Fail) -> dict[int, float]:
