@@ -162,6 +162,10 @@ CODES: dict[str, Code] = _codes(
     Code("corner-word", WARNING,
          detail("A ,C/,R/,A corner word without a G01/G02/G03 move, or on a profile whose manual lacks it.",
                 "没有 G01/G02/G03 移动的 ,C/,R/,A 拐角代码，或所选系统的手册中没有该代码。")),
+    Code("unknown-profile", WARNING,
+         detail("A (cncmacro: dialect=...) comment that names no profile: it is passed over, and the nearest "
+                "valid name is given.",
+                "(cncmacro: dialect=...) 注释中的名称不是系统类型：该注释被忽略，并给出最接近的有效名称。")),
     Code("profile-suggestion", INFORMATION,
          detail("The file reads cleanly as another profile, or looks like a lathe program under a mill profile: "
                 "likely written for it.",

@@ -9,6 +9,7 @@ mistake in settings is never silently ignored.
 
 from __future__ import annotations
 
+import difflib
 from dataclasses import replace
 
 from .codes import CODES, SEVERITIES
@@ -24,7 +25,9 @@ def check_overrides(overrides: dict[str, str], source: str = "severity") -> dict
     checked: dict[str, str] = {}
     for code, value in overrides.items():
         if code not in CODES:
-            raise ValueError(f"{source}: '{code}' is not a diagnostic code (known: {', '.join(sorted(CODES))})")
+            near = difflib.get_close_matches(str(code), list(CODES), n=1, cutoff=0.6)
+            meant = f"did you mean '{near[0]}'? " if near else ""
+            raise ValueError(f"{source}: '{code}' is not a diagnostic code: {meant}(known: {', '.join(sorted(CODES))})")
         level = value.strip().lower() if isinstance(value, str) else value
         if level not in SETTINGS_VALUES:
             raise ValueError(f"{source}: '{code}' must be one of {', '.join(SETTINGS_VALUES)}, not {value!r}")

@@ -73,6 +73,7 @@ from ..machine import block_roles
 from ..syntax.document import ParsedDocument
 from ..syntax.nodes import Block
 from .checks import static_checks
+from .checks.profile_comment import profile_comment_diagnostics
 from .checks.profile_suggestion import suggestion
 from .checks.static_lines import StaticLines
 from .diagnostics import Diagnostic
@@ -269,7 +270,11 @@ class WorkspaceAnalysis:
         if d.own is None:
             static = self._static(d)
             d.own = static.diagnostics(d.doc.program, d.path, static.ctx.dialect, self.library, self.locale)
-            chosen = dialect_from_text(d.doc.lines[:HEADER_LINES])  # a file that names its profile is not asked
+            head = d.doc.lines[:HEADER_LINES]
+            wrong_name = profile_comment_diagnostics(head, d.path, static.ctx.dialect.name, self.locale)
+            d.own.extend(wrong_name)
+            # a file that names its profile is not asked, nor one whose comment names none (it says so)
+            chosen = dialect_from_text(head) or wrong_name
             hint = None if chosen else suggestion(d.own, static.facts, d.doc.program, d.path,
                                                   static.ctx.dialect, self.settings, self.locale)  # fmt: skip
             if hint is not None:

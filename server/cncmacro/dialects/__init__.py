@@ -23,6 +23,16 @@ def normalise_dialect(name: str | None) -> str | None:
     return names_and_aliases().get(name.strip().lower().replace(" ", "").replace("_", "-"))
 
 
+def nearest_dialect(name: str) -> str | None:
+    """The profile (its canonical name) whose name or alias is nearest to the unknown ``name``
+    (``hass`` -> ``haas``), or None when none is near."""
+    import difflib
+
+    known = names_and_aliases()
+    close = difflib.get_close_matches(name.strip().lower().replace("_", "-"), list(known), n=1, cutoff=0.6)
+    return known[close[0]] if close else None
+
+
 def get_dialect(name: str | None = None) -> Dialect:
     """The ``Dialect`` for a name or alias (the default for None); ``ValueError`` if unknown."""
     canonical = normalise_dialect(name) if name else DEFAULT_DIALECT

@@ -16,6 +16,16 @@ _MARKER = re.compile(r"\(\s*cncmacro\s*:\s*dialect\s*=\s*([A-Za-z0-9_-]+)\s*\)",
 HEADER_LINES = 5
 
 
+def dialect_comment(lines: list[str]) -> tuple[int, int, int, str] | None:
+    """Where the first ``(cncmacro: dialect=...)`` comment of the first lines is: its 0-based
+    line, start and end columns, and the name as written (known or not)."""
+    for k, line in enumerate(lines[:HEADER_LINES]):
+        m = _MARKER.search(line)
+        if m:
+            return k, m.start(), m.end(), m.group(1)
+    return None
+
+
 def dialect_from_text(lines: list[str]) -> str | None:
     """The dialect named by a ``(cncmacro: dialect=...)`` comment in the first lines."""
     for line in lines[:HEADER_LINES]:

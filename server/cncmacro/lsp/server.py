@@ -40,6 +40,7 @@ from .positions import negotiate
 from .reports import log_skipped, publish_machine_file, report_skipped
 from .settings import SECTION, Settings
 from .stdio import serve_stdio
+from .texts import t
 
 log = logging.getLogger(__name__)
 CONFIGURATION_TIMEOUT = 2.0  # seconds to wait for the editor's settings before analysing
@@ -158,6 +159,7 @@ class CncMacroServer(LanguageServer):
         self.machine_file_uris: set[str] = set()  # the machine files whose problem is shown
         self.machine_files_shown: set[Path] = set()  # the machine files in use when they were last shown
         self.last_message_at = time.monotonic()  # when the editor last sent anything (the collector waits for quiet)
+        self.setting_problems_shown: set[str] = set()  # the settings' problems already shown
         self.initialize_accepted = False  # an initialize request was understood (before it: LSP's -32002)
 
     # ---- the workspace
@@ -197,6 +199,16 @@ class CncMacroServer(LanguageServer):
         self.diagnostics.configure(settings)
         if self.settings_ready.is_set():  # before, nothing may be published yet
             self.show_machine_files()
+            self.show_setting_problems()
+
+    def show_setting_problems(self) -> None:
+        """Tell the person, once each, what in the editor's settings names nothing (an unknown
+        profile, a severity for no code): the setting is passed over, which would be silent."""
+        for key, values in self.settings.problems:
+            text = t(key, self.locale, **values)
+            if text not in self.setting_problems_shown:
+                self.setting_problems_shown.add(text)
+                self.window_show_message(types.ShowMessageParams(type=types.MessageType.Warning, message=text))
 
     def uri_for_path(self, path: str) -> str:
         for doc in self.documents.by_uri.values():
@@ -257,6 +269,7 @@ async def _initialized(server: CncMacroServer, params: types.InitializedParams) 
     finally:
         server.settings_ready.set()
         server.show_machine_files()  # with the editor's severities
+        server.show_setting_problems()
 
 
 async def _register_file_watchers(server: CncMacroServer) -> None:

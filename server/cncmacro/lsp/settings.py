@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..analysis.severity import check_overrides
-from ..dialects import normalise_dialect
+from ..dialects import DIALECTS, nearest_dialect, normalise_dialect
 from ..library.machine_file import MachineSettings
 
 SECTION = "cncMacro"
@@ -32,6 +32,8 @@ class Settings:
     severity: dict[str, str] = field(default_factory=dict)
     run_budget: int | None = None
     inlay_values: bool = False
+    # what was set wrong, for the editor to show: a key of texts.py and its values
+    problems: list[tuple[str, dict[str, str]]] = field(default_factory=list)
 
     @classmethod
     def from_mapping(cls, data: Any) -> Settings:
@@ -47,9 +49,15 @@ class Settings:
             out.dialect = normalise_dialect(dialect)
             if out.dialect is None:
                 log.warning("cncMacro.dialect: unknown dialect %r", dialect)
+                out.problems.append(_unknown_dialect(dialect))
         sev = data.get("severity")
         if isinstance(sev, dict):
             out.severity = {str(k): str(v).lower() for k, v in sev.items()}
+            for code, level in out.severity.items():
+                try:
+                    check_overrides({code: level}, "cncMacro.severity")
+                except ValueError as e:
+                    out.problems.append(("setting_refused", {"text": str(e)}))
         budget = data.get("runBudget")
         if isinstance(budget, int) and not isinstance(budget, bool) and budget > 0:
             out.run_budget = budget
@@ -57,6 +65,14 @@ class Settings:
         values = hints.get("values") if isinstance(hints, dict) else data.get("inlayHints.values")
         out.inlay_values = values is True
         return out
+
+
+def _unknown_dialect(name: str) -> tuple[str, dict[str, str]]:
+    """The message (a key of texts.py and its values) for a ``cncMacro.dialect`` that names no
+    profile, with the nearest name."""
+    near = nearest_dialect(name)
+    values = {"name": name, "near": near or "", "names": ", ".join(DIALECTS)}
+    return ("unknown_dialect_near" if near else "unknown_dialect"), values
 
 
 def merged_severities(machine: MachineSettings | None, editor: Settings) -> dict[str, str]:

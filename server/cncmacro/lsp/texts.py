@@ -8,6 +8,16 @@ from __future__ import annotations
 from ..bilingual import pick
 
 TEXTS: dict[str, tuple[str, str]] = {
+    "unknown_dialect_near": (
+        "cncMacro.dialect: '{name}' is not a profile, so the setting is passed over. Did you mean '{near}'? "
+        "(profiles: {names})",
+        "cncMacro.dialect：'{name}' 不是系统类型，该设置被忽略。是否应为 '{near}'？（可用：{names}）",
+    ),
+    "unknown_dialect": (
+        "cncMacro.dialect: '{name}' is not a profile, so the setting is passed over (profiles: {names})",
+        "cncMacro.dialect：'{name}' 不是系统类型，该设置被忽略（可用：{names}）",
+    ),
+    "setting_refused": ("{text}", "{text}"),  # a setting's own message (check_overrides), passed over
     "local": ("Local variable", "局部变量"),
     "common": ("Common variable (cleared at power-off)", "公共变量（断电清除）"),
     "persistent": ("Common variable (kept at power-off)", "公共变量（断电保持）"),
