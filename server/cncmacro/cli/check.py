@@ -55,7 +55,7 @@ from ..library.machine_file import (
 )
 from ..library.profiles import typed_profile_wins
 from .sarif import to_sarif
-from .terminal import Printable, json_text, printable
+from .terminal import Printable, json_text, printable, shown_name
 
 log = logging.getLogger(__name__)
 
@@ -143,8 +143,10 @@ def check_paths(
         out.write(json_text(to_sarif(diagnostics, __version__), indent=2) + "\n")
     else:
         for d in diagnostics:
-            line = f"{d.file}:{d.line + 1}:{d.column + 1}: {d.severity}: {d.message} [{d.code}]"
-            out.write(printable(shown_text(line)) + "\n")
+            name = shown_name(shown_text(d.file))
+            out.write(
+                f"{name}:{d.line + 1}:{d.column + 1}: {d.severity}: {printable(shown_text(d.message))} [{d.code}]\n"
+            )
     if unreadable:
         return 2
     return 1 if any(d.severity == "error" for d in diagnostics) else 0

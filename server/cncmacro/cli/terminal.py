@@ -4,7 +4,11 @@ message can never move the cursor, change colours, set the window title or ring 
 A program's texts (``#3000``/``#3006`` messages, DPRNT output, comments quoted in a message)
 and file names are shown as they are, except control characters: the C0 ones other than tab
 and line feed, DEL and the C1 ones (``U+0080``–``U+009F``, among them the one-character CSI)
-are written as ``\\x1b``, ``\\x9b``. The JSON and SARIF output writes them as JSON escapes
+are written as ``\\x1b``, ``\\x9b``, and so are the marks that reorder what a terminal shows
+(U+200E, U+200F, U+202A–U+202E, U+2066–U+2069: a right-to-left override makes ``gnp.exe`` of
+``exe.png``), written ``\\u202e``. A file name is one field of a finding's line, so in it a
+line feed and a tab are escaped too (``shown_name``): a file named ``a.nc\\nO1.nc:1:1: error:``
+cannot forge a finding. The JSON and SARIF output writes them as JSON escapes
 (``\\u001b``, ``\\u009b``), which a JSON reader turns back into the same text, and never writes
 ``NaN`` or ``Infinity``, which JSON does not have.
 """
@@ -15,15 +19,29 @@ import json
 import re
 from typing import Any, Protocol, TextIO
 
-_CONTROL = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+_CONTROL = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u200e\u200f\u202a-\u202e\u2066-\u2069]")
+_NAME_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u200e\u200f\u202a-\u202e\u2066-\u2069]")
 _JSON_CONTROL = re.compile("[\x7f-\x9f]")  # json.dumps escapes the C0 ones itself
 
 
+def _escaped(m: re.Match[str]) -> str:
+    c = ord(m.group())
+    return f"\\x{c:02x}" if c < 0x100 else f"\\u{c:04x}"
+
+
 def printable(text: str) -> str:
-    """``text`` with its control characters (but tab and line feed) written as ``\\xNN``."""
-    if text.isprintable():  # the usual case, at C speed
+    """``text`` with its control characters (but tab and line feed) and reordering marks
+    written as ``\\xNN`` and ``\\uNNNN``."""
+    if text.isprintable():  # the usual case, at C speed (a reordering mark is not printable)
         return text
-    return _CONTROL.sub(lambda m: f"\\x{ord(m.group()):02x}", text)
+    return _CONTROL.sub(_escaped, text)
+
+
+def shown_name(name: str) -> str:
+    """A file name as one field of a line: ``printable``, and its line feeds and tabs escaped."""
+    if name.isprintable():
+        return name
+    return _NAME_CONTROL.sub(_escaped, name)
 
 
 def json_text(value: Any, **options: Any) -> str:
