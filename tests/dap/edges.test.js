@@ -52,6 +52,22 @@ describe('the edges of the adapter', () => {
       /#500 = 1e\+50 is beyond what a variable holds/);
   });
 
+  test('a header line of 30 MB is read past without being held, and the adapter goes on', async () => {
+    // it used to be read whole: 300 MB took the adapter to 928 MB, 600 MB under a 1 GB limit killed it
+    await dc.begin({ program: program('main.nc'), stopOnEntry: true });
+    const pid = dc._adapterProcess.pid;
+    const measured = fs.existsSync('/proc/self/status');
+    const before = measured ? residentMb(pid, 'VmHWM') : 0;
+    dc._adapterProcess.stdin.write('X'.repeat(30 * 1024 * 1024) + '\r\n');
+    const threads = await dc.threadsRequest();
+    assert.equal(threads.body.threads.length, 1);
+    assert.equal((await dc.top()).line, 2);
+    if (measured) {
+      const grown = residentMb(pid, 'VmHWM') - before;
+      assert.ok(grown < 15, `the adapter's peak grew by ${grown.toFixed(0)} MB for a 30 MB line`);
+    }
+  });
+
   test('a message nested too deeply to read is refused and the adapter goes on', async () => {
     await dc.begin({ program: program('main.nc'), stopOnEntry: true });
     const body = '['.repeat(100000) + ']'.repeat(100000);

@@ -14,6 +14,8 @@ from dataclasses import dataclass, field
 from typing import Any, BinaryIO
 
 MAX_MESSAGE = 64 * 1024 * 1024
+MAX_HEADER_LINE = 1024  # bytes: ``Content-Length: 67108864`` is 24; a longer line is no header
+_SKIP_PIECE = 64 * 1024
 
 
 class ProtocolError(Exception):
@@ -90,9 +92,13 @@ def read_message(stream: BinaryIO) -> Request | None:
     """The next request, or None at the end of the stream."""
     length = None
     while True:
-        line = stream.readline()
+        line = stream.readline(MAX_HEADER_LINE)
         if not line:
             return None
+        if len(line) == MAX_HEADER_LINE and not line.endswith(b"\n"):
+            if not _read_past_line(stream):
+                return None
+            raise ProtocolError(f"a header line longer than {MAX_HEADER_LINE} bytes was passed over")
         text = line.decode("ascii", errors="replace").strip()
         if not text:
             if length is None:
@@ -116,6 +122,16 @@ def read_message(stream: BinaryIO) -> Request | None:
     except RecursionError:
         raise ProtocolError("the message is nested too deeply to read") from None
     return Request.from_json(data)
+
+
+def _read_past_line(stream: BinaryIO) -> bool:
+    """Read past the rest of a line a piece at a time, never holding it; False at the end of the stream."""
+    while True:
+        piece = stream.readline(_SKIP_PIECE)
+        if not piece:
+            return False
+        if piece.endswith(b"\n"):
+            return True
 
 
 class MessageWriter:
