@@ -68,6 +68,39 @@ describe('the edges of the adapter', () => {
     }
   });
 
+  test('a program path with a NUL character is refused with a message, not an internal error', async () => {
+    await dc.initializeRequest({ adapterID: 'cnc-macro', linesStartAt1: true, columnsStartAt1: true, pathFormat: 'path' });
+    await assert.rejects(dc.launchRequest({ program: `${program('main.nc')}\u0000.nc`, noSave: true }),
+      /'program' holds a NUL character, which no file name has/);
+  });
+
+  test('#1e400 names no variable: not set as #1, and no data breakpoint is offered for it', async () => {
+    await dc.begin({ program: program('main.nc'), stopOnEntry: true });
+    const { scope } = await dc.scopeVariables((await dc.top()).id, 'Local');
+    await assert.rejects(dc.setVariableRequest({ variablesReference: scope.variablesReference, name: '#1e400',
+      value: '7' }), /is not a # variable/);
+    assert.equal(await dc.value('#1'), '<vacant>');
+    for (const name of ['#1e400', '#123456']) { // what setDataBreakpoints would refuse is never offered
+      const info = await dc.dataBreakpointInfoRequest({ variablesReference: scope.variablesReference, name });
+      assert.equal(info.body.dataId, null, name);
+    }
+  });
+
+  test('a run halted by disconnect sends no stopped event after it', async () => {
+    await dc.begin({ program: program('endless.nc'), stopOnEntry: true, maxBlocks: 1000000000 });
+    const after = [];
+    let disconnected = false;
+    dc.on('stopped', () => { if (disconnected) after.push('stopped'); });
+    await dc.continueRequest({ threadId: 1 });
+    await new Promise((resolve) => setTimeout(resolve, 300)); // it runs
+    disconnected = true; // from the request on: the halted run is heard of no more
+    await dc.disconnectRequest({ terminateDebuggee: true });
+    await new Promise((resolve) => setTimeout(resolve, 500));
+    assert.deepEqual(after, []);
+    dc = new CncMacroClient(); // the adapter has ended: afterEach stops a fresh one
+    await dc.start();
+  });
+
   test('a message nested too deeply to read is refused and the adapter goes on', async () => {
     await dc.begin({ program: program('main.nc'), stopOnEntry: true });
     const body = '['.repeat(100000) + ']'.repeat(100000);

@@ -61,6 +61,10 @@ class LaunchConfig:
         program = args.get("program")
         if not isinstance(program, str) or not program:
             raise LaunchError("the launch configuration needs 'program': the file to run")
+        for key, path in (("program", program), ("machine", args.get("machine"))):
+            if isinstance(path, str) and "\x00" in path:  # no file system takes it: not a file name
+                raise LaunchError(detail(f"'{key}' holds a NUL character, which no file name has",
+                                         f"'{key}' 中含有 NUL 字符，文件名中不会有该字符"))  # fmt: skip
         dialect = args.get("dialect")
         if dialect is not None:
             named = normalise_dialect(dialect) if isinstance(dialect, str) else None

@@ -25,7 +25,7 @@ from ..planner.numbers import format_plain
 
 LOCALS, COMMON, PERSISTENT, POSITION, MODAL, OFFSETS = range(6)
 SCOPES_PER_FRAME = 8
-_NUMBER_NAME = re.compile(r"^\s*#\s*(\d+)")
+_NUMBER_NAME = re.compile(r"^\s*#\s*(\d+)(?:\s|$)")  # ``#24 (X)``; never ``#1e400`` or ``#1.5``
 # the external and G54–G59 offsets, 20 numbers each up to G59's #5321–#5340, whatever the number
 # of axes (not the additional systems G54.1 P / G154 P)
 WORK_OFFSETS = (2500, 5340)

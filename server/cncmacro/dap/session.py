@@ -22,7 +22,7 @@ from typing import Any, BinaryIO
 
 from ..analysis.runs.subprogram_alone import LAUNCH_REPEAT, subprogram_remarks
 from ..bilingual import detail
-from ..debugging.breakpoints import Asked, Breakpoint, Breakpoints, LineBreakpoint
+from ..debugging.breakpoints import Asked, Breakpoint, Breakpoints, LineBreakpoint, data_number
 from ..debugging.history import History
 from ..debugging.stepping import CONTINUE, STEP_IN, STEP_OUT, STEP_OVER, Filters, Stepper, Stop, last_line_run
 from ..debugging.toolpath_position import next_moves, run_to_move
@@ -62,6 +62,7 @@ class Session:
         self.worker: threading.Thread | None = None
         self.busy = False  # the worker is running the machine (not just finishing)
         self.ended = False
+        self.leaving = False  # terminate or disconnect asked: the halted run stops in silence
         self.last_stop: Stop | None = None
         self.told_subprogram = False  # the launched program ended at its M99, and the console says so
         self.done = False
@@ -169,6 +170,7 @@ class Session:
         self.stepper.locale = self.locale
         self.started = False
         self.ended = False
+        self.leaving = False
         self.last_stop = None
         self.told_subprogram = False
 
@@ -215,7 +217,7 @@ class Session:
 
     def on_dataBreakpointInfo(self, args: dict[str, Any]) -> dict[str, Any]:
         name = str(args.get("name", ""))
-        number = show.variable_number(name)
+        number = data_number(name)  # what setDataBreakpoints takes: nothing is offered that it would refuse
         if number is None:
             return {"dataId": None, "description": f"{name} is not a # variable"}
         return {"dataId": f"#{number}", "description": f"when #{number} changes", "accessTypes": ["write"],
@@ -246,6 +248,8 @@ class Session:
         self.worker.start()
 
     def _stopped(self, stop: Stop) -> None:
+        if self.ended or self.leaving:  # a run halted by terminate or disconnect: the client hears no more of it
+            return
         self.last_stop = stop
         self._tell_subprogram()
         if stop.finished:
@@ -375,12 +379,14 @@ class Session:
                 self.output(problem + "\n", "stderr")
 
     def on_terminate(self, args: dict[str, Any]) -> None:
+        self.leaving = True
         self._halt()
         self._save()
         self.ended = True
         self.later(lambda: self.event("terminated"))
 
     def on_disconnect(self, args: dict[str, Any]) -> None:
+        self.leaving = True
         self._halt()
         self._save()
         self.ended = True
