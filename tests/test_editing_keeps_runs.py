@@ -1,5 +1,6 @@
 """Editing that must never change what a program does, proved on every program of the corpus
-(tests/corpus) and the examples: each file is formatted (both spacings, comments aligned or not)
+(tests/corpus), the examples and the programs written for it (tests/editing_programs: blocks with
+several N words, of which only the first is the label): each file is formatted (both spacings, comments aligned or not)
 or has its sequence numbers renumbered, added or removed, and every program is run before and
 after the edit; the runs end the same way (status, alarm and its line), with the same final
 variables, output and toolpath."""
@@ -30,7 +31,7 @@ from cncmacro.syntax.formatting import COMPACT, SPACED, FormatOptions, format_li
 from cncmacro.syntax.program import build_program
 
 ROOT = Path(__file__).resolve().parent.parent
-TREES = [ROOT / "tests" / "corpus", ROOT / "examples"]
+TREES = [ROOT / "tests" / "corpus", ROOT / "examples", ROOT / "tests" / "editing_programs"]
 
 
 def _copy(to: Path) -> list[Path]:

@@ -28,7 +28,7 @@ from ...dialects.dialect import Dialect
 from ...library.machine_file import CallCode
 from ...machine.block_roles import passed_over
 from ...machine.jumps import first_line, goto_line, return_line
-from ...syntax.nodes import Block
+from ...syntax.nodes import Block, Word
 from ...syntax.program import Program, ProgramUnit
 from ..indexes.call_sites import call_site
 from ..indexes.sites import computed_jump_sites, jump_sites, starts_from_the_top
@@ -410,8 +410,11 @@ def remove_unused_sequence_numbers(
         b = program.blocks[i]
         assert b.label_span is not None
         start, end = b.label_span
-        after = [x.start for x in (*b.words, *b.statements, *b.corners)]
-        changes.append(TextChange(i, start, min(after) if after else end, ""))
+        after = [x for x in (*b.words, *b.statements, *b.corners)]
+        first = min(after, key=lambda x: x.start) if after else None
+        if isinstance(first, Word) and first.letter == "N":  # N10 N20: without N10, N20 would be the label
+            continue
+        changes.append(TextChange(i, start, first.start if first is not None else end, ""))
     return SequencePlan(changes=changes, kept=kept)
 
 
