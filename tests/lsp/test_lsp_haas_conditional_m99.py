@@ -63,3 +63,27 @@ async def test_haas_conditional_m99_checks_clean_and_its_p_leads_to_the_label(
         assert rewritten == (4, 4, 24, "IF [#100 LT 10] GOTO 10")
     finally:
         close_file(fanuc_en, fanuc)
+
+
+async def test_the_if_goto_quick_fix_keeps_a_comment_written_inside_the_jump(fanuc_en: LanguageClient) -> None:
+    # the comment between the condition and M99 used to be dropped by the rewrite
+    text = TEXT.replace("N50 [#100 LT 10] M99 P10", "N50 [#100 LT 10] (AGAIN) M99 P10")
+    uri = open_file(fanuc_en, FANUC / "count_note.nc", text)
+    try:
+        found = (await diagnostics_for(fanuc_en, uri, 1)).diagnostics
+        refused = [d for d in found if d.code == "dialect-feature"]
+        actions = await fanuc_en.text_document_code_action_async(
+            types.CodeActionParams(
+                types.TextDocumentIdentifier(uri),
+                types.Range(types.Position(4, 0), types.Position(4, 0)),
+                types.CodeActionContext(diagnostics=refused),
+            )
+        )
+        [fix] = [a for a in actions or [] if isinstance(a, types.CodeAction) and a.title.startswith("Write it as")]
+        assert fix.edit is not None and fix.edit.changes is not None
+        [edit] = fix.edit.changes[uri]
+        # "N50 " is 4 characters; "[#100 LT 10] (AGAIN) M99 P10" is 28
+        assert (edit.range.start.character, edit.range.end.character) == (4, 32)
+        assert edit.new_text == "IF [#100 LT 10] GOTO 10 (AGAIN)"
+    finally:
+        close_file(fanuc_en, uri)

@@ -24,7 +24,9 @@ def if_goto_rewrite(block: Block, text: str, dialect: Dialect) -> tuple[int, int
         if s.__class__ is If and s.m99 is not None and s.goto is not None:
             condition = text[s.condition.start : s.condition.end]
             target = text[s.goto.start : s.goto.end]
-            return s.start, s.end, f"IF {condition} GOTO {target}"
+            # a comment written inside the form (``[#1 GT 2] (NOTE) M99 P10``) stays, after the jump
+            inside = "".join(f" {text[c.start : c.end]}" for c in block.comments if s.start <= c.start < s.end)
+            return s.start, s.end, f"IF {condition} GOTO {target}{inside}"
     return None
 
 
