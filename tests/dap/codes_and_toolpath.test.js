@@ -131,6 +131,16 @@ describe('the toolpath of a paused run', () => {
     assert.deepEqual([path.moves.length, path.made, path.current.length], [2, 5, 1]);
   });
 
+  test('the toolpath is answered a page at a time, however many moves the run made', async () => {
+    // 11 blocks of 9,999 holes and the rapid before them: 109,990 moves, one answer used to hold them all
+    await dc.begin({ program: program('many_holes.nc'), maxBlocks: 1000000 }, { until: 'stopped' });
+    const first = (await dc.customRequest('toolpath', {})).body;
+    assert.deepEqual([first.start, first.moves.length, first.made], [0, 100000, 109990]);
+    const rest = (await dc.customRequest('toolpath', { start: 100000 })).body;
+    assert.deepEqual([rest.start, rest.moves.length], [100000, 9990]);
+    assert.equal(rest.moves[rest.moves.length - 1].line, 14); // the last hole, of the last cycle block
+  });
+
   test('a name that is no code is unverified with the reason in Chinese in a Chinese locale', async () => {
     await dc.begin({ program: PROGRAM, stopOnEntry: true }, { locale: 'zh-CN' });
     const made = (await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'X5' }, { name: 'M6.5' }] })).body

@@ -222,27 +222,32 @@ def result_json(result: RunResult, axes: tuple[str, ...], locale: str | None = N
     }
 
 
-def _moves_json(result: RunResult, axes: tuple[str, ...]) -> list[dict[str, Any]]:
-    """The moves for ``--json``; a G31's also says whether the skip signal came on (``skip``)."""
-    moves = [move_json(mv, axes) for mv in result.moves]
-    for probe in result.probes:
-        if probe.move < len(moves):
-            moves[probe.move]["skip"] = probe.hit
-    return moves
+def _moves_json(result: RunResult, axes: tuple[str, ...]) -> Iterator[dict[str, Any]]:
+    """The moves for ``--json``, one at a time (``write_json`` writes each as it comes, so a
+    run's JSON is never held whole); a G31's also says whether the skip signal came on (``skip``)."""
+    hits = {probe.move: probe.hit for probe in result.probes}
+    for k, mv in enumerate(result.moves):
+        out = move_json(mv, axes)
+        if k in hits:
+            out["skip"] = hits[k]
+        yield out
 
 
 def write_json(result: dict[str, Any], out: TextIO) -> None:
     """``result`` as indented JSON, but one move to a line: a long run's moves stay readable
     (and diffable) and are written by the fast compact encoder (100k moves in a fraction of a
-    second instead of seconds)."""
+    second instead of seconds), each as it is made, never the whole text at once."""
     out.write("{\n")
     items = list(result.items())
     for k, (key, value) in enumerate(items):
         out.write(f" {json_text(key)}: ")
-        if key == "moves" and value:
-            out.write("[\n")
-            out.write(",\n".join("  " + json_text(mv) for mv in value))
-            out.write("\n ]")
+        if key == "moves":
+            out.write("[")
+            first = True
+            for mv in value:
+                out.write(("\n  " if first else ",\n  ") + json_text(mv))
+                first = False
+            out.write("]" if first else "\n ]")
         else:
             out.write(json_text(value, indent=1).replace("\n", "\n "))
         out.write(",\n" if k < len(items) - 1 else "\n")

@@ -44,6 +44,9 @@ EXCEPTION_FILTERS = [
 ]  # fmt: skip
 
 
+TOOLPATH_PAGE = 100_000  # moves in one toolpath answer (about 12 MB of JSON)
+
+
 class RequestFailed(Exception):
     """A request that cannot be carried out; the message goes back to the client."""
 
@@ -327,16 +330,20 @@ class Session:
 
     # ---------------------------------------------------------------- the toolpath view's requests
     def on_toolpath(self, args: dict[str, Any]) -> dict[str, Any]:
-        """The moves run so far (the first ``limit`` of them, when given; ``made`` counts them
-        all), the moves of the block the run stands on (``current``, not run yet) and where that
-        block is: what the toolpath view draws while the run is paused."""
+        """The moves run so far, a page of them: from ``start`` (0 when not given), at most
+        ``limit`` (``TOOLPATH_PAGE`` when not given or larger; ``made`` counts them all, so a client
+        asks for the next page from ``start`` + the moves it got), the moves of the block the run
+        stands on (``current``, not run yet) and where that block is: what the toolpath view draws
+        while the run is paused. No answer holds more than a page, however many moves the run made."""
         m = self.machine()
         axes = m.dialect.axes
         frame = m.frames[-1]
         line = last_line_run(m) if m.status == RunStatus.COMPLETED else frame.pc
-        limit = _whole(args, "limit", 0) or len(m.planner.moves)
+        start = _whole(args, "start", 0)
+        limit = min(_whole(args, "limit", 0) or TOOLPATH_PAGE, TOOLPATH_PAGE)
+        page = m.planner.moves[start : start + limit]
         return {
-            "moves": [move_json(mv, axes) for mv in m.planner.moves[:limit]], "made": len(m.planner.moves),
+            "moves": [move_json(mv, axes) for mv in page], "start": start, "made": len(m.planner.moves),
             "current": [move_json(mv, axes) for mv in next_moves(m)],
             "file": frame.file, "line": line + 1, "blocks": m.blocks, **machine_json(m.dialect),
         }  # fmt: skip

@@ -276,6 +276,8 @@ def run_straight(
     p.clock = clock
     p.cut_length = cut
     p.rapid_length = rapid
+    if append is not None and len(p.moves) >= p.move_budget:  # at most a budget of lines past the toolpath's
+        p.moves_full(pc - 1)
     return done, pc
 
 

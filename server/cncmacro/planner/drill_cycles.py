@@ -113,6 +113,8 @@ def drill_block(
         if m.record_moves:
             m.moves.append(Move(file, line, cycle, start, tuple(at_bottom), float(feed), None, seconds,
                                 plane_code, legs, DRILLING))  # fmt: skip
+            if len(m.moves) >= m.move_budget:
+                m.moves_full(line)
         if stop is not None:
             raise stop[1]
         m.pos = hole

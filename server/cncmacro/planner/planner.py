@@ -44,6 +44,10 @@ if TYPE_CHECKING:
     from .host import PlannerHost
 
 _new_move = tuple.__new__  # a Move without the NamedTuple constructor's keyword handling
+# The moves a run keeps for its toolpath (about 200 bytes each): a drilling cycle's K repeat makes
+# 9,999 moves of one block, so a short program can make millions. Beyond it the run, its clock and
+# its path go on to the end; only the toolpath stops growing (``moves_full``).
+MOVE_BUDGET = 1_000_000
 # the ``codes`` key set once a run has been told that its per-minute feed looks per revolution
 FEED_HINT_GIVEN = "G99-hint"
 
@@ -71,6 +75,8 @@ class Planner:
         self.shape: ShapeReading | None = None  # the shape cycle under way
         self.moves: list[Move] = []
         self.record_moves = True
+        self.move_budget = MOVE_BUDGET
+        self.moves_cut = False  # the toolpath reached ``move_budget`` and keeps no more moves
         # the cycle time's rules (cycle_time.py), the clock (#3001), the path so far (mm) and,
         # while moves are recorded, the tool changes (``cncmacro run``'s totals per tool)
         self.times = MoveTimes(dialect)
@@ -137,6 +143,9 @@ class Planner:
         self.clock = state.clock
         self.cut_length, self.rapid_length = state.lengths
         del self.moves[state.moves :]
+        if self.moves_cut and len(self.moves) < self.move_budget:  # taken back to before the toolpath filled
+            self.moves_cut = False
+            self.record_moves = True
         del self.tool_changes[state.tool_count :]
         self.skip_state = state.skip_state
         del self.probes[state.probes :]
@@ -405,8 +414,24 @@ class Planner:
         if self.record_moves:
             self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre, seconds, plane, legs,
                                               cycle, pass_of)))  # fmt: skip
+            if len(self.moves) >= self.move_budget:
+                self.moves_full(line)
         if stop is not None:
             raise stop[1]
+
+    def moves_full(self, line: int | None = None) -> None:
+        """The toolpath has ``move_budget`` moves: keep no more (the clock and the path go on),
+        and say so once, on the block that filled it."""
+        if not self.record_moves or len(self.moves) < self.move_budget:
+            return
+        self.record_moves = False
+        self.moves_cut = True
+        n = f"{self.move_budget:,}"
+        self.host.note("limits", detail(
+            f"the toolpath keeps the first {n} moves, which this block reached; the run goes on, and its "
+            "time and path count every move",
+            f"刀具路径只保留前 {n} 个移动（本程序段达到该数目）；"
+            "运行继续，加工时间和路径长度计入全部移动"), line)  # fmt: skip
 
     def feed_per_minute_hint(self, mode: float, feed: float, line: int) -> None:
         """On a lathe that powers on in G98 (``feed_hint``: gsk980tdi), a cut at F below 1 under

@@ -130,6 +130,8 @@ def single_cycle(
     if p.record_moves:
         p.moves.append(Move(file, line, code, start, tuple(target), float(feed), None, seconds,
                             p.modal.get("plane", 17.0), legs, TURNING))  # fmt: skip
+        if len(p.moves) >= p.move_budget:
+            p.moves_full(line)
     if stop is not None:
         raise stop[1]
 
