@@ -8,7 +8,7 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, close_file, open_file
+from .lsp_session import FANUC, close_file, diagnostics_for, open_file
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
@@ -46,3 +46,38 @@ async def test_document_and_range_formatting(fanuc_en: LanguageClient) -> None:
     assert _applied(TEXT, whole) == "O0001 (Lower title)\nN10 G01 X10. Y5. (cut)\nIF [#1 GT 2] GOTO 10\nM30\n"
     assert _applied(TEXT, ranged) == "o0001 (Lower title)\nn10 g01x10.y5. (cut)\nIF [#1 GT 2] GOTO 10\nm30\n"
     assert _applied(TEXT, compact) == "O0001         (Lower title)\nN10G01X10.Y5. (cut)\nIF[#1GT2]GOTO10\nM30\n"
+
+
+async def test_formatting_a_huge_document_blocks_no_hover_and_stops_when_cancelled(fanuc_en: LanguageClient) -> None:
+    # 20k macro lines take the formatter about 13 s (each is parsed by the grammar, then again to
+    # check it): on the thread that answers requests a hover waited for it all, and $/cancelRequest
+    # did not stop it
+    import asyncio
+    import time
+
+    text = "o0001\n" + "".join(f"#{100 + k % 50}=[#{k % 30 + 1}*SIN[{k}]+{k}.5]/2\n" for k in range(20_000)) + "m30\n"
+    uri = open_file(fanuc_en, FANUC / "huge_format.nc", text)
+    try:
+        await diagnostics_for(fanuc_en, uri, 1)  # its analysis is over: the hovers below wait for nothing else
+        await fanuc_en.text_document_hover_async(
+            types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(1, 1))
+        )
+        formatting = asyncio.ensure_future(fanuc_en.text_document_formatting_async(
+            types.DocumentFormattingParams(types.TextDocumentIdentifier(uri), OPTIONS)))  # fmt: skip
+        await asyncio.sleep(0.3)  # it is under way
+        asked = time.monotonic()
+        await fanuc_en.text_document_hover_async(
+            types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(1, 1))
+        )
+        assert time.monotonic() - asked < 1.0, "a hover waited behind the formatting"
+        assert not formatting.done()
+        formatting.cancel()  # the client sends $/cancelRequest
+        ended = time.monotonic()
+        with pytest.raises(asyncio.CancelledError):
+            await formatting
+        await fanuc_en.text_document_hover_async(  # the server is free again at once
+            types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(1, 1))
+        )
+        assert time.monotonic() - ended < 1.0
+    finally:
+        close_file(fanuc_en, uri)

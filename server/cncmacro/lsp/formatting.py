@@ -3,16 +3,22 @@ formatter of ``syntax/formatting.py`` over the document's lines, its settings as
 for the document (``workspace/configuration``, section ``cncMacro.format``: ``spacing``
 ``spaced`` | ``compact``, ``alignComments``), defaults where the editor gives none. One text edit
 per changed line.
+
+The formatter runs off the thread that answers requests, so a hover sent meanwhile is answered
+at once however long the document; a ``$/cancelRequest`` stops it within ``STOP_EVERY`` lines,
+and so does an edit of the document (its answer would be for a text that is gone: none is given).
 """
 
 from __future__ import annotations
 
+import asyncio
 import logging
+import threading
 from typing import TYPE_CHECKING, Any
 
 from lsprotocol import types
 
-from ..syntax.formatting import SPACED, SPACINGS, FormatOptions, format_lines
+from ..syntax.formatting import SPACED, SPACINGS, FormatOptions, FormattingStopped, format_lines
 from .cursor import doc_range
 from .documents import OpenDocument
 
@@ -42,10 +48,32 @@ async def format_options(ls: CncMacroServer, uri: str) -> FormatOptions:
     return FormatOptions(spacing if spacing in SPACINGS else SPACED, data.get("alignComments") is True)
 
 
-def edits(ls: CncMacroServer, doc: OpenDocument, first: int, last: int, options: FormatOptions) -> list[types.TextEdit]:
+async def edits(
+    ls: CncMacroServer, doc: OpenDocument, first: int, last: int, options: FormatOptions
+) -> list[types.TextEdit] | None:
+    """The edits that format lines ``first`` to ``last`` of ``doc``, worked out on another thread;
+    None when the request was cancelled or the document changed meanwhile."""
     encoding = ls.documents.encoding
-    lines = doc.lines
-    changed = format_lines(lines, first, last, options, doc.parsed.program.read_end)
+    lines = list(doc.lines)  # the text as it is now: an edit meanwhile changes the document's own list
+    version = doc.version
+    cancelled = threading.Event()
+
+    def stopped() -> bool:
+        return cancelled.is_set() or doc.version != version or ls.documents.by_uri.get(doc.uri) is not doc
+
+    read_end = doc.parsed.program.read_end
+    work = asyncio.get_running_loop().run_in_executor(
+        None, lambda: format_lines(lines, first, last, options, read_end, stopped)
+    )
+    try:
+        changed = await work
+    except FormattingStopped:
+        return None
+    except asyncio.CancelledError:  # $/cancelRequest: the thread stops at its next look
+        cancelled.set()
+        raise
+    if stopped():
+        return None
     return [types.TextEdit(doc_range(doc, i, 0, len(lines[i]), encoding), text) for i, text in sorted(changed.items())]
 
 
@@ -56,7 +84,7 @@ def register(server: CncMacroServer) -> None:
         if doc is None:
             return None
         options = await format_options(ls, doc.uri)
-        return edits(ls, doc, 0, len(doc.lines) - 1, options)
+        return await edits(ls, doc, 0, len(doc.lines) - 1, options)
 
     @server.feature(types.TEXT_DOCUMENT_RANGE_FORMATTING)
     async def range_formatting(
@@ -68,4 +96,4 @@ def register(server: CncMacroServer) -> None:
         options = await format_options(ls, doc.uri)
         r = params.range
         last = r.end.line - 1 if r.end.line > r.start.line and r.end.character == 0 else r.end.line
-        return edits(ls, doc, r.start.line, last, options)
+        return await edits(ls, doc, r.start.line, last, options)

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import dataclasses
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
@@ -165,15 +165,30 @@ def _join(f: _Line, spacing: str, column: int | None) -> str:
     return f.head + gap + f.comments + f.end
 
 
+class FormattingStopped(Exception):
+    """``format_lines`` was told to stop (``stopped``) before it ended: nothing is changed."""
+
+
+STOP_EVERY = 1000  # lines formatted between two looks at ``stopped``
+
+
 def format_lines(
-    lines: Sequence[str], first: int, last: int, options: FormatOptions, read_end: int | None = None
+    lines: Sequence[str],
+    first: int,
+    last: int,
+    options: FormatOptions,
+    read_end: int | None = None,
+    stopped: Callable[[], bool] | None = None,
 ) -> dict[int, str]:
     """The new text of each line from ``first`` to ``last`` (inclusive) that formatting changes;
     ``read_end`` is the line of the tape's closing ``%`` (the lines from it on are not touched).
-    Comments after a block are aligned over these lines when ``options.align_comments``."""
+    Comments after a block are aligned over these lines when ``options.align_comments``.
+    ``stopped`` is asked every ``STOP_EVERY`` lines: when it says so, ``FormattingStopped``."""
     stop = min(last + 1, len(lines), len(lines) if read_end is None else read_end)
     formatted: dict[int, _Line] = {}
     for i in range(max(0, first), stop):
+        if stopped is not None and i % STOP_EVERY == 0 and stopped():
+            raise FormattingStopped
         f = _format(lines[i], options.spacing)
         if f is not None:
             formatted[i] = f
