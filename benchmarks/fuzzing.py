@@ -2,13 +2,16 @@
 
 A case is a program text and a dialect. ``run_case`` sends it through every layer a user can
 reach: the parser, ``WorkspaceAnalysis`` (the static checks and the bounded runs), a bounded
-``Machine`` run (as ``cncmacro run`` does, without touching a persistent file), and every
+``Machine`` run (as ``cncmacro run`` does, without touching a persistent file), the editing
+commands (formatting, renumbering, adding and removing sequence numbers), and every
 request handler of the language server, called in-process on a server that holds the text as
 an open document, its client counting columns in one of the three position encodings (UTF-8,
 UTF-16, UTF-32), picked at random for each case. Now and then (``ODD_WORKSPACES``) the case is
 also written into a folder of odd file names (not UTF-8, control characters, 240 digits) with
 unreadable and deeply nested folders, a pipe, circular and dangling links or a hostile machine
-file, and ``cncmacro check`` (text, JSON, SARIF) and the server's index go through it.
+file (``hostile_machine_file``: values beyond any machine, names that name nothing, numbers of
+thousands of digits), and ``cncmacro check`` (text, JSON, SARIF) and the server's index go
+through it. Programs also get huge repeats (a drilling cycle's ``K9999``, ``M98 L9999``).
 
 The invariants: no exception escapes; every run ends within its block budget; every diagnostic
 range lies inside the document (in the protocol strictly, counted in the client's encoding; an
@@ -35,6 +38,7 @@ from pathlib import Path
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
 
+from cncmacro.analysis.editing.sequence_numbers import add_sequence_numbers, remove_unused_sequence_numbers, renumber
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.cli.check import check_paths
 from cncmacro.dialects import DIALECTS as ALL_PROFILES
@@ -45,6 +49,7 @@ from cncmacro.lsp.positions import UTF8, UTF16, UTF32
 from cncmacro.lsp.server import CncMacroServer, build_server
 from cncmacro.machine import Machine, RunStatus
 from cncmacro.syntax.document import ParsedDocument, split_lines
+from cncmacro.syntax.formatting import COMPACT, SPACED, FormatOptions, format_lines
 
 ROOT = Path(__file__).resolve().parent.parent
 DIALECTS = ALL_PROFILES
@@ -126,6 +131,16 @@ def _statement(rnd: random.Random, labels: list[int], programs: list[int]) -> st
         return f"{rnd.choice(_NC)} X{_expr(rnd, 3)} Z{rnd.choice(['#1', '-2.5', '[#24+1]'])}"
     if k == 14:
         return f"G65 P[{rnd.choice(['CUT', '切削', '../../etc/passwd', '/etc/passwd', 'O1004', '..'])}]"
+    if k == 16 and rnd.random() < 0.5:  # huge repeats: thousands of holes or calls from one block
+        p = rnd.choice(programs) if programs else rnd.randint(1, 9999)
+        return rnd.choice(
+            [
+                f"G91 G81 X0.1 Z-1. R-1. F100 K{rnd.choice([9999, 10000, 0])}",
+                f"M98 P{p} L9999",
+                f"G65 P{p} L{rnd.choice([9999, 99999])}",
+                "G80",
+            ]
+        )
     if k == 15 and rnd.random() < 0.5:
         return long_chain(rnd, rnd.randint(20, 600))
     if k == 15:
@@ -257,6 +272,29 @@ def check_analysis(text: str, dialect: str, path: str, budget: int = RUN_BUDGET)
     return count
 
 
+def check_editing(text: str, dialect: str) -> int:
+    """The editing commands on ``text``: formatting (both spacings, comments aligned) and the
+    three sequence-number edits, each planned and applied without an exception, each line they
+    write still one line. The number of lines they changed."""
+    lines = split_lines(text)
+    program = ParsedDocument(text).program
+    profile = get_dialect(dialect)
+    changed = 0
+    for options in (FormatOptions(SPACED, False), FormatOptions(COMPACT, True)):
+        new = format_lines(lines, 0, len(lines) - 1, options, program.read_end)
+        if any("\n" in t or "\r" in t for t in new.values()):
+            raise InvariantError("formatting wrote a line break into a line")
+        changed += len(new)
+    for plan in (renumber(program, profile, step=10, keep_computed=True),
+                 add_sequence_numbers(program, profile, step=5, keep_computed=True),
+                 remove_unused_sequence_numbers(program, profile, keep_computed=True)):  # fmt: skip
+        for c in plan.changes:
+            if not 0 <= c.line < len(lines) or not 0 <= c.start <= c.end <= len(lines[c.line]):
+                raise InvariantError(f"a sequence-number edit outside its line: {c}")
+        changed += len(plan.changes)
+    return changed
+
+
 def check_run(text: str, dialect: str, path: str, budget: int = RUN_BUDGET) -> str:
     """Run ``text`` on the machine as ``cncmacro run`` does (no persistent file); its status."""
     m = Machine(get_dialect(dialect), MachineSettings(), ProgramLibrary([]))
@@ -281,6 +319,7 @@ class LspTarget:
         self.encoding = "utf-16"  # the columns this client counts in (``ENCODINGS``)
         self.server: CncMacroServer = build_server()
         self.server.settings_ready.set()
+        self.server.protocol.client_capabilities = types.ClientCapabilities()  # what initialize would set
         self.features = self.server.protocol.fm.features
         self.published: list[types.PublishDiagnosticsParams] = []
         self.server.text_document_publish_diagnostics = self.published.append  # type: ignore[method-assign]
@@ -395,6 +434,9 @@ class LspTarget:
                 (types.TEXT_DOCUMENT_INLAY_HINT, types.InlayHintParams(text_document=ident, range=whole)),
                 (types.WORKSPACE_SYMBOL, types.WorkspaceSymbolParams(query="O")),
                 (types.TEXT_DOCUMENT_DIAGNOSTIC, types.DocumentDiagnosticParams(text_document=ident)),
+                (types.TEXT_DOCUMENT_FORMATTING, types.DocumentFormattingParams(text_document=ident, options=_FORMAT)),
+                (types.TEXT_DOCUMENT_RANGE_FORMATTING,
+                 types.DocumentRangeFormattingParams(text_document=ident, range=whole, options=_FORMAT)),
             ]  # fmt: skip
             for line, col in positions:
                 pos = types.Position(line, col)
@@ -448,6 +490,7 @@ class LspTarget:
 
 
 ENCODINGS = ("utf-8", "utf-16", "utf-32")
+_FORMAT = types.FormattingOptions(tab_size=4, insert_spaces=True)
 _ENCODERS = {"utf-8": UTF8, "utf-16": UTF16, "utf-32": UTF32}
 
 
@@ -526,8 +569,25 @@ def odd_workspace(text: str, rnd: random.Random) -> Path:
     if "toml" in extras:
         (folder / ".cncmacro.toml").write_text(rnd.choice([
             "a=" + "{a=" * 2000 + "1" + "}" * 2000, '[calls]\n"G²"=9000\n', "base = 7\n", "\x00\x01",
-            "[" + "a." * 3000 + "a]\n", 'base = "fanuc-30i"\ncommons = [[100, 499]]\n']), "utf-8")  # fmt: skip
+            "[" + "a." * 3000 + "a]\n", 'base = "fanuc-30i"\ncommons = [[100, 499]]\n', hostile_machine_file(rnd)]),
+            "utf-8")  # fmt: skip
     return folder
+
+
+_HOSTILE_KEYS = [
+    "[timing]\ntool_change = 1e308\n", "[timing]\nrapid = { X = 1e300 }\n", "[timing.m_codes]\nM08 = -1\n",
+    "[timing]\nmax_spindle_speed = 0\n", "[variables]\n500 = 1e50\n", "[variables]\n100 = -1e308\n",
+    "[variables]\n5001 = 1\n", "[limits]\nfeed = -1\n", "[limits]\ntravel = { X = [1e300, 0] }\n",
+    "[limits]\ntools = [24, 1]\n", "[limits]\nspindle = 1e12\n", "max_blocks = 0\n", 'dialect = "hass"\n',
+    "max_blocks = " + "9" * 5000 + "\n", '[severity]\nmacro-alrm = "off"\n', '[severity]\nmacro-alarm = "loud"\n',
+    'persistent_file = "../outside.json"\n', 'persistent_file = "yarn"\n', "date = -1\n", "arc_tolerance = 1e999\n",
+]  # fmt: skip
+
+
+def hostile_machine_file(rnd: random.Random) -> str:
+    """A machine file of a few keys a shop could get wrong or an attacker could write: values
+    beyond any machine, names that name nothing, numbers of thousands of digits."""
+    return "".join(rnd.sample(_HOSTILE_KEYS, rnd.randint(1, 3)))
 
 
 def remove_tree(folder: Path) -> None:
@@ -577,6 +637,7 @@ def run_case(text: str, dialect: str, lsp: LspTarget, rnd: random.Random, odd: b
     ParsedDocument(text)
     check_analysis(text, dialect, path)
     check_run(text, dialect, path)
+    check_editing(text, dialect)
     lsp.encoding = rnd.choice(ENCODINGS)
     lsp.check(text, (_FOLDER / "O0001.nc").as_uri(), positions_in(text, rnd))
     if odd if odd is not None else rnd.random() < ODD_WORKSPACES:

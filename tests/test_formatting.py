@@ -61,3 +61,12 @@ def test_lines_with_errors_tape_marks_and_after_the_tape_end_are_left_alone():
 def test_formatting_twice_changes_nothing():
     once = _formatted("o1000(t)", "n5 #1 = #2 + sin[30] (x)", "g1x#1 ,r2.", align=True)
     assert not format_lines(once, 0, len(once) - 1, FormatOptions(SPACED, True))
+
+
+def test_a_line_nested_too_deeply_to_compare_is_left_as_written():
+    # 600 chained operators parse, but comparing the formatted parse with the first one recursed
+    # past Python's limit: formatting the document failed; the line now stays as it is
+    chain = "if[#1 le " + "+".join(["1"] * 600) + "]goto1"
+    lines = ["o1", chain, "g01 x1.", "m30"]
+    changed = format_lines(lines, 0, len(lines) - 1, FormatOptions())
+    assert 1 not in changed and changed[2] == "G01 X1." and changed[0] == "O1"

@@ -148,7 +148,10 @@ def _format(line: str, spacing: str) -> _Line | None:
     end = line[semi:].rstrip(" \t")
     formatted = _Line(head + "".join(out), (" " if spacing == SPACED else "").join(trailing), end)
     again = parse_block(_join(formatted, spacing, None))
-    if _shape(again) != _shape(block):
+    try:
+        if _shape(again) != _shape(block):
+            return None
+    except RecursionError:  # an expression nested too deeply to compare (600 chained operators): as it is
         return None
     return formatted
 
