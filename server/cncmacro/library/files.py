@@ -370,25 +370,28 @@ def find_program_files(root: Path, extensions: frozenset[str] = frozenset()) -> 
     return search_program_files(root, extensions=extensions).files
 
 
-def program_files_in(folder: Path, extensions: frozenset[str] = frozenset()) -> list[Path]:
+def program_files_in(folder: Path, extensions: frozenset[str] = frozenset()) -> list[tuple[Path, bool]]:
     """The program files directly in ``folder`` (not below it), as ``is_program_file`` knows them
-    (``extensions``: the machine file's), sorted; none when it cannot be read, at most
+    (``extensions``: the machine file's), sorted as paths sort, each with whether it is a link
+    (the listing says so without asking the disk again); none when it cannot be read, at most
     ``MAX_FOLDER_ENTRIES`` entries looked at."""
-    files: list[Path] = []
+    found: list[tuple[str, str, bool]] = []
     try:
         with os.scandir(folder) as listing:
             for k, entry in enumerate(listing):
                 if k >= MAX_FOLDER_ENTRIES:
                     break
-                path = Path(entry.path)
                 try:
-                    if entry.is_file() and is_program_file(path, extensions):
-                        files.append(path)
+                    if entry.is_file() and (
+                        _named_as_program(Path(entry.name), extensions) or starts_like_program(Path(entry.path))
+                    ):  # is_program_file
+                        found.append((os.path.normcase(entry.name), entry.path, entry.is_symlink()))
                 except OSError:
                     continue
     except OSError:
         return []
-    return sorted(files)
+    found.sort()  # one folder's files: by name, as pathlib orders them (case-folded on Windows)
+    return [(Path(path), link) for _, path, link in found]
 
 
 def stays_inside(path: Path, folder: Path) -> bool:

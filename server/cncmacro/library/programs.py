@@ -27,7 +27,7 @@ from ..syntax.block_parser import BlockCache, shared_cache
 from ..syntax.program import Program, ProgramUnit
 from .dialect_choice import dialect_from_text
 from .file_cache import FileCache, LoadedFile, load_text
-from .files import SkippedFileError, o_number, program_files_in, stays_inside
+from .files import MAX_PROGRAM_FILES, SkippedFileError, o_number, program_files_in, stays_inside
 
 __all__ = ["FileCache", "FoundProgram", "LoadedFile", "ProgramLibrary", "is_program_name", "load_text"]
 
@@ -80,6 +80,8 @@ class ProgramLibrary:
         self._files: dict[str, LoadedFile | None] = {}
         self._listing: dict[Path, list[Path]] = {}
         self._stems: dict[Path, dict[str, list[Path]]] = {}  # folder -> lower-case stem -> its files
+        # folder -> the numbers its files' headers were searched for in vain, kept as the listing is
+        self._absent: dict[Path, set[int]] = {}
         self._given: set[str] = set(self.texts)  # files given by their text: programs whatever their name
 
     # ---- files
@@ -105,6 +107,7 @@ class ProgramLibrary:
         in the editor)."""
         self.texts[path] = text
         self._files.pop(path, None)
+        self._absent.pop(Path(path).parent, None)  # its text may now hold a header searched for
         self._give(path)
         loaded = self.load(path)
         assert loaded is not None
@@ -114,6 +117,7 @@ class ProgramLibrary:
         """Register a file that the caller keeps parsed (a document open in an editor): it
         replaces the file on disk, and nothing is read or parsed again."""
         self.texts.pop(path, None)
+        self._absent.pop(Path(path).parent, None)  # its text may now hold a header searched for
         self._give(path)
         loaded = self._files[path] = LoadedFile(path, lines, program, dialect_from_text(lines))
         return loaded
@@ -125,6 +129,7 @@ class ProgramLibrary:
             folder = Path(path).parent
             self._listing.pop(folder, None)
             self._stems.pop(folder, None)
+            self._absent.pop(folder, None)
 
     def read_from_disk(self) -> tuple[list[str], list[str]]:
         """What this library's answers rest on: the files it read (or failed to read) from disk
@@ -147,7 +152,10 @@ class ProgramLibrary:
         files = self._listing.get(folder)
         if files is None:
             allowed = [folder, *self.folders]
-            files = [p for p in program_files_in(folder, self.extensions) if any(stays_inside(p, f) for f in allowed)]
+            # a file that is no link is in ``folder``, which is allowed: only a link is followed to
+            # see where it leads (a folder of 100,000 files resolved each twice: 6 s)
+            files = [p for p, link in program_files_in(folder, self.extensions)
+                     if not link or any(stays_inside(p, f) for f in allowed)]  # fmt: skip
             listed = {str(p) for p in files}
             files += sorted(Path(p) for p in self._given if Path(p).parent == folder and p not in listed)
             self._listing[folder] = files
@@ -180,26 +188,38 @@ class ProgramLibrary:
         # an O header at the start of a line, or after the end of the program before it (M99O0810)
         header = re.compile(rf"(?m)(?:^[ \t/%]*(?:N\d+[ \t]*)?|M0*(?:99|30|2)[ \t]*)O0*{number}(?!\d)", re.I)
         for folder in folders:
-            for p in self._folder_files(folder):
-                loaded = self._files.get(str(p))
-                if loaded is not None:
-                    unit = loaded.program.unit_numbered(number)
-                    if unit is not None:
-                        return FoundProgram(loaded, unit)
+            absent = self._absent.setdefault(folder, set())
+            if number in absent:  # searched in vain before: a folder of 100,000 files is not read again
+                continue
+            found = self._header_in(folder, number, header)
+            if found is not None:
+                return found
+            absent.add(number)
+        return None
+
+    def _header_in(self, folder: Path, number: int, header: re.Pattern[str]) -> FoundProgram | None:
+        """O``number`` in a file of ``folder`` whatever its name, by its header: the first
+        ``MAX_PROGRAM_FILES`` files only, so that a lookup in a huge folder stays bounded."""
+        for p in self._folder_files(folder)[:MAX_PROGRAM_FILES]:
+            loaded = self._files.get(str(p))
+            if loaded is not None:
+                unit = loaded.program.unit_numbered(number)
+                if unit is not None:
+                    return FoundProgram(loaded, unit)
+                continue
+            text = self.texts.get(str(p))
+            if text is None:
+                try:
+                    text = self.disk.text(str(p))
+                except (OSError, SkippedFileError):
                     continue
-                text = self.texts.get(str(p))
-                if text is None:
-                    try:
-                        text = self.disk.text(str(p))
-                    except (OSError, SkippedFileError):
-                        continue
-                if header.search(text):
-                    loaded = self.load(p)  # parsed from the text just searched (the cache keeps it)
-                    if loaded is None:
-                        continue
-                    unit = loaded.program.unit_numbered(number)
-                    if unit is not None:
-                        return FoundProgram(loaded, unit)
+            if header.search(text):
+                loaded = self.load(p)  # parsed from the text just searched (the cache keeps it)
+                if loaded is None:
+                    continue
+                unit = loaded.program.unit_numbered(number)
+                if unit is not None:
+                    return FoundProgram(loaded, unit)
         return None
 
     def control_program(self, number: int) -> FoundProgram:
