@@ -139,6 +139,8 @@ class WorkspaceIndex:
         was not (a binary file is only logged: it is no program). The file cache reads it again
         at the next question, wherever it is."""
         self.disk.forget(path)
+        if path not in self.files and len(self.files) >= MAX_PROGRAM_FILES:
+            return None  # the index is full: a file it does not hold is not read for it (a branch switch of 100k files)
         if ReadScope.of(self.roots, extensions=self.extensions_for(path)).refusal(path) is not None:
             return None  # only program files under the workspace folders are read
         try:
