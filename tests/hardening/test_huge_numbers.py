@@ -79,7 +79,7 @@ MOVE_TO_500 = "O0001\nG01 X#500 F100\nM30\n"
     ("where", "words"),
     [
         ("set", "#500 = 1e+50 is beyond what a variable holds (±1e+47)"),
-        ("machine file", "'variables.500' must be a number a variable holds (±1e+47 at most) (line 2)"),
+        ("machine file", "'variables.500' must be a finite number a variable holds (±1e+47 at most) (line 2)"),
         ("persistent file", "#500 holds 1e+50, which no variable of a control can hold"),
     ],
 )

@@ -31,7 +31,7 @@ HOSTILE_MACHINE_FILES: dict[str, tuple[str | bytes, str]] = {
     "a superscript variable": ('[variables]\n"²" = 1\n', "'variables.²' is not a variable number"),
     "a number too big for a float": (
         "[variables]\n100 = " + "9" * 400 + "\n",
-        "'variables.100' must be a number a variable holds (±1e+47 at most)",
+        "'variables.100' must be a finite number a variable holds (±1e+47 at most)",
     ),
     "not UTF-8": (b'base = "\xb3\xcc"\n', "not UTF-8 text (byte 0xb3 on line 1)"),
     "2 MB": ("# " + "x" * 2_000_000 + "\n", "2,000,003 bytes, over the limit of 1,000,000"),

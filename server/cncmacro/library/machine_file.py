@@ -631,8 +631,9 @@ def _variables(table: object, fail: _Fail) -> dict[int, float]:
             raise fail(f"variables.{k}", detail("is not a variable number", "不是变量号"))
         number = finite_number(v)  # a number a variable can hold
         if number is None or abs(number) > MAX_VALUE:
-            raise fail(f"variables.{k}", detail(f"must be a number a variable holds (±{MAX_VALUE:g} at most)",
-                                                f"必须是变量可保存的数值（绝对值不超过 {MAX_VALUE:g}）"))  # fmt: skip
+            raise fail(f"variables.{k}", detail(
+                f"must be a finite number a variable holds (±{MAX_VALUE:g} at most)",
+                f"必须是变量可保存的有限数值（绝对值不超过 {MAX_VALUE:g}）"))  # fmt: skip
         out[int(key)] = number
     return out
 
