@@ -17,7 +17,7 @@ TEXTS: dict[str, tuple[str, str]] = {
         "cncMacro.dialect: '{name}' is not a profile, so the setting is passed over (profiles: {names})",
         "cncMacro.dialect：'{name}' 不是系统类型，该设置被忽略（可用：{names}）",
     ),
-    "setting_refused": ("{text}", "{text}"),  # a setting's own message (check_overrides), passed over
+    "setting_refused": ("{text}", "设置被忽略：{text}"),  # a setting's own message (check_overrides), passed over
     "local": ("Local variable", "局部变量"),
     "common": ("Common variable (cleared at power-off)", "公共变量（断电清除）"),
     "persistent": ("Common variable (kept at power-off)", "公共变量（断电保持）"),
