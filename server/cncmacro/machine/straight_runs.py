@@ -57,8 +57,8 @@ def run_straight(
         return 0, pc
     p = m.planner
     kinds = p.plain.kinds()
-    if not kinds or p.shape is not None:  # a lathe cycle's shape: the compiled path reads it
-        return 0, pc
+    if not kinds or p.shape is not None or p.cutter is not None:  # a lathe cycle's shape, cutter
+        return 0, pc  # radius compensation (planner/cutter_stage.py): the compiled path runs them
     n_blocks = program.read_end  # nothing from the closing '%' on
     g_words = p.plain.g_words()
     lathe = p.lathe
@@ -260,7 +260,8 @@ def run_straight(
                     cut += length * unit
                 clock += seconds
                 if append is not None:
-                    append(_new_move(Move, (path, pc, mode, start, end, f, centre, seconds, plane, None, None, None)))
+                    append(_new_move(Move, (path, pc, mode, start, end, f, centre, seconds, plane, None, None, None,
+                                            None)))  # fmt: skip
                 start = end
             pc += 1
             continue

@@ -1,0 +1,367 @@
+"""Cutter radius compensation on a mill: G41/G42 with D, cancelled by G40 (docs/semantics.md,
+"Cutter radius compensation").
+
+The planner's stage between a block's programmed move and its time: while ``Planner.cutter`` is
+set, ``Planner.record`` hands each move here. The tool centre's end point of a block is known only
+when the next block in the plane is (where the two offsets meet: offset_geometry.py), so the stage
+runs one move behind: a move is recorded at once with a provisional centre path (ending on the
+perpendicular of its end, as if nothing followed), and when the next move in the plane arrives
+the corner between them is worked out and the earlier move's path, time and length are put right
+in place (``Planner.moves``, the clock, the cut and rapid lengths). Moves off the plane in between
+(a Z move) are made at the corner. Start-up is the first move in the plane after G41/G42 with a
+D whose offset is not zero, cancel the first after G40; both are of type A or B as the machine
+file's ``cutter_startup`` says. The radius is offset D's geometry plus wear, as the macro machine
+keeps them (``Dialect.tool_offset_bases``; G10 L12/L13 write them). The control's answers: an arc
+at start-up or cancel (PS0034), a corner whose offsets do not meet (PS0033), an offset path that
+reverses a block or a cutter too large for an inside arc (PS0041), a plane change in G41/G42
+(PS0037); where the profile has no such alarms (``Dialect.cutter_alarms``) the last three are
+notes the run goes past.
+"""
+
+from __future__ import annotations
+
+from math import hypot
+from typing import TYPE_CHECKING, NamedTuple
+
+from ..bilingual import detail
+from ..dialects.alarms import CUTTER_ARC_START, CUTTER_INTERFERENCE, CUTTER_NO_INTERSECTION, CUTTER_PLANE
+from .alarms import MacroAlarm
+from .arcs import ARC_MODES
+from .moves import CentrePath, CentrePiece
+from .offset_geometry import (
+    MEET,
+    PERPENDICULAR_AFTER,
+    PERPENDICULAR_BEFORE,
+    Corner,
+    NoIntersection,
+    PathElement,
+    centre_segment,
+    join,
+    offset_element,
+    perpendicular_end,
+    reverses,
+)
+
+if TYPE_CHECKING:
+    from .planner import Planner
+
+LEFT, RIGHT, CANCEL = 41.0, 42.0, 40.0
+_MOVE_MODES = frozenset((0.0, 1.0, 2.0, 3.0))
+_Point = tuple[float, ...]
+
+
+class Pending(NamedTuple):
+    """The last move in the plane, whose centre path waits for the next one: its place in
+    ``Planner.moves`` (-1 when moves are not recorded), its line, mode, feed, unit (25.4 under
+    G20) and plane, its programmed start and end, its programmed element in the plane and signed
+    offset (left positive), its provisional centre path and time, whether it is the start-up
+    block, and the places of the moves off the plane recorded since."""
+
+    place: int
+    line: int
+    mode: float
+    feed: float
+    unit: float
+    plane: float
+    start: _Point
+    end: _Point
+    element: PathElement
+    d: float
+    path: CentrePath
+    seconds: float
+    startup: bool
+    between: tuple[int, ...]
+
+
+class CutterStage:
+    """The compensation state of one run: the modal code (41, 42, or 40 with a cancel to come),
+    whether the offset is established, the plane it was started in, the start-up type, the move
+    waiting for the next, and the offsets already noted as having no value."""
+
+    __slots__ = ("code", "noted", "on", "pending", "plane", "type_b")
+
+    def __init__(self, code: float, plane: float, type_b: bool) -> None:
+        self.code = code
+        self.on = False
+        self.plane = plane
+        self.type_b = type_b
+        self.pending: Pending | None = None
+        self.noted: frozenset[int] = frozenset()
+
+    def copy(self) -> CutterStage:
+        c = CutterStage(self.code, self.plane, self.type_b)
+        c.on, c.pending, c.noted = self.on, self.pending, self.noted
+        return c
+
+
+def cutter_code(p: Planner, group: str, g: float, line: int) -> None:
+    """A block's G code of the ``cutter`` group (G40, G41, G42) or, while the offset is on, of the
+    ``plane`` group: start, keep or cancel the stage (before the modal code is set)."""
+    stage = p.cutter
+    if group == "plane":
+        if stage is not None and stage.on and g != stage.plane:
+            _finding(p, CUTTER_PLANE, "cutter-plane", line,
+                     detail(f"G{g:g} changes the plane while cutter radius compensation (G41/G42) is on: cancel it "
+                            "with G40 first",
+                            f"刀具半径补偿（G41/G42）有效时用 G{g:g} 变更了平面：请先用 G40 取消补偿"))  # fmt: skip
+        return
+    if g in (LEFT, RIGHT) and not p.lathe:
+        if stage is None:
+            p.cutter = CutterStage(g, p.modal.get("plane", 17.0), p.settings.cutter_startup == "B")
+        else:
+            stage.code = g
+    elif stage is not None:
+        stage.code = CANCEL
+        if not stage.on:
+            p.cutter = None
+
+
+def cutter_radius(p: Planner, line: int) -> float:
+    """The radius offset D in force holds: its geometry plus its wear, 0 for D0 (no D yet) or an
+    offset the run has no value for (noted once per offset number)."""
+    d = p.codes.get("D")
+    n = int(d) if d is not None else 0
+    if n <= 0:
+        return 0.0
+    geometry, wear = p.dialect.tool_offset_bases[2:4]
+    g, w = p.host.stored(geometry + n), p.host.stored(wear + n)
+    if g is None and w is None:
+        stage = p.cutter
+        if stage is not None and n not in stage.noted:
+            stage.noted = stage.noted | {n}
+            p.host.note("cutter", detail(
+                f"D{n} has no value in this run (#{geometry + n}, #{wear + n}): the tool centre is drawn on the "
+                "programmed path; give the offset in the machine file's [variables] or with G10 L12",
+                f"本次运行中 D{n} 没有数值（#{geometry + n}、#{wear + n}）：刀具中心按编程轨迹绘制；"
+                "请在机床文件的 [variables] 中或用 G10 L12 给出该补偿值"), line, "cutter-offset")  # fmt: skip
+        return 0.0
+    return (g or 0.0) + (w or 0.0)
+
+
+def _finding(p: Planner, number: int, subject: str, line: int, message: str) -> None:
+    """The control's alarm ``number`` where the profile has the cutter alarms, else a note."""
+    if p.dialect.cutter_alarms:
+        raise MacroAlarm(number, message, subject)
+    p.host.note("cutter", message, line, subject)
+
+
+def _full(plane_point: tuple[float, float], like: _Point, i: int, j: int) -> _Point:
+    out = list(like)
+    out[i], out[j] = plane_point
+    return tuple(out)
+
+
+def cutter_move(
+    p: Planner, line: int, mode: float, plane: float, start: _Point, end: _Point, centre: _Point | None,
+    feed: float, unit: float,
+) -> tuple[CentrePath, float] | None:  # fmt: skip
+    """The centre path of a move (and its seconds, its length added to the run's) while the stage
+    is set; None when the move is not compensated (no offset on, a move of another kind)."""
+    stage = p.cutter
+    assert stage is not None
+    axes = p.times.planes.get(stage.plane)
+    if axes is None or mode not in _MOVE_MODES:
+        return None
+    i, j = axes[0], axes[1]
+    in_plane = centre is not None or start[i] != end[i] or start[j] != end[j]
+    if not stage.on:
+        if not in_plane:
+            return None
+        d = cutter_radius(p, line)
+        if d == 0.0:
+            return None
+        if mode in ARC_MODES:
+            raise MacroAlarm(CUTTER_ARC_START, _arc_message("G41/G42", "start-up", "建立"), "cutter-arc")
+        stage.on = True
+        d = d if stage.code == LEFT else -d
+        element = PathElement((start[i], start[j]), (end[i], end[j]))
+        return _provisional(p, line, mode, plane, element, d, start, start, end, None, feed, unit, True, i, j)
+    pending = stage.pending
+    if not in_plane:  # a move off the plane: made where the tool centre is
+        at = (start[i], start[j]) if pending is None else _plane_point(pending.path.pieces[-1].end, i, j)
+        path = CentrePath(_full(at, start, i, j), (CentrePiece(_full(at, end, i, j)),))
+        if pending is not None and p.record_moves:
+            stage.pending = pending._replace(between=(*pending.between, len(p.moves)))
+        return path, _cost(p, mode, path, feed, unit, plane, start, end)
+    if stage.code == CANCEL:
+        if mode in ARC_MODES:
+            raise MacroAlarm(CUTTER_ARC_START, _arc_message("G40", "cancel", "取消"), "cutter-arc")
+        cancel = PathElement((start[i], start[j]), (end[i], end[j]))
+        begin = (start[i], start[j])
+        if pending is not None:
+            outer = MEET if stage.type_b else PERPENDICULAR_BEFORE
+            corner = _corner(p, pending, cancel, pending.d, outer, line)
+            _settle(p, pending, corner, line, i, j)
+            begin = corner.after_start
+        stage.on = False
+        stage.pending = None
+        p.cutter = None
+        path = CentrePath(_full(begin, start, i, j), (CentrePiece(end),))
+        return path, _cost(p, mode, path, feed, unit, plane, start, end)
+    d = cutter_radius(p, line)
+    d = d if stage.code == LEFT else -d
+    element = _element(mode, start, end, centre, i, j)
+    begin = (start[i], start[j])
+    if pending is not None:
+        outer = PERPENDICULAR_AFTER if pending.startup and not stage.type_b else MEET
+        corner = _corner(p, pending, element, d, outer, line)
+        _settle(p, pending, corner, line, i, j)
+        begin = corner.after_start
+    if centre is not None and offset_element(element, d) is None:
+        radius = _arc_radius(element)
+        _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, detail(
+            f"the cutter (radius {abs(d):g}) is too large for this arc of radius {radius:g}: its centre cannot "
+            "follow it on the inside",
+            f"刀具（半径 {abs(d):g}）大于此圆弧（半径 {radius:g}）：刀具中心无法在内侧沿其移动"))  # fmt: skip
+        d = 0.0
+    return _provisional(p, line, mode, plane, element, d, _full(begin, start, i, j), start, end, centre, feed, unit,
+                        False, i, j)  # fmt: skip
+
+
+def _arc_message(code: str, what: str, what_zh: str) -> str:
+    return detail(
+        f"the {what} of cutter radius compensation ({code}) is on a G02/G03 arc: the control starts and cancels "
+        "it only on a G00 or G01 move",
+        f"刀具半径补偿的{what_zh}（{code}）在 G02/G03 圆弧上：系统只能在 G00 或 G01 移动中建立和取消补偿",
+    )
+
+
+def _arc_radius(s: PathElement) -> float:
+    assert s.centre is not None
+    return round(hypot(s.start[0] - s.centre[0], s.start[1] - s.centre[1]), 4)
+
+
+def _plane_point(q: _Point, i: int, j: int) -> tuple[float, float]:
+    return q[i], q[j]
+
+
+def _element(mode: float, start: _Point, end: _Point, centre: _Point | None, i: int, j: int) -> PathElement:
+    if centre is None or mode not in ARC_MODES:
+        return PathElement((start[i], start[j]), (end[i], end[j]))
+    return PathElement((start[i], start[j]), (end[i], end[j]), (centre[i], centre[j]), mode == 3.0)
+
+
+def _corner(p: Planner, pending: Pending, after: PathElement, d: float, outer: str, line: int) -> Corner:
+    """How the pending move's offset meets the next element's (``NoIntersection``: PS0033)."""
+    try:
+        return join(pending.element, after, pending.d, d, outer)
+    except NoIntersection:
+        _finding(p, CUTTER_NO_INTERSECTION, "cutter-interference", line, detail(
+            f"the offsets of this block and the one on line {pending.line + 1} do not meet on the inside corner: the "
+            "cutter is too large for the shape there",
+            f"本程序段与第 {pending.line + 1} 行程序段的偏置轨迹在内角处没有交点：刀具对该处形状来说太大"))  # fmt: skip
+        q = perpendicular_end(pending.element, pending.d)
+        return Corner(q, (), q)
+
+
+def _provisional(
+    p: Planner, line: int, mode: float, plane: float, element: PathElement, d: float, begin: _Point, start: _Point,
+    end: _Point, centre: _Point | None, feed: float, unit: float, startup: bool, i: int, j: int,
+) -> tuple[CentrePath, float]:  # fmt: skip
+    """The path of a new move in the plane from ``begin``, ending on its end's perpendicular as
+    if nothing followed, kept pending for the next move to put right."""
+    q = perpendicular_end(element, d)
+    piece = CentrePiece(_full(q, end, i, j), None if startup or element.centre is None else centre, mode == 2.0)
+    path = CentrePath(begin, (piece,))
+    seconds = _cost(p, mode, path, feed, unit, plane, start, end)
+    stage = p.cutter
+    assert stage is not None
+    index = len(p.moves) if p.record_moves else -1
+    stage.pending = Pending(index, line, mode, feed, unit, plane, start, end, element, d, path, seconds, startup, ())
+    return path, seconds
+
+
+def _settle(p: Planner, pending: Pending, corner: Corner, line: int, i: int, j: int) -> None:
+    """Put the pending move's centre path right now that the corner after it is known: its time,
+    its length, its record, and the moves off the plane made at its end."""
+    provisional = pending.path
+    last = provisional.pieces[-1]
+    end_full = last.end
+    element = pending.element
+    pieces: list[CentrePiece] = []
+    if pending.startup or element.centre is None:
+        pieces.append(CentrePiece(_full(corner.before_end, end_full, i, j)))
+    else:
+        pieces.append(CentrePiece(_full(corner.before_end, end_full, i, j), last.centre, last.clockwise))
+    if not pending.startup and pending.d:
+        piece = centre_segment(element, _plane_point(provisional.start, i, j), corner.before_end)
+        if reverses(element, piece):
+            _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, detail(
+                f"interference: with the cutter's offset the block on line {pending.line + 1} would be cut backwards "
+                "(the tool centre's path runs against the programmed one): the cutter is too large for this step "
+                "or groove",
+                f"干涉：按刀具偏置，第 {pending.line + 1} 行的程序段将反向切削（刀具中心轨迹与编程轨迹方向相反）："
+                "刀具对该台阶或槽来说太大"))  # fmt: skip
+    for link in corner.links:
+        pieces.append(CentrePiece(_full(link, end_full, i, j)))
+    if corner.after_start != corner.before_end or corner.links:
+        pieces.append(CentrePiece(_full(corner.after_start, end_full, i, j)))
+    path = CentrePath(provisional.start, tuple(pieces))
+    mode, unit, plane = pending.mode, pending.unit, pending.plane
+    seconds = _cost(p, mode, path, pending.feed, unit, plane, pending.start, pending.end)
+    _count(p, mode, provisional, plane, -unit)
+    p.clock += seconds - pending.seconds
+    moves = p.moves
+    k = pending.place
+    if 0 <= k < len(moves) and moves[k].line == pending.line:
+        moves[k] = moves[k]._replace(tool_path=path, seconds=seconds)
+    at = corner.after_start
+    for k in pending.between:
+        if 0 <= k < len(moves):
+            mv = moves[k]
+            if mv.tool_path is not None:
+                moves[k] = mv._replace(tool_path=CentrePath(_full(at, mv.tool_path.start, i, j),
+                                                            (CentrePiece(_full(at, mv.end, i, j)),)))  # fmt: skip
+
+
+def restore_pending(p: Planner) -> None:
+    """After a snapshot is restored: the pending move's record as it was when it was pending
+    (a later move may have put it right before the run was taken back)."""
+    stage = p.cutter
+    pending = stage.pending if stage is not None else None
+    if pending is None:
+        return
+    moves = p.moves
+    k = pending.place
+    if 0 <= k < len(moves) and moves[k].line == pending.line:
+        moves[k] = moves[k]._replace(tool_path=pending.path, seconds=pending.seconds)
+
+
+def _length(p: Planner, path: CentrePath, plane: float) -> float:
+    """The length of a centre path in program units (arcs with a helix's third axis)."""
+    times = p.times
+    at = path.start
+    total = 0.0
+    for piece in path.pieces:
+        if piece.centre is not None:
+            total += times.arc_length(2.0 if piece.clockwise else 3.0, plane, at, piece.end, piece.centre)
+        else:
+            total += times.distance(at, piece.end)
+        at = piece.end
+    return total
+
+
+def _count(p: Planner, mode: float, path: CentrePath, plane: float, unit: float) -> None:
+    """Add the path's length (times ``unit``: negative to take it back) to the cut or rapid length."""
+    length = _length(p, path, plane) * unit
+    if mode == 0.0:
+        p.rapid_length += length
+    else:
+        p.cut_length += length
+
+
+def _cost(
+    p: Planner, mode: float, path: CentrePath, feed: float, unit: float, plane: float, start: _Point, end: _Point
+) -> float:
+    """The seconds of ``path`` in ``mode`` (a rapid piece by piece at its slowest axis, a cut at
+    the feed in force), its length added to the run's."""
+    if mode == 0.0:
+        seconds = 0.0
+        at = path.start
+        for piece in path.pieces:
+            seconds += p.times.rapid_seconds(at, piece.end, unit)
+            at = piece.end
+    else:
+        seconds = p.feed_seconds(mode, _length(p, path, plane), feed, start, end, unit)
+    _count(p, mode, path, plane, unit)
+    return seconds
