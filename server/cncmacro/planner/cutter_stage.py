@@ -201,12 +201,6 @@ def cutter_move(
     d = cutter_radius(p, line)
     d = d if stage.code == LEFT else -d
     element = _element(mode, start, end, centre, i, j)
-    begin = (start[i], start[j])
-    if pending is not None:
-        outer = PERPENDICULAR_AFTER if pending.startup and not stage.type_b else MEET
-        corner = _corner(p, pending, element, d, outer, line)
-        _settle(p, pending, corner, line, i, j)
-        begin = corner.after_start
     if centre is not None and offset_element(element, d) is None:
         radius = _arc_radius(element)
         _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, detail(
@@ -214,6 +208,12 @@ def cutter_move(
             "follow it on the inside",
             f"刀具（半径 {abs(d):g}）大于此圆弧（半径 {radius:g}）：刀具中心无法在内侧沿其移动"))  # fmt: skip
         d = 0.0
+    begin = (start[i], start[j])
+    if pending is not None:
+        outer = PERPENDICULAR_AFTER if pending.startup and not stage.type_b else MEET
+        corner = _corner(p, pending, element, d, outer, line)
+        _settle(p, pending, corner, line, i, j)
+        begin = corner.after_start
     return _provisional(p, line, mode, plane, element, d, _full(begin, start, i, j), start, end, centre, feed, unit,
                         False, i, j)  # fmt: skip
 
