@@ -20,15 +20,16 @@ notes the run goes past.
 
 from __future__ import annotations
 
-from math import hypot
+from math import dist, hypot, sqrt
 from typing import TYPE_CHECKING, NamedTuple
 
 from ..bilingual import detail
 from ..dialects.alarms import CUTTER_ARC_START, CUTTER_INTERFERENCE, CUTTER_NO_INTERSECTION, CUTTER_PLANE
 from .alarms import MacroAlarm
 from .arcs import ARC_MODES
-from .moves import CentrePath, CentrePiece
+from .moves import CentrePath, CentrePiece, Move
 from .offset_geometry import (
+    EPSILON,
     MEET,
     PERPENDICULAR_AFTER,
     PERPENDICULAR_BEFORE,
@@ -55,7 +56,9 @@ class Pending(NamedTuple):
     ``Planner.moves`` (-1 when moves are not recorded), its line, mode, feed, unit (25.4 under
     G20) and plane, its programmed start and end, its programmed element in the plane and signed
     offset (left positive), its provisional centre path and time, whether it is the start-up
-    block, and the places of the moves off the plane recorded since."""
+    block, the places of the moves off the plane recorded since, the seconds per program unit of
+    its path (0 for a rapid), its provisional path's length and the square of its move along the
+    axes off the plane."""
 
     place: int
     line: int
@@ -71,6 +74,9 @@ class Pending(NamedTuple):
     seconds: float
     startup: bool
     between: tuple[int, ...]
+    per_length: float
+    length: float
+    off_plane: float
 
 
 class CutterStage:
@@ -177,6 +183,10 @@ def cutter_move(
         element = PathElement((start[i], start[j]), (end[i], end[j]))
         return _provisional(p, line, mode, plane, element, d, start, start, end, None, feed, unit, True, i, j)
     pending = stage.pending
+    if centre is None and in_plane and mode != 0.0 and pending is not None and centre_free(stage) is not None:
+        done = _line_after_line(p, stage, pending, line, mode, plane, start, end, feed, unit, i, j)
+        if done is not None:
+            return done
     if not in_plane:  # a move off the plane: made where the tool centre is
         at = (start[i], start[j]) if pending is None else _plane_point(pending.path.pieces[-1].end, i, j)
         path = CentrePath(_full(at, start, i, j), (CentrePiece(_full(at, end, i, j)),))
@@ -216,6 +226,153 @@ def cutter_move(
         begin = corner.after_start
     return _provisional(p, line, mode, plane, element, d, _full(begin, start, i, j), start, end, centre, feed, unit,
                         False, i, j)  # fmt: skip
+
+
+_tuple_new = tuple.__new__  # a named tuple without its constructor's keyword handling
+
+
+def straight_cut(p: Planner, file: str, line: int, mode: float, start: _Point, end: _Point) -> bool:
+    """Record a straight cut of a run of plain lines (machine/straight_runs.py) after a straight
+    cut under compensation, its centre path and time included, as ``Planner.record`` would;
+    False, recording nothing, for any other case, which ``Planner.record`` then takes."""
+    stage = p.cutter
+    if stage is None or centre_free(stage) is None or mode == 0.0:
+        return False
+    pending = stage.pending
+    assert pending is not None
+    axes = p.times.planes.get(stage.plane)
+    if axes is None:
+        return False
+    i, j = axes[0], axes[1]
+    if start[i] == end[i] and start[j] == end[j]:
+        return False
+    modal = p.modal
+    unit = 25.4 if modal.get("units") == 20.0 else 1.0
+    feed = p.codes.get("F") or 0.0
+    done = _line_after_line(p, stage, pending, line, mode, modal.get("plane", 17.0), start, end, feed, unit, i, j)
+    if done is None:
+        return False
+    path, seconds = done
+    if p.record_moves:
+        p.moves.append(_tuple_new(Move, (file, line, mode, start, end, float(feed), None, seconds, pending.plane,
+                                         None, None, None, path)))  # fmt: skip
+    p.clock += seconds
+    return True
+
+
+def centre_free(stage: CutterStage) -> Pending | None:
+    """The pending move when the next straight cut may take ``_line_after_line``: a straight cut
+    in offset mode, not the start-up, with no move off the plane after it."""
+    pending = stage.pending
+    if (pending is None or stage.code == CANCEL or not pending.per_length or pending.element.centre is not None
+            or pending.startup or pending.between):  # fmt: skip
+        return None
+    return pending
+
+
+def _line_after_line(
+    p: Planner, stage: CutterStage, pending: Pending, line: int, mode: float, plane: float, start: _Point,
+    end: _Point, feed: float, unit: float, i: int, j: int,
+) -> tuple[CentrePath, float] | None:  # fmt: skip
+    """The common case of a CAM contour, a cut after a cut, both straight, at the same offset:
+    ``offset_geometry.join``'s corner worked out in place (None: a case it leaves to the general
+    way). The same rules: a tangent needs no corner, an inside or obtuse corner ends at the
+    intersection, P + d (n1 + n2) / (1 + t1·t2) for offsets of one distance d, an acute outside one
+    goes through the two extension points."""
+    d = cutter_radius(p, line)
+    d = d if stage.code == LEFT else -d
+    if d != pending.d or mode != pending.mode or unit != pending.unit or plane != pending.plane:
+        return None
+    (ax, ay), (px, py) = pending.element[0], pending.element[1]
+    ex, ey = end[i], end[j]
+    l1, l2 = hypot(px - ax, py - ay), hypot(ex - px, ey - py)
+    if l1 <= EPSILON or l2 <= EPSILON:
+        return None
+    t1x, t1y, t2x, t2y = (px - ax) / l1, (py - ay) / l1, (ex - px) / l2, (ey - py) / l2
+    cross, dot = t1x * t2y - t1y * t2x, t1x * t2x + t1y * t2y
+    link = None
+    if -1e-12 <= cross <= 1e-12 and dot > 0.0:
+        bx, by = px - t1y * d, py + t1x * d
+        cx, cy = bx, by
+    elif cross * d > 0.0 or dot >= 0.0:
+        if dot <= -1.0 + 1e-9:
+            return None
+        k = d / (1.0 + dot)
+        bx, by = px - k * (t1y + t2y), py + k * (t1x + t2x)
+        cx, cy = bx, by
+    else:
+        r = -d if d < 0.0 else d
+        bx, by = px - t1y * d + t1x * r, py + t1x * d + t1y * r
+        cx, cy = px - t2y * d - t2x * r, py + t2x * d - t2y * r
+        link = (cx, cy)
+    path0 = pending.path
+    s0 = path0[0]
+    sx, sy = s0[i], s0[j]
+    if (bx - sx) * t1x + (by - sy) * t1y < -EPSILON * (l1 if l1 > 1.0 else 1.0):
+        _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, _reversal_message(pending.line))
+    a_end = pending.end
+    length = sqrt((bx - sx) ** 2 + (by - sy) ** 2 + pending.off_plane)
+    xy = i == 0 and j == 1
+    pieces: tuple[CentrePiece, ...]
+    if link is None:
+        first = (bx, by, *a_end[2:]) if xy else _full((bx, by), a_end, i, j)
+        pieces = (_tuple_new(CentrePiece, (first, None, False)),)
+    else:
+        first, second = _full((bx, by), a_end, i, j), _full((cx, cy), a_end, i, j)
+        pieces = (_tuple_new(CentrePiece, (first, None, False)), _tuple_new(CentrePiece, (second, None, False)))
+        length += hypot(cx - bx, cy - by)
+    settled = _tuple_new(CentrePath, (s0, pieces))
+    per = pending.per_length
+    seconds_a = length * per
+    p.clock += seconds_a - pending.seconds
+    p.cut_length += (length - pending.length) * unit
+    moves = p.moves
+    place = pending.place
+    if 0 <= place < len(moves):
+        old = moves[place]
+        if old[1] == pending.line:
+            moves[place] = _tuple_new(type(old), (*old[:7], seconds_a, *old[8:12], settled))
+    return _pend_line(p, stage, pending, line, (mode, plane, feed, unit), start, end, (cx, cy), (t2x, t2y, l2), d, i, j)
+
+
+def _pend_line(
+    p: Planner, stage: CutterStage, pending: Pending, line: int, how: tuple[float, float, float, float],
+    start: _Point, end: _Point, corner: tuple[float, float], t2: tuple[float, float, float], d: float, i: int, j: int,
+) -> tuple[CentrePath, float]:  # fmt: skip
+    """``_line_after_line``'s new move, pending in its turn: from the corner to its end's
+    perpendicular (``how``: its mode, plane, feed and unit; ``t2``: its direction and length)."""
+    mode, plane, feed, unit = how
+    cx, cy = corner
+    t2x, t2y, l2 = t2
+    ex, ey = end[i], end[j]
+    qx, qy = ex - t2y * d, ey + t2x * d
+    xy = i == 0 and j == 1
+    if xy:
+        begin, finish = (cx, cy, *start[2:]), (qx, qy, *end[2:])
+        off_plane = dist(start[2:], end[2:]) ** 2 if len(start) > 2 else 0.0
+    else:
+        begin, finish = _full((cx, cy), start, i, j), _full((qx, qy), end, i, j)
+        off_plane = max(dist(start, end) ** 2 - l2 * l2, 0.0)
+    length_b = sqrt((qx - cx) ** 2 + (qy - cy) ** 2 + off_plane)
+    per = pending.per_length if feed == pending.feed else p.feed_seconds(mode, 1.0, feed, start, end, unit)
+    seconds_b = length_b * per
+    p.cut_length += length_b * unit
+    path = _tuple_new(CentrePath, (begin, (_tuple_new(CentrePiece, (finish, None, False)),)))
+    element = _tuple_new(PathElement, ((start[i], start[j]), (ex, ey), None, False))
+    place = len(p.moves) if p.record_moves else -1
+    stage.pending = _tuple_new(Pending, (place, line, mode, feed, unit, plane, start, end, element, d, path, seconds_b,
+                                         False, (), per, length_b, off_plane))  # fmt: skip
+    return path, seconds_b
+
+
+def _reversal_message(line: int) -> str:
+    """The interference of the block on (0-based) ``line`` cut backwards."""
+    return detail(
+        f"interference: with the cutter's offset the block on line {line + 1} would be cut backwards (the tool "
+        "centre's path runs against the programmed one): the cutter is too large for this step or groove",
+        f"干涉：按刀具偏置，第 {line + 1} 行的程序段将反向切削（刀具中心轨迹与编程轨迹方向相反）："
+        "刀具对该台阶或槽来说太大",
+    )
 
 
 def _arc_message(code: str, what: str, what_zh: str) -> str:
@@ -267,7 +424,11 @@ def _provisional(
     stage = p.cutter
     assert stage is not None
     index = len(p.moves) if p.record_moves else -1
-    stage.pending = Pending(index, line, mode, feed, unit, plane, start, end, element, d, path, seconds, startup, ())
+    per_length = 0.0 if mode == 0.0 else p.feed_seconds(mode, 1.0, feed, start, end, unit)
+    (ax, ay), (bx, by) = element.start, element.end
+    off_plane = max(dist(start, end) ** 2 - (bx - ax) ** 2 - (by - ay) ** 2, 0.0)
+    stage.pending = Pending(index, line, mode, feed, unit, plane, start, end, element, d, path, seconds, startup, (),
+                            per_length, _length(p, path, plane), off_plane)  # fmt: skip
     return path, seconds
 
 
@@ -286,12 +447,7 @@ def _settle(p: Planner, pending: Pending, corner: Corner, line: int, i: int, j: 
     if not pending.startup and pending.d:
         piece = centre_segment(element, _plane_point(provisional.start, i, j), corner.before_end)
         if reverses(element, piece):
-            _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, detail(
-                f"interference: with the cutter's offset the block on line {pending.line + 1} would be cut backwards "
-                "(the tool centre's path runs against the programmed one): the cutter is too large for this step "
-                "or groove",
-                f"干涉：按刀具偏置，第 {pending.line + 1} 行的程序段将反向切削（刀具中心轨迹与编程轨迹方向相反）："
-                "刀具对该台阶或槽来说太大"))  # fmt: skip
+            _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, _reversal_message(pending.line))
     for link in corner.links:
         pieces.append(CentrePiece(_full(link, end_full, i, j)))
     if corner.after_start != corner.before_end or corner.links:

@@ -153,7 +153,8 @@ class Planner:
         """Carry out a ``PlainWords`` plan with its file and next line appended; returns whether
         the block counts as a move for a G66 call (``execute_nc``)."""
         modal_sets, code_sets, axes, inc, _, file, _ = plan
-        if self.cutter is not None:  # cutter radius compensation: the general path (cutter_stage.py)
+        if self.cutter is not None and any(g == "plane" for g, _ in modal_sets):  # under compensation: the
+            # plane change's alarm (cutter_stage.py)
             words = [("G", g) for group, g in modal_sets if group != "canned"]
             words += [(k, v) for k, v in code_sets if k in ("F", "S")]
             return self._cycle_fallback(plan, file, line, words)
