@@ -27,6 +27,7 @@ from ..bilingual import detail
 from ..dialects.alarms import CUTTER_ARC_START, CUTTER_INTERFERENCE, CUTTER_NO_INTERSECTION, CUTTER_PLANE
 from .alarms import MacroAlarm
 from .arcs import ARC_MODES
+from .cycle_time import INCH
 from .moves import CentrePath, CentrePiece, Move
 from .offset_geometry import (
     EPSILON,
@@ -82,20 +83,26 @@ class Pending(NamedTuple):
 class CutterStage:
     """The compensation state of one run: the modal code (41, 42, or 40 with a cancel to come),
     whether the offset is established, the plane it was started in, the start-up type, the move
-    waiting for the next, and the offsets already noted as having no value."""
+    waiting for the next, the offsets already noted as having no value, and the indexes of the
+    plane's two axes and where offset D's geometry and wear are kept."""
 
-    __slots__ = ("code", "noted", "on", "pending", "plane", "type_b")
+    __slots__ = ("axes", "bases", "code", "noted", "on", "pending", "plane", "type_b")
 
-    def __init__(self, code: float, plane: float, type_b: bool) -> None:
+    def __init__(
+        self, code: float, plane: float, type_b: bool, axes: tuple[int, int] = (0, 1),
+        bases: tuple[int, int] = (13000, 12000),
+    ) -> None:  # fmt: skip
         self.code = code
         self.on = False
         self.plane = plane
+        self.axes = axes  # the plane's two axes (indexes)
+        self.bases = bases  # where offset D's geometry and wear are kept (#base + D)
         self.type_b = type_b
         self.pending: Pending | None = None
         self.noted: frozenset[int] = frozenset()
 
     def copy(self) -> CutterStage:
-        c = CutterStage(self.code, self.plane, self.type_b)
+        c = CutterStage(self.code, self.plane, self.type_b, self.axes, self.bases)
         c.on, c.pending, c.noted = self.on, self.pending, self.noted
         return c
 
@@ -113,7 +120,11 @@ def cutter_code(p: Planner, group: str, g: float, line: int) -> None:
         return
     if g in (LEFT, RIGHT) and not p.lathe:
         if stage is None:
-            p.cutter = CutterStage(g, p.modal.get("plane", 17.0), p.settings.cutter_startup == "B")
+            plane = p.modal.get("plane", 17.0)
+            ij = p.times.planes.get(plane)
+            bases = p.dialect.tool_offset_bases
+            p.cutter = CutterStage(g, plane, p.settings.cutter_startup == "B", (ij[0], ij[1]) if ij else (0, 1),
+                                   (bases[2], bases[3]))  # fmt: skip
         else:
             stage.code = g
     elif stage is not None:
@@ -183,10 +194,12 @@ def cutter_move(
         element = PathElement((start[i], start[j]), (end[i], end[j]))
         return _provisional(p, line, mode, plane, element, d, start, start, end, None, feed, unit, True, i, j)
     pending = stage.pending
-    if centre is None and in_plane and mode != 0.0 and pending is not None and centre_free(stage) is not None:
-        done = _line_after_line(p, stage, pending, line, mode, plane, start, end, feed, unit, i, j)
-        if done is not None:
-            return done
+    if (centre is None and in_plane and mode != 0.0 and pending is not None and stage.code != CANCEL
+            and pending.per_length and pending.element[2] is None and not pending.startup
+            and not pending.between and plane == pending.plane):  # fmt: skip
+        seconds = _line_after_line(p, stage, pending, line, mode, start, end, feed)
+        if seconds is not None:
+            return stage.pending.path, seconds  # type: ignore[union-attr]
     if not in_plane:  # a move off the plane: made where the tool centre is
         at = (start[i], start[j]) if pending is None else _plane_point(pending.path.pieces[-1].end, i, j)
         path = CentrePath(_full(at, start, i, j), (CentrePiece(_full(at, end, i, j)),))
@@ -236,61 +249,45 @@ def straight_cut(p: Planner, file: str, line: int, mode: float, start: _Point, e
     cut under compensation, its centre path and time included, as ``Planner.record`` would;
     False, recording nothing, for any other case, which ``Planner.record`` then takes."""
     stage = p.cutter
-    if stage is None or centre_free(stage) is None or mode == 0.0:
+    if stage is None or mode == 0.0:
         return False
     pending = stage.pending
-    assert pending is not None
-    axes = p.times.planes.get(stage.plane)
-    if axes is None:
+    if (pending is None or stage.code == CANCEL or not pending.per_length or pending.element[2] is not None
+            or pending.startup or pending.between):  # fmt: skip
         return False
-    i, j = axes[0], axes[1]
-    if start[i] == end[i] and start[j] == end[j]:
-        return False
-    modal = p.modal
-    unit = 25.4 if modal.get("units") == 20.0 else 1.0
     feed = p.codes.get("F") or 0.0
-    done = _line_after_line(p, stage, pending, line, mode, modal.get("plane", 17.0), start, end, feed, unit, i, j)
+    done = _line_after_line(p, stage, pending, line, mode, start, end, feed)
     if done is None:
         return False
-    path, seconds = done
     if p.record_moves:
-        p.moves.append(_tuple_new(Move, (file, line, mode, start, end, float(feed), None, seconds, pending.plane,
-                                         None, None, None, path)))  # fmt: skip
-    p.clock += seconds
+        p.moves.append(_tuple_new(Move, (file, line, mode, start, end, float(feed), None, done, pending.plane,
+                                         None, None, None, stage.pending.path)))  # type: ignore[union-attr]  # fmt: skip
+    p.clock += done
     return True
 
 
-def centre_free(stage: CutterStage) -> Pending | None:
-    """The pending move when the next straight cut may take ``_line_after_line``: a straight cut
-    in offset mode, not the start-up, with no move off the plane after it."""
-    pending = stage.pending
-    if (pending is None or stage.code == CANCEL or not pending.per_length or pending.element.centre is not None
-            or pending.startup or pending.between):  # fmt: skip
-        return None
-    return pending
-
-
 def _line_after_line(
-    p: Planner, stage: CutterStage, pending: Pending, line: int, mode: float, plane: float, start: _Point,
-    end: _Point, feed: float, unit: float, i: int, j: int,
-) -> tuple[CentrePath, float] | None:  # fmt: skip
-    """The common case of a CAM contour, a cut after a cut, both straight, at the same offset:
-    ``offset_geometry.join``'s corner worked out in place (None: a case it leaves to the general
-    way). The same rules: a tangent needs no corner, an inside or obtuse corner ends at the
-    intersection, P + d (n1 + n2) / (1 + t1·t2) for offsets of one distance d, an acute outside one
-    goes through the two extension points."""
-    d = cutter_radius(p, line)
-    d = d if stage.code == LEFT else -d
-    if d != pending.d or mode != pending.mode or unit != pending.unit or plane != pending.plane:
-        return None
+    p: Planner, stage: CutterStage, pending: Pending, line: int, mode: float, start: _Point, end: _Point, feed: float
+) -> float | None:
+    """The common case of a CAM contour, a cut after a cut, both straight, at the same offset, in
+    the same unit and plane: ``offset_geometry.join``'s corner worked out in place, the pending
+    move put right, the new one pending in its turn; returns the new move's seconds (its path is
+    the new ``stage.pending.path``), None for a case it leaves to the general way. The same rules:
+    a tangent needs no corner, an inside or obtuse corner ends at the intersection,
+    P + d (n1 + n2) / (1 + t1·t2) for offsets of one distance d, an acute outside one goes
+    through the two extension points."""
+    i, j = stage.axes
     (ax, ay), (px, py) = pending.element[0], pending.element[1]
     ex, ey = end[i], end[j]
-    l1, l2 = hypot(px - ax, py - ay), hypot(ex - px, ey - py)
-    if l1 <= EPSILON or l2 <= EPSILON:
+    if (ex == px and ey == py) or mode != pending.mode or (INCH if p.modal["units"] == 20.0 else 1.0) != pending.unit:
         return None
+    d = _signed_radius(p, stage)
+    if d != pending.d:
+        return None
+    l1, l2 = hypot(px - ax, py - ay), hypot(ex - px, ey - py)
     t1x, t1y, t2x, t2y = (px - ax) / l1, (py - ay) / l1, (ex - px) / l2, (ey - py) / l2
     cross, dot = t1x * t2y - t1y * t2x, t1x * t2x + t1y * t2y
-    link = None
+    link = False
     if -1e-12 <= cross <= 1e-12 and dot > 0.0:
         bx, by = px - t1y * d, py + t1x * d
         cx, cy = bx, by
@@ -304,65 +301,62 @@ def _line_after_line(
         r = -d if d < 0.0 else d
         bx, by = px - t1y * d + t1x * r, py + t1x * d + t1y * r
         cx, cy = px - t2y * d - t2x * r, py + t2x * d - t2y * r
-        link = (cx, cy)
-    path0 = pending.path
-    s0 = path0[0]
+        link = True
+    s0 = pending.path[0]
     sx, sy = s0[i], s0[j]
     if (bx - sx) * t1x + (by - sy) * t1y < -EPSILON * (l1 if l1 > 1.0 else 1.0):
         _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, _reversal_message(pending.line))
-    a_end = pending.end
-    length = sqrt((bx - sx) ** 2 + (by - sy) ** 2 + pending.off_plane)
     xy = i == 0 and j == 1
-    pieces: tuple[CentrePiece, ...]
-    if link is None:
-        first = (bx, by, *a_end[2:]) if xy else _full((bx, by), a_end, i, j)
-        pieces = (_tuple_new(CentrePiece, (first, None, False)),)
-    else:
-        first, second = _full((bx, by), a_end, i, j), _full((cx, cy), a_end, i, j)
-        pieces = (_tuple_new(CentrePiece, (first, None, False)), _tuple_new(CentrePiece, (second, None, False)))
+    first = (bx, by, *start[2:]) if xy else _full((bx, by), start, i, j)
+    length = sqrt((bx - sx) ** 2 + (by - sy) ** 2 + pending.off_plane)
+    pieces: tuple[CentrePiece, ...] = (_tuple_new(CentrePiece, (first, None, False)),)
+    second = first
+    if link:
+        second = _full((cx, cy), start, i, j)
+        pieces += (_tuple_new(CentrePiece, (second, None, False)),)
         length += hypot(cx - bx, cy - by)
-    settled = _tuple_new(CentrePath, (s0, pieces))
+    unit = pending.unit
     per = pending.per_length
-    seconds_a = length * per
-    p.clock += seconds_a - pending.seconds
-    p.cut_length += (length - pending.length) * unit
+    seconds = length * per
+    p.clock += seconds - pending.seconds
     moves = p.moves
     place = pending.place
-    if 0 <= place < len(moves):
+    if 0 <= place < len(moves) and moves[place][1] == pending.line:
         old = moves[place]
-        if old[1] == pending.line:
-            moves[place] = _tuple_new(type(old), (*old[:7], seconds_a, *old[8:12], settled))
-    return _pend_line(p, stage, pending, line, (mode, plane, feed, unit), start, end, (cx, cy), (t2x, t2y, l2), d, i, j)
-
-
-def _pend_line(
-    p: Planner, stage: CutterStage, pending: Pending, line: int, how: tuple[float, float, float, float],
-    start: _Point, end: _Point, corner: tuple[float, float], t2: tuple[float, float, float], d: float, i: int, j: int,
-) -> tuple[CentrePath, float]:  # fmt: skip
-    """``_line_after_line``'s new move, pending in its turn: from the corner to its end's
-    perpendicular (``how``: its mode, plane, feed and unit; ``t2``: its direction and length)."""
-    mode, plane, feed, unit = how
-    cx, cy = corner
-    t2x, t2y, l2 = t2
-    ex, ey = end[i], end[j]
+        moves[place] = _tuple_new(Move, (*old[:7], seconds, *old[8:12], _tuple_new(CentrePath, (s0, pieces))))
+    # the new move, pending in its turn: from the corner to its end's perpendicular
     qx, qy = ex - t2y * d, ey + t2x * d
-    xy = i == 0 and j == 1
     if xy:
-        begin, finish = (cx, cy, *start[2:]), (qx, qy, *end[2:])
+        finish = (qx, qy, *end[2:])
         off_plane = dist(start[2:], end[2:]) ** 2 if len(start) > 2 else 0.0
     else:
-        begin, finish = _full((cx, cy), start, i, j), _full((qx, qy), end, i, j)
+        finish = _full((qx, qy), end, i, j)
         off_plane = max(dist(start, end) ** 2 - l2 * l2, 0.0)
     length_b = sqrt((qx - cx) ** 2 + (qy - cy) ** 2 + off_plane)
-    per = pending.per_length if feed == pending.feed else p.feed_seconds(mode, 1.0, feed, start, end, unit)
+    if feed != pending.feed:
+        per = p.feed_seconds(mode, 1.0, feed, start, end, unit)
     seconds_b = length_b * per
-    p.cut_length += length_b * unit
-    path = _tuple_new(CentrePath, (begin, (_tuple_new(CentrePiece, (finish, None, False)),)))
-    element = _tuple_new(PathElement, ((start[i], start[j]), (ex, ey), None, False))
-    place = len(p.moves) if p.record_moves else -1
-    stage.pending = _tuple_new(Pending, (place, line, mode, feed, unit, plane, start, end, element, d, path, seconds_b,
-                                         False, (), per, length_b, off_plane))  # fmt: skip
-    return path, seconds_b
+    p.cut_length += (length - pending.length + length_b) * unit
+    path = _tuple_new(CentrePath, (second, (_tuple_new(CentrePiece, (finish, None, False)),)))
+    stage.pending = _tuple_new(Pending, (len(moves) if p.record_moves else -1, line, mode, feed, unit, pending.plane,
+                                         start, end, _tuple_new(PathElement, ((px, py), (ex, ey), None, False)), d,
+                                         path, seconds_b, False, (), per, length_b, off_plane))  # fmt: skip
+    return seconds_b
+
+
+def _signed_radius(p: Planner, stage: CutterStage) -> float | None:
+    """The radius of the D in force, signed for the side (left positive), read as
+    ``cutter_radius`` reads it; None for a D without a value (``cutter_radius`` notes it)."""
+    n = p.codes.get("D")
+    if not n or n <= 0:
+        return None
+    geometry, wear = stage.bases
+    stored = p.host.stored
+    g, w = stored(geometry + int(n)), stored(wear + int(n))
+    if g is None and w is None:
+        return None
+    d = (g or 0.0) + (w or 0.0)
+    return d if stage.code == LEFT else -d
 
 
 def _reversal_message(line: int) -> str:
