@@ -277,3 +277,19 @@ def test_run_json_moves_carry_the_centre_path(tmp_path: Path) -> None:
     assert [(pc["to"]["X"], pc["to"]["Y"]) for pc in path["pieces"]] == [pytest.approx((55.0, 55.0))]
     assert "tool_path" not in out["moves"][0]
     json.dumps(out)
+
+
+def test_g28_in_offset_mode_is_made_as_programmed_and_the_offset_starts_again_after_it() -> None:
+    # radius 5, tool left, +X to (20,0), then G28 by Z: its moves have no centre path; the next
+    # move in the plane, +Y from (20,0) to (20,20), starts the offset again from the programmed
+    # point; the block after it is the cancel (+X, to (40,20)), a right turn, outside for a left
+    # tool: type A starts the cancel on the perpendicular of the block before it, left of +Y at
+    # (20,20): (15,20)
+    m = run(lines("O0001", *radius(5.0), "G90 G17 G00 X-10. Y0", "G41 D1 G01 X0 F100", "X20.", "G28 Z10.",
+                  "G01 Y20.", "G40 X40.", "M30"))  # fmt: skip
+    assert m.status == "completed", m.alarm
+    pts = centre_points(m)
+    assert [mv.line + 1 for mv in m.planner.moves] == [3, 4, 5, 6, 6, 7, 8]
+    assert pts[3] is None and pts[4] is None  # G28's two moves
+    assert same(pts[5], [(20.0, 0.0), (15.0, 20.0)])
+    assert same(pts[2], [(0.0, 5.0), (20.0, 5.0)])  # the move before G28 ends on its perpendicular

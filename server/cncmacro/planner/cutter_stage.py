@@ -20,8 +20,9 @@ notes the run goes past.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from math import dist, hypot, sqrt
-from typing import TYPE_CHECKING, NamedTuple
+from typing import TYPE_CHECKING, NamedTuple, TypeVar
 
 from ..bilingual import detail
 from ..dialects.alarms import CUTTER_ARC_START, CUTTER_INTERFERENCE, CUTTER_NO_INTERSECTION, CUTTER_PLANE
@@ -48,6 +49,7 @@ if TYPE_CHECKING:
     from .planner import Planner
 
 LEFT, RIGHT, CANCEL = 41.0, 42.0, 40.0
+_T = TypeVar("_T")
 _MOVE_MODES = frozenset((0.0, 1.0, 2.0, 3.0))
 _Point = tuple[float, ...]
 
@@ -117,6 +119,9 @@ def cutter_code(p: Planner, group: str, g: float, line: int) -> None:
                      detail(f"G{g:g} changes the plane while cutter radius compensation (G41/G42) is on: cancel it "
                             "with G40 first",
                             f"刀具半径补偿（G41/G42）有效时用 G{g:g} 变更了平面：请先用 G40 取消补偿"))  # fmt: skip
+        elif stage is not None and not stage.on:  # before the start-up: the plane it starts in
+            ij = p.times.planes.get(g)
+            stage.plane, stage.axes = g, (ij[0], ij[1]) if ij else (0, 1)
         return
     if g in (LEFT, RIGHT) and not p.lathe:
         if stage is None:
@@ -131,6 +136,27 @@ def cutter_code(p: Planner, group: str, g: float, line: int) -> None:
         stage.code = CANCEL
         if not stage.on:
             p.cutter = None
+
+
+# the one-shot codes whose moves are made as programmed, the offset taken up again from the
+# programmed point at the next move in the plane (FANUC: G28 "cancels the offset vector at the
+# intermediate position"; G30, G53 and the skip G31 likewise here)
+UNCOMPENSATED_CODES = frozenset((28.0, 30.0, 31.0, 53.0))
+
+
+def uncompensated(p: Planner, run: Callable[[], _T]) -> _T:
+    """``run`` (a one-shot code's moves) with compensation set aside: the pending move keeps its
+    path to the perpendicular of its end, the moves of ``run`` are drawn as programmed, and the
+    next move in the plane starts the offset again (a start-up from where the tool is)."""
+    stage = p.cutter
+    p.cutter = None
+    try:
+        return run()
+    finally:
+        if stage is not None:
+            stage.on = False
+            stage.pending = None
+            p.cutter = stage if stage.code != CANCEL else None
 
 
 def cutter_radius(p: Planner, line: int) -> float:

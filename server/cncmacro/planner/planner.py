@@ -25,7 +25,7 @@ from ..bilingual import detail
 from .arc_checks import arc_finding
 from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
-from .cutter_stage import CutterStage, cutter_move, restore_pending
+from .cutter_stage import UNCOMPENSATED_CODES, CutterStage, cutter_move, restore_pending, uncompensated
 from .cycle_time import INCH, SPEED_CLAMP, MoveTimes
 from .drill_cycles import drill_block
 from .lathe_cycles import ShapeCall, ShapeReading
@@ -253,6 +253,8 @@ class Planner:
         if one is not None:
             if one != 4.0 and self.cycle_params:
                 forget_single_cycle(self)
+            if self.cutter is not None and one in UNCOMPENSATED_CODES:  # cutter_stage.py
+                return uncompensated(self, lambda: one_shot(self, one, axes, incremental, other, file, line))
             return one_shot(self, one, axes, incremental, other, file, line)
         mode = self.modal.get("motion", 0.0)
         canned = self.modal.get("canned", 80.0)
