@@ -16,6 +16,7 @@ import pytest
 
 from cli_capture import run_json
 from cncmacro.dialects.alarms import CUTTER_ARC_START, CUTTER_INTERFERENCE, CUTTER_PLANE
+from cncmacro.library.machine_file import MachineFileError, MachineSettings, settings_from_mapping
 from running import lines, run
 
 MILLS = ["fanuc", "fanuc-30i", "haas"]
@@ -293,3 +294,21 @@ def test_g28_in_offset_mode_is_made_as_programmed_and_the_offset_starts_again_af
     assert pts[3] is None and pts[4] is None  # G28's two moves
     assert same(pts[5], [(20.0, 0.0), (15.0, 20.0)])
     assert same(pts[2], [(0.0, 5.0), (20.0, 5.0)])  # the move before G28 ends on its perpendicular
+
+
+def test_a_haas_keeping_diameters_offsets_by_half_of_d() -> None:
+    # the machine file's cutter_offset = "diameter" (Haas Setting 40): #2401 = 10 is a radius of 5,
+    # the outside square's corner at (-5,55) as with a radius of 5 on FANUC
+    m = run(lines("O0001", "G10 L12 P1 R10.", *SQUARE), "haas", cutter_offset="diameter")
+    assert m.status == "completed", m.alarm
+    assert same(centre_points(m)[3], [(-5.0, 55.0), (55.0, 55.0)])
+
+
+def test_the_machine_file_reads_the_start_up_type_and_what_d_holds() -> None:
+    s = settings_from_mapping({"cutter_startup": "B", "cutter_offset": "diameter"})
+    assert (s.cutter_startup, s.cutter_offset) == ("B", "diameter")
+    assert (MachineSettings().cutter_startup, MachineSettings().cutter_offset) == ("A", "radius")
+    with pytest.raises(MachineFileError, match=r'cutter_startup.*"A" or "B"'):
+        settings_from_mapping({"cutter_startup": "C"})
+    with pytest.raises(MachineFileError, match=r'cutter_offset.*"radius" or "diameter"'):
+        settings_from_mapping({"cutter_offset": 5})

@@ -160,8 +160,9 @@ def uncompensated(p: Planner, run: Callable[[], _T]) -> _T:
 
 
 def cutter_radius(p: Planner, line: int) -> float:
-    """The radius offset D in force holds: its geometry plus its wear, 0 for D0 (no D yet) or an
-    offset the run has no value for (noted once per offset number)."""
+    """The radius offset D in force holds: its geometry plus its wear (half of it where the machine
+    file's ``cutter_offset`` says the offsets hold diameters), 0 for D0 (no D yet) or an offset
+    the run has no value for (noted once per offset number)."""
     d = p.codes.get("D")
     n = int(d) if d is not None else 0
     if n <= 0:
@@ -178,7 +179,8 @@ def cutter_radius(p: Planner, line: int) -> float:
                 f"本次运行中 D{n} 没有数值（#{geometry + n}、#{wear + n}）：刀具中心按编程轨迹绘制；"
                 "请在机床文件的 [variables] 中或用 G10 L12 给出该补偿值"), line, "cutter-offset")  # fmt: skip
         return 0.0
-    return (g or 0.0) + (w or 0.0)
+    value = (g or 0.0) + (w or 0.0)
+    return value * 0.5 if p.settings.cutter_offset == "diameter" else value
 
 
 def _finding(p: Planner, number: int, subject: str, line: int, message: str) -> None:
@@ -382,6 +384,8 @@ def _signed_radius(p: Planner, stage: CutterStage) -> float | None:
     if g is None and w is None:
         return None
     d = (g or 0.0) + (w or 0.0)
+    if p.settings.cutter_offset == "diameter":
+        d *= 0.5
     return d if stage.code == LEFT else -d
 
 
