@@ -256,7 +256,7 @@ CODES: dict[str, Code] = _codes(
                 "control has no such alarm).",
                 "刀具半径补偿有效时用 G17/G18/G19 变更了平面（PS0037；系统无此报警时为警告）。"),
          RUN, (CUTTER_PLANE,), ("cutter-plane",), milder=WARNING),
-    Code("cutter-offset", WARNING,
+    Code("cutter-offset", HINT,
          detail("G41/G42 with a D whose offset has no value in the run: the tool centre is drawn on the programmed "
                 "path.",
                 "G41/G42 所用 D 的补偿值在本次运行中没有数值：刀具中心按编程轨迹绘制。"), RUN),
