@@ -312,3 +312,20 @@ def test_the_machine_file_reads_the_start_up_type_and_what_d_holds() -> None:
         settings_from_mapping({"cutter_startup": "C"})
     with pytest.raises(MachineFileError, match=r'cutter_offset.*"radius" or "diameter"'):
         settings_from_mapping({"cutter_offset": 5})
+
+
+def test_the_run_of_plain_lines_and_the_general_path_give_the_same_centre_path() -> None:
+    # the outside square with an acute corner added, once as plain lines (the one-pass run of
+    # plain lines, cutter_stage.straight_cut) and once with its coordinates in variables (each
+    # block through Planner.execute_nc and Planner.record): the same centre points and time
+    plain = ["G90 G17 G00 X-20. Y-20.", "G41 D1 G01 X0 Y0 F100", "Y50.", "X50.", "X10. Y30.", "X60. Y0", "X0",
+             "G40 X-20. Y-20.", "M30"]  # fmt: skip
+    by_variables = ["#1=50.", "#2=10.", "#3=30.", "#4=60.", *plain[:3], "X#1", "X#2 Y#3", "X#4 Y0", *plain[6:]]
+    a = run(lines("O0001", *radius(5.0), *plain))
+    b = run(lines("O0001", *radius(5.0), *by_variables))
+    assert a.status == b.status == "completed"
+    pa, pb = centre_points(a), centre_points(b)
+    assert len(pa) == len(pb)
+    for x, y in zip(pa, pb, strict=True):
+        assert (x is None and y is None) or same(x, y or [])
+    assert a.planner.clock == pytest.approx(b.planner.clock)
