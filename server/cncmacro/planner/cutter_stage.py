@@ -305,7 +305,9 @@ def _line_after_line(
     P + d (n1 + n2) / (1 + t1·t2) for offsets of one distance d, an acute outside one goes
     through the two extension points."""
     i, j = stage.axes
-    (ax, ay), (px, py) = pending.element[0], pending.element[1]
+    element = pending.element
+    p_point = element[1]
+    (ax, ay), (px, py) = element[0], p_point
     ex, ey = end[i], end[j]
     if (ex == px and ey == py) or mode != pending.mode or (INCH if p.modal["units"] == 20.0 else 1.0) != pending.unit:
         return None
@@ -354,12 +356,10 @@ def _line_after_line(
         moves[place] = _tuple_new(Move, (*old[:7], seconds, *old[8:12], _tuple_new(CentrePath, (s0, pieces))))
     # the new move, pending in its turn: from the corner to its end's perpendicular
     qx, qy = ex - t2y * d, ey + t2x * d
-    if xy:
-        finish = (qx, qy, *end[2:])
-        off_plane = dist(start[2:], end[2:]) ** 2 if len(start) > 2 else 0.0
-    else:
-        finish = _full((qx, qy), end, i, j)
-        off_plane = max(dist(start, end) ** 2 - l2 * l2, 0.0)
+    finish = (qx, qy, *end[2:]) if xy else _full((qx, qy), end, i, j)
+    off_plane = dist(start, end) ** 2 - l2 * l2
+    if off_plane < 1e-9:  # in the plane (but for the rounding of the squares)
+        off_plane = 0.0
     length_b = sqrt((qx - cx) ** 2 + (qy - cy) ** 2 + off_plane)
     if feed != pending.feed:
         per = p.feed_seconds(mode, 1.0, feed, start, end, unit)
@@ -367,7 +367,7 @@ def _line_after_line(
     p.cut_length += (length - pending.length + length_b) * unit
     path = _tuple_new(CentrePath, (second, (_tuple_new(CentrePiece, (finish, None, False)),)))
     stage.pending = _tuple_new(Pending, (len(moves) if p.record_moves else -1, line, mode, feed, unit, pending.plane,
-                                         start, end, _tuple_new(PathElement, ((px, py), (ex, ey), None, False)), d,
+                                         start, end, _tuple_new(PathElement, (p_point, (ex, ey), None, False)), d,
                                          path, seconds_b, False, (), per, length_b, off_plane))  # fmt: skip
     return seconds_b
 
