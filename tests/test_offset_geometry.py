@@ -161,3 +161,8 @@ def test_an_arc_whose_ends_crossed_over_is_interference() -> None:
 
     assert reverses(arc, Arc(at(50), at(40), (0.0, 0.0), True))
     assert not reverses(arc, Arc(at(10), at(80), (0.0, 0.0), True))
+
+
+def test_an_arc_of_no_radius_has_no_offset() -> None:
+    # G02 X0 Y0 I0 J0 from X0 Y0: the centre on the start, radius 0: nothing to offset (no crash)
+    assert offset_element(Arc((0.0, 0.0), (0.0, 0.0), (0.0, 0.0), False), 2.0) is None

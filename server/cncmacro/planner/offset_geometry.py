@@ -82,13 +82,16 @@ def _shift(p: Point, t: Point, d: float) -> Point:
 
 def offset_element(s: PathElement, d: float) -> PathElement | None:
     """``s`` moved ``d`` to the left of its direction of travel (right when ``d`` is negative);
-    None for an arc whose offset radius would be zero or less: the tool does not fit inside it."""
+    None for an arc whose offset radius would be zero or less (the tool does not fit inside it)
+    and for an arc of no radius."""
     if s.centre is None:
         t = start_direction(s)
         return PathElement(_shift(s.start, t, d), _shift(s.end, t, d))
     cx, cy = s.centre
     r0 = hypot(s.start[0] - cx, s.start[1] - cy)
     r1 = hypot(s.end[0] - cx, s.end[1] - cy)
+    if r0 <= EPSILON or r1 <= EPSILON:  # an arc of no radius: nothing to offset
+        return None
     # the centre is on the left of a counterclockwise arc: an offset to the left shrinks it
     k0 = (r0 - d) / r0 if s.ccw else (r0 + d) / r0
     k1 = (r1 - d) / r1 if s.ccw else (r1 + d) / r1
