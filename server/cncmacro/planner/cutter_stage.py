@@ -168,8 +168,8 @@ def cutter_radius(p: Planner, line: int) -> float:
     if n <= 0:
         return 0.0
     geometry, wear = p.dialect.tool_offset_bases[2:4]
-    g, w = p.host.stored(geometry + n), p.host.stored(wear + n)
-    if g is None and w is None:
+    value = stored_radius(p, (geometry, wear), n)
+    if value is None:
         stage = p.cutter
         if stage is not None and n not in stage.noted:
             stage.noted = stage.noted | {n}
@@ -179,6 +179,16 @@ def cutter_radius(p: Planner, line: int) -> float:
                 f"本次运行中 D{n} 没有数值（#{geometry + n}、#{wear + n}）：刀具中心按编程轨迹绘制；"
                 "请在机床文件的 [variables] 中或用 G10 L12 给出该补偿值"), line, "cutter-offset")  # fmt: skip
         return 0.0
+    return value
+
+
+def stored_radius(p: Planner, bases: tuple[int, int], n: int) -> float | None:
+    """Offset ``n``'s radius from its geometry and wear at ``bases`` (``#base + n``), halved where
+    the machine file's ``cutter_offset`` says they hold diameters; None when neither has a value."""
+    stored = p.host.stored
+    g, w = stored(bases[0] + n), stored(bases[1] + n)
+    if g is None and w is None:
+        return None
     value = (g or 0.0) + (w or 0.0)
     return value * 0.5 if p.settings.cutter_offset == "diameter" else value
 
@@ -378,14 +388,9 @@ def _signed_radius(p: Planner, stage: CutterStage) -> float | None:
     n = p.codes.get("D")
     if not n or n <= 0:
         return None
-    geometry, wear = stage.bases
-    stored = p.host.stored
-    g, w = stored(geometry + int(n)), stored(wear + int(n))
-    if g is None and w is None:
+    d = stored_radius(p, stage.bases, int(n))
+    if d is None:
         return None
-    d = (g or 0.0) + (w or 0.0)
-    if p.settings.cutter_offset == "diameter":
-        d *= 0.5
     return d if stage.code == LEFT else -d
 
 
