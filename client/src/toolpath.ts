@@ -213,6 +213,11 @@ class ToolpathPanel implements vscode.Disposable, DebugPathListener {
         contact: vscode.l10n.t('contact point: where the skip signal came on'),
         spindle: vscode.l10n.t('spindle axis (centre line, X0)'),
         mirror: vscode.l10n.t('the other half, mirrored'),
+        centre: vscode.l10n.t('tool centre (cutter compensation G41/G42)'),
+      },
+      centre: {
+        button: vscode.l10n.t('Tool centre'),
+        tip: vscode.l10n.t("Show or hide the tool centre's path under cutter radius compensation"),
       },
       passOf: vscode.l10n.t('pass of {0}'),
       lathe: {

@@ -3,7 +3,9 @@
  * plane it is drawn in, each move turned into SVG path data in that plane, the extents, and
  * grid lines at round numbers. What each move is comes from the run: its `kind` (rapid, feed,
  * arc, probe, cycle), an arc's `plane`, `centre` and direction, a cycle's `legs`, a drilled
- * `hole` and the cycle a lathe pass belongs to (`pass_of`). Nothing here knows a G code, and
+ * `hole`, the cycle a lathe pass belongs to (`pass_of`) and, under cutter radius compensation,
+ * where the tool's centre goes (`tool_path`: drawn beside the programmed path, as the run gives
+ * it: its pieces straight or arcs about their centres). Nothing here knows a G code, and
  * nothing here knows VS Code; the webview's page is built from what it returns.
  *
  * A mill is drawn in XY, ZX or YZ. A lathe (the run says so: `lathe` and `lathe_axes`, from
@@ -23,6 +25,19 @@ const MOVE_KINDS: readonly string[] = ['rapid', 'feed', 'arc', 'cycle', 'probe']
 export interface RunLeg {
   rapid: boolean;
   to: Axes;
+}
+
+/** One piece of a move's tool-centre path (`tool_path`): straight to `to`, or an arc about `centre`. */
+export interface RunCentrePiece {
+  to: Axes;
+  centre?: Axes;
+  clockwise?: boolean;
+}
+
+/** Where the tool's centre goes during a move under cutter radius compensation: from `from`, piece by piece. */
+export interface RunToolPath {
+  from: Axes;
+  pieces: RunCentrePiece[];
 }
 
 export interface RunMove {
@@ -45,6 +60,8 @@ export interface RunMove {
   skip?: boolean;
   /** a lathe cycle's pass: the cycle it belongs to, as the run names it */
   passOf?: string;
+  /** under cutter radius compensation: where the tool's centre goes */
+  toolPath?: RunToolPath;
 }
 
 /** A lathe's axes as the run names them: the spindle's (drawn across), the radial one (drawn
@@ -111,6 +128,8 @@ export interface DrawnMove {
   hole?: [number, number];
   /** where a G31 stopped with the skip signal on (the contact point), in screen units */
   contact?: [number, number];
+  /** the tool centre's path under cutter radius compensation: SVG path data in screen units */
+  centre?: string;
 }
 
 export interface Tick {
@@ -192,6 +211,11 @@ export function parseRunResult(text: string): RunResult | string {
     if (hole) move.hole = hole;
     if (typeof o.skip === 'boolean') move.skip = o.skip;
     if (typeof o.pass_of === 'string') move.passOf = o.pass_of;
+    if (o.tool_path !== undefined) {
+      const toolPath = parseToolPath(o.tool_path);
+      if (!toolPath) return `the tool centre path of a move is malformed: ${JSON.stringify(o.tool_path).slice(0, 200)}`;
+      move.toolPath = toolPath;
+    }
     moves.push(move);
   }
   let alarm: RunAlarm | null = null;
@@ -215,6 +239,26 @@ export function parseRunResult(text: string): RunResult | string {
 }
 
 /** A lathe's axes as the run sends them (`lathe_axes`); undefined when absent or malformed. */
+/** A move's `tool_path`, checked; undefined when it is malformed. */
+function parseToolPath(raw: unknown): RunToolPath | undefined {
+  if (raw === null || typeof raw !== 'object') return undefined;
+  const t = raw as Record<string, unknown>;
+  const from = axesOf(t.from);
+  if (!from || !Array.isArray(t.pieces)) return undefined;
+  const pieces: RunCentrePiece[] = [];
+  for (const p of t.pieces as unknown[]) {
+    const piece = (p ?? {}) as Record<string, unknown>;
+    const to = axesOf(piece.to);
+    if (!to) return undefined;
+    const drawn: RunCentrePiece = { to };
+    const centre = axesOf(piece.centre);
+    if (centre) drawn.centre = centre;
+    if (typeof piece.clockwise === 'boolean') drawn.clockwise = piece.clockwise;
+    pieces.push(drawn);
+  }
+  return { from, pieces };
+}
+
 export function parseLatheAxes(raw: unknown): LatheAxes | undefined {
   if (raw === null || typeof raw !== 'object') return undefined;
   const a = raw as Record<string, unknown>;
@@ -337,6 +381,25 @@ function legsOf(move: RunMove, view: View): { points: P3[]; dashed: boolean }[] 
   return [{ points: [s, e], dashed: move.kind === 'rapid' }];
 }
 
+/** The points of a move's tool-centre path (before projection), an arc piece sampled as the
+ * move's own arc is, in the move's plane; none without compensation. */
+function centreOf(move: RunMove, view: View): P3[] | undefined {
+  const tp = move.toolPath;
+  if (!tp) return undefined;
+  const points: P3[] = [display(tp.from, view)];
+  let from = tp.from;
+  for (const piece of tp.pieces) {
+    const arc = piece.centre
+      ? legsOf({ ...move, kind: 'arc', from, to: piece.to, centre: piece.centre, clockwise: piece.clockwise === true,
+                 legs: undefined }, view)[0]
+      : undefined;
+    if (arc) points.push(...arc.points.slice(1));
+    else points.push(display(piece.to, view));
+    from = piece.to;
+  }
+  return points;
+}
+
 /** A round step (1, 2 or 5 times a power of ten) that cuts `span` into about `count` parts. */
 export function niceStep(span: number, count: number): number {
   const raw = span / count;
@@ -363,15 +426,17 @@ export function formatNumber(n: number): string {
 /** The plot of `moves` in `view`, `size` screen units across the longer side. */
 export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000): Plot {
   const legs = moves.map((m) => legsOf(m, view));
+  const centres = moves.map((m) => centreOf(m, view));
   const mirrored = view.lathe?.bothHalves === true; // the other half: every point at minus its radial value
   const project = (p: P3): [number, number] => [get(p, view.h), get(p, view.v)];
   let x0 = 0;
   let x1 = 0;
   let y0 = 0;
   let y1 = 0; // the origin is always in the picture
-  for (const move of legs) {
-    for (const leg of move) {
-      for (const p of leg.points) {
+  const everyPoint = [...legs.map((move) => move.map((leg) => leg.points)), centres.map((c) => c ?? [])];
+  for (const move of everyPoint) {
+    for (const points of move) {
+      for (const p of points) {
         const [x, y] = project(p);
         x0 = Math.min(x0, x);
         x1 = Math.max(x1, x);
@@ -431,6 +496,8 @@ export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000):
       const [x, y] = project(display(move.to, view));
       d.contact = [sx(x), sy(y)];
     }
+    const centre = centres[index];
+    if (centre) d.centre = centre.map((p, i) => `${i === 0 ? 'M' : 'L'}${pt(p)}`).join(' ');
     return d;
   });
   const step = niceStep(Math.max(w, h), 8); // one step on both axes: the scales are equal

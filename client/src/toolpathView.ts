@@ -7,6 +7,10 @@
  * (radius or diameter) and `bothHalves` to the extension, and zooms (mouse wheel) and pans (drag)
  * by changing the SVG's viewBox. The texts arrive translated.
  *
+ * Under cutter radius compensation each move also has the tool centre's path (`DrawnMove.centre`),
+ * drawn thin in a colour of its own beside the programmed path; the "Tool centre" button hides
+ * and shows it, in the page alone (nothing is posted), and the page keeps that choice.
+ *
  * A lathe's drawing has its spindle's centre line across it, dash-dotted, and, with both halves
  * on, every move again mirrored about that line, faint and not clickable.
  *
@@ -49,7 +53,10 @@ export interface Texts {
     contact: string;
     spindle: string; // a lathe's centre line
     mirror: string; // a lathe's other half, mirrored
+    centre?: string; // the tool centre's path under cutter radius compensation
   };
+  /** the button that hides and shows the tool centre's path, and its tooltip */
+  centre?: { button: string; tip: string };
   /** a lathe cycle's pass in a move's tooltip: "pass of {0}", {0} the cycle as the run names it */
   passOf: string;
   /** a lathe's buttons: the radial scale in radii or diameters, and the mirrored half */
@@ -96,9 +103,9 @@ export function moveText(move: RunMove, passOf = '{0}'): string {
 
 const STYLE = `
 :root { --rapid: #ffa94d; --feed: #74c0fc; --arc: #63e6be; --cycle: #e599f7; --alarm: #ff6b6b; --current: #ffe066;
-  --probe: #b197fc; --grid: rgba(128,128,128,0.16); --axis: rgba(160,160,160,0.75); }
+  --probe: #b197fc; --centre: #f783ac; --grid: rgba(128,128,128,0.16); --axis: rgba(160,160,160,0.75); }
 body.vscode-light { --rapid: #d9480f; --feed: #1864ab; --arc: #087f5b; --cycle: #ae3ec9; --alarm: #c92a2a; --current: #e8590c;
-  --probe: #7048e8;
+  --probe: #7048e8; --centre: #c2255c;
   --grid: rgba(0,0,0,0.09); --axis: rgba(0,0,0,0.5); }
 body { margin: 0; padding: 0; color: var(--vscode-foreground); background: var(--vscode-editor-background);
   font-family: var(--vscode-font-family); font-size: var(--vscode-font-size); height: 100vh;
@@ -140,6 +147,9 @@ text.axis-name.v { transform: translateY(calc(var(--u) * -${LABEL.vNameAbove}px)
 .move .contact { fill: var(--probe); stroke: var(--vscode-editor-background); stroke-width: 1; vector-effect: non-scaling-stroke; }
 .move:hover .leg, .move.selected .leg { stroke-width: 3.5; }
 .move.selected .leg { stroke: var(--vscode-editor-foreground); }
+.move .centre, #legend .centre { fill: none; stroke: var(--centre); stroke-width: 1.2; stroke-dasharray: 6 2 1 2;
+  vector-effect: non-scaling-stroke; pointer-events: none; }
+body.hide-centre .move .centre { display: none; }
 .spindle { stroke: var(--axis); stroke-width: 1.2; stroke-dasharray: 14 3 2 3; vector-effect: non-scaling-stroke; }
 .mirror { opacity: 0.3; pointer-events: none; }
 .origin { fill: var(--vscode-foreground); stroke: var(--vscode-foreground); stroke-width: 1.2; vector-effect: non-scaling-stroke; }
@@ -171,6 +181,17 @@ const svg = document.getElementById('plot');
 for (const b of document.querySelectorAll('button[data-post]')) {
   b.addEventListener('click', () => vscode.postMessage({ type: b.dataset.post, plane: b.dataset.plane, value: b.dataset.value }));
 }
+// the tool centre's path: shown or hidden in the page, the choice kept with the page's state
+const centreButton = document.getElementById('centre-path');
+if (centreButton) {
+  const show = (on) => {
+    document.body.classList.toggle('hide-centre', !on);
+    centreButton.classList.toggle('on', on);
+    vscode.setState({ ...(vscode.getState() || {}), hideCentre: !on });
+  };
+  show(!(vscode.getState() || {}).hideCentre);
+  centreButton.addEventListener('click', () => show(document.body.classList.contains('hide-centre')));
+}
 if (svg) {
   const base = svg.getAttribute('viewBox');
   const parse = (s) => s.split(/\\s+/).map(Number);
@@ -192,7 +213,7 @@ if (svg) {
     svg.setAttribute('viewBox', vb.join(' '));
     const r = svg.getBoundingClientRect();
     if (r.width > 0 && r.height > 0) svg.style.setProperty('--u', String(Math.max(vb[2] / r.width, vb[3] / r.height)));
-    vscode.setState({ base, vb, zoomed });
+    vscode.setState({ ...(vscode.getState() || {}), base, vb, zoomed });
   };
   const toSvg = (e) => {
     const m = svg.getScreenCTM();
@@ -375,6 +396,7 @@ function drawing(plot: Plot, moves: RunMove[], view: View, texts: Texts, debug?:
     const d = drawn.legs.map((l) => l.d).join(' ');
     out.push(`<g class="move ${drawn.kind}${pausedClass(drawn.index, debug)}" data-index="${drawn.index}" data-line="${move.line}"><title>${escapeHtml(title)}</title>`);
     for (const leg of drawn.legs) out.push(`<path class="leg${leg.dashed ? ' dashed' : ''}" d="${leg.d}"/>`);
+    if (drawn.centre) out.push(`<path class="centre" d="${drawn.centre}"/>`);
     if (drawn.hole) {
       const [x, y] = drawn.hole;
       out.push(`<circle class="hole" cx="${n(x)}" cy="${n(y)}" r="${hr}"/>`);
@@ -431,6 +453,9 @@ function legend(texts: Texts, plot: Plot, debug?: PausedPage): string {
     items.push(
       `<li><svg viewBox="0 0 36 12"><g class="move cycle"><circle class="hole" cx="18" cy="6" r="4.5"/></g></svg>${escapeHtml(l.hole)}</li>`,
     );
+  }
+  if (l.centre && plot.moves.some((m) => m.centre)) {
+    items.push(`<li><svg viewBox="0 0 36 12"><path class="centre" d="M2 6 L34 6"/></svg>${escapeHtml(l.centre)}</li>`);
   }
   if (plot.spindle !== undefined) {
     items.push(`<li><svg viewBox="0 0 36 12"><line class="spindle" x1="0" y1="6" x2="36" y2="6"/></svg>${escapeHtml(l.spindle)}</li>`);
@@ -489,9 +514,13 @@ export function toolpathHtml(page: Page, nonceValue: string): string {
         `<button id="both-halves" data-post="bothHalves" title="${escapeHtml(t.lathe.bothHalvesTip)}"` +
         `${lathe.bothHalves ? ' class="on"' : ''}>${escapeHtml(t.lathe.bothHalves)}</button>`
       : '';
+  const centreButton =
+    t.centre && page.plot?.moves.some((m) => m.centre)
+      ? `<button id="centre-path" class="on" title="${escapeHtml(t.centre.tip)}">${escapeHtml(t.centre.button)}</button>`
+      : '';
   const body: string[] = [
     `<header><button id="refresh" data-post="refresh">${escapeHtml(t.refresh)}</button>`,
-    page.plot ? `<button id="fit">${escapeHtml(t.fit)}</button>${planeButtons}${latheButtons}` : '',
+    page.plot ? `<button id="fit">${escapeHtml(t.fit)}</button>${planeButtons}${latheButtons}${centreButton}` : '',
     `<span class="source">${escapeHtml(t.source)}</span>`,
     page.plot ? `<span class="hint">${escapeHtml(t.hint)}</span>` : '',
     '</header>',

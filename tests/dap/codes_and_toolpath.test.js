@@ -12,6 +12,7 @@ const dc = clientPerTest();
 const PROGRAM = program('tool_changes.nc');
 const STOP_AND_DRILL = program('stop_and_drill.nc');
 const LATHE_ROUGH = program('lathe_rough.nc');
+const CUTTER_SQUARE = program('cutter_square.nc');
 
 async function continueTo() {
   const stopped = dc.waitForEvent('stopped');
@@ -123,6 +124,23 @@ describe('the toolpath of a paused run', () => {
     path = await toolpath();
     assert.deepEqual([path.line, path.moves.length, path.current[0].line], [7, 3, 7]);
     assert.equal(await dc.value('#1'), '2'); // looking ahead ran nothing for good
+  });
+
+  test('under cutter radius compensation the moves carry the tool centre path', async () => {
+    // cutter_square.nc: radius 5, the tool left of a clockwise square, outside. Paused at line 7
+    // (Y0): the side of line 5 (Y50.) has both its corners, on x = -5 from y = 2.071 to 55; the
+    // side of line 6 (X50.), the last run, ends for now on the perpendicular of its end, left of +X
+    // at (50,50): (50,55), the block after it not run yet
+    await dc.begin({ program: CUTTER_SQUARE }, { breakpoints: { 'cutter_square.nc': [{ line: 7 }] } });
+    const path = await toolpath();
+    assert.deepEqual(path.moves.map((m) => m.line), [3, 4, 5, 6]);
+    assert.equal(path.moves[0].tool_path, undefined);
+    const round = (p) => [Math.round(p.X * 1000) / 1000, Math.round(p.Y * 1000) / 1000];
+    const points = (m) => [round(m.tool_path.from), ...m.tool_path.pieces.map((p) => round(p.to))];
+    assert.deepEqual(points(path.moves[2]), [[-5, 2.071], [-5, 55]]);
+    assert.deepEqual(points(path.moves[3]), [[-5, 55], [50, 55]]);
+    assert.deepEqual(path.current.map((m) => m.line), [7]);
+    assert.ok(path.current[0].tool_path, 'the current block is looked at under compensation too');
   });
 
   test('a limit sends only the first moves run, and counts them all', async () => {

@@ -22,6 +22,10 @@ from ..dialects.alarms import (
     ARGUMENT_RANGE,
     BRACKET_NESTING,
     COUNT_TWICE,
+    CUTTER_ARC_START,
+    CUTTER_INTERFERENCE,
+    CUTTER_NO_INTERSECTION,
+    CUTTER_PLANE,
     CYCLE_BAD_VALUE,
     CYCLE_BLOCK_NOT_FOUND,
     CYCLE_P_Q_MISSING,
@@ -240,6 +244,26 @@ CODES: dict[str, Code] = _codes(
     Code("arc-r-full-circle", WARNING,
          detail("An R arc whose end point is its start: the control makes no move; a full circle takes I, J or K.",
                 "R 圆弧的终点就是起点：系统不移动；整圆须用 I、J 或 K。"), RUN),
+    Code("cutter-arc", ERROR,
+         detail("Cutter radius compensation started or cancelled on a G02/G03 arc (PS0034).",
+                "在 G02/G03 圆弧上建立或取消刀具半径补偿（PS0034）。"),
+         RUN, (CUTTER_ARC_START,), ("cutter-arc",)),
+    Code("cutter-interference", ERROR,
+         detail("Under G41/G42 the tool centre's path runs against a programmed block, the cutter is larger than "
+                "an inside arc, or an inside corner's offsets do not meet (PS0041, PS0033; a warning where the "
+                "control has no such alarm).",
+                "G41/G42 下刀具中心轨迹与编程轨迹方向相反、刀具大于内侧圆弧，或内角处的偏置轨迹没有交点"
+                "（PS0041、PS0033；系统无此报警时为警告）。"),
+         RUN, (CUTTER_INTERFERENCE, CUTTER_NO_INTERSECTION), ("cutter-interference",), milder=WARNING),
+    Code("cutter-plane", ERROR,
+         detail("G17/G18/G19 changes the plane while cutter radius compensation is on (PS0037; a warning where the "
+                "control has no such alarm).",
+                "刀具半径补偿有效时用 G17/G18/G19 变更了平面（PS0037；系统无此报警时为警告）。"),
+         RUN, (CUTTER_PLANE,), ("cutter-plane",), milder=WARNING),
+    Code("cutter-offset", HINT,
+         detail("G41/G42 with a D whose offset has no value in the run: the tool centre is drawn on the programmed "
+                "path.",
+                "G41/G42 所用 D 的补偿值在本次运行中没有数值：刀具中心按编程轨迹绘制。"), RUN),
     Code("unit-change", WARNING,
          detail("G20/G21 changes the unit after the program has moved: FANUC has it at the program's start, "
                 "before the coordinate system is set.",

@@ -63,6 +63,11 @@ SHAPE_NOT_MONOTONE_X = 329
 OFFSET_NUMBER = 30
 OVERTRAVEL_PLUS = 500
 OVERTRAVEL_MINUS = 501
+# cutter radius compensation (docs/semantics.md, "Cutter radius compensation"): FANUC's PS alarms
+CUTTER_NO_INTERSECTION = 33
+CUTTER_ARC_START = 34
+CUTTER_PLANE = 37
+CUTTER_INTERFERENCE = 41
 P_VALUE_RANGE = 291
 COUNT_TWICE = 293
 NO_VARIABLE_NAME = 1098
@@ -149,6 +154,14 @@ ALARMS: dict[int, AlarmDoc] = {
         AlarmDoc(OFFSET_NUMBER, "illegal offset number", "刀补号不当"),
         AlarmDoc(OVERTRAVEL_PLUS, "+ overtravel (soft limit 1)", "+ 向超程（软限位 1）"),
         AlarmDoc(OVERTRAVEL_MINUS, "- overtravel (soft limit 1)", "- 向超程（软限位 1）"),
+        AlarmDoc(CUTTER_NO_INTERSECTION, "no intersection at cutter compensation", "刀具半径补偿求不出交点"),
+        AlarmDoc(
+            CUTTER_ARC_START,
+            "no circular move allowed in the start-up or cancel block",
+            "刀补建立或取消的程序段中不能用圆弧",
+        ),
+        AlarmDoc(CUTTER_PLANE, "cannot change the plane in G41/G42", "G41/G42 方式中不能变更平面"),
+        AlarmDoc(CUTTER_INTERFERENCE, "interference in cutter compensation", "刀具半径补偿干涉"),
         AlarmDoc(P_VALUE_RANGE, "P value out of range", "P值超出范围"),
         AlarmDoc(COUNT_TWICE, "repeat count given in both P and L", "P和L同时指定了调用次数"),
         AlarmDoc(NO_VARIABLE_NAME, "no such variable name", "没有该变量名"),

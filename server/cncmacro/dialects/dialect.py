@@ -97,6 +97,10 @@ class Dialect:
     # §8 "Arcs": I, J, K whose end point is off the start's circle by more than the tolerance is
     # alarm PS0020 (FANUC's list); without this switch the run notes it and goes on
     arc_radius_alarm: bool = False
+    # "Cutter radius compensation": a path whose offset reverses a block or finds no corner, and a
+    # plane change in G41/G42, are FANUC's alarms PS0041, PS0033 and PS0037; without this switch
+    # the run notes them and goes on (a start-up or cancel on an arc, PS0034, is an alarm on every mill)
+    cutter_alarms: bool = False
     # §1 the first two or more letters of a macro word stand for the word (WH for WHILE)
     keyword_abbreviations: bool = False
     # §4 IF [cond] <statement> without THEN runs the statement (FANUC profiles, Haas); elsewhere

@@ -140,6 +140,10 @@ class MachineSettings:
     shape_monotone_check: bool = False
     # §8 "Arcs" the arc radius tolerance in mm (FANUC's parameter 3410; 0: not checked)
     arc_tolerance: float = DEFAULT_ARC_TOLERANCE
+    # cutter radius compensation's start-up and cancel: type "A" or "B" (FANUC parameter 5003 #0 SUP)
+    cutter_startup: str = "A"
+    # what offset D holds: the cutter's "radius" or its "diameter" (Haas Setting 40, Tool Offset Measure)
+    cutter_offset: str = "radius"
     persistent_file: str | None = None
     max_blocks: int = DEFAULT_MAX_BLOCKS
     date: int | None = None
@@ -196,6 +200,8 @@ class _SettingsFields(TypedDict, total=False):
     block_delete: bool
     shape_monotone_check: bool
     arc_tolerance: float
+    cutter_startup: str
+    cutter_offset: str
     persistent_file: str | None
     max_blocks: int
     date: int | None
@@ -335,7 +341,8 @@ def settings_from_mapping(
         return MachineFileError(detail(f"{source}: '{shown}' {what}", f"{source}：'{shown}' {what.zh}"), key=key)
 
     known = {"base", "dialect", "common", "program_digits", "programs_on_control", "system_variables",
-             "decimal_point", "block_delete", "shape_monotone_check", "arc_tolerance", "persistent_file",
+             "decimal_point", "block_delete", "shape_monotone_check", "arc_tolerance", "cutter_startup",
+             "cutter_offset", "persistent_file",
              "max_blocks", "date", "time", "variables", "calls", "skip", "severity", "timing", "lathe", "extensions",
              "codes", "limits"}  # fmt: skip
     for key in data:
@@ -362,6 +369,7 @@ def settings_from_mapping(
     readers: dict[str, Callable[[object, _Fail], object]] = {
         "extensions": _extensions, "program_digits": _program_digits, "programs_on_control": _program_ranges,
         "system_variables": _system_variables, "decimal_point": _decimal_point, "arc_tolerance": _arc_tolerance,
+        "cutter_startup": _cutter_startup, "cutter_offset": _cutter_offset,
     }  # fmt: skip
     for key, read in readers.items():  # the keys whose value is read by itself
         if key in data:
@@ -430,6 +438,22 @@ def _arc_tolerance(v: object, fail: _Fail) -> float:
         raise fail("arc_tolerance", detail("must be a number of mm from 0 to 1 (0: not checked)",
                                            "必须是 0 到 1 之间的毫米数（0：不检查）"))  # fmt: skip
     return float(v)
+
+
+def _cutter_startup(v: object, fail: _Fail) -> str:
+    """``cutter_startup``: "A" or "B", how cutter radius compensation starts and cancels."""
+    if v not in ("A", "B"):
+        raise fail("cutter_startup", detail(f'must be "A" or "B" (not {_brief(v)})',
+                                            f'必须是 "A" 或 "B"（不能是 {_brief(v)}）'))  # fmt: skip
+    return str(v)
+
+
+def _cutter_offset(v: object, fail: _Fail) -> str:
+    """``cutter_offset``: "radius" or "diameter", what a D offset holds."""
+    if v not in ("radius", "diameter"):
+        raise fail("cutter_offset", detail(f'must be "radius" or "diameter" (not {_brief(v)})',
+                                           f'必须是 "radius" 或 "diameter"（不能是 {_brief(v)}）'))  # fmt: skip
+    return str(v)
 
 
 def _decimal_point(point: object, fail: _Fail) -> str:

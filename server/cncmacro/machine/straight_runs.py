@@ -18,7 +18,9 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+from ..planner.alarms import MacroAlarm
 from ..planner.arcs import ARC_MODES
+from ..planner.cutter_stage import straight_cut
 from ..planner.cycle_time import INCH, SPEED_CLAMP
 from ..planner.machine_limits import Bounds, leaves_travel, outside, program_bounds
 from ..planner.moves import Move
@@ -103,6 +105,9 @@ def run_straight(
     bounds = program_bounds(p) if p.travel is not None else None
     spindle_top = p.spindle_top
     arc_centre, arc_fault = p.arc_centre, p.arc_fault
+    # cutter radius compensation under way (planner/cutter_stage.py): each move goes through
+    # ``Planner.record``, which gives it its centre path
+    cutter = p.cutter
     # the lines run are the lines passed but the blank and comment ones (``blanks``): the
     # budget counts the lines run, so each of those moves ``stop`` on by one
     first_pc = pc
@@ -166,6 +171,8 @@ def run_straight(
             else:
                 arc[PLAIN_ARC_LETTERS[kind]] = float(word[1:])
         else:
+            if cutter is not None and others is not None:
+                break  # a modal code under compensation (a plane change is an alarm): the compiled path
             if arc is not None and not moved and (mode if new_mode is None else new_mode) in ARC_MODES:
                 break  # I, J, K alone are a full circle, R alone no move: the compiled path decides
             line_mode = mode if new_mode is None else new_mode
@@ -243,6 +250,17 @@ def run_straight(
                     for i, v in inc:
                         target[i] += v
                 end = tuple(target)
+                if cutter is not None:  # its record and centre path (planner/cutter_stage.py)
+                    p.clock, p.cut_length, p.rapid_length = clock, cut, rapid
+                    try:
+                        if centre is not None or not straight_cut(p, path, pc, mode, start, end):
+                            p.record(path, pc, mode, start, end, centre)
+                    except MacroAlarm:
+                        break  # found before anything changed: the compiled path runs the line and stops on it
+                    clock, cut, rapid, cutter = p.clock, p.cut_length, p.rapid_length, p.cutter
+                    start = end
+                    pc += 1
+                    continue
                 # the time and length of the move: ``Planner.record``'s rules, inline
                 if mode == 0.0:
                     seconds = rapid_seconds(start, end, unit)
@@ -260,7 +278,8 @@ def run_straight(
                     cut += length * unit
                 clock += seconds
                 if append is not None:
-                    append(_new_move(Move, (path, pc, mode, start, end, f, centre, seconds, plane, None, None, None)))
+                    append(_new_move(Move, (path, pc, mode, start, end, f, centre, seconds, plane, None, None, None,
+                                            None)))  # fmt: skip
                 start = end
             pc += 1
             continue

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
+from .cutter_stage import cutter_code
 from .machine_limits import offset_number, spindle_speed, tool_number
 from .moves import ToolChange
 from .tool_offsets import apply_length_offset, select_tool
@@ -36,6 +37,8 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
         elif group != "macro":  # G66/G67 are the macro machine's
             if group == UNITS_GROUP:
                 unit_change(p, g, line)  # units.py
+            elif group == "cutter" or (group == "plane" and p.cutter is not None):
+                cutter_code(p, group, g, line)  # cutter_stage.py
             p.modal[group] = g
             if group == "motion" and g not in p.dialect.single_cycles:
                 forget_single_cycle(p)  # a single cycle's modal words (turning_cycles.py)

@@ -60,6 +60,22 @@ def move_json(mv: Move, axes: tuple[str, ...]) -> dict[str, Any]:
         move["legs"] = [{"rapid": leg.rapid, "to": dict(zip(axes, leg.end, strict=True))} for leg in mv.legs]
     if mv.pass_of is not None:
         move["pass_of"] = mv.pass_of
+    if mv.tool_path is not None:
+        move["tool_path"] = centre_path_json(mv, axes)
     if mv.cycle == DRILLING:
         move["hole"] = dict(zip(axes, mv.end, strict=True))
     return move
+
+
+def centre_path_json(mv: Move, axes: tuple[str, ...]) -> dict[str, Any]:
+    """A move's tool centre path (``Move.tool_path``) as JSON: ``from`` and the ``pieces``."""
+    path = mv.tool_path
+    assert path is not None
+    pieces: list[dict[str, Any]] = []
+    for piece in path.pieces:
+        item: dict[str, Any] = {"to": dict(zip(axes, piece.end, strict=True))}
+        if piece.centre is not None:
+            item["centre"] = dict(zip(axes, piece.centre, strict=True))
+            item["clockwise"] = piece.clockwise
+        pieces.append(item)
+    return {"from": dict(zip(axes, path.start, strict=True)), "pieces": pieces}

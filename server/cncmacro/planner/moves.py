@@ -32,6 +32,24 @@ class Leg(NamedTuple):
     end: tuple[float, ...]
 
 
+class CentrePiece(NamedTuple):
+    """One piece of the tool centre's path under cutter radius compensation (cutter_stage.py): a
+    straight move to ``end`` (``centre`` None) or an arc about ``centre`` to ``end``, turning
+    ``clockwise`` or not; points in work coordinates, one value per axis like a ``Move``'s."""
+
+    end: tuple[float, ...]
+    centre: tuple[float, ...] | None = None
+    clockwise: bool = False
+
+
+class CentrePath(NamedTuple):
+    """Where the tool's centre goes during a move under cutter radius compensation: from
+    ``start`` through ``pieces`` in order."""
+
+    start: tuple[float, ...]
+    pieces: tuple[CentrePiece, ...]
+
+
 class Move(NamedTuple):
     """One executed motion: where (file, 0-based line), the motion code (0, 1, 2, 3, a cycle
     or 31 for a skip), the end points in work coordinates before and after, one value per
@@ -45,7 +63,10 @@ class Move(NamedTuple):
     one arc from ``start`` to ``end``. ``cycle`` says which kind of cycle a move with legs
     belongs to: ``DRILLING`` (a drilling cycle's hole, drilled at ``end``) or ``TURNING``.
     ``pass_of`` names the lathe cycle (``G71``) whose pass this move is, a move of its own
-    planned from the cycle block (lathe_cycles.py); None for any other move."""
+    planned from the cycle block (lathe_cycles.py); None for any other move. ``tool_path`` is
+    where the tool's centre goes under cutter radius compensation (G41/G42: cutter_stage.py),
+    which the time and the cut length follow; None when no compensation is in force, the
+    centre then being on the programmed path."""
 
     file: str
     line: int
@@ -59,6 +80,7 @@ class Move(NamedTuple):
     legs: tuple[Leg, ...] | None = None
     cycle: str | None = None
     pass_of: str | None = None
+    tool_path: CentrePath | None = None
 
     def text(self, axes: tuple[str, ...], shown: list[int] | None = None) -> str:
         """``G01  X0.000 Y0.000 -> X10.000 Y5.000  F200`` for a person: the axes in ``shown``

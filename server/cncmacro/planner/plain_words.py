@@ -26,8 +26,9 @@ _Axes = tuple[tuple[int, float], ...]  # (axis index, value)
 PlainPlan = tuple[_Words, _Words, _Axes, _Axes, _Words]
 # a plan with the file and the next line appended, as a plain line's runner holds it
 PlainRun = tuple[_Words, _Words, _Axes, _Axes, _Words, str, int]
-# G20/G21 too: a change of the unit is looked at in one place (units.py)
-NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length", "units"))
+# G20/G21 too: a change of the unit is looked at in one place (units.py); G40/G41/G42 start and
+# cancel cutter radius compensation (cutter_stage.py)
+NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length", "units", "cutter"))
 CANCEL_CYCLE = ("canned", 80.0)  # on a mill, G00-G03 cancel a drilling cycle (group 01 over group 09)
 _CENTRE_LETTERS = frozenset("RIJK")  # arc radius and centre: kept for a canned cycle's R level
 _G_WORDS_KEPT = 1000  # spellings of G words ``g_word`` keeps

@@ -25,6 +25,7 @@ from ..bilingual import detail
 from .arc_checks import arc_finding
 from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
+from .cutter_stage import UNCOMPENSATED_CODES, CutterStage, cutter_move, restore_pending, uncompensated
 from .cycle_time import INCH, SPEED_CLAMP, MoveTimes
 from .drill_cycles import drill_block
 from .lathe_cycles import ShapeCall, ShapeReading
@@ -73,6 +74,7 @@ class Planner:
         self.cycle_start_z: float | None = None
         self.cycle_params: dict[float, dict[str, float]] = {}  # a lathe cycle's first block (lathe_cycles.py)
         self.shape: ShapeReading | None = None  # the shape cycle under way
+        self.cutter: CutterStage | None = None  # cutter radius compensation under way (cutter_stage.py)
         self.moves: list[Move] = []
         self.record_moves = True
         self.move_budget = MOVE_BUDGET
@@ -131,6 +133,7 @@ class Planner:
             self.cycle_start_z, self.clock, (self.cut_length, self.rapid_length), len(self.moves),
             len(self.tool_changes), self.skip_state, len(self.probes),
             {k: dict(v) for k, v in self.cycle_params.items()}, None if self.shape is None else self.shape.copy(),
+            None if self.cutter is None else self.cutter.copy(),
         )  # fmt: skip
 
     def restore(self, state: PlannerState) -> None:
@@ -151,12 +154,19 @@ class Planner:
         del self.probes[state.probes :]
         self.cycle_params = {k: dict(v) for k, v in state.cycle_params.items()}
         self.shape = None if state.shape is None else state.shape.copy()
+        self.cutter = None if state.cutter is None else state.cutter.copy()
+        restore_pending(self)
 
     # ---------------------------------------------------------------- plain motion
     def run_plain(self, plan: PlainRun, line: int) -> bool:
         """Carry out a ``PlainWords`` plan with its file and next line appended; returns whether
         the block counts as a move for a G66 call (``execute_nc``)."""
         modal_sets, code_sets, axes, inc, _, file, _ = plan
+        if self.cutter is not None and any(g == "plane" for g, _ in modal_sets):  # under compensation: the
+            # plane change's alarm (cutter_stage.py)
+            words = [("G", g) for group, g in modal_sets if group != "canned"]
+            words += [(k, v) for k, v in code_sets if k in ("F", "S")]
+            return self._cycle_fallback(plan, file, line, words)
         modal = self.modal
         for group, g in modal_sets:
             modal[group] = g
@@ -202,9 +212,13 @@ class Planner:
         if shape is not None and shape.first_axes is None:
             shape.first_axes = named
 
-    def _cycle_fallback(self, plan: PlainRun, file: str, line: int) -> bool:
+    def _cycle_fallback(
+        self, plan: PlainRun, file: str, line: int, words: list[tuple[str, float]] | None = None
+    ) -> bool:
+        """Run a plain line's plan through ``execute_nc`` (after ``words``, its G codes, F and S,
+        when they have not been carried out yet)."""
         names, inverse = self.dialect.axes, self._incremental_names
-        words = [(names[i], v) for i, v in plan[2]]
+        words = (words or []) + [(names[i], v) for i, v in plan[2]]
         words += [(inverse[names[i]], v) for i, v in plan[3]]
         words += plan[4]
         return self.execute_nc(words, file, line)[0]
@@ -248,6 +262,8 @@ class Planner:
         if one is not None:
             if one != 4.0 and self.cycle_params:
                 forget_single_cycle(self)
+            if self.cutter is not None and one in UNCOMPENSATED_CODES:  # cutter_stage.py
+                return uncompensated(self, lambda: one_shot(self, one, axes, incremental, other, file, line))
             return one_shot(self, one, axes, incremental, other, file, line)
         mode = self.modal.get("motion", 0.0)
         canned = self.modal.get("canned", 80.0)
@@ -398,7 +414,13 @@ class Planner:
             stop = leaves_travel(self, program_bounds(self), mode, plane, start, end, centre, legs)
             if stop is not None:
                 end = stop[0]
-        if mode == 0.0:
+        tool_path = None
+        compensated = None
+        if self.cutter is not None and legs is None:  # cutter radius compensation (cutter_stage.py)
+            compensated = cutter_move(self, line, mode, plane, start, end, centre, feed, unit)
+        if compensated is not None:
+            tool_path, seconds = compensated
+        elif mode == 0.0:
             seconds = times.rapid_seconds(start, end, unit)
             self.rapid_length += times.distance(start, end) * unit
         else:
@@ -413,7 +435,7 @@ class Planner:
         self.clock += seconds
         if self.record_moves:
             self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre, seconds, plane, legs,
-                                              cycle, pass_of)))  # fmt: skip
+                                              cycle, pass_of, tool_path)))  # fmt: skip
             if len(self.moves) >= self.move_budget:
                 self.moves_full(line)
         if stop is not None:

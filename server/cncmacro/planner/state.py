@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .cutter_stage import CutterStage
 from .lathe_cycles import ShapeReading
 from .probing import SkipState
 
@@ -23,7 +24,8 @@ class PlannerState:
     modal groups, codes, positions (program, coordinate shift, skip, tool vector), the extra
     work offset, a drilling cycle's initial level, the clock, the cut and rapid path, and how
     many moves, tool changes and probes had been recorded, and a lathe's cycle parameters and
-    the shape cycle under way (lathe_cycles.py)."""
+    the shape cycle under way (lathe_cycles.py), and cutter radius compensation's stage
+    (cutter_stage.py)."""
 
     modal: dict[str, float]
     codes: dict[str, float | None]
@@ -38,3 +40,4 @@ class PlannerState:
     probes: int
     cycle_params: dict[float, dict[str, float]]
     shape: ShapeReading | None
+    cutter: CutterStage | None = None

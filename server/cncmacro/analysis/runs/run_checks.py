@@ -575,6 +575,10 @@ def _endless_diagnostic(
                        milder=certainty == SHARED)  # fmt: skip
 
 
+# the run's notes of a finding that is an alarm on another profile: shown at the code's milder severity
+_MILDER_NOTES = frozenset(("arc-radius", "cutter-interference", "cutter-plane"))
+
+
 def run_diagnostics(
     run: EntryRun,
     line_text: Callable[[str, int], str],
@@ -649,11 +653,12 @@ def run_diagnostics(
             zh = in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, code, en, zh, note.chain, None, False, line_text, locale,
                                    milder=True))  # fmt: skip
-        elif note.kind in ("arc", "units", "limits") and note.subject is not None:
-            # planner/arc_checks.py, planner/units.py, planner/machine_limits.py: the subject is the code
+        elif note.kind in ("arc", "units", "limits", "cutter") and note.subject is not None:
+            # planner/arc_checks.py, planner/units.py, planner/machine_limits.py, planner/cutter_stage.py:
+            # the subject is the code
             en, zh = in_language(note.message, False), in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, note.subject, en, zh, note.chain, None, False, line_text,
-                                   locale, milder=note.subject == "arc-radius"))  # fmt: skip
+                                   locale, milder=note.subject in _MILDER_NOTES))  # fmt: skip
         elif note.kind == "feed":  # a per-minute feed that looks per revolution (planner.py)
             en, zh = in_language(note.message, False), in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, "feed-per-minute", en, zh, note.chain, None, False, line_text,

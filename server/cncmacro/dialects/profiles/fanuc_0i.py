@@ -42,6 +42,7 @@ PROFILE = Dialect(
     ijk_order_matters=True,
     word_format_alarms=True,
     arc_radius_alarm=True,
+    cutter_alarms=True,
     keyword_abbreviations=True,
     if_without_then=True,
     modal_g_before_call="execute",

@@ -945,6 +945,7 @@ PROFILE = FANUC_0I.configured(
     m98_program_digits=5,
     word_format_alarms=False,
     arc_radius_alarm=False,  # no alarm for it in the manuals at hand: a warning (docs/semantics.md §8, "Arcs")
+    cutter_alarms=False,  # no number for the interference or plane alarms in the manuals at hand (§12)
     keyword_abbreviations=False,
     if_without_then=True,
     conditional_m99=True,

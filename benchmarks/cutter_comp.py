@@ -1,0 +1,79 @@
+"""Cutter radius compensation's cost: a CAM contour of 100,000 G01 blocks (a circle of R50 in
+steps of 0.5°, a Z step every lap) run with and without ``G41 D1`` (radius 3), best of five, user
+CPU time of the run alone (parse included) and of ``cncmacro run`` as a whole (text output).
+
+    python benchmarks/cutter_comp.py [--moves 100000]
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import resource
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "server"))
+
+from cncmacro.library.machine_file import MachineSettings
+from cncmacro.machine import Machine
+
+
+def contour(n: int, compensated: bool) -> str:
+    """The contour's program text."""
+    out = ["O0003", "G10 L12 P1 R3.", "G21 G17 G90 G94 F800", "G00 X60. Y-10.",
+           ("G41 D1 " if compensated else "") + "G01 X50. Y0"]  # fmt: skip
+    for k in range(1, n):
+        a = math.radians(0.5 * k)
+        z = f" Z{-0.001 * k:.3f}" if k % 720 == 0 else ""
+        out.append(f"X{50 * math.cos(a):.3f} Y{50 * math.sin(a):.3f}{z}")
+    out += [("G40 " if compensated else "") + "G00 X60. Y-10.", "M30"]
+    return "\n".join(out) + "\n"
+
+
+def cpu() -> float:
+    return resource.getrusage(resource.RUSAGE_SELF).ru_utime
+
+
+def in_process(text: str, rounds: int = 5) -> float:
+    """Best user seconds of a run of ``text`` (moves recorded, as ``cncmacro run`` keeps them)."""
+    best = math.inf
+    for _ in range(rounds):
+        c0 = cpu()
+        m = Machine("fanuc", MachineSettings(max_blocks=10_000_000, date=20260101, time=0))
+        m.start_file("contour.nc", text)
+        m.run()
+        best = min(best, cpu() - c0)
+    return best
+
+
+def command(path: Path, rounds: int = 5) -> float:
+    """Best user seconds of ``cncmacro run --no-save FILE`` in a process of its own."""
+    best = math.inf
+    for _ in range(rounds):
+        before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
+        subprocess.run([sys.executable, "-m", "cncmacro", "run", "--no-save", str(path)], stdout=subprocess.DEVNULL,
+                       check=False, cwd=Path(__file__).resolve().parents[1] / "server")  # fmt: skip
+        best = min(best, resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime - before)
+    return best
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--moves", type=int, default=100_000)
+    args = ap.parse_args()
+    plain, compensated = contour(args.moves, False), contour(args.moves, True)
+    a, b = in_process(plain), in_process(compensated)
+    print(f"run: {a:.2f} s without compensation, {b:.2f} s with G41: +{(b / a - 1) * 100:.0f}%")
+    with tempfile.TemporaryDirectory() as d:
+        p1, p2 = Path(d) / "plain.nc", Path(d) / "comp.nc"
+        p1.write_text(plain)
+        p2.write_text(compensated)
+        c, e = command(p1), command(p2)
+    print(f"cncmacro run: {c:.2f} s without compensation, {e:.2f} s with G41: +{(e / c - 1) * 100:.0f}% (budget: 30%)")
+
+
+if __name__ == "__main__":
+    main()
