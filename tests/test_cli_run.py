@@ -23,6 +23,7 @@ ROOT = Path(__file__).resolve().parent.parent
         ("fanuc/subprogram_main.nc", "completed"),
         ("fanuc/O9100.nc", "alarm"),  # run on its own, the macro misses its arguments: #3000
         ("fanuc/O0040.nc", "completed"),  # a subprogram run on its own: one pass, up to its M99
+        ("fanuc/contour_g41.nc", "completed"),
         ("gsk980tdi/O0100.nc", "completed"),
         ("gsk980tdi/O9580.nc", "completed"),
         ("gsk980tdi/ellipse_turning.nc", "completed"),

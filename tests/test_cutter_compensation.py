@@ -19,6 +19,7 @@ from cncmacro.dialects.alarms import CUTTER_ARC_START, CUTTER_INTERFERENCE, CUTT
 from cncmacro.library.machine_file import MachineFileError, MachineSettings, settings_from_mapping
 from running import lines, run
 
+ROOT = Path(__file__).resolve().parent.parent
 MILLS = ["fanuc", "fanuc-30i", "haas"]
 
 
@@ -329,3 +330,31 @@ def test_the_run_of_plain_lines_and_the_general_path_give_the_same_centre_path()
     for x, y in zip(pa, pb, strict=True):
         assert (x is None and y is None) or same(x, y or [])
     assert a.planner.clock == pytest.approx(b.planner.clock)
+
+
+def test_the_bundled_contour_example_cuts_its_plate_a_radius_outside(tmp_path: Path) -> None:
+    # examples/fanuc/contour_g41.nc: a plate 80 x 50 (X -40…40, Y -25…25) with R8 corners, cut
+    # clockwise with G41 D01 and G10 L12 P1 R5. (radius 5): the tool on the left is outside. The
+    # start-up, line 15, goes +X from (-60,0) to (-40,0); the next side goes +Y: a left turn,
+    # inside for a left tool, so it ends at the intersection of its offset (y = 0 + 5) with the
+    # side's (x = -40 - 5): (-45, 5). The top-left corner (line 17, G02 R8 about (-32,17)) is cut
+    # on the circle of radius 8 + 5 = 13 about the same centre: from (-32 - 13, 17) = (-45,17) to
+    # (-32, 17 + 13) = (-32,30). The last side, line 24, runs up to Y10, the cancel (line 25) goes
+    # -X: a left turn again, so the side ends where x = -45 meets y = 10 - 5: (-45,5), and the
+    # cancel ends on the programmed point (-60,10)
+    text = (ROOT / "examples" / "fanuc" / "contour_g41.nc").read_text(encoding="utf-8")
+    out = run_json(tmp_path, text)
+    assert out["status"] == "completed"
+
+    def centre(line: int) -> list[tuple[float, float]]:
+        path = next(mv for mv in out["moves"] if mv["line"] == line)["tool_path"]
+        return [(path["from"]["X"], path["from"]["Y"])] + [(pc["to"]["X"], pc["to"]["Y"]) for pc in path["pieces"]]
+
+    assert centre(15) == [pytest.approx((-60.0, 0.0)), pytest.approx((-45.0, 5.0))]
+    assert centre(17) == [pytest.approx((-45.0, 17.0)), pytest.approx((-32.0, 30.0))]
+    arc = next(mv for mv in out["moves"] if mv["line"] == 17)["tool_path"]["pieces"][0]
+    assert (arc["centre"]["X"], arc["centre"]["Y"]) == pytest.approx((-32.0, 17.0))
+    assert centre(24) == [pytest.approx((-45.0, -17.0)), pytest.approx((-45.0, 5.0))]
+    assert centre(25) == [pytest.approx((-45.0, 5.0)), pytest.approx((-60.0, 10.0))]
+    # the moves before G41 and after G40 have none
+    assert all("tool_path" not in mv for mv in out["moves"] if mv["line"] < 15 or mv["line"] > 25)
