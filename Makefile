@@ -63,7 +63,7 @@ test: setup
 
 .PHONY: test-phase test-lint test-python test-pythons-dap test-editor
 test-phase: test-lint
-	$(MAKE) --no-print-directory -j3 --output-sync=target test-python test-pythons-dap test-editor
+	$(MAKE) --no-print-directory -k -j3 --output-sync=target test-python test-pythons-dap test-editor
 
 test-lint:
 	$(VENV)/bin/ruff check server tests benchmarks
