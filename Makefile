@@ -50,9 +50,9 @@ demo: $(VENV)/.installed
 # lint and types; then three lanes side by side, since each waits much of its time on a server
 # or a browser: the Python suite but the language server's tests; the oldest and the newest
 # Python (tests/other_pythons.py), the debug adapter through a real DAP client, the toolpath's
-# plot on real runs, then the language server's tests (tests/lsp); the .vsix built and tested in
-# a real VS Code, two files at a time, each with its own code-server, browser and workspace
-# (screenshots in test-output/editor/). Each step prints its time.
+# plot on real runs; the .vsix built and tested in a real VS Code, two files at a time, each with
+# its own code-server, browser and workspace (screenshots in test-output/editor/), then the
+# language server's tests (tests/lsp). Each step prints its time.
 # `make test OFFLINE=` runs the test phase with the network.
 OFFLINE ?= tests/offline
 TIMED := tests/timed
@@ -78,11 +78,11 @@ test-python:
 test-pythons-dap:
 	$(TIMED) "other pythons" $(PY) tests/other_pythons.py --quick
 	$(TIMED) "dap and plot" node --test tests/dap/ tests/client/
-	$(TIMED) "pytest tests/lsp" $(PY) -m pytest -p no:cacheprovider tests/lsp
 
 test-editor:
 	$(TIMED) package env PIP_NO_INDEX=1 PIP_FIND_LINKS=$(CURDIR)/$(WHEELS) PYTHON=$(PY) npm run --silent package
 	$(TIMED) editor timeout 900 node --test --test-concurrency=2 tests/editor/
+	$(TIMED) "pytest tests/lsp" $(PY) -m pytest -p no:cacheprovider tests/lsp
 
 # The everyday loop (docs/development.md), under 2 minutes on 2 cores: lint, types, the Python
 # suite but its slow parts (the language server over stdio, the hardening storms; both run in
