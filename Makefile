@@ -24,7 +24,18 @@ tests/node_modules/.installed: tests/package-lock.json client/scripts/setup-edit
 	bash client/scripts/setup-editor
 	touch $@
 
-setup: $(VENV)/.installed node_modules/.installed tests/node_modules/.installed
+# The wheels of requirements-bundle.txt, kept for the .vsix's bundled/libs, so that packaging in
+# make test reads them here instead of asking the registry (client/scripts/bundle-python).
+WHEELS := .cache/wheels
+$(WHEELS)/.downloaded: requirements-bundle.txt $(VENV)/.installed
+	rm -rf $(WHEELS)
+	$(PY) -m pip download --quiet --disable-pip-version-check --no-deps --implementation py \
+		--only-binary=:all: -d $(WHEELS) -r requirements-bundle.txt
+	touch $@
+
+# Everything the tests need, fetched here and only here: make test's test phase runs offline.
+setup: $(VENV)/.installed node_modules/.installed tests/node_modules/.installed $(WHEELS)/.downloaded
+	$(PY) tests/other_pythons.py --setup
 
 # Run a bundled example on the simulated machine, then check all of them (needs only Python).
 demo: $(VENV)/.installed
@@ -35,29 +46,52 @@ demo: $(VENV)/.installed
 	@echo "--- Checking tests/data/O0999_broken.nc, a program with three planted mistakes:"
 	@$(VENV)/bin/cncmacro check tests/data/O0999_broken.nc || echo "(cncmacro check exits with status 1 when it finds mistakes)"
 
-# Every test: lint, the Python suite (then part of it again under the oldest and the newest
-# Python on the machine, tests/other_pythons.py), the debug adapter through a real DAP client, the
-# toolpath's plot on real runs, the grammar,
-# then the .vsix is built and tested in a real VS Code (screenshots in test-output/editor/).
+# Every test, after set-up, with the network cut off where this machine allows it (tests/offline):
+# lint and types; then three lanes side by side, since each waits much of its time on a server
+# or a browser: the Python suite but the language server's tests; the oldest and the newest
+# Python (tests/other_pythons.py), the debug adapter through a real DAP client, the toolpath's
+# plot on real runs; the .vsix built and tested in a real VS Code, two files at a time, each with
+# its own code-server, browser and workspace (screenshots in test-output/editor/), then the
+# language server's tests (tests/lsp). Each step prints its time.
+# `make test OFFLINE=` runs the test phase with the network.
+OFFLINE ?= tests/offline
+TIMED := tests/timed
 test: setup
+	@start=$$(date +%s); status=0; \
+	$(OFFLINE) $(MAKE) --no-print-directory test-phase || status=$$?; \
+	echo "[make test] all: $$(($$(date +%s) - start)) s"; exit $$status
+
+.PHONY: test-phase test-lint test-python test-pythons-dap test-editor
+test-phase: test-lint
+	$(MAKE) --no-print-directory -k -j3 --output-sync=target test-python test-pythons-dap test-editor
+
+test-lint:
 	$(VENV)/bin/ruff check server tests benchmarks
 	$(VENV)/bin/ruff format --check server tests benchmarks
-	$(VENV)/bin/mypy
-	npm run --silent lint:client
-	$(PY) -m pytest
-	$(PY) tests/other_pythons.py --quick
-	node --test tests/dap/ tests/client/
-	npm run --silent test:grammar
-	PYTHON=$(PY) npm run --silent package
-	timeout 900 node --test --test-concurrency=1 tests/editor/
+	$(TIMED) mypy $(VENV)/bin/mypy
+	$(TIMED) eslint npm run --silent lint:client
+	$(TIMED) grammar npm run --silent test:grammar
 
-# The everyday loop (docs/development.md): lint, types, the Python suite but its slow parts (the
-# language server over stdio, the hardening storms; both run in make test) and the toolpath's plot.
+test-python:
+	$(TIMED) pytest $(PY) -m pytest --ignore=tests/lsp
+
+test-pythons-dap:
+	$(TIMED) "other pythons" $(PY) tests/other_pythons.py --quick
+	$(TIMED) "dap and plot" node --test tests/dap/ tests/client/
+
+test-editor:
+	$(TIMED) package env PIP_NO_INDEX=1 PIP_FIND_LINKS=$(CURDIR)/$(WHEELS) PYTHON=$(PY) npm run --silent package
+	$(TIMED) editor timeout 900 node --test --test-concurrency=2 tests/editor/
+	$(TIMED) "pytest tests/lsp" $(PY) -m pytest -p no:cacheprovider tests/lsp
+
+# The everyday loop (docs/development.md), under 2 minutes on 2 cores: lint, types, the Python
+# suite but its slow parts (the language server over stdio, the hardening storms; both run in
+# make test) on both cores, and the toolpath's plot.
 check: $(VENV)/.installed node_modules/.installed
 	$(VENV)/bin/ruff check server tests benchmarks
 	$(VENV)/bin/ruff format --check server tests benchmarks
 	$(VENV)/bin/mypy
-	$(PY) -m pytest -x --ignore=tests/lsp --ignore=tests/hardening
+	$(PY) -m pytest -x -n 2 --ignore=tests/lsp --ignore=tests/hardening
 	node --test tests/client/
 
 # The VS Code extension: cncmacro.vsix (needs only Python >= 3.10 where it is installed). Building

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from functools import cache
+
 from hypothesis import strategies as st
 
 from cncmacro.syntax.keywords import ABBREVIABLE
@@ -41,7 +43,11 @@ def _join(draw, parts: list[str]) -> str:
     return out
 
 
+@cache
 def expr(max_leaves: int = 8) -> st.SearchStrategy[str]:
+    """An expression of at most ``max_leaves`` numbers and variables. Built once for each size:
+    a strategy is reusable, and building and validating a recursive one anew for every draw
+    costs more than the draw."""
     atoms = st.one_of(number(), st.integers(0, 9999).map(lambda n: f"#{n}"))
 
     def extend(inner: st.SearchStrategy[str]) -> st.SearchStrategy[str]:

@@ -18,6 +18,9 @@ function program(name) {
 class CncMacroClient extends DebugClient {
   constructor() {
     super(PYTHON, '-m', 'cncmacro');
+    // the library waits 5 s for an event; starting Python takes longer than that on a machine
+    // busy with make test's other lanes. A wait that times out is still a failure.
+    this.defaultTimeout = 30000;
     this.output = '';
     this.on('output', (e) => { this.output += e.body.output; });
   }

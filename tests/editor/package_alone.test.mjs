@@ -2,6 +2,8 @@
 // knows them, no node_modules, no .venv) is packaged with a PATH from which Chromium, code-server,
 // Neovim and apt are missing. It must fill a fresh node_modules with only the build's packages
 // (package-lock.json), never run the editor tests' setup, and leave a working cncmacro.vsix.
+// It asks no registry: npm installs from its cache, which set-up's `npm ci` filled
+// (--offline), and pip takes the wheels set-up kept in .cache/wheels (make setup).
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -12,6 +14,7 @@ import { ROOT } from './codeServer.mjs';
 
 const HIDDEN = /^(chromium.*|google-chrome.*|code-server|nvim|apt|apt-get|dpkg|sudo)$/;
 const PYTHON = path.join(ROOT, '.venv', 'bin', 'python');
+const WHEELS = path.join(ROOT, '.cache', 'wheels');
 let work;
 
 after(() => {
@@ -55,7 +58,10 @@ test('make package works with only Python and npm ci: no Chromium, code-server o
   const repo = path.join(work, 'repo');
   copyRepository(repo);
   const bin = pathWithout(path.join(work, 'bin'));
-  const env = { ...process.env, PATH: bin };
+  assert.ok(fs.existsSync(path.join(WHEELS, '.downloaded')), `no wheels in ${WHEELS}: run make setup`);
+  const env = {
+    ...process.env, PATH: bin, npm_config_offline: 'true', PIP_NO_INDEX: '1', PIP_FIND_LINKS: WHEELS,
+  };
   for (const tool of ['chromium', 'code-server', 'apt-get']) {
     assert.notEqual(spawnSync('sh', ['-c', `command -v ${tool}`], { env }).status, 0, `${tool} must be hidden`);
   }
