@@ -141,3 +141,12 @@ def test_each_file_is_checked_with_its_nearest_machine_file(tmp_path):
                    for d in json.loads(r.stdout))  # fmt: skip
     assert found == [("lathe", "O9020.nc", 2, "division-by-zero"), ("mill", "O9020.nc", 2, "division-by-zero")]
     assert r.returncode == 1
+
+
+def test_a_print_whose_text_has_no_closing_bracket_says_so_not_expected_what_it_got(tmp_path):
+    # "unexpected '['; expected '[' with the text to print" named the very character it refused
+    f = tmp_path / "O0001.nc"
+    f.write_text("O0001\nBPRNT[X#1[53]\nDPRNT[RATE*50%]\nM30\n", encoding="utf-8")  # the '%' ends the tape
+    r = run("check", str(f))
+    said = "error: the text to print has no closing ']' on this line (nor can it hold a '%', which ends the tape)"
+    assert r.stdout == f"{f}:2:6: {said} [syntax]\n{f}:3:6: {said} [syntax]\n"

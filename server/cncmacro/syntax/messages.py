@@ -58,6 +58,13 @@ _CORNER_COMMA = detail(
 )
 _CJK = re.compile("[\u4e00-\u9fff]")
 
+# DPRNT[ or BPRNT[ whose text has no ']' on its line (the grammar's DPRNT_ARGS is the whole [...]):
+# its text was cut at a '%', which ends the tape wherever it stands, or never closed
+_UNCLOSED_PRINT = detail(
+    "the text to print has no closing ']' on this line (nor can it hold a '%', which ends the tape)",
+    "要输出的内容在本行没有结束的 ']'（内容中也不能含有 '%'：'%' 表示纸带结束）",
+)
+
 # What a bare value looks like, to say "expected a value" instead of listing six terminals.
 _VALUE_START = {"NUMBER", "VARNUM", "HASH", "NAMED_VAR", "LSQB", "SIGN"}
 # What may start a word or a statement, to say "another word or statement" likewise ('[' starts
@@ -92,7 +99,10 @@ def describe_error(code: str, err: UnexpectedInput) -> Problem:
             return Problem(detail("']' without a matching '['", "']' 没有与之配对的 '['"), pos, pos + 1)
         if unclosed is not None and ch not in "[]":
             return _unclosed_problem(code, unclosed, pos)
-        expected = _expected_text(set(err.allowed or ()))
+        allowed = set(err.allowed or ())
+        if ch == "[" and allowed == {"DPRNT_ARGS"}:
+            return Problem(_UNCLOSED_PRINT, pos, pos + 1)
+        expected = _expected_text(allowed)
         if ch.isprintable():
             return Problem(detail(f"unexpected '{ch}'{expected}", f"此处不应出现 '{ch}'{expected.zh}"), pos, pos + 1)
         point = f"U+{ord(ch):04X}"
@@ -110,6 +120,8 @@ def describe_error(code: str, err: UnexpectedInput) -> Problem:
             return Problem(detail(f"the block ends too early{expected}", f"程序段提前结束{expected.zh}"), start, end)
         start = tok.start_pos if tok.start_pos is not None else 0
         end = tok.end_pos if tok.end_pos is not None else start + 1
+        if tok.type == "LSQB" and expected_set == {"DPRNT_ARGS"}:
+            return Problem(_UNCLOSED_PRINT, start, end)
         if tok.type == "COMMA" and "CORNER" in expected_set:
             return Problem(_CORNER_COMMA, start, end)
         if tok.type == "RSQB" and unclosed is None and "RSQB" not in expected_set:
