@@ -28,11 +28,8 @@ def dialect_comment(lines: list[str]) -> tuple[int, int, int, str] | None:
 
 def dialect_from_text(lines: list[str]) -> str | None:
     """The dialect named by a ``(cncmacro: dialect=...)`` comment in the first lines."""
-    for line in lines[:HEADER_LINES]:
-        m = _MARKER.search(line)
-        if m:
-            return normalise_dialect(m.group(1))
-    return None
+    found = dialect_comment(lines)
+    return normalise_dialect(found[3]) if found is not None else None
 
 
 def choose_dialect(lines: list[str], workspace: str | None = None, setting: str | None = None) -> str:
