@@ -133,7 +133,8 @@ class WorkspaceAnalysis:
         # reads the files on disk, each once; a cache given here is told of changes by its owner
         self._own_files = files is None
         self.files = files if files is not None else FileCache()
-        self.library = ProgramLibrary(self.search_paths, files=self.files, extensions=self.settings.extensions)
+        self._library = ProgramLibrary(self.search_paths, files=self.files, extensions=self.settings.extensions)
+        self._library_due = False  # the library is made again when next used (``_reload``)
         self.workspace_folders = [str(p) for p in workspace_folders]
         self.callers = DiskCallers()  # the open programs' callers on disk, and the runs that start there
         # the not-executed ranges, kept across edits
@@ -201,14 +202,24 @@ class WorkspaceAnalysis:
         self._reload()
 
     def _reload(self) -> None:
-        """A fresh library (disk files looked at again), the open documents still in it."""
-        self.library = ProgramLibrary(self.search_paths, files=self.files, extensions=self.settings.extensions)
+        """A fresh library (disk files looked at again), the open documents still in it, made
+        when it is next used: closing 2,000 documents one after the other makes it once, not
+        2,000 times over the documents still open."""
+        self._library_due = True
         self.callers.entries = None
-        for d in self.docs.values():
-            d.loaded = self.library.add_parsed(d.path, d.doc.lines, d.doc.program)
-            d.targets = None
-            d.own = None
         self.stale = True
+
+    @property
+    def library(self) -> ProgramLibrary:
+        """The programs a run may call: the open documents, then the files on disk."""
+        if self._library_due:
+            self._library_due = False
+            self._library = ProgramLibrary(self.search_paths, files=self.files, extensions=self.settings.extensions)
+            for d in self.docs.values():
+                d.loaded = self._library.add_parsed(d.path, d.doc.lines, d.doc.program)
+                d.targets = None
+                d.own = None
+        return self._library
 
     def document(self, path: str) -> ParsedDocument | None:
         d = self.docs.get(self._key(path))
@@ -302,6 +313,7 @@ class WorkspaceAnalysis:
     def _analyze(self, path: str, should_cancel: Callable[[], bool] | None) -> AnalysisResult | None:
         key = self._key(path)
         version = self.docs[key].version if key in self.docs else None
+        _ = self.library  # made again first, when documents closed or files changed meanwhile
         for d in self.docs.values():  # the long part of a first analysis: it stops between chunks
             if not self._static_part(d).fill(d.doc.blocks, should_cancel):
                 return None
