@@ -34,7 +34,11 @@ $(WHEELS)/.downloaded: requirements-bundle.txt $(VENV)/.installed
 	touch $@
 
 # Everything the tests need, fetched here and only here: make test's test phase runs offline.
+# The package's modules are compiled here for each interpreter (an editable install leaves them
+# as source, and where bytecode is not written each of the suite's hundreds of servers and
+# commands would compile them again as it starts: half a second each).
 setup: $(VENV)/.installed node_modules/.installed tests/node_modules/.installed $(WHEELS)/.downloaded
+	$(PY) -m compileall -q server
 	$(PY) tests/other_pythons.py --setup
 
 # Run a bundled example on the simulated machine, then check all of them (needs only Python).
@@ -88,6 +92,7 @@ test-editor:
 # suite but its slow parts (the language server over stdio, the hardening storms; both run in
 # make test) on both cores, and the toolpath's plot.
 check: $(VENV)/.installed node_modules/.installed
+	$(PY) -m compileall -q server
 	$(VENV)/bin/ruff check server tests benchmarks
 	$(VENV)/bin/ruff format --check server tests benchmarks
 	$(VENV)/bin/mypy

@@ -99,7 +99,8 @@ def main(argv: list[str] | None = None) -> int:
             continue
         _say(f"{role}: {interpreter.name} ({interpreter.executable})")
         if args.setup:
-            _venv(interpreter)
+            venv = _venv(interpreter)  # and the package compiled for it, as make setup does for the main one
+            subprocess.run([str(venv / "bin" / "python"), "-m", "compileall", "-q", "server"], cwd=ROOT, check=True)
             continue
         results.append(_run(interpreter, args.quick))
     return 0 if all(results) else 1
