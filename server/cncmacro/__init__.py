@@ -2,4 +2,4 @@
 Macro B and GSK980TDi) and the tools built on it: ``cncmacro check``, the language server and
 the debug adapter."""
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
