@@ -16,6 +16,7 @@ from .check import main_check
 from .locale_option import add_locale_option, environment_locale, locale_argument
 from .profiles import add_dialect_option, add_profiles_parser
 from .run import add_run_parser
+from .terminal import tolerant
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -76,6 +77,8 @@ def main_lsp(args: argparse.Namespace) -> int:
 
 def main(argv: list[str] | None = None) -> int:
     given = sys.argv[1:] if argv is None else argv
+    tolerant(sys.stdout)  # a report redirected on a Chinese Windows is written in GBK
+    tolerant(sys.stderr)
     try:
         args = build_parser().parse_args(argv)
     except SystemExit as e:

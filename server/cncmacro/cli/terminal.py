@@ -11,10 +11,17 @@ line feed and a tab are escaped too (``shown_name``): a file named ``a.nc\\nO1.n
 cannot forge a finding. The JSON and SARIF output writes them as JSON escapes
 (``\\u001b``, ``\\u009b``), which a JSON reader turns back into the same text, and never writes
 ``NaN`` or ``Infinity``, which JSON does not have.
+
+A stream whose encoding cannot write every character (a Chinese Windows writes a redirected
+report in its code page, GBK, which has no ``✓`` or emoji) writes those it cannot as JSON's
+``\\uNNNN`` escapes (``tolerant``), a pair of them above U+FFFF: the text stays readable, the
+JSON stays valid and reads back as the same text, and nothing ends in an encoding error.
 """
 
 from __future__ import annotations
 
+import codecs
+import io
 import json
 import re
 from typing import Any, Protocol, TextIO
@@ -49,6 +56,34 @@ def json_text(value: Any, **options: Any) -> str:
     for a value that is not a finite number, which JSON cannot hold."""
     text = json.dumps(value, ensure_ascii=False, allow_nan=False, **options)
     return _JSON_CONTROL.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
+
+
+ESCAPE = "cncmacro-escape"  # the error handler that writes what the encoding lacks as \\uNNNN
+
+
+def _escape_unencodable(error: UnicodeError) -> tuple[str, int]:
+    if not isinstance(error, UnicodeEncodeError):
+        raise error
+    out = []
+    for ch in error.object[error.start : error.end]:
+        c = ord(ch)
+        if c > 0xFFFF:  # as JSON writes it: a surrogate pair
+            c -= 0x10000
+            out.append(f"\\u{0xD800 + (c >> 10):04x}\\u{0xDC00 + (c & 0x3FF):04x}")
+        else:
+            out.append(f"\\u{c:04x}")
+    return "".join(out), error.end
+
+
+codecs.register_error(ESCAPE, _escape_unencodable)
+
+
+def tolerant(stream: object) -> None:
+    """Let ``stream`` (``sys.stdout``, ``sys.stderr``) write what its encoding lacks as escapes
+    instead of failing, unless it writes UTF-8 (which has every character) or was told how."""
+    if isinstance(stream, io.TextIOWrapper) and stream.errors == "strict":
+        if codecs.lookup(stream.encoding).name != "utf-8":
+            stream.reconfigure(errors=ESCAPE)
 
 
 class TextOut(Protocol):
