@@ -296,7 +296,7 @@ def cutter_move(
     if axes is None or mode not in _MOVE_MODES:
         return None
     i, j = axes[0], axes[1]
-    scale = _lathe_scale(p, stage)
+    scale = _lathe_scale(p, stage) if stage.lathe else None
     in_plane = centre is not None or start[i] != end[i] or start[j] != end[j]
     if not stage.on:
         if not in_plane:
