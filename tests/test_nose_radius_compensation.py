@@ -238,3 +238,11 @@ def test_run_json_lathe_moves_carry_the_nose_centre_path(tmp_path: Path) -> None
     assert (path["from"]["X"], path["from"]["Z"]) == pytest.approx((41.6, 0.188854), abs=1e-6)
     assert [(pc["to"]["X"], pc["to"]["Z"]) for pc in path["pieces"]] == [pytest.approx((61.6, -19.811146), abs=1e-6)]
     assert "tool_path" not in out["moves"][0]
+
+
+def test_the_machine_file_variables_give_the_gsk_offset_its_radius_and_tip() -> None:
+    # the GSK980TDi keeps offset 01's nose radius at #2901 and its tip at #2301 (seed 000 §3.28.1):
+    # from the machine file's [variables], the taper's first corner is the one G10 gives above
+    m = run(lines("O0001", "T0101", *TAPER), "gsk980tdi", variables={2901: 0.8, 2301: 3.0})
+    assert m.status == "completed", m.alarm
+    assert same(centre_points(m)[1], [(41.6, 5.8), (41.6, 0.188854)])
