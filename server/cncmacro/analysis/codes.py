@@ -245,9 +245,10 @@ CODES: dict[str, Code] = _codes(
          detail("An R arc whose end point is its start: the control makes no move; a full circle takes I, J or K.",
                 "R 圆弧的终点就是起点：系统不移动；整圆须用 I、J 或 K。"), RUN),
     Code("cutter-arc", ERROR,
-         detail("Cutter radius compensation started or cancelled on a G02/G03 arc (PS0034).",
-                "在 G02/G03 圆弧上建立或取消刀具半径补偿（PS0034）。"),
-         RUN, (CUTTER_ARC_START,), ("cutter-arc",)),
+         detail("Cutter radius compensation started or cancelled on a G02/G03 arc (PS0034; a warning where the "
+                "control has no such alarm).",
+                "在 G02/G03 圆弧上建立或取消刀具半径补偿（PS0034；系统无此报警时为警告）。"),
+         RUN, (CUTTER_ARC_START,), ("cutter-arc",), milder=WARNING),
     Code("cutter-interference", ERROR,
          detail("Under G41/G42 the tool centre's path runs against a programmed block, the cutter is larger than "
                 "an inside arc, or an inside corner's offsets do not meet (PS0041, PS0033; a warning where the "

@@ -101,6 +101,11 @@ class Dialect:
     # plane change in G41/G42, are FANUC's alarms PS0041, PS0033 and PS0037; without this switch
     # the run notes them and goes on (a start-up or cancel on an arc, PS0034, is an alarm on every mill)
     cutter_alarms: bool = False
+    # §10.2/§12 tool nose radius compensation in G70-G73 (GSK980TDi §3.23.1): only a G41/G42 on the
+    # shape's first block N(ns) compensates the shape, the cycle's end cancels it, and a compensation
+    # in force before the cycle is set aside for it; without this switch G70 runs its shape in the
+    # compensation in force (FANUC)
+    shape_compensation_first_block: bool = False
     # §1 the first two or more letters of a macro word stand for the word (WH for WHILE)
     keyword_abbreviations: bool = False
     # §4 IF [cond] <statement> without THEN runs the statement (FANUC profiles, Haas); elsewhere

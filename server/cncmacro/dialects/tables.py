@@ -78,16 +78,26 @@ class SystemVariable:
         return self.first <= number <= self.last
 
 
+# the imaginary tool nose directions 0-9 (docs/semantics.md §12, "Tool nose radius compensation"):
+# for each number, where the imaginary tool nose lies from the nose radius centre, as the signs of
+# its (X, Z) components (X radial), each times the radius; 0 and 9 put the programmed point on the centre
+IMAGINARY_TIPS: tuple[tuple[int, int], ...] = (
+    (0, 0), (1, 1), (1, -1), (-1, -1), (-1, 1), (0, 1), (1, 0), (0, -1), (-1, 0), (0, 0),
+)  # fmt: skip
+
+
 @dataclass(frozen=True, slots=True)
 class LatheOffsets:
     """Where a lathe keeps tool offset n (#base + n): ``axes`` holds (axis letter, geometry base,
     wear base) for each axis the offset shifts, ``radius`` the (geometry, wear) bases of the tool
     nose radius and ``tip`` the base of the imaginary tool nose direction. A T code's offset number
-    selects them (planner/tool_offsets.py); ``G10 P`` writes them (planner/one_shot.py)."""
+    selects them (planner/tool_offsets.py); ``G10 P`` writes them (planner/one_shot.py). ``tips``
+    gives each imaginary tool nose direction's place from the nose centre (``IMAGINARY_TIPS``)."""
 
     axes: tuple[tuple[str, int, int], ...]
     radius: tuple[int, int]
     tip: int
+    tips: tuple[tuple[int, int], ...] = IMAGINARY_TIPS
 
 
 @dataclass(frozen=True, slots=True)

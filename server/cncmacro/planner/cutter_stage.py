@@ -1,5 +1,5 @@
-"""Cutter radius compensation on a mill: G41/G42 with D, cancelled by G40 (docs/semantics.md,
-"Cutter radius compensation").
+"""Cutter radius compensation: G41/G42 with D on a mill, with the T offset's tool nose radius on a
+lathe, cancelled by G40 (docs/semantics.md, "Cutter radius compensation").
 
 The planner's stage between a block's programmed move and its time: while ``Planner.cutter`` is
 set, ``Planner.record`` hands each move here. The tool centre's end point of a block is known only
@@ -16,6 +16,13 @@ at start-up or cancel (PS0034), a corner whose offsets do not meet (PS0033), an 
 reverses a block or a cutter too large for an inside arc (PS0041), a plane change in G41/G42
 (PS0037); where the profile has no such alarms (``Dialect.cutter_alarms``) the last three are
 notes the run goes past.
+
+On a lathe (tool nose radius compensation) the geometry is the same in the Z-X plane, X taken as a
+radius (the plane's scale, ``MoveTimes.planes``: halved in, doubled back out), the radius and
+the imaginary tool nose direction come from the offset the T code selects
+(``Dialect.lathe_offsets``), and the programmed path is the imaginary tool nose's: outside offset
+mode the nose centre is the tip's direction away from the programmed point, so a start-up starts
+and a cancel ends there. The one-pass straight-cut join (``_line_after_line``) is the mill's only.
 """
 
 from __future__ import annotations
@@ -44,6 +51,7 @@ from .offset_geometry import (
     perpendicular_end,
     reverses,
 )
+from .tool_offsets import lathe_offset_number
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -52,6 +60,7 @@ LEFT, RIGHT, CANCEL = 41.0, 42.0, 40.0
 _T = TypeVar("_T")
 _MOVE_MODES = frozenset((0.0, 1.0, 2.0, 3.0))
 _Point = tuple[float, ...]
+_Scale = tuple[float, float] | None  # a lathe plane's units per program unit (X a diameter), None on a mill
 
 
 class Pending(NamedTuple):
@@ -88,11 +97,11 @@ class CutterStage:
     waiting for the next, the offsets already noted as having no value, and the indexes of the
     plane's two axes and where offset D's geometry and wear are kept."""
 
-    __slots__ = ("axes", "bases", "code", "noted", "on", "pending", "plane", "type_b")
+    __slots__ = ("axes", "bases", "code", "lathe", "noted", "on", "pending", "plane", "type_b")
 
     def __init__(
         self, code: float, plane: float, type_b: bool, axes: tuple[int, int] = (0, 1),
-        bases: tuple[int, int] = (13000, 12000),
+        bases: tuple[int, int] = (13000, 12000), lathe: bool = False,
     ) -> None:  # fmt: skip
         self.code = code
         self.on = False
@@ -100,11 +109,12 @@ class CutterStage:
         self.axes = axes  # the plane's two axes (indexes)
         self.bases = bases  # where offset D's geometry and wear are kept (#base + D)
         self.type_b = type_b
+        self.lathe = lathe  # tool nose radius compensation: the T offset's radius and tip, X a diameter
         self.pending: Pending | None = None
         self.noted: frozenset[int] = frozenset()
 
     def copy(self) -> CutterStage:
-        c = CutterStage(self.code, self.plane, self.type_b, self.axes, self.bases)
+        c = CutterStage(self.code, self.plane, self.type_b, self.axes, self.bases, self.lathe)
         c.on, c.pending, c.noted = self.on, self.pending, self.noted
         return c
 
@@ -113,6 +123,9 @@ def cutter_code(p: Planner, group: str, g: float, line: int) -> None:
     """A block's G code of the ``cutter`` group (G40, G41, G42) or, while the offset is on, of the
     ``plane`` group: start, keep or cancel the stage (before the modal code is set)."""
     stage = p.cutter
+    shape = p.shape
+    if shape is not None and (_outside_first_block(p, group, g, line) or shape.reading):
+        return  # a roughing cycle's shape is read, not cut: its passes are drawn as programmed (§12)
     if group == "plane":
         if stage is not None and stage.on and g != stage.plane:
             _finding(p, CUTTER_PLANE, "cutter-plane", line,
@@ -123,19 +136,38 @@ def cutter_code(p: Planner, group: str, g: float, line: int) -> None:
             ij = p.times.planes.get(g)
             stage.plane, stage.axes = g, (ij[0], ij[1]) if ij else (0, 1)
         return
-    if g in (LEFT, RIGHT) and not p.lathe:
+    if g in (LEFT, RIGHT):
         if stage is None:
             plane = p.modal.get("plane", 17.0)
             ij = p.times.planes.get(plane)
-            bases = p.dialect.tool_offset_bases
+            bases = p.dialect.lathe_offsets.radius if p.lathe else p.dialect.tool_offset_bases[2:4]
             p.cutter = CutterStage(g, plane, p.settings.cutter_startup == "B", (ij[0], ij[1]) if ij else (0, 1),
-                                   (bases[2], bases[3]))  # fmt: skip
+                                   (bases[0], bases[1]), p.lathe)  # fmt: skip
         else:
             stage.code = g
     elif stage is not None:
         stage.code = CANCEL
         if not stage.on:
             p.cutter = None
+
+
+def _outside_first_block(p: Planner, group: str, g: float, line: int) -> bool:
+    """Whether a G41/G42 of a G70 shape's block is to be passed over: on a profile that compensates
+    a shape only from its first block N(ns) (``Dialect.shape_compensation_first_block``: GSK980TDi
+    §3.23.1), one on a later block does not compensate the cycle, which the run notes (a warning:
+    the manual gives no alarm). One on the first block marks the shape compensated."""
+    shape = p.shape
+    if shape is None or group != "cutter" or g not in (LEFT, RIGHT) or not p.dialect.shape_compensation_first_block:
+        return False
+    if shape.first_axes is None:  # the first block: it names the shape's first axes after its G codes
+        shape.compensated = True
+        return False
+    p.host.note("cycle", detail(
+        f"G{g:g} on a block after the shape's first: this control compensates a G70-G73 shape only when G41/G42 "
+        "is on its first block N(ns); the shape is cut as programmed",
+        f"G{g:g} 不在精车形状的第一段：本系统仅当 G41/G42 在形状的第一段 N(ns) 时才对 G70-G73 形状进行刀尖半径补偿；"
+        "形状按编程轨迹切削"), line, "cycle-shape")  # fmt: skip
+    return True
 
 
 # the one-shot codes whose moves are made as programmed, the offset taken up again from the
@@ -163,6 +195,8 @@ def cutter_radius(p: Planner, line: int) -> float:
     """The radius offset D in force holds: its geometry plus its wear (half of it where the machine
     file's ``cutter_offset`` says the offsets hold diameters), 0 for D0 (no D yet) or an offset
     the run has no value for (noted once per offset number)."""
+    if p.lathe:
+        return nose_radius(p, line)
     d = p.codes.get("D")
     n = int(d) if d is not None else 0
     if n <= 0:
@@ -180,6 +214,45 @@ def cutter_radius(p: Planner, line: int) -> float:
                 "请在机床文件的 [variables] 中或用 G10 L12 给出该补偿值"), line, "cutter-offset")  # fmt: skip
         return 0.0
     return value
+
+
+def nose_radius(p: Planner, line: int) -> float:
+    """On a lathe: the tool nose radius of the offset the T code selects (T0101: offset 1), its
+    geometry plus its wear (``Dialect.lathe_offsets``; ``G10 P.. R..`` writes them), 0 for offset 0
+    or one the run has no value for (noted once per offset number, as ``cutter_radius`` does)."""
+    n = lathe_offset_number(p.codes.get("T") or 0.0)
+    if n <= 0:
+        return 0.0
+    geometry, wear = p.dialect.lathe_offsets.radius
+    stored = p.host.stored
+    g, w = stored(geometry + n), stored(wear + n)
+    if g is not None or w is not None:
+        return (g or 0.0) + (w or 0.0)
+    stage = p.cutter
+    if stage is not None and n not in stage.noted:
+        stage.noted = stage.noted | {n}
+        p.host.note("cutter", detail(
+            f"tool offset {n:02d} has no tool nose radius in this run (#{geometry + n}, #{wear + n}): the tool nose "
+            f"is drawn on the programmed path; give it in the machine file's [variables] or with G10 P{n} R..",
+            f"本次运行中刀补 {n:02d} 没有刀尖半径（#{geometry + n}、#{wear + n}）：刀尖按编程轨迹绘制；"
+            f"请在机床文件的 [variables] 中或用 G10 P{n} R.. 给出该值"), line, "cutter-offset")  # fmt: skip
+    return 0.0
+
+
+def _tip(p: Planner, radius: float, i: int, j: int) -> tuple[float, float]:
+    """Where the imaginary tool nose of the offset the T code selects lies from the nose centre,
+    in the plane's axes ``i`` and ``j`` (a radius along X): its direction (``Dialect.lathe_offsets``'s
+    tip, 0-9; another number, or none, is 0) times ``radius``. (0, 0) off a lathe."""
+    if not p.lathe or not radius:
+        return (0.0, 0.0)
+    offsets = p.dialect.lathe_offsets
+    n = lathe_offset_number(p.codes.get("T") or 0.0)
+    tip = p.host.stored(offsets.tip + n) if n > 0 else None
+    k = int(tip) if tip is not None and tip == int(tip) and 0 <= tip < len(offsets.tips) else 0
+    sx, sz = offsets.tips[k]
+    names = p.dialect.axes
+    signs = {"X": sx, "Z": sz}
+    return signs.get(names[i], 0) * radius, signs.get(names[j], 0) * radius
 
 
 def stored_radius(p: Planner, bases: tuple[int, int], n: int) -> float | None:
@@ -200,9 +273,14 @@ def _finding(p: Planner, number: int, subject: str, line: int, message: str) -> 
     p.host.note("cutter", message, line, subject)
 
 
-def _full(plane_point: tuple[float, float], like: _Point, i: int, j: int) -> _Point:
+def _full(plane_point: tuple[float, float], like: _Point, i: int, j: int, scale: _Scale = None) -> _Point:
+    """``like`` with its plane axes ``i`` and ``j`` at ``plane_point`` (a lathe's X doubled back to a
+    diameter: ``scale``, the plane's units per program unit, ``MoveTimes.planes``)."""
     out = list(like)
-    out[i], out[j] = plane_point
+    if scale is None:
+        out[i], out[j] = plane_point
+    else:
+        out[i], out[j] = plane_point[0] / scale[0], plane_point[1] / scale[1]
     return tuple(out)
 
 
@@ -218,6 +296,7 @@ def cutter_move(
     if axes is None or mode not in _MOVE_MODES:
         return None
     i, j = axes[0], axes[1]
+    scale = _lathe_scale(p, stage) if stage.lathe else None
     in_plane = centre is not None or start[i] != end[i] or start[j] != end[j]
     if not stage.on:
         if not in_plane:
@@ -226,42 +305,51 @@ def cutter_move(
         if d == 0.0:
             return None
         if mode in ARC_MODES:
-            raise MacroAlarm(CUTTER_ARC_START, _arc_message("G41/G42", "start-up", "建立"), "cutter-arc")
+            _arc_finding(p, _arc_message("G41/G42", "start-up", "建立"), line)
+            return None
         stage.on = True
+        first = _plane_point(start, i, j, scale)
+        element = PathElement(first, _plane_point(end, i, j, scale))
+        tip = _tip(p, abs(d), i, j)  # outside offset mode the programmed point is the imaginary tool nose's
+        begin = _full((first[0] - tip[0], first[1] - tip[1]), start, i, j, scale) if tip != (0.0, 0.0) else start
         d = d if stage.code == LEFT else -d
-        element = PathElement((start[i], start[j]), (end[i], end[j]))
-        return _provisional(p, line, mode, plane, element, d, start, start, end, None, feed, unit, True, i, j)
+        return _provisional(p, line, mode, plane, element, d, begin, start, end, None, feed, unit, True, i, j)
     pending = stage.pending
     if (centre is None and in_plane and mode != 0.0 and pending is not None and stage.code != CANCEL
             and pending.per_length and pending.element[2] is None and not pending.startup
-            and not pending.between and plane == pending.plane):  # fmt: skip
+            and not pending.between and plane == pending.plane and not stage.lathe):  # fmt: skip
         seconds = _line_after_line(p, stage, pending, line, mode, start, end, feed)
         if seconds is not None:
             return stage.pending.path, seconds  # type: ignore[union-attr]
     if not in_plane:  # a move off the plane: made where the tool centre is
-        at = (start[i], start[j]) if pending is None else _plane_point(pending.path.pieces[-1].end, i, j)
-        path = CentrePath(_full(at, start, i, j), (CentrePiece(_full(at, end, i, j)),))
+        at = _plane_point(start if pending is None else pending.path.pieces[-1].end, i, j, scale)
+        path = CentrePath(_full(at, start, i, j, scale), (CentrePiece(_full(at, end, i, j, scale)),))
         if pending is not None and p.record_moves:
             stage.pending = pending._replace(between=(*pending.between, len(p.moves)))
         return path, _cost(p, mode, path, feed, unit, plane, start, end)
     if stage.code == CANCEL:
-        if mode in ARC_MODES:
-            raise MacroAlarm(CUTTER_ARC_START, _arc_message("G40", "cancel", "取消"), "cutter-arc")
-        cancel = PathElement((start[i], start[j]), (end[i], end[j]))
-        begin = (start[i], start[j])
+        arc = mode in ARC_MODES
+        if arc:
+            _arc_finding(p, _arc_message("G40", "cancel", "取消"), line)
+        begin = _plane_point(start, i, j, scale)
+        last = _plane_point(end, i, j, scale)
         if pending is not None:
-            outer = MEET if stage.type_b else PERPENDICULAR_BEFORE
-            corner = _corner(p, pending, cancel, pending.d, outer, line)
-            _settle(p, pending, corner, line, i, j)
+            outer = PERPENDICULAR_BEFORE if arc or not stage.type_b else MEET
+            corner = _corner(p, pending, PathElement(begin, last), pending.d, outer, line)
+            _settle(p, pending, corner, line, i, j, scale)
             begin = corner.after_start
         stage.on = False
         stage.pending = None
         p.cutter = None
-        path = CentrePath(_full(begin, start, i, j), (CentrePiece(end),))
+        if arc:  # a profile without the alarm: the arc as programmed
+            return None
+        tip = _tip(p, abs(nose_radius(p, line)), i, j) if stage.lathe else (0.0, 0.0)  # its tip ends on the end
+        finish = _full((last[0] - tip[0], last[1] - tip[1]), end, i, j, scale) if tip != (0.0, 0.0) else end
+        path = CentrePath(_full(begin, start, i, j, scale), (CentrePiece(finish),))
         return path, _cost(p, mode, path, feed, unit, plane, start, end)
     d = cutter_radius(p, line)
     d = d if stage.code == LEFT else -d
-    element = _element(mode, start, end, centre, i, j)
+    element = _element(mode, start, end, centre, i, j, scale)
     if centre is not None and offset_element(element, d) is None:
         radius = _arc_radius(element)
         _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, detail(
@@ -269,14 +357,14 @@ def cutter_move(
             "follow it on the inside",
             f"刀具（半径 {abs(d):g}）大于此圆弧（半径 {radius:g}）：刀具中心无法在内侧沿其移动"))  # fmt: skip
         d = 0.0
-    begin = (start[i], start[j])
+    begin = _plane_point(start, i, j, scale)
     if pending is not None:
         outer = PERPENDICULAR_AFTER if pending.startup and not stage.type_b else MEET
         corner = _corner(p, pending, element, d, outer, line)
-        _settle(p, pending, corner, line, i, j)
+        _settle(p, pending, corner, line, i, j, scale)
         begin = corner.after_start
-    return _provisional(p, line, mode, plane, element, d, _full(begin, start, i, j), start, end, centre, feed, unit,
-                        False, i, j)  # fmt: skip
+    return _provisional(p, line, mode, plane, element, d, _full(begin, start, i, j, scale), start, end, centre, feed,
+                        unit, False, i, j)  # fmt: skip
 
 
 _tuple_new = tuple.__new__  # a named tuple without its constructor's keyword handling
@@ -287,7 +375,7 @@ def straight_cut(p: Planner, file: str, line: int, mode: float, start: _Point, e
     cut under compensation, its centre path and time included, as ``Planner.record`` would;
     False, recording nothing, for any other case, which ``Planner.record`` then takes."""
     stage = p.cutter
-    if stage is None or mode == 0.0:
+    if stage is None or mode == 0.0 or stage.lathe:
         return False
     pending = stage.pending
     if (pending is None or stage.code == CANCEL or not pending.per_length or pending.element[2] is not None
@@ -406,6 +494,15 @@ def _reversal_message(line: int) -> str:
     )
 
 
+def _arc_finding(p: Planner, message: str, line: int) -> None:
+    """A start-up or cancel on an arc: PS0034 on every mill and on a lathe with FANUC's cutter
+    alarms; a note on a lathe without them (GSK980TDi: no source at hand gives its alarm)."""
+    if p.lathe and not p.dialect.cutter_alarms:
+        p.host.note("cutter", message, line, "cutter-arc")
+        return
+    raise MacroAlarm(CUTTER_ARC_START, message, "cutter-arc")
+
+
 def _arc_message(code: str, what: str, what_zh: str) -> str:
     return detail(
         f"the {what} of cutter radius compensation ({code}) is on a G02/G03 arc: the control starts and cancels "
@@ -419,14 +516,29 @@ def _arc_radius(s: PathElement) -> float:
     return round(hypot(s.start[0] - s.centre[0], s.start[1] - s.centre[1]), 4)
 
 
-def _plane_point(q: _Point, i: int, j: int) -> tuple[float, float]:
-    return q[i], q[j]
+def _lathe_scale(p: Planner, stage: CutterStage) -> _Scale:
+    """The plane's units per program unit on a lathe (X a diameter: ``MoveTimes.planes``), None on
+    a mill, whose points are taken as they are."""
+    if not stage.lathe:
+        return None
+    axes = p.times.planes.get(stage.plane)
+    return None if axes is None else (axes[2], axes[3])
 
 
-def _element(mode: float, start: _Point, end: _Point, centre: _Point | None, i: int, j: int) -> PathElement:
+def _plane_point(q: _Point, i: int, j: int, scale: _Scale = None) -> tuple[float, float]:
+    """``q``'s point in the plane of axes ``i`` and ``j`` (a lathe's X halved: ``scale``)."""
+    if scale is None:
+        return q[i], q[j]
+    return q[i] * scale[0], q[j] * scale[1]
+
+
+def _element(
+    mode: float, start: _Point, end: _Point, centre: _Point | None, i: int, j: int, scale: _Scale = None
+) -> PathElement:
+    a, b = _plane_point(start, i, j, scale), _plane_point(end, i, j, scale)
     if centre is None or mode not in ARC_MODES:
-        return PathElement((start[i], start[j]), (end[i], end[j]))
-    return PathElement((start[i], start[j]), (end[i], end[j]), (centre[i], centre[j]), mode == 3.0)
+        return PathElement(a, b)
+    return PathElement(a, b, _plane_point(centre, i, j, scale), mode == 3.0)
 
 
 def _corner(p: Planner, pending: Pending, after: PathElement, d: float, outer: str, line: int) -> Corner:
@@ -448,12 +560,14 @@ def _provisional(
 ) -> tuple[CentrePath, float]:  # fmt: skip
     """The path of a new move in the plane from ``begin``, ending on its end's perpendicular as
     if nothing followed, kept pending for the next move to put right."""
-    q = perpendicular_end(element, d)
-    piece = CentrePiece(_full(q, end, i, j), None if startup or element.centre is None else centre, mode == 2.0)
-    path = CentrePath(begin, (piece,))
-    seconds = _cost(p, mode, path, feed, unit, plane, start, end)
     stage = p.cutter
     assert stage is not None
+    q = perpendicular_end(element, d)
+    scale = _lathe_scale(p, stage)
+    piece = CentrePiece(_full(q, end, i, j, scale), None if startup or element.centre is None else centre,
+                        mode == 2.0)  # fmt: skip
+    path = CentrePath(begin, (piece,))
+    seconds = _cost(p, mode, path, feed, unit, plane, start, end)
     index = len(p.moves) if p.record_moves else -1
     per_length = 0.0 if mode == 0.0 else p.feed_seconds(mode, 1.0, feed, start, end, unit)
     (ax, ay), (bx, by) = element.start, element.end
@@ -463,7 +577,7 @@ def _provisional(
     return path, seconds
 
 
-def _settle(p: Planner, pending: Pending, corner: Corner, line: int, i: int, j: int) -> None:
+def _settle(p: Planner, pending: Pending, corner: Corner, line: int, i: int, j: int, scale: _Scale = None) -> None:
     """Put the pending move's centre path right now that the corner after it is known: its time,
     its length, its record, and the moves off the plane made at its end."""
     provisional = pending.path
@@ -472,17 +586,17 @@ def _settle(p: Planner, pending: Pending, corner: Corner, line: int, i: int, j: 
     element = pending.element
     pieces: list[CentrePiece] = []
     if pending.startup or element.centre is None:
-        pieces.append(CentrePiece(_full(corner.before_end, end_full, i, j)))
+        pieces.append(CentrePiece(_full(corner.before_end, end_full, i, j, scale)))
     else:
-        pieces.append(CentrePiece(_full(corner.before_end, end_full, i, j), last.centre, last.clockwise))
+        pieces.append(CentrePiece(_full(corner.before_end, end_full, i, j, scale), last.centre, last.clockwise))
     if not pending.startup and pending.d:
-        piece = centre_segment(element, _plane_point(provisional.start, i, j), corner.before_end)
+        piece = centre_segment(element, _plane_point(provisional.start, i, j, scale), corner.before_end)
         if reverses(element, piece):
             _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, _reversal_message(pending.line))
     for link in corner.links:
-        pieces.append(CentrePiece(_full(link, end_full, i, j)))
+        pieces.append(CentrePiece(_full(link, end_full, i, j, scale)))
     if corner.after_start != corner.before_end or corner.links:
-        pieces.append(CentrePiece(_full(corner.after_start, end_full, i, j)))
+        pieces.append(CentrePiece(_full(corner.after_start, end_full, i, j, scale)))
     path = CentrePath(provisional.start, tuple(pieces))
     mode, unit, plane = pending.mode, pending.unit, pending.plane
     seconds = _cost(p, mode, path, pending.feed, unit, plane, pending.start, pending.end)
@@ -497,8 +611,10 @@ def _settle(p: Planner, pending: Pending, corner: Corner, line: int, i: int, j: 
         if 0 <= k < len(moves):
             mv = moves[k]
             if mv.tool_path is not None:
-                moves[k] = mv._replace(tool_path=CentrePath(_full(at, mv.tool_path.start, i, j),
-                                                            (CentrePiece(_full(at, mv.end, i, j)),)))  # fmt: skip
+                off = CentrePath(
+                    _full(at, mv.tool_path.start, i, j, scale), (CentrePiece(_full(at, mv.end, i, j, scale)),)
+                )
+                moves[k] = mv._replace(tool_path=off)
 
 
 def restore_pending(p: Planner) -> None:

@@ -18,6 +18,14 @@ what each block of G70–G76 means and the moves it makes.
 
 Every move of a cycle is recorded with the cycle block's line and ``pass_of`` (its code), so
 the toolpath view draws each pass and the debugger knows which pass it is on.
+
+Under tool nose radius compensation (cutter_stage.py; docs/semantics.md §12) G70's shape blocks
+are cut compensated, as any block; the roughing passes of G71–G73 and the moves of the other
+cycles are drawn as programmed, the compensation set aside for them and taken up again after.
+Where the profile compensates a shape only from its first block
+(``Dialect.shape_compensation_first_block``: GSK980TDi), a compensation in force before the
+cycle is set aside for it, a G41/G42 on the shape's first block compensates G70's pass, and the
+return to the start point cancels it.
 """
 
 from __future__ import annotations
@@ -26,6 +34,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, NamedTuple
 
+from ..bilingual import detail
+from .cutter_stage import CANCEL, CutterStage, uncompensated
 from .cycle_passes import Pass, record_passes
 from .cycle_rules import check_cycle_block, check_shape
 from .groove_cycles import diameter_grooving, face_grooving
@@ -57,8 +67,10 @@ class ShapeCall(NamedTuple):
 class ShapeReading:
     """A shape cycle under way: its code, block (file, line), words, where the tool started,
     whether the shape is being read (G71–G73) rather than run (G70), the codes its reading set
-    aside, the segments read so far (mode, start, end, centre), in work coordinates, and the axes
-    (by index) its first block with an axis word names (both X and Z: a type II shape)."""
+    aside, the segments read so far (mode, start, end, centre), in work coordinates, the axes
+    (by index) its first block with an axis word names (both X and Z: a type II shape), and under
+    tool nose radius compensation (cutter_stage.py) whether its first block has G41/G42, the
+    compensation set aside for the cycle and the G40/G41/G42 code in force before it."""
 
     code: float
     file: str
@@ -71,10 +83,15 @@ class ShapeReading:
         default_factory=list
     )
     first_axes: frozenset[int] | None = None
+    compensated: bool = False
+    kept_cutter: CutterStage | None = None
+    cutter_code: float = CANCEL
 
     def copy(self) -> ShapeReading:
         return ShapeReading(self.code, self.file, self.line, dict(self.words), self.start, self.reading,
-                            dict(self.kept_codes), list(self.segments), self.first_axes)  # fmt: skip
+                            dict(self.kept_codes), list(self.segments), self.first_axes, self.compensated,
+                            None if self.kept_cutter is None else self.kept_cutter.copy(),
+                            self.cutter_code)  # fmt: skip
 
 
 # code -> the planner of a cycle's second block: (planner, block words with U/W, file, line, end point)
@@ -112,6 +129,15 @@ def lathe_cycle(
         if g != FINISHING:
             p.cycle_params[g] = words
         return False, None
+    if p.cutter is not None:  # drawn as programmed under tool nose radius compensation (module docstring)
+        return uncompensated(p, lambda: _other_cycle(p, g, axes, inc, other, file, line))
+    return _other_cycle(p, g, axes, inc, other, file, line)
+
+
+def _other_cycle(
+    p: Planner, g: float, axes: dict[int, float], inc: dict[int, float], other: dict[str, float], file: str, line: int
+) -> tuple[bool, ShapeCall | None]:
+    """A block of a lathe cycle other than G70–G73 (``lathe_cycle``)."""
     plan = MULTIPLE_CYCLES.get(g)
     if plan is not None or g in CHECKED_CYCLES:
         words = block_words(p, axes, inc, other)
@@ -140,7 +166,13 @@ def begin_shape(p: Planner, call: ShapeCall, words: dict[str, float], file: str,
     them (G70) from where the tool is."""
     reading = call.code in ROUGHING
     kept = {k: p.codes.get(k) for k in ("F", "S", "T")} if reading else {}
-    p.shape = ShapeReading(call.code, file, line, words, tuple(p.pos), reading, kept)
+    shape = ShapeReading(call.code, file, line, words, tuple(p.pos), reading, kept)
+    shape.cutter_code = p.modal.get("cutter", CANCEL)
+    stage = p.cutter
+    if stage is not None and (reading or p.dialect.shape_compensation_first_block):  # set aside for the cycle
+        shape.kept_cutter = stage
+        p.cutter = None
+    p.shape = shape
 
 
 def end_shape(p: Planner) -> None:
@@ -152,7 +184,16 @@ def end_shape(p: Planner) -> None:
     p.shape = None
     start = list(shape.start)
     if not shape.reading:
-        p.move(shape.file, shape.line, 0.0, start)
+        # under compensation the last block ends on its end's perpendicular and the return is made
+        # as programmed (as G28's moves, cutter_stage.py); where the shape's G41/G42 is the cycle's
+        # own (GSK), the return cancels it
+        if p.cutter is not None:
+            uncompensated(p, lambda: p.move(shape.file, shape.line, 0.0, start))
+            if p.dialect.shape_compensation_first_block:
+                p.cutter = None
+        else:
+            p.move(shape.file, shape.line, 0.0, start)
+        _after_shape(p, shape)
         return
     for k, v in shape.kept_codes.items():
         p.codes[k] = v
@@ -176,6 +217,30 @@ def end_shape(p: Planner) -> None:
         at = passes[-1][2]
     record_passes(p, shape.file, shape.line, passes, f"G{shape.code:g}")
     p.pos[:] = start
+    _after_shape(p, shape)
+
+
+def _after_shape(p: Planner, shape: ShapeReading) -> None:
+    """Take up again the compensation set aside for the cycle: the next move in the plane starts
+    it from where the tool is (cutter_stage.py). Where only the shape's first block compensates
+    (GSK980TDi §3.23.1), the cycle leaves the G40/G41/G42 code as it found it, and a compensation in
+    force before the cycle without a G41/G42 on that block leaves the shape uncompensated: a
+    warning on the cycle block, since the control gives no alarm."""
+    kept = shape.kept_cutter
+    if kept is not None and kept.code != CANCEL:
+        kept.on = False
+        kept.pending = None
+        p.cutter = kept
+    if not p.dialect.shape_compensation_first_block:
+        return
+    p.modal["cutter"] = shape.cutter_code
+    if kept is not None and kept.code != CANCEL and not shape.compensated:
+        c = f"G{shape.code:g}"
+        p.host.note("cycle", detail(
+            f"{c}: the tool nose radius compensation in force is set aside for the cycle, and the shape's first block "
+            "N(P) has no G41/G42: this control cuts the shape without compensation",
+            f"{c}：已有的刀尖半径补偿在循环中暂时取消，而精车形状的第一段 N(P) 没有 G41/G42：本系统不带补偿切削该形状"),
+            shape.line, "cycle-shape")  # fmt: skip
 
 
 def _roughing_steps(p: Planner, shape: ShapeReading, xi: int, zi: int, facing: bool) -> list[Step]:

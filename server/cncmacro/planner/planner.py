@@ -276,7 +276,10 @@ class Planner:
             drill_block(self, canned, axes, incremental, other, file, line)  # drill_cycles.py
             return True, None
         if mode in self.cycle_codes:
-            self.turning_cycle(file, line, mode, axes, incremental, other)
+            if self.cutter is not None:  # drawn as programmed under tool nose radius compensation (§12)
+                uncompensated(self, lambda: self.turning_cycle(file, line, mode, axes, incremental, other))
+            else:
+                self.turning_cycle(file, line, mode, axes, incremental, other)
             return True, None  # a turning cycle ends where it started
         centre = self.block_arc(mode, target, other, line)
         moved = not self._call_needs_distance or target != self.pos or centre is not None

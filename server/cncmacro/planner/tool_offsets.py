@@ -21,8 +21,7 @@ def select_tool(p: Planner, t: float) -> None:
     p.codes["T"] = t
     if not p.dialect.lathe:
         return
-    n = int(t)
-    offset = n % 100 if n >= 100 else n % 10
+    offset = lathe_offset_number(t)
     vec = [0.0] * len(p.pos)
     if offset:
         stored = p.host.stored
@@ -30,6 +29,13 @@ def select_tool(p: Planner, t: float) -> None:
             if axis in p.axis_index:
                 vec[p.axis_index[axis]] = (stored(geometry + offset) or 0.0) + (stored(wear + offset) or 0.0)
     p.tool_vector = vec
+
+
+def lathe_offset_number(t: float) -> int:
+    """The offset number of a lathe's T code: its last two digits from T100 up (T0101: 1), else its
+    last digit (T11: 1)."""
+    n = int(t)
+    return n % 100 if n >= 100 else n % 10
 
 
 def apply_length_offset(p: Planner, h: float) -> None:

@@ -48,6 +48,8 @@ PROFILE = Dialect(
     lathe_cycles=GSK_LATHE_CYCLES,
     cycle_words=GSK980TDI_CYCLE_WORDS,
     cycle_rules=GSK980TDI_RULES,
+    # G41/G42 compensate a G70-G73 shape only from its first block N(ns) (docs/semantics.md §12)
+    shape_compensation_first_block=True,
     common_ranges=(CommonRange(100, 199, False), CommonRange(500, 999, True)),
     m98_program_digits=4,
     modal_call_needs_distance=True,
