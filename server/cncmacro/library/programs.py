@@ -23,11 +23,12 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..bilingual import Detail, detail
 from ..syntax.block_parser import BlockCache, shared_cache
 from ..syntax.program import Program, ProgramUnit
 from .dialect_choice import dialect_from_text
 from .file_cache import FileCache, LoadedFile, load_text
-from .files import MAX_PROGRAM_FILES, SkippedFileError, o_number, program_files_in, stays_inside
+from .files import MAX_PROGRAM_FILES, SkippedFileError, o_number, program_files_in, shown_text, stays_inside
 
 __all__ = ["FileCache", "FoundProgram", "LoadedFile", "ProgramLibrary", "is_program_name", "load_text"]
 
@@ -83,6 +84,7 @@ class ProgramLibrary:
         # folder -> the numbers its files' headers were searched for in vain, kept as the listing is
         self._absent: dict[Path, set[int]] = {}
         self._given: set[str] = set(self.texts)  # files given by their text: programs whatever their name
+        self.unread: dict[str, Detail] = {}  # files that could not be read, and why
 
     # ---- files
     def load(self, path: str | Path) -> LoadedFile | None:
@@ -94,8 +96,14 @@ class ProgramLibrary:
         if text is None:
             try:
                 loaded = self.disk.load(key)
-            except (OSError, SkippedFileError):
+            except OSError as e:  # a file a DNC program holds open on Windows, one we may not read
                 self._files[key] = None
+                shown, why = shown_text(key), e.strerror or str(e)
+                self.unread[key] = detail(f"{shown} could not be read: {why}", f"无法读取 {shown}：{why}")
+                return None
+            except SkippedFileError as e:
+                self._files[key] = None
+                self.unread[key] = e.message
                 return None
         else:
             loaded = load_text(key, text, self.cache)
@@ -177,11 +185,9 @@ class ProgramLibrary:
             unit = near.program.unit_numbered(number)
             if unit is not None:
                 return FoundProgram(near, unit)
-        names = sorted({f"o{number:04d}", f"o{number}", f"{number:04d}", f"{number}", f"o{number:08d}"})
         folders = self._search_folders(near)
         for folder in folders:
-            stems = self._stems_in(folder)
-            for p in sorted(p for name in names for p in stems.get(name, ())):
+            for p in self._named_for(folder, number):
                 found = self._unit_in(p, number)
                 if found is not None:
                     return found
@@ -252,6 +258,23 @@ class ProgramLibrary:
                     loaded = self.load(p)
                     if loaded is not None:
                         return FoundProgram(loaded, loaded.program.named_units()[0])
+        return None
+
+    def _named_for(self, folder: Path, number: int) -> list[Path]:
+        """The files of ``folder`` whose name spells program ``number`` (``O1234.nc``, ``1234``)."""
+        names = {f"o{number:04d}", f"o{number}", f"{number:04d}", f"{number}", f"o{number:08d}"}
+        stems = self._stems_in(folder)
+        return sorted(p for name in names for p in stems.get(name, ()))
+
+    def unread_for(self, number: int, near: LoadedFile | None = None) -> Detail | None:
+        """Why a file named for program ``number`` could not be read by ``find_number`` (a
+        DNC program holding it open, a binary or too large a file), for the message of a program
+        not found: the program may well be there."""
+        for folder in self._search_folders(near):
+            for p in self._named_for(folder, number):
+                why = self.unread.get(str(p))
+                if why is not None:
+                    return why
         return None
 
     def _unit_in(self, path: Path, number: int) -> FoundProgram | None:

@@ -70,6 +70,10 @@ class CallStack:
         if found is None and self.dialect.on_control(number):
             return self.library.control_program(number)
         if found is None:
+            unread = self.library.unread_for(number, near)  # there, but a DNC program holds it open
+            if unread is not None:
+                raise MacroAlarm(PROGRAM_NOT_FOUND, detail(f"program O{number:04d} not found: {unread}",
+                                                           f"未找到程序 O{number:04d}：{unread.zh}"))  # fmt: skip
             raise MacroAlarm(PROGRAM_NOT_FOUND, detail(f"program O{number:04d} not found", f"未找到程序 O{number:04d}"))
         return found
 

@@ -8,7 +8,7 @@ are known, so a target that is not among them is left to the run rather than rep
 
 from __future__ import annotations
 
-from ...bilingual import pick
+from ...bilingual import Detail, pick
 from ...dialects.alarms import PROGRAM_NOT_FOUND
 from ...dialects.dialect import Dialect
 from ...library.programs import FoundProgram, LoadedFile, ProgramLibrary
@@ -56,21 +56,34 @@ class ProgramFinder:
             self._names[name] = self.library.find_name(name, self.near)
         return self._names[name]
 
+    def unread(self, site: CallSite) -> Detail | None:
+        """Why the file named for ``site``'s program could not be read, if that is why it was
+        not found."""
+        if site.number is None or self.library is None:
+            return None
+        return self.library.unread_for(site.number, self.near)
+
     def is_this_file(self, found: FoundProgram) -> bool:
         return found.file is self.near
 
 
-def not_found(site: CallSite, file: str, line: int, locale: str, dialect: Dialect) -> Diagnostic:
-    """The ``program-not-found`` diagnostic of a call whose program does not exist."""
+def not_found(site: CallSite, file: str, line: int, locale: str, dialect: Dialect,
+              unread: Detail | None = None) -> Diagnostic:  # fmt: skip
+    """The ``program-not-found`` diagnostic of a call whose program does not exist; ``unread``:
+    why the file named for it could not be read (``ProgramLibrary.unread_for``)."""
     if site.number is not None:
         what = f"O{site.number:04d}"
     else:
         what = f"[{site.name}]"
     alarm = dialect.alarm_said(PROGRAM_NOT_FOUND)
-    message = pick(
-        locale,
-        f"{site.kind} calls {what}, which is neither in this file nor found near it ({alarm})",
-        f"{site.kind} 调用的程序 {what} 不在本文件中，附近也找不到（{alarm.zh}）",
-    )
+    if unread is not None:
+        message = pick(locale, f"{site.kind} calls {what}, not found: {unread} ({alarm})",
+                       f"{site.kind} 调用的程序 {what} 未找到：{unread.zh}（{alarm.zh}）")  # fmt: skip
+    else:
+        message = pick(
+            locale,
+            f"{site.kind} calls {what}, which is neither in this file nor found near it ({alarm})",
+            f"{site.kind} 调用的程序 {what} 不在本文件中，附近也找不到（{alarm.zh}）",
+        )
     end = max(site.end, site.start + 1)
     return diagnostic(file, line, site.start, line, end, "program-not-found", message)

@@ -118,7 +118,7 @@ class LabelChecker:
         if found == UNKNOWN:
             return
         if found is None:
-            self.out.append(not_found(site, self.file, line, self.locale, self.dialect))
+            self.out.append(not_found(site, self.file, line, self.locale, self.dialect, self.finder.unread(site)))
             return
         assert not isinstance(found, str)
         here = self.finder.is_this_file(found)
