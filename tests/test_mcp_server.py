@@ -68,7 +68,7 @@ async def test_run_returns_a_10_mm_feed_move_at_600_mm_min_taking_1_s(tmp_path: 
     assert move["from"]["X"] == 0 and move["to"]["X"] == 10 and move["time"] == pytest.approx(1.0)
     assert got["cycle"]["seconds"] == pytest.approx(1.0) and got["cycle"]["cut"] == pytest.approx(10.0)
     assert got["dialect"] == "fanuc-0i"
-    assert "1 moves" in got["summary"] and "completed" in got["summary"]
+    assert got["summary"] == "completed after 2 blocks; 1 move; cycle time ≈ 1.0 s · 10 mm cut · 0 mm rapid"
 
 
 @pytest.mark.asyncio

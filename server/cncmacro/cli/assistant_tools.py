@@ -53,7 +53,7 @@ from ..planner.move_json import machine_json
 from .check import analyse_files, check_paths, diagnostic_json
 from .cycle_report import cycle_json
 from .locale_option import ENGLISH, locale_argument
-from .run import result_json
+from .run import STATUS_ZH, result_json
 
 MAX_FINDINGS = 200
 MAX_MOVES = 100
@@ -264,15 +264,18 @@ def _run_answer(machine: Machine, program: str, name: str, locale: str, shown_mo
 
 
 def _run_summary(status: str, blocks: int, moves: int, cycle: str, timed_out: bool, locale: str) -> str:
+    """One sentence for the run: how it ended, after how many blocks, how many moves, its cycle time."""
+    ran = f"{blocks} block" + ("" if blocks == 1 else "s")
+    made = f"{moves} move" + ("" if moves == 1 else "s")
     if timed_out:
-        return pick(locale, f"stopped after {MAX_SECONDS:g} s and {blocks} blocks (an endless loop?); {moves} moves",
+        return pick(locale, f"stopped after {MAX_SECONDS:g} s and {ran} (an endless loop?); {made}",
                     f"运行 {MAX_SECONDS:g} 秒、{blocks} 个程序段后停止（是否有死循环？）；{moves} 段运动")  # fmt: skip
     if status == RunStatus.LIMIT:
-        return pick(locale, f"stopped after {blocks} blocks: the block budget ran out (an endless loop?); "
-                    f"{moves} moves",
+        return pick(locale, f"stopped after {ran}: the block budget ran out (an endless loop?); {made}",
                     f"执行 {blocks} 个程序段后停止：已达到程序段数上限（是否有死循环？）；{moves} 段运动")  # fmt: skip
-    return pick(locale, f"{status} after {blocks} blocks; {moves} moves; cycle time {cycle}",
-                f"状态：{status}，共执行 {blocks} 个程序段；{moves} 段运动；加工时间 {cycle}")  # fmt: skip
+    return pick(locale, f"{status} after {ran}; {made}; cycle time {cycle}",
+                f"状态：{STATUS_ZH.get(RunStatus(status), status)}，共执行 {blocks} 个程序段；{moves} 段运动；"
+                f"加工时间 {cycle}")  # fmt: skip
 
 
 # ---------------------------------------------------------------- explain
