@@ -205,3 +205,20 @@ def test_a_run_past_the_time_limit_stops_after_its_chunk_and_says_so(monkeypatch
     got = assistant_tools.run_program(text="O5000\nWHILE[1EQ1]DO1\nEND1\nM30\n")
     assert got["status"] == "limit" and got["blocks"] == assistant_tools.CHUNK == 100_000
     assert got["summary"].startswith("stopped after 0 s")
+
+
+@pytest.mark.asyncio
+async def test_a_profile_asked_for_wins_over_the_machine_file_and_says_so(tmp_path: Path) -> None:
+    shop = tmp_path / "shop"
+    shop.mkdir()
+    (shop / ".cncmacro.toml").write_text('base = "haas"\n')
+    (shop / "O0001.nc").write_text("O0001\nG00 X1.\nM30\n")
+    (shop / "O0002.nc").write_bytes(b"O0002\n\0\0\0")  # binary: not read, the rest still checked
+    async with mcp_session(tmp_path) as session:
+        ran = await answer(session, "run", path="shop/O0001.nc", profile="fanuc-0i")
+        checked = await answer(session, "check", path="shop", profile="fanuc-0i")
+    assert ran["dialect"] == "fanuc-0i"
+    assert any("overrides haas" in m for m in ran["messages"])
+    assert any("O0002.nc" in m and "binary" in m for m in checked["messages"])
+    assert any("overrides haas" in m for m in checked["messages"])
+    assert checked["errors"] == 0

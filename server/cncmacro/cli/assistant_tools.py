@@ -123,10 +123,10 @@ def check_program(
     _program(path, text)
     if text is None:
         assert path is not None
-        findings, unread = _check_path(path, dialect, loc, max_blocks)
+        findings, said = _check_path(path, dialect, loc, max_blocks)
     else:
         findings = [diagnostic_json(d) for d in _check_text(text, path, dialect, loc, max_blocks)]
-        unread = []
+        said = []
     errors = sum(1 for f in findings if f["severity"] == "error")
     warnings = sum(1 for f in findings if f["severity"] == "warning")
     summary = pick(loc, f"{errors} error(s), {warnings} warning(s), {len(findings)} finding(s) in all",
@@ -140,15 +140,16 @@ def check_program(
         "findings": findings[:MAX_FINDINGS],
         "cut": len(findings) > MAX_FINDINGS,
     }
-    if unread:
-        answer["notRead"] = unread
+    if said:  # what check says on standard error: the files it did not read, notes on the machine file
+        answer["messages"] = said
     return answer
 
 
 def _check_path(path: str, dialect: str | None, locale: str, max_blocks: int | None) -> tuple[list[Any], list[str]]:
-    """``check_paths``'s JSON findings and what it said on standard error. A path that gives
-    nothing to check (missing, binary, a bad machine file) is a ``ToolInputError``; a folder in
-    which some files were not read gives its findings and names those files."""
+    """``check_paths``'s JSON findings and what it said on standard error (files not read, notes on
+    the machine file). A path that gives nothing to check (missing, binary, a bad machine file) is a
+    ``ToolInputError``; a folder in which some files were not read gives its findings and names
+    those files."""
     out, err = io.StringIO(), io.StringIO()
     status = check_paths([path], out, err, "json", dialect=dialect, locale=locale, max_blocks=max_blocks)
     said = [line for line in err.getvalue().splitlines() if line.strip()]
@@ -203,12 +204,14 @@ def run_program(
         values = dict(parse_preset(s) for s in presets or [])
         if path is None or not path.strip():
             assert text is not None
+            notes = []
             machine = prepare_text_run(text, TEXT_NAME, dialect=dialect, presets=values, max_blocks=max_blocks,
                                        m99_ends_main=True)  # fmt: skip
         else:
             data = None if text is None else text.encode("utf-8", errors="surrogateescape")
-            machine = prepare_run(Path(path), dialect=dialect, presets=values, max_blocks=max_blocks, data=data,
-                                  saving=False, m99_ends_main=True, typed=True).machine  # fmt: skip
+            prepared = prepare_run(Path(path), dialect=dialect, presets=values, max_blocks=max_blocks, data=data,
+                                   saving=False, m99_ends_main=True, typed=True)  # fmt: skip
+            machine, notes = prepared.machine, [in_language(n, chinese) for n in prepared.notes]
     except ValueError as e:  # SetupError, a bad preset
         said = e.args[0] if e.args else str(e)
         if path and text is None and Path(path).is_dir():
@@ -217,7 +220,9 @@ def run_program(
         raise ToolInputError(in_language(said, chinese)) from None
     program = machine.frames[0].name if machine.frames else Path(path or TEXT_NAME).name
     timed_out = _run_bounded(machine, machine.settings.max_blocks)
-    return _run_answer(machine, program, Path(path or TEXT_NAME).name, loc, shown_moves, timed_out)
+    answer = _run_answer(machine, program, Path(path or TEXT_NAME).name, loc, shown_moves, timed_out)
+    answer["messages"] = [*notes, *answer["messages"]]  # what to know of the machine file first
+    return answer
 
 
 def _run_bounded(machine: Machine, budget: int) -> bool:

@@ -24,6 +24,7 @@ from mcp.server.mcpserver.exceptions import ToolError
 from mcp_types import ToolAnnotations
 
 from .. import __version__
+from ..dialects import DEFAULT_DIALECT, DIALECTS
 from .assistant_tools import (
     MAX_FINDINGS,
     MAX_MOVES,
@@ -41,12 +42,12 @@ INSTRUCTIONS = (
     "control. Check a program before giving it to a machinist, run it to see its moves, variables, alarm and "
     "cycle time, and explain a system variable or G/M code for the control's profile. Nothing is written to "
     "disk. A profile is a control (list them with profiles); without one a program's own "
-    "(cncmacro: dialect=...) comment or its machine file decides, else fanuc-0i."
+    "(cncmacro: dialect=...) comment or its machine file decides, else " + DEFAULT_DIALECT + "."
 )
 _COMMON = (
     "Arguments: path (a program file{folder}, relative to the server's working folder) or text (the program "
     "itself; with a path too, the text is that file's content and calls find programs in its folder); profile "
-    "(optional: fanuc-0i, fanuc-30i, haas, gsk980tdi, fanuc-0i-lathe or an alias); locale (optional: en or "
+    "(optional: " + ", ".join(DIALECTS) + " or an alias); locale (optional: en or "
     "zh-CN, the messages' language); max_blocks (optional block budget, default the machine file's, "
     "1,000,000)."
 )
@@ -68,7 +69,7 @@ RUN_TEXT = (
 EXPLAIN_TEXT = (
     "Explain what a control documents for a variable (#5001, #100, #1), a G or M code (G71, M98, G54.1), a "
     "GSK980TDi G65 H command (H01) or a macro function or word (ATAN, WHILE, DPRNT), on one profile "
-    "(optional, default fanuc-0i): what it is, and for a system variable its unit, access and axis. "
+    "(optional, default " + DEFAULT_DIALECT + "): what it is, and for a system variable its unit, access and axis. "
     "Arguments: subject, profile, locale (en or zh-CN)."
 )
 PROFILES_TEXT = (
