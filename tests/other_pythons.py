@@ -25,7 +25,8 @@ from pythons import Interpreter, oldest_and_newest
 ROOT = Path(__file__).resolve().parent.parent
 
 # Each layer once: syntax, the dialects' tables, the machine file (tomllib or tomli), the
-# interpreter, `check` and `run`, an LSP session over stdio and the debug adapter in Python.
+# interpreter, `check` and `run`, an LSP session over stdio, the debug adapter in Python and the
+# MCP server through the SDK's client (the optional cncmacro[mcp], whose packages are compiled).
 # What is the same on every Python stays in the main suite only: the language server's position
 # encodings (arithmetic on str, which every version does alike) cost ten sessions here.
 QUICK = [
@@ -40,6 +41,7 @@ QUICK = [
     "tests/test_dap_protocol_and_history.py",
     "tests/lsp/test_lsp_diagnostics.py",
     "tests/hardening/test_shared_state.py",
+    "tests/test_mcp_server.py",
 ]
 DAP_QUICK = ["tests/dap/debugger.test.js"]
 

@@ -59,7 +59,8 @@ RULES: dict[str, str] = {
     "L4": "cli/, lsp/ and dap/ do not import one another; only cli/main.py starts the servers, "
           "from inside its functions",
     "L5": "third-party packages only where they belong: lark in syntax/, pygls and lsprotocol in lsp/, "
-          "tomli in library/machine_file.py; everything else is the standard library",
+          "tomli in library/machine_file.py, mcp and mcp_types in cli/mcp_server.py; everything else is the "
+          "standard library",
     "L6": "nothing in the package imports tests or benchmarks",
     "L7": "the Debug Adapter Protocol is spoken only in dap/: dap/protocol.py frames it and only "
           "dap/session.py uses that",
@@ -87,6 +88,9 @@ THIRD_PARTY = {
     "pygls": ("lsp/",),
     "lsprotocol": ("lsp/",),
     "tomli": ("library/machine_file.py",),  # tomllib's twin for Python 3.10
+    # the Model Context Protocol SDK (cncmacro[mcp]) and its types: only the server that speaks it
+    "mcp": ("cli/mcp_server.py",),
+    "mcp_types": ("cli/mcp_server.py",),
 }
 STDLIB = frozenset(sys.stdlib_module_names) | {"tomllib"}  # tomllib: a 3.11 name, not in 3.10's list
 NOT_THE_PACKAGE = ("tests", "benchmarks", "conftest")

@@ -1,6 +1,7 @@
 /**
  * The extension's entry point: output channels, the language server, the debugger, the
- * commands, the toolpath view and the dialect status-bar item, the `.txt` programs, and the
+ * commands, the toolpath view and the dialect status-bar item, the `.txt` programs, the MCP
+ * server offered to the editor's AI agent (`mcpServer.ts`), and the
  * reaction to settings changes and to another interpreter picked in the Python extension.
  *
  * The extension wakes for every plain-text file as well (to find the `.txt` programs among
@@ -11,6 +12,7 @@ import * as vscode from 'vscode';
 import { registerCommands } from './commands';
 import { registerDebugger } from './debugAdapter';
 import { LANGUAGE_ID, ServerController } from './languageClient';
+import { registerMcpServer } from './mcpServer';
 import { onDidChangePythonExtensionEnvironment } from './python';
 import { pythonPath, SECTION } from './settings';
 import { registerSequenceNumberCommands } from './sequenceNumbers';
@@ -30,6 +32,7 @@ export function activate(context: vscode.ExtensionContext): void {
   registerToolpath(context, server);
   registerDebugger(context, server);
   registerSequenceNumberCommands(context);
+  registerMcpServer(context, server); // where the editor has MCP support (VS Code 1.101 and later)
   context.subscriptions.push(
     vscode.workspace.onDidChangeConfiguration(async (e) => {
       if (!server.wanted) {

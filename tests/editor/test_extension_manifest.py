@@ -239,3 +239,14 @@ def test_the_server_s_tokens_take_the_colours_of_the_grammar_s_scopes() -> None:
     assert {"keyword.control.conditional.cnc-macro", "keyword.control.loop.cnc-macro"} <= grammar
     assert "keyword.control.goto.cnc-macro" in grammar
     assert {m["id"] for m in contributes["semanticTokenModifiers"]} == set(classes)
+
+
+def test_the_mcp_server_the_client_offers_is_declared_and_wakes_the_extension() -> None:
+    """VS Code starts an extension's MCP servers only for a provider id the manifest declares,
+    and asks for them through the activation event of that id (docs/cli.md, ``cncmacro mcp``)."""
+    source = (ROOT / "client" / "src" / "mcpServer.ts").read_text(encoding="utf-8")
+    (provider_id,) = re.findall(r"export const MCP_PROVIDER_ID = '([^']+)'", source)
+    manifest = _manifest()
+    assert [p["id"] for p in manifest["contributes"]["mcpServerDefinitionProviders"]] == [provider_id]
+    assert f"onMcpCollection:{provider_id}" in manifest["activationEvents"]
+    assert "['-m', 'cncmacro', 'mcp']" in source and "cncmacroCommand(python, ['mcp'])" in source

@@ -133,12 +133,12 @@ def check_paths(
             reason = in_language(said, chinese)
             print(f"cncmacro check：{reason}" if chinese else f"cncmacro check: {reason}", file=shown_err)
             return 2
-        diagnostics += _analyse(ws, files, workspace, locale)
+        diagnostics += analyse_files(ws, files, workspace, locale)
     if not hints:
         diagnostics = [d for d in diagnostics if d.severity != "hint"]
     diagnostics.sort(key=Diagnostic.sort_key)
     if fmt == "json":
-        out.write(json_text([_as_json(d) for d in diagnostics], indent=2) + "\n")
+        out.write(json_text([diagnostic_json(d) for d in diagnostics], indent=2) + "\n")
     elif fmt == "sarif":
         out.write(json_text(to_sarif(diagnostics, __version__), indent=2) + "\n")
     else:
@@ -205,7 +205,7 @@ def _noted(
     return settings
 
 
-def _analyse(ws: WorkspaceAnalysis, files: list[tuple[Path, str]], workspace: Callable[[], WorkspaceAnalysis],
+def analyse_files(ws: WorkspaceAnalysis, files: list[tuple[Path, str]], workspace: Callable[[], WorkspaceAnalysis],
              locale: str) -> list[Diagnostic]:  # fmt: skip
     """The diagnostics of ``files`` analysed together in ``ws``. Should the checker itself fail
     there (a bug, not a mistake in a program), each file is analysed again on its own in a fresh
@@ -232,7 +232,7 @@ def _analyse(ws: WorkspaceAnalysis, files: list[tuple[Path, str]], workspace: Ca
     return found
 
 
-def _as_json(d: Diagnostic) -> dict[str, object]:
+def diagnostic_json(d: Diagnostic) -> dict[str, object]:
     """The CLI contract's JSON object: 1-based lines and columns, end column exclusive."""
     return {
         "file": shown_text(d.file),

@@ -60,12 +60,35 @@ def build_parser() -> argparse.ArgumentParser:
         "dap", help="debug adapter (Debug Adapter Protocol on stdio)", description="Run the debug adapter on stdio."
     )
     dap.set_defaults(handler=main_dap)
+    mcp = sub.add_parser(
+        "mcp",
+        help="Model Context Protocol server on stdio: check, run and explain for an AI assistant",
+        description="Run a Model Context Protocol server on stdio whose tools check and run programs, explain a "
+        "variable or code and list the profiles; it reads only the paths it is given and writes nothing. "
+        "Needs the mcp package: pip install 'cncmacro[mcp]'.",
+    )
+    mcp.set_defaults(handler=main_mcp)
     return parser
 
 
 def main_dap(args: argparse.Namespace) -> int:
     from ..dap.session import serve
 
+    return serve()
+
+
+def main_mcp(args: argparse.Namespace) -> int:
+    try:
+        from .mcp_server import serve
+    except ModuleNotFoundError as e:
+        if (e.name or "").partition(".")[0] not in ("mcp", "mcp_types"):
+            raise
+        print(pick(environment_locale(),
+                   "cncmacro mcp: the Model Context Protocol package is not installed in this Python: "
+                   "install it with pip install 'cncmacro[mcp]'",
+                   "cncmacro mcp：此 Python 中没有安装 Model Context Protocol 软件包："
+                   "请用 pip install 'cncmacro[mcp]' 安装"), file=sys.stderr)  # fmt: skip
+        return 2
     return serve()
 
 

@@ -176,3 +176,34 @@ def prepare_run(
         prepared.release()
         raise
     return prepared
+
+
+def prepare_text_run(
+    text: str,
+    name: str,
+    *,
+    dialect: str | None = None,
+    presets: dict[int, float] | None = None,
+    max_blocks: int | None = None,
+    m99_ends_main: bool = False,
+) -> Machine:
+    """A machine at the first block of a program that is only text (``name`` names it): with no
+    folder there is no machine file, no persistent-variable file and no called program on disk,
+    so nothing is read and the default settings hold (``#500–#999`` start vacant). The text is
+    taken as ``decode_program`` takes a file's bytes (a binary one is refused); every mistake is a
+    ``SetupError``."""
+    try:
+        source = decode_program(text.encode("utf-8", errors="surrogateescape"), name)
+    except SkippedFileError as e:
+        raise SetupError(e.message) from None
+    settings = MachineSettings() if max_blocks is None else replace(MachineSettings(), max_blocks=max_blocks)
+    profile = file_profile(source.text, settings, dialect)
+    machine = Machine(
+        profile, settings, ProgramLibrary([], extensions=settings.extensions), m99_ends_main=m99_ends_main
+    )
+    try:
+        machine.apply_presets(presets or {})
+        machine.start_file(name, source.text)
+    except ValueError as e:
+        raise SetupError(e.args[0] if e.args else str(e)) from None  # keeps a Chinese text
+    return machine
