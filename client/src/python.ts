@@ -3,7 +3,8 @@
  *
  * The order is: the `cncMacro.python.path` setting; the active environment of the Python
  * extension, when that extension is installed (it is never required); then `python3`, `py -3`
- * (Windows) and `python` on the PATH. An interpreter older than 3.10 is skipped with a note, and
+ * (Windows) and `python` on the PATH. An interpreter older than 3.10 is skipped with a note (and
+ * Windows's Microsoft Store placeholder, which runs no Python, is named as such), and
  * when none fits the user is told plainly what to do. Once the Python extension has been asked,
  * `onDidChangePythonExtensionEnvironment` fires whenever the user picks another interpreter there.
  */
@@ -14,6 +15,9 @@ import * as vscode from 'vscode';
 import * as settings from './settings';
 
 export const MIN_VERSION: readonly [number, number] = [3, 10];
+/** The exit status of the `python`/`python3` that Windows puts on the PATH when no Python is
+ * installed (an app execution alias of the Microsoft Store): it says so and runs nothing. */
+const STORE_PLACEHOLDER_EXIT = 9009;
 
 /** A command that starts Python: the executable and the arguments before the script's own. */
 export interface PythonCommand {
@@ -42,8 +46,14 @@ export function probe(candidate: PythonCommand, timeoutMs = 10000): Promise<Foun
       { timeout: timeoutMs, windowsHide: true },
       (error, stdout) => {
         if (error) {
-          const missing = (error as NodeJS.ErrnoException).code === 'ENOENT';
-          resolve(missing ? vscode.l10n.t('no such program') : error.message.split('\n')[0]);
+          const code: unknown = (error as { code?: unknown }).code; // a spawn error's name, or the exit status
+          if (code === 'ENOENT') {
+            resolve(vscode.l10n.t('no such program'));
+          } else if (process.platform === 'win32' && code === STORE_PLACEHOLDER_EXIT) {
+            resolve(vscode.l10n.t("the Microsoft Store's placeholder, not a Python: none is installed under that name"));
+          } else {
+            resolve(error.message.split('\n')[0]);
+          }
           return;
         }
         const match = /^(\d+) (\d+) (\d+) (.*)$/m.exec(stdout.trim());
