@@ -110,6 +110,29 @@ def test_a_run_that_waits_in_vain_says_so_and_changes_nothing(tmp_path: Path, pr
     assert stored(vars_file) == {"500": 8.0}
 
 
+@pytest.mark.skipif(sys.platform != "win32", reason="Windows only: msvcrt.locking (runs on the Windows runner)")
+def test_a_run_waits_in_vain_for_a_lock_held_with_msvcrt_and_changes_nothing(tmp_path: Path, program: Path) -> None:
+    import msvcrt
+
+    vars_file = tmp_path / ".cncmacro-vars.json"
+    vars_file.write_text('{"variables": {"500": 7.0}}\n', encoding="utf-8")
+    with open(tmp_path / ".cncmacro-vars.json.cncmacro-lock", "w") as held:  # another run has the file
+        held.write(f"{os.getpid()}\n")
+        held.flush()
+        held.seek(0)
+        msvcrt.locking(held.fileno(), msvcrt.LK_NBLCK, 1)  # byte 0, as the runs lock it
+        try:
+            r = cli("run", "--wait", "0.3", str(program))
+        finally:
+            held.seek(0)
+            msvcrt.locking(held.fileno(), msvcrt.LK_UNLCK, 1)
+        assert r.returncode == 2 and r.stdout == ""
+        assert "in use by another run or debug session" in r.stderr and "--no-save" in r.stderr
+    assert stored(vars_file) == {"500": 7.0}
+    assert cli("run", str(program)).returncode == 0  # the lock let go: the run saves
+    assert stored(vars_file) == {"500": 8.0}
+
+
 @posix_only
 def test_a_save_keeps_a_group_shared_files_mode(tmp_path: Path, program: Path) -> None:
     vars_file = tmp_path / ".cncmacro-vars.json"
