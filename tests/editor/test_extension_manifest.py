@@ -13,6 +13,8 @@ import sys
 from fnmatch import fnmatch
 from pathlib import Path
 
+import pytest
+
 if sys.version_info >= (3, 11):
     import tomllib
 else:
@@ -254,3 +256,16 @@ def test_the_mcp_server_the_client_offers_is_declared_and_wakes_the_extension() 
     assert [p["id"] for p in manifest["contributes"]["mcpServerDefinitionProviders"]] == [provider_id]
     assert f"onMcpCollection:{provider_id}" in manifest["activationEvents"]
     assert "['-m', 'cncmacro', 'mcp']" in source and "cncmacroCommand(python, ['mcp'])" in source
+
+
+EDITOR_PRODUCT = ROOT / "tests" / "node_modules" / "code-server" / "lib" / "vscode" / "product.json"
+
+
+@pytest.mark.skipif(not EDITOR_PRODUCT.exists(), reason="the editor tests' VS Code is installed by make setup")
+def test_the_oldest_vs_code_the_extension_accepts_is_the_one_the_editor_tests_run() -> None:
+    # an engines floor below the tested editor would promise editors nothing has tried
+    manifest = _manifest()
+    floor = manifest["engines"]["vscode"].lstrip("^")
+    tested = json.loads(EDITOR_PRODUCT.read_text(encoding="utf-8"))["version"]
+    assert floor.split(".")[:2] == tested.split(".")[:2], f"engines ^{floor}, the editor tests run VS Code {tested}"
+    assert manifest["devDependencies"]["@types/vscode"] == floor  # the API the client compiles against
