@@ -1,7 +1,8 @@
 """Documents as VS Code on Windows names them: ``file:///c%3A/...``, the drive letter in lower case
 and its colon escaped. The server reads that as the drive's path, so a program in the folder is
 found by its callers, and publishes its findings under the very URI the editor sent (a URI
-written another way would be a second document the editor never shows). Windows only: the
+written another way would be a second document the editor never shows); and a program on a
+share (``file://server/share/...``) finds its callees on the share. Windows only: the
 drive letters are the system's; runs on the Windows runner."""
 
 from __future__ import annotations
@@ -52,6 +53,23 @@ async def test_a_document_named_with_an_escaped_drive_colon_finds_its_callee_and
     )
     got = await diagnostics_for(client, uri, 1)  # published under the URI as the editor wrote it
     # the callee on the drive is found (no program-not-found); the run reaches the division
+    assert [(d.range.start.line, d.code) for d in got.diagnostics if d.code != "not-executed"] == [
+        (2, "division-by-zero")
+    ]
+
+
+async def test_a_document_on_a_unc_share_finds_its_callee_on_the_share(client: LanguageClient) -> None:
+    root: Path = client.root  # type: ignore[attr-defined]
+    # the runner's drive through its administrative share: \\localhost\C$\...
+    share = Path(f"\\\\localhost\\{str(root)[0]}$" + str(root)[2:])
+    if not (share / "O1234.nc").exists():
+        pytest.skip(f"no administrative share here: {share}")
+    uri = "file://localhost/" + quote(str(share / "O0002.nc")[len("\\\\localhost\\") :].replace("\\", "/"))
+    text = "O0002\nM98 P1234\n#1=1/0\nM30\n"
+    client.text_document_did_open(
+        types.DidOpenTextDocumentParams(types.TextDocumentItem(uri=uri, language_id="cncmacro", version=1, text=text))
+    )
+    got = await diagnostics_for(client, uri, 1)
     assert [(d.range.start.line, d.code) for d in got.diagnostics if d.code != "not-executed"] == [
         (2, "division-by-zero")
     ]
