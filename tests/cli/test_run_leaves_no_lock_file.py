@@ -62,6 +62,9 @@ def test_an_interrupted_or_terminated_run_deletes_its_lock_file(tmp_path, signal
     run = subprocess.Popen(
         [sys.executable, "-m", "cncmacro", "run", "--max-blocks", "1000000000", str(program)],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        # Ctrl+C as a terminal delivers it, whatever the suite runs under: a job a shell started
+        # in the background has SIGINT ignored, and so would the run it starts
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
     )  # fmt: skip
     try:
         deadline = time.monotonic() + 30
