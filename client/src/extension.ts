@@ -32,7 +32,6 @@ export function activate(context: vscode.ExtensionContext): void {
   registerToolpath(context, server);
   registerDebugger(context, server);
   registerSequenceNumberCommands(context);
-  registerMcpServer(context, server); // where the editor has MCP support (VS Code 1.101 and later)
   context.subscriptions.push(
     vscode.workspace.onDidChangeConfiguration(async (e) => {
       if (!server.wanted) {
@@ -62,6 +61,7 @@ export function activate(context: vscode.ExtensionContext): void {
   if (firstLine) {
     registerTxtPrograms(context, firstLine);
   }
+  registerMcpServer(context, server); // where the editor has MCP support (VS Code 1.101 and later), last
 }
 
 /** Start the language server now if a CNC macro program is open, else when the first one opens. */

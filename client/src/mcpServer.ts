@@ -91,6 +91,13 @@ export function registerMcpServer(context: vscode.ExtensionContext, server: Serv
       return resolved;
     },
   };
-  context.subscriptions.push(register.call(api.lm, MCP_PROVIDER_ID, provider));
+  try {
+    context.subscriptions.push(register.call(api.lm, MCP_PROVIDER_ID, provider));
+  } catch (e) {
+    // VS Code 1.100 has the function as a proposed API, which throws for an extension that did
+    // not ask for the proposal: the server is not offered, and nothing else changes
+    server.log.info(`the MCP server is not offered in this editor: ${e instanceof Error ? e.message : String(e)}`);
+    return false;
+  }
   return true;
 }
