@@ -79,6 +79,7 @@ from .checks.static_lines import StaticLines
 from .diagnostics import Diagnostic
 from .first_screen import FIRST_SCREEN_LINES, first_screen_findings
 from .indexes.block_memo import BlockMemo
+from .indexes.call_index import CallIndex
 from .indexes.disk_callers import DiskCallers, Targets
 from .indexes.open_programs import OpenProgram, RunKey, open_programs
 from .runs.clock_reads import DiskClockReads
@@ -116,6 +117,7 @@ class WorkspaceAnalysis:
         workspace_folders: Sequence[str] = (),
         files: FileCache | None = None,
         memo: BlockMemo | None = None,
+        call_index: CallIndex | None = None,
     ) -> None:
         self.settings = settings or MachineSettings()
         self.memo = memo if memo is not None else BlockMemo()  # what each block says by itself
@@ -135,7 +137,9 @@ class WorkspaceAnalysis:
         self.files = files if files is not None else FileCache()
         self.library = ProgramLibrary(self.search_paths, files=self.files, extensions=self.settings.extensions)
         self.workspace_folders = [str(p) for p in workspace_folders]
-        self.callers = DiskCallers()  # the open programs' callers on disk, and the runs that start there
+        # the open programs' callers on disk, and the runs that start there; ``call_index``, when
+        # given, is an index of those folders shared with other workspaces (reading the same files)
+        self.callers = DiskCallers(call_index)
         # the not-executed ranges, kept across edits
         self._unreached = UnreachedRanges(lambda b: block_roles.passed_over(b, self.settings.block_delete))
         self._runs = EntryRuns(self._unreached, self._start_run)
