@@ -291,19 +291,24 @@ class WorkspaceAnalysis:
                              self.settings.block_delete)  # fmt: skip
 
     # ---------------------------------------------------------------- analysing
-    def analyze(self, path: str, should_cancel: Callable[[], bool] | None = None) -> AnalysisResult | None:
+    def analyze(self, path: str, should_cancel: Callable[[], bool] | None = None,
+                slice_seconds: float | None = None) -> AnalysisResult | None:  # fmt: skip
         """See the module docstring. Python's cycle collector is paused meanwhile, as during a
         machine run: the analysis makes no garbage cycles, and a collection walking the
-        compiled blocks and records of a large file cost more than an edit's whole analysis."""
+        compiled blocks and records of a large file cost more than an edit's whole analysis.
+        With ``slice_seconds`` each run goes on for at most that long (``EntryRuns.advance``):
+        the result's ``unfinished`` names the files whose findings wait for the runs that did
+        not end, which the next call takes further."""
         was_enabled = gc.isenabled()
         gc.disable()
         try:
-            return self._analyze(path, should_cancel)
+            return self._analyze(path, should_cancel, slice_seconds)
         finally:
             if was_enabled:
                 gc.enable()
 
-    def _analyze(self, path: str, should_cancel: Callable[[], bool] | None) -> AnalysisResult | None:
+    def _analyze(self, path: str, should_cancel: Callable[[], bool] | None,
+                 slice_seconds: float | None) -> AnalysisResult | None:  # fmt: skip
         key = self._key(path)
         version = self.docs[key].version if key in self.docs else None
         for d in self.docs.values():  # the long part of a first analysis: it stops between chunks
@@ -335,7 +340,8 @@ class WorkspaceAnalysis:
             self.progress = Progress(pick(self.locale, f"running {found.label}", f"运行 {found.label}"),
                                      STATIC_SHARE + (1 - STATIC_SHARE) * n / len(primary))  # fmt: skip
 
-        if not self._runs.advance(primary, self.max_blocks, should_cancel, running, self.locale, self.max_seconds):
+        if not self._runs.advance(primary, self.max_blocks, should_cancel, running, self.locale, self.max_seconds,
+                                  slice_seconds):  # fmt: skip
             return None
         return self._result(version)
 
