@@ -4,12 +4,13 @@ A file's findings depend only on the files its programs call and the files that 
 (callers of callers too), so files that no call connects can be analysed in separate
 workspaces, one after the other, and each group's findings printed as soon as it is done:
 memory then follows the largest group, not the folder. ``call_groups`` reads each file once,
-notes what it names (its O numbers, its file name as a number and as a bracketed name) and the
-programs its calls name (``machine.calls.recognise_call``, as the interpreter reads a call), and
-joins into one group every file with the files that may hold what it calls. It errs on the side
-of joining: a number held by several files joins them all, and a file whose call names its
-program by a value only a run knows (``G65 P#1``) joins every file, so that no run can reach a
-file that is not open beside it (``library/programs.py`` decides which file a call reaches).
+notes what it names (its O numbers, its file name as a number and as a bracketed name, with or
+without its ending) and the programs its calls name (``machine.calls.recognise_call``, as the
+interpreter reads a call), and joins into one group every file with the files that may hold
+what it calls. It errs on the side of joining: a number held by several files joins them all,
+and a file whose call names its program by a value only a run knows (``G65 P#1``) joins every
+file, so that no run can reach a file that is not open beside it (``library/programs.py``
+decides which file a call reaches).
 """
 
 from __future__ import annotations
@@ -76,7 +77,7 @@ def _names_and_calls(
     path: Path, text: str, word: Callable[[str], object], settings: MachineSettings, dialect: str | None
 ) -> tuple[set[Key], set[Key]]:
     """What a call may name to reach ``path`` and what the calls in its text name."""
-    names: set[Key] = {("s", path.stem.lower())}
+    names: set[Key] = {("s", path.stem.lower()), ("s", path.name.lower())}  # P[CUT] and P[CUT.CNC]
     number = o_number(path.stem, bare=True)
     if number is not None:
         names.add(("n", number))
