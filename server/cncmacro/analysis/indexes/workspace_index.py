@@ -100,8 +100,12 @@ class WorkspaceIndex:
                  memo: BlockMemo | None = None, files: FileCache | None = None,
                  calls_for: Callable[[str], Calls] = lambda path: None,
                  extensions_for: Callable[[str], frozenset[str]] = lambda path: frozenset(),
-                 machine_of: Callable[[str], Path | None] = lambda path: None) -> None:  # fmt: skip
+                 machine_of: Callable[[str], Path | None] = lambda path: None,
+                 reading_rule: Callable[[], object] = lambda: None) -> None:  # fmt: skip
         self.open_files = open_files
+        # what ``dialect_for`` and ``calls_for`` answer by besides a file's text (the editor's
+        # setting, the machine files): while it is the same, a file's answer is kept with its sites
+        self.reading_rule = reading_rule
         self.machine_of = machine_of  # the machine file a path is read with
         self.extensions_for = extensions_for
         self.dialect_for = dialect_for
@@ -111,7 +115,8 @@ class WorkspaceIndex:
         self.roots: list[Path] = []
         self.files: dict[str, LoadedFile] = {}
         self.skipped: list[Detail] = []  # what the last scan did not read, and why
-        self._sites: dict[str, tuple[LoadedFile, SiteIndex]] = {}  # the files' site indexes, by path
+        # the files' site indexes, by path, with the reading rule they were made under
+        self._sites: dict[str, tuple[LoadedFile, SiteIndex, object]] = {}
         # per folder, the program numbers no file header there holds: a call to a program outside
         # the index is searched for in its folders' first files once, not at every hover or look-up
         # (``ProgramLibrary.find_number``); a folder's entry goes when a file there changes
@@ -229,15 +234,20 @@ class WorkspaceIndex:
             yield FileSites(doc.path, doc.lines, doc.sites)
         files = self.files
         kept = self._sites
-        for path in [p for p, (loaded, _) in kept.items() if files.get(p) is not loaded]:
+        for path in [p for p, (loaded, _, _) in kept.items() if files.get(p) is not loaded]:
             del kept[path]
+        rule = self.reading_rule()
         for path, loaded in files.items():
             if path in open_paths:
                 continue
             hit = kept.get(path)
-            dialect, calls = self.dialect_for(loaded.lines, path), self.calls_for(path)
-            if hit is None or not hit[1].reads_with(dialect, calls):
-                hit = kept[path] = (loaded, SiteIndex(loaded.program.blocks, dialect, calls, self.memo))
+            if hit is None or hit[2] != rule:  # the profile and call codes asked once per rule, not per hover
+                dialect, calls = self.dialect_for(loaded.lines, path), self.calls_for(path)
+                if hit is None or not hit[1].reads_with(dialect, calls):
+                    hit = (loaded, SiteIndex(loaded.program.blocks, dialect, calls, self.memo), rule)
+                else:
+                    hit = (loaded, hit[1], rule)
+                kept[path] = hit
             yield FileSites(path, loaded.lines, hit[1])
 
     def programs(self) -> Iterator[ProgramEntry]:
