@@ -4,6 +4,7 @@ all read through one ``FileCache``, and ``cncmacro check``'s analysis reads each
 
 from __future__ import annotations
 
+import re
 import sys
 from collections import Counter
 from dataclasses import dataclass
@@ -16,7 +17,7 @@ from cncmacro.analysis.indexes.workspace_index import WorkspaceIndex
 from cncmacro.analysis.workspace import WorkspaceAnalysis
 from cncmacro.dialects import get_dialect
 from cncmacro.library import files
-from cncmacro.library.programs import LoadedFile
+from cncmacro.library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from cncmacro.syntax.document import ParsedDocument
 
 MAIN = "O0001\nG65 P9100 A1.\nM30\n"
@@ -96,3 +97,32 @@ def test_check_reads_each_file_once(workspace: Path, reads: Counter[str]) -> Non
     result = analysis.analyze(macro)
     assert result is not None and result.values[macro]
     assert reads == Counter({"O0001.nc": 1, "O0002.nc": 1, "O9100.nc": 1, "O9200.nc": 1})  # O9100 by the callers' index
+
+
+def test_a_program_no_header_holds_is_searched_for_once_until_a_file_changes(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # a hover or go-to-definition on the P of a call to O5555, which no file holds: the first one
+    # reads the folder's files for an O5555 header; later ones do not read them again, until a file
+    # event in that folder (a file that now holds O5555 is then found)
+    searched: list[Path] = []
+    original = ProgramLibrary._header_in
+
+    def header_in(self: ProgramLibrary, folder: Path, number: int, header: re.Pattern[str]) -> FoundProgram | None:
+        searched.append(folder)
+        return original(self, folder, number, header)
+
+    monkeypatch.setattr(ProgramLibrary, "_header_in", header_in)
+    index = WorkspaceIndex(lambda: [], lambda lines, path: get_dialect("fanuc"))
+    index.scan([str(workspace)])
+    main = str(workspace / "O0001.nc")
+    caller = Document(main, ParsedDocument(MAIN), SiteIndex(ParsedDocument(MAIN).blocks))
+    assert index.find_program(caller, 5555, None) is None
+    assert searched == [workspace]
+    assert index.find_program(caller, 5555, None) is None
+    assert index.find_program(caller, 5555, None) is None
+    assert searched == [workspace]  # not read again
+    (workspace / "macros.nc").write_text("O5555\nM99\n", encoding="utf-8")
+    index.reload(str(workspace / "macros.nc"))  # the editor's file event
+    found = index.find_program(caller, 5555, None)
+    assert found is not None and Path(found.file.path).name == "macros.nc"

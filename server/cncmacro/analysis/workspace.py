@@ -79,6 +79,7 @@ from .checks.static_lines import StaticLines
 from .diagnostics import Diagnostic
 from .first_screen import FIRST_SCREEN_LINES, first_screen_findings
 from .indexes.block_memo import BlockMemo
+from .indexes.call_index import CallIndex
 from .indexes.disk_callers import DiskCallers, Targets
 from .indexes.open_programs import OpenProgram, RunKey, open_programs
 from .runs.clock_reads import DiskClockReads
@@ -116,6 +117,7 @@ class WorkspaceAnalysis:
         workspace_folders: Sequence[str] = (),
         files: FileCache | None = None,
         memo: BlockMemo | None = None,
+        call_index: CallIndex | None = None,
     ) -> None:
         self.settings = settings or MachineSettings()
         self.memo = memo if memo is not None else BlockMemo()  # what each block says by itself
@@ -136,7 +138,9 @@ class WorkspaceAnalysis:
         self._library = ProgramLibrary(self.search_paths, files=self.files, extensions=self.settings.extensions)
         self._library_due = False  # the library is made again when next used (``_reload``)
         self.workspace_folders = [str(p) for p in workspace_folders]
-        self.callers = DiskCallers()  # the open programs' callers on disk, and the runs that start there
+        # the open programs' callers on disk, and the runs that start there; ``call_index``, when
+        # given, is an index of those folders shared with other workspaces (reading the same files)
+        self.callers = DiskCallers(call_index)
         # the not-executed ranges, kept across edits
         self._unreached = UnreachedRanges(lambda b: block_roles.passed_over(b, self.settings.block_delete))
         self._runs = EntryRuns(self._unreached, self._start_run)
@@ -298,19 +302,24 @@ class WorkspaceAnalysis:
                              self.settings.block_delete)  # fmt: skip
 
     # ---------------------------------------------------------------- analysing
-    def analyze(self, path: str, should_cancel: Callable[[], bool] | None = None) -> AnalysisResult | None:
+    def analyze(self, path: str, should_cancel: Callable[[], bool] | None = None,
+                slice_seconds: float | None = None) -> AnalysisResult | None:  # fmt: skip
         """See the module docstring. Python's cycle collector is paused meanwhile, as during a
         machine run: the analysis makes no garbage cycles, and a collection walking the
-        compiled blocks and records of a large file cost more than an edit's whole analysis."""
+        compiled blocks and records of a large file cost more than an edit's whole analysis.
+        With ``slice_seconds`` each run goes on for at most that long (``EntryRuns.advance``):
+        the result's ``unfinished`` names the files whose findings wait for the runs that did
+        not end, which the next call takes further."""
         was_enabled = gc.isenabled()
         gc.disable()
         try:
-            return self._analyze(path, should_cancel)
+            return self._analyze(path, should_cancel, slice_seconds)
         finally:
             if was_enabled:
                 gc.enable()
 
-    def _analyze(self, path: str, should_cancel: Callable[[], bool] | None) -> AnalysisResult | None:
+    def _analyze(self, path: str, should_cancel: Callable[[], bool] | None,
+                 slice_seconds: float | None) -> AnalysisResult | None:  # fmt: skip
         key = self._key(path)
         version = self.docs[key].version if key in self.docs else None
         _ = self.library  # made again first, when documents closed or files changed meanwhile
@@ -343,7 +352,8 @@ class WorkspaceAnalysis:
             self.progress = Progress(pick(self.locale, f"running {found.label}", f"运行 {found.label}"),
                                      STATIC_SHARE + (1 - STATIC_SHARE) * n / len(primary))  # fmt: skip
 
-        if not self._runs.advance(primary, self.max_blocks, should_cancel, running, self.locale, self.max_seconds):
+        if not self._runs.advance(primary, self.max_blocks, should_cancel, running, self.locale, self.max_seconds,
+                                  slice_seconds):  # fmt: skip
             return None
         return self._result(version)
 

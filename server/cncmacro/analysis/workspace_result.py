@@ -13,7 +13,7 @@ reports in open files only), then the ranges no run reached (``unreached.py``).
 from __future__ import annotations
 
 import logging
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 
 from ..bilingual import pick
@@ -23,7 +23,7 @@ from .faults import RUN, internal_error
 from .indexes.open_programs import RunKey
 from .runs.cycle_lenses import FileTiming, file_timings
 from .runs.entry_runs import EntryRuns
-from .runs.run_checks import FILE_BUDGETS, MAX_SECONDS, not_run_diagnostic, run_diagnostics
+from .runs.run_checks import FILE_BUDGETS, MAX_SECONDS, EntryRun, not_run_diagnostic, run_diagnostics
 from .runs.unknown_stops import after_a_stop, unknown_stop
 from .runs.unreached import UnreachedRanges
 from .severity import apply_severities
@@ -42,6 +42,9 @@ class AnalysisResult:
     diagnostics: dict[str, list[Diagnostic]]
     values: dict[str, dict[int, list[tuple[int, Value]]]]
     timing: dict[str, FileTiming] = field(default_factory=dict)  # the open files' (cycle_lenses.py)
+    # the files that runs cut short by their time slice started in or reached: their findings
+    # are not complete yet (``WorkspaceAnalysis.analyze``'s ``slice_seconds``)
+    unfinished: frozenset[str] = frozenset()
 
 
 @dataclass(slots=True)
@@ -121,7 +124,14 @@ def gather(version: int | None, own: dict[str, list[Diagnostic]], docs: Mapping[
         diags.sort(key=Diagnostic.sort_key)
         out[path] = apply_severities(diags, severities)
     timing = file_timings(((run, k not in entries) for k, run in runs.runs.items()), docs)
-    return AnalysisResult(version, out, values, timing)
+    unfinished = {path for k in runs.pending if k in runs.runs for path in _touched(runs.runs[k])}
+    return AnalysisResult(version, out, values, timing, frozenset(unfinished))
+
+
+def _touched(run: EntryRun) -> Iterable[str]:
+    """The files a run started in or reached so far."""
+    yield run.entry.file.path
+    yield from run.last_run
 
 
 def _not_executed(files: _Files, runs: EntryRuns, entries: Mapping[RunKey, FoundProgram],

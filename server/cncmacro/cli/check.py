@@ -25,6 +25,7 @@ shown escaped in the text output and on standard error (``terminal``).
 from __future__ import annotations
 
 import argparse
+import gc
 import logging
 import sys
 from collections.abc import Callable
@@ -35,9 +36,11 @@ from typing import TextIO
 from .. import __version__
 from ..analysis import Diagnostic
 from ..analysis.faults import FILE, internal_error
+from ..analysis.indexes.call_index import CallIndex
 from ..analysis.workspace import WorkspaceAnalysis
 from ..bilingual import Detail, detail, in_language, is_chinese, pick
 from ..library.callee_folders import callee_folders
+from ..library.file_cache import FileCache
 from ..library.files import (
     MAX_PROGRAM_BYTES,
     SkippedFileError,
@@ -54,8 +57,10 @@ from ..library.machine_file import (
     load_machine_file,
 )
 from ..library.profiles import typed_profile_wins
-from .sarif import to_sarif
-from .terminal import Printable, json_text, printable, shown_name
+from ..syntax.document import ParsedDocument
+from .call_groups import call_groups
+from .findings_report import FindingsReport
+from .terminal import Printable
 
 log = logging.getLogger(__name__)
 
@@ -80,8 +85,17 @@ def check_paths(
         print(pick(locale, "cncmacro check: --max-blocks must be at least 1", "cncmacro check：--max-blocks 至少为 1"),
               file=shown_err)  # fmt: skip
         return 2
-    unreadable = False
-    sources: list[tuple[Path, str]] = []
+    unreadable: set[Path] = set()
+
+    def read(path: Path) -> str | None:
+        """The text of a program file; None, said once on standard error, when it cannot be read."""
+        text = None if path in unreadable else _read(path, found_paths[path], locale, shown_err)
+        if text is None:
+            unreadable.add(path)
+        return text
+
+    missing = False
+    found_paths: dict[Path, bool] = {}  # each program file, and whether it was found in a folder
     for arg in paths:
         root = Path(arg)
         try:
@@ -93,7 +107,7 @@ def check_paths(
             else:
                 en, zh = f"cncmacro: {shown}: cannot read: {why}", f"cncmacro：{shown}：无法读取：{why}"
             print(pick(locale, en, zh), file=shown_err)
-            unreadable = True
+            missing = True
             continue
         try:
             found, problems = _program_files(root, machine)
@@ -103,53 +117,62 @@ def check_paths(
             return 2
         for problem in problems:
             print(f"cncmacro：{problem.zh}" if chinese else f"cncmacro: {problem}", file=shown_err)
-            unreadable = True
+            missing = True
         searched = root.is_dir()  # a file named on the command line is read whole
         for path in found:
-            text = _read(path, searched, locale, shown_err)
-            if text is None:
-                unreadable = True
-            else:
-                sources.append((path, text))
-    groups: dict[Path | None, list[tuple[Path, str]]] = {}
-    for path, text in sources:
-        groups.setdefault(Path(machine) if machine else find_machine_file(path), []).append((path, text))
-    diagnostics: list[Diagnostic] = []
-    for machine_file, files in groups.items():  # each file with the machine settings nearest to it
+            found_paths.setdefault(path, searched)
+            read(path)  # what cannot be read is said now, in the order of the paths; the text is read again
+    by_machine: dict[Path | None, list[Path]] = {}
+    for path in found_paths:
+        by_machine.setdefault(Path(machine) if machine else find_machine_file(path), []).append(path)
+    checks: list[_MachineCheck] = []
+    for machine_file, files in by_machine.items():  # each file with the machine settings nearest to it
         try:
-            settings = _machine_settings(machine_file)
-            if machine_file is not None:
-                settings = _noted(settings, machine_file, dialect, chinese, shown_err)
-            checked = [*dict.fromkeys(str(path.parent) for path, _ in files)]
-            folders = [*checked, *(search_paths or [])]
-            # the checked files are one machine's programs: a call finds a program in any of their folders
-            callees = callee_folders(search_paths or [], (path for path, _ in files))
-            workspace = partial(WorkspaceAnalysis, settings=settings, dialect=dialect, search_paths=callees,
-                                locale=locale, max_blocks=max_blocks, severities=settings.severity,
-                                workspace_folders=folders)  # fmt: skip
-            ws = workspace()
+            checks.append(_machine_check(machine_file, files, dialect, search_paths or [], locale, max_blocks,
+                                         shown_err))  # fmt: skip
         except (MachineFileError, ValueError) as e:
             said: str = e.located() if isinstance(e, MachineFileError) else e.args[0] if e.args else str(e)
             reason = in_language(said, chinese)
             print(f"cncmacro check：{reason}" if chinese else f"cncmacro check: {reason}", file=shown_err)
             return 2
-        diagnostics += analyse_files(ws, files, workspace, locale)
-    if not hints:
-        diagnostics = [d for d in diagnostics if d.severity != "hint"]
-    diagnostics.sort(key=Diagnostic.sort_key)
-    if fmt == "json":
-        out.write(json_text([diagnostic_json(d) for d in diagnostics], indent=2) + "\n")
-    elif fmt == "sarif":
-        out.write(json_text(to_sarif(diagnostics, __version__), indent=2) + "\n")
-    else:
-        for d in diagnostics:
-            name = shown_name(shown_text(d.file))
-            out.write(
-                f"{name}:{d.line + 1}:{d.column + 1}: {d.severity}: {printable(shown_text(d.message))} [{d.code}]\n"
-            )
-    if unreadable:
+
+    report = FindingsReport(out, fmt, hints, __version__)
+    for files, settings, fresh in checks:
+        # files that no call connects are checked apart, and their findings printed at once
+        for group in call_groups(files, read, settings, dialect):
+            texts = [(path, text) for path in group if (text := read(path)) is not None]
+            if texts:
+                report.add(analyse_files(texts, fresh, locale))
+            gc.collect()  # the group's runs and machines, which refer to each other
+    report.close()
+    if missing or unreadable:
         return 2
-    return 1 if any(d.severity == "error" for d in diagnostics) else 0
+    return 1 if report.errors else 0
+
+
+_MachineCheck = tuple[list[Path], MachineSettings, Callable[[], WorkspaceAnalysis]]
+
+
+def _machine_check(machine_file: Path | None, files: list[Path], dialect: str | None, search_paths: list[str],
+                   locale: str, max_blocks: int | None, err: Printable) -> _MachineCheck:  # fmt: skip
+    """``files``, the settings of ``machine_file`` they are checked with and what makes a fresh
+    workspace for a group of them (one index of the callers on disk and one reading of the files
+    there for all). What a person should know of the machine file is said on ``err``;
+    ``MachineFileError`` or ``ValueError`` when it cannot be used."""
+    settings = _machine_settings(machine_file)
+    if machine_file is not None:
+        settings = _noted(settings, machine_file, dialect, is_chinese(locale), err)
+    checked = [*dict.fromkeys(str(path.parent) for path in files)]
+    folders = [*checked, *search_paths]
+    # the checked files are one machine's programs: a call finds a program in any of their folders
+    callees = callee_folders(search_paths, files)
+    disk = FileCache()
+    index = CallIndex(folders, settings, dialect, locale, files=disk)
+    workspace = partial(WorkspaceAnalysis, settings=settings, dialect=dialect, search_paths=callees, locale=locale,
+                        max_blocks=max_blocks, severities=settings.severity, workspace_folders=folders, files=disk,
+                        call_index=index)  # fmt: skip
+    workspace()  # a setting it refuses is said before any finding
+    return files, settings, workspace
 
 
 def _machine_settings(machine_file: Path | None) -> MachineSettings:
@@ -205,16 +228,23 @@ def _noted(
     return settings
 
 
-def analyse_files(ws: WorkspaceAnalysis, files: list[tuple[Path, str]], workspace: Callable[[], WorkspaceAnalysis],
-             locale: str) -> list[Diagnostic]:  # fmt: skip
-    """The diagnostics of ``files`` analysed together in ``ws``. Should the checker itself fail
-    there (a bug, not a mistake in a program), each file is analysed again on its own in a fresh
-    workspace from ``workspace``, so that one file that trips the checker costs only its own
-    findings: it gets an ``internal-error`` diagnostic, the others are reported as usual."""
+def analyse_files(
+    files: list[tuple[Path, str]], workspace: Callable[[], WorkspaceAnalysis], locale: str
+) -> list[Diagnostic]:
+    """The diagnostics of ``files`` analysed together in a workspace from ``workspace``. Should
+    the checker itself fail there (a bug, not a mistake in a program), each file is analysed again
+    on its own in a fresh workspace, so that one file that trips the checker costs only its own
+    findings: it gets an ``internal-error`` diagnostic, the others are reported as usual.
+
+    The files are parsed before their workspace is made: parsing freezes what is alive for the
+    cycle collector (``collector_paused``), and a workspace frozen with its runs in it (which
+    refer to each other) would stay in memory after its group is done."""
     try:
-        for path, text in files:
-            ws.open(str(path), text, 0)
-        result = ws.analyze(str(files[0][0]))
+        docs = [(str(path), ParsedDocument(text)) for path, text in files]
+        ws = workspace()
+        for name, doc in docs:
+            ws.open(name, doc, 0)
+        result = ws.analyze(docs[0][0])
         assert result is not None  # nothing cancels it
         return [d for diags in result.diagnostics.values() for d in diags]
     except Exception:
@@ -222,28 +252,15 @@ def analyse_files(ws: WorkspaceAnalysis, files: list[tuple[Path, str]], workspac
     found: list[Diagnostic] = []
     for path, text in files:
         try:
+            doc = ParsedDocument(text)
             alone = workspace()
-            alone.open(str(path), text, 0)
+            alone.open(str(path), doc, 0)
             result = alone.analyze(str(path))
             assert result is not None
             found += [d for diags in result.diagnostics.values() for d in diags]
         except Exception as e:
             found.append(internal_error(str(path), 0, FILE, e, locale))
     return found
-
-
-def diagnostic_json(d: Diagnostic) -> dict[str, object]:
-    """The CLI contract's JSON object: 1-based lines and columns, end column exclusive."""
-    return {
-        "file": shown_text(d.file),
-        "line": d.line + 1,
-        "column": d.column + 1,
-        "endLine": d.end_line + 1,
-        "endColumn": d.end_column + 1,
-        "severity": d.severity,
-        "code": d.code,
-        "message": shown_text(d.message),
-    }
 
 
 def main_check(args: argparse.Namespace) -> int:

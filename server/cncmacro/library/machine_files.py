@@ -58,6 +58,7 @@ class MachineFiles:
 
     def __init__(self) -> None:
         self.roots: list[Path] = []  # the workspace folders
+        self.generation = 0  # counts the times what it knew was dropped (``set_roots``, ``forget``)
         self._nearest: dict[str, Path | None] = {}  # a folder (or a linked file) -> its machine file
         self._read: dict[Path, MachineFileState] = {}
 
@@ -65,6 +66,7 @@ class MachineFiles:
         """The workspace folders (at ``initialize``, and when the editor's change)."""
         self.roots = [Path(r) for r in roots if r]
         self._nearest.clear()
+        self.generation += 1
 
     def path_for(self, file: str) -> Path | None:
         """The machine file that ``file`` (a path, or an unsaved document's URI) is read with."""
@@ -107,3 +109,4 @@ class MachineFiles:
         """A machine file changed on disk: look for each and read each again when asked."""
         self._nearest.clear()
         self._read.clear()
+        self.generation += 1

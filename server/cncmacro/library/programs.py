@@ -63,7 +63,8 @@ class FoundProgram:
 class ProgramLibrary:
     """The programs a run may call. ``folders`` are searched after the calling file's own
     folder; ``texts`` maps paths to text that replaces the file on disk (open editors);
-    ``files`` reads the files on disk (a cache of its own when none is given)."""
+    ``files`` reads the files on disk (a cache of its own when none is given); ``absent`` the
+    numbers searched for in vain by header, per folder (its own when none is given)."""
 
     def __init__(
         self,
@@ -72,6 +73,7 @@ class ProgramLibrary:
         cache: BlockCache | None = None,
         files: FileCache | None = None,
         extensions: frozenset[str] = frozenset(),
+        absent: dict[Path, set[int]] | None = None,
     ) -> None:
         self.folders = [Path(f) for f in folders or []]
         self.extensions = extensions  # the machine file's endings of program files
@@ -81,8 +83,10 @@ class ProgramLibrary:
         self._files: dict[str, LoadedFile | None] = {}
         self._listing: dict[Path, list[Path]] = {}
         self._stems: dict[Path, dict[str, list[Path]]] = {}  # folder -> lower-case stem -> its files
-        # folder -> the numbers its files' headers were searched for in vain, kept as the listing is
-        self._absent: dict[Path, set[int]] = {}
+        # folder -> the numbers its files' headers were searched for in vain, kept as the listing is;
+        # ``absent``, when given, is kept by the owner across libraries, which drops a folder's entry
+        # when a file there changes (the language server's workspace index)
+        self._absent: dict[Path, set[int]] = absent if absent is not None else {}
         self._given: set[str] = set(self.texts)  # files given by their text: programs whatever their name
         self.unread: dict[str, Detail] = {}  # files that could not be read, and why
 

@@ -66,6 +66,12 @@ DEBOUNCE_SECONDS = 0.0  # edits are coalesced by cancelling: a newer one stops t
 BURST_SECONDS = 0.05
 PROGRESS_LINES = 20_000  # a first analysis of a file this long reports progress
 DISK_CHECK_SECONDS = 2.0  # between looks at the files the analysis read, while documents are open
+# With several documents open, each run of an analysis goes on for this long at a time, then the
+# next run takes its turn, and what is complete is published: a small file is not kept waiting
+# behind a run that goes on to its 30 s. Each further round of the same analysis gives twice as
+# long, up to ``MAX_SLICE_SECONDS``, so that the rounds cost little next to the runs.
+SLICE_SECONDS = 0.25
+MAX_SLICE_SECONDS = 4.0
 
 
 class DiagnosticsEngine:
@@ -223,17 +229,23 @@ class DiagnosticsEngine:
                 published.first_screen(self.groups[d.machine_file], d.uri, d.path, d.lines, d.version)
         token = await begin_progress(self.server, big[0], "analysis", True, self.groups.locale) if big else None
         stopped = stop_asked(self.server, token)
-        work = asyncio.get_running_loop().run_in_executor(self._executor, self._analyse, generation, stopped)
         try:
-            if token is not None:
-                await report_progress(self.server, token, work, lambda: self.groups)
-            outcome = await work
-            if outcome is not None and outcome.on_disk:
-                self.server.disk_changed(outcome.on_disk)  # read them, and analyse again
-                return
-            if outcome is None or outcome.generation != self.generation:
-                return  # cancelled, or a newer change came: its own run publishes
-            published.outcome(outcome)
+            turn = SLICE_SECONDS
+            while True:  # rounds: each publishes what is complete, until all is
+                loop = asyncio.get_running_loop()
+                work = loop.run_in_executor(self._executor, self._analyse, generation, stopped, turn)
+                if token is not None:
+                    await report_progress(self.server, token, work, lambda: self.groups)
+                outcome = await work
+                if outcome is not None and outcome.on_disk:
+                    self.server.disk_changed(outcome.on_disk)  # read them, and analyse again
+                    return
+                if outcome is None or outcome.generation != self.generation:
+                    return  # cancelled, or a newer change came: its own run publishes
+                published.outcome(outcome)
+                if not outcome.partial:
+                    break
+                turn = min(2 * turn, MAX_SLICE_SECONDS)
         finally:
             if token is not None:  # it ends once its findings are shown
                 done = t("stopped" if stopped() else "done", self.groups.locale)
@@ -265,9 +277,12 @@ class DiagnosticsEngine:
             return  # a huge file began to be read: after its first analysis
         await asyncio.get_running_loop().run_in_executor(self._executor, self.collector.clean)
 
-    def _analyse(self, generation: int, stopped: Callable[[], bool] = lambda: False) -> Outcome | None:
+    def _analyse(self, generation: int, stopped: Callable[[], bool] = lambda: False,
+                 turn: float | None = None) -> Outcome | None:  # fmt: skip
         """On the worker thread: analyse and convert, or None when a newer change came or the
-        user stopped it (``stopped``)."""
+        user stopped it (``stopped``). With several documents open each run goes on for at
+        most ``turn`` seconds; the outcome then leaves out the files of the runs that did not
+        end (``Outcome.partial``), which the next call takes further."""
 
         def cancelled() -> bool:
             return self.generation != generation or stopped()
@@ -289,10 +304,11 @@ class DiagnosticsEngine:
                 groups: dict[Path | None, str] = {}  # per machine file, the path of its first document
                 for d in docs:
                     groups.setdefault(d.machine_file, d.path)
+                turn = turn if len(docs) > 1 else None  # alone, a document waits for nothing else
                 try:
                     for machine_file, first in groups.items():
                         analysis = self.groups[machine_file]
-                        result = analysis.analyze(first, cancelled)
+                        result = analysis.analyze(first, cancelled, turn)
                         if result is None:
                             complete = False
                             break
@@ -302,6 +318,10 @@ class DiagnosticsEngine:
                     complete = False
                 try:
                     outcome = self._outcome(generation, docs, results) if complete else None
+                    unfinished = {path for _, _, result in results for path in result.unfinished}
+                    if outcome is not None and unfinished:
+                        by_path = {d.path: d.uri for d in docs}
+                        outcome.without({by_path.get(p) or self.server.uri_for_path(p) for p in unfinished})
                 finally:
                     self.groups.record_reads(self.disk, started)
                 self.collector.settle(new_documents and outcome is not None)  # before the collector runs again

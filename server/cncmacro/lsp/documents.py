@@ -107,6 +107,11 @@ class Documents:
         # what each block says by itself, shared by the documents' site indexes and static checks
         self.block_memo = BlockMemo()
 
+    def reading_rule(self) -> tuple[str | None, int]:
+        """What ``dialect_for`` and ``calls_for`` answer by besides a file's own text: the
+        editor's dialect setting and the machine files as last read (``MachineFiles.generation``)."""
+        return self.setting_dialect, self.machines.generation
+
     def dialect_for(self, lines: list[str], path: str) -> Dialect:
         """The dialect of the file at ``path`` with these lines, under its machine file."""
         return file_profile(lines, self.machines.settings_for(path), self.setting_dialect)

@@ -46,6 +46,14 @@ class Outcome:
     payloads: dict[str, list[str]]  # the items encoded as JSON text, as published
     on_disk: list[str] = field(default_factory=list)  # files changed on disk: nothing analysed, read them first
     timing: dict[str, FileTiming] = field(default_factory=dict)  # per URI, the cycle time (cycle_lenses.py)
+    partial: bool = False  # some runs were cut short by their time slice: their files are left out
+
+    def without(self, uris: set[str]) -> None:
+        """Leave out the files of ``uris`` (their runs did not end yet): this outcome is partial."""
+        for table in (self.versions, self.found, self.items, self.values, self.payloads, self.timing):
+            for uri in uris:
+                table.pop(uri, None)
+        self.partial = True
 
 
 class ProtocolForms:

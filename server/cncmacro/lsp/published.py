@@ -74,7 +74,8 @@ class Published:
                 continue
             self._published[uri] = (version, diags, outcome.items[uri], old[3] + 1 if old else 1)
             cast("CncMacroProtocol", server.protocol).send_diagnostics(uri, version, outcome.payloads[uri])
-        for uri in [u for u, p in self._published.items() if u not in outcome.versions and u not in documents]:
+        gone = [] if outcome.partial else [u for u, p in self._published.items() if u not in outcome.versions]
+        for uri in [u for u in gone if u not in documents]:
             del self._published[uri]  # a file that is not open, no longer with findings
             server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
         if server.settings.inlay_values:

@@ -149,6 +149,7 @@ class CncMacroServer(LanguageServer):
         self.index = WorkspaceIndex(
             documents.by_uri.values, documents.dialect_for, documents.block_memo, calls_for=documents.calls_for,
             extensions_for=documents.extensions_for, machine_of=documents.machine_file_of,
+            reading_rule=documents.reading_rule,
         )  # fmt: skip
         self.settings = Settings()
         self.locale: str = "en"

@@ -36,8 +36,10 @@ class DiskCallers:
     start from (None until found, and again when what they depend on changed), and
     ``called_from_disk``, the open programs they reach."""
 
-    def __init__(self) -> None:
-        self.index: CallIndex | None = None  # made at the first question (``find``)
+    def __init__(self, index: CallIndex | None = None) -> None:
+        # made at the first question (``find``), unless given: one index shared by workspaces
+        # that look at the same folders (``cncmacro check``'s groups of files)
+        self.index: CallIndex | None = index
         self.entries: dict[RunKey, FoundProgram] | None = None
         self.called_from_disk: set[RunKey] = set()
 

@@ -47,6 +47,7 @@ from ...library.files import (
     search_program_files,
     shown_text,
 )
+from ...library.machine_file import MACHINE_FILE_NAME
 from ...library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ...syntax.document import ParsedDocument
 from .block_memo import BlockMemo
@@ -99,8 +100,12 @@ class WorkspaceIndex:
                  memo: BlockMemo | None = None, files: FileCache | None = None,
                  calls_for: Callable[[str], Calls] = lambda path: None,
                  extensions_for: Callable[[str], frozenset[str]] = lambda path: frozenset(),
-                 machine_of: Callable[[str], Path | None] = lambda path: None) -> None:  # fmt: skip
+                 machine_of: Callable[[str], Path | None] = lambda path: None,
+                 reading_rule: Callable[[], object] = lambda: None) -> None:  # fmt: skip
         self.open_files = open_files
+        # what ``dialect_for`` and ``calls_for`` answer by besides a file's text (the editor's
+        # setting, the machine files): while it is the same, a file's answer is kept with its sites
+        self.reading_rule = reading_rule
         self.machine_of = machine_of  # the machine file a path is read with
         self.extensions_for = extensions_for
         self.dialect_for = dialect_for
@@ -110,12 +115,22 @@ class WorkspaceIndex:
         self.roots: list[Path] = []
         self.files: dict[str, LoadedFile] = {}
         self.skipped: list[Detail] = []  # what the last scan did not read, and why
-        self._sites: dict[str, tuple[LoadedFile, SiteIndex]] = {}  # the files' site indexes, by path
+        # the files' site indexes, by path, with the reading rule they were made under
+        self._sites: dict[str, tuple[LoadedFile, SiteIndex, object]] = {}
+        # per folder, the program numbers no file header there holds: a call to a program outside
+        # the index is searched for in its folders' first files once, not at every hover or look-up
+        # (``ProgramLibrary.find_number``); a folder's entry goes when a file there changes
+        self.absent: dict[Path, set[int]] = {}
+        # per machine file, the folders of its program files (``callee_folders``), until a file
+        # comes into the index or leaves it: not worked out from every indexed file at each hover
+        self._callee: dict[Path | None, list[str]] = {}
 
     def scan(self, roots: list[str]) -> int:
         """Read every program file under ``roots``; the number of files indexed."""
         self.roots = [Path(r) for r in roots if r]
         self.files.clear()
+        self.absent.clear()
+        self._callee.clear()
         self.skipped = []
         read = 0
         for root in self.roots:
@@ -138,7 +153,16 @@ class WorkspaceIndex:
         """Read one file again (created, changed or deleted on disk); why it was not read, if it
         was not (a binary file is only logged: it is no program). The file cache reads it again
         at the next question, wherever it is."""
+        held = path in self.files
+        try:
+            return self._reload(path)
+        finally:
+            if (path in self.files) != held or Path(path).name == MACHINE_FILE_NAME:
+                self._callee.clear()  # the folders of a machine's programs may be others now
+
+    def _reload(self, path: str) -> Detail | None:
         self.disk.forget(path)
+        self.absent.pop(Path(path).parent, None)  # it may hold a header searched for in vain
         if path not in self.files and len(self.files) >= MAX_PROGRAM_FILES:
             return None  # the index is full: a file it does not hold is not read for it (a branch switch of 100k files)
         if ReadScope.of(self.roots, extensions=self.extensions_for(path)).refusal(path) is not None:
@@ -177,6 +201,7 @@ class WorkspaceIndex:
         """A folder's entries changed: its program files that are new are read, the ones gone
         dropped (the others are read again by their own change)."""
         here = Path(folder)
+        self.absent.pop(here, None)
         try:
             names = os.listdir(here)
         except OSError:
@@ -185,6 +210,7 @@ class WorkspaceIndex:
         present = {str(here / n) for n in names if not n.startswith(".") and is_program_file(here / n, extensions)}
         for path in [p for p in self.files if Path(p).parent == here and p not in present]:
             del self.files[path]
+            self._callee.clear()
         for path in sorted(present - self.files.keys()):
             self.reload(path)
 
@@ -208,15 +234,20 @@ class WorkspaceIndex:
             yield FileSites(doc.path, doc.lines, doc.sites)
         files = self.files
         kept = self._sites
-        for path in [p for p, (loaded, _) in kept.items() if files.get(p) is not loaded]:
+        for path in [p for p, (loaded, _, _) in kept.items() if files.get(p) is not loaded]:
             del kept[path]
+        rule = self.reading_rule()
         for path, loaded in files.items():
             if path in open_paths:
                 continue
             hit = kept.get(path)
-            dialect, calls = self.dialect_for(loaded.lines, path), self.calls_for(path)
-            if hit is None or not hit[1].reads_with(dialect, calls):
-                hit = kept[path] = (loaded, SiteIndex(loaded.program.blocks, dialect, calls, self.memo))
+            if hit is None or hit[2] != rule:  # the profile and call codes asked once per rule, not per hover
+                dialect, calls = self.dialect_for(loaded.lines, path), self.calls_for(path)
+                if hit is None or not hit[1].reads_with(dialect, calls):
+                    hit = (loaded, SiteIndex(loaded.program.blocks, dialect, calls, self.memo), rule)
+                else:
+                    hit = (loaded, hit[1], rule)
+                kept[path] = hit
             yield FileSites(path, loaded.lines, hit[1])
 
     def programs(self) -> Iterator[ProgramEntry]:
@@ -233,17 +264,26 @@ class WorkspaceIndex:
         """The folders a call in a file read with ``machine_file`` looks in beyond its own: the
         folders of the workspace's program files read with that machine file
         (``library/callee_folders.py``, the rule ``cncmacro check`` follows)."""
-        return callee_folders((), (p for p in self.files if self.machine_of(p) == machine_file))
+        folders = self._callee.get(machine_file)
+        if folders is None:
+            folders = self._callee[machine_file] = callee_folders(
+                (), (p for p in self.files if self.machine_of(p) == machine_file)
+            )
+        return folders
 
     def library(self, near: OpenFile | None) -> ProgramLibrary:
         """A program library over the folders of the machine's programs (``near``'s machine,
         else the first workspace folder's) with the open documents' text (the files on disk
         read through the index's cache)."""
-        texts = {d.path: d.parsed.text for d in self.open_files() if near is None or d is not near}
+        open_files = list(self.open_files())
+        texts = {d.path: d.parsed.text for d in open_files if near is None or d is not near}
+        for d in open_files:  # an open document's text may hold a header by now
+            self.absent.pop(Path(d.path).parent, None)
         where = near.path if near is not None else str(self.roots[0]) if self.roots else ""
         folders = self.callee_folders(self.machine_of(where)) if where else list(map(str, self.roots))
         extensions = self.extensions_for(where)
-        return ProgramLibrary(folders=folders, texts=texts, files=self.disk, extensions=extensions)
+        return ProgramLibrary(folders=folders, texts=texts, files=self.disk, extensions=extensions,
+                              absent=self.absent)  # fmt: skip
 
     def find_program(self, doc: OpenFile, number: int | None, name: str | None) -> FoundProgram | None:
         """The program a call in ``doc`` names, found as the program library finds it."""

@@ -8,6 +8,10 @@ the files; and, whatever ``max_blocks`` says, the runs of one file together the 
 (``max_seconds``): no setting makes a file's analysis outlast what a person waits for. A
 program whose file's share is spent is not run (``not_run``, with the share that was spent:
 ``check`` names it).
+With a time slice (``slice_seconds``) each run goes on for at most that long in one call, then
+the next run takes its turn; the runs that did not end are ``pending``, and go on from where
+they are at the next call: a long run (a program that waits for a signal under a large
+``max_blocks``) does not keep the other files' runs waiting for it.
 A bug in one run costs that run only: it is dropped and its fault (``failed``) is reported
 where it started, the other runs and the static findings go on.
 """
@@ -15,6 +19,7 @@ where it started, the other runs and the static findings go on.
 from __future__ import annotations
 
 import logging
+import time
 from collections.abc import Callable, Mapping
 
 from ...library.programs import FoundProgram
@@ -38,6 +43,7 @@ class EntryRuns:
         self.failed: dict[RunKey, Diagnostic] = {}  # runs that failed by a fault of the checker
         # entries left out, with what their file had spent: its blocks ("blocks") or its time ("time")
         self.not_run: dict[RunKey, tuple[FoundProgram, str]] = {}
+        self.pending: set[RunKey] = set()  # runs that their time slice stopped before their end
         self._unreached = unreached  # the not-executed ranges, told of each run taken back
         self._start = start
 
@@ -71,12 +77,14 @@ class EntryRuns:
 
     def advance(self, primary: Mapping[RunKey, FoundProgram], max_blocks: int, should_cancel: Callable[[], bool] | None,
                 running: Callable[[int, FoundProgram], None], locale: str,
-                max_seconds: float = MAX_SECONDS) -> bool:  # fmt: skip
+                max_seconds: float = MAX_SECONDS, slice_seconds: float | None = None) -> bool:  # fmt: skip
         """Run each program of ``primary`` to its end or its budget; False when ``should_cancel``
         said stop (the runs go on from where they are the next time). ``running(n, found)`` is
-        told before the ``n``-th. ``max_seconds`` is one run's time limit, and one file's."""
+        told before the ``n``-th. ``max_seconds`` is one run's time limit, and one file's;
+        ``slice_seconds`` what each run may take in this call (the others: ``pending``)."""
         self.failed = {}
         self.not_run = {}
+        self.pending = set()
         file_budget = FILE_BUDGETS * max_blocks
         spent: dict[str, int] = {}  # blocks run by the runs from each file so far
         took: dict[str, float] = {}  # and the seconds they took
@@ -90,8 +98,15 @@ class EntryRuns:
                 self.not_run[k] = (found, "blocks" if left <= 0 else "time")
                 continue
             try:
-                if not self._advance(k, found, should_cancel, min(max_blocks, left), max_blocks, file_budget, seconds):
-                    return False
+                if slice_seconds is None:
+                    stop = should_cancel
+                else:
+                    turn_ends = time.monotonic() + slice_seconds
+                    stop = _or_after(should_cancel, turn_ends)
+                if not self._advance(k, found, stop, min(max_blocks, left), max_blocks, file_budget, seconds):
+                    if should_cancel is not None and should_cancel():
+                        return False
+                    self.pending.add(k)  # its turn ended: it goes on at the next call
                 run = self.runs[k]
                 spent[file] = spent.get(file, 0) + run.machine.blocks
                 took[file] = took.get(file, 0.0) + run.elapsed
@@ -121,3 +136,12 @@ class EntryRuns:
         if run.elapsed <= seconds:  # a run that ended within the share it had keeps its end
             run.max_seconds = min(run.own_seconds, seconds)
         return run.advance(should_cancel)
+
+
+def _or_after(should_cancel: Callable[[], bool] | None, deadline: float) -> Callable[[], bool]:
+    """Stop when ``should_cancel`` says so or once ``deadline`` (``time.monotonic``) has passed."""
+
+    def stop() -> bool:
+        return time.monotonic() > deadline or (should_cancel is not None and should_cancel())
+
+    return stop
