@@ -50,8 +50,9 @@ from ..machine.calls import letters_for_local
 from ..machine.setup import SetupError, machine_settings, prepare_run, prepare_text_run
 from ..machine.status import RunStatus
 from ..planner.move_json import machine_json
-from .check import analyse_files, check_paths, diagnostic_json
+from .check import analyse_files, check_paths
 from .cycle_report import cycle_json
+from .findings_report import diagnostic_json
 from .locale_option import ENGLISH, locale_argument
 from .run import STATUS_ZH, result_json
 
@@ -177,7 +178,7 @@ def _check_text(text: str, path: str | None, dialect: str | None, locale: str,
         WorkspaceAnalysis, settings=settings, dialect=dialect, search_paths=folders, locale=locale,
         max_blocks=max_blocks, severities=settings.severity if settings else None, workspace_folders=folders,
     )  # fmt: skip
-    found = analyse_files(workspace(), [(Path(name), text)], workspace, locale)
+    found = analyse_files([(Path(name), text)], workspace, locale)
     return sorted((d for d in found if d.severity != "hint"), key=Diagnostic.sort_key)
 
 

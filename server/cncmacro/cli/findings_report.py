@@ -43,7 +43,7 @@ class FindingsReport:
         write = self.out.write
         for d in shown:
             if self.fmt == "json":
-                element = json_text(_as_json(d), indent=2).replace("\n", "\n  ")
+                element = json_text(diagnostic_json(d), indent=2).replace("\n", "\n  ")
                 write(("[\n  " if self.written == 0 else ",\n  ") + element)
             else:
                 name, message = shown_name(shown_text(d.file)), printable(shown_text(d.message))
@@ -60,7 +60,7 @@ class FindingsReport:
         self.out.flush()
 
 
-def _as_json(d: Diagnostic) -> dict[str, object]:
+def diagnostic_json(d: Diagnostic) -> dict[str, object]:
     """The CLI contract's JSON object: 1-based lines and columns, end column exclusive."""
     return {
         "file": shown_text(d.file),
