@@ -28,10 +28,14 @@ ROOT = Path(__file__).resolve().parent.parent
 # interpreter, `check` and `run`, an LSP session over stdio, the debug adapter in Python and the
 # MCP server through the SDK's client (the optional cncmacro[mcp], whose packages are compiled).
 # What is the same on every Python stays in the main suite only: the language server's position
-# encodings (arithmetic on str, which every version does alike) cost ten sessions here.
+# encodings (arithmetic on str, which every version does alike) cost ten sessions here, the 1,500
+# generated lines of the fast path's comparison with the grammar (its real lines and the 3.10 one
+# stay) and the MCP tools one by one (one session lists them, one runs a program).
 QUICK = [
     "tests/test_seed_examples_parse.py",
-    "tests/test_fast_path_equals_grammar.py",
+    "tests/test_fast_path_equals_grammar.py::test_real_lines",
+    "tests/test_fast_path_equals_grammar.py::test_lines_the_fast_path_leaves_to_the_grammar",
+    "tests/test_fast_path_equals_grammar.py::test_python_3_10_reads_the_same_plain_lines_as_3_11",
     "tests/test_dialect_tables.py",
     "tests/test_machine_file_profile.py",
     "tests/test_run_4_control_flow.py",
@@ -41,7 +45,8 @@ QUICK = [
     "tests/test_dap_protocol_and_history.py",
     "tests/lsp/test_lsp_diagnostics.py",
     "tests/hardening/test_shared_state.py",
-    "tests/test_mcp_server.py",
+    "tests/test_mcp_server.py::test_the_server_offers_four_read_only_tools",
+    "tests/test_mcp_server.py::test_run_returns_a_10_mm_feed_move_at_600_mm_min_taking_1_s",
 ]
 DAP_QUICK = ["tests/dap/debugger.test.js"]
 
