@@ -76,8 +76,8 @@ RULES: dict[str, str] = {
     "L14": "the editor's features answered in ide/ are only converted in lsp/: a module of lsp/ imports "
            "nothing of syntax/ but those LSP_READS_SYNTAX names (features not yet moved to ide/, and the "
            "parse the server holds), a list that only shrinks",
-    "C1": "the toolpath's geometry and page and the server's start-up (toolpathGeometry.ts, "
-          "toolpathView.ts, serverProcess.ts) do not import vscode",
+    "C1": "the toolpath's geometry and page, the server's start-up and the Python probe "
+          "(toolpathGeometry.ts, toolpathView.ts, serverProcess.ts, pythonProbe.ts) do not import vscode",
     "C2": "the client knows no G code: no code of client/src names one or reads a number out of a "
           "move's mode; what a move is (kind, plane, legs) comes from the planner",
 }  # fmt: skip
@@ -141,7 +141,7 @@ LSP_READS_SYNTAX = {
 }  # fmt: skip
 
 # C1
-CLIENT_WITHOUT_VSCODE = ("toolpathGeometry.ts", "toolpathView.ts", "serverProcess.ts")
+CLIENT_WITHOUT_VSCODE = ("toolpathGeometry.ts", "toolpathView.ts", "serverProcess.ts", "pythonProbe.ts")
 
 
 @dataclass(frozen=True, slots=True)

@@ -1,5 +1,6 @@
 /**
- * Finding a Python interpreter for the server and checking its version.
+ * Finding a Python interpreter for the server and checking its version (each command asked
+ * through `pythonProbe.ts`, which needs no editor).
  *
  * The order is: the `cncMacro.python.path` setting; the active environment of the Python
  * extension, when that extension is installed (it is never required); then `python3`, `py -3`
@@ -8,71 +9,31 @@
  * when none fits the user is told plainly what to do. Once the Python extension has been asked,
  * `onDidChangePythonExtensionEnvironment` fires whenever the user picks another interpreter there.
  */
-import { execFile } from 'node:child_process';
 import * as os from 'node:os';
 import * as path from 'node:path';
 import * as vscode from 'vscode';
+import { MIN_VERSION, pathCandidates, probeCommand, versionOk, type FoundPython, type PythonCommand } from './pythonProbe';
 import * as settings from './settings';
 
-export const MIN_VERSION: readonly [number, number] = [3, 10];
-/** The exit status of the `python`/`python3` that Windows puts on the PATH when no Python is
- * installed (an app execution alias of the Microsoft Store): it says so and runs nothing. */
-const STORE_PLACEHOLDER_EXIT = 9009;
-
-/** A command that starts Python: the executable and the arguments before the script's own. */
-export interface PythonCommand {
-  command: string;
-  args: string[];
-  /** Where it came from, for messages: "setting", "Python extension" or "PATH". */
-  source: string;
-}
-
-export interface FoundPython extends PythonCommand {
-  version: [number, number, number];
-  executable: string;
-}
+export { MIN_VERSION, type FoundPython, type PythonCommand } from './pythonProbe';
 
 export type Discovery =
   | { ok: true; python: FoundPython; log: string[] }
   | { ok: false; message: string; log: string[] };
 
-/** Probe one command: its version and real executable, or an error text. */
-export function probe(candidate: PythonCommand, timeoutMs = 10000): Promise<FoundPython | string> {
-  const script = 'import sys; print(*sys.version_info[:3], sys.executable)';
-  return new Promise((resolve) => {
-    execFile(
-      candidate.command,
-      [...candidate.args, '-c', script],
-      { timeout: timeoutMs, windowsHide: true },
-      (error, stdout) => {
-        if (error) {
-          const code: unknown = (error as { code?: unknown }).code; // a spawn error's name, or the exit status
-          if (code === 'ENOENT') {
-            resolve(vscode.l10n.t('no such program'));
-          } else if (process.platform === 'win32' && code === STORE_PLACEHOLDER_EXIT) {
-            resolve(vscode.l10n.t("the Microsoft Store's placeholder, not a Python: none is installed under that name"));
-          } else {
-            resolve(error.message.split('\n')[0]);
-          }
-          return;
-        }
-        const match = /^(\d+) (\d+) (\d+) (.*)$/m.exec(stdout.trim());
-        if (!match) {
-          resolve(`unexpected answer: ${stdout.trim().slice(0, 80)}`);
-          return;
-        }
-        resolve({
-          ...candidate,
-          version: [Number(match[1]), Number(match[2]), Number(match[3])],
-          executable: match[4].trim(),
-        });
-      },
-    );
-  });
-}
-
-export function versionOk(version: readonly number[]): boolean {
-  return version[0] > MIN_VERSION[0] || (version[0] === MIN_VERSION[0] && version[1] >= MIN_VERSION[1]);
+/** Probe one command: its version and real executable, or why it is not a Python, in words. */
+export async function probe(candidate: PythonCommand, timeoutMs = 10000): Promise<FoundPython | string> {
+  const found = await probeCommand(candidate, timeoutMs);
+  if (!('why' in found)) {
+    return found;
+  }
+  if (found.why === 'missing') {
+    return vscode.l10n.t('no such program');
+  }
+  if (found.why === 'store-placeholder') {
+    return vscode.l10n.t("the Microsoft Store's placeholder, not a Python: none is installed under that name");
+  }
+  return found.text;
 }
 
 /** `~` and `${workspaceFolder}` in the setting, resolved. */
@@ -124,15 +85,6 @@ async function fromPythonExtension(resource?: vscode.Uri): Promise<string | unde
   } catch {
     return undefined;
   }
-}
-
-function pathCandidates(): PythonCommand[] {
-  const out: PythonCommand[] = [{ command: 'python3', args: [], source: 'PATH' }];
-  if (process.platform === 'win32') {
-    out.push({ command: 'py', args: ['-3'], source: 'PATH' });
-  }
-  out.push({ command: 'python', args: [], source: 'PATH' });
-  return out;
 }
 
 const versionText = (v: readonly number[]): string => v.join('.');
