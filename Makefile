@@ -72,7 +72,8 @@ demo: $(VENV)/.installed
 # or a browser: the Python suite but the language server's tests; the oldest and the newest
 # Python (tests/other_pythons.py), the debug adapter through a real DAP client, the toolpath's
 # plot on real runs; the .vsix built, checked as a release would publish it with the Python
-# package (client/scripts/release_check.py), and tested in a real VS Code, two files at a time, each with
+# package (client/scripts/release_check.py) and published to local stand-ins of the registries
+# (tests/release), and tested in a real VS Code, two files at a time, each with
 # its own code-server, browser and workspace (screenshots in test-output/editor/), then the
 # language server's tests (tests/lsp). Each step prints its time.
 # `make test OFFLINE=` runs the test phase with the network.
@@ -108,6 +109,7 @@ test-pythons-dap:
 test-editor:
 	$(TIMED) package env PIP_NO_INDEX=1 PIP_FIND_LINKS=$(CURDIR)/$(WHEELS) PYTHON=$(PY) npm run --silent package
 	$(TIMED) "release check" $(PY) client/scripts/release_check.py --vsix cncmacro.vsix --dist .cache/dist
+	$(TIMED) publish env PYTHON=$(PY) CNCMACRO_DIST=.cache/dist node --test tests/release/
 	$(TIMED) editor timeout 900 node --test --test-concurrency=2 tests/editor/
 	$(TIMED) "pytest tests/lsp" $(PY) -m pytest -p no:cacheprovider tests/lsp
 
