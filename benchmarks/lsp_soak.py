@@ -171,7 +171,7 @@ async def _soak(root: Path, minutes: float, files: int, lines: int, formatting_o
                 types.DefinitionParams(at_call.text_document, at_call.position))),
         )  # fmt: skip
         changed = [
-            types.FileEvent((root / "shop" / f"part{k % (files // FOLDER_SIZE):03d}" / f"O{10_000 + k}.nc").as_uri(),
+            types.FileEvent((root / "shop" / f"part{(k - 1) // FOLDER_SIZE:03d}" / f"O{10_000 + k}.nc").as_uri(),
                             types.FileChangeType.Changed)
             for k in (rnd.randrange(1, files + 1) for _ in range(10))
         ]  # fmt: skip

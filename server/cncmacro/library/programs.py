@@ -18,6 +18,7 @@ workspace index, the call index), so that a file is read and parsed once until i
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -60,6 +61,41 @@ class FoundProgram:
         return Path(self.file.path).stem
 
 
+ListingKey = tuple[Path, tuple[Path, ...], frozenset[str]]  # a folder, the library's folders, the endings
+
+
+@dataclass(frozen=True, slots=True)
+class Listing:
+    """The program files on disk of a folder, in order, and by their lower-case stem."""
+
+    files: list[Path]
+    stems: dict[str, list[Path]]
+
+
+def forget_listings(listings: dict[ListingKey, Listing], path: str) -> None:
+    """A file (or folder) at ``path`` changed on disk: the listings it may have changed go (its
+    folder's, when the file came or went there; every one under a folder)."""
+    target = Path(path)
+    below = os.path.join(path, "")
+    exists = os.path.lexists(path)
+    for key in [k for k in listings if k[0] == target.parent or k[0] == target or str(k[0]).startswith(below)]:
+        if key[0] != target.parent or (target in listings[key].files) != exists:
+            del listings[key]
+
+
+def _by_stem(files: list[Path]) -> dict[str, list[Path]]:
+    stems: dict[str, list[Path]] = {}
+    for p in files:
+        stems.setdefault(p.stem.lower() if p.suffix else p.name.lower(), []).append(p)
+    return stems
+
+
+def _header_pattern(number: int) -> re.Pattern[str]:
+    """An O``number`` header at the start of a line, or after the end of the program before it
+    (``M99O0810``): how a file holds the program whatever its name."""
+    return re.compile(rf"(?m)(?:^[ \t/%]*(?:N\d+[ \t]*)?|M0*(?:99|30|2)[ \t]*)O0*{number}(?!\d)", re.I)
+
+
 class ProgramLibrary:
     """The programs a run may call. ``folders`` are searched after the calling file's own
     folder; ``texts`` maps paths to text that replaces the file on disk (open editors);
@@ -74,6 +110,7 @@ class ProgramLibrary:
         files: FileCache | None = None,
         extensions: frozenset[str] = frozenset(),
         absent: dict[Path, set[int]] | None = None,
+        listings: dict[ListingKey, Listing] | None = None,
     ) -> None:
         self.folders = [Path(f) for f in folders or []]
         self.extensions = extensions  # the machine file's endings of program files
@@ -88,6 +125,10 @@ class ProgramLibrary:
         # when a file there changes (the language server's workspace index)
         self._absent: dict[Path, set[int]] = absent if absent is not None else {}
         self._given: set[str] = set(self.texts)  # files given by their text: programs whatever their name
+        # the program files on disk of each folder and their stems; ``listings``, when given, is
+        # kept by the owner across libraries, which drops a folder's entry when a file comes or
+        # goes there (the language server's workspace index: a hover or look-up lists no folder)
+        self._disk_listings: dict[ListingKey, Listing] = listings if listings is not None else {}
         self.unread: dict[str, Detail] = {}  # files that could not be read, and why
 
     # ---- files
@@ -150,28 +191,66 @@ class ProgramLibrary:
         files = [p for p, f in self._files.items() if p not in self.texts and (f is None or not f.on_control)]
         return files, [str(f) for f in self._listing]
 
+    def sees(self, path: str) -> bool:
+        """Whether a change on disk at ``path`` (a file, or a folder and all below it) may change
+        this library's answers: it read the file or tried to, or it listed the file's folder and
+        the file came or went there, or it searched that folder's headers for a number in vain
+        (the file's header may hold it now). A file it never looked at changes nothing."""
+        if path in self._files:
+            return True
+        below = os.path.join(path, "")
+        if any(k.startswith(below) for k in self._files) or any(
+            str(f) == path or str(f).startswith(below) for f in self._listing
+        ):
+            return True
+        target = Path(path)
+        listed = self._listing.get(target.parent)
+        if listed is None:
+            return False
+        if (target in listed) != os.path.isfile(path):
+            return True
+        searched = self._absent.get(target.parent)
+        if not searched or target not in listed[:MAX_PROGRAM_FILES]:
+            return False
+        try:
+            text = self.texts.get(path) or self.disk.text(path)
+        except (OSError, SkippedFileError):
+            return True
+        return any(_header_pattern(n).search(text) for n in searched)
+
     def _stems_in(self, folder: Path) -> dict[str, list[Path]]:
         """The program files of ``folder`` by their lower-case stem (the whole name when it has
         no ending), so that a program is found by its number without a walk of the folder."""
         stems = self._stems.get(folder)
         if stems is None:
-            stems = self._stems[folder] = {}
-            for p in self._folder_files(folder):
-                stems.setdefault(p.stem.lower() if p.suffix else p.name.lower(), []).append(p)
+            files = self._folder_files(folder)
+            on_disk = self._on_disk(folder)
+            stems = self._stems[folder] = on_disk.stems if files is on_disk.files else _by_stem(files)
         return stems
 
     def _folder_files(self, folder: Path) -> list[Path]:
         files = self._listing.get(folder)
         if files is None:
+            files = self._on_disk(folder).files
+            given = [p for p in self._given if Path(p).parent == folder]
+            if given:
+                listed = {str(p) for p in files}
+                files = files + sorted(Path(p) for p in given if p not in listed)
+            self._listing[folder] = files
+        return files
+
+    def _on_disk(self, folder: Path) -> Listing:
+        """The program files on disk in ``folder`` (kept in ``listings``)."""
+        key = (folder, tuple(self.folders), self.extensions)
+        listing = self._disk_listings.get(key)
+        if listing is None:
             allowed = [folder, *self.folders]
             # a file that is no link is in ``folder``, which is allowed: only a link is followed to
             # see where it leads (a folder of 100,000 files resolved each twice: 6 s)
             files = [p for p, link in program_files_in(folder, self.extensions)
                      if not link or any(stays_inside(p, f) for f in allowed)]  # fmt: skip
-            listed = {str(p) for p in files}
-            files += sorted(Path(p) for p in self._given if Path(p).parent == folder and p not in listed)
-            self._listing[folder] = files
-        return files
+            listing = self._disk_listings[key] = Listing(files, _by_stem(files))
+        return listing
 
     def _search_folders(self, near: LoadedFile | None) -> list[Path]:
         folders: list[Path] = []
@@ -195,8 +274,7 @@ class ProgramLibrary:
                 found = self._unit_in(p, number)
                 if found is not None:
                     return found
-        # an O header at the start of a line, or after the end of the program before it (M99O0810)
-        header = re.compile(rf"(?m)(?:^[ \t/%]*(?:N\d+[ \t]*)?|M0*(?:99|30|2)[ \t]*)O0*{number}(?!\d)", re.I)
+        header = _header_pattern(number)
         for folder in folders:
             absent = self._absent.setdefault(folder, set())
             if number in absent:  # searched in vain before: a folder of 100,000 files is not read again

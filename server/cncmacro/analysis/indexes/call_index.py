@@ -88,9 +88,45 @@ class CallIndex:
         self._word = re.compile(call_word_pattern(settings.calls))  # a local call (M97) names no program
 
     # ---------------------------------------------------------------- keeping up to date
-    def changed(self, path: str) -> None:
-        """A file was created, changed or deleted: look at the folders again when next asked."""
-        self._listed = False
+    def changed(self, path: str) -> tuple[IndexedCall, ...] | None:
+        """A file was created, changed or deleted. A file the index holds that is still a file is
+        read again at once (the other files are not looked at: a shop's folders change one file
+        at a time); anything else, a file that came or went or a folder, makes the index look at
+        the folders again when next asked. Returns the calls the file made before, or None
+        when the index did not hold it."""
+        entry = self._entries.get(path) if self._listed else None
+        if entry is None or not os.path.isfile(path):
+            self._listed = False
+            return entry.calls if entry is not None else None
+        try:
+            st = os.stat(path)
+        except OSError:
+            self._listed = False
+            return entry.calls
+        self._forget_calls(path, entry.calls)
+        fresh = _Entry((st.st_mtime_ns, st.st_size), () if st.st_size > self.max_bytes else self._read(path))
+        self._entries[path] = fresh
+        self._index_calls(path, fresh.calls)
+        return entry.calls
+
+    def _index_calls(self, path: str, calls: tuple[IndexedCall, ...]) -> None:
+        for c in calls:
+            if c.number is not None:
+                self._numbers.setdefault(c.number, set()).add(path)
+            if c.name is not None:
+                self._names.setdefault(c.name, set()).add(path)
+                number = o_number(c.name)
+                if number is not None:
+                    self._numbers.setdefault(number, set()).add(path)
+
+    def _forget_calls(self, path: str, calls: tuple[IndexedCall, ...]) -> None:
+        for c in calls:
+            numbers = [c.number, o_number(c.name) if c.name is not None else None]
+            for n in numbers:
+                if n is not None and n in self._numbers:
+                    self._numbers[n].discard(path)
+            if c.name is not None and c.name in self._names:
+                self._names[c.name].discard(path)
 
     @property
     def size(self) -> int:
@@ -130,14 +166,7 @@ class CallIndex:
         self._numbers = {}
         self._names = {}
         for path, entry in self._entries.items():
-            for c in entry.calls:
-                if c.number is not None:
-                    self._numbers.setdefault(c.number, set()).add(path)
-                if c.name is not None:
-                    self._names.setdefault(c.name, set()).add(path)
-                    number = o_number(c.name)
-                    if number is not None:
-                        self._numbers.setdefault(number, set()).add(path)
+            self._index_calls(path, entry.calls)
 
     def _list(self) -> list[str] | None:
         """The program files under the folders, or None when there are more than allowed."""

@@ -84,7 +84,7 @@ class CallerSearch:
         path = target.file.path
         units = target.file.program.units
         k = key[1]
-        numbers, names = _identity(target)
+        numbers, names = call_identity(target)
         candidates: set[str] = set()
         for n in numbers:
             candidates.update(self.index.callers(n, None))
@@ -119,7 +119,7 @@ def _key_of(found: FoundProgram) -> _Key:
     return (found.file.path, found.file.program.units.index(found.unit))
 
 
-def _identity(found: FoundProgram) -> tuple[set[int], set[str]]:
+def call_identity(found: FoundProgram) -> tuple[set[int], set[str]]:
     """The numbers and bracketed names a call may use for ``found``: its O number; for a
     file's first program (after a lead-in of comments, ``Program.named_units``) also the file
     name (``9100.nc``, ``CUT.CNC``)."""
@@ -139,7 +139,7 @@ def _identity(found: FoundProgram) -> tuple[set[int], set[str]]:
 
 def _named(found: FoundProgram, numbers: Container[int], names: Container[str]) -> bool:
     """Whether an open file's literal calls name ``found`` (then an open file's run reaches it)."""
-    own_numbers, own_names = _identity(found)
+    own_numbers, own_names = call_identity(found)
     return any(n in numbers for n in own_numbers) or any(x in names for x in own_names)
 
 

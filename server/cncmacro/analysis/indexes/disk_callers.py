@@ -13,6 +13,7 @@ reported.
 from __future__ import annotations
 
 import logging
+import os
 from collections import Counter
 from collections.abc import Callable, Mapping
 from typing import Any, Generic, TypeVar
@@ -21,7 +22,7 @@ from ...library.file_cache import FileCache
 from ...library.machine_file import MachineSettings
 from ...library.programs import FoundProgram, ProgramLibrary
 from .call_index import CallIndex
-from .caller_entries import CallerSearch
+from .caller_entries import CallerSearch, call_identity
 from .open_programs import OpenProgram, RunKey
 
 log = logging.getLogger(__name__)
@@ -48,10 +49,34 @@ class DiskCallers:
         self.index = None
         self.entries = None
 
-    def changed(self, path: str) -> None:
-        """A file changed on disk: the index reads it again."""
-        if self.index is not None:
-            self.index.changed(path)
+    def changed(self, path: str, units: Callable[[], list[OpenProgram]]) -> bool:
+        """A file changed on disk: the index reads it again. Whether the callers found may be
+        others now (then ``entries`` is None): not when none were looked for yet, nor when the
+        file neither called, nor now calls, a program of ``units`` (the open programs) and no
+        open program was found called from disk; a file that came or went counts as one that
+        may call them."""
+        if self.index is None:
+            return False
+        usable = self.index.usable
+        before = self.index.changed(path)
+        if self.entries is None:
+            return False
+        if not usable and os.path.isfile(path):
+            return False  # more files than the index takes: one more, or one saved, keeps it so
+        if self.called_from_disk or self.entries or before is None:
+            self.entries = None
+            return True
+        numbers: set[int] = set()
+        names: set[str] = set()
+        for _, found, _ in units():
+            n, s = call_identity(found)
+            numbers |= n
+            names |= s
+        after = self.index.calls_of(path)
+        if any(c.number in numbers or c.name in names for c in (*before, *after)):
+            self.entries = None
+            return True
+        return False
 
     def find(self, units: list[OpenProgram], folders: list[str], settings: MachineSettings, dialect: str | None,
              locale: str, files: FileCache, library: ProgramLibrary, targets: Callable[[], Mapping[str, Targets]],

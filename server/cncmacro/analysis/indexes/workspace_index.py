@@ -48,7 +48,7 @@ from ...library.files import (
     shown_text,
 )
 from ...library.machine_file import MACHINE_FILE_NAME
-from ...library.programs import FoundProgram, LoadedFile, ProgramLibrary
+from ...library.programs import FoundProgram, Listing, ListingKey, LoadedFile, ProgramLibrary, forget_listings
 from ...syntax.document import ParsedDocument
 from .block_memo import BlockMemo
 from .site_index import FileSites, SiteIndex
@@ -121,6 +121,9 @@ class WorkspaceIndex:
         # the index is searched for in its folders' first files once, not at every hover or look-up
         # (``ProgramLibrary.find_number``); a folder's entry goes when a file there changes
         self.absent: dict[Path, set[int]] = {}
+        # the program files on disk of the folders the libraries of hovers and look-ups listed
+        # (``ProgramLibrary``'s ``listings``): a folder is listed again only when a file comes or goes
+        self.listings: dict[ListingKey, Listing] = {}
         # per machine file, the folders of its program files (``callee_folders``), until a file
         # comes into the index or leaves it: not worked out from every indexed file at each hover
         self._callee: dict[Path | None, list[str]] = {}
@@ -130,6 +133,7 @@ class WorkspaceIndex:
         self.roots = [Path(r) for r in roots if r]
         self.files.clear()
         self.absent.clear()
+        self.listings.clear()
         self._callee.clear()
         self.skipped = []
         read = 0
@@ -163,6 +167,7 @@ class WorkspaceIndex:
     def _reload(self, path: str) -> Detail | None:
         self.disk.forget(path)
         self.absent.pop(Path(path).parent, None)  # it may hold a header searched for in vain
+        forget_listings(self.listings, path)
         if path not in self.files and len(self.files) >= MAX_PROGRAM_FILES:
             return None  # the index is full: a file it does not hold is not read for it (a branch switch of 100k files)
         if ReadScope.of(self.roots, extensions=self.extensions_for(path)).refusal(path) is not None:
@@ -202,6 +207,8 @@ class WorkspaceIndex:
         dropped (the others are read again by their own change)."""
         here = Path(folder)
         self.absent.pop(here, None)
+        for key in [k for k in self.listings if k[0] == here]:
+            del self.listings[key]
         try:
             names = os.listdir(here)
         except OSError:
@@ -283,7 +290,7 @@ class WorkspaceIndex:
         folders = self.callee_folders(self.machine_of(where)) if where else list(map(str, self.roots))
         extensions = self.extensions_for(where)
         return ProgramLibrary(folders=folders, texts=texts, files=self.disk, extensions=extensions,
-                              absent=self.absent)  # fmt: skip
+                              absent=self.absent, listings=self.listings)  # fmt: skip
 
     def find_program(self, doc: OpenFile, number: int | None, name: str | None) -> FoundProgram | None:
         """The program a call in ``doc`` names, found as the program library finds it."""
