@@ -126,3 +126,40 @@ def test_a_program_no_header_holds_is_searched_for_once_until_a_file_changes(
     index.reload(str(workspace / "macros.nc"))  # the editor's file event
     found = index.find_program(caller, 5555, None)
     assert found is not None and Path(found.file.path).name == "macros.nc"
+
+
+def test_a_folder_is_listed_once_for_every_look_up_until_a_file_comes_or_goes(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # hovers and go-to-definitions on calls: each makes a library, and they share the folders'
+    # listings; saving a file changes no listing, a file created or deleted there does
+    from cncmacro.library import programs
+
+    listed: list[Path] = []
+    original = programs.program_files_in
+
+    def program_files_in(folder: Path, extensions: frozenset[str]):  # type: ignore[no-untyped-def]
+        listed.append(folder)
+        return original(folder, extensions)
+
+    monkeypatch.setattr(programs, "program_files_in", program_files_in)
+    index = WorkspaceIndex(lambda: [], lambda lines, path: get_dialect("fanuc"))
+    index.scan([str(workspace)])
+    main = str(workspace / "O0001.nc")
+    caller = Document(main, ParsedDocument(MAIN), SiteIndex(ParsedDocument(MAIN).blocks))
+    for _ in range(3):
+        found = index.find_program(caller, 9200, None)
+        assert found is not None and Path(found.file.path).name == "O9200.nc"
+    assert listed == [workspace]
+    (workspace / "O9200.nc").write_text(SUB.replace("#101=1", "#101=2"), encoding="utf-8")
+    index.reload(str(workspace / "O9200.nc"))  # saved: the same files are there
+    assert index.find_program(caller, 9200, None) is not None
+    assert listed == [workspace]
+    (workspace / "O9300.nc").write_text("O9300\nM99\n", encoding="utf-8")
+    index.reload(str(workspace / "O9300.nc"))  # created: found at once
+    found = index.find_program(caller, 9300, None)
+    assert found is not None and Path(found.file.path).name == "O9300.nc"
+    assert listed == [workspace, workspace]
+    (workspace / "O9300.nc").unlink()
+    index.reload(str(workspace / "O9300.nc"))  # deleted: not found any more
+    assert index.find_program(caller, 9300, None) is None
