@@ -1,4 +1,4 @@
-"""docs/design.md "Files on disk": a file saved, created or deleted on disk starts the runs
+"""docs/design.md "Files changed on disk": a file saved, created or deleted on disk starts the runs
 again only when what they rest on may have changed: a file the library read, or a file that
 came or went in a folder it listed, or a header that may now hold a number searched for in vain,
 or a file that calls an open program (or did). Saving any other program of a shop's folder of
