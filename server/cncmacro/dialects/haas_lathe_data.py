@@ -137,7 +137,7 @@ def _g(code: str, group: str, en: str, zh: str) -> CodeDoc:
 
 _MILL_ROWS = {c.code: c for c in mill.G_CODES}
 # codes a Haas lathe reads as its mills do
-_SAME_AS_MILL = ("G09", "G31", "G52", "G53", "G61", "G64", "G65", "G103", "G154")
+_SAME_AS_MILL = ("G09", "G31", "G52", "G53", "G61", "G64", "G65", "G103")
 
 G_CODES: tuple[CodeDoc, ...] = (
     *shared.codes("G00", "G01"),
@@ -244,6 +244,12 @@ G_CODES: tuple[CodeDoc, ...] = (
     _g("G99", "feed", *shared.FEED_PER_REVOLUTION),
     _g("G112", "", "XY to XC interpolation (live tooling on the C axis)", "XY到XC插补（C轴动力刀具）"),
     _g("G113", "", "XY to XC interpolation cancel", "XY到XC插补取消"),
+    _g(
+        "G154",
+        "wcs",
+        "Select work coordinates G154 P1-P99 (offsets #14001 + 20(P-1) onwards)",
+        "选择工件坐标系G154 P1～P99（偏置从#14001+20(P-1)起）",
+    ),
     _g("G184", "", "Reverse tapping cycle for left-hand threads", "反向攻丝循环（左旋螺纹）"),
     _g("G186", "", "Reverse live tool rigid tap", "动力刀具反向刚性攻丝"),
     _g("G187", "", "Accuracy control (smoothness) for high-speed machining", "精度控制（高速加工平滑度）"),
