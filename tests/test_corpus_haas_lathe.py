@@ -117,11 +117,19 @@ def check_o10015(r: dict[str, Any]) -> None:
     assert bore and max(m["to"]["X"] for m in bore) == pytest.approx(26.0 - 0.4)  # U-0.4 leaves stock in the bore
 
 
+def check_o10016(r: dict[str, Any]) -> None:
+    # I3 relief in four passes: 3, 2, 1, 0 on the radius, so the shape's first X20 (+ U0.4) starts each
+    # pass at 26.4, 24.4, 22.4, 20.4
+    starts = [m["to"]["X"] for m in passes(r, "G73", "G00") if m["from"]["X"] == pytest.approx(62.0)]
+    assert starts == pytest.approx([26.4, 24.4, 22.4, 20.4])
+    assert len([m for m in r["moves"] if m["mode"] == "G03" and m.get("pass_of") is None]) == 1  # G70: the R6 dome
+
+
 MAINS: dict[Path, Callable[[dict[str, Any]], None]] = {
     HAAS_T / f"O{10000 + n}.nc": check for n, check in enumerate(
         (check_o10001, check_o10002, check_o10003, check_o10004, check_o10005, check_o10006, check_o10007,
          check_o10008, check_o10009, check_o10010, check_o10011, check_o10012, check_o10013, check_o10014,
-         check_o10015), start=1)
+         check_o10015, check_o10016), start=1)
 }  # fmt: skip
 
 

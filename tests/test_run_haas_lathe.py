@@ -133,3 +133,20 @@ def test_g90_tapers_by_i(tmp_path: Path) -> None:
     assert (legs[0]["to"]["X"], legs[0]["to"]["Z"]) == (28.0, 2.0)
     mill = run_as(tmp_path, "fanuc-0i", *body)
     assert "legs" not in mill["moves"][-1]
+
+
+def test_g73_in_one_block_repeats_the_shape_d_times_from_i_k_relief_to_none(tmp_path: Path) -> None:
+    # G73 P10 Q20 I3. K1. U0.5 W0.1 D3 F0.25 from X50 Z5 (shape X30 to Z-20, up to X50), G97 S500:
+    # three passes with the relief shrinking evenly: (3, 1), (1.5, 0.5), (0, 0) on top of the allowances:
+    #   X 30 + 0.5 + 2 x 3 = 36.5, 33.5, 30.5; the cut ends at Z -20 + 0.1 + 1 = -18.9, -19.4, -19.9;
+    #   each 25 mm along Z at 0.25 x 500 = 125 mm/min: 12 s, then 20 mm of diameter (10 of radius): 4.8 s
+    # fanuc-0i: G73 is a mill's peck drilling; nothing roughs
+    body = ("G97 S500 M03", "G00 X50. Z5.", "G73 P10 Q20 I3. K1. U0.5 W0.1 D3 F0.25", "N10 G00 X30.", "G01 Z-20.",
+            "N20 X50.", "M30")  # fmt: skip
+    lathe = run_as(tmp_path, "haas-lathe", *body)
+    cuts = [mv for mv in passes(lathe, "G73") if mv["mode"] == "G01"]
+    assert [mv["to"]["X"] for mv in cuts[::2]] == pytest.approx([36.5, 33.5, 30.5])
+    assert [mv["to"]["Z"] for mv in cuts[::2]] == pytest.approx([-18.9, -19.4, -19.9])
+    assert [mv["time"] for mv in cuts] == pytest.approx([12.0, 4.8] * 3)
+    mill = run_as(tmp_path, "fanuc-0i", *body)
+    assert not passes(mill, "G73")

@@ -205,8 +205,8 @@ G_CODES: tuple[CodeDoc, ...] = (
     _g(
         "G73",
         "",
-        "Irregular path stock removal: G73 U W R / G73 P Q U W F",
-        "仿形粗车循环：G73 U W R / G73 P Q U W F",
+        "Irregular path stock removal: G73 P Q I K U W D F (one block) or G73 U W R / G73 P Q U W F",
+        "仿形粗车循环：G73 P Q I K U W D F（单段）或G73 U W R / G73 P Q U W F",
     ),
     _g(
         "G74",
@@ -324,6 +324,25 @@ _ONE_BLOCK_ROUGH = (lw.SHAPE_FIRST, lw.SHAPE_LAST, lw.ALLOWANCE_X, lw.ALLOWANCE_
                     lw.ROUGH_FEED, lw.ROUGH_SPEED, lw.ROUGH_TOOL, _TYPE_II)  # fmt: skip
 
 
+_ONE_BLOCK_PATTERN = (
+    lw.SHAPE_FIRST,
+    lw.SHAPE_LAST,
+    w(
+        "I",
+        "",
+        "relief in X from the first pass to the last (a radius, signed)",
+        "X方向总退刀量：首刀至末刀（半径值，带符号）",
+    ),
+    w("K", "", "relief in Z from the first pass to the last (signed)", "Z方向总退刀量：首刀至末刀（带符号）"),
+    lw.ALLOWANCE_X,
+    lw.ALLOWANCE_Z,
+    w("D", "", "number of passes", "切削次数"),
+    lw.ROUGH_FEED,
+    lw.ROUGH_SPEED,
+    lw.ROUGH_TOOL,
+)
+
+
 def _two_or_one(code: str, first: tuple[CycleWord, ...]) -> CycleWords:
     """G71/G72: FANUC's first block (``first``) and Haas's one block that runs the cycle."""
     return two_blocks(code, first, _ONE_BLOCK_ROUGH, "PQ", True)
@@ -368,6 +387,7 @@ CYCLE_WORDS: dict[float, CycleWords] = {
         _two_or_one(
             "G72", (w("W", "Δd", "depth of each cut along Z, two-block form", "Z向每次切深，双段格式"), lw.RETRACT_E)
         ),
+        two_blocks("G73", lw.FANUC_LATHE_CYCLE_WORDS[73.0].forms[0].words, _ONE_BLOCK_PATTERN, "PQ", True),
         _haas_block("G74", _GROOVE),
         _haas_block("G75", _GROOVE),
         _haas_block("G76", _THREAD),

@@ -48,10 +48,11 @@ class LatheCycles:
       diameters (GSK980TDi §3.23.5/§3.23.6 say so) rather than radii;
     - ``increment``: the millimetres of one unit of a cycle's P and Q written without a decimal
       point (the least input increment, 0.001 mm; a tenth of that in inches under G20);
-    - ``one_block``: whether G71, G72 and G76 take the first block's parameters in the block that
-      runs the cycle, in the program's unit (Haas: ``G71 P Q U W D``, D the depth of cut, a
-      radius; ``G76 X Z K D A I F``, K the thread height and D the first pass's depth, radii, A
-      the tool angle, I the taper, a radius), with no finishing pass beyond the one at full height.
+    - ``one_block``: whether G71, G72, G73 and G76 take the first block's parameters in the
+      block that runs the cycle, in the program's unit (Haas: ``G71 P Q U W D``, D the depth of
+      cut, a radius; ``G73 P Q I K U W D``, I and K the relief, D the passes; ``G76 X Z K D A I
+      F``, K the thread height and D the first pass's depth, radii, A the tool angle, I the
+      taper, a radius), with no finishing pass beyond the one at full height.
       A two-block cycle (FANUC's notation, which such a control reads too) still takes its first
       block's words where the cycle block lacks them;
     - ``taper_letters``: the letter of a single cycle's taper where it is not R (Haas: I in
