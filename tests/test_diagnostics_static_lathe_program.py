@@ -103,8 +103,10 @@ def test_under_a_lathe_profile_nothing_is_suggested(tmp_path):
 
 def test_a_mill_profile_offers_its_own_control_s_lathe_else_fanuc_0i_lathe(tmp_path):
     assert lathe_forms("fanuc-0i")[0].name == "fanuc-0i-lathe" and "fanuc-haas-lathe" not in DIALECTS
+    assert lathe_forms("a-mill-without-a-lathe")[0].name == "fanuc-0i-lathe"
+    # haas has a lathe of its own, haas-lathe (docs/profiles.md "haas-lathe")
     [hint] = suggestions(tmp_path, SHAFT, "haas")
-    assert "mill profile haas" in hint.message and "Choose the lathe profile fanuc-0i-lathe " in hint.message
+    assert "mill profile haas" in hint.message and "Choose the lathe profile haas-lathe " in hint.message
     # fanuc-30i has a lathe form of its own, which the machine file's lathe = true chooses
     [hint] = suggestions(tmp_path, SHAFT, "fanuc-30i")
     assert "mill profile fanuc-30i" in hint.message and "Choose its lathe form, FANUC 30i-B lathe" in hint.message

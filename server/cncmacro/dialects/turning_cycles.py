@@ -47,13 +47,27 @@ class LatheCycles:
     - ``groove_x_on_diameter``: whether G74/G75's P(Δi) and G74's R(Δd), amounts along X, are
       diameters (GSK980TDi §3.23.5/§3.23.6 say so) rather than radii;
     - ``increment``: the millimetres of one unit of a cycle's P and Q written without a decimal
-      point (the least input increment, 0.001 mm; a tenth of that in inches under G20).
+      point (the least input increment, 0.001 mm; a tenth of that in inches under G20);
+    - ``one_block``: whether G71, G72, G73 and G76 take the first block's parameters in the
+      block that runs the cycle, in the program's unit (Haas: ``G71 P Q U W D``, D the depth of
+      cut, a radius; ``G73 P Q I K U W D``, I and K the relief, D the passes; ``G76 X Z K D A I
+      F``, K the thread height and D the first pass's depth, radii, A the tool angle, I the
+      taper, a radius), with no finishing pass beyond the one at full height.
+      A two-block cycle (FANUC's notation, which such a control reads too) still takes its first
+      block's words where the cycle block lacks them;
+    - ``taper_letters``: the letter of a single cycle's taper where it is not R (Haas: I in
+      G90 and G92, a radius, K in G94);
+    - ``groove_letters``: the letters of G74/G75's step along X and step along Z where they are
+      not P and Q (Haas: I and K, in the program's unit with a decimal point; X amounts radii).
     """
 
     thread_codes: frozenset[float] = frozenset()
     variable_lead: dict[float, str] = field(default_factory=dict)
     groove_x_on_diameter: bool = False
     increment: float = 0.001
+    one_block: bool = False
+    taper_letters: dict[float, str] = field(default_factory=dict)
+    groove_letters: tuple[str, str] | None = None
 
 
 FANUC_LATHE_CYCLES = LatheCycles(frozenset({32.0, 34.0}), {34.0: "K"})

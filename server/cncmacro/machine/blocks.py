@@ -571,11 +571,11 @@ class CompiledFile:
             raise UnknownValue
         if letter == "G":
             return to_increment(v, 1) if v != int(v) else float(v)
-        if letter in INTEGER_LETTERS:
-            return round_half_away(v)
+        if letter in INTEGER_LETTERS and not (letter == "D" and self.machine.dialect.lathe_cycles.one_block):
+            return round_half_away(v)  # (a lathe whose cycles take D as a depth keeps its decimals)
         if letter == "F":
             return v
-        if letter in DECIMAL_LETTERS:
+        if letter in DECIMAL_LETTERS or letter == "D":
             return to_increment(v, 4 if self.machine.planner.modal.get("units") == 20.0 else 3)
         if literal and not point and self.machine.settings.decimal_point == "increment":
             v = v / 1000.0

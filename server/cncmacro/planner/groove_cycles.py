@@ -30,14 +30,27 @@ if TYPE_CHECKING:
 _MOST_STEPS = 99999  # pecks or columns of one cycle at most, whatever its words
 
 
+def _step_words(p: Planner, words: dict[str, float]) -> tuple[float, float]:
+    """The block's step along X and along Z in least input increments: P and Q, or where the
+    profile names other letters (``LatheCycles.groove_letters``, Haas's I and K, written in the
+    program's unit) those, converted."""
+    letters = p.dialect.lathe_cycles.groove_letters
+    if letters is None:
+        return words.get("P", 0.0), words.get("Q", 0.0)
+    one = in_increments(p, 1.0)
+    return words.get(letters[0], 0.0) / one, words.get(letters[1], 0.0) / one
+
+
 def face_grooving(p: Planner, words: dict[str, float], file: str, line: int, target: list[float]) -> None:
     """G74: pecks along Z, columns along X (module docstring)."""
-    _grooving(p, 74.0, words, file, line, target, "Z", "X", words.get("Q", 0.0), words.get("P", 0.0))
+    x_step, z_step = _step_words(p, words)
+    _grooving(p, 74.0, words, file, line, target, "Z", "X", z_step, x_step)
 
 
 def diameter_grooving(p: Planner, words: dict[str, float], file: str, line: int, target: list[float]) -> None:
     """G75: pecks along X, columns along Z (module docstring)."""
-    _grooving(p, 75.0, words, file, line, target, "X", "Z", words.get("P", 0.0), words.get("Q", 0.0))
+    x_step, z_step = _step_words(p, words)
+    _grooving(p, 75.0, words, file, line, target, "X", "Z", x_step, z_step)
 
 
 def _steps(start: float, end: float, step: float) -> list[float]:

@@ -10,6 +10,9 @@ what each block of G70–G76 means and the moves it makes.
   being made, their F, S and T are ignored), and when the block N(Q) is done it calls
   ``end_shape``, which turns the shape into the passes (stock_removal.py) and records them as
   the cycle block's moves. The tool is back at the start point.
+  Where the profile takes the first block's words in that block (``LatheCycles.one_block``,
+  Haas's ``G71 P Q U W D``), its D is the depth (G73: I and K the relief, D the passes) and no
+  first block is needed.
 - **G70 P Q** runs the shape blocks as they are written, with their own F, S and T, then
   returns to the start point at rapid.
 - **G74, G75, G76** and the single cycles G90, G92, G94 are planned by their own modules
@@ -264,8 +267,12 @@ def _roughing_steps(p: Planner, shape: ShapeReading, xi: int, zi: int, facing: b
     if shape.code == 73.0:
         relief = (first.get("U", 0.0), first.get("W", 0.0))
         count = round(first.get("R", 1.0))
+        if p.dialect.lathe_cycles.one_block and "D" in words:  # Haas: G73 P Q I K U W D, D the passes
+            relief, count = (words.get("I", 0.0), words.get("K", 0.0)), round(words["D"])
         return pattern_passes(start, moved, relief, count)
     depth = first.get("W" if facing else "U", 0.0)
+    if p.dialect.lathe_cycles.one_block and "D" in words:  # Haas: G71 P Q U W D, D the depth of cut
+        depth = words["D"]
     retract = first.get("R", 0.0)
     approach = 0.0 if segments[0].mode == 0.0 else 1.0
     # G18: G03 turns from Z toward X, so counterclockwise in (z, x) (G72's plane), clockwise in (x, z)

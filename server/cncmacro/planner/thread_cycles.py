@@ -17,6 +17,11 @@ With a tool angle a the infeed is along one flank: a pass's start moves from the
 toward the thread's end by its depth × tan(a/2), as the GSK980TDi manual (§3.24.12, step ①)
 has X and Z move together in the direction from the start to the thread's end; the FANUC 0i-TF
 cuts with one edge the same way. The chamfer r is not drawn: each pass threads to the end point.
+
+Where the profile writes the cycle in one block (``LatheCycles.one_block``, Haas: ``G76 X Z K D
+A I F``, with no first block) K is the thread's height and D the first pass's depth (radii, in
+the program's unit), A the tool angle (0 when not given) and I the taper; the passes go as above
+with no minimum depth and no allowance, and the pass that reaches K is the last.
 Every move is recorded as a pass of the cycle (``pass_of="G76"``); the tool ends where it began.
 """
 
@@ -64,6 +69,10 @@ def multiple_thread(p: Planner, words: dict[str, float], file: str, line: int, t
     height = in_increments(p, words.get("P", 0.0))
     first = in_increments(p, words.get("Q", 0.0))
     taper = words.get("R", 0.0)
+    one_block = p.dialect.lathe_cycles.one_block and "K" in words
+    if one_block:  # Haas: G76 X Z K D A I F in one block, in the program's unit (module docstring)
+        height, first = words["K"], words.get("D", words["K"])
+        angle, taper, allowance, least = round(words.get("A", 0.0)), words.get("I", 0.0), 0.0, 0.0
     xi, zi = p.axis_index["X"], p.axis_index["Z"]
     start = tuple(p.pos)
     xa, za = start[xi], start[zi]
@@ -72,7 +81,10 @@ def multiple_thread(p: Planner, words: dict[str, float], file: str, line: int, t
     along = (zd > za) - (zd < za)  # the way the thread runs along Z
     flank = math.tan(math.radians(angle / 2.0))
     passes: list[Pass] = []
-    for depth in thread_depths(first, least, height, allowance, finishing):
+    depths = thread_depths(first, least, height, allowance, finishing)
+    if one_block:  # the last pass at full height ends the thread: no finishing pass after it
+        depths = depths[:-1]
+    for depth in depths:
         z_in = za + along * depth * flank
         share = (z_in - zd) / (za - zd) if za != zd else 0.0  # along the thread's line, from its end
         left = 2.0 * (height - depth)  # diameter still to go to the root

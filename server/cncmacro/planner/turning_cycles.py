@@ -100,7 +100,8 @@ def single_cycle_target(
             target[i] += inc[i]
         elif same and name in kept:
             target[i] = kept[name]
-    taper = other.get("R", kept.get("R", 0.0) if same else 0.0)
+    letter = p.dialect.lathe_cycles.taper_letters.get(code, "R")  # Haas: I (G90, G92), K (G94)
+    taper = other.get(letter, kept.get("R", 0.0) if same else 0.0)
     p.cycle_params[SINGLE_CYCLE_WORDS] = {"G": code, "R": taper, **dict(zip(names, target, strict=True))}
     return target, taper
 
