@@ -118,6 +118,11 @@ class Dialect:
     # run when the condition holds and are passed over when it does not (Haas); elsewhere it is a
     # ``dialect-feature`` error and the run stops there with alarm 114
     if_governs_block: bool = False
+    # §4 the block form of IF: ``IF [cond] THEN`` alone on its line runs the blocks up to its
+    # ``ELSE`` when the condition holds, else those after the ``ELSE`` up to its ``ENDIF``; block
+    # IFs nest (Mitsubishi M70/M80; Mazak's EIA programs have it too); elsewhere IF..THEN alone,
+    # ELSE and ENDIF are ``dialect-feature`` errors and the run stops there with alarm 114
+    block_if: bool = False
     # §1 §8 the manual documents the comma words ,C ,R (chamfer, corner radius) and ,A (angle) on a
     # move (FANUC, Haas); without it they are read and run alike but earn a ``corner-word`` warning
     corner_words: bool = True
