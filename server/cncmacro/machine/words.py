@@ -141,9 +141,12 @@ def if_block_refused(dialect: Dialect, words: bool) -> Detail:
     )
 
 
-# the controls that read the block form of IF, named where another control refuses it
+# the controls that read the block form of IF, named where another control refuses it, and those
+# of them that have no profile yet, which a profile suggestion names beside the one it offers
 BLOCK_IF_CONTROLS = "Mitsubishi M70/M80 and Mazak controls"
 BLOCK_IF_CONTROLS_ZH = "三菱 M70/M80 与马扎克系统"
+BLOCK_IF_WITHOUT_PROFILE = "Mazak"
+BLOCK_IF_WITHOUT_PROFILE_ZH = "马扎克"
 
 
 def block_if_refused(dialect: Dialect, word: str) -> Detail:
