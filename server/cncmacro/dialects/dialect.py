@@ -135,6 +135,10 @@ class Dialect:
     # §2 the common variables: every range the control can have, the default in force unless a
     # machine file names fewer (docs/semantics.md §2 "Common variables")
     common_ranges: tuple[CommonRange, ...] = (CommonRange(100, 499, False), CommonRange(500, 999, True))
+    # §2 the common ranges each part system (path) of a multi-path control keeps its own, the
+    # machine's other commons being shared by the paths (a machine file's ``part_system_commons``;
+    # empty: the machine file does not say, and nothing is said of sharing)
+    part_system_commons: tuple[tuple[int, int], ...] = ()
     # §5 M98 P: digits of a program number; a P with more digits carries the repeat count before them
     m98_program_digits: int = 4
     # system variables a machine file adds or describes anew; they win over the profile's rows
@@ -286,6 +290,13 @@ class Dialect:
                           f"#{number} 不是本机床的公共变量（{self.title}：{ranges.zh}；"
                           "机床有更多公共变量时，请在机床设置文件中设定）")  # fmt: skip
         return detail(f"#{number} does not exist on {self.title}", f"{self.title} 没有变量 #{number}")
+
+    def shared_common(self, number: int) -> bool | None:
+        """Whether common ``#number`` is shared by the part systems of the machine (False: each
+        keeps its own), or None where the machine file does not say (``part_system_commons``)."""
+        if not self.part_system_commons:
+            return None
+        return not any(first <= number <= last for first, last in self.part_system_commons)
 
     def allows_common(self, first: int, last: int) -> CommonRange | None:
         """The profile's common range that holds ``#first``–``#last``, or None."""
