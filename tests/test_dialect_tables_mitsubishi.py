@@ -116,3 +116,19 @@ def test_alarms_are_shown_without_a_number() -> None:
     assert str(m70.alarm.message) == str(fanuc.alarm.message) == "TOOL BROKEN"
     assert get_dialect(M70).shown_alarm(m70.alarm.number) is None
     assert get_dialect(FANUC).shown_alarm(fanuc.alarm.number) == 3001
+
+
+def test_else_and_endif_are_statement_words_where_the_block_if_is() -> None:
+    # the editor colours, completes and documents the words of its function table (FunctionDoc.kind)
+    def words(profile: str) -> dict[str, str]:
+        return {f.signature: f.kind for f in get_dialect(profile).functions() if f.name in ("IF", "ELSE", "ENDIF")}
+
+    assert words(M70) == {
+        "IF [condition] GOTO n / IF [condition] THEN statement": "statement",
+        "IF [condition] THEN … ELSE … ENDIF": "statement",
+        "ELSE": "statement",
+        "ENDIF": "statement",
+    }
+    assert list(words(FANUC)) == ["IF [condition] GOTO n / IF [condition] THEN statement"]
+    endif = next(f for f in get_dialect(M70).functions() if f.name == "ENDIF")
+    assert "Ends the block IF" in endif.en and CJK.search(endif.zh)

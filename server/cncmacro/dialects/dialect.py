@@ -18,6 +18,7 @@ from ..bilingual import Detail, detail
 from .alarms import alarm_said, alarm_titled, shown_number
 from .cycle_words import CycleWords
 from .drill_cycles import DrillCycle
+from .functions_data import BLOCK_IF_WORDS
 from .lathe_cycle_rules import LatheCycleRules
 from .tables import CodeDoc, CommonRange, FunctionDoc, LatheOffsets, ProgramDoc, SystemVariable, SystemVariableName
 from .timing import Timing
@@ -354,7 +355,8 @@ class Dialect:
     def functions(self) -> tuple[FunctionDoc, ...]:
         """The common functions, then the forms ``extra_functions`` adds (by name or signature),
         each alarm their texts name as this control shows it."""
-        return _functions_shown(self.extra_functions, self.documented_alarms)
+        extra = self.extra_functions | BLOCK_IF_WORDS if self.block_if else self.extra_functions
+        return _functions_shown(extra, self.documented_alarms)
 
 
 _Tables = tuple[
