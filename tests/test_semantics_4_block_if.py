@@ -167,6 +167,25 @@ def test_4_block_if_second_else_is_if_mismatch() -> None:
     assert d.related[0].line + 1 == 3
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the loop starts inside the THEN branch and ends after the ENDIF
+        lines("#1=0", "IF [#1 EQ 0] THEN", "WHILE [#1 LT 2] DO1", "#1=#1+1", "ENDIF", "END1", "M30"),
+        # the loop starts before the IF and ends inside its branch
+        lines("#1=0", "WHILE [#1 LT 2] DO1", "IF [#1 EQ 0] THEN", "#1=#1+1", "END1", "ENDIF", "M30"),
+    ],
+)
+def test_4_block_if_crossing_a_loop_is_if_mismatch_and_stops_the_run(text: str) -> None:
+    [d] = check(text, M70)
+    assert (d.code, d.severity) == ("if-mismatch", "error")
+    assert "a block IF and a loop may not cross" in d.message
+    m = run(text, M70)
+    assert m.status == "alarm" and m.alarm is not None
+    assert str(m.alarm.message) == "a block IF [...] THEN and a WHILE/DO loop cross"
+    assert "if-mismatch" not in [d.code for d in check(text, FANUC)]
+
+
 def test_4_block_if_a_jump_into_a_branch_is_jump_into_if() -> None:
     text = lines("#1=0", "GOTO 10", "IF [#1 EQ 1] THEN", "N10 #2=1", "ENDIF", "M30")
     [d] = check(text, M70)

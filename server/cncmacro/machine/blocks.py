@@ -76,7 +76,7 @@ class CompiledFile:
         self.code[n] = _end_of_file
         self.do_end = {p.do_line: p.end_line for p in file.program.loops}
         self.end_do = {p.end_line: p.do_line for p in file.program.loops}
-        self.if_blocks, self.branch_ends = _if_blocks(file.program)
+        self.if_blocks, self.branch_ends, self.crossing = _if_blocks(file.program)
         self._jumps: dict[tuple[int, int], tuple[int, int]] = {}
         self._spans: jumps.LoopSpans | None = None  # made at the first jump that is not cached
         self.values = ExpressionCompiler(machine.kinds, watch=machine.watching, unknowns=machine.kept_unknown)
@@ -91,7 +91,7 @@ class CompiledFile:
         self.code[n] = _end_of_file
         self.do_end = {p.do_line: p.end_line for p in self.file.program.loops}
         self.end_do = {p.end_line: p.do_line for p in self.file.program.loops}
-        self.if_blocks, self.branch_ends = _if_blocks(self.file.program)
+        self.if_blocks, self.branch_ends, self.crossing = _if_blocks(self.file.program)
         self._jumps.clear()
         self._spans = None
 
@@ -410,6 +410,8 @@ class CompiledFile:
             return raiser(
                 STATEMENT_FORMAT, detail("IF [...] THEN has no ENDIF", "IF [...] THEN 没有对应的 ENDIF"), "if-mismatch"
             )
+        if pair[2] in self.crossing or pair[1] in self.crossing:
+            return _crossing()
         test = self.values.condition(s.condition)
         other = self.next_line(pair[1] if pair[1] is not None else pair[2])
 
@@ -421,6 +423,8 @@ class CompiledFile:
     def branch_end(self, s: Else | EndIf, pc: int, nxt: int) -> Runner:
         """``ELSE`` reached from the branch before it goes on after its ``ENDIF``; ``ENDIF`` does
         nothing. One without its ``IF [cond] THEN`` stops the run."""
+        if pc in self.crossing:
+            return _crossing()
         word = "ELSE" if isinstance(s, Else) else "ENDIF"
         endif = self.branch_ends.get(pc)
         if endif is None:
@@ -641,13 +645,22 @@ class CompiledFile:
 _INTO_IF = -2
 
 
-def _if_blocks(program: Any) -> tuple[dict[int, tuple[int, int | None, int]], dict[int, int]]:
-    """The block IFs of ``program`` by IF line, (IF line, ELSE line or None, ENDIF line), and the
-    ENDIF line of each paired ELSE and ENDIF line."""
+def _if_blocks(program: Any) -> tuple[dict[int, tuple[int, int | None, int]], dict[int, int], frozenset[int]]:
+    """The block IFs of ``program`` by IF line, (IF line, ELSE line or None, ENDIF line), the
+    ENDIF line of each paired ELSE and ENDIF line, and the ELSE and ENDIF lines that cross a loop."""
     heads = {f.if_line: (f.if_line, f.else_line, f.endif_line) for f in program.if_blocks}
     ends = {f.endif_line: f.endif_line for f in program.if_blocks}
     ends.update({f.else_line: f.endif_line for f in program.if_blocks if f.else_line is not None})
-    return heads, ends
+    return heads, ends, frozenset(p.line for p in program.if_problems if p.kind == "crossing")
+
+
+def _crossing() -> Runner:
+    """The runner of a block IF marker whose branch crosses a WHILE/DO loop."""
+    return raiser(
+        STATEMENT_FORMAT,
+        detail("a block IF [...] THEN and a WHILE/DO loop cross", "块形式 IF [...] THEN 与 WHILE/DO 循环交叉"),
+        "if-mismatch",
+    )
 
 
 def _end_of_file(m: Machine, pc: int) -> int:

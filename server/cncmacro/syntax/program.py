@@ -73,8 +73,10 @@ class IfBlock:
 @dataclass(slots=True)
 class IfProblem:
     """A block IF marker that does not pair: ``kind`` is ``if-without-endif``,
-    ``else-without-if``, ``endif-without-if`` or ``second-else`` (an ELSE after the ELSE of its IF,
-    whose line is ``other_line``)."""
+    ``else-without-if``, ``endif-without-if``, ``second-else`` (an ELSE after the ELSE of its IF,
+    whose line is ``other_line``) or ``crossing`` (an ELSE or ENDIF reached while a loop opened
+    inside the branch it ends is still open, or after a loop that was open at its IF has ended:
+    a block IF and a loop may not cross; ``other_line`` is the loop's DO line when it is known)."""
 
     kind: str
     line: int
@@ -297,7 +299,7 @@ def _derive_from_markers(program: Program) -> None:
     open_loops: list[tuple[int, int]] = []  # (number, DO line)
     if_blocks: list[IfBlock] = []
     if_problems: list[IfProblem] = []
-    open_ifs: list[list[int | None]] = []  # [IF line, ELSE line or None]
+    open_ifs: list[list[int | None]] = []  # [IF line, ELSE line or None, loops open at the IF]
     numbers: set[int] = set()
     unit = units[0]
     tape_end = None
@@ -329,7 +331,7 @@ def _derive_from_markers(program: Program) -> None:
                 _close_loop(number, i, open_loops, loops, problems)
         branch = b.branch_marker() if b.statements else None
         if branch is not None:
-            _branch(branch, i, open_ifs, if_blocks, if_problems)
+            _branch(branch, i, open_ifs, if_blocks, if_problems, open_loops)
     _close_unit(open_loops, problems)
     _close_ifs(open_ifs, if_problems)
     program.units = units
@@ -377,30 +379,38 @@ def _close_loop(
 
 
 def _branch(
-    kind: str, line: int, open_ifs: list[list[int | None]], blocks: list[IfBlock], problems: list[IfProblem]
+    kind: str,
+    line: int,
+    open_ifs: list[list[int | None]],
+    blocks: list[IfBlock],
+    problems: list[IfProblem],
+    open_loops: list[tuple[int, int]],
 ) -> None:
     """One block IF marker: an IF opens a block, an ELSE marks the innermost open one's second
-    branch, an ENDIF closes it."""
+    branch, an ENDIF closes it. A branch ends with as many loops open as at its IF, or it crosses one."""
     if kind == "IF":
-        open_ifs.append([line, None])
+        open_ifs.append([line, None, len(open_loops)])
         return
     if not open_ifs:
         problems.append(IfProblem("else-without-if" if kind == "ELSE" else "endif-without-if", line))
         return
     top = open_ifs[-1]
+    if top[2] != len(open_loops):
+        inside = open_loops[-1][1] if top[2] is not None and len(open_loops) > top[2] else None
+        problems.append(IfProblem("crossing", line, inside))
     if kind == "ELSE":
         if top[1] is not None:
             problems.append(IfProblem("second-else", line, top[1]))
         else:
             top[1] = line
         return
-    first, other = open_ifs.pop()
+    first, other, _ = open_ifs.pop()
     assert first is not None
     blocks.append(IfBlock(first, other, line))
 
 
 def _close_ifs(open_ifs: list[list[int | None]], problems: list[IfProblem]) -> None:
-    for first, _ in open_ifs:
+    for first, *_ in open_ifs:
         assert first is not None
         problems.append(IfProblem("if-without-endif", first))
     open_ifs.clear()

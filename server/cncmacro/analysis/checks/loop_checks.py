@@ -7,7 +7,8 @@ interpreter's ``loop_number`` and ``MAX_LOOP_DEPTH`` decide). A DO without its E
 END without a DO (126) and crossing loops (126) are ``loop-mismatch``; a marker whose number is
 already wrong is reported once, as ``loop-number``, because that is the alarm the control gives.
 On a control with the block form of IF (``Dialect.block_if``), an ``IF [..] THEN`` without its
-ENDIF, an ELSE or ENDIF without its IF and a second ELSE are ``if-mismatch`` (the run stops there
+ENDIF, an ELSE or ENDIF without its IF, a second ELSE and a branch that crosses a loop are
+``if-mismatch`` (the run stops there
 with the format alarm); elsewhere those blocks are already ``dialect-feature`` errors.
 """
 
@@ -62,6 +63,15 @@ def if_diagnostics(program: Program, file: str, locale: str, dialect: Dialect) -
                            f"同一 IF [...] THEN 的第二个 ELSE（第一个在第 {other + 1} 行）（{alarm.zh}）")  # fmt: skip
             related = (Related(file, other, *_branch_span(program.blocks[other]), pick(locale, "the first ELSE",
                                                                                        "第一个 ELSE")),)  # fmt: skip
+        elif problem.kind == "crossing":
+            word = "ELSE" if program.blocks[line].branch_marker() == "ELSE" else "ENDIF"
+            message = pick(locale, f"{word} ends a branch of its IF [...] THEN across a WHILE/DO loop: a block IF "
+                                   f"and a loop may not cross ({alarm})",
+                           f"{word} 结束 IF [...] THEN 的分支时与 WHILE/DO 循环交叉：块形式 IF 与循环不能交叉"
+                           f"（{alarm.zh}）")  # fmt: skip
+            if problem.other_line is not None:
+                related = (Related(file, problem.other_line, *_marker_span(program.blocks[problem.other_line]),
+                                   pick(locale, "the loop", "循环")),)  # fmt: skip
         else:
             word = "ELSE" if problem.kind == "else-without-if" else "ENDIF"
             message = pick(locale, f"{word} has no IF [...] THEN before it ({alarm})",
