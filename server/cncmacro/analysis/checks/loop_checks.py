@@ -8,8 +8,8 @@ END without a DO (126) and crossing loops (126) are ``loop-mismatch``; a marker 
 already wrong is reported once, as ``loop-number``, because that is the alarm the control gives.
 On a control with the block form of IF (``Dialect.block_if``), an ``IF [..] THEN`` without its
 ENDIF, an ELSE or ENDIF without its IF, a second ELSE and a branch that crosses a loop are
-``if-mismatch`` (the run stops there
-with the format alarm); elsewhere those blocks are already ``dialect-feature`` errors.
+``if-mismatch`` (the run stops there with the format alarm); elsewhere those blocks are already
+``dialect-feature`` errors.
 """
 
 from __future__ import annotations
