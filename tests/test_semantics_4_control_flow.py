@@ -26,8 +26,9 @@ def test_if_goto_and_if_then():
 
 
 def test_if_then_takes_one_assignment_only():
-    error("IF[#1 GT 0] THEN GOTO 5")
-    error("IF[#1 GT 0] THEN")
+    assert error("IF[#1 GT 0] THEN GOTO 5").message.startswith("after THEN comes one assignment or output statement")
+    error("IF[#1 GT 0] THEN WHILE[#1 LT 2] DO1")
+    # IF [..] THEN alone is the block form (tests/test_semantics_4_block_if.py), not a syntax error
 
 
 def test_while_do_end_and_bare_do():

@@ -125,6 +125,16 @@ CODES: dict[str, Code] = _codes(
          BOTH, (LOOP_NUMBER,)),
     Code("jump-into-loop", ERROR, detail("A jump into a DO range from outside it.", "从外部转移到 DO 循环范围内。"),
          BOTH, subjects=("jump-into-loop",)),
+    Code("if-mismatch", ERROR,
+         detail("A block IF [...] THEN without its ENDIF, an ELSE or ENDIF without its IF, or a second ELSE "
+                "(controls with the block form of IF).",
+                "块形式 IF [...] THEN 没有对应的 ENDIF、ELSE 或 ENDIF 没有对应的 IF，或出现第二个 ELSE"
+                "（支持块形式 IF 的系统）。"),
+         BOTH, subjects=("if-mismatch",)),
+    Code("jump-into-if", ERROR,
+         detail("A jump into a branch of a block IF [...] THEN from outside it.",
+                "从外部转移到块形式 IF [...] THEN 的分支内。"),
+         BOTH, subjects=("jump-into-if",)),
     Code("g65-nc-words", ERROR,
          detail("G65/G66 shares its block with another G or M code, an O word or a prior word (a modal G code "
                 "before it is a hint where the control sets it and calls).",

@@ -18,6 +18,7 @@ from ..bilingual import Detail, detail
 from .alarms import alarm_said, alarm_titled, shown_number
 from .cycle_words import CycleWords
 from .drill_cycles import DrillCycle
+from .functions_data import BLOCK_IF_WORDS
 from .lathe_cycle_rules import LatheCycleRules
 from .tables import CodeDoc, CommonRange, FunctionDoc, LatheOffsets, ProgramDoc, SystemVariable, SystemVariableName
 from .timing import Timing
@@ -118,6 +119,11 @@ class Dialect:
     # run when the condition holds and are passed over when it does not (Haas); elsewhere it is a
     # ``dialect-feature`` error and the run stops there with alarm 114
     if_governs_block: bool = False
+    # §4 the block form of IF: ``IF [cond] THEN`` alone on its line runs the blocks up to its
+    # ``ELSE`` when the condition holds, else those after the ``ELSE`` up to its ``ENDIF``; block
+    # IFs nest (Mitsubishi M70/M80; Mazak's EIA programs have it too); elsewhere IF..THEN alone,
+    # ELSE and ENDIF are ``dialect-feature`` errors and the run stops there with alarm 114
+    block_if: bool = False
     # §1 §8 the manual documents the comma words ,C ,R (chamfer, corner radius) and ,A (angle) on a
     # move (FANUC, Haas); without it they are read and run alike but earn a ``corner-word`` warning
     corner_words: bool = True
@@ -130,6 +136,10 @@ class Dialect:
     # §2 the common variables: every range the control can have, the default in force unless a
     # machine file names fewer (docs/semantics.md §2 "Common variables")
     common_ranges: tuple[CommonRange, ...] = (CommonRange(100, 499, False), CommonRange(500, 999, True))
+    # §2 the common ranges each part system (path) of a multi-path control keeps its own, the
+    # machine's other commons being shared by the paths (a machine file's ``part_system_commons``;
+    # empty: the machine file does not say, and nothing is said of sharing)
+    part_system_commons: tuple[tuple[int, int], ...] = ()
     # §5 M98 P: digits of a program number; a P with more digits carries the repeat count before them
     m98_program_digits: int = 4
     # system variables a machine file adds or describes anew; they win over the profile's rows
@@ -282,6 +292,13 @@ class Dialect:
                           "机床有更多公共变量时，请在机床设置文件中设定）")  # fmt: skip
         return detail(f"#{number} does not exist on {self.title}", f"{self.title} 没有变量 #{number}")
 
+    def shared_common(self, number: int) -> bool | None:
+        """Whether common ``#number`` is shared by the part systems of the machine (False: each
+        keeps its own), or None where the machine file does not say (``part_system_commons``)."""
+        if not self.part_system_commons:
+            return None
+        return not any(first <= number <= last for first, last in self.part_system_commons)
+
     def allows_common(self, first: int, last: int) -> CommonRange | None:
         """The profile's common range that holds ``#first``–``#last``, or None."""
         for r in self.common_ranges:
@@ -338,7 +355,8 @@ class Dialect:
     def functions(self) -> tuple[FunctionDoc, ...]:
         """The common functions, then the forms ``extra_functions`` adds (by name or signature),
         each alarm their texts name as this control shows it."""
-        return _functions_shown(self.extra_functions, self.documented_alarms)
+        extra = self.extra_functions | BLOCK_IF_WORDS if self.block_if else self.extra_functions
+        return _functions_shown(extra, self.documented_alarms)
 
 
 _Tables = tuple[

@@ -8,8 +8,9 @@ documents the GSK980TDi macro arithmetic and branch commands ``G65 Hm P#i Q#j R#
 §3.28.2 (docs/semantics.md §7): P is the destination variable (or the sequence number for H80-H86 and
 the alarm number for H99), Q and R are variables or constants written without ``#``.
 ``EXTRA_FUNCTIONS`` documents the functions and forms a dialect adds to the common set (the
-FANUC 30i's POW, ADP, PRM and ATAN[a,b]); a dialect names the ones it has in
-``Dialect.extra_functions`` (docs/profiles.md). Each row says what kind of word it is
+FANUC 30i's POW, ADP, PRM and ATAN[a,b]; the block IF's words, ``BLOCK_IF_WORDS``); a dialect
+names the ones it has in ``Dialect.extra_functions`` or has them by its ``block_if`` switch
+(docs/profiles.md). Each row says what kind of word it is
 (``tables.FUNCTION_KINDS``: a function, an operator or a statement word), by which the editor
 colours and completes it.
 """
@@ -265,7 +266,35 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
     ),
 )
 
+# the statement words of the block form of IF, which a dialect with ``Dialect.block_if`` has
+# (``Dialect.functions``), named by their signatures
+BLOCK_IF_WORDS = frozenset({"IF [condition] THEN … ELSE … ENDIF", "ELSE", "ENDIF"})
+
 EXTRA_FUNCTIONS: tuple[FunctionDoc, ...] = (
+    FunctionDoc(
+        "IF",
+        STATEMENT,
+        "IF [condition] THEN … ELSE … ENDIF",
+        "Block IF: IF [condition] THEN alone on its line runs the blocks up to its ELSE when the condition is "
+        "true, else the blocks after the ELSE up to its ENDIF (the ELSE part may be left out); blocks nest",
+        "块形式IF：单独一行的IF [条件] THEN在条件成立时执行其后直到ELSE的程序段，不成立时执行ELSE之后直到ENDIF的"
+        "程序段（可以没有ELSE部分）；可以嵌套",
+    ),
+    FunctionDoc(
+        "ELSE",
+        STATEMENT,
+        "ELSE",
+        "Starts the blocks a block IF [condition] THEN runs when its condition is false; from the blocks before "
+        "it the run goes on after the ENDIF",
+        "块形式IF [条件] THEN的条件不成立时所执行程序段的开始；从其前面的程序段执行到此时转到ENDIF之后",
+    ),
+    FunctionDoc(
+        "ENDIF",
+        STATEMENT,
+        "ENDIF",
+        "Ends the block IF [condition] THEN opened before it",
+        "结束其前面的块形式IF [条件] THEN",
+    ),
     FunctionDoc(
         "ATAN",
         FUNCTION,

@@ -130,6 +130,9 @@ class MachineSettings:
     dialect: str | None = None
     # the machine's common ranges (None: every range the profile allows)
     common: tuple[tuple[int, int], ...] | None = None
+    # the common ranges each part system (path) of a multi-path control keeps its own; the machine's
+    # other commons are shared by the part systems (``part_system_commons``; empty: not said)
+    part_system_commons: tuple[tuple[int, int], ...] = ()
     program_digits: int | None = None
     programs_on_control: tuple[tuple[int, int], ...] = ()
     system_variables: tuple[SystemVariable, ...] = ()
@@ -193,6 +196,7 @@ class _SettingsFields(TypedDict, total=False):
 
     dialect: str | None
     common: tuple[tuple[int, int], ...] | None
+    part_system_commons: tuple[tuple[int, int], ...]
     program_digits: int | None
     programs_on_control: tuple[tuple[int, int], ...]
     system_variables: tuple[SystemVariable, ...]
@@ -340,9 +344,9 @@ def settings_from_mapping(
         shown = key if len(key) <= 60 else key[:59] + "…"
         return MachineFileError(detail(f"{source}: '{shown}' {what}", f"{source}：'{shown}' {what.zh}"), key=key)
 
-    known = {"base", "dialect", "common", "program_digits", "programs_on_control", "system_variables",
-             "decimal_point", "block_delete", "shape_monotone_check", "arc_tolerance", "cutter_startup",
-             "cutter_offset", "persistent_file",
+    known = {"base", "dialect", "common", "part_system_commons", "program_digits", "programs_on_control",
+             "system_variables", "decimal_point", "block_delete", "shape_monotone_check", "arc_tolerance",
+             "cutter_startup", "cutter_offset", "persistent_file",
              "max_blocks", "date", "time", "variables", "calls", "skip", "severity", "timing", "lathe", "extensions",
              "codes", "limits"}  # fmt: skip
     for key in data:
@@ -366,6 +370,10 @@ def settings_from_mapping(
         kw["lathe"] = _lathe(data["lathe"], str(kw.get("dialect") or DEFAULT_DIALECT), fail)
     if "common" in data:
         kw["common"] = _common(data["common"], str(kw.get("dialect") or DEFAULT_DIALECT), fail)
+    if "part_system_commons" in data:
+        kw["part_system_commons"] = _part_system_commons(
+            data["part_system_commons"], str(kw.get("dialect") or DEFAULT_DIALECT), kw.get("common"), fail
+        )
     readers: dict[str, Callable[[object, _Fail], object]] = {
         "extensions": _extensions, "program_digits": _program_digits, "programs_on_control": _program_ranges,
         "system_variables": _system_variables, "decimal_point": _decimal_point, "arc_tolerance": _arc_tolerance,
@@ -531,6 +539,31 @@ def _common(value: object, profile: str, fail: _Fail) -> tuple[tuple[int, int], 
                     f"#{first}-#{last} 与 {dialect.name} 的系统变量 {held}（{row.zh}）重叠："
                     "公共变量范围不能包含它们"))  # fmt: skip
     return tuple(merged)
+
+
+def _part_system_commons(
+    value: object, profile: str, common: tuple[tuple[int, int], ...] | None, fail: _Fail
+) -> tuple[tuple[int, int], ...]:
+    """``part_system_commons``: the ranges of commons each part system keeps its own (a list of
+    ``[first, last]``, empty for none), each inside the machine's commons (``common``, else the
+    profile's ranges). On a multi-path control parameters decide how many of #100-#199 and
+    #500-#999 the paths share (Mitsubishi M70/M80: docs/machine-file.md)."""
+    dialect = get_dialect(profile)
+    ranges = common if common is not None else tuple((r.first, r.last) for r in dialect.common_ranges)
+    shown = ", ".join(f"#{a}-#{b}" for a, b in ranges)
+    bad = detail(f"must be a list of ranges such as [[100, 149]], each inside the machine's commons ({shown})",
+                 f"必须是变量号范围的列表，如 [[100, 149]]，且每个范围都在本机床的公共变量（{shown}）之内")  # fmt: skip
+    if not isinstance(value, list):
+        raise fail("part_system_commons", bad)
+    out: list[tuple[int, int]] = []
+    for x in value:
+        if not (isinstance(x, list) and len(x) == 2 and all(isinstance(v, int) and not isinstance(v, bool) for v in x)):
+            raise fail("part_system_commons", bad)
+        first, last = x
+        if not (first <= last and any(a <= first and last <= b for a, b in ranges)):
+            raise fail("part_system_commons", bad)
+        out.append((first, last))
+    return tuple(sorted(out))
 
 
 def common_beyond_profile(settings: MachineSettings, profile: str | None = None) -> Detail | None:

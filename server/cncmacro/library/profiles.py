@@ -85,6 +85,8 @@ def machine_profile(name: str | Dialect | None, settings: MachineSettings | None
     if settings.common is not None:
         ranges = (r for first, last in settings.common for r in _common_ranges(base, first, last))
         changes["common_ranges"] = tuple(ranges)
+    if settings.part_system_commons:
+        changes["part_system_commons"] = settings.part_system_commons
     if settings.program_digits is not None:
         changes["m98_program_digits"] = settings.program_digits
     if settings.programs_on_control:

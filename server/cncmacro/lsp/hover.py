@@ -145,6 +145,9 @@ def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
         else:
             lines.append(t("no_argument", loc))
     elif kind in (describe.COMMON, describe.PERSISTENT):
+        shared = dialect.shared_common(number)
+        if shared is not None:
+            lines += ["", t("part_system_shared" if shared else "part_system_own", loc)]
         places, pending = write_places(ls, number)
         shown = [f"{Path(path).name}:{line + 1}" for path, line in places[:MAX_PLACES]]
         if places or not pending:

@@ -21,6 +21,14 @@ TEXTS: dict[str, tuple[str, str]] = {
     "local": ("Local variable", "局部变量"),
     "common": ("Common variable (cleared at power-off)", "公共变量（断电清除）"),
     "persistent": ("Common variable (kept at power-off)", "公共变量（断电保持）"),
+    "part_system_own": (
+        "Each part system (path) keeps its own (the machine file's part_system_commons)",
+        "每个系统（通道）各有一个（机床设置文件的 part_system_commons）",
+    ),
+    "part_system_shared": (
+        "Shared by every part system (path) of the machine (not in the machine file's part_system_commons)",
+        "机床的各系统（通道）共用（不在机床设置文件的 part_system_commons 之内）",
+    ),
     "system": ("System variable", "系统变量"),
     "null": ("#0: always vacant, read-only", "#0：总是空，只读"),
     "undefined": ("No such variable in this dialect ({alarm})", "该系统中不存在此变量（{alarm}）"),

@@ -16,12 +16,12 @@ from ..dialects.alarms import alarm_words
 from ..planner.alarms import MacroAlarm as MacroAlarm
 
 
-def raiser(number: int, message: str) -> Callable[..., Any]:
+def raiser(number: int, message: str, subject: str | None = None) -> Callable[..., Any]:
     """A closure that raises this alarm whenever it is called: what a block or expression
     compiles to when its text alone decides that it alarms (it may never be reached)."""
 
     def fail(*_: Any) -> Any:
-        raise MacroAlarm(number, message)
+        raise MacroAlarm(number, message, subject)
 
     return fail
 

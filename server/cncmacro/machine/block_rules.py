@@ -29,10 +29,11 @@ from types import EllipsisType
 from ..bilingual import Detail, detail
 from ..dialects.alarms import DECIMAL_POINT, FORMAT, G_ARGUMENT, IMPROPER_G_CODE, NC_AND_MACRO, PROGRAM_NOT_FOUND
 from ..dialects.dialect import Dialect
-from ..syntax.nodes import Block, If, Number, Statement, Word
+from ..syntax.nodes import Block, Else, EndIf, If, Number, Statement, Word
 from .calls import BlockCall, code_value, codes_before_call, g_code_name, recognise_call
 from .words import (
     abbreviation_refused,
+    block_if_refused,
     conditional_m99_refused,
     g_code_known,
     if_block_refused,
@@ -46,8 +47,9 @@ ABBREVIATION = "abbreviation"  # WH for WHILE where the dialect does not read it
 MISSING_THEN = "missing-then"  # IF [..] <statement> where the dialect needs THEN
 CONDITIONAL_M99 = "conditional-m99"  # [cond] M99 P n where the dialect does not read it
 IF_BLOCK = "if-block"  # IF [cond] before NC words or nothing, where the IF governs no block
+BLOCK_IF = "block-if"  # IF [cond] THEN alone, ELSE or ENDIF, where the dialect has no block IF
 # the forms of a macro statement a dialect may lack: raised after the block's other format alarms
-DIALECT_FORMS = (MISSING_THEN, CONDITIONAL_M99, IF_BLOCK)
+DIALECT_FORMS = (MISSING_THEN, CONDITIONAL_M99, IF_BLOCK, BLOCK_IF)
 NC_AND_STATEMENT = "nc-and-macro"  # NC words and a macro statement in one block
 BEFORE_CALL = "before-call"  # words before G65/G66
 O_WITH_CALL = "o-with-call"  # an O word in a G65/G66 block
@@ -96,7 +98,11 @@ def validate_block(
     if block.statements:
         first = block.statements[0]
         # an IF without GOTO, alone in the block: on Haas it governs the rest of the block
-        governing = first if isinstance(first, If) and first.goto is None and len(block.statements) == 1 else None
+        governing = (
+            first
+            if isinstance(first, If) and first.goto is None and not first.opens_block and len(block.statements) == 1
+            else None
+        )
         if words or block.corners:
             if governing is None or (governing.then is not None and not dialect.if_governs_block):
                 out.append(_nc_and_statement(block, dialect))
@@ -109,6 +115,12 @@ def validate_block(
             text = if_block_refused(dialect, False)
             out.append(BlockProblem(IF_BLOCK, FORMAT, text, text, governing.start, governing.end))
             return out
+        if not dialect.block_if:
+            for s in block.statements:
+                word = _block_if_word(s)
+                if word is not None:
+                    text = block_if_refused(dialect, word)
+                    out.append(BlockProblem(BLOCK_IF, FORMAT, text, text, s.start, s.end))
         if not dialect.if_without_then or not dialect.conditional_m99:
             for s in block.statements:
                 if s.__class__ is If and (s.implicit_then or s.m99 is not None):
@@ -127,6 +139,17 @@ def validate_block(
     elif not call.configured:  # a configured code's other words are its arguments
         _refused_words(words, dialect, calls, value, out)
     return out
+
+
+def _block_if_word(s: Statement) -> str | None:
+    """How a refusal names a statement of the block form of IF, or None for another statement."""
+    if isinstance(s, If):
+        return "IF [...] THEN" if s.opens_block else None
+    if isinstance(s, Else):
+        return "ELSE"
+    if isinstance(s, EndIf):
+        return "ENDIF"
+    return None
 
 
 def _nc_and_statement(block: Block, dialect: Dialect) -> BlockProblem:

@@ -30,7 +30,9 @@ from ..syntax.nodes import (
     Assign,
     Block,
     Do,
+    Else,
     End,
+    EndIf,
     Goto,
     If,
     IndirectVar,
@@ -74,6 +76,7 @@ class CompiledFile:
         self.code[n] = _end_of_file
         self.do_end = {p.do_line: p.end_line for p in file.program.loops}
         self.end_do = {p.end_line: p.do_line for p in file.program.loops}
+        self.if_blocks, self.branch_ends, self.crossing = _if_blocks(file.program)
         self._jumps: dict[tuple[int, int], tuple[int, int]] = {}
         self._spans: jumps.LoopSpans | None = None  # made at the first jump that is not cached
         self.values = ExpressionCompiler(machine.kinds, watch=machine.watching, unknowns=machine.kept_unknown)
@@ -88,6 +91,7 @@ class CompiledFile:
         self.code[n] = _end_of_file
         self.do_end = {p.do_line: p.end_line for p in self.file.program.loops}
         self.end_do = {p.end_line: p.do_line for p in self.file.program.loops}
+        self.if_blocks, self.branch_ends, self.crossing = _if_blocks(self.file.program)
         self._jumps.clear()
         self._spans = None
 
@@ -130,6 +134,15 @@ class CompiledFile:
         if hit is None:
             hit = self._jumps[key] = self._find_jump(frame, pc, n)
         target, keep = hit
+        if keep == _INTO_IF:
+            raise MacroAlarm(
+                STATEMENT_FORMAT,
+                detail(
+                    f"{how}{n} jumps into a branch of an IF [...] THEN block from outside it",
+                    f"{how}{n} 从外部转入 IF [...] THEN 块的分支内",
+                ),
+                "jump-into-if",
+            )
         if keep < 0:
             raise MacroAlarm(
                 LOOP_NUMBER,
@@ -156,6 +169,8 @@ class CompiledFile:
             spans = self._spans = jumps.LoopSpans(self.do_end)
         if spans.entered(pc, target) is not None:
             return target, -1
+        if self.machine.dialect.block_if and jumps.branch_entered(self.file.program.if_blocks, pc, target) is not None:
+            return target, _INTO_IF
         return target, spans.kept(pc, target)
 
     def label_in_caller(self, unit: Any, call_line: int, n: int) -> int:
@@ -343,6 +358,8 @@ class CompiledFile:
         if isinstance(s, Assign):
             return self.assign(s, nxt)
         if isinstance(s, If):  # without THEN where THEN is needed: a block rule, raised in _body
+            if s.opens_block:
+                return self.block_if(s, pc, nxt)
             test = self.values.condition(s.condition)
             if s.goto is not None:  # also Haas's [cond] M99 P n (Dialect.conditional_m99)
                 target = self.values.value(s.goto)
@@ -380,7 +397,46 @@ class CompiledFile:
             return self.loop_end(s, pc)
         if isinstance(s, Output):
             return self.output(s, nxt)
+        if isinstance(s, (Else, EndIf)):
+            return self.branch_end(s, pc, nxt)
         return raiser(STATEMENT_FORMAT, detail("unknown statement", "未知的语句"))
+
+    def block_if(self, s: If, pc: int, nxt: int) -> Runner:
+        """``IF [cond] THEN`` alone on its line (``Dialect.block_if``): when the condition holds,
+        the blocks after it run; when it does not, the run goes on after its ``ELSE``, or after its
+        ``ENDIF`` where it has none (docs/semantics.md §4, "Block IF")."""
+        pair = self.if_blocks.get(pc)
+        if pair is None:
+            return raiser(
+                STATEMENT_FORMAT, detail("IF [...] THEN has no ENDIF", "IF [...] THEN 没有对应的 ENDIF"), "if-mismatch"
+            )
+        if pair[2] in self.crossing or pair[1] in self.crossing:
+            return _crossing()
+        test = self.values.condition(s.condition)
+        other = self.next_line(pair[1] if pair[1] is not None else pair[2])
+
+        def if_block(m: Machine, pc: int) -> int:
+            return nxt if test(m) else other
+
+        return if_block
+
+    def branch_end(self, s: Else | EndIf, pc: int, nxt: int) -> Runner:
+        """``ELSE`` reached from the branch before it goes on after its ``ENDIF``; ``ENDIF`` does
+        nothing. One without its ``IF [cond] THEN`` stops the run."""
+        if pc in self.crossing:
+            return _crossing()
+        word = "ELSE" if isinstance(s, Else) else "ENDIF"
+        endif = self.branch_ends.get(pc)
+        if endif is None:
+            return raiser(
+                STATEMENT_FORMAT,
+                detail(f"{word} has no IF [...] THEN before it", f"{word} 之前没有对应的 IF [...] THEN"),
+                "if-mismatch",
+            )
+        if isinstance(s, EndIf):
+            return lambda m, pc: nxt
+        after = self.next_line(endif)
+        return lambda m, pc: after
 
     def governing_if(self, s: If, block: Block, pc: int, nxt: int) -> Runner:
         """Haas's IF before NC words (``IF [#1 NE #0] G01 X#24``, ``IF [#1 GE 180] #101=0 M99``):
@@ -583,6 +639,28 @@ class CompiledFile:
 
     def nc_block(self, block: Block, pc: int, nxt: int) -> Runner:
         return nc_blocks.compile_nc_block(self, block, pc, nxt)
+
+
+# ``_find_jump``'s count of loops kept for a jump into a branch of a block IF from outside it
+_INTO_IF = -2
+
+
+def _if_blocks(program: Any) -> tuple[dict[int, tuple[int, int | None, int]], dict[int, int], frozenset[int]]:
+    """The block IFs of ``program`` by IF line, (IF line, ELSE line or None, ENDIF line), the
+    ENDIF line of each paired ELSE and ENDIF line, and the ELSE and ENDIF lines that cross a loop."""
+    heads = {f.if_line: (f.if_line, f.else_line, f.endif_line) for f in program.if_blocks}
+    ends = {f.endif_line: f.endif_line for f in program.if_blocks}
+    ends.update({f.else_line: f.endif_line for f in program.if_blocks if f.else_line is not None})
+    return heads, ends, frozenset(p.line for p in program.if_problems if p.kind == "crossing")
+
+
+def _crossing() -> Runner:
+    """The runner of a block IF marker whose branch crosses a WHILE/DO loop."""
+    return raiser(
+        STATEMENT_FORMAT,
+        detail("a block IF [...] THEN and a WHILE/DO loop cross", "块形式 IF [...] THEN 与 WHILE/DO 循环交叉"),
+        "if-mismatch",
+    )
 
 
 def _end_of_file(m: Machine, pc: int) -> int:

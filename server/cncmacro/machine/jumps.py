@@ -14,7 +14,8 @@ through ``LoopSpans``.
 from __future__ import annotations
 
 from bisect import bisect_left, bisect_right
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
+from typing import Protocol
 
 
 def goto_line(label_lines: list[int], from_line: int) -> int | None:
@@ -36,6 +37,25 @@ def return_line(label_lines: list[int], call_line: int) -> int | None:
 def first_line(label_lines: list[int]) -> int | None:
     """The line ``M98 Q n`` starts at: the first Nn of the program."""
     return label_lines[0] if label_lines else None
+
+
+class _Branches(Protocol):
+    """A block IF as ``syntax.program.IfBlock`` gives it: its branches as (marker line, last line)."""
+
+    @property
+    def spans(self) -> tuple[tuple[int, int], ...]: ...
+
+
+def branch_entered(blocks: Iterable[_Branches], from_line: int, target: int) -> tuple[int, int] | None:
+    """The branch of a block IF (its marker line and last line) that a jump from ``from_line``
+    to ``target`` enters from outside, or None. A branch holds the lines after its IF (or ELSE)
+    up to its ELSE (or ENDIF): a jump may leave one, as it leaves a loop, and may stay inside
+    one, but may not land in one it is not in (docs/semantics.md §4, "Block IF")."""
+    for block in blocks:
+        for first, last in block.spans:
+            if first < target <= last and not first < from_line <= last:
+                return first, last
+    return None
 
 
 class LoopSpans:

@@ -141,6 +141,26 @@ def if_block_refused(dialect: Dialect, words: bool) -> Detail:
     )
 
 
+# the controls that read the block form of IF, named where another control refuses it, and those
+# of them that have no profile yet, which a profile suggestion names beside the one it offers
+BLOCK_IF_CONTROLS = detail("Mitsubishi M70/M80 and Mazak controls", "三菱 M70/M80 与马扎克系统")
+BLOCK_IF_WITHOUT_PROFILE = detail("Mazak", "马扎克")
+
+
+def block_if_refused(dialect: Dialect, word: str) -> Detail:
+    """What to say of the block form of IF (``word``: ``IF [...] THEN`` alone, ``ELSE`` or ``ENDIF``)
+    on a dialect without it (``Dialect.block_if`` off)."""
+    alarm = dialect.alarm_said(FORMAT)
+    controls = BLOCK_IF_CONTROLS
+    return detail(
+        f"{word}: the block form IF [...] THEN / ELSE / ENDIF is not a macro statement of {dialect.title}, which "
+        f"stops at this block with {alarm} ({controls} run it); here write IF [reverse condition] GOTO n "
+        "around the blocks",
+        f"{word}：块形式 IF [...] THEN / ELSE / ENDIF 不是 {dialect.title} 的宏语句，执行到此程序段时{alarm.zh}"
+        f"（{controls.zh}可以执行）；在此系统上请用 IF [相反条件] GOTO n 跳过这些程序段",
+    )
+
+
 def conditional_m99_refused(dialect: Dialect) -> Detail:
     """What to say of Haas's conditional jump ``[cond] M99 P n`` on a dialect that does not read it."""
     alarm = dialect.alarm_said(FORMAT)

@@ -19,7 +19,9 @@ from .nodes import (
     Comment,
     CornerWord,
     Do,
+    Else,
     End,
+    EndIf,
     If,
     Item,
     Number,
@@ -90,7 +92,10 @@ def assemble(items: Sequence[Item], prep: Prepared) -> Block:
             words.pop()
     stmts = tuple(statements)
     structural = (
-        label is not None or program is not None or prep.tape or any(isinstance(s, (While, Do, End)) for s in stmts)
+        label is not None
+        or program is not None
+        or prep.tape
+        or any(isinstance(s, (While, Do, End, Else, EndIf)) or (s.__class__ is If and s.opens_block) for s in stmts)
     )
     return Block(
         label=label,

@@ -7,7 +7,7 @@ names (``P[cut]``) keep their case and text; a keyword written shortened (``WH``
 shortened; the indentation before the block, a block delete ``/n`` and whatever follows an
 end-of-block ``;`` stay as written. ``spaced`` puts one space between the words of a block (the
 NC words, the label, each macro statement, and around the macro keywords ``IF THEN GOTO WHILE DO
-END`` and the word operators ``EQ``…``AND``…``MOD``), nothing inside a word or expression;
+END ELSE ENDIF`` and the word operators ``EQ``…``AND``…``MOD``), nothing inside a word or expression;
 ``compact`` puts none. Each formatted line is parsed again and must give the same block, columns
 aside, or it is left as it was; a line with a syntax error, a ``%`` line and the lines after the
 tape's end are never touched. Formatting formatted text changes nothing.
@@ -32,7 +32,7 @@ COMPACT = "compact"
 SPACINGS = (SPACED, COMPACT)
 ALIGN_LIMIT = 48  # comments are aligned at most at this column; a longer block keeps one space
 
-_KEYWORDS = frozenset({"IF", "THEN", "GOTO", "WHILE", "DO", "END"})
+_KEYWORDS = frozenset({"IF", "THEN", "GOTO", "WHILE", "DO", "END", "ELSE", "ENDIF"})
 _OPERATORS = frozenset({"RELOP", "ADDOP", "MULOP"})
 _VERBATIM = frozenset({"BRACKET_NAME", "DPRNT_ARGS"})
 _DELETE = re.compile(r"[ \t]*/[ \t]*(?:[1-9](?![0-9.]))?")

@@ -26,7 +26,9 @@ from .nodes import (
     Bracket,
     CornerWord,
     Do,
+    Else,
     End,
+    EndIf,
     Expr,
     FunctionCall,
     Goto,
@@ -146,6 +148,11 @@ class _Builder(Transformer[Token, Items]):
 
     # ---- items
     def start(self, children: _Children) -> Items:
+        for k, item in enumerate(children[:-1]):
+            if isinstance(item, If) and item.opens_block:  # IF [..] THEN GOTO n: not a statement after THEN
+                after = children[k + 1]
+                if not isinstance(after, Word | CornerWord):  # NC words after it are judged later (nc-and-macro)
+                    raise BlockError(_AFTER_THEN, after.start, after.end)
         return Items(children, self.abbreviations)
 
     def word(self, c: _Children) -> Word:
@@ -202,13 +209,15 @@ class _Builder(Transformer[Token, Items]):
         if len(c) == 2:  # IF [cond] alone: it governs the rest of the block (words) or nothing
             _check_condition(cond)
             return If(cond, None, None, kw.start_pos, cond.end)
-        if len(c) == 3:  # IF [cond] statement: THEN left out
+        if len(c) == 3 and not isinstance(c[2], Token):  # IF [cond] statement: THEN left out
             then = c[2]
             _check_condition(cond)
             return If(cond, None, then, kw.start_pos, then.end, True)
         kw2: _Tok = c[2]
         _check_condition(cond)
         self._word(kw2)
+        if len(c) == 3:  # IF [cond] THEN alone: the block form, up to ELSE or ENDIF
+            return If(cond, None, None, kw.start_pos, kw2.end_pos, opens_block=True)
         if kw2.type == "GOTO":
             goto: Expr = c[3]
             return If(cond, goto, None, kw.start_pos, goto.end)
@@ -250,6 +259,14 @@ class _Builder(Transformer[Token, Items]):
         kw, num = c
         self._word(kw)
         return End(_number(num), kw.start_pos, num.end_pos)
+
+    def else_stmt(self, c: _Children) -> Else:
+        kw: _Tok = c[0]
+        return Else(kw.start_pos, kw.end_pos)
+
+    def endif_stmt(self, c: _Children) -> EndIf:
+        kw: _Tok = c[0]
+        return EndIf(kw.start_pos, kw.end_pos)
 
     def goto_stmt(self, c: _Children) -> Goto:
         kw: _Tok
@@ -345,6 +362,12 @@ _BRACKET_STARTS_BLOCK = detail(
     "write IF [cond] GOTO n or IF [cond] THEN <statement>",
     "方括号中的条件只能在条件跳转 [条件] M99 P n（哈斯）中位于程序段开头；"
     "请写作 IF [条件] GOTO n 或 IF [条件] THEN <语句>",
+)
+_AFTER_THEN = detail(
+    "after THEN comes one assignment or output statement (IF [cond] THEN #1=..), or nothing: the block form "
+    "IF [cond] THEN, closed by ENDIF on a later line",
+    "THEN 之后只能是一条赋值或输出语句（IF [条件] THEN #1=..），或者什么都不写：块形式 IF [条件] THEN，"
+    "在后面的程序段以 ENDIF 结束",
 )
 _M99_NEEDS_P = detail(
     "the conditional M99 needs P n after it: the sequence number to jump to ([cond] M99 P n)",

@@ -173,7 +173,9 @@ class If:
     ``M99`` and ``P`` words of Haas's conditional jump ``[cond] M99 P n``, which is
     ``IF [cond] GOTO n`` written another way: ``goto`` is then the value of that P. With neither
     ``goto`` nor ``then`` the IF governs the rest of its block, the NC words after it or nothing
-    (Haas: ``IF [#1 NE #0] G01 X#24``, ``Dialect.if_governs_block``)."""
+    (Haas: ``IF [#1 NE #0] G01 X#24``, ``Dialect.if_governs_block``). ``opens_block`` is True for
+    ``IF [cond] THEN`` with nothing after THEN: the block form, which runs the blocks up to its
+    ``ELSE`` or ``ENDIF`` when the condition holds (Mitsubishi, ``Dialect.block_if``)."""
 
     condition: Bracket
     goto: Expr | None
@@ -182,6 +184,7 @@ class If:
     end: int
     implicit_then: bool = False
     m99: tuple[Word, Word] | None = None
+    opens_block: bool = False
 
 
 @dataclass(slots=True)
@@ -208,6 +211,22 @@ class End:
     """``END m``."""
 
     loop: Number
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class Else:
+    """``ELSE`` of a block ``IF [cond] THEN``: the blocks after it run when the condition did not hold."""
+
+    start: int
+    end: int
+
+
+@dataclass(slots=True)
+class EndIf:
+    """``ENDIF``: the end of a block ``IF [cond] THEN``."""
+
     start: int
     end: int
 
@@ -243,7 +262,7 @@ class Output:
     end: int
 
 
-Statement = Assign | If | While | Do | End | Goto | Output
+Statement = Assign | If | While | Do | End | Else | EndIf | Goto | Output
 # What a reader takes from a line, in order: NC words, comma words and statements.
 Item = Word | CornerWord | Statement
 
@@ -449,7 +468,7 @@ class Block:
             return None
         marker = self.loop_marker()
         loop = (marker[0], marker[1].value) if marker else None
-        return (self.label, self.program, self.title, self.tape, loop)
+        return (self.label, self.program, self.title, self.tape, loop, self.branch_marker())
 
     def loop_marker(self) -> tuple[str, Number] | None:
         """``("DO", m)`` for a WHILE..DO or DO block, ``("END", m)`` for END, else None."""
@@ -458,4 +477,16 @@ class Block:
                 return ("DO", s.loop)
             if isinstance(s, End):
                 return ("END", s.loop)
+        return None
+
+    def branch_marker(self) -> str | None:
+        """``"IF"`` for a block ``IF [cond] THEN`` (nothing after THEN), ``"ELSE"``, ``"ENDIF"``,
+        else None: the markers of the block form of IF (program.py pairs them)."""
+        for s in self.statements:
+            if s.__class__ is If and s.opens_block:
+                return "IF"
+            if s.__class__ is Else:
+                return "ELSE"
+            if s.__class__ is EndIf:
+                return "ENDIF"
         return None

@@ -1,7 +1,9 @@
-"""The cross-line structure of a document: O programs, N labels, DO/END pairs and the tape's end.
+"""The cross-line structure of a document: O programs, N labels, DO/END pairs, the blocks of a
+block IF (``IF [cond] THEN`` .. ``ELSE`` .. ``ENDIF``) and the tape's end.
 
 A ``Program`` is built from the blocks of a whole file by one linear pass that visits only
-the blocks marked ``structural`` (a label, an O header, a ``%`` mark, a WHILE/DO/END), so that
+the blocks marked ``structural`` (a label, an O header, a ``%`` mark, a WHILE/DO/END, a block
+IF's IF/ELSE/ENDIF), so that
 rebuilding it after an edit costs time in proportion to those blocks, not to the file.
 The pass finds facts; judging them (a duplicate label, a DO without END) is the analysis
 layer's job.
@@ -23,7 +25,7 @@ holds the ``%`` that starts the tape.
 from __future__ import annotations
 
 from bisect import bisect_left, bisect_right, insort
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from itertools import compress, islice
 
 from .nodes import Block
@@ -47,6 +49,37 @@ class LoopProblem:
     kind: str
     line: int
     number: int
+    other_line: int | None = None
+
+
+@dataclass(slots=True)
+class IfBlock:
+    """A block ``IF [cond] THEN`` line, its ``ELSE`` line (None without one) and the ``ENDIF``
+    line that closes it. Block IFs nest; they pair within one O program, apart from DO loops."""
+
+    if_line: int
+    else_line: int | None
+    endif_line: int
+
+    @property
+    def spans(self) -> tuple[tuple[int, int], ...]:
+        """The branches as (first marker line, last line it holds): the THEN branch from the IF
+        up to its ELSE (or ENDIF), and the ELSE branch from the ELSE up to the ENDIF."""
+        if self.else_line is None:
+            return ((self.if_line, self.endif_line),)
+        return ((self.if_line, self.else_line), (self.else_line, self.endif_line))
+
+
+@dataclass(slots=True)
+class IfProblem:
+    """A block IF marker that does not pair: ``kind`` is ``if-without-endif``,
+    ``else-without-if``, ``endif-without-if``, ``second-else`` (an ELSE after the ELSE of its IF,
+    whose line is ``other_line``) or ``crossing`` (an ELSE or ENDIF reached while a loop opened
+    inside the branch it ends is still open, or after a loop that was open at its IF has ended:
+    a block IF and a loop may not cross; ``other_line`` is the loop's DO line when it is known)."""
+
+    kind: str
+    line: int
     other_line: int | None = None
 
 
@@ -84,8 +117,10 @@ class Program:
     loops: list[LoopPair]
     loop_problems: list[LoopProblem]
     tape_marks: list[int]
-    markers: list[int]  # lines with an O header, a '%' or a loop marker, in order
+    markers: list[int]  # lines with an O header, a '%', a loop marker or a block IF marker, in order
     tape_end: int | None = None  # the line of the closing '%': the lines after it are not read
+    if_blocks: list[IfBlock] = field(default_factory=list)
+    if_problems: list[IfProblem] = field(default_factory=list)
 
     @property
     def read_end(self) -> int:
@@ -114,11 +149,19 @@ class Program:
                 p.do_line += delta
             if p.end_line >= at:
                 p.end_line += delta
-        for q in self.loop_problems:
+        problems: list[LoopProblem | IfProblem] = [*self.loop_problems, *self.if_problems]
+        for q in problems:
             if q.line >= at:
                 q.line += delta
             if q.other_line is not None and q.other_line >= at:
                 q.other_line += delta
+        for f in self.if_blocks:
+            if f.if_line >= at:
+                f.if_line += delta
+            if f.else_line is not None and f.else_line >= at:
+                f.else_line += delta
+            if f.endif_line >= at:
+                f.endif_line += delta
         self.tape_marks = [x + delta if x >= at else x for x in self.tape_marks]
         if self.tape_end is not None and self.tape_end >= at:
             self.tape_end += delta
@@ -167,7 +210,11 @@ class Program:
 
 
 def _is_marker(b: Block) -> bool:
-    return b.program is not None or b.tape or (bool(b.statements) and b.loop_marker() is not None)
+    return (
+        b.program is not None
+        or b.tape
+        or (bool(b.statements) and (b.loop_marker() is not None or b.branch_marker() is not None))
+    )
 
 
 def build_program(blocks: list[Block], structural: list[bool] | None = None) -> Program:
@@ -250,6 +297,9 @@ def _derive_from_markers(program: Program) -> None:
     problems: list[LoopProblem] = []
     tape_marks: list[int] = []
     open_loops: list[tuple[int, int]] = []  # (number, DO line)
+    if_blocks: list[IfBlock] = []
+    if_problems: list[IfProblem] = []
+    open_ifs: list[list[int | None]] = []  # [IF line, ELSE line or None, loops open at the IF]
     numbers: set[int] = set()
     unit = units[0]
     tape_end = None
@@ -263,6 +313,7 @@ def _derive_from_markers(program: Program) -> None:
                 break
         if b.program is not None:
             _close_unit(open_loops, problems)
+            _close_ifs(open_ifs, if_problems)
             if unit.start == i:  # the header is the file's first line: replace the implicit unit
                 units.pop()
             else:
@@ -278,10 +329,16 @@ def _derive_from_markers(program: Program) -> None:
                 open_loops.append((number, i))
             else:
                 _close_loop(number, i, open_loops, loops, problems)
+        branch = b.branch_marker() if b.statements else None
+        if branch is not None:
+            _branch(branch, i, open_ifs, if_blocks, if_problems, open_loops)
     _close_unit(open_loops, problems)
+    _close_ifs(open_ifs, if_problems)
     program.units = units
     program.loops = loops
     program.loop_problems = problems
+    program.if_blocks = sorted(if_blocks, key=lambda f: f.if_line)
+    program.if_problems = if_problems
     program.tape_marks = tape_marks
     program.tape_end = tape_end
 
@@ -319,6 +376,44 @@ def _close_loop(
             loops.append(LoopPair(number, open_loops.pop(k)[1], line))
             return
     problems.append(LoopProblem("end-without-do", line, number))
+
+
+def _branch(
+    kind: str,
+    line: int,
+    open_ifs: list[list[int | None]],
+    blocks: list[IfBlock],
+    problems: list[IfProblem],
+    open_loops: list[tuple[int, int]],
+) -> None:
+    """One block IF marker: an IF opens a block, an ELSE marks the innermost open one's second
+    branch, an ENDIF closes it. A branch ends with as many loops open as at its IF, or it crosses one."""
+    if kind == "IF":
+        open_ifs.append([line, None, len(open_loops)])
+        return
+    if not open_ifs:
+        problems.append(IfProblem("else-without-if" if kind == "ELSE" else "endif-without-if", line))
+        return
+    top = open_ifs[-1]
+    if top[2] != len(open_loops):
+        inside = open_loops[-1][1] if top[2] is not None and len(open_loops) > top[2] else None
+        problems.append(IfProblem("crossing", line, inside))
+    if kind == "ELSE":
+        if top[1] is not None:
+            problems.append(IfProblem("second-else", line, top[1]))
+        else:
+            top[1] = line
+        return
+    first, other, _ = open_ifs.pop()
+    assert first is not None
+    blocks.append(IfBlock(first, other, line))
+
+
+def _close_ifs(open_ifs: list[list[int | None]], problems: list[IfProblem]) -> None:
+    for first, *_ in open_ifs:
+        assert first is not None
+        problems.append(IfProblem("if-without-endif", first))
+    open_ifs.clear()
 
 
 def _close_unit(open_loops: list[tuple[int, int]], problems: list[LoopProblem]) -> None:

@@ -3,7 +3,8 @@
 A literal ``GOTO n`` (also ``IF..GOTO`` and gsk980tdi ``G65 H80–H86 P n``) looks for ``Nn`` in its
 own O program, forward from the jump and then from the program's start, as the interpreter's
 ``CompiledFile.jump`` does: no such label is ``undefined-label`` (alarm 128), a label inside a
-loop that the jump is not in is ``jump-into-loop``. ``M98 Q n`` looks in the called program, a
+loop that the jump is not in is ``jump-into-loop``, and one inside a branch of a block IF that the
+jump is not in is ``jump-into-if``. ``M98 Q n`` looks in the called program, a
 local subprogram call (Haas ``M97 P n``) in its own.
 ``M99 P n`` of a program called from this file looks in each caller; in a file's first program,
 when nothing in the file calls it and other programs follow it (the main program), in itself;
@@ -17,8 +18,8 @@ from bisect import bisect_right
 
 from ...bilingual import pick
 from ...dialects import Dialect
-from ...dialects.alarms import SEQUENCE_NUMBER
-from ...machine.jumps import LoopSpans, goto_line
+from ...dialects.alarms import SEQUENCE_NUMBER, STATEMENT_FORMAT
+from ...machine.jumps import LoopSpans, branch_entered, goto_line
 from ...syntax.program import LoopPair, Program, ProgramUnit
 from ..diagnostics import Diagnostic, Related, diagnostic
 from ..indexes.call_sites import CallSite
@@ -104,6 +105,22 @@ class LabelChecker:
                            (Related(self.file, target, *_label_span(self.program, target),
                                     pick(loc, f"N{label}, inside the loop", f"N{label}，位于循环内")),
                             Related(self.file, loop.do_line, *span, pick(loc, "the loop starts here", "循环从此开始"))))
+            )  # fmt: skip
+            return
+        branch = branch_entered(self.program.if_blocks, line, target) if self.dialect.block_if else None
+        if branch is not None:
+            first, last = branch
+            alarm = self.dialect.alarm_said(STATEMENT_FORMAT)
+            self.out.append(
+                diagnostic(self.file, line, start, line, max(end, start + 1), "jump-into-if",
+                           pick(loc, f"{how}{label} jumps into a branch of the IF [...] THEN block (lines {first + 1}–"
+                                     f"{last + 1}) from outside it ({alarm})",
+                                f"{how}{label} 从外部跳入 IF [...] THEN 块的分支（第 {first + 1}～{last + 1} 行）"
+                                f"（{alarm.zh}）"),
+                           (Related(self.file, target, *_label_span(self.program, target),
+                                    pick(loc, f"N{label}, inside the branch", f"N{label}，位于分支内")),
+                            Related(self.file, first, *_label_span(self.program, first),
+                                    pick(loc, "the branch starts here", "分支从此开始"))))
             )  # fmt: skip
 
     def _missing(self, line: int, start: int, end: int, label: int, unit: ProgramUnit, message: str,

@@ -31,6 +31,7 @@ RULE_CODES = {
     rules.MISSING_THEN: "dialect-feature",
     rules.CONDITIONAL_M99: "dialect-feature",
     rules.IF_BLOCK: "dialect-feature",
+    rules.BLOCK_IF: "dialect-feature",
     rules.NC_AND_STATEMENT: "nc-and-macro",
     rules.BEFORE_CALL: "g65-nc-words",
     rules.O_WITH_CALL: "g65-nc-words",

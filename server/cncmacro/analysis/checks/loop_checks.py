@@ -1,19 +1,24 @@
-"""Loop checks across lines (docs/semantics.md §4): ``loop-number`` and ``loop-mismatch``.
+"""Loop and block IF checks across lines (docs/semantics.md §4): ``loop-number``,
+``loop-mismatch`` and ``if-mismatch``.
 
 The pairs and the unpaired markers come from ``syntax/program.py``. A DO or END number must be
 a whole 1, 2 or 3, and loops may nest at most 3 deep (``loop-number``, alarm 126, as the
 interpreter's ``loop_number`` and ``MAX_LOOP_DEPTH`` decide). A DO without its END (124), an
 END without a DO (126) and crossing loops (126) are ``loop-mismatch``; a marker whose number is
 already wrong is reported once, as ``loop-number``, because that is the alarm the control gives.
+On a control with the block form of IF (``Dialect.block_if``), an ``IF [..] THEN`` without its
+ENDIF, an ELSE or ENDIF without its IF, a second ELSE and a branch that crosses a loop are
+``if-mismatch`` (the run stops there with the format alarm); elsewhere those blocks are already
+``dialect-feature`` errors.
 """
 
 from __future__ import annotations
 
 from ...bilingual import pick
-from ...dialects.alarms import LOOP_NUMBER, MISSING_END
+from ...dialects.alarms import LOOP_NUMBER, MISSING_END, STATEMENT_FORMAT
 from ...dialects.dialect import Dialect
 from ...machine.blocks import MAX_LOOP_DEPTH
-from ...syntax.nodes import Block, Do, End, Number, While
+from ...syntax.nodes import Block, Do, Else, End, EndIf, If, Number, While
 from ...syntax.program import Program
 from ..diagnostics import Diagnostic, Related, diagnostic
 
@@ -28,6 +33,51 @@ def _marker_span(block: Block) -> tuple[int, int]:
         if isinstance(s, (While, Do, End)):
             return s.start, s.end
     return 0, 1
+
+
+def _branch_span(block: Block) -> tuple[int, int]:
+    for s in block.statements:
+        if isinstance(s, (If, Else, EndIf)):
+            return s.start, s.end
+    return 0, 1
+
+
+def if_diagnostics(program: Program, file: str, locale: str, dialect: Dialect) -> list[Diagnostic]:
+    """Every ``if-mismatch`` finding of ``program`` on a dialect with the block form of IF."""
+    if not dialect.block_if:
+        return []
+    alarm = dialect.alarm_said(STATEMENT_FORMAT)
+    out: list[Diagnostic] = []
+    for problem in program.if_problems:
+        line = problem.line
+        if program.after_tape(line):
+            continue
+        start, end = _branch_span(program.blocks[line])
+        related: tuple[Related, ...] = ()
+        if problem.kind == "if-without-endif":
+            message = pick(locale, f"IF [...] THEN has no ENDIF in its program ({alarm})",
+                           f"IF [...] THEN 在其程序中没有对应的 ENDIF（{alarm.zh}）")  # fmt: skip
+        elif problem.kind == "second-else":
+            other = problem.other_line if problem.other_line is not None else line
+            message = pick(locale, f"a second ELSE for the IF [...] THEN whose ELSE is on line {other + 1} ({alarm})",
+                           f"同一 IF [...] THEN 的第二个 ELSE（第一个在第 {other + 1} 行）（{alarm.zh}）")  # fmt: skip
+            related = (Related(file, other, *_branch_span(program.blocks[other]), pick(locale, "the first ELSE",
+                                                                                       "第一个 ELSE")),)  # fmt: skip
+        elif problem.kind == "crossing":
+            word = "ELSE" if program.blocks[line].branch_marker() == "ELSE" else "ENDIF"
+            message = pick(locale, f"{word} ends a branch of its IF [...] THEN across a WHILE/DO loop: a block IF "
+                                   f"and a loop may not cross ({alarm})",
+                           f"{word} 结束 IF [...] THEN 的分支时与 WHILE/DO 循环交叉：块形式 IF 与循环不能交叉"
+                           f"（{alarm.zh}）")  # fmt: skip
+            if problem.other_line is not None:
+                related = (Related(file, problem.other_line, *_marker_span(program.blocks[problem.other_line]),
+                                   pick(locale, "the loop", "循环")),)  # fmt: skip
+        else:
+            word = "ELSE" if problem.kind == "else-without-if" else "ENDIF"
+            message = pick(locale, f"{word} has no IF [...] THEN before it ({alarm})",
+                           f"{word} 之前没有对应的 IF [...] THEN（{alarm.zh}）")  # fmt: skip
+        out.append(diagnostic(file, line, start, line, end, "if-mismatch", message, related))
+    return out
 
 
 def loop_diagnostics(program: Program, file: str, locale: str, dialect: Dialect) -> list[Diagnostic]:

@@ -14,6 +14,10 @@ the program has, is the other profile's signature and gets the same suggestion. 
 ``#10000`` commons are no signature: on a FANUC control the same numbers are tool offsets, which
 FANUC tool-wear programs write (docs/profiles.md).
 
+The block form of IF (``IF [cond] THEN`` / ``ELSE`` / ``ENDIF``) under a profile without it is such
+a feature: the suggestion names the first profile that reads it (``mitsubishi-m70``) and says that
+Mazak controls, which have no profile yet, read it too.
+
 A third sign is a program number written with more digits than ``M98 P`` names a program with
 under the profile in force: ``O00012345`` is the 8-digit program numbering of a 30i (or of a
 0i-F with that option), where ``M98 P00012346`` calls O12346 and only ``L`` counts, while a 0i
@@ -38,6 +42,7 @@ from ...dialects import DIALECTS, Dialect
 from ...dialects.registry import lathe_forms
 from ...library.machine_file import MachineSettings
 from ...library.profiles import machine_profile
+from ...machine.words import BLOCK_IF_WITHOUT_PROFILE
 from ...syntax.program import Program
 from ..diagnostics import Diagnostic, diagnostic
 from .lathe_signs import LatheEvidence, lathe_evidence
@@ -197,13 +202,16 @@ def suggestion(
     where = ", ".join(str(n) for n in lines[:5]) + (" …" if len(lines) > 5 else "")
     where_zh = "、".join(str(n) for n in lines[:5]) + ("……" if len(lines) > 5 else "")
     word = "line" if len(lines) == 1 else "lines"
+    block_if = other.block_if and any(program.blocks[n - 1].branch_marker() for n in lines)
+    also = BLOCK_IF_WITHOUT_PROFILE
     message = pick(
         locale,
         f"This file uses what {other.title} has and {dialect.title} lacks ({word} {where}). If it was written for "
         f'that control, add (cncmacro: dialect={other.name}) to its first lines, or set base = "{other.name}" '
-        "in .cncmacro.toml",
+        "in .cncmacro.toml" + (f"; {also} controls also read IF..THEN / ELSE / ENDIF blocks" if block_if else ""),
         f"此文件用到了 {other.title} 才有而 {dialect.title} 没有的功能（第 {where_zh} 行）。若程序是为该系统编写的，"
-        f'请在文件开头加上 (cncmacro: dialect={other.name})，或在 .cncmacro.toml 中设定 base = "{other.name}"',
+        f'请在文件开头加上 (cncmacro: dialect={other.name})，或在 .cncmacro.toml 中设定 base = "{other.name}"'
+        + (f"；{also.zh}系统也能执行 IF..THEN / ELSE / ENDIF 块" if block_if else ""),
     )
     return diagnostic(file, *at, CODE, message)
 

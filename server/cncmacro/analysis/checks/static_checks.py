@@ -29,7 +29,7 @@ from .corner_checks import check_corners
 from .label_checks import LabelChecker
 from .lathe_cycle_checks import lathe_cycle_diagnostics
 from .line_facts import LineContext, LineFacts
-from .loop_checks import loop_diagnostics
+from .loop_checks import if_diagnostics, loop_diagnostics
 from .statement_checks import check_abbreviations, check_statements
 from .tape_checks import tape_diagnostics
 from .unit_checks import duplicate_program_diagnostics
@@ -140,6 +140,7 @@ def cross_line_diagnostics(
     try:
         out = duplicate_program_diagnostics(program, file, locale, dialect)
         out.extend(loop_diagnostics(program, file, locale, dialect))
+        out.extend(if_diagnostics(program, file, locale, dialect))
         out.extend(tape_diagnostics(program, file, locale))
         finder = ProgramFinder(program, file, dialect, library)
         out.extend(LabelChecker(program, file, finder, locale, dialect).run(collected))

@@ -341,7 +341,9 @@ def add_sequence_numbers(
 ) -> SequencePlan:
     """Give each block on ``lines`` that runs and has no sequence number one: the next multiple
     of ``step`` after the label before it in its program that no label or jump there uses.
-    Labels already written stay, so no jump changes where it lands."""
+    Labels already written stay, so no jump changes where it lands. A block IF's ``ELSE`` and
+    ``ENDIF`` get none: they mark where a branch ends, and a label there would be a jump target
+    inside the branch (docs/editor.md "Sequence numbers")."""
     if step < 1:
         return SequencePlan(error=pick(locale, "the step must be 1 or more", "步长必须不小于 1"))
     plan = _Plan(program, dialect, lines, locale, calls, outside)
@@ -349,7 +351,7 @@ def add_sequence_numbers(
     bare = [
         i for i in plan.lines
         if blocks[i].label is None and not passed_over(blocks[i], False) and not _has_errors(blocks[i])
-        and blocks[i].program is None
+        and blocks[i].program is None and blocks[i].branch_marker() not in ("ELSE", "ENDIF")
     ]  # fmt: skip
     refused, reached = _refused(plan, bare, keep_computed, "these new numbers could create",
                                 "新加的顺序号可能产生")  # fmt: skip

@@ -1,0 +1,16 @@
+O1000 (BLOCK IF)
+#1=3
+IF [#1 GT 5] THEN
+  #2=10
+  G01 X10. F100
+ELSE
+  #2=20
+  G01 X20. F100
+ENDIF
+#3=#2+1
+IF [#3 EQ 21] THEN
+  #4=1
+ELSE
+  #4=2
+ENDIF
+M30
