@@ -116,8 +116,9 @@ def check_paths(
                 for line in lines:
                     said(line)
     by_machine: dict[Path | None, list[Found]] = {}
+    nearest = _NearestMachineFile()
     for path, searched in found_paths.items():
-        by_machine.setdefault(Path(machine) if machine else find_machine_file(path), []).append((path, searched))
+        by_machine.setdefault(Path(machine) if machine else nearest(path), []).append((path, searched))
     checks: list[tuple[MachineWork, list[Found]]] = []
     for machine_file, files in by_machine.items():  # each file with the machine settings nearest to it
         try:
@@ -135,16 +136,7 @@ def check_paths(
     try:
         with Workers([work for work, _ in checks], jobs) as workers:
             for at, (_, files) in enumerate(checks):
-                # files that no call connects are checked apart, and their findings printed at once
-                groups = _call_groups(workers, at, files, unreadable, said)
-                said_once: set[str] = set()
-                for results in workers.map(MachineWork.check, at, _batches(groups)):
-                    for result in results:
-                        for line in result.said:
-                            said(line)
-                        for record in result.logged:
-                            _log_again(record, said_once)
-                        report.add(result.findings)
+                _report_groups(workers, at, files, report, unreadable, said)
     except WorkerLost as e:
         print(pick(locale, f"cncmacro check: a checking process ended before it was done ({e}); check with fewer "
                    "--jobs, or with --jobs 1", f"cncmacro check：一个检查进程未完成就结束了（{e}）；请减少 --jobs，"
@@ -158,6 +150,21 @@ def check_paths(
 
 KEYS_BATCH = 64  # files a process looks at for their names and calls at a time
 CHECK_BATCH = 16  # files (whole call groups, at least one) a process checks at a time
+
+
+def _report_groups(workers: Workers, machine: int, files: list[Found], report: FindingsReport,
+                   unreadable: set[Path], said: Callable[[str], None]) -> None:  # fmt: skip
+    """Check the files of one machine: those that no call connects apart, each group's findings
+    written as soon as it and the groups before it are done."""
+    groups = _call_groups(workers, machine, files, unreadable, said)
+    said_once: set[str] = set()
+    for results in workers.map(MachineWork.check, machine, _batches(groups)):
+        for result in results:
+            for line in result.said:
+                said(line)
+            for record in result.logged:
+                _log_again(record, said_once)
+            report.add(result.findings)
 
 
 def _call_groups(workers: Workers, machine: int, files: list[Found], unreadable: set[Path],
@@ -213,6 +220,22 @@ def _log_again(record: logging.LogRecord, said_once: set[str]) -> None:
             return
         said_once.add(record.msg)
     logging.getLogger(record.name).handle(record)
+
+
+class _NearestMachineFile:
+    """``find_machine_file`` of program files, looked for once per folder: a file's is its
+    folder's, but for a link, whose is that of the folder it leads to."""
+
+    def __init__(self) -> None:
+        self._of_folder: dict[Path, Path | None] = {}
+
+    def __call__(self, path: Path) -> Path | None:
+        if path.is_symlink():
+            return find_machine_file(path)
+        folder = path.parent
+        if folder not in self._of_folder:
+            self._of_folder[folder] = find_machine_file(folder)
+        return self._of_folder[folder]
 
 
 def _machine_work(machine_file: Path | None, files: list[Path], dialect: str | None, search_paths: list[str],
