@@ -156,3 +156,27 @@ def _group_alive(group: int) -> bool:
     except ProcessLookupError:
         return False
     return True
+
+
+def test_shards_together_report_what_one_check_does_with_each_call_group_whole(tmp_path: Path) -> None:
+    folder = shop(tmp_path)
+    _, whole, _ = check(str(folder), "--jobs", "1")
+    shards = [check(str(folder), "--shard", f"{k}/3") for k in (1, 2, 3)]
+    lines = [line for _, out, _ in shards for line in out.splitlines()]
+    assert sorted(lines) == sorted(whole.splitlines()) and len(lines) == len(whole.splitlines())
+    assert all(out for _, out, _ in shards)  # 55 groups: each shard has some
+    # each macro's finding is in the shard that checked it with its caller: a shard with the
+    # macro but not its caller would run it alone, where A is vacant and nothing divides by zero
+    assert sum("O9100.nc:2:1: error: division by zero (alarm 112); reached from O0001:2" in out
+               for _, out, _ in shards) == 1  # fmt: skip
+    assert sum("sub.nc:2:1: error: division by zero (alarm 112); reached from O0002:2" in out
+               for _, out, _ in shards) == 1  # fmt: skip
+
+
+@pytest.mark.parametrize("given", ["0/2", "3/2", "1", "a/b", "1/0"])
+def test_a_shard_that_is_not_k_of_n_is_a_usage_error(tmp_path: Path, given: str) -> None:
+    program = tmp_path / "O0001.nc"
+    program.write_text("O0001\nM30\n", encoding="utf-8")
+    code, out, err = cli("check", "--shard", given, str(program))
+    assert code == 2 and out == ""
+    assert f"argument --shard: {given!r} is not a shard: give K/N, the Kth of N shards" in err

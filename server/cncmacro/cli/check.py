@@ -45,7 +45,7 @@ from ..library.machine_file import (
 )
 from ..library.profiles import typed_profile_wins
 from .call_groups import FileKeys, join_groups, to_read_exactly
-from .check_jobs import WorkerLost, Workers, default_jobs, usable_jobs
+from .check_jobs import Shard, WorkerLost, Workers, default_jobs, in_shard, usable_jobs
 from .check_work import Found, MachineWork, read_text
 from .findings_report import FindingsReport
 from .terminal import Printable
@@ -66,9 +66,11 @@ def check_paths(
     machine: str | None = None,
     hints: bool = False,
     jobs: int = 1,
+    shard: Shard | None = None,
 ) -> int:
     """Check every program file under ``paths``; print the findings; return the exit status.
-    ``jobs`` processes do the work (``check_jobs.py``; 1: this process alone)."""
+    ``jobs`` processes do the work (``check_jobs.py``; 1: this process alone); with ``shard``
+    only the call groups that fall to it are checked."""
     chinese = is_chinese(locale)
     shown_err = Printable(err)
     if max_blocks is not None and max_blocks < 1:
@@ -136,7 +138,7 @@ def check_paths(
     try:
         with Workers([work for work, _ in checks], jobs) as workers:
             for at, (_, files) in enumerate(checks):
-                _report_groups(workers, at, files, report, unreadable, said)
+                _report_groups(workers, at, files, report, unreadable, said, shard)
     except WorkerLost as e:
         print(pick(locale, f"cncmacro check: a checking process ended before it was done ({e}); check with fewer "
                    "--jobs, or with --jobs 1", f"cncmacro check：一个检查进程未完成就结束了（{e}）；请减少 --jobs，"
@@ -153,10 +155,10 @@ CHECK_BATCH = 16  # files (whole call groups, at least one) a process checks at 
 
 
 def _report_groups(workers: Workers, machine: int, files: list[Found], report: FindingsReport,
-                   unreadable: set[Path], said: Callable[[str], None]) -> None:  # fmt: skip
+                   unreadable: set[Path], said: Callable[[str], None], shard: Shard | None) -> None:  # fmt: skip
     """Check the files of one machine: those that no call connects apart, each group's findings
-    written as soon as it and the groups before it are done."""
-    groups = _call_groups(workers, machine, files, unreadable, said)
+    written as soon as it and the groups before it are done (only the groups of ``shard``)."""
+    groups = [g for g in _call_groups(workers, machine, files, unreadable, said) if in_shard(g[0][0], shard)]
     said_once: set[str] = set()
     for results in workers.map(MachineWork.check, machine, _batches(groups)):
         for result in results:
@@ -299,5 +301,5 @@ def main_check(args: argparse.Namespace) -> int:
     return check_paths(
         args.paths, sys.stdout, sys.stderr, args.format, dialect=args.dialect, search_paths=args.path,
         locale=args.locale, max_blocks=args.max_blocks, machine=args.machine, hints=args.hints,
-        jobs=default_jobs() if args.jobs is None else usable_jobs(args.jobs),
+        jobs=default_jobs() if args.jobs is None else usable_jobs(args.jobs), shard=args.shard,
     )  # fmt: skip

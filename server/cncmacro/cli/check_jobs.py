@@ -14,6 +14,10 @@ start (the signal is blocked while a worker is started, and the worker ignores i
 unblocking it), the checking process stops the workers and ``cncmacro`` exits with 130 and no
 traceback. A worker that dies (killed, out of memory) ends the check with ``WorkerLost``
 instead of a wait that never ends.
+
+``--shard K/N`` spreads a library over N machines instead: each check finds the same call
+groups, and checks those whose first file falls to shard K by a hash of its path as found
+(``in_shard``), so that a group's callers and callees are always checked together.
 """
 
 from __future__ import annotations
@@ -22,10 +26,12 @@ import argparse
 import os
 import signal
 import sys
+import zlib
 from collections import deque
 from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import Future, ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
+from pathlib import Path
 from typing import Any, TypeVar
 
 from ..bilingual import pick
@@ -76,6 +82,36 @@ def jobs_argument(text: str) -> int:
             )
         )
     return jobs
+
+
+Shard = tuple[int, int]  # (K, N): the Kth of N shards, counted from 1
+
+
+def shard_argument(text: str) -> Shard:
+    """argparse ``type`` for ``--shard``: ``K/N``, 1 <= K <= N."""
+    k, _, n = text.partition("/")
+    try:
+        shard = int(k), int(n)
+    except ValueError:
+        shard = 0, 0
+    if not 1 <= shard[0] <= shard[1]:
+        raise argparse.ArgumentTypeError(
+            pick(
+                environment_locale(),
+                f"{text!r} is not a shard: give K/N, the Kth of N shards, 1 <= K <= N (1/4 to 4/4)",
+                f"{text!r} 不是分片：请写成 K/N，即 N 个分片中的第 K 个，1 <= K <= N（1/4 到 4/4）",
+            )
+        )
+    return shard
+
+
+def in_shard(first: Path, shard: Shard | None) -> bool:
+    """Whether the call group whose first file is ``first`` is checked in ``shard`` (None: all
+    are). The hash is CRC-32 of the path's bytes as found: the same on every machine and every
+    Python, for the same paths given on the command line in the same folder."""
+    if shard is None:
+        return True
+    return zlib.crc32(os.fsencode(first)) % shard[1] == shard[0] - 1
 
 
 class Workers:
