@@ -2,8 +2,10 @@
 a folder are checked in N processes, and what the check writes (standard output in each format,
 standard error, the exit status) is the same, byte for byte, as with one: the findings come in
 the order of one job's. This holds with the ``spawn`` start method that Windows uses too. Ctrl-C
-stops the check and its workers with exit status 130 and no traceback; ``--jobs 1`` starts no
-process; a ``--jobs`` that is no number of processes is a usage error (exit status 2)."""
+stops the check and its workers with exit status 130 and no traceback, and a worker that dies
+ends the check with exit status 2; ``--jobs 1`` starts no process; a ``--jobs`` that is no
+number of processes is a usage error (exit status 2). ``--shard K/N`` checks whole call groups,
+and the shards together report what one check does."""
 
 from __future__ import annotations
 
@@ -180,3 +182,26 @@ def test_a_shard_that_is_not_k_of_n_is_a_usage_error(tmp_path: Path, given: str)
     code, out, err = cli("check", "--shard", given, str(program))
     assert code == 2 and out == ""
     assert f"argument --shard: {given!r} is not a shard: give K/N, the Kth of N shards" in err
+
+
+@posix_only
+def test_a_worker_that_dies_ends_the_check_with_status_2_instead_of_a_wait(tmp_path: Path) -> None:
+    folder = tmp_path / "loops"
+    folder.mkdir()
+    for n in range(1, 201):  # as above: far longer to check than the wait for the first finding
+        (folder / f"O{n:04d}.nc").write_text(f"O{n:04d}\n#1=0\nWHILE[#1 LT 20000]DO1\n#1=#1+1\nEND1\n#2=#3/0\nM30\n",
+                                             encoding="utf-8")  # fmt: skip
+    checker = subprocess.Popen([sys.executable, "-m", "cncmacro", "check", "--jobs", "2", str(folder)],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, encoding="utf-8")  # fmt: skip
+    try:
+        assert checker.stdout is not None
+        checker.stdout.readline()  # the workers are at work
+        workers = subprocess.run(["pgrep", "-P", str(checker.pid)], capture_output=True, text=True, check=True)
+        os.kill(int(workers.stdout.split()[0]), signal.SIGKILL)  # as the out-of-memory killer would
+        _, err = checker.communicate(timeout=60)
+    finally:
+        if checker.poll() is None:
+            checker.kill()
+    assert checker.returncode == 2
+    said = "cncmacro check: a checking process ended before it was done (killed, or out of memory?); check with"
+    assert err == f"{said} fewer --jobs, or with --jobs 1\n"

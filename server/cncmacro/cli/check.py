@@ -19,7 +19,10 @@ error. A file name that is not UTF-8 is written as
 messages and what goes to standard error in Chinese; the format around them
 (``file:line:col: severity: message [code]``, the JSON and SARIF keys and values other than the
 message) is a contract and stays as it is. Control characters in file names and messages are
-shown escaped in the text output and on standard error (``terminal``).
+shown escaped in the text output and on standard error (``terminal``). The groups of files
+that calls connect (``call_groups.py``) are checked in ``--jobs`` processes (``check_jobs.py``,
+the work itself in ``check_work.py``) with the same output as in one; ``--shard K/N`` checks
+only the groups that fall to one of N machines.
 """
 
 from __future__ import annotations
@@ -139,10 +142,11 @@ def check_paths(
         with Workers([work for work, _ in checks], jobs) as workers:
             for at, (_, files) in enumerate(checks):
                 _report_groups(workers, at, files, report, unreadable, said, shard)
-    except WorkerLost as e:
-        print(pick(locale, f"cncmacro check: a checking process ended before it was done ({e}); check with fewer "
-                   "--jobs, or with --jobs 1", f"cncmacro check：一个检查进程未完成就结束了（{e}）；请减少 --jobs，"
-                   "或使用 --jobs 1"), file=shown_err)  # fmt: skip
+    except WorkerLost:
+        print(pick(locale, "cncmacro check: a checking process ended before it was done (killed, or out of memory?); "
+                   "check with fewer --jobs, or with --jobs 1",
+                   "cncmacro check：一个检查进程未完成就结束了（被终止或内存不足？）；请减少 --jobs，或使用 --jobs 1"),
+              file=shown_err)  # fmt: skip
         return 2
     report.close()
     if missing or unreadable:

@@ -176,8 +176,8 @@ class Workers:
 def _answer(future: Future[R]) -> R:
     try:
         return future.result()
-    except BrokenProcessPool as e:
-        raise WorkerLost(str(e)) from None
+    except BrokenProcessPool:
+        raise WorkerLost from None
 
 
 _works: list[MachineWork] = []  # a worker process's copy of the checking process's ``works``
