@@ -138,6 +138,8 @@ def check_paths(
 
     report = FindingsReport(out, fmt, hints, __version__)
     jobs = max(1, min(jobs, sum(len(files) for _, files in checks)))  # no more processes than files
+    out.flush()  # a worker started by fork would write again what waits in a buffer when it ends
+    err.flush()
     try:
         with Workers([work for work, _ in checks], jobs) as workers:
             for at, (_, files) in enumerate(checks):
