@@ -106,6 +106,20 @@ def test_jobs_1_starts_no_process(tmp_path: Path, monkeypatch: pytest.MonkeyPatc
     assert "O9100.nc:2:1: error: division by zero" in out.getvalue()
 
 
+def test_a_check_of_a_few_files_starts_no_process_whatever_the_jobs(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    def refused(*args: object, **kwargs: object) -> None:
+        raise AssertionError("a pool was started")
+
+    monkeypatch.setattr(check_jobs, "ProcessPoolExecutor", refused)
+    for n in range(1, 17):  # one batch of 16 files: a worker would cost more than it saves
+        (tmp_path / f"O{n:04d}.nc").write_text(f"O{n:04d}\n#1=#2/0\nM30\n", encoding="utf-8")
+    out, err = io.StringIO(), io.StringIO()
+    assert check_paths([str(tmp_path)], out, err, jobs=8) == 1
+    assert out.getvalue().count("division by zero") == 16
+
+
 @pytest.mark.parametrize("given", ["0", "-2", "two", "1.5", ""])
 def test_a_jobs_that_is_no_number_of_processes_is_a_usage_error(tmp_path: Path, given: str) -> None:
     program = tmp_path / "O0001.nc"

@@ -137,7 +137,9 @@ def check_paths(
         checks.append((work, [f for f in files if f[0] not in unreadable]))
 
     report = FindingsReport(out, fmt, hints, __version__)
-    jobs = max(1, min(jobs, sum(len(files) for _, files in checks)))  # no more processes than files
+    # no more processes than batches: a check of a few files starts none (a worker that Windows
+    # spawns costs half a second before its first file)
+    jobs = max(1, min(jobs, -(-sum(len(files) for _, files in checks) // CHECK_BATCH)))
     out.flush()  # a worker started by fork would write again what waits in a buffer when it ends
     err.flush()
     try:
