@@ -219,3 +219,23 @@ def test_a_worker_that_dies_ends_the_check_with_status_2_instead_of_a_wait(tmp_p
     assert checker.returncode == 2
     said = "cncmacro check: a checking process ended before it was done (killed, or out of memory?); check with"
     assert err == f"{said} fewer --jobs, or with --jobs 1\n"
+
+
+@posix_only
+def test_a_linked_program_keeps_the_machine_file_of_the_folder_its_link_leads_to(tmp_path: Path) -> None:
+    # the machine file is looked for once per folder, but a link's is that of the folder it
+    # leads to (find_machine_file resolves it), as when each file was looked for on its own; a
+    # link that leads out of a folder is checked when it is named on the command line
+    lathe, mill = tmp_path / "lathe", tmp_path / "mill"
+    lathe.mkdir()
+    mill.mkdir()
+    (lathe / ".cncmacro.toml").write_text('[severity]\ndivision-by-zero = "warning"\n', encoding="utf-8")
+    (lathe / "O0001.nc").write_text("O0001\n#1=#2/0\nM30\n", encoding="utf-8")
+    (mill / "O0002.nc").write_text("O0002\n#1=#2/0\nM30\n", encoding="utf-8")
+    (mill / "O0001.nc").symlink_to(lathe / "O0001.nc")
+    out, err = io.StringIO(), io.StringIO()
+    check_paths([str(mill / "O0001.nc"), str(mill / "O0002.nc")], out, err)
+    assert out.getvalue().splitlines() == [
+        f"{mill / 'O0001.nc'}:2:1: warning: division by zero (alarm 112) [division-by-zero]",
+        f"{mill / 'O0002.nc'}:2:1: error: division by zero (alarm 112) [division-by-zero]",
+    ], err.getvalue()

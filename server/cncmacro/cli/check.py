@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import argparse
 import logging
+import os
 import sys
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -240,7 +241,7 @@ class _NearestMachineFile:
         self._of_folder: dict[Path, Path | None] = {}
 
     def __call__(self, path: Path) -> Path | None:
-        if path.is_symlink():
+        if os.path.islink(path):  # False too when it cannot be looked at
             return find_machine_file(path)
         folder = path.parent
         if folder not in self._of_folder:
