@@ -41,7 +41,10 @@ from .locale_option import environment_locale
 T = TypeVar("T")
 R = TypeVar("R")
 
-WINDOW = 3  # batches asked of each process ahead of the one whose answer is awaited
+# batches asked of each process ahead of the one whose answer is awaited: enough that the
+# others keep working while one checks a large group, few enough that the answers waiting
+# (findings only) stay small
+WINDOW = 16
 MAX_WINDOWS_JOBS = 61  # the most processes a pool can wait on at once on Windows
 
 
