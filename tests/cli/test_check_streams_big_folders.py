@@ -12,6 +12,8 @@ import sys
 import time
 from pathlib import Path
 
+import pytest
+
 ALONE = "%\nO{n:04d}\n#1=#2/0\nG01 X[#1+{n}] Y10 F100\nM30\n%\n"  # division by zero (alarm 112), line 3
 
 # peak resident memory of a child process, in KB (ru_maxrss of the children it waited for)
@@ -30,20 +32,23 @@ def folder_of(tmp_path: Path, name: str, files: int) -> Path:
     return folder
 
 
-def peak_kb(folder: Path) -> int:
-    done = subprocess.run([sys.executable, "-c", PEAK, sys.executable, "-m", "cncmacro", "check", str(folder)],
-                          capture_output=True, text=True, timeout=300, check=True)  # fmt: skip
+def peak_kb(folder: Path, jobs: str) -> int:
+    """The peak of the checking process and of each of its workers, whichever is highest."""
+    done = subprocess.run([sys.executable, "-c", PEAK, sys.executable, "-m", "cncmacro", "check", "--jobs", jobs,
+                           str(folder)], capture_output=True, text=True, timeout=300, check=True)  # fmt: skip
     return int(done.stdout)
 
 
-def test_check_memory_does_not_grow_with_the_number_of_unconnected_files(tmp_path: Path) -> None:
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_check_memory_does_not_grow_with_the_number_of_unconnected_files(tmp_path: Path, jobs: str) -> None:
     small, large = folder_of(tmp_path, "small", 200), folder_of(tmp_path, "large", 3_000)
-    grown_mb = (peak_kb(large) - peak_kb(small)) / 1024
+    grown_mb = (peak_kb(large, jobs) - peak_kb(small, jobs)) / 1024
     # all held to the end, as before, the 2,800 files more would cost about 45 KB each: 120 MB
     assert grown_mb < 30, f"{grown_mb:.0f} MB more for 2,800 more files"
 
 
-def test_check_prints_the_first_files_findings_while_the_rest_are_checked(tmp_path: Path) -> None:
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_check_prints_the_first_files_findings_while_the_rest_are_checked(tmp_path: Path, jobs: str) -> None:
     # each file's run counts to 2,000 (6,000 blocks) before it divides by zero: checking takes far
     # longer than listing and reading the files, after which the first group is checked and printed
     folder = tmp_path / "loops"
@@ -52,8 +57,9 @@ def test_check_prints_the_first_files_findings_while_the_rest_are_checked(tmp_pa
         (folder / f"O{n:04d}.nc").write_text(f"O{n:04d}\n#1=0\nWHILE[#1 LT 2000]DO1\n#1=#1+1\nEND1\n#2=#3/0\nM30\n",
                                              encoding="utf-8")  # fmt: skip
     start = time.monotonic()
-    with subprocess.Popen([sys.executable, "-m", "cncmacro", "check", str(folder)], stdout=subprocess.PIPE,
-                          stderr=subprocess.DEVNULL, text=True, encoding="utf-8") as checker:  # fmt: skip
+    command = [sys.executable, "-m", "cncmacro", "check", "--jobs", jobs, str(folder)]
+    with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
+                          encoding="utf-8") as checker:  # fmt: skip
         assert checker.stdout is not None
         first = checker.stdout.readline()
         first_at = time.monotonic() - start

@@ -3,7 +3,7 @@ speaks the protocol around them).
 
 Each tool is the command line's own work, not a copy of it: ``check_program`` gives the findings
 ``cncmacro check --format json`` gives (``check.check_paths`` on a path; the same analysis,
-``check.analyse_files``, on a program's text); ``run_program`` runs the machine as
+``check_work.analyse_files``, on a program's text); ``run_program`` runs the machine as
 ``cncmacro run --json --no-save`` does (``machine.setup``, ``run.result_json``,
 ``cycle_report.cycle_json``) and never writes the persistent variables; ``explain`` reads the
 profile's tables through ``dialects.describe``, as the editor's hover does; ``list_profiles`` is
@@ -50,7 +50,8 @@ from ..machine.calls import letters_for_local
 from ..machine.setup import SetupError, machine_settings, prepare_run, prepare_text_run
 from ..machine.status import RunStatus
 from ..planner.move_json import machine_json
-from .check import analyse_files, check_paths
+from .check import check_paths
+from .check_work import analyse_files
 from .cycle_report import cycle_json
 from .findings_report import diagnostic_json
 from .locale_option import ENGLISH, locale_argument

@@ -19,36 +19,27 @@ error. A file name that is not UTF-8 is written as
 messages and what goes to standard error in Chinese; the format around them
 (``file:line:col: severity: message [code]``, the JSON and SARIF keys and values other than the
 message) is a contract and stays as it is. Control characters in file names and messages are
-shown escaped in the text output and on standard error (``terminal``).
+shown escaped in the text output and on standard error (``terminal``). The groups of files
+that calls connect (``call_groups.py``) are checked in ``--jobs`` processes (``check_jobs.py``,
+the work itself in ``check_work.py``) with the same output as in one; ``--shard K/N`` checks
+only the groups that fall to one of N machines.
 """
 
 from __future__ import annotations
 
 import argparse
-import gc
 import logging
+import os
 import sys
-from collections.abc import Callable
-from functools import partial
+from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import TextIO
+from typing import TextIO, TypeVar
 
 from .. import __version__
-from ..analysis import Diagnostic
-from ..analysis.faults import FILE, internal_error
-from ..analysis.indexes.call_index import CallIndex
-from ..analysis.workspace import WorkspaceAnalysis
+from ..analysis.indexes import call_index
 from ..bilingual import Detail, detail, in_language, is_chinese, pick
 from ..library.callee_folders import callee_folders
-from ..library.file_cache import FileCache
-from ..library.files import (
-    MAX_PROGRAM_BYTES,
-    SkippedFileError,
-    program_files_looked_for,
-    read_program,
-    search_program_files,
-    shown_text,
-)
+from ..library.files import program_files_looked_for, search_program_files, shown_text
 from ..library.machine_file import (
     MachineFileError,
     MachineSettings,
@@ -57,12 +48,13 @@ from ..library.machine_file import (
     load_machine_file,
 )
 from ..library.profiles import typed_profile_wins
-from ..syntax.document import ParsedDocument
-from .call_groups import call_groups
+from .call_groups import FileKeys, join_groups, to_read_exactly
+from .check_jobs import Shard, WorkerLost, Workers, default_jobs, in_shard, usable_jobs
+from .check_work import Found, MachineWork, read_text
 from .findings_report import FindingsReport
 from .terminal import Printable
 
-log = logging.getLogger(__name__)
+T = TypeVar("T")
 
 
 def check_paths(
@@ -77,8 +69,12 @@ def check_paths(
     max_blocks: int | None = None,
     machine: str | None = None,
     hints: bool = False,
+    jobs: int = 1,
+    shard: Shard | None = None,
 ) -> int:
-    """Check every program file under ``paths``; print the findings; return the exit status."""
+    """Check every program file under ``paths``; print the findings; return the exit status.
+    ``jobs`` processes do the work (``check_jobs.py``; 1: this process alone); with ``shard``
+    only the call groups that fall to it are checked."""
     chinese = is_chinese(locale)
     shown_err = Printable(err)
     if max_blocks is not None and max_blocks < 1:
@@ -87,12 +83,8 @@ def check_paths(
         return 2
     unreadable: set[Path] = set()
 
-    def read(path: Path) -> str | None:
-        """The text of a program file; None, said once on standard error, when it cannot be read."""
-        text = None if path in unreadable else _read(path, found_paths[path], locale, shown_err)
-        if text is None:
-            unreadable.add(path)
-        return text
+    def said(line: str) -> None:
+        print(line, file=shown_err)
 
     missing = False
     found_paths: dict[Path, bool] = {}  # each program file, and whether it was found in a folder
@@ -120,45 +112,148 @@ def check_paths(
             missing = True
         searched = root.is_dir()  # a file named on the command line is read whole
         for path in found:
-            found_paths.setdefault(path, searched)
-            read(path)  # what cannot be read is said now, in the order of the paths; the text is read again
-    by_machine: dict[Path | None, list[Path]] = {}
-    for path in found_paths:
-        by_machine.setdefault(Path(machine) if machine else find_machine_file(path), []).append(path)
-    checks: list[_MachineCheck] = []
+            if path in found_paths:
+                continue
+            found_paths[path] = searched
+            # what cannot be read is said now, in the order of the paths; the text is read again
+            lines: list[str] = []
+            if read_text((path, searched), locale, lines) is None:
+                unreadable.add(path)
+                for line in lines:
+                    said(line)
+    by_machine: dict[Path | None, list[Found]] = {}
+    nearest = _NearestMachineFile()
+    for path, searched in found_paths.items():
+        by_machine.setdefault(Path(machine) if machine else nearest(path), []).append((path, searched))
+    checks: list[tuple[MachineWork, list[Found]]] = []
     for machine_file, files in by_machine.items():  # each file with the machine settings nearest to it
         try:
-            checks.append(_machine_check(machine_file, files, dialect, search_paths or [], locale, max_blocks,
-                                         shown_err))  # fmt: skip
+            work = _machine_work(machine_file, [f[0] for f in files], dialect, search_paths or [], locale,
+                                 max_blocks, shown_err)  # fmt: skip
         except (MachineFileError, ValueError) as e:
-            said: str = e.located() if isinstance(e, MachineFileError) else e.args[0] if e.args else str(e)
-            reason = in_language(said, chinese)
+            reason = e.located() if isinstance(e, MachineFileError) else e.args[0] if e.args else str(e)
+            reason = in_language(reason, chinese)
             print(f"cncmacro check：{reason}" if chinese else f"cncmacro check: {reason}", file=shown_err)
             return 2
+        checks.append((work, [f for f in files if f[0] not in unreadable]))
 
     report = FindingsReport(out, fmt, hints, __version__)
-    for files, settings, fresh in checks:
-        # files that no call connects are checked apart, and their findings printed at once
-        for group in call_groups(files, read, settings, dialect):
-            texts = [(path, text) for path in group if (text := read(path)) is not None]
-            if texts:
-                report.add(analyse_files(texts, fresh, locale))
-            gc.collect()  # the group's runs and machines, which refer to each other
+    # no more processes than batches: a check of a few files starts none (a worker that Windows
+    # spawns costs half a second before its first file)
+    jobs = max(1, min(jobs, -(-sum(len(files) for _, files in checks) // CHECK_BATCH)))
+    out.flush()  # a worker started by fork would write again what waits in a buffer when it ends
+    err.flush()
+    try:
+        with Workers([work for work, _ in checks], jobs) as workers:
+            for at, (_, files) in enumerate(checks):
+                _report_groups(workers, at, files, report, unreadable, said, shard)
+    except WorkerLost:
+        print(pick(locale, "cncmacro check: a checking process ended before it was done (killed, or out of memory?); "
+                   "check with fewer --jobs, or with --jobs 1",
+                   "cncmacro check：一个检查进程未完成就结束了（被终止或内存不足？）；请减少 --jobs，或使用 --jobs 1"),
+              file=shown_err)  # fmt: skip
+        return 2
     report.close()
     if missing or unreadable:
         return 2
     return 1 if report.errors else 0
 
 
-_MachineCheck = tuple[list[Path], MachineSettings, Callable[[], WorkspaceAnalysis]]
+KEYS_BATCH = 64  # files a process looks at for their names and calls at a time
+CHECK_BATCH = 16  # files (whole call groups, at least one) a process checks at a time
 
 
-def _machine_check(machine_file: Path | None, files: list[Path], dialect: str | None, search_paths: list[str],
-                   locale: str, max_blocks: int | None, err: Printable) -> _MachineCheck:  # fmt: skip
-    """``files``, the settings of ``machine_file`` they are checked with and what makes a fresh
-    workspace for a group of them (one index of the callers on disk and one reading of the files
-    there for all). What a person should know of the machine file is said on ``err``;
-    ``MachineFileError`` or ``ValueError`` when it cannot be used."""
+def _report_groups(workers: Workers, machine: int, files: list[Found], report: FindingsReport,
+                   unreadable: set[Path], said: Callable[[str], None], shard: Shard | None) -> None:  # fmt: skip
+    """Check the files of one machine: those that no call connects apart, each group's findings
+    written as soon as it and the groups before it are done (only the groups of ``shard``)."""
+    groups = [g for g in _call_groups(workers, machine, files, unreadable, said) if in_shard(g[0][0], shard)]
+    said_once: set[str] = set()
+    for results in workers.map(MachineWork.check, machine, _batches(groups)):
+        for result in results:
+            for line in result.said:
+                said(line)
+            for record in result.logged:
+                _log_again(record, said_once)
+            report.add(result.findings)
+
+
+def _call_groups(workers: Workers, machine: int, files: list[Found], unreadable: set[Path],
+                 said: Callable[[str], None]) -> list[list[Found]]:  # fmt: skip
+    """``files`` in the groups that calls may connect (``call_groups.py``), the work spread over
+    ``workers``. A file that can no longer be read is said, added to ``unreadable`` and left out."""
+    if len(files) < 2:
+        return [files] if files else []  # one file is one group: it is not read for its calls
+    readable: list[Found] = []
+    keys: list[FileKeys] = []
+    answered = workers.map(MachineWork.keys, machine, _chunks(files, KEYS_BATCH))
+    for batch, answers in zip(_chunks(files, KEYS_BATCH), answered, strict=True):
+        for found, answer in zip(batch, answers, strict=True):
+            if isinstance(answer, str):
+                said(answer)
+                unreadable.add(found[0])
+            else:
+                readable.append(found)
+                keys.append(answer)
+    exact = to_read_exactly(keys)
+    names = workers.map(MachineWork.names, machine, _chunks([readable[i] for i in exact], KEYS_BATCH))
+    for i, name in zip(exact, (n for batch in names for n in batch), strict=True):
+        keys[i] = keys[i]._replace(names=name if name is not None else keys[i].names, maybe=None)
+    by_path = dict(readable)
+    return [[(path, by_path[path]) for path in group] for group in join_groups([f[0] for f in readable], keys)]
+
+
+def _chunks(items: list[T], size: int) -> Iterator[list[T]]:
+    for start in range(0, len(items), size):
+        yield items[start : start + size]
+
+
+def _batches(groups: list[list[Found]]) -> Iterator[list[list[Found]]]:
+    """``groups`` in batches of whole groups of about ``CHECK_BATCH`` files."""
+    batch: list[list[Found]] = []
+    size = 0
+    for group in groups:
+        batch.append(group)
+        size += len(group)
+        if size >= CHECK_BATCH:
+            yield batch
+            batch, size = [], 0
+    if batch:
+        yield batch
+
+
+def _log_again(record: logging.LogRecord, said_once: set[str]) -> None:
+    """Log here what a worker logged while it checked a group. The index of the callers on disk
+    warns once per process that makes one (each worker does, for a folder too big to index):
+    that warning is given once, as one process gives it."""
+    if record.name == call_index.log.name:
+        if record.msg in said_once:
+            return
+        said_once.add(record.msg)
+    logging.getLogger(record.name).handle(record)
+
+
+class _NearestMachineFile:
+    """``find_machine_file`` of program files, looked for once per folder: a file's is its
+    folder's, but for a link, whose is that of the folder it leads to."""
+
+    def __init__(self) -> None:
+        self._of_folder: dict[Path, Path | None] = {}
+
+    def __call__(self, path: Path) -> Path | None:
+        if os.path.islink(path):  # False too when it cannot be looked at
+            return find_machine_file(path)
+        folder = path.parent
+        if folder not in self._of_folder:
+            self._of_folder[folder] = find_machine_file(folder)
+        return self._of_folder[folder]
+
+
+def _machine_work(machine_file: Path | None, files: list[Path], dialect: str | None, search_paths: list[str],
+                  locale: str, max_blocks: int | None, err: Printable) -> MachineWork:  # fmt: skip
+    """The work of checking ``files`` with the settings of ``machine_file``. What a person should
+    know of the machine file is said on ``err``; ``MachineFileError`` or ``ValueError`` when it
+    cannot be used."""
     settings = _machine_settings(machine_file)
     if machine_file is not None:
         settings = _noted(settings, machine_file, dialect, is_chinese(locale), err)
@@ -166,31 +261,14 @@ def _machine_check(machine_file: Path | None, files: list[Path], dialect: str | 
     folders = [*checked, *search_paths]
     # the checked files are one machine's programs: a call finds a program in any of their folders
     callees = callee_folders(search_paths, files)
-    disk = FileCache()
-    index = CallIndex(folders, settings, dialect, locale, files=disk)
-    workspace = partial(WorkspaceAnalysis, settings=settings, dialect=dialect, search_paths=callees, locale=locale,
-                        max_blocks=max_blocks, severities=settings.severity, workspace_folders=folders, files=disk,
-                        call_index=index)  # fmt: skip
-    workspace()  # a setting it refuses is said before any finding
-    return files, settings, workspace
+    work = MachineWork(settings, dialect, folders, callees, locale, max_blocks)
+    work.workspace()  # a setting it refuses is said before any finding
+    return work
 
 
 def _machine_settings(machine_file: Path | None) -> MachineSettings:
     """The settings of ``machine_file`` (None: the defaults); ``MachineFileError`` says what is wrong."""
     return load_machine_file(machine_file) if machine_file is not None else MachineSettings()
-
-
-def _read(path: Path, searched: bool, locale: str, err: Printable) -> str | None:
-    """The text of the program file ``path`` (one found by searching a folder up to
-    ``MAX_PROGRAM_BYTES``), or None when it is not read, which is said on ``err``."""
-    try:
-        return read_program(path, MAX_PROGRAM_BYTES if searched else None).text
-    except SkippedFileError as e:
-        print(f"cncmacro：{e.message.zh}" if is_chinese(locale) else f"cncmacro: {e}", file=err)
-    except OSError as e:
-        why, shown = e.strerror or e, shown_text(str(path))
-        print(pick(locale, f"cncmacro: {shown}: cannot read: {why}", f"cncmacro：{shown}：无法读取：{why}"), file=err)
-    return None
 
 
 def _program_files(root: Path, machine: str | None) -> tuple[list[Path], list[Detail]]:
@@ -228,43 +306,9 @@ def _noted(
     return settings
 
 
-def analyse_files(
-    files: list[tuple[Path, str]], workspace: Callable[[], WorkspaceAnalysis], locale: str
-) -> list[Diagnostic]:
-    """The diagnostics of ``files`` analysed together in a workspace from ``workspace``. Should
-    the checker itself fail there (a bug, not a mistake in a program), each file is analysed again
-    on its own in a fresh workspace, so that one file that trips the checker costs only its own
-    findings: it gets an ``internal-error`` diagnostic, the others are reported as usual.
-
-    The files are parsed before their workspace is made: parsing freezes what is alive for the
-    cycle collector (``collector_paused``), and a workspace frozen with its runs in it (which
-    refer to each other) would stay in memory after its group is done."""
-    try:
-        docs = [(str(path), ParsedDocument(text)) for path, text in files]
-        ws = workspace()
-        for name, doc in docs:
-            ws.open(name, doc, 0)
-        result = ws.analyze(docs[0][0])
-        assert result is not None  # nothing cancels it
-        return [d for diags in result.diagnostics.values() for d in diags]
-    except Exception:
-        log.exception("checking %d files together failed: checking them one by one", len(files))
-    found: list[Diagnostic] = []
-    for path, text in files:
-        try:
-            doc = ParsedDocument(text)
-            alone = workspace()
-            alone.open(str(path), doc, 0)
-            result = alone.analyze(str(path))
-            assert result is not None
-            found += [d for diags in result.diagnostics.values() for d in diags]
-        except Exception as e:
-            found.append(internal_error(str(path), 0, FILE, e, locale))
-    return found
-
-
 def main_check(args: argparse.Namespace) -> int:
     return check_paths(
         args.paths, sys.stdout, sys.stderr, args.format, dialect=args.dialect, search_paths=args.path,
         locale=args.locale, max_blocks=args.max_blocks, machine=args.machine, hints=args.hints,
+        jobs=default_jobs() if args.jobs is None else usable_jobs(args.jobs), shard=args.shard,
     )  # fmt: skip

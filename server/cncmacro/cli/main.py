@@ -13,6 +13,7 @@ from .. import __version__
 from ..bilingual import is_chinese, pick
 from ..dialects.registry import all_profiles
 from .check import main_check
+from .check_jobs import jobs_argument, shard_argument
 from .locale_option import add_locale_option, environment_locale, locale_argument
 from .profiles import add_dialect_option, add_profiles_parser
 from .run import add_run_parser
@@ -46,6 +47,14 @@ def build_parser() -> argparse.ArgumentParser:
     )
     check.add_argument("--machine", metavar="FILE", help="machine settings (default: the nearest .cncmacro.toml)")
     check.add_argument("--hints", action="store_true", help="also report hints (blocks no analysis run reached)")
+    check.add_argument(
+        "-j", "--jobs", type=jobs_argument, metavar="N",
+        help="check in N processes side by side, with the same output as one (default: the number of processors)",
+    )  # fmt: skip
+    check.add_argument(
+        "--shard", type=shard_argument, metavar="K/N",
+        help="check only the Kth of N shards of the files, whole call groups each (one CI machine's part)",
+    )  # fmt: skip
     check.set_defaults(handler=main_check)
     add_run_parser(sub)
     add_profiles_parser(sub)

@@ -145,6 +145,11 @@ class SourceText:
     bom: bool = False
 
 
+# the control characters that mark binary data: all below a space but tab, line feed, form
+# feed, carriage return and the DOS end of file (Ctrl-Z)
+_CONTROL_BYTES = bytes(b for b in range(32) if b not in (9, 10, 12, 13, 26))
+
+
 def decode_program(data: bytes, path: str = "<bytes>") -> SourceText:
     """Decode the bytes of a program file; raise ``BinaryFileError`` for a binary one."""
     if data.startswith(codecs.BOM_UTF8):
@@ -156,9 +161,9 @@ def decode_program(data: bytes, path: str = "<bytes>") -> SourceText:
         raise BinaryFileError(path, nul)
     sample = data[:8192]
     if sample:
-        controls = sum(1 for b in sample if b < 32 and b not in (9, 10, 12, 13, 26))
+        controls = len(sample) - len(sample.translate(None, _CONTROL_BYTES))
         if controls * 10 > len(sample):
-            first = next(i for i, b in enumerate(sample) if b < 32 and b not in (9, 10, 12, 13, 26))
+            first = next(i for i, b in enumerate(sample) if b in _CONTROL_BYTES)
             raise BinaryFileError(path, first)
     try:
         return SourceText(data.decode("utf-8"), "utf-8")
