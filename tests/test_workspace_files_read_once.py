@@ -163,3 +163,29 @@ def test_a_folder_is_listed_once_for_every_look_up_until_a_file_comes_or_goes(
     (workspace / "O9300.nc").unlink()
     index.reload(str(workspace / "O9300.nc"))  # deleted: not found any more
     assert index.find_program(caller, 9300, None) is None
+
+
+def test_the_folders_listed_ahead_at_start_serve_the_first_look_up(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # the language server lists the folders a call looks in on a thread at start: the first
+    # hover on a call then finds its program without listing a folder
+    from cncmacro.library import programs
+
+    index = WorkspaceIndex(lambda: [], lambda lines, path: get_dialect("fanuc"))
+    index.scan([str(workspace)])
+    ahead = index.folders_to_list()
+    assert ahead is not None
+    ahead.list_folders()
+    listed: list[Path] = []
+    original = programs.program_files_in
+
+    def program_files_in(folder: Path, extensions: frozenset[str]):  # type: ignore[no-untyped-def]
+        listed.append(folder)
+        return original(folder, extensions)
+
+    monkeypatch.setattr(programs, "program_files_in", program_files_in)
+    caller = Document(str(workspace / "O0001.nc"), ParsedDocument(MAIN), SiteIndex(ParsedDocument(MAIN).blocks))
+    found = index.find_program(caller, 9200, None)
+    assert found is not None and Path(found.file.path).name == "O9200.nc"
+    assert listed == []

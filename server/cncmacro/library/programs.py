@@ -86,7 +86,7 @@ def forget_listings(listings: dict[ListingKey, Listing], path: str) -> None:
     target = Path(path)
     below = os.path.join(path, "")
     exists = os.path.lexists(path)
-    for key in [k for k in listings if k[0] == target.parent or k[0] == target or str(k[0]).startswith(below)]:
+    for key in [k for k in list(listings) if k[0] == target.parent or k[0] == target or str(k[0]).startswith(below)]:
         if key[0] != target.parent or (target in listings[key].files) != exists:
             del listings[key]
 
@@ -248,6 +248,12 @@ class ProgramLibrary:
                 files = files + sorted(Path(p) for p in given if p not in listed)
             self._listing[folder] = files
         return files
+
+    def list_folders(self) -> None:
+        """List each of the library's folders now, into the ``listings`` it shares (the language
+        server does so in the background at start, before the first hover on a call needs them)."""
+        for folder in self.folders:
+            self._on_disk(folder)
 
     def _on_disk(self, folder: Path) -> Listing:
         """The program files on disk in ``folder`` (kept in ``listings``)."""

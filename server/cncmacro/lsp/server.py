@@ -191,6 +191,21 @@ class CncMacroServer(LanguageServer):
         except Exception:
             log.exception("indexing the workspace folders failed")
 
+    def list_folders_ahead(self) -> None:
+        """The folders a call looks in, listed on a thread of their own ahead of the first hover
+        on a call (``WorkspaceIndex.folders_to_list``); a fault there is logged, nothing more."""
+        library = self.index.folders_to_list()
+        if library is None:
+            return
+
+        def list_them() -> None:
+            try:
+                library.list_folders()
+            except Exception:
+                log.exception("listing the folders of the workspace's programs failed")
+
+        threading.Thread(target=list_them, name="cncmacro-listings", daemon=True).start()
+
     # ---- settings
     def apply_settings(self, settings: Settings) -> None:
         """The editor's settings (or a machine file) changed: analyse again with them."""
@@ -255,6 +270,7 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
     server.scan_folders()
     # the grammar parser is built meanwhile, so the first unfinished line typed does not wait for it
     threading.Thread(target=warm_up, name="cncmacro-grammar", daemon=True).start()
+    server.list_folders_ahead()
     server.diagnostics.start(server.documents.machines.first(), roots, server.locale)
     server.apply_settings(server.settings)
 
