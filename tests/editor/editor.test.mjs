@@ -271,6 +271,41 @@ test("the status bar shows the dialect a file is read in: its own comment wins o
   assert.equal(await item.count(), 0);
 });
 
+// A Mitsubishi M70/M80 program: the block IF of its profile (docs/semantics.md §4 "Block IF")
+const MITSUBISHI = [
+  '(cncmacro: dialect=mitsubishi-m70)',
+  'O1000 (PART FAMILY)',
+  '#1=2',
+  'IF [#1 EQ 1] THEN',
+  '#2=10.',
+  'G01 X#2 F100',
+  'ELSE',
+  '#2=20.',
+  'G01 X#2 F100',
+  'ENDIF',
+  'M30',
+  '',
+].join('\n');
+
+test('a Mitsubishi program: the status bar names its profile, its block IF is no error, and the THEN branch folds', { timeout: STEP }, async () => {
+  fs.writeFileSync(path.join(server.workspace, 'mitsubishi_if.nc'), MITSUBISHI);
+  await openFile('mitsubishi_if.nc');
+  await page.locator('.statusbar-item', { hasText: 'Mitsubishi M70/M80' }).waitFor();
+  await page.locator('.editor-instance .view-line', { hasText: '#2=20.' }).waitFor();
+  // the run has ended (its cycle time is shown above the program): its findings are in
+  await page.locator('.editor-instance .codelens-decoration', { hasText: '≈' }).first().waitFor({ timeout: WAIT });
+  await page.locator('.editor-instance .view-lines').click();
+  await page.keyboard.press('Control+G');
+  await page.keyboard.type('4'); // IF [#1 EQ 1] THEN: its branch runs to the ELSE
+  await page.keyboard.press('Enter');
+  await page.keyboard.press('Control+Shift+BracketLeft'); // Fold
+  await page.locator('.editor-instance .view-line', { hasText: '#2=10.' }).waitFor({ state: 'detached' });
+  assert.equal(await page.locator('.editor-instance .view-line', { hasText: '#2=20.' }).count(), 1); // ELSE's branch shown
+  assert.equal(await page.locator('.editor-instance .squiggly-error').count(), 0); // read as Mitsubishi: no error
+  await shot('7c-mitsubishi-block-if-folded');
+  await page.keyboard.press('Control+Shift+BracketRight'); // Unfold
+});
+
 /** The moves `cncmacro run --json` makes for an example program: what the toolpath view must draw. */
 function movesOf(folder, name) {
   const cncmacro = path.join(ROOT, '.venv', 'bin', 'cncmacro');
