@@ -9,9 +9,11 @@ docs/profiles.md "mazak-eia" says where each fact comes from and which are still
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 import pytest
 
+from analysis_helpers import analyse_files
 from cncmacro.dialects import fanuc_data, get_dialect, mazak_eia_data, normalise_dialect
 from cncmacro.dialects.describe import describe_system_variable
 from running import final, lines, run
@@ -94,33 +96,36 @@ def test_alarms_are_shown_without_a_number() -> None:
 # which profile a FANUC file is offered
 
 
-def suggestions(text: str) -> list[str]:
-    return [d.message for d in coded(check(text, FANUC), "profile-suggestion")]
+def suggestions(tmp_path: Path, text: str) -> list[str]:
+    """The messages of the ``profile-suggestion`` of ``text`` read as a file under fanuc-0i."""
+    return [
+        d.message for d in analyse_files(tmp_path, {"MAIN.nc": text}, dialect=FANUC) if d.code == "profile-suggestion"
+    ]
 
 
-def test_logical_symbols_under_fanuc_suggest_mazak_once() -> None:
+def test_logical_symbols_under_fanuc_suggest_mazak_once(tmp_path: Path) -> None:
     text = lines(
         "#1=3", "IF [[#1 GT 0] && [#1 LT 5]] GOTO 10", "#2=1", "N10 IF [[#1 EQ 3] || [#2 EQ 0]] THEN #3=1", "M30"
     )
-    [message] = suggestions(text)
+    [message] = suggestions(tmp_path, text)
     assert message.startswith("This file uses what Mazak EIA/ISO (Matrix, Smooth) has and FANUC 0i Custom Macro B")
     assert "(lines 2, 4)" in message and "add (cncmacro: dialect=mazak-eia)" in message
     assert "IF..THEN / ELSE / ENDIF" not in message  # no block IF in this file
     assert check(text, MAZAK) == []
 
 
-def test_block_if_alone_under_fanuc_still_suggests_mitsubishi_and_names_mazak() -> None:
+def test_block_if_alone_under_fanuc_still_suggests_mitsubishi_and_names_mazak(tmp_path: Path) -> None:
     text = lines("#1=7", "IF [#1 GT 5] THEN", "#2=10", "ELSE", "#2=20", "ENDIF", "M30")
-    [message] = suggestions(text)
+    [message] = suggestions(tmp_path, text)
     assert "add (cncmacro: dialect=mitsubishi-m70)" in message
     assert message.endswith(
         "; the profile mazak-eia (Mazak EIA/ISO (Matrix, Smooth)) reads IF..THEN / ELSE / ENDIF blocks too"
     )
 
 
-def test_block_if_with_logical_symbols_under_fanuc_suggests_mazak_and_names_mitsubishi() -> None:
+def test_block_if_with_logical_symbols_under_fanuc_suggests_mazak_and_names_mitsubishi(tmp_path: Path) -> None:
     text = lines("#1=7", "IF [[#1 GT 5] || [#1 LT 0]] THEN", "#2=10", "ELSE", "#2=20", "ENDIF", "M30")
-    [message] = suggestions(text)
+    [message] = suggestions(tmp_path, text)
     assert "add (cncmacro: dialect=mazak-eia)" in message
     assert "the profile mitsubishi-m70 (Mitsubishi M70/M80 user macro) reads IF..THEN" in message
     assert final(text, MAZAK) == {1: 7, 2: 10}  # [7 GT 5] holds

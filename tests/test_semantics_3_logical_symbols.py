@@ -12,7 +12,7 @@ from __future__ import annotations
 import pytest
 
 from cncmacro.syntax.block_parser import parse_block
-from cncmacro.syntax.nodes import Binary, Bracket, If
+from cncmacro.syntax.nodes import Assign, Binary, Bracket, If
 from running import lines, run
 from static_helpers import at, check, coded
 
@@ -32,11 +32,12 @@ def outcome(text: str, dialect: str) -> tuple[str, dict[int, float], int | None]
 
 def test_3_logical_symbols_are_read_as_operators_of_their_words_level() -> None:
     [s] = parse_block("IF [[#1 GT 0] && [#2 LT 5]] GOTO 10").statements
-    assert isinstance(s, If) and isinstance(s.cond, Bracket)
-    joined = s.cond.inner
+    assert isinstance(s, If) and isinstance(s.condition, Bracket)
+    joined = s.condition.inner
     assert isinstance(joined, Binary) and joined.op == "&&"
     # && binds as AND does, tighter than ||: 1 || 2 && 6 is 1 || [2 && 6]
     [a] = parse_block("#5=1 || 2 && 6").statements
+    assert isinstance(a, Assign)
     value = a.value
     assert isinstance(value, Binary) and value.op == "||"
     assert isinstance(value.right, Binary) and value.right.op == "&&"
