@@ -12,6 +12,7 @@ from __future__ import annotations
 import pytest
 
 from cncmacro.syntax.block_parser import parse_block
+from cncmacro.syntax.formatting import SPACED, FormatOptions, format_lines
 from cncmacro.syntax.nodes import Assign, Binary, Bracket, If
 from running import lines, run
 from static_helpers import at, check, coded
@@ -127,3 +128,10 @@ def test_3_logical_symbols_are_refused_on_every_other_profile(profile: str) -> N
 def test_3_logical_symbols_refused_is_said_in_chinese() -> None:
     [d, *_] = coded(check(JOINED, FANUC, locale="zh-CN"), "dialect-feature")
     assert d.message.startswith("“&&”不是 FANUC 0i Custom Macro B 的运算符") and "请写作 AND" in d.message
+
+
+def test_3_logical_symbols_are_spaced_by_the_formatter_as_their_words() -> None:
+    lines_ = ["IF[[#1GT0]&&[#2LT5]]GOTO10", "#5=1||2&&6"]
+    spaced = format_lines(lines_, 0, 1, FormatOptions(spacing=SPACED))
+    assert spaced == {0: "IF [[#1 GT 0] && [#2 LT 5]] GOTO 10", 1: "#5=1 || 2 && 6"}
+    assert spaced[0] == format_lines(["IF[[#1GT0]AND[#2LT5]]GOTO10"], 0, 0, FormatOptions())[0].replace("AND", "&&")
