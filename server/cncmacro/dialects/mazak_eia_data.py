@@ -57,7 +57,7 @@ def _m98() -> CodeDoc:
         "",
         "Subprogram call: M98 P(program number, up to 8 digits) L(how many times); only L gives the count. "
         "Local variables keep their level",
-        "子程序调用：M98 P（程序号，最多8位）L（调用次数）；调用次数只由L指定。局部变量的级别不变",
+        "子程序调用：M98 P（程序号，最多8位）L（调用次数，只由L指定）；局部变量的级别不变",
     )
 
 
