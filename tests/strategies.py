@@ -11,7 +11,7 @@ from cncmacro.syntax.keywords import ABBREVIABLE
 SPACE = st.sampled_from(["", "", " ", "  ", "\t"])
 FUNCS = ["SIN", "COS", "TAN", "ASIN", "ACOS", "SQRT", "ABS", "LN", "EXP", "ROUND", "FIX", "FUP", "BIN", "BCD"]
 RELOPS = ["EQ", "NE", "GT", "GE", "LT", "LE", "==", "!=", "<", ">", "<=", ">="]
-BINOPS = ["+", "-", "*", "/", "AND", "OR", "XOR", "MOD"]
+BINOPS = ["+", "-", "*", "/", "AND", "OR", "XOR", "MOD", "&&", "||"]
 
 
 @st.composite
@@ -74,7 +74,7 @@ def condition(draw) -> str:
     if draw(st.booleans()):
         return single
     other = f"[{draw(expr(3))} {draw(st.sampled_from(RELOPS))} {draw(expr(3))}]"
-    return f"[{single} {draw(st.sampled_from(['AND', 'OR', 'XOR']))} {other}]"
+    return f"[{single} {draw(st.sampled_from(['AND', 'OR', 'XOR', '&&', '||']))} {other}]"
 
 
 @st.composite

@@ -163,7 +163,7 @@ def test_unreadable_and_binary_files_exit_2(tmp_path):
 
 
 def test_bad_machine_file_exits_2(tmp_path):
-    (tmp_path / ".cncmacro.toml").write_text("dialect = 'mazak'\n", encoding="utf-8")
+    (tmp_path / ".cncmacro.toml").write_text("dialect = 'okuma'\n", encoding="utf-8")
     f = tmp_path / "O0001.nc"
     f.write_text("M30\n", encoding="utf-8")
     code, _, err = cli("run", str(f))

@@ -213,4 +213,4 @@ def test_fanuc_0i_finds_the_block_ifs_and_suggests_mitsubishi() -> None:
     assert features == {p.name for p in M70.iterdir() if p.suffix == ".nc"}
     suggestions = [d for d in found if d["code"] == "profile-suggestion"]
     assert {Path(d["file"]).name for d in suggestions} == features  # once per file
-    assert all("dialect=mitsubishi-m70" in d["message"] and "Mazak" in d["message"] for d in suggestions)
+    assert all("dialect=mitsubishi-m70" in d["message"] and "mazak-eia" in d["message"] for d in suggestions)

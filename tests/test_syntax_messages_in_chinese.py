@@ -343,8 +343,8 @@ def test_1_text_and_blocks_check_says_what_is_wrong_with_a_machine_file_in_chine
     (tmp_path / "O0001.nc").write_text("O0001\nM30\n", encoding="utf-8")
     machine = tmp_path / ".cncmacro.toml"
     for toml, en, zh in (
-        ('dialect = "mazak"\n', f"'dialect' must be {choices_text()} (not 'mazak') (line 1)",
-         f"'dialect' 必须是 {choices_text(zh=True)}（不能是 'mazak'）（第 1 行）"),
+        ('dialect = "okuma"\n', f"'dialect' must be {choices_text()} (not 'okuma') (line 1)",
+         f"'dialect' 必须是 {choices_text(zh=True)}（不能是 'okuma'）（第 1 行）"),
         ("[severity]\nsyntax = 3\n",
          "'severity.syntax' must be one of error, warning, information, hint, off (not 3) (line 2)",
          "'severity.syntax' 必须是 error, warning, information, hint, off 之一（不能是 3）（第 2 行）"),

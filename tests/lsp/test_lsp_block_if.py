@@ -1,6 +1,6 @@
 """The block IF of ``mitsubishi-m70`` in the editor, over stdio (docs/semantics.md §4 "Block IF",
 docs/profiles.md "mitsubishi-m70"): its branches fold, and a FANUC file that writes it gets one
-``profile-suggestion`` naming ``mitsubishi-m70`` (and Mazak) whose quick fix makes the file clean.
+``profile-suggestion`` naming ``mitsubishi-m70`` (and ``mazak-eia``) whose quick fix makes the file clean.
 Read as fanuc-0i, the same text has three ``dialect-feature`` errors instead."""
 
 from __future__ import annotations
@@ -47,7 +47,8 @@ async def test_block_if_under_fanuc_suggests_mitsubishi_once_and_its_comment_mak
     [hint] = [d for d in diags if d.code == "profile-suggestion"]
     assert [d.range.start.line for d in features] == [3, 6, 9]
     assert "Mitsubishi M70/M80" in hint.message and "lines 4, 7, 10" in hint.message
-    assert "Mazak controls also read IF..THEN / ELSE / ENDIF blocks" in hint.message
+    also = "the profile mazak-eia (Mazak EIA/ISO (Matrix, Smooth)) reads IF..THEN / ELSE / ENDIF blocks too"
+    assert also in hint.message
     assert hint.range.start.line == 3 and hint.severity == types.DiagnosticSeverity.Information
     actions = await actions_for(fanuc_en, uri, hint)
     comment = next(a for a in actions if "(cncmacro: dialect=mitsubishi-m70)" in a.title)

@@ -121,9 +121,17 @@ class Dialect:
     if_governs_block: bool = False
     # §4 the block form of IF: ``IF [cond] THEN`` alone on its line runs the blocks up to its
     # ``ELSE`` when the condition holds, else those after the ``ELSE`` up to its ``ENDIF``; block
-    # IFs nest (Mitsubishi M70/M80; Mazak's EIA programs have it too); elsewhere IF..THEN alone,
+    # IFs nest (Mitsubishi M70/M80, Mazak EIA/ISO); elsewhere IF..THEN alone,
     # ELSE and ENDIF are ``dialect-feature`` errors and the run stops there with alarm 114
     block_if: bool = False
+    # §3 AND and OR may be spelled ``&&`` and ``||`` (Mazak's EIA/ISO programs:
+    # ``IF [[#1 GT 0] && [#2 LT 5]] GOTO 10``); elsewhere they are ``dialect-feature`` errors and the
+    # run stops at the block with alarm 114
+    logical_symbols: bool = False
+    # where a profile suggestion tries this profile among the others (lower first, then by name):
+    # of two profiles that read a file alike, the one that reads less beyond it is named (a file
+    # with only block IFs gets mitsubishi-m70 rather than mazak-eia, which also reads && and ||)
+    suggestion_rank: int = 0
     # §1 §8 the manual documents the comma words ,C ,R (chamfer, corner radius) and ,A (angle) on a
     # move (FANUC, Haas); without it they are read and run alike but earn a ``corner-word`` warning
     corner_words: bool = True

@@ -30,10 +30,24 @@ from ..dialects.alarms import (
 )
 from ..planner.alarms import UnknownValue
 from ..planner.numbers import bcd, bin_, fix, fup, round_half_away, to_increment
-from ..syntax.nodes import Binary, Bracket, Expr, FunctionCall, IndirectVar, NamedVar, Number, Relation, Unary, Var
+from ..syntax.nodes import (
+    CONDITION_JOINS,
+    LOGICAL_SYMBOLS,
+    Binary,
+    Bracket,
+    Expr,
+    FunctionCall,
+    IndirectVar,
+    NamedVar,
+    Number,
+    Relation,
+    Unary,
+    Var,
+)
 from .alarms import MacroAlarm, raiser
 from .unknown_values import UNKNOWN, kept_extended
 from .variables import named_number
+from .words import logical_symbol_refused
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -309,7 +323,9 @@ class ExpressionCompiler:
         first = self._value(x)
         apply: list[tuple[Callable[[Value, Value], Value], Getter]] = []
         for op, b in reversed(steps):
-            fn = _STEP.get(op)
+            if op in LOGICAL_SYMBOLS and not self.dialect.logical_symbols:
+                return raiser(FORMAT, logical_symbol_refused(self.dialect, op))
+            fn = _STEP.get(LOGICAL_SYMBOLS.get(op, op))
             if fn is None:
                 return raiser(FORMAT, detail(f"unknown operator {op}", f"未知的运算符 {op}"))
             apply.append((fn, b))
@@ -324,6 +340,10 @@ class ExpressionCompiler:
 
     def _binary(self, node: Binary) -> Getter:
         op = node.op
+        if op in LOGICAL_SYMBOLS:  # && and || are AND and OR where the control reads them
+            if not self.dialect.logical_symbols:
+                return raiser(FORMAT, logical_symbol_refused(self.dialect, op))
+            op = LOGICAL_SYMBOLS[op]
         rc, rv = self.constant(node.right)
         left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local" and not self.watch
         if op in ("+", "-", "*") and left_local and rc:
@@ -429,12 +449,17 @@ class ExpressionCompiler:
             node = node.inner
         if isinstance(node, Relation):
             return self._relation(node)
-        if isinstance(node, Binary) and node.op in ("AND", "OR", "XOR") and _has_relation(node):
+        if isinstance(node, Binary) and node.op in CONDITION_JOINS and _has_relation(node):
+            op = node.op
+            if op in LOGICAL_SYMBOLS:
+                if not self.dialect.logical_symbols:
+                    return raiser(FORMAT, logical_symbol_refused(self.dialect, op))
+                op = LOGICAL_SYMBOLS[op]
             a = self._condition(node.left)
             b = self._condition(node.right)
-            if node.op == "AND":
+            if op == "AND":
                 return lambda m: a(m) and b(m)
-            if node.op == "OR":
+            if op == "OR":
                 return lambda m: a(m) or b(m)
             return lambda m: a(m) != b(m)
         return raiser(

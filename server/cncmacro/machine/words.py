@@ -29,7 +29,7 @@ from ..bilingual import Detail, detail
 from ..dialects import get_dialect
 from ..dialects.alarms import DECIMAL_POINT, FORMAT, IMPROPER_G_CODE
 from ..planner.modal_groups import extra_offset_codes
-from ..syntax.nodes import Number, Word
+from ..syntax.nodes import LOGICAL_SYMBOLS, Number, Word
 from .word_sets import WordSet
 
 if TYPE_CHECKING:
@@ -141,10 +141,8 @@ def if_block_refused(dialect: Dialect, words: bool) -> Detail:
     )
 
 
-# the controls that read the block form of IF, named where another control refuses it, and those
-# of them that have no profile yet, which a profile suggestion names beside the one it offers
+# the controls that read the block form of IF, named where another control refuses it
 BLOCK_IF_CONTROLS = detail("Mitsubishi M70/M80 and Mazak controls", "三菱 M70/M80 与马扎克系统")
-BLOCK_IF_WITHOUT_PROFILE = detail("Mazak", "马扎克")
 
 
 def block_if_refused(dialect: Dialect, word: str) -> Detail:
@@ -158,6 +156,24 @@ def block_if_refused(dialect: Dialect, word: str) -> Detail:
         "around the blocks",
         f"{word}：块形式 IF [...] THEN / ELSE / ENDIF 不是 {dialect.title} 的宏语句，执行到此程序段时{alarm.zh}"
         f"（{controls.zh}可以执行）；在此系统上请用 IF [相反条件] GOTO n 跳过这些程序段",
+    )
+
+
+# the controls that read AND and OR spelled ``&&`` and ``||``, named where another control refuses them
+LOGICAL_SYMBOL_CONTROLS = detail("Mazak controls in EIA/ISO", "马扎克系统的 EIA/ISO 程序")
+
+
+def logical_symbol_refused(dialect: Dialect, symbol: str) -> Detail:
+    """What to say of ``&&`` or ``||`` on a dialect that does not read them
+    (``Dialect.logical_symbols`` off): the word to write instead."""
+    alarm = dialect.alarm_said(FORMAT)
+    word = LOGICAL_SYMBOLS[symbol]
+    controls = LOGICAL_SYMBOL_CONTROLS
+    return detail(
+        f"'{symbol}' is not an operator of {dialect.title}, which stops at this block with {alarm} "
+        f"({controls} read it as {word}); write {word}",
+        f"“{symbol}”不是 {dialect.title} 的运算符，执行到此程序段时{alarm.zh}（{controls.zh}读作 {word}）；"
+        f"请写作 {word}",
     )
 
 

@@ -76,12 +76,14 @@ _MACRO_WORDS = {
     ).split()},
     **FULL_WORD,
 }  # fmt: skip
-_TOKEN = re.compile(r"[ \t]*(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|([A-Za-z]{2,})|(==|!=|<=|>=|[-+*/\[\]=<>#])|([A-Za-z]))")
+_TOKEN = re.compile(
+    r"[ \t]*(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|([A-Za-z]{2,})|(==|!=|<=|>=|&&|\|\||[-+*/\[\]=<>#])|([A-Za-z]))"
+)
 _BRACKET_NAME = re.compile(r"\[(?=[^\[\]#()\s]*[^\[\]#()\s\d.+\-*/])(?:[^\[\]#()\s.]|\.(?=[./\\]))[^\[\]#()\s]*\]")
 _FUNCS = frozenset("SIN COS TAN ASIN ACOS SQRT ABS LN EXP ROUND FIX FUP BIN BCD".split())
 _RELOPS = frozenset("EQ NE GT GE LT LE == != <= >= < >".split())
-_MULOPS = frozenset(("*", "/", "AND", "MOD"))
-_ADDOPS = frozenset(("+", "-", "OR", "XOR"))
+_MULOPS = frozenset(("*", "/", "AND", "MOD", "&&"))
+_ADDOPS = frozenset(("+", "-", "OR", "XOR", "||"))
 _MAX_TOKENS = 200
 
 

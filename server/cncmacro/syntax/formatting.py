@@ -24,7 +24,7 @@ from typing import Any
 
 from .block_parser import MAX_BLOCK_CHARS, parse_block
 from .lines import prepare
-from .nodes import Block, If
+from .nodes import LOGICAL_SYMBOLS, Block, If
 from .tokens import CodeToken, code_tokens
 
 SPACED = "spaced"
@@ -53,7 +53,8 @@ class _Line:
 
 
 def _word_operator(t: CodeToken) -> bool:
-    return t.kind in _OPERATORS and t.text.strip().isalpha()
+    """An operator that is a word (``AND``, ``GT``), or ``&&`` / ``||`` that stand for one: spaced."""
+    return t.kind in _OPERATORS and (t.text.strip().isalpha() or t.text.strip() in LOGICAL_SYMBOLS)
 
 
 def _item_starts(block: Block) -> set[int]:

@@ -20,6 +20,7 @@ from ..bilingual import Detail, detail
 from .assemble import Items
 from .keywords import full_word, pattern
 from .nodes import (
+    CONDITION_JOINS,
     Abbreviation,
     Assign,
     Binary,
@@ -465,17 +466,17 @@ def _check_condition(cond: Bracket) -> None:
 
 
 def _joined_conditions(e: Expr) -> list[Bracket] | None:
-    """The bracketed conditions that AND, OR and XOR join in ``e`` (``[a] AND [b] OR [c]``), or
+    """The bracketed conditions that AND, OR and XOR (or ``&&``, ``||``) join in ``e`` (``[a] AND [b] OR [c]``), or
     None when ``e`` is not such a chain. A loop, not recursion: a chain may be long."""
     out: list[Bracket] = []
     pending: list[Expr] = [e]
     while pending:
         x = pending.pop()
-        if isinstance(x, Binary) and x.op in ("AND", "OR", "XOR"):
+        if isinstance(x, Binary) and x.op in CONDITION_JOINS:
             for side in (x.right, x.left):
                 if isinstance(side, Bracket) and _is_bracketed_condition(side):
                     out.append(side)
-                elif isinstance(side, Binary) and side.op in ("AND", "OR", "XOR"):
+                elif isinstance(side, Binary) and side.op in CONDITION_JOINS:
                     pending.append(side)
                 else:
                     return None
@@ -489,7 +490,7 @@ def _is_bracketed_condition(e: Expr) -> bool:
     if not isinstance(e, Bracket):
         return False
     inner = e.inner
-    return isinstance(inner, Relation) or (isinstance(inner, Binary) and inner.op in ("AND", "OR", "XOR"))
+    return isinstance(inner, Relation) or (isinstance(inner, Binary) and inner.op in CONDITION_JOINS)
 
 
 def _output_parts(tok: _Tok) -> tuple[OutputPart, ...]:

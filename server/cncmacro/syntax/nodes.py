@@ -76,9 +76,18 @@ class Unary:
     end: int
 
 
+# AND and OR spelled with symbols (Mazak's EIA/ISO programs: ``[[#1 GT 0] && [#2 LT 5]]``): a
+# ``Binary`` keeps the symbol as its op, which means the word it stands for; a control without them
+# refuses them (``Dialect.logical_symbols``, docs/semantics.md §3)
+LOGICAL_SYMBOLS = {"&&": "AND", "||": "OR"}
+# the operators that join bracketed conditions in an IF or WHILE condition
+CONDITION_JOINS = frozenset(("AND", "OR", "XOR", *LOGICAL_SYMBOLS))
+
+
 @dataclass(slots=True)
 class Binary:
-    """``a op b`` with op one of ``+ - * / AND OR XOR MOD`` (upper case)."""
+    """``a op b`` with op one of ``+ - * / AND OR XOR MOD`` (upper case), or ``&&`` / ``||`` as
+    written (``LOGICAL_SYMBOLS``: AND and OR spelled as some controls read them)."""
 
     op: str
     left: Expr

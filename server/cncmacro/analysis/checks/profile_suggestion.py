@@ -15,8 +15,11 @@ the program has, is the other profile's signature and gets the same suggestion. 
 FANUC tool-wear programs write (docs/profiles.md).
 
 The block form of IF (``IF [cond] THEN`` / ``ELSE`` / ``ENDIF``) under a profile without it is such
-a feature: the suggestion names the first profile that reads it (``mitsubishi-m70``) and says that
-Mazak controls, which have no profile yet, read it too.
+a feature: the suggestion names the first profile that reads it (``mitsubishi-m70``) and the other
+profiles that read it too (``mazak-eia``). Profiles are tried in ``SUGGESTION_ORDER``: by their
+``Dialect.suggestion_rank``, then by name, so that of two profiles that read a file alike the one
+that reads less beyond it is named; ``&&`` and ``||`` (or block IFs with them) are read only by
+``mazak-eia``, which such a file gets.
 
 A third sign is a program number written with more digits than ``M98 P`` names a program with
 under the profile in force: ``O00012345`` is the 8-digit program numbering of a 30i (or of a
@@ -37,18 +40,19 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-from ...bilingual import pick
-from ...dialects import DIALECTS, Dialect
+from ...bilingual import Detail, detail, pick
+from ...dialects import BY_NAME, DIALECTS, Dialect
 from ...dialects.registry import lathe_forms
 from ...library.machine_file import MachineSettings
 from ...library.profiles import machine_profile
-from ...machine.words import BLOCK_IF_WITHOUT_PROFILE
 from ...syntax.program import Program
 from ..diagnostics import Diagnostic, diagnostic
 from .lathe_signs import LatheEvidence, lathe_evidence
 from .line_facts import LineFacts
 
 CODE = "profile-suggestion"
+# the order in which other profiles are tried: rank first, the registry's order (by name) within a rank
+SUGGESTION_ORDER: tuple[str, ...] = tuple(sorted(DIALECTS, key=lambda name: BY_NAME[name].suggestion_rank))
 # the findings that say "this control lacks it": syntax or G codes another control has
 FEATURE_CODES = ("dialect-feature", "unknown-g-code")
 
@@ -58,7 +62,7 @@ def suggested_profile(
     dialect: Dialect,
     settings: MachineSettings,
     lines: list[int] | None = None,
-    among: tuple[str, ...] = DIALECTS,
+    among: tuple[str, ...] = SUGGESTION_ORDER,
 ) -> Dialect | None:
     """The first other profile (of ``among``) under which ``program`` has no
     ``dialect-feature`` or ``unknown-g-code`` finding, or None when no profile reads it all.
@@ -202,18 +206,34 @@ def suggestion(
     where = ", ".join(str(n) for n in lines[:5]) + (" …" if len(lines) > 5 else "")
     where_zh = "、".join(str(n) for n in lines[:5]) + ("……" if len(lines) > 5 else "")
     word = "line" if len(lines) == 1 else "lines"
-    block_if = other.block_if and any(program.blocks[n - 1].branch_marker() for n in lines)
-    also = BLOCK_IF_WITHOUT_PROFILE
+    also = _block_if_elsewhere(other, dialect) if any(program.blocks[n - 1].branch_marker() for n in lines) else None
     message = pick(
         locale,
         f"This file uses what {other.title} has and {dialect.title} lacks ({word} {where}). If it was written for "
         f'that control, add (cncmacro: dialect={other.name}) to its first lines, or set base = "{other.name}" '
-        "in .cncmacro.toml" + (f"; {also} controls also read IF..THEN / ELSE / ENDIF blocks" if block_if else ""),
+        "in .cncmacro.toml" + (f"; {also}" if also else ""),
         f"此文件用到了 {other.title} 才有而 {dialect.title} 没有的功能（第 {where_zh} 行）。若程序是为该系统编写的，"
         f'请在文件开头加上 (cncmacro: dialect={other.name})，或在 .cncmacro.toml 中设定 base = "{other.name}"'
-        + (f"；{also.zh}系统也能执行 IF..THEN / ELSE / ENDIF 块" if block_if else ""),
+        + (f"；{also.zh}" if also else ""),
     )
     return diagnostic(file, *at, CODE, message)
+
+
+def _block_if_elsewhere(other: Dialect, dialect: Dialect) -> Detail | None:
+    """What a suggestion of ``other`` for a file with block IFs adds: the other profiles that read
+    them too (English, Chinese), or None where ``other`` lacks them or no other profile has them."""
+    if not other.block_if:
+        return None
+    also = [BY_NAME[n] for n in SUGGESTION_ORDER if BY_NAME[n].block_if and n not in (other.name, dialect.name)]
+    if not also:
+        return None
+    names = " and ".join(f"{d.name} ({d.title})" for d in also)
+    names_zh = "和".join(f"{d.name}（{d.title}）" for d in also)
+    if len(also) == 1:
+        return detail(f"the profile {names} reads IF..THEN / ELSE / ENDIF blocks too",
+                      f"配置 {names_zh}也能执行 IF..THEN / ELSE / ENDIF 块")  # fmt: skip
+    return detail(f"the profiles {names} read IF..THEN / ELSE / ENDIF blocks too",
+                  f"配置 {names_zh}也能执行 IF..THEN / ELSE / ENDIF 块")  # fmt: skip
 
 
 def _header_hint(header: tuple[Dialect, int, int, int], file: str, dialect: Dialect, locale: str) -> Diagnostic:

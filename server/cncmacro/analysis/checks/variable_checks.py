@@ -4,12 +4,13 @@
 a literal ``#n`` (or ``#[constant]``) whose number the dialect lacks is ``variable-number``
 (alarm 115), reading a write-only system variable is ``write-only``, more than five nested
 brackets in what the interpreter compiles as one value is ``bracket-depth`` (alarm 118), and a
-C-style relation (``==``, ``<``) where the dialect has none is ``dialect-feature``, and so is
-gsk980tdi's ``#9xxx`` indirection on a dialect without it. A name ``[#_NAME[n]]`` is judged
-by the interpreter's ``named_number`` (an unknown name or a bad literal subscript is
-``variable-number``, alarm 1098/1099), and is ``dialect-feature`` where the dialect has no names;
-a function call by ``call_problem`` (a form no dialect has is ``syntax``, a FANUC 30i function
-elsewhere ``dialect-feature``, alarm 114).
+C-style relation (``==``, ``<``) where the dialect has none is ``dialect-feature``, and so are
+``&&`` and ``||`` where the dialect does not read them for AND and OR (Mazak's), and gsk980tdi's
+``#9xxx`` indirection on a dialect without it. A name ``[#_NAME[n]]`` is judged by the
+interpreter's ``named_number`` (an unknown name or a bad literal subscript is ``variable-number``,
+alarm 1098/1099), and is ``dialect-feature`` where the dialect has no names; a function call by
+``call_problem`` (a form no dialect has is ``syntax``, a FANUC 30i function elsewhere
+``dialect-feature``, alarm 114).
 ``check_write`` judges the target of an assignment: ``#0`` and read-only system variables are
 ``write-protected`` (alarm 116). Variable classes come from the interpreter's ``VariableKinds``
 and access rights from the dialect tables, never from a list of our own.
@@ -22,8 +23,21 @@ from ...dialects.alarms import BRACKET_NESTING, FORMAT, VARIABLE_NUMBER, WRITE_P
 from ...machine.alarms import MacroAlarm
 from ...machine.expressions import MAX_BRACKETS, bracket_depth, call_problem
 from ...machine.variables import named_number
+from ...machine.words import logical_symbol_refused
 from ...planner.numbers import round_half_away
-from ...syntax.nodes import Binary, Bracket, Expr, FunctionCall, IndirectVar, NamedVar, Number, Relation, Unary, Var
+from ...syntax.nodes import (
+    LOGICAL_SYMBOLS,
+    Binary,
+    Bracket,
+    Expr,
+    FunctionCall,
+    IndirectVar,
+    NamedVar,
+    Number,
+    Relation,
+    Unary,
+    Var,
+)
 from .line_facts import Finding, LineContext, alarm_message, finding
 
 
@@ -47,6 +61,8 @@ def scan_value(node: Expr, ctx: LineContext, out: list[Finding], depth_checked: 
         if n.__class__ is Var:
             _check_read(n.number, n.start, n.end, ctx, out)
         elif n.__class__ is Binary:
+            if n.op in LOGICAL_SYMBOLS and not ctx.dialect.logical_symbols:
+                _refuse_logical_symbol(n, ctx, out)
             push(n.left)
             push(n.right)
         elif n.__class__ is Bracket:
@@ -234,6 +250,12 @@ def _check_call(node: FunctionCall, ctx: LineContext, out: list[Finding]) -> Non
             pick(ctx.locale, f"{message} ({alarm})", f"{in_language(message, True)}（{alarm.zh}）"),
         )
     )
+
+
+def _refuse_logical_symbol(node: Binary, ctx: LineContext, out: list[Finding]) -> None:
+    """``&&`` or ``||`` on a dialect that does not read them: marked between its two operands."""
+    text = logical_symbol_refused(ctx.dialect, node.op)
+    out.append(finding(node.left.end, node.right.start, "dialect-feature", pick(ctx.locale, text, text.zh)))
 
 
 def _check_relation(node: Relation, ctx: LineContext, out: list[Finding]) -> None:
