@@ -68,7 +68,7 @@ demo: $(VENV)/.installed
 	@$(VENV)/bin/cncmacro check tests/data/O0999_broken.nc || echo "(cncmacro check exits with status 1 when it finds mistakes)"
 
 # Every test, after set-up, with the network cut off where this machine allows it (tests/offline):
-# lint, types and the workflows (actionlint); then three lanes side by side, since each waits much of its time on a server
+# lint, types and the workflows (actionlint) beside three lanes side by side, since each waits much of its time on a server
 # or a browser: the Python suite but the language server's tests; the oldest and the newest
 # Python (tests/other_pythons.py), the debug adapter through a real DAP client, the toolpath's
 # plot on real runs; the .vsix built, checked as a release would publish it with the Python
@@ -88,8 +88,8 @@ test:
 	echo "[make test] all, set-up included: $$(($$(date +%s) - start)) s"; exit $$status
 
 .PHONY: test-phase test-lint test-python test-pythons-dap test-editor
-test-phase: test-lint
-	$(MAKE) --no-print-directory -k -j3 --output-sync=target test-python test-pythons-dap test-editor
+test-phase:
+	$(MAKE) --no-print-directory -k -j4 --output-sync=target test-lint test-python test-pythons-dap test-editor
 
 test-lint:
 	$(VENV)/bin/ruff check server tests benchmarks client/scripts
