@@ -74,8 +74,8 @@ demo: $(VENV)/.installed
 # plot on real runs; the .vsix built, checked as a release would publish it with the Python
 # package (client/scripts/release_check.py) and published to local stand-ins of the registries
 # (tests/release), and tested in a real VS Code, two files at a time, each with
-# its own code-server, browser and workspace (screenshots in test-output/editor/). The language
-# server's tests (tests/lsp) end the second lane. Each step prints its time.
+# its own code-server, browser and workspace (screenshots in test-output/editor/), then the
+# language server's tests (tests/lsp). Each step prints its time.
 # `make test OFFLINE=` runs the test phase with the network.
 OFFLINE ?= tests/offline
 TIMED := tests/timed
@@ -105,13 +105,13 @@ test-python:
 test-pythons-dap:
 	$(TIMED) "other pythons" $(PY) tests/other_pythons.py --quick
 	$(TIMED) "dap and plot" node --test tests/dap/ tests/client/
-	$(TIMED) "pytest tests/lsp" $(PY) -m pytest -p no:cacheprovider tests/lsp
 
 test-editor:
 	$(TIMED) package env PIP_NO_INDEX=1 PIP_FIND_LINKS=$(CURDIR)/$(WHEELS) PYTHON=$(PY) npm run --silent package
 	$(TIMED) "release check" $(PY) client/scripts/release_check.py --vsix cncmacro.vsix --dist .cache/dist
 	$(TIMED) publish env PYTHON=$(PY) CNCMACRO_DIST=.cache/dist node --test tests/release/
 	$(TIMED) editor timeout 900 node --test --test-concurrency=2 tests/editor/
+	$(TIMED) "pytest tests/lsp" $(PY) -m pytest -p no:cacheprovider tests/lsp
 
 # The everyday loop (docs/development.md), under 2 minutes on 2 cores: lint, types, the Python
 # suite but its slow parts (the language server over stdio, the hardening storms; both run in
