@@ -18,6 +18,7 @@ thread block (PS0050), more blocks than GSK's 200. Nothing here runs on a profil
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from ...bilingual import Detail, detail, pick
@@ -46,14 +47,24 @@ class _Read:
     unknown: set[str] = field(default_factory=set)
     gs: list[float] = field(default_factory=list)
     g_unknown: bool = False
-    words: dict[str, Word] = field(default_factory=dict)
+
+
+_PLAIN_WORD = re.compile(r"([A-Za-z])([+-]?(?:\d+\.?\d*|\.\d+))")
 
 
 def _read(block: Block, ctx: LineContext) -> _Read:
     r = _Read()
+    plain = block.plain
+    if plain is not None:  # literal words only (``Block.plain``): read from the text, no nodes built
+        values, gs = r.values, r.gs
+        for letter, text in _PLAIN_WORD.findall(plain):
+            if letter == "G" or letter == "g":
+                gs.append(float(text))
+            else:
+                values[letter.upper()] = float(text)
+        return r
     for w in block.words:
         known, value = (False, None) if w.value is None else ctx.values.constant(w.value)
-        r.words.setdefault(w.letter, w)
         if w.letter == "G":
             if known and value is not None:
                 r.gs.append(value)
@@ -160,7 +171,7 @@ class _Unit:
         return min(i.start for i in items), max(i.end for i in items)
 
     def mark(self, line: int, block: Block, r: _Read, f: CycleFinding, code: str) -> None:
-        w = r.words.get(f.letter) if f.letter else None
+        w = block.word(f.letter) if f.letter else None
         start, end = (w.start, w.end) if w is not None else self.whole(block)
         self.add(line, start, end, code, f.message, f.alarm, f.sure)
 
@@ -204,7 +215,7 @@ class _Unit:
         lasts = [] if first is None else [x for x in program.label_lines(int(q), unit) if x >= first]
         if first is None or not lasts:
             letter, label = ("P", p) if first is None else ("Q", q)
-            w = r.words[letter]
+            w = _word(block, letter)
             message = detail(f"G{g:g}: no block N{label:g} in this program for its {letter}",
                              f"G{g:g}：本程序中没有其 {letter} 指定的程序段 N{label:g}")  # fmt: skip
             self.add(line, w.start, w.end, "cycle-shape", message, A.CYCLE_BLOCK_NOT_FOUND,
@@ -214,7 +225,7 @@ class _Unit:
         for letter, label in (("P", p), ("Q", q)):
             count = len(program.label_lines(int(label), unit))
             if count > 1:
-                w = r.words[letter]
+                w = _word(block, letter)
                 message = detail(f"G{g:g}: N{label:g} labels {count} blocks of this program; the shape's {letter} "
                                  "should name one (the GSK980TDi manual forbids it; FANUC takes the first after "
                                  "the cycle block)",
@@ -295,8 +306,9 @@ class _Unit:
         m = r.values.get("M")
         if m in (98.0, 99.0):
             calls.append(("M", m))
+        block = self.program.blocks[at]
         for letter, c in calls:
-            w = r.words[letter]
+            w = _word(block, letter)
             message = detail(f"{letter}{c:02g} in the shape of G{g:g}: M98, M99, G65 and G66 are not allowed there",
                              f"G{g:g} 的形状程序中有 {letter}{c:02g}：其中不允许 M98、M99、G65、G66")  # fmt: skip
             self.add(at, w.start, w.end, "cycle-shape", message, A.SHAPE_COMMAND, K.SHAPE_COMMAND in rules.surely)
@@ -306,7 +318,7 @@ class _Unit:
         for c in r.gs:
             if c in allowed or c in (65.0, 66.0):
                 continue
-            w = r.words["G"]
+            w = _word(block, "G")
             message = detail(f"G{c:02g} in the shape of G{g:g}: the manual allows only G00-G05, G6.2, G6.3, G7.2, "
                              "G7.3, G40-G42 and G96-G99 there",
                              f"G{g:g} 的形状程序中有 G{c:02g}：说明书规定其中只能有 G00-G05、G6.2、G6.3、G7.2、G7.3、"
@@ -323,6 +335,13 @@ class _Unit:
                                  "没有下一个移动与之相接")  # fmt: skip
                 self.add(at, c.start, c.end, "cycle-shape", message, A.SHAPE_LAST_BLOCK,
                          K.LAST_BLOCK in self.rules.surely)  # fmt: skip
+
+
+def _word(block: Block, letter: str) -> Word:
+    """The first word of ``letter`` in ``block``, which the block's reading found there."""
+    w = block.word(letter)
+    assert w is not None
+    return w
 
 
 def _travel(at: float | None, r: _Read, absolute: str, incremental: str) -> float | None:
