@@ -146,7 +146,7 @@ class _Unit:
             block = self.program.blocks[line]
             if block.problems and block.has_error:
                 continue
-            if not block.words and not block.corners:
+            if block.plain is None and not block.words and not block.corners:  # a plain line has words
                 continue
             r = self.read(line)
             self.thread_corners(line, block, r)
@@ -256,7 +256,7 @@ class _Unit:
                 if any(not isinstance(s, Assign) for s in b.statements):
                     exact = False  # a jump or loop: the text's order is not the run's
                 continue
-            if not b.words and not b.corners:
+            if b.plain is None and not b.words and not b.corners:
                 continue
             count += 1
             sr = self.read(at)
