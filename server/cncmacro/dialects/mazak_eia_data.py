@@ -20,6 +20,7 @@ file: length, diameter, life), are to be confirmed against its programming manua
 from __future__ import annotations
 
 from . import fanuc_data as fanuc
+from .shared_data import with_m98_count_in_l
 from .tables import CodeDoc, SystemVariable
 
 # ---------------------------------------------------------------------------------------------
@@ -51,15 +52,5 @@ SYSTEM_VARIABLES: tuple[SystemVariable, ...] = (
 # G and M codes: the FANUC mill's, M98 reading P as the whole program number
 
 
-def _m98() -> CodeDoc:
-    return CodeDoc(
-        "M98",
-        "",
-        "Subprogram call: M98 P(program number, up to 8 digits) L(how many times); only L gives the count. "
-        "Local variables keep their level",
-        "子程序调用：M98 P（程序号，最多8位）L（调用次数，只由L指定）；局部变量的级别不变",
-    )
-
-
 G_CODES: tuple[CodeDoc, ...] = fanuc.G_CODES
-M_CODES: tuple[CodeDoc, ...] = tuple(_m98() if c.code == "M98" else c for c in fanuc.M_CODES)
+M_CODES: tuple[CodeDoc, ...] = with_m98_count_in_l(fanuc.M_CODES)

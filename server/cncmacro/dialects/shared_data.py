@@ -6,7 +6,9 @@ work zero offsets (#5201 + 20·n, G54–G59) alike, and give many G and M codes 
 ``fanuc_data`` and ``gsk980tdi_data`` take these rows and texts from here, sized to their own
 number of axes, beside the rows that are theirs alone; what differs stays in their modules.
 The builders of rows whose words differ by control (``modal_group_row``, ``work_coordinate_codes``,
-``signal_bits``) serve the Haas and 30i profiles too, each giving its own texts.
+``signal_bits``) serve the Haas and 30i profiles too, each giving its own texts; the M98 row of
+the controls that read P as the whole program number (``M98_COUNT_IN_L``) serves Mitsubishi's and
+Mazak's.
 """
 
 from __future__ import annotations
@@ -195,3 +197,20 @@ M99_EN: str = (
     "Return from a subprogram or macro to the block after the call (M99 Pn: to block Nn); "
     "in a main program it restarts the program"
 )
+
+
+# ---------------------------------------------------------------------------------------------
+# M98 where P is the whole program number and only L counts (Mitsubishi M70, Mazak EIA/ISO)
+
+M98_COUNT_IN_L = CodeDoc(
+    "M98",
+    "",
+    "Subprogram call: M98 P(program number, up to 8 digits) L(repeat count); the count is given in L only. "
+    "No new level of local variables",
+    "子程序调用：M98 P（程序号，最多8位）L（重复次数）；调用次数只能用L指定。局部变量不改变级别",
+)
+
+
+def with_m98_count_in_l(codes: tuple[CodeDoc, ...]) -> tuple[CodeDoc, ...]:
+    """``codes`` with their M98 row replaced by ``M98_COUNT_IN_L``."""
+    return tuple(M98_COUNT_IN_L if c.code == "M98" else c for c in codes)
