@@ -48,35 +48,51 @@ def _literal_g(w: Word) -> float | None:
 
 
 def compile_nc_block(cf: CompiledFile, block: Block, pc: int, nxt: int) -> Runner:
-    fast = _plain_motion(cf, block, nxt)
+    words = list(block.words)
+    read = _WordValues(cf)  # each word's value, read once for all below
+    fast = _plain_motion(cf, words, read, nxt)
     if fast is not None:
         return fast
-    words = list(block.words)
     dialect = cf.machine.dialect
     calls = cf.machine.settings.calls
-    value = _known_value(cf)
+    value = _known_value(read)
     call = recognise_call(words, dialect, calls, value)
     problems = validate_block(block, dialect, calls, value, call)
     if call is not None and call.kind in ("G65", "G66"):
         return _macro_call(cf, block, words, call, problems, nxt)
     if any(_literal_g(w) == 67.0 for w in words):
         rest = [w for w in words if _literal_g(w) != 67.0]
-        inner = _nc(cf, block, rest, nxt, problems, call) if rest else None
+        inner = _nc(cf, block, rest, read, nxt, problems, call) if rest else None
 
         def cancel(m: Machine, pc: int) -> int:
             m.cancel_modal_call()
             return inner(m, pc) if inner is not None else nxt
 
         return cancel
-    return _nc(cf, block, words, nxt, problems, call)
+    return _nc(cf, block, words, read, nxt, problems, call)
 
 
-def _known_value(cf: CompiledFile) -> Callable[[Word], float | None]:
+class _WordValues:
+    """``CompiledFile.word_value`` of the words of one block being compiled, each read once
+    however many of the steps below ask for it."""
+
+    def __init__(self, cf: CompiledFile) -> None:
+        self._cf = cf
+        self._read: dict[int, tuple[bool, Any]] = {}
+
+    def __call__(self, w: Word) -> tuple[bool, Any]:
+        got = self._read.get(id(w))
+        if got is None:
+            got = self._read[id(w)] = self._cf.word_value(w)
+        return got
+
+
+def _known_value(read: _WordValues) -> Callable[[Word], float | None]:
     """A word's value rounded for its address when it is known before the block runs (a literal
     or a constant expression), else None: what ``validate_block`` and ``recognise_call`` see."""
 
     def value(w: Word) -> float | None:
-        is_const, v = cf.word_value(w)
+        is_const, v = read(w)
         return v if is_const else None
 
     return value
@@ -89,23 +105,23 @@ def compile_plain_line(cf: CompiledFile, text: str, nxt: int) -> Runner | None:
     return None if plan is None else _plan_runner(cf, plan, nxt)
 
 
-def _plain_motion(cf: CompiledFile, block: Block, nxt: int) -> Runner | None:
+def _plain_motion(cf: CompiledFile, words: list[Word], read: _WordValues, nxt: int) -> Runner | None:
     """The closure for the commonest block of all, literal modal G codes, F, S and axis
-    words (``G01 X10.5 Y-3 F200``), or None for anything else."""
+    words (``G01 X10.5 Y-3 F200``), or None for anything else; ``read`` holds the words' values."""
     calls = cf.machine.settings.calls
-    words: list[tuple[str, float]] = []
-    for w in block.words:
+    plain: list[tuple[str, float]] = []
+    for w in words:
         value = w.value
         if value.__class__ is not Number:
             return None
         letter = w.letter
         if letter == "G" and calls and f"G{value.value:g}" in calls:
             return None
-        v = cf.word_value(w)[1]
+        v = read(w)[1]
         if v is None:
             continue
-        words.append((letter, v))
-    plan = cf.machine.planner.plain.plan(words)
+        plain.append((letter, v))
+    plan = cf.machine.planner.plain.plan(plain)
     return None if plan is None else _plan_runner(cf, plan, nxt)
 
 
@@ -206,14 +222,21 @@ def _program_resolver(cf: CompiledFile, p_word: Word | None, missing: BlockProbl
 
 
 def _nc(
-    cf: CompiledFile, block: Block, words: list[Word], nxt: int, problems: list[BlockProblem], call: BlockCall | None
+    cf: CompiledFile,
+    block: Block,
+    words: list[Word],
+    read: _WordValues,
+    nxt: int,
+    problems: list[BlockProblem],
+    call: BlockCall | None,
 ) -> Runner:
-    """An NC block: words evaluated, NC executed, then M98 / M99 / M30 / M00 and call codes."""
+    """An NC block: words evaluated, NC executed, then M98 / M99 / M30 / M00 and call codes
+    (``read``: the words' values)."""
     items: list[tuple[str, float | None, Any]] = []  # (letter, rounded literal, or a getter)
     dialect = cf.machine.dialect
     calls = cf.machine.settings.calls
     for w in words:
-        is_const, v = cf.word_value(w)
+        is_const, v = read(w)
         items.append((w.letter, v, None) if is_const else (w.letter, None, v))
     refused = first_alarm(problems)  # a G code the control lacks, an M code with a point
     if refused is not None:
