@@ -43,10 +43,7 @@ class WordSet:
             return rf"{head}[+-]?\d*\."
         if self.codes is not None:
             return rf"{head}[+-]?0*(?:{'|'.join(_near(c) for c in sorted(self.codes))}){_END}"
-        if self.outside is not None:
-            written = "|".join(_written(c) for c in sorted(self.outside))
-            return rf"{head}(?:-|\+?(?!0*(?:{written}){_END}))[\d.]" if written else rf"{head}[+-]?[\d.]"
-        return rf"{head}[+-]?[\d.]"
+        return rf"{head}[+-]?[\d.]"  # ``outside`` sets are looked for by ``_outside_search``
 
     def misses(self, code: float) -> bool:
         """Whether no word of the set is ``code`` written plainly (``G1``, ``G01``, ``G1.``,
@@ -69,10 +66,39 @@ def _near(code: float) -> str:
     return rf"{whole or ''}(?:\.\d*)?{below}"
 
 
-def _written(code: float) -> str:
-    """``code`` as it may be written exactly: ``54`` as 54, 54., 54.0…; ``54.1`` as 54.1, 54.10…"""
+_PLAIN_NUMBER = re.compile(r"(\d+)(?:\.(\d*))?")
+
+
+def _written(code: float) -> tuple[int, str]:
+    """``code`` as a whole number and the digits of its fraction (``54.1``: 54, "1")."""
     whole, _, frac = f"{code:g}".partition(".")
-    return rf"{whole}\.{frac}0*" if frac else rf"{whole}(?:\.0*)?"
+    return int(whole), frac
+
+
+def _outside_search(sets: list[WordSet]) -> Callable[[str], bool]:
+    """Whether a plain line holds a word of one of the ``outside`` sets: a word of its letter
+    with a minus sign, or with a number not written exactly as one of its codes (leading zeros
+    and trailing zeros of a fraction aside: ``G054.0`` is G54, ``G.5``, ``G-1`` and ``G1..2`` are
+    not written as any code). A set of hundreds of codes made into a pattern took milliseconds
+    to compile; looking its words up takes none."""
+    written = {s.letter.upper(): {_written(c) for c in s.outside or ()} for s in sets}
+    heads = "".join(sorted(x + x.lower() for x in written))
+    # each word of those letters at the line's start or after a blank: its letter, sign, digits and points
+    words = re.compile(rf"(?:^|(?<=[ \t]))([{heads}])([+-]?)([\d.]*)").findall
+
+    def search(line: str) -> bool:
+        for letter, sign, number in words(line):
+            codes = written[letter.upper()]
+            if not number:
+                continue
+            if sign == "-":
+                return True
+            m = _PLAIN_NUMBER.fullmatch(number)
+            if m is None or (int(m[1]), (m[2] or "").rstrip("0")) not in codes:
+                return True
+        return False
+
+    return search
 
 
 def plain_search(sets: Iterable[WordSet]) -> Callable[[str], bool]:
@@ -92,9 +118,14 @@ def plain_search(sets: Iterable[WordSet]) -> Callable[[str], bool]:
         else:
             quick.append("[Gg]")
     first = re.compile("|".join(quick)).search
-    full = re.compile(rf"(?:^|[ \t])(?:{'|'.join(s.pattern() for s in sets)})").search
+    outside = [s for s in sets if s.outside is not None and not s.point]
+    rest = [s for s in sets if s not in outside]
+    full = re.compile(rf"(?:^|[ \t])(?:{'|'.join(s.pattern() for s in rest)})").search if rest else None
+    other = _outside_search(outside) if outside else None
 
     def search(line: str) -> bool:
-        return first(line) is not None and full(line) is not None
+        if first(line) is None:
+            return False
+        return (full is not None and full(line) is not None) or (other is not None and other(line))
 
     return search
