@@ -9,7 +9,7 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, close_file, diagnostics_for, open_file
+from .lsp_session import FANUC, close_file, diagnostics_for, hover_text, open_file
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
@@ -50,3 +50,18 @@ async def test_logical_symbols_under_fanuc_suggest_mazak_once_and_its_comment_ma
     diags = (await diagnostics_for(fanuc_en, marked, 1)).diagnostics
     assert [d.code for d in diags if d.severity is not None and d.severity <= 3] == []
     close_file(fanuc_en, marked)
+
+
+async def test_hover_on_a_logical_symbol_describes_the_word_it_stands_for(fanuc_en: LanguageClient) -> None:
+    # line 4 is "IF [[#1 GT 0] && [#1 LT 5]] GOTO 10": the && at columns 14-15; line 7's || at 14-15
+    marked = PROGRAM.replace("%\n", "%\n(cncmacro: dialect=mazak-eia)\n", 1)  # the lines move down by one
+    uri = open_file(fanuc_en, FANUC / "mazak_hover.nc", marked)
+    both = await hover_text(fanuc_en, uri, 5, 15)
+    either = await hover_text(fanuc_en, uri, 8, 14)
+    close_file(fanuc_en, uri)
+    assert both.startswith("`&&` is AND, as this control reads it.") and "a AND b" in both
+    assert either.startswith("`||` is OR, as this control reads it.") and "a OR b" in either
+    plain = open_file(fanuc_en, FANUC / "mazak_as_fanuc.nc", PROGRAM)  # no profile comment: fanuc-0i
+    refused = await hover_text(fanuc_en, plain, 4, 14)
+    close_file(fanuc_en, plain)
+    assert refused.startswith("`&&` stands for AND on some controls; this one does not read it: write AND.")

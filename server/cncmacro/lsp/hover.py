@@ -9,7 +9,8 @@ a conditional jump; a letter of a cycle block says what it means in that block (
 first block or second, ``ide/cycle_words.py``), and the cycle's G code which block it is; an O
 program (or the P of a call) shows its title and file, or, for a program kept on the control that
 the profile documents (Haas's probing macros), what it does, the arguments it reads (those the
-call gives marked) and what it writes. Only the block under the cursor is parsed; the places come
+call gives marked) and what it writes; ``&&`` and ``||`` the word they stand for (AND, OR) and
+whether the file's control reads them so. Only the block under the cursor is parsed; the places come
 from each file's site index (``analysis/indexes/site_index.py``), in time proportional to how many
 there are.
 """
@@ -32,7 +33,19 @@ from ..ide.cycle_words import cycle_form_of, cycle_word_at
 from ..machine.alarms import MacroAlarm
 from ..machine.calls import argument_targets, letters_for_local
 from ..machine.variables import named_number
-from ..syntax.nodes import Abbreviation, Bracket, CornerWord, FunctionCall, NamedVar, Number, Unary, Var, Word
+from ..syntax.nodes import (
+    LOGICAL_SYMBOLS,
+    Abbreviation,
+    Binary,
+    Bracket,
+    CornerWord,
+    FunctionCall,
+    NamedVar,
+    Number,
+    Unary,
+    Var,
+    Word,
+)
 from ..syntax.walk import nodes_at
 from .conditional_m99 import conditional_m99_hover
 from .cursor import Cursor, cursor_at
@@ -101,6 +114,12 @@ def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
                 return text, node.start, node.end
         if isinstance(node, CornerWord):
             return corner_hover(ls, cur, node), node.start, node.end
+        if isinstance(node, Binary) and node.op in LOGICAL_SYMBOLS:
+            symbol = _symbol_at(cur.text, col, node.op)
+            if symbol is not None:
+                text = symbol_hover(ls, cur, node.op)
+                if text:
+                    return text, *symbol
     w = word_at(cur.text, col)
     if w is not None:
         text = function_hover(ls, cur, w[0])
@@ -337,6 +356,30 @@ def abbreviation_hover(ls: CncMacroServer, cur: Cursor, a: Abbreviation) -> str:
 
 def _is_g65(words: tuple[Word, ...] | list[Word]) -> bool:
     return any(w.letter == "G" and isinstance(w.value, Number) and w.value.value == 65 for w in words)
+
+
+def _symbol_at(line: str, column: int, symbol: str) -> tuple[int, int] | None:
+    """The range of ``symbol`` (``&&``, ``||``) written under ``column`` (or ending at it)."""
+    for start in (column - 2, column - 1, column):
+        if start >= 0 and line.startswith(symbol, start):
+            return start, start + len(symbol)
+    return None
+
+
+def symbol_hover(ls: CncMacroServer, cur: Cursor, symbol: str) -> str | None:
+    """``&&`` or ``||``: the word it stands for, described, and whether this control reads it so."""
+    word = LOGICAL_SYMBOLS[symbol]
+    text = function_hover(ls, cur, word)
+    if text is None:
+        return None
+    if cur.doc.dialect.logical_symbols:
+        said = pick(
+            ls.locale, f"`{symbol}` is {word}, as this control reads it.", f"`{symbol}` 即 {word}，本系统可以这样写。"
+        )
+    else:
+        en = f"`{symbol}` stands for {word} on some controls; this one does not read it: write {word}."
+        said = pick(ls.locale, en, f"`{symbol}` 在部分系统中表示 {word}；本系统不识别，应写 {word}。")
+    return f"{said}\n\n{text}"
 
 
 def function_hover(ls: CncMacroServer, cur: Cursor, name: str) -> str | None:
