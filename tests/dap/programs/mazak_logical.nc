@@ -1,0 +1,10 @@
+O2000 (MAZAK AND OR)
+#1=3
+#2=0
+IF [[#1 GT 0] && [#1 LT 5]] GOTO 10
+#2=9
+N10 WH [#2 LT 2] DO1
+IF [[#2 EQ 0] || [#2 EQ 5]] THEN #3=7
+#2=#2+1
+END1
+M30
