@@ -404,7 +404,7 @@ class StraightCuts:
 
     __slots__ = (
         "active", "ax", "ay", "cx", "cy", "d", "end", "feed", "file", "fresh", "fx", "fy", "held", "hold", "i", "j",
-        "length", "line", "mode", "off", "p", "per", "place", "plane", "px", "py", "s0", "seconds", "stage",
+        "l", "length", "line", "mode", "off", "p", "per", "place", "plane", "px", "py", "s0", "seconds", "stage",
         "start", "tx", "ty", "unit", "xy",
     )  # fmt: skip
 
@@ -434,7 +434,7 @@ class StraightCuts:
         self.xy = stage.axes == (0, 1)
         self.d, self.unit, self.plane = pending.d, pending.unit, pending.plane
         (ax, ay), (px, py) = pending.element[0], pending.element[1]
-        length = hypot(px - ax, py - ay)
+        length = self.l = hypot(px - ax, py - ay)
         self.ax, self.ay, self.px, self.py = ax, ay, px, py
         self.tx, self.ty = (px - ax) / length, (py - ay) / length
         s0 = self.s0 = pending.path[0]
@@ -486,7 +486,7 @@ class StraightCuts:
             cx, cy = px - t2y * d - t2x * r, py + t2x * d - t2y * r
             link = True
         p = self.p
-        l1 = hypot(px - self.ax, py - self.ay)
+        l1 = self.l
         if (bx - self.cx) * t1x + (by - self.cy) * t1y < -EPSILON * (l1 if l1 > 1.0 else 1.0):
             _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, _reversal_message(self.line))
         settled = self._settle(start, bx, by, cx, cy, link)
@@ -502,7 +502,7 @@ class StraightCuts:
         seconds = length * per
         p.cut_length += (settled - self.length + length) * self.unit
         self.line, self.mode, self.feed, self.start, self.end = line, mode, feed, start, end
-        self.ax, self.ay, self.px, self.py, self.tx, self.ty = px, py, ex, ey, t2x, t2y
+        self.ax, self.ay, self.px, self.py, self.tx, self.ty, self.l = px, py, ex, ey, t2x, t2y, l2
         self.cx, self.cy, self.fx, self.fy = cx, cy, fx, fy
         self.per, self.off, self.length, self.seconds = per, off, length, seconds
         self.fresh = False
