@@ -253,20 +253,22 @@ def run_straight(
                         target[i] += v
                 end = tuple(target)
                 if cutter is not None and cuts is not None:  # its record and centre path (planner/cutter_stage.py)
-                    p.clock, p.cut_length, p.rapid_length = clock, cut, rapid
                     try:
                         seconds = None if centre is not None or mode == 0.0 else cuts.cut(pc, mode, f, start, end)
-                        if seconds is None:
+                        if seconds is not None:  # joined to the cut before, whose time is put right
+                            clock += cuts.correction
+                            clock += seconds
+                            cut += cuts.cut_change
+                        else:
+                            p.clock, p.cut_length, p.rapid_length = clock, cut, rapid
                             cuts.flush()
                             p.record(path, pc, mode, start, end, centre)
-                        else:
-                            p.clock += seconds
+                            clock, cut, rapid, cutter = p.clock, p.cut_length, p.rapid_length, p.cutter
                     except MacroAlarm:
                         break  # found before anything changed: the compiled path runs the line and stops on it
                     except BaseException:
                         cuts.flush()
                         raise
-                    clock, cut, rapid, cutter = p.clock, p.cut_length, p.rapid_length, p.cutter
                     start = end
                     pc += 1
                     continue

@@ -380,6 +380,8 @@ def _straight_after_straight(
     seconds = cuts.cut(line, mode, feed, start, end)
     if seconds is None:
         return None
+    p.clock += cuts.correction
+    p.cut_length += cuts.cut_change
     cuts.flush()
     return cuts.stage.pending.path, seconds  # type: ignore[union-attr]
 
@@ -403,12 +405,13 @@ class StraightCuts:
     plain lines) has it flushed first."""
 
     __slots__ = (
-        "active", "ax", "ay", "cx", "cy", "d", "end", "feed", "file", "fresh", "fx", "fy", "held", "hold", "i", "j",
-        "l", "length", "line", "mode", "off", "p", "per", "place", "plane", "px", "py", "s0", "seconds", "stage",
-        "start", "tx", "ty", "unit", "xy",
+        "active", "ax", "ay", "correction", "cut_change", "cx", "cy", "d", "end", "feed", "file", "fresh", "fx", "fy",
+        "held", "hold", "i", "j", "l", "length", "line", "mode", "off", "p", "per", "place", "plane", "px", "py", "s0",
+        "seconds", "stage", "start", "tx", "ty", "unit", "xy",
     )  # fmt: skip
 
     def __init__(self, p: Planner, file: str, hold: bool) -> None:
+        self.s0: _Point | None = None
         self.p = p
         self.file = file
         self.hold = hold
@@ -455,8 +458,10 @@ class StraightCuts:
     def cut(self, line: int, mode: float, feed: float, start: _Point, end: _Point) -> float | None:
         """The straight cut of ``line`` from ``start`` to ``end`` after the last one: the corner
         between them, the last move put right (its record made, with ``hold``), this one the
-        last in its turn; returns its provisional seconds, for the caller's clock. None, with
-        nothing changed but ``stage.pending`` written back, for a case left to the general way."""
+        last in its turn; returns its provisional seconds. The caller adds ``correction`` (the last
+        move's seconds put right) and then these seconds to the clock, and ``cut_change`` to the
+        cut length. None, with nothing changed but ``stage.pending`` written back, for a case left
+        to the general way."""
         if not self.active and not self.take_over():
             return None
         i, j = self.i, self.j
@@ -500,7 +505,7 @@ class StraightCuts:
         if feed != self.feed:
             per = p.feed_seconds(mode, 1.0, feed, start, end, self.unit)
         seconds = length * per
-        p.cut_length += (settled - self.length + length) * self.unit
+        self.cut_change = (settled - self.length + length) * self.unit
         self.line, self.mode, self.feed, self.start, self.end = line, mode, feed, start, end
         self.ax, self.ay, self.px, self.py, self.tx, self.ty, self.l = px, py, ex, ey, t2x, t2y, l2
         self.cx, self.cy, self.fx, self.fy = cx, cy, fx, fy
@@ -520,31 +525,46 @@ class StraightCuts:
     def _settle(self, start: _Point, bx: float, by: float, cx: float, cy: float, link: bool) -> float:
         """The last move's centre path now that its corner is known: to (bx, by), then on to
         (cx, cy) where the next move starts when the corner is an acute outside one (``link``);
-        its time put right on the clock and in its record. Returns its length."""
-        p = self.p
-        i, j = self.i, self.j
-        first = (bx, by, *start[2:]) if self.xy else _full((bx, by), start, i, j)
+        its time put right (``correction``) and, when the run keeps it, in its record. Returns
+        its length."""
         length = sqrt((bx - self.cx) ** 2 + (by - self.cy) ** 2 + self.off)
-        pieces: tuple[CentrePiece, ...] = (_tuple_new(CentrePiece, (first, None, False)),)
-        second = first
         if link:
-            second = _full((cx, cy), start, i, j)
-            pieces += (_tuple_new(CentrePiece, (second, None, False)),)
             length += hypot(cx - bx, cy - by)
         seconds = length * self.per
-        p.clock += seconds - self.seconds
-        path = _tuple_new(CentrePath, (self.s0, pieces))
-        moves = p.moves
+        self.correction = seconds - self.seconds
+        if self.held or self.place >= 0:
+            i, j = self.i, self.j
+            first = (bx, by, *start[2:]) if self.xy else _full((bx, by), start, i, j)
+            piece = _tuple_new(CentrePiece, (first, None, False))
+            if link:
+                second = _full((cx, cy), start, i, j)
+                pieces: tuple[CentrePiece, ...] = (piece, _tuple_new(CentrePiece, (second, None, False)))
+            else:
+                second, pieces = first, (piece,)
+            self._record(seconds, _tuple_new(CentrePath, (self._path_start(), pieces)))
+            self.s0 = second
+        else:  # the run keeps no moves (an analysis): the next path's start is made only if asked for
+            self.s0 = None
+        return length
+
+    def _path_start(self) -> _Point:
+        """Where the last move's centre path starts: its corner with the move before."""
+        s0 = self.s0
+        if s0 is None:
+            s0 = self.s0 = _full((self.cx, self.cy), self.start, self.i, self.j)
+        return s0
+
+    def _record(self, seconds: float, path: CentrePath) -> None:
+        """The last move's record with its path put right: made now when held, else replaced."""
+        moves = self.p.moves
         if self.held:
             moves.append(_tuple_new(Move, (self.file, self.line, self.mode, self.start, self.end, float(self.feed),
                                            None, seconds, self.plane, None, None, None, path)))  # fmt: skip
-        else:
-            place = self.place
-            if 0 <= place < len(moves) and moves[place][1] == self.line:
-                old = moves[place]
-                moves[place] = _tuple_new(Move, (*old[:7], seconds, *old[8:12], path))
-        self.s0 = second
-        return length
+            return
+        place = self.place
+        if place < len(moves) and moves[place][1] == self.line:
+            old = moves[place]
+            moves[place] = _tuple_new(Move, (*old[:7], seconds, *old[8:12], path))
 
     def flush(self) -> None:
         """Hand the last move back to the stage as the general way keeps it, with its path to
@@ -558,7 +578,7 @@ class StraightCuts:
         end = self.end
         fx, fy = self.fx, self.fy
         finish = (fx, fy, *end[2:]) if self.xy else _full((fx, fy), end, self.i, self.j)
-        path = _tuple_new(CentrePath, (self.s0, (_tuple_new(CentrePiece, (finish, None, False)),)))
+        path = _tuple_new(CentrePath, (self._path_start(), (_tuple_new(CentrePiece, (finish, None, False)),)))
         place = self.place
         if self.held:
             self.held = False
