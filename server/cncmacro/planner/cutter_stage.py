@@ -464,8 +464,7 @@ class StraightCuts:
         to the general way."""
         if not self.active and not self.take_over():
             return None
-        i, j = self.i, self.j
-        px, py = self.px, self.py
+        i, j, px, py = self.i, self.j, self.px, self.py
         ex, ey = end[i], end[j]
         if (ex == px and ey == py) or mode != self.mode:
             self.flush()
@@ -490,11 +489,19 @@ class StraightCuts:
             bx, by = px - t1y * d + t1x * r, py + t1x * d + t1y * r
             cx, cy = px - t2y * d - t2x * r, py + t2x * d - t2y * r
             link = True
-        p = self.p
-        l1 = self.l
+        p, l1 = self.p, self.l
         if (bx - self.cx) * t1x + (by - self.cy) * t1y < -EPSILON * (l1 if l1 > 1.0 else 1.0):
             _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, _reversal_message(self.line))
-        settled = self._settle(start, bx, by, cx, cy, link)
+        # the last move, now that its corner is known: its length and time put right
+        settled = sqrt((bx - self.cx) ** 2 + (by - self.cy) ** 2 + self.off)
+        if link:
+            settled += hypot(cx - bx, cy - by)
+        settled_seconds = settled * self.per
+        self.correction = settled_seconds - self.seconds
+        if self.held or self.place >= 0:
+            self._settled(start, bx, by, cx, cy, link, settled_seconds)
+        else:  # the run keeps no moves (an analysis): the next path's start is made only if asked for
+            self.s0 = None
         # this move, the last in its turn: from the corner to its end's perpendicular
         fx, fy = ex - t2y * d, ey + t2x * d
         off = dist(start, end) ** 2 - l2 * l2
@@ -509,8 +516,7 @@ class StraightCuts:
         self.line, self.mode, self.feed, self.start, self.end = line, mode, feed, start, end
         self.ax, self.ay, self.px, self.py, self.tx, self.ty, self.l = px, py, ex, ey, t2x, t2y, l2
         self.cx, self.cy, self.fx, self.fy = cx, cy, fx, fy
-        self.per, self.off, self.length, self.seconds = per, off, length, seconds
-        self.fresh = False
+        self.per, self.off, self.length, self.seconds, self.fresh = per, off, length, seconds, False
         if not self.hold:
             self.place = len(p.moves) if p.record_moves else -1
         elif len(p.moves) + 1 < p.move_budget:
@@ -522,30 +528,20 @@ class StraightCuts:
             p.moves_full(line)
         return seconds
 
-    def _settle(self, start: _Point, bx: float, by: float, cx: float, cy: float, link: bool) -> float:
-        """The last move's centre path now that its corner is known: to (bx, by), then on to
-        (cx, cy) where the next move starts when the corner is an acute outside one (``link``);
-        its time put right (``correction``) and, when the run keeps it, in its record. Returns
-        its length."""
-        length = sqrt((bx - self.cx) ** 2 + (by - self.cy) ** 2 + self.off)
+    def _settled(self, start: _Point, bx: float, by: float, cx: float, cy: float, link: bool, seconds: float) -> None:
+        """The last move's record now that its corner is known, made (held) or put right: its
+        centre path to (bx, by), then on to (cx, cy) where the next move starts when the corner
+        is an acute outside one (``link``), and its ``seconds``."""
+        i, j = self.i, self.j
+        first = (bx, by, *start[2:]) if self.xy else _full((bx, by), start, i, j)
+        piece = _tuple_new(CentrePiece, (first, None, False))
         if link:
-            length += hypot(cx - bx, cy - by)
-        seconds = length * self.per
-        self.correction = seconds - self.seconds
-        if self.held or self.place >= 0:
-            i, j = self.i, self.j
-            first = (bx, by, *start[2:]) if self.xy else _full((bx, by), start, i, j)
-            piece = _tuple_new(CentrePiece, (first, None, False))
-            if link:
-                second = _full((cx, cy), start, i, j)
-                pieces: tuple[CentrePiece, ...] = (piece, _tuple_new(CentrePiece, (second, None, False)))
-            else:
-                second, pieces = first, (piece,)
-            self._record(seconds, _tuple_new(CentrePath, (self._path_start(), pieces)))
-            self.s0 = second
-        else:  # the run keeps no moves (an analysis): the next path's start is made only if asked for
-            self.s0 = None
-        return length
+            second = _full((cx, cy), start, i, j)
+            pieces: tuple[CentrePiece, ...] = (piece, _tuple_new(CentrePiece, (second, None, False)))
+        else:
+            second, pieces = first, (piece,)
+        self._record(seconds, _tuple_new(CentrePath, (self._path_start(), pieces)))
+        self.s0 = second
 
     def _path_start(self) -> _Point:
         """Where the last move's centre path starts: its corner with the move before."""
