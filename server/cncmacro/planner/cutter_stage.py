@@ -540,7 +540,14 @@ class StraightCuts:
             pieces: tuple[CentrePiece, ...] = (piece, _tuple_new(CentrePiece, (second, None, False)))
         else:
             second, pieces = first, (piece,)
-        self._record(seconds, _tuple_new(CentrePath, (self._path_start(), pieces)))
+        s0 = self.s0
+        path = _tuple_new(CentrePath, (s0 if s0 is not None else self._path_start(), pieces))
+        if self.held:
+            self.p.moves.append(_tuple_new(Move, (self.file, self.line, self.mode, self.start, self.end,
+                                                  float(self.feed), None, seconds, self.plane, None, None, None,
+                                                  path)))  # fmt: skip
+        else:
+            self._put_right(seconds, path)
         self.s0 = second
 
     def _path_start(self) -> _Point:
@@ -550,13 +557,9 @@ class StraightCuts:
             s0 = self.s0 = _full((self.cx, self.cy), self.start, self.i, self.j)
         return s0
 
-    def _record(self, seconds: float, path: CentrePath) -> None:
-        """The last move's record with its path put right: made now when held, else replaced."""
+    def _put_right(self, seconds: float, path: CentrePath) -> None:
+        """The last move's record, made before it was taken over, with its path and time put right."""
         moves = self.p.moves
-        if self.held:
-            moves.append(_tuple_new(Move, (self.file, self.line, self.mode, self.start, self.end, float(self.feed),
-                                           None, seconds, self.plane, None, None, None, path)))  # fmt: skip
-            return
         place = self.place
         if place < len(moves) and moves[place][1] == self.line:
             old = moves[place]
