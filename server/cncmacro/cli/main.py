@@ -7,7 +7,6 @@ shares).
 from __future__ import annotations
 
 import argparse
-import gc
 import sys
 
 from .. import __version__
@@ -16,6 +15,7 @@ from ..dialects.registry import all_profiles
 from .check import main_check
 from .check_jobs import jobs_argument, shard_argument
 from .locale_option import add_locale_option, environment_locale, locale_argument
+from .process_end import keep_to_the_end
 from .profiles import add_dialect_option, add_profiles_parser
 from .run import add_run_parser
 from .terminal import tolerant
@@ -118,6 +118,7 @@ def main(argv: list[str] | None = None) -> int:
         if e.code == 2 and given and given[-1] == "--set":
             print(_set_hint(given), file=sys.stderr)
         raise
+    args.ends_process = argv is None  # the process's own command: it ends when the command does
     try:
         return int(args.handler(args))
     except KeyboardInterrupt:
@@ -125,18 +126,8 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:
         return 0
     finally:
-        if argv is None:  # the process's own command: it ends here
-            _leave_to_exit()
-
-
-def _leave_to_exit() -> None:
-    """The command is done and its process is about to end: what it leaves behind (a long run's
-    move records, hundreds of thousands of small objects) is moved out of the garbage
-    collector's reach, so that the interpreter's last collections at exit do not walk it once
-    more only to have the operating system free it (about 0.1 s after a 100k-block run, 0.3 s
-    after a compensated one: docs/benchmarks.md). Not for ``main`` called with arguments, as a
-    caller in a process that goes on would call it."""
-    gc.freeze()
+        if args.ends_process:
+            keep_to_the_end()
 
 
 def _set_hint(given: list[str]) -> str:
