@@ -7,7 +7,10 @@ when the next block in the plane is (where the two offsets meet: offset_geometry
 runs one move behind: a move is recorded at once with a provisional centre path (ending on the
 perpendicular of its end, as if nothing followed), and when the next move in the plane arrives
 the corner between them is worked out and the earlier move's path, time and length are put right
-in place (``Planner.moves``, the clock, the cut and rapid lengths). Moves off the plane in between
+in place (``Planner.moves``, the clock, the cut and rapid lengths). Straight cuts one after
+another (a CAM contour) are joined by ``StraightCuts``, which in a run of plain lines also holds
+the last move's record until its corner is known, and hands it back before anything else reads
+the run. Moves off the plane in between
 (a Z move) are made at the corner. Start-up is the first move in the plane after G41/G42 with a
 D whose offset is not zero, cancel the first after G40; both are of type A or B as the machine
 file's ``cutter_startup`` says. The radius is offset D's geometry plus wear, as the macro machine
