@@ -317,7 +317,7 @@ def test_the_machine_file_reads_the_start_up_type_and_what_d_holds() -> None:
 
 def test_the_run_of_plain_lines_and_the_general_path_give_the_same_centre_path() -> None:
     # the outside square with an acute corner added, once as plain lines (the one-pass run of
-    # plain lines, cutter_stage.straight_cut) and once with its coordinates in variables (each
+    # plain lines, cutter_stage.StraightCuts) and once with its coordinates in variables (each
     # block through Planner.execute_nc and Planner.record): the same centre points and time
     plain = ["G90 G17 G00 X-20. Y-20.", "G41 D1 G01 X0 Y0 F100", "Y50.", "X50.", "X10. Y30.", "X60. Y0", "X0",
              "G40 X-20. Y-20.", "M30"]  # fmt: skip

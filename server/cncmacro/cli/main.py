@@ -15,6 +15,7 @@ from ..dialects.registry import all_profiles
 from .check import main_check
 from .check_jobs import jobs_argument, shard_argument
 from .locale_option import add_locale_option, environment_locale, locale_argument
+from .process_end import keep_to_the_end
 from .profiles import add_dialect_option, add_profiles_parser
 from .run import add_run_parser
 from .terminal import tolerant
@@ -117,12 +118,16 @@ def main(argv: list[str] | None = None) -> int:
         if e.code == 2 and given and given[-1] == "--set":
             print(_set_hint(given), file=sys.stderr)
         raise
+    args.ends_process = argv is None  # the process's own command: it ends when the command does
     try:
         return int(args.handler(args))
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:
         return 0
+    finally:
+        if args.ends_process:
+            keep_to_the_end()
 
 
 def _set_hint(given: list[str]) -> str:

@@ -40,6 +40,7 @@ from ..planner.moves import Move
 from ..planner.numbers import format_plain
 from .cycle_report import cycle_json, write_cycle_text
 from .locale_option import add_locale_option
+from .process_end import keep_to_the_end
 from .profiles import add_dialect_option
 from .terminal import Printable, TextOut, json_text
 
@@ -166,6 +167,8 @@ def _run(args: argparse.Namespace, out: TextIO | None, err: TextIO | None) -> in
     except BaseException:
         prepared.release()
         raise
+    if getattr(args, "ends_process", False):  # the run's records stay until the process ends
+        keep_to_the_end()
     if not args.no_save:
         try:
             prepared.save()

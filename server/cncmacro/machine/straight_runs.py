@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 
 from ..planner.alarms import MacroAlarm
 from ..planner.arcs import ARC_MODES
-from ..planner.cutter_stage import straight_cut
+from ..planner.cutter_stage import StraightCuts
 from ..planner.cycle_time import INCH, SPEED_CLAMP
 from ..planner.machine_limits import Bounds, leaves_travel, outside, program_bounds
 from ..planner.moves import Move
@@ -105,9 +105,11 @@ def run_straight(
     bounds = program_bounds(p) if p.travel is not None else None
     spindle_top = p.spindle_top
     arc_centre, arc_fault = p.arc_centre, p.arc_fault
-    # cutter radius compensation under way (planner/cutter_stage.py): each move goes through
-    # ``Planner.record``, which gives it its centre path
+    # cutter radius compensation under way (planner/cutter_stage.py): a straight cut after a
+    # straight cut is joined by ``cuts``, which holds the last one until the next comes; any
+    # other move goes through ``Planner.record`` (the held one handed back first)
     cutter = p.cutter
+    cuts = StraightCuts(p, path, p.record_moves) if cutter is not None else None
     # the lines run are the lines passed but the blank and comment ones (``blanks``): the
     # budget counts the lines run, so each of those moves ``stop`` on by one
     first_pc = pc
@@ -250,14 +252,23 @@ def run_straight(
                     for i, v in inc:
                         target[i] += v
                 end = tuple(target)
-                if cutter is not None:  # its record and centre path (planner/cutter_stage.py)
-                    p.clock, p.cut_length, p.rapid_length = clock, cut, rapid
+                if cutter is not None and cuts is not None:  # its record and centre path (planner/cutter_stage.py)
                     try:
-                        if centre is not None or not straight_cut(p, path, pc, mode, start, end):
+                        seconds = None if centre is not None or mode == 0.0 else cuts.cut(pc, mode, f, start, end)
+                        if seconds is not None:  # joined to the cut before, whose time is put right
+                            clock += cuts.correction
+                            clock += seconds
+                            cut += cuts.cut_change
+                        else:
+                            p.clock, p.cut_length, p.rapid_length = clock, cut, rapid
+                            cuts.flush()
                             p.record(path, pc, mode, start, end, centre)
+                            clock, cut, rapid, cutter = p.clock, p.cut_length, p.rapid_length, p.cutter
                     except MacroAlarm:
                         break  # found before anything changed: the compiled path runs the line and stops on it
-                    clock, cut, rapid, cutter = p.clock, p.cut_length, p.rapid_length, p.cutter
+                    except BaseException:
+                        cuts.flush()
+                        raise
                     start = end
                     pc += 1
                     continue
@@ -284,6 +295,8 @@ def run_straight(
             pc += 1
             continue
         break  # a word the general path must read
+    if cuts is not None:
+        cuts.flush()
     done = pc - first_pc - blanks
     if done and p.plain.last_keys:
         _keep_last_words(p.plain.last_keys, codes, blocks, first_pc, pc)

@@ -7,7 +7,10 @@ when the next block in the plane is (where the two offsets meet: offset_geometry
 runs one move behind: a move is recorded at once with a provisional centre path (ending on the
 perpendicular of its end, as if nothing followed), and when the next move in the plane arrives
 the corner between them is worked out and the earlier move's path, time and length are put right
-in place (``Planner.moves``, the clock, the cut and rapid lengths). Moves off the plane in between
+in place (``Planner.moves``, the clock, the cut and rapid lengths). Straight cuts one after
+another (a CAM contour) are joined by ``StraightCuts``, which in a run of plain lines also holds
+the last move's record until its corner is known, and hands it back before anything else reads
+the run. Moves off the plane in between
 (a Z move) are made at the corner. Start-up is the first move in the plane after G41/G42 with a
 D whose offset is not zero, cancel the first after G40; both are of type A or B as the machine
 file's ``cutter_startup`` says. The radius is offset D's geometry plus wear, as the macro machine
@@ -22,7 +25,7 @@ radius (the plane's scale, ``MoveTimes.planes``: halved in, doubled back out), t
 the imaginary tool nose direction come from the offset the T code selects
 (``Dialect.lathe_offsets``), and the programmed path is the imaginary tool nose's: outside offset
 mode the nose centre is the tip's direction away from the programmed point, so a start-up starts
-and a cancel ends there. The one-pass straight-cut join (``_line_after_line``) is the mill's only.
+and a cancel ends there. The one-pass straight-cut join (``StraightCuts``) is the mill's only.
 """
 
 from __future__ import annotations
@@ -314,13 +317,11 @@ def cutter_move(
         begin = _full((first[0] - tip[0], first[1] - tip[1]), start, i, j, scale) if tip != (0.0, 0.0) else start
         d = d if stage.code == LEFT else -d
         return _provisional(p, line, mode, plane, element, d, begin, start, end, None, feed, unit, True, i, j)
+    if centre is None and in_plane and mode != 0.0:  # a straight cut after one: joined in one pass
+        joined = _straight_after_straight(p, line, mode, plane, start, end, feed)
+        if joined is not None:
+            return joined
     pending = stage.pending
-    if (centre is None and in_plane and mode != 0.0 and pending is not None and stage.code != CANCEL
-            and pending.per_length and pending.element[2] is None and not pending.startup
-            and not pending.between and plane == pending.plane and not stage.lathe):  # fmt: skip
-        seconds = _line_after_line(p, stage, pending, line, mode, start, end, feed)
-        if seconds is not None:
-            return stage.pending.path, seconds  # type: ignore[union-attr]
     if not in_plane:  # a move off the plane: made where the tool centre is
         at = _plane_point(start if pending is None else pending.path.pieces[-1].end, i, j, scale)
         path = CentrePath(_full(at, start, i, j, scale), (CentrePiece(_full(at, end, i, j, scale)),))
@@ -370,106 +371,226 @@ def cutter_move(
 _tuple_new = tuple.__new__  # a named tuple without its constructor's keyword handling
 
 
-def straight_cut(p: Planner, file: str, line: int, mode: float, start: _Point, end: _Point) -> bool:
-    """Record a straight cut of a run of plain lines (machine/straight_runs.py) after a straight
-    cut under compensation, its centre path and time included, as ``Planner.record`` would;
-    False, recording nothing, for any other case, which ``Planner.record`` then takes."""
-    stage = p.cutter
-    if stage is None or mode == 0.0 or stage.lathe:
-        return False
-    pending = stage.pending
-    if (pending is None or stage.code == CANCEL or not pending.per_length or pending.element[2] is not None
-            or pending.startup or pending.between):  # fmt: skip
-        return False
-    feed = p.codes.get("F") or 0.0
-    done = _line_after_line(p, stage, pending, line, mode, start, end, feed)
-    if done is None:
-        return False
-    if p.record_moves:
-        p.moves.append(_tuple_new(Move, (file, line, mode, start, end, float(feed), None, done, pending.plane,
-                                         None, None, None, stage.pending.path)))  # type: ignore[union-attr]  # fmt: skip
-        if len(p.moves) >= p.move_budget:
-            p.moves_full(line)
-    p.clock += done
-    return True
+def _straight_after_straight(
+    p: Planner, line: int, mode: float, plane: float, start: _Point, end: _Point, feed: float
+) -> tuple[CentrePath, float] | None:
+    """A compiled line's straight cut after a straight cut, joined by ``StraightCuts`` as a run
+    of plain lines joins it: its provisional path and seconds (``Planner.record`` records it),
+    None for a case the general way takes."""
+    cuts = StraightCuts(p, "", False)
+    if not cuts.take_over(plane):
+        return None
+    seconds = cuts.cut(line, mode, feed, start, end)
+    if seconds is None:
+        return None
+    p.clock += cuts.correction
+    p.cut_length += cuts.cut_change
+    cuts.flush()
+    return cuts.stage.pending.path, seconds  # type: ignore[union-attr]
 
 
-def _line_after_line(
-    p: Planner, stage: CutterStage, pending: Pending, line: int, mode: float, start: _Point, end: _Point, feed: float
-) -> float | None:
-    """The common case of a CAM contour, a cut after a cut, both straight, at the same offset, in
-    the same unit and plane: ``offset_geometry.join``'s corner worked out in place, the pending
-    move put right, the new one pending in its turn; returns the new move's seconds (its path is
-    the new ``stage.pending.path``), None for a case it leaves to the general way. The same rules:
-    a tangent needs no corner, an inside or obtuse corner ends at the intersection,
-    P + d (n1 + n2) / (1 + t1·t2) for offsets of one distance d, an acute outside one goes
-    through the two extension points."""
-    i, j = stage.axes
-    element = pending.element
-    p_point = element[1]
-    (ax, ay), (px, py) = element[0], p_point
-    ex, ey = end[i], end[j]
-    if (ex == px and ey == py) or mode != pending.mode or (INCH if p.modal["units"] == 20.0 else 1.0) != pending.unit:
-        return None
-    d = _signed_radius(p, stage)
-    if d != pending.d:
-        return None
-    l1, l2 = hypot(px - ax, py - ay), hypot(ex - px, ey - py)
-    t1x, t1y, t2x, t2y = (px - ax) / l1, (py - ay) / l1, (ex - px) / l2, (ey - py) / l2
-    cross, dot = t1x * t2y - t1y * t2x, t1x * t2x + t1y * t2y
-    link = False
-    if -1e-12 <= cross <= 1e-12 and dot > 0.0:
-        bx, by = px - t1y * d, py + t1x * d
-        cx, cy = bx, by
-    elif cross * d > 0.0 or dot >= 0.0:
-        if dot <= -1.0 + 1e-9:
+class StraightCuts:
+    """Straight cuts one after another under compensation, the common case of a CAM contour: a
+    cut after a cut, both straight, at the same offset, in the same unit and plane, each corner
+    worked out as ``offset_geometry.join`` works it out (a tangent needs no corner, an inside or
+    obtuse corner ends at the intersection, P + d (n1 + n2) / (1 + t1·t2) for offsets of one
+    distance d, an acute outside one goes through the two extension points), the earlier move's
+    path, time and length put right in place.
+
+    ``take_over`` takes the stage's pending move when it is such a cut. From then on the last
+    move's state is kept here, its direction and length carried to the next corner, and
+    ``stage.pending`` is out of date until ``flush`` writes it back (a ``Pending`` with the
+    provisional path, as the general way keeps it). The radius, unit and plane are read once:
+    no plain motion line changes them. With ``hold`` (a run of plain lines that records its
+    own moves: machine/straight_runs.py) the last move's record waits here too and is made once,
+    with its path put right, when the next cut comes, or with its provisional path at ``flush``:
+    whoever else records a move or reads the run (``Planner.record``, the end of the run of
+    plain lines) has it flushed first."""
+
+    __slots__ = (
+        "active", "ax", "ay", "correction", "cut_change", "cx", "cy", "d", "end", "feed", "file", "fresh", "fx", "fy",
+        "held", "hold", "i", "j", "l", "length", "line", "mode", "off", "p", "per", "place", "plane", "px", "py", "s0",
+        "seconds", "stage", "start", "tx", "ty", "unit", "xy",
+    )  # fmt: skip
+
+    def __init__(self, p: Planner, file: str, hold: bool) -> None:
+        self.s0: _Point | None = None
+        self.p = p
+        self.file = file
+        self.hold = hold
+        self.active = False  # the last move's state is here (``stage.pending`` out of date)
+        self.held = False  # and its record too, not yet in ``Planner.moves``
+
+    def take_over(self, plane: float | None = None) -> bool:
+        """Take the stage's pending move if it is a straight cut the next one can join here
+        (``plane``: the one the next move is in, which must be the pending one's; None for a
+        plain line, which cannot change it)."""
+        p = self.p
+        stage = p.cutter
+        if stage is None or stage.lathe or stage.code == CANCEL:
+            return False
+        pending = stage.pending
+        if (pending is None or not pending.per_length or pending.element[2] is not None or pending.startup
+                or pending.between or (plane is not None and plane != pending.plane)):  # fmt: skip
+            return False
+        if (INCH if p.modal["units"] == 20.0 else 1.0) != pending.unit or _signed_radius(p, stage) != pending.d:
+            return False
+        self.stage = stage
+        self.i, self.j = stage.axes
+        self.xy = stage.axes == (0, 1)
+        self.d, self.unit, self.plane = pending.d, pending.unit, pending.plane
+        (ax, ay), (px, py) = pending.element[0], pending.element[1]
+        length = self.l = hypot(px - ax, py - ay)
+        self.ax, self.ay, self.px, self.py = ax, ay, px, py
+        self.tx, self.ty = (px - ax) / length, (py - ay) / length
+        s0 = self.s0 = pending.path[0]
+        self.cx, self.cy = s0[self.i], s0[self.j]
+        end = pending.path.pieces[-1].end
+        self.fx, self.fy = end[self.i], end[self.j]
+        self.line, self.mode, self.feed, self.start, self.end = (pending.line, pending.mode, pending.feed,
+                                                                 pending.start, pending.end)  # fmt: skip
+        self.per, self.off, self.length, self.seconds = (pending.per_length, pending.off_plane, pending.length,
+                                                         pending.seconds)  # fmt: skip
+        self.place = pending.place
+        self.hold = self.hold and p.record_moves  # none once the toolpath is full
+        self.held = False
+        self.fresh = True
+        self.active = True
+        return True
+
+    def cut(self, line: int, mode: float, feed: float, start: _Point, end: _Point) -> float | None:
+        """The straight cut of ``line`` from ``start`` to ``end`` after the last one: the corner
+        between them, the last move put right (its record made, with ``hold``), this one the
+        last in its turn; returns its provisional seconds. The caller adds ``correction`` (the last
+        move's seconds put right) and then these seconds to the clock, and ``cut_change`` to the
+        cut length. None, with nothing changed but ``stage.pending`` written back, for a case left
+        to the general way."""
+        if not self.active and not self.take_over():
             return None
-        k = d / (1.0 + dot)
-        bx, by = px - k * (t1y + t2y), py + k * (t1x + t2x)
-        cx, cy = bx, by
-    else:
-        r = -d if d < 0.0 else d
-        bx, by = px - t1y * d + t1x * r, py + t1x * d + t1y * r
-        cx, cy = px - t2y * d - t2x * r, py + t2x * d - t2y * r
-        link = True
-    s0 = pending.path[0]
-    sx, sy = s0[i], s0[j]
-    if (bx - sx) * t1x + (by - sy) * t1y < -EPSILON * (l1 if l1 > 1.0 else 1.0):
-        _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, _reversal_message(pending.line))
-    xy = i == 0 and j == 1
-    first = (bx, by, *start[2:]) if xy else _full((bx, by), start, i, j)
-    length = sqrt((bx - sx) ** 2 + (by - sy) ** 2 + pending.off_plane)
-    pieces: tuple[CentrePiece, ...] = (_tuple_new(CentrePiece, (first, None, False)),)
-    second = first
-    if link:
-        second = _full((cx, cy), start, i, j)
-        pieces += (_tuple_new(CentrePiece, (second, None, False)),)
-        length += hypot(cx - bx, cy - by)
-    unit = pending.unit
-    per = pending.per_length
-    seconds = length * per
-    p.clock += seconds - pending.seconds
-    moves = p.moves
-    place = pending.place
-    if 0 <= place < len(moves) and moves[place][1] == pending.line:
-        old = moves[place]
-        moves[place] = _tuple_new(Move, (*old[:7], seconds, *old[8:12], _tuple_new(CentrePath, (s0, pieces))))
-    # the new move, pending in its turn: from the corner to its end's perpendicular
-    qx, qy = ex - t2y * d, ey + t2x * d
-    finish = (qx, qy, *end[2:]) if xy else _full((qx, qy), end, i, j)
-    off_plane = dist(start, end) ** 2 - l2 * l2
-    if off_plane < 1e-9:  # in the plane (but for the rounding of the squares)
-        off_plane = 0.0
-    length_b = sqrt((qx - cx) ** 2 + (qy - cy) ** 2 + off_plane)
-    if feed != pending.feed:
-        per = p.feed_seconds(mode, 1.0, feed, start, end, unit)
-    seconds_b = length_b * per
-    p.cut_length += (length - pending.length + length_b) * unit
-    path = _tuple_new(CentrePath, (second, (_tuple_new(CentrePiece, (finish, None, False)),)))
-    stage.pending = _tuple_new(Pending, (len(moves) if p.record_moves else -1, line, mode, feed, unit, pending.plane,
-                                         start, end, _tuple_new(PathElement, (p_point, (ex, ey), None, False)), d,
-                                         path, seconds_b, False, (), per, length_b, off_plane))  # fmt: skip
-    return seconds_b
+        i, j, px, py = self.i, self.j, self.px, self.py
+        ex, ey = end[i], end[j]
+        if (ex == px and ey == py) or mode != self.mode:
+            self.flush()
+            return None
+        t1x, t1y, d = self.tx, self.ty, self.d
+        l2 = hypot(ex - px, ey - py)
+        t2x, t2y = (ex - px) / l2, (ey - py) / l2
+        cross, dot = t1x * t2y - t1y * t2x, t1x * t2x + t1y * t2y
+        link = False
+        if -1e-12 <= cross <= 1e-12 and dot > 0.0:  # straight on
+            bx, by = px - t1y * d, py + t1x * d
+            cx, cy = bx, by
+        elif cross * d > 0.0 or dot >= 0.0:  # inside or obtuse: where the two offsets cross
+            if dot <= -1.0 + 1e-9:
+                self.flush()
+                return None
+            k = d / (1.0 + dot)
+            bx, by = px - k * (t1y + t2y), py + k * (t1x + t2x)
+            cx, cy = bx, by
+        else:  # acute outside: through the two extension points
+            r = -d if d < 0.0 else d
+            bx, by = px - t1y * d + t1x * r, py + t1x * d + t1y * r
+            cx, cy = px - t2y * d - t2x * r, py + t2x * d - t2y * r
+            link = True
+        p, l1 = self.p, self.l
+        if (bx - self.cx) * t1x + (by - self.cy) * t1y < -EPSILON * (l1 if l1 > 1.0 else 1.0):
+            _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, _reversal_message(self.line))
+        # the last move, now that its corner is known: its length and time put right
+        settled = sqrt((bx - self.cx) ** 2 + (by - self.cy) ** 2 + self.off)
+        if link:
+            settled += hypot(cx - bx, cy - by)
+        settled_seconds = settled * self.per
+        self.correction = settled_seconds - self.seconds
+        if self.held or self.place >= 0:
+            self._settled(start, bx, by, cx, cy, link, settled_seconds)
+        else:  # the run keeps no moves (an analysis): the next path's start is made only if asked for
+            self.s0 = None
+        # this move, the last in its turn: from the corner to its end's perpendicular
+        fx, fy = ex - t2y * d, ey + t2x * d
+        off = dist(start, end) ** 2 - l2 * l2
+        if off < 1e-9:  # in the plane (but for the rounding of the squares)
+            off = 0.0
+        length = sqrt((fx - cx) ** 2 + (fy - cy) ** 2 + off)
+        per = self.per
+        if feed != self.feed:
+            per = p.feed_seconds(mode, 1.0, feed, start, end, self.unit)
+        seconds = length * per
+        self.cut_change = (settled - self.length + length) * self.unit
+        self.line, self.mode, self.feed, self.start, self.end = line, mode, feed, start, end
+        self.ax, self.ay, self.px, self.py, self.tx, self.ty, self.l = px, py, ex, ey, t2x, t2y, l2
+        self.cx, self.cy, self.fx, self.fy = cx, cy, fx, fy
+        self.per, self.off, self.length, self.seconds, self.fresh = per, off, length, seconds, False
+        if not self.hold:
+            self.place = len(p.moves) if p.record_moves else -1
+        elif len(p.moves) + 1 < p.move_budget:
+            self.held = True
+        else:  # this move fills the toolpath: recorded now, and no move after it
+            self.held = True
+            self.flush()
+            self.hold = False
+            p.moves_full(line)
+        return seconds
+
+    def _settled(self, start: _Point, bx: float, by: float, cx: float, cy: float, link: bool, seconds: float) -> None:
+        """The last move's record now that its corner is known, made (held) or put right: its
+        centre path to (bx, by), then on to (cx, cy) where the next move starts when the corner
+        is an acute outside one (``link``), and its ``seconds``."""
+        i, j = self.i, self.j
+        first = (bx, by, *start[2:]) if self.xy else _full((bx, by), start, i, j)
+        piece = _tuple_new(CentrePiece, (first, None, False))
+        if link:
+            second = _full((cx, cy), start, i, j)
+            pieces: tuple[CentrePiece, ...] = (piece, _tuple_new(CentrePiece, (second, None, False)))
+        else:
+            second, pieces = first, (piece,)
+        s0 = self.s0
+        path = _tuple_new(CentrePath, (s0 if s0 is not None else self._path_start(), pieces))
+        if self.held:
+            self.p.moves.append(_tuple_new(Move, (self.file, self.line, self.mode, self.start, self.end,
+                                                  float(self.feed), None, seconds, self.plane, None, None, None,
+                                                  path)))  # fmt: skip
+        else:
+            self._put_right(seconds, path)
+        self.s0 = second
+
+    def _path_start(self) -> _Point:
+        """Where the last move's centre path starts: its corner with the move before."""
+        s0 = self.s0
+        if s0 is None:
+            s0 = self.s0 = _full((self.cx, self.cy), self.start, self.i, self.j)
+        return s0
+
+    def _put_right(self, seconds: float, path: CentrePath) -> None:
+        """The last move's record, made before it was taken over, with its path and time put right."""
+        moves = self.p.moves
+        place = self.place
+        if place < len(moves) and moves[place][1] == self.line:
+            old = moves[place]
+            moves[place] = _tuple_new(Move, (*old[:7], seconds, *old[8:12], path))
+
+    def flush(self) -> None:
+        """Hand the last move back to the stage as the general way keeps it, with its path to
+        its end's perpendicular: ``stage.pending`` and (``hold``) its record."""
+        if not self.active:
+            return
+        self.active = False
+        if self.fresh:  # taken over, nothing cut since: the stage's pending is as it was
+            return
+        p = self.p
+        end = self.end
+        fx, fy = self.fx, self.fy
+        finish = (fx, fy, *end[2:]) if self.xy else _full((fx, fy), end, self.i, self.j)
+        path = _tuple_new(CentrePath, (self._path_start(), (_tuple_new(CentrePiece, (finish, None, False)),)))
+        place = self.place
+        if self.held:
+            self.held = False
+            place = len(p.moves)
+            p.moves.append(_tuple_new(Move, (self.file, self.line, self.mode, self.start, end, float(self.feed), None,
+                                             self.seconds, self.plane, None, None, None, path)))  # fmt: skip
+        element = _tuple_new(PathElement, ((self.ax, self.ay), (self.px, self.py), None, False))
+        self.stage.pending = _tuple_new(Pending, (place, self.line, self.mode, self.feed, self.unit, self.plane,
+                                                  self.start, end, element, self.d, path, self.seconds, False, (),
+                                                  self.per, self.length, self.off))  # fmt: skip
 
 
 def _signed_radius(p: Planner, stage: CutterStage) -> float | None:
