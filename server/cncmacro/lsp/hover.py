@@ -372,13 +372,9 @@ def symbol_hover(ls: CncMacroServer, cur: Cursor, symbol: str) -> str | None:
     text = function_hover(ls, cur, word)
     if text is None:
         return None
-    if cur.doc.dialect.logical_symbols:
-        said = pick(
-            ls.locale, f"`{symbol}` is {word}, as this control reads it.", f"`{symbol}` 即 {word}，本系统可以这样写。"
-        )
-    else:
-        en = f"`{symbol}` stands for {word} on some controls; this one does not read it: write {word}."
-        said = pick(ls.locale, en, f"`{symbol}` 在部分系统中表示 {word}；本系统不识别，应写 {word}。")
+    said = t(
+        "symbol_read" if cur.doc.dialect.logical_symbols else "symbol_refused", ls.locale, symbol=symbol, word=word
+    )
     return f"{said}\n\n{text}"
 
 

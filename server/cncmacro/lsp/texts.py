@@ -29,6 +29,11 @@ TEXTS: dict[str, tuple[str, str]] = {
         "Shared by every part system (path) of the machine (not in the machine file's part_system_commons)",
         "机床的各系统（通道）共用（不在机床设置文件的 part_system_commons 之内）",
     ),
+    "symbol_read": ("`{symbol}` is {word}, as this control reads it.", "`{symbol}` 即 {word}，本系统可以这样写。"),
+    "symbol_refused": (
+        "`{symbol}` stands for {word} on some controls; this one does not read it: write {word}.",
+        "`{symbol}` 在部分系统中表示 {word}；本系统不识别，应写 {word}。",
+    ),
     "system": ("System variable", "系统变量"),
     "null": ("#0: always vacant, read-only", "#0：总是空，只读"),
     "undefined": ("No such variable in this dialect ({alarm})", "该系统中不存在此变量（{alarm}）"),
