@@ -60,7 +60,7 @@ def run_ours(text: str, record_moves: bool = True) -> tuple[float, float, int, s
     """(user seconds, wall seconds, blocks, status) of one run, parse included."""
     c0, w0 = cpu(), time.perf_counter()
     m = Machine("fanuc", MachineSettings(max_blocks=10_000_000, date=20260101, time=0))
-    m.record_moves = record_moves
+    m.planner.record_moves = record_moves
     m.start_file("bench.nc", text)
     status = m.run()
     return cpu() - c0, time.perf_counter() - w0, m.blocks, status
