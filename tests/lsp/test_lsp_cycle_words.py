@@ -12,7 +12,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, GSK, close_file, hover_text, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 FANUC_LATHE = "(cncmacro: dialect=fanuc-0i-lathe)\n"
 ROUGHING = (

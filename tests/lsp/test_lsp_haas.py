@@ -14,15 +14,13 @@ import pytest_asyncio
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, HERE, close_file, diagnostics_for, hover_text, session_fixture
+from .lsp_session import FANUC, HERE, close_file, diagnostics_for, hover_text
 from .lsp_session import open_file as open_in
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 HAAS = HERE / "workspace_haas"
 PROGRAM = HAAS / "O01000.nc"
-haas_en = session_fixture(HAAS, "en")
-haas_zh = session_fixture(HAAS, "zh-CN")
 
 # where things are in O01000.nc (0-based lines and columns)
 G154_P5, M97_P100, G65_P9832, G187, N100 = (3, 1), (8, 5), (9, 5), (10, 1), (12, 1)
@@ -39,7 +37,7 @@ def open_file(client: LanguageClient, path: Path, text: str | None = None) -> st
     return uri
 
 
-@pytest_asyncio.fixture(autouse=True, loop_scope="module")
+@pytest_asyncio.fixture(autouse=True, loop_scope="session")
 async def close_the_documents() -> AsyncIterator[None]:
     yield
     for client, uri in _opened:

@@ -9,13 +9,11 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, HERE, close_file, hover_text, open_file, session_fixture
+from .lsp_session import FANUC, HERE, close_file, hover_text, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 HAAS = HERE / "workspace_haas"
-haas_en = session_fixture(HAAS, "en")
-haas_zh = session_fixture(HAAS, "zh-CN")
 
 TEXT = "%\nO01002 (PROBE TOP)\nG65 P9832\nG65 P9811 Z-10. S1.\nG65 P9833\nM30\n%\n"
 P9811, ON_Z = (3, 5), (3, 12)  # the P of the call, and the Z argument
