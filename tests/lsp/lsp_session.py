@@ -142,6 +142,17 @@ async def hover_text(client: LanguageClient, uri: str, line: int, character: int
     return result.contents.value
 
 
+def described(hover: str) -> str:
+    """A hover's text without the cycle time the server adds below it once the document's run
+    is timed (a hover answered before that has none; a warm server's run is often done first);
+    empty where the cycle time is all the hover says."""
+    cycle_time = ("Cycle time:", "加工时间：")
+    if hover.startswith(cycle_time):
+        return ""
+    head, sep, tail = hover.rpartition("\n\n---\n\n")
+    return head if sep and tail.startswith(cycle_time) else hover
+
+
 def config(**kw: Any) -> ClientServerConfig:
     return ClientServerConfig(server_command=SERVER, **kw)
 

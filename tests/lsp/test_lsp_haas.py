@@ -14,7 +14,7 @@ import pytest_asyncio
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, HERE, close_file, diagnostics_for, hover_text
+from .lsp_session import FANUC, HERE, close_file, described, diagnostics_for, hover_text
 from .lsp_session import open_file as open_in
 
 pytestmark = pytest.mark.asyncio(loop_scope="session")
@@ -54,7 +54,7 @@ async def maybe_hover(client: LanguageClient, uri: str, at: tuple[int, int]) -> 
     got = await client.text_document_hover_async(
         types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(*at))
     )
-    return None if got is None else str(got.contents.value)  # type: ignore[union-attr]
+    return (None if got is None else described(str(got.contents.value))) or None  # type: ignore[union-attr]
 
 
 async def test_the_workspace_reads_it_as_haas_with_its_title(haas_en: LanguageClient) -> None:
@@ -189,7 +189,7 @@ async def test_g65_p9832_is_a_probing_macro_on_the_control(
     said = await hover_text(haas_zh, open_file(haas_zh, PROGRAM), *G65_P9832)
     assert said.startswith("**O9832** — 工件测头开启（Haas WIPS）")
     assert "程序: 存放在数控系统内" in said and "Haas NGC mill 的 O9000–O9999" in said
-    assert await hover_text(fanuc_en, as_fanuc(fanuc_en), *G65_P9832) == "**O9832** — Program: not found"
+    assert described(await hover_text(fanuc_en, as_fanuc(fanuc_en), *G65_P9832)) == "**O9832** — Program: not found"
 
 
 async def test_the_haas_program_is_clean_and_as_fanuc_0i_it_suggests_haas(

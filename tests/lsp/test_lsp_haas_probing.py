@@ -9,7 +9,7 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, HERE, close_file, hover_text, open_file
+from .lsp_session import FANUC, HERE, close_file, described, hover_text, open_file
 
 pytestmark = pytest.mark.asyncio(loop_scope="session")
 
@@ -29,7 +29,7 @@ async def test_hover_on_g65_p9811_describes_the_single_surface_cycle_in_english(
     haas_en: LanguageClient, fanuc_en: LanguageClient
 ) -> None:
     uri = open_file(haas_en, HAAS / "probing.nc", TEXT)
-    said = await hover_text(haas_en, uri, *P9811)
+    said = described(await hover_text(haas_en, uri, *P9811))
     close_file(haas_en, uri)
     assert said.startswith("**O9811** — Single surface measurement (Renishaw Inspection Plus)")
     assert "Touches one surface along X, Y or Z" in said
@@ -42,7 +42,7 @@ async def test_hover_on_g65_p9811_describes_the_single_surface_cycle_in_english(
                          "its place, to set what the caller reads.")  # fmt: skip
     assert "Program: kept on the control (Haas NGC mill keeps O9000–O9999 there" in said
     uri = open_file(fanuc_en, FANUC / "probing.nc", TEXT)  # FANUC 0i keeps no such program
-    said = await hover_text(fanuc_en, uri, *P9811)
+    said = described(await hover_text(fanuc_en, uri, *P9811))
     help_ = await signature_at(fanuc_en, uri, ON_Z)
     close_file(fanuc_en, uri)
     assert said == "**O9811** — Program: not found" and help_ is None
