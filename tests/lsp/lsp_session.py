@@ -104,13 +104,55 @@ def edit(client: LanguageClient, uri: str, version: int, line: int, start: int, 
     )
 
 
+class Publishes:
+    """Every ``publishDiagnostics`` a client received, counted, the last few versions of each URI
+    kept: waiting for the next notification instead misses one that arrives in the same read as
+    the one before it (pytest-lsp wakes one waiter per notification), which a busy server's
+    bunched publishes made happen."""
+
+    def __init__(self) -> None:
+        self.count = 0
+        self.by_uri: dict[str, dict[int | None, tuple[int, types.PublishDiagnosticsParams]]] = {}
+
+    def add(self, params: types.PublishDiagnosticsParams) -> None:
+        self.count += 1
+        versions = self.by_uri.setdefault(params.uri, {})
+        versions.pop(params.version, None)
+        versions[params.version] = (self.count, params)
+        while len(versions) > 16:
+            del versions[next(iter(versions))]
+
+    def since(self, count: int, uri: str, version: int | None) -> types.PublishDiagnosticsParams | None:
+        """The publish of ``uri`` for ``version`` received after the ``count``th, if there is one."""
+        got = self.by_uri.get(uri, {}).get(version)
+        return got[1] if got is not None and got[0] > count else None
+
+
+def publishes(client: LanguageClient) -> Publishes:
+    """What ``client`` is sent, kept from the first call on (pytest-lsp's own handler, which keeps
+    each URI's latest diagnostics in ``client.diagnostics``, still runs)."""
+    kept: Publishes | None = getattr(client, "publishes", None)
+    if kept is None:
+        kept = client.publishes = Publishes()  # type: ignore[attr-defined]
+        features = client.protocol.fm.features
+        keep_latest = features[types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS]
+
+        def publish(params: types.PublishDiagnosticsParams) -> Any:
+            kept.add(params)
+            return keep_latest(params)
+
+        features[types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS] = publish
+    return kept
+
+
 async def diagnostics_for(client: LanguageClient, uri: str, version: int) -> types.PublishDiagnosticsParams:
-    """Wait for the diagnostics of ``uri`` computed from ``version``; every publish on the way
-    must be for that document's current or an older, not yet superseded, version."""
-    while True:
-        params = await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-        if params.uri == uri and params.version == version:
-            return params
+    """Wait for the diagnostics of ``uri`` computed from ``version`` that are published after
+    this call."""
+    kept = publishes(client)
+    after = kept.count
+    while (got := kept.since(after, uri, version)) is None:
+        await asyncio.sleep(0.01)
+    return got
 
 
 Accept = Callable[[list[types.Diagnostic]], bool]
