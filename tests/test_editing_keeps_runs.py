@@ -60,11 +60,18 @@ def _run(path: Path, root: Path) -> dict[str, Any]:
     return {"exit": status, **{k: v for k, v in result.items() if k != "messages"}}
 
 
-def _same_runs(tmp: Path, edit: Callable[[Path, list[str]], list[str]]) -> int:
-    """Run every program before and after ``edit`` (which gives a file's new lines); the number
-    of files the edit changed."""
-    before, after = tmp / "before", tmp / "after"
-    originals, edited = _copy(before), _copy(after)
+@pytest.fixture(scope="module")
+def runs_before(tmp_path_factory: pytest.TempPathFactory) -> list[dict[str, Any]]:
+    """How every program of the unedited copy runs: the same for every edit, so run once."""
+    before = tmp_path_factory.mktemp("before")
+    return [_run(p, before) for p in _copy(before)]
+
+
+def _same_runs(tmp: Path, runs_before: list[dict[str, Any]], edit: Callable[[Path, list[str]], list[str]]) -> int:
+    """Run every program after ``edit`` (which gives a file's new lines) and compare with how it
+    ran before; the number of files the edit changed."""
+    after = tmp / "after"
+    edited = _copy(after)
     changed = 0
     for p in edited:
         data = p.read_bytes()
@@ -79,8 +86,8 @@ def _same_runs(tmp: Path, edit: Callable[[Path, list[str]], list[str]]) -> int:
         if new != lines:
             changed += 1
             p.write_bytes("\n".join(new).encode(encoding))
-    for a, b in zip(originals, edited, strict=True):
-        assert _run(a, before) == _run(b, after), f"{b.relative_to(after)} runs differently after the edit"
+    for was, b in zip(runs_before, edited, strict=True):
+        assert was == _run(b, after), f"{b.relative_to(after)} runs differently after the edit"
     return changed
 
 
@@ -99,7 +106,9 @@ def _dialect(p: Path, lines: list[str]) -> str:
     [FormatOptions(s, a) for s in (SPACED, COMPACT) for a in (False, True)],
     ids=["spaced", "spaced-aligned", "compact", "compact-aligned"],
 )
-def test_formatting_changes_no_run_and_formatting_again_changes_nothing(tmp_path: Path, options: FormatOptions):
+def test_formatting_changes_no_run_and_formatting_again_changes_nothing(
+    tmp_path: Path, runs_before: list[dict[str, Any]], options: FormatOptions
+):
     def edit(p: Path, lines: list[str]) -> list[str]:
         program = build_program([parse_block(x) for x in lines])
         new = format_lines(lines, 0, len(lines) - 1, options, program.read_end)
@@ -107,7 +116,7 @@ def test_formatting_changes_no_run_and_formatting_again_changes_nothing(tmp_path
         assert not format_lines(out, 0, len(out) - 1, options, program.read_end), f"{p.name}: formatted twice"
         return out
 
-    assert _same_runs(tmp_path, edit) > 20
+    assert _same_runs(tmp_path, runs_before, edit) > 20
 
 
 def _applied(lines: list[str], plan: SequencePlan) -> list[str]:
@@ -119,7 +128,7 @@ def _applied(lines: list[str], plan: SequencePlan) -> list[str]:
 
 
 @pytest.mark.parametrize("how", ["renumber", "add", "remove"])
-def test_sequence_number_edits_change_no_run(tmp_path: Path, how: str):
+def test_sequence_number_edits_change_no_run(tmp_path: Path, runs_before: list[dict[str, Any]], how: str):
     def edit(p: Path, lines: list[str]) -> list[str]:
         program = build_program([parse_block(x) for x in lines])
         dialect = get_dialect(_dialect(p, lines))
@@ -131,4 +140,4 @@ def test_sequence_number_edits_change_no_run(tmp_path: Path, how: str):
             plan = remove_unused_sequence_numbers(program, dialect, keep_computed=True)
         return _applied(lines, plan)
 
-    assert _same_runs(tmp_path, edit) > 5
+    assert _same_runs(tmp_path, runs_before, edit) > 5

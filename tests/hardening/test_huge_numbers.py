@@ -13,9 +13,9 @@ from lsprotocol import types
 from pytest_lsp import LanguageClient
 
 from cncmacro.cli.check import check_paths
-from lsp.lsp_session import FANUC, close_file, diagnostics_for, edit, fanuc_en, hover_text, open_file
+from lsp.lsp_session import FANUC, close_file, diagnostics_for, edit, hover_text, open_file, session_fixture
 
-__all__ = ["fanuc_en"]
+fanuc_en = session_fixture(FANUC, "en")
 
 BIG = "9" * 309
 LINES = [f"N{BIG} X1.", f"O{BIG}", f"GOTO{BIG}", f"G{BIG}", f"M{BIG}", f"T{BIG}", f"M98 P{BIG}", f"X1.{BIG}",
@@ -34,7 +34,7 @@ def test_a_309_digit_number_is_a_syntax_error_and_the_rest_is_checked(tmp_path: 
     assert ("O0002.nc", 2, "division-by-zero") in found
 
 
-@pytest.mark.asyncio(loop_scope="module")
+@pytest.mark.asyncio(loop_scope="session")
 async def test_a_document_with_a_309_digit_label_stays_open_and_hovers_go_on(fanuc_en: LanguageClient) -> None:
     uri = open_file(fanuc_en, FANUC / "HUGE.nc", f"O0001\nN{BIG} X1.\nGOTO{BIG}\n#1=2\nM30\n")
     first = await diagnostics_for(fanuc_en, uri, 1)
@@ -50,7 +50,7 @@ async def test_a_document_with_a_309_digit_label_stays_open_and_hovers_go_on(fan
     close_file(fanuc_en, uri)
 
 
-@pytest.mark.asyncio(loop_scope="module")
+@pytest.mark.asyncio(loop_scope="session")
 async def test_a_document_uri_with_a_nul_is_analysed_and_stops_nothing(fanuc_en: LanguageClient) -> None:
     odd = (FANUC / "NUL.nc").as_uri().replace("NUL.nc", "N%00L.nc")
     fanuc_en.text_document_did_open(

@@ -11,7 +11,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, close_file, diagnostics_for, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 # lines 0-based: 1 O header, 3 IF, 6 ELSE, 9 ENDIF, 10 M30
 PROGRAM = (

@@ -10,14 +10,12 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, close_file, open_file, session_fixture
+from .lsp_session import FANUC, close_file, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 CALLS = Path(__file__).resolve().parent / "workspace_calls"
 HAAS = Path(__file__).resolve().parent / "workspace_haas"
-calls_en = session_fixture(CALLS, "en")
-haas_en = session_fixture(HAAS, "en")
 
 
 async def _prepare(client: LanguageClient, uri: str, line: int, ch: int) -> list[types.CallHierarchyItem]:

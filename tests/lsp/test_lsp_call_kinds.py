@@ -10,12 +10,11 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import close_file, open_file, session_fixture
+from .lsp_session import close_file, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 CALLS = Path(__file__).resolve().parent / "workspace_calls"
-calls_en = session_fixture(CALLS, "en")
 
 
 async def _definition(client: LanguageClient, uri: str, line: int, ch: int) -> list[tuple[str, int]]:

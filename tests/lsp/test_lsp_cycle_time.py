@@ -10,7 +10,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, GSK, diagnostics_for, edit, hover_text, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 # fanuc-0i: rapids 24000 mm/min, a tool change 3 s.
 #   T1 M06 3 s | G00 X100. 0.25 s | G01 X0 F1000 6 s                  -> T1 9.25 s, 100 mm cut, 100 mm rapid

@@ -10,9 +10,9 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, GSK, close_file, hover_text, open_file
+from .lsp_session import FANUC, GSK, close_file, described, hover_text, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 FANUC_LATHE = "(cncmacro: dialect=fanuc-0i-lathe)\n"
 ROUGHING = (
@@ -144,8 +144,8 @@ async def test_single_cycles_g50_and_g96_say_what_r_f_and_s_are(fanuc_en: Langua
 
 async def test_hover_on_the_cycle_code_names_the_block_it_writes(fanuc_en: LanguageClient) -> None:
     uri = open_file(fanuc_en, FANUC / "code.nc", FANUC_LATHE + ROUGHING)
-    first = await hover_at(fanuc_en, uri, 3, 1)
-    second = await hover_at(fanuc_en, uri, 4, 1)
+    first = described(await hover_at(fanuc_en, uri, 3, 1))
+    second = described(await hover_at(fanuc_en, uri, 4, 1))
     close_file(fanuc_en, uri)
     assert first.startswith("**G71** — Stock removal in turning")
     assert first.endswith("this block: `G71 U(Δd) R(e)` (first block)")

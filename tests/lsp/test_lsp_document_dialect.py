@@ -9,7 +9,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, diagnostics_for, edit, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 
 async def dialect_of(client: LanguageClient, uri: str) -> object:

@@ -8,7 +8,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, GSK, close_file, diagnostics_for, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 
 async def _complete(client: LanguageClient, uri: str, line: int, ch: int) -> list[types.CompletionItem]:

@@ -8,9 +8,13 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, close_file, diagnostics_for, open_file
+from .lsp_session import FANUC, close_file, diagnostics_for, open_file, session_fixture
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
+
+# a server of its own: the client takes the answer to the formatting it cancels below for a fatal
+# error and stops, which the modules sharing a server would inherit
+fanuc_en = session_fixture(FANUC, "en")
 
 TEXT = "o0001 (Lower title)\nn10 g01x10.y5. (cut)\nif[#1gt2]goto10\nm30\n"
 OPTIONS = types.FormattingOptions(tab_size=4, insert_spaces=True)

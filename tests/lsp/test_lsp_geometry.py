@@ -9,7 +9,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, diagnostics_for, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 
 def found(got: types.PublishDiagnosticsParams) -> list[tuple[int, str, types.DiagnosticSeverity | None]]:

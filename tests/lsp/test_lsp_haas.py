@@ -14,15 +14,13 @@ import pytest_asyncio
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, HERE, close_file, diagnostics_for, hover_text, session_fixture
+from .lsp_session import FANUC, HERE, close_file, described, diagnostics_for, hover_text
 from .lsp_session import open_file as open_in
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 HAAS = HERE / "workspace_haas"
 PROGRAM = HAAS / "O01000.nc"
-haas_en = session_fixture(HAAS, "en")
-haas_zh = session_fixture(HAAS, "zh-CN")
 
 # where things are in O01000.nc (0-based lines and columns)
 G154_P5, M97_P100, G65_P9832, G187, N100 = (3, 1), (8, 5), (9, 5), (10, 1), (12, 1)
@@ -39,7 +37,7 @@ def open_file(client: LanguageClient, path: Path, text: str | None = None) -> st
     return uri
 
 
-@pytest_asyncio.fixture(autouse=True, loop_scope="module")
+@pytest_asyncio.fixture(autouse=True, loop_scope="session")
 async def close_the_documents() -> AsyncIterator[None]:
     yield
     for client, uri in _opened:
@@ -56,7 +54,7 @@ async def maybe_hover(client: LanguageClient, uri: str, at: tuple[int, int]) -> 
     got = await client.text_document_hover_async(
         types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(*at))
     )
-    return None if got is None else str(got.contents.value)  # type: ignore[union-attr]
+    return (None if got is None else described(str(got.contents.value))) or None  # type: ignore[union-attr]
 
 
 async def test_the_workspace_reads_it_as_haas_with_its_title(haas_en: LanguageClient) -> None:
@@ -191,7 +189,7 @@ async def test_g65_p9832_is_a_probing_macro_on_the_control(
     said = await hover_text(haas_zh, open_file(haas_zh, PROGRAM), *G65_P9832)
     assert said.startswith("**O9832** — 工件测头开启（Haas WIPS）")
     assert "程序: 存放在数控系统内" in said and "Haas NGC mill 的 O9000–O9999" in said
-    assert await hover_text(fanuc_en, as_fanuc(fanuc_en), *G65_P9832) == "**O9832** — Program: not found"
+    assert described(await hover_text(fanuc_en, as_fanuc(fanuc_en), *G65_P9832)) == "**O9832** — Program: not found"
 
 
 async def test_the_haas_program_is_clean_and_as_fanuc_0i_it_suggests_haas(

@@ -9,11 +9,10 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, HERE, close_file, diagnostics_for, hover_text, open_file, session_fixture
+from .lsp_session import FANUC, HERE, close_file, diagnostics_for, hover_text, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
-haas_en = session_fixture(HERE / "workspace_haas", "en")
 
 TEXT = "%\nO01050 (COUNT TO 10)\n#100=0\nN10 #100=#100+1\nN50 [#100 LT 10] M99 P10\nM30\n%\n"
 N10, P10, COND_VAR, COND_OP, M99 = (3, 0), (4, 22), (4, 6), (4, 11), (4, 18)  # 0-based line and column

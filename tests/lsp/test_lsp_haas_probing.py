@@ -9,13 +9,11 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, HERE, close_file, hover_text, open_file, session_fixture
+from .lsp_session import FANUC, HERE, close_file, described, hover_text, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 HAAS = HERE / "workspace_haas"
-haas_en = session_fixture(HAAS, "en")
-haas_zh = session_fixture(HAAS, "zh-CN")
 
 TEXT = "%\nO01002 (PROBE TOP)\nG65 P9832\nG65 P9811 Z-10. S1.\nG65 P9833\nM30\n%\n"
 P9811, ON_Z = (3, 5), (3, 12)  # the P of the call, and the Z argument
@@ -31,7 +29,7 @@ async def test_hover_on_g65_p9811_describes_the_single_surface_cycle_in_english(
     haas_en: LanguageClient, fanuc_en: LanguageClient
 ) -> None:
     uri = open_file(haas_en, HAAS / "probing.nc", TEXT)
-    said = await hover_text(haas_en, uri, *P9811)
+    said = described(await hover_text(haas_en, uri, *P9811))
     close_file(haas_en, uri)
     assert said.startswith("**O9811** — Single surface measurement (Renishaw Inspection Plus)")
     assert "Touches one surface along X, Y or Z" in said
@@ -44,7 +42,7 @@ async def test_hover_on_g65_p9811_describes_the_single_surface_cycle_in_english(
                          "its place, to set what the caller reads.")  # fmt: skip
     assert "Program: kept on the control (Haas NGC mill keeps O9000–O9999 there" in said
     uri = open_file(fanuc_en, FANUC / "probing.nc", TEXT)  # FANUC 0i keeps no such program
-    said = await hover_text(fanuc_en, uri, *P9811)
+    said = described(await hover_text(fanuc_en, uri, *P9811))
     help_ = await signature_at(fanuc_en, uri, ON_Z)
     close_file(fanuc_en, uri)
     assert said == "**O9811** — Program: not found" and help_ is None

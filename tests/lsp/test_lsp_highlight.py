@@ -11,7 +11,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, close_file, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 READ, WRITE = types.DocumentHighlightKind.Read, types.DocumentHighlightKind.Write
 

@@ -8,7 +8,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, GSK, close_file, diagnostics_for, edit, hover_text, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 
 async def test_hover_5001_is_the_x_block_end_position_in_english(fanuc_en: LanguageClient) -> None:

@@ -9,7 +9,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, GSK, diagnostics_for, edit, open_file, session_fixture
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 fanuc_values = session_fixture(FANUC, "en", {"inlayHints": {"values": True}})
 gsk_values_zh = session_fixture(GSK, "zh-CN", {"inlayHints": {"values": True}})

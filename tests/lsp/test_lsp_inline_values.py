@@ -9,7 +9,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 
 async def inline_values(client: LanguageClient, uri: str, first: int, last: int) -> list[tuple[int, int, int, str]]:

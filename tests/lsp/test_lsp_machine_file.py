@@ -17,7 +17,7 @@ from cncmacro.dialects import DIALECTS
 
 from .lsp_session import diagnostics_for, hover_text, open_file, session_fixture
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 SHOP = Path(__file__).resolve().parent.parent / "data" / "machine_workspace"
 shop = session_fixture(SHOP, "en")

@@ -10,7 +10,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import HERE, diagnostics_for, open_file, session_fixture
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 LIMITS = HERE / "workspace_limits"  # G54 X -300, X travel [-500, 0], spindle 8000, tools 1-24
 limits_en = session_fixture(LIMITS, "en")

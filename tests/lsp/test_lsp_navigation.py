@@ -10,7 +10,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, GSK, close_file, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 
 def _pos(uri: str, line: int, ch: int) -> tuple[types.TextDocumentIdentifier, types.Position]:

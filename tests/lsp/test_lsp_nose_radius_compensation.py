@@ -10,7 +10,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import GSK, diagnostics_for, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 
 async def test_a_g42_after_the_shape_first_block_is_a_warning_on_its_line(gsk_en: LanguageClient) -> None:

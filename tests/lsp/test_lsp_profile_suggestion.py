@@ -10,7 +10,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, diagnostics_for, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 NAMED = "%\nO0001 (PROBE REPORT)\n#1=[#_ABSIO[1]]\n#2=POW[#1,2]\n#3=[#_ABSKP[3]]\nM30\n%\n"
 HAAS = "%\nO01002 (HAAS OFFSETS)\nG154 P5\nG110 G00 X0 Y0\n#10500=#3026\nM97 P100\nM30\nN100 G187 P2\nM99\n%\n"

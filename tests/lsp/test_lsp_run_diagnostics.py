@@ -13,7 +13,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, GSK, Accept, close_file, diagnostics_for, edit, open_file, published_where
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 
 def codes(found: types.PublishDiagnosticsParams | list[types.Diagnostic]) -> list[tuple[int, str]]:

@@ -12,7 +12,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, GSK, HERE, close_file, open_file, session_fixture
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 RENUMBER = "cncmacro.server.renumberSequenceNumbers"
 LABELS = HERE / "workspace_labels"

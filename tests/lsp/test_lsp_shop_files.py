@@ -16,7 +16,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import diagnostics_for, hover_text, open_file, published_where, session_fixture
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 HERE = Path(__file__).resolve().parent
 TXT = HERE / "workspace_txt_programs"

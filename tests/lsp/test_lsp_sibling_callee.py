@@ -29,7 +29,7 @@ from cncmacro.cli.check import check_paths
 
 from .lsp_session import close_file, diagnostics_for, open_file, session_fixture
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 ROOT = Path(__file__).resolve().parent / "workspace_sibling_folders"
 sibling_en = session_fixture(ROOT, "en")

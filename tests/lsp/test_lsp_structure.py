@@ -15,7 +15,7 @@ from cncmacro.machine import Machine
 
 from .lsp_session import FANUC, GSK, close_file, edit, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 
 def _tree(symbols: list[types.DocumentSymbol]) -> list[object]:

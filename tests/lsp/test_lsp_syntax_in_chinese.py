@@ -8,7 +8,7 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, diagnostics_for, open_file
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 TEXT = "O0100\n#1=[#2+3\nG01 X1 @\nM30\n"
 

@@ -14,18 +14,17 @@ from pytest_lsp import LanguageClient
 
 from .lsp_session import FANUC, diagnostics_for, open_file, session_fixture
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 wrong_settings = session_fixture(FANUC, "en", {"dialect": "hass", "severity": {"macro-alrm": "warning"}})
-plain_en = session_fixture(FANUC, "en")
 
 # M97 P100 calls the program's own N100 only on Haas: read as fanuc-0i, a suggestion would name haas
 HAAS_ONLY = "O0001 (cncmacro: dialect=hass)\nM97 P100\nM30\nN100 G01 X1. F100\nM99\n"
 
 
-async def test_a_dialect_comment_naming_no_profile_is_a_warning_on_the_comment(plain_en: LanguageClient) -> None:
-    uri = open_file(plain_en, FANUC / "UNKNOWN_PROFILE.nc", HAAS_ONLY)
-    params = await diagnostics_for(plain_en, uri, 1)
+async def test_a_dialect_comment_naming_no_profile_is_a_warning_on_the_comment(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "UNKNOWN_PROFILE.nc", HAAS_ONLY)
+    params = await diagnostics_for(fanuc_en, uri, 1)
     [found] = [d for d in params.diagnostics if d.code == "unknown-profile"]
     assert found.severity == types.DiagnosticSeverity.Warning
     assert (found.range.start.line, found.range.start.character, found.range.end.character) == (
