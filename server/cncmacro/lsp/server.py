@@ -157,6 +157,7 @@ class CncMacroServer(LanguageServer):
         self.settings_ready = asyncio.Event()  # set once the editor's settings were asked for
         self.roots: list[str] = []
         self.watching: asyncio.Future[None] | None = None  # the request for the editor's file watcher
+        self.pulling: asyncio.Future[None] | None = None  # the request for the editor's settings at start
         self.machine_file_uris: set[str] = set()  # the machine files whose problem is shown
         self.machine_files_shown: set[Path] = set()  # the machine files in use when they were last shown
         self.last_message_at = time.monotonic()  # when the editor last sent anything (the collector waits for quiet)
@@ -279,10 +280,13 @@ async def _initialized(server: CncMacroServer, params: types.InitializedParams) 
     server.watching = asyncio.ensure_future(_register_file_watchers(server))
     server.diagnostics.check_disk_now_and_then()
     report_skipped(server, server.index.skipped)  # notifications may go out only now that initialize is answered
+    # the editor's settings are waited for a while, not cancelled: an answer that comes later (a
+    # busy editor at start) still applies, instead of arriving for a request given up on
+    server.pulling = asyncio.ensure_future(_pull_configuration(server))
     try:
-        await asyncio.wait_for(_pull_configuration(server), CONFIGURATION_TIMEOUT)
-    except asyncio.TimeoutError:
-        log.info("workspace/configuration: no answer; using the initialization options")
+        done, _ = await asyncio.wait({server.pulling}, timeout=CONFIGURATION_TIMEOUT)
+        if not done:
+            log.info("workspace/configuration: no answer yet; the initialization options apply until it comes")
     finally:
         server.settings_ready.set()
         server.show_machine_files()  # with the editor's severities
