@@ -249,3 +249,11 @@ async def module_view(client: LanguageClient) -> AsyncIterator[LanguageClient]:
     it ends."""
     yield client
     await close_what_is_left_open(client)
+
+
+async def actions_for(client: LanguageClient, uri: str, diag: types.Diagnostic) -> list[types.CodeAction]:
+    """The code actions the server offers for ``diag`` (commands left out)."""
+    got = await client.text_document_code_action_async(
+        types.CodeActionParams(types.TextDocumentIdentifier(uri), diag.range, types.CodeActionContext([diag]))
+    )
+    return [a for a in got or [] if isinstance(a, types.CodeAction)]

@@ -9,7 +9,7 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, close_file, diagnostics_for, open_file
+from .lsp_session import FANUC, actions_for, close_file, diagnostics_for, open_file
 
 pytestmark = pytest.mark.asyncio(loop_scope="session")
 
@@ -18,13 +18,6 @@ PROGRAM = (
     "%\nO1000 (PART FAMILY)\n#1=2\nIF [#1 EQ 1] THEN\n#2=10.\nG01 X#2 F100\nELSE\n#2=20.\nG01 X#2 F100\nENDIF\nM30\n%\n"
 )
 MARKED = PROGRAM.replace("%\n", "%\n(cncmacro: dialect=mitsubishi-m70)\n", 1)
-
-
-async def actions_for(client: LanguageClient, uri: str, diag: types.Diagnostic) -> list[types.CodeAction]:
-    got = await client.text_document_code_action_async(
-        types.CodeActionParams(types.TextDocumentIdentifier(uri), diag.range, types.CodeActionContext([diag]))
-    )
-    return [a for a in got or [] if isinstance(a, types.CodeAction)]
 
 
 async def test_block_if_branches_fold_inside_their_program(fanuc_en: LanguageClient) -> None:

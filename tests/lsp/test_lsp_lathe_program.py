@@ -13,7 +13,7 @@ import pytest_lsp
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import config, diagnostics_for, open_file, published_where, start
+from .lsp_session import actions_for, config, diagnostics_for, open_file, published_where, start
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
@@ -43,13 +43,6 @@ async def corpus(lsp_client: LanguageClient):  # type: ignore[no-untyped-def]
 
 def hints(diags: list[types.Diagnostic]) -> list[types.Diagnostic]:
     return [d for d in diags if d.code == "profile-suggestion"]
-
-
-async def actions_for(client: LanguageClient, uri: str, diag: types.Diagnostic) -> list[types.CodeAction]:
-    got = await client.text_document_code_action_async(
-        types.CodeActionParams(types.TextDocumentIdentifier(uri), diag.range, types.CodeActionContext([diag]))
-    )
-    return [a for a in got or [] if isinstance(a, types.CodeAction)]
 
 
 def applied(text: str, edits: list[types.TextEdit]) -> str:

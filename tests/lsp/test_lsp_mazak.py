@@ -9,7 +9,7 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, close_file, diagnostics_for, hover_text, open_file
+from .lsp_session import FANUC, actions_for, close_file, diagnostics_for, hover_text, open_file
 
 pytestmark = pytest.mark.asyncio(loop_scope="session")
 
@@ -18,13 +18,6 @@ PROGRAM = (
     "%\nO2000 (BORE CHECK)\n#1=3\n#2=0\nIF [[#1 GT 0] && [#1 LT 5]] GOTO 10\n#2=1\n"
     "WH [#2 LT 3] DO1\nIF [[#2 EQ 1] || [#2 EQ 2]] THEN #3=#2\n#2=#2+1\nEND1\nN10 M30\n%\n"
 )
-
-
-async def actions_for(client: LanguageClient, uri: str, diag: types.Diagnostic) -> list[types.CodeAction]:
-    got = await client.text_document_code_action_async(
-        types.CodeActionParams(types.TextDocumentIdentifier(uri), diag.range, types.CodeActionContext([diag]))
-    )
-    return [a for a in got or [] if isinstance(a, types.CodeAction)]
 
 
 async def test_logical_symbols_under_fanuc_suggest_mazak_once_and_its_comment_makes_the_file_clean(

@@ -8,19 +8,12 @@ import pytest
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
-from .lsp_session import FANUC, diagnostics_for, open_file
+from .lsp_session import FANUC, actions_for, diagnostics_for, open_file
 
 pytestmark = pytest.mark.asyncio(loop_scope="session")
 
 NAMED = "%\nO0001 (PROBE REPORT)\n#1=[#_ABSIO[1]]\n#2=POW[#1,2]\n#3=[#_ABSKP[3]]\nM30\n%\n"
 HAAS = "%\nO01002 (HAAS OFFSETS)\nG154 P5\nG110 G00 X0 Y0\n#10500=#3026\nM97 P100\nM30\nN100 G187 P2\nM99\n%\n"
-
-
-async def actions_for(client: LanguageClient, uri: str, diag: types.Diagnostic) -> list[types.CodeAction]:
-    got = await client.text_document_code_action_async(
-        types.CodeActionParams(types.TextDocumentIdentifier(uri), diag.range, types.CodeActionContext([diag]))
-    )
-    return [a for a in got or [] if isinstance(a, types.CodeAction)]
 
 
 async def test_30i_names_under_fanuc_0i_suggest_fanuc_30i_once(fanuc_en: LanguageClient) -> None:
