@@ -20,24 +20,13 @@ file: length, diameter, life), are to be confirmed against its programming manua
 from __future__ import annotations
 
 from . import fanuc_data as fanuc
-from .shared_data import with_m98_count_in_l
+from .shared_data import with_m98_count_in_l, with_macro_alarm_shown
 from .tables import CodeDoc, SystemVariable
 
 # ---------------------------------------------------------------------------------------------
 # macro alarm: FANUC's row, said as this control shows it
 
-_ALARM = SystemVariable(
-    3000,
-    3000,
-    "w",
-    "alarm",
-    "Macro alarm: #3000=n (message) stops the program with the control's macro alarm and shows the message; "
-    "cannot be read",
-    "宏程序报警：执行#3000=n（报警信息）时程序停止，发出系统的宏程序报警并显示报警信息；不可读",
-    source="alarm",
-)
-
-_CONTROL: tuple[SystemVariable, ...] = tuple(_ALARM if row.first == 3000 else row for row in fanuc._CONTROL)
+_CONTROL: tuple[SystemVariable, ...] = with_macro_alarm_shown(fanuc._CONTROL)
 
 SYSTEM_VARIABLES: tuple[SystemVariable, ...] = (
     *fanuc._SIGNALS,

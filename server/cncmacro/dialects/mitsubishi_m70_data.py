@@ -19,7 +19,7 @@ what is still to be confirmed):
 from __future__ import annotations
 
 from . import fanuc_data as fanuc
-from .shared_data import with_m98_count_in_l
+from .shared_data import with_m98_count_in_l, with_macro_alarm_shown
 from .tables import CodeDoc, SystemVariable
 
 # ---------------------------------------------------------------------------------------------
@@ -82,18 +82,7 @@ _TOOL_OFFSETS: tuple[SystemVariable, ...] = (
 # ---------------------------------------------------------------------------------------------
 # macro alarm, clocks, control, counters: FANUC's rows, #3000 said as this control shows it
 
-_ALARM = SystemVariable(
-    3000,
-    3000,
-    "w",
-    "alarm",
-    "Macro alarm: #3000=n (message) stops the program with the control's macro alarm and shows the message; "
-    "cannot be read",
-    "宏程序报警：执行#3000=n（报警信息）时程序停止，发出宏程序报警并显示报警信息；不可读",
-    source="alarm",
-)
-
-_CONTROL: tuple[SystemVariable, ...] = tuple(_ALARM if row.first == 3000 else row for row in fanuc._CONTROL)
+_CONTROL: tuple[SystemVariable, ...] = with_macro_alarm_shown(fanuc._CONTROL)
 
 # the work offsets without FANUC's #2500-#2806 short numbers, which are tool offsets here
 _WORK_OFFSETS: tuple[SystemVariable, ...] = tuple(row for row in fanuc._WORK_OFFSETS if row.first >= 5000)

@@ -7,8 +7,8 @@ work zero offsets (#5201 + 20·n, G54–G59) alike, and give many G and M codes 
 number of axes, beside the rows that are theirs alone; what differs stays in their modules.
 The builders of rows whose words differ by control (``modal_group_row``, ``work_coordinate_codes``,
 ``signal_bits``) serve the Haas and 30i profiles too, each giving its own texts; the M98 row of
-the controls that read P as the whole program number (``M98_COUNT_IN_L``) serves Mitsubishi's and
-Mazak's.
+the controls that read P as the whole program number (``M98_COUNT_IN_L``) and the #3000 row as
+they show it (``MACRO_ALARM_SHOWN``) serve Mitsubishi's and Mazak's.
 """
 
 from __future__ import annotations
@@ -214,3 +214,22 @@ M98_COUNT_IN_L = CodeDoc(
 def with_m98_count_in_l(codes: tuple[CodeDoc, ...]) -> tuple[CodeDoc, ...]:
     """``codes`` with their M98 row replaced by ``M98_COUNT_IN_L``."""
     return tuple(M98_COUNT_IN_L if c.code == "M98" else c for c in codes)
+
+
+# #3000 as Mitsubishi M70 and Mazak show it: the control's macro alarm with the message
+
+MACRO_ALARM_SHOWN = SystemVariable(
+    3000,
+    3000,
+    "w",
+    "alarm",
+    "Macro alarm: #3000=n (message) stops the program with the control's macro alarm and shows the message; "
+    "cannot be read",
+    "宏程序报警：执行#3000=n（报警信息）时程序停止，发出系统的宏程序报警并显示报警信息；不可读",
+    source="alarm",
+)
+
+
+def with_macro_alarm_shown(rows: tuple[SystemVariable, ...]) -> tuple[SystemVariable, ...]:
+    """``rows`` with their #3000 row replaced by ``MACRO_ALARM_SHOWN``."""
+    return tuple(MACRO_ALARM_SHOWN if row.first == 3000 else row for row in rows)
