@@ -81,7 +81,11 @@ def _outside_search(sets: list[WordSet]) -> Callable[[str], bool]:
     and trailing zeros of a fraction aside: ``G054.0`` is G54, ``G.5``, ``G-1`` and ``G1..2`` are
     not written as any code). A set of hundreds of codes made into a pattern took milliseconds
     to compile; looking its words up takes none."""
-    written = {s.letter.upper(): {_written(c) for c in s.outside or ()} for s in sets}
+    written: dict[str, set[tuple[int, str]]] = {}
+    for s in sets:  # a word is passed over only when no set of its letter looks at it
+        codes = {_written(c) for c in s.outside or ()}
+        letter = s.letter.upper()
+        written[letter] = written[letter] & codes if letter in written else codes
     heads = "".join(sorted(x + x.lower() for x in written))
     # each word of those letters at the line's start or after a blank: its letter, sign, digits and points
     words = re.compile(rf"(?:^|(?<=[ \t]))([{heads}])([+-]?)([\d.]*)").findall
