@@ -15,7 +15,7 @@ from hypothesis import HealthCheck, given, settings
 
 from camgen import cam_program
 from cncmacro.syntax.assemble import assemble
-from cncmacro.syntax.block_parser import _plain_line_pattern, parse_block, parse_with_grammar
+from cncmacro.syntax.block_parser import BlockCache, _plain_line_pattern, parse_block, parse_with_grammar
 from cncmacro.syntax.fastpath import plain_words, read_items
 from cncmacro.syntax.lines import prepare
 from strategies import line
@@ -80,6 +80,29 @@ def test_1_text_and_blocks_corner_words_are_read_by_the_grammar_alone(text):
     assert not check_line(text)
     block = parse_block(text)
     assert block.problems == () and len(block.corners) == 1
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["N10 G01 X5. Y-3.", "  n20 g1 x.5\tz-1. ", "N000123 G1 X1.5", "N123456789 X1", "N１２ X１", "N7 M98 P1234"],
+)  # fmt: skip
+def test_1_text_and_blocks_a_label_then_plain_words_is_read_as_the_grammar_reads_it(text):
+    """A sequence number followed by plain words (a line in ten of a CAM program) is made without
+    reading its words; asked for, they are the grammar's, to the column."""
+    block = parse_block(text)
+    assert block.plain_tail is not None and block._words is None
+    assert check_line(text)
+    assert BlockCache().get_many([text]) == [block]
+
+
+@pytest.mark.parametrize(
+    "text", ["N1 N2 X1", "N1 O2", "N1 M99 O2", "N1.5 X1", "N1234567890 X1", "N10G01X5.", "N10 X1 (C)"]
+)
+def test_1_text_and_blocks_other_labelled_lines_take_the_general_path(text):
+    """An N or O after the label, a label with a point or of ten digits, words not apart, a
+    comment: the general path reads these."""
+    assert parse_block(text).plain_tail is None
+    check_line(text)
 
 
 @pytest.mark.skipif(sys.version_info < (3, 11), reason="Python 3.10's re has no possessive quantifiers to compare")

@@ -90,7 +90,9 @@ def test_a_document_read_in_steps_and_edited_meanwhile_equals_a_full_parse(lines
 
 def test_one_line_edit_parses_one_line():
     cache = BlockCache()
-    doc = ParsedDocument("\n".join(f"N{i} G01 X{i}.5 Y2." for i in range(1, 2001)), cache)
+    # lines that take parsing (a variable in each): plain words, labelled or not, are made
+    # afresh as cheaply as they are looked up, and are not cached
+    doc = ParsedDocument("\n".join(f"N{i} G01 X{i}.5 Y#{i % 30 + 1}" for i in range(1, 2001)), cache)
     before = cache.parsed
     doc.apply_change(1000, 0, 1000, 0, "#1=#1+2\n")
     doc.apply_change(500, 5, 500, 7, "X9")

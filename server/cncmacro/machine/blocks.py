@@ -334,6 +334,8 @@ class CompiledFile:
                 run = self.governing_if(first, block, pc, nxt)
             else:
                 run = self.statement(first, pc, nxt)
+        elif block.plain_tail is not None:  # N10 G01 X5.: its words read from the text, as a plain line's
+            run = nc_blocks.compile_plain_line(self, block.plain_tail, nxt) or self.nc_block(block, pc, nxt)
         elif block.words:
             run = self.nc_block(block, pc, nxt)
         else:

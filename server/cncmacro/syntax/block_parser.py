@@ -49,6 +49,23 @@ _PLAIN_LINE = re.compile(_plain_line_pattern(_POSSESSIVE)).fullmatch
 # line it does not take goes to ``parse_block``, which tries ``_PLAIN_LINE`` (a line of
 # other digits, such as full-width ones, is plain all the same: it is then cached).
 _PLAIN_ASCII_LINE = re.compile(_plain_line_pattern(_POSSESSIVE), re.ASCII).fullmatch
+# A sequence number at the start of a line: when a plain line follows it (``N10 G01 X5.``,
+# a line in ten of a CAM program), the block is made without reading its words.
+_LABEL_THEN = re.compile(r"[ \t]*[Nn](\d{1,9})").match
+
+
+def labelled_plain(line: str) -> Block | None:
+    """The block of a sequence number followed by plain words (``N10 G01 X5.``), its words
+    read only when asked for (``Block.plain_tail``); None for any other line. It is the block
+    the general path builds: the label must be a whole number without a sign or a point, and
+    the words after it those of a plain line (not an ``N`` or an ``O`` first, no ``O`` after)."""
+    m = _LABEL_THEN(line)
+    if m is None:
+        return None
+    end = m.end()
+    if _PLAIN_LINE(line, end) is None:
+        return None
+    return Block.of_labelled(line[end:], int(m[1]), (m.start(1) - 1, end))
 
 
 # Real controls read blocks of at most a few hundred characters; a longer line is reported,
@@ -120,6 +137,9 @@ def parse_block(line: str) -> Block:
         )
     if _PLAIN_LINE(line) is not None:  # the common case
         return Block.of_plain(line)
+    labelled = labelled_plain(line)
+    if labelled is not None:
+        return labelled
     if not has_special(line):  # no comment, ';', '/' or '%'
         words = plain_words(line)
         if words is not None:
@@ -190,7 +210,7 @@ class BlockCache:
     held; at the editor's quiet moments) the blocks that nothing but the cache holds any more
     are dropped, so that what no document uses goes (an hour of
     typing leaves nothing behind) at a cost in proportion to what was added. A plain line of
-    words (``Block.plain``) costs no more to make than to look up, so opening a file makes those
+    words (``Block.plain``, also after a label) costs no more to make than to look up, so opening a file makes those
     afresh and caches the lines that take parsing."""
 
     def __init__(self) -> None:
@@ -217,9 +237,14 @@ class BlockCache:
         added = 0
         short = max(map(len, lines), default=0) <= MAX_BLOCK_CHARS  # as good as always: no line to measure again
         for line in lines:
-            if (short or len(line) <= MAX_BLOCK_CHARS) and plain(line) is not None:
-                append(of_plain(line))  # as cheap as a lookup: not cached
-                continue
+            if short or len(line) <= MAX_BLOCK_CHARS:
+                if plain(line) is not None:
+                    append(of_plain(line))  # as cheap as a lookup: not cached
+                    continue
+                labelled = labelled_plain(line)  # N10 G01 X5.: as cheap, and as rarely repeated
+                if labelled is not None:
+                    append(labelled)
+                    continue
             b = blocks.get(line)
             if b is None:
                 b = blocks[line] = parse_block(line)

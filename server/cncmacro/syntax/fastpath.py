@@ -44,14 +44,15 @@ from .nodes import (
 _WORDS = re.compile(r"([ \t]*)([A-Za-z])([+-]?(?:\d+\.?\d*|\.\d+))")
 
 
-def plain_words(code: str) -> list[Word] | None:
-    """The words of ``code`` when it holds only address-number words, else None.
+def plain_words(code: str, column: int = 0) -> list[Word] | None:
+    """The words of ``code`` when it holds only address-number words, else None; ``code``
+    starts at ``column`` of its line (after a sequence number, ``Block.plain_tail``).
 
     ``findall`` skips what it cannot match, so the columns are counted from the matched
     lengths: they reach the end of the line exactly when nothing was skipped.
     """
     words = []
-    pos = 0
+    pos = column
     for gap, letter, text in _WORDS.findall(code):
         if len(text) > MAX_NUMBER_CHARS:
             return None  # the grammar says why
@@ -59,7 +60,7 @@ def plain_words(code: str) -> list[Word] | None:
         end = pos + 1 + len(text)
         words.append(Word(letter.upper(), Number(float(text), text, pos + 1, end), None, pos, end))
         pos = end
-    if not words or pos != len(code.rstrip(" \t")):
+    if not words or pos - column != len(code.rstrip(" \t")):
         return None
     return words
 

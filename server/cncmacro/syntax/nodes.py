@@ -358,10 +358,14 @@ class Block:
     (``G01 X12.5 Y-3.``), most of a CAM program, is kept as its text in ``plain`` and its
     ``words`` are read the first time they are asked for: opening a file then costs one
     pattern match per such line, and the interpreter compiles these lines straight from
-    ``plain`` (its ``split()`` is its words).
+    ``plain`` (its ``split()`` is its words). A sequence number followed by such words
+    (``N10 G01 X5.``, a line in ten of a CAM program) is a labelled block like any other, with
+    the text after its label kept in ``plain_tail`` and its words read from it the first time
+    they are asked for; the interpreter and the static checks read that text as they read a
+    plain line.
     """
 
-    __slots__ = (*(f for f in _FIELDS if f != "words"), "_words", "plain")
+    __slots__ = (*(f for f in _FIELDS if f != "words"), "_words", "plain", "plain_tail")
 
     def __init__(
         self,
@@ -395,6 +399,7 @@ class Block:
         self.problems = problems
         self.structural = structural
         self.plain = plain
+        self.plain_tail: str | None = None
         self.abbreviations = abbreviations
 
     @property
@@ -403,7 +408,11 @@ class Block:
         if w is None:
             from .fastpath import plain_words
 
-            w = self._words = tuple(plain_words(self.plain or "") or ())
+            tail = self.plain_tail
+            if tail is not None and self.label_span is not None:
+                w = self._words = tuple(plain_words(tail, self.label_span[1]) or ())
+            else:
+                w = self._words = tuple(plain_words(self.plain or "") or ())
         return w
 
     def __eq__(self, other: object) -> bool:
@@ -423,9 +432,24 @@ class Block:
         nearly every line of a CAM program."""
         b: Block = _new(cls)
         b.label = b.label_span = b.program = b.program_span = b.title = b.block_delete = b._words = None
+        b.plain_tail = None
         b.tape = b.structural = False
         b.corners = b.statements = b.comments = b.problems = b.abbreviations = ()
         b.plain = line
+        return b
+
+    @classmethod
+    def of_labelled(cls, tail: str, label: int, label_span: tuple[int, int], _new: Any = object.__new__) -> Block:
+        """The block of a sequence number and plain words (``N10 G01 X5.``): ``label`` written
+        at ``label_span``, then ``tail``, the rest of the line, whose words are read when asked for."""
+        b: Block = _new(cls)
+        b.program = b.program_span = b.title = b.block_delete = b._words = b.plain = None
+        b.label = label
+        b.label_span = label_span
+        b.plain_tail = tail
+        b.tape = False
+        b.structural = True
+        b.corners = b.statements = b.comments = b.problems = b.abbreviations = ()
         return b
 
     @property

@@ -73,6 +73,8 @@ class BlockMemo:
         """What ``block`` says by itself under ``ctx`` (None for a plain line that needs no
         look, or a block that says nothing)."""
         plain = block.plain
+        if plain is None:
+            plain = block.plain_tail  # after a label (N10 G01 X5.)
         if plain is not None:  # plain lines are many and rarely repeat: not kept
             return line_facts(block, ctx) if ctx.plain_hint(plain) else None
         entry = self._entries.get(id(block))
@@ -87,6 +89,8 @@ class BlockMemo:
         """The jumps and variables of ``block`` under ``dialect`` and the machine file's call
         codes ``calls`` (which words are jumps: ``machine/jump_words.py``)."""
         plain = block.plain
+        if plain is None:
+            plain = block.plain_tail  # after a label (N10 G01 X5.)
         if plain is not None:
             if not may_hold_jump(plain):  # and no '#': a plain line holds address-number words only
                 return NO_SITES
