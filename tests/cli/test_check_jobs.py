@@ -9,6 +9,7 @@ and the shards together report what one check does."""
 
 from __future__ import annotations
 
+import concurrent.futures
 import io
 import os
 import signal
@@ -20,7 +21,6 @@ from pathlib import Path
 import pytest
 
 from cli_capture import cli
-from cncmacro.cli import check_jobs
 from cncmacro.cli.check import check_paths
 
 posix_only = pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals and process groups")
@@ -100,7 +100,7 @@ def test_jobs_1_starts_no_process(tmp_path: Path, monkeypatch: pytest.MonkeyPatc
     def refused(*args: object, **kwargs: object) -> None:
         raise AssertionError("a pool was started")
 
-    monkeypatch.setattr(check_jobs, "ProcessPoolExecutor", refused)
+    monkeypatch.setattr(concurrent.futures, "ProcessPoolExecutor", refused)
     out, err = io.StringIO(), io.StringIO()
     assert check_paths([str(shop(tmp_path))], out, err, jobs=1) == 2  # the binary file
     assert "O9100.nc:2:1: error: division by zero" in out.getvalue()
@@ -112,7 +112,7 @@ def test_a_check_of_a_few_files_starts_no_process_whatever_the_jobs(
     def refused(*args: object, **kwargs: object) -> None:
         raise AssertionError("a pool was started")
 
-    monkeypatch.setattr(check_jobs, "ProcessPoolExecutor", refused)
+    monkeypatch.setattr(concurrent.futures, "ProcessPoolExecutor", refused)
     for n in range(1, 17):  # one batch of 16 files: a worker would cost more than it saves
         (tmp_path / f"O{n:04d}.nc").write_text(f"O{n:04d}\n#1=#2/0\nM30\n", encoding="utf-8")
     out, err = io.StringIO(), io.StringIO()

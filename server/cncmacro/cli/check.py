@@ -50,7 +50,7 @@ from ..library.machine_file import (
 from ..library.profiles import typed_profile_wins
 from .call_groups import FileKeys, join_groups, to_read_exactly
 from .check_jobs import Shard, WorkerLost, Workers, default_jobs, in_shard, usable_jobs
-from .check_work import Found, MachineWork, read_text
+from .check_work import Found, MachineWork, collect_left_behind, read_text
 from .findings_report import FindingsReport
 from .terminal import Printable
 
@@ -71,10 +71,35 @@ def check_paths(
     hints: bool = False,
     jobs: int = 1,
     shard: Shard | None = None,
+    process_ends: bool = False,
 ) -> int:
     """Check every program file under ``paths``; print the findings; return the exit status.
     ``jobs`` processes do the work (``check_jobs.py``; 1: this process alone); with ``shard``
-    only the call groups that fall to it are checked."""
+    only the call groups that fall to it are checked. With ``process_ends`` (the process's own
+    command) what the last group left is not collected: the process ends next."""
+    try:
+        return _check_paths(paths, out, err, fmt, dialect=dialect, search_paths=search_paths, locale=locale,
+                            max_blocks=max_blocks, machine=machine, hints=hints, jobs=jobs, shard=shard)  # fmt: skip
+    finally:
+        if not process_ends:
+            collect_left_behind()
+
+
+def _check_paths(
+    paths: list[str],
+    out: TextIO,
+    err: TextIO,
+    fmt: str,
+    *,
+    dialect: str | None,
+    search_paths: list[str] | None,
+    locale: str,
+    max_blocks: int | None,
+    machine: str | None,
+    hints: bool,
+    jobs: int,
+    shard: Shard | None,
+) -> int:
     chinese = is_chinese(locale)
     shown_err = Printable(err)
     if max_blocks is not None and max_blocks < 1:
@@ -311,4 +336,5 @@ def main_check(args: argparse.Namespace) -> int:
         args.paths, sys.stdout, sys.stderr, args.format, dialect=args.dialect, search_paths=args.path,
         locale=args.locale, max_blocks=args.max_blocks, machine=args.machine, hints=args.hints,
         jobs=default_jobs() if args.jobs is None else usable_jobs(args.jobs), shard=args.shard,
+        process_ends=getattr(args, "ends_process", False),
     )  # fmt: skip

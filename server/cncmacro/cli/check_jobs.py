@@ -29,14 +29,15 @@ import sys
 import zlib
 from collections import deque
 from collections.abc import Callable, Iterable, Iterator
-from concurrent.futures import Future, ProcessPoolExecutor
-from concurrent.futures.process import BrokenProcessPool
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from ..bilingual import pick
 from .check_work import MachineWork, in_worker
 from .locale_option import environment_locale
+
+if TYPE_CHECKING:  # the pool's modules are loaded only when there are workers (10 ms)
+    from concurrent.futures import Future, ProcessPoolExecutor
 
 T = TypeVar("T")
 R = TypeVar("R")
@@ -125,6 +126,8 @@ class Workers:
         self.jobs = jobs
         self._pool: ProcessPoolExecutor | None = None
         if jobs > 1:
+            from concurrent.futures import ProcessPoolExecutor
+
             self._pool = ProcessPoolExecutor(jobs, initializer=_start, initargs=(works,))
 
     def __enter__(self) -> Workers:
@@ -177,6 +180,8 @@ class Workers:
 
 
 def _answer(future: Future[R]) -> R:
+    from concurrent.futures.process import BrokenProcessPool
+
     try:
         return future.result()
     except BrokenProcessPool:

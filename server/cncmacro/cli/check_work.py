@@ -103,10 +103,9 @@ class MachineWork:
             said: list[str] = []
             with logged() as records:
                 texts = [(f[0], text) for f in group if (text := self._text(f, said)) is not None]
+                collect_left_behind()  # before this group's parse freezes what is alive (``analyse_files``)
                 found = analyse_files(texts, self.workspace, self.locale) if texts else []
-                # the group's runs and machines, which refer to each other, before the next
-                # group's parse freezes what is alive (``analyse_files``)
-                gc.collect()
+                _left.behind = True
             results.append(GroupResult(found, said, records))
         return results
 
@@ -150,6 +149,25 @@ def logged() -> Iterator[list[logging.LogRecord]]:
 
 
 _in_worker = False  # set in a worker process (``check_jobs.py``)
+
+
+class _Left:
+    """Whether a group checked in this process left its runs and machines, which refer to each
+    other, for the cycle collector."""
+
+    behind = False
+
+
+_left = _Left()
+
+
+def collect_left_behind() -> None:
+    """Collect what the last group checked in this process left, if it has not been: before the
+    next group's parse freezes what is alive, and when the check ends in a process that goes on.
+    A check that ends its process leaves it (a 1M-line file's, a third of a second)."""
+    if _left.behind:
+        gc.collect()
+        _left.behind = False
 
 
 def in_worker() -> None:

@@ -639,8 +639,8 @@ def _same(x: Value, y: Value) -> bool:
 
 def _has_relation(node: Expr) -> bool:
     """Whether a comparison hides in ``node`` outside functions and indirections (walked
-    without recursion: a condition may join hundreds of comparisons). Not the grammar's
-    ``_has_relation``, which looks inside them too: here it decides whether AND/OR join
+    without recursion: a condition may join hundreds of comparisons). Not the readers'
+    ``has_relation`` (``syntax/conditions.py``), which looks inside them too: here it decides whether AND/OR join
     conditions or numbers."""
     stack: list[Expr] = [node]
     while stack:

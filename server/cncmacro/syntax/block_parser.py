@@ -13,17 +13,17 @@ import sys
 import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
-from typing import cast
-
-from lark.exceptions import UnexpectedInput
+from typing import TYPE_CHECKING, cast
 
 from ..bilingual import detail
 from .assemble import Items, assemble, assemble_words
+from .conditions import BlockError
 from .fastpath import plain_words, read_items
-from .grammar import BlockError, GrammarParser, make_parser
 from .lines import Prepared, has_special, prepare
-from .messages import describe_error
 from .nodes import Block, Problem
+
+if TYPE_CHECKING:
+    from .grammar import GrammarParser
 
 # A line of whitespace-separated address-number words with at most three decimals, not
 # starting with N or O and with no O after the first word (``M99 O0810`` ends one program and
@@ -83,7 +83,7 @@ def _parser() -> Iterator[GrammarParser]:
     with _idle_lock:
         p = _idle.pop() if _idle else None
     if p is None:
-        p = make_parser()
+        p = _new_parser()
     try:
         yield p
     finally:
@@ -98,13 +98,25 @@ def warm_up() -> None:
     with _idle_lock:
         if _idle:
             return
-    p = make_parser()
+    p = _new_parser()
     with _idle_lock:
         _idle.append(p)
 
 
+def _new_parser() -> GrammarParser:
+    """A new grammar parser. The grammar and lark are loaded with the first one: a CAM file
+    that the fast path reads whole never needs them (lark alone takes 25 ms to load)."""
+    from .grammar import make_parser
+
+    return make_parser()
+
+
 def parse_with_grammar(code: str, prep: Prepared) -> Block:
     """Parse prepared code with the lark grammar only (no fast path)."""
+    from lark.exceptions import UnexpectedInput  # loaded by the parser's making (``_new_parser``)
+
+    from .messages import describe_error
+
     with _parser() as (lark, builder):
         builder.reset()
         try:

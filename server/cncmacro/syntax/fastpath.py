@@ -18,7 +18,7 @@ from collections.abc import Callable
 from typing import Protocol, cast
 
 from .assemble import Items
-from .grammar import MAX_NUMBER_CHARS, RELATION_NAMES, BlockError, _check_condition, _has_relation
+from .conditions import MAX_NUMBER_CHARS, RELATION_NAMES, BlockError, check_condition, has_relation
 from .keywords import FULL_WORD
 from .nodes import (
     Abbreviation,
@@ -252,7 +252,7 @@ class _Reader:
                 value = Unary(text, x, s, x.end)
         else:
             value = self.variable_or_bracket()
-        if self.relations and _has_relation(value):
+        if self.relations and has_relation(value):
             raise _Decline
         return Word(letter, value, None, ls, value.end)
 
@@ -268,15 +268,13 @@ class _Reader:
         target = self.variable()
         self.expect(_OP, "=")
         value = self.sum()
-        if self.relations and (
-            _has_relation(value) or (isinstance(target, IndirectVar) and _has_relation(target.index))
-        ):
+        if self.relations and (has_relation(value) or (isinstance(target, IndirectVar) and has_relation(target.index))):
             raise _Decline
         return Assign(target, value, None, target.start, value.end)
 
     def condition(self) -> Bracket:
         cond = self.bracket()
-        _check_condition(cond)
+        check_condition(cond)
         return cond
 
     def target(self) -> Expr:
@@ -285,7 +283,7 @@ class _Reader:
             self.i += 1
             return Number(float(text), text, s, e)
         x = self.variable_or_bracket()
-        if self.relations and _has_relation(x):
+        if self.relations and has_relation(x):
             raise _Decline
         return x
 
@@ -344,7 +342,7 @@ class _Reader:
                     self.i += 2
                     args.append(self.relexpr())
                     close = self.expect(_OP, "]")
-            if self.relations and any(_has_relation(a) for a in args):
+            if self.relations and any(has_relation(a) for a in args):
                 raise _Decline
             return FunctionCall(text, tuple(args), s, close[3])
         raise _Decline
@@ -362,7 +360,7 @@ class _Reader:
             self.i += 1
             right = self.sum()
             self.relations += 1
-            if _has_relation(left) or _has_relation(right):
+            if has_relation(left) or has_relation(right):
                 raise _Decline
             return Relation(RELATION_NAMES.get(text, text), text, left, right, left.start, right.end)
         return left

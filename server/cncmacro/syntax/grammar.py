@@ -16,11 +16,19 @@ from typing import TYPE_CHECKING, Any
 from lark import Lark, Token, Transformer, Tree
 from lark.tree import Meta
 
-from ..bilingual import Detail, detail
+from ..bilingual import detail
 from .assemble import Items
+from .conditions import (
+    MAX_NUMBER_CHARS,
+    RELATION_NAMES,
+    TOO_MANY_DIGITS,
+    BlockError,
+    check_condition,
+    has_relation,
+    relation_error,
+)
 from .keywords import full_word, pattern
 from .nodes import (
-    CONDITION_JOINS,
     Abbreviation,
     Assign,
     Binary,
@@ -63,19 +71,6 @@ else:
 # built, in the grammar's order. Each callback names their types as it takes them apart.
 _Children = list[Any]
 
-RELATION_NAMES = {"==": "EQ", "!=": "NE", ">": "GT", ">=": "GE", "<": "LT", "<=": "LE"}
-
-
-class BlockError(Exception):
-    """A rule of the language broken by a line that the grammar itself accepts."""
-
-    def __init__(self, message: Detail, start: int, end: int, alarm: int | None = None) -> None:
-        super().__init__(message)
-        self.message = message
-        self.start = start
-        self.end = end
-        self.alarm = alarm  # the alarm's number, named by whoever shows the message (``Problem.alarm``)
-
 
 def _start(x: _Tok | Expr) -> int:
     return x.start_pos if isinstance(x, Token) else x.start
@@ -83,15 +78,6 @@ def _start(x: _Tok | Expr) -> int:
 
 def _end(x: _Tok | Expr) -> int:
     return x.end_pos if isinstance(x, Token) else x.end
-
-
-# No control reads a number this long (FANUC: alarm 003, too many digits), and a float cannot
-# hold one of 309 digits: the line is not read.
-MAX_NUMBER_CHARS = 24
-# the alarms of the two rules below (FANUC's numbers, dialects/alarms.py's, which this layer does
-# not import): too many digits, and a comparison outside a condition
-TOO_MANY_DIGITS = 3
-ILLEGAL_FORMAT = 114
 
 
 def _literal(text: str, start: int, end: int) -> Number:
@@ -161,16 +147,16 @@ class _Builder(Transformer[Token, Items]):
         value: _Tok | Expr = c[1]
         if isinstance(value, Token):  # BRACKET_NAME
             return Word(letter.upper(), None, value[1:-1], letter.start_pos, value.end_pos)
-        if self.relations and _has_relation(value):
-            raise _relation_error(value)
+        if self.relations and has_relation(value):
+            raise relation_error(value)
         return Word(letter.upper(), value, None, letter.start_pos, value.end)
 
     def corner(self, c: _Children) -> CornerWord:
         head: _Tok
         value: Expr
         head, value = c
-        if self.relations and _has_relation(value):
-            raise _relation_error(value)
+        if self.relations and has_relation(value):
+            raise relation_error(value)
         return CornerWord(head[-1].upper(), value, head.start_pos, value.end)
 
     def wvalue(self, c: _Children) -> Expr:
@@ -191,16 +177,16 @@ class _Builder(Transformer[Token, Items]):
         if len(c) == 5:  # [#_NAME] = value
             lb: _Tok
             lb, target, _rb, _eq, value = c
-            if self.relations and _has_relation(value):
-                raise _relation_error(value)
-            if self.relations and _has_relation(target):
-                raise _relation_error(target)
+            if self.relations and has_relation(value):
+                raise relation_error(value)
+            if self.relations and has_relation(target):
+                raise relation_error(target)
             return Assign(target, value, None, lb.start_pos, value.end)
         target, _eq, value = c
-        if self.relations and _has_relation(value):
-            raise _relation_error(value)
-        if self.relations and isinstance(target, (IndirectVar, NamedVar)) and _has_relation(target):
-            raise _relation_error(target)
+        if self.relations and has_relation(value):
+            raise relation_error(value)
+        if self.relations and isinstance(target, (IndirectVar, NamedVar)) and has_relation(target):
+            raise relation_error(target)
         return Assign(target, value, None, target.start, value.end)
 
     def if_stmt(self, c: _Children) -> If:
@@ -208,14 +194,14 @@ class _Builder(Transformer[Token, Items]):
         cond: Bracket = c[1]
         then: Statement
         if len(c) == 2:  # IF [cond] alone: it governs the rest of the block (words) or nothing
-            _check_condition(cond)
+            check_condition(cond)
             return If(cond, None, None, kw.start_pos, cond.end)
         if len(c) == 3 and not isinstance(c[2], Token):  # IF [cond] statement: THEN left out
             then = c[2]
-            _check_condition(cond)
+            check_condition(cond)
             return If(cond, None, then, kw.start_pos, then.end, True)
         kw2: _Tok = c[2]
-        _check_condition(cond)
+        check_condition(cond)
         self._word(kw2)
         if len(c) == 3:  # IF [cond] THEN alone: the block form, up to ELSE or ENDIF
             return If(cond, None, None, kw.start_pos, kw2.end_pos, opens_block=True)
@@ -236,7 +222,7 @@ class _Builder(Transformer[Token, Items]):
         if p is None or p.letter != "P" or p.value is None:
             where = p if p is not None else m99
             raise BlockError(_M99_NEEDS_P, where.start, where.end)
-        _check_condition(cond)
+        check_condition(cond)
         return If(cond, p.value, None, cond.start, p.end, m99=(m99, p))
 
     def while_stmt(self, c: _Children) -> While:
@@ -244,7 +230,7 @@ class _Builder(Transformer[Token, Items]):
         cond: Bracket
         num: _Tok
         kw, cond, _do, num = c
-        _check_condition(cond)
+        check_condition(cond)
         self._word(kw)
         return While(cond, _number(num), kw.start_pos, num.end_pos)
 
@@ -280,8 +266,8 @@ class _Builder(Transformer[Token, Items]):
         x: _Tok | Expr = c[0]
         if isinstance(x, Token):
             return _number(x)
-        if self.relations and _has_relation(x):
-            raise _relation_error(x)
+        if self.relations and has_relation(x):
+            raise relation_error(x)
         return x
 
     def output_stmt(self, c: _Children) -> Output:
@@ -324,8 +310,8 @@ class _Builder(Transformer[Token, Items]):
         self.relations += 1
         spelling = op.upper()
         for side in (left, right):
-            if _has_relation(side):
-                raise _relation_error(side)
+            if has_relation(side):
+                raise relation_error(side)
         return Relation(RELATION_NAMES.get(spelling, spelling), spelling, left, right, left.start, right.end)
 
     def named(self, c: _Children) -> NamedVar:
@@ -352,8 +338,8 @@ class _Builder(Transformer[Token, Items]):
         args: tuple[Expr, ...] = tuple(x for x in c[1:] if not isinstance(x, Token))
         if self.relations:
             for a in args:
-                if _has_relation(a):
-                    raise _relation_error(a)
+                if has_relation(a):
+                    raise relation_error(a)
         comma = any(isinstance(x, Token) and x.type == "COMMA" for x in c)
         return FunctionCall(name, args, head.start_pos, last.end_pos, comma)
 
@@ -380,117 +366,6 @@ def _is_m99(w: Word) -> bool:
     """Whether ``w`` is ``M99`` written as a literal (``M99``, ``M099``)."""
     v = w.value
     return w.letter == "M" and isinstance(v, Number) and v.value == 99 and not v.has_point and v.text[0] != "+"
-
-
-def _has_relation(expr: Expr) -> bool:
-    """True when a comparison hides anywhere inside ``expr`` (walked without recursion)."""
-    stack: list[object] = [expr]
-    while stack:
-        e = stack.pop()
-        if isinstance(e, Relation):
-            return True
-        if isinstance(e, Binary):
-            stack.append(e.left)
-            stack.append(e.right)
-        elif isinstance(e, (Bracket,)):
-            stack.append(e.inner)
-        elif isinstance(e, Unary):
-            stack.append(e.operand)
-        elif isinstance(e, FunctionCall):
-            stack.extend(e.args)
-        elif isinstance(e, IndirectVar):
-            stack.append(e.index)
-        elif isinstance(e, NamedVar) and e.index is not None:
-            stack.append(e.index)
-    return False
-
-
-def _relation_error(expr: Expr) -> BlockError:
-    rel = _find_relation(expr)
-    return BlockError(
-        detail(
-            f"the comparison '{rel.spelling}' is allowed only in an IF or WHILE condition",
-            f"关系运算符 '{rel.spelling}' 只能用在 IF 或 WHILE 的条件中",
-        ),
-        rel.start,
-        rel.end,
-        ILLEGAL_FORMAT,
-    )
-
-
-def _find_relation(expr: Expr) -> Relation:
-    stack: list[object] = [expr]
-    while stack:
-        e = stack.pop()
-        if isinstance(e, Relation):
-            return e
-        for attr in ("left", "right", "inner", "operand", "index"):
-            sub = getattr(e, attr, None)
-            if sub is not None:
-                stack.append(sub)
-        if isinstance(e, FunctionCall):
-            stack.extend(e.args)
-    raise AssertionError("no comparison found")  # only called after _has_relation
-
-
-def _check_condition(cond: Bracket) -> None:
-    """A condition is ``[a op b]`` or bracketed conditions joined by AND, OR or XOR, as many as
-    the line holds (``[[a] AND [b] AND [c]]`` is read left to right, as every other operator)."""
-    stack: list[Bracket] = [cond]
-    while stack:
-        b = stack.pop()
-        inner = b.inner
-        if isinstance(inner, Relation):
-            continue
-        sides = _joined_conditions(inner)
-        if sides is not None:
-            stack.extend(sides)
-            continue
-        if _has_relation(inner):
-            raise BlockError(
-                detail(
-                    "conditions are joined with AND/OR only when each side is bracketed: [[#1 EQ 0] OR [#2 LT 0]]",
-                    "用 AND/OR 连接条件时，每个条件都要加方括号：[[#1 EQ 0] OR [#2 LT 0]]",
-                ),
-                b.start,
-                b.end,
-            )
-        raise BlockError(
-            detail(
-                "the condition needs a comparison such as [#1 GT 0] (EQ NE GT GE LT LE)",
-                "条件中需要关系运算，例如 [#1 GT 0]（EQ NE GT GE LT LE）",
-            ),
-            b.start,
-            b.end,
-        )
-
-
-def _joined_conditions(e: Expr) -> list[Bracket] | None:
-    """The bracketed conditions that AND, OR and XOR (or ``&&``, ``||``) join in ``e`` (``[a] AND [b] OR [c]``), or
-    None when ``e`` is not such a chain. A loop, not recursion: a chain may be long."""
-    out: list[Bracket] = []
-    pending: list[Expr] = [e]
-    while pending:
-        x = pending.pop()
-        if isinstance(x, Binary) and x.op in CONDITION_JOINS:
-            for side in (x.right, x.left):
-                if isinstance(side, Bracket) and _is_bracketed_condition(side):
-                    out.append(side)
-                elif isinstance(side, Binary) and side.op in CONDITION_JOINS:
-                    pending.append(side)
-                else:
-                    return None
-        else:
-            return None
-    return out
-
-
-def _is_bracketed_condition(e: Expr) -> bool:
-    """A bracket whose content can be a condition; its details are checked in turn."""
-    if not isinstance(e, Bracket):
-        return False
-    inner = e.inner
-    return isinstance(inner, Relation) or (isinstance(inner, Binary) and inner.op in CONDITION_JOINS)
 
 
 def _output_parts(tok: _Tok) -> tuple[OutputPart, ...]:
