@@ -149,6 +149,20 @@ def test_a_macro_checked_alone_whose_alarm_depends_on_its_arguments_is_only_info
     assert code == 1 and ": error: the run reaches macro alarm 3091: S AND T BOTH GIVEN" in out
 
 
+@pytest.mark.parametrize(
+    ("ending", "is_macro"),
+    [("n10 m99\n", True), ("N10 M 099\n", True), ("n10 m30\nm99\n", False), ("N10 M99\nM02\n", False)],
+)
+def test_a_macro_is_told_by_its_m99_without_m30_or_m02_written_in_either_case(tmp_path, ending, is_macro):
+    # checked alone, a program that returns with M99 and never ends with M30 or M02 is a macro:
+    # its arguments are unknown, so the alarm behind #19 is the caller's to decide; a program
+    # that ends is run with #19 vacant, and jumps over the alarm
+    macro = "O9100\n(SPINDLE: M03, COOLANT: M08)\nIF [#19 EQ #0] GOTO 10\n#3000=91 (S GIVEN)\n" + ending
+    code, out, _ = cli("check", str(_folder(tmp_path, O9100=macro)))
+    assert code == 0
+    assert ("macro alarm 3091: S GIVEN" in out) is is_macro, out
+
+
 def test_a_macro_checked_alone_whose_alarm_depends_on_the_callers_tool_length_is_only_information(tmp_path):
     # #4111 is the H in effect, which the caller's G43 sets before it calls the macro
     macro = "O9100\nIF [#4111 GT 0] GOTO 5\n#3000=89 (NO TOOL LENGTH ACTIVE)\nN5 M99\n"

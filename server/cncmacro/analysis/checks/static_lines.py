@@ -69,10 +69,14 @@ class StaticLines:
     def _fill(self, blocks: list[Block], start: int, end: int) -> None:
         facts_of = self.memo.facts
         ctx = self.ctx
+        hint = ctx.plain_hint
         facts = self.facts
         problems = self.problems
         for line in range(start, end):
             block = blocks[line]
+            plain = block.plain
+            if plain is not None and not hint(plain):  # most lines of a CAM file: passed over here
+                continue
             if block.problems:
                 problems[line] = block.problems
             f = facts_of(block, ctx)

