@@ -253,7 +253,7 @@ class DiagnosticsEngine:
         if self.collector.due() and not self._cleaning and not self.reading:  # not while a huge file is read
             self._cleaning = True
             try:
-                await self._clean_when_quiet()
+                await self._clean_when_quiet(generation)
             finally:
                 self._cleaning = False
 
@@ -264,18 +264,24 @@ class DiagnosticsEngine:
         now = time.monotonic()
         return last - before < BURST_SECONDS and now - last < BURST_SECONDS
 
-    async def _clean_when_quiet(self) -> None:
+    async def _clean_when_quiet(self, generation: int) -> None:
         """Collect the frozen heap once the editor sent nothing for a while (``Collector.quiet_seconds``;
-        at once when urgent)."""
+        at once when urgent), unless a newer change came meanwhile: its run cleans up after it
+        publishes (a clean-up queued behind that run's analysis would hold up its publishing)."""
         while not self.collector.urgent():
             quiet = time.monotonic() - self.server.last_message_at
             wanted = self.collector.quiet_seconds()
             if quiet >= wanted:
                 break
             await asyncio.sleep(wanted - quiet)
-        if self.reading:
-            return  # a huge file began to be read: after its first analysis
-        await asyncio.get_running_loop().run_in_executor(self._executor, self.collector.clean)
+        if self.reading or generation != self.generation:
+            return  # a huge file began to be read (after its first analysis), or a newer run comes
+        await asyncio.get_running_loop().run_in_executor(self._executor, self._clean_unless_newer, generation)
+
+    def _clean_unless_newer(self, generation: int) -> None:
+        """On the worker thread: the clean-up, unless a newer change came while it waited its turn."""
+        if generation == self.generation:
+            self.collector.clean()
 
     def _analyse(self, generation: int, stopped: Callable[[], bool] = lambda: False,
                  turn: float | None = None) -> Outcome | None:  # fmt: skip

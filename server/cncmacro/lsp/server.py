@@ -191,6 +191,7 @@ class CncMacroServer(LanguageServer):
             self.index.scan(self.roots)
         except Exception:
             log.exception("indexing the workspace folders failed")
+        self.diagnostics.collector.indexed()
 
     def list_folders_ahead(self) -> None:
         """The folders a call looks in, listed on a thread of their own ahead of the first hover
