@@ -11,7 +11,7 @@ grammar build the same tree.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 # ---------------------------------------------------------------- expressions
 
@@ -365,7 +365,28 @@ class Block:
     plain line.
     """
 
-    __slots__ = (*(f for f in _FIELDS if f != "words"), "_words", "plain", "plain_tail")
+    __slots__ = ("_words", "plain")  # all a plain line's block holds (see ``of_plain``)
+    plain: str | None
+    _words: tuple[Word, ...] | None
+    # the other fields as a plain line's block has them: ``Block(...)`` makes a ``_Block``,
+    # which holds each of them itself
+    label: int | None = None
+    label_span: tuple[int, int] | None = None
+    program: int | None = None
+    program_span: tuple[int, int] | None = None
+    title: str | None = None
+    block_delete: int | None = None
+    tape: bool = False
+    corners: tuple[CornerWord, ...] = ()
+    statements: tuple[Statement, ...] = ()
+    comments: tuple[Comment, ...] = ()
+    problems: tuple[Problem, ...] = ()
+    structural: bool = False
+    plain_tail: str | None = None
+    abbreviations: tuple[Abbreviation, ...] = ()
+
+    def __new__(cls, *args: Any, **kwargs: Any) -> Block:
+        return object.__new__(_Block if cls is Block else cls)
 
     def __init__(
         self,
@@ -385,22 +406,23 @@ class Block:
         plain: str | None = None,
         abbreviations: tuple[Abbreviation, ...] = (),
     ) -> None:
-        self.label = label
-        self.label_span = label_span
-        self.program = program
-        self.program_span = program_span
-        self.title = title
-        self.block_delete = block_delete
-        self.tape = tape
-        self._words = None if plain is not None else words
-        self.corners = corners
-        self.statements = statements
-        self.comments = comments
-        self.problems = problems
-        self.structural = structural
-        self.plain = plain
-        self.plain_tail: str | None = None
-        self.abbreviations = abbreviations
+        b = cast("_Block", self)  # ``Block(...)`` makes a ``_Block`` (``__new__``)
+        b.label = label
+        b.label_span = label_span
+        b.program = program
+        b.program_span = program_span
+        b.title = title
+        b.block_delete = block_delete
+        b.tape = tape
+        b._words = None if plain is not None else words
+        b.corners = corners
+        b.statements = statements
+        b.comments = comments
+        b.problems = problems
+        b.structural = structural
+        b.plain = plain
+        b.plain_tail = None
+        b.abbreviations = abbreviations
 
     @property
     def words(self) -> tuple[Word, ...]:
@@ -416,7 +438,7 @@ class Block:
         return w
 
     def __eq__(self, other: object) -> bool:
-        if other.__class__ is not Block:
+        if not isinstance(other, Block):
             return NotImplemented
         return all(getattr(self, f) == getattr(other, f) for f in _FIELDS)
 
@@ -429,20 +451,19 @@ class Block:
     @classmethod
     def of_plain(cls, line: str, _new: Any = object.__new__) -> Block:
         """``Block(plain=line)`` without the keyword handling: opening a file makes one for
-        nearly every line of a CAM program."""
-        b: Block = _new(cls)
-        b.label = b.label_span = b.program = b.program_span = b.title = b.block_delete = b._words = None
-        b.plain_tail = None
-        b.tape = b.structural = False
-        b.corners = b.statements = b.comments = b.problems = b.abbreviations = ()
+        nearly every line of a CAM program. It holds its text and, once asked for, its words;
+        every other field is the class's (no label, no statement, no problem): two fields made,
+        not sixteen, and a third of the memory."""
+        b: Block = _new(Block)
         b.plain = line
+        b._words = None
         return b
 
     @classmethod
     def of_labelled(cls, tail: str, label: int, label_span: tuple[int, int], _new: Any = object.__new__) -> Block:
         """The block of a sequence number and plain words (``N10 G01 X5.``): ``label`` written
         at ``label_span``, then ``tail``, the rest of the line, whose words are read when asked for."""
-        b: Block = _new(cls)
+        b: _Block = _new(_Block)
         b.program = b.program_span = b.title = b.block_delete = b._words = b.plain = None
         b.label = label
         b.label_span = label_span
@@ -523,3 +544,9 @@ class Block:
             if s.__class__ is EndIf:
                 return "ENDIF"
         return None
+
+
+class _Block(Block):
+    """The block of any line but a plain one (``Block.of_plain``): every field held by itself."""
+
+    __slots__ = (*(f for f in _FIELDS if f != "words"), "plain_tail")
