@@ -14,8 +14,7 @@ always come from the grammar.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
-from typing import Protocol, cast
+from typing import cast
 
 from .assemble import Items
 from .conditions import MAX_NUMBER_CHARS, RELATION_NAMES, BlockError, check_condition, has_relation
@@ -88,17 +87,7 @@ _ADDOPS = frozenset(("+", "-", "OR", "XOR", "||"))
 _MAX_TOKENS = 200
 
 
-class _TokenMatch(Protocol):
-    """A match of ``_TOKEN``: every alternative is a group, so ``lastindex`` is always set."""
-
-    lastindex: int
-
-    def span(self, group: int) -> tuple[int, int]: ...
-    def group(self, group: int) -> str: ...
-    def end(self) -> int: ...
-
-
-_match_token = cast("Callable[[str, int], _TokenMatch | None]", _TOKEN.match)
+_tokens = _TOKEN.finditer
 
 # token kinds
 _VAR, _NUM, _KW, _OP, _LETTER, _EOF = range(6)
@@ -124,22 +113,19 @@ def read_items(code: str) -> Items | None:
 
 def _tokenize(code: str, shortened: list[Abbreviation]) -> list[tuple[int, str, int, int]] | None:
     """The tokens of ``code``; a macro word stands for its whole word, and each one written
-    shortened is added to ``shortened``."""
+    shortened is added to ``shortened``. Every alternative of ``_TOKEN`` is a group, so
+    ``lastindex`` is its kind; a match that does not start where the last one ended skipped
+    what no token reads."""
     toks: list[tuple[int, str, int, int]] = []
+    append = toks.append
     pos = 0
-    n = len(code)
-    match = _match_token
-    while pos < n:
-        m = match(code, pos)
-        if m is None:
-            if code[pos:].strip(" \t"):
-                return None
-            break
-        kind = m.lastindex - 1
-        s, e = m.span(m.lastindex)
-        text = m.group(m.lastindex)
-        if (kind == _NUM or kind == _VAR) and len(text) > MAX_NUMBER_CHARS:
-            return None  # the grammar says why
+    for m in _tokens(code):
+        if m.start() != pos:
+            return None
+        group = cast(int, m.lastindex)
+        kind = group - 1
+        s, e = m.span(group)
+        text = m[group]
         if kind == _KW:
             up = text.upper()
             word = _MACRO_WORDS.get(up)
@@ -150,11 +136,14 @@ def _tokenize(code: str, shortened: list[Abbreviation]) -> list[tuple[int, str, 
             text = word
         elif kind == _LETTER:
             text = text.upper()
-        toks.append((kind, text, s, e))
-        pos = m.end()
-        if len(toks) > _MAX_TOKENS:
-            return None
-    toks.append((_EOF, "", n, n))
+        elif (kind == _NUM or kind == _VAR) and e - s > MAX_NUMBER_CHARS:
+            return None  # the grammar says why
+        append((kind, text, s, e))
+        pos = e
+    n = len(code)
+    if (pos != n and code[pos:].strip(" \t")) or len(toks) > _MAX_TOKENS:
+        return None
+    append((_EOF, "", n, n))
     return toks
 
 

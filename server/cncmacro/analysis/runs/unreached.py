@@ -173,10 +173,34 @@ class UnreachedRanges:
             if k >= 0 and line < units[k].end:
                 counts[k] += 1
         fr = _FileRanges(loaded, len(units), counts)
+        executed = sorted(ran)
         for k, unit in enumerate(units):
             if counts[k]:
-                fr.ranges += self._scan(loaded.program.blocks, ran, unit.start, self._end(loaded, k) - 1)
+                fr.ranges += self._scan_gaps(loaded.program.blocks, executed, unit.start, self._end(loaded, k) - 1)
         return fr
+
+    def _scan_gaps(self, blocks: list[Block], executed: list[int], lo: int, hi: int) -> list[Range]:
+        """``_scan`` of a whole program, from the file's executed lines in order: only the
+        stretches between two executed lines are looked at, and only where a range may start
+        or end (a program run from end to end has none, and costs a look per stretch, not per
+        line)."""
+        out: list[Range] = []
+        skippable = self.skippable
+        at = bisect_left(executed, lo)
+        end = bisect_right(executed, hi)
+        start = lo  # the first line of the stretch of unexecuted lines after the last executed one
+        for i in range(at, end + 1):
+            stop = executed[i] if i < end else hi + 1  # the stretch is start .. stop - 1
+            first = start
+            while first < stop and skippable(blocks[first]):
+                first += 1
+            if first < stop:
+                last = stop - 1
+                while skippable(blocks[last]):
+                    last -= 1
+                out.append((first, last))
+            start = stop + 1
+        return out
 
     @staticmethod
     def _end(loaded: LoadedFile, k: int) -> int:
