@@ -9,6 +9,7 @@ finds the text of a gsk980tdi ``G65 H99 Pn(/text)``) in exactly the same way.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import cast
 
 from ..bilingual import Detail, detail
 from .lines import Prepared
@@ -41,11 +42,25 @@ class Items(list[Item]):
 
     def __init__(self, items: Sequence[Item], abbreviations: Sequence[Abbreviation]) -> None:
         super().__init__(items)
-        self.abbreviations = tuple(sorted(abbreviations, key=lambda a: a.start))
+        self.abbreviations = tuple(sorted(abbreviations, key=_start)) if abbreviations else ()
+
+
+def _start(a: Abbreviation) -> int:
+    return a.start
 
 
 def assemble(items: Sequence[Item], prep: Prepared) -> Block:
     """Build the block of a line from its items, in the order they were written."""
+    if len(items) == 1 and not (prep.problems or prep.comments or prep.tape):
+        s = items[0]
+        if s.__class__ is not Word and s.__class__ is not CornerWord:  # one statement, the commonest macro line
+            statement = cast(Statement, s)
+            return Block(
+                block_delete=prep.block_delete,
+                statements=(statement,),
+                structural=_marks_structure(statement),
+                abbreviations=getattr(items, "abbreviations", ()),
+            )
     problems = list(prep.problems)
     program: int | None = None
     program_span: tuple[int, int] | None = None
@@ -91,12 +106,7 @@ def assemble(items: Sequence[Item], prep: Prepared) -> Block:
             title = comment_after(prep.comments, w.end)
             words.pop()
     stmts = tuple(statements)
-    structural = (
-        label is not None
-        or program is not None
-        or prep.tape
-        or any(isinstance(s, (While, Do, End, Else, EndIf)) or (s.__class__ is If and s.opens_block) for s in stmts)
-    )
+    structural = label is not None or program is not None or prep.tape or any(_marks_structure(s) for s in stmts)
     return Block(
         label=label,
         label_span=label_span,
@@ -158,6 +168,12 @@ def _ends_program(w: Word) -> bool:
     next program (docs/semantics.md §1)."""
     v = w.value
     return w.letter == "M" and isinstance(v, Number) and not v.has_point and v.value in (99.0, 30.0, 2.0)
+
+
+def _marks_structure(s: Statement) -> bool:
+    """Whether a statement is a marker the program's structure is made of: a loop's head or end,
+    or a block IF's IF, ELSE or ENDIF (program.py)."""
+    return isinstance(s, (While, Do, End, Else, EndIf)) or (s.__class__ is If and s.opens_block)
 
 
 def _first_comment_text(comments: tuple[Comment, ...]) -> str | None:

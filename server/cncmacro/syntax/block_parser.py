@@ -152,19 +152,21 @@ def parse_block(line: str) -> Block:
     labelled = labelled_plain(line)
     if labelled is not None:
         return labelled
-    if not has_special(line):  # no comment, ';', '/' or '%'
+    special = has_special(line)  # a comment, ';', '/' or '%'
+    if not special:
         words = plain_words(line)
         if words is not None:
             if words[0].letter not in ("O", "N") and words[-1].letter != "O":
                 return Block(words=tuple(words))
             return assemble_words(words, Prepared(line))  # a label or header: read once, not again
-    prep = prepare(line)
+    prep = prepare(line) if special else Prepared(line)
     code = prep.code
     if not code or code.isspace():
         return assemble((), prep)
-    words = plain_words(code)
-    if words is not None:
-        return assemble_words(words, prep)
+    if special:  # else the code is the line, which is not plain words
+        words = plain_words(code)
+        if words is not None:
+            return assemble_words(words, prep)
     items = read_items(code)
     if items is None:
         return parse_with_grammar(code, prep)

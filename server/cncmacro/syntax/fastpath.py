@@ -113,19 +113,21 @@ def read_items(code: str) -> Items | None:
 
 def _tokenize(code: str, shortened: list[Abbreviation]) -> list[tuple[int, str, int, int]] | None:
     """The tokens of ``code``; a macro word stands for its whole word, and each one written
-    shortened is added to ``shortened``. Every alternative of ``_TOKEN`` is a group, so
-    ``lastindex`` is its kind; a match that does not start where the last one ended skipped
-    what no token reads."""
+    shortened is added to ``shortened``. Every alternative of ``_TOKEN`` is a group that ends
+    its match, so ``lastindex`` is the token's kind and its text ends the match; a match that
+    does not start where the last one ended skipped what no token reads, and what follows the
+    last token must be blanks."""
     toks: list[tuple[int, str, int, int]] = []
     append = toks.append
-    pos = 0
+    e = 0
     for m in _tokens(code):
-        if m.start() != pos:
+        if m.start() != e:
             return None
         group = cast(int, m.lastindex)
         kind = group - 1
-        s, e = m.span(group)
         text = m[group]
+        e = m.end()
+        s = e - len(text)
         if kind == _KW:
             up = text.upper()
             word = _MACRO_WORDS.get(up)
@@ -139,9 +141,8 @@ def _tokenize(code: str, shortened: list[Abbreviation]) -> list[tuple[int, str, 
         elif (kind == _NUM or kind == _VAR) and e - s > MAX_NUMBER_CHARS:
             return None  # the grammar says why
         append((kind, text, s, e))
-        pos = e
     n = len(code)
-    if (pos != n and code[pos:].strip(" \t")) or len(toks) > _MAX_TOKENS:
+    if (e != n and code[e:].strip(" \t")) or len(toks) > _MAX_TOKENS:
         return None
     append((_EOF, "", n, n))
     return toks
