@@ -27,7 +27,6 @@ import glob
 import json
 import math
 import os
-import secrets
 import stat
 import time
 from pathlib import Path
@@ -157,7 +156,7 @@ def save_persistent(path: Path, values: dict[int, float]) -> None:
         old: os.stat_result | None = os.stat(path)
     except OSError:
         old = None
-    tmp = folder / f".{path.name}.{secrets.token_hex(4)}.tmp"
+    tmp = folder / f".{path.name}.{os.urandom(4).hex()}.tmp"
     fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0), 0o666)
     try:
         with os.fdopen(fd, "wb") as f:

@@ -55,13 +55,13 @@ def run_straight(
     being the number of blocks run before ``pc``."""
     program = cf.file.program
     blocks = program.blocks
-    if pc >= program.read_end or blocks[pc].plain is None:  # not a plain line: nothing to set up
-        return 0, pc
-    p = m.planner
-    kinds = p.plain.kinds()
-    if not kinds or p.shape is not None:  # a lathe cycle's shape: the compiled path reads it
+    if pc >= len(blocks) or blocks[pc].plain is None:  # not a plain line: nothing to set up
         return 0, pc
     n_blocks = program.read_end  # nothing from the closing '%' on
+    p = m.planner
+    kinds = p.plain.kinds()
+    if pc >= n_blocks or not kinds or p.shape is not None:  # a lathe cycle's shape: the compiled path reads it
+        return 0, pc
     g_words = p.plain.g_words()
     lathe = p.lathe
     cycles = p.cycle_codes
