@@ -77,29 +77,6 @@ def check_paths(
     ``jobs`` processes do the work (``check_jobs.py``; 1: this process alone); with ``shard``
     only the call groups that fall to it are checked. With ``process_ends`` (the process's own
     command) what the last group left is not collected: the process ends next."""
-    try:
-        return _check_paths(paths, out, err, fmt, dialect=dialect, search_paths=search_paths, locale=locale,
-                            max_blocks=max_blocks, machine=machine, hints=hints, jobs=jobs, shard=shard)  # fmt: skip
-    finally:
-        if not process_ends:
-            collect_left_behind()
-
-
-def _check_paths(
-    paths: list[str],
-    out: TextIO,
-    err: TextIO,
-    fmt: str,
-    *,
-    dialect: str | None,
-    search_paths: list[str] | None,
-    locale: str,
-    max_blocks: int | None,
-    machine: str | None,
-    hints: bool,
-    jobs: int,
-    shard: Shard | None,
-) -> int:
     chinese = is_chinese(locale)
     shown_err = Printable(err)
     if max_blocks is not None and max_blocks < 1:
@@ -168,11 +145,7 @@ def _check_paths(
     jobs = max(1, min(jobs, -(-sum(len(files) for _, files in checks) // CHECK_BATCH)))
     out.flush()  # a worker started by fork would write again what waits in a buffer when it ends
     err.flush()
-    try:
-        with Workers([work for work, _ in checks], jobs) as workers:
-            for at, (_, files) in enumerate(checks):
-                _report_groups(workers, at, files, report, unreadable, said, shard)
-    except WorkerLost:
+    if not _check_all(checks, jobs, report, unreadable, said, shard, process_ends):
         print(pick(locale, "cncmacro check: a checking process ended before it was done (killed, or out of memory?); "
                    "check with fewer --jobs, or with --jobs 1",
                    "cncmacro check：一个检查进程未完成就结束了（被终止或内存不足？）；请减少 --jobs，或使用 --jobs 1"),
@@ -182,6 +155,24 @@ def _check_paths(
     if missing or unreadable:
         return 2
     return 1 if report.errors else 0
+
+
+def _check_all(checks: list[tuple[MachineWork, list[Found]]], jobs: int, report: FindingsReport,
+               unreadable: set[Path], said: Callable[[str], None], shard: Shard | None,
+               process_ends: bool) -> bool:  # fmt: skip
+    """Check the files of each machine in ``jobs`` processes, reporting as they come; False when
+    a checking process ended before it was done. With ``process_ends`` what the last group left
+    is not collected: the process ends next."""
+    try:
+        with Workers([work for work, _ in checks], jobs) as workers:
+            for at, (_, files) in enumerate(checks):
+                _report_groups(workers, at, files, report, unreadable, said, shard)
+    except WorkerLost:
+        return False
+    finally:
+        if not process_ends:
+            collect_left_behind()  # the last group's runs, which a process that goes on would keep
+    return True
 
 
 KEYS_BATCH = 64  # files a process looks at for their names and calls at a time

@@ -425,6 +425,12 @@ class Block:
         b.abbreviations = abbreviations
 
     @property
+    def plain_text(self) -> str | None:
+        """The text of the line's words when they are plain address-number words, after a label
+        or not (``plain``, ``plain_tail``): what a search of a plain line looks at; else None."""
+        return self.plain if self.plain is not None else self.plain_tail
+
+    @property
     def words(self) -> tuple[Word, ...]:
         w = self._words
         if w is None:

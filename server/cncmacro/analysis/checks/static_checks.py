@@ -59,9 +59,7 @@ def line_facts(block: Block, ctx: LineContext) -> LineFacts | None:
 
 
 def _line_facts(block: Block, ctx: LineContext) -> LineFacts | None:
-    plain = block.plain
-    if plain is None:
-        plain = block.plain_tail  # the words after a label (N10 G01 X5.): looked at as a plain line's
+    plain = block.plain_text  # after a label too (N10 G01 X5.): looked at as a plain line's
     if plain is not None:
         if not ctx.plain_hint(plain):
             return None

@@ -72,9 +72,7 @@ class BlockMemo:
     def facts(self, block: Block, ctx: LineContext) -> LineFacts | None:
         """What ``block`` says by itself under ``ctx`` (None for a plain line that needs no
         look, or a block that says nothing)."""
-        plain = block.plain
-        if plain is None:
-            plain = block.plain_tail  # after a label (N10 G01 X5.)
+        plain = block.plain_text  # after a label too (N10 G01 X5.)
         if plain is not None:  # plain lines are many and rarely repeat: not kept
             return line_facts(block, ctx) if ctx.plain_hint(plain) else None
         entry = self._entries.get(id(block))
@@ -88,9 +86,7 @@ class BlockMemo:
     def sites(self, block: Block, dialect: Dialect, calls: Calls = None) -> Sites:
         """The jumps and variables of ``block`` under ``dialect`` and the machine file's call
         codes ``calls`` (which words are jumps: ``machine/jump_words.py``)."""
-        plain = block.plain
-        if plain is None:
-            plain = block.plain_tail  # after a label (N10 G01 X5.)
+        plain = block.plain_text  # after a label too (N10 G01 X5.)
         if plain is not None:
             if not may_hold_jump(plain):  # and no '#': a plain line holds address-number words only
                 return NO_SITES

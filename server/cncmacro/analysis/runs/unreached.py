@@ -180,10 +180,10 @@ class UnreachedRanges:
         return fr
 
     def _scan_gaps(self, blocks: list[Block], executed: list[int], lo: int, hi: int) -> list[Range]:
-        """``_scan`` of a whole program, from the file's executed lines in order: only the
-        stretches between two executed lines are looked at, and only where a range may start
-        or end (a program run from end to end has none, and costs a look per stretch, not per
-        line)."""
+        """``_scan`` from executed lines in order (a whole file's, of which those in ``lo``..``hi``
+        count): only the stretches between two executed lines are looked at, and only where a
+        range may start or end (a program run from end to end has none, and costs a look per
+        stretch, not per line)."""
         out: list[Range] = []
         skippable = self.skippable
         at = bisect_left(executed, lo)
@@ -209,23 +209,7 @@ class UnreachedRanges:
     def _scan(self, blocks: list[Block], ran: Mapping[int, int], lo: int, hi: int) -> list[Range]:
         """The ranges within lines ``lo``..``hi`` (both included) of one program, where the
         lines just outside them are executed or outside the program."""
-        out: list[Range] = []
-        first = last = -1
-        skippable = self.skippable
-        for i in range(lo, hi + 1):
-            if i in ran:
-                if first >= 0:
-                    out.append((first, last))
-                    first = -1
-                continue
-            if skippable(blocks[i]):
-                continue
-            if first < 0:
-                first = i
-            last = i
-        if first >= 0:
-            out.append((first, last))
-        return out
+        return self._scan_gaps(blocks, [i for i in range(lo, hi + 1) if i in ran], lo, hi)
 
     def _update(self, fr: _FileRanges, ran: Mapping[int, int], flipped: set[int], edited: set[int]) -> None:
         """Find the ranges again around the lines that became executed or unexecuted
