@@ -254,11 +254,20 @@ def run_straight(
                 end = tuple(target)
                 if cutter is not None and cuts is not None:  # its record and centre path (planner/cutter_stage.py)
                     try:
-                        seconds = None if centre is not None or mode == 0.0 else cuts.cut(pc, mode, f, start, end)
-                        if seconds is not None:  # joined to the cut before, whose time is put right
-                            clock += cuts.correction
+                        if centre is not None or mode == 0.0:
+                            joined = None
+                        else:
+                            send = cuts.send
+                            joined = (
+                                send((pc, mode, f, start, end))
+                                if send is not None
+                                else cuts.begin((pc, mode, f, start, end))
+                            )
+                        if joined is not None:  # joined to the cut before, whose time is put right
+                            correction, seconds, change = joined
+                            clock += correction
                             clock += seconds
-                            cut += cuts.cut_change
+                            cut += change
                         else:
                             p.clock, p.cut_length, p.rapid_length = clock, cut, rapid
                             cuts.flush()

@@ -30,7 +30,7 @@ and a cancel ends there. The one-pass straight-cut join (``StraightCuts``) is th
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Generator
 from math import dist, hypot, sqrt
 from typing import TYPE_CHECKING, NamedTuple, TypeVar
 
@@ -64,6 +64,14 @@ _T = TypeVar("_T")
 _MOVE_MODES = frozenset((0.0, 1.0, 2.0, 3.0))
 _Point = tuple[float, ...]
 _Scale = tuple[float, float] | None  # a lathe plane's units per program unit (X a diameter), None on a mill
+_Cut = tuple[int, float, float, _Point, _Point]  # a straight cut joined: its line, mode, feed, start and end
+_Joined = tuple[float, float, float]  # the last move's seconds put right, this one's, the change in cut length
+# ``StraightCuts``' state while its joins are under way: the last move (line, mode, feed, start, end),
+# its plane segment (ax, ay, px, py), direction and length (tx, ty, l), the centre path's start and
+# end (cx, cy, fx, fy, s0), its seconds a unit of length, move off the plane, length and seconds,
+# and where its record is (place, hold, held, fresh)
+_State = tuple[int, float, float, _Point, _Point, float, float, float, float, float, float, float, float, float,
+               float, float, _Point | None, float, float, float, float, int, bool, bool, bool]  # fmt: skip
 
 
 class Pending(NamedTuple):
@@ -380,11 +388,12 @@ def _straight_after_straight(
     cuts = StraightCuts(p, "", False)
     if not cuts.take_over(plane):
         return None
-    seconds = cuts.cut(line, mode, feed, start, end)
-    if seconds is None:
+    joined = cuts.cut((line, mode, feed, start, end))
+    if joined is None:
         return None
-    p.clock += cuts.correction
-    p.cut_length += cuts.cut_change
+    correction, seconds, change = joined
+    p.clock += correction
+    p.cut_length += change
     cuts.flush()
     return cuts.stage.pending.path, seconds  # type: ignore[union-attr]
 
@@ -398,19 +407,20 @@ class StraightCuts:
     path, time and length put right in place.
 
     ``take_over`` takes the stage's pending move when it is such a cut. From then on the last
-    move's state is kept here, its direction and length carried to the next corner, and
-    ``stage.pending`` is out of date until ``flush`` writes it back (a ``Pending`` with the
-    provisional path, as the general way keeps it). The radius, unit and plane are read once:
-    no plain motion line changes them. With ``hold`` (a run of plain lines that records its
+    move's state is kept here (in the locals of ``_joins`` while cuts come, in the slots when
+    they stop), its direction and length carried to the next corner, and ``stage.pending`` is
+    out of date until ``flush`` writes it back (a ``Pending`` with the provisional path, as the
+    general way keeps it). The radius, unit and plane are read once: no plain motion line
+    changes them. With ``hold`` (a run of plain lines that records its
     own moves: machine/straight_runs.py) the last move's record waits here too and is made once,
     with its path put right, when the next cut comes, or with its provisional path at ``flush``:
     whoever else records a move or reads the run (``Planner.record``, the end of the run of
     plain lines) has it flushed first."""
 
     __slots__ = (
-        "active", "ax", "ay", "correction", "cut_change", "cx", "cy", "d", "end", "feed", "file", "fresh", "fx", "fy",
-        "held", "hold", "i", "j", "l", "length", "line", "mode", "off", "p", "per", "place", "plane", "px", "py", "s0",
-        "seconds", "stage", "start", "tx", "ty", "unit", "xy",
+        "active", "ax", "ay", "cx", "cy", "d", "end", "feed", "file", "fresh", "fx", "fy", "held", "hold", "i", "j",
+        "l", "length", "line", "mode", "off", "p", "per", "place", "plane", "px", "py", "s0", "seconds", "send",
+        "stage", "start", "tx", "ty", "unit", "xy",
     )  # fmt: skip
 
     def __init__(self, p: Planner, file: str, hold: bool) -> None:
@@ -420,6 +430,7 @@ class StraightCuts:
         self.hold = hold
         self.active = False  # the last move's state is here (``stage.pending`` out of date)
         self.held = False  # and its record too, not yet in ``Planner.moves``
+        self.send: Callable[[_Cut | None], _Joined | None] | None = None  # the joins' own, while they are under way
 
     def take_over(self, plane: float | None = None) -> bool:
         """Take the stage's pending move if it is a straight cut the next one can join here
@@ -458,100 +469,144 @@ class StraightCuts:
         self.active = True
         return True
 
-    def cut(self, line: int, mode: float, feed: float, start: _Point, end: _Point) -> float | None:
-        """The straight cut of ``line`` from ``start`` to ``end`` after the last one: the corner
-        between them, the last move put right (its record made, with ``hold``), this one the
-        last in its turn; returns its provisional seconds. The caller adds ``correction`` (the last
-        move's seconds put right) and then these seconds to the clock, and ``cut_change`` to the
-        cut length. None, with nothing changed but ``stage.pending`` written back, for a case left
-        to the general way."""
+    def begin(self, cut: _Cut) -> _Joined | None:
+        """``cut`` while no join is under way: take the stage's pending move over, if it is a
+        straight cut this one can join, and start the joins with this one."""
         if not self.active and not self.take_over():
             return None
-        i, j, px, py = self.i, self.j, self.px, self.py
-        ex, ey = end[i], end[j]
-        if (ex == px and ey == py) or mode != self.mode:
-            self.flush()
-            return None
-        t1x, t1y, d = self.tx, self.ty, self.d
-        l2 = hypot(ex - px, ey - py)
-        t2x, t2y = (ex - px) / l2, (ey - py) / l2
-        cross, dot = t1x * t2y - t1y * t2x, t1x * t2x + t1y * t2y
-        link = False
-        if -1e-12 <= cross <= 1e-12 and dot > 0.0:  # straight on
-            bx, by = px - t1y * d, py + t1x * d
-            cx, cy = bx, by
-        elif cross * d > 0.0 or dot >= 0.0:  # inside or obtuse: where the two offsets cross
-            if dot <= -1.0 + 1e-9:
-                self.flush()
-                return None
-            k = d / (1.0 + dot)
-            bx, by = px - k * (t1y + t2y), py + k * (t1x + t2x)
-            cx, cy = bx, by
-        else:  # acute outside: through the two extension points
-            r = -d if d < 0.0 else d
-            bx, by = px - t1y * d + t1x * r, py + t1x * d + t1y * r
-            cx, cy = px - t2y * d - t2x * r, py + t2x * d - t2y * r
-            link = True
-        p, l1 = self.p, self.l
-        if (bx - self.cx) * t1x + (by - self.cy) * t1y < -EPSILON * (l1 if l1 > 1.0 else 1.0):
-            _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, _reversal_message(self.line))
-        # the last move, now that its corner is known: its length and time put right
-        settled = sqrt((bx - self.cx) ** 2 + (by - self.cy) ** 2 + self.off)
-        if link:
-            settled += hypot(cx - bx, cy - by)
-        settled_seconds = settled * self.per
-        self.correction = settled_seconds - self.seconds
-        if self.held or self.place >= 0:
-            self._settled(start, bx, by, cx, cy, link, settled_seconds)
-        else:  # the run keeps no moves (an analysis): the next path's start is made only if asked for
-            self.s0 = None
-        # this move, the last in its turn: from the corner to its end's perpendicular
-        fx, fy = ex - t2y * d, ey + t2x * d
-        off = dist(start, end) ** 2 - l2 * l2
-        if off < 1e-9:  # in the plane (but for the rounding of the squares)
-            off = 0.0
-        length = sqrt((fx - cx) ** 2 + (fy - cy) ** 2 + off)
-        per = self.per
-        if feed != self.feed:
-            per = p.feed_seconds(mode, 1.0, feed, start, end, self.unit)
-        seconds = length * per
-        self.cut_change = (settled - self.length + length) * self.unit
-        self.line, self.mode, self.feed, self.start, self.end = line, mode, feed, start, end
-        self.ax, self.ay, self.px, self.py, self.tx, self.ty, self.l = px, py, ex, ey, t2x, t2y, l2
-        self.cx, self.cy, self.fx, self.fy = cx, cy, fx, fy
-        self.per, self.off, self.length, self.seconds, self.fresh = per, off, length, seconds, False
-        if not self.hold:
-            self.place = len(p.moves) if p.record_moves else -1
-        elif len(p.moves) + 1 < p.move_budget:
-            self.held = True
-        else:  # this move fills the toolpath: recorded now, and no move after it
-            self.held = True
-            self.flush()
-            self.hold = False
-            p.moves_full(line)
-        return seconds
+        joins = self._joins()
+        next(joins)
+        self.send = joins.send
+        return joins.send(cut)
 
-    def _settled(self, start: _Point, bx: float, by: float, cx: float, cy: float, link: bool, seconds: float) -> None:
-        """The last move's record now that its corner is known, made (held) or put right: its
-        centre path to (bx, by), then on to (cx, cy) where the next move starts when the corner
-        is an acute outside one (``link``), and its ``seconds``."""
-        i, j = self.i, self.j
-        first = (bx, by, *start[2:]) if self.xy else _full((bx, by), start, i, j)
-        piece = _tuple_new(CentrePiece, (first, None, False))
-        if link:
-            second = _full((cx, cy), start, i, j)
-            pieces: tuple[CentrePiece, ...] = (piece, _tuple_new(CentrePiece, (second, None, False)))
-        else:
-            second, pieces = first, (piece,)
-        s0 = self.s0
-        path = _tuple_new(CentrePath, (s0 if s0 is not None else self._path_start(), pieces))
-        if self.held:
-            self.p.moves.append(_tuple_new(Move, (self.file, self.line, self.mode, self.start, self.end,
-                                                  float(self.feed), None, seconds, self.plane, None, None, None,
-                                                  path)))  # fmt: skip
-        else:
-            self._put_right(seconds, path)
-        self.s0 = second
+    def _joins(self) -> Generator[_Joined | None, _Cut | None, None]:  # noqa: PLR0915 (one loop on purpose, as straight_runs.py)
+        """The joins of one take-over, one cut sent at a time, the last move's state held in this
+        frame's locals (a CAM contour sends a hundred thousand: slots read and written a move
+        were a third of its cost). Each straight cut ``(line, mode, feed, start, end)`` after the
+        last one gets the corner between them: the last move put right (its record made, with
+        ``hold``), this one the last in its turn, and ``(correction, seconds, change)`` back: the
+        caller adds ``correction`` (the last move's seconds put right) and then ``seconds`` (this
+        one's provisional seconds) to the clock, and ``change`` to the cut length. A case left to
+        the general way gets None, and a None sent (``flush``) ends the joins: either way the
+        state goes back to the slots and ``stage.pending`` is written back."""
+        p = self.p
+        moves = p.moves
+        record = p.record_moves
+        budget = p.move_budget
+        file, i, j, xy, d, unit, plane = self.file, self.i, self.j, self.xy, self.d, self.unit, self.plane
+        line, mode, feed, start, end = self.line, self.mode, self.feed, self.start, self.end
+        ax, ay, px, py, tx, ty, l1 = self.ax, self.ay, self.px, self.py, self.tx, self.ty, self.l
+        cx, cy, fx, fy, s0 = self.cx, self.cy, self.fx, self.fy, self.s0
+        per, off, length, seconds = self.per, self.off, self.length, self.seconds
+        place, hold, held, fresh = self.place, self.hold, self.held, self.fresh
+        joined: _Joined | None = None
+        while True:
+            cut = yield joined
+            if cut is None:
+                break
+            new_line, new_mode, new_feed, new_start, new_end = cut
+            ex, ey = new_end[i], new_end[j]
+            if (ex == px and ey == py) or new_mode != mode:
+                break
+            dx, dy = ex - px, ey - py
+            l2 = hypot(dx, dy)
+            t2x, t2y = dx / l2, dy / l2
+            cross, dot = tx * t2y - ty * t2x, tx * t2x + ty * t2y
+            link = False
+            if -1e-12 <= cross <= 1e-12 and dot > 0.0:  # straight on
+                bx, by = px - ty * d, py + tx * d
+                nx, ny = bx, by
+            elif cross * d > 0.0 or dot >= 0.0:  # inside or obtuse: where the two offsets cross
+                if dot <= -1.0 + 1e-9:
+                    break
+                k = d / (1.0 + dot)
+                bx, by = px - k * (ty + t2y), py + k * (tx + t2x)
+                nx, ny = bx, by
+            else:  # acute outside: through the two extension points
+                r = -d if d < 0.0 else d
+                bx, by = px - ty * d + tx * r, py + tx * d + ty * r
+                nx, ny = px - t2y * d - t2x * r, py + t2x * d - t2y * r
+                link = True
+            ux, uy = bx - cx, by - cy  # the last move's centre path, from its start to the corner
+            if ux * tx + uy * ty < -EPSILON * (l1 if l1 > 1.0 else 1.0):
+                # the control's alarm leaves the joins (nothing changed yet); a note goes on here
+                self._keep((line, mode, feed, start, end, ax, ay, px, py, tx, ty, l1, cx, cy, fx, fy, s0, per, off,
+                           length, seconds, place, hold, held, fresh))  # fmt: skip
+                own, self.send = self.send, None
+                _finding(p, CUTTER_INTERFERENCE, "cutter-interference", new_line, _reversal_message(line))
+                self.send, own = own, None
+            # the last move, now that its corner is known: its length and time put right
+            settled = sqrt(ux * ux + uy * uy + off)  # x * x: correctly rounded, and a third of x ** 2's time
+            if link:
+                settled += hypot(nx - bx, ny - by)
+            settled_seconds = settled * per
+            correction = settled_seconds - seconds
+            if held or place >= 0:  # its record: made (held) or put right, its centre path to the corner
+                first = (bx, by, *new_start[2:]) if xy else _full((bx, by), new_start, i, j)
+                piece = _tuple_new(CentrePiece, (first, None, False))
+                if link:
+                    second = _full((nx, ny), new_start, i, j)
+                    pieces: tuple[CentrePiece, ...] = (piece, _tuple_new(CentrePiece, (second, None, False)))
+                else:
+                    second, pieces = first, (piece,)
+                if s0 is None:
+                    s0 = _full((cx, cy), start, i, j)
+                path = _tuple_new(CentrePath, (s0, pieces))
+                if held:
+                    moves.append(_tuple_new(Move, (file, line, mode, start, end, float(feed), None, settled_seconds,
+                                                   plane, None, None, None, path)))  # fmt: skip
+                elif place < len(moves) and moves[place][1] == line:
+                    old = moves[place]
+                    moves[place] = _tuple_new(Move, (*old[:7], settled_seconds, *old[8:12], path))
+                s0 = second
+            else:  # the run keeps no moves (an analysis): the next path's start is made only if asked for
+                s0 = None
+            # this move, the last in its turn: from the corner to its end's perpendicular
+            fx, fy = ex - t2y * d, ey + t2x * d
+            whole = dist(new_start, new_end)
+            new_off = whole * whole - l2 * l2
+            if new_off < 1e-9:  # in the plane (but for the rounding of the squares)
+                new_off = 0.0
+            ux, uy = fx - nx, fy - ny
+            new_length = sqrt(ux * ux + uy * uy + new_off)
+            if new_feed != feed:
+                per = p.feed_seconds(new_mode, 1.0, new_feed, new_start, new_end, unit)
+            new_seconds = new_length * per
+            joined = (correction, new_seconds, (settled - length + new_length) * unit)
+            line, mode, feed, start, end = new_line, new_mode, new_feed, new_start, new_end
+            ax, ay, px, py, tx, ty, l1 = px, py, ex, ey, t2x, t2y, l2
+            cx, cy, off, length, seconds, fresh = nx, ny, new_off, new_length, new_seconds, False
+            if not hold:
+                place = len(moves) if record else -1
+            elif len(moves) + 1 < budget:
+                held = True
+            else:  # this move fills the toolpath: recorded now, and no move after it
+                self._keep((line, mode, feed, start, end, ax, ay, px, py, tx, ty, l1, cx, cy, fx, fy, s0, per, off,
+                           length, seconds, place, hold, True, fresh))  # fmt: skip
+                self._end()
+                self.hold = False
+                p.moves_full(line)
+                yield joined
+                return
+        self._keep((line, mode, feed, start, end, ax, ay, px, py, tx, ty, l1, cx, cy, fx, fy, s0, per, off, length,
+                   seconds, place, hold, held, fresh))  # fmt: skip
+        self._end()
+        yield None
+
+    def _keep(self, state: _State) -> None:
+        """The joins' state back in the slots, where ``flush`` and the next take-over read it."""
+        (line, mode, feed, start, end, ax, ay, px, py, tx, ty, l1, cx, cy, fx, fy, s0, per, off, length, seconds,
+         place, hold, held, fresh) = state  # fmt: skip
+        self.line, self.mode, self.feed, self.start, self.end = line, mode, feed, start, end
+        self.ax, self.ay, self.px, self.py, self.tx, self.ty, self.l = ax, ay, px, py, tx, ty, l1
+        self.cx, self.cy, self.fx, self.fy, self.s0 = cx, cy, fx, fy, s0
+        self.per, self.off, self.length, self.seconds = per, off, length, seconds
+        self.place, self.hold, self.held, self.fresh = place, hold, held, fresh
+
+    def _end(self) -> None:
+        """The joins are over (their state kept): the last move back to the stage."""
+        self.send = None
+        self._flush()
 
     def _path_start(self) -> _Point:
         """Where the last move's centre path starts: its corner with the move before."""
@@ -560,17 +615,29 @@ class StraightCuts:
             s0 = self.s0 = _full((self.cx, self.cy), self.start, self.i, self.j)
         return s0
 
-    def _put_right(self, seconds: float, path: CentrePath) -> None:
-        """The last move's record, made before it was taken over, with its path and time put right."""
-        moves = self.p.moves
-        place = self.place
-        if place < len(moves) and moves[place][1] == self.line:
-            old = moves[place]
-            moves[place] = _tuple_new(Move, (*old[:7], seconds, *old[8:12], path))
+    def cut(self, cut: _Cut) -> _Joined | None:
+        """One straight cut ``(line, mode, feed, start, end)`` after the last one, joined
+        (``_joins``): ``(correction, seconds, change)``, or None for a case left to the general
+        way, with nothing changed but ``stage.pending`` written back. A run of plain lines calls
+        ``send`` itself while it is not None, ``begin`` when it is."""
+        send = self.send
+        return send(cut) if send is not None else self.begin(cut)
 
     def flush(self) -> None:
         """Hand the last move back to the stage as the general way keeps it, with its path to
         its end's perpendicular: ``stage.pending`` and (``hold``) its record."""
+        send = self.send
+        if send is None:
+            self._flush()
+            return
+        try:
+            send(None)
+        except StopIteration:  # the joins ended on an error of their own: what the slots hold
+            self.send = None
+            self._flush()
+
+    def _flush(self) -> None:
+        """``flush`` from the slots."""
         if not self.active:
             return
         self.active = False
