@@ -67,11 +67,11 @@ _Scale = tuple[float, float] | None  # a lathe plane's units per program unit (X
 _Cut = tuple[int, float, float, _Point, _Point]  # a straight cut joined: its line, mode, feed, start and end
 _Joined = tuple[float, float, float]  # the last move's seconds put right, this one's, the change in cut length
 # ``StraightCuts``' state while its joins are under way: the last move (line, mode, feed, start, end),
-# its plane segment (ax, ay, px, py), direction and length (tx, ty, l), the centre path's start and
-# end (cx, cy, fx, fy, s0), its seconds a unit of length, move off the plane, length and seconds,
+# its end in the plane (px, py), direction and length (tx, ty, l), the centre path's start and
+# (cx, cy, s0), its seconds a unit of length, move off the plane, length and seconds,
 # and where its record is (place, hold, held, fresh)
-_State = tuple[int, float, float, _Point, _Point, float, float, float, float, float, float, float, float, float,
-               float, float, _Point | None, float, float, float, float, int, bool, bool, bool]  # fmt: skip
+_State = tuple[int, float, float, _Point, _Point, float, float, float, float, float, float, float,
+               _Point | None, float, float, float, float, int, bool, bool, bool]  # fmt: skip
 
 
 class Pending(NamedTuple):
@@ -418,7 +418,7 @@ class StraightCuts:
     plain lines) has it flushed first."""
 
     __slots__ = (
-        "active", "ax", "ay", "cx", "cy", "d", "end", "feed", "file", "fresh", "fx", "fy", "held", "hold", "i", "j",
+        "active", "ax", "ay", "cx", "cy", "d", "end", "feed", "file", "fresh", "held", "hold", "i", "j",
         "l", "length", "line", "mode", "off", "p", "per", "place", "plane", "px", "py", "s0", "seconds", "send",
         "stage", "start", "tx", "ty", "unit", "xy",
     )  # fmt: skip
@@ -456,8 +456,6 @@ class StraightCuts:
         self.tx, self.ty = (px - ax) / length, (py - ay) / length
         s0 = self.s0 = pending.path[0]
         self.cx, self.cy = s0[self.i], s0[self.j]
-        end = pending.path.pieces[-1].end
-        self.fx, self.fy = end[self.i], end[self.j]
         self.line, self.mode, self.feed, self.start, self.end = (pending.line, pending.mode, pending.feed,
                                                                  pending.start, pending.end)  # fmt: skip
         self.per, self.off, self.length, self.seconds = (pending.per_length, pending.off_plane, pending.length,
@@ -479,7 +477,7 @@ class StraightCuts:
         self.send = joins.send
         return joins.send(cut)
 
-    def _joins(self) -> Generator[_Joined | None, _Cut | None, None]:  # noqa: PLR0915 (one loop on purpose, as straight_runs.py)
+    def _joins(self) -> Generator[_Joined | None, _Cut | None, None]:  # noqa: PLR0912, PLR0915 (one loop on purpose, as straight_runs.py)
         """The joins of one take-over, one cut sent at a time, the last move's state held in this
         frame's locals (a CAM contour sends a hundred thousand: slots read and written a move
         were a third of its cost). Each straight cut ``(line, mode, feed, start, end)`` after the
@@ -495,10 +493,15 @@ class StraightCuts:
         budget = p.move_budget
         file, i, j, xy, d, unit, plane = self.file, self.i, self.j, self.xy, self.d, self.unit, self.plane
         line, mode, feed, start, end = self.line, self.mode, self.feed, self.start, self.end
-        ax, ay, px, py, tx, ty, l1 = self.ax, self.ay, self.px, self.py, self.tx, self.ty, self.l
-        cx, cy, fx, fy, s0 = self.cx, self.cy, self.fx, self.fy, self.s0
+        px, py, tx, ty, l1 = self.px, self.py, self.tx, self.ty, self.l
+        # the axes off the plane, when there are at most two (X, Y, Z and A: Z and A), looked at
+        # one by one to see a move stay in the plane; -1 for more, whose moves ``dist`` measures
+        others = [k for k in range(len(end)) if k not in (i, j)] or [i]
+        k1, k2 = (others[0], others[-1]) if len(others) <= 2 else (-1, -1)
+        cx, cy, s0 = self.cx, self.cy, self.s0
         per, off, length, seconds = self.per, self.off, self.length, self.seconds
         place, hold, held, fresh = self.place, self.hold, self.held, self.fresh
+        least = -EPSILON  # the reversal a move of 1 may show before it is one (more in proportion to a longer move)
         joined: _Joined | None = None
         while True:
             cut = yield joined
@@ -527,16 +530,25 @@ class StraightCuts:
                 bx, by = px - ty * d + tx * r, py + tx * d + ty * r
                 nx, ny = px - t2y * d - t2x * r, py + t2x * d - t2y * r
                 link = True
-            ux, uy = bx - cx, by - cy  # the last move's centre path, from its start to the corner
-            if ux * tx + uy * ty < -EPSILON * (l1 if l1 > 1.0 else 1.0):
+            # the last move's centre path in the plane, from its start to the corner: both on the
+            # line of its offset (a join puts them there), so the path is as long as its projection
+            # on the move's direction
+            along = (bx - cx) * tx + (by - cy) * ty
+            if along < least and along < least * (l1 if l1 > 1.0 else 1.0):
                 # the control's alarm leaves the joins (nothing changed yet); a note goes on here
-                self._keep((line, mode, feed, start, end, ax, ay, px, py, tx, ty, l1, cx, cy, fx, fy, s0, per, off,
+                self._keep((line, mode, feed, start, end, px, py, tx, ty, l1, cx, cy, s0, per, off,
                            length, seconds, place, hold, held, fresh))  # fmt: skip
                 own, self.send = self.send, None
                 _finding(p, CUTTER_INTERFERENCE, "cutter-interference", new_line, _reversal_message(line))
                 self.send, own = own, None
             # the last move, now that its corner is known: its length and time put right
-            settled = sqrt(ux * ux + uy * uy + off)  # x * x: correctly rounded, and a third of x ** 2's time
+            if fresh:  # its start came with the move taken over, which an interference may have put off the line
+                ux, uy = bx - cx, by - cy
+                settled = sqrt(ux * ux + uy * uy + off)
+            elif off == 0.0:
+                settled = along if along >= 0.0 else -along
+            else:
+                settled = sqrt(along * along + off)
             if link:
                 settled += hypot(nx - bx, ny - by)
             settled_seconds = settled * per
@@ -562,44 +574,56 @@ class StraightCuts:
             else:  # the run keeps no moves (an analysis): the next path's start is made only if asked for
                 s0 = None
             # this move, the last in its turn: from the corner to its end's perpendicular
-            fx, fy = ex - t2y * d, ey + t2x * d
-            whole = dist(new_start, new_end)
-            new_off = whole * whole - l2 * l2
-            if new_off < 1e-9:  # in the plane (but for the rounding of the squares)
-                new_off = 0.0
-            ux, uy = fx - nx, fy - ny
-            new_length = sqrt(ux * ux + uy * uy + new_off)
+            # (the state is set in place, each name once its old value is used: a move's worth of
+            # names packed and unpacked at once was a sixth of the join's time)
+            if k1 >= 0 and new_start[k1] == new_end[k1] and new_start[k2] == new_end[k2]:
+                off = 0.0
+            else:
+                whole = dist(new_start, new_end)
+                off = whole * whole - l2 * l2
+                if off < 1e-9:  # in the plane (but for the rounding of the squares)
+                    off = 0.0
+            along = (ex - nx) * t2x + (ey - ny) * t2y  # to the end's perpendicular, on the same line
+            change = settled - length
+            if off == 0.0:
+                length = along if along >= 0.0 else -along
+            else:
+                length = sqrt(along * along + off)
             if new_feed != feed:
                 per = p.feed_seconds(new_mode, 1.0, new_feed, new_start, new_end, unit)
-            new_seconds = new_length * per
-            joined = (correction, new_seconds, (settled - length + new_length) * unit)
-            line, mode, feed, start, end = new_line, new_mode, new_feed, new_start, new_end
-            ax, ay, px, py, tx, ty, l1 = px, py, ex, ey, t2x, t2y, l2
-            cx, cy, off, length, seconds, fresh = nx, ny, new_off, new_length, new_seconds, False
+                feed = new_feed
+            seconds = length * per
+            joined = (correction, seconds, (change + length) * unit)
+            line, start, end = new_line, new_start, new_end
+            px, py = ex, ey
+            tx, ty = t2x, t2y
+            l1 = l2
+            cx, cy = nx, ny
+            fresh = False
             if not hold:
                 place = len(moves) if record else -1
             elif len(moves) + 1 < budget:
                 held = True
             else:  # this move fills the toolpath: recorded now, and no move after it
-                self._keep((line, mode, feed, start, end, ax, ay, px, py, tx, ty, l1, cx, cy, fx, fy, s0, per, off,
+                self._keep((line, mode, feed, start, end, px, py, tx, ty, l1, cx, cy, s0, per, off,
                            length, seconds, place, hold, True, fresh))  # fmt: skip
                 self._end()
                 self.hold = False
                 p.moves_full(line)
                 yield joined
                 return
-        self._keep((line, mode, feed, start, end, ax, ay, px, py, tx, ty, l1, cx, cy, fx, fy, s0, per, off, length,
+        self._keep((line, mode, feed, start, end, px, py, tx, ty, l1, cx, cy, s0, per, off, length,
                    seconds, place, hold, held, fresh))  # fmt: skip
         self._end()
         yield None
 
     def _keep(self, state: _State) -> None:
         """The joins' state back in the slots, where ``flush`` and the next take-over read it."""
-        (line, mode, feed, start, end, ax, ay, px, py, tx, ty, l1, cx, cy, fx, fy, s0, per, off, length, seconds,
+        (line, mode, feed, start, end, px, py, tx, ty, l1, cx, cy, s0, per, off, length, seconds,
          place, hold, held, fresh) = state  # fmt: skip
         self.line, self.mode, self.feed, self.start, self.end = line, mode, feed, start, end
-        self.ax, self.ay, self.px, self.py, self.tx, self.ty, self.l = ax, ay, px, py, tx, ty, l1
-        self.cx, self.cy, self.fx, self.fy, self.s0 = cx, cy, fx, fy, s0
+        self.ax, self.ay, self.px, self.py, self.tx, self.ty, self.l = start[self.i], start[self.j], px, py, tx, ty, l1
+        self.cx, self.cy, self.s0 = cx, cy, s0
         self.per, self.off, self.length, self.seconds = per, off, length, seconds
         self.place, self.hold, self.held, self.fresh = place, hold, held, fresh
 
@@ -645,7 +669,7 @@ class StraightCuts:
             return
         p = self.p
         end = self.end
-        fx, fy = self.fx, self.fy
+        fx, fy = self.px - self.ty * self.d, self.py + self.tx * self.d  # the end's perpendicular
         finish = (fx, fy, *end[2:]) if self.xy else _full((fx, fy), end, self.i, self.j)
         path = _tuple_new(CentrePath, (self._path_start(), (_tuple_new(CentrePiece, (finish, None, False)),)))
         place = self.place
