@@ -477,7 +477,7 @@ class StraightCuts:
         self.send = joins.send
         return joins.send(cut)
 
-    def _joins(self) -> Generator[_Joined | None, _Cut | None, None]:  # noqa: PLR0912, PLR0915 (one loop on purpose, as straight_runs.py)
+    def _joins(self) -> Generator[_Joined | None, _Cut | None, None]:  # noqa: C901, PLR0912, PLR0915 (one loop on purpose, as straight_runs.py)
         """The joins of one take-over, one cut sent at a time, the last move's state held in this
         frame's locals (a CAM contour sends a hundred thousand: slots read and written a move
         were a third of its cost). Each straight cut ``(line, mode, feed, start, end)`` after the
@@ -502,6 +502,15 @@ class StraightCuts:
         per, off, length, seconds = self.per, self.off, self.length, self.seconds
         place, hold, held, fresh = self.place, self.hold, self.held, self.fresh
         least = -EPSILON  # the reversal a move of 1 may show before it is one (more in proportion to a longer move)
+        keeps = hold or record or place >= 0  # centre paths are made (the corners' points with them)
+        # The last move's reach: how far its provisional centre path goes along its direction,
+        # from the corner it starts at to its end's perpendicular. Every corner is on the lines of
+        # both moves' offsets (or, at an acute outside corner, one extension point on each), so
+        # a path's length in the plane is its reach, and the corner after it moves its end along
+        # the line by a share of the offset that the corner's kind gives (``back``), and the
+        # next path's start (``ahead``); no point need be made where no path is. Not yet known
+        # for the move taken over (``fresh``), whose start an interference may have put off its line.
+        reach = 0.0
         joined: _Joined | None = None
         while True:
             cut = yield joined
@@ -517,32 +526,36 @@ class StraightCuts:
             cross, dot = tx * t2y - ty * t2x, tx * t2x + ty * t2y
             link = False
             if -1e-12 <= cross <= 1e-12 and dot > 0.0:  # straight on
-                bx, by = px - ty * d, py + tx * d
-                nx, ny = bx, by
+                back, ahead = 0.0, -d * cross
+                if keeps or fresh:
+                    bx, by = px - ty * d, py + tx * d
+                    nx, ny = bx, by
             elif cross * d > 0.0 or dot >= 0.0:  # inside or obtuse: where the two offsets cross
                 if dot <= -1.0 + 1e-9:
                     break
                 k = d / (1.0 + dot)
-                bx, by = px - k * (ty + t2y), py + k * (tx + t2x)
-                nx, ny = bx, by
+                back = ahead = -k * cross
+                if keeps or fresh:
+                    bx, by = px - k * (ty + t2y), py + k * (tx + t2x)
+                    nx, ny = bx, by
             else:  # acute outside: through the two extension points
-                r = -d if d < 0.0 else d
+                r = back = ahead = -d if d < 0.0 else d
                 bx, by = px - ty * d + tx * r, py + tx * d + ty * r
                 nx, ny = px - t2y * d - t2x * r, py + t2x * d - t2y * r
                 link = True
-            # the last move's centre path in the plane, from its start to the corner: both on the
-            # line of its offset (a join puts them there), so the path is as long as its projection
-            # on the move's direction
-            along = (bx - cx) * tx + (by - cy) * ty
+            # the last move's centre path in the plane, from its start to the corner
+            along = (bx - cx) * tx + (by - cy) * ty if fresh else reach + back
             if along < least and along < least * (l1 if l1 > 1.0 else 1.0):
                 # the control's alarm leaves the joins (nothing changed yet); a note goes on here
+                if not fresh:
+                    cx, cy = px - ty * d - reach * tx, py + tx * d - reach * ty
                 self._keep((line, mode, feed, start, end, px, py, tx, ty, l1, cx, cy, s0, per, off,
                            length, seconds, place, hold, held, fresh))  # fmt: skip
                 own, self.send = self.send, None
                 _finding(p, CUTTER_INTERFERENCE, "cutter-interference", new_line, _reversal_message(line))
                 self.send, own = own, None
             # the last move, now that its corner is known: its length and time put right
-            if fresh:  # its start came with the move taken over, which an interference may have put off the line
+            if fresh:
                 ux, uy = bx - cx, by - cy
                 settled = sqrt(ux * ux + uy * uy + off)
             elif off == 0.0:
@@ -553,7 +566,7 @@ class StraightCuts:
                 settled += hypot(nx - bx, ny - by)
             settled_seconds = settled * per
             correction = settled_seconds - seconds
-            if held or place >= 0:  # its record: made (held) or put right, its centre path to the corner
+            if keeps and (held or place >= 0):  # its record: made (held) or put right, its centre path to the corner
                 first = (bx, by, *new_start[2:]) if xy else _full((bx, by), new_start, i, j)
                 piece = _tuple_new(CentrePiece, (first, None, False))
                 if link:
@@ -562,6 +575,8 @@ class StraightCuts:
                 else:
                     second, pieces = first, (piece,)
                 if s0 is None:
+                    if not fresh:
+                        cx, cy = px - ty * d - reach * tx, py + tx * d - reach * ty
                     s0 = _full((cx, cy), start, i, j)
                 path = _tuple_new(CentrePath, (s0, pieces))
                 if held:
@@ -583,12 +598,12 @@ class StraightCuts:
                 off = whole * whole - l2 * l2
                 if off < 1e-9:  # in the plane (but for the rounding of the squares)
                     off = 0.0
-            along = (ex - nx) * t2x + (ey - ny) * t2y  # to the end's perpendicular, on the same line
+            reach = l2 + ahead
             change = settled - length
             if off == 0.0:
-                length = along if along >= 0.0 else -along
+                length = reach if reach >= 0.0 else -reach
             else:
-                length = sqrt(along * along + off)
+                length = sqrt(reach * reach + off)
             if new_feed != feed:
                 per = p.feed_seconds(new_mode, 1.0, new_feed, new_start, new_end, unit)
                 feed = new_feed
@@ -598,13 +613,15 @@ class StraightCuts:
             px, py = ex, ey
             tx, ty = t2x, t2y
             l1 = l2
-            cx, cy = nx, ny
             fresh = False
+            if not keeps:
+                continue
             if not hold:
                 place = len(moves) if record else -1
             elif len(moves) + 1 < budget:
                 held = True
             else:  # this move fills the toolpath: recorded now, and no move after it
+                cx, cy = px - ty * d - reach * tx, py + tx * d - reach * ty
                 self._keep((line, mode, feed, start, end, px, py, tx, ty, l1, cx, cy, s0, per, off,
                            length, seconds, place, hold, True, fresh))  # fmt: skip
                 self._end()
@@ -612,6 +629,8 @@ class StraightCuts:
                 p.moves_full(line)
                 yield joined
                 return
+        if not fresh:  # the last corner, on the last move's line at its reach before the end's perpendicular
+            cx, cy = px - ty * d - reach * tx, py + tx * d - reach * ty
         self._keep((line, mode, feed, start, end, px, py, tx, ty, l1, cx, cy, s0, per, off, length,
                    seconds, place, hold, held, fresh))  # fmt: skip
         self._end()
