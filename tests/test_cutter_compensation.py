@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import math
+import random
 from pathlib import Path
 
 import pytest
@@ -17,7 +18,7 @@ import pytest
 from cli_capture import run_json
 from cncmacro.dialects.alarms import CUTTER_ARC_START, CUTTER_INTERFERENCE, CUTTER_PLANE
 from cncmacro.library.machine_file import MachineFileError, MachineSettings, settings_from_mapping
-from running import lines, run
+from running import lines, machine, run
 
 ROOT = Path(__file__).resolve().parent.parent
 MILLS = ["fanuc", "fanuc-30i", "haas"]
@@ -330,6 +331,61 @@ def test_the_run_of_plain_lines_and_the_general_path_give_the_same_centre_path()
     for x, y in zip(pa, pb, strict=True):
         assert (x is None and y is None) or same(x, y or [])
     assert a.planner.clock == pytest.approx(b.planner.clock)
+
+
+def star_contour(seed: int, side: int) -> tuple[list[str], list[str]]:
+    """A closed star-shaped contour around the origin (random radii at increasing angles: inside,
+    outside, obtuse and acute corners, with a Z step and a feed change now and then), cut with
+    the tool on ``side`` (41, 42), once as plain lines and once with its coordinates in variables."""
+    rng = random.Random(seed)
+    # on the right of the contour (outside) it starts with a spike, its tip an acute outside
+    # corner where the offsets meet beyond two extension points
+    polar = [(40.0, 0.0), (75.0, 0.03), (40.0, 0.06)] if side == 42 else [(40.0, 0.0)]
+    angle = 0.4
+    while angle < 2 * math.pi - 0.3:
+        polar.append((rng.uniform(25.0, 60.0), angle))
+        angle += rng.uniform(0.05, 0.6)
+    points = [(round(r * math.cos(a), 3), round(r * math.sin(a), 3)) for r, a in polar]
+    points.append(points[0])
+    for k in range(len(points) - 3, 0, -4):  # a straight-on corner: a side cut in two at its middle
+        (x0, y0), (x1, y1) = points[k], points[k + 1]
+        hx, hy = round((x1 - x0) / 2, 3), round((y1 - y0) / 2, 3)
+        points[k + 1 : k + 2] = [(round(x0 + hx, 3), round(y0 + hy, 3)), (round(x0 + 2 * hx, 3), round(y0 + 2 * hy, 3))]
+    plain = [f"G90 G17 G00 X{points[0][0]} Y-30.", f"G{side} D1 G01 X{points[0][0]} Y{points[0][1]} F300"]
+    by_variables = list(plain)
+    for k, (x, y) in enumerate(points[1:], 1):
+        extra = f" Z{-0.5 * k:.1f}" if k % 7 == 0 else (" F150" if k % 5 == 0 else "")
+        plain.append(f"X{x} Y{y}{extra}")
+        by_variables += [f"#1={x}", f"#2={y}", f"X#1 Y#2{extra}"]
+    end = ["G40 G00 X0 Y0", "M30"]
+    return plain + end, by_variables + end
+
+
+@pytest.mark.parametrize("side", [41, 42])
+@pytest.mark.parametrize("seed", range(5))
+def test_a_contour_of_plain_lines_is_offset_and_timed_as_its_blocks_one_by_one(seed: int, side: int) -> None:
+    # a run of plain lines joins its cuts by their reach along each move (cutter_stage.StraightCuts);
+    # a block with variables is joined on its own from its corner's points: the same centre path,
+    # time and length, whether the run keeps its moves (cncmacro run, the toolpath) or not (the
+    # editor's analysis)
+    plain, by_variables = star_contour(seed, side)
+    a = run(lines("O0001", *radius(2.0), *plain))
+    b = run(lines("O0001", *radius(2.0), *by_variables))
+    c = machine(lines("O0001", *radius(2.0), *plain))
+    c.planner.record_moves = False
+    c.run()
+    assert a.status == b.status == c.status == "completed", (a.alarm, b.alarm, c.alarm)
+    pa, pb = centre_points(a), centre_points(b)
+    assert len(pa) == len(pb)
+    assert sum(x is not None for x in pa) > 10  # the contour is cut under compensation
+    for x, y in zip(pa, pb, strict=True):
+        assert (x is None) == (y is None)
+        assert x is None or y is None or all(math.dist(p, q) < 1e-9 for p, q in zip(x, y, strict=True)), (x, y)
+    for m in (b, c):
+        assert m.planner.clock == pytest.approx(a.planner.clock, rel=1e-12)
+        assert m.planner.cut_length == pytest.approx(a.planner.cut_length, rel=1e-12)
+    seconds = [mv.seconds for mv in a.planner.moves]
+    assert seconds == pytest.approx([mv.seconds for mv in b.planner.moves], rel=1e-12)
 
 
 def test_the_bundled_contour_example_cuts_its_plate_a_radius_outside(tmp_path: Path) -> None:
