@@ -47,6 +47,21 @@ def test_an_axis_first_named_among_the_moves_left_out_stays_shown_after_them(tmp
     assert last.endswith("G01  X598.000 Y0.000 -> X599.000 Y0.000  F500")  # Y0 was named in the middle
 
 
+def test_an_axis_named_in_a_subprogram_among_the_moves_left_out_stays_shown_after_them(tmp_path):
+    # the moves left out come from two files: the axis is found in the one that names it, in a
+    # plain line and in one that is not (lower case, a variable)
+    loop = "#1=0\nWHILE[#1 LT 600]DO1\nG01 X#1 F500\n#1=#1+1\nEND1\n"
+    (tmp_path / "O0100.nc").write_text("O0100\n#2=3.\nG01 y#2\nM99\n", encoding="utf-8")
+    (tmp_path / "O0200.nc").write_text("O0200\nG00 Z0\nM99\n", encoding="utf-8")
+    f = tmp_path / "O0004.nc"
+    f.write_text(f"O0004\n{loop}M98 P100\nM98 P200\n{loop}M30\n", encoding="utf-8")
+    code, out, _ = cli("run", "--no-save", str(f))
+    assert code == 0 and "moves (1202):" in out and "  ... 202 more moves ...\n" in out
+    assert "G01  X0.000 -> X1.000  F500" in out  # the first moves: X only, so far
+    last = [line for line in out.splitlines() if line.startswith("  O0004.nc:")][-1]
+    assert last.endswith("G01  X598.000 Y3.000 Z0.000 -> X599.000 Y3.000 Z0.000  F500")
+
+
 def test_a_lathe_program_shows_x_and_z_only(tmp_path):
     f = tmp_path / "O0002.nc"
     f.write_text("(cncmacro: dialect=gsk980tdi)\nO0002\nG00 X0 Z0\nG01 W-10. F0.2\nM30\n", encoding="utf-8")
