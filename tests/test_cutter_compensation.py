@@ -333,6 +333,12 @@ def test_the_run_of_plain_lines_and_the_general_path_give_the_same_centre_path()
     assert a.planner.clock == pytest.approx(b.planner.clock)
 
 
+def centre_path_points(m) -> list[tuple[tuple[float, ...], ...]]:  # type: ignore[no-untyped-def]
+    """Per move, every point of its tool-centre path, all axes (none without compensation)."""
+    return [(mv.tool_path.start, *(pc.end for pc in mv.tool_path.pieces)) if mv.tool_path else ()
+            for mv in m.planner.moves]  # fmt: skip
+
+
 def star_contour(seed: int, side: int) -> tuple[list[str], list[str]]:
     """A closed star-shaped contour around the origin (random radii at increasing angles: inside,
     outside, obtuse and acute corners, with a Z step and a feed change now and then), cut with
@@ -355,8 +361,9 @@ def star_contour(seed: int, side: int) -> tuple[list[str], list[str]]:
     by_variables = list(plain)
     for k, (x, y) in enumerate(points[1:], 1):
         extra = f" Z{-0.5 * k:.1f}" if k % 7 == 0 else (" F150" if k % 5 == 0 else "")
-        plain.append(f"X{x} Y{y}{extra}")
-        by_variables += [f"#1={x}", f"#2={y}", f"X#1 Y#2{extra}"]
+        step = [f"Z{-0.25 * k:.2f}"] if k % 11 == 0 else []  # a move off the plane, made at the corner
+        plain += [*step, f"X{x} Y{y}{extra}"]
+        by_variables += [*step, f"#1={x}", f"#2={y}", f"X#1 Y#2{extra}"]
     end = ["G40 G00 X0 Y0", "M30"]
     return plain + end, by_variables + end
 
@@ -374,14 +381,20 @@ def test_a_contour_of_plain_lines_is_offset_and_timed_as_its_blocks_one_by_one(s
     c = machine(lines("O0001", *radius(2.0), *plain))
     c.planner.record_moves = False
     c.run()
-    assert a.status == b.status == c.status == "completed", (a.alarm, b.alarm, c.alarm)
-    pa, pb = centre_points(a), centre_points(b)
+    d = machine(lines("O0001", *radius(2.0), *plain))  # a toolpath that fills up after a few moves
+    d.planner.move_budget = 9
+    d.run()
+    assert a.status == b.status == c.status == d.status == "completed", (a.alarm, b.alarm, c.alarm, d.alarm)
+    pa, pb = centre_path_points(a), centre_path_points(b)
     assert len(pa) == len(pb)
-    assert sum(x is not None for x in pa) > 10  # the contour is cut under compensation
-    for x, y in zip(pa, pb, strict=True):
-        assert (x is None) == (y is None)
-        assert x is None or y is None or all(math.dist(p, q) < 1e-9 for p, q in zip(x, y, strict=True)), (x, y)
-    for m in (b, c):
+    assert sum(bool(x) for x in pa) > 10  # the contour is cut under compensation
+    for x, y in zip(pa, pb, strict=True):  # every axis of every point, Z too
+        assert len(x) == len(y) and all(math.dist(p, q) < 1e-9 for p, q in zip(x, y, strict=True)), (x, y)
+    kept = centre_path_points(d)
+    assert len(kept) == 9
+    for x, y in zip(kept, pa, strict=False):
+        assert len(x) == len(y) and all(math.dist(p, q) < 1e-9 for p, q in zip(x, y, strict=True)), (x, y)
+    for m in (b, c, d):
         assert m.planner.clock == pytest.approx(a.planner.clock, rel=1e-12)
         assert m.planner.cut_length == pytest.approx(a.planner.cut_length, rel=1e-12)
     seconds = [mv.seconds for mv in a.planner.moves]

@@ -503,6 +503,12 @@ class StraightCuts:
         place, hold, held, fresh = self.place, self.hold, self.held, self.fresh
         least = -EPSILON  # the reversal a move of 1 may show before it is one (more in proportion to a longer move)
         keeps = hold or record or place >= 0  # centre paths are made (the corners' points with them)
+        # what a record reads that changes less often than moves come: the feed as a record holds
+        # it, the room left in the toolpath, the axes after X and Y of the last move's end (on a
+        # mill in G17: the rest of a centre point), kept while the moves stay in the plane
+        kept_feed = float(feed)
+        room = budget - len(moves) - 1
+        tail = end[2:]  # (made again from the first cut's start: a move off the plane may have come between)
         # The last move's reach: how far its provisional centre path goes along its direction,
         # from the corner it starts at to its end's perpendicular. Every corner is on the lines of
         # both moves' offsets (or, at an acute outside corner, one extension point on each), so
@@ -558,6 +564,7 @@ class StraightCuts:
             if fresh:
                 ux, uy = bx - cx, by - cy
                 settled = sqrt(ux * ux + uy * uy + off)
+                tail = new_start[2:]
             elif off == 0.0:
                 settled = along if along >= 0.0 else -along
             else:
@@ -567,7 +574,7 @@ class StraightCuts:
             settled_seconds = settled * per
             correction = settled_seconds - seconds
             if keeps and (held or place >= 0):  # its record: made (held) or put right, its centre path to the corner
-                first = (bx, by, *new_start[2:]) if xy else _full((bx, by), new_start, i, j)
+                first = (bx, by) + tail if xy else _full((bx, by), new_start, i, j)  # noqa: RUF005 (half the time)
                 piece = _tuple_new(CentrePiece, (first, None, False))
                 if link:
                     second = _full((nx, ny), new_start, i, j)
@@ -580,8 +587,9 @@ class StraightCuts:
                     s0 = _full((cx, cy), start, i, j)
                 path = _tuple_new(CentrePath, (s0, pieces))
                 if held:
-                    moves.append(_tuple_new(Move, (file, line, mode, start, end, float(feed), None, settled_seconds,
+                    moves.append(_tuple_new(Move, (file, line, mode, start, end, kept_feed, None, settled_seconds,
                                                    plane, None, None, None, path)))  # fmt: skip
+                    room -= 1
                 elif place < len(moves) and moves[place][1] == line:
                     old = moves[place]
                     moves[place] = _tuple_new(Move, (*old[:7], settled_seconds, *old[8:12], path))
@@ -593,7 +601,10 @@ class StraightCuts:
             # names packed and unpacked at once was a sixth of the join's time)
             if k1 >= 0 and new_start[k1] == new_end[k1] and new_start[k2] == new_end[k2]:
                 off = 0.0
+                if k1 != 2 or k2 != len(new_end) - 1:  # more than Z and A after X and Y
+                    tail = new_end[2:]
             else:
+                tail = new_end[2:]
                 whole = dist(new_start, new_end)
                 off = whole * whole - l2 * l2
                 if off < 1e-9:  # in the plane (but for the rounding of the squares)
@@ -607,6 +618,7 @@ class StraightCuts:
             if new_feed != feed:
                 per = p.feed_seconds(new_mode, 1.0, new_feed, new_start, new_end, unit)
                 feed = new_feed
+                kept_feed = float(feed)
             seconds = length * per
             joined = (correction, seconds, (change + length) * unit)
             line, start, end = new_line, new_start, new_end
@@ -618,7 +630,7 @@ class StraightCuts:
                 continue
             if not hold:
                 place = len(moves) if record else -1
-            elif len(moves) + 1 < budget:
+            elif room > 0:
                 held = True
             else:  # this move fills the toolpath: recorded now, and no move after it
                 cx, cy = px - ty * d - reach * tx, py + tx * d - reach * ty
