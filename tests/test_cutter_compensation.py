@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from cli_capture import run_json
+from cli_capture import cli, run_json
 from cncmacro.dialects.alarms import CUTTER_ARC_START, CUTTER_INTERFERENCE, CUTTER_PLANE
 from cncmacro.library.machine_file import MachineFileError, MachineSettings, settings_from_mapping
 from running import lines, machine, run
@@ -399,6 +399,33 @@ def test_a_contour_of_plain_lines_is_offset_and_timed_as_its_blocks_one_by_one(s
         assert m.planner.cut_length == pytest.approx(a.planner.cut_length, rel=1e-12)
     seconds = [mv.seconds for mv in a.planner.moves]
     assert seconds == pytest.approx([mv.seconds for mv in b.planner.moves], rel=1e-12)
+
+
+@pytest.mark.parametrize("written", ["plain", "by variables"])
+def test_a_run_that_keeps_no_centre_paths_has_the_same_moves_times_and_lengths(written: str) -> None:
+    # cncmacro run's text shows the programmed moves and the totals, never a centre path: its run
+    # leaves them out (Planner.centre_paths), and nothing it shows changes
+    plain, by_variables = star_contour(3, 42)
+    text = lines("O0001", *radius(2.0), *(plain if written == "plain" else by_variables))
+    a, b = machine(text), machine(text)
+    b.planner.centre_paths = False
+    for m in (a, b):
+        assert m.run() == "completed", m.alarm
+    assert any(mv.tool_path for mv in a.planner.moves) and not any(mv.tool_path for mv in b.planner.moves)
+    assert [mv[:7] for mv in b.planner.moves] == [mv[:7] for mv in a.planner.moves]
+    assert [mv.seconds for mv in b.planner.moves] == pytest.approx([mv.seconds for mv in a.planner.moves], rel=1e-12)
+    assert b.planner.clock == pytest.approx(a.planner.clock, rel=1e-12)
+    assert b.planner.cut_length == pytest.approx(a.planner.cut_length, rel=1e-12)
+
+
+def test_run_text_and_json_give_the_same_cycle_time_of_a_compensated_contour(tmp_path: Path) -> None:
+    plain, _ = star_contour(1, 42)
+    text = lines("O0001", *radius(2.0), *plain)
+    data = run_json(tmp_path, text)
+    assert any("tool_path" in mv for mv in data["moves"])  # --json draws the centre path
+    code, out, _ = cli("run", "--no-save", str(tmp_path / "MAIN.nc"))
+    assert code == 0
+    assert f"cycle time O0001: {data['cycle']['text']}" in out, out[-300:]
 
 
 def test_the_bundled_contour_example_cuts_its_plate_a_radius_outside(tmp_path: Path) -> None:

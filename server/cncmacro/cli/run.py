@@ -155,6 +155,7 @@ def _run(args: argparse.Namespace, out: TextIO | None, err: TextIO | None) -> in
     for note in prepared.notes:
         print(f"cncmacro：注意：{note.zh}" if is_chinese(args.locale) else f"cncmacro: note: {note}", file=shown_err)
     machine = prepared.machine
+    machine.planner.centre_paths = args.json  # the text shows the programmed moves, never a tool centre path
     dialect = machine.dialect
     program = machine.frames[0].name if machine.frames else path.name
     budget = args.max_blocks if args.max_blocks is not None else machine.settings.max_blocks

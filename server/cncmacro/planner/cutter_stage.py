@@ -502,7 +502,8 @@ class StraightCuts:
         per, off, length, seconds = self.per, self.off, self.length, self.seconds
         place, hold, held, fresh = self.place, self.hold, self.held, self.fresh
         least = -EPSILON  # the reversal a move of 1 may show before it is one (more in proportion to a longer move)
-        keeps = hold or record or place >= 0  # centre paths are made (the corners' points with them)
+        keeps = hold or record or place >= 0  # moves are recorded
+        points = keeps and p.centre_paths  # with their centre paths (the corners' points with them)
         # what a record reads that changes less often than moves come: the feed as a record holds
         # it, the room left in the toolpath, the axes after X and Y of the last move's end (on a
         # mill in G17: the rest of a centre point), kept while the moves stay in the plane
@@ -533,7 +534,7 @@ class StraightCuts:
             link = False
             if -1e-12 <= cross <= 1e-12 and dot > 0.0:  # straight on
                 back, ahead = 0.0, -d * cross
-                if keeps or fresh:
+                if points or fresh:
                     bx, by = px - ty * d, py + tx * d
                     nx, ny = bx, by
             elif cross * d > 0.0 or dot >= 0.0:  # inside or obtuse: where the two offsets cross
@@ -541,7 +542,7 @@ class StraightCuts:
                     break
                 k = d / (1.0 + dot)
                 back = ahead = -k * cross
-                if keeps or fresh:
+                if points or fresh:
                     bx, by = px - k * (ty + t2y), py + k * (tx + t2x)
                     nx, ny = bx, by
             else:  # acute outside: through the two extension points
@@ -573,7 +574,7 @@ class StraightCuts:
                 settled += hypot(nx - bx, ny - by)
             settled_seconds = settled * per
             correction = settled_seconds - seconds
-            if keeps and (held or place >= 0):  # its record: made (held) or put right, its centre path to the corner
+            if points and (held or place >= 0):  # its record: made (held) or put right, its centre path to the corner
                 first = (bx, by) + tail if xy else _full((bx, by), new_start, i, j)  # noqa: RUF005 (half the time)
                 piece = _tuple_new(CentrePiece, (first, None, False))
                 if link:
@@ -594,8 +595,15 @@ class StraightCuts:
                     old = moves[place]
                     moves[place] = _tuple_new(Move, (*old[:7], settled_seconds, *old[8:12], path))
                 s0 = second
-            else:  # the run keeps no moves (an analysis): the next path's start is made only if asked for
+            else:  # no centre path kept: the next path's start is made only if asked for
                 s0 = None
+                if held:  # the record of a run that keeps its moves but not their paths (``Planner.centre_paths``)
+                    moves.append(_tuple_new(Move, (file, line, mode, start, end, kept_feed, None, settled_seconds,
+                                                   plane, None, None, None, None)))  # fmt: skip
+                    room -= 1
+                elif place >= 0 and place < len(moves) and moves[place][1] == line:
+                    old = moves[place]
+                    moves[place] = _tuple_new(Move, (*old[:7], settled_seconds, *old[8:]))
             # this move, the last in its turn: from the corner to its end's perpendicular
             # (the state is set in place, each name once its old value is used: a move's worth of
             # names packed and unpacked at once was a sixth of the join's time)
@@ -708,7 +716,8 @@ class StraightCuts:
             self.held = False
             place = len(p.moves)
             p.moves.append(_tuple_new(Move, (self.file, self.line, self.mode, self.start, end, float(self.feed), None,
-                                             self.seconds, self.plane, None, None, None, path)))  # fmt: skip
+                                             self.seconds, self.plane, None, None, None,
+                                             path if p.centre_paths else None)))  # fmt: skip
         element = _tuple_new(PathElement, ((self.ax, self.ay), (self.px, self.py), None, False))
         self.stage.pending = _tuple_new(Pending, (place, self.line, self.mode, self.feed, self.unit, self.plane,
                                                   self.start, end, element, self.d, path, self.seconds, False, (),
@@ -848,7 +857,7 @@ def _settle(p: Planner, pending: Pending, corner: Corner, line: int, i: int, j: 
     moves = p.moves
     k = pending.place
     if 0 <= k < len(moves) and moves[k].line == pending.line:
-        moves[k] = moves[k]._replace(tool_path=path, seconds=seconds)
+        moves[k] = moves[k]._replace(tool_path=path if p.centre_paths else None, seconds=seconds)
     at = corner.after_start
     for k in pending.between:
         if 0 <= k < len(moves):
@@ -870,7 +879,7 @@ def restore_pending(p: Planner) -> None:
     moves = p.moves
     k = pending.place
     if 0 <= k < len(moves) and moves[k].line == pending.line:
-        moves[k] = moves[k]._replace(tool_path=pending.path, seconds=pending.seconds)
+        moves[k] = moves[k]._replace(tool_path=pending.path if p.centre_paths else None, seconds=pending.seconds)
 
 
 def _length(p: Planner, path: CentrePath, plane: float) -> float:

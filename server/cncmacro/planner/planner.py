@@ -77,6 +77,11 @@ class Planner:
         self.cutter: CutterStage | None = None  # cutter radius compensation under way (cutter_stage.py)
         self.moves: list[Move] = []
         self.record_moves = True
+        # whether a recorded move carries its tool centre path under cutter radius compensation
+        # (``Move.tool_path``): a view that shows only the programmed moves and the totals
+        # (``cncmacro run``'s text) leaves them out; the clock, the lengths and the findings are
+        # the same either way
+        self.centre_paths = True
         self.move_budget = MOVE_BUDGET
         self.moves_cut = False  # the toolpath reached ``move_budget`` and keeps no more moves
         # the cycle time's rules (cycle_time.py), the clock (#3001), the path so far (mm) and,
@@ -438,7 +443,7 @@ class Planner:
         self.clock += seconds
         if self.record_moves:
             self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre, seconds, plane, legs,
-                                              cycle, pass_of, tool_path)))  # fmt: skip
+                                              cycle, pass_of, tool_path if self.centre_paths else None)))  # fmt: skip
             if len(self.moves) >= self.move_budget:
                 self.moves_full(line)
         if stop is not None:
