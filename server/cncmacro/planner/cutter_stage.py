@@ -510,6 +510,8 @@ class StraightCuts:
         kept_feed = float(feed)
         room = budget - len(moves) - 1
         tail = end[2:]  # (made again from the first cut's start: a move off the plane may have come between)
+        tails = points and xy  # a tail is read (a centre point on a mill in G17)
+        retail = tails and not (k1 == 2 and k2 == len(end) - 1)  # made again each move: more axes than Z and A
         # The last move's reach: how far its provisional centre path goes along its direction,
         # from the corner it starts at to its end's perpendicular. Every corner is on the lines of
         # both moves' offsets (or, at an acute outside corner, one extension point on each), so
@@ -597,11 +599,13 @@ class StraightCuts:
                 s0 = second
             else:  # no centre path kept: the next path's start is made only if asked for
                 s0 = None
-                if held:  # the record of a run that keeps its moves but not their paths (``Planner.centre_paths``)
+                if not keeps:  # an analysis: no record
+                    pass
+                elif held:  # the record of a run that keeps its moves but not their paths (``Planner.centre_paths``)
                     moves.append(_tuple_new(Move, (file, line, mode, start, end, kept_feed, None, settled_seconds,
                                                    plane, None, None, None, None)))  # fmt: skip
                     room -= 1
-                elif place >= 0 and place < len(moves) and moves[place][1] == line:
+                elif 0 <= place < len(moves) and moves[place][1] == line:
                     old = moves[place]
                     moves[place] = _tuple_new(Move, (*old[:7], settled_seconds, *old[8:]))
             # this move, the last in its turn: from the corner to its end's perpendicular
@@ -609,10 +613,11 @@ class StraightCuts:
             # names packed and unpacked at once was a sixth of the join's time)
             if k1 >= 0 and new_start[k1] == new_end[k1] and new_start[k2] == new_end[k2]:
                 off = 0.0
-                if k1 != 2 or k2 != len(new_end) - 1:  # more than Z and A after X and Y
+                if retail:
                     tail = new_end[2:]
             else:
-                tail = new_end[2:]
+                if tails:
+                    tail = new_end[2:]
                 whole = dist(new_start, new_end)
                 off = whole * whole - l2 * l2
                 if off < 1e-9:  # in the plane (but for the rounding of the squares)
