@@ -66,7 +66,8 @@ class Move(NamedTuple):
     planned from the cycle block (lathe_cycles.py); None for any other move. ``tool_path`` is
     where the tool's centre goes under cutter radius compensation (G41/G42: cutter_stage.py),
     which the time and the cut length follow; None when no compensation is in force, the
-    centre then being on the programmed path."""
+    centre then being on the programmed path, and in a run that keeps no centre paths
+    (``Planner.centre_paths``: ``cncmacro run``'s text, which shows none)."""
 
     file: str
     line: int
