@@ -67,9 +67,9 @@ _Scale = tuple[float, float] | None  # a lathe plane's units per program unit (X
 _Cut = tuple[int, float, float, _Point, _Point]  # a straight cut joined: its line, mode, feed, start and end
 _Joined = tuple[float, float, float]  # the last move's seconds put right, this one's, the change in cut length
 # ``StraightCuts``' state while its joins are under way: the last move (line, mode, feed, start, end),
-# its end in the plane (px, py), direction and length (tx, ty, l), the centre path's start and
-# (cx, cy, s0), its seconds a unit of length, move off the plane, length and seconds,
-# and where its record is (place, hold, held, fresh)
+# its end in the plane (px, py), direction and length (tx, ty, l), the centre path's start
+# (cx, cy, s0), its seconds a unit of length, move off the plane, length and seconds, and
+# where its record is (place, hold, held, fresh)
 _State = tuple[int, float, float, _Point, _Point, float, float, float, float, float, float, float,
                _Point | None, float, float, float, float, int, bool, bool, bool]  # fmt: skip
 
