@@ -576,38 +576,31 @@ class StraightCuts:
                 settled += hypot(nx - bx, ny - by)
             settled_seconds = settled * per
             correction = settled_seconds - seconds
-            if points and (held or place >= 0):  # its record: made (held) or put right, its centre path to the corner
-                first = (bx, by) + tail if xy else _full((bx, by), new_start, i, j)  # noqa: RUF005 (half the time)
-                piece = _tuple_new(CentrePiece, (first, None, False))
-                if link:
-                    second = _full((nx, ny), new_start, i, j)
-                    pieces: tuple[CentrePiece, ...] = (piece, _tuple_new(CentrePiece, (second, None, False)))
-                else:
-                    second, pieces = first, (piece,)
-                if s0 is None:
-                    if not fresh:
-                        cx, cy = px - ty * d - reach * tx, py + tx * d - reach * ty
-                    s0 = _full((cx, cy), start, i, j)
-                path = _tuple_new(CentrePath, (s0, pieces))
+            if keeps:  # its record: made (held) or put right, with its centre path to the corner
+                path: CentrePath | None = None  # none kept (``Planner.centre_paths``)
+                if points and (held or place >= 0):
+                    first = (bx, by) + tail if xy else _full((bx, by), new_start, i, j)  # noqa: RUF005 (half the time)
+                    piece = _tuple_new(CentrePiece, (first, None, False))
+                    if link:
+                        second = _full((nx, ny), new_start, i, j)
+                        pieces: tuple[CentrePiece, ...] = (piece, _tuple_new(CentrePiece, (second, None, False)))
+                    else:
+                        second, pieces = first, (piece,)
+                    if s0 is None:
+                        if not fresh:
+                            cx, cy = px - ty * d - reach * tx, py + tx * d - reach * ty
+                        s0 = _full((cx, cy), start, i, j)
+                    path = _tuple_new(CentrePath, (s0, pieces))
                 if held:
                     moves.append(_tuple_new(Move, (file, line, mode, start, end, kept_feed, None, settled_seconds,
                                                    plane, None, None, None, path)))  # fmt: skip
                     room -= 1
-                elif place < len(moves) and moves[place][1] == line:
-                    old = moves[place]
-                    moves[place] = _tuple_new(Move, (*old[:7], settled_seconds, *old[8:12], path))
-                s0 = second
-            else:  # no centre path kept: the next path's start is made only if asked for
-                s0 = None
-                if not keeps:  # an analysis: no record
-                    pass
-                elif held:  # the record of a run that keeps its moves but not their paths (``Planner.centre_paths``)
-                    moves.append(_tuple_new(Move, (file, line, mode, start, end, kept_feed, None, settled_seconds,
-                                                   plane, None, None, None, None)))  # fmt: skip
-                    room -= 1
                 elif 0 <= place < len(moves) and moves[place][1] == line:
                     old = moves[place]
-                    moves[place] = _tuple_new(Move, (*old[:7], settled_seconds, *old[8:]))
+                    moves[place] = _tuple_new(Move, (*old[:7], settled_seconds, *old[8:12], path))
+                s0 = second if path is not None else None
+            else:  # an analysis: no record, and the next path's start made only if asked for
+                s0 = None
             # this move, the last in its turn: from the corner to its end's perpendicular
             # (the state is set in place, each name once its old value is used: a move's worth of
             # names packed and unpacked at once was a sixth of the join's time)

@@ -47,16 +47,21 @@ ILLEGAL_FORMAT = 114
 
 
 def has_relation(expr: Expr) -> bool:
-    """True when a comparison hides anywhere inside ``expr`` (walked without recursion)."""
+    """True when a comparison hides anywhere inside ``expr``."""
+    return _first_relation(expr) is not None
+
+
+def _first_relation(expr: Expr) -> Relation | None:
+    """The first comparison inside ``expr`` (walked without recursion), None for none."""
     stack: list[object] = [expr]
     while stack:
         e = stack.pop()
         if isinstance(e, Relation):
-            return True
+            return e
         if isinstance(e, Binary):
             stack.append(e.left)
             stack.append(e.right)
-        elif isinstance(e, (Bracket,)):
+        elif isinstance(e, Bracket):
             stack.append(e.inner)
         elif isinstance(e, Unary):
             stack.append(e.operand)
@@ -66,11 +71,12 @@ def has_relation(expr: Expr) -> bool:
             stack.append(e.index)
         elif isinstance(e, NamedVar) and e.index is not None:
             stack.append(e.index)
-    return False
+    return None
 
 
 def relation_error(expr: Expr) -> BlockError:
-    rel = _find_relation(expr)
+    rel = _first_relation(expr)
+    assert rel is not None  # only called after has_relation
     return BlockError(
         detail(
             f"the comparison '{rel.spelling}' is allowed only in an IF or WHILE condition",
@@ -80,21 +86,6 @@ def relation_error(expr: Expr) -> BlockError:
         rel.end,
         ILLEGAL_FORMAT,
     )
-
-
-def _find_relation(expr: Expr) -> Relation:
-    stack: list[object] = [expr]
-    while stack:
-        e = stack.pop()
-        if isinstance(e, Relation):
-            return e
-        for attr in ("left", "right", "inner", "operand", "index"):
-            sub = getattr(e, attr, None)
-            if sub is not None:
-                stack.append(sub)
-        if isinstance(e, FunctionCall):
-            stack.extend(e.args)
-    raise AssertionError("no comparison found")  # only called after has_relation
 
 
 def check_condition(cond: Bracket) -> None:
