@@ -5,7 +5,7 @@ building syntax nodes, and runs of such lines are carried out in one pass (docs/
 rounding, §8 motion). Appending a comment to every line sends the same blocks through the
 general path, so the two runs must leave the same moves, clock, modal state and variables, in
 each dialect and both decimal-point input modes, with blank lines, comments, canned cycles
-and M codes between them. A run stopped every few blocks (as the debugger steps) must end
+and M codes between them, some after a sequence number. A run stopped every few blocks (as the debugger steps) must end
 where one uninterrupted run ends.
 """
 
@@ -38,6 +38,8 @@ def plain_line(draw: st.DrawFn, dialect: str) -> str:
         words.append(letter + text)
     sep = draw(st.sampled_from([" ", "  ", "\t", ""]))
     text = sep.join(words)
+    if draw(st.integers(0, 3)) == 0:  # a line in ten of a CAM program has a sequence number
+        text = f"N{draw(st.integers(1, 99999))}{sep}{text}"
     return text.lower() if draw(st.booleans()) else text
 
 
@@ -134,6 +136,15 @@ def test_plain_lines_move_and_round_as_written() -> None:
         (11.75, -2.0, 2.0, 0.0),
     ]
     assert m.planner.moves[-1].line == 3
+
+
+def test_the_last_sequence_number_is_that_of_the_last_numbered_plain_line_run() -> None:
+    # #4114 reads the N of the last numbered block (FANUC): N20, not N10 nor the unnumbered after it
+    m = run(lines("O0001", "G90 G00 X0 Y0", "N10 G01 X1. F100", "G01 X2.", "N20 G01 X3.", "X4.", "#1=#4114", "M30"))
+    assert m.status == "completed"
+    assert m.variables()[1] == 20.0
+    assert [move.end[0] for move in m.planner.moves] == [0.0, 1.0, 2.0, 3.0, 4.0]
+    assert [move.line for move in m.planner.moves] == [1, 2, 3, 4, 5]
 
 
 def test_plain_lines_in_increment_mode_count_least_increments() -> None:

@@ -180,7 +180,9 @@ def test_shards_together_report_what_one_check_does_with_each_call_group_whole(t
     shards = [check(str(folder), "--shard", f"{k}/3") for k in (1, 2, 3)]
     lines = [line for _, out, _ in shards for line in out.splitlines()]
     assert sorted(lines) == sorted(whole.splitlines()) and len(lines) == len(whole.splitlines())
-    assert all(out for _, out, _ in shards)  # 55 groups: each shard has some
+    # the groups fall to the shards by a hash of their paths, which the temporary folder's name
+    # changes: of the 20 groups with a finding, a shard may (rarely) have none, never two shards
+    assert sum(bool(out) for _, out, _ in shards) >= 2
     # each macro's finding is in the shard that checked it with its caller: a shard with the
     # macro but not its caller would run it alone, where A is vacant and nothing divides by zero
     assert sum("O9100.nc:2:1: error: division by zero (alarm 112); reached from O0001:2" in out

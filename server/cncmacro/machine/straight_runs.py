@@ -1,6 +1,8 @@
 """Consecutive plain motion lines run in one pass, read and carried out together.
 
-A CAM program is mostly lines like ``G01 X12.5 Y-3.`` one after another (``Block.plain``).
+A CAM program is mostly lines like ``G01 X12.5 Y-3.`` one after another (``Block.plain``), one
+in ten after a sequence number (``N10 G01 X5.``, ``Block.plain_tail``: the run sets the last
+sequence number read, as the labelled block's runner does).
 Compiling each into a runner and then calling it costs more than reading it: most run once.
 ``run_straight`` reads such a line's words and applies them in one loop over the lines, with
 the machine's modal state, position and clock held in locals, until a line that is not
@@ -55,7 +57,7 @@ def run_straight(
     being the number of blocks run before ``pc``."""
     program = cf.file.program
     blocks = program.blocks
-    if pc >= len(blocks) or blocks[pc].plain is None:  # not a plain line: nothing to set up
+    if pc >= len(blocks) or blocks[pc].plain_text is None:  # not a plain line: nothing to set up
         return 0, pc
     n_blocks = program.read_end  # nothing from the closing '%' on
     p = m.planner
@@ -116,14 +118,19 @@ def run_straight(
     blanks = 0
     stop = min(n_blocks, pc + budget)
     while pc < stop:
-        text = blocks[pc].plain
+        block = blocks[pc]
+        text = block.plain
+        label = None
         if text is None:
-            if pc > first_pc and skipped(blocks[pc]):  # a blank or comment line between two plain ones
-                pc += 1
-                blanks += 1
-                stop = min(n_blocks, stop + 1)
-                continue
-            break
+            text = block.plain_tail  # a plain line after a sequence number (``N10 G01 X5.``)
+            if text is None:
+                if pc > first_pc and skipped(block):  # a blank or comment line between two plain ones
+                    pc += 1
+                    blanks += 1
+                    stop = min(n_blocks, stop + 1)
+                    continue
+                break
+            label = block.label  # (a lathe cycle's shape, which ends after its N(Q), is not run here)
         moved = False
         inc: list[tuple[int, float]] | None = None
         others: list[tuple[str, float]] | None = None
@@ -227,6 +234,8 @@ def run_straight(
                     canned = modal["canned"] = 80.0
             elif moved and (mode in cycles or (canned != 80.0 and not lathe)):
                 break
+            if label is not None:
+                codes["N"] = float(label)  # the last sequence number read, as a labelled block sets it
             if trk is not None:
                 if trk[pc] < floor:
                     p.clock, p.cut_length, p.rapid_length = clock, cut, rapid  # what the observer reads
@@ -355,7 +364,7 @@ def _keep_last_words(
     ``first``..``end`` just run (``Dialect.last_address_letters``): no macro statement runs
     between them, so only the last line to write a letter counts, as one pass after the run."""
     for pc in range(first, end):
-        text = blocks[pc].plain
+        text = blocks[pc].plain_text
         if text is not None:
             for word in text.split():
                 key = last_keys.get(word[0].upper())

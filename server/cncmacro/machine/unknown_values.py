@@ -45,9 +45,9 @@ def seed_unknowns(kinds: VariableKinds, commons: list[float | None]) -> None:
     """Make every kept common below #1000 that has no value unknown (``commons`` is
     ``Machine.C``, after the presets and the persistent file)."""
     for r in kinds.persistent:
-        for n in range(r.first, min(r.last, 999) + 1):
-            if commons[n] is None:
-                commons[n] = UNKNOWN
+        first, end = r.first, min(r.last, 999) + 1
+        if first < end:
+            commons[first:end] = [UNKNOWN if v is None else v for v in commons[first:end]]
 
 
 def kept_extended(kinds: VariableKinds, n: int) -> bool:

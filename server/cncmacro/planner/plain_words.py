@@ -194,3 +194,24 @@ class PlainWords:
             if self.last_keys:
                 self._keep_last(letter, v, codes)
         return tuple(modal), tuple(codes), tuple(axes), tuple(inc), tuple(extra)
+
+
+_SHARED_KEPT = 8  # machines whose reading ``shared_plain_words`` keeps
+_shared: dict[tuple[int, int], PlainWords] = {}
+
+
+def shared_plain_words(
+    dialect: Dialect, settings: MachineSettings, g_groups: dict[float, str], axis_index: dict[str, int]
+) -> PlainWords:
+    """The ``PlainWords`` of a machine of ``dialect`` and ``settings``, shared by each run of it: a
+    reading is decided by the profile and the machine file alone, and what it learns (the G
+    words' spellings) holds for any run. ``g_groups`` and ``axis_index`` are those the planner
+    derives from the two. A check of thousands of small files makes one, not one a file."""
+    key = (id(dialect), id(settings))
+    found = _shared.get(key)
+    if found is not None and found.dialect is dialect and found.settings is settings:
+        return found
+    if len(_shared) >= _SHARED_KEPT:
+        _shared.pop(next(iter(_shared)))
+    made = _shared[key] = PlainWords(dialect, settings, g_groups, axis_index)
+    return made

@@ -33,7 +33,7 @@ from .machine_limits import leaves_travel, program_bounds, spindle_speed
 from .modal_groups import extra_offset_codes, g_code_groups
 from .moves import TURNING, Leg, Move, ToolChange
 from .one_shot import one_shot
-from .plain_words import PlainRun, PlainWords
+from .plain_words import PlainRun, shared_plain_words
 from .positions import position_value
 from .probing import Probe, SkipState
 from .state import MODAL_DEFAULTS, PlannerState
@@ -95,7 +95,7 @@ class Planner:
         self.extra_codes = extra_offset_codes(dialect)
         if self.extra_codes:  # the switch makes them work offset codes, whatever the table says
             self.g_groups = {**self.g_groups, **dict.fromkeys(self.extra_codes, "wcs")}
-        self.plain = PlainWords(dialect, settings, self.g_groups, self.axis_index)
+        self.plain = shared_plain_words(dialect, settings, self.g_groups, self.axis_index)
         self.cycle_codes = dialect.cycle_codes
         self.lathe = dialect.lathe
         self._call_needs_distance = dialect.modal_call_needs_distance

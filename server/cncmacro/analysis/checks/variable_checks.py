@@ -151,10 +151,12 @@ def check_write(target: Var | IndirectVar | NamedVar, ctx: LineContext, out: lis
     else:
         number = target.number
     kind = ctx.kinds.kind(number)
+    if kind != "vacant" and kind != "none" and kind != "system":
+        return  # a variable a program may write
     loc = ctx.locale
     protected = ctx.dialect.alarm_said(WRITE_PROTECTED)
-    vacant = f"#0 恒为空，不能赋值（{protected.zh}）"
     if kind == "vacant":
+        vacant = f"#0 恒为空，不能赋值（{protected.zh}）"
         out.append(
             finding(
                 target.start,
