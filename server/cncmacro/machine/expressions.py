@@ -70,28 +70,37 @@ LONG_CHAIN = 16
 def bracket_depth(node: Expr) -> int:
     """The deepest nesting of ``[ ]`` in ``node``: every pair counts once, whether it is a plain
     bracket, a function's, an IF/WHILE condition's or the one of an indirection ``#[..]`` (whose
-    index is a ``Bracket`` node: the ``#`` adds no level of its own)."""
+    index is a ``Bracket`` node: the ``#`` adds no level of its own). The leaves, most of the
+    nodes, are passed over first."""
     best = 0
     stack: list[tuple[Expr, int]] = [(node, 0)]
+    pop = stack.pop
+    push = stack.append
     while stack:
-        n, d = stack.pop()
-        if isinstance(n, Bracket):
+        n, d = pop()
+        c = n.__class__
+        if c is Number or c is Var:
+            continue
+        if isinstance(n, (Binary, Relation)):
+            push((n.left, d))
+            push((n.right, d))
+        elif isinstance(n, Bracket):
             d += 1
-            best = max(best, d)
-            stack.append((n.inner, d))
+            if d > best:
+                best = d
+            push((n.inner, d))
         elif isinstance(n, FunctionCall):
-            inner = d + 1
-            best = max(best, inner)
-            stack.extend((a, inner) for a in n.args)
-        elif isinstance(n, (Binary, Relation)):
-            stack.append((n.left, d))
-            stack.append((n.right, d))
+            d += 1
+            if d > best:
+                best = d
+            for a in n.args:
+                push((a, d))
         elif isinstance(n, Unary):
-            stack.append((n.operand, d))
+            push((n.operand, d))
         elif isinstance(n, IndirectVar):
-            stack.append((n.index, d))
+            push((n.index, d))
         elif isinstance(n, NamedVar) and n.index is not None:
-            stack.append((n.index, d))  # the subscript's brackets count once
+            push((n.index, d))  # the subscript's brackets count once
     return best
 
 
