@@ -22,6 +22,7 @@ from collections.abc import Callable, Container, Iterator
 from pathlib import Path
 from typing import Any
 
+from ..analysis.warm_up import warm_up
 from ..analysis.workspace import WorkspaceAnalysis
 from ..library.file_cache import FileCache
 from .disk_watch import DiskStamps
@@ -55,10 +56,13 @@ class AnalysisGroups:
 
     def start(self, machine_file: Path | None, folders: list[str], locale: str) -> None:
         """A fresh analysis for the session (at ``initialize``, before any document opens), for
-        ``machine_file`` (the first workspace folder's)."""
+        ``machine_file`` (the first workspace folder's), and a short program analysed under its
+        settings meanwhile (``warm_up``)."""
         self._folders, self.locale = list(folders), locale
         self.analyses = {}
         self.of(machine_file)
+        options = self.options(machine_file)
+        warm_up(options["settings"], options["dialect"], locale)  # before any document opens
 
     def configure(self, editor: Settings) -> None:
         """The editor's settings, or a machine file, changed: each analysis gets its machine
