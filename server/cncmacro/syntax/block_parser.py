@@ -153,7 +153,8 @@ def parse_block(line: str) -> Block:
     if labelled is not None:
         return labelled
     special = has_special(line)  # a comment, ';', '/' or '%'
-    if not special:
+    statement = "#" in line or "[" in line  # never address-number words alone: a statement's
+    if not special and not statement:
         words = plain_words(line)
         if words is not None:
             if words[0].letter not in ("O", "N") and words[-1].letter != "O":
@@ -163,7 +164,7 @@ def parse_block(line: str) -> Block:
     code = prep.code
     if not code or code.isspace():
         return assemble((), prep)
-    if special:  # else the code is the line, which is not plain words
+    if special and not statement:  # else the code is the line, which is not plain words
         words = plain_words(code)
         if words is not None:
             return assemble_words(words, prep)

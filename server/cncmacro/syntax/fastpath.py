@@ -14,7 +14,6 @@ always come from the grammar.
 from __future__ import annotations
 
 import re
-from typing import cast
 
 from .assemble import Items
 from .conditions import MAX_NUMBER_CHARS, RELATION_NAMES, BlockError, check_condition, has_relation
@@ -76,8 +75,9 @@ _MACRO_WORDS = {
     ).split()},
     **FULL_WORD,
 }  # fmt: skip
+# a token after the blanks before it: a variable, a number, a macro word, an operator or a letter
 _TOKEN = re.compile(
-    r"[ \t]*(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|([A-Za-z]{2,})|(==|!=|<=|>=|&&|\|\||[-+*/\[\]=<>#])|([A-Za-z]))"
+    r"([ \t]*)(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|([A-Za-z]{2,})|(==|!=|<=|>=|&&|\|\||[-+*/\[\]=<>#])|([A-Za-z]))"
 )
 _BRACKET_NAME = re.compile(r"\[(?=[^\[\]#()\s]*[^\[\]#()\s\d.+\-*/])(?:[^\[\]#()\s.]|\.(?=[./\\]))[^\[\]#()\s]*\]")
 _FUNCS = frozenset("SIN COS TAN ASIN ACOS SQRT ABS LN EXP ROUND FIX FUP BIN BCD".split())
@@ -87,7 +87,7 @@ _ADDOPS = frozenset(("+", "-", "OR", "XOR", "||"))
 _MAX_TOKENS = 200
 
 
-_tokens = _TOKEN.finditer
+_tokens = _TOKEN.findall
 
 # token kinds
 _VAR, _NUM, _KW, _OP, _LETTER, _EOF = range(6)
@@ -113,36 +113,41 @@ def read_items(code: str) -> Items | None:
 
 def _tokenize(code: str, shortened: list[Abbreviation]) -> list[tuple[int, str, int, int]] | None:
     """The tokens of ``code``; a macro word stands for its whole word, and each one written
-    shortened is added to ``shortened``. Every alternative of ``_TOKEN`` is a group that ends
-    its match, so ``lastindex`` is the token's kind and its text ends the match; a match that
-    does not start where the last one ended skipped what no token reads, and what follows the
-    last token must be blanks."""
+    shortened is added to ``shortened``. ``_TOKEN`` reads the blanks before each token and the
+    token in a group of its kind, all at once: the columns are counted from the lengths read, so
+    they reach the end of the code (its trailing blanks aside) exactly when nothing was skipped."""
     toks: list[tuple[int, str, int, int]] = []
     append = toks.append
     e = 0
-    for m in _tokens(code):
-        if m.start() != e:
-            return None
-        group = cast(int, m.lastindex)
-        kind = group - 1
-        text = m[group]
-        e = m.end()
-        s = e - len(text)
-        if kind == _KW:
-            up = text.upper()
+    for blanks, var, num, kw, op, letter in _tokens(code):
+        s = e + len(blanks)
+        if op:
+            e = s + len(op)
+            append((_OP, op, s, e))
+        elif var:
+            e = s + len(var)
+            if e - s > MAX_NUMBER_CHARS:
+                return None  # the grammar says why
+            append((_VAR, var, s, e))
+        elif num:
+            e = s + len(num)
+            if e - s > MAX_NUMBER_CHARS:
+                return None
+            append((_NUM, num, s, e))
+        elif kw:
+            e = s + len(kw)
+            up = kw.upper()
             word = _MACRO_WORDS.get(up)
             if word is None:
                 return None
             if word != up:
-                shortened.append(Abbreviation(s, e, text, word))
-            text = word
-        elif kind == _LETTER:
-            text = text.upper()
-        elif (kind == _NUM or kind == _VAR) and e - s > MAX_NUMBER_CHARS:
-            return None  # the grammar says why
-        append((kind, text, s, e))
+                shortened.append(Abbreviation(s, e, kw, word))
+            append((_KW, word, s, e))
+        else:
+            e = s + 1
+            append((_LETTER, letter.upper(), s, e))
     n = len(code)
-    if (e != n and code[e:].strip(" \t")) or len(toks) > _MAX_TOKENS:
+    if (e != n and e != len(code.rstrip(" \t"))) or len(toks) > _MAX_TOKENS:
         return None
     append((_EOF, "", n, n))
     return toks
