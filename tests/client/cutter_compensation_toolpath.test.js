@@ -4,7 +4,7 @@
 // `cncmacro run --json` output; the expected numbers are worked out by hand.
 'use strict';
 
-const { test, before } = require('node:test');
+const { test, before, after } = require('node:test');
 const assert = require('node:assert/strict');
 const cp = require('node:child_process');
 const fs = require('node:fs');
@@ -30,6 +30,8 @@ before(() => {
   geometry = bundle('toolpathGeometry');
   view = bundle('toolpathView');
 });
+
+after(() => fs.rmSync(scratch, { recursive: true, force: true }));  // the bundle and the runs' programs
 
 function runJson(text) {
   const file = path.join(fs.mkdtempSync(path.join(scratch, 'run-')), 'MAIN.nc');

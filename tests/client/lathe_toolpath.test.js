@@ -6,7 +6,7 @@
 // bundles them, read real `cncmacro run --json` output; the expected numbers are worked out by hand.
 'use strict';
 
-const { test, before } = require('node:test');
+const { test, before, after } = require('node:test');
 const assert = require('node:assert/strict');
 const cp = require('node:child_process');
 const fs = require('node:fs');
@@ -32,6 +32,8 @@ before(() => {
   geometry = bundle('toolpathGeometry');
   view = bundle('toolpathView');
 });
+
+after(() => fs.rmSync(scratch, { recursive: true, force: true }));  // the bundle and the runs' programs
 
 function runJson(file, text) {
   let target = file;

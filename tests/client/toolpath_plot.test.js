@@ -4,7 +4,7 @@
 // says. Nothing here is a copy of the server's geometry: the expected legs are worked out by hand.
 'use strict';
 
-const { test, before } = require('node:test');
+const { test, before, after } = require('node:test');
 const assert = require('node:assert/strict');
 const cp = require('node:child_process');
 const fs = require('node:fs');
@@ -25,6 +25,8 @@ before(() => {
   });
   geometry = require(out);
 });
+
+after(() => fs.rmSync(scratch, { recursive: true, force: true }));  // the bundle and the runs' programs
 
 function runJson(name, text, machineFile) {
   const dir = fs.mkdtempSync(path.join(scratch, 'run-'));
