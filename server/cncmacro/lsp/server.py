@@ -37,6 +37,7 @@ from .diagnostics import DiagnosticsEngine
 from .disk_watch import watch_registration
 from .documents import Documents, path_to_uri, uri_to_path
 from .positions import negotiate
+from .protocol_warm_up import warm_up_protocol
 from .reports import log_skipped, publish_machine_file, report_skipped
 from .settings import SECTION, Settings
 from .stdio import serve_stdio
@@ -275,6 +276,7 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
     server.list_folders_ahead()
     server.diagnostics.start(server.documents.machines.first(), roots, server.locale)
     server.apply_settings(server.settings)
+    warm_up_protocol(server.protocol)  # the messages of the first open, read and written sooner
 
 
 async def _initialized(server: CncMacroServer, params: types.InitializedParams) -> None:
