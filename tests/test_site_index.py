@@ -1,11 +1,14 @@
 """The index of macro lines of a document stays equal to a fresh one across random edits, so
-hover, references and rename read the right lines after typing."""
+hover, references and rename read the right lines after typing; an open document's is made ahead
+of the first question."""
 
 from __future__ import annotations
 
+import asyncio
 import random
 
 from cncmacro.analysis.indexes.site_index import SiteIndex
+from cncmacro.lsp.site_steps import index_soon
 from cncmacro.syntax.document import ParsedDocument, split_lines
 
 LINES = ["G01 X1. Y2.", "#100=#100+1", "N10 G00 X0", "IF[#1 GT 2] GOTO10", "M99 P10", "(NOTE)", "G65 H81 P10 Q#1 R0"]
@@ -124,3 +127,21 @@ def test_a_huge_index_waits_for_its_steps_and_one_of_a_document_still_read_never
     assert index.ready and _answers(index) == _answers(SiteIndex(huge.blocks))
     reading = SiteIndex(short.blocks, partial=True)
     assert not reading.ready and not reading.build(1_000_000)
+
+
+def test_an_open_document_s_index_is_made_in_steps_before_any_question() -> None:
+    """Once a document's analysis is published, the language server makes its index a step at
+    a time between the editor's messages (lsp/site_steps.py), so that the first hover on a
+    variable finds it made instead of making it then: a document far under the huge size too."""
+    doc = ParsedDocument("\n".join(LINES * 500))  # 3,500 lines, #100=#100+1 on every seventh from line 1
+    index = SiteIndex(doc.blocks)
+    assert index.ready and not index.made  # answered at once, but not made until asked
+
+    async def published() -> None:
+        index_soon(index)
+        while not index.made:
+            await asyncio.sleep(0)  # the editor's messages would be answered here
+
+    asyncio.run(asyncio.wait_for(published(), 30))
+    assert index.writes(100) == list(range(1, 3500, 7))
+    assert _answers(index) == _answers(SiteIndex(doc.blocks))

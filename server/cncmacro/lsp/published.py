@@ -65,7 +65,7 @@ class Published:
                 self._timing[uri] = (version, outcome.timing.get(uri))
             self.analysed_once.add(uri)
             if doc is not None:
-                index_soon(doc.sites)  # a huge document's variable index, in steps, before a hover asks
+                index_soon(doc.sites)  # the document's variable index, in steps, before a hover asks
             self._touched.pop(uri, None)
             self._first_screens.pop(uri, None)
             diags = outcome.found[uri]

@@ -11,7 +11,9 @@ in proportion to the answer, not to the file, and an edit in proportion to the m
 most. Files on disk get one index each, made at the first question and kept by the workspace
 index (``workspace_index.py``) until it loads the file again. The index of a huge document
 (``STEPPED_FROM`` lines) is not made at a question on the editor's thread, which would hold the
-editor up for seconds: it is made in steps (``build``), and until then ``ready`` says so.
+editor up for seconds: it is made in steps (``build``), and until then ``ready`` says so. The
+language server makes any open document's index so once its analysis is published, so that the
+first hover finds it made (``lsp/site_steps.py``).
 """
 
 from __future__ import annotations
@@ -107,6 +109,11 @@ class SiteIndex:
         """Whether a question is answered at once: the index is made, or the document is short
         enough (under ``STEPPED_FROM`` lines) to make it now."""
         return not self.partial and (self._lines is not None or len(self._blocks) < STEPPED_FROM)
+
+    @property
+    def made(self) -> bool:
+        """Whether the index is made: a question asks nothing of the blocks but its answer."""
+        return self._lines is not None
 
     def build(self, count: int) -> bool:
         """One step of making the index: the next ``count`` lines (the maps too); True once it
