@@ -4,6 +4,7 @@ all read through one ``FileCache``, and ``cncmacro check``'s analysis reads each
 
 from __future__ import annotations
 
+import io
 import re
 import sys
 from collections import Counter
@@ -15,6 +16,7 @@ import pytest
 from cncmacro.analysis.indexes.site_index import SiteIndex
 from cncmacro.analysis.indexes.workspace_index import WorkspaceIndex
 from cncmacro.analysis.workspace import WorkspaceAnalysis
+from cncmacro.cli.check import check_paths
 from cncmacro.dialects import get_dialect
 from cncmacro.library import files
 from cncmacro.library.programs import FoundProgram, LoadedFile, ProgramLibrary
@@ -189,3 +191,13 @@ def test_the_folders_listed_ahead_at_start_serve_the_first_look_up(
     found = index.find_program(caller, 9200, None)
     assert found is not None and Path(found.file.path).name == "O9200.nc"
     assert listed == []
+
+
+def test_a_check_of_a_folder_reads_no_file_again_for_its_callers(workspace: Path, reads: Counter[str]) -> None:
+    """``cncmacro check`` reads each file to say at once what cannot be read, then for the calls
+    it makes, then to check it. A file's callers among the files checked are checked beside it
+    (``cli/call_groups.py``), so the index of callers on disk reads none of them again. O9200,
+    which makes no call but whose number a call names, is read once more for its exact O number."""
+    out, err = io.StringIO(), io.StringIO()
+    assert check_paths([str(workspace)], out, err) == 0, out.getvalue() + err.getvalue()
+    assert reads == Counter({"O0001.nc": 3, "O0002.nc": 3, "O9100.nc": 3, "O9200.nc": 4})

@@ -277,7 +277,7 @@ def _machine_work(machine_file: Path | None, files: list[Path], dialect: str | N
     folders = [*checked, *search_paths]
     # the checked files are one machine's programs: a call finds a program in any of their folders
     callees = callee_folders(search_paths, files)
-    work = MachineWork(settings, dialect, folders, callees, locale, max_blocks)
+    work = MachineWork(settings, dialect, folders, callees, locale, max_blocks, frozenset(str(f) for f in files))
     work.workspace()  # a setting it refuses is said before any finding
     return work
 

@@ -59,6 +59,9 @@ class MachineWork:
     callees: list[str]
     locale: str
     max_blocks: int | None
+    # the files checked with these settings: the index of callers on disk does not read them, for
+    # a file that calls one of them is in its group, open beside it (``call_groups.join_groups``)
+    checked: frozenset[str] = frozenset()
     _fresh: Callable[[], WorkspaceAnalysis] | None = field(default=None, repr=False, compare=False)
 
     def __getstate__(self) -> dict[str, object]:
@@ -75,7 +78,7 @@ class MachineWork:
         disk and its index of their callers."""
         if self._fresh is None:
             disk = FileCache()
-            index = CallIndex(self.folders, self.settings, self.dialect, self.locale, files=disk)
+            index = CallIndex(self.folders, self.settings, self.dialect, self.locale, files=disk, known=self.checked)
             self._fresh = partial(WorkspaceAnalysis, settings=self.settings, dialect=self.dialect,
                                   search_paths=self.callees, locale=self.locale, max_blocks=self.max_blocks,
                                   severities=self.settings.severity, workspace_folders=self.folders, files=disk,

@@ -70,8 +70,11 @@ class CallIndex:
 
     def __init__(self, folders: list[str], settings: MachineSettings, dialect: str | None, locale: str = "en",
                  max_files: int = MAX_FILES, max_bytes: int = MAX_FILE_BYTES,
-                 files: FileCache | None = None) -> None:  # fmt: skip
+                 files: FileCache | None = None, known: frozenset[str] = frozenset()) -> None:  # fmt: skip
+        """``known``: files under ``folders`` that are not read, their callers known otherwise: a
+        check's own files, each checked beside every file that calls it (cli/call_groups.py)."""
         self.folders = [Path(f) for f in dict.fromkeys(str(f) for f in folders)]
+        self.known = known
         self.settings = settings
         self.dialect = dialect
         self.locale = locale
@@ -148,7 +151,10 @@ class CallIndex:
         self.usable = True
         old = self._entries
         self._entries = {}
+        known = self.known
         for path in paths:
+            if path in known:
+                continue
             try:
                 st = os.stat(path)
             except OSError:
