@@ -100,12 +100,12 @@ test-lint:
 	$(TIMED) eslint npm run --silent lint:client
 	$(TIMED) grammar npm run --silent test:grammar
 	$(TIMED) "pytest tests/hardening" $(PY) -m pytest -p no:cacheprovider tests/hardening
+	$(TIMED) "other pythons" $(PY) tests/other_pythons.py --quick
 
 test-python:
 	$(TIMED) pytest $(PY) -m pytest --ignore=tests/lsp --ignore=tests/hardening
 
 test-pythons-dap:
-	$(TIMED) "other pythons" $(PY) tests/other_pythons.py --quick
 	$(TIMED) "dap and plot" node --test tests/dap/ tests/client/
 	$(TIMED) "pytest tests/lsp" $(PY) -m pytest -p no:cacheprovider tests/lsp
 
