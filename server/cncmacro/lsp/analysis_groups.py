@@ -56,13 +56,17 @@ class AnalysisGroups:
 
     def start(self, machine_file: Path | None, folders: list[str], locale: str) -> None:
         """A fresh analysis for the session (at ``initialize``, before any document opens), for
-        ``machine_file`` (the first workspace folder's), and a short program analysed under its
-        settings meanwhile (``warm_up``)."""
+        ``machine_file`` (the first workspace folder's)."""
         self._folders, self.locale = list(folders), locale
         self.analyses = {}
         self.of(machine_file)
-        options = self.options(machine_file)
-        warm_up(options["settings"], options["dialect"], locale)  # before any document opens
+
+    def warm_up(self) -> None:
+        """Analyse a short program under the settings of the session's first analysis
+        (``analysis/warm_up.py``): at ``initialize``, once the editor's settings apply."""
+        for analysis in self.analyses.values():
+            warm_up(analysis.settings, analysis.dialect_setting, self.locale)
+            return
 
     def configure(self, editor: Settings) -> None:
         """The editor's settings, or a machine file, changed: each analysis gets its machine

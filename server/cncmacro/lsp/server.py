@@ -276,6 +276,8 @@ def _initialize(server: CncMacroServer, params: types.InitializeParams) -> None:
     server.list_folders_ahead()
     server.diagnostics.start(server.documents.machines.first(), roots, server.locale)
     server.apply_settings(server.settings)
+    # before any document opens: what the first open would otherwise make (analysis/warm_up.py)
+    server.diagnostics.warm_up()
     warm_up_protocol(server.protocol)  # the messages of the first open, read and written sooner
 
 

@@ -153,7 +153,7 @@ def parse_block(line: str) -> Block:
     if labelled is not None:
         return labelled
     special = has_special(line)  # a comment, ';', '/' or '%'
-    statement = "#" in line or "[" in line  # never address-number words alone: a statement's
+    statement = "#" in line or "[" in line  # never a line of address-number words alone
     if not special and not statement:
         words = plain_words(line)
         if words is not None:

@@ -124,16 +124,12 @@ def _tokenize(code: str, shortened: list[Abbreviation]) -> list[tuple[int, str, 
         if op:
             e = s + len(op)
             append((_OP, op, s, e))
-        elif var:
-            e = s + len(var)
-            if e - s > MAX_NUMBER_CHARS:
+        elif var or num:
+            text = var or num
+            if len(text) > MAX_NUMBER_CHARS:
                 return None  # the grammar says why
-            append((_VAR, var, s, e))
-        elif num:
-            e = s + len(num)
-            if e - s > MAX_NUMBER_CHARS:
-                return None
-            append((_NUM, num, s, e))
+            e = s + len(text)
+            append((_VAR if var else _NUM, text, s, e))
         elif kw:
             e = s + len(kw)
             up = kw.upper()
