@@ -47,29 +47,45 @@ def _literal_g(w: Word) -> float | None:
     return w.value.value if w.letter == "G" and isinstance(w.value, Number) else None
 
 
+# a compiled NC block waiting for its next line: the same words compile alike on any line
+Compiled = Callable[[int], "Runner"]
+
+
 def compile_nc_block(cf: CompiledFile, block: Block, pc: int, nxt: int) -> Runner:
+    return nc_block_of(cf, block)(nxt)
+
+
+def nc_block_of(cf: CompiledFile, block: Block) -> Compiled:
+    """``block`` compiled, given the line it goes on to (``Compiled``): everything decided from
+    its words is decided here, once, so that a line of the same literal words elsewhere in the
+    file can take it (``CompiledFile.shared_block``)."""
     words = list(block.words)
     read = _WordValues(cf)  # each word's value, read once for all below
-    fast = _plain_motion(cf, words, read, nxt)
-    if fast is not None:
-        return fast
+    plan = _plain_plan(cf, words, read)
+    if plan is not None:
+        return partial(_plan_runner, cf, plan)
     dialect = cf.machine.dialect
     calls = cf.machine.settings.calls
     value = _known_value(read)
     call = recognise_call(words, dialect, calls, value)
     problems = validate_block(block, dialect, calls, value, call)
     if call is not None and call.kind in ("G65", "G66"):
-        return _macro_call(cf, block, words, call, problems, nxt)
+        return _macro_call(cf, block, words, call, problems)
     if any(_literal_g(w) == 67.0 for w in words):
         rest = [w for w in words if _literal_g(w) != 67.0]
-        inner = _nc(cf, block, rest, read, nxt, problems, call) if rest else None
+        compiled = _nc(cf, block, rest, read, problems, call) if rest else None
 
-        def cancel(m: Machine, pc: int) -> int:
-            m.cancel_modal_call()
-            return inner(m, pc) if inner is not None else nxt
+        def cancelling(nxt: int) -> Runner:
+            inner = compiled(nxt) if compiled is not None else None
 
-        return cancel
-    return _nc(cf, block, words, read, nxt, problems, call)
+            def cancel(m: Machine, pc: int) -> int:
+                m.cancel_modal_call()
+                return inner(m, pc) if inner is not None else nxt
+
+            return cancel
+
+        return cancelling
+    return _nc(cf, block, words, read, problems, call)
 
 
 class _WordValues:
@@ -105,9 +121,9 @@ def compile_plain_line(cf: CompiledFile, text: str, nxt: int) -> Runner | None:
     return None if plan is None else _plan_runner(cf, plan, nxt)
 
 
-def _plain_motion(cf: CompiledFile, words: list[Word], read: _WordValues, nxt: int) -> Runner | None:
-    """The closure for the commonest block of all, literal modal G codes, F, S and axis
-    words (``G01 X10.5 Y-3 F200``), or None for anything else; ``read`` holds the words' values."""
+def _plain_plan(cf: CompiledFile, words: list[Word], read: _WordValues) -> PlainPlan | None:
+    """The plan of the commonest block of all, literal modal G codes, F, S and axis words
+    (``G01 X10.5 Y-3 F200``), or None for anything else; ``read`` holds the words' values."""
     calls = cf.machine.settings.calls
     plain: list[tuple[str, float]] = []
     for w in words:
@@ -121,8 +137,7 @@ def _plain_motion(cf: CompiledFile, words: list[Word], read: _WordValues, nxt: i
         if v is None:
             continue
         plain.append((letter, v))
-    plan = cf.machine.planner.plain.plan(plain)
-    return None if plan is None else _plan_runner(cf, plan, nxt)
+    return cf.machine.planner.plain.plan(plain)
 
 
 def _plan_runner(cf: CompiledFile, plan: PlainPlan, nxt: int) -> Runner:
@@ -141,20 +156,20 @@ def _run_plain_line(plan: PlainRun, m: Machine, pc: int) -> int:
 
 
 def _macro_call(
-    cf: CompiledFile, block: Block, words: list[Word], call: BlockCall, problems: list[BlockProblem], nxt: int
-) -> Runner:
+    cf: CompiledFile, block: Block, words: list[Word], call: BlockCall, problems: list[BlockProblem]
+) -> Compiled:
     name = call.kind
     dialect = cf.machine.dialect
     first = first_alarm(problems)
     if first is not None and first.rule != CALL_WITHOUT_P:  # raised when the call is made (below)
-        return raiser(first.alarm, first.message)
+        return _always(raiser(first.alarm, first.message))
     before: list[tuple[str, float]] = []
     if call.at > 0:  # modal G codes the control sets before it calls (block_rules.py: else alarm 127)
         codes = codes_before_call([(w.letter, _literal_g(w)) for w in words[: call.at]], dialect) or []
         before = [("G", c) for c in codes]
     after = words[call.at + 1 :]
     if call.arithmetic:
-        return compile_h_code(cf, after, nxt, block)
+        return partial(_h_code, cf, after, block)
     p_word = call.target
     l_word = call.count
     args = list(call.arguments)
@@ -179,18 +194,33 @@ def _macro_call(
 
     if name == "G65":
 
-        def g65(m: Machine, pc: int) -> int:
+        def g65_to(nxt: int) -> Runner:
+            def g65(m: Machine, pc: int) -> int:
+                found, arguments, repeats = evaluate(m, pc)
+                return m.macro_call(found, arguments, repeats, pc, nxt, "G65")
+
+            return g65
+
+        return g65_to
+
+    def g66_to(nxt: int) -> Runner:
+        def g66(m: Machine, pc: int) -> int:
             found, arguments, repeats = evaluate(m, pc)
-            return m.macro_call(found, arguments, repeats, pc, nxt, "G65")
+            m.set_modal_call(found, arguments, repeats)
+            return nxt
 
-        return g65
+        return g66
 
-    def g66(m: Machine, pc: int) -> int:
-        found, arguments, repeats = evaluate(m, pc)
-        m.set_modal_call(found, arguments, repeats)
-        return nxt
+    return g66_to
 
-    return g66
+
+def _h_code(cf: CompiledFile, words: list[Word], block: Block, nxt: int) -> Runner:
+    return compile_h_code(cf, words, nxt, block)
+
+
+def _always(run: Runner) -> Compiled:
+    """A runner that does not depend on the line it goes on to (an alarm)."""
+    return lambda nxt: run
 
 
 def _getter(cf: CompiledFile, w: Word | None) -> Any:
@@ -226,10 +256,9 @@ def _nc(
     block: Block,
     words: list[Word],
     read: _WordValues,
-    nxt: int,
     problems: list[BlockProblem],
     call: BlockCall | None,
-) -> Runner:
+) -> Compiled:
     """An NC block: words evaluated, NC executed, then M98 / M99 / M30 / M00 and call codes
     (``read``: the words' values)."""
     items: list[tuple[str, float | None, Any]] = []  # (letter, rounded literal, or a getter)
@@ -240,7 +269,7 @@ def _nc(
         items.append((w.letter, v, None) if is_const else (w.letter, None, v))
     refused = first_alarm(problems)  # a G code the control lacks, an M code with a point
     if refused is not None:
-        return raiser(refused.alarm, refused.message)
+        return _always(raiser(refused.alarm, refused.message))
     # a configured code's other words are its arguments, not NC words
     strict = dialect.word_format_alarms and not (call is not None and call.configured)
     all_constant = all(get is None for _, _, get in items)
@@ -258,12 +287,7 @@ def _nc(
 
     if all_constant and not control and not dynamic_m and not call_codes:
         plain = [(letter, v) for letter, v in constant if v is not None]
-
-        def motion(m: Machine, pc: int) -> int:
-            moved, skip_to = m.planner.execute_nc(plain, file_path, pc)
-            return _after_nc(m, moved, skip_to, pc, nxt)
-
-        return motion
+        return partial(_motion_runner, plain, file_path)
 
     p_text = None
     for w in words:
@@ -282,7 +306,10 @@ def _nc(
     get_bracket = cf.values.value(p_bracket_var) if p_bracket_var is not None and dialect.bracket_names else None
     check_g = strict and any(letter == "G" and get is not None for letter, _, get in items)
 
-    def general(m: Machine, pc: int) -> int:
+    def general_to(nxt: int) -> Runner:
+        return partial(general, nxt)
+
+    def general(nxt: int, m: Machine, pc: int) -> int:
         values: list[tuple[str, float]] = []
         for letter, const, get in items:
             v = get(m) if get is not None else const
@@ -322,7 +349,17 @@ def _nc(
             return m.pause(detail("M00 program stop", "M00 程序停止"), nxt)
         return _after_nc(m, moved, skip_to, pc, nxt)
 
-    return general
+    return general_to
+
+
+def _motion_runner(plain: list[tuple[str, float]], file_path: str, nxt: int) -> Runner:
+    """The runner of an NC block of literal words only, none of which calls or ends."""
+
+    def motion(m: Machine, pc: int) -> int:
+        moved, skip_to = m.planner.execute_nc(plain, file_path, pc)
+        return _after_nc(m, moved, skip_to, pc, nxt)
+
+    return motion
 
 
 def _after_nc(m: Machine, moved: bool, shape: ShapeCall | None, pc: int, nxt: int) -> int:

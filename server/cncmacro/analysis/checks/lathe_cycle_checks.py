@@ -41,7 +41,8 @@ _LOSES_POSITION = frozenset({27.0, 28.0, 29.0, 30.0, 53.0, 54.0, 55.0, 56.0, 57.
 @dataclass(slots=True)
 class _Read:
     """A block's words as the text gives them: the literal values by letter (the last of a
-    letter), the letters with values not known, the G codes."""
+    letter), the letters with values not known, the G codes. Never changed once read: the
+    lines of the same plain text share one (``_Unit.read``)."""
 
     values: dict[str, float] = field(default_factory=dict)
     unknown: set[str] = field(default_factory=set)
@@ -118,10 +119,11 @@ def lathe_cycle_diagnostics(program: Program, file: str, ctx: LineContext) -> li
     if rules is None:
         return []
     out: list[Diagnostic] = []
+    plain_reads: dict[str, _Read] = {}
     for unit in program.units:
         if unit.duplicate:
             continue
-        _Unit(program, unit, file, ctx, rules, out).run()
+        _Unit(program, unit, file, ctx, rules, out, plain_reads).run()
     return out
 
 
@@ -129,15 +131,24 @@ class _Unit:
     """The lathe cycles of one O program."""
 
     def __init__(self, program: Program, unit: ProgramUnit, file: str, ctx: LineContext, rules: LatheCycleRules,
-                 out: list[Diagnostic]) -> None:  # fmt: skip
+                 out: list[Diagnostic], plain_reads: dict[str, _Read]) -> None:  # fmt: skip
         self.program, self.unit, self.file, self.ctx, self.rules, self.out = program, unit, file, ctx, rules, out
         self.state = _State()
         self.reads: dict[int, _Read] = {}
+        self.plain_reads = plain_reads  # a plain line's reading by its text: a lathe program repeats its lines
 
     def read(self, line: int) -> _Read:
         r = self.reads.get(line)
         if r is None:
-            r = self.reads[line] = _read(self.program.blocks[line], self.ctx)
+            block = self.program.blocks[line]
+            plain = block.plain
+            if plain is None:
+                r = _read(block, self.ctx)
+            else:
+                r = self.plain_reads.get(plain)
+                if r is None:
+                    r = self.plain_reads[plain] = _read(block, self.ctx)
+            self.reads[line] = r
         return r
 
     def run(self) -> None:
