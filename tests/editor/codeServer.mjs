@@ -259,7 +259,11 @@ export class CodeServer {
     if (fs.existsSync(path.join(done, 'extensions.json'))) return done;
     fs.mkdirSync(INSTALLED, { recursive: true });
     for (const old of fs.readdirSync(INSTALLED)) {
-      if (old !== key && !old.startsWith('making-')) fs.rmSync(path.join(INSTALLED, old), { recursive: true, force: true });
+      const at = path.join(INSTALLED, old);
+      // another .vsix's, or one a test file that was stopped left half made
+      const made = fs.statSync(at, { throwIfNoEntry: false }); // gone already: another test file's, done
+      const left = old.startsWith('making-') ? made !== undefined && Date.now() - made.mtimeMs > 600000 : old !== key;
+      if (left) fs.rmSync(at, { recursive: true, force: true });
     }
     const making = fs.mkdtempSync(path.join(INSTALLED, 'making-'));
     try {
