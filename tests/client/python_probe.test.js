@@ -5,7 +5,7 @@
 // the CI workflow's Windows and macOS runners.
 'use strict';
 
-const { test, before } = require('node:test');
+const { test, before, after } = require('node:test');
 const assert = require('node:assert/strict');
 const fs = require('node:fs');
 const os = require('node:os');
@@ -15,14 +15,20 @@ const ROOT = path.resolve(__dirname, '..', '..');
 const PYTHON = process.env.CNCMACRO_TEST_PYTHON
   || path.join(ROOT, '.venv', process.platform === 'win32' ? 'Scripts' : 'bin', process.platform === 'win32' ? 'python.exe' : 'python');
 let probe;
+let built; // the folder the bundle is built in, removed after the tests
 
 before(() => {
-  const out = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'cncmacro-probe-')), 'pythonProbe.js');
+  built = fs.mkdtempSync(path.join(os.tmpdir(), 'cncmacro-probe-'));
+  const out = path.join(built, 'pythonProbe.js');
   require(path.join(ROOT, 'node_modules', 'esbuild')).buildSync({
     entryPoints: [path.join(ROOT, 'client', 'src', 'pythonProbe.ts')],
     bundle: true, platform: 'node', format: 'cjs', outfile: out, logLevel: 'error',
   });
   probe = require(out);
+});
+
+after(() => {
+  if (built) fs.rmSync(built, { recursive: true, force: true });
 });
 
 test('a Python answers with its version and its executable', async () => {
