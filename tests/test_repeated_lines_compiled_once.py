@@ -1,5 +1,5 @@
 """A line of literal words that a program repeats word for word (a lathe program's cycle and
-shape blocks, part after part) is compiled once for the file (``CompiledFile.shared_block``).
+shape blocks, part after part) is compiled once for the file (``CompiledFile.plain_words``).
 Each place it is written still goes on to its own next line, keeps its own sequence number and
 starts from where the tool is there."""
 

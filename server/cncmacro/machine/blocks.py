@@ -79,7 +79,7 @@ class CompiledFile:
         self.if_blocks, self.branch_ends, self.crossing = _if_blocks(file.program)
         self._jumps: dict[tuple[int, int], tuple[int, int]] = {}
         self._spans: jumps.LoopSpans | None = None  # made at the first jump that is not cached
-        self._shared: dict[tuple[str, float | None], nc_blocks.Compiled] = {}  # ``shared_block``
+        self._shared: dict[tuple[str, float | None], nc_blocks.Compiled] = {}  # ``plain_words``
         self.values = ExpressionCompiler(machine.kinds, watch=machine.watching, unknowns=machine.kept_unknown)
         self.addresses = ExpressionCompiler(machine.kinds, in_address=True, watch=machine.watching,
                                             unknowns=machine.kept_unknown)  # fmt: skip
@@ -282,10 +282,7 @@ class CompiledFile:
         block = self.file.program.blocks[pc]
         nxt = self.next_line(pc)
         if block.plain is not None:  # most lines of a CAM program: no label, header or error
-            fast = nc_blocks.compile_plain_line(self, block.plain, nxt)
-            if fast is not None:
-                return fast
-            return self.shared_block(block.plain, block)(nxt)  # what _body does with a plain line
+            return self.plain_words(block.plain, block, nxt)  # what _body does with a plain line
         if self.skipped(block):
             return lambda m, pc: nxt
         if block.has_error:
@@ -337,8 +334,7 @@ class CompiledFile:
             else:
                 run = self.statement(first, pc, nxt)
         elif block.plain_tail is not None:  # N10 G01 X5.: its words read from the text, as a plain line's
-            tail = block.plain_tail
-            run = nc_blocks.compile_plain_line(self, tail, nxt) or self.shared_block(tail, block)(nxt)
+            run = self.plain_words(block.plain_tail, block, nxt)
         elif block.words:
             run = self.nc_block(block, pc, nxt)
         else:
@@ -645,17 +641,21 @@ class CompiledFile:
     def nc_block(self, block: Block, pc: int, nxt: int) -> Runner:
         return nc_blocks.compile_nc_block(self, block, pc, nxt)
 
-    def shared_block(self, text: str, block: Block) -> nc_blocks.Compiled:
-        """The NC block of literal words ``text`` (``block``'s ``plain`` or ``plain_tail``)
-        compiled once for every line of this file that holds the same words: a lathe program
-        repeats its cycle and shape blocks part after part. A literal value's rounding depends
-        on the unit in force when the line is first compiled (``round_for``), so the unit is
-        part of the key."""
+    def plain_words(self, text: str, block: Block, nxt: int) -> Runner:
+        """The runner of ``block``, whose words are the literal ``text`` (its ``plain`` or
+        ``plain_tail``): plain motion read from the text, else the NC block compiled once for
+        every line of this file that holds the same words (a lathe program repeats its cycle
+        and shape blocks part after part). A text found in ``_shared`` is not read again.
+        ``round_for`` reads the unit in force when a line is compiled, so the unit is part of
+        the key."""
         key = (text, self.machine.planner.modal.get("units"))
         found = self._shared.get(key)
         if found is None:
+            fast = nc_blocks.compile_plain_line(self, text, nxt)
+            if fast is not None:
+                return fast
             found = self._shared[key] = nc_blocks.nc_block_of(self, block)
-        return found
+        return found(nxt)
 
 
 # ``_find_jump``'s count of loops kept for a jump into a branch of a block IF from outside it

@@ -58,7 +58,7 @@ def compile_nc_block(cf: CompiledFile, block: Block, pc: int, nxt: int) -> Runne
 def nc_block_of(cf: CompiledFile, block: Block) -> Compiled:
     """``block`` compiled, given the line it goes on to (``Compiled``): everything decided from
     its words is decided here, once, so that a line of the same literal words elsewhere in the
-    file can take it (``CompiledFile.shared_block``)."""
+    file can take it (``CompiledFile.plain_words``)."""
     words = list(block.words)
     read = _WordValues(cf)  # each word's value, read once for all below
     plan = _plain_plan(cf, words, read)
