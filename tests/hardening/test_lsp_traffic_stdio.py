@@ -3,8 +3,9 @@ over stdio. Its memory stays flat: after a warm-up, as many edits and open/close
 leave its resident memory where the warm-up left it (each message used to leave something
 behind for good: the future of every notification, the whole analysis of every closed document,
 frozen and so never collected, the block of every line text ever typed). And 2,000 documents
-opened at once all have their diagnostics within 10 seconds (each open used to analyse every
-open document again)."""
+opened at once all have their diagnostics within 30 seconds (each open used to analyse every
+open document again: minutes). The 10-second budget of ``benchmarks/lsp_memory.py`` is measured
+there, on a quiet machine; this test runs beside the rest of ``make test``."""
 
 from __future__ import annotations
 
@@ -25,7 +26,9 @@ EDITS = 2_000
 CYCLES = 500
 ALLOWED_GROWTH_MB = 8.0  # against about 30 MB (edits) and 50 MB (cycles) when each message leaked
 MANY = 2_000
-MANY_SECONDS = 10.0
+# 2.6-4.5 s alone on a quiet machine, 6-7 s beside three busy loops; over 10 s twice under make
+# test's four lanes in a slow phase of the machine: a bound on the regression, not a budget
+MANY_SECONDS = 30.0
 CLOSE_ALL_SECONDS = 10.0  # 0.6 s on a quiet machine, 5.7 s seen under make test's four lanes; 30 s before the fix
 
 
@@ -100,7 +103,7 @@ async def test_edits_and_open_close_cycles_leave_the_servers_memory_flat(client:
     assert grown <= ALLOWED_GROWTH_MB, f"{2 * EDITS} edits and {2 * CYCLES} open/close cycles: {grown:.1f} MB more"
 
 
-async def test_2000_documents_opened_at_once_have_diagnostics_in_10_s_and_closed_at_once_keep_the_server_answering(
+async def test_2000_documents_opened_at_once_have_diagnostics_in_30_s_and_closed_at_once_keep_the_server_answering(
     client: LanguageClient,
 ) -> None:
     root: Path = client.root  # type: ignore[attr-defined]
