@@ -10,7 +10,7 @@ from cncmacro.syntax.keywords import ABBREVIABLE
 
 SPACE = st.sampled_from(["", "", " ", "  ", "\t"])
 FUNCS = ["SIN", "COS", "TAN", "ASIN", "ACOS", "SQRT", "ABS", "LN", "EXP", "ROUND", "FIX", "FUP", "BIN", "BCD"]
-RELOPS = ["EQ", "NE", "GT", "GE", "LT", "LE", "==", "!=", "<", ">", "<=", ">="]
+RELOPS = ["EQ", "NE", "GT", "GE", "LT", "LE", "==", "!=", "<>", "<", ">", "<=", ">="]
 BINOPS = ["+", "-", "*", "/", "AND", "OR", "XOR", "MOD", "&&", "||"]
 
 

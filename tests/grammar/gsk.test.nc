@@ -14,6 +14,8 @@ IF[#100==100]THEN #100=0;
 ;;                    ^ keyword.operator.assignment.cnc-macro - keyword.operator.comparison.cnc-macro
 IF[#1!=#2]GOTO1
 ;;   ^^ keyword.operator.comparison.cnc-macro
+IF[3<>2]GOTO2
+;;  ^^ keyword.operator.comparison.cnc-macro
 IF[#1<=#2]GOTO1
 ;;   ^^ keyword.operator.comparison.cnc-macro
 IF[#1>=#2]GOTO1

@@ -23,7 +23,7 @@ from .nodes import (
     Unary,
 )
 
-RELATION_NAMES = {"==": "EQ", "!=": "NE", ">": "GT", ">=": "GE", "<": "LT", "<=": "LE"}
+RELATION_NAMES = {"==": "EQ", "!=": "NE", "<>": "NE", ">": "GT", ">=": "GE", "<": "LT", "<=": "LE"}
 
 
 class BlockError(Exception):

@@ -77,11 +77,11 @@ _MACRO_WORDS = {
 }  # fmt: skip
 # a token after the blanks before it: a variable, a number, a macro word, an operator or a letter
 _TOKEN = re.compile(
-    r"([ \t]*)(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|([A-Za-z]{2,})|(==|!=|<=|>=|&&|\|\||[-+*/\[\]=<>#])|([A-Za-z]))"
+    r"([ \t]*)(?:(#[ \t]*\d+)|(\d+\.?\d*|\.\d+)|([A-Za-z]{2,})|(==|!=|<>|<=|>=|&&|\|\||[-+*/\[\]=<>#])|([A-Za-z]))"
 )
 _BRACKET_NAME = re.compile(r"\[(?=[^\[\]#()\s]*[^\[\]#()\s\d.+\-*/])(?:[^\[\]#()\s.]|\.(?=[./\\]))[^\[\]#()\s]*\]")
 _FUNCS = frozenset("SIN COS TAN ASIN ACOS SQRT ABS LN EXP ROUND FIX FUP BIN BCD".split())
-_RELOPS = frozenset("EQ NE GT GE LT LE == != <= >= < >".split())
+_RELOPS = frozenset("EQ NE GT GE LT LE == != <> <= >= < >".split())
 _MULOPS = frozenset(("*", "/", "AND", "MOD", "&&"))
 _ADDOPS = frozenset(("+", "-", "OR", "XOR", "||"))
 _MAX_TOKENS = 200
