@@ -87,6 +87,16 @@ class Dialect:
     # §8 the code that sets a local coordinate system (G52 IP: its origin in work coordinates, IP0
     # cancels; FANUC's and Haas's), None where the control has none
     local_coordinate_code: float | None = 52.0
+    # §8 one-shot codes whose axis word is a value, not a move: cylindrical interpolation's
+    # ``G07.1 C_`` (G107 in FANUC's system B) names the cylinder's radius, ``G07.1 C0`` ends it
+    axis_value_codes: frozenset[float] = frozenset((7.1, 107.0))
+    # §8 three-point arcs (GSK980TDi G05, G05.1): motion code -> whether its I, K point on the arc
+    # is absolute (else relative to the start, as G02/G03's I, K) (planner/three_point_arcs.py)
+    three_point_arcs: dict[float, bool] = field(default_factory=dict)
+    # §8 motion codes whose blocks carry values under letters that may name an axis elsewhere
+    # (GSK980TDi's ellipse G6.2/G6.3: A, B half axes and Q; parabola G7.2/G7.3: P, Q): motion code
+    # -> those letters, which are never an axis word in that mode
+    motion_value_letters: dict[float, frozenset[str]] = field(default_factory=dict)
     # which G codes are canned cycles that leave the tool where it started
     cycle_codes: frozenset[float] = frozenset()
     # §5 fanuc wants I, J, K in that order within each set (a warning otherwise)

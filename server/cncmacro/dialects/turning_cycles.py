@@ -21,18 +21,34 @@ from dataclasses import dataclass, field
 @dataclass(frozen=True)
 class SingleCycle:
     """A single fixed cycle: the axis it goes in along first, whether it comes out along it at
-    rapid (a thread's pull-out) rather than at the feed, and whether it cuts a thread (its F is
-    the lead, per revolution)."""
+    rapid (a thread's pull-out) rather than at the feed, whether it cuts a thread (its F is
+    the lead, per revolution), whether it is a tapping cycle (``tap``: in to the end point and
+    back out to the start, both at the lead per revolution, the spindle reversed between them),
+    and the letter of its number of starts (``starts``: a thread of L starts is cut L times;
+    modal, as the cycle's other words)."""
 
     first: str
     rapid_out: bool = False
     thread: bool = False
+    tap: bool = False
+    starts: str | None = None
 
 
 LATHE_SINGLE_CYCLES: dict[float, SingleCycle] = {
     90.0: SingleCycle("X"),
     92.0: SingleCycle("X", rapid_out=True, thread=True),
     94.0: SingleCycle("Z"),
+}
+# GSK980TDi (its manual, §3.22 and §3.24): G92 and the rigid G92.1 and variable-pitch G92.3 thread
+# cycles cut L starts (§3.24.9 "L：多头螺纹的头数 … 模态参数", §3.24.10, §3.24.14 as G92), and G33
+# taps: "刀具的运动轨迹是从起点到终点，再从终点回到起点", each of its L starts in turn (§3.24.5)
+GSK_SINGLE_CYCLES: dict[float, SingleCycle] = {
+    90.0: SingleCycle("X"),
+    92.0: SingleCycle("X", rapid_out=True, thread=True, starts="L"),
+    92.1: SingleCycle("X", rapid_out=True, thread=True, starts="L"),
+    92.3: SingleCycle("X", rapid_out=True, thread=True),
+    94.0: SingleCycle("Z"),
+    33.0: SingleCycle("Z", thread=True, tap=True, starts="L"),
 }
 
 
@@ -58,7 +74,10 @@ class LatheCycles:
     - ``taper_letters``: the letter of a single cycle's taper where it is not R (Haas: I in
       G90 and G92, a radius, K in G94);
     - ``groove_letters``: the letters of G74/G75's step along X and step along Z where they are
-      not P and Q (Haas: I and K, in the program's unit with a decimal point; X amounts radii).
+      not P and Q (Haas: I and K, in the program's unit with a decimal point; X amounts radii);
+    - ``threads_per_inch``: the letter that gives a thread's pitch as threads per inch instead of
+      F's lead (GSK980TDi: I in G32, G33, G92, G76, "每英寸螺纹的牙数"): the lead is 25.4 / I mm
+      (1 / I inch under G20).
     """
 
     thread_codes: frozenset[float] = frozenset()
@@ -68,7 +87,11 @@ class LatheCycles:
     one_block: bool = False
     taper_letters: dict[float, str] = field(default_factory=dict)
     groove_letters: tuple[str, str] | None = None
+    threads_per_inch: str | None = None
 
 
 FANUC_LATHE_CYCLES = LatheCycles(frozenset({32.0, 34.0}), {34.0: "K"})
-GSK_LATHE_CYCLES = LatheCycles(frozenset({32.0, 34.0}), {34.0: "R"}, groove_x_on_diameter=True)
+# GSK980TDi: G32.1 (rigid), G32.2/G32.3 (arc threads, §3.24.3) cut at the lead too
+GSK_LATHE_CYCLES = LatheCycles(
+    frozenset({32.0, 32.1, 32.2, 32.3, 34.0}), {34.0: "R"}, groove_x_on_diameter=True, threads_per_inch="I"
+)

@@ -67,7 +67,7 @@ def run_straight(
     g_words = p.plain.g_words()
     lathe = p.lathe
     cycles = p.cycle_codes
-    lead_modes = p.times.variable_lead  # a variable-lead thread reads its own word: the compiled path
+    own_modes = p.own_path_modes  # a variable-lead thread, a three-point arc…: the compiled path
     feed_hint = p.feed_hint
     modal = p.modal
     codes = p.codes
@@ -185,7 +185,7 @@ def run_straight(
             if arc is not None and not moved and (mode if new_mode is None else new_mode) in ARC_MODES:
                 break  # I, J, K alone are a full circle, R alone no move: the compiled path decides
             line_mode = mode if new_mode is None else new_mode
-            if moved and line_mode in lead_modes:
+            if moved and line_mode in own_modes:
                 break
             line_f = f if feed is None else feed
             if (feed_hint and moved and line_mode != 0.0 and (others is not None or not per_rev)

@@ -33,10 +33,11 @@ from .machine_limits import leaves_travel, program_bounds, spindle_speed
 from .modal_groups import extra_offset_codes, g_code_groups
 from .moves import TURNING, Leg, Move, ToolChange
 from .one_shot import one_shot
-from .plain_words import PlainRun, shared_plain_words
+from .plain_words import STROKE_GROUP, PlainRun, shared_plain_words
 from .positions import position_value
 from .probing import Probe, SkipState
 from .state import MODAL_DEFAULTS, PlannerState
+from .three_point_arcs import three_point_arc
 from .turning_cycles import forget_single_cycle, single_cycle, single_cycle_target, turning_legs
 
 if TYPE_CHECKING:
@@ -97,6 +98,14 @@ class Planner:
             self.g_groups = {**self.g_groups, **dict.fromkeys(self.extra_codes, "wcs")}
         self.plain = shared_plain_words(dialect, settings, self.g_groups, self.axis_index)
         self.cycle_codes = dialect.cycle_codes
+        # the motion modes whose moves a plain line cannot make: a variable-lead thread (its own
+        # word), a three-point arc, an ellipse or a parabola (their own words), a thread where I
+        # may give its threads per inch: ``execute_nc``'s
+        tpi = dialect.lathe_cycles.threads_per_inch is not None
+        self.own_path_modes = frozenset(
+            (*self.times.variable_lead, *dialect.three_point_arcs, *dialect.motion_value_letters,
+             *(self.times.thread_modes if tpi else ()))
+        )  # fmt: skip
         self.lathe = dialect.lathe
         self._call_needs_distance = dialect.modal_call_needs_distance
         self._arc_planes = arc_planes(self.axis_index)
@@ -190,7 +199,7 @@ class Planner:
                 return self._cycle_fallback(plan, file, line)
             return False
         mode = modal["motion"]
-        if mode in self.cycle_codes or mode in self.times.variable_lead or (modal["canned"] != 80.0 and not self.lathe):
+        if mode in self.cycle_codes or mode in self.own_path_modes or (modal["canned"] != 80.0 and not self.lathe):
             return self._cycle_fallback(plan, file, line)
         if self.shape is not None:
             self._shape_axes(frozenset(i for i, _ in axes) | frozenset(i for i, _ in inc))
@@ -258,12 +267,17 @@ class Planner:
                 if key is not None:
                     codes[key] = v
         one = set_modal(self, gs, other, line)
+        self._block_values(one, axes, other)
         if self.lathe and one == self.dialect.coordinate_setting_code and "S" in other:
             # G50 S is the spindle speed clamp (docs/semantics.md §10.4), not a spindle speed
             self.codes[SPEED_CLAMP] = other["S"]
             set_codes(self, {k: v for k, v in other.items() if k != "S"}, file, line)
         else:
             set_codes(self, other, file, line)
+        if (axes or incremental) and any(self.g_groups.get(g) == STROKE_GROUP for g in gs):
+            # G22 X_ Z_ I_ K_: the words are the stored stroke check's limits, not a move (FANUC
+            # 0i-TF and GSK980TDi manuals, "stored stroke check"); the limits are not checked
+            return False, None
         if one is not None:
             if one != 4.0 and self.cycle_params:
                 forget_single_cycle(self)
@@ -286,6 +300,10 @@ class Planner:
             else:
                 self.turning_cycle(file, line, mode, axes, incremental, other)
             return True, None  # a turning cycle ends where it started
+        three_point = self._three_point(mode, target, other)
+        if three_point is not None:  # G05/G05.1: an arc through the block's point (three_point_arcs.py)
+            self.move(file, line, three_point[0], target, three_point[1])
+            return True, None
         centre = self.block_arc(mode, target, other, line)
         moved = not self._call_needs_distance or target != self.pos or centre is not None
         lead = self.times.variable_lead.get(mode)
@@ -335,6 +353,48 @@ class Planner:
         if mode not in ARC_MODES:
             return None
         return self.checked_arc(mode, self.pos, target, other, line)
+
+    def _block_values(self, one: float | None, axes: dict[int, float], other: dict[str, float]) -> None:
+        """Words that are values in this block's mode: an ellipse's A, B, Q and a parabola's P, Q
+        are never an axis word (``Dialect.motion_value_letters``: moved from ``axes`` to
+        ``other``), and a thread's pitch in threads per inch (GSK980TDi I) gives its F, the lead:
+        25.4 / I mm, 1 / I inch under G20."""
+        values = self.dialect.motion_value_letters.get(self.modal.get("motion", 0.0)) if one is None else None
+        if values:
+            for letter in values:
+                i = self.axis_index.get(letter)
+                if i is not None and i in axes:
+                    other[letter] = axes.pop(i)
+        tpi = self.dialect.lathe_cycles.threads_per_inch
+        if tpi is not None and tpi in other and "F" not in other and self._cuts_thread(one):
+            per_inch = other[tpi]
+            if per_inch > 0.0:
+                other["F"] = (1.0 if self.modal.get("units") == 20.0 else 25.4) / per_inch
+
+    def _cuts_thread(self, one: float | None) -> bool:
+        """Whether a block with one-shot code ``one`` (None: none) cuts a thread: G76, or a
+        thread's motion mode or single cycle in force."""
+        if one is not None:
+            return one == 76.0 and 76.0 in self.cycle_codes
+        mode = self.modal.get("motion", 0.0)
+        single = self.dialect.single_cycles.get(mode)
+        return mode in self.times.thread_modes or (single is not None and single.thread)
+
+    def _three_point(
+        self, mode: float, target: list[float], other: dict[str, float]
+    ) -> tuple[float, tuple[float, ...]] | None:
+        """The mode (2 or 3) and centre of a three-point arc to ``target`` in the plane in force,
+        when ``mode`` is one (``Dialect.three_point_arcs``) and the circle exists."""
+        absolute = self.dialect.three_point_arcs.get(mode)
+        code = self.modal.get("plane", 17.0)
+        plane = self._arc_planes.get(code)
+        if absolute is None or plane is None:
+            return None
+
+        def length(mode: float, start: Sequence[float], end: Sequence[float], centre: Sequence[float]) -> float:
+            return self.times.arc_length(mode, code, start, end, centre)
+
+        return three_point_arc(absolute, plane, self._diameter, self.pos, target, other, length)
 
     def _full_circle(self, mode: float, canned: float, other: dict[str, float], file: str, line: int) -> bool:
         """A G02/G03 block with I, J or K but no axis word: a full circle back to the start

@@ -35,6 +35,7 @@ if TYPE_CHECKING:
 SINGLE_CYCLE_WORDS = -1.0
 # the mode a cycle's thread cut is timed and drawn as (G32 on both lathe profiles; cycle_time.py)
 THREAD_MODE = 32.0
+STARTS = "starts"  # the key of a thread's number of starts among the single cycle's kept words
 
 
 def turning_legs(
@@ -46,6 +47,8 @@ def turning_legs(
 ) -> tuple[Leg, ...]:
     """The legs of a turning cycle from ``start`` to its end point ``end`` (module docstring),
     ``taper`` the cut's start less its end along the first axis, in that axis's units."""
+    if cycle is not None and cycle.tap:  # in to the end point and back out to the start
+        return (Leg(False, tuple(end)), Leg(False, tuple(start)))
     first = None if cycle is None else axis_index.get(cycle.first)
     if cycle is None or first is None:
         return (Leg(False, tuple(end)),)
@@ -61,9 +64,9 @@ def turning_legs(
     )
 
 
-def time_legs(p: Planner, start: tuple[float, ...], legs: tuple[Leg, ...], thread: bool) -> float:
+def time_legs(p: Planner, start: tuple[float, ...], legs: tuple[Leg, ...], thread: bool, tap: bool = False) -> float:
     """The seconds of a single cycle's ``legs`` from ``start`` (module docstring), added to the
-    planner's clock and its cut and rapid path."""
+    planner's clock and its cut and rapid path; a tapping cycle's (``tap``) both legs threaded."""
     times = p.times
     unit = INCH if p.modal.get("units") == 20.0 else 1.0
     feed = p.codes.get("F") or 0.0
@@ -76,7 +79,7 @@ def time_legs(p: Planner, start: tuple[float, ...], legs: tuple[Leg, ...], threa
             seconds += times.rapid_seconds(at, leg.end, unit)
             p.rapid_length += length * unit
         else:
-            cut_mode = mode if leg is legs[1] else 1.0  # only the cut along the thread is threaded
+            cut_mode = mode if tap or leg is legs[1] else 1.0  # only the cut along the thread is threaded
             seconds += p.feed_seconds(cut_mode, length, feed, at, leg.end, unit)
             p.cut_length += length * unit
         at = leg.end
@@ -102,7 +105,11 @@ def single_cycle_target(
             target[i] = kept[name]
     letter = p.dialect.lathe_cycles.taper_letters.get(code, "R")  # Haas: I (G90, G92), K (G94)
     taper = other.get(letter, kept.get("R", 0.0) if same else 0.0)
-    p.cycle_params[SINGLE_CYCLE_WORDS] = {"G": code, "R": taper, **dict(zip(names, target, strict=True))}
+    words = {"G": code, "R": taper, **dict(zip(names, target, strict=True))}
+    single = p.dialect.single_cycles.get(code)
+    if single is not None and single.starts is not None:  # a thread's starts (L), modal with the rest
+        words[STARTS] = other.get(single.starts, kept.get(STARTS, 1.0) if same else 1.0)
+    p.cycle_params[SINGLE_CYCLE_WORDS] = words
     return target, taper
 
 
@@ -121,7 +128,9 @@ def single_cycle(
     first = p.axis_index.get(cycle.first)
     scale = 2.0 if first is not None and first == p.times.diameter else 1.0  # R is a radius on X
     legs = turning_legs(cycle, p.axis_index, start, target, taper * scale)
-    seconds = time_legs(p, start, legs, cycle.thread)
+    seconds = 0.0
+    for _ in range(thread_starts(p, cycle)):  # a thread of L starts: each start cut in turn
+        seconds += time_legs(p, start, legs, cycle.thread, cycle.tap)
     feed = p.codes.get("F") or 0.0
     if p.feed_hint and 0.0 < feed < 1.0 and not cycle.thread:
         p.feed_per_minute_hint(1.0, feed, line)
@@ -135,6 +144,15 @@ def single_cycle(
             p.moves_full(line)
     if stop is not None:
         raise stop[1]
+
+
+def thread_starts(p: Planner, cycle: SingleCycle) -> int:
+    """How many times a single cycle is cut: its thread's starts (``SingleCycle.starts``, modal:
+    kept with the cycle's words by ``single_cycle_target``), 1 for one or none."""
+    if cycle.starts is None:
+        return 1
+    kept = p.cycle_params.get(SINGLE_CYCLE_WORDS, {})
+    return max(1, int(kept.get(STARTS, 1.0)))
 
 
 def in_increments(p: Planner, value: float) -> float:

@@ -13,7 +13,7 @@ from ..lathe_cycle_rules import GSK980TDI_RULES
 from ..lathe_cycle_words import GSK980TDI_CYCLE_WORDS
 from ..tables import CommonRange
 from ..timing import Timing
-from ..turning_cycles import GSK_LATHE_CYCLES, LATHE_SINGLE_CYCLES
+from ..turning_cycles import GSK_LATHE_CYCLES, GSK_SINGLE_CYCLES
 
 PROFILE = Dialect(
     name="gsk980tdi",
@@ -40,11 +40,24 @@ PROFILE = Dialect(
     lathe=True,
     axes=("X", "Y", "Z", "C", "B"),
     modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0, 5.0}),
-    modal_defaults={"plane": 18.0, "feed": 98.0},
+    # G23 at power-on (§3.31 note 3)
+    modal_defaults={"plane": 18.0, "feed": 98.0, "stroke": 23.0},
     coordinate_setting_code=50.0,
-    local_coordinate_code=None,  # no G52 in the GSK980TDi's G codes
-    cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0, 83.0, 84.0, 87.0, 88.0}),
-    single_cycles=LATHE_SINGLE_CYCLES,
+    local_coordinate_code=52.0,  # §3.19: G52 X(U) Z(W), no move
+    # G05 / G05.1 three-point arcs, the point relative / absolute (§3.5)
+    three_point_arcs={5.0: False, 5.1: True},
+    # ellipse A, B (half axes), Q (angle); parabola P, Q (§3.6, §3.7): drawn as their chord
+    motion_value_letters={
+        6.2: frozenset("ABQ"),
+        6.3: frozenset("ABQ"),
+        7.2: frozenset("PQ"),
+        7.3: frozenset("PQ"),
+    },
+    cycle_codes=frozenset(
+        {70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 92.1, 92.3, 94.0, 33.0}
+        | {83.0, 84.0, 87.0, 88.0, 83.1, 83.2, 84.1, 84.2, 87.1, 88.1}
+    ),
+    single_cycles=GSK_SINGLE_CYCLES,
     lathe_cycles=GSK_LATHE_CYCLES,
     cycle_words=GSK980TDI_CYCLE_WORDS,
     cycle_rules=GSK980TDI_RULES,
