@@ -2,8 +2,12 @@
 the stored stroke check ``G22 X_ Z_ I_ K_`` gives the check's limits (FANUC 0i-TF and 0i-MF
 operator's manuals, "stored stroke check"; GSK980TDi manual §3.31, "X_Y_Z_: 存储行程检测的正方向
 极限坐标值 … I_J_K_: 负方向极限坐标值"), and cylindrical interpolation's ``G07.1 C_`` gives the
-cylinder's radius (``G07.1 C0`` ends it; FANUC operator's manuals, "cylindrical interpolation").
-Neither block moves the tool; the moves before and after are as written."""
+cylinder's radius (``G07.1 C0`` ends it; FANUC operator's manuals, "cylindrical interpolation");
+``G68 X_ Y_ R_``, ``G51 X_ Y_ P_`` and ``G51.1 X_`` give the centre of a rotation, a scaling and a
+mirror image (FANUC 0i-MF operator's manual, "coordinate system rotation", "scaling",
+"programmable mirror image"), which this project does not simulate. None of these blocks moves
+the tool; the moves before and after are as written. ``G92.1 IP0`` presets the workpiece
+coordinate system: the named axes' G92 shift is cancelled, without a move."""
 
 from __future__ import annotations
 
@@ -54,3 +58,31 @@ def test_g07_1_names_the_cylinders_radius_and_turns_nothing(tmp_path: Path) -> N
     assert ends(result, "X", "Z", "C") == [(50.0, 5.0, 0.0), (50.0, -30.0, 0.0), (60.0, -30.0, 0.0)]
     # the cut: 35 mm at 120 mm/min -> 17.5 s, and nothing on C
     assert result["moves"][1]["time"] == pytest.approx(17.5)
+
+
+@pytest.mark.parametrize(
+    ("profile", "mirror", "no_mirror"),
+    [("fanuc-0i", "G51.1", "G50.1"), ("fanuc-30i", "G51.1", "G50.1"), ("haas", "G101", "G100"),
+     ("mazak-eia", "G51.1", "G50.1"), ("mitsubishi-m70", "G51.1", "G50.1")],
+)  # fmt: skip
+def test_rotation_scaling_and_mirror_centres_move_nothing(
+    tmp_path: Path, profile: str, mirror: str, no_mirror: str
+) -> None:
+    # Haas writes its mirror image G101 X_ (the centre), G100 to cancel (Haas 96-8000, G100/G101)
+    program = lines(f"O1001 (cncmacro: dialect={profile})", "G90 G17 G00 X50. Y50. Z10.", "G68 X10. Y10. R90.",
+                    "G01 X60. F1000.", "G69", "G51 X0 Y0 P2.", "G01 Y20.", "G50", f"{mirror} X0", "G01 X40.",
+                    f"{no_mirror} X0", "M30")  # fmt: skip
+    result = run_json(tmp_path, program, "O1001.nc")
+    assert result["status"] == "completed"
+    assert [mv["line"] for mv in result["moves"]] == [2, 4, 7, 10]
+    assert ends(result, "X", "Y") == [(50.0, 50.0), (60.0, 50.0), (60.0, 20.0), (40.0, 20.0)]
+
+
+def test_g92_1_cancels_the_g92_shift_without_a_move(tmp_path: Path) -> None:
+    # at X20 Y0, G92 X0 Y0 makes that point X0 Y0; G92.1 X0 Y0 brings the work coordinates back:
+    # the tool is at X20 Y0 again, so the rapid to X5 Y5 starts there
+    program = lines("O0001", "G90 G00 X20. Y0 Z5.", "G92 X0 Y0", "G01 X10. F600", "G92.1 X0 Y0", "G00 X5. Y5.", "M30")
+    result = run_json(tmp_path, program)
+    assert [(mv["line"], mv["from"]["X"], mv["from"]["Y"]) for mv in result["moves"]] == [
+        (2, 0.0, 0.0), (4, 0.0, 0.0), (6, 30.0, 0.0)]  # fmt: skip
+    assert ends(result, "X", "Y") == [(20.0, 0.0), (10.0, 0.0), (5.0, 5.0)]

@@ -90,6 +90,9 @@ class Dialect:
     # §8 one-shot codes whose axis word is a value, not a move: cylindrical interpolation's
     # ``G07.1 C_`` (G107 in FANUC's system B) names the cylinder's radius, ``G07.1 C0`` ends it
     axis_value_codes: frozenset[float] = frozenset((7.1, 107.0))
+    # §8 workpiece coordinate system preset (FANUC G92.1 IP0, G50.3 on a lathe): the named axes'
+    # coordinate shift (G92, G52) is cancelled, the tool does not move
+    preset_codes: frozenset[float] = frozenset((92.1, 50.3))
     # §8 three-point arcs (GSK980TDi G05, G05.1): motion code -> whether its I, K point on the arc
     # is absolute (else relative to the start, as G02/G03's I, K) (planner/three_point_arcs.py)
     three_point_arcs: dict[float, bool] = field(default_factory=dict)

@@ -2,8 +2,9 @@
 offsets, G28/G30 through the intermediate point to the reference point, G31 skip (probing.py),
 G53 in machine coordinates, G52's local coordinate system, coordinate setting (G92 on a mill,
 G50 on a lathe), a lathe's turning cycles (turning_cycles.py), cylindrical interpolation's
-``G07.1 C_`` (a radius, not a move), and any other one-shot code with axis words, which moves in
-the modal mode. ``G10`` writes the offset tables through the planner's host (host.py).
+``G07.1 C_`` (a radius, not a move), the workpiece coordinate system preset (``G92.1 IP0``), and
+any other one-shot code with axis words, which moves in the modal mode. ``G10`` writes the offset
+tables through the planner's host (host.py).
 """
 
 from __future__ import annotations
@@ -71,6 +72,12 @@ def one_shot(
     if p.dialect.lathe and g in p.dialect.cycle_codes:
         return lathe_cycle(p, g, axes, inc, other, file, line)
     if g in p.dialect.axis_value_codes:  # G07.1 C_: the cylinder's radius (Dialect.axis_value_codes)
+        return False, None
+    if g in p.dialect.preset_codes:  # G92.1 IP0: the shift of the named axes cancelled, no move
+        for i in set(axes) | set(inc):
+            p.pos[i] += p.shift[i]
+            p.shift[i] = 0.0
+            p.codes.pop(f"{LOCAL_ORIGIN}{i}", None)
         return False, None
     if axes or inc:  # any other one-shot code with axis words: move in the modal mode
         mode = p.modal.get("motion", 0.0)

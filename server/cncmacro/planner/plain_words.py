@@ -28,10 +28,11 @@ PlainPlan = tuple[_Words, _Words, _Axes, _Axes, _Words]
 PlainRun = tuple[_Words, _Words, _Axes, _Axes, _Words, str, int]
 # G20/G21 too: a change of the unit is looked at in one place (units.py); G40/G41/G42 start and
 # cancel cutter radius compensation (cutter_stage.py)
-# the stored stroke check's group (G22, G23): the axis words of a block with G22 are the check's
-# limits (``Planner.execute_nc``), so such a line is not plain motion
-STROKE_GROUP = "stroke"
-NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length", "units", "cutter", STROKE_GROUP))
+# the groups whose codes take axis words as values, not a move (``Planner.execute_nc``): the stored
+# stroke check's limits (G22), the centre of a rotation (G68), of a scaling (G51) or of a mirror
+# image (G51.1); such a line is not plain motion
+VALUE_GROUPS = frozenset(("stroke", "rotation", "scaling", "mirror"))
+NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length", "units", "cutter", *VALUE_GROUPS))
 CANCEL_CYCLE = ("canned", 80.0)  # on a mill, G00-G03 cancel a drilling cycle (group 01 over group 09)
 _CENTRE_LETTERS = frozenset("RIJK")  # arc radius and centre: kept for a canned cycle's R level
 _G_WORDS_KEPT = 1000  # spellings of G words ``g_word`` keeps

@@ -33,7 +33,7 @@ from .machine_limits import leaves_travel, program_bounds, spindle_speed
 from .modal_groups import extra_offset_codes, g_code_groups
 from .moves import TURNING, Leg, Move, ToolChange
 from .one_shot import one_shot
-from .plain_words import STROKE_GROUP, PlainRun, shared_plain_words
+from .plain_words import VALUE_GROUPS, PlainRun, shared_plain_words
 from .positions import position_value
 from .probing import Probe, SkipState
 from .state import MODAL_DEFAULTS, PlannerState
@@ -274,9 +274,10 @@ class Planner:
             set_codes(self, {k: v for k, v in other.items() if k != "S"}, file, line)
         else:
             set_codes(self, other, file, line)
-        if (axes or incremental) and any(self.g_groups.get(g) == STROKE_GROUP for g in gs):
-            # G22 X_ Z_ I_ K_: the words are the stored stroke check's limits, not a move (FANUC
-            # 0i-TF and GSK980TDi manuals, "stored stroke check"); the limits are not checked
+        if (axes or incremental) and any(self.g_groups.get(g) in VALUE_GROUPS for g in gs):
+            # G22 X_ Z_ I_ K_: the stored stroke check's limits (FANUC 0i-TF and GSK980TDi manuals,
+            # "stored stroke check"); G68 X_ Y_ R_, G51 X_ Y_ P_, G51.1 X_: the centre of the
+            # rotation, scaling, mirror image. Not a move; none of them is simulated (§8)
             return False, None
         if one is not None:
             if one != 4.0 and self.cycle_params:

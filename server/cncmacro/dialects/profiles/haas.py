@@ -953,6 +953,8 @@ PROFILE = FANUC_0I.configured(
     common_ranges=(CommonRange(100, 199, True), CommonRange(500, 999, True), CommonRange(10000, 10999, True)),
     programs_on_control=((9000, 9999),),
     local_subprogram_code=97.0,
+    # G101 X_ Y_: the mirror image's centre on the axes given, G100 cancels (docs/semantics.md §8)
+    axis_value_codes=frozenset((7.1, 107.0, 100.0, 101.0)),
     documented_alarms=frozenset(),  # no Haas source numbers FANUC's alarms or #3000=n: none shown
     dprnt_places=8,  # DPRNT #1[54] is illegal, #1[03] prints 1.544 ([H5] p. 125)
     dprnt_whole_part=True,
