@@ -141,3 +141,25 @@ def test_an_input_signal_is_unknown_not_zero(tmp_path: Path) -> None:
         0, ["5:1: hint: no analysis run reaches this block [not-executed]"])  # fmt: skip
     code, found = check(tmp_path, PROBE_ON, "[variables]\n1004 = 0\n")
     assert code == 0 and found[0] == "5:1: warning: the run reaches macro alarm 3007: PROBE NOT ON [macro-alarm]"
+
+
+# a bar-fed lathe's batch stop: the parts done (#3901) against the parts required (#3902), which the
+# operator sets on the setting screen; read as 0 offline it alarmed on every check
+BATCH = "O0100 (cncmacro: dialect=fanuc-0i-lathe)\nIF [#3901 GE #3902] THEN #3000=1 (BATCH COMPLETE)\nM30\n"
+
+
+def test_the_parts_counters_are_the_machines(tmp_path: Path) -> None:
+    code, found = check(tmp_path, BATCH)
+    assert code == 0
+    assert found == [
+        "2:1: hint: the analysis run stops here: this block depends on #3901, #3902, which the machine keeps; "
+        "this folder does not give it; set it under [variables] in .cncmacro.toml (or in the persistent file it "
+        "names) to check further [unknown-value]"
+    ]
+
+
+def test_parts_counters_given_in_variables_are_used(tmp_path: Path) -> None:
+    assert check(tmp_path, BATCH, "[variables]\n3901 = 41\n3902 = 500\n") == (0, [])
+    code, found = check(tmp_path, BATCH, "[variables]\n3901 = 500\n3902 = 500\n")
+    assert found == ["2:1: warning: the run reaches macro alarm 3001: BATCH COMPLETE [macro-alarm]",
+                     "3:1: hint: no analysis run reaches this block [not-executed]"]  # fmt: skip

@@ -35,8 +35,9 @@ if TYPE_CHECKING:
     from .expressions import VariableKinds
 
 UNKNOWN = math.nan
-# the groups of stored system variables the machine keeps (dialects/tables.py): its offsets
-KEPT_GROUPS = frozenset({"tool", "work"})
+# the groups of stored system variables the machine keeps (dialects/tables.py): its offsets and its
+# parts counters (#3901, #3902: the operator sets the count required on the setting screen)
+KEPT_GROUPS = frozenset({"tool", "work", "counters"})
 _NUMBER = re.compile(r"#\s*(\d+)")
 _ASSIGNMENT = re.compile(r"\s*(?:N\d+\s*)?#\s*(\d+)\s*=(.*)", re.IGNORECASE)
 
