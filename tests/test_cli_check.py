@@ -107,15 +107,15 @@ def test_dialect_option_takes_effect(tmp_path):
 def test_path_option_finds_called_programs(tmp_path):
     lib = tmp_path / "lib"
     lib.mkdir()
-    (lib / "O9001.nc").write_text("O9001\n#2=SQRT[-1]\nM99\n", encoding="utf-8")
+    (lib / "O8001.nc").write_text("O8001\n#2=SQRT[-1]\nM99\n", encoding="utf-8")
     main = tmp_path / "main"
     main.mkdir()
     f = main / "MAIN.nc"
-    f.write_text("O0001\n#1=9001\nG65 P#1\nM30\n", encoding="utf-8")
+    f.write_text("O0001\n#1=8001\nG65 P#1\nM30\n", encoding="utf-8")
     without = json.loads(run("check", "--format", "json", str(f)).stdout)
     assert [d["code"] for d in without] == ["program-not-found"]
     found = json.loads(run("check", "--format", "json", "--path", str(lib), str(f)).stdout)
-    assert [(Path(d["file"]).name, d["line"], d["code"]) for d in found] == [("O9001.nc", 2, "argument-range")]
+    assert [(Path(d["file"]).name, d["line"], d["code"]) for d in found] == [("O8001.nc", 2, "argument-range")]
 
 
 def test_locale_and_sarif(tmp_path):

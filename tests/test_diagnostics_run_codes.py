@@ -53,7 +53,7 @@ def test_5_calls_macro_nesting_beyond_four_levels(tmp_path):
 
 
 def test_5_calls_computed_program_not_found(tmp_path):
-    diags = analyse(tmp_path, {"O0001.nc": "O0001\n#1=9876\nG65 P#1\nM30\n"})
+    diags = analyse(tmp_path, {"O0001.nc": "O0001\n#1=8876\nG65 P#1\nM30\n"})  # not the control's 9000s
     assert found(diags, "program-not-found") == [("O0001.nc", 3, "error")]
     near = analyse(tmp_path, {"O0001.nc": "O0001\n#1=9001\nG65 P#1\nM30\n", "O9001.nc": "O9001\nM99\n"})
     assert found(near, "program-not-found") == []

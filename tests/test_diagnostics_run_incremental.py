@@ -383,8 +383,12 @@ def test_4_control_flow_typing_into_a_label_line_resumes_the_run(tmp_path, monke
 def test_4_control_flow_cross_line_findings_follow_the_edits_that_change_them(tmp_path):
     """The label and call checks are kept while only coordinates are typed, and found again
     when a jump, a label or a file on disk changes."""
-    lines = ["O0001", "#1=1", "IF[#1 EQ 1] GOTO 30", "G01 X1. Y1.", "N30 G01 X2. Y2.", "M98 P9002", "M30"]
+    # the subprogram is O8002, outside the 9000 series a FANUC control keeps in its memory
+    lines = ["O0001", "#1=1", "IF[#1 EQ 1] GOTO 30", "G01 X1. Y1.", "N30 G01 X2. Y2.", "M98 P8002", "M30"]
     ws, main = _open_program(tmp_path, "MAIN", lines)
+    sub = tmp_path / "O8002.nc"
+    sub.write_text("O8002\nG01 X3. Y3.\nM99", encoding="utf-8")
+    ws.file_changed(str(sub))
 
     def undefined() -> list[tuple[int, str]]:
         return [(d[1], d[6]) for d in snapshot(ws, main)[0] if d[6] in ("undefined-label", "program-not-found")]
@@ -398,10 +402,8 @@ def test_4_control_flow_cross_line_findings_follow_the_edits_that_change_them(tm
     assert undefined() == [(2, "undefined-label")]
     _edit(ws, main, 4, "N31 G01 X2. Y2.", 4)  # the label changed
     assert undefined() == []
-    macro = tmp_path / "O9002.nc"
-    ws.close(str(macro))
-    macro.unlink()
-    ws.file_changed(str(macro))  # the called program is gone from the folder
+    sub.unlink()
+    ws.file_changed(str(sub))  # the called program is gone from the folder
     assert undefined() == [(5, "program-not-found")]
 
 

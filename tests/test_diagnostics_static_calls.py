@@ -167,12 +167,23 @@ def test_5_calls_a_bracketed_name_with_a_character_outside_the_name_set_is_progr
 
 
 def test_5_calls_program_not_found_in_the_file_or_its_folder(tmp_path: Path):
-    (tmp_path / "O9100.nc").write_text("O9100\nM99\n")
+    (tmp_path / "O8100.nc").write_text("O8100\nM99\n")
     main = str(tmp_path / "MAIN.nc")
-    text = lines("O1000", "G65 P9100 A1", "G65 P9200 A1", "M98 P9300", "M98 P0040", "M30", "O0040", "M99")
+    text = lines("O1000", "G65 P8100 A1", "G65 P8200 A1", "M98 P8300", "M98 P0040", "M30", "O0040", "M99")
     found = coded(check(text, file=main, library=ProgramLibrary()), "program-not-found")
     assert [at(d) for d in found] == [(3, 4, 9, "error"), (4, 4, 9, "error")]
-    assert "O9200" in found[0].message
+    assert "O8200" in found[0].message
+
+
+def test_5_calls_to_the_9000_series_are_the_controls(tmp_path: Path):
+    # FANUC keeps O9000-O9999 protected in its memory (parameter 3202 NE9), where the probe
+    # maker's macros live: not in the folder, so a call to one is no program-not-found
+    main = str(tmp_path / "MAIN.nc")
+    text = lines("O1000", "G65 P9810 Z10. F3000.", "G65 P9814 D52. Z-8.", "M98 P9300", "M30")
+    for profile in ("fanuc-0i", "fanuc-30i", "fanuc-0i-lathe", "mazak-eia", "mitsubishi-m70", "haas"):
+        assert coded(check(text, profile, file=main, library=ProgramLibrary()), "program-not-found") == [], profile
+    found = coded(check(text, "gsk980tdi", file=main, library=ProgramLibrary()), "program-not-found")
+    assert [at(d)[0] for d in found] == [2, 3, 4]  # no source puts the GSK's there
 
 
 def test_5_calls_program_not_found_by_a_bracketed_name_on_gsk980tdi(tmp_path: Path):
@@ -184,12 +195,12 @@ def test_5_calls_program_not_found_by_a_bracketed_name_on_gsk980tdi(tmp_path: Pa
 
 
 def test_5_calls_configured_call_code_to_a_missing_program_is_reported(tmp_path: Path):
-    settings = MachineSettings(calls={"M60": CallCode(9001, "subprogram")})
+    settings = MachineSettings(calls={"M60": CallCode(8001, "subprogram")})
     main = str(tmp_path / "MAIN.nc")
     text = lines("O1000", "G00 X1 M60", "M30")
     found = coded(check(text, file=main, library=ProgramLibrary(), settings=settings), "program-not-found")
     assert [at(d) for d in found] == [(2, 7, 10, "error")]
-    (tmp_path / "O9001.nc").write_text("O9001\nM99\n")
+    (tmp_path / "O8001.nc").write_text("O8001\nM99\n")
     assert check(text, file=main, library=ProgramLibrary(), settings=settings) == []
 
 

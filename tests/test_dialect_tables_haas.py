@@ -145,7 +145,7 @@ def test_the_date_and_time_rows_are_the_0i_s() -> None:
 
 def test_probing_macros_o9000_to_o9999_are_on_the_control() -> None:
     assert HAAS.on_control(9832) and HAAS.on_control(9000) and HAAS.on_control(9999)
-    assert not HAAS.on_control(8999) and not get_dialect("fanuc-0i").on_control(9832)
+    assert not HAAS.on_control(8999) and not get_dialect("gsk980tdi").on_control(9832)
 
 
 def test_haas_switches() -> None:

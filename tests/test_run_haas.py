@@ -122,7 +122,8 @@ def test_haas_m98_p_names_a_five_digit_program() -> None:
 
 def test_haas_probing_macro_o9832_is_on_the_control() -> None:
     assert final(lines("G65 P9832", "#1=1", "M30"), HAAS)[1] == 1.0
-    assert alarm(lines("G65 P9832", "#1=1", "M30"), FANUC) == (76, 1)
+    assert final(lines("G65 P9832", "#1=1", "M30"), FANUC)[1] == 1.0  # FANUC keeps its 9000 series too
+    assert alarm(lines("G65 P8832", "#1=1", "M30"), FANUC) == (76, 1)
 
 
 # §2 address variables: #4101-#4126 hold each letter's last value on Haas, only codes on FANUC

@@ -16,13 +16,13 @@ const VSIX = path.join(ROOT, 'cncmacro.vsix');
 const VENV_PYTHON = path.join(ROOT, '.venv', 'bin', 'python');
 const VERSION = JSON.parse(fs.readFileSync(path.join(ROOT, 'package.json'), 'utf8')).version;
 const MAIN = `O1000 (CALLS A PROBING MACRO KEPT ON THE CONTROL)
-G65 P9810 Z-5.
+G65 P8810 Z-5.
 GOTO 99
 M30
 `;
-// Without this machine file O9810 would be program-not-found: the finding proves it was read
+// Without this machine file O8810 would be program-not-found: the finding proves it was read
 // (with tomllib, or tomli on Python 3.10).
-const MACHINE = 'programs_on_control = ["O9000-O9999"]\n';
+const MACHINE = 'programs_on_control = ["O8000-O8999"]\n';
 
 let unpacked;
 const found = JSON.parse(spawnSync(VENV_PYTHON, [path.join(ROOT, 'tests', 'pythons.py')], { encoding: 'utf8' }).stdout || '[]');
@@ -142,7 +142,7 @@ for (const python of found) {
       );
       const codes = published.params.diagnostics.map((d) => d.code);
       assert.ok(codes.includes('undefined-label'), `GOTO 99 is found: ${JSON.stringify(codes)}`);
-      assert.ok(!codes.includes('program-not-found'), `O9810 is on the control: ${JSON.stringify(codes)}`);
+      assert.ok(!codes.includes('program-not-found'), `O8810 is on the control: ${JSON.stringify(codes)}`);
 
       await lsp.request('shutdown', null);
       lsp.notify('exit', null);

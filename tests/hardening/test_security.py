@@ -24,7 +24,7 @@ from cncmacro.library.machine_file import MachineFileError, load_machine_file
 from cncmacro.library.programs import ProgramLibrary
 from cncmacro.lsp.documents import Documents
 
-SECRET = "O9100 (SECRET)\n#100=42\nM99\n"
+SECRET = "O8100 (SECRET)\n#100=42\nM99\n"
 
 
 def cli(*args: str) -> subprocess.CompletedProcess[str]:
@@ -36,7 +36,7 @@ def outside(tmp_path: Path) -> Path:
     """A folder beside the workspace holding a program the workspace must not read."""
     folder = tmp_path / "outside"
     folder.mkdir()
-    (folder / "O9100.nc").write_text(SECRET, encoding="utf-8")
+    (folder / "O8100.nc").write_text(SECRET, encoding="utf-8")
     (folder / "passwd").write_text("root:x:0:0\n", encoding="utf-8")
     return folder
 
@@ -56,7 +56,7 @@ def analyse(path: Path, text: str) -> list[tuple[int, str, str]]:
     return [(d.line, d.code, d.message) for d in result.diagnostics.get(str(path), []) if d.code != "not-executed"]
 
 
-@pytest.mark.parametrize("name", ["../../etc/passwd", "../outside/passwd", "./../outside/O9100", "/etc/passwd"])
+@pytest.mark.parametrize("name", ["../../etc/passwd", "../outside/passwd", "./../outside/O8100", "/etc/passwd"])
 def test_a_program_name_with_a_path_is_refused_and_never_read(workspace: Path, outside: Path, name: str) -> None:
     main = workspace / "O0001.nc"
     text = f"(cncmacro: dialect=gsk980tdi)\nO0001\nG65 P[{name}]\nM30\n"
@@ -68,11 +68,11 @@ def test_a_program_name_with_a_path_is_refused_and_never_read(workspace: Path, o
 
 
 def test_a_link_that_leads_out_of_the_workspace_is_not_followed(workspace: Path, outside: Path) -> None:
-    (workspace / "O9100.nc").symlink_to(outside / "O9100.nc")
+    (workspace / "O8100.nc").symlink_to(outside / "O8100.nc")
     (workspace / "inside.nc").write_text("O0002\nM30\n", encoding="utf-8")
     (workspace / "O0003.nc").symlink_to(workspace / "inside.nc")  # a link within the workspace is fine
     main = workspace / "O0001.nc"
-    text = "O0001\nG65 P9100\nM30\n"
+    text = "O0001\nG65 P8100\nM30\n"
     assert [(line, code) for line, code, _ in analyse(main, text)] == [(1, "program-not-found")]
     assert [p.name for p in find_program_files(workspace)] == ["O0003.nc", "inside.nc"]
     main.write_text(text, encoding="utf-8")
@@ -83,7 +83,7 @@ def test_a_link_that_leads_out_of_the_workspace_is_not_followed(workspace: Path,
 
 def test_an_extra_path_folder_is_searched_and_its_links_stay_inside_it(workspace: Path, outside: Path) -> None:
     main = workspace / "O0001.nc"
-    main.write_text("O0001\nG65 P9100\nM30\n", encoding="utf-8")
+    main.write_text("O0001\nG65 P8100\nM30\n", encoding="utf-8")
     r = cli("run", "--no-save", "--json", "--path", str(outside), str(main))
     assert json.loads(r.stdout)["variables"]["100"] == 42.0  # an explicit --path folder is allowed
 
@@ -110,12 +110,12 @@ def test_a_persistent_file_in_a_subfolder_is_allowed(workspace: Path) -> None:
 
 def test_the_workspace_index_reads_no_file_outside_its_folders(workspace: Path, outside: Path) -> None:
     (workspace / "O0001.nc").write_text("O0001\nM30\n", encoding="utf-8")
-    (workspace / "O9100.nc").symlink_to(outside / "O9100.nc")
+    (workspace / "O8100.nc").symlink_to(outside / "O8100.nc")
     documents = Documents()
     index = WorkspaceIndex(documents.by_uri.values, documents.dialect_for)
     assert index.scan([str(workspace)]) == 1
-    index.reload(str(outside / "O9100.nc"))  # a file event for a path outside the workspace
-    index.reload(str(workspace / "O9100.nc"))  # and for the link
+    index.reload(str(outside / "O8100.nc"))  # a file event for a path outside the workspace
+    index.reload(str(workspace / "O8100.nc"))  # and for the link
     assert sorted(Path(p).name for p in index.files) == ["O0001.nc"]
 
 

@@ -152,16 +152,16 @@ async def test_a_thousand_nested_folders_are_indexed(client: LanguageClient, tmp
 
 @linux_only
 async def test_a_2_gb_program_file_is_named_and_never_read(client: LanguageClient, tmp_path: Path) -> None:
-    sparse_file(tmp_path / "O9100.nc")
-    (tmp_path / "O0002.nc").write_text("O0002\nG65 P9100\nM30\n", encoding="utf-8")
+    sparse_file(tmp_path / "O8100.nc")
+    (tmp_path / "O0002.nc").write_text("O0002\nG65 P8100\nM30\n", encoding="utf-8")
     await initialize(client, tmp_path)
     said = await shown_warning(client)
     assert said.startswith("cncmacro: 1 folder or file in the workspace was not read: ")
     assert (
-        f"{tmp_path / 'O9100.nc'}: 2,147,483,648 bytes, over the limit of 8,000,000: not read for the programs" in said
+        f"{tmp_path / 'O8100.nc'}: 2,147,483,648 bytes, over the limit of 8,000,000: not read for the programs" in said
     )
     assert await symbols(client) == ["O0002"]
-    uri = open_file(client, tmp_path / "O0002.nc")  # its call looks for O9100 on disk
+    uri = open_file(client, tmp_path / "O0002.nc")  # its call looks for O8100 on disk
     diags = (await asyncio.wait_for(diagnostics_for(client, uri, 1), TIMEOUT)).diagnostics
     assert [d.code for d in diags if d.code != "not-executed"] == ["program-not-found"]
     pid = client._server.pid  # type: ignore[attr-defined]  # the server's process

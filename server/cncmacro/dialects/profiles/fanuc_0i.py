@@ -47,6 +47,9 @@ PROFILE = Dialect(
     if_without_then=True,
     modal_g_before_call="execute",
     common_ranges=(CommonRange(100, 499, False), CommonRange(500, 999, True)),
+    # the protected 9000 series (parameter 3202 NE9), where the builder's and the probe maker's
+    # macros live (Renishaw Inspection Plus O9810…): in the control's memory, not the folder
+    programs_on_control=((9000, 9999),),
     m98_program_digits=4,
     # typical of a small vertical machining centre; a machine file gives the machine's own
     # (rapid rates: parameter 1420)
