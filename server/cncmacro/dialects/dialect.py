@@ -17,7 +17,7 @@ from typing import Any
 from ..bilingual import Detail, detail
 from .alarms import alarm_said, alarm_titled, shown_number
 from .cycle_words import CycleWords
-from .drill_cycles import DrillCycle
+from .drill_cycles import DrillCycle, LatheDrilling
 from .functions_data import BLOCK_IF_WORDS
 from .lathe_cycle_rules import LatheCycleRules
 from .tables import CodeDoc, CommonRange, FunctionDoc, LatheOffsets, ProgramDoc, SystemVariable, SystemVariableName
@@ -246,6 +246,8 @@ class Dialect:
     # (drill_cycles.py; a canned code not listed drills as G81), and the word that repeats a
     # cycle block (K on FANUC, L on Haas)
     drill_cycles: dict[float, DrillCycle] = field(default_factory=dict)
+    # §10.3 a lathe's drilling cycles (drill_cycles.py's ``LatheDrilling``), None on a mill
+    lathe_drilling: LatheDrilling | None = None
     cycle_repeat_letter: str = "K"
     # §9 a lathe's single fixed cycles (G90, G92, G94): which axis each goes in along first and
     # whether it comes out at rapid (turning_cycles.py); a turning cycle not listed is drawn as
@@ -326,6 +328,12 @@ class Dialect:
             if r.first <= first <= last <= r.last:
                 return r
         return None
+
+    @property
+    def drills(self) -> bool:
+        """Whether the canned drilling cycles (G80's group) run here: on a mill, and on a lathe
+        with drilling cycles (``lathe_drilling``); G00–G03 cancel them (group 01 over the cycle's)."""
+        return not self.lathe or self.lathe_drilling is not None
 
     @property
     def incremental_letters(self) -> dict[str, str]:

@@ -77,3 +77,52 @@ HAAS_DRILL_CYCLES: dict[float, DrillCycle] = {
     77.0: DrillCycle(back=True),
     87.0: PLAIN_DRILLING,  # bore in, manual retract
 }
+
+
+@dataclass(frozen=True)
+class LatheDrill:
+    """A lathe's drilling cycle: the axis it drills along (Z on the face, X on the side) and how
+    it cuts there (``DrillCycle``)."""
+
+    axis: str
+    cycle: DrillCycle
+
+
+@dataclass(frozen=True)
+class LatheDrilling:
+    """A lathe control's drilling cycles (docs/semantics.md §10.3, ``planner/lathe_drilling.py``):
+    ``cycles`` by G code; ``r_point``: whether R is the distance from the initial level to the R
+    point the cut starts from (FANUC), or the retract after each peck, the cut starting where the
+    tool stands (GSK, whose J1 retracts to the start after each peck instead, and whose R is 1 mm
+    when left out: ``default_retract``)."""
+
+    cycles: dict[float, LatheDrill]
+    r_point: bool = True
+    default_retract: float = 0.0
+
+
+# FANUC 0i-TF (G-code system A), "canned cycle for drilling": G83/G87 drilling, in pecks of Q where
+# Q is given (high-speed pecks, parameter 5101#2 RTR = 0, retract d: parameter 5114), G84/G88
+# tapping, G85/G89 boring; face cycles along Z, side cycles along X; P dwells at the bottom
+FANUC_LATHE_DRILLING = LatheDrilling(
+    {
+        83.0: LatheDrill("Z", DrillCycle(cut=SHORT_PECK, dwell=True)),
+        84.0: LatheDrill("Z", DrillCycle(dwell=True, feed_out=True)),
+        85.0: LatheDrill("Z", DrillCycle(feed_out=True)),
+        87.0: LatheDrill("X", DrillCycle(cut=SHORT_PECK, dwell=True)),
+        88.0: LatheDrill("X", DrillCycle(dwell=True, feed_out=True)),
+        89.0: LatheDrill("X", DrillCycle(dwell=True, feed_out=True)),
+    }
+)
+# GSK980TDi §3.23.9 (G83, G87) and §3.24.6 (G84, G88): pecks of Q with a retract of R (J0) or back
+# to the start after each (J1), from where the tool stands and back there
+GSK_LATHE_DRILLING = LatheDrilling(
+    {
+        83.0: LatheDrill("Z", DrillCycle(cut=SHORT_PECK, dwell=True)),
+        84.0: LatheDrill("Z", DrillCycle(dwell=True, feed_out=True)),
+        87.0: LatheDrill("X", DrillCycle(cut=SHORT_PECK, dwell=True)),
+        88.0: LatheDrill("X", DrillCycle(dwell=True, feed_out=True)),
+    },
+    r_point=False,
+    default_retract=1.0,
+)

@@ -66,6 +66,7 @@ def run_straight(
         return 0, pc
     g_words = p.plain.g_words()
     lathe = p.lathe
+    drills = p.drills  # a canned drilling cycle in force: the compiled path drills its holes
     cycles = p.cycle_codes
     own_modes = p.own_path_modes  # a variable-lead thread, a three-point arc…: the compiled path
     feed_hint = p.feed_hint
@@ -230,9 +231,9 @@ def run_straight(
                     mode = modal["motion"] = new_mode
                     if lathe and new_mode not in p.dialect.single_cycles:
                         forget_single_cycle(p)  # a single cycle's modal words (planner/turning_cycles.py)
-                if canned != 80.0 and not lathe:
+                if canned != 80.0 and drills:
                     canned = modal["canned"] = 80.0
-            elif moved and (mode in cycles or (canned != 80.0 and not lathe)):
+            elif moved and (mode in cycles or (canned != 80.0 and drills)):
                 break
             if label is not None:
                 codes["N"] = float(label)  # the last sequence number read, as a labelled block sets it

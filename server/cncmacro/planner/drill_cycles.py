@@ -66,7 +66,7 @@ def drill_block(
     plane = {i: v for i, v in axes.items() if i != z}
     if z is not None and z in axes:
         codes[CYCLE_Z] = axes[z]
-    repeats = _repeats(other.get(m.dialect.cycle_repeat_letter), m.dialect.cycle_repeat_letter)
+    repeats = repeat_count(other.get(m.dialect.cycle_repeat_letter), m.dialect.cycle_repeat_letter)
     if z is None:  # no drilling axis: the holes are only positioned
         for _ in range(repeats):
             m.move(file, line, 0.0, m.target(plane, incremental))
@@ -132,7 +132,7 @@ def hole_legs(
     return (Leg(True, positioned), Leg(True, at_r), Leg(False, bottom), *out)
 
 
-def _repeats(k: float | None, letter: str) -> int:
+def repeat_count(k: float | None, letter: str) -> int:
     """How many times a cycle block drills: its K (L), 1 when absent; 0 to 9999."""
     if k is None:
         return 1

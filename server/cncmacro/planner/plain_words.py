@@ -56,7 +56,7 @@ class PlainWords:
         self.settings = settings
         self.g_groups = g_groups
         self.axis_index = axis_index
-        self._lathe = dialect.lathe
+        self._drills = dialect.drills
         self._kinds: dict[str, int] | None = None
         self._groups: dict[float, str] | None = None
         self._g_words: dict[str, tuple[str, float]] = {}
@@ -92,7 +92,7 @@ class PlainWords:
                 if group is None:
                     return None
                 modal.append((group, v))
-                if group == "motion" and not self._lathe:
+                if group == "motion" and self._drills:
                     modal.append(CANCEL_CYCLE)
             elif kind == PLAIN_F:
                 codes.append(("F", v))
@@ -183,7 +183,7 @@ class PlainWords:
                 if not group or group in NOT_PLAIN_GROUPS:
                     return None
                 modal.append((group, v))
-                if group == "motion" and not self._lathe:
+                if group == "motion" and self._drills:
                     modal.append(CANCEL_CYCLE)
             elif letter in axis_index:
                 axes.append((axis_index[letter], v))

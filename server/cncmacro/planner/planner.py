@@ -29,6 +29,7 @@ from .cutter_stage import UNCOMPENSATED_CODES, CutterStage, cutter_move, restore
 from .cycle_time import INCH, SPEED_CLAMP, MoveTimes
 from .drill_cycles import drill_block
 from .lathe_cycles import ShapeCall, ShapeReading
+from .lathe_drilling import lathe_drill_block
 from .machine_limits import leaves_travel, program_bounds, spindle_speed
 from .modal_groups import extra_offset_codes, g_code_groups
 from .moves import TURNING, Leg, Move, ToolChange
@@ -107,6 +108,7 @@ class Planner:
              *(self.times.thread_modes if tpi else ()))
         )  # fmt: skip
         self.lathe = dialect.lathe
+        self.drills = dialect.drills  # a canned drilling cycle in force decides a move (Dialect.drills)
         self._call_needs_distance = dialect.modal_call_needs_distance
         self._arc_planes = arc_planes(self.axis_index)
         self._diameter = self.axis_index.get("X", -1) if self.lathe else -1
@@ -199,7 +201,7 @@ class Planner:
                 return self._cycle_fallback(plan, file, line)
             return False
         mode = modal["motion"]
-        if mode in self.cycle_codes or mode in self.own_path_modes or (modal["canned"] != 80.0 and not self.lathe):
+        if mode in self.cycle_codes or mode in self.own_path_modes or (modal["canned"] != 80.0 and self.drills):
             return self._cycle_fallback(plan, file, line)
         if self.shape is not None:
             self._shape_axes(frozenset(i for i, _ in axes) | frozenset(i for i, _ in inc))
@@ -292,8 +294,12 @@ class Planner:
         if self.shape is not None:
             self._shape_axes(frozenset(axes) | frozenset(incremental))
         target = self.target(axes, incremental)
-        if not self.lathe and canned != 80.0:
-            drill_block(self, canned, axes, incremental, other, file, line)  # drill_cycles.py
+        if canned != 80.0 and self.drills:
+            drilling = self.dialect.lathe_drilling
+            if drilling is None:
+                drill_block(self, canned, axes, incremental, other, file, line)  # drill_cycles.py
+            elif canned in drilling.cycles:
+                lathe_drill_block(self, drilling, canned, axes, incremental, other, file, line)  # lathe_drilling.py
             return True, None
         if mode in self.cycle_codes:
             if self.cutter is not None:  # drawn as programmed under tool nose radius compensation (§12)
@@ -400,7 +406,7 @@ class Planner:
     def _full_circle(self, mode: float, canned: float, other: dict[str, float], file: str, line: int) -> bool:
         """A G02/G03 block with I, J or K but no axis word: a full circle back to the start
         (with R instead, an arc of 0° that moves nothing). Returns whether it moved."""
-        if mode not in ARC_MODES or (canned != 80.0 and not self.lathe):
+        if mode not in ARC_MODES or (canned != 80.0 and self.drills):
             return False
         if "R" in other:
             self.checked_arc(mode, self.pos, self.pos, other, line)  # an arc of 0°: a finding, no move
@@ -446,7 +452,10 @@ class Planner:
         if single is not None:
             target, taper = single_cycle_target(self, code, axes, inc, other)
             single_cycle(self, file, line, code, single, target, taper)
-        else:  # a cycle no module plans (gsk980tdi's drilling cycles): timed as the one cut it is drawn as
+        elif self.dialect.lathe_drilling is not None and code in self.dialect.lathe_drilling.cycles:
+            # gsk980tdi's drilling cycles are of the motion group (lathe_drilling.py)
+            lathe_drill_block(self, self.dialect.lathe_drilling, code, axes, inc, other, file, line)
+        else:  # a cycle no module plans: timed as the one cut it is drawn as
             target = self.target(axes, inc)
             start = tuple(self.pos)
             legs = turning_legs(None, self.axis_index, start, target)

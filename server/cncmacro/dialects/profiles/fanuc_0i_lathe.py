@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from ..drill_cycles import FANUC_LATHE_DRILLING
 from ..fanuc_lathe_data import LATHE_OFFSETS
 from ..lathe_cycle_rules import FANUC_LATHE_RULES
 from ..lathe_cycle_words import FANUC_LATHE_CYCLE_WORDS
@@ -35,6 +36,7 @@ PROFILE = replace(
     coordinate_setting_code=50.0,
     cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0}),
     drill_cycles={},
+    lathe_drilling=FANUC_LATHE_DRILLING,  # G83-G89 along Z and X (planner/lathe_drilling.py)
     single_cycles=LATHE_SINGLE_CYCLES,
     lathe_cycles=FANUC_LATHE_CYCLES,
     cycle_words=FANUC_LATHE_CYCLE_WORDS,

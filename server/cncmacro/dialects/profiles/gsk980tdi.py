@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from ..alarms import OFFSET_NUMBER, OVERTRAVEL_MINUS, OVERTRAVEL_PLUS
 from ..dialect import Dialect
+from ..drill_cycles import GSK_LATHE_DRILLING
 from ..lathe_cycle_rules import GSK980TDI_RULES
 from ..lathe_cycle_words import GSK980TDI_CYCLE_WORDS
 from ..tables import CommonRange
@@ -58,6 +59,7 @@ PROFILE = Dialect(
         | {83.0, 84.0, 87.0, 88.0, 83.1, 83.2, 84.1, 84.2, 87.1, 88.1}
     ),
     single_cycles=GSK_SINGLE_CYCLES,
+    lathe_drilling=GSK_LATHE_DRILLING,  # G83/G87, G84/G88 (planner/lathe_drilling.py)
     lathe_cycles=GSK_LATHE_CYCLES,
     cycle_words=GSK980TDI_CYCLE_WORDS,
     cycle_rules=GSK980TDI_RULES,
