@@ -110,3 +110,13 @@ def test_5_calls_a_haas_main_programs_loop_back_by_m99_p_is_a_production_loop_no
     # the same warm-up closed by GOTO 10 is still the endless loop it is
     goto = warm_up.replace("M99 P10", "GOTO 10")
     assert endless_at(tmp_path, {"O01000.nc": goto}, dialect="haas") == ("O01000.nc", 5)
+
+
+def test_4_control_flow_a_wait_on_the_timer_is_no_loop_the_control_never_leaves(tmp_path):
+    # #3001 counts milliseconds on the control, so the wait ends after 3 s there; the simulated
+    # clock does not run while no block moves, so the run cannot leave it, and says only that
+    text = "O0001\n#3001=0\nN10 IF [#3001 LT 3000] GOTO 10\nG00 X10.\nM30\n"
+    [(name, line, message)] = limits(analyse(tmp_path, {"O0001.nc": text}))
+    assert (name, line) == ("O0001.nc", 3)
+    assert not message.startswith(ENDLESS) and "never leave" not in message
+    assert "the control leaves it when what the machine changes (a timer, an input signal) ends it" in message

@@ -62,3 +62,16 @@ def loop_certainty(line_text: Callable[[int], str], line: int, to: int, kinds: V
             elif kind not in ("local", "vacant"):
                 return None  # a system variable, #[...] or a #_NAME: the machine's, or anything
     return SHARED if shared else CERTAIN
+
+
+def waits_for_the_machine(line_text: Callable[[int], str], line: int, to: int, kinds: VariableKinds) -> bool:
+    """Whether the loop that jumps back from ``line`` to ``to`` reads a system variable (a timer,
+    an input signal, a position), whose value the machine changes while the simulation cannot:
+    ``#3001=0`` / ``N10 IF [#3001 LT 3000] GOTO 10`` waits three seconds on the control."""
+    if line < 0 or to > line:
+        return False
+    return any(
+        number != INDIRECT and kinds.kind(number) == "system"
+        for k in range(to, line + 1)
+        for number in reads(code_of(line_text(k)))
+    )

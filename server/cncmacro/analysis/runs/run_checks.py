@@ -62,7 +62,7 @@ from ...machine.tracking import same_state
 from ...planner.alarms import UNKNOWN_VALUE
 from ..codes import MACRO_ALARM, alarm_code
 from ..diagnostics import Diagnostic, Related, diagnostic
-from .endless_loops import SHARED, loop_certainty
+from .endless_loops import SHARED, loop_certainty, waits_for_the_machine
 from .run_convergence import Earlier, keep_earlier, try_converge
 from .sure_alarms import surely_reached
 from .unknown_stops import named_persistent_values, runs_as_macro, unknown_value_text
@@ -561,12 +561,22 @@ def _endless_diagnostic(
     m = run.machine
     path, jump, to = at
     line = jump if jump >= 0 else to
-    en = (
-        f"an endless loop: line {line + 1} comes back with every variable and position unchanged; "
-        "the control would never leave it"
-    )
-    zh = f"死循环：第 {line + 1} 行再次执行时所有变量和位置都没有变化，控制器永远不会离开这里"
     certainty = loop_certainty(lambda k: line_text(path, k), jump, to, m.kinds)
+    if certainty is None and waits_for_the_machine(lambda k: line_text(path, k), jump, to, m.kinds):
+        en = (
+            f"the run comes back to line {line + 1} with every variable and position unchanged and cannot leave this "
+            "loop; the control leaves it when what the machine changes (a timer, an input signal) ends it"
+        )
+        zh = (
+            f"运行再次到达第 {line + 1} 行时所有变量和位置都没有变化，模拟无法离开此循环；"
+            "控制器在机床改变的值（计时器、输入信号）满足条件时离开"
+        )
+    else:
+        en = (
+            f"an endless loop: line {line + 1} comes back with every variable and position unchanged; "
+            "the control would never leave it"
+        )
+        zh = f"死循环：第 {line + 1} 行再次执行时所有变量和位置都没有变化，控制器永远不会离开这里"
     if certainty == SHARED:
         en += " unless another path of the control or the operator changes the common variables it reads"
         zh += "，除非其他通道或操作者修改了它读取的公共变量"
