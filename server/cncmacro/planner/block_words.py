@@ -17,7 +17,7 @@ from .alarms import MacroAlarm
 from .cutter_stage import cutter_code
 from .machine_limits import offset_number, spindle_speed, tool_number
 from .moves import ToolChange
-from .tool_offsets import apply_length_offset, select_tool
+from .tool_offsets import apply_length_offset, same_station, select_tool
 from .turning_cycles import forget_single_cycle
 from .units import UNITS_GROUP, unit_change
 
@@ -59,8 +59,10 @@ def set_codes(p: Planner, other: dict[str, float], file: str, line: int) -> None
     if p.settings.limits is not None:  # the machine's spindle, tools and offsets (machine_limits.py)
         machine_limits(p, other, file, line)
     if "T" in other:
+        before = p.codes.get("T")
         select_tool(p, other["T"])
-        if p.times.tool_change_t:
+        # a lathe's turret indexes to another station only: T0100 after T0101 changes the offset
+        if p.times.tool_change_t and not (p.lathe and before is not None and same_station(before, other["T"])):
             tool_change(p, file, line)
     if "M" in other:
         p.codes["M"] = other["M"]

@@ -31,6 +31,17 @@ def select_tool(p: Planner, t: float) -> None:
     p.tool_vector = vec
 
 
+def same_station(before: float, t: float) -> bool:
+    """Whether lathe T codes ``before`` and ``t`` name the same tool station (their digits before
+    the offset number's: T0101 and T0100 both station 1)."""
+    return _station(before) == _station(t)
+
+
+def _station(t: float) -> int:
+    n = int(t)
+    return n // 100 if n >= 100 else n // 10
+
+
 def lathe_offset_number(t: float) -> int:
     """The offset number of a lathe's T code: its last two digits from T100 up (T0101: 1), else its
     last digit (T11: 1)."""
