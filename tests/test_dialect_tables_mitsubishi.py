@@ -57,7 +57,9 @@ def test_mitsubishi_rows_say_what_the_number_is_in_both_languages(number: int, e
 def test_mitsubishi_reuses_the_fanuc_rows_where_it_reads_a_number_alike() -> None:
     ids = {id(r) for r in mitsubishi_m70_data.SYSTEM_VARIABLES}
     assert all(id(r) in ids for r in fanuc_data._POSITIONS + fanuc_data._MODAL)
-    assert mitsubishi_m70_data.G_CODES == fanuc_data.G_CODES
+    # the FANUC mill's codes, and the multi-step skip G31.1-G31.3 of its own
+    assert mitsubishi_m70_data.G_CODES[: len(fanuc_data.G_CODES)] == fanuc_data.G_CODES
+    assert [c.code for c in mitsubishi_m70_data.G_CODES[len(fanuc_data.G_CODES) :]] == ["G31.1", "G31.2", "G31.3"]
     m98 = next(c for c in mitsubishi_m70_data.M_CODES if c.code == "M98")
     assert "8 digits" in m98.en and "只能用L" in m98.zh
 

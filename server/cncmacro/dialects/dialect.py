@@ -90,6 +90,9 @@ class Dialect:
     # §8 one-shot codes whose axis word is a value, not a move: cylindrical interpolation's
     # ``G07.1 C_`` (G107 in FANUC's system B) names the cylinder's radius, ``G07.1 C0`` ends it
     axis_value_codes: frozenset[float] = frozenset((7.1, 107.0))
+    # §8 the skip codes (G31, probing.py), and the multi-step skip's G31.1-G31.3 where the control
+    # has them: each stops where its signal comes on, as G31 does
+    skip_codes: frozenset[float] = frozenset((31.0,))
     # §8 workpiece coordinate system preset (FANUC G92.1 IP0, G50.3 on a lathe): the named axes'
     # coordinate shift (G92, G52) is cancelled, the tool does not move
     preset_codes: frozenset[float] = frozenset((92.1, 50.3))

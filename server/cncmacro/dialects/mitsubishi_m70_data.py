@@ -100,5 +100,14 @@ SYSTEM_VARIABLES: tuple[SystemVariable, ...] = (
 # G and M codes: the FANUC mill's, M98 reading P as the whole program number
 
 
-G_CODES: tuple[CodeDoc, ...] = fanuc.G_CODES
+# the multi-step skip (M700V/M70V programming manual §15.3 "Multi-step Skip Function; G31.n"):
+# G31.1, G31.2, G31.3 X_ Y_ Z_ F_, each a G31 on its own skip signal
+G_CODES: tuple[CodeDoc, ...] = (
+    *fanuc.G_CODES,
+    *(
+        CodeDoc(f"G31.{n}", "", f"Multi-step skip {n}: a G31 that stops on skip signal {n}",
+                f"多段跳转{n}：在跳转信号{n}接通时停止的G31")
+        for n in (1, 2, 3)
+    ),
+)  # fmt: skip
 M_CODES: tuple[CodeDoc, ...] = with_m98_count_in_l(fanuc.M_CODES)

@@ -45,7 +45,7 @@ def one_shot(
             p.move(file, line, 0.0, home)
             return True, None
         return False, None
-    if g == 31.0:  # skip: probing.py
+    if g in p.dialect.skip_codes:  # skip (G31; a multi-step skip's G31.1-G31.3): probing.py
         skip_block(p, p.target(axes, inc), file, line)
         return True, None
     if g == 53.0:

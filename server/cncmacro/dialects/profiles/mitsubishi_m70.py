@@ -20,6 +20,7 @@ PROFILE = FANUC_0I.configured(
     aliases=("m70", "m80", "m800", "meldas", "mitsubishi", "mitsubishi-m80"),
     data_module="mitsubishi_m70_data",
     block_if=True,
+    skip_codes=frozenset((31.0, 31.1, 31.2, 31.3)),  # G31.1-G31.3: the multi-step skip (§15.3)
     # the manuals' program errors (P2xx) are not yet listed here: alarms are shown without a number
     documented_alarms=frozenset(),
     # macro words are written in full (no FANUC abbreviations in the M8 manuals at hand)
