@@ -164,3 +164,30 @@ def test_parts_counters_given_in_variables_are_used(tmp_path: Path) -> None:
     assert code == 0  # a warning: the shop's own alarm, which this machine's counts reach
     assert found == ["2:1: warning: the run reaches macro alarm 3001: BATCH COMPLETE [macro-alarm]",
                      "3:1: hint: no analysis run reaches this block [not-executed]"]  # fmt: skip
+
+
+# a probe routine's own guard: the signal not on at the end of the G31 is the shop's alarm
+PROBE_GUARD = ("O0100\nG90 G00 X0 Y0 Z5.\nG31 X20. F200.\n#2=#5061\nIF [ABS[#2-20.] LT 0.001] GOTO 910\n"
+               "G00 X0\nM30\nN910 #3000=1 (PROBE DID NOT TRIGGER)\nM30\n")  # fmt: skip
+
+
+def test_where_a_probe_touched_is_the_machines(tmp_path: Path) -> None:
+    # without a [skip] table the G31 ran to its end in the simulation, which would reach the guard's
+    # alarm on every check; where the probe touches is known only on the machine
+    code, found = check(tmp_path, PROBE_GUARD)
+    assert code == 0
+    assert found == [
+        "5:1: hint: the analysis run stops here: this block depends on a value computed from #5061 (line 4), "
+        "where the probe's G31 touched; only the machine finds it; a [skip] table in .cncmacro.toml says where "
+        "the probe touches, to check further [unknown-value]"
+    ]
+
+
+def test_a_skip_table_says_where_the_probe_touches(tmp_path: Path) -> None:
+    # the part's face at X15: the G31 stops there, #5061 = 15, the guard lets the program go on
+    code, found = check(tmp_path, PROBE_GUARD, "[skip]\nX = 15\n")
+    assert (code, found) == (0, ["8:1: hint: no analysis run reaches these 2 lines [not-executed]"])
+    # and a probe that misses (the table's contact "miss") reaches the alarm, as on the machine
+    code, found = check(tmp_path, PROBE_GUARD, '[skip]\ncontacts = ["miss"]\n')
+    assert code == 0
+    assert "8:1: warning: the run reaches macro alarm 3001: PROBE DID NOT TRIGGER [macro-alarm]" in found

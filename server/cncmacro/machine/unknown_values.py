@@ -3,7 +3,8 @@
 
 A program reads values the control keeps from one day to the next: the commons kept at power-off
 (#500–#999, the extended ranges), the tool and work offset tables, the tool loaded in the
-spindle before the program commands a T; and what the machine sends the program as it runs,
+spindle before the program commands a T; where a probe's G31 touched the part (#5061…, unless
+the machine file's ``[skip]`` table models it); and what the machine sends the program as it runs,
 the interface input signals (FANUC #1000–#1015 and #1032, Haas #1000–#1063…: a probe switched
 on, a pallet in place), which a program may read but never write. Offline, nothing says what they hold; taking them as
 vacant or 0 makes a production program's ``#641=#640/#706`` a "division by zero" the control
@@ -88,6 +89,13 @@ def is_input(n: int, dialect: Dialect) -> bool:
 def is_input_row(group: str, access: str) -> bool:
     """Whether a system-variable row of ``group`` and ``access`` is an input signal."""
     return group == "signals" and "w" not in access
+
+
+def is_skip_position(n: int, dialect: Dialect) -> bool:
+    """Whether system variable ``#n`` reads where the last G31 stopped (FANUC #5061…): the place
+    the probe touched, which only the machine finds (the machine file's ``[skip]`` table models it)."""
+    row = dialect.system_variable(n)
+    return row is not None and row.source == "position" and row.param == "skip"
 
 
 def is_tool(n: int, dialect: Dialect) -> bool:

@@ -190,6 +190,8 @@ class VariableAccess:
         if source in ("modal", "code", "position"):  # the planner's state (planner/planner.py)
             if source == "code" and row.param == "T" and self.kept_unknown and self.planner.codes.get("T") is None:
                 return UNKNOWN  # the tool loaded before the program commands one: the machine knows it
+            if source == "position" and row.param == "skip" and self.kept_unknown and not self.settings.skip:
+                return UNKNOWN  # where a G31 touched: the machine finds it, a [skip] table says it here
             return self.planner.read(source, row.param, row.default, k)
         if source == "timer":
             return self.timer_value(n, row.param)

@@ -22,7 +22,7 @@ from ...machine import Machine
 from ...machine.calls import letters_for_local
 from ...machine.expressions import VariableKinds
 from ...machine.status import RunStatus
-from ...machine.unknown_values import assigned, is_input, is_kept, is_tool, variables_in
+from ...machine.unknown_values import assigned, is_input, is_kept, is_skip_position, is_tool, variables_in
 from ...planner.alarms import UNKNOWN_VALUE
 from ...syntax.nodes import Number
 
@@ -98,13 +98,16 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
             for n in variables_in(a[1]):
                 wanted.setdefault(n, line)
     named = [(n, line) for n, line in wanted.items()
-             if is_kept(n, kinds, dialect) or is_input(n, dialect) or (arguments and 1 <= n <= 33)]  # fmt: skip
+             if is_kept(n, kinds, dialect) or is_input(n, dialect) or is_skip_position(n, dialect)
+             or (arguments and 1 <= n <= 33)]  # fmt: skip
     kept = [(n, line) for n, line in named[:3] if not 1 <= n <= 33]
     passed = [(n, line) for n, line in named[:3] if 1 <= n <= 33]
     parts, parts_zh = [], []
     tool = [(n, line) for n, line in kept if is_tool(n, dialect)]
     inputs = [(n, line) for n, line in kept if is_input(n, dialect)]
-    kept = [(n, line) for n, line in kept if not is_tool(n, dialect) and not is_input(n, dialect)]
+    probed = [(n, line) for n, line in kept if is_skip_position(n, dialect)]
+    kept = [(n, line) for n, line in kept
+            if not is_tool(n, dialect) and not is_input(n, dialect) and not is_skip_position(n, dialect)]  # fmt: skip
     if kept:
         names, names_zh = _names(kept)
         parts.append(f"{names}, which the machine keeps")
@@ -118,6 +121,10 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
         names, names_zh = _names(tool)
         parts.append(f"{names}, the tool loaded before the program commands one")
         parts_zh.append(f"程序指令换刀前主轴上的刀具 {names_zh}")
+    if probed:
+        names, names_zh = _names(probed)
+        parts.append(f"{names}, where the probe's G31 touched")
+        parts_zh.append(f"测头 G31 接触到的位置 {names_zh}")
     if passed:
         names, names_zh = _names(passed, letters=True)
         parts.append(f"{names}, which a caller passes")
@@ -128,7 +135,11 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
         which, which_zh = "on a value computed from " + " and ".join(parts), "由" + "和".join(parts_zh) + "算出的值"
     else:
         which, which_zh = "on " + " and ".join(parts), "和".join(parts_zh)
-    if tool and not kept and not passed:
+    if probed and not kept and not passed and not tool and not inputs:
+        tail = ("only the machine finds it; a [skip] table in .cncmacro.toml says where the probe touches, to check "
+                "further")
+        tail_zh = "只有机床能测得该值；在 .cncmacro.toml 的 [skip] 表中给出测头接触的位置即可继续检查"
+    elif tool and not kept and not passed:
         tail = "no tool change (T_ M06) comes before it in this run, so the tool in the spindle is not known here"
         tail_zh = "本次运行中它之前没有换刀（T_ M06），因此这里不知道主轴上的刀具"
     elif inputs and not kept and not passed and not tool:
