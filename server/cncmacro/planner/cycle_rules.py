@@ -262,9 +262,9 @@ def shape_findings(
         if beyond:
             out.append(CycleFinding(A.SHAPE_PAST_START, PAST_START, None,
                                     detail(f"{c}: the shape goes past the start point along {across_name} at its move "
-                                           f"{beyond[0] + 1} (a warning: on a control with the check on, PS0322)",
+                                           f"{beyond[0] + 1} (a warning: a control with the check on stops there)",
                                            f"{c}：形状在第 {beyond[0] + 1} 个移动处沿 {across_name} 超出了循环起点"
-                                           "（警告：系统打开该检查时为 PS0322）"),
+                                           "（警告：系统打开该检查时在此停止）"),
                                     False))  # fmt: skip
     return out
 

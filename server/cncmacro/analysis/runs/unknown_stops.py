@@ -136,8 +136,9 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     else:
         which, which_zh = "on " + " and ".join(parts), "和".join(parts_zh)
     if probed and not kept and not passed and not tool and not inputs:
-        tail = ("only the machine finds it; a [skip] table in .cncmacro.toml says where the probe touches, to check "
-                "further")
+        tail = (
+            "only the machine finds it; a [skip] table in .cncmacro.toml says where the probe touches, to check further"
+        )
         tail_zh = "只有机床能测得该值；在 .cncmacro.toml 的 [skip] 表中给出测头接触的位置即可继续检查"
     elif tool and not kept and not passed:
         tail = "no tool change (T_ M06) comes before it in this run, so the tool in the spindle is not known here"
