@@ -86,3 +86,12 @@ def test_g92_1_cancels_the_g92_shift_without_a_move(tmp_path: Path) -> None:
     assert [(mv["line"], mv["from"]["X"], mv["from"]["Y"]) for mv in result["moves"]] == [
         (2, 0.0, 0.0), (4, 0.0, 0.0), (6, 30.0, 0.0)]  # fmt: skip
     assert ends(result, "X", "Y") == [(20.0, 0.0), (10.0, 0.0), (5.0, 5.0)]
+
+
+def test_g50_3_presets_a_lathes_work_coordinates(tmp_path: Path) -> None:
+    # the 0i-TF's preset (system A): G50 X0 Z0 at X40 Z10 shifts, G50.3 X0 Z0 takes it back
+    program = lines("O0001 (cncmacro: dialect=fanuc-0i-lathe)", "G00 X40. Z10.", "G50 X0 Z0", "G50.3 X0 Z0",
+                    "G00 X50.", "M30")  # fmt: skip
+    result = run_json(tmp_path, program, "O0001.nc")
+    assert result["status"] == "completed"
+    assert [(mv["from"]["X"], mv["from"]["Z"]) for mv in result["moves"]] == [(0.0, 0.0), (40.0, 10.0)]

@@ -114,3 +114,19 @@ def test_the_manuals_codes_are_known_to_the_checker(tmp_path: Path) -> None:
     )  # fmt: skip
     code, out, _ = cli("check", str(program))
     assert (code, out) == (0, "")
+
+
+def test_g52_takes_u_and_w_as_x_and_z(tmp_path: Path) -> None:
+    # §3.19: "绝对代码或相对代码指定时执行的结果一样", and G52 U0 W0 cancels: the same as X, Z
+    result = run_gsk(tmp_path, "G00 X50. Z5.", "G52 U10. W10.", "G01 X40. Z0 F100", "G52 U0 W0", "G00 X60.")
+    cut = result["moves"][1]
+    assert (xz(cut["from"]), xz(cut["to"])) == ((40.0, -5.0), (40.0, 0.0))
+    assert xz(result["moves"][2]["to"]) == (60.0, 10.0)
+
+
+def test_g33_cuts_one_start_where_l_is_left_out(tmp_path: Path) -> None:
+    # §3.24.5: "省略 L 时默认为 1 头": L is not kept from the G33 before (each 80 mm at 450 mm/min)
+    result = run_gsk(tmp_path, "G97 S300 M03", "G00 X0 Z90.", "G33 Z50. F1.5 L2", "G33 Z50.")
+    assert [mv["time"] for mv in result["moves"] if mv["mode"] == "G33"] == pytest.approx(
+        [2 * 80 / 450 * 60, 80 / 450 * 60]
+    )

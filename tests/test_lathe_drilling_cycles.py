@@ -81,3 +81,31 @@ def test_gsk_drilling_pecks_from_the_start_point(tmp_path: Path, mode: str, seco
     [hole] = holes(result, "G83")
     assert hole["time"] == pytest.approx(seconds)
     assert (hole["to"]["Z"], result["moves"][-1]["from"]["Z"]) == (-20.0, 2.0)  # back at the start
+
+
+def test_gsk_rigid_tapping_goes_in_and_out_at_the_lead(tmp_path: Path) -> None:
+    # §3.24.6's own example: G88 X-50 P3000 F2 from X50 at S1000, under G98: F2 is the lead, so
+    # 50 mm of radius in and out at 2 x 1000 = 2000 mm/min (1.5 s each) and the 3 s dwell; I16
+    # (threads per inch) on G84: a lead of 25.4 / 16, 30 mm in and out at S1000 = 2 x 1.134 s, and
+    # the dwell P3000, which stays in force with the cycle's data
+    result = run_lathe(tmp_path, "gsk980tdi", "G98 G97 S1000 M03", "G0 X50 Z0", "G88 X-50 P3000 F2", "G80",
+                       "G0 X0 Z2.", "G84 Z-28. I16", "G80")  # fmt: skip
+    [side] = holes(result, "G88")
+    [face] = holes(result, "G84")
+    assert side["time"] == pytest.approx(1.5 + 3.0 + 1.5)
+    assert face["time"] == pytest.approx(2 * 30 / (25.4 / 16 * 1000) * 60 + 3.0)
+
+
+def test_each_drilling_axis_keeps_its_own_bottom(tmp_path: Path) -> None:
+    # a face hole to Z-20, a side hole to X20, then a face hole by C alone: it drills to Z-20 again
+    result = run_lathe(tmp_path, "fanuc-0i-lathe", "G98 G97 S800 M03", "G00 X0 Z5. C0", "G83 Z-20. R-2. F100.",
+                       "G80", "G00 X60. Z-10.", "G87 X20. R-2. F100.", "G80", "G00 X0 Z5.", "G83 R-2. C90.",
+                       "G80")  # fmt: skip
+    assert [(mv["to"]["Z"], mv["to"]["C"]) for mv in holes(result, "G83")] == [(-20.0, 0.0), (-20.0, 90.0)]
+
+
+def test_a_30i_lathe_drills_as_the_0i_tf(tmp_path: Path) -> None:
+    result = run_json(tmp_path, lines("O0001", "G98 G97 S800 M03", "G00 X0 Z5.", "G83 Z-30. R-3. F80.", "G80", "M30"),
+                      "O0001.nc", machine_file='dialect = "fanuc-30i"\nlathe = true\n')  # fmt: skip
+    [hole] = holes(result, "G83")
+    assert hole["time"] == pytest.approx(0.012 + 24.0 + 0.14)  # as the first test's hole

@@ -81,11 +81,13 @@ HAAS_DRILL_CYCLES: dict[float, DrillCycle] = {
 
 @dataclass(frozen=True)
 class LatheDrill:
-    """A lathe's drilling cycle: the axis it drills along (Z on the face, X on the side) and how
-    it cuts there (``DrillCycle``)."""
+    """A lathe's drilling cycle: the axis it drills along (Z on the face, X on the side), how it
+    cuts there (``DrillCycle``), and whether its F is the tap's lead (per revolution, whatever
+    G98/G99 says, I threads per inch: GSK980TDi §3.24.6, "F（I）：螺纹的导程")."""
 
     axis: str
     cycle: DrillCycle
+    lead: bool = False
 
 
 @dataclass(frozen=True)
@@ -115,13 +117,14 @@ FANUC_LATHE_DRILLING = LatheDrilling(
     }
 )
 # GSK980TDi §3.23.9 (G83, G87) and §3.24.6 (G84, G88): pecks of Q with a retract of R (J0) or back
-# to the start after each (J1), from where the tool stands and back there
+# to the start after each (J1), from where the tool stands and back there; the rigid taps' F is the
+# lead (their Q, R, J pecking forms are not read: the tap goes in and out at once)
 GSK_LATHE_DRILLING = LatheDrilling(
     {
         83.0: LatheDrill("Z", DrillCycle(cut=SHORT_PECK, dwell=True)),
-        84.0: LatheDrill("Z", DrillCycle(dwell=True, feed_out=True)),
+        84.0: LatheDrill("Z", DrillCycle(dwell=True, feed_out=True), lead=True),
         87.0: LatheDrill("X", DrillCycle(cut=SHORT_PECK, dwell=True)),
-        88.0: LatheDrill("X", DrillCycle(dwell=True, feed_out=True)),
+        88.0: LatheDrill("X", DrillCycle(dwell=True, feed_out=True), lead=True),
     },
     r_point=False,
     default_retract=1.0,

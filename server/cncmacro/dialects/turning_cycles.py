@@ -25,13 +25,15 @@ class SingleCycle:
     the lead, per revolution), whether it is a tapping cycle (``tap``: in to the end point and
     back out to the start, both at the lead per revolution, the spindle reversed between them),
     and the letter of its number of starts (``starts``: a thread of L starts is cut L times;
-    modal, as the cycle's other words)."""
+    modal, as the cycle's other words, unless ``starts_modal`` is off: one start where the block
+    leaves it out)."""
 
     first: str
     rapid_out: bool = False
     thread: bool = False
     tap: bool = False
     starts: str | None = None
+    starts_modal: bool = True
 
 
 LATHE_SINGLE_CYCLES: dict[float, SingleCycle] = {
@@ -48,7 +50,7 @@ GSK_SINGLE_CYCLES: dict[float, SingleCycle] = {
     92.1: SingleCycle("X", rapid_out=True, thread=True, starts="L"),
     92.3: SingleCycle("X", rapid_out=True, thread=True),
     94.0: SingleCycle("Z"),
-    33.0: SingleCycle("Z", thread=True, tap=True, starts="L"),
+    33.0: SingleCycle("Z", thread=True, tap=True, starts="L", starts_modal=False),  # "省略 L 时默认为 1 头"
 }
 
 

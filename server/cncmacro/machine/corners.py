@@ -3,7 +3,9 @@
 FANUC's optional chamfering and corner R (``G01 X50. ,R5.``, ``G02 ... ,C3.``), Haas corner
 rounding and chamfering, and FANUC's ``,A`` angle of direct drawing dimension programming. The
 simulator runs the move as written and inserts no chamfer or arc: the toolpath keeps the sharp
-corner. The values are still computed when the block runs, in the address rules, so that what
+corner. A move that names one coordinate of the plane and an angle (``G01 X30. ,A135.``) goes
+at that angle to the other coordinate (``Planner.block_angle``, ``planner/angled_moves.py``).
+The values are still computed when the block runs, in the address rules, so that what
 goes wrong in them (a vacant argument read, a division by zero, a variable that does not exist)
 is found where it is written. What the static check says of them is ``corner_findings``'s.
 """
@@ -29,10 +31,27 @@ INTERPOLATION = (1.0, 2.0, 3.0)
 
 def with_corners(cf: CompiledFile, block: Block, run: Runner) -> Runner:
     """``run`` preceded by computing the block's corner values that are not literal numbers (the
-    literal ones need nothing)."""
+    literal ones need nothing); an angle ``,A`` is handed to the planner for the block's move
+    (``Planner.block_angle``: a move that names one coordinate of the plane goes at that angle)."""
+    angle = next((c for c in block.corners if c.letter == "A"), None)
     getters: list[Getter] = [
-        cf.addresses.value(c.value) for c in block.corners if not cf.addresses.constant(c.value)[0]
+        cf.addresses.value(c.value) for c in block.corners if c is not angle and not cf.addresses.constant(c.value)[0]
     ]
+    if angle is not None:
+        known, literal = cf.addresses.constant(angle.value)
+        get_angle = None if known else cf.addresses.value(angle.value)
+
+        def angled(m: Any, pc: int) -> int:
+            for get in getters:
+                get(m)
+            p = m.planner
+            p.block_angle = literal if get_angle is None else get_angle(m)
+            try:
+                return run(m, pc)
+            finally:
+                p.block_angle = None
+
+        return angled
     if not getters:
         return run
 

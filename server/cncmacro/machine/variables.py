@@ -22,6 +22,7 @@ from .unknown_values import KEPT_GROUPS, UNKNOWN, is_input_row, kept_extended
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
+    from ..library.machine_file import MachineSettings
     from ..planner.planner import Planner
     from .expressions import VariableKinds
 
@@ -99,6 +100,7 @@ class VariableAccess:
     C: list[Value]
     S: dict[int, Value]
     planner: Planner
+    settings: MachineSettings
     kept_unknown: bool
     start_date: int
     start_time: int

@@ -17,9 +17,10 @@ FANUC 0i-TF (G-code system A), "canned cycle for drilling", ``G83 X(U) C(H) Z(W)
 GSK980TDi §3.23.9, ``G83 X(U) C(H) Z(W) P Q R F K J``: there is no R point. The cycle drills
 from where the hole is positioned, in pecks of Q each followed by a rapid retract of R (J0, R 1 mm
 when left out, a radius) or by a rapid back to the start and down again to R short of the depth
-reached (J1), dwells P and rapids back to the start.
+reached (J1), dwells P and rapids back to the start. Its rigid taps G84/G88 (§3.24.6) go in and
+out at the lead F (I threads per inch) per revolution.
 
-Q, P, R (and J) stay in force with the cycle, the bottom too; K drills the block's hole K times
+Q, P, R (and J) stay in force with the cycle, each axis's bottom too; K drills the block's hole K times
 (under U, H each time on by them). Each hole is recorded as one move with its legs and time, as a
 mill's (drill_cycles.py); the tool ends at the return level over the hole.
 """
@@ -33,7 +34,7 @@ from .cycle_time import INCH, RAPID_STEP
 from .drill_cycles import CYCLE_P, CYCLE_Q, hole_legs, hole_steps, repeat_count
 from .machine_limits import leaves_travel, program_bounds
 from .moves import DRILLING, Move
-from .turning_cycles import in_increments
+from .turning_cycles import THREAD_MODE, in_increments
 
 if TYPE_CHECKING:
     from ..dialects.drill_cycles import LatheDrilling
@@ -59,10 +60,11 @@ def lathe_drill_block(
             codes[key] = other[letter]
     place = {i: v for i, v in axes.items() if i != axis}
     place_inc = {i: v for i, v in inc.items() if i != axis}
+    bottom, depth = f"{LATHE_BOTTOM} {spec.axis}", f"{LATHE_DEPTH} {spec.axis}"  # each axis its own
     if axis is not None and axis in axes:
-        codes[LATHE_BOTTOM], codes[LATHE_DEPTH] = axes[axis], None
+        codes[bottom], codes[depth] = axes[axis], None
     elif axis is not None and axis in inc:
-        codes[LATHE_BOTTOM], codes[LATHE_DEPTH] = None, inc[axis]
+        codes[bottom], codes[depth] = None, inc[axis]
     repeats = repeat_count(other.get("K"), "K")
     if axis is None:  # no drilling axis on this machine: the holes are only positioned
         for _ in range(repeats):
@@ -87,7 +89,7 @@ def _hole(
         r_level = initial + scale * (codes.get(LATHE_R) or 0.0)
     else:  # GSK: from where the hole is positioned
         initial = r_level = hole[axis]
-    absolute, depth = codes.get(LATHE_BOTTOM), codes.get(LATHE_DEPTH)
+    absolute, depth = codes.get(f"{LATHE_BOTTOM} {spec.axis}"), codes.get(f"{LATHE_DEPTH} {spec.axis}")
     bottom = absolute if absolute is not None else r_level + depth if depth is not None else r_level
     cycle, retract, clearance = _cut_of(p, data, spec.cycle)
     q = in_increments(p, abs(codes.get(CYCLE_Q) or 0.0))
@@ -99,7 +101,12 @@ def _hole(
     unit = INCH if p.modal.get("units") == 20.0 else 1.0
     times = p.times
     feed = codes.get("F") or 0.0
-    rate = p.cutting_rate(feed, at_r, at_bottom, unit)
+    if spec.lead:  # a tap's F is its lead: per revolution whatever G98/G99 says
+        length = times.distance(at_r, at_bottom)
+        took = p.feed_seconds(THREAD_MODE, length, feed, at_r, at_bottom, unit)
+        rate = length / took * 60.0 if took > 0.0 else 0.0
+    else:
+        rate = p.cutting_rate(feed, at_r, at_bottom, unit)
     # a rapid's time per program unit along the axis (a diameter along X), the feed's per travel
     steps = [(kind, length * scale if kind == RAPID_STEP else length) for kind, length in steps]
     seconds, cut, rapid = times.cycle_seconds(steps, axis, axis, rate, unit)

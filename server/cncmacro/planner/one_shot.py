@@ -61,8 +61,8 @@ def one_shot(
                 raise stop[1]
         p.move(file, line, mode, target)
         return bool(axes), None
-    if g == p.dialect.local_coordinate_code:
-        local_coordinates(p, axes)
+    if g == p.dialect.local_coordinate_code:  # U, W as X, Z: "绝对代码或相对代码指定时执行的结果一样" (GSK §3.19)
+        local_coordinates(p, {**inc, **axes})
         return False, None
     if g == p.dialect.coordinate_setting_code:
         for i, v in axes.items():

@@ -22,6 +22,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from ..bilingual import detail
+from .angled_moves import angled_end
 from .arc_checks import arc_finding
 from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
@@ -99,6 +100,7 @@ class Planner:
             self.g_groups = {**self.g_groups, **dict.fromkeys(self.extra_codes, "wcs")}
         self.plain = shared_plain_words(dialect, settings, self.g_groups, self.axis_index)
         self.cycle_codes = dialect.cycle_codes
+        self.block_angle: float | None = None  # a block's ,A, while it runs (machine/corners.py)
         # the motion modes whose moves a plain line cannot make: a variable-lead thread (its own
         # word), a three-point arc, an ellipse or a parabola (their own words), a thread where I
         # may give its threads per inch: ``execute_nc``'s
@@ -201,7 +203,8 @@ class Planner:
                 return self._cycle_fallback(plan, file, line)
             return False
         mode = modal["motion"]
-        if mode in self.cycle_codes or mode in self.own_path_modes or (modal["canned"] != 80.0 and self.drills):
+        if (mode in self.cycle_codes or mode in self.own_path_modes or (modal["canned"] != 80.0 and self.drills)
+                or self.block_angle is not None):  # fmt: skip
             return self._cycle_fallback(plan, file, line)
         if self.shape is not None:
             self._shape_axes(frozenset(i for i, _ in axes) | frozenset(i for i, _ in inc))
@@ -294,6 +297,8 @@ class Planner:
         if self.shape is not None:
             self._shape_axes(frozenset(axes) | frozenset(incremental))
         target = self.target(axes, incremental)
+        if self.block_angle is not None and mode in (0.0, 1.0):  # G01 X30. ,A135. (angled_moves.py)
+            self._angled(target, {*axes, *incremental}, self.block_angle)
         if canned != 80.0 and self.drills:
             drilling = self.dialect.lathe_drilling
             if drilling is None:
@@ -361,6 +366,12 @@ class Planner:
             return None
         return self.checked_arc(mode, self.pos, target, other, line)
 
+    def _angled(self, target: list[float], named: set[int], angle: float) -> None:
+        """The coordinate of the plane a block with ``,A`` leaves out, from the one it names."""
+        plane = self._arc_planes.get(self.modal.get("plane", 17.0))
+        if plane is not None:
+            angled_end(plane, self._diameter, self.pos, target, named, angle)
+
     def _block_values(self, one: float | None, axes: dict[int, float], other: dict[str, float]) -> None:
         """Words that are values in this block's mode: an ellipse's A, B, Q and a parabola's P, Q
         are never an axis word (``Dialect.motion_value_letters``: moved from ``axes`` to
@@ -385,7 +396,11 @@ class Planner:
             return one == 76.0 and 76.0 in self.cycle_codes
         mode = self.modal.get("motion", 0.0)
         single = self.dialect.single_cycles.get(mode)
-        return mode in self.times.thread_modes or (single is not None and single.thread)
+        drilling = self.dialect.lathe_drilling
+        tap = drilling.cycles.get(mode) if drilling is not None else None
+        return (
+            mode in self.times.thread_modes or (single is not None and single.thread) or (tap is not None and tap.lead)
+        )
 
     def _three_point(
         self, mode: float, target: list[float], other: dict[str, float]

@@ -108,7 +108,8 @@ def single_cycle_target(
     words = {"G": code, "R": taper, **dict(zip(names, target, strict=True))}
     single = p.dialect.single_cycles.get(code)
     if single is not None and single.starts is not None:  # a thread's starts (L), modal with the rest
-        words[STARTS] = other.get(single.starts, kept.get(STARTS, 1.0) if same else 1.0)
+        kept_starts = kept.get(STARTS, 1.0) if same and single.starts_modal else 1.0
+        words[STARTS] = other.get(single.starts, kept_starts)
     p.cycle_params[SINGLE_CYCLE_WORDS] = words
     return target, taper
 

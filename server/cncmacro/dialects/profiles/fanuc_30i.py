@@ -353,6 +353,7 @@ LATHE = _MILL.configured(
     coordinate_setting_code=FANUC_0I_LATHE.coordinate_setting_code,
     cycle_codes=FANUC_0I_LATHE.cycle_codes,
     drill_cycles=FANUC_0I_LATHE.drill_cycles,
+    lathe_drilling=FANUC_0I_LATHE.lathe_drilling,
     single_cycles=FANUC_0I_LATHE.single_cycles,
     lathe_cycles=FANUC_0I_LATHE.lathe_cycles,
     cycle_rules=FANUC_0I_LATHE.cycle_rules,

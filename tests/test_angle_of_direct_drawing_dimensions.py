@@ -1,0 +1,45 @@
+"""FANUC's direct drawing dimension programming: a straight move that names one coordinate of the
+plane and an angle ``,A`` goes at that angle, measured from the plane's first axis toward its
+second (G18: from +Z toward +X; G17: from +X toward +Y), to the coordinate it leaves out
+(docs/semantics.md §8, "Chamfer and corner words"; planner/angled_moves.py). On a lathe X is a
+diameter: the angle is of the radius's change. A block that names both coordinates moves as
+written."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from cli_capture import run_json
+from running import lines
+
+
+def ends(result: dict[str, Any], *axes: str) -> list[tuple[float, ...]]:
+    return [tuple(round(mv["to"][a], 6) for a in axes) for mv in result["moves"]]
+
+
+def test_a_lathe_move_at_an_angle_from_z(tmp_path: Path) -> None:
+    # from X20 Z0: X30 ,A135 is 5 mm out on the radius at 135 deg from +Z: 5 mm toward -Z (Z-5);
+    # X50 ,A120: 10 mm out, 10 / tan 120 = -5.7735 along Z (Z-10.7735); Z-40 ,A180: X stays
+    program = lines("O0001 (cncmacro: dialect=fanuc-0i-lathe)", "G98 G00 X20. Z0", "G01 X30. ,A135. F100",
+                    "X50. ,A120.", "Z-40. ,A180.", "M30")  # fmt: skip
+    result = run_json(tmp_path, program, "O0001.nc")
+    z2 = -5.0 - 10.0 / math.tan(math.radians(60.0))
+    assert ends(result, "X", "Z") == [(20.0, 0.0), (30.0, -5.0), (50.0, round(z2, 6)), (50.0, -40.0)]
+    # the first cut: 5 mm along each of the radius and Z, 7.071 mm at F100 -> 4.243 s
+    assert result["moves"][1]["time"] == pytest.approx(math.hypot(5.0, 5.0) / 100 * 60)
+
+
+def test_a_mill_move_at_an_angle_from_x_and_an_angle_from_a_variable(tmp_path: Path) -> None:
+    # X10 ,A30 from X0 Y0: Y = 10 tan 30 = 5.7735; Y20 ,A#1 with #1 = 90: X stays 10
+    program = lines("O0001", "G90 G17 G00 X0 Y0 Z5.", "#1=90.", "G01 X10. ,A30. F600", "Y20. ,A#1", "M30")
+    result = run_json(tmp_path, program)
+    assert ends(result, "X", "Y") == [(0.0, 0.0), (10.0, round(10 * math.tan(math.radians(30)), 6)), (10.0, 20.0)]
+
+
+def test_a_block_with_both_coordinates_moves_as_written(tmp_path: Path) -> None:
+    program = lines("O0001", "G90 G17 G00 X0 Y0", "G01 X10. Y3. ,A30. F600", "M30")
+    assert ends(run_json(tmp_path, program), "X", "Y") == [(0.0, 0.0), (10.0, 3.0)]
