@@ -101,6 +101,10 @@ class Planner:
         self.plain = shared_plain_words(dialect, settings, self.g_groups, self.axis_index)
         self.cycle_codes = dialect.cycle_codes
         self.block_angle: float | None = None  # a block's ,A, while it runs (machine/corners.py)
+        # the G codes whose blocks' axis words are values (G22's limits, G68's centre: VALUE_GROUPS)
+        self._value_codes = frozenset(g for g, group in self.g_groups.items() if group in VALUE_GROUPS)
+        self._values_in_block = bool(dialect.motion_value_letters) or dialect.lathe_cycles.threads_per_inch is not None
+        self._three_points = dialect.three_point_arcs
         # the motion modes whose moves a plain line cannot make: a variable-lead thread (its own
         # word), a three-point arc, an ellipse or a parabola (their own words), a thread where I
         # may give its threads per inch: ``execute_nc``'s
@@ -272,14 +276,15 @@ class Planner:
                 if key is not None:
                     codes[key] = v
         one = set_modal(self, gs, other, line)
-        self._block_values(one, axes, other)
+        if self._values_in_block:  # an ellipse's letters, a thread's threads per inch (GSK)
+            self._block_values(one, axes, other)
         if self.lathe and one == self.dialect.coordinate_setting_code and "S" in other:
             # G50 S is the spindle speed clamp (docs/semantics.md §10.4), not a spindle speed
             self.codes[SPEED_CLAMP] = other["S"]
             set_codes(self, {k: v for k, v in other.items() if k != "S"}, file, line)
         else:
             set_codes(self, other, file, line)
-        if (axes or incremental) and any(self.g_groups.get(g) in VALUE_GROUPS for g in gs):
+        if gs and (axes or incremental) and not self._value_codes.isdisjoint(gs):
             # G22 X_ Z_ I_ K_: the stored stroke check's limits (FANUC 0i-TF and GSK980TDi manuals,
             # "stored stroke check"); G68 X_ Y_ R_, G51 X_ Y_ P_, G51.1 X_: the centre of the
             # rotation, scaling, mirror image. Not a move; none of them is simulated (§8)
@@ -312,7 +317,7 @@ class Planner:
             else:
                 self.turning_cycle(file, line, mode, axes, incremental, other)
             return True, None  # a turning cycle ends where it started
-        three_point = self._three_point(mode, target, other)
+        three_point = self._three_point(mode, target, other) if mode in self._three_points else None
         if three_point is not None:  # G05/G05.1: an arc through the block's point (three_point_arcs.py)
             self.move(file, line, three_point[0], target, three_point[1])
             return True, None
