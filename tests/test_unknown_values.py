@@ -191,3 +191,15 @@ def test_a_skip_table_says_where_the_probe_touches(tmp_path: Path) -> None:
     code, found = check(tmp_path, PROBE_GUARD, '[skip]\ncontacts = ["miss"]\n')
     assert code == 0
     assert "8:1: warning: the run reaches macro alarm 3001: PROBE DID NOT TRIGGER [macro-alarm]" in found
+
+
+def test_a_value_read_through_an_indirect_number_is_named_as_such(tmp_path: Path) -> None:
+    # the tool is known after T2 M06; the unknown is the length offset #11002 read through #[11000+#11]
+    text = "O0100\nT2 M06\n#11=#4120\n#12=#[11000+#11]\nIF [#12 GT -50.] GOTO 10\nG00 X0\nN10 M30\n"
+    code, found = check(tmp_path, text)
+    assert code == 0
+    assert found == [
+        "5:1: hint: the analysis run stops here: this block depends on a value read through #[...] (line 4), a "
+        "variable whose number the run works out (an offset or a common the machine keeps); set it under "
+        "[variables] in .cncmacro.toml (or in the persistent file it names) to check further [unknown-value]"
+    ]

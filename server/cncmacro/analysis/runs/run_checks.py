@@ -42,6 +42,7 @@ one is dropped and the interval doubled.
 
 from __future__ import annotations
 
+import math
 import time
 from bisect import bisect_left
 from collections.abc import Callable, Container, Iterable
@@ -515,6 +516,15 @@ def _records_before(st: RunState, at: int, cut: int) -> RunState:
 # ---------------------------------------------------------------- diagnostics of a run
 
 
+def _still_unknown(m: Machine, n: int) -> bool:
+    """Whether ``#n`` reads unknown where the run stopped (what cannot be read counts as unknown)."""
+    try:
+        value = m.read(float(n))
+    except Exception:  # a number the control refuses to read: nothing to tell from it
+        return True
+    return isinstance(value, float) and math.isnan(value)
+
+
 def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], str], locale: str) -> Diagnostic:
     """The alarm the run stopped with, as a diagnostic of ``code``."""
     m = run.machine
@@ -523,7 +533,7 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
     if a.subject == UNKNOWN_VALUE:
         ran = sorted((line for line in run.state.first.get(a.file, {}) if line < a.line), reverse=True)
         en, zh = unknown_value_text(line_text(a.file, a.line), ((n, line_text(a.file, n)) for n in ran), m.kinds,
-                                    m.dialect, run.as_macro)  # fmt: skip
+                                    m.dialect, run.as_macro, lambda n: _still_unknown(m, n))  # fmt: skip
     elif code == MACRO_ALARM:
         en = f"the run reaches macro {a.words()}: {a.message}"
         zh = f"运行到宏程序{a.words('zh')}：{in_language(a.message, True)}"

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import logging
 import re
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 
 from ...dialects import Dialect
 from ...library.machine_file import MachineFileError, MachineSettings
@@ -82,24 +82,22 @@ def named_persistent_values(settings: MachineSettings) -> dict[int, float]:
 
 
 def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: VariableKinds,
-                       dialect: Dialect, arguments: bool) -> tuple[str, str]:  # fmt: skip
+                       dialect: Dialect, arguments: bool,
+                       unknown: Callable[[int], bool] = lambda n: True) -> tuple[str, str]:  # fmt: skip
     """The note (English, Chinese) for a run stopped on block ``text`` by an unknown value. It
     names at most three variables the block's value comes from: the block's own that no
     ``earlier`` block (that ran before it in its file: (line, text), nearest first) assigned,
     and through each ``#n=...`` of those blocks, the variables of its expression, with its line;
     the ones the machine keeps and, in a macro checked without its caller (``arguments``), the
-    arguments #1–#33 a call would pass."""
-    own = assigned(text)
-    wanted: dict[int, int | None] = dict.fromkeys(variables_in(own[1] if own else text))  # variable -> its line
-    for line, before in earlier:
-        a = assigned(before)
-        if a is not None and a[0] in wanted:
-            del wanted[a[0]]
-            for n in variables_in(a[1]):
-                wanted.setdefault(n, line)
+    arguments #1–#33 a call would pass, each of them still ``unknown`` where the run stopped (a
+    tool number the program has set since is not). Where the value was read through ``#[...]``,
+    whose number only the run knows, and no such variable is left, the note names that read."""
+    wanted, through = _sources(text, earlier)
     named = [(n, line) for n, line in wanted.items()
-             if is_kept(n, kinds, dialect) or is_input(n, dialect) or is_skip_position(n, dialect)
-             or (arguments and 1 <= n <= 33)]  # fmt: skip
+             if (is_kept(n, kinds, dialect) or is_input(n, dialect) or is_skip_position(n, dialect)
+                 or (arguments and 1 <= n <= 33)) and unknown(n)]  # fmt: skip
+    if not named and through is not False:
+        return _read_through(through)
     kept = [(n, line) for n, line in named[:3] if not 1 <= n <= 33]
     passed = [(n, line) for n, line in named[:3] if 1 <= n <= 33]
     parts, parts_zh = [], []
@@ -162,6 +160,40 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
         )
     return (f"the analysis run stops here: this block depends {which}; {tail}",
             f"分析运行在此停止：本程序段取决于{which_zh}；{tail_zh}")  # fmt: skip
+
+
+def _sources(text: str, earlier: Iterable[tuple[int, str]]) -> tuple[dict[int, int | None], int | bool | None]:
+    """The variables block ``text``'s value comes from (variable -> the line of the assignment
+    that reads it, None for the block's own), through the assignments of ``earlier``; and where a
+    ``#[...]`` read comes in: False for none, None in the block itself, else the line."""
+    own = assigned(text)
+    expression = own[1] if own else text
+    wanted: dict[int, int | None] = dict.fromkeys(variables_in(expression))
+    through: int | bool | None = None if "#[" in expression else False
+    for line, before in earlier:
+        a = assigned(before)
+        if a is not None and a[0] in wanted:
+            del wanted[a[0]]
+            if through is False and "#[" in a[1]:
+                through = line
+            for n in variables_in(a[1]):
+                wanted.setdefault(n, line)
+    return wanted, through
+
+
+def _read_through(line: int | bool | None) -> tuple[str, str]:
+    """The note of a stop on a value read through ``#[...]`` (on ``line``; None: the block's own)."""
+    at = line if isinstance(line, int) and not isinstance(line, bool) else None
+    where = f" (line {at + 1})" if at is not None else ""
+    where_zh = f"（第 {at + 1} 行）" if at is not None else ""
+    return (
+        f"the analysis run stops here: this block depends on a value read through #[...]{where}, a variable whose "
+        "number the run works out (an offset or a common the machine keeps); set it under [variables] in "
+        ".cncmacro.toml (or in the persistent file it names) to check further",
+        f"分析运行在此停止：本程序段取决于经 #[...] 读取的值{where_zh}，其变量号在运行时算出"
+        "（机床上保存的补偿值或公共变量）；在 .cncmacro.toml 的 [variables]"
+        "（或它指定的断电保持变量文件）中给出即可继续检查",
+    )
 
 
 def unknown_stop(m: Machine) -> list[tuple[str, int]]:
