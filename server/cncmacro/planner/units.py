@@ -40,10 +40,10 @@ def unit_change(p: Planner, g: float, line: int) -> None:
     p.host.note(
         "units",
         detail(f"{now} changes the unit from {length_unit(current)} to {length_unit(g)} after the program has "
-               f"moved in {was}: FANUC has G20/G21 at the start of the program, before the coordinate system is "
+               f"moved in {was}: G20/G21 belong at the start of the program, before the coordinate system is "
                "set; the positions and offsets set before are read in the new unit from here",
                f"程序已按 {was} 移动后，{now} 把单位从 {length_unit(current)} 改为 {length_unit(g)}："
-               "FANUC 要求 G20/G21 在程序开头、设定坐标系之前指定；此前设定的位置和补偿从这里起按新单位读取"),
+               "G20/G21 应在程序开头、设定坐标系之前指定；此前设定的位置和补偿从这里起按新单位读取"),
         line,
         "unit-change",
     )  # fmt: skip
