@@ -245,6 +245,30 @@ def check_o2016(r: dict[str, Any]) -> None:
     assert len([m for m in r["moves"] if m.get("pass_of") == "G71" and m["mode"] == "G01"]) == 5 + 4  # levels + shape
 
 
+def check_g83_g84_end_holes(r: dict[str, Any]) -> None:
+    # G83 from Z3 to Z-25 at F80 (G98): 6 pecks of 5 mm, a 1 mm retract after the first five: 33 mm of
+    # feed (24.75 s), 5 + 28 mm of rapids at 8000 (0.2475 s); the taps at 1.5 x 300 = 450 mm/min, 25 mm
+    # in and out: 6.667 s each, and both end where they started, at Z5
+    holes = [(m["mode"], m["time"], m["from"]["Z"]) for m in r["moves"] if m["mode"] in ("G83", "G84", "G33")]
+    assert [(mode, z) for mode, _, z in holes] == [("G83", 3.0), ("G84", 5.0), ("G33", 5.0)]
+    assert [t for _, t, _ in holes] == pytest.approx([24.75 + 0.2475, 50 / 450 * 60, 50 / 450 * 60])
+    after = next(m for m in r["moves"] if m["line"] == 19)  # N170, after the G33
+    assert after["from"]["Z"] == 5.0
+
+
+def check_o2017(r: dict[str, Any]) -> None:
+    # face holes at F120 (G98): from Z5 rapid to R (Z2) 0.012 s, 20 mm in Q4 pecks without a retract
+    # 10 s, P300 0.3 s, back 23 mm 0.092 s; the next three turn C 90 deg first (0.5 s at 10,800/min)
+    face = [(m["to"]["C"], m["time"]) for m in r["moves"] if m["mode"] == "G83"]
+    assert [c for c, _ in face] == [0.0, 90.0, 180.0, 270.0]
+    assert [t for _, t in face] == pytest.approx([10.404, 10.904, 10.904, 10.904])
+    # cross holes from X90: R-5 (a radius) to X80 0.025 s, 20 mm of radius at F100 12 s, P200 0.2 s,
+    # back 25 mm 0.125 s; the second turns C 180 deg first (1 s)
+    side = [(m["to"]["X"], m["to"]["C"], m["time"]) for m in r["moves"] if m["mode"] == "G87"]
+    assert [(x, c) for x, c, _ in side] == [(40.0, 0.0), (40.0, 180.0)]
+    assert [t for _, _, t in side] == pytest.approx([12.35, 13.35])
+
+
 MAINS: dict[Path, Callable[[dict[str, Any]], None]] = {
     GSK / "g71_stepped_shaft.cnc": check_g71_stepped_shaft,
     GSK / "g71_id_bushing.cnc": check_g71_id_bushing,
@@ -261,6 +285,7 @@ MAINS: dict[Path, Callable[[dict[str, Any]], None]] = {
     GSK / "wear_offset_update.cnc": check_wear_offset_update,
     GSK / "g65_h_face_passes.cnc": check_g65_h_face_passes,
     GSK / "pname_partoff.cnc": check_pname_partoff,
+    GSK / "g83_g84_end_holes.cnc": check_g83_g84_end_holes,
     FANUC_T / "O2001.nc": check_o2001,
     FANUC_T / "O2002.nc": check_o2002,
     FANUC_T / "O2003.nc": check_o2003,
@@ -277,6 +302,7 @@ MAINS: dict[Path, Callable[[dict[str, Any]], None]] = {
     FANUC_T / "O2014.nc": check_o2014,
     FANUC_T / "O2015.nc": check_o2015,
     FANUC_T / "O2016.nc": check_o2016,
+    FANUC_T / "O2017.nc": check_o2017,
 }
 
 # Programs waiting for a feature of the simulated lathe, with what each waits for (their tests are
