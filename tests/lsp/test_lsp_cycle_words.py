@@ -218,3 +218,37 @@ async def test_completion_leaves_out_the_letters_the_block_has(gsk_en: LanguageC
     letters = [i.label for i in items if i.kind == types.CompletionItemKind.Field]
     assert letters == ["U", "W", "F", "S", "T", "K", "J"]  # P and Q are written
     assert help_ is not None and help_.active_parameter == 2  # U(Δu)
+
+
+DRILLING = (
+    "O0003\n"
+    "G00 X60. Z5. C0\n"  # 2
+    "G83 Z-18. R-3. Q4000 P300 F120.\n"  # 3: R at 10, Q at 15
+    "G80\n"
+    "G84 Z-20. F1.5\n"  # 5: F at 10
+    "G80\n"
+    "M30\n"
+)
+
+
+async def test_a_lathe_drilling_cycles_letters_differ_by_control(
+    fanuc_en: LanguageClient, gsk_en: LanguageClient, gsk_zh: LanguageClient
+) -> None:
+    # FANUC 0i-TF: R is the distance to the R point, Q the peck in increments; GSK980TDi: R is the
+    # retract after each peck, and the rigid tap's F is its lead whatever G98/G99 says
+    uri = open_file(fanuc_en, FANUC / "drill.nc", FANUC_LATHE + DRILLING)
+    r = await hover_at(fanuc_en, uri, 3, 10)
+    q = await hover_at(fanuc_en, uri, 3, 15)
+    close_file(fanuc_en, uri)
+    assert r.startswith("**G83** — **R**: from the initial level to the R point, signed (along X a radius)")
+    assert q.startswith("**G83** — **Q**: depth of each peck, in least input increments, no decimal point")
+    uri = open_file(gsk_en, GSK / "drill.CNC", DRILLING)
+    r = await hover_at(gsk_en, uri, 2, 10)
+    lead = await hover_at(gsk_en, uri, 4, 10)
+    close_file(gsk_en, uri)
+    assert r.startswith("**G83** — **R**: retract after each peck (mm, a radius; 1 when left out), kept")
+    assert lead.startswith("**G84** — **F(L)**: lead of the tap (per spindle turn, whatever G98/G99)")
+    uri = open_file(gsk_zh, GSK / "drill_zh.CNC", DRILLING)
+    lead = await hover_at(gsk_zh, uri, 4, 10)
+    close_file(gsk_zh, uri)
+    assert lead.startswith("**G84** — **F(L)**: 螺纹导程（主轴每转，与G98/G99无关）")

@@ -375,7 +375,9 @@ def _haas_block(code: str, second: tuple[CycleWord, ...]) -> CycleWords:
 
 
 CYCLE_WORDS: dict[float, CycleWords] = {
-    **lw.FANUC_LATHE_CYCLE_WORDS,
+    # the FANUC lathe's but its drilling cycles (G83-G89 along Z and X), which a Haas lathe writes
+    # otherwise (live tooling G95, G186, ...; not described here)
+    **{code: words for code, words in lw.FANUC_LATHE_CYCLE_WORDS.items() if not 83.0 <= code <= 89.0},
     **by_code(
         _two_or_one(
             "G71",

@@ -6,7 +6,8 @@ Sources: FANUC Series 0i-TF operator's manual (G-code system A), "Multiple repet
 (G70–G76)", "Single fixed cycle (G90, G92, G94)", "Thread cutting (G32)", "Coordinate system
 setting (G50)", "Constant surface speed control (G96, G97)"; GSK980TDi programming manual §3.18
 (G50), §3.22 (G90, G94), §3.23.1–3.23.6 (G71, G72, G73, G70, G74, G75), §3.24.1 (G32), §3.24.9
-(G92), §3.24.12 (G76), §3.25 (G96, G97). Where they differ (docs/profiles.md, "Cycle words"):
+(G92), §3.24.12 (G76), §3.25 (G96, G97), §3.23.9 and §3.24.6 (the drilling cycles and rigid
+taps; FANUC's "canned cycle for drilling"). Where they differ (docs/profiles.md, "Cycle words"):
 
 * the unit of G74/G75's P(Δi) Q(Δk) and G76's Q(Δdmin), P(k), Q(Δd): FANUC takes them in least
   input increments without a decimal point (µm on a metric machine); the GSK980TDi in least
@@ -204,6 +205,61 @@ def _single_cycles(thread_extra: tuple[CycleWord, ...]) -> list[CycleWords]:
     ]
 
 
+def _fanuc_drilling() -> list[CycleWords]:
+    """The 0i-TF's drilling cycles (G-code system A, "canned cycle for drilling"): on the face
+    along Z (G83, G84, G85), on the side along X (G87, G88, G89); docs/semantics.md §10.3."""
+    c = w("C", "", "angle of the hole (the C axis, degrees)", "孔的角度位置（C轴，度）")
+    h = w("H", "", "angle of the hole, incremental (the C axis, degrees)", "孔的角度位置增量（C轴，度）")
+    r = w("R", "", "from the initial level to the R point, signed (along X a radius)",
+          "从初始平面到R点的距离，带符号（沿X轴为半径值）")  # fmt: skip
+    q = _in(FANUC_INCREMENTS, "Q", "", "depth of each peck", "每次钻削深度")
+    pause = w("P", "", "dwell at the bottom (ms)", "孔底暂停时间（毫秒）")
+    feed = w("F", "", "cutting feed (a tap: its lead under G99)", "切削进给速度（攻丝：G99时为螺距）")
+    k = w("K", "", "number of repeats (0: keep the data, drill nothing)", "重复次数（0：只保存数据不钻孔）")
+    face = (w("X", "", "X of the hole (a diameter)", "孔位置的X坐标（直径值）"), c,
+            w("Z", "", "Z of the bottom of the hole", "孔底的Z坐标"),
+            w("W", "", "bottom of the hole: Z from the R point, incremental", "孔底相对R点的Z增量"), h)  # fmt: skip
+    side = (w("Z", "", "Z of the hole", "孔位置的Z坐标"), c,
+            w("X", "", "X of the bottom of the hole (a diameter)", "孔底的X坐标（直径值）"),
+            w("U", "", "bottom of the hole: X from the R point, incremental (a diameter)",
+              "孔底相对R点的X增量（直径值）"), h)  # fmt: skip
+    return [
+        one_block("G83", *face, r, q, pause, feed, k),
+        one_block("G84", *face, r, pause, feed, k),
+        one_block("G85", *face, r, pause, feed, k),
+        one_block("G87", *side, r, q, pause, feed, k),
+        one_block("G88", *side, r, pause, feed, k),
+        one_block("G89", *side, r, pause, feed, k),
+    ]
+
+
+def _gsk_drilling() -> list[CycleWords]:
+    """The GSK980TDi's drilling cycles (§3.23.9) and rigid taps (§3.24.6): from where the hole is
+    positioned, no R point; docs/semantics.md §10.3."""
+    c = w("C", "", "angle of the hole (the C axis, degrees)", "钻孔位置（C轴，度）")
+    q = _in(GSK_INCREMENTS, "Q", "", "depth of each peck (a radius), kept", "每次进刀量（半径值），模态")
+    retract = w("R", "", "retract after each peck (mm, a radius; 1 when left out), kept",
+                "每次进刀后的退刀量（mm，半径值；省略时为1），模态")  # fmt: skip
+    pause = w("P", "", "dwell at the bottom (ms), kept", "孔底暂停时间（毫秒），模态")
+    k = w(
+        "K", "", "number of holes drilled (U, H: each at the next position)", "钻孔重复次数（增量编程时在不同位置钻孔）"
+    )
+    j = w("J", "", "J0: high-speed pecks (retract R); J1: back to the start after each peck",
+          "J0：高速深孔钻（退R）；J1：每次退回钻孔起始位置")  # fmt: skip
+    lead = w("F", "L", "lead of the tap (per spindle turn, whatever G98/G99)", "螺纹导程（主轴每转，与G98/G99无关）")
+    face_hole = (w("X", "", "X of the hole (a diameter)", "钻孔位置X坐标（直径值）"), c,
+                 w("Z", "", "Z of the bottom of the hole", "孔底位置Z坐标"))  # fmt: skip
+    side_hole = (w("Z", "", "Z of the hole", "钻孔位置Z坐标"), c,
+                 w("X", "", "X of the bottom of the hole (a diameter)", "孔底位置X坐标（直径值）"))  # fmt: skip
+    feed = w("F", "", "cutting feed", "切削进给速度")
+    return [
+        one_block("G83", *face_hole, pause, q, retract, feed, k, j),
+        one_block("G87", *side_hole, pause, q, retract, feed, k, j),
+        one_block("G84", *face_hole, pause, lead, THREADS_PER_INCH, k),
+        one_block("G88", *side_hole, pause, lead, THREADS_PER_INCH, k),
+    ]
+
+
 def _spindle(g50_extra: tuple[CycleWord, ...]) -> list[CycleWords]:
     """G50 (coordinates, spindle clamp), G96, G97."""
     return [
@@ -238,6 +294,7 @@ FANUC_LATHE_CYCLE_WORDS: dict[float, CycleWords] = by_code(
     *_stock_removal((), (ROUGH_FEED, ROUGH_SPEED, ROUGH_TOOL), flags=False),
     *_grooving_and_threading(FANUC_INCREMENTS),
     *_single_cycles(()),
+    *_fanuc_drilling(),
     *_spindle(()),
 )
 
@@ -261,6 +318,7 @@ GSK980TDI_CYCLE_WORDS: dict[float, CycleWords] = by_code(
     *_stock_removal(_EITHER_BLOCK, _EITHER_BLOCK, flags=True),
     *_grooving_and_threading(GSK_INCREMENTS),
     *_single_cycles((THREADS_PER_INCH,)),
+    *_gsk_drilling(),
     *_spindle(
         (
             w("U", "", "change of the tool's X coordinate (a diameter)", "刀具当前位置X坐标的增量（直径值）"),
