@@ -201,3 +201,16 @@ def test_a_check_of_a_folder_reads_no_file_again_for_its_callers(workspace: Path
     out, err = io.StringIO(), io.StringIO()
     assert check_paths([str(workspace)], out, err) == 0, out.getvalue() + err.getvalue()
     assert reads == Counter({"O0001.nc": 3, "O0002.nc": 3, "O9100.nc": 3, "O9200.nc": 4})
+
+
+def test_a_scan_reads_each_file_once_and_a_second_scan_reads_them_again(
+    workspace: Path, reads: Counter[str]
+) -> None:
+    # the index's scan (the editor's start, or its folders changing) reads every program once;
+    # scanned again after a file changed on disk, it holds the file's new text
+    index = WorkspaceIndex(lambda: [], lambda lines, path: get_dialect("fanuc"))
+    assert index.scan([str(workspace)]) == 4
+    assert reads == Counter({"O0001.nc": 1, "O0002.nc": 1, "O9100.nc": 1, "O9200.nc": 1})
+    (workspace / "O9200.nc").write_text("O9200\n#101=2\n#102=3\nM99\n", encoding="utf-8")
+    assert index.scan([str(workspace)]) == 4
+    assert reads["O9200.nc"] == 2 and index.files[str(workspace / "O9200.nc")].lines[2] == "#102=3"

@@ -137,6 +137,8 @@ class WorkspaceIndex:
         self._callee.clear()
         self.skipped = []
         read = 0
+        for root in self.roots:  # what the cache holds of them is read again, all at once
+            self.disk.forget(str(root))
         for root in self.roots:
             if not os.path.isdir(root):
                 continue
@@ -146,28 +148,31 @@ class WorkspaceIndex:
                 if read > MAX_INDEX_BYTES:
                     self.skipped.append(_index_full(root, len(found.files) - k))
                     break
-                problem = self.reload(str(p))
+                problem = self.reload(str(p), scanning=True)
                 if problem is not None:
                     self.skipped.append(problem)
                 elif str(p) in self.files:
                     read += sum(len(line) + 1 for line in self.files[str(p)].lines)
         return len(self.files)
 
-    def reload(self, path: str) -> Detail | None:
+    def reload(self, path: str, scanning: bool = False) -> Detail | None:
         """Read one file again (created, changed or deleted on disk); why it was not read, if it
         was not (a binary file is only logged: it is no program). The file cache reads it again
-        at the next question, wherever it is."""
+        at the next question, wherever it is. ``scanning``: read by ``scan``, which forgot what the
+        cache held under its roots at once, so nothing is forgotten file by file (each of which
+        looked at every file the cache holds: a scan of thousands of files was quadratic)."""
         held = path in self.files
         try:
-            return self._reload(path)
+            return self._reload(path, scanning)
         finally:
             if (path in self.files) != held or Path(path).name == MACHINE_FILE_NAME:
                 self._callee.clear()  # the folders of a machine's programs may be others now
 
-    def _reload(self, path: str) -> Detail | None:
-        self.disk.forget(path)
-        self.absent.pop(Path(path).parent, None)  # it may hold a header searched for in vain
-        forget_listings(self.listings, path)
+    def _reload(self, path: str, scanning: bool = False) -> Detail | None:
+        if not scanning:
+            self.disk.forget(path)
+            self.absent.pop(Path(path).parent, None)  # it may hold a header searched for in vain
+            forget_listings(self.listings, path)
         if path not in self.files and len(self.files) >= MAX_PROGRAM_FILES:
             return None  # the index is full: a file it does not hold is not read for it (a branch switch of 100k files)
         if ReadScope.of(self.roots, extensions=self.extensions_for(path)).refusal(path) is not None:
