@@ -203,9 +203,7 @@ def test_a_check_of_a_folder_reads_no_file_again_for_its_callers(workspace: Path
     assert reads == Counter({"O0001.nc": 3, "O0002.nc": 3, "O9100.nc": 3, "O9200.nc": 4})
 
 
-def test_a_scan_reads_each_file_once_and_a_second_scan_reads_them_again(
-    workspace: Path, reads: Counter[str]
-) -> None:
+def test_a_scan_reads_each_file_once_and_a_second_scan_reads_them_again(workspace: Path, reads: Counter[str]) -> None:
     # the index's scan (the editor's start, or its folders changing) reads every program once;
     # scanned again after a file changed on disk, it holds the file's new text
     index = WorkspaceIndex(lambda: [], lambda lines, path: get_dialect("fanuc"))
