@@ -102,22 +102,33 @@ def drill_block(
         m.rapid_length += rapid + times.distance(start, hole) * unit
         hole_at = tuple(hole)
         hole[z] = back_to
-        if not m.record_moves and m.travel is None:
-            m.pos = hole
-            continue
-        legs = hole_legs(hole_at, tuple(at_r), tuple(at_bottom), tuple(hole), spec.feed_out)
-        plane_code = m.modal.get("plane", 17.0)
-        stop = None
-        if m.travel is not None:  # the machine's soft limits (machine_limits.py): the hole is drawn whole
-            stop = leaves_travel(m, program_bounds(m), cycle, plane_code, start, tuple(at_bottom), None, legs)
-        if m.record_moves:
-            m.moves.append(Move(file, line, cycle, start, tuple(at_bottom), float(feed), None, seconds,
-                                plane_code, legs, DRILLING))  # fmt: skip
-            if len(m.moves) >= m.move_budget:
-                m.moves_full(line)
-        if stop is not None:
-            raise stop[1]
+        record_hole(m, file, line, cycle, start, (hole_at, tuple(at_r), tuple(at_bottom), tuple(hole)),
+                    spec.feed_out, feed, seconds, m.modal.get("plane", 17.0))  # fmt: skip
         m.pos = hole
+
+
+def record_hole(
+    m: Planner, file: str, line: int, cycle: float, start: tuple[float, ...],
+    points: tuple[tuple[float, ...], tuple[float, ...], tuple[float, ...], tuple[float, ...]],
+    feed_out: bool, feed: float, seconds: float, plane: float,
+) -> None:  # fmt: skip
+    """Record a hole of ``cycle`` as one move from ``start`` to its bottom, with its ``seconds``
+    and the legs it is drawn by (``points``: positioned, at R, at the bottom, back: ``hole_legs``),
+    a mill's or a lathe's (lathe_drilling.py); the machine's soft limits (machine_limits.py) stop
+    the run on it, the hole drawn whole."""
+    if not m.record_moves and m.travel is None:
+        return
+    positioned, at_r, bottom, back = points
+    legs = hole_legs(positioned, at_r, bottom, back, feed_out)
+    stop = None
+    if m.travel is not None:
+        stop = leaves_travel(m, program_bounds(m), cycle, plane, start, bottom, None, legs)
+    if m.record_moves:
+        m.moves.append(Move(file, line, cycle, start, bottom, float(feed), None, seconds, plane, legs, DRILLING))
+        if len(m.moves) >= m.move_budget:
+            m.moves_full(line)
+    if stop is not None:
+        raise stop[1]
 
 
 def hole_legs(

@@ -31,9 +31,7 @@ from typing import TYPE_CHECKING
 
 from ..dialects.drill_cycles import PECK, SHORT_PECK, DrillCycle, LatheDrill
 from .cycle_time import INCH, RAPID_STEP
-from .drill_cycles import CYCLE_P, CYCLE_Q, hole_legs, hole_steps, repeat_count
-from .machine_limits import leaves_travel, program_bounds
-from .moves import DRILLING, Move
+from .drill_cycles import CYCLE_P, CYCLE_Q, hole_steps, record_hole, repeat_count
 from .turning_cycles import THREAD_MODE, in_increments
 
 if TYPE_CHECKING:
@@ -119,20 +117,9 @@ def _hole(
     p.cut_length += cut
     p.rapid_length += rapid + times.distance(start, hole) * unit
     p.pos = list(hole)  # back at the initial level over the hole
-    if not p.record_moves and p.travel is None:
-        return
-    legs = hole_legs(tuple(hole), tuple(at_r), tuple(at_bottom), tuple(hole), cycle.feed_out)
-    plane = p.modal.get("plane", 18.0)
-    stop = None
-    if p.travel is not None:  # the machine's soft limits (machine_limits.py): the hole is drawn whole
-        stop = leaves_travel(p, program_bounds(p), code, plane, start, tuple(at_bottom), None, legs)
-    if p.record_moves:
-        p.moves.append(Move(file, line, code, start, tuple(at_bottom), float(feed), None, seconds, plane, legs,
-                            DRILLING))  # fmt: skip
-        if len(p.moves) >= p.move_budget:
-            p.moves_full(line)
-    if stop is not None:
-        raise stop[1]
+    back = tuple(hole)
+    record_hole(p, file, line, code, start, (back, tuple(at_r), tuple(at_bottom), back), cycle.feed_out, feed,
+                seconds, p.modal.get("plane", 18.0))  # fmt: skip
 
 
 def _cut_of(p: Planner, data: LatheDrilling, cycle: DrillCycle) -> tuple[DrillCycle, float, float]:

@@ -103,12 +103,12 @@ class Planner:
         self.block_angle: float | None = None  # a block's ,A, while it runs (machine/corners.py)
         # the G codes whose blocks' axis words are values (G22's limits, G68's centre: VALUE_GROUPS)
         self._value_codes = frozenset(g for g, group in self.g_groups.items() if group in VALUE_GROUPS)
-        self._values_in_block = bool(dialect.motion_value_letters) or dialect.lathe_cycles.threads_per_inch is not None
+        tpi = dialect.lathe_cycles.threads_per_inch is not None
+        self._values_in_block = bool(dialect.motion_value_letters) or tpi
         self._three_points = dialect.three_point_arcs
         # the motion modes whose moves a plain line cannot make: a variable-lead thread (its own
         # word), a three-point arc, an ellipse or a parabola (their own words), a thread where I
         # may give its threads per inch: ``execute_nc``'s
-        tpi = dialect.lathe_cycles.threads_per_inch is not None
         self.own_path_modes = frozenset(
             (*self.times.variable_lead, *dialect.three_point_arcs, *dialect.motion_value_letters,
              *(self.times.thread_modes if tpi else ()))

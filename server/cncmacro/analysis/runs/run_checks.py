@@ -60,7 +60,7 @@ from ...machine.calls import letters_for_local
 from ...machine.observer import RunObserver
 from ...machine.status import FINISHED, RunStatus
 from ...machine.tracking import same_state
-from ...planner.alarms import UNKNOWN_VALUE
+from ...planner.alarms import UNKNOWN_VALUE, MacroAlarm
 from ..codes import MACRO_ALARM, alarm_code
 from ..diagnostics import Diagnostic, Related, diagnostic
 from .endless_loops import SHARED, loop_certainty, waits_for_the_machine
@@ -520,7 +520,7 @@ def _still_unknown(m: Machine, n: int) -> bool:
     """Whether ``#n`` reads unknown where the run stopped (what cannot be read counts as unknown)."""
     try:
         value = m.read(float(n))
-    except Exception:  # a number the control refuses to read: nothing to tell from it
+    except MacroAlarm:  # a number the control refuses to read: nothing to tell from it
         return True
     return isinstance(value, float) and math.isnan(value)
 

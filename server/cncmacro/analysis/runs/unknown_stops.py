@@ -92,11 +92,11 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     arguments #1–#33 a call would pass, each of them still ``unknown`` where the run stopped (a
     tool number the program has set since is not). Where the value was read through ``#[...]``,
     whose number only the run knows, and no such variable is left, the note names that read."""
-    wanted, through = _sources(text, earlier)
+    wanted, indirect, through = _sources(text, earlier)
     named = [(n, line) for n, line in wanted.items()
              if (is_kept(n, kinds, dialect) or is_input(n, dialect) or is_skip_position(n, dialect)
                  or (arguments and 1 <= n <= 33)) and unknown(n)]  # fmt: skip
-    if not named and through is not False:
+    if not named and indirect:
         return _read_through(through)
     kept = [(n, line) for n, line in named[:3] if not 1 <= n <= 33]
     passed = [(n, line) for n, line in named[:3] if 1 <= n <= 33]
@@ -162,30 +162,29 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
             f"分析运行在此停止：本程序段取决于{which_zh}；{tail_zh}")  # fmt: skip
 
 
-def _sources(text: str, earlier: Iterable[tuple[int, str]]) -> tuple[dict[int, int | None], int | bool | None]:
+def _sources(text: str, earlier: Iterable[tuple[int, str]]) -> tuple[dict[int, int | None], bool, int | None]:
     """The variables block ``text``'s value comes from (variable -> the line of the assignment
-    that reads it, None for the block's own), through the assignments of ``earlier``; and where a
-    ``#[...]`` read comes in: False for none, None in the block itself, else the line."""
+    that reads it, None for the block's own), through the assignments of ``earlier``; whether a
+    ``#[...]`` read comes in, and the line of the assignment it is in (None: the block itself)."""
     own = assigned(text)
     expression = own[1] if own else text
     wanted: dict[int, int | None] = dict.fromkeys(variables_in(expression))
-    through: int | bool | None = None if "#[" in expression else False
+    indirect, where = "#[" in expression, None
     for line, before in earlier:
         a = assigned(before)
         if a is not None and a[0] in wanted:
             del wanted[a[0]]
-            if through is False and "#[" in a[1]:
-                through = line
+            if not indirect and "#[" in a[1]:
+                indirect, where = True, line
             for n in variables_in(a[1]):
                 wanted.setdefault(n, line)
-    return wanted, through
+    return wanted, indirect, where
 
 
-def _read_through(line: int | bool | None) -> tuple[str, str]:
+def _read_through(line: int | None) -> tuple[str, str]:
     """The note of a stop on a value read through ``#[...]`` (on ``line``; None: the block's own)."""
-    at = line if isinstance(line, int) and not isinstance(line, bool) else None
-    where = f" (line {at + 1})" if at is not None else ""
-    where_zh = f"（第 {at + 1} 行）" if at is not None else ""
+    where = f" (line {line + 1})" if line is not None else ""
+    where_zh = f"（第 {line + 1} 行）" if line is not None else ""
     return (
         f"the analysis run stops here: this block depends on a value read through #[...]{where}, a variable whose "
         "number the run works out (an offset or a common the machine keeps); set it under [variables] in "
