@@ -59,7 +59,7 @@ async function progressText() {
  * VS Code does not colour a file this large (no tokenization), so each line is one span: the
  * mouse goes to the middle of the word's characters, measured with a DOM range.
  */
-async function hoverAt(line, word, hasText, attempts = 3) {
+async function hoverAt(line, word, hasText, attempts = 3, wait = 20000) {
   const hover = page.locator('.monaco-hover', { hasText });
   for (let attempt = 1; ; attempt++) {
     const box = await page.evaluate(
@@ -90,9 +90,13 @@ async function hoverAt(line, word, hasText, attempts = 3) {
     await page.mouse.move(box.x + 1, box.y + box.height / 2);
     await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2, { steps: 4 });
     try {
-      await hover.waitFor({ state: 'visible', timeout: 20000 });
+      await hover.waitFor({ state: 'visible', timeout: wait });
       return hover;
     } catch (e) {
+      // what the hover showed instead (nothing, or the places still being found): said in the
+      // test's output, so that a failure on a slow machine says which it was
+      const shown = await page.locator('.monaco-hover').allInnerTexts();
+      console.log(`hover attempt ${attempt} at ${new Date().toISOString()}: ${JSON.stringify(shown)}`);
       if (attempt === attempts) throw e;
       await page.mouse.move(5, 500);
       await page.keyboard.press('Escape');
@@ -223,9 +227,10 @@ test('once the file is indexed, the hover on #125 lists where it is written', { 
   await page.keyboard.type('500026');
   await page.keyboard.press('Enter');
   await page.locator('.editor-instance .view-lines .view-line', { hasText: '#125=#108+36.42' }).waitFor();
-  // the index of where each variable is written may still be filling on a busy machine: hover
-  // again until it lists the places (within the test's time)
-  const hover = await hoverAt('#125=#108+36.42', '#125', /huge\.nc:\d+/, 8);
+  // the index of where each variable is written takes seconds after the analysis (more on a busy
+  // machine), and a hover shown while it fills says they are still being found: hover again
+  // every few seconds until it lists the places (within the test's time)
+  const hover = await hoverAt('#125=#108+36.42', '#125', /huge\.nc:\d+/, 30, 4000);
   const text = await hover.innerText();
   console.log(`hover once indexed: ${JSON.stringify(text)}`);
   assert.match(text, /written at:/);

@@ -155,6 +155,34 @@ async def test_a_huge_file_says_where_a_variable_is_written_and_what_jumps_to_a_
     assert (80_000, types.DocumentHighlightKind.Write) in await marks(client, uri, 1, 1)
 
 
+async def test_the_quick_fixes_of_a_finding_that_spans_a_huge_file_are_those_of_the_findings_in_it(
+    client: LanguageClient,
+) -> None:
+    """Hovering a finding that spans the file (the lines no run reaches, after the syntax error
+    near the top) makes the editor ask for quick fixes over its whole range, with the findings
+    it shows there: the clamp of the L0 far down is offered, once, with its finding; the blocks
+    of the other lines are not looked at (the server answered nothing else for seconds while
+    it looked at a million of them)."""
+    text = huge_program().split("\n")
+    text[100_000] = "G65 P9010 L0"
+    text[110_000] = "G65 P9010 L0"  # its finding is not among those sent: not looked at
+    uri = open_file(client, FANUC / "huge_fixes.nc", "\n".join(text), version=1)
+    await analysed(client, uri, 1)
+    shown = client.diagnostics[uri]
+    spans = [d for d in shown if d.range.end.line - d.range.start.line > 100_000]
+    assert [str(d.code) for d in spans] == ["not-executed"]
+    within = [d for d in shown if spans[0].range.start.line <= d.range.start.line < 110_000]
+    assert (100_000, "repeat-count-range") in [(d.range.start.line, str(d.code)) for d in within]
+    got = await client.text_document_code_action_async(
+        types.CodeActionParams(types.TextDocumentIdentifier(uri), spans[0].range, types.CodeActionContext(within))
+    )
+    fixes = [a for a in got or [] if isinstance(a, types.CodeAction)]
+    assert [a.title for a in fixes] == ["Clamp the repeat count to 1"]
+    assert fixes[0].diagnostics is not None and [str(d.code) for d in fixes[0].diagnostics] == ["repeat-count-range"]
+    changes = fixes[0].edit.changes if fixes[0].edit is not None else None
+    assert changes is not None and [e.range.start.line for e in changes[uri]] == [100_000]
+
+
 async def marks(client: LanguageClient, uri: str, line: int, col: int) -> list[tuple[int, object]]:
     """The lines the editor marks for the word at ``line``:``col`` (document highlight), and how."""
     found = await client.text_document_document_highlight_async(

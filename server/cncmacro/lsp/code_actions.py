@@ -13,7 +13,8 @@ there and then calls; elsewhere the block is alarm 127). Any other letter after 
 argument (``M5.`` is M → #13) and stays. An O word in the block gets no split: on a line of its
 own it would start a program. L must be 1..9999; the clamp writes the nearest allowed count. An
 abbreviated macro word (docs/semantics.md §1) is replaced by the whole word. Each is offered for
-the blocks in the requested range, and carries the matching diagnostics (``g65-nc-words``,
+the blocks in the requested range (in a range of thousands of lines, those of the findings sent
+with the question: ``lines_looked_at``), and carries the matching diagnostics (``g65-nc-words``,
 ``repeat-count-range``, ``keyword-abbreviation`` or ``dialect-feature``) when the client sent them.
 """
 
@@ -41,6 +42,8 @@ from .texts import t
 
 if TYPE_CHECKING:
     from .server import CncMacroServer
+
+MAX_LINES_LOOKED_AT = 2_000  # a longer range is looked at only on the lines of its findings (``lines_looked_at``)
 
 
 def split_edit(
@@ -97,6 +100,18 @@ def expand_edits(doc: OpenDocument, line: int, encoding: Encoding) -> list[tuple
             for a in block.abbreviations]  # fmt: skip
 
 
+def lines_looked_at(r: types.Range, findings: Mapping[int, object], count: int) -> Sequence[int]:
+    """The lines of ``r`` whose blocks are looked at for a fix: every one of a range up to
+    ``MAX_LINES_LOOKED_AT`` lines, else those of the findings sent with the question (``findings``,
+    by line). The editor asks for the range of a finding it shows: hovering one that spans a
+    million-line file (``not-executed``) would have every block of it looked at, for seconds
+    in which the server answers nothing."""
+    last = min(r.end.line, count - 1)
+    if last - r.start.line < MAX_LINES_LOOKED_AT:
+        return range(r.start.line, last + 1)
+    return sorted(line for line in findings if r.start.line <= line <= last)
+
+
 def register(server: CncMacroServer) -> None:
     @server.feature(
         types.TEXT_DOCUMENT_CODE_ACTION, types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix])
@@ -105,10 +120,12 @@ def register(server: CncMacroServer) -> None:
         doc = ls.documents.get(params.text_document.uri)
         encoding = ls.documents.encoding
         out: list[types.CodeAction] = []
-        r = params.range
         calls = ls.documents.calls_for(doc.path)
-        for line in range(r.start.line, min(r.end.line, len(doc.lines) - 1) + 1):
-            diags = [d for d in params.context.diagnostics if d.range.start.line == line]
+        by_line: dict[int, list[types.Diagnostic]] = {}
+        for d in params.context.diagnostics:
+            by_line.setdefault(d.range.start.line, []).append(d)
+        for line in lines_looked_at(params.range, by_line, len(doc.lines)):
+            diags = by_line.get(line, [])
             split = split_edit(doc, line, encoding, calls)
             if split is not None:
                 edit, words, name = split
