@@ -254,6 +254,15 @@ CODES: dict[str, Code] = _codes(
     Code("arc-r-full-circle", WARNING,
          detail("An R arc whose end point is its start: the control makes no move; a full circle takes I, J or K.",
                 "R 圆弧的终点就是起点：系统不移动；整圆须用 I、J 或 K。"), RUN),
+    Code("curve-fault", ERROR,
+         detail("A three-point arc (G05/G05.1), an ellipse (G6.2/G6.3) or a parabola (G7.2/G7.3) the control cannot "
+                "cut as written: three points on one line, I and K left out, A, B or P 0 or left out, an end point "
+                "out of the ellipse's reach, a line parallel to the parabola's axis (GSK980TDi manual §3.5-§3.7: "
+                "an alarm).",
+                "控制系统无法按所写加工的三点圆弧（G05/G05.1）、椭圆（G6.2/G6.3）或抛物线（G7.2/G7.3）：三点共线、"
+                "省略 I 和 K、A、B 或 P 为 0 或省略、终点超出椭圆所及、连线与抛物线对称轴平行"
+                "（GSK980TDi 手册 §3.5–§3.7：报警）。"),
+         RUN),
     Code("cutter-arc", ERROR,
          detail("Cutter radius compensation started or cancelled on a G02/G03 arc (PS0034; a warning where the "
                 "control has no such alarm).",

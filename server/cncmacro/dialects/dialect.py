@@ -103,6 +103,9 @@ class Dialect:
     # (GSK980TDi's ellipse G6.2/G6.3: A, B half axes and Q; parabola G7.2/G7.3: P, Q): motion code
     # -> those letters, which are never an axis word in that mode
     motion_value_letters: dict[float, frozenset[str]] = field(default_factory=dict)
+    # §8 conic moves (GSK980TDi's ellipse G6.2/G6.3, parabola G7.2/G7.3): motion code -> (a
+    # parabola, else an ellipse; clockwise in G02's sense) (planner/conic_moves.py)
+    conic_moves: dict[float, tuple[bool, bool]] = field(default_factory=dict)
     # which G codes are canned cycles that leave the tool where it started
     cycle_codes: frozenset[float] = frozenset()
     # §5 fanuc wants I, J, K in that order within each set (a warning otherwise)

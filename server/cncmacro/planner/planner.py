@@ -21,11 +21,12 @@ import math
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from ..bilingual import detail
+from ..bilingual import Detail, detail
 from .angled_moves import angled_end
 from .arc_checks import arc_finding
 from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
+from .conic_moves import CURVE_FAULT, conic_points
 from .cutter_stage import UNCOMPENSATED_CODES, CutterStage, cutter_move, restore_pending, uncompensated
 from .cycle_time import INCH, SPEED_CLAMP, MoveTimes
 from .drill_cycles import drill_block
@@ -40,7 +41,7 @@ from .positions import position_value
 from .probing import Probe, SkipState
 from .state import MODAL_DEFAULTS, PlannerState
 from .three_point_arcs import three_point_arc
-from .turning_cycles import forget_single_cycle, single_cycle, single_cycle_target, turning_legs
+from .turning_cycles import forget_single_cycle, in_increments, single_cycle, single_cycle_target, turning_legs
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -106,6 +107,7 @@ class Planner:
         tpi = dialect.lathe_cycles.threads_per_inch is not None
         self._values_in_block = bool(dialect.motion_value_letters) or tpi
         self._three_points = dialect.three_point_arcs
+        self._curves = frozenset((*dialect.three_point_arcs, *dialect.conic_moves))  # ``_curve``'s
         # the motion modes whose moves a plain line cannot make: a variable-lead thread (its own
         # word), a three-point arc, an ellipse or a parabola (their own words), a thread where I
         # may give its threads per inch: ``execute_nc``'s
@@ -317,9 +319,7 @@ class Planner:
             else:
                 self.turning_cycle(file, line, mode, axes, incremental, other)
             return True, None  # a turning cycle ends where it started
-        three_point = self._three_point(mode, target, other) if mode in self._three_points else None
-        if three_point is not None:  # G05/G05.1: an arc through the block's point (three_point_arcs.py)
-            self.move(file, line, three_point[0], target, three_point[1])
+        if mode in self._curves and self._curve(file, line, mode, target, other):
             return True, None
         centre = self.block_arc(mode, target, other, line)
         moved = not self._call_needs_distance or target != self.pos or centre is not None
@@ -407,11 +407,47 @@ class Planner:
             mode in self.times.thread_modes or (single is not None and single.thread) or (tap is not None and tap.lead)
         )
 
+    def _curve(self, file: str, line: int, mode: float, target: list[float], other: dict[str, float]) -> bool:
+        """A move in a curve's ``mode``: a G05/G05.1 three-point arc (three_point_arcs.py), a G6.2/G6.3
+        ellipse or a G7.2/G7.3 parabola (conic_moves.py). Whether it was made here (else it is
+        the general move's: a three-point arc the control alarms on, drawn straight)."""
+        if mode in self._three_points:
+            three_point = self._three_point(mode, target, other)
+            if isinstance(three_point, tuple):
+                self.move(file, line, three_point[0], target, three_point[1])
+                return True
+            if three_point is not None:  # the control alarms: the move is drawn straight
+                self.host.note("arc", three_point, line, CURVE_FAULT)
+        conic = self.dialect.conic_moves.get(mode)
+        if conic is None:
+            return False
+        self._conic(file, line, mode, conic, target, other)
+        return True
+
+    def _conic(
+        self, file: str, line: int, mode: float, conic: tuple[bool, bool], target: list[float], other: dict[str, float]
+    ) -> None:
+        """The ellipse or parabola (``conic``: ``Dialect.conic_moves``) to ``target``, cut as its
+        short pieces; where the control alarms, the finding, and the move straight."""
+        plane = self._arc_planes.get(self.modal.get("plane", 17.0))
+        if plane is None:
+            self.move(file, line, mode, target)
+            return
+        increment = in_increments(self, 1.0)
+        points = conic_points(conic[0], conic[1], plane, self._diameter, self.pos, target, other, increment)
+        if isinstance(points, str):
+            self.host.note("arc", points, line, CURVE_FAULT)
+            self.move(file, line, mode, target)
+            return
+        for point in points:
+            self.move(file, line, mode, list(point))
+
     def _three_point(
         self, mode: float, target: list[float], other: dict[str, float]
-    ) -> tuple[float, tuple[float, ...]] | None:
+    ) -> tuple[float, tuple[float, ...]] | Detail | None:
         """The mode (2 or 3) and centre of a three-point arc to ``target`` in the plane in force,
-        when ``mode`` is one (``Dialect.three_point_arcs``) and the circle exists."""
+        when ``mode`` is one (``Dialect.three_point_arcs``); why not, where the circle does not
+        exist."""
         absolute = self.dialect.three_point_arcs.get(mode)
         code = self.modal.get("plane", 17.0)
         plane = self._arc_planes.get(code)

@@ -6,15 +6,29 @@ GSK980TDi manual §3.5: ``G05 X(U) Z(W) I K F`` gives the point on the arc relat
 gives it in absolute coordinates (I an X diameter, K a Z). Both are modal. I or K left out is 0
 there. The arc is the one of the two about the circle's centre that passes through the point, so
 it is a G02 or a G03 arc, and the planner records and times it as one. Where the control alarms
-(the three points on one line, I and K both left out, a full circle) there is no circle: the move
-is left to the caller, which cuts it straight, and the finding is not given (the alarm's number is
-not in the manual)."""
+(the three points on one line, I and K both left out; "G05 cannot cut a full circle") there is no
+circle: the caller is told why, gives the finding (``curve-fault``: the manual gives the alarm no
+number) and cuts the move straight."""
 
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 
+from ..bilingual import Detail, detail
 from .arcs import Plane
+
+NO_POINT = detail(
+    "a three-point arc needs its point on the arc: I and K must not both be left out (GSK980TDi manual §3.5); "
+    "the control stops with an alarm, the run draws the move straight",
+    "三点圆弧需要圆弧上的中间点：I、K 不能同时省略（GSK980TDi 手册 §3.5）；系统报警，本次运行按直线绘制",
+)
+ON_ONE_LINE = detail(
+    "the start, the point on the arc (I, K) and the end point are on one line, or two of them are the same "
+    "(a full circle): no arc passes through them (GSK980TDi manual §3.5); the control stops with an alarm, the "
+    "run draws the move straight",
+    "起点、中间点（I、K）和终点共线，或其中两点重合（整圆）：不能构成圆弧（GSK980TDi 手册 §3.5）；"
+    "系统报警，本次运行按直线绘制",
+)
 
 
 def three_point_arc(
@@ -25,15 +39,15 @@ def three_point_arc(
     end: Sequence[float],
     words: Mapping[str, float],
     arc_length: Callable[[float, Sequence[float], Sequence[float], Sequence[float]], float],
-) -> tuple[float, tuple[float, ...]] | None:
+) -> tuple[float, tuple[float, ...]] | Detail:
     """(2.0 or 3.0, the centre) of the arc from ``start`` through the block's point on the arc
     (its plane's offset ``words``: relative to the start, or in program coordinates when
     ``absolute``) to ``end`` in ``plane``; ``diameter`` is the index of the axis programmed as a
-    diameter; ``arc_length(mode, start, end, centre)`` measures an arc as the clock does. None
-    where there is no such circle."""
+    diameter; ``arc_length(mode, start, end, centre)`` measures an arc as the clock does. Where
+    there is no such circle, why."""
     a, b, off_a, off_b = plane
     if off_a not in words and off_b not in words:
-        return None
+        return NO_POINT
     scale_a = 0.5 if a == diameter else 1.0
     scale_b = 0.5 if b == diameter else 1.0
     sa, sb = start[a] * scale_a, start[b] * scale_b
@@ -48,7 +62,7 @@ def three_point_arc(
     ca, cb = ea - sa, eb - sb
     d = 2.0 * (ba * cb - bb * ca)
     if abs(d) < 1e-12:  # on one line, or two of the points the same
-        return None
+        return ON_ONE_LINE
     b2, c2 = ba * ba + bb * bb, ca * ca + cb * cb
     ua = sa + (cb * b2 - bb * c2) / d
     ub = sb + (ba * c2 - ca * b2) / d
