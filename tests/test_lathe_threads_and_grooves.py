@@ -160,6 +160,17 @@ def test_g96_turns_the_spindle_by_the_diameter_along_the_cut_clamped_by_g50_s(tm
     assert result["moves"][-1]["time"] == pytest.approx(by_hand, rel=0.01)
 
 
+def test_g96_under_g20_is_a_surface_speed_in_feet_per_minute(tmp_path: Path) -> None:
+    # G20: G96 S600 is 600 ft/min; at D2.0 in the spindle turns at 12 x 600 / (pi x 2) = 1145.9
+    # rev/min, 11.459 in/min at F0.01 in/rev: Z0.1 to Z-3.0 (3.1 in) takes 0.27053 min =
+    # 16.232 s, the same as G97 S1146 (taken as m/min it turned 3.28 times faster: 4.95 s)
+    result = run_lathe(tmp_path, "fanuc-0i-lathe", "G20 G99", "G50 S4000", "G96 S600 M03", "G00 X2.0 Z0.1",
+                       "G01 Z-3.0 F0.01", "M30")  # fmt: skip
+    rpm = 12 * 600 / (math.pi * 2.0)
+    assert result["moves"][-1]["time"] == pytest.approx(3.1 / (0.01 * rpm) * 60, rel=1e-4)
+    assert result["moves"][-1]["time"] == pytest.approx(16.232, rel=1e-4)
+
+
 @pytest.mark.parametrize("profile", PROFILES)
 def test_g50_s_is_the_spindle_clamp_not_a_spindle_speed(tmp_path: Path, profile: str) -> None:
     # G97 S800, then G50 S2500: the spindle still turns at 800; 10 mm at 0.2 x 800 = 160 mm/min = 3.75 s;

@@ -181,7 +181,8 @@ class MoveTimes:
         """Minutes to move ``length`` at ``feed`` per revolution. At a constant ``speed``,
         length / (F·S), S never above ``top_speed`` and F·S never above ``top_feed`` (a thread's,
         without ``feed_clamp``, follows the spindle whatever its rate).
-        Under G96 (``css``) the spindle turns at 1000·V / (π·D) (V = S), D the
+        Under G96 (``css``) the spindle turns at 1000·V / (π·D) (V = S in m/min; in ft/min
+        under G20, 304.8·V), D the
         diameter where the tool is, never above ``clamp`` and the spindle's top speed: over a
         straight move D changes linearly, so dt = dl·π·D / (1000·V·F) integrates to the piece's
         length times its mean diameter where the spindle is not clamped, and to length / (F·top)
@@ -200,7 +201,8 @@ class MoveTimes:
         if speed <= 0.0 or top <= 0.0:
             return 0.0
         x0, x1 = start[d] * unit, end[d] * unit  # diameters, mm
-        surface = 1000.0 * speed / math.pi  # rev/min times the diameter (mm) at surface speed S
+        # rev/min times the diameter (mm) at surface speed S: m/min, ft/min under G20 (304.8 mm)
+        surface = (304.8 if unit != 1.0 else 1000.0) * speed / math.pi
         knee = surface / top  # below this diameter the spindle turns at its top speed
         cuts = sorted({0.0, 1.0, *(t for v in (0.0, knee, -knee) if (t := _crossing(x0, x1, v)) is not None)})
         minutes = 0.0
