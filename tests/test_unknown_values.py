@@ -84,6 +84,20 @@ def test_what_the_program_could_set_itself_stays_vacant(tmp_path: Path) -> None:
         assert found[0] == "2:1: error: division by zero (the divisor is vacant) (alarm 112) [division-by-zero]"
 
 
+def test_gsk_commons_cleared_at_power_off_are_the_operators_until_the_program_writes_them(tmp_path: Path) -> None:
+    # GSK980TDi §3.28.1: the operator types #100-#199 in on the macro page, and the manual's own
+    # O0100 keeps the parts made in #100 from run to run ("初始值=0"): a division by it is no
+    # alarm, a branch on it stops the run with a note naming it; once the program wrote #101 = 0
+    # a division by it is alarm 112 again, and a local never set still divides to alarm 112
+    gsk = "O0100 (cncmacro: dialect=gsk980tdi)\n"
+    assert check(tmp_path, f"{gsk}#1=10/#100\n#100=#100+1\nM30\n") == (0, [])
+    code, found = check(tmp_path, f"{gsk}IF[#100<100]GOTO10\nG00 X10\nN10 M30\n")
+    assert code == 0 and len(found) == 1 and "#100" in found[0] and "[unknown-value]" in found[0]
+    for variable in ("#101", "#1"):
+        code, found = check(tmp_path, f"{gsk}#101=0\n#2=10/{variable}\nM30\n")
+        assert code == 1 and found[0].startswith("3:1: error: division by zero") and "(alarm 112)" in found[0]
+
+
 def test_a_macro_checked_without_its_caller_gets_notes_not_alarms(tmp_path: Path) -> None:
     # O9010 returns with M99 and no program here calls it: its arguments are unknown, not
     # vacant. ``#20 EQ #0`` is false for an unknown (a value, not vacant), so the argument check

@@ -163,6 +163,10 @@ class Dialect:
     # §2 the common variables: every range the control can have, the default in force unless a
     # machine file names fewer (docs/semantics.md §2 "Common variables")
     common_ranges: tuple[CommonRange, ...] = (CommonRange(100, 499, False), CommonRange(500, 999, True))
+    # §2 whether the commons cleared at power-off hold, when a program starts, what the operator typed
+    # in or an earlier run left (GSK980TDi: its manual's parts counter in #100, "初始值=0"): unknown to
+    # an analysis until the program writes them, as the kept ones (machine/unknown_values.py)
+    volatile_commons_set_before: bool = False
     # §2 the common ranges each part system (path) of a multi-path control keeps its own, the
     # machine's other commons being shared by the paths (a machine file's ``part_system_commons``;
     # empty: the machine file does not say, and nothing is said of sharing)

@@ -14,7 +14,8 @@ gives as **unknown**: NaN, which every arithmetic operation and function carries
 divisor divides to unknown, no alarm). A macro checked without its caller gets unknown
 arguments (``Machine.unknown_arguments``). Vacant stays vacant where the program itself could
 have set the value: a main program's locals, arguments a caller did not pass, the commons
-cleared at power-on (#100–#199).
+cleared at power-on (#100–#199), but on a profile whose operator sets them before a run
+(``Dialect.volatile_commons_set_before``, GSK980TDi).
 
 Where the run must decide something with an unknown (a branch, an address word sent to the
 NC, a variable, label or program number made from it) the control would use its value; the
@@ -45,8 +46,11 @@ _ASSIGNMENT = re.compile(r"\s*(?:N\d+\s*)?#\s*(\d+)\s*=(.*)", re.IGNORECASE)
 
 def seed_unknowns(kinds: VariableKinds, commons: list[float | None]) -> None:
     """Make every kept common below #1000 that has no value unknown (``commons`` is
-    ``Machine.C``, after the presets and the persistent file)."""
-    for r in kinds.persistent:
+    ``Machine.C``, after the presets and the persistent file); the ones cleared at power-off
+    too where the profile says the operator or an earlier run sets them
+    (``Dialect.volatile_commons_set_before``)."""
+    ranges = kinds.ranges if kinds.dialect.volatile_commons_set_before else kinds.persistent
+    for r in ranges:
         first, end = r.first, min(r.last, 999) + 1
         if first < end:
             commons[first:end] = [UNKNOWN if v is None else v for v in commons[first:end]]
@@ -73,6 +77,8 @@ def is_kept(n: int, kinds: VariableKinds, dialect: Dialect) -> bool:
     kind = kinds.kind(n)
     if kind == "persistent" or (kind == "extended" and kept_extended(kinds, n)):
         return True
+    if kind == "common":  # cleared at power-off, set by the operator or an earlier run before this one
+        return dialect.volatile_commons_set_before
     if kind == "system":
         row = dialect.system_variable(n)
         return row is not None and (row.group in KEPT_GROUPS or is_tool(n, dialect))

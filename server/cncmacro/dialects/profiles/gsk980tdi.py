@@ -68,6 +68,9 @@ PROFILE = Dialect(
     # G41/G42 compensate a G70-G73 shape only from its first block N(ns) (docs/semantics.md §12)
     shape_compensation_first_block=True,
     common_ranges=(CommonRange(100, 199, False), CommonRange(500, 999, True)),
+    # §3.28.1: "公共变量(#100~#199，#500~#999)的值在宏变量页面有显示，也可在该页面下，直接输入数据", and its
+    # example keeps the parts made in #100 from run to run ("#100 是已加工零件个数，初始值=0")
+    volatile_commons_set_before=True,
     m98_program_digits=4,
     modal_call_needs_distance=True,
     word_format_alarms=False,
