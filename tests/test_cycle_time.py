@@ -31,6 +31,20 @@ def test_feed_per_minute_and_each_axis_at_its_own_rapid_rate(tmp_path: Path) -> 
     assert [round(mv["time"], 4) for mv in result["moves"]] == [0.3, 6.0, 12.0, 12.0, 0.1375]
 
 
+@pytest.mark.parametrize(("profile", "rapid"), [("fanuc-0i", 24000.0), ("gsk980tdi", 8000.0)])
+def test_g53_moves_at_rapid_whatever_motion_is_in_force(tmp_path: Path, profile: str, rapid: float) -> None:
+    # GSK980TDi §3.20: "刀具快速定位到该位置，速度及运动方式与快速定位 G00 相同"; FANUC alike. Under
+    # G01 F100, G53 Z0 from Z-31 with no work offset: 31 mm of Z at its rapid (fanuc-0i 24000,
+    # gsk980tdi 8000 mm/min): 0.0775 s or 0.2325 s, not 31 / 100 min = 18.6 s; then G01 Z-10 feeds
+    # again: 10 mm at F100 = 6 s
+    text = lines("O0001", f"(cncmacro: dialect={profile})", "G98 G94 G00 Z-30.", "G01 Z-31. F100", "G53 Z0",
+                 "Z-10.", "M30")  # fmt: skip
+    moves = run_json(tmp_path, text)["moves"]
+    g53, after = moves[2], moves[3]
+    assert (g53["kind"], g53["time"]) == ("rapid", pytest.approx(31 / rapid * 60))
+    assert (after["kind"], after["time"]) == ("feed", pytest.approx(6.0))
+
+
 def test_feed_per_revolution_on_a_lathe_is_f_times_s_and_x_is_a_diameter(tmp_path: Path) -> None:
     # gsk980tdi: rapids X 6000 mm/min (radius), Z 8000; T0101 indexes the turret: 1 s.
     #   T0101:                 1 s

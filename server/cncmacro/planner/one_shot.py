@@ -52,7 +52,9 @@ def one_shot(
         target = list(p.pos)
         for i, v in axes.items():
             target[i] = v - (work_offset(p, i) + p.shift[i] + p.tool_vector[i])
-        mode = p.modal.get("motion", 0.0)
+        # at rapid whatever the motion in force, which stays (GSK980TDi §3.20: "刀具快速定位到该位置，
+        # 速度及运动方式与快速定位 G00 相同"; FANUC: machine coordinate system selection)
+        mode = 0.0
         if p.travel is not None:  # machine coordinates: checked whether the offsets are known or not
             here = tuple(p.pos)
             stop = leaves_travel(p, g53_bounds(p, list(axes)), mode, 17.0, here, tuple(target), None, None)
