@@ -241,6 +241,8 @@ class Dialect:
     # program running until M99, then back after the call); None: no such call, the code is a
     # plain M code
     local_subprogram_code: float | None = None
+    # §8 ``G54 Pn`` selects extra work offset n as ``G54.1 Pn`` does (FANUC: "G54.1 Pn or G54 Pn")
+    extra_offset_by_g54_p: bool = False
     # §8 the G code that selects extra work offset Pn (Haas ``G154 P1``–``P99``), as G54.1 Pn
     # does on FANUC; None: the code is not the control's
     extra_offset_code: float | None = None

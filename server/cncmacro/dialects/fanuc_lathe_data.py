@@ -169,7 +169,7 @@ SYSTEM_VARIABLES: tuple[SystemVariable, ...] = (
 # program is never told that a code of its control does not exist (docs/profiles.md)
 _MILL_ROWS = {c.code: c for c in fanuc.G_CODES}
 _SAME_AS_MILL = ("G07.1", "G09", "G11", "G12.1", "G13.1", "G22", "G23", "G25", "G26", "G27", "G29", "G30.1",
-                 "G36", "G37", "G52", "G53", "G61", "G63", "G64", "G107", "G112", "G113", "G50.2", "G51.2",
+                 "G36", "G37", "G52", "G53", "G54.1", "G61", "G63", "G64", "G107", "G112", "G113", "G50.2", "G51.2",
                  "G50.3")  # fmt: skip
 
 G_CODES: tuple[CodeDoc, ...] = (

@@ -39,6 +39,8 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
                 unit_change(p, g, line)  # units.py
             elif group == "cutter" or (group == "plane" and p.cutter is not None):
                 cutter_code(p, group, g, line)  # cutter_stage.py
+            if group == "wcs" and g == 54.0 and "P" in other and p.dialect.extra_offset_by_g54_p:
+                g = 54.1  # G54 Pn is G54.1 Pn (FANUC)
             p.modal[group] = g
             if group == "motion" and g not in p.dialect.single_cycles:
                 forget_single_cycle(p)  # a single cycle's modal words (turning_cycles.py)

@@ -147,6 +147,9 @@ class Planner:
         if source == "modal":
             return self.modal.get(param, default)
         if source == "code":
+            if param == "P":  # #4130: the extra work offset in force (G54.1 Pn reads n), else the default
+                wcs = self.modal.get("wcs")
+                return float(self.extra_wcs) if self.extra_wcs and (wcs == 54.1 or wcs in self.extra_codes) else default
             return self.codes.get(param, default)
         return position_value(self, param, index)
 

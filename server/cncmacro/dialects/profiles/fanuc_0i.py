@@ -38,6 +38,7 @@ PROFILE = Dialect(
     coordinate_setting_code=92.0,
     cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
     drill_cycles=FANUC_DRILL_CYCLES,
+    extra_offset_by_g54_p=True,  # "G54.1 Pn or G54 Pn" (0i-MF, adding workpiece coordinate systems)
     cycle_words=FANUC_DRILL_CYCLE_WORDS,
     ijk_order_matters=True,
     word_format_alarms=True,

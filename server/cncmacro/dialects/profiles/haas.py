@@ -934,6 +934,7 @@ M_CODES: tuple[CodeDoc, ...] = (
 # the profile: the 0i's macro language with Haas's numbers, codes and limits
 
 PROFILE = FANUC_0I.configured(
+    extra_offset_by_g54_p=False,  # no source at hand gives G54 Pn
     name="haas",
     title="Haas NGC mill",
     summary="Haas Next Generation Control (NGC) mills: 5-digit programs, #10000 commons, G154 P1-P99, O9xxx probing",

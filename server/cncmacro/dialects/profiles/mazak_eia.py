@@ -14,6 +14,7 @@ from __future__ import annotations
 from .fanuc_0i import PROFILE as FANUC_0I
 
 PROFILE = FANUC_0I.configured(
+    extra_offset_by_g54_p=False,  # no source at hand gives G54 Pn
     name="mazak-eia",
     title="Mazak EIA/ISO (Matrix, Smooth)",
     summary="Mazak Mazatrol Matrix/Smooth machining centres in EIA/ISO: Macro B with IF..THEN/ELSE/ENDIF, && and ||",

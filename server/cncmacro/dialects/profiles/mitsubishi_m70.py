@@ -13,6 +13,7 @@ from ..tables import CommonRange
 from .fanuc_0i import PROFILE as FANUC_0I
 
 PROFILE = FANUC_0I.configured(
+    extra_offset_by_g54_p=False,  # no source at hand gives G54 Pn
     name="mitsubishi-m70",
     title="Mitsubishi M70/M80 user macro",
     summary="Mitsubishi M70/M80 (M8 series) machining centres: Macro B with IF..THEN/ELSE/ENDIF blocks",
