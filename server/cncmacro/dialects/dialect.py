@@ -90,6 +90,11 @@ class Dialect:
     # §8 one-shot codes whose axis word is a value, not a move: cylindrical interpolation's
     # ``G07.1 C_`` (G107 in FANUC's system B) names the cylinder's radius, ``G07.1 C0`` ends it
     axis_value_codes: frozenset[float] = frozenset((7.1, 107.0))
+    # §8 polar coordinate interpolation: its codes, each turning it on (True) or off
+    # (planner/virtual_planes.py); cylindrical interpolation is ``axis_value_codes``' C
+    polar_interpolation_codes: dict[float, bool] = field(
+        default_factory=lambda: {12.1: True, 112.0: True, 13.1: False, 113.0: False}
+    )
     # §8 the skip codes (G31, probing.py), and the multi-step skip's G31.1-G31.3 where the control
     # has them: each stops where its signal comes on, as G31 does
     skip_codes: frozenset[float] = frozenset((31.0,))

@@ -29,6 +29,7 @@ from ..planner.moves import Move
 from ..planner.plain_words import NOT_PLAIN, PLAIN_ARC_LETTERS, PLAIN_F, PLAIN_G, PLAIN_INCREMENTAL, PLAIN_S
 from ..planner.planner import FEED_HINT_GIVEN
 from ..planner.turning_cycles import forget_single_cycle
+from ..planner.virtual_planes import VIRTUAL_PLANE
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -208,6 +209,8 @@ def run_straight(
                 break  # an S above the spindle's top speed: the compiled path says so
             centre = None
             if arc is not None and moved and line_mode in ARC_MODES:
+                if VIRTUAL_PLANE in modal:
+                    break  # an arc in polar or cylindrical interpolation: the general path's (virtual_planes.py)
                 # the arc's centre in the plane this line leaves in force; an arc the control finds
                 # fault with (``Planner.arc_fault``) is the general path's to report,
                 # the line left untouched

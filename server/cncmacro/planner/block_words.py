@@ -20,6 +20,7 @@ from .moves import ToolChange
 from .tool_offsets import apply_length_offset, same_station, select_tool
 from .turning_cycles import forget_single_cycle
 from .units import UNITS_GROUP, unit_change
+from .virtual_planes import in_virtual_plane
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -37,8 +38,8 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
         elif group != "macro":  # G66/G67 are the macro machine's
             if group == UNITS_GROUP:
                 unit_change(p, g, line)  # units.py
-            elif group == "cutter" or (group == "plane" and p.cutter is not None):
-                cutter_code(p, group, g, line)  # cutter_stage.py
+            elif (group == "cutter" and not in_virtual_plane(p)) or (group == "plane" and p.cutter is not None):
+                cutter_code(p, group, g, line)  # cutter_stage.py; not in polar or cylindrical interpolation
             if group == "wcs" and g == 54.0 and "P" in other and p.dialect.extra_offset_by_g54_p:
                 g = 54.1  # G54 Pn is G54.1 Pn (FANUC)
             p.modal[group] = g

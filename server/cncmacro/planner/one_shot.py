@@ -18,6 +18,7 @@ from .lathe_cycles import ShapeCall, lathe_cycle
 from .machine_limits import g53_bounds, leaves_travel
 from .positions import WORK_BASE, work_offset
 from .probing import skip_block
+from .virtual_planes import switch_virtual_plane
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -73,7 +74,12 @@ def one_shot(
         return False, None
     if p.dialect.lathe and g in p.dialect.cycle_codes:
         return lathe_cycle(p, g, axes, inc, other, file, line)
-    if g in p.dialect.axis_value_codes:  # G07.1 C_: the cylinder's radius (Dialect.axis_value_codes)
+    if g in p.dialect.axis_value_codes:  # G07.1 C_: the cylinder's radius (Dialect.axis_value_codes), C0 off
+        switch_virtual_plane(p, g, any({**axes, **inc}.values()))
+        return False, None
+    polar = p.dialect.polar_interpolation_codes.get(g)
+    if polar is not None:  # G12.1 / G13.1 (virtual_planes.py)
+        switch_virtual_plane(p, g, polar)
         return False, None
     if g in p.dialect.preset_codes:  # G92.1 IP0: the shift of the named axes cancelled, no move
         for i in set(axes) | set(inc):

@@ -42,6 +42,7 @@ from .probing import Probe, SkipState
 from .state import MODAL_DEFAULTS, PlannerState
 from .three_point_arcs import three_point_arc
 from .turning_cycles import forget_single_cycle, in_increments, single_cycle, single_cycle_target, turning_legs
+from .virtual_planes import VIRTUAL_PLANE
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -358,7 +359,11 @@ class Planner:
     def checked_arc(
         self, mode: float, start: Sequence[float], end: Sequence[float], words: dict[str, float], line: int
     ) -> tuple[float, ...] | None:
-        """``arc_centre``, and the control's finding on the arc of ``line`` (arc_checks.py)."""
+        """``arc_centre``, and the control's finding on the arc of ``line`` (arc_checks.py); None in
+        polar or cylindrical interpolation, whose plane is not simulated: the arc is drawn as its
+        chord (virtual_planes.py)."""
+        if VIRTUAL_PLANE in self.modal:
+            return None
         centre = self.arc_centre(mode, start, end, words)
         if centre is not None:
             fault = self.arc_fault(start, end, centre, words)
