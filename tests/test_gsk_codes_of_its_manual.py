@@ -8,7 +8,8 @@
 - I instead of F in a thread (§3.24.1, §3.24.5, §3.24.9): threads per inch, a lead of 25.4 / I;
 - G52 (§3.19) sets a local coordinate system without moving; G53 (§3.20), G22/G23 (§3.31), the
   ellipse and parabola codes (§3.6, §3.7) are codes of the control, not unknown ones; an
-  ellipse's B is its half axis, not the B axis.
+  ellipse's B is its half axis, not the B axis;
+- #4001 (§3.28.1) reads G6.2, G6.3, G32.1, G7.2, G7.3 as 124, 126, 132, 144, 146.
 
 Rates: G98 (per minute) at power-on; rapids X 6000 mm/min (of the radius), Z 8000."""
 
@@ -21,7 +22,7 @@ from typing import Any
 import pytest
 
 from cli_capture import cli, run_json
-from running import lines
+from running import final, lines
 
 
 def run_gsk(folder: Path, *body: str) -> dict[str, Any]:
@@ -131,3 +132,17 @@ def test_g33_cuts_one_start_where_l_is_left_out(tmp_path: Path) -> None:
     assert [mv["time"] for mv in result["moves"] if mv["mode"] == "G33"] == pytest.approx(
         [2 * 80 / 450 * 60, 80 / 450 * 60]
     )
+
+
+def test_4001_reads_the_special_interpolation_codes_as_the_manuals_numbers() -> None:
+    # §3.28.1, the modal system variables: #4001 (group 01) reads "G124(G06.2)，G126(G06.3)，
+    # G132(G32.1)，G144(G07.2)，G146(G07.3)". Each code alone in its block sets the mode and moves
+    # nothing; #4001 then reads 124, 126, 132, 144, 146, and after G01 plain 1. A macro that tests
+    # IF[#4001 EQ 124] after G6.2 takes the jump over its alarm.
+    program = lines(
+        "G6.2", "#101=#4001", "G6.3", "#102=#4001", "G32.1", "#103=#4001", "G7.2", "#104=#4001",
+        "G7.3", "#105=#4001", "G01", "#106=#4001", "G6.2", "IF[#4001 EQ 124]GOTO10",
+        "#3000=1(WRONG BRANCH)", "N10 M30",
+    )  # fmt: skip
+    v = final(program, "gsk980tdi")
+    assert [v[n] for n in range(101, 107)] == [124, 126, 132, 144, 146, 1]

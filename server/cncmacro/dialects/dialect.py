@@ -108,6 +108,9 @@ class Dialect:
     # (GSK980TDi's ellipse G6.2/G6.3: A, B half axes and Q; parabola G7.2/G7.3: P, Q): motion code
     # -> those letters, which are never an axis word in that mode
     motion_value_letters: dict[float, frozenset[str]] = field(default_factory=dict)
+    # §8 motion codes that #4001 (group 01) reads as another number: GSK980TDi's G6.2 reads 124,
+    # G6.3 126, G32.1 132, G7.2 144, G7.3 146 (§3.28.1); a code not listed reads as itself
+    motion_numbers: dict[float, float] = field(default_factory=dict)
     # §8 conic moves (GSK980TDi's ellipse G6.2/G6.3, parabola G7.2/G7.3): motion code -> (a
     # parabola, else an ellipse; clockwise in G02's sense) (planner/conic_moves.py)
     conic_moves: dict[float, tuple[bool, bool]] = field(default_factory=dict)

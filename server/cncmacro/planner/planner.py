@@ -119,6 +119,7 @@ class Planner:
         self.lathe = dialect.lathe
         self.drills = dialect.drills  # a canned drilling cycle in force decides a move (Dialect.drills)
         self._call_needs_distance = dialect.modal_call_needs_distance
+        self._motion_numbers = dialect.motion_numbers
         self._arc_planes = arc_planes(self.axis_index)
         self._diameter = self.axis_index.get("X", -1) if self.lathe else -1
         # the arc radius tolerance in mm (FANUC parameter 3410; the machine file's ``arc_tolerance``)
@@ -146,7 +147,10 @@ class Planner:
         """A system variable of the planner's state (the profile's row ``source`` and ``param``):
         a modal group's code, a code's last value, or axis ``index``'s position of a kind."""
         if source == "modal":
-            return self.modal.get(param, default)
+            code = self.modal.get(param, default)
+            if param == "motion" and code in self._motion_numbers:  # G6.2 reads 124 (Dialect.motion_numbers)
+                return self._motion_numbers[code]
+            return code
         if source == "code":
             if param == "P":  # #4130: the extra work offset in force (G54.1 Pn reads n), else the default
                 wcs = self.modal.get("wcs")

@@ -54,6 +54,8 @@ PROFILE = Dialect(
         7.2: frozenset("PQ"),
         7.3: frozenset("PQ"),
     },
+    # #4001 reads "G124(G06.2)，G126(G06.3)，G132(G32.1)，G144(G07.2)，G146(G07.3)" (§3.28.1)
+    motion_numbers={6.2: 124.0, 6.3: 126.0, 32.1: 132.0, 7.2: 144.0, 7.3: 146.0},
     # G6.2/G7.2 go round as G02, G6.3/G7.3 as G03 (§3.6, §3.7)
     conic_moves={6.2: (False, True), 6.3: (False, False), 7.2: (True, True), 7.3: (True, False)},
     cycle_codes=frozenset(
