@@ -325,3 +325,19 @@ def test_9_lathe_single_cycles_are_timed_leg_by_leg_and_a_thread_at_its_lead_per
     cycles = [mv for mv in result["moves"] if mv["kind"] == "cycle"]
     assert [round(mv["time"], 3) for mv in cycles] == [22.49, 1.945, 22.98]
     assert result["cycle"]["cut"] == pytest.approx(5 + 32 + 22 + 15 + 4, rel=0.001)  # the cutting legs, mm
+
+
+def test_9_a_gsk980tdi_skip_move_goes_at_200_mm_per_minute_at_most(tmp_path: Path) -> None:
+    # GSK980TDi manual §3.16.2, note: "进给速度超过 200mm/min 时被箝制在该速度". No [skip] table: each
+    # G31 runs to its end point.
+    #   G98 G31 Z-20 F500 from Z10:  30 mm at 200 mm/min (not 500)   = 9.0 s (was 3.6 s)
+    #   G31 Z-30 F100:               10 mm at 100 mm/min, as written  = 6.0 s
+    #   G01 Z-40 F500:               10 mm at 500 mm/min, no skip     = 1.2 s
+    #   G20 G31 W-1. F20. (20 in/min = 508 mm/min): 200 mm/min = 7.874 in/min, 1 in -> 7.62 s
+    text = lines("O0004 (cncmacro: dialect=gsk980tdi)", "G00 X20. Z10.", "G98 G31 Z-20. F500", "G31 Z-30. F100",
+                 "G01 Z-40. F500", "G20", "G31 W-1. F20.", "M30")  # fmt: skip
+    moves = run_json(tmp_path, text, "O0004.nc")["moves"]
+    assert [round(mv["time"], 3) for mv in moves[1:]] == [9.0, 6.0, 1.2, 7.62]
+    # FANUC's manuals give G31 no such clamp: 30 mm at 500 mm/min = 3.6 s
+    fanuc = run_json(tmp_path, lines("O0005", "G00 Z10.", "G94 G31 Z-20. F500", "M30"), "O0005.nc")["moves"]
+    assert round(fanuc[1]["time"], 3) == 3.6

@@ -98,6 +98,9 @@ class Dialect:
     # §8 the skip codes (G31, probing.py), and the multi-step skip's G31.1-G31.3 where the control
     # has them: each stops where its signal comes on, as G31 does
     skip_codes: frozenset[float] = frozenset((31.0,))
+    # §9 the fastest a skip move goes, in mm/min: a G31 with a faster feed goes at this one
+    # (GSK980TDi 200, §3.16.2 note); None: at its feed, as any cutting move
+    skip_feed_clamp: float | None = None
     # §8 workpiece coordinate system preset (FANUC G92.1 IP0, G50.3 on a lathe): the named axes'
     # coordinate shift (G92, G52) is cancelled, the tool does not move
     preset_codes: frozenset[float] = frozenset((92.1, 50.3))

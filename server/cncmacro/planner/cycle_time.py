@@ -11,7 +11,8 @@ without acceleration a corner costs no time; feed and rapid overrides at 100 %.
   own, and also the time of linear-interpolation positioning, whose rate is held so that no
   axis passes its own.
 - A feed move (G01, G02, G03, G31, a lathe cycle's recorded move) takes its length divided
-  by the feed rate. The length of an arc is the length of the arc (its sweep times its
+  by the feed rate; a G31 never faster than the profile's ``Dialect.skip_feed_clamp`` (the
+  GSK980TDi's 200 mm/min). The length of an arc is the length of the arc (its sweep times its
   radius, with a helix's third axis added as the other side of a right triangle), not of the
   chord; a full circle is one turn. Feed per minute (G94; G98 on a lathe) is F in mm/min (in/min
   under G20); feed per revolution (G95; G99 on a lathe) is F per turn of the spindle at S
@@ -56,6 +57,8 @@ SPEED_CLAMP = "S-clamp"
 # axis, and a rapid shift across it (G76, G87)
 RAPID_STEP, FEED_STEP, SHIFT_STEP = 0, 1, 2
 _TWO_PI = 2.0 * math.pi
+# the mode a G31's move is recorded in (probing.py), whose feed the profile may clamp
+SKIP_MODE = 31.0
 # plane code -> (first axis, second axis): the plane an arc turns in (arcs.PLANES)
 _PLANE_AXES = {17.0: ("X", "Y"), 18.0: ("Z", "X"), 19.0: ("Y", "Z")}
 
@@ -92,6 +95,8 @@ class MoveTimes:
         # spindle's top speed, that speed for every S (not only G96's); infinite without them
         self.top_feed = math.inf
         self.top_speed = math.inf
+        # the fastest a skip move goes (mm/min; Dialect.skip_feed_clamp), infinite where it is not clamped
+        self.skip_feed = math.inf if dialect.skip_feed_clamp is None else dialect.skip_feed_clamp
 
     def distance(self, start: Sequence[float], end: Sequence[float]) -> float:
         """The straight distance from ``start`` to ``end``, in program units: on a lathe X moves
@@ -148,22 +153,28 @@ class MoveTimes:
         """Seconds of a cutting move in ``mode`` of ``length`` (program units) at ``feed``: per
         minute, or per revolution at spindle ``speed`` (S; under ``css`` a surface speed, the
         spindle clamped at ``clamp``, ``G50 S``). A thread's (``thread_modes``) is per revolution,
-        along its long axis, its lead growing by ``lead_change`` per revolution (G34)."""
+        along its long axis, its lead growing by ``lead_change`` per revolution (G34). A skip
+        move (``SKIP_MODE``) goes at ``skip_feed`` at most, where its rate is the same all along."""
         if mode in self.thread_modes:
             length = self.long_axis(start, end)
             if lead_change and length > 0.0 and feed > 0.0:
                 feed = _mean_lead(length, feed, lead_change)
         else:
-            rate = self.straight_rate(feed, per_rev, speed, css, unit)
+            top = self.top_feed
+            if mode == SKIP_MODE and self.skip_feed < top:
+                top = self.skip_feed
+            rate = self.straight_rate(feed, per_rev, speed, css, unit, top)
             if rate is not None:
                 return length / rate * 60.0 if rate > 0.0 and length > 0.0 else 0.0
         return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit, False) * 60.0
 
-    def straight_rate(self, feed: float, per_rev: bool, speed: float, css: bool, unit: float = 1.0) -> float | None:
+    def straight_rate(
+        self, feed: float, per_rev: bool, speed: float, css: bool, unit: float = 1.0, top: float | None = None
+    ) -> float | None:
         """How fast a cutting move that is not a thread goes, in program units per minute, where
         that is the same all along it: F per minute, or F per revolution times S (S never above
-        ``top_speed``), never above ``top_feed`` (mm/min; ``unit`` is 25.4 under G20, else 1):
-        the control clamps both. 0 where it does not move (no feed, or per revolution at S0);
+        ``top_speed``), never above ``top`` (mm/min; ``top_feed`` unless given; ``unit`` is 25.4
+        under G20, else 1): the control clamps both. 0 where it does not move (no feed, or per revolution at S0);
         None under G96 on a lathe, where the rate follows the diameter (``per_rev_minutes``)."""
         if not per_rev:
             rate = feed if feed > 0.0 else 0.0
@@ -171,8 +182,10 @@ class MoveTimes:
             return None
         else:
             rate = feed * min(speed, self.top_speed) if feed > 0.0 and speed > 0.0 else 0.0
-        if rate * unit > self.top_feed:  # the control clamps the feed at its highest
-            rate = self.top_feed / unit
+        if top is None:
+            top = self.top_feed
+        if rate * unit > top:  # the control clamps the feed at its highest
+            rate = top / unit
         return rate
 
     def per_rev_minutes(self, length: float, feed: float, speed: float, css: bool, clamp: float | None,

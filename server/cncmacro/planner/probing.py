@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, NamedTuple
 
 from ..bilingual import Detail, detail
 from ..library.skip_model import Circle, SkipModel
+from .cycle_time import SKIP_MODE
 from .numbers import format_plain
 
 if TYPE_CHECKING:
@@ -63,7 +64,7 @@ def skip_block(m: Planner, target: list[float], file: str, line: int) -> None:
     if m.record_moves:  # a run for its diagnostics keeps neither moves nor these
         m.probes.append(Probe(file, line, len(m.moves), tuple(end), what is not None))
         m.host.note("skip", _note(m, start, end, what), line)
-    m.move(file, line, 31.0, end)
+    m.move(file, line, SKIP_MODE, end)
     m.skip_pos = list(m.pos)
 
 

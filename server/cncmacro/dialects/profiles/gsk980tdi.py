@@ -41,6 +41,8 @@ PROFILE = Dialect(
     lathe=True,
     axes=("X", "Y", "Z", "C", "B"),
     modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0, 5.0}),
+    # "进给速度超过 200mm/min 时被箝制在该速度" (§3.16.2 note)
+    skip_feed_clamp=200.0,
     # G23 at power-on (§3.31 note 3)
     modal_defaults={"plane": 18.0, "feed": 98.0, "stroke": 23.0},
     coordinate_setting_code=50.0,
