@@ -408,3 +408,42 @@ def test_g66_counts_as_a_macro_level():
 
     assert final(program("#1=1"))[100] == 1
     assert alarm(program("G65 P9105"))[0] == 122
+
+
+def test_5_g66_on_gsk980tdi_calls_only_after_a_g00_g01_g02_g03_or_g05_block():
+    # GSK980TDi manual §3.28.3.2 note 2: "执行完有 G00、G01、G02、G03、G05 代码的程序段后…将再次调用宏程序"
+    # (Dialect.modal_call_codes): the code that moves the block (its one-shot code, else the motion
+    # mode in force) must be one of them. O0100 counts its calls in #100 and its last caller's block
+    # by the position it sees (#5001 X, #5003 Z).
+    program = lines(
+        "G00 X100 Z50",
+        "G66 P0100",
+        "G01 X90 F100",  # G01: call 1
+        "X85",  # G01 still in force: call 2
+        "G90 X80 Z40 F100",  # a turning cycle: no call
+        "X70",  # the cycle again: no call
+        "G00 X90 Z50",  # G00: call 3
+        "G32 Z45 F1.5",  # a thread: no call
+        "G31 Z40 F100",  # a skip: no call
+        "G00 X40 Z0",  # call 4
+        "G6.2 U20 W-10 A20 B10 Q0",  # an ellipse: no call
+        "G28 U0 W0",  # the reference point: no call
+        "G53 X0 Z0",  # machine coordinates: no call
+        "G00 X50 Z5",  # call 5
+        "G05 X50 Z-5 I5 K-5",  # a three-point arc: call 6
+        "G02 X50 Z-15 R5",  # call 7
+        "G67",
+        "M30",
+        "O0100",
+        "#100=#100+1",
+        "M99",
+    )
+    assert final(program, "gsk980tdi")[100] == 7
+
+
+def test_5_g66_on_fanuc_calls_after_any_block_with_a_move_command():
+    # FANUC (seed 003 §8.3: the macro is called after a block with a move command): a turning cycle
+    # and G28 call too, as before
+    program = lines("G00 X100 Z50", "G66 P0100", "G90 X80 Z40 F100", "G28 U0 W0", "G01 X90 F100", "G67", "M30",
+                    "O0100", "#100=#100+1", "M99")  # fmt: skip
+    assert final(program, "fanuc-0i-lathe")[100] == 3

@@ -78,8 +78,10 @@ class Dialect:
     lathe: bool
     # the axes in system-variable order (#5001 is the first)
     axes: tuple[str, ...]
-    # motion codes after which a G66 modal call is made
-    modal_call_codes: frozenset[float]
+    # §5 the codes after whose blocks a G66 modal call is made (the block's one-shot code, else the
+    # motion mode in force: GSK980TDi G00, G01, G02, G03, G05, §3.28.3.2 note 2); None: after any
+    # block with a move command (FANUC: "a block specifying movement along axes")
+    modal_call_codes: frozenset[float] | None = None
     # the modal state at power-on (MODAL_GROUPS names -> G code)
     modal_defaults: dict[str, float] = field(default_factory=dict)
     # which G code sets the coordinate system (G92 on a mill, G50 on this lathe)

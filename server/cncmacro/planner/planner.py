@@ -119,6 +119,7 @@ class Planner:
         self.lathe = dialect.lathe
         self.drills = dialect.drills  # a canned drilling cycle in force decides a move (Dialect.drills)
         self._call_needs_distance = dialect.modal_call_needs_distance
+        self._call_codes = dialect.modal_call_codes  # None: any move command calls (G66)
         self._motion_numbers = dialect.motion_numbers
         self._arc_planes = arc_planes(self.axis_index)
         self._diameter = self.axis_index.get("X", -1) if self.lathe else -1
@@ -236,6 +237,8 @@ class Planner:
         extra = plan[4]
         centre = self.checked_arc(mode, start, target, dict(extra), line) if extra and mode in ARC_MODES else None
         self.record(file, line, mode, tuple(start), tuple(target), centre)
+        if self._call_codes is not None and mode not in self._call_codes:
+            return False
         return not self._call_needs_distance or target != start or centre is not None
 
     def _shape_axes(self, named: frozenset[int]) -> None:
@@ -260,9 +263,10 @@ class Planner:
     def execute_nc(self, words: list[tuple[str, float]], file: str, line: int) -> tuple[bool, ShapeCall | None]:
         """Carry out the NC words of a block. Returns (moved, shape): whether the block
         counts as a move for G66 modal calls (a move command; on a dialect whose
-        ``modal_call_needs_distance`` is set, one that goes somewhere or draws an arc) and, for a
-        lathe cycle that names a finishing shape (G70–G73 P Q), the shape the macro machine is
-        to run (lathe_cycles.py)."""
+        ``modal_call_needs_distance`` is set, one that goes somewhere or draws an arc; on one with
+        ``modal_call_codes``, one of those codes: the block's one-shot code, else the motion mode
+        in force) and, for a lathe cycle that names a finishing shape (G70–G73 P Q), the shape the
+        macro machine is to run (lathe_cycles.py)."""
         gs: list[float] = []
         axes: dict[int, float] = {}
         incremental: dict[int, float] = {}
@@ -299,6 +303,18 @@ class Planner:
             # "stored stroke check"); G68 X_ Y_ R_, G51 X_ Y_ P_, G51.1 X_: the centre of the
             # rotation, scaling, mirror image. Not a move; none of them is simulated (§8)
             return False, None
+        moved, shape = self._carry_out(one, axes, incremental, other, file, line)
+        calls = self._call_codes
+        if moved and calls is not None and (self.modal.get("motion", 0.0) if one is None else one) not in calls:
+            return False, shape  # a move of a code after which no G66 call is made (Dialect.modal_call_codes)
+        return moved, shape
+
+    def _carry_out(
+        self, one: float | None, axes: dict[int, float], incremental: dict[int, float], other: dict[str, float],
+        file: str, line: int,
+    ) -> tuple[bool, ShapeCall | None]:  # fmt: skip
+        """The move of a block whose modal codes and F, S, T, M are set (``execute_nc``): its
+        one-shot code ``one``, else the motion mode in force, with its axis words."""
         if one is not None:
             if one != 4.0 and self.cycle_params:
                 forget_single_cycle(self)

@@ -33,7 +33,6 @@ PROFILE = Dialect(
     count_in_p_and_l_alarm=False,
     lathe=False,
     axes=("X", "Y", "Z", "A"),
-    modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0}),
     modal_defaults={"plane": 17.0, "feed": 94.0},
     coordinate_setting_code=92.0,
     cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),

@@ -31,7 +31,6 @@ PROFILE = replace(
     lathe=True,
     lathe_offsets=LATHE_OFFSETS,
     axes=("X", "Z", "C", "Y"),
-    modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0}),
     modal_defaults={"plane": 18.0, "feed": 99.0},
     coordinate_setting_code=50.0,
     cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0}),
