@@ -447,3 +447,31 @@ def test_5_g66_on_fanuc_calls_after_any_block_with_a_move_command():
     program = lines("G00 X100 Z50", "G66 P0100", "G90 X80 Z40 F100", "G28 U0 W0", "G01 X90 F100", "G67", "M30",
                     "O0100", "#100=#100+1", "M99")  # fmt: skip
     assert final(program, "fanuc-0i-lathe")[100] == 3
+
+
+def test_5_a_g65_call_cancels_g66_on_gsk980tdi():
+    # GSK980TDi manual §3.28.3.2 note 4: "G65 调用会自动取消 G66 模态调用" (Dialect.g65_cancels_modal_call).
+    # O0100 adds its A to #100 at each modal call, O0101 its B to #101:
+    #   G01 X90: a modal call, #100 = 1; G65 P0101 B2: #101 = 2, and the G66 ends (#4012 = 67);
+    #   G01 X80, G01 X70: no call, #100 stays 1.
+    program = lines(
+        "G00 X100 Z50",
+        "G66 P0100 A1",
+        "G01 X90 F100",
+        "G65 P0101 B2",
+        "#102=#4012",
+        "G01 X80",
+        "G01 X70",
+        "M30",
+        "O0100",
+        "#100=#100+#1",
+        "M99",
+        "O0101",
+        "#101=#101+#2",
+        "M99",
+    )
+    v = final(program, "gsk980tdi")
+    assert (v[100], v[101], v[102]) == (1, 2, 67)
+    # FANUC's manuals say nothing of it: the G66 stays, X80 and X70 call O0100 (3 calls), #4012 = 66
+    v = final(program, "fanuc-0i-lathe")
+    assert (v[100], v[101], v[102]) == (3, 2, 66)

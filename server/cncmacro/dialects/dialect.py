@@ -223,6 +223,9 @@ class Dialect:
     # before left them (Haas: the arguments are set on the first pass only) or with a fresh level
     # filled from the call's arguments again (False: each pass a call of its own)
     macro_repeat_keeps_locals: bool = False
+    # §5 a G65 call cancels the G66 modal call in force, as G67 does, before it calls (GSK980TDi
+    # §3.28.3.2 note 4); False: G66 stays in force through a G65 (FANUC)
+    g65_cancels_modal_call: bool = False
     # §5 G66 calls after a block that moves some distance (True: ``G0 U0 W0`` calls nothing) or
     # after any block with a move command (False)
     modal_call_needs_distance: bool = False

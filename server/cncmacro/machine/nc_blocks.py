@@ -193,10 +193,13 @@ def _macro_call(
         return found, arguments, repeats
 
     if name == "G65":
+        cancels = dialect.g65_cancels_modal_call  # GSK: a G65 call ends the G66 in force, as G67 does
 
         def g65_to(nxt: int) -> Runner:
             def g65(m: Machine, pc: int) -> int:
                 found, arguments, repeats = evaluate(m, pc)
+                if cancels and m.modal_calls:
+                    m.cancel_modal_call()
                 return m.macro_call(found, arguments, repeats, pc, nxt, "G65")
 
             return g65

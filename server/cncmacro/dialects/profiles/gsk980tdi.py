@@ -77,6 +77,7 @@ PROFILE = Dialect(
     volatile_commons_set_before=True,
     m98_program_digits=4,
     modal_call_needs_distance=True,
+    g65_cancels_modal_call=True,  # "G65 调用会自动取消 G66 模态调用" (§3.28.3.2 note 4)
     word_format_alarms=False,
     arc_radius_alarm=False,  # no alarm for it in the manuals at hand: a warning (docs/semantics.md §8, "Arcs")
     keyword_abbreviations=False,
