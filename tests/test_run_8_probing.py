@@ -158,3 +158,33 @@ def test_g31_bad_skip_table_is_an_error_naming_its_line(
     assert e.value.key == key and e.value.line == line - 1
     assert words in str(e.value) and key in str(e.value) and e.value.located().endswith(f"(line {line})")
     assert e.value.args[0].zh  # and in Chinese
+
+
+GSK_SKIP_COMMONS = ("#101=#995", "#102=#996", "#103=#997", "#104=#998", "#105=#999")
+
+
+def test_g31_on_gsk980tdi_stores_where_the_signal_came_on_in_995_to_999(tmp_path: Path) -> None:
+    """GSK980TDi manual §3.16.2: "跳转信号变为“1”时绝对坐标位置被存储在用户宏变量中(#995～#999 分别对应
+    X，Z，Y，4th，5th)". The face at Z2: from X40 Z10 the G31 stops at Z2, so #995 = 40 (X as the
+    program writes it, a diameter), #996 = 2, #997 = #998 = #999 = 0 (Y, C, B where they are)."""
+    table = "[skip]\nZ = 2\n"
+    program = ("#995=-1", "#996=-1", "#997=-1", "#998=-1", "#999=-1", "G00 X40 Z10", "G98 G31 Z-20 F50")
+    v = final(lines(*program, *GSK_SKIP_COMMONS, "M30"), "gsk980tdi", skip=skip_table(tmp_path, table))
+    assert [v[n] for n in range(101, 106)] == [40, 2, 0, 0, 0]
+
+
+def test_g31_on_gsk980tdi_stores_x_as_a_diameter_and_a_miss_leaves_them(tmp_path: Path) -> None:
+    """A diameter probed from X40 down to X30 touches at X35.5 (the contact point, work coordinates
+    as the program writes them): #995 = 35.5, #996 = 10 (Z where it is). The second G31 misses: the
+    manual says nothing of a G31 that ends without the signal, so #995 and #996 stay 35.5 and 10,
+    though the tool ends at X20 Z0."""
+    table = '[skip]\ncontacts = [{ X = 35.5 }, "miss"]\n'
+    program = ("G00 X40 Z10", "G31 X30 F50", "#106=#995", "#107=#996", "G00 X40 Z10", "G31 X20 Z0 F50")
+    v = final(lines(*program, *GSK_SKIP_COMMONS, "#108=#5001", "M30"), "gsk980tdi", skip=skip_table(tmp_path, table))
+    assert (v[106], v[107], v[101], v[102], v[108]) == (35.5, 10, 35.5, 10, 20)
+
+
+def test_g31_on_gsk980tdi_without_a_skip_table_leaves_995_to_999_as_they_were() -> None:
+    """``cncmacro run`` without [skip]: the G31 runs to its end with the signal off; #996 keeps -999."""
+    v = final(lines("#996=-999", "G00 X40 Z10", "G31 Z-20 F50", "#102=#996", "M30"), "gsk980tdi")
+    assert v[102] == -999

@@ -207,6 +207,29 @@ def test_a_skip_table_says_where_the_probe_touches(tmp_path: Path) -> None:
     assert "8:1: warning: the run reaches macro alarm 3001: PROBE DID NOT TRIGGER [macro-alarm]" in found
 
 
+# the same guard on the GSK980TDi, which stores where the signal came on in #995-#999 (X, Z, Y, 4th,
+# 5th; its manual §3.16.2): the program clears #996, probes the face, and takes the alarm where #996
+# is still what it wrote
+GSK_PROBE_GUARD = ("(cncmacro: dialect=gsk980tdi)\nO0100\n#996=-999\nG00 X40 Z10\nG98 G31 Z-20 F50\n"
+                   "IF[#996 NE -999]GOTO10\n#3000=1(PROBE DID NOT TRIGGER)\nN10 G00 Z10\nM30\n")  # fmt: skip
+
+
+def test_where_a_gsk980tdi_probe_touched_is_the_machines(tmp_path: Path) -> None:
+    # without a [skip] table the G31 ran to its end with the signal off and #996 kept -999: the check
+    # reached the guard's alarm 5901. The G31 leaves #996 unknown, and the note says why, though the
+    # program wrote #996 before it
+    code, found = check(tmp_path, GSK_PROBE_GUARD)
+    assert code == 0
+    assert found == [
+        "6:1: hint: the analysis run stops here: this block depends on #996, where the probe's G31 touched; only "
+        "the machine finds it; a [skip] table in .cncmacro.toml says where the probe touches, to check further "
+        "[unknown-value]"
+    ]
+    # the face at Z2: #996 = 2, the guard jumps over the alarm
+    code, found = check(tmp_path, GSK_PROBE_GUARD, "[skip]\nZ = 2\n")
+    assert (code, found) == (0, ["7:1: hint: no analysis run reaches this block [not-executed]"])
+
+
 def test_a_value_read_through_an_indirect_number_is_named_as_such(tmp_path: Path) -> None:
     # the tool is known after T2 M06; the unknown is the length offset #11002 read through #[11000+#11]
     text = "O0100\nT2 M06\n#11=#4120\n#12=#[11000+#11]\nIF [#12 GT -50.] GOTO 10\nG00 X0\nN10 M30\n"

@@ -100,6 +100,10 @@ class Dialect:
     # §8 the skip codes (G31, probing.py), and the multi-step skip's G31.1-G31.3 where the control
     # has them: each stops where its signal comes on, as G31 does
     skip_codes: frozenset[float] = frozenset((31.0,))
+    # §8 the commons in which a G31 stores where the skip signal came on, by axis (axis letter,
+    # variable): GSK980TDi #995-#999 for X, Z, Y, 4th, 5th (§3.16.2); empty where the skip position
+    # is read from system variables (#5061…)
+    skip_commons: tuple[tuple[str, int], ...] = ()
     # §9 the fastest a skip move goes, in mm/min: a G31 with a faster feed goes at this one
     # (GSK980TDi 200, §3.16.2 note); None: at its feed, as any cutting move
     skip_feed_clamp: float | None = None

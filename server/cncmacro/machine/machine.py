@@ -17,6 +17,7 @@ the machine is made with (observer.py); a machine without one knows nothing of i
 from __future__ import annotations
 
 import datetime as _dt
+from collections.abc import Sequence
 
 from ..bilingual import detail
 from ..dialects import Dialect, get_dialect
@@ -33,7 +34,7 @@ from .observer import RunObserver
 from .run_loop import RunLoop
 from .run_records import RunResult, Snapshot
 from .status import FINISHED, RunStatus
-from .unknown_values import UNKNOWN, seed_unknowns
+from .unknown_values import UNKNOWN, seed_unknowns, touch_unknown
 from .variable_sets import VariableSets
 from .variables import VariableAccess
 
@@ -199,6 +200,19 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         """The planner writes stored system variable ``#n`` (``G10``)."""
         self.S[n] = value
         self.written_system.add(n)
+
+    def probed(self, stored: Sequence[tuple[int, float]], touched: bool) -> None:
+        """A G31 ended on a control that stores where the skip signal came on in commons
+        (``Dialect.skip_commons``): they take ``stored`` where it came on (``touched``) and are
+        left as they were where it did not; in an analysis run without a ``[skip]`` table, which
+        cannot know whether or where the probe touched, they become unknown (unknown_values.py)."""
+        unknown = touch_unknown(self.kept_unknown, self.settings.skip)
+        if not touched and not unknown:
+            return
+        kind = self.kinds.kind
+        for n, v in stored:
+            if kind(n) in ("common", "persistent"):  # one a machine file's commons leave out is not written
+                self.C[n] = UNKNOWN if unknown else v
 
     def tool_changed(self, file: str, line: int) -> None:
         """The planner made a tool change: whoever watches the run hears of it."""

@@ -3,8 +3,9 @@
 
 A program reads values the control keeps from one day to the next: the commons kept at power-off
 (#500–#999, the extended ranges), the tool and work offset tables, the tool loaded in the
-spindle before the program commands a T; where a probe's G31 touched the part (#5061…, unless
-the machine file's ``[skip]`` table models it); and what the machine sends the program as it runs,
+spindle before the program commands a T; where a probe's G31 touched the part (#5061…, or the
+commons a G31 writes on the GSK980TDi, #995…, unless the machine file's ``[skip]`` table models
+it: ``touch_unknown``); and what the machine sends the program as it runs,
 the interface input signals (FANUC #1000–#1015 and #1032, Haas #1000–#1063…: a probe switched
 on, a pallet in place), which a program may read but never write. Offline, nothing says what they hold; taking them as
 vacant or 0 makes a production program's ``#641=#640/#706`` a "division by zero" the control
@@ -34,6 +35,7 @@ from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
+    from ..library.skip_model import SkipModel
     from .expressions import VariableKinds
 
 UNKNOWN = math.nan
@@ -97,9 +99,19 @@ def is_input_row(group: str, access: str) -> bool:
     return group == "signals" and "w" not in access
 
 
+def touch_unknown(kept_unknown: bool, skip: SkipModel) -> bool:
+    """Whether where a G31 touched is unknown to a run: an analysis run (``kept_unknown``) whose
+    machine file has no ``[skip]`` table to say where the probe touches. The skip position then
+    reads unknown (#5061…), and a G31 leaves the commons it writes unknown (GSK #995…)."""
+    return kept_unknown and not skip
+
+
 def is_skip_position(n: int, dialect: Dialect) -> bool:
-    """Whether system variable ``#n`` reads where the last G31 stopped (FANUC #5061…): the place
-    the probe touched, which only the machine finds (the machine file's ``[skip]`` table models it)."""
+    """Whether ``#n`` holds where a G31 stopped: the skip position (FANUC #5061…), or a common
+    in which the control stores it (``Dialect.skip_commons``: GSK #995…). The place the probe
+    touched, which only the machine finds (the machine file's ``[skip]`` table models it)."""
+    if any(number == n for _, number in dialect.skip_commons):
+        return True
     row = dialect.system_variable(n)
     return row is not None and row.source == "position" and row.param == "skip"
 

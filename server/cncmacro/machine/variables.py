@@ -18,7 +18,7 @@ from ..dialects.alarms import MAX_VALUE, NAME_SUBSCRIPT, NO_VARIABLE_NAME, OVERF
 from ..dialects.tables import SystemVariable
 from ..planner.numbers import round_half_away
 from .alarms import MacroAlarm
-from .unknown_values import KEPT_GROUPS, UNKNOWN, is_input_row, kept_extended
+from .unknown_values import KEPT_GROUPS, UNKNOWN, is_input_row, kept_extended, touch_unknown
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -192,7 +192,7 @@ class VariableAccess:
         if source in ("modal", "code", "position"):  # the planner's state (planner/planner.py)
             if source == "code" and row.param == "T" and self.kept_unknown and self.planner.codes.get("T") is None:
                 return UNKNOWN  # the tool loaded before the program commands one: the machine knows it
-            if source == "position" and row.param == "skip" and self.kept_unknown and not self.settings.skip:
+            if source == "position" and row.param == "skip" and touch_unknown(self.kept_unknown, self.settings.skip):
                 return UNKNOWN  # where a G31 touched: the machine finds it, a [skip] table says it here
             return self.planner.read(source, row.param, row.default, k)
         if source == "timer":

@@ -3,13 +3,15 @@
 The planner keeps no variables. The offset tables it reads (work offsets, tool offsets) and
 writes (``G10``) are the macro machine's stored system variables, reached by number through
 ``stored`` and ``store``; it tells the machine of a tool change (``tool_changed``, for whoever
-watches the run) and of a remark about a block (``note``: where a ``G31`` stopped). The macro
-machine (``machine/machine.py``'s ``Machine``) is the host; a test may give any object with these
-four methods.
+watches the run), of a remark about a block (``note``: where a ``G31`` stopped) and of where a
+``G31`` stopped on a control that stores it in common variables (``probed``: the GSK980TDi's
+#995…). The macro machine (``machine/machine.py``'s ``Machine``) is the host; a test may give any
+object with these five methods.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Protocol
 
 
@@ -30,4 +32,10 @@ class PlannerHost(Protocol):
 
     def note(self, kind: str, message: str, line: int | None = None, subject: str | None = None) -> None:
         """A remark about the block on ``line`` of the program running (its current line when None)."""
+        ...
+
+    def probed(self, stored: Sequence[tuple[int, float]], touched: bool) -> None:
+        """A G31 ended on a control that stores where the skip signal came on in common
+        variables (``Dialect.skip_commons``): ``stored`` are those variables with where the move
+        stopped, which they take where the signal came on (``touched``)."""
         ...

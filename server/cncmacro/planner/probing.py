@@ -9,7 +9,11 @@ place in the order they are written). When nothing is hit the move runs to its e
 the signal stays off, as on the control. Either way #5061… (``Planner.skip_pos``, read through
 the profile's "skip" position rows) hold where the move ended, in work coordinates: seed 003
 §4.9, "在G31(跳转功能)程序段中跳转信号接通时的刀具位置储存在变量#5061到#5064中。当G31程序段中
-的跳转信号未接通时，这些变量中储存的是指令的程序段终点值".
+的跳转信号未接通时，这些变量中储存的是指令的程序段终点值". A control that stores it in common
+variables instead (``Dialect.skip_commons``: the GSK980TDi's #995–#999, §3.16.2, "跳转信号变为"1"
+时绝对坐标位置被存储在用户宏变量中") has them written where the signal came on, in the program's
+coordinates (X a diameter on a lathe), through the planner's host; a G31 that ends without the
+signal leaves them as they were, of which the manual says nothing.
 
 Each G31 of a run that keeps its moves leaves a ``Probe`` (for the toolpath: ``cncmacro run
 --json`` marks the move's ``skip``) and a ``skip`` note (for people: the run's text output and
@@ -66,6 +70,10 @@ def skip_block(m: Planner, target: list[float], file: str, line: int) -> None:
         m.host.note("skip", _note(m, start, end, what), line)
     m.move(file, line, SKIP_MODE, end)
     m.skip_pos = list(m.pos)
+    if m.dialect.skip_commons:  # the GSK980TDi's #995…: where the signal came on, as the program writes it
+        index = m.axis_index
+        stored = [(n, m.pos[index[a]]) for a, n in m.dialect.skip_commons if a in index]
+        m.host.probed(stored, what is not None)
 
 
 def skip_end(

@@ -27,6 +27,7 @@ from ...planner.alarms import UNKNOWN_VALUE
 from ...syntax.nodes import Number
 
 log = logging.getLogger(__name__)
+_COMMENT = re.compile(r"\([^)]*\)?")  # a comment, to its ")" or the line's end
 _RETURN_OR_END = re.compile(r"M\s*0*(?:99|30|2)(?![\d.])", re.IGNORECASE)  # may hold M99, M30 or M02
 
 
@@ -92,7 +93,11 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     arguments #1–#33 a call would pass, each of them still ``unknown`` where the run stopped (a
     tool number the program has set since is not). Where the value was read through ``#[...]``,
     whose number only the run knows, and no such variable is left, the note names that read."""
-    wanted, indirect, through = _sources(text, earlier)
+    wanted, indirect, through, touched = _sources(text, earlier, dialect)
+
+    def probed_here(n: int) -> bool:  # where a G31 stopped: #5061…, or GSK's #995… once a G31 wrote it
+        return is_skip_position(n, dialect) and (n in touched or not is_kept(n, kinds, dialect))
+
     named = [(n, line) for n, line in wanted.items()
              if (is_kept(n, kinds, dialect) or is_input(n, dialect) or is_skip_position(n, dialect)
                  or (arguments and 1 <= n <= 33)) and unknown(n)]  # fmt: skip
@@ -103,9 +108,9 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     parts, parts_zh = [], []
     tool = [(n, line) for n, line in kept if is_tool(n, dialect)]
     inputs = [(n, line) for n, line in kept if is_input(n, dialect)]
-    probed = [(n, line) for n, line in kept if is_skip_position(n, dialect)]
+    probed = [(n, line) for n, line in kept if probed_here(n)]
     kept = [(n, line) for n, line in kept
-            if not is_tool(n, dialect) and not is_input(n, dialect) and not is_skip_position(n, dialect)]  # fmt: skip
+            if not is_tool(n, dialect) and not is_input(n, dialect) and not probed_here(n)]  # fmt: skip
     if kept:
         names, names_zh = _names(kept)
         parts.append(f"{names}, which the machine keeps")
@@ -162,23 +167,42 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
             f"分析运行在此停止：本程序段取决于{which_zh}；{tail_zh}")  # fmt: skip
 
 
-def _sources(text: str, earlier: Iterable[tuple[int, str]]) -> tuple[dict[int, int | None], bool, int | None]:
+def _sources(
+    text: str, earlier: Iterable[tuple[int, str]], dialect: Dialect
+) -> tuple[dict[int, int | None], bool, int | None, set[int]]:
     """The variables block ``text``'s value comes from (variable -> the line of the assignment
     that reads it, None for the block's own), through the assignments of ``earlier``; whether a
-    ``#[...]`` read comes in, and the line of the assignment it is in (None: the block itself)."""
+    ``#[...]`` read comes in, and the line of the assignment it is in (None: the block itself);
+    and which of them a G31 wrote (``Dialect.skip_commons``: GSK's #995…), whose assignments
+    before that G31 are not followed."""
     own = assigned(text)
     expression = own[1] if own else text
     wanted: dict[int, int | None] = dict.fromkeys(variables_in(expression))
     indirect, where = "#[" in expression, None
+    stored = frozenset(n for _, n in dialect.skip_commons)
+    touched: set[int] = set()
+    skip = _skip_code(dialect) if stored else None
     for line, before in earlier:
+        if skip is not None and not stored.isdisjoint(wanted) and skip.search(_COMMENT.sub("", before)):
+            touched |= stored.intersection(wanted)
         a = assigned(before)
-        if a is not None and a[0] in wanted:
+        if a is not None and a[0] in wanted and a[0] not in touched:
             del wanted[a[0]]
             if not indirect and "#[" in a[1]:
                 indirect, where = True, line
             for n in variables_in(a[1]):
                 wanted.setdefault(n, line)
-    return wanted, indirect, where
+    return wanted, indirect, where, touched
+
+
+def _skip_code(dialect: Dialect) -> re.Pattern[str]:
+    """A pattern that finds one of the profile's skip codes (``G31``, ``G031``, ``G31.``) in a
+    block's text."""
+    codes = []
+    for code in sorted(dialect.skip_codes):
+        whole, _, fraction = f"{code:g}".partition(".")
+        codes.append(f"0*{whole}" + (rf"\.{fraction}0*" if fraction else r"(?:\.0*)?"))
+    return re.compile(rf"G\s*(?:{'|'.join(codes)})(?![\d.])", re.IGNORECASE)
 
 
 def _read_through(line: int | None) -> tuple[str, str]:

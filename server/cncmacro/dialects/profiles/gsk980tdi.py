@@ -41,6 +41,9 @@ PROFILE = Dialect(
     lathe=True,
     axes=("X", "Y", "Z", "C", "B"),
     modal_call_codes=frozenset({0.0, 1.0, 2.0, 3.0, 5.0}),
+    # "跳转信号变为“1”时绝对坐标位置被存储在用户宏变量中(#995～#999 分别对应 X，Z，Y，4th，5th)"
+    # (§3.16.2); the 4th and 5th axes are C and B here, as #5004 and #5005 number them
+    skip_commons=(("X", 995), ("Z", 996), ("Y", 997), ("C", 998), ("B", 999)),
     # "进给速度超过 200mm/min 时被箝制在该速度" (§3.16.2 note)
     skip_feed_clamp=200.0,
     # G23 at power-on (§3.31 note 3)
