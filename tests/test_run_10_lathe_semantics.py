@@ -104,6 +104,17 @@ def test_10_1_t0100_cancels_the_offset(lathe: Lathe) -> None:
     assert (m.C[100], m.C[101], m.C[102]) == (50.0, 10.0, 100.0)
 
 
+def test_10_1_g10_c_adds_to_the_nose_radius_as_u_and_w_add_to_x_and_z() -> None:
+    """0i-TF "G10 P_ X(U)_ Z(W)_ R(C)_ Q_": C is the nose radius's increment. G10 P1 R0.4, then
+    G10 P1 U-0.01 W-0.02 C0.1: the wear radius (#12001) 0.4 + 0.1 = 0.5, X wear (#10001) -0.01,
+    Z wear (#11001) -0.02; the C axis does not turn."""
+    m = run(lines("G10 P1 R0.4", "G10 P1 U-0.01 W-0.02 C0.1", "#100=#12001", "#101=#10001", "#102=#11001",
+                  "#103=#5023", "M30"), "fanuc-0i-lathe")  # fmt: skip
+    v = m.variables()
+    assert (v[100], v[101], v[102], v[103]) == (pytest.approx(0.5), -0.01, -0.02, 0.0)
+    assert not m.planner.moves
+
+
 def test_10_1_fanuc_lathe_offsets_have_short_numbers_for_offsets_1_to_64() -> None:
     v = final(lines("#2701=-200", "#2001=0.1", "#2864=-5", "G10 P10002 X-180 Z-250", "G10 P2 X0.2",
                     "#100=#15001", "#101=#10001", "#102=#16064", "#103=#2702", "#104=#2802", "#105=#2002",

@@ -110,8 +110,9 @@ def local_coordinates(p: Planner, axes: dict[int, float]) -> None:
 
 def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]) -> None:
     """G10: L2 Pn a work offset (P0 the external one), L20 Pn an extra work offset, on a lathe
-    P a tool offset (P < 10000 wear, 10000 + n geometry), on a mill L10–L13 P R a tool offset (and the
-    L numbers ``Dialect.g10_tool_l_aliases`` gives as one of them, Haas's L1)."""
+    P a tool offset (P < 10000 wear, 10000 + n geometry; R the nose radius, C added to it), on a
+    mill L10–L13 P R a tool offset (and the L numbers ``Dialect.g10_tool_l_aliases`` gives as one
+    of them, Haas's L1)."""
     host = p.host
     l_value = other.get("L")
     number = int(other.get("P", 0.0))
@@ -136,8 +137,15 @@ def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[s
                 host.store(num, axes[axis])
             if axis in inc:
                 host.store(num, (host.stored(num) or 0.0) + inc[axis])
+        radius = offsets.radius[0 if geometry else 1] + n
         if "R" in other:
-            host.store(offsets.radius[0 if geometry else 1] + n, other["R"])
+            host.store(radius, other["R"])
+        # C adds to the nose radius as U and W add to X and Z ("G10 P_ X(U)_ Z(W)_ R(C)_ Q_"), a C
+        # axis's word included
+        c_axis = p.axis_index.get("C")
+        more = axes.get(c_axis) if c_axis is not None else other.get("C")
+        if more is not None:
+            host.store(radius, (host.stored(radius) or 0.0) + more)
         if "Q" in other:
             host.store(offsets.tip + n, other["Q"])
         return
