@@ -13,7 +13,7 @@ from typing import Any
 
 import pytest
 
-from cli_capture import run_json
+from cli_capture import cli, run_json
 from running import lines
 
 
@@ -43,3 +43,32 @@ def test_a_mill_move_at_an_angle_from_x_and_an_angle_from_a_variable(tmp_path: P
 def test_a_block_with_both_coordinates_moves_as_written(tmp_path: Path) -> None:
     program = lines("O0001", "G90 G17 G00 X0 Y0", "G01 X10. Y3. ,A30. F600", "M30")
     assert ends(run_json(tmp_path, program), "X", "Y") == [(0.0, 0.0), (10.0, 3.0)]
+
+
+def test_fanucs_two_block_form_goes_to_the_corner_where_the_lines_meet(tmp_path: Path) -> None:
+    # ",A160." alone, then "X50. Z-60. ,A180.": from X30 Z-30 (radius 15) the line at 160 deg meets
+    # the line through X50 Z-60 at 180 deg (radius 25) after t = 10 / sin 160 = 29.238 mm, at
+    # Z = -30 + 29.238 cos 160 = -57.475: the first block goes there, the second on to Z-60. At
+    # G98 F100: 29.238 mm = 17.543 s, then 2.525 mm = 1.515 s. No corner-word warning: the angle
+    # alone is the form's first block
+    program = lines("O0001 (cncmacro: dialect=fanuc-0i-lathe)", "G98 G00 X30. Z-30.", "G01 F100", ",A160.",
+                    "X50. Z-60. ,A180.", "M30")  # fmt: skip
+    result = run_json(tmp_path, program, "O0001.nc")
+    t = 10.0 / math.sin(math.radians(160.0))
+    corner = -30.0 + t * math.cos(math.radians(160.0))
+    assert corner == pytest.approx(-57.475, abs=1e-3)
+    assert [(mv["line"], *end) for mv, end in zip(result["moves"], ends(result, "X", "Z"), strict=True)] == [
+        (2, 30.0, -30.0), (4, 50.0, round(corner, 6)), (5, 50.0, -60.0)]  # fmt: skip
+    assert [mv["time"] for mv in result["moves"][1:]] == pytest.approx([t / 100 * 60, (60 + corner) / 100 * 60])
+    path = tmp_path / "O0001.nc"
+    code, out, _ = cli("check", str(path))
+    assert (code, out) == (0, "")
+
+
+def test_a_second_block_without_its_angle_goes_straight(tmp_path: Path) -> None:
+    # ",A160." then "X50. Z-60." (no angle: no corner to work out): straight to X50 Z-60, and the
+    # angle is not kept for a later block
+    program = lines("O0001 (cncmacro: dialect=fanuc-0i-lathe)", "G98 G00 X30. Z-30.", "G01 F100", ",A160.",
+                    "X50. Z-60.", "Z-70.", "X60. Z-80. ,A180.", "M30")  # fmt: skip
+    result = run_json(tmp_path, program, "O0001.nc")
+    assert ends(result, "X", "Z") == [(30.0, -30.0), (50.0, -60.0), (50.0, -70.0), (60.0, -80.0)]

@@ -40,6 +40,7 @@ def with_corners(cf: CompiledFile, block: Block, run: Runner) -> Runner:
     if angle is not None:
         known, literal = cf.addresses.constant(angle.value)
         get_angle = None if known else cf.addresses.value(angle.value)
+        alone = not block.words and not block.statements  # ",A1" alone: FANUC's two-block form
 
         def angled(m: Any, pc: int) -> int:
             for get in getters:
@@ -47,6 +48,8 @@ def with_corners(cf: CompiledFile, block: Block, run: Runner) -> Runner:
             p = m.planner
             p.block_angle = literal if get_angle is None else get_angle(m)
             try:
+                if alone:
+                    p.angle_alone(pc)
                 return run(m, pc)
             finally:
                 p.block_angle = None
@@ -78,6 +81,8 @@ def no_move(corner: CornerWord, block: Block, axis_letters: frozenset[str]) -> D
                 "系统不会插入",
             )
     if not any(w.letter in axis_letters for w in block.words):
+        if corner.letter == "A":  # ,A1 alone: the first block of FANUC's two-block direct drawing form
+            return None
         return detail(
             f",{corner.letter} ({name}) in a block without a move: it belongs at the end of a G01, G02 "
             "or G03 move that another move follows",

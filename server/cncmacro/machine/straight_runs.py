@@ -21,6 +21,7 @@ import math
 from typing import TYPE_CHECKING
 
 from ..planner.alarms import MacroAlarm
+from ..planner.angled_moves import PENDING_ANGLE
 from ..planner.arcs import ARC_MODES
 from ..planner.cutter_stage import StraightCuts
 from ..planner.cycle_time import INCH, SPEED_CLAMP
@@ -64,6 +65,8 @@ def run_straight(
     p = m.planner
     kinds = p.plain.kinds()
     if pc >= n_blocks or not kinds or p.shape is not None:  # a lathe cycle's shape: the compiled path reads it
+        return 0, pc
+    if PENDING_ANGLE in p.codes:  # after ",A1" alone: the general path ends FANUC's two-block form
         return 0, pc
     g_words = p.plain.g_words()
     lathe = p.lathe

@@ -4,9 +4,14 @@ dimension programming, ``G01 X30. ,A135.``; docs/semantics.md §8, "Chamfer and 
 The angle is measured from the plane's first axis toward its second (G17: from +X toward +Y;
 G18, a lathe's: from +Z toward +X), counterclockwise as G03 turns. The move's end lies on the
 line through the start at that angle: the coordinate the block leaves out is worked out from the
-one it names, in radius terms for a diameter axis. A block that names both coordinates (the
-second block of FANUC's two-block form, whose corner is where two such lines meet), or whose
-angle runs parallel to the named axis's line of constant value, moves as written.
+one it names, in radius terms for a diameter axis. A block whose angle runs parallel to the named
+axis's line of constant value moves as written.
+
+FANUC's two-block form, ``,A1`` alone and then ``X3 Z3 ,A2`` (0i-TF operator's manual, "direct
+drawing dimension programming"): the first block's end is the corner where the line through the
+start at A1 meets the line through the second block's end at A2 (``corner_point``); the planner
+keeps the first angle until the next move (``PENDING_ANGLE``). Without a corner (the second block
+names one coordinate or no angle, or the lines run parallel) the tool goes straight to the end.
 """
 
 from __future__ import annotations
@@ -17,6 +22,8 @@ from collections.abc import Sequence
 from .arcs import Plane
 
 _PARALLEL = 1e-9
+# the ``codes`` keys of the first block of the two-block form: its angle, and its line
+PENDING_ANGLE, PENDING_LINE = ",A pending", ",A pending line"
 
 
 def angled_end(
@@ -38,3 +45,26 @@ def angled_end(
         if abs(sin) < _PARALLEL:
             return
         target[a] = start[a] + (target[b] - start[b]) * scale_b * cos / sin / scale_a
+
+
+def corner_point(
+    plane: Plane, diameter: int, start: Sequence[float], end: Sequence[float], first: float, second: float
+) -> list[float] | None:
+    """Where the line through ``start`` at angle ``first`` meets the line through ``end`` at
+    ``second`` (degrees, as ``angled_end`` measures them), in ``plane``; None where they run
+    parallel."""
+    a, b = plane[0], plane[1]
+    scale_a = 0.5 if a == diameter else 1.0
+    scale_b = 0.5 if b == diameter else 1.0
+    u = (math.cos(math.radians(first)), math.sin(math.radians(first)))
+    v = (math.cos(math.radians(second)), math.sin(math.radians(second)))
+    cross = u[0] * v[1] - u[1] * v[0]
+    if abs(cross) < _PARALLEL:
+        return None
+    da = (end[a] - start[a]) * scale_a
+    db = (end[b] - start[b]) * scale_b
+    t = (da * v[1] - db * v[0]) / cross
+    corner = list(start)
+    corner[a] = start[a] + t * u[0] / scale_a
+    corner[b] = start[b] + t * u[1] / scale_b
+    return corner

@@ -22,7 +22,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from ..bilingual import Detail, detail
-from .angled_moves import angled_end
+from .angled_moves import PENDING_ANGLE, PENDING_LINE, angled_end, corner_point
 from .arc_checks import arc_finding
 from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
@@ -195,6 +195,8 @@ class Planner:
         """Carry out a ``PlainWords`` plan with its file and next line appended; returns whether
         the block counts as a move for a G66 call (``execute_nc``)."""
         modal_sets, code_sets, axes, inc, _, file, _ = plan
+        if PENDING_ANGLE in self.codes and self.block_angle is None:  # the two-block form's second block
+            del self.codes[PENDING_ANGLE], self.codes[PENDING_LINE]  # without its angle: no corner
         if self.cutter is not None and any(g == "plane" for g, _ in modal_sets):  # under compensation: the
             # plane change's alarm (cutter_stage.py)
             words = [("G", g) for group, g in modal_sets if group != "canned"]
@@ -324,10 +326,15 @@ class Planner:
         mode = self.modal.get("motion", 0.0)
         canned = self.modal.get("canned", 80.0)
         if not axes and not incremental:
+            if self.block_angle is not None:  # G01 ,A1 F0.1: FANUC's two-block form (angle_alone)
+                self.angle_alone(line)
+                return False, None
             return self._full_circle(mode, canned, other, file, line), None
         if self.shape is not None:
             self._shape_axes(frozenset(axes) | frozenset(incremental))
         target = self.target(axes, incremental)
+        if PENDING_ANGLE in self.codes:  # the second block of the two-block form (angled_moves.py)
+            self._two_block_corner(file, mode, target, {*axes, *incremental})
         if self.block_angle is not None and mode in (0.0, 1.0):  # G01 X30. ,A135. (angled_moves.py)
             self._angled(target, {*axes, *incremental}, self.block_angle)
         if canned != 80.0 and self.drills:
@@ -404,6 +411,25 @@ class Planner:
         plane = self._arc_planes.get(self.modal.get("plane", 17.0))
         if plane is not None:
             angled_end(plane, self._diameter, self.pos, target, named, angle)
+
+    def angle_alone(self, line: int) -> None:
+        """A block with an angle ``,A1`` and no coordinate (``block_angle``) under G00/G01: the first
+        block of FANUC's two-block form, whose move waits for the next block (angled_moves.py)."""
+        if self.block_angle is not None and self.modal.get("motion", 0.0) in (0.0, 1.0):
+            self.codes[PENDING_ANGLE], self.codes[PENDING_LINE] = self.block_angle, float(line)
+
+    def _two_block_corner(self, file: str, mode: float, target: list[float], named: set[int]) -> None:
+        """The move of the first block of FANUC's two-block form (``,A1`` alone), to the corner
+        where its line meets this block's (``X3 Z3 ,A2``), recorded on the first block's line."""
+        first = self.codes.pop(PENDING_ANGLE) or 0.0
+        first_line = int(self.codes.pop(PENDING_LINE) or 0.0)
+        plane = self._arc_planes.get(self.modal.get("plane", 17.0))
+        second = self.block_angle
+        if plane is None or second is None or mode not in (0.0, 1.0) or not {plane[0], plane[1]} <= named:
+            return
+        corner = corner_point(plane, self._diameter, self.pos, target, first, second)
+        if corner is not None:
+            self.move(file, first_line, mode, corner)
 
     def _block_values(self, one: float | None, axes: dict[int, float], other: dict[str, float]) -> None:
         """Words that are values in this block's mode: an ellipse's A, B, Q and a parabola's P, Q
