@@ -239,3 +239,9 @@ def test_7_h_code_with_another_address_or_unknown_operation_is_refused_on_gsk980
 def test_5_calls_plain_cam_lines_with_calls_are_checked():
     found = check(lines("O1000", "G01 X1. Y2.", "M98 P2000 L0", "M30", "O2000", "M99"))
     assert [(d.code, *at(d)) for d in found] == [("repeat-count-range", 3, 10, 12, "error")]
+
+
+def test_7_g65_p_then_h_is_a_call_whose_h_is_argument_11_on_gsk980tdi():
+    # §3.28.3.1 specification I: H is #11; P comes first, so these are calls, not H codes
+    for block in ("G65 P9013 A1 H5", "G65 P9013 H5", "G65 P9013 L2 H5"):
+        assert check(lines("O1000", block, "M30", "O9013", "M99"), "gsk980tdi") == [], block

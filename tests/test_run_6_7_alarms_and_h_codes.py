@@ -141,3 +141,19 @@ def test_dprnt_formats_values():
 
     m = run(lines("#1=12.3456", "#2=-7", "POPEN", "DPRNT[X#1[53]**Y#2[30]*Z#3[20]]", "PCLOS", "M30"))
     assert m.output == ["X12.346  Y-7 Z0"]
+
+
+# ---------------------------------------------------------------- §7 G65 P.. H.. is a call, G65 H.. P.. arithmetic
+
+
+MACRO_9013 = ("M30", "O9013", "#100=#1", "#101=#11", "M99")
+
+
+def test_7_the_first_of_p_and_h_after_g65_decides_call_or_h_code():
+    # GSK980TDi §3.28.3 note 3: G65 is followed at once by P or H; §3.28.3.1: H is argument #11.
+    # G65 P9013 A1 H5 calls O9013 with #1 = 1 and #11 = 5, so #100 = 1 and #101 = 5
+    assert final(lines("G65 P9013 A1 H5", *MACRO_9013), "gsk980tdi") == {100: 1, 101: 5}
+    # G65 P9013 H5: #11 = 5 and #1 not passed (vacant), so #100 stays vacant and #101 = 5
+    assert final(lines("G65 P9013 H5", *MACRO_9013), "gsk980tdi") == {101: 5}
+    # G65 H01 P#100 Q5 is still the assignment #100 = 5 (H first)
+    assert final(lines("G65 H01 P#100 Q5", "M30"), "gsk980tdi") == {100: 5}

@@ -23,6 +23,7 @@ from ..dialects.alarms import (
     STATEMENT_FORMAT,
     WRITE_PROTECTED,
 )
+from ..dialects.dialect import Dialect
 from ..library.programs import LoadedFile
 from ..planner.alarms import UnknownValue
 from ..planner.numbers import format_value, round_half_away, to_increment
@@ -48,6 +49,7 @@ from ..syntax.program import ProgramUnit
 from . import block_roles, jumps
 from .alarms import MacroAlarm, raiser
 from .block_rules import DIALECT_FORMS, first_alarm, validate_block
+from .calls import h_code_form
 from .corners import with_corners
 from .expressions import ExpressionCompiler, Getter
 from .variables import out_of_range
@@ -248,7 +250,7 @@ class CompiledFile:
         if isinstance(s, Assign):
             return self._reporting(s, run)
         if s is None and self.machine.dialect.h_codes:
-            return self._reporting(_h_code_result(block), run)
+            return self._reporting(_h_code_result(block, self.machine.dialect), run)
         return run  # an IF..THEN assignment reports itself, when it runs (``statement``)
 
     def _reporting(self, written: Assign | int | None, run: Runner) -> Runner:
@@ -693,13 +695,13 @@ def _bad_loop_number(word: str, loop: Number) -> Runner:
 
 
 # The NC-block compiler imports this module, so it is imported last.
-def _h_code_result(block: Block) -> int | None:
+def _h_code_result(block: Block, dialect: Dialect) -> int | None:
     """The variable a gsk980tdi ``G65 Hm P#n Q.. R..`` arithmetic block writes (``P#n``), or None
-    (another block, a jump H code, an indirect P)."""
+    (another block, a macro call, a jump H code, an indirect P)."""
     words = block.words
     if len(words) < 3 or words[0].letter != "G" or not isinstance(words[0].value, Number):
         return None
-    if words[0].value.value != 65.0:
+    if words[0].value.value != 65.0 or not h_code_form(words[1:], dialect):
         return None
     by_letter = {w.letter: w.value for w in words[1:]}
     h, p = by_letter.get("H"), by_letter.get("P")

@@ -370,7 +370,7 @@ def _macro_call(words: Sequence[Word], at: int, g: float, dialect: Dialect) -> B
     after = words[at + 1 :]
     p = next((w for w in after if w.letter == "P"), None)
     count = next((w for w in after if w.letter == "L"), None)
-    if kind == "G65" and dialect.h_codes and count is None and any(w.letter == "H" for w in after):
+    if kind == "G65" and h_code_form(after, dialect):
         return BlockCall(kind, code, at, p, arithmetic=True)
     number = None
     if p is not None and p.value.__class__ is Number:
@@ -382,6 +382,22 @@ def _macro_call(words: Sequence[Word], at: int, g: float, dialect: Dialect) -> B
     name = p.name if p is not None else None
     return BlockCall(kind, code, at, p, number, name, count=count, repeats=_literal_count(count), arguments=args,
                      macro=True)  # fmt: skip
+
+
+def h_code_form(after: Sequence[Word], dialect: Dialect) -> bool:
+    """Whether ``G65`` followed by the words ``after`` is macro A's ``G65 Hm P Q R`` (arithmetic
+    and branches, ``machine/hcodes.py``) rather than a macro call: on a dialect with ``h_codes``,
+    the first of P and H after G65 decides. The GSK980TDi's manual has G65 followed at once by P or
+    H (§3.28.3 note 3) and H an argument of a call, #11 (§3.28.3.1, specification I), so
+    ``G65 P9013 H5`` calls O9013 with #11 = 5 and ``G65 H01 P#100 Q5`` assigns (docs/semantics.md §7)."""
+    if not dialect.h_codes:
+        return False
+    for w in after:
+        if w.letter == "P":
+            return False
+        if w.letter == "H":
+            return True
+    return False
 
 
 def _subprogram_number(p: Word | None, count: Word | None, dialect: Dialect) -> tuple[int | None, int | None]:

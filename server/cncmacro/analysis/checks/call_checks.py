@@ -3,15 +3,15 @@
 Which call a block makes is ``machine.calls.recognise_call``'s, and what the block may not
 contain (words beside G65/G66: ``g65-nc-words``, a G argument, a call without P, an unknown G
 code, an M code with a decimal point) ``machine/block_rules.py``'s, the rules the interpreter
-raises as alarms: each problem is a finding here (``block_finding``). On gsk980tdi ``G65 H..``
-without L is the macro A form; otherwise a code that the machine settings configure as a call,
-then ``M98``/``M198``, the dialect's local subprogram call (Haas ``M97 P n``: its P is a label of
-the same program, judged like ``M98 Q``) and ``M99``. What depends on values is decided by the
-interpreter's own helpers in ``machine/calls.py`` (``map_arguments`` for argument letters,
-``repeat_count`` and ``program_and_count`` for counts, ``macro_program_number`` for P), run on
-the literal values: an alarm they raise becomes an error here, a note a warning. Calls with a
-literal target become ``CallSite`` facts for ``program-not-found``; literal ``H80–H86 P``
-targets ``Jump`` facts; ``M99 Pn`` a ``ReturnJump``.
+raises as alarms: each problem is a finding here (``block_finding``). On gsk980tdi a G65 whose
+first P or H word is H is the macro A form (``h_code_form``); otherwise a code that the machine
+settings configure as a call, then ``M98``/``M198``, the dialect's local subprogram call (Haas
+``M97 P n``: its P is a label of the same program, judged like ``M98 Q``) and ``M99``. What
+depends on values is decided by the interpreter's own helpers in ``machine/calls.py``
+(``map_arguments`` for argument letters, ``repeat_count`` and ``program_and_count`` for counts,
+``macro_program_number`` for P), run on the literal values: an alarm they raise becomes an error
+here, a note a warning. Calls with a literal target become ``CallSite`` facts for
+``program-not-found``; literal ``H80–H86 P`` targets ``Jump`` facts; ``M99 Pn`` a ``ReturnJump``.
 """
 
 from __future__ import annotations
@@ -116,20 +116,17 @@ def _macro_call(
                 return
     after = words[call.at + 1 :]
     dialect = ctx.dialect
-    has_h = any(w.letter == "H" for w in after)
-    has_l = any(w.letter == "L" for w in after)
-    if name == "G65" and has_h and not has_l:
-        if call.arithmetic:
-            _h_code(words[call.at], after, ctx, facts)
-            return
-        if _looks_like_h_code(after):
-            h = after[0]
-            _add(facts, h, "dialect-feature",
-                 f"G65 H{_literal(h):02.0f} (macro A arithmetic and branches) does not exist on {dialect.title}; "
-                 "write it as a macro statement",
-                 f"{dialect.title} 没有 G65 H{_literal(h):02.0f}（宏程序 A 形式的运算与转移），请改写为宏语句",
-                 ctx)  # fmt: skip
-            return
+    if call.arithmetic:
+        _h_code(words[call.at], after, ctx, facts)
+        return
+    if name == "G65" and not dialect.h_codes and not any(w.letter == "L" for w in after) and _looks_like_h_code(after):
+        h = after[0]
+        _add(facts, h, "dialect-feature",
+             f"G65 H{_literal(h):02.0f} (macro A arithmetic and branches) does not exist on {dialect.title}; "
+             "write it as a macro statement",
+             f"{dialect.title} 没有 G65 H{_literal(h):02.0f}（宏程序 A 形式的运算与转移），请改写为宏语句",
+             ctx)  # fmt: skip
+        return
     for w in after:
         if w.value is not None:
             scan_value(w.value, ctx, facts.findings)
