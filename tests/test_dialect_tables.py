@@ -520,6 +520,16 @@ def test_both_atan_forms():
     assert "360" in atan["ATAN[a]/[b]"].en and "90" in atan["ATAN[a]"].en
 
 
+def test_3_gsk_random_numbers_are_its_functions_only():
+    # GSK980TDi §3.29.1: "#i = RAND[#j]", "#i = SRAND[#j，#k]" (note 10: "不包括 0"); hover and
+    # completion read these rows, in both languages
+    gsk = {f.signature: f for f in get_dialect("gsk980tdi").functions() if f.name in ("RAND", "SRAND")}
+    assert set(gsk) == {"RAND[a]", "SRAND[a,b]"}
+    assert "never 0" in gsk["RAND[a]"].en and "不包括0" in gsk["RAND[a]"].zh
+    assert all(f.kind == FUNCTION and CJK.search(f.zh) for f in gsk.values())
+    assert not {f.name for f in get_dialect("fanuc").functions()} & {"RAND", "SRAND"}
+
+
 def test_fix_and_fup_examples_match_section_3():
     docs = {f.name: f for f in functions_data.FUNCTIONS}
     assert "FIX[-1.7] = -1" in docs["FIX"].en

@@ -138,3 +138,20 @@ def test_conditions_combine_with_and_or():
 
 def test_overflow_is_alarm_111():
     assert alarm(lines("#1=EXP[100]", "#2=#1*#1", "M30")) == (111, 2)
+
+
+def test_3_gsk_rand_and_srand_are_vacant_in_a_simulated_run():
+    # GSK980TDi §3.29.1: "#i = RAND[#j]", "#i = SRAND[#j，#k]", random numbers no run can foresee;
+    # the run reads them as it reads the other values the folder lacks: vacant. So #100 and #101
+    # stay vacant, #102 = vacant + 1 = 1, and IF [#100 GT 5] (vacant is 0 on gsk: 0 > 5 is false)
+    # does not jump, so #103 = 1
+    text = lines("#100=RAND[10]", "#101=SRAND[5,10]", "#102=RAND[10]+1", "IF[#100 GT 5] GOTO 10", "#103=1",
+                 "N10 M30")  # fmt: skip
+    assert final(text, "gsk980tdi") == {102: 1, 103: 1}
+    # the argument is still worked out: RAND[1/0] is alarm 112
+    assert alarm(lines("#1=RAND[1/0]", "M30"), "gsk980tdi") == (112, 1)
+
+
+def test_3_rand_and_srand_are_alarm_114_on_fanuc():
+    assert alarm(lines("#1=RAND[10]", "M30")) == (114, 1)
+    assert alarm(lines("#1=SRAND[5,10]", "M30")) == (114, 1)

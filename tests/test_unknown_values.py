@@ -240,3 +240,18 @@ def test_a_value_read_through_an_indirect_number_is_named_as_such(tmp_path: Path
         "variable whose number the run works out (an offset or a common the machine keeps); set it under "
         "[variables] in .cncmacro.toml (or in the persistent file it names) to check further [unknown-value]"
     ]
+
+
+def test_a_random_number_is_unknown_and_a_branch_on_it_is_not_judged(tmp_path: Path) -> None:
+    # GSK980TDi §3.29.1 RAND/SRAND: no check can foresee the number, so the IF on line 4 stops
+    # the analysis run with a note (no syntax error, no alarm, the alarm block not faded)
+    text = "O0100\n#1=RAND[10]\n#2=SRAND[5,10]\nIF [#1 GT 5] GOTO 10\n#3000=1 (LOW)\nN10 M30\n"
+    code, found = check(tmp_path, text, None, "--dialect", "gsk980tdi")
+    assert code == 0
+    assert found == [
+        "4:1: hint: the analysis run stops here: this block depends on a random number (RAND, SRAND) (line 2), "
+        "which the control draws as the program runs; no check can foresee it, so what the block decides with "
+        "it is not judged [unknown-value]"
+    ]
+    code, found = check(tmp_path, text, None, "--dialect", "gsk980tdi", "--locale", "zh-CN")
+    assert found[0].startswith("4:1: ") and "随机数（RAND、SRAND）（第 2 行）" in found[0]

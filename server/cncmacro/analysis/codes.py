@@ -207,10 +207,10 @@ CODES: dict[str, Code] = _codes(
          detail("The run stops where the program decides something with a value only the machine has (a common "
                 "kept at power-off, an offset) and the folder does not give, or with an argument of a macro checked "
                 "without its caller: set it under [variables] in .cncmacro.toml, or in the persistent file it names, "
-                "to check further.",
+                "to check further; or with a random number (GSK980TDi's RAND, SRAND), which no check can foresee.",
                 "程序用只有机床上才有的数值（断电保持的公共变量、补偿值）或单独检查的宏程序的自变量作判断，而文件夹中"
                 "没有给出这个值，分析运行在此停止：在 .cncmacro.toml 的 [variables] 或它指定的断电保持变量文件中给出"
-                "该值即可继续检查。"),
+                "该值即可继续检查；或用随机数（GSK980TDi 的 RAND、SRAND）作判断，检查无法预知其值。"),
          RUN, subjects=("unknown-value",)),
     Code("endless-loop", ERROR,
          detail("A WHILE loop or IF..GOTO back whose condition nothing in it changes: the control never leaves it "

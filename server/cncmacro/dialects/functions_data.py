@@ -8,7 +8,8 @@ documents the GSK980TDi macro arithmetic and branch commands ``G65 Hm P#i Q#j R#
 §3.28.2 (docs/semantics.md §7): P is the destination variable (or the sequence number for H80-H86 and
 the alarm number for H99), Q and R are variables or constants written without ``#``.
 ``EXTRA_FUNCTIONS`` documents the functions and forms a dialect adds to the common set (the
-FANUC 30i's POW, ADP, PRM and ATAN[a,b]; the block IF's words, ``BLOCK_IF_WORDS``); a dialect
+FANUC 30i's POW, ADP, PRM and ATAN[a,b]; the GSK980TDi's random numbers RAND and SRAND, §3.29.1
+of its manual; the block IF's words, ``BLOCK_IF_WORDS``); a dialect
 names the ones it has in ``Dialect.extra_functions`` or has them by its ``block_if`` switch
 (docs/profiles.md). Each row says what kind of word it is
 (``tables.FUNCTION_KINDS``: a function, an operator or a statement word), by which the editor
@@ -302,6 +303,22 @@ EXTRA_FUNCTIONS: tuple[FunctionDoc, ...] = (
         "Arc tangent of a/b written with a comma: the same as ATAN[a]/[b], the angle of the point (b, a), "
         "0 to 360 degrees",
         "反正切a/b的逗号写法：与ATAN[a]/[b]相同，点(b, a)的角度，结果为0～360度",
+    ),
+    FunctionDoc(
+        "RAND",
+        FUNCTION,
+        "RAND[a]",
+        "A random number between 0 and a, never 0 (GSK980TDi); a check cannot foresee it, so a condition on it "
+        "is not judged there, and a simulated run reads it as vacant",
+        "产生0到a之间的随机数，不包括0（GSK980TDi）；检查时无法预知其值，因此不判断以它为条件的语句，模拟运行时按空变量读取",
+    ),
+    FunctionDoc(
+        "SRAND",
+        FUNCTION,
+        "SRAND[a,b]",
+        "A random number between a and b (GSK980TDi); a check cannot foresee it, so a condition on it is not "
+        "judged there, and a simulated run reads it as vacant",
+        "产生a到b之间的随机数（GSK980TDi）；检查时无法预知其值，因此不判断以它为条件的语句，模拟运行时按空变量读取",
     ),
     FunctionDoc(
         "POW",

@@ -414,6 +414,8 @@ class ExpressionCompiler:
         if problem is not None:
             return raiser(FORMAT, problem[1])
         args = [self._value(a) for a in node.args]
+        if name in RANDOM_FUNCTIONS:
+            return _random(args, self.unknowns)
         if name in _EXTRA:
             return _EXTRA[name](args, node.comma)
         if name == "ATAN" and len(args) == 2:
@@ -537,7 +539,11 @@ _FORMS: dict[str, dict[tuple[int, bool], str | None]] = {
     "POW": {(2, True): "POW"},
     "ADP": {(1, False): "ADP"},
     "PRM": {(1, False): "PRM", (2, True): "PRM", (2, False): "PRM", (3, True): "PRM"},
+    "RAND": {(1, False): "RAND"},
+    "SRAND": {(2, True): "SRAND"},
 }  # fmt: skip
+# the functions whose value no run can foresee (GSK980TDi's random numbers)
+RANDOM_FUNCTIONS = frozenset(("RAND", "SRAND"))
 _SHAPES = {
     (1, False): "[a]",
     (2, True): "[a,b]",
@@ -605,6 +611,22 @@ def _adp(args: list[Getter], comma: bool) -> Getter:
 def _prm(args: list[Getter], comma: bool) -> Getter:
     # the simulated machine has no parameters: every parameter (and bit) reads 0
     return lambda m: 0.0
+
+
+def _random(args: list[Getter], unknowns: bool) -> Getter:
+    """``RAND[a]`` (a random number above 0 up to a) and ``SRAND[a,b]`` (one between a and b): the
+    GSK980TDi's random numbers (§3.29.1, docs/semantics.md §3). What the control draws cannot be
+    foreseen, so the value is unknown in an analysis run (``unknowns``: a condition on it stops
+    the path there, machine/unknown_values.py) and vacant in a run of one simulated machine, as
+    that run reads the other values the folder lacks; the arguments are still worked out."""
+    result = UNKNOWN if unknowns else None
+
+    def draw(m: Machine) -> Value:
+        for arg in args:
+            arg(m)
+        return result
+
+    return draw
 
 
 _EXTRA: dict[str, Callable[[list[Getter], bool], Getter]] = {"POW": _pow, "ADP": _adp, "PRM": _prm}

@@ -4,7 +4,8 @@ note, machine/unknown_values.py), and the values it can be given instead.
 The note names the variables of the block the machine keeps (commons kept at power-off, offsets)
 and the two places a value can come from: ``[variables]`` in the machine file, or the
 persistent-variable file the machine file names (``persistent_file``), which the analysis
-reads as ``cncmacro run`` does. The run stopped there, not the program: the blocks after it are
+reads as ``cncmacro run`` does; or the random number it depends on (``RAND``, ``SRAND``), for
+which no value can be given. The run stopped there, not the program: the blocks after it are
 not "not executed" (``unknown_stop``).
 """
 
@@ -29,6 +30,7 @@ from ...syntax.nodes import Number
 log = logging.getLogger(__name__)
 _COMMENT = re.compile(r"\([^)]*\)?")  # a comment, to its ")" or the line's end
 _RETURN_OR_END = re.compile(r"M\s*0*(?:99|30|2)(?![\d.])", re.IGNORECASE)  # may hold M99, M30 or M02
+_RANDOM = re.compile(r"S?RAND\s*\[", re.IGNORECASE)  # a random number: RAND[..], SRAND[..] (GSK980TDi)
 
 
 def runs_as_macro(found: FoundProgram) -> bool:
@@ -92,8 +94,9 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     the ones the machine keeps and, in a macro checked without its caller (``arguments``), the
     arguments #1–#33 a call would pass, each of them still ``unknown`` where the run stopped (a
     tool number the program has set since is not). Where the value was read through ``#[...]``,
-    whose number only the run knows, and no such variable is left, the note names that read."""
-    wanted, indirect, through, touched = _sources(text, earlier, dialect)
+    whose number only the run knows, and no such variable is left, the note names that read; where
+    a random number (``RAND``, ``SRAND``) comes in, that it cannot be foreseen."""
+    wanted, indirect, through, touched, drawn = _sources(text, earlier, dialect)
 
     def probed_here(n: int) -> bool:  # where a G31 stopped: #5061…, or GSK's #995… once a G31 wrote it
         return is_skip_position(n, dialect) and (n in touched or not is_kept(n, kinds, dialect))
@@ -101,6 +104,8 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     named = [(n, line) for n, line in wanted.items()
              if (is_kept(n, kinds, dialect) or is_input(n, dialect) or is_skip_position(n, dialect)
                  or (arguments and 1 <= n <= 33)) and unknown(n)]  # fmt: skip
+    if not named and drawn:
+        return _random_number(drawn[0])
     if not named and indirect:
         return _read_through(through)
     kept = [(n, line) for n, line in named[:3] if not 1 <= n <= 33]
@@ -169,12 +174,13 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
 
 def _sources(
     text: str, earlier: Iterable[tuple[int, str]], dialect: Dialect
-) -> tuple[dict[int, int | None], bool, int | None, set[int]]:
+) -> tuple[dict[int, int | None], bool, int | None, set[int], list[int | None]]:
     """The variables block ``text``'s value comes from (variable -> the line of the assignment
     that reads it, None for the block's own), through the assignments of ``earlier``; whether a
     ``#[...]`` read comes in, and the line of the assignment it is in (None: the block itself);
-    and which of them a G31 wrote (``Dialect.skip_commons``: GSK's #995…), whose assignments
-    before that G31 are not followed."""
+    which of them a G31 wrote (``Dialect.skip_commons``: GSK's #995…), whose assignments before
+    that G31 are not followed; and the lines where a random number is drawn on the way (None: the
+    block itself)."""
     own = assigned(text)
     expression = own[1] if own else text
     wanted: dict[int, int | None] = dict.fromkeys(variables_in(expression))
@@ -182,6 +188,7 @@ def _sources(
     stored = frozenset(n for _, n in dialect.skip_commons)
     touched: set[int] = set()
     skip = _skip_code(dialect) if stored else None
+    drawn: list[int | None] = [None] if _RANDOM.search(expression) else []
     for line, before in earlier:
         if skip is not None and not stored.isdisjoint(wanted) and skip.search(_COMMENT.sub("", before)):
             touched |= stored.intersection(wanted)
@@ -190,9 +197,11 @@ def _sources(
             del wanted[a[0]]
             if not indirect and "#[" in a[1]:
                 indirect, where = True, line
+            if _RANDOM.search(a[1]):
+                drawn.append(line)
             for n in variables_in(a[1]):
                 wanted.setdefault(n, line)
-    return wanted, indirect, where, touched
+    return wanted, indirect, where, touched, drawn
 
 
 def _skip_code(dialect: Dialect) -> re.Pattern[str]:
@@ -203,6 +212,18 @@ def _skip_code(dialect: Dialect) -> re.Pattern[str]:
         whole, _, fraction = f"{code:g}".partition(".")
         codes.append(f"0*{whole}" + (rf"\.{fraction}0*" if fraction else r"(?:\.0*)?"))
     return re.compile(rf"G\s*(?:{'|'.join(codes)})(?![\d.])", re.IGNORECASE)
+
+
+def _random_number(line: int | None) -> tuple[str, str]:
+    """The note of a stop on a random number (``RAND``, ``SRAND``, drawn on ``line``; None: the block's own)."""
+    where = f" (line {line + 1})" if line is not None else ""
+    where_zh = f"（第 {line + 1} 行）" if line is not None else ""
+    return (
+        f"the analysis run stops here: this block depends on a random number (RAND, SRAND){where}, which the "
+        "control draws as the program runs; no check can foresee it, so what the block decides with it is not judged",
+        f"分析运行在此停止：本程序段取决于随机数（RAND、SRAND）{where_zh}，由系统在程序运行时产生；"
+        "检查无法预知其值，因此不判断本程序段据此所作的决定",
+    )
 
 
 def _read_through(line: int | None) -> tuple[str, str]:

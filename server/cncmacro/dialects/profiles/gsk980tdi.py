@@ -84,6 +84,8 @@ PROFILE = Dialect(
     word_format_alarms=False,
     arc_radius_alarm=False,  # no alarm for it in the manuals at hand: a warning (docs/semantics.md §8, "Arcs")
     keyword_abbreviations=False,
+    # #i = RAND[#j], #i = SRAND[#j，#k]: random numbers (§3.29.1)
+    extra_functions=frozenset({"RAND", "SRAND"}),
     if_without_then=False,
     corner_words=False,
     # typical of a small slant-bed lathe; a machine file gives the machine's own. X's rate is
