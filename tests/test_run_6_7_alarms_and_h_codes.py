@@ -157,3 +157,11 @@ def test_7_the_first_of_p_and_h_after_g65_decides_call_or_h_code():
     assert final(lines("G65 P9013 H5", *MACRO_9013), "gsk980tdi") == {101: 5}
     # G65 H01 P#100 Q5 is still the assignment #100 = 5 (H first)
     assert final(lines("G65 H01 P#100 Q5", "M30"), "gsk980tdi") == {100: 5}
+
+
+def test_7_h01_assigns_a_vacant_q_as_vacant():
+    # §3.28.1: "除用<空变量>赋值以外" vacant is 0; H01 is the assignment (赋值运算), so
+    # #100 = 5 then G65 H01 P#100 Q#0 leaves #100 vacant, as #100=#0 would; Q#1 (a vacant local)
+    # the same for #101; H02 is an operation: #102 = vacant + 1 = 0 + 1 = 1
+    text = lines("#100=5", "#101=6", "G65 H01 P#100 Q#0", "G65 H01 P#101 Q#1", "G65 H02 P#102 Q#0 R1", "M30")
+    assert final(text, "gsk980tdi") == {102: 1}

@@ -2,7 +2,8 @@
 
 P names the destination variable (for H80–H86 and H99 a sequence number or alarm number);
 Q and R are variables or constants, and ``Q-#102`` negates. The table of operations is
-docs/semantics.md's; vacant counts as 0 as everywhere on this control. Compiled once per block,
+docs/semantics.md's; vacant counts as 0 in an operation, as everywhere on this control, and
+``H01``, the assignment, copies a vacant Q as ``#i=#j`` does. Compiled once per block,
 like every other block.
 """
 
@@ -170,6 +171,14 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int, block: Block |
             return nxt
 
         return scale
+    if h == 1:
+        copied = _copied(cf, by_letter.get("Q"))
+
+        def assign(m: Machine, pc: int) -> int:
+            m.write(where(m), copied(m))
+            return nxt
+
+        return assign
     op = ARITHMETIC.get(h)
     if op is None:
         return raiser(
@@ -195,6 +204,15 @@ def h99_message(comment: str | None) -> str | None:
     if text.startswith("/"):
         text = text[1:].strip()
     return text or None
+
+
+def _copied(cf: CompiledFile, w: Word | None) -> Callable[[Any], float | None]:
+    """The value ``G65 H01 P#i Q#j`` assigns: ``#j`` as it is, vacant included, as ``#i=#j`` copies
+    it (seed 000 §3.28.1, "除用<空变量>赋值以外，其余所有情况下的用于运算的<空变量>与“0”相同": only an
+    assignment keeps vacant); ``Q-#j`` is an operation (-0), and no Q assigns 0."""
+    if w is None or w.value is None:
+        return lambda m: 0.0
+    return cf.values.value(w.value)
 
 
 def _operand(cf: CompiledFile, w: Word | None) -> Callable[[Any], float]:
