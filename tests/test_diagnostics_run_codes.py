@@ -204,3 +204,11 @@ def test_6_alarms_a_haas_finding_names_no_fanuc_alarm_number(tmp_path):
     for dialect, shown in (("fanuc-0i", ("alarm 128", "alarm 112")), ("haas", ("alarm", "alarm"))):
         diags = [d for d in analyse(tmp_path, {"O01000.nc": text}, dialect) if d.severity == "error"]
         assert [d.message.rsplit("(", 1)[1].rstrip(")") for d in diags] == list(shown), dialect
+
+
+def test_6_alarms_a_gsk_alarm_number_out_of_range_is_argument_range(tmp_path):
+    # §3.28.1: alarms 5900-5999, so #3000=100 and #3000=-1 are out of range (119), not 6000 or 5899
+    for block in ("#3000=100(TEST)", "#3000=-1", "G65 H99 P100"):
+        diags = analyse(tmp_path, {"O0001.nc": f"O0001\n{block}\nM30\n"}, dialect="gsk980tdi")
+        assert found(diags, "argument-range") == [("O0001.nc", 2, "error")], block
+        assert found(diags, "macro-alarm") == found(diags, "syntax") == [], block

@@ -165,3 +165,16 @@ def test_7_h01_assigns_a_vacant_q_as_vacant():
     # the same for #101; H02 is an operation: #102 = vacant + 1 = 0 + 1 = 1
     text = lines("#100=5", "#101=6", "G65 H01 P#100 Q#0", "G65 H01 P#101 Q#1", "G65 H02 P#102 Q#0 R1", "M30")
     assert final(text, "gsk980tdi") == {102: 1}
+
+
+@pytest.mark.parametrize("block", ["#3000=100(TEST)", "#3000=-1", "G65 H99 P100", "G65 H99 P-1"])
+def test_6_gsk_alarm_numbers_outside_0_to_99_are_alarm_119(block):
+    # §3.28.1 and §3.28.2: "报警范围为5900到5999", so n is 0 to 99; 100 and -1 are outside it: an
+    # argument out of range (119), never a made-up 6000 or 5899
+    assert alarm(lines(block, "M30"), "gsk980tdi") == (119, 1)
+
+
+def test_6_gsk_alarm_numbers_0_and_99_are_5900_and_5999_and_fanuc_is_not_limited():
+    assert alarm(lines("#3000=99(LAST)", "M30"), "gsk980tdi") == (5999, 1)
+    assert alarm(lines("G65 H99 P0", "M30"), "gsk980tdi") == (5900, 1)
+    assert alarm(lines("#3000=100(TEST)", "M30")) == (3100, 1)  # fanuc: 3000 + 100, as before

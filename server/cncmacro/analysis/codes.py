@@ -191,8 +191,9 @@ CODES: dict[str, Code] = _codes(
          detail("A division by zero found by running the program (alarm 112).", "运行程序时发现除数为零（报警 112）。"),
          RUN, (DIVISION_BY_ZERO,)),
     Code("argument-range", ERROR,
-         detail("A SQRT, ASIN, ACOS or LN argument out of range, found by running (119).",
-                "运行时发现 SQRT、ASIN、ACOS 或 LN 的自变量超出范围（119）。"),
+         detail("A SQRT, ASIN, ACOS or LN argument, or a #3000/G65 H99 alarm number, out of range, found by "
+                "running (119).",
+                "运行时发现 SQRT、ASIN、ACOS 或 LN 的自变量，或 #3000/G65 H99 的报警号超出范围（119）。"),
          RUN, (OVERFLOW, ARGUMENT_RANGE)),
     Code(MACRO_ALARM, ERROR,
          detail("A run of the program reaches #3000= or G65 H99 (a macro alarm): an error where every run of a main "

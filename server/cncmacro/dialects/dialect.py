@@ -207,6 +207,9 @@ class Dialect:
     # §5 a modal G code before G65/G66 in its block: "alarm" (only N may precede the call, alarm 127)
     # or "execute" (the G code takes effect and stays in force, then the macro is called)
     modal_g_before_call: str = "alarm"
+    # §6 the n of ``#3000=n`` and ``G65 H99 Pn`` the control takes (GSK980TDi: 0-99, alarms
+    # 5900-5999); outside it the run stops with alarm 119, an argument out of range. None: not limited
+    macro_alarm_numbers: tuple[int, int] | None = None
     # §6 the alarm numbers the control itself shows, of those the interpreter raises (FANUC 0i's,
     # the GSK's, 3000+n / 5900+n for #3000): None, every one (FANUC, GSK); a set, only these, the
     # others shown without a number (Haas, whose manuals document none of them)

@@ -10,10 +10,14 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from ..dialects.alarms import alarm_words
+from ..bilingual import detail
+from ..dialects.alarms import ARGUMENT_RANGE, alarm_words
 from ..planner.alarms import MacroAlarm as MacroAlarm
+
+if TYPE_CHECKING:
+    from ..dialects.dialect import Dialect
 
 
 def raiser(number: int, message: str, subject: str | None = None) -> Callable[..., Any]:
@@ -24,6 +28,26 @@ def raiser(number: int, message: str, subject: str | None = None) -> Callable[..
         raise MacroAlarm(number, message, subject)
 
     return fail
+
+
+def macro_alarm_number(n: int, dialect: Dialect, written: str) -> int:
+    """The number of the alarm a program raises itself with ``n`` (``written``: ``#3000=n`` or
+    gsk980tdi's ``G65 H99 Pn``, docs/semantics.md §6): ``Dialect.macro_alarm_base`` + n. An n
+    outside the range the control takes (``Dialect.macro_alarm_numbers``: 0-99 on gsk980tdi, alarms
+    5900-5999) raises alarm 119, an argument out of range, instead: the manual gives the range and
+    no alarm of its own for a number outside it."""
+    base = dialect.macro_alarm_base
+    span = dialect.macro_alarm_numbers
+    if span is not None and not span[0] <= n <= span[1]:
+        low, high = span
+        raise MacroAlarm(
+            ARGUMENT_RANGE,
+            detail(
+                f"{written}: the alarm number must be {low} to {high} (alarms {base + low} to {base + high})",
+                f"{written}：报警号必须在 {low}～{high} 之间（报警 {base + low}～{base + high}）",
+            ),
+        )
+    return base + n
 
 
 @dataclass(frozen=True, slots=True)

@@ -18,7 +18,7 @@ from ..dialects.alarms import ARGUMENT_RANGE, DIVISION_BY_ZERO, FORMAT
 from ..planner.alarms import UnknownValue
 from ..planner.numbers import bcd, bin_, round_half_away
 from ..syntax.nodes import Block, IndirectVar, Number, Var, Word
-from .alarms import MacroAlarm, raiser
+from .alarms import MacroAlarm, macro_alarm_number, raiser
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile, Runner
@@ -120,14 +120,15 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int, block: Block |
     if h in BRANCHES or h == 99:
         target = cf.values.value(p_word.value)
         if h == 99:
-            base = cf.machine.dialect.macro_alarm_base
+            dialect = cf.machine.dialect
             text = h99_message(block.comment_after(p_word.end)) if block is not None else None
 
             def alarm(m: Machine, pc: int) -> int:
                 n = _int(target(m) or 0.0)
+                number = macro_alarm_number(n, dialect, f"G65 H99 P{n}")
                 raise MacroAlarm(
-                    base + n,
-                    text or detail(f"G65 H99 P{n}: user alarm {base + n}", f"G65 H99 P{n}：用户报警 {base + n}"),
+                    number,
+                    text or detail(f"G65 H99 P{n}: user alarm {number}", f"G65 H99 P{n}：用户报警 {number}"),
                 )
 
             return alarm

@@ -17,7 +17,7 @@ from ..bilingual import detail
 from ..dialects.alarms import MAX_VALUE, NAME_SUBSCRIPT, NO_VARIABLE_NAME, OVERFLOW, VARIABLE_NUMBER, WRITE_PROTECTED
 from ..dialects.tables import SystemVariable
 from ..planner.numbers import round_half_away
-from .alarms import MacroAlarm
+from .alarms import MacroAlarm, macro_alarm_number
 from .unknown_values import KEPT_GROUPS, UNKNOWN, is_input_row, kept_extended, touch_unknown
 
 if TYPE_CHECKING:
@@ -214,14 +214,10 @@ class VariableAccess:
             raise MacroAlarm(WRITE_PROTECTED, detail(f"#{n} is read-only", f"#{n} 是只读变量，不能写入"))
         source = row.source
         if source == "alarm":
-            number = self.dialect.macro_alarm_base + int(round_half_away(value or 0.0))
+            k = int(round_half_away(value or 0.0))
             raise MacroAlarm(
-                number,
-                message
-                or detail(
-                    f"macro alarm #{n}={round_half_away(value or 0.0):g}",
-                    f"宏程序报警 #{n}={round_half_away(value or 0.0):g}",
-                ),
+                macro_alarm_number(k, self.dialect, f"#{n}={k}"),
+                message or detail(f"macro alarm #{n}={k}", f"宏程序报警 #{n}={k}"),
             )
         if source == "stop":
             raise StopRequest(message or f"#{n}={round_half_away(value or 0.0):g}")

@@ -28,6 +28,8 @@ PROFILE = Dialect(
     nine_indirection=True,
     c_relations=True,
     macro_alarm_base=5900,
+    # #3000=n and G65 H99 Pn: "报警范围为5900到5999" (§3.28.1, §3.28.2)
+    macro_alarm_numbers=(0, 99),
     # the soft limits and the offset numbers are the machine's (docs/semantics.md §11); no source
     # at hand gives the GSK980TDi's numbers for these alarms
     unnumbered_alarms=frozenset({OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER}),
