@@ -245,3 +245,22 @@ def test_7_g65_p_then_h_is_a_call_whose_h_is_argument_11_on_gsk980tdi():
     # §3.28.3.1 specification I: H is #11; P comes first, so these are calls, not H codes
     for block in ("G65 P9013 A1 H5", "G65 P9013 H5", "G65 P9013 L2 H5"):
         assert check(lines("O1000", block, "M30", "O9013", "M99"), "gsk980tdi") == [], block
+
+
+# ---------------------------------------------------------------- g65-word-order
+
+
+def test_5_calls_p_or_h_right_after_g65_else_a_warning_on_gsk980tdi():
+    # §3.28.3 note 3: "紧跟其后要出现P或H代码字"; the manual gives no alarm number: a warning
+    text = lines("O1000", "G65 A1 P9013", "G65 L2 P9013 A1", "G66 A1 P9013", "G67", "M30", "O9013", "M99")
+    found = coded(check(text, "gsk980tdi"), "g65-word-order")
+    assert [at(d) for d in found] == [(2, 4, 6, "warning"), (3, 4, 6, "warning"), (4, 4, 6, "warning")]
+    assert "P or H" in found[0].message and "write P right after G65" in found[0].message
+    [zh] = coded(check(lines("O1000", "G65 A1 P9013", "M30"), "gsk980tdi", locale="zh-CN"), "g65-word-order")
+    assert "紧跟 P或H" in zh.message
+    # P or H first: no finding; on fanuc the order is free
+    fine = lines("O1000", "G65 P9013 A1", "G65 H01 P#100 Q1", "G66 P9013 A1", "G67", "M30", "O9013", "M99")
+    assert coded(check(fine, "gsk980tdi"), "g65-word-order") == []
+    assert coded(check(text), "g65-word-order") == []
+    # the block still runs as a call of O9013
+    assert final(lines("G65 L2 P9013 A1", "M30", "O9013", "#100=#100+#1", "M99"), "gsk980tdi") == {100: 2}

@@ -141,6 +141,12 @@ CODES: dict[str, Code] = _codes(
                 "G65/G66 与其他 G 或 M 代码、O 代码或其前面的代码在同一程序段"
                 "（系统先执行其前的模态 G 代码再调用时为提示）。"),
          milder=HINT),
+    Code("g65-word-order", ERROR,
+         detail("A word other than P (or H) right after G65/G66 where the control's manual wants P or H there "
+                "(GSK980TDi); a warning where the manual gives no alarm for it.",
+                "G65/G66 之后紧跟的不是 P（或 H），而系统手册要求紧跟 P 或 H（GSK980TDi）；"
+                "手册未给出报警时为警告。"),
+         milder=WARNING),
     Code("argument-address", ERROR,
          detail("G, L, N, O or P used as a macro argument (alarm 129).",
                 "G、L、N、O 或 P 用作宏程序自变量（报警 129）。"),

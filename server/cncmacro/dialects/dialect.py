@@ -207,6 +207,10 @@ class Dialect:
     # §5 a modal G code before G65/G66 in its block: "alarm" (only N may precede the call, alarm 127)
     # or "execute" (the G code takes effect and stays in force, then the macro is called)
     modal_g_before_call: str = "alarm"
+    # §5 the letters one of which must come right after G65/G66, in the manual's order (GSK980TDi
+    # §3.28.3 note 3: "PH"); another word there is a warning, the manual giving no alarm for it.
+    # Empty: any order
+    call_first_letters: str = ""
     # §6 the n of ``#3000=n`` and ``G65 H99 Pn`` the control takes (GSK980TDi: 0-99, alarms
     # 5900-5999); outside it the run stops with alarm 119, an argument out of range. None: not limited
     macro_alarm_numbers: tuple[int, int] | None = None

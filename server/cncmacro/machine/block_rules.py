@@ -6,8 +6,9 @@ macro-word abbreviation, IF without THEN, Haas's conditional ``[cond] M99 P n`` 
 NC words or nothing (alarm 114; on Haas such an IF governs the rest of its block,
 ``Dialect.if_governs_block``), NC words beside a macro statement (alarm 127), the words a
 ``G65``/``G66`` may not share its block with (a word before it, alarm 127, or a modal G code the control sets first,
-``Dialect.modal_g_before_call``; an O word, 127; a G code among its arguments, 129), a call
-without P (076), and, in a block of NC words that no code of the machine file makes a call, a G
+``Dialect.modal_g_before_call``; an O word, 127; a word other than P or H right after it where the
+manual wants one, ``Dialect.call_first_letters``, a warning; a G code among its arguments, 129), a
+call without P (076), and, in a block of NC words that no code of the machine file makes a call, a G
 code that neither the dialect nor the machine has (010) and an M code written with a decimal
 point (007) (``machine/words.py``).
 
@@ -53,6 +54,7 @@ DIALECT_FORMS = (MISSING_THEN, CONDITIONAL_M99, IF_BLOCK, BLOCK_IF)
 NC_AND_STATEMENT = "nc-and-macro"  # NC words and a macro statement in one block
 BEFORE_CALL = "before-call"  # words before G65/G66
 O_WITH_CALL = "o-with-call"  # an O word in a G65/G66 block
+CALL_WORD_ORDER = "call-word-order"  # a word other than P (or H) right after G65/G66 where the manual wants one
 G_AFTER_CALL = "g-argument"  # a G code among the arguments of G65/G66
 CALL_WITHOUT_P = "call-without-p"  # G65/G66 without P
 UNKNOWN_G_CODE = "unknown-g-code"  # a G code neither the dialect nor the machine has
@@ -225,6 +227,9 @@ def _macro_call(
                 w.start, w.end, words=(w,),
             ))  # fmt: skip
             return
+    first = dialect.call_first_letters
+    if first and after and after[0].letter not in first:
+        out.append(_word_order(after[0], name, first, arithmetic, dialect))
     if arithmetic:
         return  # G65 Hm P Q R: its words are machine/hcodes.py's
     for w in after:
@@ -246,6 +251,29 @@ def _macro_call(
                    f"{name} 需要 P 指定被调用的程序（{dialect.alarm_said(PROGRAM_NOT_FOUND).zh}）"),
             call.start, call.end,
         ))  # fmt: skip
+
+
+def _word_order(w: Word, name: str, first: str, arithmetic: bool, dialect: Dialect) -> BlockProblem:
+    """A word right after G65/G66 that is none of ``Dialect.call_first_letters`` (GSK980TDi
+    §3.28.3 note 3, "紧跟其后要出现P或H代码字"). The manual gives no alarm for it, so the block runs
+    on, read by its first P or H (``calls.h_code_form``), and the check warns."""
+    letters = Detail(" or ".join(first), "或".join(first))  # "P or H", "P或H": the letters as each language lists them
+    if arithmetic:
+        reading, fix = detail("G65 H (macro arithmetic)", "G65 H（宏运算）"), "H"
+    else:
+        reading, fix = detail("a macro call", "宏程序调用"), "P"
+    fix = fix if fix in first else first[0]
+    title = dialect.title
+    return BlockProblem(
+        CALL_WORD_ORDER, FORMAT,
+        detail(f"{w.letter} right after {name}: {letters} must follow {name} at once",
+               f"{name} 之后紧跟的是 {w.letter}：{name} 之后必须紧跟 {letters.zh}"),
+        detail(f"{w.letter} right after {name}: {title}'s manual has {letters} follow {name} at once and gives no "
+               f"alarm for another word; the block is read as {reading}: write {fix} right after {name}",
+               f"{name} 之后紧跟的是 {w.letter}：{title} 手册规定 {name} 之后紧跟 {letters.zh}，未给出其他代码的报警；"
+               f"本程序段按{reading.zh}读取：请把 {fix} 紧接在 {name} 之后"),
+        w.start, w.end, False,
+    )  # fmt: skip
 
 
 def _raw_g(w: Word) -> float | None:

@@ -20,7 +20,15 @@ from ...bilingual import in_language, pick
 from ...dialects.alarms import FORMAT, P_VALUE_RANGE, PROGRAM_NOT_FOUND, SEQUENCE_NUMBER
 from ...library.programs import is_program_name
 from ...machine.alarms import MacroAlarm
-from ...machine.block_rules import BEFORE_CALL, CALL_WITHOUT_P, G_AFTER_CALL, O_WITH_CALL, BlockProblem, validate_block
+from ...machine.block_rules import (
+    BEFORE_CALL,
+    CALL_WITHOUT_P,
+    CALL_WORD_ORDER,
+    G_AFTER_CALL,
+    O_WITH_CALL,
+    BlockProblem,
+    validate_block,
+)
 from ...machine.calls import (
     SUBPROGRAM_CALLS,
     BlockCall,
@@ -114,6 +122,9 @@ def _macro_call(
             facts.findings.append(block_finding(problem, ctx.locale))
             if problem.stops:
                 return
+    order = rule.get(CALL_WORD_ORDER)  # a word other than P or H right after the call (a warning)
+    if order is not None:
+        facts.findings.append(block_finding(order, ctx.locale))
     after = words[call.at + 1 :]
     dialect = ctx.dialect
     if call.arithmetic:

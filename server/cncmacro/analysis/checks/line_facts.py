@@ -35,6 +35,7 @@ RULE_CODES = {
     rules.NC_AND_STATEMENT: "nc-and-macro",
     rules.BEFORE_CALL: "g65-nc-words",
     rules.O_WITH_CALL: "g65-nc-words",
+    rules.CALL_WORD_ORDER: "g65-word-order",
     rules.G_AFTER_CALL: "argument-address",
     rules.CALL_WITHOUT_P: "program-not-found",
     rules.UNKNOWN_G_CODE: "unknown-g-code",

@@ -30,6 +30,8 @@ PROFILE = Dialect(
     macro_alarm_base=5900,
     # #3000=n and G65 H99 Pn: "报警范围为5900到5999" (§3.28.1, §3.28.2)
     macro_alarm_numbers=(0, 99),
+    # "G65、G66该代码之前只允许出现代码字N且紧跟其后要出现P或H代码字" (§3.28.3 note 3)
+    call_first_letters="PH",
     # the soft limits and the offset numbers are the machine's (docs/semantics.md §11); no source
     # at hand gives the GSK980TDi's numbers for these alarms
     unnumbered_alarms=frozenset({OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER}),
