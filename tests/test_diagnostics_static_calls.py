@@ -7,7 +7,7 @@ from pathlib import Path
 
 from cncmacro.library.machine_file import CallCode, MachineSettings
 from cncmacro.library.programs import ProgramLibrary
-from running import alarm, final
+from running import alarm, final, run
 from static_helpers import at, check, coded, lines
 
 # ---------------------------------------------------------------- g65-nc-words
@@ -129,6 +129,18 @@ def test_5_calls_count_in_p_and_l_is_alarm_293_on_gsk980tdi_and_a_warning_on_fan
     assert "293" in found[0].message
     assert alarm(text, "gsk980tdi")[0] == 293
     assert [at(d) for d in coded(check(text), "repeat-count-range")] == [(2, 11, 13, "warning")]
+
+
+def test_5_calls_count_in_p_and_l_the_check_and_the_run_name_the_same_p_and_l_on_gsk980tdi():
+    # M98 P29013 L2: P's leading digit 2 is a count (O9013 twice), and L2 gives it again; the
+    # check and the run both write the block's own P and L, never an L the check made up
+    text = lines("O1000", "M98 P29013 L2", "M30", "O9013", "M99")
+    [d] = coded(check(text, "gsk980tdi"), "repeat-count-range")
+    assert d.message == "P29013 L2: the count is given in both P and L (alarm 293)"
+    [zh] = coded(check(text, "gsk980tdi", locale="zh-CN"), "repeat-count-range")
+    assert zh.message.startswith("P29013 L2：P 和 L 同时指定了调用次数")
+    m = run(text, "gsk980tdi")
+    assert m.alarm is not None and m.alarm.describe() == "alarm 293: P29013 L2: the count is given in both P and L"
 
 
 def test_5_calls_count_in_p_alone_is_fine():

@@ -144,6 +144,25 @@ def program_and_count(
     """``M98 P<count><program> L<count>``: (program number, repeat count). A P with more
     digits than a program number has (``Dialect.m98_program_digits``: 4, or up to 8 on a
     machine with longer program numbers) carries the count in the digits before them."""
+    digits, program, count_in_p = _split_p(p_text, p_value, dialect)
+    if l_value is not None:
+        _count_twice(digits, count_in_p, l_value, dialect, notes)
+        return program, repeat_count(l_value, dialect, notes)
+    return program, max(1, count_in_p) if len(digits) > dialect.m98_program_digits else 1
+
+
+def count_in_p_and_l(
+    p_text: str | None, p_value: float | None, l_value: float, dialect: Dialect, notes: list[str]
+) -> None:
+    """The rule of ``M98 P<count><program> L<count>`` alone, as ``program_and_count`` applies it
+    when the block runs: the alarm (or the note) for a count given in both P and L, with the L
+    written; the L's own range is ``repeat_count``'s."""
+    digits, _, count_in_p = _split_p(p_text, p_value, dialect)
+    _count_twice(digits, count_in_p, l_value, dialect, notes)
+
+
+def _split_p(p_text: str | None, p_value: float | None, dialect: Dialect) -> tuple[str, int, int]:
+    """An M98's P as (its digits, the program, the count in its leading digits or 0)."""
     if p_value is None:
         raise MacroAlarm(P_VALUE_RANGE, detail("M98 needs P: the program to call", "M98 需要用 P 指定被调用的程序"))
     n = to_int(p_value)
@@ -165,24 +184,25 @@ def program_and_count(
                 f"P{digits}：程序号最多 8 位（调用次数用 L 指定）",
             ),
         )
-    count_in_p = 0
-    program = n
     if len(digits) > k:
-        program = int(digits[-k:])
-        count_in_p = int(digits[:-k])
-    if count_in_p and l_value is not None:
-        if dialect.count_in_p_and_l_alarm:
-            raise MacroAlarm(
-                COUNT_TWICE,
-                detail(
-                    f"P{digits} L{to_int(l_value)}: the count is given in both P and L",
-                    f"P{digits} L{to_int(l_value)}：P 和 L 同时指定了调用次数",
-                ),
-            )
-        notes.append(detail("the count is given in both P and L; L is used", "P 和 L 同时指定了调用次数，按 L 执行"))
-    if l_value is not None:
-        return program, repeat_count(l_value, dialect, notes)
-    return program, max(1, count_in_p) if len(digits) > k else 1
+        return digits, int(digits[-k:]), int(digits[:-k])
+    return digits, n, 0
+
+
+def _count_twice(digits: str, count_in_p: int, l_value: float, dialect: Dialect, notes: list[str]) -> None:
+    """A count in P's leading digits and an L: the alarm where the control refuses it (its text
+    names the P and the L as written), else a note that L is used."""
+    if not count_in_p:
+        return
+    if dialect.count_in_p_and_l_alarm:
+        raise MacroAlarm(
+            COUNT_TWICE,
+            detail(
+                f"P{digits} L{to_int(l_value)}: the count is given in both P and L",
+                f"P{digits} L{to_int(l_value)}：P 和 L 同时指定了调用次数",
+            ),
+        )
+    notes.append(detail("the count is given in both P and L; L is used", "P 和 L 同时指定了调用次数，按 L 执行"))
 
 
 def macro_program_number(value: float | None, dialect: Dialect) -> int:

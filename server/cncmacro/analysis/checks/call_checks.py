@@ -8,9 +8,9 @@ first P or H word is H is the macro A form (``h_code_form``); otherwise a code t
 settings configure as a call, then ``M98``/``M198``, the dialect's local subprogram call (Haas
 ``M97 P n``: its P is a label of the same program, judged like ``M98 Q``) and ``M99``. What
 depends on values is decided by the interpreter's own helpers in ``machine/calls.py``
-(``map_arguments`` for argument letters, ``repeat_count`` and ``program_and_count`` for counts,
-``macro_program_number`` for P), run on the literal values: an alarm they raise becomes an error
-here, a note a warning. Calls with a literal target become ``CallSite`` facts for
+(``map_arguments`` for argument letters, ``repeat_count``, ``program_and_count`` and
+``count_in_p_and_l`` for counts, ``macro_program_number`` for P), run on the literal values: an
+alarm they raise becomes an error here, a note a warning. Calls with a literal target become ``CallSite`` facts for
 ``program-not-found``; literal ``H80–H86 P`` targets ``Jump`` facts; ``M99 Pn`` a ``ReturnJump``.
 """
 
@@ -36,6 +36,7 @@ from ...machine.calls import (
     bad_name_detail,
     call_words,
     code_value,
+    count_in_p_and_l,
     macro_program_number,
     map_arguments,
     program_and_count,
@@ -442,7 +443,7 @@ def _subprogram_call(words: tuple[Word, ...], call: BlockCall, ctx: LineContext,
         return
     twice: list[str] = []
     try:
-        program_and_count(p_text, p_value, 1.0, dialect, twice)  # L=1 is always valid: only P against L is judged
+        count_in_p_and_l(p_text, p_value, l_value, dialect, twice)  # the L's own range: _check_count
     except MacroAlarm as alarm:
         _add_alarm(facts, l_word, "repeat-count-range", alarm, ctx)
         return
