@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
+from analysis_helpers import analyse_files
 from cncmacro.syntax.document import ParsedDocument
 from cncmacro.syntax.nodes import Assign, Bracket, Do, End, Goto, If, Number, Var, While
 from conftest import block, error
+from running import run
+from static_helpers import lines
 
 
 def test_goto_forms():
@@ -29,6 +34,30 @@ def test_if_then_takes_one_assignment_only():
     assert error("IF[#1 GT 0] THEN GOTO 5").message.startswith("after THEN comes one assignment or output statement")
     error("IF[#1 GT 0] THEN WHILE[#1 LT 2] DO1")
     # IF [..] THEN alone is the block form (tests/test_semantics_4_block_if.py), not a syntax error
+
+
+def test_if_then_goto_suggests_only_the_if_forms_the_profile_has(tmp_path: Path) -> None:
+    # GSK980TDi (manual §3.29) and FANUC 0i have IF [..] GOTO n and IF [..] THEN <statement>,
+    # no ENDIF: the message points to IF [..] GOTO n; a profile with the block form of IF
+    # (Mitsubishi M70) still hears of IF [..] THEN closed by ENDIF
+    text = lines("O1000", "IF [#1 EQ 1] THEN GOTO 10", "N10 M30")
+    only = (
+        "after THEN comes one assignment or output statement (IF [cond] THEN #1=..); "
+        "a jump is written IF [cond] GOTO n, without THEN"
+    )
+    only_zh = "THEN 之后只能是一条赋值或输出语句（IF [条件] THEN #1=..）；跳转写作 IF [条件] GOTO n，不写 THEN"
+
+    def syntax(dialect: str, locale: str = "en") -> list[tuple[int, int, str]]:
+        found = analyse_files(tmp_path, {"O1000.nc": text}, dialect, locale=locale)
+        return [(d.line + 1, d.column, d.message) for d in found if d.code == "syntax"]
+
+    for dialect in ("gsk980tdi", "fanuc"):
+        assert syntax(dialect) == [(2, 18, only)]
+        assert syntax(dialect, "zh-CN") == [(2, 18, only_zh)]
+        m = run(text, dialect)
+        assert m.alarm is not None and m.alarm.message == f"the block does not parse: {only}"
+    [(_, _, block_form)] = syntax("mitsubishi-m70")
+    assert block_form.endswith("or nothing: the block form IF [cond] THEN, closed by ENDIF on a later line")
 
 
 def test_while_do_end_and_bare_do():

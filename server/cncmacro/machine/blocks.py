@@ -290,12 +290,10 @@ class CompiledFile:
         if block.has_error:
             problem = next(p for p in block.problems if p.severity == "error")
             number = problem.alarm if problem.alarm is not None else STATEMENT_FORMAT
+            said = problem.said(self.machine.dialect.block_if)
             return raiser(
                 number,
-                detail(
-                    f"the block does not parse: {problem.message}",
-                    f"程序段无法解析：{in_language(problem.message, True)}",
-                ),
+                detail(f"the block does not parse: {said}", f"程序段无法解析：{in_language(said, True)}"),
             )
         if block.program is not None:
             return self._header(block, pc, nxt)

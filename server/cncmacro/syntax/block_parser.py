@@ -124,7 +124,8 @@ def parse_with_grammar(code: str, prep: Prepared) -> Block:
         except UnexpectedInput as err:
             return _failed(prep, describe_error(code, err))
         except BlockError as err:
-            return _failed(prep, Problem(err.message, err.start, err.end, alarm=err.alarm))
+            problem = Problem(err.message, err.start, err.end, alarm=err.alarm, without_block_if=err.without_block_if)
+            return _failed(prep, problem)
         except RecursionError:
             too_deep = detail("the block is nested too deeply to read", "程序段嵌套过深，无法读取")
             return _failed(prep, Problem(too_deep, 0, len(code)))

@@ -29,12 +29,15 @@ RELATION_NAMES = {"==": "EQ", "!=": "NE", "<>": "NE", ">": "GT", ">=": "GE", "<"
 class BlockError(Exception):
     """A rule of the language broken by a line that the grammar itself accepts."""
 
-    def __init__(self, message: Detail, start: int, end: int, alarm: int | None = None) -> None:
+    def __init__(
+        self, message: Detail, start: int, end: int, alarm: int | None = None, without_block_if: Detail | None = None
+    ) -> None:
         super().__init__(message)
         self.message = message
         self.start = start
         self.end = end
         self.alarm = alarm  # the alarm's number, named by whoever shows the message (``Problem.alarm``)
+        self.without_block_if = without_block_if  # the message where the profile has no block IF
 
 
 # No control reads a number this long (FANUC: alarm 003, too many digits), and a float cannot

@@ -139,7 +139,7 @@ class _Builder(Transformer[Token, Items]):
             if isinstance(item, If) and item.opens_block:  # IF [..] THEN GOTO n: not a statement after THEN
                 after = children[k + 1]
                 if not isinstance(after, Word | CornerWord):  # NC words after it are judged later (nc-and-macro)
-                    raise BlockError(_AFTER_THEN, after.start, after.end)
+                    raise BlockError(_AFTER_THEN, after.start, after.end, without_block_if=_AFTER_THEN_ONLY)
         return Items(children, self.abbreviations)
 
     def word(self, c: _Children) -> Word:
@@ -355,6 +355,13 @@ _AFTER_THEN = detail(
     "IF [cond] THEN, closed by ENDIF on a later line",
     "THEN 之后只能是一条赋值或输出语句（IF [条件] THEN #1=..），或者什么都不写：块形式 IF [条件] THEN，"
     "在后面的程序段以 ENDIF 结束",
+)
+# the same to a control without the block form of IF (GSK980TDi, FANUC: only IF [cond] GOTO n and
+# IF [cond] THEN <statement>): it suggests only those
+_AFTER_THEN_ONLY = detail(
+    "after THEN comes one assignment or output statement (IF [cond] THEN #1=..); a jump is written "
+    "IF [cond] GOTO n, without THEN",
+    "THEN 之后只能是一条赋值或输出语句（IF [条件] THEN #1=..）；跳转写作 IF [条件] GOTO n，不写 THEN",
 )
 _M99_NEEDS_P = detail(
     "the conditional M99 needs P n after it: the sequence number to jump to ([cond] M99 P n)",

@@ -312,13 +312,23 @@ class Problem:
     """A syntax problem on one block, ready to become a diagnostic. ``alarm`` is the number of
     the alarm a control raises for it (FANUC's, as the interpreter numbers its alarms), kept out
     of ``message``: the analysis and the run name it as the profile shows it (docs/semantics.md
-    §6); None where the run stops with its format alarm and the message names none."""
+    §6); None where the run stops with its format alarm and the message names none.
+    ``without_block_if`` is the message to a control without the block form of IF
+    (``Dialect.block_if`` off), where ``message`` suggests that form; ``said`` chooses."""
 
     message: str
     start: int
     end: int
     severity: str = "error"
     alarm: int | None = None
+    without_block_if: str | None = None
+
+    def said(self, block_if: bool) -> str:
+        """The message as a control with (``block_if``) or without the block form of IF reads
+        it: a line is parsed once for every profile, so the profile chooses here."""
+        if block_if or self.without_block_if is None:
+            return self.message
+        return self.without_block_if
 
 
 _FIELDS = (

@@ -18,7 +18,7 @@ from ..diagnostics import Diagnostic
 
 def problem_message(problem: Problem, dialect: Dialect, chinese: bool) -> str:
     """The parser's message for ``problem`` in one language, with its alarm as ``dialect`` shows it."""
-    message = in_language(problem.message, chinese)
+    message = in_language(problem.said(dialect.block_if), chinese)
     if problem.alarm is None:
         return message
     said = dialect.alarm_said(problem.alarm, 3)
