@@ -105,6 +105,17 @@ def test_5_calls_configured_call_code_takes_arguments_like_g65():
     assert check(lines("O1000", "G100 A1 B2", "M30", "O9010", "M99"), settings=settings) == []
 
 
+def test_5_calls_a_standard_g_code_in_calls_is_no_call_on_gsk980tdi_and_a_call_on_fanuc(tmp_path: Path):
+    # [calls] G90 = 2000 with no O2000 anywhere: on GSK980TDi G90 stays the turning cycle
+    # (manual §3.32), nothing is called, nothing is missing; FANUC calls O2000, not found
+    settings = MachineSettings(calls={"G90": CallCode(2000)})
+    main = str(tmp_path / "MAIN.nc")
+    text = lines("O1000", "G00 X50 Z2", "G90 X40 Z-20 F100", "M30")
+    assert check(text, "gsk980tdi", file=main, library=ProgramLibrary(), settings=settings) == []
+    found = coded(check(text, file=main, library=ProgramLibrary(), settings=settings), "program-not-found")
+    assert [at(d)[0] for d in found] == [3] and "O2000" in found[0].message
+
+
 # ---------------------------------------------------------------- repeat-count-range
 
 

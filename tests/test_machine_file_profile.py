@@ -52,6 +52,35 @@ def test_machine_file_variable_number_names_the_machine_common_ranges(workspace:
     assert "#100-#199, #500-#999" in str(d["message"]) and "common" in str(d["message"])
 
 
+def test_machine_file_a_standard_g_code_in_calls_is_noted_once_on_gsk980tdi(tmp_path: Path) -> None:
+    # GSK980TDi manual §3.32: a code set equal to a standard G code disables the call; check
+    # says so once for the machine file, in English and Chinese; FANUC's [calls] G90 is a call
+    (tmp_path / "O0005.nc").write_text(lines("O0005", "G00 X50 Z2", "G90 X40 Z-20 F100", "M30"))
+    (tmp_path / "O2000.nc").write_text(lines("O2000", "M99"))
+    machine = tmp_path / ".cncmacro.toml"
+    machine.write_text('base = "gsk980tdi"\n\n[calls]\nG90 = 2000\n')
+    shown = str(machine)
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        cli("check", str(tmp_path))
+    assert err.getvalue() == (
+        f"cncmacro: note: {shown}: [calls] G90: GSK980TDi does not call a program for a standard G code of its own "
+        "(a code set equal to a standard G code is disabled); G90 runs as the standard code\n"
+    )
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        cli("check", "--locale", "zh-CN", str(tmp_path))
+    assert err.getvalue() == (
+        f"cncmacro：注意：{shown}：[calls] G90：GSK980TDi 的标准 G 代码不能设为宏程序调用"
+        "（设定值与标准 G 代码相同时本功能自动无效），G90 按标准 G 代码执行\n"
+    )
+    machine.write_text('base = "fanuc-0i"\n\n[calls]\nG90 = 2000\n')
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        cli("check", str(tmp_path))
+    assert err.getvalue() == ""
+
+
 def test_machine_file_run_calls_the_control_macro_and_the_six_digit_program(workspace: Path) -> None:
     status, out = cli("run", "--no-save", "--json", str(workspace / "O1000.nc"))
     r = json.loads(out)

@@ -355,6 +355,21 @@ def test_5_calls_a_call_code_with_l_above_9999_is_clamped_with_a_note_on_gsk():
     assert "9999" in m.notes[0].message
 
 
+def test_5_calls_a_standard_g_code_in_calls_is_no_call_on_gsk980tdi_and_a_call_on_fanuc():
+    # GSK980TDi manual §3.32: a code set equal to a standard G code disables the call, so
+    # [calls] G90 = 2000 leaves G90 the turning cycle: from X50 Z2 it cuts to X40 Z-20 and
+    # O2000 (#100=1) never runs; FANUC calls O2000 for any code its parameters name
+    from cncmacro.library.machine_file import CallCode
+
+    calls = {"G90": CallCode(2000)}
+    program = lines("G00 X50 Z2", "G90 X40 Z-20 F100", "M30", "O2000", "#100=1", "M99")
+    m = run(program, "gsk980tdi", calls=calls)
+    assert m.status == "completed" and 100 not in m.variables()
+    cut = m.planner.moves[1]  # X, Y, Z, C, B
+    assert (cut.line, cut.mode, cut.end[0], cut.end[2]) == (1, 90.0, 40.0, -20.0)
+    assert final(program, "fanuc", calls=calls)[100] == 1
+
+
 def test_5_calls_m99_p_in_a_main_program_goes_on_from_that_label():
     """M99 P5 jumps to N5 of the main program; the plain M99 after it restarts the program."""
     program = lines("#100=#100+1", "IF[#100 GE 3] GOTO 9", "M99 P5", "N9 M30", "N5 #101=#101+1", "M99")

@@ -339,8 +339,9 @@ CODES: dict[str, Code] = _codes(
                 "机床文件（.cncmacro.toml）无法使用：改用默认设置。")),
     Code("machine-file-note", INFORMATION,
          detail("What the machine file (.cncmacro.toml) adds to its profile: common variable ranges the profile "
-                "does not list.",
-                "机床文件（.cncmacro.toml）在其系统配置之外增加的内容：配置未列出的公共变量范围。")),
+                "does not list; and [calls] entries its profile does not call (a standard G code on GSK980TDi).",
+                "机床文件（.cncmacro.toml）在其系统配置之外增加的内容：配置未列出的公共变量范围；以及其系统配置"
+                "不作调用的 [calls] 项（GSK980TDi 的标准 G 代码）。")),
 )  # fmt: skip
 
 _BY_ALARM: dict[int, str] = {n: c.name for c in CODES.values() for n in c.alarms}

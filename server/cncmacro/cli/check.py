@@ -46,6 +46,7 @@ from ..library.machine_file import (
     common_note,
     find_machine_file,
     load_machine_file,
+    standard_calls_note,
 )
 from ..library.profiles import typed_profile_wins
 from .call_groups import FileKeys, join_groups, to_read_exactly
@@ -312,11 +313,12 @@ def _noted(
     settings: MachineSettings, machine_file: Path, typed: str | None, chinese: bool, err: Printable
 ) -> MachineSettings:
     """The settings to check with when ``typed`` is the command line's ``--dialect``; what a person
-    should know of the machine file (its profile overridden, the common ranges it adds) is said on
+    should know of the machine file (its profile overridden, the common ranges it adds, the
+    ``[calls]`` its profile does not call) is said on
     ``err``, as notes that change no exit status."""
     shown = shown_text(str(machine_file))
     settings, overridden = typed_profile_wins(settings, typed, shown)
-    for note in (overridden, common_note(settings, shown, typed)):
+    for note in (overridden, common_note(settings, shown, typed), standard_calls_note(settings, shown, typed)):
         if note is not None:
             print(f"cncmacro：注意：{note.zh}" if chinese else f"cncmacro: note: {note}", file=err)
     return settings

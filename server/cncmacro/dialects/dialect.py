@@ -160,6 +160,11 @@ class Dialect:
     # IFs nest (Mitsubishi M70/M80, Mazak EIA/ISO); elsewhere IF..THEN alone,
     # ELSE and ENDIF are ``dialect-feature`` errors and the run stops there with alarm 114
     block_if: bool = False
+    # §5 a machine file's ``[calls]`` may make one of the profile's own G codes call a program
+    # (FANUC's parameters 6050–6059 take any code); off: such an entry is no call, the standard
+    # code runs (GSK980TDi manual §3.32: when the code set equals a standard G code the call is
+    # disabled), and the machine file's note says so (``library/profiles.py``)
+    standard_g_calls: bool = True
     # §3 AND and OR may be spelled ``&&`` and ``||`` (Mazak's EIA/ISO programs:
     # ``IF [[#1 GT 0] && [#2 LT 5]] GOTO 10``); elsewhere they are ``dialect-feature`` errors and the
     # run stops at the block with alarm 114

@@ -71,7 +71,7 @@ else:  # the same reader, from PyPI, before it joined the standard library
     import tomli as tomllib
 
 from ..bilingual import Detail, detail, listed
-from ..dialects import DEFAULT_DIALECT, choices_text, get_dialect, normalise_dialect
+from ..dialects import DEFAULT_DIALECT, Dialect, choices_text, get_dialect, normalise_dialect
 from ..dialects.alarms import MAX_VALUE
 from ..dialects.describe import code_key
 from ..dialects.tables import CodeDoc, SystemVariable
@@ -163,6 +163,8 @@ class MachineSettings:
     limits: MachineLimits | None = None  # [limits]: the machine's travel, feed, spindle, tools; None: unchecked
     # the 0-based line of ``common`` in the file (where the editor shows ``common_note``)
     common_line: int | None = field(default=None, compare=False)
+    # the 0-based line of the ``[calls]`` table (where the editor shows ``standard_calls_note``)
+    calls_line: int | None = field(default=None, compare=False)
 
     def with_presets(self, presets: dict[int, float]) -> MachineSettings:
         """These settings with more preset variables (later ones win)."""
@@ -272,7 +274,9 @@ def load_machine_file(path: str | Path) -> MachineSettings:
     except (RecursionError, OverflowError, ValueError, TypeError) as e:  # a value no check foresaw
         raise MachineFileError(detail(f"{p}: a value cannot be used: {type(e).__name__}: {_brief(str(e))}",
                                       f"{p}：有无法使用的值：{type(e).__name__}：{_brief(str(e))}")) from e  # fmt: skip
-    return settings if settings.common is None else replace(settings, common_line=_line_of(text, "common"))
+    if settings.common is not None:
+        settings = replace(settings, common_line=_line_of(text, "common"))
+    return settings if not settings.calls else replace(settings, calls_line=_line_of(text, "calls"))
 
 
 def _line_of(text: str, key: str) -> int | None:
@@ -602,6 +606,40 @@ def common_note(settings: MachineSettings, shown: str, profile: str | None = Non
     if added is None:
         return None
     return detail(f"{shown}: common {added}", f"{shown}：common {added.zh}")
+
+
+def standard_calls(settings: MachineSettings, dialect: Dialect) -> tuple[str, ...]:
+    """The ``[calls]`` G codes that are the profile's own G codes where the profile lets no such
+    code call a program (``Dialect.standard_g_calls`` off: GSK980TDi manual §3.32, "when the
+    code set equals a standard G code, the function is disabled"): they are no calls, the
+    standard code runs (``profiles.profile_settings``)."""
+    if dialect.standard_g_calls or not settings.calls:
+        return ()
+    own = set()
+    for doc in dialect.g_codes():
+        try:
+            own.add(float(doc.code[1:]))
+        except ValueError:
+            continue
+    return tuple(k for k in settings.calls if k[0] == "G" and float(k[1:]) in own)
+
+
+def standard_calls_note(settings: MachineSettings, shown: str, profile: str | None = None) -> Detail | None:
+    """The note on the ``[calls]`` entries of the machine file at ``shown`` that the profile
+    (``profile``, else the machine file's, else the default) does not call (``standard_calls``),
+    as ``cncmacro check`` prints it and the editor shows it on the machine file; None when there
+    are none."""
+    dialect = get_dialect(profile or settings.dialect or DEFAULT_DIALECT)
+    codes = standard_calls(settings, dialect)
+    if not codes:
+        return None
+    en, zh = listed("en", codes), listed("zh", codes)
+    return detail(
+        f"{shown}: [calls] {en}: {dialect.title} does not call a program for a standard G code of its own "
+        f"(a code set equal to a standard G code is disabled); {en} runs as the standard code",
+        f"{shown}：[calls] {zh}：{dialect.title} 的标准 G 代码不能设为宏程序调用（设定值与标准 G 代码相同时"
+        f"本功能自动无效），{zh} 按标准 G 代码执行",
+    )
 
 
 def _program_ranges(value: object, fail: _Fail) -> tuple[tuple[int, int], ...]:

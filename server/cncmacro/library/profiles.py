@@ -27,9 +27,10 @@ from ..dialects import Dialect, get_dialect
 from ..dialects.tables import CommonRange
 from ..syntax.document import head_lines
 from .dialect_choice import HEADER_LINES, choose_dialect, dialect_and_source
-from .machine_file import MachineSettings
+from .machine_file import MachineSettings, standard_calls
 
 _made: dict[tuple[str, int], tuple[MachineSettings, Dialect]] = {}
+_kept: dict[tuple[str, int], tuple[MachineSettings, MachineSettings]] = {}
 
 
 def file_profile(source: str | Sequence[str], settings: MachineSettings | None, setting: str | None = None) -> Dialect:
@@ -108,6 +109,25 @@ def machine_profile(name: str | Dialect | None, settings: MachineSettings | None
         _made.clear()
     _made[key] = (settings, profile)
     return profile
+
+
+def profile_settings(settings: MachineSettings, dialect: Dialect) -> MachineSettings:
+    """``settings`` as the profile ``dialect`` reads them: without the ``[calls]`` entries it
+    does not call (``standard_calls``: a standard G code on GSK980TDi), so that the run and the
+    checks, which both take their settings here, run the standard code; ``settings`` itself when
+    it keeps every entry."""
+    dropped = standard_calls(settings, dialect)
+    if not dropped:
+        return settings
+    key = (dialect.name, id(settings))
+    kept = _kept.get(key)
+    if kept is not None and kept[0] is settings:
+        return kept[1]
+    out = replace(settings, calls={k: c for k, c in settings.calls.items() if k not in dropped})
+    if len(_kept) > 64:
+        _kept.clear()
+    _kept[key] = (settings, out)
+    return out
 
 
 def _common_ranges(base: Dialect, first: int, last: int) -> list[CommonRange]:

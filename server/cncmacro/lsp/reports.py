@@ -24,7 +24,7 @@ from ..analysis.codes import default_severity
 from ..analysis.severity import OFF
 from ..bilingual import Detail, in_language, is_chinese
 from ..library.files import shown_text
-from ..library.machine_file import common_note
+from ..library.machine_file import common_note, standard_calls_note
 from ..library.machine_files import MachineFileState
 from .protocol_diagnostics import SEVERITY
 from .texts import t
@@ -54,10 +54,16 @@ def publish_machine_file(server: CncMacroServer, machine: MachineFileState) -> s
         shown.append((MACHINE_FILE_CODE, default, machine.problem.line or 0, machine.problem.args[0]))
     elif machine.settings is not None:
         settings = machine.settings
-        note = common_note(settings, machine.path.name, settings.dialect or server.documents.setting_dialect)
+        profile = settings.dialect or server.documents.setting_dialect
+        note = common_note(settings, machine.path.name, profile)
         if note is not None:
             default = default_severity(MACHINE_FILE_NOTE_CODE)
             shown.append((MACHINE_FILE_NOTE_CODE, default, settings.common_line or 0, note))
+        calls = standard_calls_note(settings, machine.path.name, profile)
+        if calls is not None:
+            shown.append(
+                (MACHINE_FILE_NOTE_CODE, default_severity(MACHINE_FILE_NOTE_CODE), settings.calls_line or 0, calls)
+            )
     items = []
     for code, default, line, text in shown:
         level = server.settings.severity.get(code, default)

@@ -22,7 +22,7 @@ from collections.abc import Sequence
 from ..bilingual import detail
 from ..dialects import Dialect, get_dialect
 from ..library.machine_file import MachineSettings
-from ..library.profiles import machine_profile
+from ..library.profiles import machine_profile, profile_settings
 from ..library.programs import FoundProgram, LoadedFile, ProgramLibrary
 from ..planner.planner import Planner
 from .alarms import Alarm, CallLevel
@@ -58,6 +58,7 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         if dialect is None or isinstance(dialect, str):
             dialect = get_dialect(dialect or self.settings.dialect)
         dialect = machine_profile(dialect, self.settings)
+        self.settings = profile_settings(self.settings, dialect)  # without the [calls] it does not call
         self.dialect = dialect
         self.library = library or ProgramLibrary()
         self.kinds = VariableKinds(dialect)

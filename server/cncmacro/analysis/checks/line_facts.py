@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from ...bilingual import in_language, is_chinese, pick
 from ...dialects import BY_NAME, Dialect
 from ...library.machine_file import MachineSettings
-from ...library.profiles import machine_profile
+from ...library.profiles import machine_profile, profile_settings
 from ...machine import block_rules as rules
 from ...machine.alarms import MacroAlarm
 from ...machine.block_rules import BlockProblem
@@ -132,6 +132,7 @@ class LineContext:
 
     def __init__(self, dialect: Dialect, settings: MachineSettings, locale: str = "en") -> None:
         dialect = machine_profile(dialect, settings)
+        settings = profile_settings(settings, dialect)  # without the [calls] it does not call, as the run
         self.dialect = dialect
         self.settings = settings
         self.locale = locale

@@ -92,6 +92,8 @@ PROFILE = Dialect(
     extra_functions=frozenset({"RAND", "SRAND"}),
     if_without_then=False,
     corner_words=False,
+    # §3.32: a G code set to call a macro that equals a standard G code is no call
+    standard_g_calls=False,
     # typical of a small slant-bed lathe; a machine file gives the machine's own. X's rate is
     # the rate of the radius (the tool moves half a diameter change)
     timing=Timing(
