@@ -117,13 +117,14 @@ async def test_gsk_a_division_by_zero_in_a_named_macro_comes_through_its_caller(
 
 
 async def test_gsk_h99_alarm_and_division_found_by_running_in_chinese(gsk_zh: LanguageClient) -> None:
-    text = "O0002\n#1=0\nG65 H04 P#2 Q5 R2\nIF[#2==10]GOTO 9\n#3=1\nN9 G65 H99 P3005\nM30\n"
+    text = "O0002\n#1=0\nG65 H04 P#2 Q5 R2\nIF[#2==10]GOTO 9\n#3=1\nN9 G65 H99 P5\nM30\n"
     uri = open_file(gsk_zh, GSK / "run_h99.CNC", text)
     got = await diagnostics_for(gsk_zh, uri, 1)
     assert codes(got) == [(4, "not-executed"), (5, "macro-alarm"), (6, "not-executed")]
-    # #2 = 5 x 2 = 10 on every run: the main program always reaches the alarm, an error
-    assert got.diagnostics[1].severity == types.DiagnosticSeverity.Error and "3005" in got.diagnostics[1].message
-    edit(gsk_zh, uri, 2, 5, 3, 16, "#3=#2/#1")  # the division by zero comes first now
+    # #2 = 5 x 2 = 10 on every run: the main program always reaches the alarm, an error; H99 P5 is
+    # alarm 5900 + 5 (GSK980TDi §3.28.2: "G65 H99 Pi … i：报警号+5900", 5900-5999)
+    assert got.diagnostics[1].severity == types.DiagnosticSeverity.Error and "5905" in got.diagnostics[1].message
+    edit(gsk_zh, uri, 2, 5, 3, 13, "#3=#2/#1")  # the division by zero comes first now
     got = await diagnostics_for(gsk_zh, uri, 2)
     assert codes(got) == [(4, "not-executed"), (5, "division-by-zero"), (6, "not-executed")]
     assert "除数为零" in got.diagnostics[1].message
