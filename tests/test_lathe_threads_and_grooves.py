@@ -160,6 +160,23 @@ def test_g96_turns_the_spindle_by_the_diameter_along_the_cut_clamped_by_g50_s(tm
     assert result["moves"][-1]["time"] == pytest.approx(by_hand, rel=0.01)
 
 
+@pytest.mark.parametrize("profile", PROFILES)
+def test_g97_without_s_keeps_the_speed_g96_turned_at_and_g96_without_s_its_surface_speed(
+    tmp_path: Path, profile: str
+) -> None:
+    # GSK980TDi §3.25 notes 4 and 1 (FANUC alike): G96 S150 at X50 turns 1000 x 150 / (pi x 50) =
+    # 954.93 rev/min; a G97 without S keeps it (#4119 reads it): Z-20 to Z-40 at F0.2 is
+    # 20 / (0.2 x 954.93) min = 6.283 s (it turned at 150 rev/min: 40 s); a G96 without S cuts at
+    # 150 m/min again (#4119 reads 150)
+    result = run_lathe(tmp_path, profile, "G50 S2000", "G96 S150 M03", "G00 X50. Z2.", "G99 G01 Z-20. F0.2", "G97",
+                       "#100=#4119", "G01 Z-40.", "G96", "#101=#4119", "M30")  # fmt: skip
+    rpm = 1000 * 150 / (math.pi * 50)
+    assert (result["variables"]["100"], result["variables"]["101"]) == (pytest.approx(rpm), 150.0)
+    cut = next(mv for mv in result["moves"] if mv["line"] == 8)
+    assert cut["time"] == pytest.approx(20 / (0.2 * rpm) * 60, rel=1e-6)
+    assert cut["time"] == pytest.approx(6.283, rel=1e-3)
+
+
 def test_g96_under_g20_is_a_surface_speed_in_feet_per_minute(tmp_path: Path) -> None:
     # G20: G96 S600 is 600 ft/min; at D2.0 in the spindle turns at 12 x 600 / (pi x 2) = 1145.9
     # rev/min, 11.459 in/min at F0.01 in/rev: Z0.1 to Z-3.0 (3.1 in) takes 0.27053 min =

@@ -168,6 +168,18 @@ def test_10_1_g50_x_z_sets_the_coordinates_of_where_the_tool_is(lathe: Lathe) ->
 
 
 @LATHES
+def test_10_1_g50_u_w_adds_to_the_coordinates_of_where_the_tool_is(lathe: Lathe) -> None:
+    """GSK980TDi §3.18 "W：当前位置新的 Z 轴绝对坐标与执行代码前的绝对坐标的差值" (FANUC alike): bar
+    work's G50 W15. at Z2 calls the same place Z17, so the next part's G00 Z1. moves 16 mm; G50 U10.
+    at X20 calls it X30; the machine position stays (X20 Z2 from the machine's zero)."""
+    m = run(lines("G00 X20 Z2", "G50 W15.", f"#100=#{5000 + lathe.z}", "G00 Z1.", "G50 U10.", "#101=#5001",
+                  "#102=#5021", "M30"), lathe.name)  # fmt: skip
+    assert (m.C[100], m.C[101], m.C[102]) == (17.0, 30.0, 20.0)
+    last = m.planner.moves[-1]
+    assert (last.start[lathe.z - 1], last.end[lathe.z - 1]) == (17.0, 1.0)
+
+
+@LATHES
 def test_10_1_g50_s_clamps_the_spindle_and_sets_neither_coordinates_nor_the_speed(lathe: Lathe) -> None:
     m = run(lines("G97 S800 M03", "G00 X50 Z10", "G50 S2000", "#100=#4119", "#101=#5001", "#102=#5021", "M30"),
             lathe.name)  # fmt: skip

@@ -17,6 +17,7 @@ from .alarms import MacroAlarm
 from .cutter_stage import cutter_code
 from .machine_limits import offset_number, spindle_speed, tool_number
 from .moves import ToolChange
+from .spindle_modes import spindle_mode
 from .tool_offsets import apply_length_offset, same_station, select_tool
 from .turning_cycles import forget_single_cycle
 from .units import UNITS_GROUP, unit_change
@@ -38,6 +39,8 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
         elif group != "macro":  # G66/G67 are the macro machine's
             if group == UNITS_GROUP:
                 unit_change(p, g, line)  # units.py
+            elif group == "spindle" and p.lathe:
+                spindle_mode(p, g, other)  # spindle_modes.py: S across G96 and G97
             elif (group == "cutter" and not in_virtual_plane(p)) or (group == "plane" and p.cutter is not None):
                 cutter_code(p, group, g, line)  # cutter_stage.py; not in polar or cylindrical interpolation
             if group == "wcs" and g == 54.0 and "P" in other and p.dialect.extra_offset_by_g54_p:

@@ -68,7 +68,10 @@ def one_shot(
         local_coordinates(p, {**inc, **axes})
         return False, None
     if g == p.dialect.coordinate_setting_code:
-        for i, v in axes.items():
+        # X, Z: the present position's new coordinates; U, W: its new coordinates less the old
+        # (GSK980TDi §3.18: "当前位置新的 X 轴绝对坐标与执行代码前的绝对坐标的差值"; FANUC G92/G50 IP_ in
+        # increments), bar work's G50 W15. shifting the part for the next one. The tool stays
+        for i, v in {**{i: p.pos[i] + d for i, d in inc.items()}, **axes}.items():
             p.shift[i] += p.pos[i] - v
             p.pos[i] = v
         return False, None

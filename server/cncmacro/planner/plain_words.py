@@ -32,7 +32,8 @@ PlainRun = tuple[_Words, _Words, _Axes, _Axes, _Words, str, int]
 # stroke check's limits (G22), the centre of a rotation (G68), of a scaling (G51) or of a mirror
 # image (G51.1); such a line is not plain motion
 VALUE_GROUPS = frozenset(("stroke", "rotation", "scaling", "mirror"))
-NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length", "units", "cutter", *VALUE_GROUPS))
+# (``spindle``: a lathe's G96/G97 decides the S a block without one turns at: spindle_modes.py)
+NOT_PLAIN_GROUPS = frozenset(("macro", "canned", "wcs", "length", "units", "cutter", "spindle", *VALUE_GROUPS))
 CANCEL_CYCLE = ("canned", 80.0)  # on a mill, G00-G03 cancel a drilling cycle (group 01 over group 09)
 _CENTRE_LETTERS = frozenset("RIJK")  # arc radius and centre: kept for a canned cycle's R level
 _G_WORDS_KEPT = 1000  # spellings of G words ``g_word`` keeps
