@@ -19,8 +19,9 @@ settings to read with and the note that says so.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import replace
+from typing import TypeVar
 
 from ..bilingual import Detail, detail
 from ..dialects import Dialect, get_dialect
@@ -29,6 +30,7 @@ from ..syntax.document import head_lines
 from .dialect_choice import HEADER_LINES, choose_dialect, dialect_and_source
 from .machine_file import MachineSettings, standard_calls
 
+_T = TypeVar("_T")
 _made: dict[tuple[str, int], tuple[MachineSettings, Dialect]] = {}
 _kept: dict[tuple[str, int], tuple[MachineSettings, MachineSettings]] = {}
 
@@ -100,15 +102,7 @@ def machine_profile(name: str | Dialect | None, settings: MachineSettings | None
         changes["timing"] = base.timing.changed(settings.timing)
     if not changes:
         return base
-    key = (base.name, id(settings))
-    made = _made.get(key)
-    if made is not None and made[0] is settings:
-        return made[1]
-    profile = base.configured(**changes)
-    if len(_made) > 64:
-        _made.clear()
-    _made[key] = (settings, profile)
-    return profile
+    return _once(_made, base.name, settings, lambda: base.configured(**changes))
 
 
 def profile_settings(settings: MachineSettings, dialect: Dialect) -> MachineSettings:
@@ -119,15 +113,23 @@ def profile_settings(settings: MachineSettings, dialect: Dialect) -> MachineSett
     dropped = standard_calls(settings, dialect)
     if not dropped:
         return settings
-    key = (dialect.name, id(settings))
-    kept = _kept.get(key)
-    if kept is not None and kept[0] is settings:
-        return kept[1]
-    out = replace(settings, calls={k: c for k, c in settings.calls.items() if k not in dropped})
-    if len(_kept) > 64:
-        _kept.clear()
-    _kept[key] = (settings, out)
-    return out
+    calls = {k: c for k, c in settings.calls.items() if k not in dropped}
+    return _once(_kept, dialect.name, settings, lambda: replace(settings, calls=calls))
+
+
+def _once(made: dict[tuple[str, int], tuple[MachineSettings, _T]], name: str, settings: MachineSettings,
+          make: Callable[[], _T]) -> _T:  # fmt: skip
+    """``make()`` for the machine file's ``settings`` under the profile ``name``, made once while
+    those settings are the ones in use (``made`` keeps at most 64)."""
+    key = (name, id(settings))
+    hit = made.get(key)
+    if hit is not None and hit[0] is settings:
+        return hit[1]
+    value = make()
+    if len(made) > 64:
+        made.clear()
+    made[key] = (settings, value)
+    return value
 
 
 def _common_ranges(base: Dialect, first: int, last: int) -> list[CommonRange]:
