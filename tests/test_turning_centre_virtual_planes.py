@@ -7,7 +7,10 @@ live-tool job; the positions are read off the program."""
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
+
+import pytest
 
 from cli_capture import cli, run_json
 from running import lines
@@ -22,7 +25,7 @@ def check(folder: Path, text: str) -> tuple[int, str]:
     return code, out
 
 
-def test_compensation_under_cylindrical_interpolation_is_no_plane_alarm_and_keeps_x_on_the_cylinder(
+def test_a_slot_under_cylindrical_interpolation_stays_on_the_cylinder_and_is_timed_on_its_surface(
     tmp_path: Path,
 ) -> None:
     # a slot milled on a D54 cylinder: G19 W0 H0 and G07.1 C27. (its radius) on, G42 and G40 on C
@@ -35,6 +38,12 @@ def test_compensation_under_cylindrical_interpolation_is_no_plane_alarm_and_keep
     assert [(mv["to"]["X"], mv["to"]["Z"], mv["to"]["C"]) for mv in slot] == [
         (54.0, -20.0, 30.0), (54.0, -40.0, 30.0), (54.0, -40.0, 90.0), (54.0, -40.0, 120.0)]  # fmt: skip
     assert all(mv["to"].get("Y", 0.0) == 0.0 and "tool_path" not in mv for mv in slot)
+    # on the cylinder's surface (radius 27): C30 is 27 x pi/6 = 14.137 mm, at F250 3.393 s; Z-40 is
+    # 20 mm, 4.8 s; C90 (60 deg) 28.274 mm, 6.786 s; C120 14.137 mm, 3.393 s (C's degrees counted
+    # as millimetres made them 7.2 s, 14.4 s and 7.2 s)
+    arc = 27 * math.pi / 180
+    assert [mv["time"] for mv in slot] == pytest.approx([30 * arc / 250 * 60, 20 / 250 * 60, 60 * arc / 250 * 60,
+                                                         30 * arc / 250 * 60])  # fmt: skip
 
 
 def test_compensation_under_polar_interpolation_keeps_the_face_depth(tmp_path: Path) -> None:

@@ -30,7 +30,7 @@ from ..planner.moves import Move
 from ..planner.plain_words import NOT_PLAIN, PLAIN_ARC_LETTERS, PLAIN_F, PLAIN_G, PLAIN_INCREMENTAL, PLAIN_S
 from ..planner.planner import FEED_HINT_GIVEN
 from ..planner.turning_cycles import forget_single_cycle
-from ..planner.virtual_planes import VIRTUAL_PLANE
+from ..planner.virtual_planes import CYLINDER, VIRTUAL_PLANE
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -67,6 +67,8 @@ def run_straight(
     if pc >= n_blocks or not kinds or p.shape is not None:  # a lathe cycle's shape: the compiled path reads it
         return 0, pc
     if PENDING_ANGLE in p.codes:  # after ",A1" alone: the general path ends FANUC's two-block form
+        return 0, pc
+    if CYLINDER in p.modal:  # a cut on a cylinder: the general path takes C on its surface (virtual_planes.py)
         return 0, pc
     g_words = p.plain.g_words()
     lathe = p.lathe

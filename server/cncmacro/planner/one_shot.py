@@ -78,7 +78,8 @@ def one_shot(
     if p.dialect.lathe and g in p.dialect.cycle_codes:
         return lathe_cycle(p, g, axes, inc, other, file, line)
     if g in p.dialect.axis_value_codes:  # G07.1 C_: the cylinder's radius (Dialect.axis_value_codes), C0 off
-        switch_virtual_plane(p, g, any({**axes, **inc}.values()))
+        radius = next(iter({**axes, **inc}.values()), 0.0)
+        switch_virtual_plane(p, g, bool(radius), radius)
         return False, None
     polar = p.dialect.polar_interpolation_codes.get(g)
     if polar is not None:  # G12.1 / G13.1 (virtual_planes.py)

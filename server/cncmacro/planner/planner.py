@@ -42,7 +42,7 @@ from .probing import Probe, SkipState
 from .state import MODAL_DEFAULTS, PlannerState
 from .three_point_arcs import three_point_arc
 from .turning_cycles import forget_single_cycle, in_increments, single_cycle, single_cycle_target, turning_legs
-from .virtual_planes import VIRTUAL_PLANE
+from .virtual_planes import CYLINDER, VIRTUAL_PLANE, surface_length
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -616,6 +616,8 @@ class Planner:
                 length = times.arc_length(mode, plane, start, end, centre)
             else:
                 length = times.distance(start, end)
+                if CYLINDER in modal:  # C's degrees on the cylinder's surface (virtual_planes.py)
+                    length = surface_length(self, start, end, length)
             seconds = self.feed_seconds(mode, length, feed, start, end, unit, lead_change)
             self.cut_length += length * unit
             if self.feed_hint and 0.0 < feed < 1.0:
