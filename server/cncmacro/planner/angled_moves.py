@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from .arcs import Plane
+from .arcs import Plane, plane_scales
 
 _PARALLEL = 1e-9
 # the ``codes`` keys of the first block of the two-block form: its angle, and its line
@@ -34,8 +34,7 @@ def angled_end(
     a, b = plane[0], plane[1]
     if (a in named) == (b in named):
         return
-    scale_a = 0.5 if a == diameter else 1.0
-    scale_b = 0.5 if b == diameter else 1.0
+    scale_a, scale_b = plane_scales(plane, diameter)
     cos, sin = math.cos(math.radians(angle)), math.sin(math.radians(angle))
     if a in named:
         if abs(cos) < _PARALLEL:
@@ -54,8 +53,7 @@ def corner_point(
     ``second`` (degrees, as ``angled_end`` measures them), in ``plane``; None where they run
     parallel."""
     a, b = plane[0], plane[1]
-    scale_a = 0.5 if a == diameter else 1.0
-    scale_b = 0.5 if b == diameter else 1.0
+    scale_a, scale_b = plane_scales(plane, diameter)
     u = (math.cos(math.radians(first)), math.sin(math.radians(first)))
     v = (math.cos(math.radians(second)), math.sin(math.radians(second)))
     cross = u[0] * v[1] - u[1] * v[0]

@@ -50,6 +50,12 @@ def arc_planes(axis_index: Mapping[str, int]) -> dict[float, Plane]:
     }
 
 
+def plane_scales(plane: Plane, diameter: int) -> tuple[float, float]:
+    """What each of ``plane``'s two axes is multiplied by to be a length in the plane: 0.5 for
+    the axis programmed as a diameter (``diameter``, a lathe's X), else 1."""
+    return 0.5 if plane[0] == diameter else 1.0, 0.5 if plane[1] == diameter else 1.0
+
+
 def arc_centre(
     clockwise: bool,
     plane: Plane,
@@ -62,8 +68,7 @@ def arc_centre(
     J, K ``words``; ``diameter`` is the index of the axis programmed as a diameter (-1 for
     none). None when the block names no centre for this plane."""
     a, b, off_a, off_b = plane
-    scale_a = 0.5 if a == diameter else 1.0
-    scale_b = 0.5 if b == diameter else 1.0
+    scale_a, scale_b = plane_scales(plane, diameter)
     sa = start[a] * scale_a
     sb = start[b] * scale_b
     r = words.get("R")
@@ -109,8 +114,7 @@ def arc_fault(
     than the tolerance, ``(R_FULL_CIRCLE, |R|, 0)`` for R with the end at the start; None for an
     arc the control cuts as written. A tolerance of 0 checks nothing (FANUC's parameter 3410 = 0)."""
     a, b = plane[0], plane[1]
-    scale_a = 0.5 if a == diameter else 1.0
-    scale_b = 0.5 if b == diameter else 1.0
+    scale_a, scale_b = plane_scales(plane, diameter)
     r = words.get("R")
     if r is not None:
         da = (end[a] - start[a]) * scale_a

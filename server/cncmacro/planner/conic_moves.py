@@ -26,7 +26,7 @@ from collections.abc import Mapping, Sequence
 from math import atan2, ceil, cos, radians, sin, sqrt, tau
 
 from ..bilingual import Detail, detail
-from .arcs import Plane
+from .arcs import Plane, plane_scales
 
 CURVE_FAULT = "curve-fault"  # the finding where the control alarms on a conic move or a three-point arc
 STEP_DEGREES = 2.0  # the most a piece of the curve turns (an ellipse's of radius 50: 0.008 mm off it)
@@ -49,8 +49,7 @@ def conic_points(
     ``increment`` the program unit's least input increment (a parabola's P). Where the control
     alarms, why (in English and Chinese)."""
     a, b = plane[0], plane[1]
-    scale_a = 0.5 if a == diameter else 1.0
-    scale_b = 0.5 if b == diameter else 1.0
+    scale_a, scale_b = plane_scales(plane, diameter)
     angle = radians((abs(words.get("Q", 0.0)) / 1000.0) % 180.0)
     ua, ub = cos(angle), -sin(angle)  # the axis, the plane's first axis turned clockwise by Q
     wa, wb = -ub, ua  # across it, a quarter turn counterclockwise

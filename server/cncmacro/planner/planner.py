@@ -239,7 +239,7 @@ class Planner:
         extra = plan[4]
         centre = self.checked_arc(mode, start, target, dict(extra), line) if extra and mode in ARC_MODES else None
         self.record(file, line, mode, tuple(start), tuple(target), centre)
-        if self._call_codes is not None and mode not in self._call_codes:
+        if self._no_call_after(mode):
             return False
         return not self._call_needs_distance or target != start or centre is not None
 
@@ -306,10 +306,15 @@ class Planner:
             # rotation, scaling, mirror image. Not a move; none of them is simulated (§8)
             return False, None
         moved, shape = self._carry_out(one, axes, incremental, other, file, line)
-        calls = self._call_codes
-        if moved and calls is not None and (self.modal.get("motion", 0.0) if one is None else one) not in calls:
-            return False, shape  # a move of a code after which no G66 call is made (Dialect.modal_call_codes)
+        if moved and self._no_call_after(self.modal.get("motion", 0.0) if one is None else one):
+            return False, shape
         return moved, shape
+
+    def _no_call_after(self, code: float) -> bool:
+        """Whether a move in ``code`` (a block's one-shot code, else the motion mode in force) is
+        one after which no G66 call is made (``Dialect.modal_call_codes``)."""
+        calls = self._call_codes
+        return calls is not None and code not in calls
 
     def _carry_out(
         self, one: float | None, axes: dict[int, float], incremental: dict[int, float], other: dict[str, float],

@@ -15,7 +15,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping, Sequence
 
 from ..bilingual import Detail, detail
-from .arcs import Plane
+from .arcs import Plane, plane_scales
 
 NO_POINT = detail(
     "a three-point arc needs its point on the arc: I and K must not both be left out (GSK980TDi manual §3.5); "
@@ -48,8 +48,7 @@ def three_point_arc(
     a, b, off_a, off_b = plane
     if off_a not in words and off_b not in words:
         return NO_POINT
-    scale_a = 0.5 if a == diameter else 1.0
-    scale_b = 0.5 if b == diameter else 1.0
+    scale_a, scale_b = plane_scales(plane, diameter)
     sa, sb = start[a] * scale_a, start[b] * scale_b
     ea, eb = end[a] * scale_a, end[b] * scale_b
     wa, wb = words.get(off_a, 0.0), words.get(off_b, 0.0)
