@@ -103,3 +103,7 @@ G66 P0100 L2 A2 B20 C20 I30 J20 K20；
 M98 P[#100] L3
 ;;  ^ support.type.address.cnc-macro
 ;;    ^^^^ variable.other.common.cnc-macro
+#1=RAND[10]
+;; ^^^^ support.function.math.cnc-macro
+#2=SRAND[1,10]+#1
+;; ^^^^^ support.function.math.cnc-macro
