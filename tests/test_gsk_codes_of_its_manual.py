@@ -146,3 +146,34 @@ def test_4001_reads_the_special_interpolation_codes_as_the_manuals_numbers() -> 
     )  # fmt: skip
     v = final(program, "gsk980tdi")
     assert [v[n] for n in range(101, 107)] == [124, 126, 132, 144, 146, 1]
+
+
+@pytest.mark.parametrize(
+    "body",
+    [
+        # §3.9: "（也可使用 G112）", "（也可使用 G113）", and G16/G15 "只在极坐标插补中有效"
+        ("G00 X80. C0 Z0", "G112", "G98 G01 X40. C0 F500", "G16", "G02 X15.8114 C108.435 R5.", "G15",
+         "G01 X40. C-20.", "G113"),
+        # §3.36: "开始同步：G51.2 P_ Q_ R_ A_", "解除同步：G50.2"
+        ("G51.2 P2 Q6", "S300", "G98 G00 X40. Z2.", "G01 X30. F100", "W-10.", "G00 X50.", "G50.2"),
+        # §3.35: "G165 P/L__ Q__ K__", P0 ends it; §3.23.11: "G86.1；------循环中止"
+        ("G99 G97 S500 M03", "G00 X30. Z2.", "G165 P3 Q80", "G01 Z-20. F0.2", "G165 P0", "G86.1", "G00 X50."),
+    ],
+    ids=["polar-g112-g16-g15", "polygon-g51.2-g50.2", "chip-breaking-g165-and-g86.1"],
+)
+def test_the_manuals_other_codes_are_no_unknown_code(tmp_path: Path, body: tuple[str, ...]) -> None:
+    # each was "not in the GSK980TDi G-code table: the control alarms", a warning on a code of its manual
+    program = tmp_path / "O0003.nc"
+    program.write_text(lines("O0003 (cncmacro: dialect=gsk980tdi)", *body, "M30"), encoding="utf-8")
+    code, out, _ = cli("check", str(program))
+    assert (code, out) == (0, "")
+
+
+def test_g112_turns_polar_interpolation_on_as_g12_1_does(tmp_path: Path) -> None:
+    # an arc in X and C under polar interpolation is not judged in G18's plane (docs/semantics.md
+    # §8); under G112 it was "an R arc with its end at its start" before G112 was the GSK's code
+    program = tmp_path / "O0004.nc"
+    program.write_text(lines("O0004 (cncmacro: dialect=gsk980tdi)", "G98 G00 X40. C0 Z0", "G112",
+                             "G01 X40. C-5. F200", "G03 X40. C5. R5.", "G113", "M30"), encoding="utf-8")  # fmt: skip
+    code, out, _ = cli("check", str(program))
+    assert (code, out) == (0, "")

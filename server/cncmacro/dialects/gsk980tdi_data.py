@@ -295,6 +295,18 @@ G_CODES: tuple[CodeDoc, ...] = (
         "Polar coordinate interpolation off (also G113), in a block of its own",
         "极坐标插补方式取消（也可用G113），单独编为一段",
     ),
+    CodeDoc(
+        "G15",
+        "",
+        "Polar coordinate programming off, in polar interpolation (X and C Cartesian again), in a block of its own",
+        "取消极坐标编程（极坐标插补中，恢复直角坐标编程），单独编为一段",
+    ),
+    CodeDoc(
+        "G16",
+        "",
+        "Polar coordinate programming in polar interpolation: X the length, C the angle; in a block of its own",
+        "极坐标编程（极坐标插补中，X为长度、C为角度），单独编为一段",
+    ),
     *shared.codes("G17"),
     CodeDoc("G18", "plane", "ZX plane selection (the lathe's usual plane)", "ZX平面选择（车床常用平面）"),
     *shared.codes("G19", "G20", "G21"),
@@ -352,6 +364,13 @@ G_CODES: tuple[CodeDoc, ...] = (
         shared.SET_COORDINATES_EN,
         "坐标系设定（使当前位置成为指定的坐标值）",
     ),
+    CodeDoc("G50.2", "", "Polygon cutting off (the tool and work axes out of step)", "多边形切削取消（解除同步）"),
+    CodeDoc(
+        "G51.2",
+        "",
+        "Polygon cutting on: G51.2 P(work turns) Q(tool turns) R_ A_; the tool axis turns in step with the spindle",
+        "多边形切削开始：G51.2 P（工件轴转数）Q（刀具轴转数）R_ A_，刀具轴与主轴同步旋转",
+    ),
     CodeDoc(
         "G52",
         "",
@@ -388,6 +407,7 @@ G_CODES: tuple[CodeDoc, ...] = (
     CodeDoc("G84.1", "motion", "Face rigid tapping cycle for an inclined hole", "端面刚性攻丝循环（斜孔）"),
     CodeDoc("G84.2", "motion", "Rigid tapping cycle", "刚性攻丝循环"),
     CodeDoc("G86", "", "Independent reciprocating feed cycle", "独立往复进给循环"),
+    CodeDoc("G86.1", "", "Independent reciprocating feed cycle stop: Z back to its start", "独立往复进给循环中止，Z轴返回起始位置"),
     CodeDoc("G87", "motion", "Side (radial) drilling cycle", "侧面（径向）钻孔循环"),
     CodeDoc("G87.1", "motion", "Side drilling cycle for an inclined hole", "侧面钻斜孔循环"),
     CodeDoc("G88", "motion", "Side (radial) tapping cycle", "侧面（径向）攻丝循环"),
@@ -409,6 +429,18 @@ G_CODES: tuple[CodeDoc, ...] = (
         "G92.3", "motion", "Variable-pitch thread cutting cycle with equal crest width", "变螺距等牙尖宽度螺纹切削循环"
     ),
     CodeDoc("G94", "motion", "Facing cycle (single pass)", "端面切削循环（单一固定循环）"),
+    CodeDoc(
+        "G112", "", "Polar coordinate interpolation on (the same as G12.1)", "极坐标插补方式开（同G12.1）"
+    ),
+    CodeDoc(
+        "G113", "", "Polar coordinate interpolation off (the same as G13.1)", "极坐标插补方式取消（同G13.1）"
+    ),
+    CodeDoc(
+        "G165",
+        "",
+        "Chip breaking by oscillation: G165 P(per revolution; P0 ends it)/L_ Q(amplitude) K_",
+        "自动断屑（振荡）：G165 P（每转断屑次数，P0结束）/L_ Q（振荡幅度）K_",
+    ),
     *shared.codes("G96", "G97"),
     CodeDoc("G98", "feed", *shared.FEED_PER_MINUTE),
     CodeDoc("G99", "feed", *shared.FEED_PER_REVOLUTION),
