@@ -157,6 +157,15 @@ def test_10_1_g04_dwells_x_and_u_in_seconds_p_in_milliseconds(lathe: Lathe, dwel
 
 
 @LATHES
+@pytest.mark.parametrize(("dwell", "seconds"), [("G04 X2. U3.", 2.0), ("G04 U3. X2.", 2.0), ("G04 X2. P500", 0.5)])
+def test_10_1_g04_takes_x_before_u_and_p_before_both(lathe: Lathe, dwell: str, seconds: float) -> None:
+    # GSK980TDi manual §3.14 note 3: "P、X、U在同一程序段，P有效；X、U在同一程序段，X有效" (P over X
+    # and U, X over U); it dwelt U's 3 s. FANUC's manuals give X, U or P, never two: the same order
+    m = run(lines(dwell, "M30"), lathe.name)
+    assert m.planner.clock == pytest.approx(seconds)
+
+
+@LATHES
 def test_10_1_g50_x_z_sets_the_coordinates_of_where_the_tool_is(lathe: Lathe) -> None:
     m = run(lines("G00 X50 Z10", "G50 X100 Z0", "#100=#5001", f"#101=#{5000 + lathe.z}", "#102=#5021",
                   "G00 X80", "#103=#5021", "M30"), lathe.name)  # fmt: skip

@@ -31,8 +31,8 @@ def one_shot(
 ) -> tuple[bool, ShapeCall | None]:
     """Carry out one-shot code ``g`` with the block's words: (moved, the shape a lathe cycle
     names), as ``Planner.execute_nc`` returns them."""
-    if g == 4.0:  # dwell: P in the profile's unit, X or U in seconds (cycle_time.py)
-        p.clock += p.times.dwell_seconds(other, next(iter({**axes, **inc}.values()), None))
+    if g == 4.0:  # dwell: P in the profile's unit, X or U in seconds (cycle_time.py); X before U
+        p.clock += p.times.dwell_seconds(other, next(iter({**inc, **axes}.values()), None))
         return False, None
     if g == 10.0:
         g10(p, axes, inc, other)
