@@ -22,7 +22,7 @@ from typing import Any
 import pytest
 
 from cli_capture import cli, run_json
-from running import final, lines
+from running import final, lines, run
 
 
 def run_gsk(folder: Path, *body: str) -> dict[str, Any]:
@@ -177,3 +177,15 @@ def test_g112_turns_polar_interpolation_on_as_g12_1_does(tmp_path: Path) -> None
                              "G01 X40. C-5. F200", "G03 X40. C5. R5.", "G113", "M30"), encoding="utf-8")  # fmt: skip
     code, out, _ = cli("check", str(program))
     assert (code, out) == (0, "")
+
+
+def test_a_work_offset_in_a_g50_block_is_void() -> None:
+    # §3.21 note 6: "若G54~G59指令与G50共段执行时，G54~G59指令将无效，G50执行有效". G54 (offset 0) at
+    # X50 Z50, then G55 (X-20 Z-30) G50 X100 Z50: G54 stays, and the tool, at machine X50 Z50, is
+    # called X100 Z50. G00 X0 Z0 then goes to machine X50 + (0 - 100) = -50, Z50 + (0 - 50) = 0. Had
+    # G55 been taken, the position would have been read in G55 and #4014 would read 55
+    m = run(lines("O0001 (cncmacro: dialect=gsk980tdi)", "G10 L2 P1 X0 Z0", "G10 L2 P2 X-20 Z-30",
+                  "G54 G00 X50 Z50", "G55 G50 X100 Z50", "#100=#4014", "#101=#5001", "#102=#5003", "G00 X0 Z0",
+                  "#103=#5021", "#104=#5023", "M30"), "gsk980tdi")  # fmt: skip
+    assert m.status == "completed"
+    assert [m.C[n] for n in range(100, 105)] == [54.0, 100.0, 50.0, -50.0, 0.0]

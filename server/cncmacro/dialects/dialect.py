@@ -86,6 +86,9 @@ class Dialect:
     modal_defaults: dict[str, float] = field(default_factory=dict)
     # which G code sets the coordinate system (G92 on a mill, G50 on this lathe)
     coordinate_setting_code: float = 92.0
+    # §8 a work offset code (G54-G59) in the block of ``coordinate_setting_code`` is void, and the
+    # offset in force stays (GSK980TDi §3.21 note 6); False: the block selects it as well
+    coordinate_setting_voids_wcs: bool = False
     # §8 the code that sets a local coordinate system (G52 IP: its origin in work coordinates, IP0
     # cancels; FANUC's and Haas's), None where the control has none
     local_coordinate_code: float | None = 52.0

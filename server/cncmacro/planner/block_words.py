@@ -31,6 +31,9 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
     """Set the modal groups of the block's G codes (on ``line``); returns its one-shot code, if any."""
     one_shot_code: float | None = None
     groups = [p.g_groups.get(g) for g in gs]
+    if "wcs" in groups and p.dialect.coordinate_setting_voids_wcs and p.dialect.coordinate_setting_code in gs:
+        kept = [(g, group) for g, group in zip(gs, groups, strict=True) if group != "wcs"]  # G55 G50: G50 alone
+        gs, groups = [g for g, _ in kept], [group for _, group in kept]
     if "motion" in groups and "canned" not in groups and p.dialect.drills:
         p.modal["canned"] = 80.0  # G00-G03 cancel a drilling cycle, as G80 does
     for g, group in zip(gs, groups, strict=True):

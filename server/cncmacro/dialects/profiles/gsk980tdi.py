@@ -53,6 +53,8 @@ PROFILE = Dialect(
     # G23 at power-on (§3.31 note 3)
     modal_defaults={"plane": 18.0, "feed": 98.0, "stroke": 23.0},
     coordinate_setting_code=50.0,
+    # "若G54~G59指令与G50共段执行时，G54~G59指令将无效，G50执行有效" (§3.21 note 6)
+    coordinate_setting_voids_wcs=True,
     local_coordinate_code=52.0,  # §3.19: G52 X(U) Z(W), no move
     # G05 / G05.1 three-point arcs, the point relative / absolute (§3.5)
     three_point_arcs={5.0: False, 5.1: True},
