@@ -189,3 +189,17 @@ def test_a_work_offset_in_a_g50_block_is_void() -> None:
                   "#103=#5021", "#104=#5023", "M30"), "gsk980tdi")  # fmt: skip
     assert m.status == "completed"
     assert [m.C[n] for n in range(100, 105)] == [54.0, 100.0, 50.0, -50.0, 0.0]
+
+
+def test_g28_and_g30_cancel_the_tool_offset() -> None:
+    # §3.15.1 note 4: "执行 G28 代码回机床零点操作后，系统取消刀具长度补偿" (G30: §3.15.2 note 3). G50 X200 Z100
+    # at machine 0; offset 1's X geometry 4 (a diameter). After T0101, G00 X50 Z10 is machine
+    # X 50 - 200 + 4 = -146. G28 U0 W0 ends at machine 0 with the offset off: program X200 Z100 (it
+    # read X196 before, the offset kept), and G00 X50 Z10 is then machine 50 - 200 = -150 (not -146)
+    # until a T sets the offset again: T0101 and X50 give -146 again. G30 the same (its point is
+    # machine 0 here too)
+    m = run(lines("O0001 (cncmacro: dialect=gsk980tdi)", "G50 X200 Z100", "#2701=4", "T0101", "G00 X50 Z10",
+                  "#100=#5021", "G28 U0 W0", "#101=#5001", "#102=#5021", "G00 X50 Z10", "#103=#5021", "T0101",
+                  "G00 X50", "#104=#5021", "G30 U0", "#105=#5001", "G00 X50", "#106=#5021", "M30"), "gsk980tdi")  # fmt: skip
+    assert m.status == "completed"
+    assert [m.C[n] for n in range(100, 107)] == [-146.0, 200.0, 0.0, -150.0, -146.0, 200.0, -150.0]

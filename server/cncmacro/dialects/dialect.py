@@ -89,6 +89,9 @@ class Dialect:
     # §8 a work offset code (G54-G59) in the block of ``coordinate_setting_code`` is void, and the
     # offset in force stays (GSK980TDi §3.21 note 6); False: the block selects it as well
     coordinate_setting_voids_wcs: bool = False
+    # §10.1 a lathe's G28/G30 cancels the tool offset at the reference point: the tool vector is 0
+    # until the next T (GSK980TDi §3.15.1 note 4, §3.15.2 note 3); False: it stays (FANUC)
+    reference_return_cancels_tool_offset: bool = False
     # §8 the code that sets a local coordinate system (G52 IP: its origin in work coordinates, IP0
     # cancels; FANUC's and Haas's), None where the control has none
     local_coordinate_code: float | None = 52.0

@@ -40,6 +40,8 @@ def one_shot(
     if g in (28.0, 30.0):  # through the intermediate point to the reference point
         if axes or inc:
             p.move(file, line, 0.0, p.target(axes, inc))
+            if p.lathe and p.dialect.reference_return_cancels_tool_offset:
+                p.tool_vector = [0.0] * len(p.pos)  # off at the reference point (docs/semantics.md §10.1)
             home = list(p.pos)
             for i in set(axes) | set(inc):
                 home[i] = 0.0 - (work_offset(p, i) + p.shift[i] + p.tool_vector[i]) + 0.0

@@ -55,6 +55,8 @@ PROFILE = Dialect(
     coordinate_setting_code=50.0,
     # "若G54~G59指令与G50共段执行时，G54~G59指令将无效，G50执行有效" (§3.21 note 6)
     coordinate_setting_voids_wcs=True,
+    # "执行 G28 代码回机床零点操作后，系统取消刀具长度补偿" (§3.15.1 note 4; G30: §3.15.2 note 3)
+    reference_return_cancels_tool_offset=True,
     local_coordinate_code=52.0,  # §3.19: G52 X(U) Z(W), no move
     # G05 / G05.1 three-point arcs, the point relative / absolute (§3.5)
     three_point_arcs={5.0: False, 5.1: True},
