@@ -115,6 +115,20 @@ def test_10_1_g10_c_adds_to_the_nose_radius_as_u_and_w_add_to_x_and_z() -> None:
     assert not m.planner.moves
 
 
+@pytest.mark.parametrize("dialect", ["fanuc-0i-lathe", "fanuc-30i-lathe"])
+def test_10_1_g10_p0_sets_the_workpiece_shift_the_external_offset(dialect: str, tmp_path: Path) -> None:
+    """The lathe G10 format "G10 P_ X(U)_ Z(W)_": P0 is the workpiece coordinate system shift,
+    which a control with G54-G59 keeps as the external work offset. G10 P0 X2. Z-5.: #5201 = 2,
+    #5202 = -5; then G00 X50. Z10. is machine X 50 + 2 = 52, Z 10 - 5 = 5; G10 P0 W1. adds: Z -4.
+    It was written to wear offset 0 (#10000, #11000), which does not exist, and shifted nothing."""
+    text = lines("G10 P0 X2. Z-5.", "#100=#5201", "#101=#5202", "G00 X50. Z10.", "#102=#5021", "#103=#5022",
+                 "G10 P0 W1.", "#104=#5202", "M30")  # fmt: skip
+    lathe_30i = machine_profile(None, _machine_file(tmp_path, 'base = "fanuc-30i"\nlathe = true\n'))
+    m = run(text, lathe_30i if dialect == "fanuc-30i-lathe" else dialect)
+    assert m.status == "completed", m.alarm
+    assert [m.C[n] for n in range(100, 105)] == [2.0, -5.0, 52.0, 5.0, -4.0]
+
+
 def test_10_1_fanuc_lathe_offsets_have_short_numbers_for_offsets_1_to_64() -> None:
     v = final(lines("#2701=-200", "#2001=0.1", "#2864=-5", "G10 P10002 X-180 Z-250", "G10 P2 X0.2",
                     "#100=#15001", "#101=#10001", "#102=#16064", "#103=#2702", "#104=#2802", "#105=#2002",

@@ -45,8 +45,10 @@ _OFFSET_KINDS: tuple[tuple[int, int | None, str, str, str], ...] = (
 )
 
 # where the planner reads and G10 P writes them (Dialect.lathe_offsets): the long numbers
+# G10 P0 X(U) Z(W): the workpiece coordinate system shift, the external work offset (#5201…) on a
+# control with G54-G59 (the lathe G10 format "G10 P_ X(U)_ Z(W)_ R(C)_ Q_", P0 the shift)
 LATHE_OFFSETS = LatheOffsets(axes=(("X", 15000, 10000), ("Z", 16000, 11000), ("Y", 19000, 14000)),
-                             radius=(17000, 12000), tip=13000)  # fmt: skip
+                             radius=(17000, 12000), tip=13000, p0_work_shift=True)  # fmt: skip
 
 
 def _short_count(short: int) -> int:

@@ -91,13 +91,17 @@ class LatheOffsets:
     """Where a lathe keeps tool offset n (#base + n): ``axes`` holds (axis letter, geometry base,
     wear base) for each axis the offset shifts, ``radius`` the (geometry, wear) bases of the tool
     nose radius and ``tip`` the base of the imaginary tool nose direction. A T code's offset number
-    selects them (planner/tool_offsets.py); ``G10 P`` writes them (planner/one_shot.py). ``tips``
+    selects them (planner/tool_offsets.py); ``G10 P`` writes them (planner/one_shot.py), and ``G10 P0``
+    the workpiece shift where ``p0_work_shift`` says so. ``tips``
     gives each imaginary tool nose direction's place from the nose centre (``IMAGINARY_TIPS``)."""
 
     axes: tuple[tuple[str, int, int], ...]
     radius: tuple[int, int]
     tip: int
     tips: tuple[tuple[int, int], ...] = IMAGINARY_TIPS
+    # ``G10 P0 X(U) Z(W)`` (no L) writes the workpiece shift, which a control with G54-G59 keeps as
+    # the external work offset (FANUC's lathe G10 format); False: P0 is no offset of the control
+    p0_work_shift: bool = False
 
 
 @dataclass(frozen=True, slots=True)

@@ -123,8 +123,9 @@ def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[s
     l_value = other.get("L")
     number = int(other.get("P", 0.0))
     absolute = p.dialect.lathe or p.modal.get("distance", 90.0) == 90.0
-    if l_value in (2.0, 20.0):
-        base = _work_offset_base(p, l_value, number)
+    shift = l_value is None and number == 0 and p.dialect.lathe and p.dialect.lathe_offsets.p0_work_shift
+    if l_value in (2.0, 20.0) or shift:  # a lathe's G10 P0: the workpiece shift, the external offset
+        base = _work_offset_base(p, 2.0, 0) if shift else _work_offset_base(p, l_value or 2.0, number)
         for i, v in axes.items():
             host.store(base + i, v if absolute else (host.stored(base + i) or 0.0) + v)
         for i, v in inc.items():
