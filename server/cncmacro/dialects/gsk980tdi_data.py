@@ -407,7 +407,12 @@ G_CODES: tuple[CodeDoc, ...] = (
     CodeDoc("G84.1", "motion", "Face rigid tapping cycle for an inclined hole", "端面刚性攻丝循环（斜孔）"),
     CodeDoc("G84.2", "motion", "Rigid tapping cycle", "刚性攻丝循环"),
     CodeDoc("G86", "", "Independent reciprocating feed cycle", "独立往复进给循环"),
-    CodeDoc("G86.1", "", "Independent reciprocating feed cycle stop: Z back to its start", "独立往复进给循环中止，Z轴返回起始位置"),
+    CodeDoc(
+        "G86.1",
+        "",
+        "Independent reciprocating feed cycle stop: Z back to its start",
+        "独立往复进给循环中止，Z轴返回起始位置",
+    ),
     CodeDoc("G87", "motion", "Side (radial) drilling cycle", "侧面（径向）钻孔循环"),
     CodeDoc("G87.1", "motion", "Side drilling cycle for an inclined hole", "侧面钻斜孔循环"),
     CodeDoc("G88", "motion", "Side (radial) tapping cycle", "侧面（径向）攻丝循环"),
@@ -429,12 +434,8 @@ G_CODES: tuple[CodeDoc, ...] = (
         "G92.3", "motion", "Variable-pitch thread cutting cycle with equal crest width", "变螺距等牙尖宽度螺纹切削循环"
     ),
     CodeDoc("G94", "motion", "Facing cycle (single pass)", "端面切削循环（单一固定循环）"),
-    CodeDoc(
-        "G112", "", "Polar coordinate interpolation on (the same as G12.1)", "极坐标插补方式开（同G12.1）"
-    ),
-    CodeDoc(
-        "G113", "", "Polar coordinate interpolation off (the same as G13.1)", "极坐标插补方式取消（同G13.1）"
-    ),
+    CodeDoc("G112", "", "Polar coordinate interpolation on (the same as G12.1)", "极坐标插补方式开（同G12.1）"),
+    CodeDoc("G113", "", "Polar coordinate interpolation off (the same as G13.1)", "极坐标插补方式取消（同G13.1）"),
     CodeDoc(
         "G165",
         "",
