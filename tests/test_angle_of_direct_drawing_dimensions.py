@@ -72,3 +72,42 @@ def test_a_second_block_without_its_angle_goes_straight(tmp_path: Path) -> None:
                     "X50. Z-60.", "Z-70.", "X60. Z-80. ,A180.", "M30")  # fmt: skip
     result = run_json(tmp_path, program, "O0001.nc")
     assert ends(result, "X", "Z") == [(30.0, -30.0), (50.0, -60.0), (50.0, -70.0), (60.0, -80.0)]
+
+
+def gsk_checked(tmp_path: Path, *body: str) -> tuple[dict[str, Any], str]:
+    text = lines("O0001 (cncmacro: dialect=gsk980tdi)", "G98 G00 X20 Z0", *body, "M30")
+    result = run_json(tmp_path, text, "O0001.nc")
+    _, out, _ = cli("check", str(tmp_path / "O0001.nc"))
+    return result, out
+
+
+def test_gsk_q_is_the_angle_in_thousandths_of_a_degree(tmp_path: Path) -> None:
+    # GSK980TDi manual §3.13: "Q_ 角度是直线与Z轴的夹角 …（单位：0.001°）". From X20 Z0, G01 X30 Q135000:
+    # 5 mm out on the radius at 135 deg from +Z, so 5 mm toward -Z: X30 Z-5 (it ended at X30 Z0),
+    # 7.071 mm at F100 -> 4.243 s. Then the two-block form (§3.13's third row): Q90000 alone (along +X)
+    # and X60 Z-30 Q180000 (along Z through the end): the corner at X60 Z-5, then on to X60 Z-30
+    result, out = gsk_checked(tmp_path, "G01 X30 Q135000 F100", "G01 Q90000", "G01 X60 Z-30 Q180000")
+    assert ends(result, "X", "Z")[1:] == [(30.0, -5.0), (60.0, -5.0), (60.0, -30.0)]
+    assert result["moves"][1]["time"] == pytest.approx(math.hypot(5.0, 5.0) / 100 * 60)
+    assert out == ""
+
+
+@pytest.mark.parametrize(
+    ("body", "line", "end"),
+    [
+        # note 3: "X_ Q_（如果角度Q为（0°或180°）±1°以内的值时，将产生报警。）": 180.5 deg is within 1 deg
+        (("G01 X30 Q180500 F100",), 3, (30.0, 0.0)),
+        # note 4: "Z_ Q_（如果角度Q为（90°或270°）±1°以内的值时，将产生报警。）"
+        (("G01 Z-10 Q269200 F100",), 3, (20.0, -10.0)),
+        # note 5: "计算交点时，由两条直线构成的角度差在±1°之间时，将产生报警。" (90 and 90.5 deg)
+        (("G01 Q90000 F100", "G01 X60 Z-30 Q90500"), 3, (60.0, -30.0)),
+    ],
+    ids=["x-along-z", "z-along-x", "two-lines-parallel"],
+)
+def test_gsk_alarms_on_a_line_within_a_degree_of_parallel(
+    tmp_path: Path, body: tuple[str, ...], line: int, end: tuple[float, float]
+) -> None:
+    result, out = gsk_checked(tmp_path, *body)
+    assert out.startswith(f"{tmp_path / 'O0001.nc'}:{line}:1: error: ") and out.rstrip().endswith("[drawing-angle]")
+    # the move is drawn as written: straight to the end the block gives
+    assert ends(result, "X", "Z")[-1] == end

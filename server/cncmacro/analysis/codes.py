@@ -270,6 +270,13 @@ CODES: dict[str, Code] = _codes(
                 "省略 I 和 K、A、B 或 P 为 0 或省略、终点超出椭圆所及、连线与抛物线对称轴平行"
                 "（GSK980TDi 手册 §3.5–§3.7：报警）。"),
          RUN),
+    Code("drawing-angle", ERROR,
+         detail("A direct drawing dimension (G01 X_ Q_, GSK980TDi) the control cannot cut: the line runs within 1° "
+                "of parallel to the axis it must reach, or two lines meant to meet at a corner within 1° of each "
+                "other (GSK980TDi manual §3.13: an alarm). The move is drawn as written.",
+                "控制系统无法执行的图纸尺寸直接输入（G01 X_ Q_，GSK980TDi）：直线与须到达的轴方向夹角在 1° 以内，"
+                "或应相交的两条直线夹角在 1° 以内（GSK980TDi 手册 §3.13：报警）。移动按所写绘制。"),
+         RUN),
     Code("cutter-arc", ERROR,
          detail("Cutter radius compensation started or cancelled on a G02/G03 arc (PS0034; a warning where the "
                 "control has no such alarm).",

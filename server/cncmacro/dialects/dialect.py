@@ -119,6 +119,11 @@ class Dialect:
     # §8 three-point arcs (GSK980TDi G05, G05.1): motion code -> whether its I, K point on the arc
     # is absolute (else relative to the start, as G02/G03's I, K) (planner/three_point_arcs.py)
     three_point_arcs: dict[float, bool] = field(default_factory=dict)
+    # §8 the angle of direct drawing dimension programming written as an NC word in G00/G01 blocks
+    # (GSK980TDi §3.13: Q, in 0.001°) as (letter, degrees per unit, the tolerance in degrees within
+    # which two lines, or a line and the named axis's, count as parallel: an alarm); None where the
+    # angle is only the corner word ``,A`` (FANUC: parallel lines go straight to the end)
+    drawing_angle: tuple[str, float, float] | None = None
     # §8 motion codes whose blocks carry values under letters that may name an axis elsewhere
     # (GSK980TDi's ellipse G6.2/G6.3: A, B half axes and Q; parabola G7.2/G7.3: P, Q): motion code
     # -> those letters, which are never an axis word in that mode

@@ -22,7 +22,15 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from ..bilingual import Detail, detail
-from .angled_moves import PENDING_ANGLE, PENDING_LINE, angled_end, corner_point
+from .angled_moves import (
+    DRAWING_ANGLE,
+    PENDING_ANGLE,
+    PENDING_LINE,
+    angled_end,
+    corner_point,
+    one_axis_fault,
+    two_line_fault,
+)
 from .arc_checks import arc_finding
 from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
@@ -329,6 +337,14 @@ class Planner:
                 return uncompensated(self, lambda: one_shot(self, one, axes, incremental, other, file, line))
             return one_shot(self, one, axes, incremental, other, file, line)
         mode = self.modal.get("motion", 0.0)
+        drawing = self.dialect.drawing_angle
+        if drawing is not None and self.block_angle is None and drawing[0] in other and mode in (0.0, 1.0):
+            # GSK980TDi's G01 X_ Q_: the angle as a word of its own (angled_moves.py)
+            self.block_angle = other[drawing[0]] * drawing[1]
+            try:
+                return self._carry_out(one, axes, incremental, other, file, line)
+            finally:
+                self.block_angle = None
         canned = self.modal.get("canned", 80.0)
         if not axes and not incremental:
             if self.block_angle is not None:  # G01 ,A1 F0.1: FANUC's two-block form (angle_alone)
@@ -341,7 +357,7 @@ class Planner:
         if PENDING_ANGLE in self.codes:  # the second block of the two-block form (angled_moves.py)
             self._two_block_corner(file, mode, target, {*axes, *incremental})
         if self.block_angle is not None and mode in (0.0, 1.0):  # G01 X30. ,A135. (angled_moves.py)
-            self._angled(target, {*axes, *incremental}, self.block_angle)
+            self._angled(target, {*axes, *incremental}, self.block_angle, line)
         if canned != 80.0 and self.drills:
             drilling = self.dialect.lathe_drilling
             if drilling is None:
@@ -411,11 +427,21 @@ class Planner:
             return None
         return self.checked_arc(mode, self.pos, target, other, line)
 
-    def _angled(self, target: list[float], named: set[int], angle: float) -> None:
-        """The coordinate of the plane a block with ``,A`` leaves out, from the one it names."""
+    def _angled(self, target: list[float], named: set[int], angle: float, line: int) -> None:
+        """The coordinate of the plane a block with ``,A`` leaves out, from the one it names; on a
+        control that alarms on a line too near parallel to its axis, the finding, and the move
+        as written (``Dialect.drawing_angle``)."""
         plane = self._arc_planes.get(self.modal.get("plane", 17.0))
-        if plane is not None:
-            angled_end(plane, self._diameter, self.pos, target, named, angle)
+        if plane is None:
+            return
+        drawing = self.dialect.drawing_angle
+        if drawing is not None:
+            names = "".join(next(k for k, i in self.axis_index.items() if i == axis) for axis in plane[:2])
+            fault = one_axis_fault(plane, names, named, angle, drawing[2])
+            if fault is not None:
+                self.host.note("arc", fault, line, DRAWING_ANGLE)
+                return
+        angled_end(plane, self._diameter, self.pos, target, named, angle)
 
     def angle_alone(self, line: int) -> None:
         """A block with an angle ``,A1`` and no coordinate (``block_angle``) under G00/G01: the first
@@ -431,6 +457,11 @@ class Planner:
         plane = self._arc_planes.get(self.modal.get("plane", 17.0))
         second = self.block_angle
         if plane is None or second is None or mode not in (0.0, 1.0) or not {plane[0], plane[1]} <= named:
+            return
+        drawing = self.dialect.drawing_angle
+        fault = two_line_fault(first, second, drawing[2]) if drawing is not None else None
+        if fault is not None:
+            self.host.note("arc", fault, first_line, DRAWING_ANGLE)
             return
         corner = corner_point(plane, self._diameter, self.pos, target, first, second)
         if corner is not None:

@@ -27,14 +27,21 @@ def check_corners(block: Block, ctx: LineContext, facts: LineFacts) -> None:
         scan_value(c.value, ctx, out, depth_checked=not ctx.values.constant(c.value)[0])
         if not dialect.corner_words:
             name = NAMES[c.letter]
+            drawing = dialect.drawing_angle
+            if c.letter == "A" and drawing is not None:  # GSK980TDi §3.13: G01 X_ Q_, Q in 0.001°
+                letter, unit = drawing[0], f"{drawing[1]:g}°"
+                own = f"it writes the angle of a line as {letter} (G01 X_ {letter}_, in {unit})"
+                own_zh = f"其直线角度写作 {letter}（G01 X_ {letter}_，单位 {unit}）"
+            else:
+                own = "it writes a chamfer as L and a corner arc as D on G01/G02/G03"
+                own_zh = "其倒角在 G01/G02/G03 中写作 L（直线倒角）和 D（圆弧倒角）"
             message = (
-                f"{dialect.title}'s manual does not document ,{c.letter} ({name}); it writes a chamfer as L and a "
-                "corner arc as D on G01/G02/G03. Read and run as on FANUC (the move as written); to confirm on "
-                "the control"
+                f"{dialect.title}'s manual does not document ,{c.letter} ({name}); {own}. Read and run as on FANUC "
+                "(the move as written); to confirm on the control"
             )
             message_zh = (
-                f"{dialect.title} 的说明书中没有 ,{c.letter}（{name.zh}）；其倒角在 G01/G02/G03 中写作 L（直线倒角）和 "
-                "D（圆弧倒角）。此处按 FANUC 读取并运行（按所写移动）；请在机床上确认"
+                f"{dialect.title} 的说明书中没有 ,{c.letter}（{name.zh}）；{own_zh}。"
+                "此处按 FANUC 读取并运行（按所写移动）；请在机床上确认"
             )
             out.append(finding(c.start, c.end, "corner-word", message_zh if zh else message))
             continue

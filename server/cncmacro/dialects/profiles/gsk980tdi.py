@@ -60,6 +60,8 @@ PROFILE = Dialect(
     local_coordinate_code=52.0,  # §3.19: G52 X(U) Z(W), no move
     # G05 / G05.1 three-point arcs, the point relative / absolute (§3.5)
     three_point_arcs={5.0: False, 5.1: True},
+    # §3.13: "Q_ 角度是直线与Z轴的夹角 …（单位：0.001°）"; notes 3-5: within ±1° of parallel, an alarm
+    drawing_angle=("Q", 0.001, 1.0),
     # ellipse A, B (half axes), Q (angle); parabola P, Q (§3.6, §3.7)
     motion_value_letters={
         6.2: frozenset("ABQ"),
