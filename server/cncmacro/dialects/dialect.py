@@ -92,6 +92,11 @@ class Dialect:
     # §10.1 a lathe's G28/G30 cancels the tool offset at the reference point: the tool vector is 0
     # until the next T (GSK980TDi §3.15.1 note 4, §3.15.2 note 3); False: it stays (FANUC)
     reference_return_cancels_tool_offset: bool = False
+    # §10.4 whether an S in a lathe's coordinate setting block that also sets coordinates (X, Z, U,
+    # W) is the spindle speed under G97 rather than the G96 clamp (GSK980TDi: its G76 example's
+    # "G50 X100 Z50 M3 S300；(设置工件坐标系启动主轴，指定转速)", §3.24.12); ``G50 S`` alone, and
+    # any under G96, stays the clamp
+    coordinate_setting_speed: bool = False
     # §8 the code that sets a local coordinate system (G52 IP: its origin in work coordinates, IP0
     # cancels; FANUC's and Haas's), None where the control has none
     local_coordinate_code: float | None = 52.0

@@ -302,7 +302,12 @@ class Planner:
         one = set_modal(self, gs, other, line)
         if self._values_in_block:  # an ellipse's letters, a thread's threads per inch (GSK)
             self._block_values(one, axes, other)
-        if self.lathe and one == self.dialect.coordinate_setting_code and "S" in other:
+        if (
+            self.lathe
+            and one == self.dialect.coordinate_setting_code
+            and "S" in other
+            and not self._g50_speed(axes, incremental)
+        ):
             # G50 S is the spindle speed clamp (docs/semantics.md §10.4), not a spindle speed
             self.codes[SPEED_CLAMP] = other["S"]
             set_codes(self, {k: v for k, v in other.items() if k != "S"}, file, line)
@@ -466,6 +471,12 @@ class Planner:
         corner = corner_point(plane, self._diameter, self.pos, target, first, second)
         if corner is not None:
             self.move(file, first_line, mode, corner)
+
+    def _g50_speed(self, axes: dict[int, float], incremental: dict[int, float]) -> bool:
+        """Whether the S of a lathe's coordinate setting block (G50) is the spindle speed rather
+        than the clamp: where the profile says so (``Dialect.coordinate_setting_speed``) for a
+        block that sets coordinates too, under G97 (docs/semantics.md §10.4)."""
+        return self.dialect.coordinate_setting_speed and bool(axes or incremental) and self.modal.get("spindle") != 96.0
 
     def _block_values(self, one: float | None, axes: dict[int, float], other: dict[str, float]) -> None:
         """Words that are values in this block's mode: an ellipse's A, B, Q and a parabola's P, Q

@@ -57,6 +57,9 @@ PROFILE = Dialect(
     coordinate_setting_voids_wcs=True,
     # "执行 G28 代码回机床零点操作后，系统取消刀具长度补偿" (§3.15.1 note 4; G30: §3.15.2 note 3)
     reference_return_cancels_tool_offset=True,
+    # "G50 X100 Z50 M3 S300；(设置工件坐标系启动主轴，指定转速)" (§3.24.12's example): under G97 the
+    # S of a G50 that sets coordinates is the spindle speed; "G50 S__" alone the clamp (§3.25)
+    coordinate_setting_speed=True,
     local_coordinate_code=52.0,  # §3.19: G52 X(U) Z(W), no move
     # G05 / G05.1 three-point arcs, the point relative / absolute (§3.5)
     three_point_arcs={5.0: False, 5.1: True},
