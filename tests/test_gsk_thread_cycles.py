@@ -36,3 +36,34 @@ def test_fanuc_lathe_g50_s_with_coordinates_is_the_clamp() -> None:
     # the 0i-TF's G50 X Z S: S is the maximum spindle speed; the S code stays 800
     m = run(lines("G97 S800 M03", "G50 X100. Z50. S2000", "#100=#4119", "M30"), "fanuc-0i-lathe")
     assert m.C[100] == 800.0
+
+
+# ---------------------------------------------------------------------------------------------
+# left-hand threads: "F（I）> 0 右旋螺纹，F（I）< 0 左旋螺纹" (§3.24.2, §3.24.10, §3.24.6)
+
+
+def test_gsk_negative_f_of_g92_1_and_g32_1_is_a_left_hand_thread_of_lead_minus_f() -> None:
+    # G92.1 X19 Z-30 F-1.5 S400 from X24 Z5: in 2.5 mm of radius at 6000 mm/min = 0.025 s, the
+    # thread 35 mm / (1.5 x 400) min = 3.5 s, out 0.025 s, back 35 mm at 8000 mm/min = 0.2625 s:
+    # 3.8125 s. G32.1 Z-20 F-2 S500 from Z2: 22 / (2 x 500) min = 1.32 s
+    m = run(lines("G97 M3 S500", "G00 X24 Z5", "G92.1 X19 Z-30 F-1.5 S400", "G00 X24 Z2", "G32.1 Z-20 F-2 S500",
+                  "M30"), GSK)  # fmt: skip
+    cycle, _, thread = m.planner.moves[1:]
+    assert cycle.seconds == pytest.approx(3.8125)
+    assert thread.seconds == pytest.approx(1.32)
+
+
+def test_gsk_negative_i_of_g32_1_is_a_left_hand_thread_of_25_4_over_minus_i() -> None:
+    # I-12.7 threads per inch: lead 25.4 / 12.7 = 2 mm, left-hand; 20 mm / (2 x 500) min = 1.2 s
+    m = run(lines("G97 M3 S500", "G00 X24 Z0", "G32.1 Z-20 I-12.7", "M30"), GSK)
+    assert m.planner.moves[-1].seconds == pytest.approx(1.2)
+
+
+def test_gsk_negative_f_of_g84_is_a_left_hand_tap() -> None:
+    # G84 Z-20 F-1 from Z0 at S600 (GSK: from where the tool stands, no R point): in 20 mm at
+    # 1 x 600 = 600 mm/min = 2 s, out the same 2 s; the same program with F1 takes as long
+    def seconds(lead: str) -> float:
+        m = run(lines("G97 M3 S600", "G00 X0 Z0", f"G84 Z-20 F{lead}", "G80", "M30"), GSK)
+        return m.planner.moves[-1].seconds
+
+    assert seconds("-1") == pytest.approx(seconds("1")) == pytest.approx(4.0)

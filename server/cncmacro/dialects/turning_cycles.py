@@ -77,6 +77,9 @@ class LatheCycles:
       G90 and G92, a radius, K in G94);
     - ``groove_letters``: the letters of G74/G75's step along X and step along Z where they are
       not P and Q (Haas: I and K, in the program's unit with a decimal point; X amounts radii);
+    - ``left_hand``: the modal codes whose negative F (or I) is a left-hand thread of lead |F|
+      (GSK980TDi: G32.1 §3.24.2, G92.1 §3.24.10, G84/G88 §3.24.6: "F（I）> 0 右旋螺纹，F（I）< 0
+      左旋螺纹"); elsewhere a negative lead cuts nothing;
     - ``threads_per_inch``: the letter that gives a thread's pitch as threads per inch instead of
       F's lead (GSK980TDi: I in G32, G33, G92, G76, "每英寸螺纹的牙数"): the lead is 25.4 / I mm
       (1 / I inch under G20).
@@ -90,10 +93,15 @@ class LatheCycles:
     taper_letters: dict[float, str] = field(default_factory=dict)
     groove_letters: tuple[str, str] | None = None
     threads_per_inch: str | None = None
+    left_hand: frozenset[float] = frozenset()
 
 
 FANUC_LATHE_CYCLES = LatheCycles(frozenset({32.0, 34.0}), {34.0: "K"})
 # GSK980TDi: G32.1 (rigid), G32.2/G32.3 (arc threads, §3.24.3) cut at the lead too
 GSK_LATHE_CYCLES = LatheCycles(
-    frozenset({32.0, 32.1, 32.2, 32.3, 34.0}), {34.0: "R"}, groove_x_on_diameter=True, threads_per_inch="I"
+    frozenset({32.0, 32.1, 32.2, 32.3, 34.0}),
+    {34.0: "R"},
+    groove_x_on_diameter=True,
+    threads_per_inch="I",
+    left_hand=frozenset({32.1, 92.1, 84.0, 88.0}),
 )

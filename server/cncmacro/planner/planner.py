@@ -492,7 +492,8 @@ class Planner:
         tpi = self.dialect.lathe_cycles.threads_per_inch
         if tpi is not None and tpi in other and "F" not in other and self._cuts_thread(one):
             per_inch = other[tpi]
-            if per_inch > 0.0:
+            code = self.modal.get("motion", 0.0) if one is None else one
+            if per_inch > 0.0 or (per_inch < 0.0 and code in self.dialect.lathe_cycles.left_hand):
                 other["F"] = (1.0 if self.modal.get("units") == 20.0 else 25.4) / per_inch
 
     def _cuts_thread(self, one: float | None) -> bool:
@@ -713,10 +714,13 @@ class Planner:
     def feed_seconds(self, mode: float, length: float, feed: float, start: Sequence[float], end: Sequence[float],
                      unit: float, lead_change: float = 0.0) -> float:  # fmt: skip
         """The seconds of a cutting move in ``mode`` from ``start`` to ``end``, ``length`` long, by
-        the feed mode, spindle speed, G96 and G50 S clamp in force (``MoveTimes.feed_seconds``)."""
+        the feed mode, spindle speed, G96 and G50 S clamp in force (``MoveTimes.feed_seconds``); a
+        negative F of a left-hand thread is its lead |F|."""
         modal = self.modal
         per_rev = modal.get("feed")
         codes = self.codes
+        if feed < 0.0 and modal.get("motion") in self.dialect.lathe_cycles.left_hand:
+            feed = -feed  # a left-hand thread of lead |F| (``LatheCycles.left_hand``)
         return self.times.feed_seconds(mode, length, feed, per_rev == 95.0 or (per_rev == 99.0 and self.lathe),
                                        codes.get("S") or 0.0, modal.get("spindle") == 96.0, codes.get(SPEED_CLAMP),
                                        start, end, unit, lead_change)  # fmt: skip
