@@ -5,9 +5,11 @@ Every number is worked by hand; gsk980tdi rapids X 6000 mm/min (of the radius), 
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
-from running import lines, run
+from running import alarm, lines, run
 
 GSK = "gsk980tdi"
 
@@ -67,3 +69,27 @@ def test_gsk_negative_f_of_g84_is_a_left_hand_tap() -> None:
         return m.planner.moves[-1].seconds
 
     assert seconds("-1") == pytest.approx(seconds("1")) == pytest.approx(4.0)
+
+
+# ---------------------------------------------------------------------------------------------
+# G34's lead below zero: FANUC PS0313 "illegal lead command"; GSK §3.24.4 "螺距出现负值时产生报警"
+
+
+@pytest.mark.parametrize(("profile", "letter"), [("fanuc-0i-lathe", "K"), (GSK, "R")])
+def test_g34_whose_lead_would_fall_below_zero_stops_with_the_illegal_lead_alarm(profile: str, letter: str) -> None:
+    # F2 changing by -0.2 a revolution: the lead is 0 after 2 / 0.2 = 10 turns, 2 x 10 - 0.1 x 10^2
+    # = 10 mm along; from Z5 to Z-50 is 55 mm: the lead would go negative (4 - 2 x 0.2 x 55 < 0)
+    text = lines("G97 S300 M03", "G00 X40. Z5.", f"G34 Z-50. F2. {letter}-0.2", "G00 X50.", "M30")
+    assert alarm(text, profile) == (313, 3)
+
+
+def test_fanuc_lathe_g34_with_a_negative_lead_stops_with_the_illegal_lead_alarm() -> None:
+    assert alarm(lines("G97 S300 M03", "G00 X40. Z5.", "G34 Z-50. F-2. K0.01", "M30"), "fanuc-0i-lathe") == (313, 3)
+
+
+@pytest.mark.parametrize(("profile", "letter"), [("fanuc-0i-lathe", "K"), (GSK, "R")])
+def test_g34_whose_lead_stays_above_zero_is_timed_by_its_turns(profile: str, letter: str) -> None:
+    # F2 changing by -0.02 over 55 mm: N = (sqrt(4 - 2 x 0.02 x 55) - 2) / -0.02 = (sqrt(1.8) - 2) / -0.02
+    # = 32.918 turns at 300 rev/min = 6.5836 s
+    m = run(lines("G97 S300 M03", "G00 X40. Z5.", f"G34 Z-50. F2. {letter}-0.02", "M30"), profile)
+    assert m.planner.moves[-1].seconds == pytest.approx((math.sqrt(1.8) - 2) / -0.02 / 300 * 60)

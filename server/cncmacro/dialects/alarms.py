@@ -48,6 +48,7 @@ CYCLE_BLOCK_NOT_FOUND = 63
 SHAPE_NOT_MONOTONE = 64
 SHAPE_FIRST_BLOCK = 65
 SHAPE_LAST_BLOCK = 69
+ILLEGAL_LEAD = 313  # PS0313: a variable lead (G34) negative, or falling below zero (planner/variable_leads.py)
 TOOL_ANGLE = 315
 THREAD_MIN_DEPTH = 316
 THREAD_DEPTH = 317
@@ -115,6 +116,7 @@ ALARMS: dict[int, AlarmDoc] = {
         AlarmDoc(
             SHAPE_LAST_BLOCK, "the last block of the shape program is an illegal command", "形状程序的最后一段指令不当"
         ),
+        AlarmDoc(ILLEGAL_LEAD, "illegal lead command", "导程指令不当"),
         AlarmDoc(TOOL_ANGLE, "illegal tool nose angle in the threading cycle", "螺纹切削循环中的刀尖角度不当"),
         AlarmDoc(
             THREAD_MIN_DEPTH,

@@ -50,6 +50,7 @@ from .probing import Probe, SkipState
 from .state import MODAL_DEFAULTS, PlannerState
 from .three_point_arcs import three_point_arc
 from .turning_cycles import forget_single_cycle, in_increments, single_cycle, single_cycle_target, turning_legs
+from .variable_leads import lead_alarm
 from .virtual_planes import CYLINDER, VIRTUAL_PLANE, surface_length
 
 if TYPE_CHECKING:
@@ -381,7 +382,12 @@ class Planner:
         centre = self.block_arc(mode, target, other, line)
         moved = not self._call_needs_distance or target != self.pos or centre is not None
         lead = self.times.variable_lead.get(mode)
-        self.move(file, line, mode, target, centre, other.get(lead, 0.0) if lead else 0.0)
+        change = other.get(lead, 0.0) if lead else 0.0
+        if lead:  # the control's alarm for a lead below zero (variable_leads.py)
+            alarm = lead_alarm(mode, self.codes.get("F") or 0.0, change, self.times.long_axis(self.pos, target))
+            if alarm is not None:
+                raise alarm
+        self.move(file, line, mode, target, centre, change)
         return moved, None
 
     # ---------------------------------------------------------------- arcs

@@ -7,7 +7,7 @@ bracketed program names and ``#9xxx`` indirection.
 
 from __future__ import annotations
 
-from ..alarms import OFFSET_NUMBER, OVERTRAVEL_MINUS, OVERTRAVEL_PLUS
+from ..alarms import ILLEGAL_LEAD, OFFSET_NUMBER, OVERTRAVEL_MINUS, OVERTRAVEL_PLUS
 from ..dialect import Dialect
 from ..drill_cycles import GSK_LATHE_DRILLING
 from ..lathe_cycle_rules import GSK980TDI_RULES
@@ -33,8 +33,9 @@ PROFILE = Dialect(
     # "G65、G66该代码之前只允许出现代码字N且紧跟其后要出现P或H代码字" (§3.28.3 note 3)
     call_first_letters="PH",
     # the soft limits and the offset numbers are the machine's (docs/semantics.md §11); no source
-    # at hand gives the GSK980TDi's numbers for these alarms
-    unnumbered_alarms=frozenset({OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER}),
+    # at hand gives the GSK980TDi's numbers for these alarms; G34's lead below zero: "因R的增加/减小使
+    # 螺距…出现负值时产生报警" (§3.24.4), no number
+    unnumbered_alarms=frozenset({OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER, ILLEGAL_LEAD}),
     h_codes=True,
     bracket_names=True,
     program_digits=4,
