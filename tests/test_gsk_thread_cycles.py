@@ -93,3 +93,18 @@ def test_g34_whose_lead_stays_above_zero_is_timed_by_its_turns(profile: str, let
     # = 32.918 turns at 300 rev/min = 6.5836 s
     m = run(lines("G97 S300 M03", "G00 X40. Z5.", f"G34 Z-50. F2. {letter}-0.02", "M30"), profile)
     assert m.planner.moves[-1].seconds == pytest.approx((math.sqrt(1.8) - 2) / -0.02 / 300 * 60)
+
+
+# ---------------------------------------------------------------------------------------------
+# G92.3: "余量加工循环切削的次数＝(F－E－A)/Q ＋ 1" (§3.24.14)
+
+
+def test_gsk_g92_3_cuts_f_minus_e_minus_a_over_q_plus_1_passes() -> None:
+    # G92.3 X50 Z-60 F6 E1 A2 Q1000 from X60 Z5 at S200: (6 - 1 - 2) / 1 + 1 = 4 passes, each G92's
+    # path: in 5 mm of radius at 6000 mm/min = 0.05 s, the thread 65 mm / (6 x 200) min = 3.25 s,
+    # out 0.05 s, back 65 mm at 8000 mm/min = 0.4875 s: 3.8375 s, x 4 = 15.35 s.
+    # Then X48 alone: E, A, Q are modal, 4 passes of 0.06 + 3.25 + 0.06 + 0.4875 = 3.8575 s: 15.43 s.
+    # Q800 (0.8 mm): 3 / 0.8 = 3.75, the last step the rest: 4 steps, 5 passes: 5 x 3.8375 = 19.1875 s
+    m = run(lines("G97 M3 S200", "G00 X60 Z5", "G92.3 X50 Z-60 F6 E1 A2 Q1000", "X48", "G92.3 X50 Z-60 Q800",
+                  "M30"), GSK)  # fmt: skip
+    assert [mv.seconds for mv in m.planner.moves[1:]] == pytest.approx([15.35, 15.43, 19.1875])

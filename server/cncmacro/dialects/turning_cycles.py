@@ -26,7 +26,9 @@ class SingleCycle:
     back out to the start, both at the lead per revolution, the spindle reversed between them),
     and the letter of its number of starts (``starts``: a thread of L starts is cut L times;
     modal, as the cycle's other words, unless ``starts_modal`` is off: one start where the block
-    leaves it out)."""
+    leaves it out); ``widening``: the letters of the crest width, the tool's width and the step
+    along the long axis (modal, the step in least input increments) of a thread whose root is
+    widened by passes stepped along it (GSK980TDi G92.3: E, A, Q; planner/turning_cycles.py)."""
 
     first: str
     rapid_out: bool = False
@@ -34,6 +36,7 @@ class SingleCycle:
     tap: bool = False
     starts: str | None = None
     starts_modal: bool = True
+    widening: tuple[str, str, str] | None = None
 
 
 LATHE_SINGLE_CYCLES: dict[float, SingleCycle] = {
@@ -48,7 +51,8 @@ GSK_SINGLE_CYCLES: dict[float, SingleCycle] = {
     90.0: SingleCycle("X"),
     92.0: SingleCycle("X", rapid_out=True, thread=True, starts="L"),
     92.1: SingleCycle("X", rapid_out=True, thread=True, starts="L"),
-    92.3: SingleCycle("X", rapid_out=True, thread=True),
+    # "余量加工循环切削的次数＝(F－E－A)/Q ＋ 1" (§3.24.14): E the crest, A the tool, Q the step
+    92.3: SingleCycle("X", rapid_out=True, thread=True, widening=("E", "A", "Q")),
     94.0: SingleCycle("Z"),
     33.0: SingleCycle("Z", thread=True, tap=True, starts="L", starts_modal=False),  # "省略 L 时默认为 1 头"
 }

@@ -20,6 +20,7 @@ lead: per revolution of the spindle, whatever G98/G99 says, as every thread on a
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
@@ -110,6 +111,10 @@ def single_cycle_target(
     if single is not None and single.starts is not None:  # a thread's starts (L), modal with the rest
         kept_starts = kept.get(STARTS, 1.0) if same and single.starts_modal else 1.0
         words[STARTS] = other.get(single.starts, kept_starts)
+    if single is not None and single.widening is not None:  # G92.3's E, A, Q: modal with the rest
+        for letter in single.widening:
+            if letter in other or (same and letter in kept):
+                words[letter] = other.get(letter, kept.get(letter, 0.0))
     p.cycle_params[SINGLE_CYCLE_WORDS] = words
     return target, taper
 
@@ -130,7 +135,8 @@ def single_cycle(
     scale = 2.0 if first is not None and first == p.times.diameter else 1.0  # R is a radius on X
     legs = turning_legs(cycle, p.axis_index, start, target, taper * scale)
     seconds = 0.0
-    for _ in range(thread_starts(p, cycle)):  # a thread of L starts: each start cut in turn
+    # a thread of L starts: each start cut in turn; a widened root (G92.3): each pass across it
+    for _ in range(thread_starts(p, cycle) * widening_passes(p, cycle)):
         seconds += time_legs(p, start, legs, cycle.thread, cycle.tap)
     feed = p.codes.get("F") or 0.0
     if p.feed_hint and 0.0 < feed < 1.0 and not cycle.thread:
@@ -154,6 +160,24 @@ def thread_starts(p: Planner, cycle: SingleCycle) -> int:
         return 1
     kept = p.cycle_params.get(SINGLE_CYCLE_WORDS, {})
     return max(1, int(kept.get(STARTS, 1.0)))
+
+
+def widening_passes(p: Planner, cycle: SingleCycle) -> int:
+    """How many passes a thread whose root is widened along its long axis takes
+    (``SingleCycle.widening``; GSK980TDi G92.3, §3.24.14: "余量加工循环切削的次数＝(F－E－A)/Q ＋ 1"):
+    the tool of width A steps Q (least input increments) across the root the lead F leaves beside
+    the crest E, from one side to the other, the last step the rest; 1 where the words are missing
+    or leave nothing to widen. Each pass goes along the same path (the control shifts the spindle's
+    phase, not the start point: the manual draws one cycle start point and says its path is G92's)."""
+    if cycle.widening is None:
+        return 1
+    kept = p.cycle_params.get(SINGLE_CYCLE_WORDS, {})
+    crest, tool, step = cycle.widening
+    rest = abs(p.codes.get("F") or 0.0) - kept.get(crest, 0.0) - kept.get(tool, 0.0)
+    step_mm = in_increments(p, kept.get(step, 0.0))
+    if rest <= 0.0 or step_mm <= 0.0:
+        return 1
+    return math.ceil(rest / step_mm - 1e-9) + 1
 
 
 def in_increments(p: Planner, value: float) -> float:
