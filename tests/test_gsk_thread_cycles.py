@@ -108,3 +108,41 @@ def test_gsk_g92_3_cuts_f_minus_e_minus_a_over_q_plus_1_passes() -> None:
     m = run(lines("G97 M3 S200", "G00 X60 Z5", "G92.3 X50 Z-60 F6 E1 A2 Q1000", "X48", "G92.3 X50 Z-60 Q800",
                   "M30"), GSK)  # fmt: skip
     assert [mv.seconds for mv in m.planner.moves[1:]] == pytest.approx([15.35, 15.43, 19.1875])
+
+
+# ---------------------------------------------------------------------------------------------
+# G78, the enhanced threading cycle (§3.24.13): G76's passes, its first block read otherwise
+
+
+def test_gsk_g78_cuts_g76s_passes_and_returns_to_the_start() -> None:
+    # G78 P010060 Q100 R0.05 D1: m 1 (decreasing, as G76), r 00 (in along the thread's middle: X
+    # alone), a 60; D1 one finishing pass. G78 X18.05 Z-30 P975 Q400 F1.5 from X24 Z5 at S500:
+    # depths as G76's 0.4, 0.5657, 0.6928, 0.8, 0.9, 0.925, 0.975, at X = 18.05 + 2 (0.975 - d)
+    # = 19.2, 18.869, 18.614, 18.4, 18.2, 18.15, 18.05, each from Z5.
+    # Each pass: in and out (24 - X) / 2 of radius at 6000 mm/min, together (24 - X) x 0.01 s; the
+    # thread 35 / (1.5 x 500) min = 2.8 s; back 35 mm at 8000 mm/min = 0.2625 s.
+    # 7 x 3.0625 + 0.01 x sum(24 - X) = 21.4375 + 0.01 x 38.517 = 21.822 s
+    m = run(lines("G97 M3 S500", "G00 X24 Z5", "G78 P010060 Q100 R0.05 D1", "G78 X18.05 Z-30 P975 Q400 F1.5",
+                  "M30"), GSK)  # fmt: skip
+    moves = [mv for mv in m.planner.moves if mv.pass_of == "G78"]
+    assert len(moves) == 7 * 4
+    depths = [0.4, 0.4 * math.sqrt(2), 0.4 * math.sqrt(3), 0.8, 0.9, 0.925, 0.975]
+    xs = [18.05 + 2 * (0.975 - d) for d in depths]
+    threads = [mv for mv in moves if mv.mode == 32.0]
+    assert [mv.end[0] for mv in threads] == pytest.approx(xs)
+    assert all(mv.start[2] == 5.0 and mv.end[2] == -30.0 for mv in threads)
+    assert (moves[-1].end[0], moves[-1].end[2]) == (24.0, 5.0)
+    assert sum(mv.seconds for mv in moves) == pytest.approx(7 * 3.0625 + 0.01 * sum(24 - x for x in xs))
+
+
+def test_gsk_g78_equal_depths_left_flank_and_starts() -> None:
+    # G78 P000160 Q100 R0.05 D2 L2: m 0 (equal depths of Q), r 01 (the left flank: the pass's start
+    # moves toward the thread's start by depth x tan 30), a 60, D2 finishing passes, L2 starts.
+    # G78 X18.05 Z-30 P975 Q300 F1.5: depths 0.3, 0.6, 0.9 (1.2 would pass k - d = 0.925), 0.925,
+    # then 0.975 twice; each cut for 2 starts: 12 threads, the first from Z 5 + 0.3 tan 30 = 5.1732
+    m = run(lines("G97 M3 S500", "G00 X24 Z5", "G78 P000160 Q100 R0.05 D2 L2", "G78 X18.05 Z-30 P975 Q300 F1.5",
+                  "M30"), GSK)  # fmt: skip
+    threads = [mv for mv in m.planner.moves if mv.pass_of == "G78" and mv.mode == 32.0]
+    depths = [0.3, 0.3, 0.6, 0.6, 0.9, 0.9, 0.925, 0.925, 0.975, 0.975, 0.975, 0.975]
+    assert [mv.end[0] for mv in threads] == pytest.approx([18.05 + 2 * (0.975 - d) for d in depths])
+    assert [mv.start[2] for mv in threads] == pytest.approx([5 + d * math.tan(math.radians(30)) for d in depths])

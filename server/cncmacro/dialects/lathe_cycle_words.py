@@ -183,6 +183,41 @@ def _grooving_and_threading(unit: tuple[str, str]) -> list[CycleWords]:
     ]
 
 
+def _gsk_enhanced_thread(unit: tuple[str, str]) -> CycleWords:
+    """GSK980TDi G78 (§3.24.13): G76's words, its first block's P and D otherwise, with J, K, L, E."""
+    first = (
+        w(
+            "P",
+            "m r a",
+            "six digits: infeed m (0 equal depths, 1 decreasing as G76), cutting-in r (0 along the middle, "
+            "1 the left flank, 2 the right flank, 3 both in turn), tool angle a (degrees), e.g. P010060",
+            "六位数：切深方式m（0等距离进刀，1递减式进刀同G76）、切入方式r（0沿牙型中线，1沿左边，2沿右边，"
+            "3交错切入）、刀尖角度a（度），如P010060",
+        ),
+        _in(unit, "Q", "Δdmin", "minimum depth of cut (a radius)", "最小切削量（半径值）"),
+        w("R", "d", "finishing allowance (a radius)", "螺纹精车切削量（半径值）"),
+        w("J", "", "pull-out along the short axis (no sign)", "退尾时短轴方向的移动量（无符号）"),
+        w("K", "", "pull-out length along the long axis (no sign)", "退尾时长轴方向的长度（无符号）"),
+        w("D", "", "finishing passes, 0-99", "精车次数，0～99"),
+        w("L", "", "starts of the thread, 1-99", "螺纹头数，1～99"),
+        w("E", "", "screw-in distance along X (a radius)", "X向旋进距离（半径值）"),
+    )
+    second = (
+        *END_POINT,
+        w(
+            "R",
+            "i",
+            "taper: the thread's radius at its start minus at its end (0: straight)",
+            "锥度：螺纹起点与终点的半径差（0为直螺纹）",
+        ),
+        _in(unit, "P", "k", "height of the thread (a radius)", "螺纹牙高（半径值）"),
+        _in(unit, "Q", "Δd", "depth of the first cut (a radius)", "第一次切削深度（半径值）"),
+        LEAD,
+        THREADS_PER_INCH,
+    )
+    return two_blocks("G78", first, second, "XZUW", False)
+
+
 def _single_cycles(thread_extra: tuple[CycleWord, ...]) -> list[CycleWords]:
     """G90, G92, G94 and G32; a thread takes ``thread_extra`` too."""
     taper_x = w(
@@ -317,6 +352,7 @@ _EITHER_BLOCK = (
 GSK980TDI_CYCLE_WORDS: dict[float, CycleWords] = by_code(
     *_stock_removal(_EITHER_BLOCK, _EITHER_BLOCK, flags=True),
     *_grooving_and_threading(GSK_INCREMENTS),
+    _gsk_enhanced_thread(GSK_INCREMENTS),
     *_single_cycles((THREADS_PER_INCH,)),
     *_gsk_drilling(),
     *_spindle(

@@ -15,7 +15,7 @@ what each block of G70–G76 means and the moves it makes.
   first block is needed.
 - **G70 P Q** runs the shape blocks as they are written, with their own F, S and T, then
   returns to the start point at rapid.
-- **G74, G75, G76** and the single cycles G90, G92, G94 are planned by their own modules
+- **G74, G75, G76** (GSK's G78) and the single cycles G90, G92, G94 are planned by their own modules
   (``MULTIPLE_CYCLES``: groove_cycles.py, thread_cycles.py; turning_cycles.py); a code no
   module plans is recorded as one cut.
 
@@ -43,7 +43,7 @@ from .cycle_passes import Pass, record_passes
 from .cycle_rules import check_cycle_block, check_shape
 from .groove_cycles import diameter_grooving, face_grooving
 from .stock_removal import Point, Segment, Step, pattern_passes, rough_passes, translate
-from .thread_cycles import multiple_thread
+from .thread_cycles import enhanced_thread, multiple_thread
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -103,6 +103,7 @@ MULTIPLE_CYCLES: dict[float, MultipleCycle] = {
     74.0: face_grooving,  # groove_cycles.py
     75.0: diameter_grooving,
     76.0: multiple_thread,  # thread_cycles.py
+    78.0: enhanced_thread,  # GSK980TDi's G78 (a code only a profile with it in ``cycle_codes`` reaches)
 }
 
 

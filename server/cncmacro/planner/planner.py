@@ -503,10 +503,10 @@ class Planner:
                 other["F"] = (1.0 if self.modal.get("units") == 20.0 else 25.4) / per_inch
 
     def _cuts_thread(self, one: float | None) -> bool:
-        """Whether a block with one-shot code ``one`` (None: none) cuts a thread: G76, or a
+        """Whether a block with one-shot code ``one`` (None: none) cuts a thread: G76 (GSK's G78), or a
         thread's motion mode or single cycle in force."""
         if one is not None:
-            return one == 76.0 and 76.0 in self.cycle_codes
+            return one in (76.0, 78.0) and one in self.cycle_codes
         mode = self.modal.get("motion", 0.0)
         single = self.dialect.single_cycles.get(mode)
         drilling = self.dialect.lathe_drilling

@@ -78,7 +78,7 @@ PROFILE = Dialect(
     # G6.2/G7.2 go round as G02, G6.3/G7.3 as G03 (§3.6, §3.7)
     conic_moves={6.2: (False, True), 6.3: (False, False), 7.2: (True, True), 7.3: (True, False)},
     cycle_codes=frozenset(
-        {70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 92.1, 92.3, 94.0, 33.0}
+        {70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 78.0, 90.0, 92.0, 92.1, 92.3, 94.0, 33.0}
         | {83.0, 84.0, 87.0, 88.0, 83.1, 83.2, 84.1, 84.2, 87.1, 88.1}
     ),
     single_cycles=GSK_SINGLE_CYCLES,
