@@ -98,11 +98,10 @@ def test_10_g72_steps_along_z_and_faces_along_x(tmp_path: Path, dialect: str) ->
     assert feed_seconds(moves) == pytest.approx(3 * 6.6)
 
 
-@pytest.mark.parametrize("dialect", ["gsk980tdi", "fanuc-0i-lathe"])
-def test_10_g73_repeats_the_shape_with_the_relief_shrinking_to_none(tmp_path: Path, dialect: str) -> None:
-    # A = X50 Z2; G73 U3 W0 R3: relief 3 (radius) shared over 3 passes: 3, 1.5, 0 -> the shape
-    # X30 Z-20 cut at X36, X33, X30, each from A at rapid, 22 mm at the feed, back to A.
-    moves = passes(tmp_path, dialect, "G00 X50. Z2.", "G73 U3. W0 R3", "G73 P10 Q20 U0 W0 F0.2",
+def test_10_g73_repeats_the_shape_with_the_relief_shrinking_to_none(tmp_path: Path) -> None:
+    # fanuc-0i-lathe: A = X50 Z2; G73 U3 W0 R3: relief 3 (radius) shared over 3 passes: 3, 1.5, 0
+    # -> the shape X30 Z-20 cut at X36, X33, X30, each from A at rapid, 22 mm at the feed, back to A.
+    moves = passes(tmp_path, "fanuc-0i-lathe", "G00 X50. Z2.", "G73 U3. W0 R3", "G73 P10 Q20 U0 W0 F0.2",
                    "N10 G00 X30.", "N20 G01 Z-20.", code="G73")  # fmt: skip
     assert ends(moves) == [
         (36.0, 2.0), (36.0, -20.0), (50.0, 2.0),
@@ -110,6 +109,55 @@ def test_10_g73_repeats_the_shape_with_the_relief_shrinking_to_none(tmp_path: Pa
         (30.0, 2.0), (30.0, -20.0), (50.0, 2.0),
     ]  # fmt: skip
     assert feed_seconds(moves) == pytest.approx(3 * 13.2)
+
+
+def test_10_g73_on_gsk_goes_from_each_pass_end_to_the_next_offset_start_at_rapid(tmp_path: Path) -> None:
+    # gsk980tdi §3.23.3: A→A1 at rapid, An→Bn in N10's mode (G00 here), Bn→Cn at the feed,
+    # Cn→An+1 at rapid, Cd→A at rapid. A = X50 Z2, relief 3, 1.5, 0 (radius): A1 X56, A2 X53, A3 X50.
+    moves = passes(tmp_path, "gsk980tdi", "G00 X50. Z2.", "G73 U3. W0 R3", "G73 P10 Q20 U0 W0 F0.2",
+                   "N10 G00 X30.", "N20 G01 Z-20.", code="G73")  # fmt: skip
+    assert ends(moves) == [
+        (56.0, 2.0), (36.0, 2.0), (36.0, -20.0),
+        (53.0, 2.0), (33.0, 2.0), (33.0, -20.0),
+        (50.0, 2.0), (30.0, 2.0), (30.0, -20.0),
+        (50.0, 2.0),
+    ]  # fmt: skip
+    assert [mv["kind"] for mv in moves[:3]] == ["rapid", "rapid", "feed"]
+    assert feed_seconds(moves) == pytest.approx(3 * 13.2)
+
+
+def test_10_g73_on_gsk_goes_from_an_to_bn_at_the_cycle_feed_when_the_first_block_is_g01(tmp_path: Path) -> None:
+    # GSK §3.23.3: "ns 程序段是 G01 时按 G73 指定的切削进给速度". A = X60 Z5; U3 W0 R3; U0.4 W0.1.
+    # Offsets (diameter, Z): pass 1 (3×2+0.4, 0+0.1) = (6.4, 0.1), pass 2 (3.4, 0.1), pass 3 (0.4, 0.1).
+    # Shape A→B X30 Z0 (G01), Z-20, X50 (C). An = A + offset, Bn = B + offset, Cn = C + offset.
+    moves = passes(tmp_path, "gsk980tdi", "G00 X60. Z5.", "G73 U3.0 W0 R3", "G73 P10 Q20 U0.4 W0.1 F0.2",
+                   "N10 G01 X30. Z0", "Z-20.", "N20 X50.", code="G73")  # fmt: skip
+    assert ends(moves) == [
+        (66.4, 5.1), (36.4, 0.1), (36.4, -19.9), (56.4, -19.9),
+        (63.4, 5.1), (33.4, 0.1), (33.4, -19.9), (53.4, -19.9),
+        (60.4, 5.1), (30.4, 0.1), (30.4, -19.9), (50.4, -19.9),
+        (60.0, 5.0),
+    ]  # fmt: skip
+    assert [mv["kind"] for mv in moves[:5]] == ["rapid", "feed", "feed", "feed", "rapid"]
+    # per pass at 100 mm/min (0.6 s/mm): An→Bn √(15² + 5²) = 15.811 mm, Z 20 mm, X 10 mm (radius)
+    assert feed_seconds(moves) == pytest.approx(3 * (250**0.5 + 20.0 + 10.0) * 0.6)
+
+
+def test_10_g73_on_gsk_cuts_a_count_of_one_in_two_passes(tmp_path: Path) -> None:
+    # GSK §3.23.3 on d: "如果切削次数为1，系统将按2次切削完成封闭切削循环". R1 as R2: offsets
+    # (3×2+0.4, 0.1) = (6.4, 0.1), then (0.4, 0.1): B1 X36.4 Z0.1, B2 X30.4 Z0.1.
+    moves = passes(tmp_path, "gsk980tdi", "G00 X60. Z5.", "G73 U3.0 W0 R1", "G73 P10 Q20 U0.4 W0.1 F0.2",
+                   "N10 G01 X30. Z0", "Z-20.", "N20 X50.", code="G73")  # fmt: skip
+    at = ends(moves)
+    assert [at[i] for i in range(1, len(at), 4)] == [(36.4, 0.1), (30.4, 0.1)]
+    assert len(moves) == 2 * 4 + 1
+
+
+def test_10_g73_on_fanuc_cuts_a_count_of_one_once(tmp_path: Path) -> None:
+    # fanuc-0i-lathe: R1 is one pass, at the allowances only: X30.4 Z0.1, then the shape.
+    moves = passes(tmp_path, "fanuc-0i-lathe", "G00 X60. Z5.", "G73 U3.0 W0 R1", "G73 P10 Q20 U0.4 W0.1 F0.2",
+                   "N10 G01 X30. Z0", "Z-20.", "N20 X50.", code="G73")  # fmt: skip
+    assert ends(moves) == [(30.4, 0.1), (30.4, -19.9), (50.4, -19.9), (60.0, 5.0)]
 
 
 @pytest.mark.parametrize("dialect", ["gsk980tdi", "fanuc-0i-lathe"])

@@ -86,7 +86,13 @@ class LatheCycles:
       左旋螺纹"); elsewhere a negative lead cuts nothing;
     - ``threads_per_inch``: the letter that gives a thread's pitch as threads per inch instead of
       F's lead (GSK980TDi: I in G32, G33, G92, G76, "每英寸螺纹的牙数"): the lead is 25.4 / I mm
-      (1 / I inch under G20).
+      (1 / I inch under G20);
+    - ``pattern_through_offset_starts``: whether each G73 pass starts at the start point offset
+      as the pass (An), reached at rapid from A or from the last pass's end (Cn), and goes to the
+      offset shape's first point (Bn) in the mode of the shape's first block, the last pass
+      ending with a rapid to A (GSK §3.23.3 ①–⑤); else each pass goes from A to Bn at rapid and
+      back to A at rapid;
+    - ``pattern_min_passes``: the fewest passes G73 cuts (GSK §3.23.3: a count of 1 is cut in 2).
     """
 
     thread_codes: frozenset[float] = frozenset()
@@ -98,14 +104,19 @@ class LatheCycles:
     groove_letters: tuple[str, str] | None = None
     threads_per_inch: str | None = None
     left_hand: frozenset[float] = frozenset()
+    pattern_through_offset_starts: bool = False
+    pattern_min_passes: int = 1
 
 
 FANUC_LATHE_CYCLES = LatheCycles(frozenset({32.0, 34.0}), {34.0: "K"})
-# GSK980TDi: G32.1 (rigid), G32.2/G32.3 (arc threads, §3.24.3) cut at the lead too
+# GSK980TDi: G32.1 (rigid), G32.2/G32.3 (arc threads, §3.24.3) cut at the lead too; G73 moves as its
+# numbered steps say (§3.23.3)
 GSK_LATHE_CYCLES = LatheCycles(
     frozenset({32.0, 32.1, 32.2, 32.3, 34.0}),
     {34.0: "R"},
     groove_x_on_diameter=True,
     threads_per_inch="I",
     left_hand=frozenset({32.1, 92.1, 84.0, 88.0}),
+    pattern_through_offset_starts=True,
+    pattern_min_passes=2,
 )

@@ -262,20 +262,25 @@ def _roughing_steps(p: Planner, shape: ShapeReading, xi: int, zi: int, facing: b
     first = p.cycle_params.get(shape.code, {})
     du, dw = words.get("U", 0.0) / 2.0, words.get("W", 0.0)
     allowance = (dw, du) if facing else (du, dw)
+    cycles = p.dialect.lathe_cycles
     moved = translate(segments, *allowance)
+    offset_start = moved[0].start  # A moved by the allowances (A′; G73's last pass's An)
     moved[0] = Segment(moved[0].mode, to_plane(shape.start), moved[0].end, moved[0].centre)
     start = to_plane(shape.start)
+    approach = 0.0 if segments[0].mode == 0.0 else 1.0
     if shape.code == 73.0:
         relief = (first.get("U", 0.0), first.get("W", 0.0))
         count = round(first.get("R", 1.0))
-        if p.dialect.lathe_cycles.one_block and "D" in words:  # Haas: G73 P Q I K U W D, D the passes
+        if cycles.one_block and "D" in words:  # Haas: G73 P Q I K U W D, D the passes
             relief, count = (words.get("I", 0.0), words.get("K", 0.0)), round(words["D"])
-        return pattern_passes(start, moved, relief, count)
+        if not cycles.pattern_through_offset_starts:
+            return pattern_passes(start, moved, relief, count)
+        moved[0] = Segment(moved[0].mode, offset_start, moved[0].end, moved[0].centre)
+        return pattern_passes(start, moved, relief, max(count, cycles.pattern_min_passes), approach)
     depth = first.get("W" if facing else "U", 0.0)
     if p.dialect.lathe_cycles.one_block and "D" in words:  # Haas: G71 P Q U W D, D the depth of cut
         depth = words["D"]
     retract = first.get("R", 0.0)
-    approach = 0.0 if segments[0].mode == 0.0 else 1.0
     # G18: G03 turns from Z toward X, so counterclockwise in (z, x) (G72's plane), clockwise in (x, z)
     ccw_mode = 3.0 if facing else 2.0
     return rough_passes(start, moved, depth, retract, approach, ccw_mode)

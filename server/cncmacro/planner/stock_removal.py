@@ -21,7 +21,10 @@ where it is when the shape ended beyond it), back along ``b``, and in to A.
 
 G73 (pattern repeating): the shape offset by the relief (Δi, Δk) and the allowances, ``count``
 times, the relief shrinking evenly to none on the last pass; each pass goes from A to the offset
-shape's start at rapid, follows it at the feed and returns to A at rapid.
+shape's first point at rapid, follows it at the feed and returns to A at rapid, or (GSK980TDi
+§3.23.3) goes at rapid to the start point offset as the pass, from there in the mode of the
+shape's first block to its first point and along it, on to the next pass's start at rapid, and
+from the last pass's end to A at rapid.
 """
 
 from __future__ import annotations
@@ -171,17 +174,31 @@ def rough_passes(
     return steps
 
 
-def pattern_passes(start: Point, shape: list[Segment], relief: Point, count: int) -> list[Step]:
+def pattern_passes(
+    start: Point, shape: list[Segment], relief: Point, count: int, approach: float | None = None
+) -> list[Step]:
     """G73: ``count`` passes along ``shape`` (already offset by the allowances), the first
-    offset by ``relief`` and each later one by an even share less, the last by none; each from
-    A to the offset shape's start at rapid, along it at the feed, and back to A at rapid."""
+    offset by ``relief`` and each later one by an even share less, the last by none.
+
+    Without ``approach`` each pass goes from A to the offset shape's first point at rapid, along
+    the shape at the feed, and back to A at rapid. With it (the GSK980TDi's steps, §3.23.3) each
+    pass starts at the shape's start offset as the pass (An), reached at rapid from A or from the
+    last pass's end, goes to the offset first point (Bn) in ``approach``'s mode (0 rapid, 1 the
+    feed: the shape's first block's) and along the shape at the feed; the last ends at rapid at A."""
     steps: list[Step] = []
     if not shape or count < 1:
         return steps
     for k in range(1, count + 1):
         share = (count - k) / (count - 1) if count > 1 else 0.0
         moved = translate(shape, relief[0] * share, relief[1] * share)
-        steps.append(Step(0.0, moved[0].end))
+        if approach is None:
+            steps.append(Step(0.0, moved[0].end))
+            steps.extend(along_shape(moved[1:]))
+            steps.append(Step(0.0, start))
+            continue
+        steps.append(Step(0.0, moved[0].start))
+        steps.append(Step(approach, moved[0].end))
         steps.extend(along_shape(moved[1:]))
+    if approach is not None:
         steps.append(Step(0.0, start))
     return steps
