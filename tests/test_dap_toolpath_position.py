@@ -112,9 +112,10 @@ def test_the_current_moves_of_a_shape_cycle_are_all_its_passes(tmp_path: Path) -
     before = (m.blocks, len(m.planner.moves), list(m.planner.pos), len(m.frames))
     ahead = next_moves(m)
     # U2. is a radius: X falls 4 a pass from X40, to X36, X32 and the shape's X30; each pass is
-    # in, cut to Z-20., out by R1. (X+2, Z+1) and back to Z2.: 3 passes x 4 moves
-    assert len(ahead) == 12 and {(mv.line + 1, mv.pass_of) for mv in ahead} == {(4, "G71")}
-    assert [mv.end[0] for mv in ahead if mv.mode == 1.0] == [36.0, 32.0, 30.0]
+    # in, cut to Z-20., out by R1. (X+2, Z+1) at the feed (GSK §3.23.1 ④) and back to Z2.: 2 x 4
+    # moves, then in to X30, the cut along the shape and from its end straight to A (⑧): 11 moves
+    assert len(ahead) == 11 and {(mv.line + 1, mv.pass_of) for mv in ahead} == {(4, "G71")}
+    assert [mv.end[0] for mv in ahead if mv.mode == 1.0] == [36.0, 38.0, 32.0, 34.0, 30.0]
     assert (m.blocks, len(m.planner.moves), list(m.planner.pos), len(m.frames)) == before
     while line(stepper) != 7:
         stepper.run(STEP_IN)

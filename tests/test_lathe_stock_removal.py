@@ -37,10 +37,8 @@ def feed_seconds(moves: list[dict[str, Any]]) -> float:
     return sum(mv["time"] for mv in moves if mv["kind"] != "rapid")
 
 
-@pytest.mark.parametrize("dialect", ["gsk980tdi", "fanuc-0i-lathe"])
-def test_10_g71_steps_in_by_depth_cuts_to_the_shape_pulls_back_by_e_and_ends_along_the_shape(
-    tmp_path: Path, dialect: str
-) -> None:
+def test_10_g71_steps_in_by_depth_cuts_to_the_shape_pulls_back_by_e_and_ends_along_the_shape(tmp_path: Path) -> None:
+    dialect = "fanuc-0i-lathe"  # gsk980tdi's steps differ: the test below
     # A = X40 Z2 (radius 20); Δd 2, e 0.5; shape X30 (radius 15) then Z-20, no allowances.
     # Levels radius 18 (X36), 16 (X32); 14 would pass 15. The shape never comes up to them, so
     # each cuts to its end Z-20. Retract: radius +0.5, Z +0.5 (X37 Z-19.5, X33 Z-19.5).
@@ -60,8 +58,46 @@ def test_10_g71_steps_in_by_depth_cuts_to_the_shape_pulls_back_by_e_and_ends_alo
     assert sum(mv["time"] for mv in moves) == pytest.approx(39.6 + rapid, rel=0.01)
 
 
-@pytest.mark.parametrize("dialect", ["gsk980tdi", "fanuc-0i-lathe"])
-def test_10_g71_leaves_the_finishing_allowances_on_the_part(tmp_path: Path, dialect: str) -> None:
+def test_10_g71_on_gsk_pulls_back_at_the_feed_and_goes_from_the_shape_end_straight_to_a(tmp_path: Path) -> None:
+    # GSK §3.23.1 ④ "X 轴、Z 轴按切削进给速度退刀 e(45°直线)" (the 45° retract at the cutting feed),
+    # ⑧ "从C’点快速移动到A点" (from C' to A at rapid). A = X40 Z2 = A' (no allowances); Δd 2, e 0.5;
+    # levels X36, X32 as on FANUC; each retract (radius 0.5, Z 0.5) is √0.5 = 0.7071 mm at 100 mm/min.
+    moves = passes(tmp_path, "gsk980tdi", "G00 X40. Z2.", "G71 U2. R0.5", "G71 P10 Q20 U0 W0 F0.2",
+                   "N10 G00 X30.", "N20 G01 Z-20.")  # fmt: skip
+    assert ends(moves) == [
+        (36.0, 2.0), (36.0, -20.0), (37.0, -19.5), (37.0, 2.0),
+        (32.0, 2.0), (32.0, -20.0), (33.0, -19.5), (33.0, 2.0),
+        (30.0, 2.0), (30.0, -20.0),  # the pass along the shape
+        (40.0, 2.0),  # straight back to A
+    ]  # fmt: skip
+    assert [mv["kind"] for mv in moves[:4]] == ["rapid", "feed", "feed", "rapid"]
+    # three cuts of 22 mm (39.6 s) and two retracts of 0.7071 mm, 0.6 s a millimetre
+    assert feed_seconds(moves) == pytest.approx(39.6 + 2 * 0.5**0.5 * 0.6)
+
+
+def test_10_g72_on_gsk_counts_the_levels_from_a_moved_by_the_allowances(tmp_path: Path) -> None:
+    # GSK §3.23.2 ① "从起点 A 点快速移动到 A’点，X 轴移动 Δu、Z 轴移动 Δw", ② from A' Z moves Δd,
+    # ⑤ X back at rapid to A''s, ⑥ in again by Δd + e, ⑦ B'→C' at the feed, ⑧ C'→A at rapid.
+    # A = X80 Z2, Δd 2, e 0.5, U0.4 W0.2: A' = X80.4 Z2.2. Shape Z-6 (G01), X20, Z0: B' = X80.4
+    # Z-5.8, C' = X20.4 Z0.2. Levels Z0.2, -1.8, -3.8 (from A', not Z0, -2, -4 from A); the next,
+    # -5.8, is B'. Each faces X80.4 → X20.4 and pulls back by (X+1, Z+0.5) at the feed.
+    moves = passes(tmp_path, "gsk980tdi", "G00 X80. Z2.", "G72 W2. R0.5", "G72 P10 Q20 U0.4 W0.2 F0.2",
+                   "N10 G01 Z-6.", "X20.", "N20 Z0", code="G72")  # fmt: skip
+    assert ends(moves) == [
+        (80.4, 2.2),
+        (80.4, 0.2), (20.4, 0.2), (21.4, 0.7), (80.4, 0.7),
+        (80.4, -1.8), (20.4, -1.8), (21.4, -1.3), (80.4, -1.3),
+        (80.4, -3.8), (20.4, -3.8), (21.4, -3.3), (80.4, -3.3),
+        (80.4, -5.8), (20.4, -5.8), (20.4, 0.2),
+        (80.0, 2.0),
+    ]  # fmt: skip
+    # at the feed (0.6 s/mm): in 2 + 3 × 2.5 = 9.5 mm; faces 3 × 30 mm (radial); retracts 3 × 0.7071;
+    # the shape 30 + 6 mm: 137.621 mm
+    assert feed_seconds(moves) == pytest.approx((9.5 + 90.0 + 3 * 0.5**0.5 + 36.0) * 0.6)
+
+
+def test_10_g71_leaves_the_finishing_allowances_on_the_part(tmp_path: Path) -> None:
+    dialect = "fanuc-0i-lathe"  # on gsk980tdi the levels count from A' (the test above)
     # The same shaft with U0.5 W0.1: the shape moves to X30.5 and Z up by 0.1, so the last pass
     # runs X30.5 from Z2.1 to Z-19.9 and the levels cut to Z-19.9.
     moves = passes(tmp_path, dialect, "G00 X40. Z2.", "G71 U2. R0.5", "G71 P10 Q20 U0.5 W0.1 F0.2",
@@ -77,13 +113,14 @@ def test_10_g71_cuts_each_level_to_where_the_shape_comes_up_to_it(tmp_path: Path
     # step, Z-40; X38 … X22: below it, cut to the shoulder Z-20.
     moves = passes(tmp_path, dialect, "G00 X50. Z2.", "G71 U2. R1.", "G71 P10 Q20 U0 W0 F0.2", "N10 G00 X20.",
                    "G01 Z-20.", "X40.", "Z-40.", "N20 X50.")  # fmt: skip
-    cuts = [e for mv, e in zip(moves, ends(moves), strict=True) if mv["kind"] == "feed"][:-4]
+    cuts = [e for mv, e in zip(moves, ends(moves), strict=True)
+            if mv["kind"] == "feed" and mv["from"]["X"] == mv["to"]["X"]][:-2]  # fmt: skip
     assert cuts == [(46.0, -40.0), (42.0, -40.0), (38.0, -20.0), (34.0, -20.0), (30.0, -20.0), (26.0, -20.0),
                     (22.0, -20.0)]  # fmt: skip
 
 
-@pytest.mark.parametrize("dialect", ["gsk980tdi", "fanuc-0i-lathe"])
-def test_10_g72_steps_along_z_and_faces_along_x(tmp_path: Path, dialect: str) -> None:
+def test_10_g72_steps_along_z_and_faces_along_x(tmp_path: Path) -> None:
+    dialect = "fanuc-0i-lathe"  # gsk980tdi: test_10_g72_on_gsk_counts_the_levels_from_a_moved_by_the_allowances
     # A = X42 Z1; G72 W1 R0.5: levels Z0, Z-1 (Z-2 is the shape's first point); shape Z-2 then X20.
     # Each level faces from X42 to X20 (11 mm radial: 6.6 s), pulls back to Z+0.5 and X+1 (radius 0.5),
     # returns to X42 at rapid; then the pass along the shape at Z-2; then out to Z1 and back to X42.

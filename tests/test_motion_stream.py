@@ -92,16 +92,18 @@ def test_the_lathe_g90_g92_g94_single_cycles_have_their_four_legs(tmp_path: Path
 def test_a_lathe_roughing_cycle_is_sent_as_its_passes_each_a_move_of_its_own(tmp_path: Path) -> None:
     # A = X50 Z2; G71 U2 R1: depth 2 (X steps of 4 on the diameter), retract 1; allowances U0.5 W0.1.
     # The shape offset by them runs from X20.5 Z0.1 to X40.5 Z-19.9 (z = 0.1 - (x - 20.5)).
-    # Levels X46, 42, 38, 34, 30, 26, 22 (X18 would pass X20.5): 7 passes of 4 moves, then the
-    # approach and the cut along the shape, and out to X50 and back to Z2: 32 moves.
+    # GSK §3.23.1: first A to A' (X50.5 Z2.1) at rapid; levels from A': X46.5, 42.5, 38.5, 34.5,
+    # 30.5, 26.5, 22.5 (X18.5 would pass X20.5): 7 passes of 4 moves, then the approach and the
+    # cut along the shape, and from its end straight to A: 1 + 28 + 2 + 1 = 32 moves.
     text = lines("O0007", "G00 X50. Z2.", "G71 U2. R1.", "G71 P10 Q20 U0.5 W0.1 F0.25", "N10 G01 X20. Z0",
                  "N20 X40. Z-20.", "M30")  # fmt: skip
     roughing = [mv for mv in moves(tmp_path, text, "O0007.CNC", 'base = "gsk980tdi"\n') if mv["line"] == 4]
     assert len(roughing) == 32
     assert all(mv.get("pass_of") == "G71" and mv["kind"] in ("rapid", "feed") for mv in roughing)
-    first_cut = roughing[1]
-    assert (first_cut["from"]["X"], first_cut["from"]["Z"], first_cut["to"]["X"]) == (46.0, 2.0, 46.0)
-    assert first_cut["to"]["Z"] == pytest.approx(-19.9)  # the shape never reaches X46: cut to its end
-    third_cut = roughing[9]
-    assert third_cut["to"]["X"] == 38.0 and third_cut["to"]["Z"] == pytest.approx(0.1 - 17.5)
+    assert (roughing[0]["to"]["X"], roughing[0]["to"]["Z"]) == (50.5, 2.1)
+    first_cut = roughing[2]
+    assert (first_cut["from"]["X"], first_cut["from"]["Z"], first_cut["to"]["X"]) == (46.5, 2.1, 46.5)
+    assert first_cut["to"]["Z"] == pytest.approx(-19.9)  # the shape never reaches X46.5: cut to its end
+    third_cut = roughing[10]
+    assert third_cut["to"]["X"] == 38.5 and third_cut["to"]["Z"] == pytest.approx(0.1 - 18.0)
     assert (roughing[-1]["to"]["X"], roughing[-1]["to"]["Z"]) == (50.0, 2.0)

@@ -87,6 +87,13 @@ class LatheCycles:
     - ``threads_per_inch``: the letter that gives a thread's pitch as threads per inch instead of
       F's lead (GSK980TDi: I in G32, G33, G92, G76, "每英寸螺纹的牙数"): the lead is 25.4 / I mm
       (1 / I inch under G20);
+    - ``roughing_from_offset_start``: whether G71/G72 follow the GSK980TDi's numbered steps
+      (§3.23.1, §3.23.2 ①–⑧): from the start point A at rapid to A′ (A moved by the finishing
+      allowances), the levels Δd apart counted from A′, each cut's return along the cut axis to
+      A′'s coordinate, and at the end from C′ straight to A at rapid; else the levels count from
+      A and the tool comes back out, along and in to A;
+    - ``roughing_retract_at_feed``: whether G71/G72's 45° retract e is cut at the feed (GSK step
+      ④, "按切削进给速度退刀") rather than at rapid;
     - ``pattern_through_offset_starts``: whether each G73 pass starts at the start point offset
       as the pass (An), reached at rapid from A or from the last pass's end (Cn), and goes to the
       offset shape's first point (Bn) in the mode of the shape's first block, the last pass
@@ -104,19 +111,23 @@ class LatheCycles:
     groove_letters: tuple[str, str] | None = None
     threads_per_inch: str | None = None
     left_hand: frozenset[float] = frozenset()
+    roughing_from_offset_start: bool = False
+    roughing_retract_at_feed: bool = False
     pattern_through_offset_starts: bool = False
     pattern_min_passes: int = 1
 
 
 FANUC_LATHE_CYCLES = LatheCycles(frozenset({32.0, 34.0}), {34.0: "K"})
-# GSK980TDi: G32.1 (rigid), G32.2/G32.3 (arc threads, §3.24.3) cut at the lead too; G73 moves as its
-# numbered steps say (§3.23.3)
+# GSK980TDi: G32.1 (rigid), G32.2/G32.3 (arc threads, §3.24.3) cut at the lead too; G71/G72 and
+# G73 move as their numbered steps say (§3.23.1–§3.23.3)
 GSK_LATHE_CYCLES = LatheCycles(
     frozenset({32.0, 32.1, 32.2, 32.3, 34.0}),
     {34.0: "R"},
     groove_x_on_diameter=True,
     threads_per_inch="I",
     left_hand=frozenset({32.1, 92.1, 84.0, 88.0}),
+    roughing_from_offset_start=True,
+    roughing_retract_at_feed=True,
     pattern_through_offset_starts=True,
     pattern_min_passes=2,
 )

@@ -283,4 +283,6 @@ def _roughing_steps(p: Planner, shape: ShapeReading, xi: int, zi: int, facing: b
     retract = first.get("R", 0.0)
     # G18: G03 turns from Z toward X, so counterclockwise in (z, x) (G72's plane), clockwise in (x, z)
     ccw_mode = 3.0 if facing else 2.0
-    return rough_passes(start, moved, depth, retract, approach, ccw_mode)
+    via = offset_start if cycles.roughing_from_offset_start else None
+    retract_mode = 1.0 if cycles.roughing_retract_at_feed else 0.0
+    return rough_passes(start, moved, depth, retract, approach, ccw_mode, via, retract_mode)

@@ -17,7 +17,10 @@ to where the shape goes below the level, down at rapid to the level above and in
 along to where the shape comes back up, pulled back by e; and back to A's depth and along ``b``
 before the next level; then it cuts once along the
 shape offset by the allowances and returns to A at rapid: out along ``a`` to A's depth (or stays
-where it is when the shape ended beyond it), back along ``b``, and in to A.
+where it is when the shape ended beyond it), back along ``b``, and in to A. The GSK980TDi's steps
+(§3.23.1, §3.23.2 ①–⑧) differ: the tool first goes at rapid to A′ (A moved by the allowances),
+the levels count from A′ and each cut returns along ``b`` to A′'s, the 45° pull-back is made at
+the feed, and from the shape's end C′ the tool goes straight to A at rapid.
 
 G73 (pattern repeating): the shape offset by the relief (Δi, Δk) and the allowances, ``count``
 times, the relief shrinking evenly to none on the last pass; each pass goes from A to the offset
@@ -124,22 +127,33 @@ def along_shape(shape: list[Segment]) -> list[Step]:
 
 
 def rough_passes(
-    start: Point, shape: list[Segment], depth: float, retract: float, approach: float, ccw_mode: float
+    start: Point,
+    shape: list[Segment],
+    depth: float,
+    retract: float,
+    approach: float,
+    ccw_mode: float,
+    offset_start: Point | None = None,
+    retract_mode: float = 0.0,
 ) -> list[Step]:
     """G71/G72: the path from ``start`` (A) that removes the stock down to ``shape`` (already
     offset by the finishing allowances) in levels ``depth`` apart, each pass pulled back by
-    ``retract`` at 45°, then the pass along the shape and the return to A (module docstring).
-    ``approach`` is the mode (0 or 1) of the shape's first block, by which each level is
-    stepped into; an arc of mode ``ccw_mode`` turns counterclockwise in the ``(a, b)`` plane."""
+    ``retract`` at 45° in ``retract_mode`` (0 rapid, 1 the feed), then the pass along the shape
+    and the return to A (module docstring). ``approach`` is the mode (0 or 1) of the shape's
+    first block, by which each level is stepped into; an arc of mode ``ccw_mode`` turns
+    counterclockwise in the ``(a, b)`` plane. With ``offset_start`` (A′, A moved by the
+    allowances: the GSK980TDi's steps ①–⑧) the tool first goes there at rapid, the levels count
+    from it and each cut returns to its ``b``, and from the shape's end it goes straight to A
+    at rapid."""
     if not shape or depth <= 0:
         return []
-    a_start, b_start = start
+    a_start, b_start = start if offset_start is None else offset_start
     first = shape[0].end
     side = math.copysign(1.0, first[0] - a_start) if first[0] != a_start else 0.0
     pts = shape_polyline(shape, ccw_mode)[1:]  # from the shape's first point on
     end_b = shape[-1].end[1]
     along = math.copysign(1.0, end_b - first[1]) if end_b != first[1] else -1.0
-    steps: list[Step] = []
+    steps: list[Step] = [] if offset_start in (None, start) else [Step(0.0, offset_start)]
     k = 1
     while side and k <= MAX_LEVELS:
         level = a_start + side * depth * k
@@ -156,7 +170,7 @@ def rough_passes(
                 steps.append(Step(0.0, (level - side * depth, b_in)))
                 steps.append(Step(1.0, (level, b_in)))
             steps.append(Step(1.0, (level, b_out)))
-            steps.append(Step(0.0, (out, b_out - along * retract)))
+            steps.append(Step(retract_mode, (out, b_out - along * retract)))
         if len(runs) > 1:
             steps.append(Step(0.0, (a_start, steps[-1].end[1])))
             steps.append(Step(0.0, (a_start, b_start)))
@@ -165,6 +179,9 @@ def rough_passes(
         k += 1
     steps.append(Step(approach, first))
     steps.extend(along_shape(shape[1:]))
+    if offset_start is not None:
+        steps.append(Step(0.0, start))
+        return steps
     last = steps[-1].end
     out = a_start if side * (a_start - last[0]) <= 0 else last[0]  # never back into the stock
     steps.append(Step(0.0, (out, last[1])))
