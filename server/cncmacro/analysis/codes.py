@@ -231,6 +231,11 @@ CODES: dict[str, Code] = _codes(
                 "loop that comes back with nothing changed.",
                 "分析运行在程序段上限处停止（可能是死循环），或停在一个再次执行时没有任何变化的死循环中。"),
          RUN),
+    Code("not-simulated", INFORMATION,
+         detail("A cycle the control has that the simulation does not cut: its block moves nothing, and the tool "
+                "is where the cycle ends on the control, its start point.",
+                "控制器具有但模拟不切削的循环：该程序段不移动，刀具位于该循环在控制器上结束的位置，即其起点。"),
+         RUN),
     Code("feed-per-minute", HINT,
          detail("A cut at F below 1 under G98 (feed per minute) on a lathe that powers on in G98: a G99 is missing.",
                 "上电默认 G98 的车床在 G98（每分钟进给）下以小于 1 的 F 切削：缺少 G99。"), RUN),

@@ -220,10 +220,11 @@ def result_json(result: RunResult, axes: tuple[str, ...], locale: str | None = N
         "variables": {str(k): v for k, v in result.variables.items()},
         "moves": _moves_json(result, axes),
         "output": result.output,
-        "messages": [
-            in_language(n.message, chinese) for n in result.notes if n.kind in ("message", "call", "feed", "limits")
-        ],
+        "messages": [in_language(n.message, chinese) for n in result.notes if n.kind in _MESSAGE_KINDS],
     }
+
+
+_MESSAGE_KINDS = ("message", "call", "feed", "limits", "simulation")  # the notes ``--json`` lists as messages
 
 
 def _moves_json(result: RunResult, axes: tuple[str, ...]) -> Iterator[dict[str, Any]]:
@@ -287,7 +288,7 @@ def write_text(
             print(f"DPRNT  {note.message}", file=out)
         elif note.kind == "message":
             print(f"停止（{where}）：{text}" if chinese else f"stop at {where}: {text}", file=out)
-        elif note.kind in ("call", "skip", "feed", "limits"):
+        elif note.kind in ("call", "skip", "feed", "limits", "simulation"):
             print(f"提示（{where}）：{text}" if chinese else f"note at {where}: {text}", file=out)
     if result.alarm is not None:
         a = result.alarm

@@ -673,9 +673,9 @@ def run_diagnostics(
             zh = in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, code, en, zh, note.chain, None, False, line_text, locale,
                                    milder=True))  # fmt: skip
-        elif note.kind in ("arc", "units", "limits", "cutter") and note.subject is not None:
-            # planner/arc_checks.py, planner/units.py, planner/machine_limits.py, planner/cutter_stage.py:
-            # the subject is the code
+        elif note.kind in ("arc", "units", "limits", "cutter", "simulation") and note.subject is not None:
+            # planner/arc_checks.py, planner/units.py, planner/machine_limits.py, planner/cutter_stage.py,
+            # planner/one_shot.py (a cycle not simulated): the subject is the code
             en, zh = in_language(note.message, False), in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, note.subject, en, zh, note.chain, None, False, line_text,
                                    locale, milder=note.subject in _MILDER_NOTES))  # fmt: skip
