@@ -12,7 +12,7 @@ from cli_capture import cli, run_json
 
 CORPUS = Path(__file__).resolve().parent / "corpus"
 SHAFT = (
-    "%\nO0100 (SHAFT)\nT0101\nG50 S2500\nG71 U2. R0.5\nG71 P10 Q20 U0.5 W0.1 F0.25\n"
+    "%\nO0100 (SHAFT)\nT0101 G97 S800 M03\nG50 S2500\nG71 U2. R0.5\nG71 P10 Q20 U0.5 W0.1 F0.25\n"
     "N10 G00 X20.\nG01 Z-20.\nN20 X52.\nM30\n%\n"
 )
 

@@ -210,10 +210,10 @@ CASES = {
         "程序段结束符 ';' 之后还有内容：一行只能写一个程序段，这些内容不会被读取",
     ),
     "unclosed_comment": (
-        "G01 X1 (CHECK", "comment not closed: ')' is missing", "注释没有结束：缺少 ')'",
+        "G01 X1 F100 (CHECK", "comment not closed: ')' is missing", "注释没有结束：缺少 ')'",
     ),
     "full_width_end_of_block": (
-        "G01 X1；", "full-width '；' read as the end-of-block ';'", "全角 '；' 按程序段结束符 ';' 处理",
+        "G01 X1 F100；", "full-width '；' read as the end-of-block ';'", "全角 '；' 按程序段结束符 ';' 处理",
     ),
 }  # fmt: skip
 # A byte that neither UTF-8 nor GB18030 decodes is kept (as U+DC80+byte) and is a stray character.

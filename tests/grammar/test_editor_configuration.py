@@ -74,7 +74,7 @@ def test_every_snippet_has_a_prefix_a_body_and_an_english_description() -> None:
 def test_snippets_insert_programs_the_checker_accepts(tmp_path: Path) -> None:
     # the called programs: the header snippet is O9100; O0040 and O9110 are plain subprograms
     (tmp_path / "O9100.nc").write_text(expand(SNIPPETS["Macro header with argument checks"]["body"]) + "\n")
-    (tmp_path / "O0040.nc").write_text("O0040\nG91 G01 X1.\nM99\n")
+    (tmp_path / "O0040.nc").write_text("O0040\nG91 G01 X1. F100.\nM99\n")
     (tmp_path / "O9110.nc").write_text("O9110\nG81 Z#26 R#18 F#9\nG80\nM99\n")
     assert set(CONTEXT) | {"Macro header with argument checks"} == set(SNIPPETS)
     for i, (name, (before, after)) in enumerate(CONTEXT.items()):

@@ -20,7 +20,7 @@ import pytest
 import cncmacro
 
 PREFIX = "(中文🔧)\t"
-TEXT = f"O0001\n{PREFIX}#100=1\n{PREFIX}G01 X1 @\nM30\n"
+TEXT = f"O0001\n{PREFIX}#100=1\n{PREFIX}G01 F100 X1 @\nM30\n"
 
 SCRIPT = r"""
 local file, out = os.getenv("CNC_FILE"), os.getenv("CNC_OUT")
@@ -96,11 +96,11 @@ def test_neovim_011_offering_utf8_first_gets_its_columns_right(tmp_path: Path) -
                    env=env, cwd=tmp_path, timeout=90, check=True, stdin=subprocess.DEVNULL)  # fmt: skip
     found = json.loads(out.read_text("utf-8"))
     assert found["encoding"] == "utf-32", found
-    error_line = f"{PREFIX}G01 X1 @"
+    error_line = f"{PREFIX}G01 F100 X1 @"
     at = len(error_line[: error_line.index("@")].encode("utf-8"))  # Neovim keeps byte columns
     # each finding once (Neovim keeps pushed and pulled findings apart; the server only pushes)
     assert [(d["line"], d["col"]) for d in found["before"] if d["code"] == "syntax"] == [(2, at)]
     assert "#100" in found["hover100"]
     assert "#101" in found["hover101"]
-    assert found["lines"][1:3] == [f"{PREFIX}#100=#101", f"{PREFIX}G01 X1 Y2"]
+    assert found["lines"][1:3] == [f"{PREFIX}#100=#101", f"{PREFIX}G01 F100 X1 Y2"]
     assert found["after"] == 0  # the server's text is the editor's: no syntax error left, all of it runs

@@ -239,6 +239,12 @@ CODES: dict[str, Code] = _codes(
     Code("feed-per-minute", HINT,
          detail("A cut at F below 1 under G98 (feed per minute) on a lathe that powers on in G98: a G99 is missing.",
                 "上电默认 G98 的车床在 G98（每分钟进给）下以小于 1 的 F 切削：缺少 G99。"), RUN),
+    Code("no-feed", WARNING,
+         detail("A cut with no feed (no F given in the program, or F0), or per revolution with no spindle speed: "
+                "it takes no time in the cycle time, and the control alarms (FANUC PS0011) or waits for the spindle "
+                "unless an earlier program left a feed or a speed.",
+                "没有进给速度（程序中未指令 F，或 F0）的切削，或没有主轴转速的每转进给切削：加工时间中不计时间；"
+                "除非之前的程序留下了进给速度或转速，否则控制器报警（FANUC PS0011）或等待主轴。"), RUN),
     Code("over-travel", ERROR,
          detail("A move leaves the machine's travel in the machine file's [limits] (FANUC OT0500/OT0501).",
                 "移动超出机床文件 [limits] 中的行程（FANUC OT0500/OT0501）。"),

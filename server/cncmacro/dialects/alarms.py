@@ -18,6 +18,7 @@ from .tables import AlarmDoc
 
 DECIMAL_POINT = 7
 IMPROPER_G_CODE = 10
+FEED_ZERO = 11  # PS0011: a cut with a feed of 0 (docs/semantics.md §10.4)
 ARC_RADIUS = 20  # PS0020: I, J, K whose end is off the start's circle (docs/semantics.md §8, "Arcs")
 PROGRAM_NOT_FOUND = 76
 SUBPROGRAM_NESTING = 77
@@ -79,6 +80,7 @@ ALARMS: dict[int, AlarmDoc] = {
     for a in (
         AlarmDoc(DECIMAL_POINT, "illegal use of decimal point", "小数点使用不当"),
         AlarmDoc(IMPROPER_G_CODE, "improper G code", "G代码不当"),
+        AlarmDoc(FEED_ZERO, "feed zero (command)", "进给速度为零（指令）"),
         AlarmDoc(ARC_RADIUS, "over tolerance of radius", "圆弧半径超差"),
         AlarmDoc(PROGRAM_NOT_FOUND, "program not found", "未找到程序"),
         AlarmDoc(DUPLICATE_PROGRAM, "program number already in use", "程序号已被使用"),

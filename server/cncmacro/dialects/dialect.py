@@ -44,6 +44,10 @@ GSK_LATHE_OFFSETS = LatheOffsets(
 )
 
 
+# the key of ``Dialect.no_point_words`` for the letters refused a decimal point in every block
+ANY_BLOCK = -1.0
+
+
 @dataclass(frozen=True)
 class Dialect:
     """Everything that differs between controls. Field names say what each switch decides."""
@@ -147,9 +151,18 @@ class Dialect:
     # known: a G code outside the table and the machine's call codes is alarm 010, a decimal point
     # in an M code alarm 007; without this switch both are warnings and a run goes on
     word_format_alarms: bool = False
+    # §8 the letters the control takes without a decimal point, by the G code of the block they are
+    # in (``ANY_BLOCK``: in every block): ``T0101.``, ``G04 P1.5`` (P in ms), a lathe cycle's P and Q
+    # in least increments or sequence numbers. A literal written with one is a warning that says
+    # how the run reads it (machine/words.py ``point_refused``)
+    no_point_words: dict[float, str] = field(default_factory=dict)
     # §8 "Arcs": I, J, K whose end point is off the start's circle by more than the tolerance is
     # alarm PS0020 (FANUC's list); without this switch the run notes it and goes on
     arc_radius_alarm: bool = False
+    # §10.4 the parameter whose feed a control cuts at after power-on when no program gave F
+    # (English, Chinese: GSK980TDi §3.26, state parameter No.030); None where the feed is 0 then
+    # and a cut alarms (FANUC PS0011 "feed zero (command)"): planner/missing_feed.py says which
+    power_on_feed: tuple[str, str] | None = None
     # "Cutter radius compensation": a path whose offset reverses a block or finds no corner, and a
     # plane change in G41/G42, are FANUC's alarms PS0041, PS0033 and PS0037; without this switch
     # the run notes them and goes on (a start-up or cancel on an arc, PS0034, is an alarm on every mill)

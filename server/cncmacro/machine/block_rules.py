@@ -40,6 +40,7 @@ from .words import (
     if_block_refused,
     m_decimal_point,
     missing_then,
+    point_refused,
     unknown_g_code,
 )
 
@@ -303,6 +304,13 @@ def _refused_words(
             point = m_decimal_point(w, dialect)
             if point is not None:
                 out.append(BlockProblem(M_DECIMAL_POINT, DECIMAL_POINT, point, point, w.start, w.end, stops))
+    if dialect.no_point_words:  # T0101., G04 P1.5, G74 Q5.: read as written, said as a warning
+        gs = tuple(v for w in words if w.letter == "G" and (v := _raw_g(w)) is not None)
+        letters = frozenset(w.letter for w in words)
+        for w in words:
+            point = point_refused(w, gs, letters, dialect)
+            if point is not None:
+                out.append(BlockProblem(M_DECIMAL_POINT, DECIMAL_POINT, point, point, w.start, w.end, False))
 
 
 def first_alarm(problems: list[BlockProblem]) -> BlockProblem | None:

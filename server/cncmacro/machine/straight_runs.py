@@ -26,6 +26,7 @@ from ..planner.arcs import ARC_MODES
 from ..planner.cutter_stage import StraightCuts
 from ..planner.cycle_time import INCH, SPEED_CLAMP
 from ..planner.machine_limits import Bounds, leaves_travel, outside, program_bounds
+from ..planner.missing_feed import missing_feed
 from ..planner.moves import Move
 from ..planner.plain_words import NOT_PLAIN, PLAIN_ARC_LETTERS, PLAIN_F, PLAIN_G, PLAIN_INCREMENTAL, PLAIN_S
 from ..planner.planner import FEED_HINT_GIVEN
@@ -198,6 +199,12 @@ def run_straight(
             if (feed_hint and moved and line_mode != 0.0 and (others is not None or not per_rev)
                     and 0.0 < line_f < 1.0 and FEED_HINT_GIVEN not in codes):  # fmt: skip
                 break  # a per-minute feed below 1: the compiled path looks at it (``feed_per_minute_hint``)
+            if moved and line_mode != 0.0 and (line_f <= 0.0 or rate is None or rate <= 0.0 or others is not None
+                                                or speed is not None or line_mode in threads) and missing_feed(
+                p, line_f, others is not None or per_rev or line_mode in threads,
+                (codes.get("S") or 0.0) if speed is None else speed,
+            ):  # fmt: skip
+                break  # no feed, or per revolution at S0: the compiled path says so (planner/missing_feed.py)
             if bounds is not None and moved:
                 if others is None and inc is None and arc is None:  # the common line, checked here
                     out = False

@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING
 from ..bilingual import Detail, detail
 from ..dialects import get_dialect
 from ..dialects.alarms import DECIMAL_POINT, FORMAT, IMPROPER_G_CODE
+from ..dialects.dialect import ANY_BLOCK
 from ..planner.modal_groups import extra_offset_codes
 from ..syntax.nodes import LOGICAL_SYMBOLS, Number, Word
 from .word_sets import WordSet
@@ -95,6 +96,48 @@ def m_decimal_point(word: Word, dialect: Dialect) -> Detail | None:
     return detail(
         f"M{text}: an M code takes no decimal point ({alarm}); write M{whole}",
         f"M{text}：M代码只能写整数（{alarm.zh}）；请写作 M{whole}",
+    )
+
+
+_SEQUENCE_CYCLES = (70.0, 71.0, 72.0, 73.0)  # their P and Q name the shape's first and last N
+_END_POINT = frozenset("XZUW")  # a G74-G76 block with one of these is the second (lathe_cycles.py)
+
+
+def point_refused(word: Word, gs: tuple[float, ...], letters: frozenset[str], dialect: Dialect) -> Detail | None:
+    """What to say of a literal written with a decimal point in an address the control takes
+    without one (``Dialect.no_point_words``; ``gs`` the block's G codes, ``letters`` its letters),
+    or None: how the run reads it, since the manuals give no alarm for these (docs/semantics.md §8)."""
+    value = word.value
+    if value.__class__ is not Number or not value.has_point:
+        return None
+    letter, text, v = word.letter, value.text, value.value
+    table = dialect.no_point_words
+    code = next((g for g in gs if letter in table.get(g, "")), None)
+    if code is None and letter not in table.get(ANY_BLOCK, ""):
+        return None
+    whole = text.split(".")[0] or "0"
+    if code is None:  # T
+        reading = detail(f"T{round(v)}", f"T{round(v)}")
+        fix = detail(f"{letter}{whole}", f"{letter}{whole}")
+    elif code == 4.0:
+        reading = detail(f"{v:g} ms ({v / 1000:g} s)", f"{v:g} 毫秒（{v / 1000:g} 秒）")
+        fix = detail(f"P{v * 1000:g} or X{v:g} for {v:g} s", f"P{v * 1000:g} 或 X{v:g}（{v:g} 秒）")
+    elif code in _SEQUENCE_CYCLES or (code == 76.0 and letter == "P" and not letters & _END_POINT):
+        # a sequence number N, or G76's digits m r a
+        shown = f"{'N' if code in _SEQUENCE_CYCLES else letter}{round(v)}"
+        reading = detail(f"{shown}", f"{shown}")
+        fix = detail(f"{letter}{whole}", f"{letter}{whole}")
+    else:
+        mm = v * 0.001
+        reading = detail(f"{v:g} least input increments, {mm:g} mm", f"{v:g} 个最小输入增量，即 {mm:g} 毫米")
+        fix = detail(f"{letter}{v * 1000:g} for {v:g} mm", f"{letter}{v * 1000:g}（即 {v:g} 毫米）")
+    where = (
+        detail("T", "T") if code is None else detail(f"G{int(code):02d}'s {letter}", f"G{int(code):02d} 的 {letter}")
+    )
+    return detail(
+        f"{letter}{text}: {dialect.title} takes {where} without a decimal point; the run reads it as {reading}: "
+        f"write {fix}",
+        f"{letter}{text}：{dialect.title} 的 {where.zh} 不带小数点；运行时读作 {reading.zh}：请写作 {fix.zh}",
     )
 
 
@@ -190,7 +233,8 @@ def conditional_m99_refused(dialect: Dialect) -> Detail:
 
 def refused_words(dialect: Dialect, calls: Mapping[str, object]) -> tuple[WordSet, ...]:
     """The words the refusals look at (``word_sets.py``): a G code outside those
-    ``g_code_known`` knows, an M code written with a decimal point."""
+    ``g_code_known`` knows, an M code written with a decimal point, and the letters of
+    ``Dialect.no_point_words`` written with one."""
     known = set(known_g_codes(dialect.name)) | extra_offset_codes(dialect) | machine_g_codes(dialect)
     for code in calls:
         if code[:1] == "G" and code[1:]:
@@ -198,4 +242,6 @@ def refused_words(dialect: Dialect, calls: Mapping[str, object]) -> tuple[WordSe
                 known.add(float(code[1:]))
             except ValueError:
                 continue
-    return WordSet("G", outside=frozenset(known)), WordSet("M", point=True)
+    # the letters some block takes without a decimal point (``point_refused``)
+    no_point = sorted(set("".join(dialect.no_point_words.values())))
+    return WordSet("G", outside=frozenset(known)), WordSet("M", point=True), *(WordSet(x, point=True) for x in no_point)

@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 
 from .arcs import ARC_MODES
 from .cycle_time import INCH
+from .missing_feed import note_missing_feed
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -62,6 +63,8 @@ def record_passes(p: Planner, file: str, line: int, passes: Iterable[Pass], pass
                 continue
             if rate > 0.0 and length > 0.0:
                 seconds += length / rate * 60.0
+            elif rate <= 0.0:  # no feed, or per revolution at S0 (missing_feed.py)
+                note_missing_feed(p, feed, per_rev, p.codes.get("S") or 0.0, line)
         elif mode == 0.0:
             seconds += times.rapid_seconds(start, end, unit)
             rapid += times.distance(start, end)
@@ -71,7 +74,7 @@ def record_passes(p: Planner, file: str, line: int, passes: Iterable[Pass], pass
                 length = times.arc_length(mode, plane, start, end, centre)
             else:
                 length = times.distance(start, end)
-            seconds += p.feed_seconds(mode, length, feed, start, end, unit)
+            seconds += p.feed_seconds(mode, length, feed, start, end, unit, line=line)
         cut += length
         if hint:
             p.feed_per_minute_hint(mode, feed, line)

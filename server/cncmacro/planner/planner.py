@@ -41,6 +41,7 @@ from .drill_cycles import drill_block
 from .lathe_cycles import ShapeCall, ShapeReading
 from .lathe_drilling import lathe_drill_block
 from .machine_limits import leaves_travel, program_bounds, spindle_speed
+from .missing_feed import note_missing_feed
 from .modal_groups import extra_offset_codes, g_code_groups
 from .moves import TURNING, Leg, Move, ToolChange
 from .one_shot import one_shot
@@ -69,6 +70,8 @@ FEED_HINT_GIVEN = "G99-hint"
 
 class Planner:
     """The NC side of one simulated control (module docstring)."""
+
+    at_line: int = 0  # the line of the block being carried out (a cut with no feed is said there)
 
     def __init__(self, dialect: Dialect, settings: MachineSettings, host: PlannerHost) -> None:
         self.dialect = dialect
@@ -204,6 +207,7 @@ class Planner:
         """Carry out a ``PlainWords`` plan with its file and next line appended; returns whether
         the block counts as a move for a G66 call (``execute_nc``)."""
         modal_sets, code_sets, axes, inc, _, file, _ = plan
+        self.at_line = line
         if PENDING_ANGLE in self.codes and self.block_angle is None:  # the two-block form's second block
             del self.codes[PENDING_ANGLE], self.codes[PENDING_LINE]  # without its angle: no corner
         if self.cutter is not None and any(g == "plane" for g, _ in modal_sets):  # under compensation: the
@@ -278,6 +282,7 @@ class Planner:
         ``modal_call_codes``, one of those codes: the block's one-shot code, else the motion mode
         in force) and, for a lathe cycle that names a finishing shape (G70–G73 P Q), the shape the
         macro machine is to run (lathe_cycles.py)."""
+        self.at_line = line
         gs: list[float] = []
         axes: dict[int, float] = {}
         incremental: dict[int, float] = {}
@@ -672,7 +677,7 @@ class Planner:
                 length = times.distance(start, end)
                 if CYLINDER in modal:  # C's degrees on the cylinder's surface (virtual_planes.py)
                     length = surface_length(self, start, end, length)
-            seconds = self.feed_seconds(mode, length, feed, start, end, unit, lead_change)
+            seconds = self.feed_seconds(mode, length, feed, start, end, unit, lead_change, line)
             self.cut_length += length * unit
             if self.feed_hint and 0.0 < feed < 1.0:
                 self.feed_per_minute_hint(mode, feed, line)
@@ -718,18 +723,23 @@ class Planner:
         )  # fmt: skip
 
     def feed_seconds(self, mode: float, length: float, feed: float, start: Sequence[float], end: Sequence[float],
-                     unit: float, lead_change: float = 0.0) -> float:  # fmt: skip
+                     unit: float, lead_change: float = 0.0, line: int | None = None) -> float:  # fmt: skip
         """The seconds of a cutting move in ``mode`` from ``start`` to ``end``, ``length`` long, by
         the feed mode, spindle speed, G96 and G50 S clamp in force (``MoveTimes.feed_seconds``); a
-        negative F of a left-hand thread is its lead |F|."""
+        negative F of a left-hand thread is its lead |F|. A cut that cannot be timed (no feed, or per
+        revolution at S0) is noted on ``line``, the block's by default (missing_feed.py)."""
         modal = self.modal
-        per_rev = modal.get("feed")
+        feed_mode = modal.get("feed")
         codes = self.codes
         if feed < 0.0 and modal.get("motion") in self.dialect.lathe_cycles.left_hand:
             feed = -feed  # a left-hand thread of lead |F| (``LatheCycles.left_hand``)
-        return self.times.feed_seconds(mode, length, feed, per_rev == 95.0 or (per_rev == 99.0 and self.lathe),
-                                       codes.get("S") or 0.0, modal.get("spindle") == 96.0, codes.get(SPEED_CLAMP),
-                                       start, end, unit, lead_change)  # fmt: skip
+        per_rev = feed_mode == 95.0 or (feed_mode == 99.0 and self.lathe)
+        speed = codes.get("S") or 0.0
+        thread = mode in self.times.thread_modes
+        if feed <= 0.0 or ((per_rev or thread) and speed <= 0.0):
+            note_missing_feed(self, feed, per_rev or thread, speed, self.at_line if line is None else line, thread)
+        return self.times.feed_seconds(mode, length, feed, per_rev, speed, modal.get("spindle") == 96.0,
+                                       codes.get(SPEED_CLAMP), start, end, unit, lead_change)  # fmt: skip
 
     def cutting_rate(self, feed: float, start: Sequence[float], end: Sequence[float], unit: float) -> float:
         """The feed of a G01 from ``start`` to ``end`` in program units per minute, as

@@ -61,6 +61,7 @@ from ...machine.observer import RunObserver
 from ...machine.status import FINISHED, RunStatus
 from ...machine.tracking import same_state
 from ...planner.alarms import UNKNOWN_VALUE, MacroAlarm
+from ...planner.missing_feed import NO_FEED
 from ..codes import MACRO_ALARM, alarm_code
 from ..diagnostics import Diagnostic, Related, diagnostic
 from .endless_loops import SHARED, loop_certainty, waits_for_the_machine
@@ -679,10 +680,13 @@ def run_diagnostics(
             en, zh = in_language(note.message, False), in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, note.subject, en, zh, note.chain, None, False, line_text,
                                    locale, milder=note.subject in _MILDER_NOTES))  # fmt: skip
-        elif note.kind == "feed":  # a per-minute feed that looks per revolution (planner.py)
+        elif note.kind == "feed" or (note.kind == NO_FEED and not run.as_macro):
+            # a per-minute feed that looks per revolution (planner.py); a cut with no feed, or per
+            # revolution with no S (planner/missing_feed.py), but in a subprogram checked without
+            # its caller, which cuts at the feed and speed its caller gives
             en, zh = in_language(note.message, False), in_language(note.message, True)
-            out.append(_diagnostic(note.file, note.line, "feed-per-minute", en, zh, note.chain, None, False, line_text,
-                                   locale))  # fmt: skip
+            out.append(_diagnostic(note.file, note.line, "feed-per-minute" if note.kind == "feed" else NO_FEED, en,
+                                   zh, note.chain, None, False, line_text, locale))  # fmt: skip
     for read in run.state.vacant.values():
         spec1, spec2 = letters_for_local(read.number)
         letter = spec1 or spec2 or "?"

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from ..dialect import ANY_BLOCK
 from ..drill_cycles import FANUC_LATHE_DRILLING
 from ..fanuc_lathe_data import LATHE_OFFSETS
 from ..lathe_cycle_rules import FANUC_LATHE_RULES
@@ -40,6 +41,9 @@ PROFILE = replace(
     lathe_cycles=FANUC_LATHE_CYCLES,
     cycle_words=FANUC_LATHE_CYCLE_WORDS,
     cycle_rules=FANUC_LATHE_RULES,
+    # §8 letters without a decimal point: T; G04's P (ms); the P and Q of G70-G76 (sequence numbers,
+    # least input increments, G76's digits m r a)
+    no_point_words={ANY_BLOCK: "T", 4.0: "P", **dict.fromkeys((70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0), "PQ")},
     # typical of a small slant-bed lathe; a machine file gives the machine's own (parameter 1420)
     timing=Timing(
         rapid={"X": 12000.0, "Z": 15000.0, "C": 10800.0, "Y": 8000.0},

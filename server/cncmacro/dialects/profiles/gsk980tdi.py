@@ -8,7 +8,7 @@ bracketed program names and ``#9xxx`` indirection.
 from __future__ import annotations
 
 from ..alarms import ILLEGAL_LEAD, OFFSET_NUMBER, OVERTRAVEL_MINUS, OVERTRAVEL_PLUS
-from ..dialect import Dialect
+from ..dialect import ANY_BLOCK, Dialect
 from ..drill_cycles import GSK_LATHE_DRILLING
 from ..lathe_cycle_rules import GSK980TDI_RULES
 from ..lathe_cycle_words import GSK980TDI_CYCLE_WORDS
@@ -96,6 +96,11 @@ PROFILE = Dialect(
     modal_call_needs_distance=True,
     g65_cancels_modal_call=True,  # "G65 调用会自动取消 G66 模态调用" (§3.28.3.2 note 4)
     word_format_alarms=False,
+    # §8 letters without a decimal point: T; G04's P (ms); the P and Q of G70-G76 (sequence numbers,
+    # least input increments, G76's digits m r a)
+    no_point_words={ANY_BLOCK: "T", 4.0: "P", **dict.fromkeys((70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0), "PQ")},
+    # §3.26: "CNC上电时，进给速度为CNC状态参数№.030设定的值" (at power-on the feed is state parameter No.030's)
+    power_on_feed=("state parameter No.030", "状态参数№.030"),
     arc_radius_alarm=False,  # no alarm for it in the manuals at hand: a warning (docs/semantics.md §8, "Arcs")
     keyword_abbreviations=False,
     # #i = RAND[#j], #i = SRAND[#j，#k]: random numbers (§3.29.1)
