@@ -128,8 +128,8 @@ def point_refused(word: Word, gs: tuple[float, ...], letters: frozenset[str], di
         reading = detail(f"{shown}", f"{shown}")
         fix = detail(f"{letter}{whole}", f"{letter}{whole}")
     else:
-        mm = v * 0.001
-        reading = detail(f"{v:g} least input increments, {mm:g} mm", f"{v:g} 个最小输入增量，即 {mm:g} 毫米")
+        mm = f"{v * 0.001:.7f}".rstrip("0").rstrip(".")  # 0.00005, not 5e-05
+        reading = detail(f"{v:g} least input increments, {mm} mm", f"{v:g} 个最小输入增量，即 {mm} 毫米")
         fix = detail(f"{letter}{v * 1000:g} for {v:g} mm", f"{letter}{v * 1000:g}（即 {v:g} 毫米）")
     where = (
         detail("T", "T") if code is None else detail(f"G{int(code):02d}'s {letter}", f"G{int(code):02d} 的 {letter}")
