@@ -122,12 +122,14 @@ test('every pass of G71 is drawn from the moves sent, each naming its cycle; a G
   assert.equal(plot.moves.length, run.moves.length); // one drawn move per move sent
   const passes = run.moves.filter((m) => m.passOf === 'G71');
   assert.ok(passes.length > 10 && passes.every((m) => m.line === 11)); // the G71 P10 Q20 block
-  // the first pass: in to X41 (44 less 2 x 1.5) at rapid, dashed; the cut along Z solid
-  const first = plot.moves[run.moves.indexOf(passes[0])];
-  assert.deepEqual([passes[0].to.X, first.legs[0].dashed], [41, true]);
-  assert.deepEqual([passes[1].kind, plot.moves[run.moves.indexOf(passes[1])].legs[0].dashed], ['feed', false]);
+  // GSK980TDi §3.23.1: first at rapid from the start X44 Z2 to A', moved by the allowances U0.4 W0.1
+  // (X44.4 Z2.1); the first pass in to X41.4 (44.4 less 2 x 1.5) at rapid, dashed; the cut along Z solid
+  const dashed = (m) => plot.moves[run.moves.indexOf(m)].legs[0].dashed;
+  assert.deepEqual([passes[0].to.X, passes[0].to.Z, dashed(passes[0])], [44.4, 2.1, true]);
+  assert.deepEqual([passes[1].to.X, dashed(passes[1])], [41.4, true]);
+  assert.deepEqual([passes[2].kind, dashed(passes[2])], ['feed', false]);
   const title = view.toolpathHtml(pageOf(plot, run, geometry.viewFor(geometry.latheAxesOf(run))), 'n0nce');
-  assert.match(title, /shaft_g71\.nc:11  G01  Z2 → Z-59\.9  F0\.25  \(pass of G71\)/);
+  assert.match(title, /shaft_g71\.nc:11  G01  Z2\.1 → Z-59\.9  F0\.25  \(pass of G71\)/);
   const thread = run.moves.find((m) => m.kind === 'cycle');
   const drawn = plot.moves[run.moves.indexOf(thread)];
   assert.deepEqual(drawn.legs.map((l) => l.dashed), [true, false, true, true]); // in, the thread, out, back

@@ -186,17 +186,19 @@ describe('the toolpath of a paused run', () => {
     let path = await toolpath();
     assert.equal(path.line, 5);
     assert.equal(path.moves.length, 1); // G00 X40. Z2. of line 3
-    // From X40 with U2. (radius) per pass: cuts at X36, X32, then the shape's X30; each pass is
-    // in, cut, pulled back R1. (X+2 on the diameter, Z+1) and back to Z2: 3 x 4 moves = 12
-    assert.equal(path.current.length, 12);
+    // From X40 with U2. (radius) per pass: cuts at X36, X32, then the shape's X30 (GSK980TDi §3.23.1):
+    // each roughing pass is in at rapid, the cut, pulled back R1. at 45 degrees AT THE FEED (step 4:
+    // X+2 on the diameter, Z+1) and back to Z2 at rapid: 2 x 4 moves; the last is in to X30, the
+    // shape at the feed and one rapid from its end straight to the start X40 Z2 (step 8): 3 moves
+    assert.equal(path.current.length, 11);
     assert.ok(path.current.every((m) => m.line === 5 && m.pass_of === 'G71'));
-    assert.deepEqual(path.current.filter((m) => m.kind === 'feed').map((m) => m.to.X), [36, 32, 30]);
-    assert.deepEqual(path.current.filter((m) => m.kind === 'rapid').map((m) => m.to.X), [36, 38, 38, 32, 34, 34, 30, 40, 40]);
+    assert.deepEqual(path.current.filter((m) => m.kind === 'feed').map((m) => m.to.X), [36, 38, 32, 34, 30]);
+    assert.deepEqual(path.current.filter((m) => m.kind === 'rapid').map((m) => m.to.X), [36, 38, 32, 34, 30, 40]);
     assert.equal((await dc.top()).line, 5); // looking ahead ran nothing for good: still before the G71 block
     await continueTo();
     path = await toolpath();
     assert.equal(path.line, 8);
-    assert.equal(path.moves.length, 13);
+    assert.equal(path.moves.length, 12);
     // G70 runs the shape as written (N10 G00 X30., N20 G01 Z-20.) and goes back to the start X40 Z2
     assert.deepEqual(path.current.map((m) => [m.line, m.kind, m.to.X, m.to.Z]), [
       [6, 'rapid', 30, 2], [7, 'feed', 30, -20], [8, 'rapid', 40, 2],
