@@ -169,7 +169,12 @@ class Planner:
                 wcs = self.modal.get("wcs")
                 return float(self.extra_wcs) if self.extra_wcs and (wcs == 54.1 or wcs in self.extra_codes) else default
             return self.codes.get(param, default)
-        return position_value(self, param, index)
+        value = position_value(self, param, index)
+        # a position summed from offsets (machine 0 after G28 read back through the work offset and the
+        # tool's) carries the last bits of the sums: 8.9e-16 where the control reads 0, which made a
+        # shop's home check `IF [#5023 NE 0]` reach its alarm. Positions are whole increments on the
+        # control: rounded to 1e-9 of the unit, the noise goes and no increment is touched
+        return None if value is None else round(value, 9) + 0.0
 
     def snapshot(self) -> PlannerState:
         return PlannerState(
