@@ -71,6 +71,8 @@ def run_straight(
         return 0, pc
     if CYLINDER in p.modal:  # a cut on a cylinder: the general path takes C on its surface (virtual_planes.py)
         return 0, pc
+    if p.vector_before is not None:  # the tool vector changed: the general path times the machine's travel
+        return 0, pc  # (planner/offset_travel.py)
     g_words = p.plain.g_words()
     lathe = p.lathe
     drills = p.drills  # a canned drilling cycle in force: the compiled path drills its holes

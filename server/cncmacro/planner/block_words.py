@@ -17,6 +17,7 @@ from .alarms import MacroAlarm
 from .cutter_stage import cutter_code
 from .machine_limits import offset_number, spindle_speed, tool_number
 from .moves import ToolChange
+from .offset_travel import keep_machine_position, vector_changing, work_offsets
 from .spindle_modes import spindle_mode
 from .tool_offsets import apply_length_offset, same_station, select_tool
 from .turning_cycles import forget_single_cycle
@@ -30,6 +31,7 @@ if TYPE_CHECKING:
 def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -> float | None:
     """Set the modal groups of the block's G codes (on ``line``); returns its one-shot code, if any."""
     one_shot_code: float | None = None
+    before: list[float] | None = None
     groups = [p.g_groups.get(g) for g in gs]
     if "wcs" in groups and p.dialect.coordinate_setting_voids_wcs and p.dialect.coordinate_setting_code in gs:
         kept = [(g, group) for g, group in zip(gs, groups, strict=True) if group != "wcs"]  # G55 G50: G50 alone
@@ -48,6 +50,8 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
                 cutter_code(p, group, g, line)  # cutter_stage.py; not in polar or cylindrical interpolation
             if group == "wcs" and g == 54.0 and "P" in other and p.dialect.extra_offset_by_g54_p:
                 g = 54.1  # G54 Pn is G54.1 Pn (FANUC)
+            if group == "wcs" and before is None:
+                before = work_offsets(p)  # the tool stays on the machine (offset_travel.py)
             p.modal[group] = g
             if group == "motion" and g not in p.dialect.single_cycles:
                 forget_single_cycle(p)  # a single cycle's modal words (turning_cycles.py)
@@ -57,6 +61,8 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
                 p.extra_wcs = int(other.get("P", 1))
             elif group == "wcs" and g in p.extra_codes:
                 p.extra_wcs = _extra_offset(p, g, other)
+    if before is not None:
+        keep_machine_position(p, before)
     return one_shot_code
 
 
@@ -79,7 +85,9 @@ def set_codes(p: Planner, other: dict[str, float], file: str, line: int) -> None
     if "H" in other and p.modal.get("length") in (43.0, 44.0):
         apply_length_offset(p, other["H"])
     elif not p.lathe and p.modal.get("length") == 49.0 and "Z" in p.axis_index:
-        p.tool_vector[p.axis_index["Z"]] = 0.0
+        if p.tool_vector[p.axis_index["Z"]]:
+            vector_changing(p)
+            p.tool_vector[p.axis_index["Z"]] = 0.0
 
 
 def machine_limits(p: Planner, other: dict[str, float], file: str, line: int) -> None:

@@ -16,6 +16,7 @@ from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
 from .lathe_cycles import ShapeCall, lathe_cycle
 from .machine_limits import g53_bounds, leaves_travel
+from .offset_travel import keep_machine_position, work_offsets
 from .positions import WORK_BASE, work_offset
 from .probing import skip_block
 from .virtual_planes import switch_virtual_plane
@@ -134,10 +135,12 @@ def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[s
     shift = l_value is None and number == 0 and p.dialect.lathe and p.dialect.lathe_offsets.p0_work_shift
     if l_value in (2.0, 20.0) or shift:  # a lathe's G10 P0: the workpiece shift, the external offset
         base = _work_offset_base(p, 2.0, 0) if shift else _work_offset_base(p, l_value or 2.0, number)
+        before = work_offsets(p)  # the offset in force may be the one written: the tool stays (offset_travel.py)
         for i, v in axes.items():
             host.store(base + i, v if absolute else (host.stored(base + i) or 0.0) + v)
         for i, v in inc.items():
             host.store(base + i, (host.stored(base + i) or 0.0) + v)
+        keep_machine_position(p, before)
         return
     if p.dialect.lathe:
         geometry = number >= 10000

@@ -44,6 +44,7 @@ from .machine_limits import leaves_travel, program_bounds, spindle_speed
 from .missing_feed import note_missing_feed
 from .modal_groups import extra_offset_codes, g_code_groups
 from .moves import TURNING, Leg, Move, ToolChange
+from .offset_travel import travel_start
 from .one_shot import one_shot
 from .plain_words import VALUE_GROUPS, PlainRun, shared_plain_words
 from .positions import position_value
@@ -72,6 +73,8 @@ class Planner:
     """The NC side of one simulated control (module docstring)."""
 
     at_line: int = 0  # the line of the block being carried out (a cut with no feed is said there)
+    # the tool vector before a change the machine has not travelled yet (offset_travel.py), else None
+    vector_before: list[float] | None = None
 
     def __init__(self, dialect: Dialect, settings: MachineSettings, host: PlannerHost) -> None:
         self.dialect = dialect
@@ -184,6 +187,7 @@ class Planner:
             len(self.tool_changes), self.skip_state, len(self.probes),
             {k: dict(v) for k, v in self.cycle_params.items()}, None if self.shape is None else self.shape.copy(),
             None if self.cutter is None else self.cutter.copy(),
+            None if self.vector_before is None else list(self.vector_before),
         )  # fmt: skip
 
     def restore(self, state: PlannerState) -> None:
@@ -205,6 +209,7 @@ class Planner:
         self.cycle_params = {k: dict(v) for k, v in state.cycle_params.items()}
         self.shape = None if state.shape is None else state.shape.copy()
         self.cutter = None if state.cutter is None else state.cutter.copy()
+        self.vector_before = None if state.vector_before is None else list(state.vector_before)
         restore_pending(self)
 
     # ---------------------------------------------------------------- plain motion
@@ -670,16 +675,17 @@ class Planner:
         compensated = None
         if self.cutter is not None and legs is None:  # cutter radius compensation (cutter_stage.py)
             compensated = cutter_move(self, line, mode, plane, start, end, centre, feed, unit)
+        travelled = start if self.vector_before is None else travel_start(self, start)  # offset_travel.py
         if compensated is not None:
             tool_path, seconds = compensated
         elif mode == 0.0:
-            seconds = times.rapid_seconds(start, end, unit)
-            self.rapid_length += times.distance(start, end) * unit
+            seconds = times.rapid_seconds(travelled, end, unit)
+            self.rapid_length += times.distance(travelled, end) * unit
         else:
             if centre is not None and mode in ARC_MODES:
                 length = times.arc_length(mode, plane, start, end, centre)
             else:
-                length = times.distance(start, end)
+                length = times.distance(travelled, end)
                 if CYLINDER in modal:  # C's degrees on the cylinder's surface (virtual_planes.py)
                     length = surface_length(self, start, end, length)
             seconds = self.feed_seconds(mode, length, feed, start, end, unit, lead_change, line)

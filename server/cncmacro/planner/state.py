@@ -24,8 +24,9 @@ class PlannerState:
     modal groups, codes, positions (program, coordinate shift, skip, tool vector), the extra
     work offset, a drilling cycle's initial level, the clock, the cut and rapid path, and how
     many moves, tool changes and probes had been recorded, and a lathe's cycle parameters and
-    the shape cycle under way (lathe_cycles.py), and cutter radius compensation's stage
-    (cutter_stage.py)."""
+    the shape cycle under way (lathe_cycles.py), cutter radius compensation's stage
+    (cutter_stage.py), and the tool vector before a change the machine has not travelled yet
+    (offset_travel.py)."""
 
     modal: dict[str, float]
     codes: dict[str, float | None]
@@ -41,3 +42,4 @@ class PlannerState:
     cycle_params: dict[float, dict[str, float]]
     shape: ShapeReading | None
     cutter: CutterStage | None = None
+    vector_before: list[float] | None = None  # a tool vector change not yet travelled (offset_travel.py)

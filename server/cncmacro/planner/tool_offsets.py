@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from .offset_travel import vector_changing
+
 if TYPE_CHECKING:
     from .planner import Planner
 
@@ -59,4 +61,6 @@ def apply_length_offset(p: Planner, h: float) -> None:
     if p.modal.get("length") == 44.0:
         value = -value
     if "Z" in p.axis_index:
+        if p.tool_vector[p.axis_index["Z"]] != value:
+            vector_changing(p)
         p.tool_vector[p.axis_index["Z"]] = value
