@@ -33,8 +33,7 @@ def test_a_recess_grooving_cycle_moves_no_axis_and_leaves_the_tool_at_its_start(
     assert (moves[1]["from"]["X"], moves[1]["from"]["Z"]) == (start["X"], start["Z"])
     assert all(mv["to"].get(axis, 0.0) == 0.0 for mv in moves for axis in ("C", "B"))
     assert result["messages"] == [
-        f"{code} is not simulated: the cycle's passes are not drawn or timed, and the tool stays at its start "
-        "point, where the control's cycle ends"
+        f"{code} is not simulated: the cycle's passes are not drawn or timed, and the tool is left at its start point"
     ]
 
 

@@ -133,6 +133,10 @@ class Dialect:
     # which two lines, or a line and the named axis's, count as parallel: an alarm); None where the
     # angle is only the corner word ``,A`` (FANUC: parallel lines go straight to the end)
     drawing_angle: tuple[str, float, float] | None = None
+    # §8 the cycles the control has whose passes are not simulated (planner/one_shot.py): every word
+    # of their blocks is the cycle's (none moves an axis), the tool is left at its start point, and
+    # the run notes once a block that the cycle is not simulated (the `not-simulated` information)
+    unsimulated_codes: frozenset[float] = frozenset()
     # §8 motion codes whose blocks carry values under letters that may name an axis elsewhere
     # (GSK980TDi's ellipse G6.2/G6.3: A, B half axes and Q; parabola G7.2/G7.3: P, Q): motion code
     # -> those letters, which are never an axis word in that mode

@@ -99,11 +99,7 @@ class LatheCycles:
       offset shape's first point (Bn) in the mode of the shape's first block, the last pass
       ending with a rapid to A (GSK §3.23.3 ①–⑤); else each pass goes from A to Bn at rapid and
       back to A at rapid;
-    - ``pattern_min_passes``: the fewest passes G73 cuts (GSK §3.23.3: a count of 1 is cut in 2);
-    - ``unsimulated``: the cycles the control has whose passes are not simulated: every word of
-      their blocks is the cycle's (none is a move of X, Z or another axis) and the tool ends
-      where it started, as the manual says the cycle ends (GSK980TDi G74.1/G75.1, §3.23.7/§3.23.8
-      step ⑩: "刀具快速返回凹槽切削前起点处"); the run notes that it is not simulated.
+    - ``pattern_min_passes``: the fewest passes G73 cuts (GSK §3.23.3: a count of 1 is cut in 2).
     """
 
     thread_codes: frozenset[float] = frozenset()
@@ -119,7 +115,6 @@ class LatheCycles:
     roughing_retract_at_feed: bool = False
     pattern_through_offset_starts: bool = False
     pattern_min_passes: int = 1
-    unsimulated: frozenset[float] = frozenset()
 
 
 FANUC_LATHE_CYCLES = LatheCycles(frozenset({32.0, 34.0}), {34.0: "K"})
@@ -135,5 +130,4 @@ GSK_LATHE_CYCLES = LatheCycles(
     roughing_retract_at_feed=True,
     pattern_through_offset_starts=True,
     pattern_min_passes=2,
-    unsimulated=frozenset({74.1, 75.1}),  # the recess grooving cycles (§3.23.7, §3.23.8)
 )

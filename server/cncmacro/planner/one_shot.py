@@ -38,12 +38,12 @@ def one_shot(
     if g == 10.0:
         g10(p, axes, inc, other)
         return False, None
-    if g in p.dialect.lathe_cycles.unsimulated:  # its words are the cycle's; the tool ends where it began
-        if axes or inc:  # the block that describes the groove (its X, Z), not the one of its R
+    if g in p.dialect.unsimulated_codes:  # its words are the cycle's; the tool is left where it began
+        if axes or inc or not other.keys() <= {"R"}:  # not the GSK's first block, its R alone
             p.host.note("simulation", detail(
-                f"G{g:g} is not simulated: the cycle's passes are not drawn or timed, and the tool stays at its "
-                "start point, where the control's cycle ends",
-                f"G{g:g} 未模拟：不绘制也不计时该循环的走刀，刀具停在其起点，即控制器上该循环结束的位置"),
+                f"G{g:g} is not simulated: the cycle's passes are not drawn or timed, and the tool is left at its "
+                "start point",
+                f"G{g:g} 未模拟：不绘制也不计时该循环的走刀，刀具留在其起点"),
                 line, "not-simulated")  # fmt: skip
         return False, None
     if g in (28.0, 30.0):  # through the intermediate point to the reference point

@@ -66,6 +66,9 @@ PROFILE = Dialect(
     three_point_arcs={5.0: False, 5.1: True},
     # §3.13: "Q_ 角度是直线与Z轴的夹角 …（单位：0.001°）"; notes 3-5: within ±1° of parallel, an alarm
     drawing_angle=("Q", 0.001, 1.0),
+    # the recess grooving cycles G74.1/G75.1 (§3.23.7, §3.23.8), whose step ⑩ ends where they began:
+    # "刀具快速返回凹槽切削前起点处"
+    unsimulated_codes=frozenset({74.1, 75.1}),
     # ellipse A, B (half axes), Q (angle); parabola P, Q (§3.6, §3.7)
     motion_value_letters={
         6.2: frozenset("ABQ"),

@@ -954,6 +954,9 @@ PROFILE = FANUC_0I.configured(
     common_ranges=(CommonRange(100, 199, True), CommonRange(500, 999, True), CommonRange(10000, 10999, True)),
     programs_on_control=((9000, 9999),),
     local_subprogram_code=97.0,
+    # circular pocket G12/G13, engraving G47, the bolt patterns G70/G71/G72 (a hole of the drilling
+    # cycle in force at each point), general pocket G150 ([H1]): known, not simulated
+    unsimulated_codes=frozenset({12.0, 13.0, 47.0, 70.0, 71.0, 72.0, 150.0}),
     # G101 X_ Y_: the mirror image's centre on the axes given, G100 cancels (docs/semantics.md §8)
     axis_value_codes=frozenset((7.1, 107.0, 100.0, 101.0)),
     documented_alarms=frozenset(),  # no Haas source numbers FANUC's alarms or #3000=n: none shown

@@ -44,6 +44,7 @@ PROFILE = replace(
     lathe_offsets=LATHE_OFFSETS,
     axes=AXES,
     modal_defaults={"plane": 18.0, "feed": 99.0},
+    unsimulated_codes=frozenset(),  # the mill's G12/G13, G47, G70-G72, G150 are not the lathe's codes
     coordinate_setting_code=50.0,
     cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0}),
     drill_cycles={},
