@@ -92,7 +92,7 @@ def test_an_arc_takes_the_time_of_its_length_not_of_its_chord(tmp_path: Path) ->
         ("fanuc-0i", "MAIN.nc", ["G04 P1500", "G04 X2."], 3.5),
         # GSK980TDi: P milliseconds, X and U seconds: 0.25 + 0.5 + 1 = 1.75 s
         ("gsk980tdi", "O0005.CNC", ["G04 P250", "G04 U0.5", "G04 X1."], 1.75),
-        # Haas: P counts seconds (written with a point): 2 s
+        # Haas: P written with a decimal point counts seconds: 2 s
         ("haas", "MAIN.nc", ["G04 P2."], 2.0),
     ],
 )

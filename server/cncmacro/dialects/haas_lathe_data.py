@@ -153,7 +153,12 @@ G_CODES: tuple[CodeDoc, ...] = (
         "Circular interpolation counterclockwise (R or I K; I is a radius)",
         "逆时针圆弧插补（R或I K；I为半径值）",
     ),
-    _g("G04", "", "Dwell: G04 P_ (seconds with a decimal point)", "暂停：G04 P_（带小数点时单位为秒）"),
+    _g(
+        "G04",
+        "",
+        "Dwell: G04 P_ (seconds with a decimal point, milliseconds without)",
+        "暂停：G04 P_（带小数点时单位为秒，不带时为毫秒）",
+    ),
     _g(
         "G10",
         "",

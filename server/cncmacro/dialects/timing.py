@@ -4,7 +4,8 @@ A ``Timing`` is one machine's: the rapid traverse rate of each axis (mm/min, deg
 rotary axis; FANUC parameter 1420, the machine builder's data sheet elsewhere), the seconds a
 tool change takes and the code that makes it (``M6`` on a mill, where T only selects the next
 tool; ``T`` on a lathe, whose turret indexes on the T word), the seconds other M codes take
-(a coolant valve, a pallet change), the unit of a dwell's P, the spindle's top speed (the
+(a coolant valve, a pallet change), the unit of a dwell's P (and whether a P written with a
+decimal point counts seconds instead), the spindle's top speed (the
 limit of G96 constant surface speed) and the peck drilling cycles' retract distances. Each
 profile module carries typical values; a machine file's ``[timing]`` table gives the machine's
 own (docs/machine-file.md, ``Timing.changed``). How the interpreter uses them is
@@ -46,6 +47,10 @@ class Timing:
     m_code_seconds: dict[float, float] = field(default_factory=dict)
     # seconds per unit of G04 P: 0.001 where P counts milliseconds, 1.0 where it counts seconds
     dwell_p_unit: float = 0.001
+    # a dwell's P (G04's, a drilling cycle's) written with a decimal point counts seconds, one
+    # without counts ``dwell_p_unit`` (Haas: "G04 P10. is a dwell of 10 seconds; G04 P10 is 10
+    # milliseconds"); read from the word's text where the block is compiled (machine/blocks.py)
+    dwell_p_point_seconds: bool = False
     # the spindle's top speed (rev/min): G96 never turns the spindle faster
     max_spindle_speed: float = 4000.0
     # mm: how far G73 retracts after each peck (FANUC parameter 5114) and how far above the last

@@ -621,6 +621,31 @@ class CompiledFile:
         round_for = self.round_for
         return False, lambda m: round_for(letter, getter(m), literal=False, point=True)
 
+    def dwell_p_value(self, w: Word) -> tuple[bool, Any]:
+        """``word_value`` of a dwell's P (G04's, a drilling cycle's). Where a P written with a
+        decimal point counts seconds (``Timing.dwell_p_point_seconds``, Haas: "G04 P10. is a dwell
+        of 10 seconds; G04 P10 is 10 milliseconds", docs/semantics.md §9) such a P, and one from a
+        variable or an expression (which has no decimal point to read: taken as seconds), is
+        given in P's unit (``Timing.dwell_p_unit``) and rounded as P is; a literal without a
+        point is P's unit as written."""
+        timing = self.machine.dialect.timing
+        value = w.value
+        if not timing.dwell_p_point_seconds or value is None:
+            return self.word_value(w)
+        if value.__class__ is Number and not value.has_point:
+            return self.word_value(w)
+        per_second = 1.0 / timing.dwell_p_unit
+        round_for = self.round_for
+
+        def in_units(v: float | None) -> float | None:
+            return round_for("P", None if v is None else v * per_second, literal=False, point=True)
+
+        const, v = self.addresses.constant(value)
+        if const:
+            return True, in_units(v)
+        getter = self.addresses.value(value)
+        return False, lambda m: in_units(getter(m))
+
     def round_for(self, letter: str, v: float | None, literal: bool, point: bool) -> float | None:
         if v is None:
             return 0.0 if self.machine.dialect.vacant_address_is_zero else None

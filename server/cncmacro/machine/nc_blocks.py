@@ -60,7 +60,7 @@ def nc_block_of(cf: CompiledFile, block: Block) -> Compiled:
     its words is decided here, once, so that a line of the same literal words elsewhere in the
     file can take it (``CompiledFile.plain_words``)."""
     words = list(block.words)
-    read = _WordValues(cf)  # each word's value, read once for all below
+    read = _WordValues(cf, _dwell_block(cf, words))  # each word's value, read once for all below
     plan = _plain_plan(cf, words, read)
     if plan is not None:
         return partial(_plan_runner, cf, plan)
@@ -90,17 +90,37 @@ def nc_block_of(cf: CompiledFile, block: Block) -> Compiled:
 
 class _WordValues:
     """``CompiledFile.word_value`` of the words of one block being compiled, each read once
-    however many of the steps below ask for it."""
+    however many of the steps below ask for it; a dwell block's P by ``dwell_p_value``."""
 
-    def __init__(self, cf: CompiledFile) -> None:
+    def __init__(self, cf: CompiledFile, dwell: bool = False) -> None:
         self._cf = cf
+        self._dwell = dwell
         self._read: dict[int, tuple[bool, Any]] = {}
 
     def __call__(self, w: Word) -> tuple[bool, Any]:
         got = self._read.get(id(w))
         if got is None:
-            got = self._read[id(w)] = self._cf.word_value(w)
+            cf = self._cf
+            got = cf.dwell_p_value(w) if self._dwell and w.letter == "P" else cf.word_value(w)
+            self._read[id(w)] = got
         return got
+
+
+def _dwell_block(cf: CompiledFile, words: list[Word]) -> bool:
+    """Whether the block's P is a dwell whose unit its decimal point decides
+    (``Timing.dwell_p_point_seconds``): the block names G04 or a drilling cycle (a code of the
+    canned group but G80, or a lathe's drilling cycle). A P given in a later block of the
+    cycle, without its code, is read in P's unit as written."""
+    dialect = cf.machine.dialect
+    if not dialect.timing.dwell_p_point_seconds or not any(w.letter == "P" for w in words):
+        return False
+    groups = cf.machine.planner.g_groups
+    lathe_drills = dialect.lathe_drilling.cycles if dialect.lathe_drilling is not None else {}
+    for w in words:
+        g = _literal_g(w)
+        if g is not None and (g == 4.0 or (groups.get(g) == "canned" and g != 80.0) or g in lathe_drills):
+            return True
+    return False
 
 
 def _known_value(read: _WordValues) -> Callable[[Word], float | None]:

@@ -29,8 +29,9 @@ without acceleration a corner costs no time; feed and rapid overrides at 100 %.
   (``planner/drill_cycles.py`` lists them): the positioning as a rapid, then each rapid and
   feed along the drilling axis and each shift across it (``cycle_seconds``), plus the dwell P.
   Its feed steps count as cut, its rapids as rapid path.
-- G04 dwells for X or U seconds, or P times ``Timing.dwell_p_unit`` (milliseconds on FANUC and
-  GSK, seconds on Haas).
+- G04 dwells for X or U seconds, or P times ``Timing.dwell_p_unit`` (milliseconds on FANUC, GSK
+  and Haas; a Haas P written with a decimal point counts seconds, which the machine turns into
+  P's unit where it compiles the block: ``Timing.dwell_p_point_seconds``).
 - A tool change (``Timing.tool_change_code``: M06 on a mill, a lathe's T word) takes
   ``Timing.tool_change_seconds``; any other M code ``Timing.m_code_seconds`` for it, if listed.
 

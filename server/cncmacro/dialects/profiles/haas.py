@@ -620,7 +620,12 @@ G_CODES: tuple[CodeDoc, ...] = (
         "Circular interpolation counterclockwise (R or I J K), helical with a third axis",
         "逆时针圆弧插补（R或I J K），带第三轴时为螺旋线插补",
     ),
-    _g("G04", "", "Dwell: G04 P_ (seconds with a decimal point)", "暂停：G04 P_（带小数点时单位为秒）"),
+    _g(
+        "G04",
+        "",
+        "Dwell: G04 P_ (seconds with a decimal point, milliseconds without)",
+        "暂停：G04 P_（带小数点时单位为秒，不带时为毫秒）",
+    ),
     _g("G09", "", "Exact stop for this block", "本程序段准确停止"),
     _g(
         "G10",
@@ -974,14 +979,15 @@ PROFILE = FANUC_0I.configured(
     drill_cycles=HAAS_DRILL_CYCLES,  # its G77 back bore, G87 bore in and manual retract
     cycle_words={},  # Haas repeats with L and reads more letters in G73 and G83: not described yet
     cycle_repeat_letter="L",  # L repeats a canned cycle (K is a peck's minimum on G73/G83)
-    # rapids of 1,000 in/min on X, Y, Z (a VF-2's), a typical tool change; G04 P counts seconds
-    # (written with a decimal point, as the G04 row says)
+    # rapids of 1,000 in/min on X, Y, Z (a VF-2's), a typical tool change; a dwell's P counts
+    # seconds written with a decimal point and milliseconds without (as the G04 row says)
     timing=Timing(
         rapid={"X": 25400.0, "Y": 25400.0, "Z": 25400.0},
         rapid_default=10800.0,
         tool_change_seconds=2.8,
         tool_change_code="M6",
-        dwell_p_unit=1.0,
+        dwell_p_unit=0.001,
+        dwell_p_point_seconds=True,
         max_spindle_speed=8100.0,
     ),
 )

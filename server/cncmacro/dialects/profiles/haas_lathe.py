@@ -62,7 +62,8 @@ PROFILE = replace(
         rapid_default=10800.0,
         tool_change_seconds=0.5,
         tool_change_code="T",
-        dwell_p_unit=1.0,
+        dwell_p_unit=0.001,
+        dwell_p_point_seconds=True,
         max_spindle_speed=4000.0,
     ),
 )
