@@ -6,8 +6,8 @@ sequence number read, as the labelled block's runner does).
 Compiling each into a runner and then calling it costs more than reading it: most run once.
 ``run_straight`` reads such a line's words and applies them in one loop over the lines, with
 the machine's modal state, position and clock held in locals, until a line that is not
-plain motion, a line the general path must decide (a canned cycle in force, a G code of a
-group with side effects, an address with its own rounding), or the block budget. It does
+plain motion, a line the general path must decide (a canned cycle in force, G93 inverse time
+feed, a G code of a group with side effects, an address with its own rounding), or the block budget. It does
 exactly what ``PlainWords.text_plan`` and ``Planner.run_plain`` (planner/) do for one line (docs/semantics.md
 §8), an arc's centre from its R, I, J, K words included, and a line it declines is left
 untouched for the compiled path: so is an arc the control finds fault with (planner/arc_checks.py).
@@ -24,7 +24,7 @@ from ..planner.alarms import MacroAlarm
 from ..planner.angled_moves import PENDING_ANGLE
 from ..planner.arcs import ARC_MODES
 from ..planner.cutter_stage import StraightCuts
-from ..planner.cycle_time import INCH, SPEED_CLAMP
+from ..planner.cycle_time import INCH, INVERSE_TIME, SPEED_CLAMP
 from ..planner.machine_limits import Bounds, leaves_travel, outside, program_bounds
 from ..planner.missing_feed import missing_feed
 from ..planner.moves import Move
@@ -73,6 +73,8 @@ def run_straight(
         return 0, pc
     if p.vector_before is not None:  # the tool vector changed: the general path times the machine's travel
         return 0, pc  # (planner/offset_travel.py)
+    if p.modal.get("feed") == INVERSE_TIME:  # G93: each cut's time is its block's F (missing_feed.py)
+        return 0, pc
     g_words = p.plain.g_words()
     lathe = p.lathe
     drills = p.drills  # a canned drilling cycle in force: the compiled path drills its holes
@@ -190,6 +192,8 @@ def run_straight(
             else:
                 arc[PLAIN_ARC_LETTERS[kind]] = float(word[1:])
         else:
+            if others is not None and ("feed", INVERSE_TIME) in others:
+                break  # G93 from here on: the compiled path times each cut by its block's F
             if cutter is not None and others is not None:
                 break  # a modal code under compensation (a plane change is an alarm): the compiled path
             if arc is not None and not moved and (mode if new_mode is None else new_mode) in ARC_MODES:

@@ -22,6 +22,9 @@ without acceleration a corner costs no time; feed and rapid overrides at 100 %.
   (``per_rev_minutes``). A lathe's thread (``LatheCycles.thread_codes``: G32, G34) moves its
   long axis by the lead F per revolution whatever G98/G99 says; G34's lead grows by its change
   per revolution. A feed move without a feed (F0, or per revolution with S0) takes no time.
+- Under G93 (inverse time feed, where the profile's table has it in the feed group) a cut (G01,
+  G02, G03) takes 1/F minutes whatever its length (``inverse_time_seconds``); F belongs in every
+  such block, and one without is timed at the last F and noted (missing_feed.py).
 - Lengths are in mm (a G20 program's inches times 25.4); on a lathe X is a diameter, so the tool
   moves half of an X difference. A rotary axis's degrees count as millimetres, as in a FANUC
   feed of a move with rotary axes.
@@ -60,6 +63,9 @@ RAPID_STEP, FEED_STEP, SHIFT_STEP = 0, 1, 2
 _TWO_PI = 2.0 * math.pi
 # the mode a G31's move is recorded in (probing.py), whose feed the profile may clamp
 SKIP_MODE = 31.0
+# G93 inverse time feed (a feed-group code): a cut (G01, G02, G03) takes 1/F minutes
+INVERSE_TIME = 93.0
+INVERSE_TIME_MODES = (1.0, 2.0, 3.0)
 # plane code -> (first axis, second axis): the plane an arc turns in (arcs.PLANES)
 _PLANE_AXES = {17.0: ("X", "Y"), 18.0: ("Z", "X"), 19.0: ("Y", "Z")}
 
@@ -168,6 +174,12 @@ class MoveTimes:
             if rate is not None:
                 return length / rate * 60.0 if rate > 0.0 and length > 0.0 else 0.0
         return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit, False) * 60.0
+
+    @staticmethod
+    def inverse_time_seconds(feed: float) -> float:
+        """A cut's seconds under G93 (inverse time feed): 1/F minutes whatever its length, an
+        arc's too (Haas: "60 (seconds) divided by the F value"); none at F0."""
+        return 60.0 / feed if feed > 0.0 else 0.0
 
     def straight_rate(
         self, feed: float, per_rev: bool, speed: float, css: bool, unit: float = 1.0, top: float | None = None

@@ -1,5 +1,9 @@
 """A cut with no feed, or per revolution with no spindle speed: said once a run.
 
+Under G93 (inverse time feed) F is the block's own: a cut whose block writes no F is timed at the
+last F (1/F minutes, as if written again) and is a ``no-feed`` warning too, once a run (Haas: "feedrate
+(F) is mandatory for all interpolated motion blocks"; ``inverse_time_cut``).
+
 A cutting move (G01, G02, G03, a cycle's cutting pass, a thread) whose F is 0 because the program
 never gave one takes no time here (cycle_time.py), and on a FANUC control stops with alarm PS0011
 "feed zero (command)"; but F is modal and kept from one program to the next, so a program that
@@ -19,9 +23,11 @@ from ..dialects.alarms import FEED_ZERO
 if TYPE_CHECKING:
     from .planner import Planner
 
-# the ``codes`` keys set once a run has been told of a cut with no feed, or with no spindle speed
+# the ``codes`` keys set once a run has been told of a cut with no feed, or with no spindle speed,
+# or of a G93 cut without its own F
 NO_FEED_GIVEN = "no-feed-noted"
 NO_SPEED_GIVEN = "no-speed-noted"
+NO_INVERSE_FEED_GIVEN = "no-inverse-feed-noted"
 # the note's kind and subject (the diagnostic code the analysis shows it under)
 NO_FEED = "no-feed"
 
@@ -74,3 +80,23 @@ def note_missing_feed(p: Planner, feed: float, per_rev: bool, speed: float, line
         f"没有主轴转速的{what_zh}：刀具随主轴的旋转移动，而本程序在此之前没有指令 S（或为 S0），"
         "加工时间按该切削不耗时计算；除非之前的程序使主轴保持旋转，否则控制器上各轴等待主轴旋转；"
         "请在切削前指令 S"), line, NO_FEED)  # fmt: skip
+
+
+def inverse_time_cut(p: Planner, feed: float, line: int) -> float:
+    """The seconds of a cut on ``line`` under G93 at inverse time ``feed`` (cycle_time.py's
+    ``inverse_time_seconds``), noting once a run a block that writes no F of its own (timed at
+    the last F) and, as any cut, one with no feed at all."""
+    codes = p.codes
+    if feed <= 0.0:
+        note_missing_feed(p, feed, False, 0.0, line)
+    elif not p.block_feed and NO_INVERSE_FEED_GIVEN not in codes:
+        codes[NO_INVERSE_FEED_GIVEN] = 1.0
+        p.host.note(NO_FEED, detail(
+            f"a G93 cut with no F in its block: under inverse time feed F is each block's own (1/F minutes for "
+            f"the block) and the control requires it in every block that cuts; the cycle time takes the last "
+            f"F{feed:g} ({60.0 / feed:g} s); give F in every G93 cut",
+            f"G93 下本切削程序段没有 F：反比时间进给的 F 只对本程序段有效（程序段用时 1/F 分钟），"
+            f"系统要求每个切削程序段都指令 F；加工时间按上一个 F{feed:g}（{60.0 / feed:g} 秒）计算；"
+            f"请在每个 G93 切削程序段中指令 F"),
+            line, NO_FEED)  # fmt: skip
+    return p.times.inverse_time_seconds(feed)

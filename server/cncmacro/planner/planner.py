@@ -36,12 +36,12 @@ from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
 from .conic_moves import CURVE_FAULT, conic_points
 from .cutter_stage import UNCOMPENSATED_CODES, CutterStage, cutter_move, restore_pending, uncompensated
-from .cycle_time import INCH, SPEED_CLAMP, MoveTimes
+from .cycle_time import INCH, INVERSE_TIME, INVERSE_TIME_MODES, SPEED_CLAMP, MoveTimes
 from .drill_cycles import drill_block
 from .lathe_cycles import ShapeCall, ShapeReading
 from .lathe_drilling import lathe_drill_block
 from .machine_limits import leaves_travel, program_bounds, spindle_speed
-from .missing_feed import note_missing_feed
+from .missing_feed import inverse_time_cut, note_missing_feed
 from .modal_groups import extra_offset_codes, g_code_groups
 from .moves import TURNING, Leg, Move, ToolChange
 from .offset_travel import travel_start
@@ -75,6 +75,7 @@ class Planner:
     at_line: int = 0  # the line of the block being carried out (a cut with no feed is said there)
     # the tool vector before a change the machine has not travelled yet (offset_travel.py), else None
     vector_before: list[float] | None = None
+    block_feed: bool = False  # whether that block writes F (G93 takes one in every cut: missing_feed.py)
 
     def __init__(self, dialect: Dialect, settings: MachineSettings, host: PlannerHost) -> None:
         self.dialect = dialect
@@ -218,6 +219,7 @@ class Planner:
         the block counts as a move for a G66 call (``execute_nc``)."""
         modal_sets, code_sets, axes, inc, _, file, _ = plan
         self.at_line = line
+        self.block_feed = any(letter == "F" for letter, _ in code_sets)
         if PENDING_ANGLE in self.codes and self.block_angle is None:  # the two-block form's second block
             del self.codes[PENDING_ANGLE], self.codes[PENDING_LINE]  # without its angle: no corner
         if self.cutter is not None and any(g == "plane" for g, _ in modal_sets):  # under compensation: the
@@ -308,6 +310,7 @@ class Planner:
                 incremental[axis_index[inc_letters[letter]]] = v
             else:
                 other[letter] = v
+        self.block_feed = "F" in other
         last_keys = self.plain.last_keys
         if last_keys:  # the profile's address variables read every letter's last value
             codes = self.codes
@@ -688,7 +691,10 @@ class Planner:
                 length = times.distance(travelled, end)
                 if CYLINDER in modal:  # C's degrees on the cylinder's surface (virtual_planes.py)
                     length = surface_length(self, start, end, length)
-            seconds = self.feed_seconds(mode, length, feed, start, end, unit, lead_change, line)
+            if modal.get("feed") == INVERSE_TIME and mode in INVERSE_TIME_MODES and legs is None and cycle is None:
+                seconds = inverse_time_cut(self, feed, line)  # G93: 1/F minutes (missing_feed.py)
+            else:
+                seconds = self.feed_seconds(mode, length, feed, start, end, unit, lead_change, line)
             self.cut_length += length * unit
             if self.feed_hint and 0.0 < feed < 1.0:
                 self.feed_per_minute_hint(mode, feed, line)
