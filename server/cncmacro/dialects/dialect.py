@@ -94,8 +94,14 @@ class Dialect:
     # offset in force stays (GSK980TDi §3.21 note 6); False: the block selects it as well
     coordinate_setting_voids_wcs: bool = False
     # §10.1 a lathe's G28/G30 cancels the tool offset at the reference point: the tool vector is 0
-    # until the next T (GSK980TDi §3.15.1 note 4, §3.15.2 note 3); False: it stays (FANUC)
+    # until the next T (GSK980TDi §3.15.1 note 4, §3.15.2 note 3); on a mill, G28/G30 cancels the
+    # tool length offset as G49 does (Haas 96-8000: "G28 cancels tool length offsets for the
+    # following lines of code"; §8); False: it stays (FANUC)
     reference_return_cancels_tool_offset: bool = False
+    # §8 a G28 with no axis word returns every axis to the reference point (Haas 96-8000: "G28 is
+    # used to return all axes to machine zero, unless an axis (or axes) is specified"); False: it
+    # moves nothing (FANUC)
+    reference_return_all_axes: bool = False
     # §10.4 whether an S in a lathe's coordinate setting block that also sets coordinates (X, Z, U,
     # W) is the spindle speed under G97 rather than the G96 clamp (GSK980TDi: its G76 example's
     # "G50 X100 Z50 M3 S300；(设置工件坐标系启动主轴，指定转速)", §3.24.12); ``G50 S`` alone, and

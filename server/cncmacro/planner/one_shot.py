@@ -1,5 +1,6 @@
 """The codes that act once, in the block that names them (docs/semantics.md §8): G04 dwell, G10
-offsets, G28/G30 through the intermediate point to the reference point, G31 skip (probing.py),
+offsets, G28/G30 through the intermediate point to the reference point (on Haas a G28 alone
+homes every axis, and G28 cancels the tool length offset), G31 skip (probing.py),
 G53 in machine coordinates, G52's local coordinate system, coordinate setting (G92 on a mill,
 G50 on a lathe), a lathe's turning cycles (turning_cycles.py), cylindrical interpolation's
 ``G07.1 C_`` (a radius, not a move), the workpiece coordinate system preset (``G92.1 IP0``), and
@@ -47,16 +48,7 @@ def one_shot(
                 line, "not-simulated")  # fmt: skip
         return False, None
     if g in (28.0, 30.0):  # through the intermediate point to the reference point
-        if axes or inc:
-            p.move(file, line, 0.0, p.target(axes, inc))
-            if p.lathe and p.dialect.reference_return_cancels_tool_offset:
-                p.tool_vector = [0.0] * len(p.pos)  # off at the reference point (docs/semantics.md §10.1)
-            home = list(p.pos)
-            for i in set(axes) | set(inc):
-                home[i] = 0.0 - (work_offset(p, i) + p.shift[i] + p.tool_vector[i]) + 0.0
-            p.move(file, line, 0.0, home)
-            return True, None
-        return False, None
+        return reference_return(p, g, axes, inc, file, line), None
     if g in p.dialect.skip_codes:  # skip (G31; a multi-step skip's G31.1-G31.3): probing.py
         skip_block(p, p.target(axes, inc), file, line)
         return True, None
@@ -108,6 +100,41 @@ def one_shot(
         p.move(file, line, mode, target, p.block_arc(mode, target, other, line))
         return True, None
     return False, None
+
+
+def reference_return(p: Planner, g: float, axes: dict[int, float], inc: dict[int, float], file: str, line: int) -> bool:
+    """G28/G30: at rapid to the intermediate point the axis words name, then each named axis to
+    the reference point, machine 0 (on Haas a G28 alone names them all); whether it moved."""
+    dialect = p.dialect
+    named = set(axes) | set(inc)
+    if not named and g == 28.0 and dialect.reference_return_all_axes:  # Haas: G28 alone homes them all
+        named = set(range(len(p.pos)))
+    if not named:
+        return False
+    if axes or inc:
+        p.move(file, line, 0.0, p.target(axes, inc))
+    if dialect.reference_return_cancels_tool_offset:
+        if p.lathe:
+            p.tool_vector = [0.0] * len(p.pos)  # off at the reference point (docs/semantics.md §10.1)
+        else:
+            cancel_length_offset(p)
+    home = list(p.pos)
+    for i in named:
+        home[i] = 0.0 - (work_offset(p, i) + p.shift[i] + p.tool_vector[i]) + 0.0
+    p.move(file, line, 0.0, home)
+    return True
+
+
+def cancel_length_offset(p: Planner) -> None:
+    """A mill's G28 that cancels the tool length offset (``Dialect.reference_return_cancels_tool_offset``,
+    Haas: "for the following lines of code"): group 08 reads G49 and the Z vector is 0; the tool
+    does not move for it, so Z's program position takes the vector up (the reference point's move
+    then homes Z without it, when the block names Z)."""
+    p.modal["length"] = 49.0
+    z = p.axis_index.get("Z")
+    if z is not None:
+        p.pos[z] += p.tool_vector[z]
+        p.tool_vector[z] = 0.0
 
 
 def local_coordinates(p: Planner, axes: dict[int, float]) -> None:

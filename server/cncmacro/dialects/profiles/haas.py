@@ -976,6 +976,9 @@ PROFILE = FANUC_0I.configured(
     extra_offset_count=99,
     tool_offset_bases=(2000, 2200, 2400, 2600),
     g10_tool_l_aliases=((1.0, 11.0),),  # G10 L1 = L11, the length wear ([U])
+    # G28 alone homes every axis, and G28 cancels the tool length offset (96-8000, G28)
+    reference_return_all_axes=True,
+    reference_return_cancels_tool_offset=True,
     drill_cycles=HAAS_DRILL_CYCLES,  # its G77 back bore, G87 bore in and manual retract
     cycle_words={},  # Haas repeats with L and reads more letters in G73 and G83: not described yet
     cycle_repeat_letter="L",  # L repeats a canned cycle (K is a peck's minimum on G73/G83)

@@ -47,6 +47,9 @@ PROFILE = replace(
     unsimulated_codes=frozenset(),  # the mill's G12/G13, G47, G70-G72, G150 are not the lathe's codes
     coordinate_setting_code=50.0,
     cycle_codes=frozenset({70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0, 90.0, 92.0, 94.0}),
+    # the mill's G28 rules (96-8000) are not taken over: no Haas lathe source at hand gives them
+    reference_return_all_axes=False,
+    reference_return_cancels_tool_offset=False,
     drill_cycles={},
     single_cycles=LATHE_SINGLE_CYCLES,
     lathe_cycles=HAAS_LATHE_CYCLES,
