@@ -312,6 +312,10 @@ class Dialect:
     # program running until M99, then back after the call); None: no such call, the code is a
     # plain M code
     local_subprogram_code: float | None = None
+    # §4 an M code that jumps to block P of the program when discrete input Q, #1000 + Q, is 0, and
+    # goes on otherwise (Haas M96 [H4]: "M96 P10 Q27 (Loop to N10 if spare input [#27] is 0)");
+    # None: no such code
+    input_jump_code: float | None = None
     # §8 ``G54 Pn`` selects extra work offset n as ``G54.1 Pn`` does (FANUC: "G54.1 Pn or G54 Pn")
     extra_offset_by_g54_p: bool = False
     # §8 the G code that selects extra work offset Pn (Haas ``G154 P1``–``P99``), as G54.1 Pn

@@ -17,7 +17,8 @@ from functools import partial
 from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
-from ..dialects.alarms import IMPROPER_G_CODE, PROGRAM_NOT_FOUND
+from ..dialects.alarms import ARGUMENT_RANGE, IMPROPER_G_CODE, PROGRAM_NOT_FOUND
+from ..planner.alarms import UnknownValue, is_unknown
 from ..syntax.nodes import Block, Bracket, Number, Var, Word
 from .alarms import MacroAlarm, raiser
 from .block_rules import CALL_WITHOUT_P, BlockProblem, first_alarm, validate_block
@@ -298,8 +299,9 @@ def _nc(
     all_constant = all(get is None for _, _, get in items)
     constant = [(letter, v) for letter, v, get in items if get is None]
     # the program words (P, L, Q) of a call are not NC words
-    local = dialect.local_subprogram_code
-    control_m = CONTROL_M if local is None else CONTROL_M | {local}
+    # Haas's M97 local call and M96 input jump (``_input_jump``), where the dialect has them
+    local, input_jump = dialect.local_subprogram_code, dialect.input_jump_code
+    control_m = CONTROL_M | {code for code in (local, input_jump) if code is not None}
     local_kind = f"M{local:g}" if local is not None else ""
     m_values = [v for letter, v in constant if letter == "M"]
     dynamic_m = any(letter == "M" and get is not None for letter, _, get in items)
@@ -348,7 +350,8 @@ def _nc(
         if found_call is not None and found_call[1].call == "macro":
             return m.code_macro_call(*found_call, values, pc, nxt)
         nc_words = values
-        if mcontrol and (98.0 in mcontrol or RETURN_CODE in mcontrol or 198.0 in mcontrol or local in mcontrol):
+        if mcontrol and (98.0 in mcontrol or RETURN_CODE in mcontrol or 198.0 in mcontrol or local in mcontrol
+                         or input_jump in mcontrol):  # fmt: skip
             nc_words = [(letter, v) for letter, v in values if letter not in ("P", "L", "Q")]
         moved, skip_to = m.planner.execute_nc(nc_words, file_path, pc)
         if found_call is not None:
@@ -363,6 +366,8 @@ def _nc(
             for text in notes:
                 m.note("call", text, pc, "repeat-count")
             return m.local_subprogram_call(words.get("P"), repeats, pc, nxt, local_kind)
+        if input_jump in mcontrol:
+            return _input_jump(cf, m, dict(values), pc, nxt)
         if RETURN_CODE in mcontrol:
             p = next((v for letter, v in values if letter == "P"), None)
             return m.return_from_call(pc, p)
@@ -373,6 +378,25 @@ def _nc(
         return _after_nc(m, moved, skip_to, pc, nxt)
 
     return general_to
+
+
+def _input_jump(cf: CompiledFile, m: Machine, words: dict[str, float], pc: int, nxt: int) -> int:
+    """Haas's ``M96 P n Q i`` (``Dialect.input_jump_code``): on to N n of the program, by the jump
+    rules of GOTO, when discrete input i (#1000 + i) is 0, else the next block (docs/semantics.md
+    §4). An input whose value the analysis does not know leaves the branch undecided, as
+    ``IF [#1027 EQ 0] GOTO n`` (machine/unknown_values.py)."""
+    q = words.get("Q")
+    if q is None or not 0 <= q <= 63:
+        raise MacroAlarm(
+            ARGUMENT_RANGE,
+            detail("M96 needs Q, the discrete input to test (0 to 63)", "M96 需要 Q，即要检测的离散输入（0～63）"),
+        )
+    value = m.read(1000 + q)
+    if is_unknown(value):
+        raise UnknownValue
+    if value:  # the input is on: no jump
+        return nxt
+    return cf.jump(m.frames[-1], pc, words.get("P"), "M96 P")
 
 
 def _motion_runner(plain: list[tuple[str, float]], file_path: str, nxt: int) -> Runner:

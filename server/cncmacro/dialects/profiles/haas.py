@@ -962,6 +962,7 @@ PROFILE = FANUC_0I.configured(
     # circular pocket G12/G13, engraving G47, the bolt patterns G70/G71/G72 (a hole of the drilling
     # cycle in force at each point), general pocket G150 ([H1]): known, not simulated
     unsimulated_codes=frozenset({12.0, 13.0, 47.0, 70.0, 71.0, 72.0, 150.0}),
+    input_jump_code=96.0,  # M96 P Q: to N(P) when input Q (#1000 + Q) is 0 ([H4])
     # G101 X_ Y_: the mirror image's centre on the axes given, G100 cancels (docs/semantics.md §8)
     axis_value_codes=frozenset((7.1, 107.0, 100.0, 101.0)),
     documented_alarms=frozenset(),  # no Haas source numbers FANUC's alarms or #3000=n: none shown
