@@ -336,6 +336,9 @@ class Dialect:
     # §10.3 a lathe's drilling cycles (drill_cycles.py's ``LatheDrilling``), None on a mill
     lathe_drilling: LatheDrilling | None = None
     cycle_repeat_letter: str = "K"
+    # §9 G27-G30 while a drilling canned cycle is in force (its group not at G80) stop the run with
+    # alarm PS0044 "G27-G30 not allowed in fixed cyc" (FANUC's list); without this switch they run
+    reference_in_cycle_alarm: bool = False
     # §9 a lathe's single fixed cycles (G90, G92, G94): which axis each goes in along first and
     # whether it comes out at rapid (turning_cycles.py); a turning cycle not listed is drawn as
     # one cut from where it starts to its end point

@@ -5,7 +5,8 @@ G53 in machine coordinates, G52's local coordinate system, coordinate setting (G
 G50 on a lathe), a lathe's turning cycles (turning_cycles.py), cylindrical interpolation's
 ``G07.1 C_`` (a radius, not a move), the workpiece coordinate system preset (``G92.1 IP0``), and
 any other one-shot code with axis words, which moves in the modal mode. ``G10`` writes the offset
-tables through the planner's host (host.py).
+tables through the planner's host (host.py). On FANUC (``Dialect.reference_in_cycle_alarm``) a
+G27-G30 while a drilling canned cycle is in force is alarm PS0044 (docs/semantics.md §9).
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..bilingual import detail
-from ..dialects.alarms import ARGUMENT_RANGE
+from ..dialects.alarms import ARGUMENT_RANGE, REFERENCE_IN_CYCLE
 from .alarms import MacroAlarm
 from .lathe_cycles import ShapeCall, lathe_cycle
 from .machine_limits import g53_bounds, leaves_travel
@@ -25,6 +26,7 @@ from .virtual_planes import switch_virtual_plane
 if TYPE_CHECKING:
     from .planner import Planner
 
+REFERENCE_CODES = (27.0, 28.0, 29.0, 30.0)  # reference position check, return, return from, 2nd-4th
 LOCAL_ORIGIN = "G52-"  # the ``codes`` key of G52's origin on an axis, with the axis's index after it
 
 
@@ -33,6 +35,13 @@ def one_shot(
 ) -> tuple[bool, ShapeCall | None]:
     """Carry out one-shot code ``g`` with the block's words: (moved, the shape a lathe cycle
     names), as ``Planner.execute_nc`` returns them."""
+    if g in REFERENCE_CODES and p.dialect.reference_in_cycle_alarm and p.drills and p.modal.get("canned", 80.0) != 80.0:
+        # FANUC PS0044 "G27-G30 NOT ALLOWED IN FIXED CYC": "One of G27 to G30 is commanded in canned
+        # cycle mode" (docs/semantics.md §9)
+        canned = p.modal["canned"]
+        raise MacroAlarm(REFERENCE_IN_CYCLE, detail(
+            f"G{g:g} in canned cycle mode (G{canned:g} in force): cancel the cycle with G80 first",
+            f"固定循环方式中（G{canned:g} 有效）指令了 G{g:g}：须先用 G80 取消循环"))  # fmt: skip
     if g == 4.0:  # dwell: P in the profile's unit, X or U in seconds (cycle_time.py); X before U
         p.clock += p.times.dwell_seconds(other, next(iter({**inc, **axes}.values()), None))
         return False, None

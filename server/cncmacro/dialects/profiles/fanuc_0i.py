@@ -39,6 +39,7 @@ PROFILE = Dialect(
     drill_cycles=FANUC_DRILL_CYCLES,
     extra_offset_by_g54_p=True,  # "G54.1 Pn or G54 Pn" (0i-MF, adding workpiece coordinate systems)
     cycle_words=FANUC_DRILL_CYCLE_WORDS,
+    reference_in_cycle_alarm=True,  # PS0044 (docs/semantics.md §9, "Drilling canned cycles")
     ijk_order_matters=True,
     word_format_alarms=True,
     arc_radius_alarm=True,
