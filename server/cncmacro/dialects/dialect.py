@@ -339,6 +339,11 @@ class Dialect:
     # §9 G27-G30 while a drilling canned cycle is in force (its group not at G80) stop the run with
     # alarm PS0044 "G27-G30 not allowed in fixed cyc" (FANUC's list); without this switch they run
     reference_in_cycle_alarm: bool = False
+    # §9 a mill's peck drilling (G73, G83) with no Q in force, or Q0, stops the run with alarm PS0045
+    # "address Q not found (G73/G83)" (FANUC's list), and Q is kept only within one canned cycle
+    # mode (G80 and G00-G03 clear the hole data); without this switch such a hole is drilled in one
+    # feed, as G81
+    peck_q_alarm: bool = False
     # §9 a lathe's single fixed cycles (G90, G92, G94): which axis each goes in along first and
     # whether it comes out at rapid (turning_cycles.py); a turning cycle not listed is drawn as
     # one cut from where it starts to its end point

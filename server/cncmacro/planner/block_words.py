@@ -15,6 +15,7 @@ from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
 from .cutter_stage import cutter_code
+from .drill_cycles import CYCLE_Q
 from .machine_limits import offset_number, spindle_speed, tool_number
 from .moves import ToolChange
 from .offset_travel import keep_machine_position, vector_changing, work_offsets
@@ -52,6 +53,8 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
                 g = 54.1  # G54 Pn is G54.1 Pn (FANUC)
             if group == "wcs" and before is None:
                 before = work_offsets(p)  # the tool stays on the machine (offset_travel.py)
+            if group == "canned" and g != 80.0 and p.modal.get(group, 80.0) == 80.0:
+                cycle_mode_starts(p)
             p.modal[group] = g
             if group == "motion" and g not in p.dialect.single_cycles:
                 forget_single_cycle(p)  # a single cycle's modal words (turning_cycles.py)
@@ -64,6 +67,13 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
     if before is not None:
         keep_machine_position(p, before)
     return one_shot_code
+
+
+def cycle_mode_starts(p: Planner) -> None:
+    """A drilling canned cycle is named after G80 (or a G00-G03): where FANUC clears the hole
+    data (``Dialect.peck_q_alarm``), a peck's Q from an earlier cycle mode is no longer in force."""
+    if p.dialect.peck_q_alarm:
+        p.codes.pop(CYCLE_Q, None)
 
 
 def set_codes(p: Planner, other: dict[str, float], file: str, line: int) -> None:

@@ -20,7 +20,8 @@ G90 R and Z are levels; under G91 R is the distance from the initial level to R 
 distance from R to the bottom. The initial level is the Z where the tool was when the block
 that named the cycle began (``Planner.cycle_start_z``). Each repetition of K under G91 moves on
 by the block's X and Y; under G90 it drills the same hole again; K0 keeps the data and drills
-nothing. The drilling axis is Z.
+nothing. The drilling axis is Z. On FANUC (``Dialect.peck_q_alarm``) a G73/G83 hole with no Q in
+force, or Q0, is alarm PS0045, and a cycle named after G80 starts with no Q (block_words.py).
 
 The recorded move is one per hole, from where the tool was to the hole's bottom, its time the
 sum of the phases' (``MoveTimes.cycle_seconds``), its feed steps added to the cut path and its
@@ -34,7 +35,7 @@ from math import ceil, floor
 from typing import TYPE_CHECKING
 
 from ..bilingual import detail
-from ..dialects.alarms import ARGUMENT_RANGE
+from ..dialects.alarms import ARGUMENT_RANGE, PECK_Q_MISSING
 from ..dialects.drill_cycles import PECK, PLAIN_DRILLING, SHORT_PECK, DrillCycle
 from .alarms import MacroAlarm
 from .cycle_time import FEED_STEP, INCH, RAPID_STEP, SHIFT_STEP
@@ -79,6 +80,8 @@ def drill_block(
     r_level = initial if r_word is None else r_word if absolute else initial + r_word
     bottom = r_level if z_word is None else z_word if absolute else r_level + z_word
     spec = m.dialect.drill_cycles.get(cycle, PLAIN_DRILLING)
+    if spec.cut in (PECK, SHORT_PECK) and m.dialect.peck_q_alarm and not codes.get(CYCLE_Q):
+        raise _no_peck(cycle, codes.get(CYCLE_Q))
     back_to = initial if spec.back or m.modal.get("return") == 98.0 else r_level
     times = m.times
     unit = INCH if m.modal.get("units") == 20.0 else 1.0
@@ -105,6 +108,17 @@ def drill_block(
         record_hole(m, file, line, cycle, start, (hole_at, tuple(at_r), tuple(at_bottom), tuple(hole)),
                     spec.feed_out, feed, seconds, m.modal.get("plane", 17.0))  # fmt: skip
         m.pos = hole
+
+
+def _no_peck(cycle: float, q: float | None) -> MacroAlarm:
+    """FANUC's PS0045 "ADDRESS Q NOT FOUND (G73/G83)": "the amount of each-time cutting is not
+    specified by address Q, or Q0 is specified" (``Dialect.peck_q_alarm``)."""
+    g = f"G{cycle:g}"
+    if q is None:
+        return MacroAlarm(PECK_Q_MISSING, detail(
+            f"{g}: no Q, the depth of each peck, in force in this canned cycle mode",
+            f"{g}：本固定循环方式中没有指令每次切深 Q"))  # fmt: skip
+    return MacroAlarm(PECK_Q_MISSING, detail(f"{g}: Q0, a peck of no depth", f"{g}：Q0，每次切深为零"))
 
 
 def record_hole(

@@ -40,6 +40,7 @@ PROFILE = Dialect(
     extra_offset_by_g54_p=True,  # "G54.1 Pn or G54 Pn" (0i-MF, adding workpiece coordinate systems)
     cycle_words=FANUC_DRILL_CYCLE_WORDS,
     reference_in_cycle_alarm=True,  # PS0044 (docs/semantics.md §9, "Drilling canned cycles")
+    peck_q_alarm=True,  # PS0045 (the same)
     ijk_order_matters=True,
     word_format_alarms=True,
     arc_radius_alarm=True,
