@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 from ..bilingual import Detail, detail
 from ..dialects.alarms import (
+    ARC_NO_CENTRE,
     ARC_RADIUS,
     ARGUMENT_RANGE,
     BRACKET_NESTING,
@@ -275,6 +276,11 @@ CODES: dict[str, Code] = _codes(
     Code("arc-r-full-circle", WARNING,
          detail("An R arc whose end point is its start: the control makes no move; a full circle takes I, J or K.",
                 "R 圆弧的终点就是起点：系统不移动；整圆须用 I、J 或 K。"), RUN),
+    Code("arc-centre", ERROR,
+         detail("A G02/G03 block that moves in its plane with neither R nor I, J, K: the control cannot find the "
+                "arc's centre (FANUC alarm 22, PS0022).",
+                "G02/G03 程序段在其平面内移动，但既无 R 也无 I、J、K：系统无法确定圆弧圆心（FANUC 报警 22，PS0022）。"),
+         RUN, (ARC_NO_CENTRE,), ("arc-centre",)),
     Code("curve-fault", ERROR,
          detail("A three-point arc (G05/G05.1), an ellipse (G6.2/G6.3) or a parabola (G7.2/G7.3) the control cannot "
                 "cut as written: three points on one line, I and K left out, A, B or P 0 or left out, an end point "

@@ -20,6 +20,7 @@ DECIMAL_POINT = 7
 IMPROPER_G_CODE = 10
 FEED_ZERO = 11  # PS0011: a cut with a feed of 0 (docs/semantics.md §10.4)
 ARC_RADIUS = 20  # PS0020: I, J, K whose end is off the start's circle (docs/semantics.md §8, "Arcs")
+ARC_NO_CENTRE = 22  # PS0022: an arc that moves in its plane with neither R nor I, J, K (the same)
 PROGRAM_NOT_FOUND = 76
 SUBPROGRAM_NESTING = 77
 DUPLICATE_PROGRAM = 73
@@ -85,6 +86,7 @@ ALARMS: dict[int, AlarmDoc] = {
         AlarmDoc(IMPROPER_G_CODE, "improper G code", "G代码不当"),
         AlarmDoc(FEED_ZERO, "feed zero (command)", "进给速度为零（指令）"),
         AlarmDoc(ARC_RADIUS, "over tolerance of radius", "圆弧半径超差"),
+        AlarmDoc(ARC_NO_CENTRE, "R or I, J, K command not found", "未指令 R 或 I、J、K"),
         AlarmDoc(PROGRAM_NOT_FOUND, "program not found", "未找到程序"),
         AlarmDoc(DUPLICATE_PROGRAM, "program number already in use", "程序号已被使用"),
         AlarmDoc(SUBPROGRAM_NESTING, "subprogram nesting too deep", "子程序嵌套过深"),

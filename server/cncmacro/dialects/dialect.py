@@ -169,6 +169,10 @@ class Dialect:
     # §8 "Arcs": I, J, K whose end point is off the start's circle by more than the tolerance is
     # alarm PS0020 (FANUC's list); without this switch the run notes it and goes on
     arc_radius_alarm: bool = False
+    # §8 "Arcs": a G02/G03 block that moves in its plane with neither R nor an offset word of the
+    # plane is alarm PS0022 "R or I, J, K command not found" (FANUC's list); without this switch it
+    # is cut as a straight line
+    arc_centre_alarm: bool = False
     # §10.4 the parameter whose feed a control cuts at after power-on when no program gave F
     # (English, Chinese: GSK980TDi §3.26, state parameter No.030); None where the feed is 0 then
     # and a cut alarms (FANUC PS0011 "feed zero (command)"): planner/missing_feed.py says which

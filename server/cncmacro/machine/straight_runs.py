@@ -119,6 +119,7 @@ def run_straight(
     bounds = program_bounds(p) if p.travel is not None else None
     spindle_top = p.spindle_top
     arc_centre, arc_fault = p.arc_centre, p.arc_fault
+    centre_alarm = p.dialect.arc_centre_alarm  # FANUC's PS0022 (planner/arc_checks.py)
     # cutter radius compensation under way (planner/cutter_stage.py): a straight cut after a
     # straight cut is joined by ``cuts``, which holds the last one until the next comes; any
     # other move goes through ``Planner.record`` (the held one handed back first)
@@ -226,6 +227,8 @@ def run_straight(
             if speed is not None and spindle_top is not None and speed > spindle_top:
                 break  # an S above the spindle's top speed: the compiled path says so
             centre = None
+            if arc is None and moved and line_mode in ARC_MODES and centre_alarm:
+                break  # an arc with no R, I, J, K: the general path's to judge (planner/arc_checks.py)
             if arc is not None and moved and line_mode in ARC_MODES:
                 if VIRTUAL_PLANE in modal:
                     break  # an arc in polar or cylindrical interpolation: the general path's (virtual_planes.py)

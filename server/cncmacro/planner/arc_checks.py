@@ -6,17 +6,22 @@ them); here it becomes the control's answer. I, J, K whose end is off the start'
 more than the tolerance is FANUC's alarm PS0020 "over tolerance of radius" where the profile
 documents it (``Dialect.arc_radius_alarm``: the run stops there); elsewhere, and for an R
 shorter than half the chord or an R arc with its end at its start (which no manual at hand
-gives an alarm for), the run notes it (kind ``arc``, the fault as subject) and goes on.
+gives an alarm for), the run notes it (kind ``arc``, the fault as subject) and goes on. An arc
+that moves in its plane with neither R nor I, J, K is FANUC's alarm PS0022 "R or I, J, K command
+not found" (``Dialect.arc_centre_alarm``; ``no_centre``); elsewhere it is cut as a straight line.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from ..bilingual import Detail, detail
-from ..dialects.alarms import ARC_RADIUS
+from ..dialects.alarms import ARC_NO_CENTRE, ARC_RADIUS
 from .alarms import MacroAlarm
-from .arcs import RADIUS_MISMATCH, SHORT_RADIUS
+from .arcs import RADIUS_MISMATCH, SHORT_RADIUS, Plane, moves_in_plane
+
+NO_CENTRE = "arc-centre"  # the subject of PS0022
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -56,3 +61,17 @@ def arc_finding(p: Planner, fault: tuple[str, float, float], line: int) -> None:
     if fault[0] == RADIUS_MISMATCH and p.dialect.arc_radius_alarm:
         raise MacroAlarm(ARC_RADIUS, message, RADIUS_MISMATCH)
     p.host.note("arc", message, line, fault[0])
+
+
+def no_centre(p: Planner, mode: float, plane: Plane, start: Sequence[float], end: Sequence[float]) -> None:
+    """An arc ``mode`` (G02/G03) from ``start`` to ``end`` in ``plane`` whose block names neither R
+    nor an offset word of the plane: where the profile has FANUC's PS0022
+    (``Dialect.arc_centre_alarm``) and the move goes somewhere in the plane, the run stops with it;
+    else the move is cut as a straight line."""
+    if not p.dialect.arc_centre_alarm or not moves_in_plane(plane, start, end):
+        return
+    _, _, off_a, off_b = plane
+    g = f"G{mode:02g}"
+    raise MacroAlarm(ARC_NO_CENTRE, detail(
+        f"{g} moves in the plane but gives neither R nor {off_a}, {off_b}: the control cannot find the arc's centre",
+        f"{g} 在平面内移动，但既未指令 R 也未指令 {off_a}、{off_b}：系统无法确定圆弧的圆心"), NO_CENTRE)  # fmt: skip

@@ -18,6 +18,8 @@ values.
 §8, "Arcs"): I, J, K whose end point is farther from the centre or nearer to it than the start
 by more than the tolerance (FANUC's alarm PS0020, parameter 3410), an R shorter than half the
 chord by more than the tolerance, and R with the end at the start (no move at all).
+``moves_in_plane`` says whether an arc with no centre (neither R nor an offset word of its plane)
+goes anywhere in the plane: FANUC's alarm PS0022 (arc_checks.py).
 """
 
 from __future__ import annotations
@@ -96,6 +98,12 @@ def arc_centre(
     centre[a] = ca / scale_a
     centre[b] = cb / scale_b
     return tuple(centre)
+
+
+def moves_in_plane(plane: Plane, start: Sequence[float], end: Sequence[float]) -> bool:
+    """Whether the move from ``start`` to ``end`` changes either of ``plane``'s two axes (a move
+    of the axis normal to the plane alone does not)."""
+    return end[plane[0]] != start[plane[0]] or end[plane[1]] != start[plane[1]]
 
 
 def arc_fault(

@@ -31,7 +31,7 @@ from .angled_moves import (
     one_axis_fault,
     two_line_fault,
 )
-from .arc_checks import arc_finding
+from .arc_checks import arc_finding, no_centre
 from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
 from .conic_moves import CURVE_FAULT, conic_points
@@ -262,7 +262,7 @@ class Planner:
             target[i] += v
         self.pos = target
         extra = plan[4]
-        centre = self.checked_arc(mode, start, target, dict(extra), line) if extra and mode in ARC_MODES else None
+        centre = self.checked_arc(mode, start, target, dict(extra), line) if mode in ARC_MODES else None
         self.record(file, line, mode, tuple(start), tuple(target), centre)
         if self._no_call_after(mode):
             return False
@@ -446,6 +446,10 @@ class Planner:
             fault = self.arc_fault(start, end, centre, words)
             if fault is not None:
                 arc_finding(self, fault, line)
+        else:
+            plane = self._arc_planes.get(self.modal.get("plane", 17.0))
+            if plane is not None:
+                no_centre(self, mode, plane, start, end)  # PS0022 (arc_checks.py)
         return centre
 
     def block_arc(

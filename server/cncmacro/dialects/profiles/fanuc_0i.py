@@ -44,6 +44,7 @@ PROFILE = Dialect(
     ijk_order_matters=True,
     word_format_alarms=True,
     arc_radius_alarm=True,
+    arc_centre_alarm=True,  # PS0022 (docs/semantics.md §8, "Arcs")
     cutter_alarms=True,
     keyword_abbreviations=True,
     if_without_then=True,

@@ -951,6 +951,7 @@ PROFILE = FANUC_0I.configured(
     m98_program_digits=5,
     word_format_alarms=False,
     arc_radius_alarm=False,  # no alarm for it in the manuals at hand: a warning (docs/semantics.md §8, "Arcs")
+    arc_centre_alarm=False,  # FANUC's PS0022: no Haas source at hand gives it (the same)
     cutter_alarms=False,  # no number for the interference or plane alarms in the manuals at hand (§12)
     reference_in_cycle_alarm=False,  # FANUC's PS0044: no Haas source at hand gives it (§9)
     peck_q_alarm=False,  # FANUC's PS0045: Haas pecks by Q or by I, J, K (§9)

@@ -17,6 +17,7 @@ PROFILE = FANUC_0I.configured(
     extra_offset_by_g54_p=False,  # no source at hand gives G54 Pn
     reference_in_cycle_alarm=False,  # FANUC's PS0044: no source at hand gives it here
     peck_q_alarm=False,  # FANUC's PS0045: the same
+    arc_centre_alarm=False,  # FANUC's PS0022: the same
     name="mazak-eia",
     title="Mazak EIA/ISO (Matrix, Smooth)",
     summary="Mazak Mazatrol Matrix/Smooth machining centres in EIA/ISO: Macro B with IF..THEN/ELSE/ENDIF, && and ||",

@@ -16,6 +16,7 @@ PROFILE = FANUC_0I.configured(
     extra_offset_by_g54_p=False,  # no source at hand gives G54 Pn
     reference_in_cycle_alarm=False,  # FANUC's PS0044: no source at hand gives it here
     peck_q_alarm=False,  # FANUC's PS0045: the same
+    arc_centre_alarm=False,  # FANUC's PS0022: the same
     name="mitsubishi-m70",
     title="Mitsubishi M70/M80 user macro",
     summary="Mitsubishi M70/M80 (M8 series) machining centres: Macro B with IF..THEN/ELSE/ENDIF blocks",
