@@ -53,13 +53,11 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
                 g = 54.1  # G54 Pn is G54.1 Pn (FANUC)
             if group == "wcs" and before is None:
                 before = work_offsets(p)  # the tool stays on the machine (offset_travel.py)
-            if group == "canned" and g != 80.0 and p.modal.get(group, 80.0) == 80.0:
-                cycle_mode_starts(p)
+            if group == "canned" and g != 80.0:
+                cycle_named(p, p.modal.get(group, 80.0), g)
             p.modal[group] = g
             if group == "motion" and g not in p.dialect.single_cycles:
                 forget_single_cycle(p)  # a single cycle's modal words (turning_cycles.py)
-            if group == "canned" and g != 80.0:
-                p.cycle_start_z = None
             if group == "wcs" and g == 54.1:
                 p.extra_wcs = int(other.get("P", 1))
             elif group == "wcs" and g in p.extra_codes:
@@ -69,11 +67,23 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
     return one_shot_code
 
 
-def cycle_mode_starts(p: Planner) -> None:
-    """A drilling canned cycle is named after G80 (or a G00-G03): where FANUC clears the hole
-    data (``Dialect.peck_q_alarm``), a peck's Q from an earlier cycle mode is no longer in force."""
-    if p.dialect.peck_q_alarm:
-        p.codes.pop(CYCLE_Q, None)
+def cycle_named(p: Planner, before: float, g: float) -> None:
+    """Drilling canned cycle ``g`` is named with ``before`` in force (80: none). The initial level
+    is taken again (``Planner.cycle_start_z``, at the next hole) only where the canned cycle mode
+    begins, after G80 or a G00-G03 (FANUC 0i-MF: "the absolute Z position when the canned cycle
+    mode is entered"), or where a lathe's cycle drills along another axis (G83 on the face, G87
+    on the side); and there, where FANUC clears the hole data (``Dialect.peck_q_alarm``), a peck's
+    Q from the cycle mode before is no longer in force."""
+    if before == 80.0:
+        p.cycle_start_z = None
+        if p.dialect.peck_q_alarm:
+            p.codes.pop(CYCLE_Q, None)
+        return
+    drilling = p.dialect.lathe_drilling
+    if drilling is not None:
+        old, new = drilling.cycles.get(before), drilling.cycles.get(g)
+        if old is None or new is None or old.axis != new.axis:
+            p.cycle_start_z = None
 
 
 def set_codes(p: Planner, other: dict[str, float], file: str, line: int) -> None:

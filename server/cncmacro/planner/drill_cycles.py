@@ -17,8 +17,9 @@ them:
 The hole data Z, R, Q and P stay in force from the cycle block that last gave them (the
 control keeps them while the cycle is in force; a program names them again after G80). Under
 G90 R and Z are levels; under G91 R is the distance from the initial level to R and Z the
-distance from R to the bottom. The initial level is the Z where the tool was when the block
-that named the cycle began (``Planner.cycle_start_z``). Each repetition of K under G91 moves on
+distance from R to the bottom. The initial level is the Z where the tool was when the canned
+cycle mode began, after G80 or a G00-G03 (``Planner.cycle_start_z``; another cycle named with
+no G80 between keeps it: block_words.py ``cycle_named``). Each repetition of K under G91 moves on
 by the block's X and Y; under G90 it drills the same hole again; K0 keeps the data and drills
 nothing. The drilling axis is Z. On FANUC (``Dialect.peck_q_alarm``) a G73/G83 hole with no Q in
 force, or Q0, is alarm PS0045, and a cycle named after G80 starts with no Q (block_words.py).
