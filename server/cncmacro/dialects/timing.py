@@ -51,6 +51,10 @@ class Timing:
     # without counts ``dwell_p_unit`` (Haas: "G04 P10. is a dwell of 10 seconds; G04 P10 is 10
     # milliseconds"); read from the word's text where the block is compiled (machine/blocks.py)
     dwell_p_point_seconds: bool = False
+    # a helix (G02/G03 with the third axis moving) is fed along its arc in the plane, F the speed on
+    # the circumference (FANUC: "The feedrate along the circumference of two circular interpolated
+    # axes is the specified feedrate"); False: along the helix itself
+    helix_fed_on_arc: bool = False
     # the spindle's top speed (rev/min): G96 never turns the spindle faster
     max_spindle_speed: float = 4000.0
     # mm: how far G73 retracts after each peck (FANUC parameter 5114) and how far above the last

@@ -104,6 +104,7 @@ class MoveTimes:
         self.top_speed = math.inf
         # the fastest a skip move goes (mm/min; Dialect.skip_feed_clamp), infinite where it is not clamped
         self.skip_feed = math.inf if dialect.skip_feed_clamp is None else dialect.skip_feed_clamp
+        self.helix_on_arc = timing.helix_fed_on_arc  # a helix's length is its arc's (``arc_length``)
 
     def distance(self, start: Sequence[float], end: Sequence[float]) -> float:
         """The straight distance from ``start`` to ``end``, in program units: on a lathe X moves
@@ -125,7 +126,8 @@ class MoveTimes:
         self, mode: float, plane: float, start: Sequence[float], end: Sequence[float], centre: Sequence[float]
     ) -> float:
         """The length of a G02 (``mode`` 2) or G03 arc from ``start`` to ``end`` about ``centre``
-        in ``plane`` (17, 18, 19), a helix's third axis included; program units."""
+        in ``plane`` (17, 18, 19), a helix's third axis included (but where the profile feeds a
+        helix along its arc in the plane, ``Timing.helix_fed_on_arc``: the arc's); program units."""
         axes = self.planes.get(plane)
         if axes is None:
             return self.distance(start, end)
@@ -141,6 +143,8 @@ class MoveTimes:
         if sweep == 0.0 and start[a] == end[a] and start[b] == end[b]:
             sweep = _TWO_PI  # I, J, K back to the start: a full circle
         arc = r * sweep
+        if self.helix_on_arc:
+            return arc
         # a helix: the move off the plane is the other side of a right triangle
         da, db = (end[a] - start[a]) * ka, (end[b] - start[b]) * kb
         off = (dist(start, end) if self.scale is None else self.distance(start, end)) ** 2 - da * da - db * db

@@ -61,5 +61,6 @@ PROFILE = Dialect(
         tool_change_seconds=3.0,
         tool_change_code="M6",
         dwell_p_unit=0.001,
+        helix_fed_on_arc=True,  # "the feedrate along the circumference of two circular interpolated axes"
     ),
 )

@@ -51,5 +51,6 @@ PROFILE = replace(
         tool_change_code="T",
         dwell_p_unit=0.001,
         max_spindle_speed=4000.0,
+        helix_fed_on_arc=True,  # as the mills' (fanuc_0i.py)
     ),
 )

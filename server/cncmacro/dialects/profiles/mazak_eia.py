@@ -11,6 +11,8 @@ macro words shortened to their first two letters or more (``WH`` for WHILE, ``GO
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from .fanuc_0i import PROFILE as FANUC_0I
 
 PROFILE = FANUC_0I.configured(
@@ -18,6 +20,7 @@ PROFILE = FANUC_0I.configured(
     reference_in_cycle_alarm=False,  # FANUC's PS0044: no source at hand gives it here
     peck_q_alarm=False,  # FANUC's PS0045: the same
     arc_centre_alarm=False,  # FANUC's PS0022: the same
+    timing=replace(FANUC_0I.timing, helix_fed_on_arc=False),  # a helix fed along itself: no source says
     name="mazak-eia",
     title="Mazak EIA/ISO (Matrix, Smooth)",
     summary="Mazak Mazatrol Matrix/Smooth machining centres in EIA/ISO: Macro B with IF..THEN/ELSE/ENDIF, && and ||",

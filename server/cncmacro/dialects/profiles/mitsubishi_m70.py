@@ -9,6 +9,8 @@ which the profile does not list yet: they are shown without a number (docs/profi
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from ..tables import CommonRange
 from .fanuc_0i import PROFILE as FANUC_0I
 
@@ -17,6 +19,7 @@ PROFILE = FANUC_0I.configured(
     reference_in_cycle_alarm=False,  # FANUC's PS0044: no source at hand gives it here
     peck_q_alarm=False,  # FANUC's PS0045: the same
     arc_centre_alarm=False,  # FANUC's PS0022: the same
+    timing=replace(FANUC_0I.timing, helix_fed_on_arc=False),  # a helix fed along itself: no source says
     name="mitsubishi-m70",
     title="Mitsubishi M70/M80 user macro",
     summary="Mitsubishi M70/M80 (M8 series) machining centres: Macro B with IF..THEN/ELSE/ENDIF blocks",
