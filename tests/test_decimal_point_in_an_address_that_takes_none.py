@@ -50,3 +50,13 @@ def test_the_same_words_without_a_point_and_an_m_code_with_one(tmp_path: Path) -
                    "G76 X18.05 Z-30. P975 Q400 F1.5", "M30") == []  # fmt: skip
     found = _points(tmp_path, "fanuc-0i-lathe", "M03.", "M30")
     assert [(line, severity) for line, _, severity, _ in found] == [(1, "error")]  # alarm 007, as before
+
+
+@pytest.mark.parametrize(("profile", "said"), [("fanuc-0i", True), ("fanuc-30i", True), ("haas", False)])
+def test_a_mills_g04_p_and_t_with_a_point(tmp_path: Path, profile: str, said: bool) -> None:
+    # FANUC mills take G04's P in ms and T without a point, as the lathe does: G04 P2. is 2 ms, not
+    # the 2 s meant, and is said; on Haas "G04 P10. is a dwell of 10 seconds" (a point is meant)
+    found = _points(tmp_path, profile, "G04 P2.", "T01.", "M06", "M30")
+    assert [message.split(":")[0] for _, _, _, message in found] == (["P2.", "T01."] if said else [])
+    if said:
+        assert "2 ms (0.002 s)" in found[0][3] and "P2000" in found[0][3]

@@ -6,7 +6,7 @@ extension of #100–#199; a machine file narrows it) and #500–#999 kept at pow
 
 from __future__ import annotations
 
-from ..dialect import Dialect
+from ..dialect import ANY_BLOCK, Dialect
 from ..drill_cycle_words import FANUC_DRILL_CYCLE_WORDS
 from ..drill_cycles import FANUC_DRILL_CYCLES
 from ..tables import CommonRange
@@ -35,6 +35,8 @@ PROFILE = Dialect(
     axes=("X", "Y", "Z", "A"),
     modal_defaults={"plane": 17.0, "feed": 94.0},
     coordinate_setting_code=92.0,
+    # §8 letters without a decimal point, as on the lathe (fanuc_0i_lathe.py): T, and G04's P (ms)
+    no_point_words={ANY_BLOCK: "T", 4.0: "P"},
     cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
     drill_cycles=FANUC_DRILL_CYCLES,
     extra_offset_by_g54_p=True,  # "G54.1 Pn or G54 Pn" (0i-MF, adding workpiece coordinate systems)

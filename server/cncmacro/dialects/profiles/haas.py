@@ -940,6 +940,7 @@ M_CODES: tuple[CodeDoc, ...] = (
 
 PROFILE = FANUC_0I.configured(
     extra_offset_by_g54_p=False,  # no source at hand gives G54 Pn
+    no_point_words={},  # G04 P10. is 10 s on Haas (Timing.dwell_p_point_seconds), not a refused point
     name="haas",
     title="Haas NGC mill",
     summary="Haas Next Generation Control (NGC) mills: 5-digit programs, #10000 commons, G154 P1-P99, O9xxx probing",

@@ -21,6 +21,7 @@ PROFILE = FANUC_0I.configured(
     peck_q_alarm=False,  # FANUC's PS0045: the same
     arc_centre_alarm=False,  # FANUC's PS0022: the same
     timing=replace(FANUC_0I.timing, helix_fed_on_arc=False),  # a helix fed along itself: no source says
+    no_point_words={},  # FANUC's decimal-point rule for T and G04 P: no source at hand gives it here
     name="mazak-eia",
     title="Mazak EIA/ISO (Matrix, Smooth)",
     summary="Mazak Mazatrol Matrix/Smooth machining centres in EIA/ISO: Macro B with IF..THEN/ELSE/ENDIF, && and ||",

@@ -20,6 +20,7 @@ PROFILE = FANUC_0I.configured(
     peck_q_alarm=False,  # FANUC's PS0045: the same
     arc_centre_alarm=False,  # FANUC's PS0022: the same
     timing=replace(FANUC_0I.timing, helix_fed_on_arc=False),  # a helix fed along itself: no source says
+    no_point_words={},  # FANUC's decimal-point rule for T and G04 P: no source at hand gives it here
     name="mitsubishi-m70",
     title="Mitsubishi M70/M80 user macro",
     summary="Mitsubishi M70/M80 (M8 series) machining centres: Macro B with IF..THEN/ELSE/ENDIF blocks",
