@@ -64,6 +64,23 @@ def _in(unit: tuple[str, str], letter: str, symbol: str, en: str, zh: str) -> Cy
     return w(letter, symbol, f"{en}, {unit[0]}", f"{zh}，{unit[1]}")
 
 
+def _thread_end_block(unit: tuple[str, str]) -> tuple[CycleWord, ...]:
+    """The second block of G76 (and the GSK980TDi's G78): the end point, the taper, the thread's
+    height, the first cut's depth and the lead."""
+    return (
+        *END_POINT,
+        w(
+            "R",
+            "i",
+            "taper: the thread's radius at its start minus at its end (0: straight)",
+            "锥度：螺纹起点与终点的半径差（0为直螺纹）",
+        ),
+        _in(unit, "P", "k", "height of the thread (a radius)", "螺纹牙高（半径值）"),
+        _in(unit, "Q", "Δd", "depth of the first cut (a radius)", "第一次切削深度（半径值）"),
+        LEAD,
+    )
+
+
 def _stock_removal(
     extra_first: tuple[CycleWord, ...], extra_second: tuple[CycleWord, ...], flags: bool
 ) -> list[CycleWords]:
@@ -152,18 +169,7 @@ def _grooving_and_threading(unit: tuple[str, str]) -> list[CycleWords]:
         _in(unit, "Q", "Δdmin", "minimum depth of cut (a radius)", "最小切削深度（半径值）"),
         w("R", "d", "finishing allowance (a radius)", "精车余量（半径值）"),
     )
-    g76_second = (
-        *END_POINT,
-        w(
-            "R",
-            "i",
-            "taper: the thread's radius at its start minus at its end (0: straight)",
-            "锥度：螺纹起点与终点的半径差（0为直螺纹）",
-        ),
-        _in(unit, "P", "k", "height of the thread (a radius)", "螺纹牙高（半径值）"),
-        _in(unit, "Q", "Δd", "depth of the first cut (a radius)", "第一次切削深度（半径值）"),
-        LEAD,
-    )
+    g76_second = _thread_end_block(unit)
     return [
         two_blocks(
             "G74",
@@ -202,19 +208,7 @@ def _gsk_enhanced_thread(unit: tuple[str, str]) -> CycleWords:
         w("L", "", "starts of the thread, 1-99", "螺纹头数，1～99"),
         w("E", "", "screw-in distance along X (a radius)", "X向旋进距离（半径值）"),
     )
-    second = (
-        *END_POINT,
-        w(
-            "R",
-            "i",
-            "taper: the thread's radius at its start minus at its end (0: straight)",
-            "锥度：螺纹起点与终点的半径差（0为直螺纹）",
-        ),
-        _in(unit, "P", "k", "height of the thread (a radius)", "螺纹牙高（半径值）"),
-        _in(unit, "Q", "Δd", "depth of the first cut (a radius)", "第一次切削深度（半径值）"),
-        LEAD,
-        THREADS_PER_INCH,
-    )
+    second = (*_thread_end_block(unit), THREADS_PER_INCH)
     return two_blocks("G78", first, second, "XZUW", False)
 
 
