@@ -111,3 +111,14 @@ def test_gsk_alarms_on_a_line_within_a_degree_of_parallel(
     assert out.startswith(f"{tmp_path / 'O0001.nc'}:{line}:1: error: ") and out.rstrip().endswith("[drawing-angle]")
     # the move is drawn as written: straight to the end the block gives
     assert ends(result, "X", "Z")[-1] == end
+
+
+def test_a_fanuc_lathes_bare_a_is_the_angle_as_a_comma_a_is(tmp_path: Path) -> None:
+    # 0i-TF with parameter 3405#4 CCR = 0 writes the angle without a comma: G01 X30. A150. from X20
+    # Z0 is 5 mm out on the radius at 150 deg from +Z: 5 / tan 30 = 8.660 toward -Z (Z-8.660). A is no
+    # axis of the profile: the word was dropped and the move went to X30 Z0
+    program = lines("O0001 (cncmacro: dialect=fanuc-0i-lathe)", "G98 G00 X20. Z0", "G01 X30. A150. F100",
+                    "Z-20.", "M30")  # fmt: skip
+    result = run_json(tmp_path, program, "O0001.nc")
+    assert ends(result, "X", "Z") == [(20.0, 0.0), (30.0, round(-5.0 / math.tan(math.radians(30.0)), 6)), (30.0, -20.0)]
+    assert cli("check", str(tmp_path / "O0001.nc"))[:2] == (0, "")

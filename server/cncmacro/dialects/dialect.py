@@ -135,10 +135,11 @@ class Dialect:
     # is absolute (else relative to the start, as G02/G03's I, K) (planner/three_point_arcs.py)
     three_point_arcs: dict[float, bool] = field(default_factory=dict)
     # §8 the angle of direct drawing dimension programming written as an NC word in G00/G01 blocks
-    # (GSK980TDi §3.13: Q, in 0.001°) as (letter, degrees per unit, the tolerance in degrees within
-    # which two lines, or a line and the named axis's, count as parallel: an alarm); None where the
-    # angle is only the corner word ``,A`` (FANUC: parallel lines go straight to the end)
-    drawing_angle: tuple[str, float, float] | None = None
+    # (GSK980TDi §3.13: Q, in 0.001°; FANUC 0i-TF with parameter 3405#4 CCR = 0: A, in degrees) as
+    # (letter, degrees per unit, the tolerance in degrees within which two lines, or a line and the
+    # named axis's, count as parallel: an alarm; None: parallel lines go straight to the end, as
+    # FANUC's do); None where the angle is only the corner word ``,A``
+    drawing_angle: tuple[str, float, float | None] | None = None
     # §8 the cycles the control has whose passes are not simulated (planner/one_shot.py): every word
     # of their blocks is the cycle's (none moves an axis), the tool is left at its start point, and
     # the run notes once a block that the cycle is not simulated (the `not-simulated` information)

@@ -468,7 +468,7 @@ class Planner:
         if plane is None:
             return
         drawing = self.dialect.drawing_angle
-        if drawing is not None:
+        if drawing is not None and drawing[2] is not None:
             names = "".join(next(k for k, i in self.axis_index.items() if i == axis) for axis in plane[:2])
             fault = one_axis_fault(plane, names, named, angle, drawing[2])
             if fault is not None:
@@ -492,7 +492,7 @@ class Planner:
         if plane is None or second is None or mode not in (0.0, 1.0) or not {plane[0], plane[1]} <= named:
             return
         drawing = self.dialect.drawing_angle
-        fault = two_line_fault(first, second, drawing[2]) if drawing is not None else None
+        fault = two_line_fault(first, second, drawing[2]) if drawing is not None and drawing[2] is not None else None
         if fault is not None:
             self.host.note("arc", fault, first_line, DRAWING_ANGLE)
             return

@@ -347,6 +347,7 @@ LATHE = _MILL.configured(
     data_module="fanuc_30i_lathe_data",
     lathe=True,
     lathe_offsets=FANUC_0I_LATHE.lathe_offsets,
+    drawing_angle=FANUC_0I_LATHE.drawing_angle,
     axes=FANUC_0I_LATHE.axes,
     modal_call_codes=FANUC_0I_LATHE.modal_call_codes,
     modal_defaults=FANUC_0I_LATHE.modal_defaults,
