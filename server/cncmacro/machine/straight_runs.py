@@ -206,8 +206,9 @@ def run_straight(
             if (feed_hint and moved and line_mode != 0.0 and (others is not None or not per_rev)
                     and 0.0 < line_f < 1.0 and FEED_HINT_GIVEN not in codes):  # fmt: skip
                 break  # a per-minute feed below 1: the compiled path looks at it (``feed_per_minute_hint``)
-            if moved and line_mode != 0.0 and (line_f <= 0.0 or rate is None or rate <= 0.0 or others is not None
-                                                or speed is not None or line_mode in threads) and missing_feed(
+            # (a line that changes nothing the rate reads, at a rate above 0, has a feed: not asked)
+            if moved and line_mode != 0.0 and (line_f <= 0.0 or not rate or others is not None or speed is not None
+                                                or line_mode in threads) and missing_feed(
                 p, line_f, others is not None or per_rev or line_mode in threads,
                 (codes.get("S") or 0.0) if speed is None else speed,
             ):  # fmt: skip

@@ -469,8 +469,8 @@ class Planner:
             return
         drawing = self.dialect.drawing_angle
         if drawing is not None and drawing[2] is not None:
-            names = "".join(next(k for k, i in self.axis_index.items() if i == axis) for axis in plane[:2])
-            fault = one_axis_fault(plane, names, named, angle, drawing[2])
+            letters = self.dialect.axes
+            fault = one_axis_fault(plane, letters[plane[0]] + letters[plane[1]], named, angle, drawing[2])
             if fault is not None:
                 self.host.note("arc", fault, line, DRAWING_ANGLE)
                 return

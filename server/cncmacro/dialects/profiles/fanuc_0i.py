@@ -6,6 +6,8 @@ extension of #100–#199; a machine file narrows it) and #500–#999 kept at pow
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from ..dialect import ANY_BLOCK, Dialect
 from ..drill_cycle_words import FANUC_DRILL_CYCLE_WORDS
 from ..drill_cycles import FANUC_DRILL_CYCLES
@@ -66,3 +68,17 @@ PROFILE = Dialect(
         helix_fed_on_arc=True,  # "the feedrate along the circumference of two circular interpolated axes"
     ),
 )
+
+# The FANUC-only rules, off where a control of another maker is built on this profile (Haas,
+# Mitsubishi, Mazak): no source at hand gives them there. G54 Pn as G54.1 Pn; the alarms PS0044
+# (G27-G30 in a canned cycle), PS0045 (G73/G83 without Q; Haas pecks by Q or by I, J, K) and PS0022
+# (an arc without R or I, J, K); T and G04's P refused a decimal point (Haas's G04 P10. is 10 s).
+# The helix fed along its arc is one of them too, in the timing: ``OTHER_MAKERS_TIMING``
+OTHER_MAKERS: dict[str, object] = {
+    "extra_offset_by_g54_p": False,
+    "reference_in_cycle_alarm": False,
+    "peck_q_alarm": False,
+    "arc_centre_alarm": False,
+    "no_point_words": {},
+}
+OTHER_MAKERS_TIMING = replace(PROFILE.timing, helix_fed_on_arc=False)  # a helix fed along itself

@@ -29,6 +29,7 @@ from ..drill_cycles import HAAS_DRILL_CYCLES
 from ..haas_programs_data import PROGRAM_DOCS as PROGRAM_DOCS  # the programs on the control, for hover
 from ..tables import CodeDoc, CommonRange, SystemVariable
 from ..timing import Timing
+from .fanuc_0i import OTHER_MAKERS
 from .fanuc_0i import PROFILE as FANUC_0I
 
 AXES = ("X", "Y", "Z", "A", "B", "C")
@@ -939,8 +940,7 @@ M_CODES: tuple[CodeDoc, ...] = (
 # the profile: the 0i's macro language with Haas's numbers, codes and limits
 
 PROFILE = FANUC_0I.configured(
-    extra_offset_by_g54_p=False,  # no source at hand gives G54 Pn
-    no_point_words={},  # G04 P10. is 10 s on Haas (Timing.dwell_p_point_seconds), not a refused point
+    **OTHER_MAKERS,  # the FANUC-only rules off (fanuc_0i.py); G04 P10. is 10 s here (Timing.dwell_p_point_seconds)
     name="haas",
     title="Haas NGC mill",
     summary="Haas Next Generation Control (NGC) mills: 5-digit programs, #10000 commons, G154 P1-P99, O9xxx probing",
@@ -952,10 +952,7 @@ PROFILE = FANUC_0I.configured(
     m98_program_digits=5,
     word_format_alarms=False,
     arc_radius_alarm=False,  # no alarm for it in the manuals at hand: a warning (docs/semantics.md §8, "Arcs")
-    arc_centre_alarm=False,  # FANUC's PS0022: no Haas source at hand gives it (the same)
     cutter_alarms=False,  # no number for the interference or plane alarms in the manuals at hand (§12)
-    reference_in_cycle_alarm=False,  # FANUC's PS0044: no Haas source at hand gives it (§9)
-    peck_q_alarm=False,  # FANUC's PS0045: Haas pecks by Q or by I, J, K (§9)
     keyword_abbreviations=False,
     if_without_then=True,
     conditional_m99=True,

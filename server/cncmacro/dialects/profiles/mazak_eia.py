@@ -11,17 +11,12 @@ macro words shortened to their first two letters or more (``WH`` for WHILE, ``GO
 
 from __future__ import annotations
 
-from dataclasses import replace
-
+from .fanuc_0i import OTHER_MAKERS, OTHER_MAKERS_TIMING
 from .fanuc_0i import PROFILE as FANUC_0I
 
 PROFILE = FANUC_0I.configured(
-    extra_offset_by_g54_p=False,  # no source at hand gives G54 Pn
-    reference_in_cycle_alarm=False,  # FANUC's PS0044: no source at hand gives it here
-    peck_q_alarm=False,  # FANUC's PS0045: the same
-    arc_centre_alarm=False,  # FANUC's PS0022: the same
-    timing=replace(FANUC_0I.timing, helix_fed_on_arc=False),  # a helix fed along itself: no source says
-    no_point_words={},  # FANUC's decimal-point rule for T and G04 P: no source at hand gives it here
+    **OTHER_MAKERS,  # the FANUC-only rules off (fanuc_0i.py)
+    timing=OTHER_MAKERS_TIMING,
     name="mazak-eia",
     title="Mazak EIA/ISO (Matrix, Smooth)",
     summary="Mazak Mazatrol Matrix/Smooth machining centres in EIA/ISO: Macro B with IF..THEN/ELSE/ENDIF, && and ||",
