@@ -172,3 +172,26 @@ def test_a_macro_checked_alone_whose_alarm_depends_on_the_callers_tool_length_is
     assert cli("check", str(_folder(tmp_path, O1001="O1001\nG43 H1 Z50.\nG65 P9100\nM30\n"))) == (0, "", "")
     code, out, _ = cli("check", str(_folder(tmp_path, O1001="O1001\nG65 P9100\nM30\n")))
     assert code == 0 and ": warning: the run reaches macro alarm 3089" in out
+
+
+def test_a_common_set_by_a_gsk_g65_h01_counts_as_set_by_the_program_as_an_assignment_does(tmp_path):
+    # GSK980TDi §3.28.2: H01 is the assignment, so G65 H01 P#100 Q3 sets #100 = 3 as #100=3 does;
+    # H84 jumps to N20 when #100 < 2: 3 < 2 is false on every run, so H99 P15 stops with 5900 + 15
+    # = 5915 every cycle: an error in both forms (it was an error with #100=3, a warning with H01)
+    for setting in ("#100=3", "G65 H01 P#100 Q3", "G65 H02 P#100 Q1 R2"):  # H02: #100 = 1 + 2
+        program = f"O0113\n{setting}\nG65 H84 P20 Q#100 R2\nG65 H99 P15(/USER ALARM)\nN20 M30\n"
+        code, out, _ = cli("check", "--dialect", "gsk980tdi", str(_folder(tmp_path, O0113=program)))
+        assert code == 1, (setting, out)
+        assert ":4:1: error: the run reaches macro alarm 5915: USER ALARM [macro-alarm]" in out, (setting, out)
+
+
+def test_a_gsk_g65_h26_reads_its_p_so_only_a_common_set_before_it_makes_its_alarm_sure(tmp_path):
+    # H26 sets #100 = #100 * Q / R: it reads #100, which the program never set (the operator may
+    # have): the check cannot say where H85 (jump past the alarm when #100 >= 2) goes, so no error
+    program = "O0113\nG65 H26 P#100 Q2 R1\nG65 H85 P20 Q#100 R2\nG65 H99 P15(/USER ALARM)\nN20 M30\n"
+    code, out, _ = cli("check", "--dialect", "gsk980tdi", str(_folder(tmp_path, O0113=program)))
+    assert code == 0 and ": error:" not in out, out
+    # with H01 P#100 Q0.5 first: 0.5 * 2 / 1 = 1, 1 >= 2 is false on every run: an error
+    program = program.replace("O0113\n", "O0113\nG65 H01 P#100 Q0.5\n")
+    code, out, _ = cli("check", "--dialect", "gsk980tdi", str(_folder(tmp_path, O0113=program)))
+    assert code == 1 and ": error: the run reaches macro alarm 5915" in out, out

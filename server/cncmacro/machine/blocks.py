@@ -718,9 +718,12 @@ def _bad_loop_number(word: str, loop: Number) -> Runner:
 
 
 # The NC-block compiler imports this module, so it is imported last.
-def _h_code_result(block: Block, dialect: Dialect) -> int | None:
-    """The variable a gsk980tdi ``G65 Hm P#n Q.. R..`` arithmetic block writes (``P#n``), or None
-    (another block, a macro call, a jump H code, an indirect P)."""
+def h_code_destination(block: Block, dialect: Dialect) -> Var | None:
+    """The variable ``P#n`` a gsk980tdi ``G65 Hm P#n Q.. R..`` arithmetic block writes (H01, the
+    assignment, and every other operation but the jumps and H99), or None (another block, a macro
+    call, a jump H code, an indirect P). The one rule of which variable a macro A block sets: the
+    run reports it as it reports an assignment, and the check counts it as set by the program
+    (analysis/runs/sure_alarms.py)."""
     words = block.words
     if len(words) < 3 or words[0].letter != "G" or not isinstance(words[0].value, Number):
         return None
@@ -730,7 +733,13 @@ def _h_code_result(block: Block, dialect: Dialect) -> int | None:
     h, p = by_letter.get("H"), by_letter.get("P")
     if not isinstance(h, Number) or not isinstance(p, Var):
         return None
-    return p.number if int(h.value) in hcodes.ARITHMETIC or int(h.value) == 26 else None
+    return p if int(h.value) in hcodes.ARITHMETIC or int(h.value) == 26 else None
+
+
+def _h_code_result(block: Block, dialect: Dialect) -> int | None:
+    """The number of the variable a ``G65 Hm P#n`` arithmetic block writes, or None."""
+    destination = h_code_destination(block, dialect)
+    return None if destination is None else destination.number
 
 
 from . import hcodes, nc_blocks  # noqa: E402

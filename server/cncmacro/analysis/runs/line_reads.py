@@ -45,12 +45,15 @@ def written(code: str) -> int | None:
     return int(target.group(2)) if target.group(2).isdigit() else INDIRECT
 
 
-def reads(code: str) -> Iterator[int]:
+def reads(code: str, written_at: int | None = None) -> Iterator[int]:
     """The numbers of the variables ``code`` (comments left out) reads, ``INDIRECT`` for a
-    read through ``#[..]`` or a ``#_`` name."""
+    read through ``#[..]`` or a ``#_`` name. ``written_at``: the column of another ``#`` that is
+    written, not read (a macro A block's ``P#n``)."""
     target = _target(code)
     for ref in _REFERENCE.finditer(code):
         if target is not None and ref.start() == target.start("hash"):
             continue  # the assignment's own target (the index of a #[..]= is read)
+        if ref.start() == written_at:
+            continue
         number = ref.group(1)
         yield int(number) if number.isdigit() else INDIRECT

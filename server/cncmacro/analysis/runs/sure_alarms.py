@@ -21,15 +21,20 @@ does not, the analysis run only guessed it (a ``macro-alarm`` warning):
   went through wrote it (the operator or an earlier program may have left a value there).
 
 Locals count as set by the program: a main program's start vacant, a macro's come from its
-caller's arguments, which the run went through. The lines are read as text
-(``line_reads.py``), in the order the run first ran them.
+caller's arguments, which the run went through. A variable is set by the program where a line
+assigns it (``#100=3``) or, on a control with macro A, where a ``G65 Hm P#n`` operation writes it
+(``G65 H01 P#100 Q3``, ``machine/blocks.py``'s ``h_code_destination``). The lines are read as
+text (``line_reads.py``), in the order the run first ran them.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
 
+from ...machine.blocks import h_code_destination
 from ...machine.expressions import VariableKinds
+from ...syntax.block_parser import parse_block
+from ...syntax.nodes import Number
 from .line_reads import INDIRECT, code_of, reads, written
 
 
@@ -47,7 +52,8 @@ def surely_reached(
     set_by_program: set[int] = set()
     for file, line in path:
         code = code_of(line_text(file, line))
-        for number in reads(code):
+        target, destination_at = _target(code, kinds)
+        for number in reads(code, destination_at):
             if number == INDIRECT:
                 return False
             kind = kinds.kind(number)
@@ -56,7 +62,21 @@ def surely_reached(
                     return False
             if kind not in ("local", "vacant", "common"):
                 return False
-        target = written(code)
         if target is not None and target != INDIRECT:
             set_by_program.add(target)
     return True
+
+
+def _target(code: str, kinds: VariableKinds) -> tuple[int | None, int | None]:
+    """The variable the line ``code`` (comments left out) sets, and the column of the ``#`` of a
+    macro A block's ``P#n`` where it is written and not read (an H26 reads its P too), or None."""
+    target = written(code)
+    if target is not None or not kinds.dialect.h_codes or "65" not in code:
+        return target, None
+    block = parse_block(code)
+    destination = h_code_destination(block, kinds.dialect)
+    if destination is None:
+        return None, None
+    # H26 sets #i to #i * #j / #k: it reads its P as well
+    reads_it = any(w.letter == "H" and isinstance(w.value, Number) and w.value.value == 26.0 for w in block.words)
+    return destination.number, None if reads_it else destination.start
