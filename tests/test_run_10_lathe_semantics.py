@@ -129,6 +129,18 @@ def test_10_1_g10_p0_sets_the_workpiece_shift_the_external_offset(dialect: str, 
     assert [m.C[n] for n in range(100, 105)] == [2.0, -5.0, 52.0, 5.0, -4.0]
 
 
+def test_10_1_gsk_2501_2502_are_the_workpiece_shift_the_machine_position_takes() -> None:
+    """GSK980TDi manual §3.28.1 item 4: #2501/#2502, the X/Z work coordinate system shift, read and
+    write. They are the shift a FANUC lathe's G10 P0 sets (the external work offset, #5201 X and
+    #5203 Z on the GSK's axes X Y Z): #2501=0.4, #2502=#2502-0.15 (0 - 0.15 = -0.15); G00 X100 Z100
+    is machine X 100 + 0.4 = 100.4 (a diameter, as the FANUC shift's X) and Z 100 - 0.15 = 99.85;
+    #5001/#5003 and #5041/#5043 stay 100 (no offset, no tool). They were stored and shifted nothing."""
+    v = final(lines("#2501=0.4", "#2502=#2502-0.15", "G00 X100 Z100", "#100=#5021", "#101=#5023", "#102=#5001",
+                    "#103=#5003", "#104=#5041", "#105=#5043", "#106=#5201", "#107=#5203", "#108=#2502", "M30"),
+              "gsk980tdi")  # fmt: skip
+    assert [v[n] for n in range(100, 109)] == pytest.approx([100.4, 99.85, 100, 100, 100, 100, 0.4, -0.15, -0.15])
+
+
 def test_10_1_fanuc_lathe_offsets_have_short_numbers_for_offsets_1_to_64() -> None:
     v = final(lines("#2701=-200", "#2001=0.1", "#2864=-5", "G10 P10002 X-180 Z-250", "G10 P2 X0.2",
                     "#100=#15001", "#101=#10001", "#102=#16064", "#103=#2702", "#104=#2802", "#105=#2002",

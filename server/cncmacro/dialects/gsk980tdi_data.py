@@ -90,8 +90,32 @@ _TOOL_OFFSETS: tuple[SystemVariable, ...] = tuple(
 _CONTROL: tuple[SystemVariable, ...] = (
     SystemVariable(3901, 3901, "rw", "counters", "Number of parts machined (completed)", "已加工的零件数（已完成）"),
     SystemVariable(3902, 3902, "rw", "counters", "Maximum number of parts to machine", "最大加工件数"),
-    SystemVariable(2501, 2501, "rw", "work", "X work coordinate system shift", "X轴工件坐标系偏移值", "mm"),
-    SystemVariable(2502, 2502, "rw", "work", "Z work coordinate system shift", "Z轴工件坐标系偏移值", "mm"),
+    # the workpiece coordinate system shift, kept as the external work offset of X (#5201, axis 1)
+    # and Z (#5203, axis 3), as a FANUC lathe's G10 P0 keeps it (docs/semantics.md §10.1)
+    SystemVariable(
+        2501,
+        2501,
+        "rw",
+        "work",
+        "X work coordinate system shift (on the diameter); the same value as #5201, the X external "
+        "work offset: the machine position is the program position plus it",
+        "X轴工件坐标系偏移值（直径值）；即#5201（X轴外部工件零点偏移值）：机床位置为编程位置加上此值",
+        "mm",
+        "alias",
+        "5201",
+    ),
+    SystemVariable(
+        2502,
+        2502,
+        "rw",
+        "work",
+        "Z work coordinate system shift; the same value as #5203, the Z external work offset: the "
+        "machine position is the program position plus it",
+        "Z轴工件坐标系偏移值；即#5203（Z轴外部工件零点偏移值）：机床位置为编程位置加上此值",
+        "mm",
+        "alias",
+        "5203",
+    ),
     SystemVariable(
         3000,
         3000,
