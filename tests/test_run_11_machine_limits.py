@@ -241,3 +241,24 @@ def test_a_roughing_cycles_passes_are_timed_at_the_clamped_feed_whether_moves_ar
     for keep in (True, False):
         clamped = clock("F10000.", keep, limits=MachineLimits(feed=5000.0))
         assert clamped == pytest.approx(clock("F5000.", keep)) and clamped > clock("F10000.", keep)
+
+
+def test_a_lathe_t_naming_an_offset_the_profiles_table_lacks_is_ps0030_without_a_limits_table():
+    # GSK980TDi §3.28.1 item 2: offsets 1-32 (#2001-#2032, #2701-#2732...); T0133 names offset 33
+    # (the last two digits), which the control does not have: the alarm stops the run at line 2,
+    # before the move; T0132 is the last one it has. It ran silently before.
+    m = run(lines("T0132", "T0133", "G00 X50 Z5", "M30"), "gsk980tdi")
+    assert m.alarm is not None and (m.alarm.number, m.alarm.line + 1) == (30, 2)
+    assert m.alarm.shown is None  # the GSK manual at hand gives no number for it
+    assert "T133" in m.alarm.message and "offset number 33" in m.alarm.message and "1-32" in m.alarm.message
+    assert not m.planner.moves
+    # the haas-lathe table holds 50 offsets (#2001-#2050 X geometry, #2051- Y geometry): T0151 is 51
+    m = run(lines("T0150", "T0151", "M30"), "haas-lathe")
+    assert m.alarm is not None and (m.alarm.number, m.alarm.line + 1) == (30, 2)
+    # the 0i-TF's table holds 400 (#15001-#15400): any two-digit offset of a T is one of them
+    assert run(lines("T0199", "G00 X50. Z5.", "M30"), "fanuc-0i-lathe").status == "completed"
+    # a machine file's [limits] offsets, where it gives them, is the control's count
+    m = run(lines("T0133", "M30"), "gsk980tdi", limits=MachineLimits(offsets=((1, 40),)))
+    assert m.status == "completed"
+    m = run(lines("T0133", "M30"), "gsk980tdi", limits=MachineLimits(tools=((1, 8),)))  # no offsets: the table's
+    assert m.alarm is not None and m.alarm.number == 30

@@ -253,8 +253,10 @@ CODES: dict[str, Code] = _codes(
                 "移动超出机床文件 [limits] 中的行程（FANUC OT0500/OT0501）。"),
          RUN, (OVERTRAVEL_PLUS, OVERTRAVEL_MINUS)),
     Code("offset-number", ERROR,
-         detail("A D, H or lathe offset number the machine file's [limits] offsets lacks (PS0030).",
-                "机床文件 [limits] offsets 中没有的 D、H 或车床刀补号（PS0030）。"),
+         detail("A D, H or lathe offset number the control lacks: the machine file's [limits] offsets, or for a "
+                "lathe's T without it the profile's offset table (PS0030).",
+                "系统没有的 D、H 或车床刀补号：机床文件 [limits] offsets 之外，"
+                "或车床的 T 在未设定时超出配置的刀补表（PS0030）。"),
          RUN, (OFFSET_NUMBER,)),
     Code("unknown-tool", ERROR,
          detail("A T the machine file's [limits] tools does not hold.", "机床文件 [limits] tools 中没有的刀号 T。"),

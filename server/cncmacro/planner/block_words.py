@@ -16,7 +16,7 @@ from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
 from .cutter_stage import cutter_code
 from .drill_cycles import CYCLE_Q
-from .machine_limits import offset_number, spindle_speed, tool_number
+from .machine_limits import lathe_offset, offset_number, spindle_speed, tool_number
 from .moves import ToolChange
 from .offset_travel import keep_machine_position, vector_changing, work_offsets
 from .spindle_modes import spindle_mode
@@ -91,6 +91,8 @@ def set_codes(p: Planner, other: dict[str, float], file: str, line: int) -> None
     for letter in ("F", "S", "D", "H", "B"):
         if letter in other:
             p.codes[letter] = other[letter]
+    if "T" in other and p.lathe:  # an offset number the control does not have (machine_limits.py)
+        lathe_offset(p, other["T"])
     if p.settings.limits is not None:  # the machine's spindle, tools and offsets (machine_limits.py)
         machine_limits(p, other, file, line)
     if "T" in other:

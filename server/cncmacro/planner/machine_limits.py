@@ -15,7 +15,8 @@ library/limits_settings.py; docs/semantics.md §11).
   speed (cycle_time.py times a feed per revolution with it).
 - **Tools.** A T whose tool (a lathe's: the digits before the offset number) the machine does not
   have is an error note; a D or H, or a lathe's offset number, the control does not have is
-  alarm PS0030.
+  alarm PS0030. A lathe's T is held to the profile's offset table where ``[limits]`` gives no
+  offsets (GSK980TDi: 1–32), with or without a machine file.
 
 The cutting feed's clamp is ``MoveTimes.top_feed`` (cycle_time.py), the rapid rate the timing's.
 """
@@ -32,6 +33,7 @@ from .alarms import MacroAlarm
 from .arcs import ARC_MODES
 from .cycle_time import INCH
 from .positions import WORK_BASE, work_offset_variable
+from .tool_offsets import lathe_offset_number
 
 if TYPE_CHECKING:
     from .moves import Leg
@@ -278,17 +280,12 @@ def _has(ranges: tuple[tuple[int, int], ...], n: int) -> bool:
 
 def tool_number(p: Planner, t: float, line: int) -> None:
     """T: a tool the machine does not have is an error note (once per line); a lathe's offset
-    number the control does not have is alarm PS0030 (``offset_number``)."""
+    number the control does not have is alarm PS0030 (``lathe_offset``, called for every T)."""
     limits = p.settings.limits
     if limits is None:
         return
     n = int(t)
-    if p.lathe:
-        tool, offset = (n // 100, n % 100) if n >= 100 else (n // 10, n % 10)
-        if offset:
-            offset_number(p, "T", t, offset)
-    else:
-        tool = n
+    tool = (n // 100 if n >= 100 else n // 10) if p.lathe else n
     tools = limits.tools
     if tools is None or not tool or _has(tools, tool):
         return
@@ -300,6 +297,38 @@ def tool_number(p: Planner, t: float, line: int) -> None:
     p.host.note("limits", detail(
         f"T{t:g}: the machine has no tool {tool} (its tools: {shown}, [limits] tools)",
         f"T{t:g}：机床没有 {tool} 号刀（可用刀号：{shown}，[limits] tools）"), line, TOOL_NOTE)  # fmt: skip
+
+
+def lathe_offset(p: Planner, t: float) -> None:
+    """A lathe's T whose offset number (its last two digits) the control does not have: alarm
+    PS0030. The offsets it has are the machine file's ``[limits] offsets`` where it gives them,
+    else those of the profile's tables (``table_offsets``)."""
+    offset = lathe_offset_number(t)
+    if not offset:
+        return
+    limits = p.settings.limits
+    if limits is not None and limits.offsets is not None:
+        offset_number(p, "T", t, offset)
+        return
+    ranges = table_offsets(p)
+    if ranges is None or _has(ranges, offset):
+        return
+    shown = _listed(ranges)
+    raise MacroAlarm(OFFSET_NUMBER, detail(
+        f"T{t:g}: offset number {offset} is not one of the control's ({shown})",
+        f"T{t:g}：刀补号 {offset} 不在系统的刀补号之内（{shown}）"))  # fmt: skip
+
+
+def table_offsets(p: Planner) -> tuple[tuple[int, int], ...] | None:
+    """The lathe offset numbers the profile's tables hold: 1 to the last of the row of offset 1's
+    X geometry (GSK980TDi #2701–#2732: 1–32; FANUC 0i-TF #15001–#15400: 1–400); None where the
+    table has no such row."""
+    axes = p.dialect.lathe_offsets.axes
+    if not axes:
+        return None
+    base = axes[0][1]
+    row = p.dialect.system_variable(base + 1)
+    return None if row is None else ((1, row.last - base),)
 
 
 def offset_number(p: Planner, letter: str, value: float, n: int) -> None:
