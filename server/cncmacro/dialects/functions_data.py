@@ -76,9 +76,10 @@ FUNCTIONS: tuple[FunctionDoc, ...] = (
         FUNCTION,
         "ROUND[a]",
         "Rounds half away from zero: to an integer in an assignment or condition (ROUND[2.5] = 3, "
-        "ROUND[-2.5] = -3); inside an NC address to the address's least increment (0.001 mm)",
+        "ROUND[-2.5] = -3); inside an NC address to the address's least increment (0.001 mm, 0.0001 inch "
+        "under G20, 0.001° for A, B, C)",
         "四舍五入（远离零）：在赋值或条件中取整（ROUND[2.5]=3，ROUND[-2.5]=-3）；"
-        "在NC地址中舍入到该地址的最小设定单位（0.001 mm）",
+        "在NC地址中舍入到该地址的最小设定单位（0.001 mm，G20时0.0001 inch，A、B、C为0.001°）",
     ),
     FunctionDoc(
         "FIX",

@@ -26,7 +26,7 @@ from ..dialects.alarms import (
 from ..dialects.dialect import Dialect
 from ..library.programs import LoadedFile
 from ..planner.alarms import UnknownValue
-from ..planner.numbers import format_value, round_half_away, to_increment
+from ..planner.numbers import format_value, increment_places, round_half_away, to_increment
 from ..syntax.nodes import (
     Assign,
     Block,
@@ -617,7 +617,7 @@ class CompiledFile:
         point = isinstance(value, Number) and value.has_point
         if const:
             return True, self.round_for(letter, v, literal=True, point=point)
-        getter = self.addresses.value(value)
+        getter = self.addresses.value(value, letter)
         round_for = self.round_for
         return False, lambda m: round_for(letter, getter(m), literal=False, point=True)
 
@@ -657,11 +657,12 @@ class CompiledFile:
             return round_half_away(v)  # (a lathe whose cycles take D as a depth keeps its decimals)
         if letter == "F":
             return v
+        inch = self.machine.planner.modal.get("units") == 20.0
         if letter in DECIMAL_LETTERS or letter == "D":
-            return to_increment(v, 4 if self.machine.planner.modal.get("units") == 20.0 else 3)
+            return to_increment(v, 4 if inch else 3)
         if literal and not point and self.machine.settings.decimal_point == "increment":
             v = v / 1000.0
-        return to_increment(v, 4 if self.machine.planner.modal.get("units") == 20.0 else 3)
+        return to_increment(v, increment_places(letter, inch))
 
     def nc_block(self, block: Block, pc: int, nxt: int) -> Runner:
         return nc_blocks.compile_nc_block(self, block, pc, nxt)

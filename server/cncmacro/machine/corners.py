@@ -39,7 +39,7 @@ def with_corners(cf: CompiledFile, block: Block, run: Runner) -> Runner:
     ]
     if angle is not None:
         known, literal = cf.addresses.constant(angle.value)
-        get_angle = None if known else cf.addresses.value(angle.value)
+        get_angle = None if known else cf.addresses.value(angle.value, "A")
         alone = not block.words and not block.statements  # ",A1" alone: FANUC's two-block form
 
         def angled(m: Any, pc: int) -> int:

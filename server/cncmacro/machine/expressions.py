@@ -29,7 +29,7 @@ from ..dialects.alarms import (
     VARIABLE_NUMBER,
 )
 from ..planner.alarms import UnknownValue
-from ..planner.numbers import bcd, bin_, fix, fup, round_half_away, to_increment
+from ..planner.numbers import bcd, bin_, fix, fup, increment_places, round_half_away, to_increment
 from ..syntax.nodes import (
     CONDITION_JOINS,
     LOGICAL_SYMBOLS,
@@ -168,6 +168,7 @@ class ExpressionCompiler:
         self.kinds = kinds
         self.dialect = kinds.dialect
         self.in_address = in_address
+        self.letter = "X"  # the address being compiled (``value``), for ROUND in an address
         # For the analysis only: local reads that find a vacant local call
         # ``Machine.vacant_local(n, line)``; ``line`` is set by the block compiler.
         self.watch = watch
@@ -177,11 +178,14 @@ class ExpressionCompiler:
         self.unknowns = unknowns
 
     # ---------------------------------------------------------------- values
-    def value(self, node: Expr) -> Getter:
-        """A closure computing ``node``; brackets nested too deep raise alarm 118."""
+    def value(self, node: Expr, letter: str = "X") -> Getter:
+        """A closure computing ``node``; brackets nested too deep raise alarm 118. ``letter``
+        is the address the value is for (an ``in_address`` compiler's ROUND rounds to its
+        least increment)."""
         too_deep = _too_deep(node)
         if too_deep is not None:
             return too_deep
+        self.letter = letter
         return self._value(node)
 
     def constant(self, node: Expr) -> tuple[bool, Value]:
@@ -432,15 +436,15 @@ class ExpressionCompiler:
             return atan2
         f = _FUNCTIONS[name]
         arg = args[0]
-        if self.unknowns:  # an unknown argument gives an unknown result (even ROUND in an address)
+        if name == "ROUND" and self.in_address:
+            return _round_in_address(arg, self.letter, self.unknowns)
+        if self.unknowns:  # an unknown argument gives an unknown result
 
             def call_unknown(m: Machine) -> Value:
                 x = arg(m) or 0.0
-                return x if x != x else to_increment(x) if name == "ROUND" and self.in_address else f(x)
+                return x if x != x else f(x)
 
             return call_unknown
-        if name == "ROUND" and self.in_address:
-            return lambda m: to_increment(arg(m) or 0.0)
 
         def call(m: Machine) -> Value:
             return f(arg(m) or 0.0)
@@ -597,6 +601,20 @@ def _pow(args: list[Getter], comma: bool) -> Getter:
         return r
 
     return power
+
+
+def _round_in_address(arg: Getter, letter: str, unknowns: bool) -> Getter:
+    """ROUND inside address ``letter``: rounded to the address's least increment in the unit in
+    force (0.001 mm, 0.0001 inch under G20, 0.001° for an angle: Haas 96-8000, "Notes on
+    Functions", docs/semantics.md §3), not to a whole number; an unknown stays unknown."""
+
+    def round_address(m: Machine) -> Value:
+        x = arg(m) or 0.0
+        if unknowns and x != x:
+            return x
+        return to_increment(x, increment_places(letter, m.planner.modal.get("units") == 20.0))
+
+    return round_address
 
 
 def _adp(args: list[Getter], comma: bool) -> Getter:

@@ -3,7 +3,10 @@
 ``round_half_away`` is ROUND (2.5 -> 3, -2.5 -> -3); ``fix`` truncates toward zero and ``fup``
 rounds away from zero. ``to_increment`` rounds an axis value to its least increment (0.001 mm,
 0.0001 inch), deciding ties on the decimal value that was written, so that 1.0005 becomes
-1.001 as on the control and not 1.000 as binary floating point would have it. ``bcd`` and
+1.001 as on the control and not 1.000 as binary floating point would have it;
+``increment_places`` says how many decimals an address's least input increment has (an angle's
+0.001° in either unit) and ``in_least_increments`` reads a number written without a decimal
+point as a count of them (the machine file's ``decimal_point = "increment"``). ``bcd`` and
 ``bin_`` convert between binary and binary-coded decimal. Every function raises
 ``MacroAlarm`` for a value the control would refuse.
 """
@@ -45,6 +48,29 @@ def fix(x: float) -> float:
 def fup(x: float) -> float:
     """FUP: away from zero (FUP[-1.2] = -2, FUP[1.2] = 2)."""
     return float(math.ceil(x)) if x >= 0 else float(math.floor(x))
+
+
+# the addresses whose value is a length or an angle, counted in least input increments when written
+# without a decimal point on a control without calculator-type input (docs/semantics.md §3, §5)
+INCREMENT_LETTERS = frozenset("XYZUVWABCIJKRQ")
+# the angles among them: 0.001° in either unit (Haas 96-8000, "Notes on Functions": "For metric and
+# angle dimensions, three-place precision is the default. For inch, four-place precision")
+ANGLE_LETTERS = frozenset("ABC")
+
+
+def increment_places(letter: str, inch: bool) -> int:
+    """The decimals of address ``letter``'s least input increment: 0.001 mm and 0.001°, 0.0001
+    inch for a length under G20."""
+    return 4 if inch and letter not in ANGLE_LETTERS else 3
+
+
+def in_least_increments(letter: str, value: float, inch: bool) -> float:
+    """``value``, written without a decimal point in address ``letter``, read as least input
+    increments (X10 is 0.010 mm, 0.0010 inch under G20); a letter that is no length or angle
+    (D, E, F, H, M, S, T) keeps its value."""
+    if letter not in INCREMENT_LETTERS:
+        return value
+    return value / _SCALE[increment_places(letter, inch)]
 
 
 def to_increment(x: float, places: int = 3) -> float:
