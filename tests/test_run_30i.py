@@ -166,7 +166,7 @@ def test_30i_atan_with_a_comma_is_atan_with_a_slash() -> None:
     assert got[1] == got[2] == 135.0 and got[3] == 270.0
 
 
-def test_30i_adp_keeps_an_argument_the_machine_passed_as_written(tmp_path: Path) -> None:
+def test_30i_adp_gives_back_the_argument_written_in_both_input_modes(tmp_path: Path) -> None:
     (tmp_path / "O9000.nc").write_text("O9000\n#100=ADP[#24]\nM99\n", encoding="utf-8")
     for mode in ("calculator", "increment"):
         assert final(lines("O0001", "G65 P9000 X10", "M30"), D30, folder=tmp_path, decimal_point=mode)[100] == 10.0

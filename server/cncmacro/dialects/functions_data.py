@@ -334,9 +334,9 @@ EXTRA_FUNCTIONS: tuple[FunctionDoc, ...] = (
         FUNCTION,
         "ADP[a]",
         "Adds the decimal point to an argument written without one, as if X10 had been X10. (not 10 least "
-        "increments); the simulated machine passes arguments as written, so the value stays as it is",
+        "increments); with calculator-type input, or for a value written with a point, the value stays as it is",
         "为不带小数点指定的自变量补上小数点，使X10按X10.读取（而不是10个最小设定单位）；"
-        "模拟机床按原样传递自变量，因此数值不变",
+        "计算器型输入时，或自变量带小数点时，数值不变",
     ),
     FunctionDoc(
         "PRM",

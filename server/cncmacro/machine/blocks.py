@@ -26,7 +26,7 @@ from ..dialects.alarms import (
 from ..dialects.dialect import Dialect
 from ..library.programs import LoadedFile
 from ..planner.alarms import UnknownValue
-from ..planner.numbers import format_value, increment_places, round_half_away, to_increment
+from ..planner.numbers import format_value, in_least_increments, increment_places, round_half_away, to_increment
 from ..syntax.nodes import (
     Assign,
     Block,
@@ -661,7 +661,7 @@ class CompiledFile:
         if letter in DECIMAL_LETTERS or letter == "D":
             return to_increment(v, 4 if inch else 3)
         if literal and not point and self.machine.settings.decimal_point == "increment":
-            v = v / 1000.0
+            v = in_least_increments(letter, v, inch)
         return to_increment(v, increment_places(letter, inch))
 
     def nc_block(self, block: Block, pc: int, nxt: int) -> Runner:

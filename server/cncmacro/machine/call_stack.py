@@ -131,10 +131,20 @@ class CallStack:
             local[k] = v
         frame = Frame(found, cf, start, kind, local, caller.macro_level + 1, pc, nxt, repeats - 1, start,
                       arguments.values, arguments.letters, [], modal)  # fmt: skip
+        frame.increments = arguments.increments
         self.frames.append(frame)
         self.L = local
         self._program_number()
         return -1
+
+    def passed_in_increments(self, n: int, value: float) -> float:
+        """The factor local ``#n`` was divided by when the call passed it in least input
+        increments (an argument without a decimal point, docs/semantics.md §5), while it still
+        holds ``value``, the value passed; 1 otherwise. For ``ADP``."""
+        for f in reversed(self.frames):
+            if f.locals is self.L and f.increments:
+                return f.increments.get(n, 1.0) if f.arguments.get(n) == value else 1.0
+        return 1.0
 
     def subprogram_call(self, found: FoundProgram, repeats: int, q: float | None, pc: int, nxt: int, kind: str) -> int:
         """M98: the caller's locals stay in force; Q starts at a label."""
@@ -285,6 +295,7 @@ class CallStack:
                 tuple(arguments.letters.items()),
                 repeats,
                 self.frames[-1].macro_level,
+                tuple(arguments.increments.items()),
             )
         )
         self.planner.modal["macro"] = 66.0
@@ -301,7 +312,7 @@ class CallStack:
         top = self.modal_calls[-1]
         if any(f.modal is top for f in self.frames):
             return nxt
-        args = Arguments(dict(top.arguments), dict(top.letters))
+        args = Arguments(dict(top.arguments), dict(top.letters), increments=dict(top.increments))
         return self.macro_call(top.found, args, top.repeats, pc, nxt, "G66", modal=top)
 
     def call_code_for(self, values: list[tuple[str, float]]) -> tuple[str, CallCode] | None:

@@ -62,6 +62,9 @@ class Arguments:
     values: dict[int, float | None] = field(default_factory=dict)
     letters: dict[int, str] = field(default_factory=dict)
     remarks: list[str] = field(default_factory=list)
+    # local number -> the factor its value was divided by: an argument written without a decimal
+    # point, read in least input increments (``decimal_point = "increment"``), for ``ADP``
+    increments: dict[int, float] = field(default_factory=dict)
 
 
 def map_arguments(words: Sequence[tuple[str, float | None]], dialect: Dialect) -> Arguments:

@@ -420,6 +420,8 @@ class ExpressionCompiler:
         args = [self._value(a) for a in node.args]
         if name in RANDOM_FUNCTIONS:
             return _random(args, self.unknowns)
+        if name == "ADP":
+            return _adp(args[0], node.args[0])
         if name in _EXTRA:
             return _EXTRA[name](args, node.comma)
         if name == "ATAN" and len(args) == 2:
@@ -617,13 +619,22 @@ def _round_in_address(arg: Getter, letter: str, unknowns: bool) -> Getter:
     return round_address
 
 
-def _adp(args: list[Getter], comma: bool) -> Getter:
-    # ADP undoes the least-increment reading of an argument written without a point (X10 as
-    # 0.010). The simulated machine passes G65/G66 arguments as written in both input modes
-    # (machine/calls.py ``map_arguments``), so there is nothing to undo: the value is kept.
-    # Should arguments ever be scaled, ADP must multiply by the same factor.
-    arg = args[0]
-    return lambda m: arg(m) or 0.0
+def _adp(arg: Getter, node: Expr) -> Getter:
+    """``ADP[#n]`` (fanuc-30i): undoes the least-increment reading of an argument written
+    without a decimal point (``G65 … X10`` passes 0.010 under ``decimal_point = "increment"``,
+    ADP[#24] gives 10 again), while the local still holds the value the call passed
+    (``Machine.passed_in_increments``). Anything else keeps its value."""
+    while isinstance(node, Bracket):
+        node = node.inner
+    if not isinstance(node, Var) or not 1 <= node.number <= 33:
+        return lambda m: arg(m) or 0.0
+    n = node.number
+
+    def adp(m: Machine) -> Value:
+        x = arg(m) or 0.0
+        return x * m.passed_in_increments(n, x)
+
+    return adp
 
 
 def _prm(args: list[Getter], comma: bool) -> Getter:
@@ -647,7 +658,7 @@ def _random(args: list[Getter], unknowns: bool) -> Getter:
     return draw
 
 
-_EXTRA: dict[str, Callable[[list[Getter], bool], Getter]] = {"POW": _pow, "ADP": _adp, "PRM": _prm}
+_EXTRA: dict[str, Callable[[list[Getter], bool], Getter]] = {"POW": _pow, "PRM": _prm}
 
 
 _RELATIONS: dict[str, Callable[[float, float], bool]] = {

@@ -41,6 +41,7 @@ class Frame:
     modal: ModalCall | None = None  # the ModalCall that made this frame, if a G66 did
     written: set[int] | None = None  # analysis runs: the locals this macro level assigned itself
     end_line: int = -1  # a shape cycle's frame: the line of its block N(Q), after which it ends
+    increments: dict[int, float] = field(default_factory=dict)  # ``Arguments.increments``
 
     @property
     def file(self) -> str:
@@ -68,6 +69,7 @@ class ModalCall:
     letters: tuple[tuple[int, str], ...]
     repeats: int
     level: int
+    increments: tuple[tuple[int, float], ...] = ()  # ``Arguments.increments``
 
 
 @dataclass(frozen=True, slots=True)

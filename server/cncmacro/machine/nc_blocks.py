@@ -19,11 +19,13 @@ from typing import TYPE_CHECKING, Any
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, IMPROPER_G_CODE, PROGRAM_NOT_FOUND
 from ..planner.alarms import UnknownValue, is_unknown
+from ..planner.numbers import INCREMENT_LETTERS, in_least_increments, increment_places
 from ..syntax.nodes import Block, Bracket, Number, Var, Word
 from .alarms import MacroAlarm, raiser
 from .block_rules import CALL_WITHOUT_P, BlockProblem, first_alarm, validate_block
 from .calls import (
     BlockCall,
+    argument_targets,
     codes_before_call,
     macro_program_number,
     map_arguments,
@@ -197,6 +199,11 @@ def _macro_call(
     resolve = _program_resolver(cf, p_word, first)
     count = _getter(cf, l_word)
     arg_values = [(w.letter, _getter(cf, w)) for w in args]
+    in_increments = _in_increments(cf, args)
+    if in_increments:
+        arg_values = [(w.letter, _argument_in_increments(w) if i in in_increments else get)
+                      for i, (w, (_, get)) in enumerate(zip(args, arg_values, strict=True))]  # fmt: skip
+    scaled = _locals_in_increments(args, in_increments)
 
     path = cf.file.path
 
@@ -205,6 +212,11 @@ def _macro_call(
             m.planner.execute_nc(before, path, pc)
         found = resolve(m)
         arguments = map_arguments([(letter, get(m)) for letter, get in arg_values], dialect)
+        if scaled:
+            inch = m.planner.modal.get("units") == 20.0
+            arguments.increments = {
+                n: 10.0 ** increment_places(letter, inch) for n, letter in scaled.items() if n in arguments.values
+            }
         notes: list[str] = []
         repeats = repeat_count(count(m), dialect, notes)
         for text in notes:
@@ -252,6 +264,41 @@ def _getter(cf: CompiledFile, w: Word | None) -> Any:
     if w is None or w.value is None:
         return lambda m: None
     return cf.values.value(w.value)
+
+
+def _in_increments(cf: CompiledFile, args: list[Word]) -> frozenset[int]:
+    """The argument words (their indexes) that pass least input increments: literal numbers
+    without a decimal point in a length or angle address, where the machine reads numbers so
+    (``decimal_point = "increment"``; FANUC 16i/18i B-63684EN §16 "Position of the decimal
+    point": "The units used for argument data passed without a decimal point correspond to the
+    least input increment of each address"). The same rule as an NC word's (``round_for``)."""
+    if cf.machine.settings.decimal_point != "increment":
+        return frozenset()
+    return frozenset(
+        i for i, w in enumerate(args)
+        if isinstance(w.value, Number) and not w.value.has_point and w.letter.upper() in INCREMENT_LETTERS
+    )  # fmt: skip
+
+
+def _argument_in_increments(w: Word) -> Any:
+    """The getter of argument word ``w`` read in least input increments of the unit in force."""
+    assert isinstance(w.value, Number)
+    letter, written = w.letter.upper(), w.value.value
+    return lambda m: in_least_increments(letter, written, m.planner.modal.get("units") == 20.0)
+
+
+def _locals_in_increments(args: list[Word], in_increments: frozenset[int]) -> dict[int, str]:
+    """The locals that end up holding an argument passed in least input increments (a later
+    word on the same local wins, as in ``map_arguments``), with its letter."""
+    out: dict[int, str] = {}
+    for i, n in enumerate(argument_targets([w.letter for w in args])):
+        if n is None:
+            continue
+        if i in in_increments:
+            out[n] = args[i].letter.upper()
+        else:
+            out.pop(n, None)
+    return out
 
 
 def _program_resolver(cf: CompiledFile, p_word: Word | None, missing: BlockProblem | None) -> Any:
