@@ -39,6 +39,8 @@ _SIGNALS: tuple[SystemVariable, ...] = (
         "Interface input signals UI000-UI015 (PMC G54-G55) read at once as one 16-bit number: "
         "the sum of #[1000+i] x 2^i",
         "接口输入信号UI000～UI015（PMC G54～G55）作为一个16位数一次读出，等于#[1000+i]×2^i之和",
+        source="bits",
+        param="1000:16",
     ),
     *shared.signal_bits(
         1100,
@@ -57,6 +59,8 @@ _SIGNALS: tuple[SystemVariable, ...] = (
         "Interface output signals UO000-UO015 (PMC F54-F55) written at once as one 16-bit number; "
         "bit i is the same signal as #[1100+i]",
         "接口输出信号UO000～UO015（PMC F54～F55）作为一个16位数一次写出，第i位即#[1100+i]",
+        source="bits",
+        param="1100:16",
     ),
     SystemVariable(
         1133,

@@ -35,13 +35,20 @@ def _bit_rows(first: int, letter: str, en_kind: str, zh_kind: str) -> tuple[Syst
 
 
 def _byte_pair_row(number: int, letter: str, low: int, en_kind: str, zh_kind: str) -> SystemVariable:
+    """Two bytes of signals read as one number; bytes 54 and 55 are the signals #(number - 32)…
+    one bit each (``_bit_rows``), so that row reads them (``source="bits"``)."""
+    bits = number - 32 if low == 54 else None
     return SystemVariable(
         number,
         number,
         "r",
         "signals",
-        f"{en_kind} signals {letter}{low} and {letter}{low + 1}: the state of both bytes read at once as one number",
-        f"{zh_kind}信号{letter}{low}、{letter}{low + 1}两字节的状态，作为一个数一次读出",
+        f"{en_kind} signals {letter}{low} and {letter}{low + 1}: the state of both bytes read at once as one number"
+        + (f"; bit i is #[{bits}+i]" if bits else ""),
+        f"{zh_kind}信号{letter}{low}、{letter}{low + 1}两字节的状态，作为一个数一次读出"
+        + (f"；第i位即#[{bits}+i]" if bits else ""),
+        source="bits" if bits else "store",
+        param=f"{bits}:16" if bits else "",
     )
 
 

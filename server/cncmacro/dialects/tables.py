@@ -26,6 +26,8 @@ SOURCES = {
     "alias": "another number for a stored variable (param: the number that k = 0 maps to)",
     "constant": "a fixed value that nothing changes: the row's default (vacant for #3100, π, e)",
     "main": "the number of the main program (the O number the run started in)",
+    "bits": "the single-bit signals #first… read and written at once as one number, bit i the signal"
+    " #(first + i) (param: 'first:count'; a 32-bit word is signed, bit 31 its sign)",
 }
 
 # The modal groups a ``modal`` row may name, with the code each holds at power-on.

@@ -38,6 +38,8 @@ class VariableSets:
 
         def read_system(self, n: int) -> Value: ...
 
+        def set_signal_word(self, param: str, value: Value) -> None: ...
+
     def apply_presets(self, presets: dict[int, float]) -> None:
         """Set variables before the run (``--set``, the machine file). Offsets and other
         stored system variables may be preset even where a program may not write them;
@@ -58,6 +60,8 @@ class VariableSets:
                 assert row is not None
                 if row.source == "alias":
                     self.S[int(row.param) + n - row.first] = v
+                elif row.source == "bits":  # the signals it is made of
+                    self.set_signal_word(row.param, v)
                 elif row.source in ("store", "date", "time", "timer"):
                     self.S[n] = v
                 else:

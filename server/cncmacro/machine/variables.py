@@ -183,6 +183,8 @@ class VariableAccess:
         if source == "store":
             machine_has = row.group in KEPT_GROUPS or is_input_row(row.group, row.access)
             return self.S.get(n, UNKNOWN if self.kept_unknown and machine_has else row.default)
+        if source == "bits":
+            return self.signal_word(row.param)
         if source == "alias":
             target = int(row.param) + k
             target_row = self.dialect.system_variable(target)
@@ -222,12 +224,38 @@ class VariableAccess:
         if source == "stop":
             raise StopRequest(message or f"#{n}={round_half_away(value or 0.0):g}")
         self.written_system.add(n)
-        if source == "alias":
+        if source == "bits":
+            self.set_signal_word(row.param, value)
+        elif source == "alias":
             self.S[int(row.param) + (n - row.first)] = value
         elif source == "timer":
             self.set_timer(n, row.param, value or 0.0)
         else:
             self.S[n] = value
+
+    # ---------------------------------------------------------------- signal words
+    def signal_word(self, param: str) -> Value:
+        """The single-bit signals a ``bits`` row names (``first:count``) read as one number: the
+        sum of #(first + i) × 2^i (FANUC 0i: "#1032 … the sum of #[1000+i] x 2^i"); a 32-bit
+        word is signed, bit 31 its sign. Unknown when a bit is."""
+        first, count = _bits_param(param)
+        total = 0.0
+        for i in range(count):
+            bit = self.read_system(first + i)
+            if bit is not None and bit != bit:
+                return bit
+            if bit:
+                total += 2.0**i
+        return total - 2.0**32 if count == 32 and total >= 2.0**31 else total
+
+    def set_signal_word(self, param: str, value: Value) -> None:
+        """Write the single-bit signals a ``bits`` row names from one number: bit i of its whole
+        value (two's complement for a negative one) to #(first + i)."""
+        first, count = _bits_param(param)
+        word = int(round_half_away(value or 0.0)) & ((1 << count) - 1)
+        for i in range(count):
+            self.S[first + i] = float(word >> i & 1)
+            self.written_system.add(first + i)
 
     # ---------------------------------------------------------------- the clock
     def timer_value(self, n: int, unit: str) -> float:
@@ -250,3 +278,9 @@ class VariableAccess:
                              t % 100 % 60)  # fmt: skip
         now = start + _dt.timedelta(seconds=self.planner.clock)
         return now.year * 10000 + now.month * 100 + now.day, now.hour * 10000 + now.minute * 100 + now.second
+
+
+def _bits_param(param: str) -> tuple[int, int]:
+    """A ``bits`` row's param, ``first:count``."""
+    first, count = param.split(":")
+    return int(first), int(count)

@@ -38,14 +38,21 @@ AXES = 4
 
 
 def _words(first: int, access: str, kind: str, prefix: str, en: str, zh: str) -> tuple[SystemVariable, ...]:
+    """The four 32-bit words; the first holds the signals #(first - 32)… one bit each
+    ({prefix}000–{prefix}031: the same signals, ``source="bits"``)."""
+    bits = first - 32
     return tuple(
         SystemVariable(
             first + k,
             first + k,
             access,
             "signals",
-            f"Interface {kind} signals {prefix}{k}00-{prefix}{k}31 as one 32-bit number; {en}",
-            f"接口{'输入' if kind == 'input' else '输出'}信号{prefix}{k}00～{prefix}{k}31作为一个32位数，{zh}",
+            f"Interface {kind} signals {prefix}{k}00-{prefix}{k}31 as one 32-bit number; {en}"
+            + (f"; bit i is the same signal as #[{bits}+i]" if k == 0 else ""),
+            f"接口{'输入' if kind == 'input' else '输出'}信号{prefix}{k}00～{prefix}{k}31作为一个32位数，{zh}"
+            + (f"；第i位即#[{bits}+i]" if k == 0 else ""),
+            source="bits" if k == 0 else "store",
+            param=f"{bits}:32" if k == 0 else "",
         )
         for k in range(4)
     )
