@@ -103,6 +103,11 @@ def test_every_row_is_well_formed(dialect):
             assert r.param in PARAMS[r.source], where
         elif r.source == "alias":
             assert r.param.isdigit(), where
+        elif r.source == "bits":  # the single-bit signal rows the word is made of
+            first, count = (int(x) for x in r.param.split(":"))
+            assert count in (16, 32) and r.first == r.last, where
+            bits = [get_dialect(dialect).system_variable(first + i) for i in range(count)]
+            assert all(b is not None and b.first == b.last and b.group == "signals" for b in bits), where
         else:
             assert r.param == "", where
         assert r.unit in {"", "mm", "s", "ms", "h"}, where
@@ -156,10 +161,10 @@ def test_aliases_point_at_stored_variables_of_the_same_access(dialect):
     [
         (1000, "r", "store", ""),
         (1015, "r", "store", ""),
-        (1032, "r", "store", ""),
+        (1032, "r", "bits", "1000:16"),  # the sum of #[1000+i] x 2^i
         (1100, "rw", "store", ""),
         (1115, "rw", "store", ""),
-        (1132, "rw", "store", ""),
+        (1132, "rw", "bits", "1100:16"),  # bit i is #[1100+i]
         (1133, "rw", "store", ""),
         (10001, "rw", "store", ""),
         (11400, "rw", "store", ""),
@@ -303,7 +308,7 @@ def test_fanuc_modal_rows_cover_groups_1_to_22():
     [
         (1000, "r", "store", ""),
         (1015, "r", "store", ""),
-        (1032, "r", "store", ""),
+        (1032, "r", "bits", "1000:16"),  # G54/G55: #1000-#1015
         (1034, "r", "store", ""),
         (1100, "r", "store", ""),
         (1134, "r", "store", ""),
