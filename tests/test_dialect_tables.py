@@ -33,7 +33,7 @@ ACCESS = {"r", "w", "rw"}
 GROUPS = {"signals", "tool", "work", "alarm", "time", "control", "counters", "modal", "position"}
 PARAMS = {
     "timer": {"ms", "s", "h"},
-    "position": {"end", "machine", "current", "skip", "tool", "servo", "handle"},
+    "position": {"end", "machine", "current", "skip", "skip_programmed", "tool", "servo", "handle"},
     "code": set("FSTMDHBNOP"),
 }
 PLACEHOLDERS = {"axis", "index"}

@@ -22,13 +22,18 @@ SOURCES = {
     "time": "the time of day as HHMMSS",
     "modal": "the modal G code of a group (param: the group's name in MODAL_GROUPS)",
     "code": "the last F, S, T, M, D, H, B, N, O or P value (param: the letter)",
-    "position": "an axis position (param: 'end', 'machine', 'current', 'skip', 'tool', 'servo', 'handle'); axis k+1",
+    "position": "an axis position (param: 'end', 'machine', 'current', 'skip', 'skip_programmed', 'tool', 'servo', "
+    "'handle'); axis k+1",
     "alias": "another number for a stored variable (param: the number that k = 0 maps to)",
     "constant": "a fixed value that nothing changes: the row's default (vacant for #3100, π, e)",
     "main": "the number of the main program (the O number the run started in)",
     "bits": "the single-bit signals #first… read and written at once as one number, bit i the signal"
     " #(first + i) (param: 'first:count'; a 32-bit word is signed, bit 31 its sign)",
 }
+
+# The ``position`` kinds that read where the last G31 stopped: with the tool offset in force there
+# (FANUC's table: "included", as the current position #5041…) or as programmed (Haas's, as its #5041).
+SKIP_POSITIONS = frozenset({"skip", "skip_programmed"})
 
 # The modal groups a ``modal`` row may name, with the code each holds at power-on.
 MODAL_GROUPS = {

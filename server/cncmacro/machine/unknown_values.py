@@ -33,6 +33,8 @@ import math
 import re
 from typing import TYPE_CHECKING
 
+from ..dialects.tables import SKIP_POSITIONS
+
 if TYPE_CHECKING:
     from ..dialects import Dialect
     from ..library.skip_model import SkipModel
@@ -113,7 +115,7 @@ def is_skip_position(n: int, dialect: Dialect) -> bool:
     if any(number == n for _, number in dialect.skip_commons):
         return True
     row = dialect.system_variable(n)
-    return row is not None and row.source == "position" and row.param == "skip"
+    return row is not None and row.source == "position" and row.param in SKIP_POSITIONS
 
 
 def is_tool(n: int, dialect: Dialect) -> bool:

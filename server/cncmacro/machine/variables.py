@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
 from ..dialects.alarms import MAX_VALUE, NAME_SUBSCRIPT, NO_VARIABLE_NAME, OVERFLOW, VARIABLE_NUMBER, WRITE_PROTECTED
-from ..dialects.tables import SystemVariable
+from ..dialects.tables import SKIP_POSITIONS, SystemVariable
 from ..planner.numbers import round_half_away
 from .alarms import MacroAlarm, macro_alarm_number
 from .unknown_values import KEPT_GROUPS, UNKNOWN, is_input_row, kept_extended, touch_unknown
@@ -194,7 +194,8 @@ class VariableAccess:
         if source in ("modal", "code", "position"):  # the planner's state (planner/planner.py)
             if source == "code" and row.param == "T" and self.kept_unknown and self.planner.codes.get("T") is None:
                 return UNKNOWN  # the tool loaded before the program commands one: the machine knows it
-            if source == "position" and row.param == "skip" and touch_unknown(self.kept_unknown, self.settings.skip):
+            skip = source == "position" and row.param in SKIP_POSITIONS
+            if skip and touch_unknown(self.kept_unknown, self.settings.skip):
                 return UNKNOWN  # where a G31 touched: the machine finds it, a [skip] table says it here
             return self.planner.read(source, row.param, row.default, k)
         if source == "timer":

@@ -36,8 +36,9 @@ def machine_position(p: Planner, axis: int) -> float:
 
 def position_value(p: Planner, which: str, axis: int) -> float | None:
     """Axis ``axis``'s position of a kind (the profile's position rows: the block end point without
-    the tool offset, the current position and machine coordinates with it, the skip position, the
-    tool vector; docs/semantics.md §10.1). On a lathe X reads as a diameter in each of them."""
+    the tool offset, the current position, machine coordinates and the skip position with it, the
+    skip position as programmed, the tool vector; docs/semantics.md §8, §10.1). On a lathe X reads
+    as a diameter in each of them."""
     if axis >= len(p.pos):
         return 0.0
     if which == "end":  # the programmed end point: without the tool offset
@@ -46,7 +47,10 @@ def position_value(p: Planner, which: str, axis: int) -> float | None:
         return p.pos[axis] + p.tool_vector[axis]
     if which == "machine":
         return machine_position(p, axis)
-    if which == "skip":
+    if which == "skip":  # where a G31 stopped, with the tool offset in force there (FANUC's table: included)
+        tool = p.skip_state.tool
+        return p.skip_pos[axis] + (tool[axis] if axis < len(tool) else 0.0)
+    if which == "skip_programmed":  # the same, the programmed point (Haas, as its #5041 reads)
         return p.skip_pos[axis]
     if which == "tool":
         return p.tool_vector[axis]

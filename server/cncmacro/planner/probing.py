@@ -7,7 +7,8 @@ says where that is: the next unused contact point of its sequence, else the firs
 its model the move reaches (the smallest fraction of the way along it; surfaces at the same
 place in the order they are written). When nothing is hit the move runs to its end point and
 the signal stays off, as on the control. Either way #5061… (``Planner.skip_pos``, read through
-the profile's "skip" position rows) hold where the move ended, in work coordinates: seed 003
+the profile's skip position rows) hold where the move ended, in work coordinates, with the tool
+offset in force there where the profile's row says so (``positions.position_value``): seed 003
 §4.9, "在G31(跳转功能)程序段中跳转信号接通时的刀具位置储存在变量#5061到#5064中。当G31程序段中
 的跳转信号未接通时，这些变量中储存的是指令的程序段终点值". A control that stores it in common
 variables instead (``Dialect.skip_commons``: the GSK980TDi's #995–#999, §3.16.2, "跳转信号变为"1"
@@ -41,10 +42,12 @@ _SHAPE_NAMES = {"bore": detail("bore", "孔"), "boss": detail("boss", "凸台")}
 
 @dataclass(frozen=True, slots=True)
 class SkipState:
-    """How many contact points of the machine file's sequence the run's G31 blocks have taken
-    (part of a snapshot: going back gives them back)."""
+    """How many contact points of the machine file's sequence the run's G31 blocks have taken,
+    and the tool offset (the tool vector) in force where the last G31 stopped (part of a
+    snapshot: going back gives them back)."""
 
     contacts_used: int = 0
+    tool: tuple[float, ...] = ()
 
 
 class Probe(NamedTuple):
@@ -64,12 +67,12 @@ def skip_block(m: Planner, target: list[float], file: str, line: int) -> None:
     start = list(m.pos)
     end, what = skip_end(m.settings.skip, m.axis_index, start, target, m.skip_state.contacts_used)
     used = m.skip_state.contacts_used + (m.skip_state.contacts_used < len(m.settings.skip.contacts))
-    m.skip_state = SkipState(used)
     if m.record_moves:  # a run for its diagnostics keeps neither moves nor these
         m.probes.append(Probe(file, line, len(m.moves), tuple(end), what is not None))
         m.host.note("skip", _note(m, start, end, what), line)
     m.move(file, line, SKIP_MODE, end)
     m.skip_pos = list(m.pos)
+    m.skip_state = SkipState(used, tuple(m.tool_vector))  # the offset the "skip" rows add (positions.py)
     if m.dialect.skip_commons:  # the GSK980TDi's #995…: where the signal came on, as the program writes it
         index = m.axis_index
         stored = [(n, m.pos[index[a]]) for a, n in m.dialect.skip_commons if a in index]

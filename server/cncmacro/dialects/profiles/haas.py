@@ -461,9 +461,10 @@ _POSITION_KINDS = (
     # Haas's present work position is read as the programmed one, without the tool length offset
     # (docs/profiles.md, haas); FANUC's #5041 includes it (docs/semantics.md §10.1)
     (5041, "end", "present position, work coordinates", "当前位置（工件坐标系）"),
+    # its skip position is read in the same frame as its present work position: as programmed
     (
         5061,
-        "skip",
+        "skip_programmed",
         "where the skip signal came on in the last G31 (its end point if it never did), work coordinates",
         "上一个G31中跳转信号接通的位置（未接通时为该段终点，工件坐标系）",
     ),
