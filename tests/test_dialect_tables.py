@@ -225,7 +225,7 @@ def test_fanuc_spot_checks(number, access, source, param):
 
 @pytest.mark.parametrize(
     "number",
-    [1016, 1031, 1116, 1134, 2401, 2499, 2507, 3005, 3101, 4000, 4023, 4101, 4131, 4201, 5005, 5125, 5205, 5325, 7005,
+    [1016, 1031, 1116, 1134, 2401, 2499, 2507, 3008, 3101, 4000, 4023, 4101, 4131, 4201, 5005, 5125, 5205, 5325, 7005,
      7945, 10401, 14001, 100001],
 )  # fmt: skip
 def test_fanuc_numbers_that_do_not_exist(number):
@@ -244,6 +244,7 @@ def test_fanuc_covers_exactly_chapter_4_and_the_handle_interruption():
     expected = spans((1000, 1015), (1032, 1032), (1100, 1115), (1132, 1133))  # §4.1, MIF = 0
     expected |= spans((10001, 10400), (11001, 11400), (12001, 12400), (13001, 13400), (2001, 2400))  # §4.2
     expected |= {3000, 3006, 3001, 3002, 3011, 3012, 3003, 3004, 3901, 3902}  # §4.3-§4.7
+    expected |= {3005, 3007}  # settings and mirror image: the 0i's macro chapter has them, the seed leaves them out
     expected |= spans((4001, 4022)) | {4102, 4107, 4109, 4111, 4113, 4114, 4115, 4119, 4120, 4130}  # §4.8
     expected |= spans(*((first, first + 3) for first in range(5001, 5102, 20)))  # §4.9
     expected |= spans((5121, 5124))  # manual handle interruption: a 0i has it, the seed leaves it out

@@ -420,10 +420,39 @@ _WORK_OFFSETS: tuple[SystemVariable, ...] = (
     ),
 )
 
+# Not in seed 003: the setting data and the mirror image state, which the 0i's custom macro chapter
+# lists after the automatic operation control (#3003, #3004): "SETTING 值：SETTING 值可用变量读和写。
+# 二进制数转换为十进制数。" (the settings are read and written, binary converted to decimal) and
+# "镜像：使用外部开关或SETTING 操作设置的各轴镜像状态…" (the mirror image state of each axis, set by an
+# external switch or on the setting screen; read). Stored values here, 0 unless the machine file
+# gives them. Not in ``_CONTROL``: Haas, Mitsubishi and Mazak take rows from that, and no source at
+# hand gives these numbers there.
+SETTINGS_AND_MIRROR: tuple[SystemVariable, ...] = (
+    SystemVariable(
+        3005,
+        3005,
+        "rw",
+        "control",
+        "Settings data as a number: each bit is one setting (TV check, ISO code for punching, inch input, ...); "
+        "writing changes the settings",
+        "设定数据（作为一个数）：每一位是一项设定（TV检查、穿孔代码ISO、英制输入等）；写入即改变设定",
+    ),
+    SystemVariable(
+        3007,
+        3007,
+        "r",
+        "control",
+        "Mirror image state: bit n-1 is 1 while axis n is mirrored by the external switch or the setting screen "
+        "(read only)",
+        "镜像状态：第n轴由外部开关或设定画面设为镜像时，第n-1位为1（只读）",
+    ),
+)
+
 SYSTEM_VARIABLES: tuple[SystemVariable, ...] = (
     *_SIGNALS,
     *_TOOL_OFFSETS,
     *_CONTROL,
+    *SETTINGS_AND_MIRROR,
     *_MODAL,
     *_POSITIONS,
     *_WORK_OFFSETS,

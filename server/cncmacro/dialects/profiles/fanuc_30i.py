@@ -9,7 +9,7 @@ decisions" says where each comes from and what is still to be confirmed):
 * 32 interface signals each way, bit by bit (#1000–#1031, #1100–#1131) and four 32-bit words
   (#1032–#1035, #1132–#1135): the layout seed 003 §4.1 gives for parameter MIF = 1;
 * 999 tool offsets in memory C (#10001–#13999) instead of 400;
-* #3005 settings, #3007 mirror image state, #3008 program restart, and the constants #3100
+* #3008 program restart (#3005 settings and #3007 mirror image state are the 0i's rows), and the constants #3100
   (vacant), #3101 (π) and #3102 (e), which cannot be written;
 * #4000 main program number, 30 modal groups (#4001–#4030) and the same information for the
   block being executed (#4201–#4230, #4302–#4330);
@@ -85,23 +85,7 @@ _TOOL_OFFSETS: tuple[SystemVariable, ...] = (
 
 _CONTROL: tuple[SystemVariable, ...] = (
     *fanuc._CONTROL,
-    SystemVariable(
-        3005,
-        3005,
-        "rw",
-        "control",
-        "Settings data as a number: each bit is one setting (TV check, ISO code for punching, inch input, ...); "
-        "writing changes the settings",
-        "设定数据（作为一个数）：每一位是一项设定（TV检查、穿孔代码ISO、英制输入等）；写入即改变设定",
-    ),
-    SystemVariable(
-        3007,
-        3007,
-        "r",
-        "control",
-        "Mirror image state: bit n-1 is 1 while axis n is mirrored (by setting, signal or G51.1)",
-        "镜像状态：第n轴处于镜像（设定、信号或G51.1）时，第n-1位为1",
-    ),
+    *fanuc.SETTINGS_AND_MIRROR,
     SystemVariable(
         3008,
         3008,
