@@ -30,6 +30,7 @@ from ..dialects import get_dialect
 from ..dialects.alarms import DECIMAL_POINT, FORMAT, IMPROPER_G_CODE
 from ..dialects.dialect import ANY_BLOCK
 from ..planner.modal_groups import extra_offset_codes
+from ..planner.numbers import round_half_away
 from ..syntax.nodes import LOGICAL_SYMBOLS, Number, Word
 from .word_sets import WordSet
 
@@ -116,9 +117,11 @@ def point_refused(word: Word, gs: tuple[float, ...], letters: frozenset[str], di
     if code is None and letter not in table.get(ANY_BLOCK, ""):
         return None
     whole = text.split(".")[0] or "0"
-    if code is None:  # T
-        reading = detail(f"T{round(v)}", f"T{round(v)}")
-        fix = detail(f"{letter}{whole}", f"{letter}{whole}")
+    if code is None:  # T, S: whole numbers, rounded half away from zero as a value from a variable is
+        shown = f"{letter}{int(round_half_away(v))}"
+        reading = detail(f"{shown}", f"{shown}")
+        written = f"{letter}{whole}" if v == int(v) else shown  # T0101. -> T0101, S1000.5 -> S1001
+        fix = detail(f"{written}", f"{written}")
     elif code == 4.0:
         reading = detail(f"{v:g} ms ({v / 1000:g} s)", f"{v:g} 毫秒（{v / 1000:g} 秒）")
         fix = detail(f"P{v * 1000:g} or X{v:g} for {v:g} s", f"P{v * 1000:g} 或 X{v:g}（{v:g} 秒）")
@@ -131,9 +134,8 @@ def point_refused(word: Word, gs: tuple[float, ...], letters: frozenset[str], di
         mm = f"{v * 0.001:.7f}".rstrip("0").rstrip(".")  # 0.00005, not 5e-05
         reading = detail(f"{v:g} least input increments, {mm} mm", f"{v:g} 个最小输入增量，即 {mm} 毫米")
         fix = detail(f"{letter}{v * 1000:g} for {v:g} mm", f"{letter}{v * 1000:g}（即 {v:g} 毫米）")
-    where = (
-        detail("T", "T") if code is None else detail(f"G{int(code):02d}'s {letter}", f"G{int(code):02d} 的 {letter}")
-    )
+    g = f"G{int(code):02d}" if code is not None else ""
+    where = detail(f"{letter}", f"{letter}") if code is None else detail(f"{g}'s {letter}", f"{g} 的 {letter}")
     return detail(
         f"{letter}{text}: {dialect.title} takes {where} without a decimal point; the run reads it as {reading}: "
         f"write {fix}",

@@ -37,8 +37,9 @@ PROFILE = Dialect(
     axes=("X", "Y", "Z", "A"),
     modal_defaults={"plane": 17.0, "feed": 94.0},
     coordinate_setting_code=92.0,
-    # §8 letters without a decimal point, as on the lathe (fanuc_0i_lathe.py): T, and G04's P (ms)
-    no_point_words={ANY_BLOCK: "T", 4.0: "P"},
+    # §8 letters without a decimal point, as on the lathe (fanuc_0i_lathe.py): T, S (one place where
+    # parameter 3451#2 allows it), and G04's P (ms)
+    no_point_words={ANY_BLOCK: "TS", 4.0: "P"},
     cycle_codes=frozenset({73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0}),
     drill_cycles=FANUC_DRILL_CYCLES,
     extra_offset_by_g54_p=True,  # "G54.1 Pn or G54 Pn" (0i-MF, adding workpiece coordinate systems)
@@ -72,7 +73,7 @@ PROFILE = Dialect(
 # The FANUC-only rules, off where a control of another maker is built on this profile (Haas,
 # Mitsubishi, Mazak): no source at hand gives them there. G54 Pn as G54.1 Pn; the alarms PS0044
 # (G27-G30 in a canned cycle), PS0045 (G73/G83 without Q; Haas pecks by Q or by I, J, K) and PS0022
-# (an arc without R or I, J, K); T and G04's P refused a decimal point (Haas's G04 P10. is 10 s).
+# (an arc without R or I, J, K); T, S and G04's P refused a decimal point (Haas's G04 P10. is 10 s).
 # The helix fed along its arc is one of them too, in the timing: ``OTHER_MAKERS_TIMING``
 OTHER_MAKERS: dict[str, object] = {
     "extra_offset_by_g54_p": False,

@@ -41,13 +41,13 @@ PROFILE = replace(
     lathe_cycles=FANUC_LATHE_CYCLES,
     cycle_words=FANUC_LATHE_CYCLE_WORDS,
     cycle_rules=FANUC_LATHE_RULES,
-    # §8 letters without a decimal point: T; G04's P (ms); the P and Q of G70-G76 (sequence numbers,
+    # §8 letters without a decimal point: T; S; G04's P (ms); the P and Q of G70-G76 (sequence numbers,
     # least input increments, G76's digits m r a)
     # a bare A in G00/G01 is the direct drawing angle, as ,A is (parameter 3405#4 CCR = 0: "A", "C",
     # "R" without a comma; the profile's axes have no A, so the word was dropped); parallel lines
     # go straight to the end
     drawing_angle=("A", 1.0, None),
-    no_point_words={ANY_BLOCK: "T", 4.0: "P", **dict.fromkeys((70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0), "PQ")},
+    no_point_words={ANY_BLOCK: "TS", 4.0: "P", **dict.fromkeys((70.0, 71.0, 72.0, 73.0, 74.0, 75.0, 76.0), "PQ")},
     # typical of a small slant-bed lathe; a machine file gives the machine's own (parameter 1420)
     timing=Timing(
         rapid={"X": 12000.0, "Z": 15000.0, "C": 10800.0, "Y": 8000.0},
