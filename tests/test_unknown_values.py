@@ -255,3 +255,35 @@ def test_a_random_number_is_unknown_and_a_branch_on_it_is_not_judged(tmp_path: P
     ]
     code, found = check(tmp_path, text, None, "--dialect", "gsk980tdi", "--locale", "zh-CN")
     assert found[0].startswith("4:1: ") and "随机数（RAND、SRAND）（第 2 行）" in found[0]
+
+
+# the machine of these tests: G54 X is -420, X travels from -510 to 0 (machine = program + G54 X)
+G54_AND_TRAVEL = "[variables]\n5221 = -420.0\n\n[limits]\ntravel = { X = [-510, 0] }\n"
+
+
+def test_g10_with_a_kept_value_writes_an_unknown_offset_and_the_run_goes_on(tmp_path: Path) -> None:
+    # G10 L12 P5 R#570 writes D5's radius geometry from kept #570, as #13005=#570 does: the offset
+    # becomes unknown and the run goes on (it stopped at the G10 with a note), so the rapid to
+    # X-95. under G54 is checked: machine X = -95 + (-420) = -515, 5 mm past the - limit -510
+    over = ("3:1: error: X- over travel: the move goes to machine X-515.000, 5.000 mm past the - limit X-510.000 "
+            "([limits] travel); the axis stops at the limit (alarm 501) [over-travel]")  # fmt: skip
+    for write in ("G10 L12 P5 R#570", "#13005=#570"):
+        code, found = check(tmp_path, f"O0100\n{write}\nG90 G54 G00 X-95.\nM30\n", G54_AND_TRAVEL)
+        assert (code, found[:1]) == (1, [over]), write
+    # G10 L2 P1 X#570 makes G54 X itself unknown: X is then not checked, and nothing is said
+    assert check(tmp_path, "O0100\nG10 L2 P1 X#570\nG90 G54 G00 X-95.\nM30\n", G54_AND_TRAVEL) == (0, [])
+    # what G10 writes to is still decided by the run: an offset number from a kept value stops it
+    code, found = check(tmp_path, "O0100\nG10 L12 P#570 R2.\nG90 G54 G00 X-95.\nM30\n", G54_AND_TRAVEL)
+    assert code == 0 and len(found) == 1 and found[0].startswith("2:1: hint: the analysis run stops here")
+
+
+def test_g10_adding_to_an_unknown_offset_leaves_it_unknown(tmp_path: Path) -> None:
+    # G54 X is not given: the machine keeps it. G91 G10 L2 P1 X1. adds 1 mm to it, as
+    # #5221=#5221+1. would: still unknown, so the rapid to X-600. is not travel-checked (the
+    # offset was taken as 0 + 1 = 1, machine X-599, a false over-travel past -510)
+    limits = "[limits]\ntravel = { X = [-510, 0] }\n"
+    for write in ("G91 G10 L2 P1 X1.", "#5221=#5221+1."):
+        assert check(tmp_path, f"O0100\n{write}\nG90 G54 G00 X-600.\nM30\n", limits) == (0, []), write
+    # given (-420), it adds: -419, and X-95. goes to machine -514, 4 mm past the limit
+    code, found = check(tmp_path, "O0100\nG91 G10 L2 P1 X1.\nG90 G54 G00 X-95.\nM30\n", G54_AND_TRAVEL)
+    assert code == 1 and "machine X-514.000, 4.000 mm past" in found[0]

@@ -602,8 +602,10 @@ class CompiledFile:
         return dprnt
 
     # ---------------------------------------------------------------- NC words
-    def word_value(self, w: Word) -> tuple[bool, Any]:
-        """(is_constant, value or getter) for an NC word, rounded for its address."""
+    def word_value(self, w: Word, data: bool = False) -> tuple[bool, Any]:
+        """(is_constant, value or getter) for an NC word, rounded for its address. A ``data``
+        word (a value ``G10`` writes to an offset) may be unknown: it is written unknown, as an
+        assignment writes it (``round_for``)."""
         letter = w.letter
         value = w.value
         if value is None:
@@ -619,7 +621,7 @@ class CompiledFile:
             return True, self.round_for(letter, v, literal=True, point=point)
         getter = self.addresses.value(value, letter)
         round_for = self.round_for
-        return False, lambda m: round_for(letter, getter(m), literal=False, point=True)
+        return False, lambda m: round_for(letter, getter(m), literal=False, point=True, data=data)
 
     def dwell_p_value(self, w: Word) -> tuple[bool, Any]:
         """``word_value`` of a dwell's P (G04's, a drilling cycle's). Where a P written with a
@@ -646,10 +648,12 @@ class CompiledFile:
         getter = self.addresses.value(value)
         return False, lambda m: in_units(getter(m))
 
-    def round_for(self, letter: str, v: float | None, literal: bool, point: bool) -> float | None:
+    def round_for(self, letter: str, v: float | None, literal: bool, point: bool, data: bool = False) -> float | None:
         if v is None:
             return 0.0 if self.machine.dialect.vacant_address_is_zero else None
         if v != v:  # an address from an unknown value (machine/unknown_values.py)
+            if data:  # a value G10 writes: the offset becomes unknown, the run goes on
+                return v
             raise UnknownValue
         if letter == "G":
             return to_increment(v, 1) if v != int(v) else float(v)

@@ -34,7 +34,7 @@ from .observer import RunObserver
 from .run_loop import RunLoop
 from .run_records import RunResult, Snapshot
 from .status import FINISHED, RunStatus
-from .unknown_values import UNKNOWN, seed_unknowns, touch_unknown
+from .unknown_values import UNKNOWN, is_kept, seed_unknowns, touch_unknown
 from .variable_sets import VariableSets
 from .variables import VariableAccess
 
@@ -201,6 +201,15 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         """The planner writes stored system variable ``#n`` (``G10``)."""
         self.S[n] = value
         self.written_system.add(n)
+
+    def store_added(self, n: int, amount: float) -> None:
+        """The planner adds to stored system variable ``#n`` (a ``G10`` increment). In an analysis
+        run an offset the machine keeps and nothing here gives is unknown, and so is the sum, as
+        ``#n=#n+amount`` reads it (unknown_values.py)."""
+        v = self.S.get(n)
+        if v is None and self.kept_unknown and is_kept(n, self.kinds, self.dialect):
+            v = UNKNOWN
+        self.store(n, (0.0 if v is None else v) + amount)
 
     def probed(self, stored: Sequence[tuple[int, float]], touched: bool) -> None:
         """A G31 ended on a control that stores where the skip signal came on in commons

@@ -44,6 +44,8 @@ if TYPE_CHECKING:
     from .machine import Machine
 
 CONTROL_M = {98.0, RETURN_CODE, *END_CODES, 0.0, 198.0}  # calls, return, end, M00
+DATA_SETTING = 10.0  # G10: its words are values written to the offset tables (planner/one_shot.py)
+_DATA_SELECTORS = frozenset("GLP")  # a G10 block's words that say what is written, not the value
 
 
 def _literal_g(w: Word) -> float | None:
@@ -63,7 +65,8 @@ def nc_block_of(cf: CompiledFile, block: Block) -> Compiled:
     its words is decided here, once, so that a line of the same literal words elsewhere in the
     file can take it (``CompiledFile.plain_words``)."""
     words = list(block.words)
-    read = _WordValues(cf, _dwell_block(cf, words))  # each word's value, read once for all below
+    # each word's value, read once for all below
+    read = _WordValues(cf, _dwell_block(cf, words), any(_literal_g(w) == DATA_SETTING for w in words))
     plan = _plain_plan(cf, words, read)
     if plan is not None:
         return partial(_plan_runner, cf, plan)
@@ -93,18 +96,25 @@ def nc_block_of(cf: CompiledFile, block: Block) -> Compiled:
 
 class _WordValues:
     """``CompiledFile.word_value`` of the words of one block being compiled, each read once
-    however many of the steps below ask for it; a dwell block's P by ``dwell_p_value``."""
+    however many of the steps below ask for it; a dwell block's P by ``dwell_p_value``. In a
+    ``G10`` block (``data``) the values it writes may be unknown (machine/unknown_values.py): an
+    offset written from an unknown becomes unknown, as ``#13005=#570`` makes it, and the run goes
+    on; its G, L and P, which say what is written, still stop the run when unknown."""
 
-    def __init__(self, cf: CompiledFile, dwell: bool = False) -> None:
+    def __init__(self, cf: CompiledFile, dwell: bool = False, data: bool = False) -> None:
         self._cf = cf
         self._dwell = dwell
+        self._data = data
         self._read: dict[int, tuple[bool, Any]] = {}
 
     def __call__(self, w: Word) -> tuple[bool, Any]:
         got = self._read.get(id(w))
         if got is None:
             cf = self._cf
-            got = cf.dwell_p_value(w) if self._dwell and w.letter == "P" else cf.word_value(w)
+            if self._dwell and w.letter == "P":
+                got = cf.dwell_p_value(w)
+            else:
+                got = cf.word_value(w, data=self._data and w.letter not in _DATA_SELECTORS)
             self._read[id(w)] = got
         return got
 

@@ -2,11 +2,11 @@
 
 The planner keeps no variables. The offset tables it reads (work offsets, tool offsets) and
 writes (``G10``) are the macro machine's stored system variables, reached by number through
-``stored`` and ``store``; it tells the machine of a tool change (``tool_changed``, for whoever
+``stored``, ``store`` and ``store_added``; it tells the machine of a tool change (``tool_changed``, for whoever
 watches the run), of a remark about a block (``note``: where a ``G31`` stopped) and of where a
 ``G31`` stopped on a control that stores it in common variables (``probed``: the GSK980TDi's
 #995…). The macro machine (``machine/machine.py``'s ``Machine``) is the host; a test may give any
-object with these five methods.
+object with these six methods.
 """
 
 from __future__ import annotations
@@ -24,6 +24,11 @@ class PlannerHost(Protocol):
 
     def store(self, n: int, value: float) -> None:
         """Write stored system variable ``#n`` (a ``G10`` offset), as a program's write would."""
+        ...
+
+    def store_added(self, n: int, amount: float) -> None:
+        """Add ``amount`` to stored system variable ``#n`` (a ``G10`` increment: G91, a lathe's
+        U, W, C), as ``#n=#n+amount`` would: an offset the run does not know stays unknown."""
         ...
 
     def tool_changed(self, file: str, line: int) -> None:

@@ -173,9 +173,12 @@ def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[s
         base = _work_offset_base(p, 2.0, 0) if shift else _work_offset_base(p, l_value or 2.0, number)
         before = work_offsets(p)  # the offset in force may be the one written: the tool stays (offset_travel.py)
         for i, v in axes.items():
-            host.store(base + i, v if absolute else (host.stored(base + i) or 0.0) + v)
+            if absolute:
+                host.store(base + i, v)
+            else:
+                host.store_added(base + i, v)
         for i, v in inc.items():
-            host.store(base + i, (host.stored(base + i) or 0.0) + v)
+            host.store_added(base + i, v)
         keep_machine_position(p, before)
         return
     if p.dialect.lathe:
@@ -190,7 +193,7 @@ def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[s
             if axis in axes:
                 host.store(num, axes[axis])
             if axis in inc:
-                host.store(num, (host.stored(num) or 0.0) + inc[axis])
+                host.store_added(num, inc[axis])
         radius = offsets.radius[0 if geometry else 1] + n
         if "R" in other:
             host.store(radius, other["R"])
@@ -199,7 +202,7 @@ def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[s
         c_axis = p.axis_index.get("C")
         more = axes.get(c_axis) if c_axis is not None else other.get("C")
         if more is not None:
-            host.store(radius, (host.stored(radius) or 0.0) + more)
+            host.store_added(radius, more)
         if "Q" in other:
             host.store(offsets.tip + n, other["Q"])
         return
@@ -208,7 +211,10 @@ def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[s
         bases[alias] = bases[same]
     if l_value in bases and "R" in other:
         num = bases[l_value] + number
-        host.store(num, other["R"] if absolute else (host.stored(num) or 0.0) + other["R"])
+        if absolute:
+            host.store(num, other["R"])
+        else:
+            host.store_added(num, other["R"])
 
 
 def _work_offset_base(p: Planner, l_value: float, number: int) -> int:
