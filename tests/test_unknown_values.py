@@ -287,3 +287,38 @@ def test_g10_adding_to_an_unknown_offset_leaves_it_unknown(tmp_path: Path) -> No
     # given (-420), it adds: -419, and X-95. goes to machine -514, 4 mm past the limit
     code, found = check(tmp_path, "O0100\nG91 G10 L2 P1 X1.\nG90 G54 G00 X-95.\nM30\n", G54_AND_TRAVEL)
     assert code == 1 and "machine X-514.000, 4.000 mm past" in found[0]
+
+
+# O1007 is a subprogram (M99, no M30): #101 the total depth and #102 the passes, set by its caller
+SUBPROGRAM = "O1007\n#3=#101/#102\n#4=1\nWHILE [#4 LE #102] DO 1\nG01 Z[-#4*#3] F100.\n#4=#4+1\nEND 1\nM99\n"
+
+
+def test_a_subprogram_checked_without_its_caller_reads_the_commons_its_caller_sets_as_unknown(tmp_path: Path) -> None:
+    # its caller sets #101 and #102 before M98 P1007 and is not in the folder: #101/#102 is
+    # unknown (no alarm 112, which the control never raises), and WHILE [1 LE #102] stops the run
+    # with a note naming #102 (it was "division by zero (alarm 112)", an error, on line 2)
+    code, found = check(tmp_path, SUBPROGRAM)
+    assert code == 0
+    assert found == [
+        "4:1: hint: the analysis run stops here: this block depends on #102, which a caller sets before the call; "
+        "checked without its caller, this subprogram does not have what its caller sets; a program in the folder "
+        "that calls it has it checked with the caller's values, in iteration 1 of the WHILE loop at line 4, at "
+        "block 3 of the run (inside a loop) [unknown-value]"
+    ]
+    # a main program (M30) starts with #100-#199 vacant after power-on, as before: alarm 112
+    code, found = check(tmp_path, SUBPROGRAM.replace("M99", "M30"))
+    assert (
+        code == 1 and found[0] == "2:1: error: division by zero (the divisor is vacant) (alarm 112) [division-by-zero]"
+    )
+
+
+def test_a_subprogram_with_its_caller_in_the_folder_runs_with_the_commons_the_caller_sets(tmp_path: Path) -> None:
+    # O1010 sets #101 = 6. and #102 = 0 and calls O1007: 6 / 0 is alarm 112 on O1007's line 2
+    (tmp_path / "O1007.nc").write_text(SUBPROGRAM, encoding="utf-8")
+    (tmp_path / "O1010.nc").write_text("O1010\n#101=6.\n#102=0\nM98 P1007\nM30\n", encoding="utf-8")
+    code, out, _ = cli("check", str(tmp_path))
+    assert code == 1
+    assert "O1007.nc:2:1: error: division by zero (alarm 112); reached from O1010:4 (M98), at block 4" in out
+    # #102 = 3 passes of 6 / 3 = 2 mm: Z-2., Z-4., Z-6., and nothing to say
+    (tmp_path / "O1010.nc").write_text("O1010\n#101=6.\n#102=3\nM98 P1007\nM30\n", encoding="utf-8")
+    assert cli("check", str(tmp_path))[:2] == (0, "")

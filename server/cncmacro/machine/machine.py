@@ -34,7 +34,7 @@ from .observer import RunObserver
 from .run_loop import RunLoop
 from .run_records import RunResult, Snapshot
 from .status import FINISHED, RunStatus
-from .unknown_values import UNKNOWN, is_kept, seed_unknowns, touch_unknown
+from .unknown_values import UNKNOWN, is_kept, seed_caller_commons, seed_unknowns, touch_unknown
 from .variable_sets import VariableSets
 from .variables import VariableAccess
 
@@ -111,13 +111,15 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         if kept_unknown:
             seed_unknowns(self.kinds, self.C)
 
-    def unknown_arguments(self) -> None:
+    def unknown_from_caller(self) -> None:
         """The main program is a macro run without its caller (an analysis run): its arguments
-        (the locals #1–#33 at level 0) are values a call would pass, unknown rather than vacant
-        (unknown_values.py)."""
+        (the locals #1–#33 at level 0) are values a call would pass, and its commons cleared at
+        power-off (#100–#199) values the caller may have set before the call, unknown rather
+        than vacant (unknown_values.py)."""
         for n in range(1, 34):
             if self.L[n] is None:
                 self.L[n] = UNKNOWN
+        seed_caller_commons(self.kinds, self.C)
 
     def discard(self) -> None:
         """Break the reference cycles of a machine nobody will run again (its compiled files

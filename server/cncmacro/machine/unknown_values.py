@@ -13,8 +13,9 @@ never raises. So an analysis run (``check`` and the editor: ``Machine(kept_unkno
 reads each of them that neither the machine file's ``[variables]`` nor the persistent file
 gives as **unknown**: NaN, which every arithmetic operation and function carries on (an unknown
 divisor divides to unknown, no alarm). A macro checked without its caller gets unknown
-arguments (``Machine.unknown_arguments``). Vacant stays vacant where the program itself could
-have set the value: a main program's locals, arguments a caller did not pass, the commons
+arguments and unknown commons cleared at power-off (#100–#199), which its caller sets
+(``Machine.unknown_from_caller``). Vacant stays vacant where the program itself could have set
+the value: a main program's locals, arguments a caller did not pass, a main program's commons
 cleared at power-on (#100–#199), but on a profile whose operator sets them before a run
 (``Dialect.volatile_commons_set_before``, GSK980TDi).
 
@@ -36,7 +37,10 @@ from typing import TYPE_CHECKING
 from ..dialects.tables import SKIP_POSITIONS
 
 if TYPE_CHECKING:
+    from collections.abc import Iterable
+
     from ..dialects import Dialect
+    from ..dialects.tables import CommonRange
     from ..library.skip_model import SkipModel
     from .expressions import VariableKinds
 
@@ -53,7 +57,17 @@ def seed_unknowns(kinds: VariableKinds, commons: list[float | None]) -> None:
     ``Machine.C``, after the presets and the persistent file); the ones cleared at power-off
     too where the profile says the operator or an earlier run sets them
     (``Dialect.volatile_commons_set_before``)."""
-    ranges = kinds.ranges if kinds.dialect.volatile_commons_set_before else kinds.persistent
+    _unknown_where_vacant(kinds.ranges if kinds.dialect.volatile_commons_set_before else kinds.persistent, commons)
+
+
+def seed_caller_commons(kinds: VariableKinds, commons: list[float | None]) -> None:
+    """A macro or subprogram checked without its caller: make the commons cleared at power-off
+    (#100–#199) that have no value unknown, as its arguments are. Its caller may set them before
+    the call (``#101=6. M98 P1007``), as it passes arguments, and that caller is not here."""
+    _unknown_where_vacant(kinds.volatile, commons)
+
+
+def _unknown_where_vacant(ranges: Iterable[CommonRange], commons: list[float | None]) -> None:
     for r in ranges:
         first, end = r.first, min(r.last, 999) + 1
         if first < end:

@@ -184,8 +184,8 @@ class EntryRun(RunObserver):
         m.planner.record_moves = False
         m.start(self.entry)
         self.as_macro = runs_as_macro(self.entry)  # read once a run: the notes ask again
-        if self.as_macro:  # checked without its caller: its arguments are unknown
-            m.unknown_arguments()
+        if self.as_macro:  # checked without its caller: its arguments and #100-#199 are unknown
+            m.unknown_from_caller()
         self.machine = m
         self.state = RunState()
         self.checkpoints = [m.snapshot()]

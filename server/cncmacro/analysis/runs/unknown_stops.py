@@ -36,7 +36,7 @@ _RANDOM = re.compile(r"S?RAND\s*\[", re.IGNORECASE)  # a random number: RAND[..]
 def runs_as_macro(found: FoundProgram) -> bool:
     """Whether ``found``, run on its own, is a macro or subprogram checked without its caller: it
     returns with M99 and has no M30 or M02. Its arguments are then unknown, not vacant
-    (``Machine.unknown_arguments``): the alarms it would reach only because no caller passed them
+    (``Machine.unknown_from_caller``): the alarms it would reach only because no caller passed them
     are not the program's. Only the lines that may hold such a word are read."""
     returns = ends = False
     lines, blocks = found.file.lines, found.file.program.blocks
@@ -92,7 +92,8 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     ``earlier`` block (that ran before it in its file: (line, text), nearest first) assigned,
     and through each ``#n=...`` of those blocks, the variables of its expression, with its line;
     the ones the machine keeps and, in a macro checked without its caller (``arguments``), the
-    arguments #1–#33 a call would pass, each of them still ``unknown`` where the run stopped (a
+    arguments #1–#33 a call would pass and the commons cleared at power-off (#100–#199) its caller
+    may set, each of them still ``unknown`` where the run stopped (a
     tool number the program has set since is not). Where the value was read through ``#[...]``,
     whose number only the run knows, and no such variable is left, the note names that read; where
     a random number (``RAND``, ``SRAND``) comes in, that it cannot be foreseen."""
@@ -101,15 +102,19 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     def probed_here(n: int) -> bool:  # where a G31 stopped: #5061…, or GSK's #995… once a G31 wrote it
         return is_skip_position(n, dialect) and (n in touched or not is_kept(n, kinds, dialect))
 
+    def from_caller(n: int) -> bool:  # an argument, or a common its caller may set (#100-#199)
+        return arguments and (1 <= n <= 33 or kinds.kind(n) == "common")
+
     named = [(n, line) for n, line in wanted.items()
              if (is_kept(n, kinds, dialect) or is_input(n, dialect) or is_skip_position(n, dialect)
-                 or (arguments and 1 <= n <= 33)) and unknown(n)]  # fmt: skip
+                 or from_caller(n)) and unknown(n)]  # fmt: skip
     if not named and drawn:
         return _random_number(drawn[0])
     if not named and indirect:
         return _read_through(through)
-    kept = [(n, line) for n, line in named[:3] if not 1 <= n <= 33]
-    passed = [(n, line) for n, line in named[:3] if 1 <= n <= 33]
+    kept = [(n, line) for n, line in named[:3] if not from_caller(n)]
+    passed = [(n, line) for n, line in named[:3] if 1 <= n <= 33 and from_caller(n)]
+    set_before = [(n, line) for n, line in named[:3] if from_caller(n) and not 1 <= n <= 33]
     parts, parts_zh = [], []
     tool = [(n, line) for n, line in kept if is_tool(n, dialect)]
     inputs = [(n, line) for n, line in kept if is_input(n, dialect)]
@@ -137,12 +142,25 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
         names, names_zh = _names(passed, letters=True)
         parts.append(f"{names}, which a caller passes")
         parts_zh.append(f"调用者传递的自变量 {names_zh}")
+    if set_before:
+        names, names_zh = _names(set_before)
+        parts.append(f"{names}, which a caller sets before the call")
+        parts_zh.append(f"调用者在调用前设定的 {names_zh}")
     if not parts:
         which, which_zh = "on a value the machine keeps (a common kept at power-off, an offset)", "机床上保存的数值"
     elif any(line is not None for _, line in named[:3]):
         which, which_zh = "on a value computed from " + " and ".join(parts), "由" + "和".join(parts_zh) + "算出的值"
     else:
         which, which_zh = "on " + " and ".join(parts), "和".join(parts_zh)
+    tail, tail_zh = _tail(bool(kept), bool(passed), bool(set_before), bool(tool), bool(inputs), bool(probed))
+    return (f"the analysis run stops here: this block depends {which}; {tail}",
+            f"分析运行在此停止：本程序段取决于{which_zh}；{tail_zh}")  # fmt: skip
+
+
+def _tail(kept: bool, passed: bool, set_before: bool, tool: bool, inputs: bool, probed: bool) -> tuple[str, str]:
+    """What the note says can be done (English, Chinese), by what the value came from: a kept
+    value, an argument a caller passes, a common a caller sets, the tool loaded, an input signal,
+    where a probe touched."""
     if probed and not kept and not passed and not tool and not inputs:
         tail = (
             "only the machine finds it; a [skip] table in .cncmacro.toml says where the probe touches, to check further"
@@ -160,6 +178,12 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
             "checked with the caller's"
         )
         tail_zh = "单独检查时没有调用者传递自变量；文件夹中有调用它的程序时，会以调用者的自变量检查它"
+    elif set_before and not kept:
+        tail = (
+            "checked without its caller, this subprogram does not have what its caller sets; a program in the "
+            "folder that calls it has it checked with the caller's values"
+        )
+        tail_zh = "单独检查时没有调用者设定的值；文件夹中有调用它的程序时，会以调用者设定的值检查它"
     else:
         tail = (
             "this folder does not give it; set it under [variables] in .cncmacro.toml (or in the persistent file "
@@ -168,8 +192,7 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
         tail_zh = (
             "文件夹中没有给出该值；在 .cncmacro.toml 的 [variables]（或它指定的断电保持变量文件）中给出即可继续检查"
         )
-    return (f"the analysis run stops here: this block depends {which}; {tail}",
-            f"分析运行在此停止：本程序段取决于{which_zh}；{tail_zh}")  # fmt: skip
+    return tail, tail_zh
 
 
 def _sources(
