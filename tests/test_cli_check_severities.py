@@ -104,7 +104,8 @@ def test_a_macro_alarm_reached_through_a_macro_from_a_main_program_is_an_error(t
 @pytest.mark.parametrize(
     "program",
     [
-        "O1001\n#1=#5021\nIF[#1 EQ 0] THEN #3000=1(HOME)\nM30\n",  # a machine position, through a local
+        # a machine position, through a local (G54 X given: without it #5021 is unknown, docs/semantics.md §2)
+        "O1001\n#5221=0\n#1=#5021\nIF[#1 EQ 0] THEN #3000=1(HOME)\nM30\n",
         "O1001\nIF[#100 EQ #0] THEN #3000=1(SET 100)\nM30\n",  # a common the program never set
         "O1001\n#1=#3001\n#3000=1(CLOCK)\nM30\n",  # the clock
     ],

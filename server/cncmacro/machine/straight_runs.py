@@ -73,6 +73,8 @@ def run_straight(
         return 0, pc
     if p.vector_before is not None:  # the tool vector changed: the general path times the machine's travel
         return 0, pc  # (planner/offset_travel.py)
+    if p.whereabouts.lost:  # a G30 left an axis unknown: the general path finds its next absolute move
+        return 0, pc  # (planner/whereabouts.py)
     if p.modal.get("feed") == INVERSE_TIME:  # G93: each cut's time is its block's F (missing_feed.py)
         return 0, pc
     g_words = p.plain.g_words()
@@ -349,6 +351,7 @@ def run_straight(
             pc += 1
     if done:
         p.pos = list(start)
+        p.whereabouts = p.whereabouts.leave_reference()  # a line run may have left a reference point
     p.clock = clock
     p.cut_length = cut
     p.rapid_length = rapid

@@ -5,7 +5,8 @@ A program reads values the control keeps from one day to the next: the commons k
 (#500–#999, the extended ranges), the tool and work offset tables, the tool loaded in the
 spindle before the program commands a T; where a probe's G31 touched the part (#5061…, or the
 commons a G31 writes on the GSK980TDi, #995…, unless the machine file's ``[skip]`` table models
-it: ``touch_unknown``); and what the machine sends the program as it runs,
+it: ``touch_unknown``); the positions that add such an offset (#5021…, #5041…, #5081…:
+``position_unknown``); and what the machine sends the program as it runs,
 the interface input signals (FANUC #1000–#1015 and #1032, Haas #1000–#1063…: a probe switched
 on, a pallet in place), which a program may read but never write. Offline, nothing says what they hold; taking them as
 vacant or 0 makes a production program's ``#641=#640/#706`` a "division by zero" the control
@@ -35,6 +36,7 @@ import re
 from typing import TYPE_CHECKING
 
 from ..dialects.tables import SKIP_POSITIONS
+from ..planner.whereabouts import position_known
 
 if TYPE_CHECKING:
     from collections.abc import Iterable
@@ -42,6 +44,7 @@ if TYPE_CHECKING:
     from ..dialects import Dialect
     from ..dialects.tables import CommonRange
     from ..library.skip_model import SkipModel
+    from ..planner.planner import Planner
     from .expressions import VariableKinds
 
 UNKNOWN = math.nan
@@ -120,6 +123,15 @@ def touch_unknown(kept_unknown: bool, skip: SkipModel) -> bool:
     machine file has no ``[skip]`` table to say where the probe touches. The skip position then
     reads unknown (#5061…), and a G31 leaves the commons it writes unknown (GSK #995…)."""
     return kept_unknown and not skip
+
+
+def position_unknown(kept_unknown: bool, p: Planner, which: str, axis: int) -> bool:
+    """Whether axis ``axis``'s position of a kind (a ``position`` row's ``which``: machine, current,
+    tool offset…) is unknown to a run: an analysis run (``kept_unknown``) where the position adds
+    an offset the folder does not give, or lies after a coordinate setting or a G30 at a place
+    the folder does not know (planner/whereabouts.py, the rule the travel check follows too).
+    ``cncmacro run`` reads them with the offsets it lacks as 0."""
+    return kept_unknown and not position_known(p, which, axis)
 
 
 def is_skip_position(n: int, dialect: Dialect) -> bool:

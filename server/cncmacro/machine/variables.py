@@ -18,7 +18,7 @@ from ..dialects.alarms import MAX_VALUE, NAME_SUBSCRIPT, NO_VARIABLE_NAME, OVERF
 from ..dialects.tables import SKIP_POSITIONS, SystemVariable
 from ..planner.numbers import round_half_away
 from .alarms import MacroAlarm, macro_alarm_number
-from .unknown_values import KEPT_GROUPS, UNKNOWN, is_input_row, kept_extended, touch_unknown
+from .unknown_values import KEPT_GROUPS, UNKNOWN, is_input_row, kept_extended, position_unknown, touch_unknown
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -197,6 +197,8 @@ class VariableAccess:
             skip = source == "position" and row.param in SKIP_POSITIONS
             if skip and touch_unknown(self.kept_unknown, self.settings.skip):
                 return UNKNOWN  # where a G31 touched: the machine finds it, a [skip] table says it here
+            if source == "position" and position_unknown(self.kept_unknown, self.planner, row.param, k):
+                return UNKNOWN  # a position with an offset the folder does not give (planner/whereabouts.py)
             return self.planner.read(source, row.param, row.default, k)
         if source == "timer":
             return self.timer_value(n, row.param)

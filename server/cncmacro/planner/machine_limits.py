@@ -5,10 +5,12 @@ library/limits_settings.py; docs/semantics.md §11).
   where it crosses the limit with the control's over-travel alarm (FANUC OT0500 on the + side,
   OT0501 on the − side), naming the axis and how far past the limit the move was going. Machine
   coordinates are the program position plus the work offset in force, the coordinate shift
-  (G92, G52, a lathe's G50) and the tool offset (positions.py); an axis is checked only while each
-  of those is known: the work offset's variable given (the machine file's ``[variables]``, the
-  persistent file, ``G10`` or the program), and a tool length or lathe tool offset in force
-  given too. The external offset counts as 0 unless given. A ``G53`` move names machine
+  (G92, G52, a lathe's G50) and the tool offset (positions.py); an axis is checked only while the
+  run knows its machine position (whereabouts.py, the rule the position variables follow too):
+  the work offset's variable given (the machine file's ``[variables]``, the persistent file,
+  ``G10`` or the program) or a G92/G50 made at a known position, a tool length or lathe tool
+  offset in force given too, and no G30 since the axis's last absolute move. The external offset
+  counts as 0 unless given. A ``G53`` move names machine
   coordinates itself, so it is always checked. ``program_bounds`` turns the travel into the
   program's coordinates once for a run of moves made under the same offsets.
 - **Spindle.** An S above the top speed under G97 is a warning; the spindle turns at its top
@@ -32,8 +34,8 @@ from ..dialects.alarms import OFFSET_NUMBER, OVERTRAVEL_MINUS, OVERTRAVEL_PLUS
 from .alarms import MacroAlarm
 from .arcs import ARC_MODES
 from .cycle_time import INCH
-from .positions import WORK_BASE, work_offset_variable
 from .tool_offsets import lathe_offset_number
+from .whereabouts import frame_offset, machine_known
 
 if TYPE_CHECKING:
     from .moves import Leg
@@ -60,14 +62,11 @@ def program_bounds(p: Planner) -> Bounds:
     if travel is None:
         return ()
     unit = unit_of(p)
-    stored = p.host.stored
     out = []
     for i, low, high in travel:
-        work = stored(work_offset_variable(p, i))
-        if work is None or not _tool_known(p, i):
-            continue
-        offset = work + (stored(WORK_BASE + i) or 0.0) + p.shift[i] + p.tool_vector[i]
-        out.append((i, low / unit - offset, high / unit - offset, offset))
+        if machine_known(p, i):
+            offset = frame_offset(p, i)
+            out.append((i, low / unit - offset, high / unit - offset, offset))
     return tuple(out)
 
 
@@ -77,32 +76,12 @@ def g53_bounds(p: Planner, named: Sequence[int]) -> Bounds:
     if p.travel is None:
         return ()
     unit = unit_of(p)
-    stored = p.host.stored
     out = []
     for i, low, high in p.travel:
         if i in named:
-            offset = (stored(work_offset_variable(p, i)) or 0.0) + (stored(WORK_BASE + i) or 0.0)
-            offset += p.shift[i] + p.tool_vector[i]
+            offset = frame_offset(p, i)
             out.append((i, low / unit - offset, high / unit - offset, offset))
     return tuple(out)
-
-
-def _tool_known(p: Planner, axis: int) -> bool:
-    """Whether the tool offset ``axis`` moves by is known: none in force, or its geometry given."""
-    stored = p.host.stored
-    if p.lathe:
-        t = p.codes.get("T")
-        n = int(t) if t else 0
-        offset = n % 100 if n >= 100 else n % 10
-        if not offset:
-            return True
-        name = p.dialect.axes[axis]
-        return all(stored(geometry + offset) is not None for letter, geometry, _ in p.dialect.lathe_offsets.axes
-                   if letter == name)  # fmt: skip
-    if p.axis_index.get("Z") != axis or p.modal.get("length") not in (43.0, 44.0):
-        return True
-    h = p.codes.get("H")
-    return not h or stored(p.dialect.tool_offset_bases[0] + int(h)) is not None
 
 
 def outside(bounds: Bounds, start: Sequence[float], end: Sequence[float]) -> bool:

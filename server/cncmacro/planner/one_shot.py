@@ -22,6 +22,7 @@ from .offset_travel import keep_machine_position, work_offsets
 from .positions import WORK_BASE, work_offset
 from .probing import skip_block
 from .virtual_planes import switch_virtual_plane
+from .whereabouts import coordinates_set, lose, placed, referenced, shift_cancelled
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -75,6 +76,7 @@ def one_shot(
                 p.move(file, line, mode, list(stop[0]))
                 raise stop[1]
         p.move(file, line, mode, target)
+        referenced(p, axes)  # at a machine position the run knows (whereabouts.py)
         return bool(axes), None
     if g == p.dialect.local_coordinate_code:  # U, W as X, Z: "绝对代码或相对代码指定时执行的结果一样" (GSK §3.19)
         local_coordinates(p, {**inc, **axes})
@@ -83,7 +85,9 @@ def one_shot(
         # X, Z: the present position's new coordinates; U, W: its new coordinates less the old
         # (GSK980TDi §3.18: "当前位置新的 X 轴绝对坐标与执行代码前的绝对坐标的差值"; FANUC G92/G50 IP_ in
         # increments), bar work's G50 W15. shifting the part for the next one. The tool stays
-        for i, v in {**{i: p.pos[i] + d for i, d in inc.items()}, **axes}.items():
+        setting = {**{i: p.pos[i] + d for i, d in inc.items()}, **axes}
+        coordinates_set(p, setting)  # a frame known where the machine position was (whereabouts.py)
+        for i, v in setting.items():
             p.shift[i] += p.pos[i] - v
             p.pos[i] = v
         return False, None
@@ -102,10 +106,13 @@ def one_shot(
             p.pos[i] += p.shift[i]
             p.shift[i] = 0.0
             p.codes.pop(f"{LOCAL_ORIGIN}{i}", None)
+        shift_cancelled(p, set(axes) | set(inc))
         return False, None
     if axes or inc:  # any other one-shot code with axis words: move in the modal mode
         mode = p.modal.get("motion", 0.0)
         target = p.target(axes, inc)
+        if p.lathe or p.modal.get("distance", 90.0) == 90.0:
+            placed(p, axes)
         p.move(file, line, mode, target, p.block_arc(mode, target, other, line))
         return True, None
     return False, None
@@ -122,6 +129,8 @@ def reference_return(p: Planner, g: float, axes: dict[int, float], inc: dict[int
         return False
     if axes or inc:
         p.move(file, line, 0.0, p.target(axes, inc))
+        if p.lathe or p.modal.get("distance", 90.0) == 90.0:
+            placed(p, axes)  # at the intermediate point
     if dialect.reference_return_cancels_tool_offset:
         if p.lathe:
             p.tool_vector = [0.0] * len(p.pos)  # off at the reference point (docs/semantics.md §10.1)
@@ -131,6 +140,10 @@ def reference_return(p: Planner, g: float, axes: dict[int, float], inc: dict[int
     for i in named:
         home[i] = 0.0 - (work_offset(p, i) + p.shift[i] + p.tool_vector[i]) + 0.0
     p.move(file, line, 0.0, home)
+    if g == 28.0:
+        referenced(p, named)
+    else:  # the 2nd reference position is the machine builder's (FANUC parameter 1241): not known here
+        lose(p, named)
     return True
 
 

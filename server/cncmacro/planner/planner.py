@@ -54,6 +54,7 @@ from .three_point_arcs import three_point_arc
 from .turning_cycles import forget_single_cycle, in_increments, single_cycle, single_cycle_target, turning_legs
 from .variable_leads import lead_alarm
 from .virtual_planes import CYLINDER, VIRTUAL_PLANE, surface_length
+from .whereabouts import START, Whereabouts, placed
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -76,6 +77,7 @@ class Planner:
     # the tool vector before a change the machine has not travelled yet (offset_travel.py), else None
     vector_before: list[float] | None = None
     block_feed: bool = False  # whether that block writes F (G93 takes one in every cut: missing_feed.py)
+    whereabouts: Whereabouts = START  # what the run knows of where the machine is (whereabouts.py)
 
     def __init__(self, dialect: Dialect, settings: MachineSettings, host: PlannerHost) -> None:
         self.dialect = dialect
@@ -188,7 +190,7 @@ class Planner:
             len(self.tool_changes), self.skip_state, len(self.probes),
             {k: dict(v) for k, v in self.cycle_params.items()}, None if self.shape is None else self.shape.copy(),
             None if self.cutter is None else self.cutter.copy(),
-            None if self.vector_before is None else list(self.vector_before),
+            None if self.vector_before is None else list(self.vector_before), self.whereabouts,
         )  # fmt: skip
 
     def restore(self, state: PlannerState) -> None:
@@ -211,6 +213,7 @@ class Planner:
         self.shape = None if state.shape is None else state.shape.copy()
         self.cutter = None if state.cutter is None else state.cutter.copy()
         self.vector_before = None if state.vector_before is None else list(state.vector_before)
+        self.whereabouts = state.whereabouts
         restore_pending(self)
 
     # ---------------------------------------------------------------- plain motion
@@ -255,6 +258,8 @@ class Planner:
         if self.lathe or modal["distance"] == 90.0:
             for i, v in axes:
                 target[i] = v
+            if axes:
+                placed(self, (i for i, _ in axes))  # whereabouts.py
         else:
             for i, v in axes:
                 target[i] += v
@@ -395,6 +400,8 @@ class Planner:
             else:
                 self.turning_cycle(file, line, mode, axes, incremental, other)
             return True, None  # a turning cycle ends where it started
+        if self.lathe or self.modal.get("distance", 90.0) == 90.0:
+            placed(self, axes)  # the axes named are where the program says (whereabouts.py)
         if mode in self._curves and self._curve(file, line, mode, target, other):
             return True, None
         centre = self.block_arc(mode, target, other, line)

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from .cutter_stage import CutterStage
 from .lathe_cycles import ShapeReading
 from .probing import SkipState
+from .whereabouts import START, Whereabouts
 
 MODAL_DEFAULTS = {"motion": 0.0, "distance": 90.0, "units": 21.0, "cutter": 40.0, "length": 49.0, "canned": 80.0,
                   "return": 98.0, "macro": 67.0, "spindle": 97.0, "wcs": 54.0, "cutting": 64.0, "rotation": 69.0,
@@ -25,8 +26,8 @@ class PlannerState:
     work offset, a drilling cycle's initial level, the clock, the cut and rapid path, and how
     many moves, tool changes and probes had been recorded, and a lathe's cycle parameters and
     the shape cycle under way (lathe_cycles.py), cutter radius compensation's stage
-    (cutter_stage.py), and the tool vector before a change the machine has not travelled yet
-    (offset_travel.py)."""
+    (cutter_stage.py), the tool vector before a change the machine has not travelled yet
+    (offset_travel.py), and what the run knows of where the machine is (whereabouts.py)."""
 
     modal: dict[str, float]
     codes: dict[str, float | None]
@@ -43,3 +44,4 @@ class PlannerState:
     shape: ShapeReading | None
     cutter: CutterStage | None = None
     vector_before: list[float] | None = None  # a tool vector change not yet travelled (offset_travel.py)
+    whereabouts: Whereabouts = START  # what the run knows of where the machine is (whereabouts.py)
