@@ -27,6 +27,7 @@ from ..dialects.alarms import (
     CUTTER_INTERFERENCE,
     CUTTER_NO_INTERSECTION,
     CUTTER_PLANE,
+    CUTTER_SKIP,
     CYCLE_BAD_VALUE,
     CYCLE_BLOCK_NOT_FOUND,
     CYCLE_P_Q_MISSING,
@@ -316,6 +317,12 @@ CODES: dict[str, Code] = _codes(
                 "control has no such alarm).",
                 "刀具半径补偿有效时用 G17/G18/G19 变更了平面（PS0037；系统无此报警时为警告）。"),
          RUN, (CUTTER_PLANE,), ("cutter-plane",), milder=WARNING),
+    Code("cutter-skip", ERROR,
+         detail("A skip G31 commanded while cutter radius compensation (G41/G42) is in force (FANUC PS0035, "
+                "Mitsubishi P608; a warning where the control's manual asks for G40 first but names no alarm).",
+                "刀具半径补偿（G41/G42）有效时指令了跳转 G31（FANUC PS0035、三菱 P608；"
+                "系统手册只要求先用 G40 取消而未给出报警时为警告）。"),
+         RUN, (CUTTER_SKIP,), ("cutter-skip",), milder=WARNING),
     Code("cutter-offset", HINT,
          detail("G41/G42 with a D whose offset has no value in the run: the tool centre is drawn on the programmed "
                 "path.",

@@ -69,6 +69,7 @@ OVERTRAVEL_MINUS = 501
 # cutter radius compensation (docs/semantics.md, "Cutter radius compensation"): FANUC's PS alarms
 CUTTER_NO_INTERSECTION = 33
 CUTTER_ARC_START = 34
+CUTTER_SKIP = 35  # PS0035: G31 in G41/G42 (Mitsubishi: program error P608, shown without a number)
 CUTTER_PLANE = 37
 CUTTER_INTERFERENCE = 41
 # a mill's drilling canned cycles (docs/semantics.md §9): FANUC 0i's PS alarms
@@ -169,6 +170,7 @@ ALARMS: dict[int, AlarmDoc] = {
             "no circular move allowed in the start-up or cancel block",
             "刀补建立或取消的程序段中不能用圆弧",
         ),
+        AlarmDoc(CUTTER_SKIP, "G31 cannot be commanded in cutter compensation", "刀具半径补偿方式中不能指令 G31"),
         AlarmDoc(CUTTER_PLANE, "cannot change the plane in G41/G42", "G41/G42 方式中不能变更平面"),
         AlarmDoc(CUTTER_INTERFERENCE, "interference in cutter compensation", "刀具半径补偿干涉"),
         AlarmDoc(REFERENCE_IN_CYCLE, "G27-G30 not allowed in a canned cycle", "固定循环中不能指令 G27-G30"),

@@ -182,6 +182,11 @@ class Dialect:
     # plane change in G41/G42, are FANUC's alarms PS0041, PS0033 and PS0037; without this switch
     # the run notes them and goes on (a start-up or cancel on an arc, PS0034, is an alarm on every mill)
     cutter_alarms: bool = False
+    # "Cutter radius compensation": a skip (``skip_codes``: G31) commanded while G41/G42 is in force
+    # is the control's alarm (FANUC PS0035 "CAN NOT COMMANDED G31", Mitsubishi program error P608);
+    # without this switch it is a warning (the GSK980TDi and Haas manuals ask for G40 first but name
+    # no alarm) and the skip is made as programmed
+    skip_compensation_alarm: bool = False
     # §10.2/§12 tool nose radius compensation in G70-G73 (GSK980TDi §3.23.1): only a G41/G42 on the
     # shape's first block N(ns) compensates the shape, the cycle's end cancels it, and a compensation
     # in force before the cycle is set aside for it; without this switch G70 runs its shape in the

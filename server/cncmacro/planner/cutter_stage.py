@@ -17,8 +17,9 @@ file's ``cutter_startup`` says. The radius is offset D's geometry plus wear, as 
 keeps them (``Dialect.tool_offset_bases``; G10 L12/L13 write them). The control's answers: an arc
 at start-up or cancel (PS0034), a corner whose offsets do not meet (PS0033), an offset path that
 reverses a block or a cutter too large for an inside arc (PS0041), a plane change in G41/G42
-(PS0037); where the profile has no such alarms (``Dialect.cutter_alarms``) the last three are
-notes the run goes past.
+(PS0037), a skip G31 in G41/G42 (PS0035, ``Dialect.skip_compensation_alarm``); where the
+profile has no such alarms (``Dialect.cutter_alarms``) the interference and plane alarms are
+notes the run goes past, and so is the skip without its switch.
 
 On a lathe (tool nose radius compensation) the geometry is the same in the Z-X plane, X taken as a
 radius (the plane's scale, ``MoveTimes.planes``: halved in, doubled back out), the radius and
@@ -35,7 +36,13 @@ from math import dist, hypot, sqrt
 from typing import TYPE_CHECKING, NamedTuple, TypeVar
 
 from ..bilingual import detail
-from ..dialects.alarms import CUTTER_ARC_START, CUTTER_INTERFERENCE, CUTTER_NO_INTERSECTION, CUTTER_PLANE
+from ..dialects.alarms import (
+    CUTTER_ARC_START,
+    CUTTER_INTERFERENCE,
+    CUTTER_NO_INTERSECTION,
+    CUTTER_PLANE,
+    CUTTER_SKIP,
+)
 from .alarms import MacroAlarm
 from .arcs import ARC_MODES
 from .cycle_time import INCH
@@ -185,6 +192,25 @@ def _outside_first_block(p: Planner, group: str, g: float, line: int) -> bool:
 # programmed point at the next move in the plane (FANUC: G28 "cancels the offset vector at the
 # intermediate position"; G30, G53 and the skip G31 likewise here)
 UNCOMPENSATED_CODES = frozenset((28.0, 30.0, 31.0, 53.0))
+
+
+def skip_in_offset(p: Planner, code: float, line: int) -> None:
+    """A skip (``Dialect.skip_codes``: G31) commanded while G41/G42 is in force: the control's
+    alarm where the profile has one (``Dialect.skip_compensation_alarm``: FANUC PS0035, Mitsubishi
+    P608), else a warning the run goes past (GSK980TDi §3.16 and Haas ask for G40 first and name
+    no alarm), the skip then made as programmed (``uncompensated``)."""
+    stage = p.cutter
+    if stage is None or stage.code not in (LEFT, RIGHT):
+        return
+    message = detail(
+        f"G{code:g} (skip) while cutter radius compensation (G{stage.code:g}) is in force: the control takes a "
+        "skip only with the compensation cancelled; cancel it with G40 before the skip",
+        f"刀具半径补偿（G{stage.code:g}）有效时指令了 G{code:g}（跳转）：系统只在取消补偿后执行跳转；"
+        "请在跳转前用 G40 取消补偿",
+    )
+    if p.dialect.skip_compensation_alarm:
+        raise MacroAlarm(CUTTER_SKIP, message, "cutter-skip")
+    p.host.note("cutter", message, line, "cutter-skip")
 
 
 def uncompensated(p: Planner, run: Callable[[], _T]) -> _T:

@@ -35,7 +35,14 @@ from .arc_checks import arc_finding, no_centre
 from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
 from .conic_moves import CURVE_FAULT, conic_points
-from .cutter_stage import UNCOMPENSATED_CODES, CutterStage, cutter_move, restore_pending, uncompensated
+from .cutter_stage import (
+    UNCOMPENSATED_CODES,
+    CutterStage,
+    cutter_move,
+    restore_pending,
+    skip_in_offset,
+    uncompensated,
+)
 from .cycle_time import INCH, INVERSE_TIME, INVERSE_TIME_MODES, SPEED_CLAMP, MoveTimes
 from .drill_cycles import drill_block
 from .lathe_cycles import ShapeCall, ShapeReading
@@ -362,7 +369,9 @@ class Planner:
         if one is not None:
             if one != 4.0 and self.cycle_params:
                 forget_single_cycle(self)
-            if self.cutter is not None and one in UNCOMPENSATED_CODES:  # cutter_stage.py
+            if self.cutter is not None and (one in UNCOMPENSATED_CODES or one in self.dialect.skip_codes):
+                if one in self.dialect.skip_codes:  # G31 in G41/G42: PS0035 (cutter_stage.py)
+                    skip_in_offset(self, one, line)
                 return uncompensated(self, lambda: one_shot(self, one, axes, incremental, other, file, line))
             return one_shot(self, one, axes, incremental, other, file, line)
         mode = self.modal.get("motion", 0.0)

@@ -597,7 +597,7 @@ def _endless_diagnostic(
 
 
 # the run's notes of a finding that is an alarm on another profile: shown at the code's milder severity
-_MILDER_NOTES = frozenset(("arc-radius", "cutter-arc", "cutter-interference", "cutter-plane"))
+_MILDER_NOTES = frozenset(("arc-radius", "cutter-arc", "cutter-interference", "cutter-plane", "cutter-skip"))
 
 
 def run_diagnostics(

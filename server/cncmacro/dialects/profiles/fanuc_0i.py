@@ -51,6 +51,7 @@ PROFILE = Dialect(
     arc_radius_alarm=True,
     arc_centre_alarm=True,  # PS0022 (docs/semantics.md §8, "Arcs")
     cutter_alarms=True,
+    skip_compensation_alarm=True,  # PS0035 (docs/semantics.md, "Cutter radius compensation")
     keyword_abbreviations=True,
     if_without_then=True,
     modal_g_before_call="execute",

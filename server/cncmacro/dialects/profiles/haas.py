@@ -954,6 +954,8 @@ PROFILE = FANUC_0I.configured(
     word_format_alarms=False,
     arc_radius_alarm=False,  # no alarm for it in the manuals at hand: a warning (docs/semantics.md §8, "Arcs")
     cutter_alarms=False,  # no number for the interference or plane alarms in the manuals at hand (§12)
+    # G31: "Do not use Cutter Compensation (G41, G42) with a G31" (96-8000), no alarm named: a warning
+    skip_compensation_alarm=False,
     keyword_abbreviations=False,
     if_without_then=True,
     conditional_m99=True,

@@ -24,6 +24,9 @@ PROFILE = FANUC_0I.configured(
     data_module="mitsubishi_m70_data",
     block_if=True,
     skip_codes=frozenset((31.0, 31.1, 31.2, 31.3)),  # G31.1-G31.3: the multi-step skip (§15.3)
+    # §15.2 (6): "When the G31 command is issued during tool radius compensation, program error
+    # (P608) will result"; §15.3 (3): G31.1-G31.3 "work the same as the G31 command"
+    skip_compensation_alarm=True,
     # the manuals' program errors (P2xx) are not yet listed here: alarms are shown without a number
     documented_alarms=frozenset(),
     # macro words are written in full (no FANUC abbreviations in the M8 manuals at hand)
