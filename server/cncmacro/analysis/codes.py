@@ -24,6 +24,7 @@ from ..dialects.alarms import (
     BRACKET_NESTING,
     COUNT_TWICE,
     CUTTER_ARC_START,
+    CUTTER_CORNER,
     CUTTER_INTERFERENCE,
     CUTTER_NO_INTERSECTION,
     CUTTER_PLANE,
@@ -317,6 +318,11 @@ CODES: dict[str, Code] = _codes(
                 "control has no such alarm).",
                 "刀具半径补偿有效时用 G17/G18/G19 变更了平面（PS0037；系统无此报警时为警告）。"),
          RUN, (CUTTER_PLANE,), ("cutter-plane",), milder=WARNING),
+    Code("cutter-corner", ERROR,
+         detail("A chamfer or corner R (,C or ,R) on the block that starts or cancels cutter radius compensation, "
+                "or changes between G41 and G42 (FANUC PS0039).",
+                "在建立或取消刀具半径补偿、或 G41/G42 切换的程序段中指令了倒角或拐角R（,C 或 ,R）（FANUC PS0039）。"),
+         RUN, (CUTTER_CORNER,), ("cutter-corner",)),
     Code("cutter-skip", ERROR,
          detail("A skip G31 commanded while cutter radius compensation (G41/G42) is in force (FANUC PS0035, "
                 "Mitsubishi P608; a warning where the control's manual asks for G40 first but names no alarm).",

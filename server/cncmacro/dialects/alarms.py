@@ -71,6 +71,7 @@ CUTTER_NO_INTERSECTION = 33
 CUTTER_ARC_START = 34
 CUTTER_SKIP = 35  # PS0035: G31 in G41/G42 (Mitsubishi: program error P608, shown without a number)
 CUTTER_PLANE = 37
+CUTTER_CORNER = 39  # PS0039: ,C/,R on a start-up, a cancel or a change of side in G41/G42
 CUTTER_INTERFERENCE = 41
 # a mill's drilling canned cycles (docs/semantics.md §9): FANUC 0i's PS alarms
 REFERENCE_IN_CYCLE = 44  # PS0044: G27-G30 in canned cycle mode (planner/one_shot.py)
@@ -172,6 +173,11 @@ ALARMS: dict[int, AlarmDoc] = {
         ),
         AlarmDoc(CUTTER_SKIP, "G31 cannot be commanded in cutter compensation", "刀具半径补偿方式中不能指令 G31"),
         AlarmDoc(CUTTER_PLANE, "cannot change the plane in G41/G42", "G41/G42 方式中不能变更平面"),
+        AlarmDoc(
+            CUTTER_CORNER,
+            "chamfering or corner R not allowed at a start-up, cancel or change of side in G41/G42",
+            "G41/G42 建立、取消或切换时不能指令倒角或拐角R",
+        ),
         AlarmDoc(CUTTER_INTERFERENCE, "interference in cutter compensation", "刀具半径补偿干涉"),
         AlarmDoc(REFERENCE_IN_CYCLE, "G27-G30 not allowed in a canned cycle", "固定循环中不能指令 G27-G30"),
         AlarmDoc(PECK_Q_MISSING, "address Q not found (G73/G83)", "未指令地址 Q（G73/G83）"),

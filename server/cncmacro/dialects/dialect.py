@@ -187,6 +187,16 @@ class Dialect:
     # without this switch it is a warning (the GSK980TDi and Haas manuals ask for G40 first but name
     # no alarm) and the skip is made as programmed
     skip_compensation_alarm: bool = False
+    # "Cutter radius compensation": a chamfer or corner R (``,C``/``,R``) on a start-up, a cancel or
+    # a change between G41 and G42 is the control's alarm (FANUC PS0039 "CHF/CNR NOT ALLOWED IN
+    # G41,G42", mills and lathes); without this switch nothing is said (the corner is not simulated)
+    corner_compensation_alarm: bool = False
+    # "Cutter radius compensation": G41/G42 written again in offset mode on the side in force ends
+    # the previous block on the perpendicular of its end, inside or outside (FANUC 30i-MA and 15i-MB
+    # manuals, "cutter compensation G code in the offset mode"); without this switch it
+    # changes nothing and the corner is the usual intersection (Mitsubishi M700V/M70V §12.4: G41/G42
+    # without I, J gives the "intersection point calculation type vector")
+    repeated_side_perpendicular: bool = False
     # §10.2/§12 tool nose radius compensation in G70-G73 (GSK980TDi §3.23.1): only a G41/G42 on the
     # shape's first block N(ns) compensates the shape, the cycle's end cancels it, and a compensation
     # in force before the cycle is set aside for it; without this switch G70 runs its shape in the

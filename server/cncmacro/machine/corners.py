@@ -32,11 +32,15 @@ INTERPOLATION = (1.0, 2.0, 3.0)
 def with_corners(cf: CompiledFile, block: Block, run: Runner) -> Runner:
     """``run`` preceded by computing the block's corner values that are not literal numbers (the
     literal ones need nothing); an angle ``,A`` is handed to the planner for the block's move
-    (``Planner.block_angle``: a move that names one coordinate of the plane goes at that angle)."""
+    (``Planner.block_angle``: a move that names one coordinate of the plane goes at that angle),
+    and so is a chamfer's or corner R's letter (``Planner.block_corner``)."""
     angle = next((c for c in block.corners if c.letter == "A"), None)
     getters: list[Getter] = [
         cf.addresses.value(c.value) for c in block.corners if c is not angle and not cf.addresses.constant(c.value)[0]
     ]
+    rounded = next((c.letter for c in block.corners if c.letter != "A"), None)
+    if rounded is not None:  # a chamfer or corner R: the planner hears of it while the block runs
+        run = _with_rounded(run, rounded)
     if angle is not None:
         known, literal = cf.addresses.constant(angle.value)
         get_angle = None if known else cf.addresses.value(angle.value, "A")
@@ -64,6 +68,22 @@ def with_corners(cf: CompiledFile, block: Block, run: Runner) -> Runner:
         return run(m, pc)
 
     return corners
+
+
+def _with_rounded(run: Runner, letter: str) -> Runner:
+    """``run`` with ``Planner.block_corner`` set to ``letter`` (C or R) while it runs: the cutter
+    compensation stage refuses a chamfer or corner R on a start-up, a cancel or a change of side
+    (planner/cutter_stage.py, PS0039)."""
+
+    def rounded(m: Any, pc: int) -> int:
+        p = m.planner
+        p.block_corner = letter
+        try:
+            return run(m, pc)
+        finally:
+            p.block_corner = None
+
+    return rounded
 
 
 def no_move(corner: CornerWord, block: Block, axis_letters: frozenset[str]) -> Detail | None:

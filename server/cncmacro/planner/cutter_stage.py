@@ -38,6 +38,7 @@ from typing import TYPE_CHECKING, NamedTuple, TypeVar
 from ..bilingual import detail
 from ..dialects.alarms import (
     CUTTER_ARC_START,
+    CUTTER_CORNER,
     CUTTER_INTERFERENCE,
     CUTTER_NO_INTERSECTION,
     CUTTER_PLANE,
@@ -67,6 +68,7 @@ if TYPE_CHECKING:
     from .planner import Planner
 
 LEFT, RIGHT, CANCEL = 41.0, 42.0, 40.0
+SAME, SWITCH = "same", "switch"  # ``CutterStage.written``
 _T = TypeVar("_T")
 _MOVE_MODES = frozenset((0.0, 1.0, 2.0, 3.0))
 _Point = tuple[float, ...]
@@ -115,7 +117,7 @@ class CutterStage:
     waiting for the next, the offsets already noted as having no value, and the indexes of the
     plane's two axes and where offset D's geometry and wear are kept."""
 
-    __slots__ = ("axes", "bases", "code", "lathe", "noted", "on", "pending", "plane", "type_b")
+    __slots__ = ("axes", "bases", "code", "lathe", "noted", "on", "pending", "plane", "type_b", "written")
 
     def __init__(
         self, code: float, plane: float, type_b: bool, axes: tuple[int, int] = (0, 1),
@@ -130,10 +132,13 @@ class CutterStage:
         self.lathe = lathe  # tool nose radius compensation: the T offset's radius and tip, X a diameter
         self.pending: Pending | None = None
         self.noted: frozenset[int] = frozenset()
+        # G41/G42 written again in offset mode, for the next move in the plane: SAME side (the
+        # previous block ends on its perpendicular) or a SWITCH of side; "" when not
+        self.written = ""
 
     def copy(self) -> CutterStage:
         c = CutterStage(self.code, self.plane, self.type_b, self.axes, self.bases, self.lathe)
-        c.on, c.pending, c.noted = self.on, self.pending, self.noted
+        c.on, c.pending, c.noted, c.written = self.on, self.pending, self.noted, self.written
         return c
 
 
@@ -162,9 +167,14 @@ def cutter_code(p: Planner, group: str, g: float, line: int) -> None:
             p.cutter = CutterStage(g, plane, p.settings.cutter_startup == "B", (ij[0], ij[1]) if ij else (0, 1),
                                    (bases[0], bases[1]), p.lathe)  # fmt: skip
         else:
+            if stage.on and g != stage.code:  # a change of side: the next move in the plane reads it
+                stage.written = SWITCH
+            elif stage.on and p.dialect.repeated_side_perpendicular:  # FANUC: the previous block ends
+                stage.written = SAME  # on its perpendicular (``cutter_move``)
             stage.code = g
     elif stage is not None:
         stage.code = CANCEL
+        stage.written = ""
         if not stage.on:
             p.cutter = None
 
@@ -225,6 +235,7 @@ def uncompensated(p: Planner, run: Callable[[], _T]) -> _T:
         if stage is not None:
             stage.on = False
             stage.pending = None
+            stage.written = ""
             p.cutter = stage if stage.code != CANCEL else None
 
 
@@ -344,6 +355,7 @@ def cutter_move(
         if mode in ARC_MODES:
             _arc_finding(p, _arc_message("G41/G42", "start-up", "建立"), line)
             return None
+        _rounded_corner(p, "start-up", "建立")
         stage.on = True
         first = _plane_point(start, i, j, scale)
         element = PathElement(first, _plane_point(end, i, j, scale))
@@ -351,7 +363,8 @@ def cutter_move(
         begin = _full((first[0] - tip[0], first[1] - tip[1]), start, i, j, scale) if tip != (0.0, 0.0) else start
         d = d if stage.code == LEFT else -d
         return _provisional(p, line, mode, plane, element, d, begin, start, end, None, feed, unit, True, i, j)
-    if centre is None and in_plane and mode != 0.0:  # a straight cut after one: joined in one pass
+    written = stage.written if in_plane else ""
+    if centre is None and in_plane and mode != 0.0 and not written:  # a straight cut after one: joined in one pass
         joined = _straight_after_straight(p, line, mode, plane, start, end, feed)
         if joined is not None:
             return joined
@@ -363,25 +376,7 @@ def cutter_move(
             stage.pending = pending._replace(between=(*pending.between, len(p.moves)))
         return path, _cost(p, mode, path, feed, unit, plane, start, end)
     if stage.code == CANCEL:
-        arc = mode in ARC_MODES
-        if arc:
-            _arc_finding(p, _arc_message("G40", "cancel", "取消"), line)
-        begin = _plane_point(start, i, j, scale)
-        last = _plane_point(end, i, j, scale)
-        if pending is not None:
-            outer = PERPENDICULAR_BEFORE if arc or not stage.type_b else MEET
-            corner = _corner(p, pending, PathElement(begin, last), pending.d, outer, line)
-            _settle(p, pending, corner, line, i, j, scale)
-            begin = corner.after_start
-        stage.on = False
-        stage.pending = None
-        p.cutter = None
-        if arc:  # a profile without the alarm: the arc as programmed
-            return None
-        tip = _tip(p, abs(nose_radius(p, line)), i, j) if stage.lathe else (0.0, 0.0)  # its tip ends on the end
-        finish = _full((last[0] - tip[0], last[1] - tip[1]), end, i, j, scale) if tip != (0.0, 0.0) else end
-        path = CentrePath(_full(begin, start, i, j, scale), (CentrePiece(finish),))
-        return path, _cost(p, mode, path, feed, unit, plane, start, end)
+        return _cancel_move(p, stage, line, mode, plane, start, end, feed, unit, scale)
     d = cutter_radius(p, line)
     d = d if stage.code == LEFT else -d
     element = _element(mode, start, end, centre, i, j, scale)
@@ -393,13 +388,50 @@ def cutter_move(
             f"刀具（半径 {abs(d):g}）大于此圆弧（半径 {radius:g}）：刀具中心无法在内侧沿其移动"))  # fmt: skip
         d = 0.0
     begin = _plane_point(start, i, j, scale)
+    stage.written = ""
+    if written == SWITCH:
+        _rounded_corner(p, "change of side", "切换")
     if pending is not None:
         outer = PERPENDICULAR_AFTER if pending.startup and not stage.type_b else MEET
-        corner = _corner(p, pending, element, d, outer, line)
+        if written == SAME:  # FANUC: "a right angle to the moving direction in the previous block"
+            q = perpendicular_end(pending.element, pending.d)
+            corner = Corner(q, (), q)
+        else:
+            corner = _corner(p, pending, element, d, outer, line)
         _settle(p, pending, corner, line, i, j, scale)
         begin = corner.after_start
     return _provisional(p, line, mode, plane, element, d, _full(begin, start, i, j, scale), start, end, centre, feed,
                         unit, False, i, j)  # fmt: skip
+
+
+def _cancel_move(
+    p: Planner, stage: CutterStage, line: int, mode: float, plane: float, start: _Point, end: _Point, feed: float,
+    unit: float, scale: _Scale,
+) -> tuple[CentrePath, float] | None:  # fmt: skip
+    """The cancel: the first move in the plane after G40 (``cutter_move``), from the corner with
+    the pending move to the programmed end (on a lathe the tip's vector away from it)."""
+    i, j = p.times.planes[stage.plane][:2]
+    pending = stage.pending
+    arc = mode in ARC_MODES
+    if arc:
+        _arc_finding(p, _arc_message("G40", "cancel", "取消"), line)
+    _rounded_corner(p, "cancel", "取消")
+    begin = _plane_point(start, i, j, scale)
+    last = _plane_point(end, i, j, scale)
+    if pending is not None:
+        outer = PERPENDICULAR_BEFORE if arc or not stage.type_b else MEET
+        corner = _corner(p, pending, PathElement(begin, last), pending.d, outer, line)
+        _settle(p, pending, corner, line, i, j, scale)
+        begin = corner.after_start
+    stage.on = False
+    stage.pending = None
+    p.cutter = None
+    if arc:  # a profile without the alarm: the arc as programmed
+        return None
+    tip = _tip(p, abs(nose_radius(p, line)), i, j) if stage.lathe else (0.0, 0.0)  # its tip ends on the end
+    finish = _full((last[0] - tip[0], last[1] - tip[1]), end, i, j, scale) if tip != (0.0, 0.0) else end
+    path = CentrePath(_full(begin, start, i, j, scale), (CentrePiece(finish),))
+    return path, _cost(p, mode, path, feed, unit, plane, start, end)
 
 
 _tuple_new = tuple.__new__  # a named tuple without its constructor's keyword handling
@@ -464,7 +496,7 @@ class StraightCuts:
         plain line, which cannot change it)."""
         p = self.p
         stage = p.cutter
-        if stage is None or stage.lathe or stage.code == CANCEL:
+        if stage is None or stage.lathe or stage.code == CANCEL or stage.written:
             return False
         pending = stage.pending
         if (pending is None or not pending.per_length or pending.element[2] is not None or pending.startup
@@ -777,6 +809,20 @@ def _arc_finding(p: Planner, message: str, line: int) -> None:
         p.host.note("cutter", message, line, "cutter-arc")
         return
     raise MacroAlarm(CUTTER_ARC_START, message, "cutter-arc")
+
+
+def _rounded_corner(p: Planner, what: str, what_zh: str) -> None:
+    """A chamfer or corner R (``,C``/``,R``: ``Planner.block_corner``) on a start-up, a cancel or a
+    change of side: the control's alarm where the profile has it (``Dialect.corner_compensation_alarm``:
+    FANUC PS0039), else nothing (the corner is not simulated)."""
+    letter = p.block_corner
+    if letter is None or not p.dialect.corner_compensation_alarm:
+        return
+    raise MacroAlarm(CUTTER_CORNER, detail(
+        f",{letter} on the {what} of cutter radius compensation: the control does not chamfer or round the corner "
+        "of a start-up, a cancel or a change between G41 and G42; move it to a block in offset mode",
+        f"刀具半径补偿{what_zh}的程序段中指令了 ,{letter}：系统不能在补偿的建立、取消或 G41/G42 切换处倒角或倒圆角；"
+        "请将其移到补偿方式中的程序段"), "cutter-corner")  # fmt: skip
 
 
 def _arc_message(code: str, what: str, what_zh: str) -> str:

@@ -85,6 +85,7 @@ class Planner:
     vector_before: list[float] | None = None
     block_feed: bool = False  # whether that block writes F (G93 takes one in every cut: missing_feed.py)
     whereabouts: Whereabouts = START  # what the run knows of where the machine is (whereabouts.py)
+    block_corner: str | None = None  # a block's ,C or ,R (its letter) while it runs (machine/corners.py)
 
     def __init__(self, dialect: Dialect, settings: MachineSettings, host: PlannerHost) -> None:
         self.dialect = dialect

@@ -52,6 +52,8 @@ PROFILE = Dialect(
     arc_centre_alarm=True,  # PS0022 (docs/semantics.md §8, "Arcs")
     cutter_alarms=True,
     skip_compensation_alarm=True,  # PS0035 (docs/semantics.md, "Cutter radius compensation")
+    corner_compensation_alarm=True,  # PS0039 (the same)
+    repeated_side_perpendicular=True,  # G41 again in G41: the perpendicular (the same)
     keyword_abbreviations=True,
     if_without_then=True,
     modal_g_before_call="execute",
@@ -73,14 +75,19 @@ PROFILE = Dialect(
 
 # The FANUC-only rules, off where a control of another maker is built on this profile (Haas,
 # Mitsubishi, Mazak): no source at hand gives them there. G54 Pn as G54.1 Pn; the alarms PS0044
-# (G27-G30 in a canned cycle), PS0045 (G73/G83 without Q; Haas pecks by Q or by I, J, K) and PS0022
-# (an arc without R or I, J, K); T, S and G04's P refused a decimal point (Haas's G04 P10. is 10 s).
+# (G27-G30 in a canned cycle), PS0045 (G73/G83 without Q; Haas pecks by Q or by I, J, K), PS0022
+# (an arc without R or I, J, K) and PS0039 (,C/,R on a compensation start-up, cancel or change of
+# side); G41/G42 again in offset mode ending the previous block on its perpendicular (Mitsubishi's
+# manual has the intersection there); T, S and G04's P refused a decimal point (Haas's G04 P10. is
+# 10 s).
 # The helix fed along its arc is one of them too, in the timing: ``OTHER_MAKERS_TIMING``
 OTHER_MAKERS: dict[str, object] = {
     "extra_offset_by_g54_p": False,
     "reference_in_cycle_alarm": False,
     "peck_q_alarm": False,
     "arc_centre_alarm": False,
+    "corner_compensation_alarm": False,
+    "repeated_side_perpendicular": False,
     "no_point_words": {},
 }
 OTHER_MAKERS_TIMING = replace(PROFILE.timing, helix_fed_on_arc=False)  # a helix fed along itself
