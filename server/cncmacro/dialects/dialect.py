@@ -197,6 +197,11 @@ class Dialect:
     # changes nothing and the corner is the usual intersection (Mitsubishi M700V/M70V §12.4: G41/G42
     # without I, J gives the "intersection point calculation type vector")
     repeated_side_perpendicular: bool = False
+    # "Cutter radius compensation": a coordinate shift in offset mode (G52, G54-G59, G92/G50) sets
+    # the compensation aside, the move before it ending on its perpendicular, and the next move in
+    # the plane starts it again (GSK980TDi §3.19 note 2, §3.21 note 5); without this switch the
+    # offset goes on, the corner worked out in the coordinates in force after the shift
+    shift_cancels_compensation: bool = False
     # §10.2/§12 tool nose radius compensation in G70-G73 (GSK980TDi §3.23.1): only a G41/G42 on the
     # shape's first block N(ns) compensates the shape, the cycle's end cancels it, and a compensation
     # in force before the cycle is set aside for it; without this switch G70 runs its shape in the

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
-from .cutter_stage import cutter_code
+from .cutter_stage import cutter_code, frame_moved
 from .drill_cycles import CYCLE_Q
 from .machine_limits import lathe_offset, offset_number, spindle_speed, tool_number
 from .moves import ToolChange
@@ -63,7 +63,9 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
             elif group == "wcs" and g in p.extra_codes:
                 p.extra_wcs = _extra_offset(p, g, other)
     if before is not None:
-        keep_machine_position(p, before)
+        moved = keep_machine_position(p, before)
+        if moved and p.cutter is not None:  # in offset mode: the corner in one frame (cutter_stage.py)
+            frame_moved(p, moved)
     return one_shot_code
 
 

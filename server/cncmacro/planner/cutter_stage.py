@@ -117,7 +117,9 @@ class CutterStage:
     waiting for the next, the offsets already noted as having no value, and the indexes of the
     plane's two axes and where offset D's geometry and wear are kept."""
 
-    __slots__ = ("axes", "bases", "code", "lathe", "noted", "on", "pending", "plane", "type_b", "written")
+    __slots__ = (
+        "axes", "bases", "code", "lathe", "moved", "noted", "on", "pending", "plane", "resume", "type_b", "written",
+    )  # fmt: skip
 
     def __init__(
         self, code: float, plane: float, type_b: bool, axes: tuple[int, int] = (0, 1),
@@ -135,10 +137,17 @@ class CutterStage:
         # G41/G42 written again in offset mode, for the next move in the plane: SAME side (the
         # previous block ends on its perpendicular) or a SWITCH of side; "" when not
         self.written = ""
+        # the coordinate system moved since the pending move (``frame_moved``): that move and how
+        # far its points go to be in the coordinates now in force (the plane's units)
+        self.moved: tuple[Pending, float, float] | None = None
+        # where the tool centre is after a shift set the compensation aside (GSK980TDi): the next
+        # start-up starts there
+        self.resume: _Point | None = None
 
     def copy(self) -> CutterStage:
         c = CutterStage(self.code, self.plane, self.type_b, self.axes, self.bases, self.lathe)
         c.on, c.pending, c.noted, c.written = self.on, self.pending, self.noted, self.written
+        c.moved, c.resume = self.moved, self.resume
         return c
 
 
@@ -236,6 +245,7 @@ def uncompensated(p: Planner, run: Callable[[], _T]) -> _T:
             stage.on = False
             stage.pending = None
             stage.written = ""
+            stage.resume = None
             p.cutter = stage if stage.code != CANCEL else None
 
 
@@ -361,6 +371,8 @@ def cutter_move(
         element = PathElement(first, _plane_point(end, i, j, scale))
         tip = _tip(p, abs(d), i, j)  # outside offset mode the programmed point is the imaginary tool nose's
         begin = _full((first[0] - tip[0], first[1] - tip[1]), start, i, j, scale) if tip != (0.0, 0.0) else start
+        if stage.resume is not None:  # the compensation set aside by a shift: from where the centre is
+            begin, stage.resume = _full(_plane_point(stage.resume, i, j, scale), start, i, j, scale), None
         d = d if stage.code == LEFT else -d
         return _provisional(p, line, mode, plane, element, d, begin, start, end, None, feed, unit, True, i, j)
     written = stage.written if in_plane else ""
@@ -371,6 +383,9 @@ def cutter_move(
     pending = stage.pending
     if not in_plane:  # a move off the plane: made where the tool centre is
         at = _plane_point(start if pending is None else pending.path.pieces[-1].end, i, j, scale)
+        moved = stage.moved
+        if moved is not None and moved[0] is pending:
+            at = (at[0] + moved[1], at[1] + moved[2])
         path = CentrePath(_full(at, start, i, j, scale), (CentrePiece(_full(at, end, i, j, scale)),))
         if pending is not None and p.record_moves:
             stage.pending = pending._replace(between=(*pending.between, len(p.moves)))
@@ -393,12 +408,13 @@ def cutter_move(
         _rounded_corner(p, "change of side", "切换")
     if pending is not None:
         outer = PERPENDICULAR_AFTER if pending.startup and not stage.type_b else MEET
+        here, mx, my = _in_frame(stage, pending)
         if written == SAME:  # FANUC: "a right angle to the moving direction in the previous block"
-            q = perpendicular_end(pending.element, pending.d)
+            q = perpendicular_end(here.element, here.d)
             corner = Corner(q, (), q)
         else:
-            corner = _corner(p, pending, element, d, outer, line)
-        _settle(p, pending, corner, line, i, j, scale)
+            corner = _corner(p, here, element, d, outer, line)
+        _settle(p, pending, _moved_corner(corner, -mx, -my), line, i, j, scale)
         begin = corner.after_start
     return _provisional(p, line, mode, plane, element, d, _full(begin, start, i, j, scale), start, end, centre, feed,
                         unit, False, i, j)  # fmt: skip
@@ -420,8 +436,9 @@ def _cancel_move(
     last = _plane_point(end, i, j, scale)
     if pending is not None:
         outer = PERPENDICULAR_BEFORE if arc or not stage.type_b else MEET
-        corner = _corner(p, pending, PathElement(begin, last), pending.d, outer, line)
-        _settle(p, pending, corner, line, i, j, scale)
+        here, mx, my = _in_frame(stage, pending)
+        corner = _corner(p, here, PathElement(begin, last), pending.d, outer, line)
+        _settle(p, pending, _moved_corner(corner, -mx, -my), line, i, j, scale)
         begin = corner.after_start
     stage.on = False
     stage.pending = None
@@ -496,7 +513,7 @@ class StraightCuts:
         plain line, which cannot change it)."""
         p = self.p
         stage = p.cutter
-        if stage is None or stage.lathe or stage.code == CANCEL or stage.written:
+        if stage is None or stage.lathe or stage.code == CANCEL or stage.written or stage.moved is not None:
             return False
         pending = stage.pending
         if (pending is None or not pending.per_length or pending.element[2] is not None or pending.startup
@@ -809,6 +826,62 @@ def _arc_finding(p: Planner, message: str, line: int) -> None:
         p.host.note("cutter", message, line, "cutter-arc")
         return
     raise MacroAlarm(CUTTER_ARC_START, message, "cutter-arc")
+
+
+def frame_moved(p: Planner, change: dict[int, float]) -> None:
+    """The program position took ``change`` (per axis, new minus old) while the machine stayed
+    where it was: a work offset (G54-G59, G10 L2), a local coordinate system (G52) or a coordinate
+    setting (G92/G50, its preset) in offset mode. The pending move's corner with the next one is
+    then worked out in one frame, the coordinates now in force (``moved``, read by ``_in_frame``);
+    where the profile sets the compensation aside at a shift (``Dialect.shift_cancels_compensation``:
+    GSK980TDi §3.19, §3.21) the pending move keeps its end on its perpendicular and the next move in
+    the plane is a start-up from there (``resume``)."""
+    stage = p.cutter
+    if stage is None or not stage.on:
+        return
+    i, j = stage.axes
+    di, dj = change.get(i, 0.0), change.get(j, 0.0)
+    if not di and not dj:
+        return
+    pending = stage.pending
+    if p.dialect.shift_cancels_compensation:
+        stage.on = False
+        stage.pending = stage.moved = None
+        stage.written = ""
+        if pending is not None:
+            end = pending.path.pieces[-1].end
+            stage.resume = tuple(v + change.get(k, 0.0) for k, v in enumerate(end))
+        return
+    if pending is None:
+        return
+    mx, my = _plane_point(tuple(change.get(k, 0.0) for k in range(max(i, j) + 1)), i, j, _lathe_scale(p, stage))
+    moved = stage.moved
+    if moved is not None and moved[0] is pending:
+        mx, my = mx + moved[1], my + moved[2]
+    stage.moved = (pending, mx, my)
+
+
+def _in_frame(stage: CutterStage, pending: Pending) -> tuple[Pending, float, float]:
+    """``pending`` with its element in the coordinates now in force (``CutterStage.moved``) and
+    how far it was moved; the move is read, the record of the shift is done with."""
+    moved = stage.moved
+    stage.moved = None
+    if moved is None or moved[0] is not pending:
+        return pending, 0.0, 0.0
+    _, mx, my = moved
+    e = pending.element
+    c = None if e.centre is None else (e.centre[0] + mx, e.centre[1] + my)
+    element = PathElement((e.start[0] + mx, e.start[1] + my), (e.end[0] + mx, e.end[1] + my), c, e.ccw)
+    return pending._replace(element=element), mx, my
+
+
+def _moved_corner(corner: Corner, mx: float, my: float) -> Corner:
+    """``corner`` moved by (``mx``, ``my``) in the plane."""
+    if not mx and not my:
+        return corner
+    links = tuple((x + mx, y + my) for x, y in corner.links)
+    (bx, by), (ax, ay) = corner.before_end, corner.after_start
+    return Corner((bx + mx, by + my), links, (ax + mx, ay + my))
 
 
 def _rounded_corner(p: Planner, what: str, what_zh: str) -> None:

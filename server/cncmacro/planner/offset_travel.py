@@ -37,13 +37,17 @@ def work_offsets(p: Planner) -> list[float]:
     return [work_offset(p, i) for i in range(len(p.pos))]
 
 
-def keep_machine_position(p: Planner, before: list[float]) -> None:
+def keep_machine_position(p: Planner, before: list[float]) -> dict[int, float]:
     """The work offsets were ``before`` and are now those in force: the tool stays where it is on
-    the machine, so its program position takes the difference."""
+    the machine, so its program position takes the difference, which is returned per axis moved
+    (for cutter_stage.py's ``frame_moved``)."""
+    change: dict[int, float] = {}
     for i, was in enumerate(before):
         d = work_offset(p, i) - was
         if abs(d) >= _NONE:
             p.pos[i] -= d
+            change[i] = -d
+    return change
 
 
 def vector_changing(p: Planner) -> None:

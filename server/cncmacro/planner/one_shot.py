@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, REFERENCE_IN_CYCLE
 from .alarms import MacroAlarm
+from .cutter_stage import frame_moved
 from .lathe_cycles import ShapeCall, lathe_cycle
 from .machine_limits import g53_bounds, leaves_travel
 from .offset_travel import keep_machine_position, work_offsets
@@ -87,9 +88,13 @@ def one_shot(
         # increments), bar work's G50 W15. shifting the part for the next one. The tool stays
         setting = {**{i: p.pos[i] + d for i, d in inc.items()}, **axes}
         coordinates_set(p, setting)  # a frame known where the machine position was (whereabouts.py)
+        change: dict[int, float] = {}
         for i, v in setting.items():
             p.shift[i] += p.pos[i] - v
+            change[i] = v - p.pos[i]
             p.pos[i] = v
+        if p.cutter is not None:  # in offset mode: the corner in one frame (cutter_stage.py)
+            frame_moved(p, change)
         return False, None
     if p.dialect.lathe and g in p.dialect.cycle_codes:
         return lathe_cycle(p, g, axes, inc, other, file, line)
@@ -102,11 +107,14 @@ def one_shot(
         switch_virtual_plane(p, g, polar)
         return False, None
     if g in p.dialect.preset_codes:  # G92.1 IP0: the shift of the named axes cancelled, no move
-        for i in set(axes) | set(inc):
+        change = {i: p.shift[i] for i in set(axes) | set(inc)}
+        for i in change:
             p.pos[i] += p.shift[i]
             p.shift[i] = 0.0
             p.codes.pop(f"{LOCAL_ORIGIN}{i}", None)
-        shift_cancelled(p, set(axes) | set(inc))
+        shift_cancelled(p, set(change))
+        if p.cutter is not None:
+            frame_moved(p, change)
         return False, None
     if axes or inc:  # any other one-shot code with axis words: move in the modal mode
         mode = p.modal.get("motion", 0.0)
@@ -164,12 +172,16 @@ def local_coordinates(p: Planner, axes: dict[int, float]) -> None:
     coordinate system (0 cancels it). The tool does not move: the program position moves by the
     change, the coordinate shift takes it up, so the machine position (positions.py) stays. The
     origin is kept with the codes, as a snapshot keeps them."""
+    moved: dict[int, float] = {}
     for i, v in axes.items():
         key = f"{LOCAL_ORIGIN}{i}"
         change = v - (p.codes.get(key) or 0.0)
         p.codes[key] = v
         p.shift[i] += change
         p.pos[i] -= change
+        moved[i] = -change
+    if p.cutter is not None:  # in offset mode: the corner in one frame (cutter_stage.py)
+        frame_moved(p, moved)
 
 
 def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[str, float]) -> None:
@@ -192,7 +204,9 @@ def g10(p: Planner, axes: dict[int, float], inc: dict[int, float], other: dict[s
                 host.store_added(base + i, v)
         for i, v in inc.items():
             host.store_added(base + i, v)
-        keep_machine_position(p, before)
+        moved = keep_machine_position(p, before)
+        if moved and p.cutter is not None:
+            frame_moved(p, moved)
         return
     if p.dialect.lathe:
         geometry = number >= 10000

@@ -110,6 +110,9 @@ PROFILE = Dialect(
     extra_functions=frozenset({"RAND", "SRAND"}),
     if_without_then=False,
     corner_words=False,
+    # §3.19 note 2 (G52), §3.21 note 5 (G54-G59): a shift sets the tool nose radius compensation
+    # aside until the next move (docs/semantics.md, "Tool nose radius compensation on a lathe")
+    shift_cancels_compensation=True,
     # §3.32: a G code set to call a macro that equals a standard G code is no call
     standard_g_calls=False,
     # typical of a small slant-bed lathe; a machine file gives the machine's own. X's rate is
