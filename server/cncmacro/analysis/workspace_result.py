@@ -24,7 +24,7 @@ from .indexes.open_programs import RunKey
 from .runs.cycle_lenses import FileTiming, file_timings
 from .runs.entry_runs import EntryRuns
 from .runs.run_checks import FILE_BUDGETS, MAX_SECONDS, EntryRun, not_run_diagnostic, run_diagnostics
-from .runs.unknown_stops import after_a_stop, unknown_stop
+from .runs.unknown_stops import after_a_stop, holds_one, passed_guards, unknown_stop
 from .runs.unreached import UnreachedRanges
 from .severity import apply_severities
 from .workspace_documents import WorkspaceDocument
@@ -146,12 +146,13 @@ def _not_executed(files: _Files, runs: EntryRuns, entries: Mapping[RunKey, Found
     out: list[Diagnostic] = []
     found = unreached.ranges(runs.runs, files.loaded, sorted(shown))
     stops = [stop for run in runs.runs.values() for stop in unknown_stop(run.machine)]
+    guarded = [at for run in runs.runs.values() for at in passed_guards(run.machine)]
     for file, ranges in found.items():
         loaded = files.loaded(file)
         if loaded is None:  # ``ranges`` found it loaded: only a file gone since then
             continue
         out += [_not_executed_diagnostic(file, loaded.lines, first, last, locale) for first, last in ranges
-                if not after_a_stop(stops, file, first)]  # fmt: skip
+                if not after_a_stop(stops, file, first) and not holds_one(guarded, file, first, last)]  # fmt: skip
     return out
 
 

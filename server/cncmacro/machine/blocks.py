@@ -52,6 +52,7 @@ from .block_rules import DIALECT_FORMS, first_alarm, validate_block
 from .calls import h_code_form
 from .corners import with_corners
 from .expressions import ExpressionCompiler, Getter
+from .guards import Passed, alarm_only, alarm_then
 from .variables import out_of_range
 
 if TYPE_CHECKING:
@@ -158,6 +159,39 @@ class CompiledFile:
             )
         del frame.loops[keep:]
         return target
+
+    def jump_target(self, frame: Any, pc: int, label: float | None) -> int | None:
+        """The line ``GOTO label`` on line ``pc`` would land on, without jumping; None where the
+        jump would alarm (no such label, a label out of range, a jump into a loop or a block IF)."""
+        if label is None or label != label:
+            return None
+        n = int(round_half_away(label))
+        if not 1 <= n <= 99999:
+            return None
+        hit = self._jumps.get((pc, n))
+        if hit is None:
+            try:
+                hit = self._jumps[(pc, n)] = self._find_jump(frame, pc, n)
+            except MacroAlarm:
+                return None
+        return hit[0] if hit[1] >= 0 else None
+
+    def guard_jump(self, m: Machine, pc: int, nxt: int, label: Getter, passed: Passed) -> bool:
+        """Whether an analysis run jumps at a branch on line ``pc`` whose condition is unknown
+        (``guards.py``): not where the jump lands on the program's own alarm, yes where the block
+        after the branch is that alarm; otherwise the path stops there (``UnknownValue``)."""
+        try:
+            at = self.jump_target(m.frames[-1], pc, label(m))
+        except MacroAlarm:  # a label made from an unknown value
+            at = None
+        blocks, dialect = self.file.program.blocks, self.machine.dialect
+        if at is not None and at != nxt:
+            to_alarm = alarm_only(blocks[at], dialect)
+            next_alarm = 0 <= nxt < len(blocks) and alarm_only(blocks[nxt], dialect)
+            if to_alarm != next_alarm:
+                passed.record(m, pc, at if to_alarm else nxt)
+                return next_alarm
+        raise UnknownValue
 
     def _find_jump(self, frame: Any, pc: int, n: int) -> tuple[int, int]:
         """(target line, loops kept) of ``GOTO n`` on line ``pc``, by the rules of ``jumps``;
@@ -372,7 +406,18 @@ class CompiledFile:
                         return jump(m.frames[-1], pc, target(m), how)
                     return nxt
 
-                return if_goto
+                if not self.machine.kept_unknown:
+                    return if_goto
+                passed, guard = Passed(), self.guard_jump
+
+                def guarded_goto(m: Machine, pc: int) -> int:  # an analysis run (guards.py)
+                    try:
+                        taken = test(m)
+                    except UnknownValue:
+                        taken = guard(m, pc, nxt, target, passed)
+                    return jump(m.frames[-1], pc, target(m), how) if taken else nxt
+
+                return guarded_goto
             if s.then is None:  # IF [cond] alone (Haas): the condition is worked out, and governs nothing
 
                 def if_alone(m: Machine, pc: int) -> int:
@@ -387,7 +432,19 @@ class CompiledFile:
             def if_then(m: Machine, pc: int) -> int:
                 return then(m, pc) if test(m) else nxt
 
-            return if_then
+            if not (self.machine.kept_unknown and alarm_then(s, self.machine.dialect)):
+                return if_then
+            passed = Passed()
+
+            def guarded_alarm(m: Machine, pc: int) -> int:  # an analysis run (guards.py)
+                try:
+                    hit = test(m)
+                except UnknownValue:
+                    passed.record(m, pc, None)
+                    return nxt
+                return then(m, pc) if hit else nxt
+
+            return guarded_alarm
         if isinstance(s, Goto):
             target = self.values.value(s.target)
             jump = self.jump
@@ -419,7 +476,37 @@ class CompiledFile:
         def if_block(m: Machine, pc: int) -> int:
             return nxt if test(m) else other
 
-        return if_block
+        side = self._guarded_side(pair, nxt) if self.machine.kept_unknown else None
+        if side is None:
+            return if_block
+        passed, (go, skipped) = Passed(), side
+
+        def guarded_block(m: Machine, pc: int) -> int:  # an analysis run (guards.py)
+            try:
+                return nxt if test(m) else other
+            except UnknownValue:
+                passed.record(m, pc, skipped)
+                return go
+
+        return guarded_block
+
+    def _guarded_side(self, pair: tuple[int, int | None, int], nxt: int) -> tuple[int, int] | None:
+        """(the line to go on at, the alarm block's line) where one branch of the block IF
+        ``pair`` is nothing but the program's own alarm and the other is not (``guards.py``), else None."""
+        blocks, dialect = self.file.program.blocks, self.machine.dialect
+        _, else_line, endif = pair
+
+        def alone(first: int, end: int) -> bool:  # the branch first..end holds one alarm block
+            return first != end and alarm_only(blocks[first], dialect) and self.next_line(first) == end
+
+        then_alarm = alone(nxt, else_line if else_line is not None else endif)
+        after_else = self.next_line(else_line) if else_line is not None else None
+        else_alarm = after_else is not None and alone(after_else, endif)
+        if then_alarm and not else_alarm:
+            return (self.next_line(else_line if else_line is not None else endif), nxt)
+        if else_alarm and not then_alarm and after_else is not None:
+            return (nxt, after_else)
+        return None
 
     def branch_end(self, s: Else | EndIf, pc: int, nxt: int) -> Runner:
         """``ELSE`` reached from the branch before it goes on after its ``ENDIF``; ``ENDIF`` does

@@ -83,3 +83,5 @@ class Note:
     line: int
     subject: str | None = None  # e.g. "repeat-count" for a clamped L
     chain: tuple[CallLevel, ...] = ()  # the calls that led there, main program first
+    # a guard the analysis run went past (machine/guards.py): the line of the alarm block it did not run
+    skipped: int | None = None

@@ -19,6 +19,7 @@ from ..planner.alarms import UnknownValue
 from ..planner.numbers import bcd, bin_, round_half_away
 from ..syntax.nodes import Block, IndirectVar, Number, Var, Word
 from .alarms import MacroAlarm, macro_alarm_number, raiser
+from .guards import Passed
 
 if TYPE_CHECKING:
     from .blocks import CompiledFile, Runner
@@ -134,12 +135,18 @@ def compile_h_code(cf: CompiledFile, words: list[Word], nxt: int, block: Block |
             return alarm
         test = BRANCHES[h]
         jump = cf.jump
+        passed = Passed() if cf.machine.kept_unknown else None
 
         def branch(m: Machine, pc: int) -> int:
             j, k = q(m), r(m)
             if j != j or k != k:  # a branch on an unknown (unknown_values.py)
-                raise UnknownValue
-            if test(j, k):
+                if passed is None:
+                    raise UnknownValue
+                # the program's own guard: the side that does not alarm (guards.py)
+                taken = cf.guard_jump(m, pc, nxt, target, passed)
+            else:
+                taken = test(j, k)
+            if taken:
                 return jump(m.frame, pc, target(m))
             return nxt
 

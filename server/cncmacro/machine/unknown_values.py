@@ -23,7 +23,9 @@ cleared at power-on (#100–#199), but on a profile whose operator sets them bef
 Where the run must decide something with an unknown (a branch, an address word sent to the
 NC, a variable, label or program number made from it) the control would use its value; the
 run stops that path there with ``UnknownValue`` (planner/alarms.py), a note that names the
-variable and how to give it, and the text after it is still checked, not faded as unreached.
+variable and how to give it, and the text after it is still checked, not faded as unreached;
+where one side of a branch is nothing but the program's own macro alarm, the run follows the
+other side instead, as the machine does in production (``guards.py``).
 The motion takes an offset written from an unknown as 0 (``Machine.stored``). ``cncmacro run``
 and the debugger, which simulate one machine, keep reading these values as vacant (0 for the
 offsets).

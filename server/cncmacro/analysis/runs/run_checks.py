@@ -57,6 +57,7 @@ from ...library.machine_file import MachineSettings
 from ...library.programs import FoundProgram, ProgramLibrary
 from ...machine import CallLevel, Machine, Snapshot
 from ...machine.calls import letters_for_local
+from ...machine.frames import Note
 from ...machine.observer import RunObserver
 from ...machine.status import FINISHED, RunStatus
 from ...machine.tracking import same_state
@@ -67,7 +68,7 @@ from ..diagnostics import Diagnostic, Related, diagnostic
 from .endless_loops import SHARED, loop_certainty, waits_for_the_machine
 from .run_convergence import Earlier, keep_earlier, try_converge
 from .sure_alarms import surely_reached
-from .unknown_stops import named_persistent_values, runs_as_macro, unknown_value_text
+from .unknown_stops import GUARD_OPENING, is_guard_note, named_persistent_values, runs_as_macro, unknown_value_text
 
 CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again before converging
 MAX_SECONDS = 30.0  # wall-clock limit of one run
@@ -563,6 +564,18 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
     return replace(found, severity="information") if callers_to_decide else found
 
 
+def _guard_diagnostic(run: EntryRun, note: Note, line_text: Callable[[str, int], str], locale: str) -> Diagnostic:
+    """The ``unknown-value`` hint of a guard on an unknown value the run went past on the side
+    that does not raise the program's own alarm (machine/guards.py): what the condition depends
+    on, named as where a run stops on one."""
+    m = run.machine
+    ran = sorted((line for line in run.state.first.get(note.file, {}) if line < note.line), reverse=True)
+    en, zh = unknown_value_text(line_text(note.file, note.line), ((n, line_text(note.file, n)) for n in ran),
+                                m.kinds, m.dialect, run.as_macro, lambda n: _still_unknown(m, n),
+                                GUARD_OPENING)  # fmt: skip
+    return _diagnostic(note.file, note.line, "unknown-value", en, zh, note.chain, None, False, line_text, locale)
+
+
 def _endless_diagnostic(
     run: EntryRun, at: tuple[str, int, int], line_text: Callable[[str, int], str], locale: str
 ) -> Diagnostic:
@@ -661,8 +674,31 @@ def run_diagnostics(
         if cf is not None and line >= len(cf.code) - 1:  # stopped as it ran off the program's end
             line = max(0, len(cf.code) - 2)
         out.append(_diagnostic(f.file, line, "run-limit", en, zh, m.chain(), None, False, line_text, locale))
+    out += _note_diagnostics(run, line_text, locale)
+    for read in run.state.vacant.values():
+        spec1, spec2 = letters_for_local(read.number)
+        letter = spec1 or spec2 or "?"
+        caller = read.chain[-2] if len(read.chain) >= 2 else None
+        how = read.chain[-1].how
+        who = f"{caller.program} line {caller.line + 1} ({how})" if caller else "its caller"
+        who_zh = f" {caller.program} 第 {caller.line + 1} 行（{how}）" if caller else "调用者"
+        en = f"#{read.number} ({letter}) is read, but {who} does not pass {letter}"
+        zh = f"读取了 #{read.number}（{letter}），但{who_zh}没有传递 {letter}"
+        out.append(_diagnostic(read.file, read.line, "vacant-argument", en, zh, read.chain, None, False, line_text,
+                               locale))  # fmt: skip
+    return out
+
+
+def _note_diagnostics(run: EntryRun, line_text: Callable[[str, int], str], locale: str) -> list[Diagnostic]:
+    """The findings of the notes a run made (a clamped L, a lathe cycle's warning, a planner's note,
+    a guard it went past, ...)."""
+    m = run.machine
+    base = run.dialect.macro_alarm_base
+    out: list[Diagnostic] = []
     for note in m.notes:
-        if note.kind == "call" and note.subject == "repeat-count":
+        if is_guard_note(note.kind, note.subject):  # went past the program's own guard (machine/guards.py)
+            out.append(_guard_diagnostic(run, note, line_text, locale))
+        elif note.kind == "call" and note.subject == "repeat-count":
             en = in_language(note.message, False)
             zh = in_language(note.message, True)
             d = _diagnostic(note.file, note.line, "repeat-count-range", en, zh, note.chain, None, False, line_text,
@@ -687,17 +723,6 @@ def run_diagnostics(
             en, zh = in_language(note.message, False), in_language(note.message, True)
             out.append(_diagnostic(note.file, note.line, "feed-per-minute" if note.kind == "feed" else NO_FEED, en,
                                    zh, note.chain, None, False, line_text, locale))  # fmt: skip
-    for read in run.state.vacant.values():
-        spec1, spec2 = letters_for_local(read.number)
-        letter = spec1 or spec2 or "?"
-        caller = read.chain[-2] if len(read.chain) >= 2 else None
-        how = read.chain[-1].how
-        who = f"{caller.program} line {caller.line + 1} ({how})" if caller else "its caller"
-        who_zh = f" {caller.program} 第 {caller.line + 1} 行（{how}）" if caller else "调用者"
-        en = f"#{read.number} ({letter}) is read, but {who} does not pass {letter}"
-        zh = f"读取了 #{read.number}（{letter}），但{who_zh}没有传递 {letter}"
-        out.append(_diagnostic(read.file, read.line, "vacant-argument", en, zh, read.chain, None, False, line_text,
-                               locale))  # fmt: skip
     return out
 
 

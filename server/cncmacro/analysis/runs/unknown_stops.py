@@ -6,7 +6,10 @@ and the two places a value can come from: ``[variables]`` in the machine file, o
 persistent-variable file the machine file names (``persistent_file``), which the analysis
 reads as ``cncmacro run`` does; or the random number it depends on (``RAND``, ``SRAND``), for
 which no value can be given. The run stopped there, not the program: the blocks after it are
-not "not executed" (``unknown_stop``).
+not "not executed" (``unknown_stop``). Where the branch is the program's own guard (one side
+nothing but its macro alarm, machine/guards.py) the run went on along the other side: the note
+says so (``guard_opening``), and the alarm block it did not run is not "not executed" either
+(``passed_guards``).
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ from ...library.programs import FoundProgram
 from ...machine import Machine
 from ...machine.calls import letters_for_local
 from ...machine.expressions import VariableKinds
+from ...machine.guards import GUARD, UNKNOWN_NOTE
 from ...machine.status import RunStatus
 from ...machine.unknown_values import assigned, is_input, is_kept, is_skip_position, is_tool, variables_in
 from ...planner.alarms import UNKNOWN_VALUE
@@ -31,6 +35,14 @@ log = logging.getLogger(__name__)
 _COMMENT = re.compile(r"\([^)]*\)?")  # a comment, to its ")" or the line's end
 _RETURN_OR_END = re.compile(r"M\s*0*(?:99|30|2)(?![\d.])", re.IGNORECASE)  # may hold M99, M30 or M02
 _RANDOM = re.compile(r"S?RAND\s*\[", re.IGNORECASE)  # a random number: RAND[..], SRAND[..] (GSK980TDi)
+# how a note opens (English, Chinese): where the run stops on an unknown, and where it went past
+# the program's own guard on one (machine/guards.py)
+STOP_OPENING = ("the analysis run stops here: this block depends", "分析运行在此停止：本程序段取决于")
+GUARD_OPENING = (
+    "the analysis run goes on past this guard, on the side that does not raise the program's own alarm, as the "
+    "machine passes it in production: the condition depends",
+    "分析运行沿不触发程序自身报警的一侧越过此保护判断继续（机床在生产中通过该判断）：条件取决于",
+)
 
 
 def runs_as_macro(found: FoundProgram) -> bool:
@@ -86,7 +98,8 @@ def named_persistent_values(settings: MachineSettings) -> dict[int, float]:
 
 def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: VariableKinds,
                        dialect: Dialect, arguments: bool,
-                       unknown: Callable[[int], bool] = lambda n: True) -> tuple[str, str]:  # fmt: skip
+                       unknown: Callable[[int], bool] = lambda n: True,
+                       opening: tuple[str, str] = STOP_OPENING) -> tuple[str, str]:  # fmt: skip
     """The note (English, Chinese) for a run stopped on block ``text`` by an unknown value. It
     names at most three variables the block's value comes from: the block's own that no
     ``earlier`` block (that ran before it in its file: (line, text), nearest first) assigned,
@@ -96,7 +109,8 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     may set, each of them still ``unknown`` where the run stopped (a
     tool number the program has set since is not). Where the value was read through ``#[...]``,
     whose number only the run knows, and no such variable is left, the note names that read; where
-    a random number (``RAND``, ``SRAND``) comes in, that it cannot be foreseen."""
+    a random number (``RAND``, ``SRAND``) comes in, that it cannot be foreseen. ``opening`` is how
+    the note starts: ``STOP_OPENING``, or ``GUARD_OPENING`` for a guard the run went past."""
     wanted, indirect, through, touched, drawn = _sources(text, earlier, dialect)
 
     def probed_here(n: int) -> bool:  # where a G31 stopped: #5061…, or GSK's #995… once a G31 wrote it
@@ -109,9 +123,9 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
              if (is_kept(n, kinds, dialect) or is_input(n, dialect) or is_skip_position(n, dialect)
                  or from_caller(n)) and unknown(n)]  # fmt: skip
     if not named and drawn:
-        return _random_number(drawn[0])
+        return _random_number(drawn[0], opening)
     if not named and indirect:
-        return _read_through(through)
+        return _read_through(through, opening)
     kept = [(n, line) for n, line in named[:3] if not from_caller(n)]
     passed = [(n, line) for n, line in named[:3] if 1 <= n <= 33 and from_caller(n)]
     set_before = [(n, line) for n, line in named[:3] if from_caller(n) and not 1 <= n <= 33]
@@ -153,8 +167,7 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     else:
         which, which_zh = "on " + " and ".join(parts), "和".join(parts_zh)
     tail, tail_zh = _tail(bool(kept), bool(passed), bool(set_before), bool(tool), bool(inputs), bool(probed))
-    return (f"the analysis run stops here: this block depends {which}; {tail}",
-            f"分析运行在此停止：本程序段取决于{which_zh}；{tail_zh}")  # fmt: skip
+    return f"{opening[0]} {which}; {tail}", f"{opening[1]}{which_zh}；{tail_zh}"
 
 
 def _tail(kept: bool, passed: bool, set_before: bool, tool: bool, inputs: bool, probed: bool) -> tuple[str, str]:
@@ -237,27 +250,27 @@ def _skip_code(dialect: Dialect) -> re.Pattern[str]:
     return re.compile(rf"G\s*(?:{'|'.join(codes)})(?![\d.])", re.IGNORECASE)
 
 
-def _random_number(line: int | None) -> tuple[str, str]:
+def _random_number(line: int | None, opening: tuple[str, str]) -> tuple[str, str]:
     """The note of a stop on a random number (``RAND``, ``SRAND``, drawn on ``line``; None: the block's own)."""
     where = f" (line {line + 1})" if line is not None else ""
     where_zh = f"（第 {line + 1} 行）" if line is not None else ""
     return (
-        f"the analysis run stops here: this block depends on a random number (RAND, SRAND){where}, which the "
-        "control draws as the program runs; no check can foresee it, so what the block decides with it is not judged",
-        f"分析运行在此停止：本程序段取决于随机数（RAND、SRAND）{where_zh}，由系统在程序运行时产生；"
+        f"{opening[0]} on a random number (RAND, SRAND){where}, which the control draws as the program runs; no "
+        "check can foresee it, so what the block decides with it is not judged",
+        f"{opening[1]}随机数（RAND、SRAND）{where_zh}，由系统在程序运行时产生；"
         "检查无法预知其值，因此不判断本程序段据此所作的决定",
     )
 
 
-def _read_through(line: int | None) -> tuple[str, str]:
+def _read_through(line: int | None, opening: tuple[str, str]) -> tuple[str, str]:
     """The note of a stop on a value read through ``#[...]`` (on ``line``; None: the block's own)."""
     where = f" (line {line + 1})" if line is not None else ""
     where_zh = f"（第 {line + 1} 行）" if line is not None else ""
     return (
-        f"the analysis run stops here: this block depends on a value read through #[...]{where}, a variable whose "
+        f"{opening[0]} on a value read through #[...]{where}, a variable whose "
         "number the run works out (an offset or a common the machine keeps); set it under [variables] in "
         ".cncmacro.toml (or in the persistent file it names) to check further",
-        f"分析运行在此停止：本程序段取决于经 #[...] 读取的值{where_zh}，其变量号在运行时算出"
+        f"{opening[1]}经 #[...] 读取的值{where_zh}，其变量号在运行时算出"
         "（机床上保存的补偿值或公共变量）；在 .cncmacro.toml 的 [variables]"
         "（或它指定的断电保持变量文件）中给出即可继续检查",
     )
@@ -276,6 +289,24 @@ def unknown_stop(m: Machine) -> list[tuple[str, int]]:
 def after_a_stop(stops: list[tuple[str, int]], file: str, first: int) -> bool:
     """Whether lines from ``first`` on in ``file`` come after one of the ``stops``."""
     return any(f == file and first > line for f, line in stops)
+
+
+def is_guard_note(kind: str, subject: str | None) -> bool:
+    """Whether a run's note of ``kind`` and ``subject`` says it went past the program's own guard
+    on an unknown value (machine/guards.py)."""
+    return kind == UNKNOWN_NOTE and subject == GUARD
+
+
+def passed_guards(m: Machine) -> list[tuple[str, int]]:
+    """(file, line) of each alarm block a run did not run where it went past the program's own
+    guard on an unknown value (machine/guards.py). The machine may take that side (a count not
+    yet set on the machine): the range of unreached lines that holds it is not "not executed"."""
+    return [(n.file, n.skipped) for n in m.notes if n.skipped is not None and is_guard_note(n.kind, n.subject)]
+
+
+def holds_one(lines: list[tuple[str, int]], file: str, first: int, last: int) -> bool:
+    """Whether lines ``first`` to ``last`` of ``file`` hold one of ``lines``."""
+    return any(f == file and first <= line <= last for f, line in lines)
 
 
 def _names(found: list[tuple[int, int | None]], letters: bool = False) -> tuple[str, str]:
