@@ -15,6 +15,7 @@ from typing import Any
 
 from lsprotocol import types
 
+from cncmacro.analysis.indexes.workspace_index import WorkspaceIndex
 from cncmacro.dialects import Dialect, get_dialect
 from cncmacro.library.machine_file import CallCode
 from cncmacro.lsp.cursor import cursor_at
@@ -49,7 +50,8 @@ class _MacroM97(_Documents):
 def _server(dialect: Dialect, documents: type[_Documents] = _Documents) -> Any:
     docs = documents(dialect)
     docs.open(types.TextDocumentItem(URI, "cncmacro", 1, TEXT))
-    return SimpleNamespace(documents=docs, locale="en")
+    index = WorkspaceIndex(lambda: docs.by_uri.values(), docs.dialect_for, calls_for=docs.calls_for)
+    return SimpleNamespace(documents=docs, locale="en", index=index)
 
 
 def _at(ls: Any, line: int, ch: int) -> Any:

@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING
 from lsprotocol import types
 
 from ..analysis.indexes.call_sites import call_site
+from ..analysis.indexes.return_labels import callers, return_landings, returns_onto
 from ..analysis.indexes.sites import label_jumps, word_at
 from ..bilingual import in_language, is_chinese, pick
 from ..dialects import describe
@@ -32,6 +33,7 @@ from ..dialects.functions_data import GSK_H_CODES
 from ..ide.cycle_words import cycle_form_of, cycle_word_at
 from ..machine.alarms import MacroAlarm
 from ..machine.calls import argument_targets, letters_for_local
+from ..machine.jump_words import RETURN_LABEL
 from ..machine.variables import named_number
 from ..syntax.nodes import (
     LOGICAL_SYMBOLS,
@@ -90,6 +92,8 @@ def hover_text(ls: CncMacroServer, cur: Cursor) -> tuple[str, int, int] | None:
         return program_hover(ls, cur, b.program, None), *b.program_span
     for j in cur.doc.sites.jumps_of(b):
         if j.start <= col <= j.end:
+            if j.kind == RETURN_LABEL:
+                return return_hover(ls, cur, j.label), j.start, j.end
             return label_hover(ls, cur, j.label), j.start, j.end
     for a in b.abbreviations:
         if a.start <= col <= a.end:
@@ -263,9 +267,46 @@ def label_hover(ls: CncMacroServer, cur: Cursor, label: int) -> str:
         found = t("being_found", loc, files=Path(cur.doc.path).name)
         return "\n".join([*lines, "", f"{t('jumps', loc)}: {found}"])
     jumps = [(i, j.kind) for i, j in label_jumps(cur.doc, unit.start, unit.end, label)]
+    if any(kind == RETURN_LABEL for _, kind in jumps) and callers(ls.index, cur.doc, unit):
+        jumps = [(i, kind) for i, kind in jumps if kind != RETURN_LABEL]  # called: its M99 P returns to the caller
     shown = [f"{t('line', loc)} {i + 1} ({kind})" for i, kind in jumps[:MAX_PLACES]]
+    for r in (r for at in defined for r in returns_onto(ls.index, cur.doc, at, label)):  # the callees' M99 P
+        where = "" if r.file.path == cur.doc.path else f"{Path(r.file.path).name}, "
+        shown.append(f"{where}{t('line', loc)} {r.line + 1} ({RETURN_LABEL} P{label})")
+        jumps.append((r.line, RETURN_LABEL))
     lines += _places(t("jumps", loc), shown, len(jumps), t("no_jumps", loc), loc)
     return "\n".join(lines)
+
+
+def return_hover(ls: CncMacroServer, cur: Cursor, label: int) -> str:
+    """The ``n`` of ``M99 P n``: the ``Nn`` of each caller it returns to
+    (``analysis/indexes/return_labels.py``), a main program's own, or that the callers are unknown."""
+    loc = ls.locale
+    program = cur.doc.parsed.program
+    unit = program.unit_at(cur.line)
+    name = f"O{unit.number:04d}" if unit.number is not None else Path(cur.doc.path).name
+    lines = [f"**N{label}** — {t('label', loc)}", ""]
+    found = return_landings(ls.index, cur.doc, cur.line, label)
+    if found.main:
+        lines.append(t("main_return", loc, name=name, label=label))
+        lines.append("")
+        lines.append(f"N{label}: {t('not_found', loc)}" if found.own is None else f"{t('line', loc)} {found.own + 1}")
+        return "\n".join(lines)
+    if not found.landings:
+        lines.append(t("callers_unknown", loc, name=name, label=label))
+        return "\n".join(lines)
+    shown = []
+    for landing in found.landings:
+        c = landing.caller
+        where = f"{c.name} ({Path(c.file.path).name})"
+        said = (
+            f"{where}: N{label} {t('not_found', loc)}"
+            if landing.line is None
+            else (f"{where}, {t('line', loc)} {landing.line + 1}")
+        )
+        if said not in shown:  # several calls of one caller that land alike: once
+            shown.append(said)
+    return "\n".join([*lines, t("returns_to", loc, label=label) + ":", *_bulleted(shown, loc)])
 
 
 def program_hover(

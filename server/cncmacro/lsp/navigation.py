@@ -11,18 +11,21 @@ label and every jump to it.
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
 
 from ..analysis.indexes.call_sites import call_site
+from ..analysis.indexes.return_labels import callers, return_landings, returns_onto
 from ..analysis.indexes.site_index import FileSites
 from ..analysis.indexes.sites import label_jumps, starts_from_the_top
 from ..dialects import describe
 from ..ide.under_cursor import label_under, program_under
 from ..library.machine_file import CallCode
-from ..machine.jumps import first_line, goto_line, return_line
+from ..machine.jump_words import RETURN_LABEL
+from ..machine.jumps import first_line, goto_line
 from ..syntax.nodes import Var
 from ..syntax.walk import nodes_at
 from .cursor import Cursor, cursor_at, doc_range
@@ -68,18 +71,14 @@ def _loc(uri: str, line: int, start: int, end: int, text: str, encoding: Encodin
 def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | None:
     encoding = ls.documents.encoding
     hit = label_under(cur.doc, cur.block, cur.column)
+    if hit is not None and hit[3] == RETURN_LABEL:
+        return return_locations(ls, cur, hit[0]) or None
     if hit is not None and hit[3] != "N":
         label, _, _, kind = hit
         program = cur.doc.parsed.program
         unit = program.unit_at(cur.line)
         lines = program.label_lines(label, unit)
-        target = (
-            return_line(lines, cur.line)
-            if kind == "M99"
-            else first_line(lines)
-            if starts_from_the_top(kind)
-            else goto_line(lines, cur.line)
-        )
+        target = first_line(lines) if starts_from_the_top(kind) else goto_line(lines, cur.line)
         if target is None:
             return None
         b = cur.doc.block(target)
@@ -96,6 +95,25 @@ def find_definition(ls: CncMacroServer, cur: Cursor) -> list[types.Location] | N
     return None
 
 
+def return_locations(ls: CncMacroServer, cur: Cursor, label: int) -> list[types.Location]:
+    """The ``Nn`` labels the ``M99 P n`` under the cursor returns to: one in each caller
+    (``analysis/indexes/return_labels.py``), or a main program's own."""
+    encoding = ls.documents.encoding
+    found = return_landings(ls.index, cur.doc, cur.line, label)
+    here = cur.doc.as_loaded()
+    places = [(here, found.own)] if found.main else []
+    places += [(x.caller.file, x.line) for x in found.landings]
+    out: list[types.Location] = []
+    for f, line in places:
+        if line is None or line >= len(f.lines):
+            continue
+        span = f.program.blocks[line].label_span or (0, 0)
+        loc = _loc(ls.uri_for_path(f.path), line, span[0], span[1], f.lines[line], encoding)
+        if loc not in out:
+            out.append(loc)
+    return out
+
+
 def machine_calls(ls: CncMacroServer, path: str) -> dict[str, CallCode] | None:
     """The call codes of the machine file that the file at ``path`` is read with, if any."""
     return ls.documents.calls_for(path)
@@ -104,8 +122,11 @@ def machine_calls(ls: CncMacroServer, path: str) -> dict[str, CallCode] | None:
 def find_references(ls: CncMacroServer, cur: Cursor, include_declaration: bool) -> list[types.Location] | None:
     encoding = ls.documents.encoding
     hit = label_under(cur.doc, cur.block, cur.column)
+    if hit is not None and hit[3] == RETURN_LABEL:  # M99 P n: the labels it returns to, and itself
+        landed = return_locations(ls, cur, hit[0]) if include_declaration else []
+        return [*landed, _loc(cur.doc.uri, cur.line, hit[1], hit[2], cur.doc.line(cur.line), encoding)]
     if hit is not None:
-        return label_references(cur, hit[0], include_declaration, encoding)
+        return label_references(ls, cur, hit[0], include_declaration, encoding)
     program = program_under(cur.doc, cur.block, cur.column, machine_calls(ls, cur.doc.path))
     if program is not None:
         number, called = program
@@ -119,19 +140,31 @@ def find_references(ls: CncMacroServer, cur: Cursor, include_declaration: bool) 
     return None
 
 
-def label_references(cur: Cursor, label: int, include_declaration: bool, encoding: Encoding) -> list[types.Location]:
+def label_references(
+    ls: CncMacroServer, cur: Cursor, label: int, include_declaration: bool, encoding: Encoding
+) -> list[types.Location]:
+    """The N label's lines and the jumps that land on them: those of its program (an ``M99 P``
+    there only when nothing calls the program: called, it returns to the caller) and the
+    ``M99 P`` of the programs it calls that return to it (``analysis/indexes/return_labels.py``)."""
     doc = cur.doc
     program = doc.parsed.program
     unit = program.unit_at(cur.line)
     out: list[types.Location] = []
+    defined = program.label_lines(label, unit)
     if include_declaration:
-        for i in program.label_lines(label, unit):
+        for i in defined:
             b = doc.block(i)
             if b is not None and b.label_span:
                 out.append(_loc(doc.uri, i, b.label_span[0], b.label_span[1], doc.line(i), encoding))
-    for i, j in label_jumps(doc, unit.start, unit.end, label):
+    jumps = list(label_jumps(doc, unit.start, unit.end, label))
+    if any(j.kind == RETURN_LABEL for _, j in jumps) and callers(ls.index, doc, unit):
+        jumps = [(i, j) for i, j in jumps if j.kind != RETURN_LABEL]
+    for i, j in jumps:
         out.append(_loc(doc.uri, i, j.start, j.end, doc.line(i), encoding))
-    out.sort(key=lambda x: (x.range.start.line, x.range.start.character))
+    for r in (r for at in defined for r in returns_onto(ls.index, doc, at, label)):
+        uri = ls.uri_for_path(r.file.path)
+        out.append(_loc(uri, r.line, r.site.start, r.site.end, r.file.lines[r.line], encoding))
+    out.sort(key=lambda x: (x.uri != doc.uri, x.uri, x.range.start.line, x.range.start.character))
     return out
 
 
@@ -199,6 +232,13 @@ def rename_label(ls: CncMacroServer, cur: Cursor, new_name: str) -> types.Worksp
     if new != hit[0] and program.label_lines(new, unit):
         # two N20 in one program: every jump to N20 would land on the first, wherever it was
         raise refused(f"N{new} is already a label in this program: renaming onto it would change where jumps land")
+    returns = [r for at in program.label_lines(hit[0], unit) for r in returns_onto(ls.index, doc, at, hit[0])]
+    if returns:  # rewriting that M99 P would move the returns of its other callers
+        r = returns[0]
+        raise refused(
+            f"N{hit[0]} is where M99 P{hit[0]} of {Path(r.file.path).name} (line {r.line + 1}) returns: "
+            "rename the label there and here together"
+        )
     edits: list[types.TextEdit] = []
     for i in program.label_lines(hit[0], unit):
         b = doc.block(i)

@@ -60,6 +60,16 @@ TEXTS: dict[str, tuple[str, str]] = {
     "no_jumps": ("no jump names it", "没有跳转指向此处"),
     "target": ("target", "目标"),
     "not_found": ("not found", "未找到"),
+    "returns_to": ("M99 P{label} returns to N{label} of the calling program", "M99 P{label} 返回调用程序的 N{label}"),
+    "callers_unknown": (
+        "M99 P{label} returns to N{label} of the program that calls {name}: no call of {name} was found in the "
+        "workspace, so where it lands is known only when it runs",
+        "M99 P{label} 返回调用 {name} 的程序中的 N{label}：工作区中未找到对 {name} 的调用，落点在运行时才能确定",
+    ),
+    "main_return": (
+        "Nothing in the workspace calls {name}: as a main program, M99 P{label} goes on from its own N{label}",
+        "工作区中没有程序调用 {name}：作为主程序，M99 P{label} 从其自身的 N{label} 继续执行",
+    ),
     "on_control": (
         "kept on the control ({title} keeps {ranges} there: programs_on_control of its profile or of the "
         "machine file); the run returns from it at once. "
