@@ -131,12 +131,12 @@ async def test_a_huge_file_reports_progress_on_its_first_analysis(client: Langua
     assert kinds[0] == "begin" and kinds[-1] == "end"
 
 
-async def test_an_error_in_a_handler_is_an_error_response_and_the_server_keeps_serving(client: LanguageClient) -> None:
+async def test_a_hover_on_a_document_not_open_is_null_and_the_server_keeps_serving(client: LanguageClient) -> None:
     missing = (FANUC / "never_opened.nc").as_uri()
-    with pytest.raises(JsonRpcException, match="not open"):
-        await client.text_document_hover_async(
-            types.HoverParams(types.TextDocumentIdentifier(missing), types.Position(0, 0))
-        )
+    hover = await client.text_document_hover_async(
+        types.HoverParams(types.TextDocumentIdentifier(missing), types.Position(0, 0))
+    )
+    assert hover is None
     uri = open_file(client, FANUC / "after_error.nc", "O0100\n#1=[2\n", version=3)
     got = await diagnostics_for(client, uri, 3)
     assert [d.code for d in got.diagnostics] == ["syntax"]

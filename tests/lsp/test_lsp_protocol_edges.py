@@ -2,7 +2,8 @@
 client library cannot send what these tests send): a wrong ``Content-Length`` costs one
 message, or two when it runs into the next one's header, never the session; a body that is not
 JSON, a request whose parameters do not fit and a request after ``shutdown`` are answered with
-the errors JSON-RPC and LSP prescribe; ``exit`` without ``shutdown`` ends the process with 1."""
+the errors JSON-RPC and LSP prescribe; a request about a document that is not open gets the
+method's empty answer, quietly; ``exit`` without ``shutdown`` ends the process with 1."""
 
 from __future__ import annotations
 
@@ -24,19 +25,21 @@ def frame(message: dict[str, Any]) -> bytes:
     return b"Content-Length: %d\r\n\r\n" % len(body) + body
 
 
-def session(*messages: bytes | dict[str, Any]) -> tuple[int, list[dict[str, Any]]]:
+def session(*messages: bytes | dict[str, Any], log: list[str] | None = None) -> tuple[int, list[dict[str, Any]]]:
     """Send ``messages`` (dicts are framed; bytes go as they are), then close the stream; the exit
-    code and every message the server sent."""
+    code and every message the server sent (and, in ``log``, what it wrote to stderr)."""
     p = subprocess.Popen([sys.executable, "-m", "cncmacro", "lsp"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                         stderr=subprocess.DEVNULL)  # fmt: skip
+                         stderr=subprocess.DEVNULL if log is None else subprocess.PIPE)  # fmt: skip
     assert p.stdin is not None and p.stdout is not None
     for m in messages:
         p.stdin.write(m if isinstance(m, bytes) else frame(m))
         p.stdin.flush()
         time.sleep(0.1)
     p.stdin.close()
-    code = p.wait(30)
     out = p.stdout.read()
+    if log is not None and p.stderr is not None:
+        log.append(p.stderr.read().decode(errors="replace"))
+    code = p.wait(30)
     sent = []
     while out:
         head, _, rest = out.partition(b"\r\n\r\n")
@@ -68,7 +71,7 @@ def test_a_content_length_longer_than_its_body_costs_that_message_and_the_next_o
     code, sent = session(INIT, INITIALIZED, overlong, swallowed, after, SHUTDOWN, EXIT)
     assert any(m.get("error", {}).get("code") == -32700 and m.get("id") is None for m in sent)
     assert not [m for m in sent if m.get("id") in (5, 6)]
-    assert answer(sent, 7)["error"] == {"code": -32602, "message": "document not open: file:///nowhere/O1.nc"}
+    assert answer(sent, 7)["result"] is None  # a hover on a document not open: null
     assert answer(sent, 90)["result"] is None
     assert code == 0
 
@@ -145,4 +148,50 @@ def test_requests_before_a_successful_initialize_get_server_not_initialized():
     assert not [m for m in sent if m.get("method") == "textDocument/publishDiagnostics"]
     assert "capabilities" in answer(sent, 1)["result"]
     assert answer(sent, 90)["result"] is None
+    assert code == 0
+
+
+NOT_OPEN = {"uri": "file:///nowhere/O1.nc"}
+WHERE = {"textDocument": NOT_OPEN, "position": {"line": 0, "character": 0}}
+LINES = {"start": {"line": 0, "character": 0}, "end": {"line": 3, "character": 0}}
+OPTIONS = {"tabSize": 4, "insertSpaces": True}
+ABOUT_A_DOCUMENT = {
+    "textDocument/hover": WHERE,
+    "textDocument/definition": WHERE,
+    "textDocument/references": {**WHERE, "context": {"includeDeclaration": True}},
+    "textDocument/documentHighlight": WHERE,
+    "textDocument/completion": WHERE,
+    "textDocument/signatureHelp": WHERE,
+    "textDocument/prepareRename": WHERE,
+    "textDocument/rename": {**WHERE, "newName": "N20"},
+    "textDocument/prepareCallHierarchy": WHERE,
+    "textDocument/documentSymbol": {"textDocument": NOT_OPEN},
+    "textDocument/semanticTokens/full": {"textDocument": NOT_OPEN},
+    "textDocument/semanticTokens/full/delta": {"textDocument": NOT_OPEN, "previousResultId": "1"},
+    "textDocument/semanticTokens/range": {"textDocument": NOT_OPEN, "range": LINES},
+    "textDocument/codeAction": {"textDocument": NOT_OPEN, "range": LINES, "context": {"diagnostics": []}},
+    "textDocument/codeLens": {"textDocument": NOT_OPEN},
+    "textDocument/inlayHint": {"textDocument": NOT_OPEN, "range": LINES},
+    "textDocument/inlineValue": {
+        "textDocument": NOT_OPEN,
+        "range": LINES,
+        "context": {"frameId": 1, "stoppedLocation": LINES},
+    },
+    "textDocument/foldingRange": {"textDocument": NOT_OPEN},
+    "textDocument/formatting": {"textDocument": NOT_OPEN, "options": OPTIONS},
+    "textDocument/rangeFormatting": {"textDocument": NOT_OPEN, "range": LINES, "options": OPTIONS},
+}
+
+
+def test_every_request_about_a_document_not_open_is_answered_with_null_quietly():
+    # a client racing a close, or a peek into a file it never opened: no error, no traceback
+    requests = [
+        {"jsonrpc": "2.0", "id": 100 + k, "method": method, "params": params}
+        for k, (method, params) in enumerate(ABOUT_A_DOCUMENT.items())
+    ]
+    log: list[str] = []
+    code, sent = session(INIT, INITIALIZED, *requests, SHUTDOWN, EXIT, log=log)
+    answers = {r["method"]: answer(sent, r["id"]) for r in requests}
+    assert {m: a for m, a in answers.items() if a.get("result", "missing") is not None} == {}
+    assert "not open" not in log[0] and "Traceback" not in log[0]
     assert code == 0

@@ -116,8 +116,10 @@ def register(server: CncMacroServer) -> None:
     @server.feature(
         types.TEXT_DOCUMENT_CODE_ACTION, types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix])
     )
-    def code_action(ls: CncMacroServer, params: types.CodeActionParams) -> list[types.CodeAction]:
+    def code_action(ls: CncMacroServer, params: types.CodeActionParams) -> list[types.CodeAction] | None:
         doc = ls.documents.get(params.text_document.uri)
+        if doc is None:  # not open: the empty answer (documents.py)
+            return None
         encoding = ls.documents.encoding
         out: list[types.CodeAction] = []
         calls = ls.documents.calls_for(doc.path)

@@ -36,6 +36,8 @@ class Cursor:
 
 def cursor_at(server: CncMacroServer, uri: str, position: types.Position) -> Cursor | None:
     doc = server.documents.get(uri)
+    if doc is None:  # not open: every request on a cursor answers null (documents.py)
+        return None
     block = doc.block(position.line)
     if block is None:
         return None

@@ -25,8 +25,10 @@ if TYPE_CHECKING:
 
 def register(server: CncMacroServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_CODE_LENS)
-    def code_lens(ls: CncMacroServer, params: types.CodeLensParams) -> list[types.CodeLens]:
+    def code_lens(ls: CncMacroServer, params: types.CodeLensParams) -> list[types.CodeLens] | None:
         doc = ls.documents.get(params.text_document.uri)
+        if doc is None:  # not open: the empty answer (documents.py)
+            return None
         timing = ls.diagnostics.timing(doc)
         if timing is None:
             return []

@@ -19,7 +19,6 @@ from pathlib import Path
 from urllib.parse import quote, unquote_to_bytes, urlsplit
 
 from lsprotocol import types
-from pygls.exceptions import JsonRpcInvalidParams
 from pygls.uris import from_fs_path, to_fs_path
 
 from ..analysis.indexes.block_memo import BlockMemo
@@ -216,13 +215,11 @@ class Documents:
     def close(self, uri: str) -> OpenDocument | None:
         return self.by_uri.pop(uri, None)
 
-    def get(self, uri: str) -> OpenDocument:
-        """The open document ``uri``; a request about a document the client never opened is
-        answered with an invalid-params error that says so (not an internal error)."""
-        doc = self.by_uri.get(uri)
-        if doc is None:
-            raise JsonRpcInvalidParams(f"document not open: {uri}")
-        return doc
+    def get(self, uri: str) -> OpenDocument | None:
+        """The open document ``uri``, or None: a request about a document that is not open (a
+        client racing a close, a peek into a file it never opened) is answered with the
+        method's empty result (``null``), quietly, by every feature that asks here."""
+        return self.by_uri.get(uri)
 
     def rechoose_dialects(self) -> None:
         for doc in self.by_uri.values():

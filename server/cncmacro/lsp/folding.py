@@ -14,8 +14,11 @@ if TYPE_CHECKING:
 
 def register(server: CncMacroServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_FOLDING_RANGE)
-    def folding_range(ls: CncMacroServer, params: types.FoldingRangeParams) -> list[types.FoldingRange]:
-        parsed = ls.documents.get(params.text_document.uri).parsed
+    def folding_range(ls: CncMacroServer, params: types.FoldingRangeParams) -> list[types.FoldingRange] | None:
+        doc = ls.documents.get(params.text_document.uri)
+        if doc is None:  # not open: the empty answer (documents.py)
+            return None
+        parsed = doc.parsed
         return [
             types.FoldingRange(
                 start_line=f.start_line,

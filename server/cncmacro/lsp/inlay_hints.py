@@ -22,8 +22,10 @@ if TYPE_CHECKING:
 
 def register(server: CncMacroServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_INLAY_HINT)
-    def inlay_hint(ls: CncMacroServer, params: types.InlayHintParams) -> list[types.InlayHint]:
+    def inlay_hint(ls: CncMacroServer, params: types.InlayHintParams) -> list[types.InlayHint] | None:
         doc = ls.documents.get(params.text_document.uri)
+        if doc is None:  # not open: the empty answer (documents.py)
+            return None
         encoding = ls.documents.encoding
         out: list[types.InlayHint] = []
         r = params.range

@@ -17,8 +17,10 @@ if TYPE_CHECKING:
 
 def register(server: CncMacroServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_INLINE_VALUE)
-    def inline_value(ls: CncMacroServer, params: types.InlineValueParams) -> list[types.InlineValue]:
+    def inline_value(ls: CncMacroServer, params: types.InlineValueParams) -> list[types.InlineValue] | None:
         doc = ls.documents.get(params.text_document.uri)
+        if doc is None:  # not open: the empty answer (documents.py)
+            return None
         encoding = ls.documents.encoding
         found = inline_values(doc, params.range.start.line, params.range.end.line)
         return [

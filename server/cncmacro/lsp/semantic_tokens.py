@@ -205,16 +205,20 @@ def register(server: CncMacroServer) -> None:
             legend=LEGEND, full=types.SemanticTokensFullDelta(delta=True), range=True
         ),
     )
-    async def full(ls: CncMacroServer, params: types.SemanticTokensParams) -> types.SemanticTokens:
+    async def full(ls: CncMacroServer, params: types.SemanticTokensParams) -> types.SemanticTokens | None:
         doc = ls.documents.get(params.text_document.uri)
+        if doc is None:  # not open: the empty answer (documents.py)
+            return None
         data = await encode_document(doc, ls.documents.encoding)
         return types.SemanticTokens(data=data, result_id=_remember(doc.uri, data))
 
     @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL_DELTA)
     async def full_delta(
         ls: CncMacroServer, params: types.SemanticTokensDeltaParams
-    ) -> types.SemanticTokens | types.SemanticTokensDelta:
+    ) -> types.SemanticTokens | types.SemanticTokensDelta | None:
         doc = ls.documents.get(params.text_document.uri)
+        if doc is None:  # not open: the empty answer (documents.py)
+            return None
         data = await encode_document(doc, ls.documents.encoding)
         old = _previous.get(doc.uri)
         result_id = _remember(doc.uri, data)
@@ -223,8 +227,10 @@ def register(server: CncMacroServer) -> None:
         return types.SemanticTokensDelta(edits=delta_edits(old[1], data), result_id=result_id)
 
     @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_RANGE, LEGEND)
-    def range_(ls: CncMacroServer, params: types.SemanticTokensRangeParams) -> types.SemanticTokens:
+    def range_(ls: CncMacroServer, params: types.SemanticTokensRangeParams) -> types.SemanticTokens | None:
         doc = ls.documents.get(params.text_document.uri)
+        if doc is None:  # not open: the empty answer (documents.py)
+            return None
         r = params.range
         return types.SemanticTokens(data=encode(doc, r.start.line, r.end.line, ls.documents.encoding))
 

@@ -68,8 +68,13 @@ def _lines(arg: dict[str, Any]) -> range | None:
     return range(first, last + 1)
 
 
-def plan_for(ls: CncMacroServer, command: str, arg: dict[str, Any], keep: bool) -> tuple[OpenDocument, SequencePlan]:
+def plan_for(
+    ls: CncMacroServer, command: str, arg: dict[str, Any], keep: bool
+) -> tuple[OpenDocument, SequencePlan] | None:
+    """The document's edit, or None when it is not open (closed while the editor was asked)."""
     doc = ls.documents.get(str(arg.get("uri")))
+    if doc is None:
+        return None
     program = doc.parsed.program
     calls = machine_calls(ls, doc.path)
     outside = outside_jumps(ls.index, doc, ls.documents.dialect_for, lambda p: machine_calls(ls, p))
@@ -103,10 +108,13 @@ def workspace_edit(ls: CncMacroServer, doc: OpenDocument, plan: SequencePlan) ->
     )
 
 
-async def run_command(ls: CncMacroServer, command: str, arg: dict[str, Any]) -> dict[str, Any]:
+async def run_command(ls: CncMacroServer, command: str, arg: dict[str, Any]) -> dict[str, Any] | None:
     loc = ls.locale
     keep_arg = arg.get("keepComputed")
-    doc, plan = plan_for(ls, command, arg, keep_arg is True)
+    planned = plan_for(ls, command, arg, keep_arg is True)
+    if planned is None:
+        return None
+    doc, plan = planned
     cancelled = False
     if keep_arg is None and plan.error is None and any(b.keepable for b in plan.blockers):
         lines = "; ".join(b.message for b in plan.blockers[:3])
@@ -121,7 +129,10 @@ async def run_command(ls: CncMacroServer, command: str, arg: dict[str, Any]) -> 
             )
         )
         if answer is not None and answer.title == keep:
-            doc, plan = plan_for(ls, command, arg, True)
+            planned = plan_for(ls, command, arg, True)
+            if planned is None:  # closed meanwhile
+                return None
+            doc, plan = planned
         else:
             cancelled = True
     result: dict[str, Any] = {

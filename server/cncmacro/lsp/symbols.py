@@ -23,8 +23,10 @@ _KINDS = {
 
 def register(server: CncMacroServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
-    def document_symbol(ls: CncMacroServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol]:
+    def document_symbol(ls: CncMacroServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol] | None:
         doc = ls.documents.get(params.text_document.uri)
+        if doc is None:  # not open: the empty answer (documents.py)
+            return None
         return [_symbol(doc, s, ls.documents.encoding) for s in document_symbols(doc)]
 
     @server.feature(types.WORKSPACE_SYMBOL)
