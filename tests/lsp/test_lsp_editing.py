@@ -60,6 +60,45 @@ async def test_completion_of_keywords_and_functions(fanuc_zh: LanguageClient) ->
     assert items["IF"].kind == types.CompletionItemKind.Keyword
 
 
+async def test_completion_after_g_or_m_offers_the_profiles_codes_with_what_each_does(
+    fanuc_en: LanguageClient, gsk_zh: LanguageClient
+) -> None:
+    uri = open_file(fanuc_en, FANUC / "c5.nc", "O0001\nG\nG00 X1. M\nX1.G0\n(G\n")
+    g = await _complete(fanuc_en, uri, 1, 1)
+    m = await _complete(fanuc_en, uri, 2, 9)
+    glued = await _complete(fanuc_en, uri, 3, 5)  # a G word glued to the number before it, a digit typed
+    comment = [i.label for i in await _complete(fanuc_en, uri, 4, 2)]
+    close_file(fanuc_en, uri)
+    codes = {i.label: i for i in g}
+    assert [i.label for i in g[:2]] == ["G00", "G01"]  # the profile's table, in its order, first
+    assert codes["G01"].detail == "Linear interpolation at feedrate F"  # as hover says it
+    assert codes["G01"].text_edit is not None and codes["G01"].text_edit.range.start.character == 0
+    assert {i.label: i.detail for i in m}["M03"] == "Spindle on clockwise"
+    edit = next(i for i in glued if i.label == "G01").text_edit
+    assert edit is not None and (edit.range.start.character, edit.range.end.character) == (3, 5)
+    assert "G00" not in comment
+    uri = open_file(gsk_zh, GSK / "c5.CNC", "O0001\nM\n")
+    gsk = {i.label: i.detail for i in await _complete(gsk_zh, uri, 1, 1)}
+    close_file(gsk_zh, uri)
+    assert gsk["M03"] == "主轴正转"
+
+
+async def test_completion_of_g65_arguments_lists_what_the_macro_reads_first(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "c6.nc", "O0001\nG65 P9100 \n")
+    items = await _complete(fanuc_en, uri, 1, 10)
+    close_file(fanuc_en, uri)
+    assert [i.label for i in items[:3]] == ["R", "X", "Z"]  # O9100 reads #18, #24, #26
+
+
+async def test_completion_after_m98_p_offers_the_files_own_program_last(fanuc_en: LanguageClient) -> None:
+    uri = open_file(fanuc_en, FANUC / "O0998.nc", "O0998 (MAIN)\nM98 P\nM30\n")
+    items = await _complete(fanuc_en, uri, 1, 5)
+    close_file(fanuc_en, uri)
+    labels = [i.label for i in items]
+    assert labels[0] != "998" and labels[-1] == "998"
+    assert sorted(labels, key=lambda label: next(i.sort_text for i in items if i.label == label)) == labels
+
+
 async def test_signature_help_on_g65_shows_what_the_macro_reads(fanuc_en: LanguageClient) -> None:
     uri = open_file(fanuc_en, FANUC / "MAIN.nc")
     result = await fanuc_en.text_document_signature_help_async(

@@ -1,5 +1,7 @@
 """Completion: system variables (with their descriptions) after ``#``, N labels after ``GOTO``,
-programs after the ``P`` of a call, G65/G66 argument letters with the locals they fill, the
+the profile's G or M codes (with what each does) after a ``G`` or ``M`` that starts a word,
+programs after the ``P`` of a call (the file's own last), G65/G66 argument letters with the
+locals they fill (those the called macro reads first), the
 letters of a cycle block not yet written with what each means there (``G71 `` after a first
 block offers P, Q, U, W, F; ``ide/cycle_words.py``), and the keywords and functions of the
 dialect. Everything offered comes from the dialect tables, the parser's labels and the workspace
@@ -29,6 +31,7 @@ _HASH = re.compile(r"#(\d*)$")
 _GOTO = re.compile(r"GOTO\s*(\d*)$", re.I)
 _P = re.compile(r"P(\[?)([\w\u4e00-\u9fff]*)$", re.I)
 _NEW_WORD = re.compile(r"(?:\s|(?<=[\s\d.])[A-Za-z])$")  # the cursor starts a word (or its letter)
+_CODE = re.compile(r"(?:^|(?<=[\s\d.\]]))([GM])[\d.]*$", re.I)  # a G or M word begun at a word start
 _CALL = re.compile(r"\b(G0*65|G0*66|M0*98)\b|(G0*65|G0*66|M0*98)(?=\s*P)", re.I)
 
 
@@ -54,8 +57,11 @@ def complete(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem]:
     if m and in_call and (m.start() == 0 or not before[m.start() - 1].isalpha()):
         return program_items(ls, cur, bool(m.group(1)), cur.column - len(m.group(2)))
     items: list[types.CompletionItem] = []
+    code = None if in_call else _CODE.search(before)
     if in_call:
         items += argument_items(ls, cur)
+    elif code is not None and "(" not in before[before.rfind(")") + 1 :]:  # not inside a comment
+        items += code_items(ls, cur, code.group(1).upper(), code.start(1))
     elif _NEW_WORD.search(before):
         items += cycle_letter_items(ls, cur)
     items += keyword_items(ls, cur)
@@ -106,10 +112,43 @@ def label_items(cur: Cursor) -> list[types.CompletionItem]:
     return out
 
 
-def program_items(ls: CncMacroServer, cur: Cursor, bracket: bool, start: int) -> list[types.CompletionItem]:
+def code_items(ls: CncMacroServer, cur: Cursor, letter: str, start: int) -> list[types.CompletionItem]:
+    """The profile's G or M codes (``letter``), each with what it does as its hover says it
+    (the dialect's code table, the machine file's codes first), in the table's order."""
+    loc = ls.locale
+    dialect = cur.doc.dialect
+    rows = dialect.g_codes() if letter == "G" else dialect.m_codes()
+    edit = cur.range(start, cur.column)
     out = []
     seen = set()
-    for p in ls.index.programs():
+    for k, row in enumerate(rows):
+        if row.code in seen:
+            continue
+        seen.add(row.code)
+        text = pick(loc, row.en, row.zh)
+        group = f"{t('modal', loc)}: {row.group}" if row.group else t("one_shot", loc)
+        out.append(
+            types.CompletionItem(
+                label=row.code,
+                kind=types.CompletionItemKind.Keyword,
+                detail=text,
+                documentation=types.MarkupContent(
+                    kind=types.MarkupKind.Markdown, value=f"**{row.code}** — {text}\n\n{group} · *{dialect.title}*"
+                ),
+                filter_text=row.code,
+                sort_text=f"!{k:04d}",
+                text_edit=types.TextEdit(edit, row.code),
+            )
+        )
+    return out
+
+
+def program_items(ls: CncMacroServer, cur: Cursor, bracket: bool, start: int) -> list[types.CompletionItem]:
+    """The workspace's programs, those of other files first (the file's own, a call of itself,
+    last)."""
+    out: list[types.CompletionItem] = []
+    seen = set()
+    for p in sorted(ls.index.programs(), key=lambda p: p.path == cur.doc.path):
         if bracket:
             if p.number is not None and not p.first:
                 continue
@@ -121,11 +160,13 @@ def program_items(ls: CncMacroServer, cur: Cursor, bracket: bool, start: int) ->
         if text in seen:
             continue
         seen.add(text)
+        own = p.path == cur.doc.path
         out.append(
             types.CompletionItem(
                 label=text,
                 kind=types.CompletionItemKind.Module,
                 detail=f"{p.name} {p.title or ''}".strip(),
+                sort_text=("~" if own else "") + f"{len(out):05d}",
                 text_edit=types.TextEdit(cur.range(start, cur.column), text),
             )
         )
@@ -150,6 +191,7 @@ def argument_items(ls: CncMacroServer, cur: Cursor) -> list[types.CompletionItem
                 preselect=True if read else None,
             )
         )
+    out.sort(key=lambda item: item.sort_text or "")  # the ones it reads first, in the list too
     return out
 
 
