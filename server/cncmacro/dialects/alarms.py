@@ -76,6 +76,9 @@ CUTTER_INTERFERENCE = 41
 # a mill's drilling canned cycles (docs/semantics.md §9): FANUC 0i's PS alarms
 REFERENCE_IN_CYCLE = 44  # PS0044: G27-G30 in canned cycle mode (planner/one_shot.py)
 PECK_Q_MISSING = 45  # PS0045: G73/G83 with no Q, or Q0 (planner/drill_cycles.py)
+# the GSK980TDi's G86 with I0 or I below R (planner/reciprocating_feed.py): its manual gives no
+# number, so the number is the interpreter's own and the profile shows the alarm unnumbered
+RECIPROCATION_AMOUNT = 9086
 P_VALUE_RANGE = 291
 COUNT_TWICE = 293
 NO_VARIABLE_NAME = 1098
@@ -181,6 +184,11 @@ ALARMS: dict[int, AlarmDoc] = {
         AlarmDoc(CUTTER_INTERFERENCE, "interference in cutter compensation", "刀具半径补偿干涉"),
         AlarmDoc(REFERENCE_IN_CYCLE, "G27-G30 not allowed in a canned cycle", "固定循环中不能指令 G27-G30"),
         AlarmDoc(PECK_Q_MISSING, "address Q not found (G73/G83)", "未指令地址 Q（G73/G83）"),
+        AlarmDoc(
+            RECIPROCATION_AMOUNT,
+            "illegal stroke in the reciprocating feed cycle (G86)",
+            "往复进给循环（G86）的进刀量不当",
+        ),
         AlarmDoc(P_VALUE_RANGE, "P value out of range", "P值超出范围"),
         AlarmDoc(COUNT_TWICE, "repeat count given in both P and L", "P和L同时指定了调用次数"),
         AlarmDoc(NO_VARIABLE_NAME, "no such variable name", "没有该变量名"),

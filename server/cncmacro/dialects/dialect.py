@@ -144,6 +144,9 @@ class Dialect:
     # of their blocks is the cycle's (none moves an axis), the tool is left at its start point, and
     # the run notes once a block that the cycle is not simulated (the `not-simulated` information)
     unsimulated_codes: frozenset[float] = frozenset()
+    # §10.3 the code of an independent reciprocating feed cycle along Z (GSK980TDi's G86 Z A I R F,
+    # planner/reciprocating_feed.py); None where the control has none
+    reciprocating_feed_code: float | None = None
     # §8 motion codes whose blocks carry values under letters that may name an axis elsewhere
     # (GSK980TDi's ellipse G6.2/G6.3: A, B half axes and Q; parabola G7.2/G7.3: P, Q): motion code
     # -> those letters, which are never an axis word in that mode

@@ -22,6 +22,7 @@ from .machine_limits import g53_bounds, leaves_travel
 from .offset_travel import keep_machine_position, work_offsets
 from .positions import WORK_BASE, work_offset
 from .probing import skip_block
+from .reciprocating_feed import reciprocating_feed
 from .virtual_planes import switch_virtual_plane
 from .whereabouts import coordinates_set, lose, placed, referenced, shift_cancelled
 
@@ -58,6 +59,8 @@ def one_shot(
                 f"G{g:g} 未模拟：不绘制也不计时该循环的走刀，刀具留在其起点"),
                 line, "not-simulated")  # fmt: skip
         return False, None
+    if g == p.dialect.reciprocating_feed_code:  # GSK's G86 (reciprocating_feed.py)
+        return reciprocating_feed(p, axes, other, file, line), None
     if g in (28.0, 30.0):  # through the intermediate point to the reference point
         return reference_return(p, g, axes, inc, file, line), None
     if g in p.dialect.skip_codes:  # skip (G31; a multi-step skip's G31.1-G31.3): probing.py

@@ -7,7 +7,7 @@ bracketed program names and ``#9xxx`` indirection.
 
 from __future__ import annotations
 
-from ..alarms import ILLEGAL_LEAD, OFFSET_NUMBER, OVERTRAVEL_MINUS, OVERTRAVEL_PLUS
+from ..alarms import ILLEGAL_LEAD, OFFSET_NUMBER, OVERTRAVEL_MINUS, OVERTRAVEL_PLUS, RECIPROCATION_AMOUNT
 from ..dialect import ANY_BLOCK, Dialect
 from ..drill_cycles import GSK_LATHE_DRILLING
 from ..lathe_cycle_rules import GSK980TDI_RULES
@@ -34,8 +34,9 @@ PROFILE = Dialect(
     call_first_letters="PH",
     # the soft limits and the offset numbers are the machine's (docs/semantics.md §11); no source
     # at hand gives the GSK980TDi's numbers for these alarms; G34's lead below zero: "因R的增加/减小使
-    # 螺距…出现负值时产生报警" (§3.24.4), no number
-    unnumbered_alarms=frozenset({OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER, ILLEGAL_LEAD}),
+    # 螺距…出现负值时产生报警" (§3.24.4), no number; nor for G86's I0 or I below R ("系统发出报警",
+    # §3.23.11)
+    unnumbered_alarms=frozenset({OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER, ILLEGAL_LEAD, RECIPROCATION_AMOUNT}),
     h_codes=True,
     bracket_names=True,
     program_digits=4,
@@ -69,6 +70,8 @@ PROFILE = Dialect(
     # the recess grooving cycles G74.1/G75.1 (§3.23.7, §3.23.8), whose step ⑩ ends where they began:
     # "刀具快速返回凹槽切削前起点处"
     unsimulated_codes=frozenset({74.1, 75.1}),
+    # G86 Z(start) A(end) I(stroke) R(advance) F: Z feeds back and forth to A and returns (§3.23.11)
+    reciprocating_feed_code=86.0,
     # ellipse A, B (half axes), Q (angle); parabola P, Q (§3.6, §3.7)
     motion_value_letters={
         6.2: frozenset("ABQ"),
