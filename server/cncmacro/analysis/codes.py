@@ -47,6 +47,7 @@ from ..dialects.alarms import (
     NAME_SUBSCRIPT,
     NC_AND_MACRO,
     NO_VARIABLE_NAME,
+    NOT_ALONE,
     OFFSET_NUMBER,
     OVERFLOW,
     OVERTRAVEL_MINUS,
@@ -154,6 +155,13 @@ CODES: dict[str, Code] = _codes(
                 "G65/G66 之后紧跟的不是 P（或 H），而系统手册要求紧跟 P 或 H（GSK980TDi）；"
                 "手册未给出报警时为警告。"),
          milder=WARNING),
+    Code("own-block", ERROR,
+         detail("A word beside a G code the control's manual wants in a block of its own (GSK980TDi: G22/G23 "
+                "beside a G, M, S or T code stops the run; G12.1, G13.1, G15, G16, G50.2, G51.2 beside another "
+                "word is a warning, the manual giving no alarm for it).",
+                "与系统手册要求单独编段的 G 代码同段的代码字（GSK980TDi：G22/G23 与 G、M、S、T 代码同段时运行停止；"
+                "G12.1、G13.1、G15、G16、G50.2、G51.2 与其他代码字同段为警告，手册未给出报警）。"),
+         BOTH, (NOT_ALONE,), milder=WARNING),
     Code("argument-address", ERROR,
          detail("G, L, N, O or P used as a macro argument (alarm 129).",
                 "G、L、N、O 或 P 用作宏程序自变量（报警 129）。"),

@@ -79,6 +79,9 @@ PECK_Q_MISSING = 45  # PS0045: G73/G83 with no Q, or Q0 (planner/drill_cycles.py
 # the GSK980TDi's G86 with I0 or I below R (planner/reciprocating_feed.py): its manual gives no
 # number, so the number is the interpreter's own and the profile shows the alarm unnumbered
 RECIPROCATION_AMOUNT = 9086
+# the GSK980TDi's G22/G23 beside another G code or an M, S, T (machine/block_rules.py): no number
+# given either, shown unnumbered
+NOT_ALONE = 9022
 P_VALUE_RANGE = 291
 COUNT_TWICE = 293
 NO_VARIABLE_NAME = 1098
@@ -189,6 +192,7 @@ ALARMS: dict[int, AlarmDoc] = {
             "illegal stroke in the reciprocating feed cycle (G86)",
             "往复进给循环（G86）的进刀量不当",
         ),
+        AlarmDoc(NOT_ALONE, "the code must be in a block of its own", "该代码须单独编为一段"),
         AlarmDoc(P_VALUE_RANGE, "P value out of range", "P值超出范围"),
         AlarmDoc(COUNT_TWICE, "repeat count given in both P and L", "P和L同时指定了调用次数"),
         AlarmDoc(NO_VARIABLE_NAME, "no such variable name", "没有该变量名"),

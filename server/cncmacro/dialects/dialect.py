@@ -147,6 +147,10 @@ class Dialect:
     # §10.3 the code of an independent reciprocating feed cycle along Z (GSK980TDi's G86 Z A I R F,
     # planner/reciprocating_feed.py); None where the control has none
     reciprocating_feed_code: float | None = None
+    # §1 the G codes the manual wants in a block of their own (machine/block_rules.py): code ->
+    # (the letters whose word beside it is an alarm, the letters that may stand beside it, "*" any);
+    # a word of another letter but N is a warning (the manual asks, gives no alarm)
+    own_block_codes: dict[float, tuple[str, str]] = field(default_factory=dict)
     # §8 motion codes whose blocks carry values under letters that may name an axis elsewhere
     # (GSK980TDi's ellipse G6.2/G6.3: A, B half axes and Q; parabola G7.2/G7.3: P, Q): motion code
     # -> those letters, which are never an axis word in that mode

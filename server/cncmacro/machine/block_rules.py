@@ -28,7 +28,15 @@ from dataclasses import dataclass
 from types import EllipsisType
 
 from ..bilingual import Detail, detail
-from ..dialects.alarms import DECIMAL_POINT, FORMAT, G_ARGUMENT, IMPROPER_G_CODE, NC_AND_MACRO, PROGRAM_NOT_FOUND
+from ..dialects.alarms import (
+    DECIMAL_POINT,
+    FORMAT,
+    G_ARGUMENT,
+    IMPROPER_G_CODE,
+    NC_AND_MACRO,
+    NOT_ALONE,
+    PROGRAM_NOT_FOUND,
+)
 from ..dialects.dialect import Dialect
 from ..syntax.nodes import Block, Else, EndIf, If, Number, Statement, Word
 from .calls import BlockCall, code_value, codes_before_call, g_code_name, recognise_call
@@ -60,6 +68,7 @@ G_AFTER_CALL = "g-argument"  # a G code among the arguments of G65/G66
 CALL_WITHOUT_P = "call-without-p"  # G65/G66 without P
 UNKNOWN_G_CODE = "unknown-g-code"  # a G code neither the dialect nor the machine has
 M_DECIMAL_POINT = "decimal-point"  # an M code written with a decimal point
+OWN_BLOCK = "own-block"  # a word beside a code the manual wants in a block of its own
 
 
 @dataclass(frozen=True, slots=True)
@@ -304,6 +313,8 @@ def _refused_words(
             point = m_decimal_point(w, dialect)
             if point is not None:
                 out.append(BlockProblem(M_DECIMAL_POINT, DECIMAL_POINT, point, point, w.start, w.end, stops))
+    if dialect.own_block_codes:
+        _own_block(words, dialect, out)
     if dialect.no_point_words:  # T0101., G04 P1.5, G74 Q5.: read as written, said as a warning
         gs = tuple(v for w in words if w.letter == "G" and (v := _raw_g(w)) is not None)
         letters = frozenset(w.letter for w in words)
@@ -311,6 +322,36 @@ def _refused_words(
             point = point_refused(w, gs, letters, dialect)
             if point is not None:
                 out.append(BlockProblem(M_DECIMAL_POINT, DECIMAL_POINT, point, point, w.start, w.end, False))
+
+
+def _own_block(words: tuple[Word, ...], dialect: Dialect, out: list[BlockProblem]) -> None:
+    """A word beside a G code the manual wants in a block of its own (``Dialect.own_block_codes``):
+    an alarm where the manual gives one for its letter (GSK980TDi's G22/G23 beside a G, M, S or T
+    code), else a warning; the first such word of each code."""
+    for w in words:
+        code = _raw_g(w)
+        rule = dialect.own_block_codes.get(code) if code is not None else None
+        if rule is None:
+            continue
+        alarmed, allowed = rule
+        beside = [o for o in words if o is not w and o.letter != "N"]
+        stop = next((o for o in beside if o.letter in alarmed), None)
+        other = stop or next((o for o in beside if allowed != "*" and o.letter not in allowed), None)
+        if other is None:
+            continue
+        v = other.value
+        g, word = f"G{code:g}", other.letter + (v.text if isinstance(v, Number) else "")
+        if stop is not None:
+            text = detail(f"{g} shares its block with {word}: write {g} in a block of its own",
+                          f"{g} 与 {word} 同段：请将 {g} 单独编为一段")  # fmt: skip
+        else:
+            text = detail(f"{g} shares its block with {word}: the control's manual wants {g} in a block of its own",
+                          f"{g} 与 {word} 同段：系统手册要求 {g} 单独编为一段")  # fmt: skip
+        finding = text
+        if stop is not None:  # a check that does not run names the alarm, as the run's report does
+            said = dialect.alarm_said(NOT_ALONE)
+            finding = detail(f"{text} ({said})", f"{text.zh}（{said.zh}）")
+        out.append(BlockProblem(OWN_BLOCK, NOT_ALONE, text, finding, other.start, other.end, stop is not None))
 
 
 def first_alarm(problems: list[BlockProblem]) -> BlockProblem | None:

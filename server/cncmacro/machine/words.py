@@ -236,7 +236,8 @@ def conditional_m99_refused(dialect: Dialect) -> Detail:
 def refused_words(dialect: Dialect, calls: Mapping[str, object]) -> tuple[WordSet, ...]:
     """The words the refusals look at (``word_sets.py``): a G code outside those
     ``g_code_known`` knows, an M code written with a decimal point, and the letters of
-    ``Dialect.no_point_words`` written with one."""
+    ``Dialect.no_point_words`` written with one, and the codes the manual wants in a block of their
+    own (``Dialect.own_block_codes``)."""
     known = set(known_g_codes(dialect.name)) | extra_offset_codes(dialect) | machine_g_codes(dialect)
     for code in calls:
         if code[:1] == "G" and code[1:]:
@@ -246,4 +247,10 @@ def refused_words(dialect: Dialect, calls: Mapping[str, object]) -> tuple[WordSe
                 continue
     # the letters some block takes without a decimal point (``point_refused``)
     no_point = sorted(set("".join(dialect.no_point_words.values())))
-    return WordSet("G", outside=frozenset(known)), WordSet("M", point=True), *(WordSet(x, point=True) for x in no_point)
+    own = (WordSet("G", frozenset(dialect.own_block_codes)),) if dialect.own_block_codes else ()  # block_rules.py
+    return (
+        WordSet("G", outside=frozenset(known)),
+        WordSet("M", point=True),
+        *(WordSet(x, point=True) for x in no_point),
+        *own,
+    )

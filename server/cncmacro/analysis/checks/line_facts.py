@@ -40,6 +40,7 @@ RULE_CODES = {
     rules.CALL_WITHOUT_P: "program-not-found",
     rules.UNKNOWN_G_CODE: "unknown-g-code",
     rules.M_DECIMAL_POINT: "decimal-point",
+    rules.OWN_BLOCK: "own-block",
 }  # the diagnostic code of each block rule
 
 

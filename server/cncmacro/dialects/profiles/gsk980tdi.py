@@ -7,7 +7,14 @@ bracketed program names and ``#9xxx`` indirection.
 
 from __future__ import annotations
 
-from ..alarms import ILLEGAL_LEAD, OFFSET_NUMBER, OVERTRAVEL_MINUS, OVERTRAVEL_PLUS, RECIPROCATION_AMOUNT
+from ..alarms import (
+    ILLEGAL_LEAD,
+    NOT_ALONE,
+    OFFSET_NUMBER,
+    OVERTRAVEL_MINUS,
+    OVERTRAVEL_PLUS,
+    RECIPROCATION_AMOUNT,
+)
 from ..dialect import ANY_BLOCK, Dialect
 from ..drill_cycles import GSK_LATHE_DRILLING
 from ..lathe_cycle_rules import GSK980TDI_RULES
@@ -35,8 +42,10 @@ PROFILE = Dialect(
     # the soft limits and the offset numbers are the machine's (docs/semantics.md §11); no source
     # at hand gives the GSK980TDi's numbers for these alarms; G34's lead below zero: "因R的增加/减小使
     # 螺距…出现负值时产生报警" (§3.24.4), no number; nor for G86's I0 or I below R ("系统发出报警",
-    # §3.23.11)
-    unnumbered_alarms=frozenset({OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER, ILLEGAL_LEAD, RECIPROCATION_AMOUNT}),
+    # §3.23.11); nor for G22/G23 sharing a block (§3.31 note 6)
+    unnumbered_alarms=frozenset(
+        {OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER, ILLEGAL_LEAD, RECIPROCATION_AMOUNT, NOT_ALONE}
+    ),
     h_codes=True,
     bracket_names=True,
     program_digits=4,
@@ -72,6 +81,19 @@ PROFILE = Dialect(
     unsimulated_codes=frozenset({74.1, 75.1}),
     # G86 Z(start) A(end) I(stroke) R(advance) F: Z feeds back and forth to A and returns (§3.23.11)
     reciprocating_feed_code=86.0,
+    # "G22/G23代码不能与其它G代码及MST代码共段，否则发出报警" (§3.31 note 6); "G12.1，G13.1，G16，G15要
+    # 单独编为一段程序" (§3.9 note 1); G51.2 P Q R A, G50.2: "以上指令请单独指定，不要与其它程序指令共段
+    # 执行" (§3.36 note 2)
+    own_block_codes={
+        22.0: ("GMST", "*"),
+        23.0: ("GMST", "*"),
+        12.1: ("", ""),
+        13.1: ("", ""),
+        15.0: ("", ""),
+        16.0: ("", ""),
+        50.2: ("", ""),
+        51.2: ("", "PQRA"),
+    },
     # ellipse A, B (half axes), Q (angle); parabola P, Q (§3.6, §3.7)
     motion_value_letters={
         6.2: frozenset("ABQ"),
