@@ -22,6 +22,12 @@ SYSTEM = "system"
 NULL = "null"
 UNDEFINED = "undefined"
 
+# The axis letters that turn (ISO 841: A, B, C about X, Y, Z): a position or offset of such an axis
+# is in degrees, whatever unit the program's lengths are in.
+ROTARY_AXES = frozenset("ABC")
+LENGTH = "mm"  # a row's unit for a length: the program's input unit, mm under G21, inch under G20
+DEGREES = "deg"
+
 
 def variable_class(number: int, dialect: Dialect) -> str:
     """``local`` (#1–#33), ``common`` (a volatile common range of the profile as the machine has
@@ -49,8 +55,9 @@ def axis_name(dialect: Dialect, k: int) -> str:
 @dataclass(frozen=True, slots=True)
 class VariableDoc:
     """A system variable described for one number: ``text`` in the chosen language, its
-    ``unit``, ``access`` (``r``, ``w``, ``rw``), ``axis`` (None when the row has none) and the
-    row's ``group``."""
+    ``unit`` (``deg`` for a length row read on a rotary axis; ``unit_text`` shows it),
+    ``access`` (``r``, ``w``, ``rw``), ``axis`` (None when the row has none) and the row's
+    ``group``."""
 
     number: int
     text: str
@@ -71,7 +78,20 @@ def describe_system_variable(dialect: Dialect, number: int, locale: str | None =
     template = pick(locale, row.en, row.zh)
     axis = axis_name(dialect, k) if "{axis}" in row.en else None
     text = template.replace("{axis}", axis or "").replace("{index}", str(k + 1))
-    return VariableDoc(number, text, row.unit, row.access, axis, row.group, row.first, row.last)
+    unit = DEGREES if row.unit == LENGTH and axis in ROTARY_AXES else row.unit
+    return VariableDoc(number, text, unit, row.access, axis, row.group, row.first, row.last)
+
+
+def unit_text(unit: str, inch: bool | None, locale: str | None = None) -> str:
+    """A variable's ``unit`` as a person reads it: a length in the unit in force (``inch`` True
+    under G20, False under G21, None when it is not known: then both), an angle in degrees."""
+    if unit == DEGREES:
+        return pick(locale, "degrees", "度")
+    if unit != LENGTH:
+        return unit
+    if inch is None:
+        return pick(locale, "mm (inch under G20)", "mm（G20 下为英寸）")
+    return pick(locale, "inch", "英寸") if inch else LENGTH
 
 
 def code_key(letter: str, value: float) -> str:

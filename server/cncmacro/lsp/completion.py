@@ -21,6 +21,7 @@ from ..dialects.dialect import ARGUMENTS_I
 from ..ide.cycle_words import cycle_signature
 from ..ide.signature_help import locals_read
 from .cursor import Cursor, cursor_at
+from .cycle_lenses import program_inch
 from .texts import t
 
 if TYPE_CHECKING:
@@ -72,13 +73,14 @@ def system_variable_items(ls: CncMacroServer, cur: Cursor, start: int) -> list[t
     dialect = cur.doc.dialect
     loc = ls.locale
     out: list[types.CompletionItem] = []
+    inch = program_inch(ls, cur)
     for row in dialect.system_variables():
         last = row.last if row.last - row.first < EXPAND_RANGE else row.first
         for n in range(row.first, last + 1):
             doc = describe.describe_system_variable(dialect, n, loc)
             if doc is None:
                 continue
-            detail = f"{t(doc.access, loc)}" + (f", {doc.unit}" if doc.unit else "")
+            detail = f"{t(doc.access, loc)}" + (f", {describe.unit_text(doc.unit, inch, loc)}" if doc.unit else "")
             out.append(
                 types.CompletionItem(
                     label=f"#{n}",

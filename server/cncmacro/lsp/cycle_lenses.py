@@ -4,7 +4,8 @@ elapsed time in the hover of any block.
 ``≈ 3 min 12 s · 1,842 mm cut · 6,300 mm rapid`` above the O line of a program that an analysis
 run started from and completed, and ``T2 ≈ 48 s · 310 mm cut · 1,020 mm rapid`` above each tool
 change (that tool's part, up to the next change or the end). The hover of a block adds when it
-first starts. All of it comes from the analysis the server already runs
+first starts; a length variable's hover and completion take the program's unit from the same totals
+(``program_inch``). All of it comes from the analysis the server already runs
 (``analysis/runs/cycle_lenses.py``): a request runs nothing, and a document edited since its last
 analysis shows nothing until the next one.
 """
@@ -19,6 +20,7 @@ from ..analysis.runs.cycle_summary import duration_text, tool_name, totals_text
 from .texts import t
 
 if TYPE_CHECKING:
+    from .cursor import Cursor
     from .documents import OpenDocument
     from .server import CncMacroServer
 
@@ -55,6 +57,17 @@ def elapsed_text(ls: CncMacroServer, doc: OpenDocument, line: int) -> str | None
         return None
     shown = duration_text(seconds, ls.locale)
     return t("starts_at", ls.locale, shown=shown)
+
+
+def program_inch(ls: CncMacroServer, cur: Cursor) -> bool | None:
+    """Whether the program under the cursor is in inches: from the analysis run that started
+    from it and completed (its totals' unit, as the code lens shows it), else None (not known:
+    a subprogram takes its caller's unit)."""
+    timing = ls.diagnostics.timing(cur.doc)
+    if timing is None:
+        return None
+    totals = timing.programs.get(cur.doc.parsed.program.unit_at(cur.line).start)
+    return None if totals is None else totals.inch
 
 
 def refresh_code_lenses(server: CncMacroServer) -> None:

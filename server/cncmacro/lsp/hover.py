@@ -51,7 +51,7 @@ from ..syntax.nodes import (
 from ..syntax.walk import nodes_at
 from .conditional_m99 import conditional_m99_hover
 from .cursor import Cursor, cursor_at
-from .cycle_lenses import elapsed_text
+from .cycle_lenses import elapsed_text, program_inch
 from .program_docs import doc_lines
 from .site_steps import index_soon
 from .texts import t
@@ -150,7 +150,7 @@ def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
             lines.append("")
             facts = [f"{t('access', loc)}: {t(doc.access, loc)}"]
             if doc.unit:
-                facts.append(f"{t('unit', loc)}: {doc.unit}")
+                facts.append(f"{t('unit', loc)}: {describe.unit_text(doc.unit, program_inch(ls, cur), loc)}")
             if doc.axis:
                 facts.append(f"{t('axis', loc)}: {doc.axis}")
             lines.append(" · ".join(facts))

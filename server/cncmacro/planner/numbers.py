@@ -18,6 +18,7 @@ from decimal import ROUND_HALF_UP, Decimal, InvalidOperation
 
 from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE, MAX_VALUE, OVERFLOW
+from ..dialects.describe import ROTARY_AXES
 from .alarms import MacroAlarm, UnknownValue
 
 
@@ -55,7 +56,7 @@ def fup(x: float) -> float:
 INCREMENT_LETTERS = frozenset("XYZUVWABCIJKRQ")
 # the angles among them: 0.001° in either unit (Haas 96-8000, "Notes on Functions": "For metric and
 # angle dimensions, three-place precision is the default. For inch, four-place precision")
-ANGLE_LETTERS = frozenset("ABC")
+ANGLE_LETTERS = ROTARY_AXES
 
 
 def increment_places(letter: str, inch: bool) -> int:

@@ -39,6 +39,11 @@ class Totals:
     def __sub__(self, other: Totals) -> Totals:
         return Totals(self.seconds - other.seconds, self.cut - other.cut, self.rapid - other.rapid, self.unit)
 
+    @property
+    def inch(self) -> bool:
+        """Whether the program was in inches (G20) at its end."""
+        return self.unit == INCH
+
     def shown(self) -> tuple[float, float]:
         """The cut and rapid path in ``unit``."""
         if self.unit == INCH:
