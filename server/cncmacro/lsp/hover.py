@@ -25,7 +25,7 @@ from lsprotocol import types
 from ..analysis.indexes.call_sites import call_site
 from ..analysis.indexes.return_labels import callers, return_landings, returns_onto
 from ..analysis.indexes.sites import label_jumps, word_at
-from ..bilingual import in_language, is_chinese, pick
+from ..bilingual import in_language, is_chinese, listed, pick
 from ..dialects import describe
 from ..dialects.alarms import FORMAT, VARIABLE_NUMBER
 from ..dialects.cycle_words import CycleForm
@@ -57,6 +57,7 @@ from .site_steps import index_soon
 from .texts import t
 
 if TYPE_CHECKING:
+    from ..dialects.dialect import Dialect
     from .server import CncMacroServer
 
 MAX_PLACES = 8
@@ -168,6 +169,10 @@ def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
         else:
             lines.append(t("no_argument", loc))
     elif kind in (describe.COMMON, describe.PERSISTENT):
+        axis = next((a for a, n in dialect.skip_commons if n == number), None)
+        if axis is not None:  # GSK980TDi #995–#999: where G31 stopped (Dialect.skip_commons)
+            code = f"G{min(dialect.skip_codes):g}"
+            lines += ["", t("skip_common", loc, code=code, axis=axis)]
         shared = dialect.shared_common(number)
         if shared is not None:
             lines += ["", t("part_system_shared" if shared else "part_system_own", loc)]
@@ -364,8 +369,22 @@ def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
             form = cycle_form_of(dialect, cur.block) if word.letter == "G" else None
             if form is not None and form[0] == doc.code:  # a cycle's code: the block it writes
                 text += f"\n\n{t('this_block', loc)}: {_form_line(form[0], form[1], loc)}"
+            if word.letter == "G" and word.value.value in dialect.skip_codes:
+                text += _skip_lines(dialect, loc)
             return text
     return None
+
+
+def _skip_lines(dialect: Dialect, loc: str | None) -> str:
+    """What a skip (G31) leaves where the program reads it, on a control that stores it in
+    commons (``Dialect.skip_commons``: GSK980TDi #995–#999), and its feed clamp."""
+    out = ""
+    if dialect.skip_commons:
+        places = listed(loc, [f"#{n} ({axis})" for axis, n in dialect.skip_commons])
+        out += f"\n\n{t('skip_stores', loc, places=places)}"
+    if dialect.skip_feed_clamp is not None:
+        out += f"{pick(loc, '; ', '；')}{t('skip_clamp', loc, feed=dialect.skip_feed_clamp)}" if out else ""
+    return out
 
 
 def _form_line(code: str, form: CycleForm, loc: str | None) -> str:

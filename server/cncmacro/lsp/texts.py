@@ -88,6 +88,16 @@ TEXTS: dict[str, tuple[str, str]] = {
     "fills": ("fills", "赋值给"),
     "reads": ("reads", "读取"),
     "this_block": ("this block", "本程序段"),
+    "skip_stores": (
+        "Where the skip signal comes on, the absolute position is stored in {places}",
+        "跳转信号变为“1”时，绝对坐标位置被存储在 {places}",
+    ),
+    "skip_clamp": ("a faster feed is clamped at {feed:g} mm/min", "进给速度超过 {feed:g} mm/min 时被箝制在该速度"),
+    "skip_common": (
+        "{code} stores here the absolute {axis} position where the skip signal came on (until then it keeps its"
+        " value)",
+        "{code} 跳转信号变为“1”时，在此存储 {axis} 轴的绝对坐标位置（此前保持原值）",
+    ),
     "more": ("more", "更多"),
     "not_here": ("this dialect does not read abbreviations", "本系统不支持关键字缩写"),
     "short_for": ("**{text}** — short for **{word}**", "**{text}** — **{word}** 的缩写"),
