@@ -66,3 +66,19 @@ def test_the_letter_under_the_cursor_is_active_and_the_letters_written_are_given
     assert found is not None and found.form.name == SECOND_BLOCK
     assert [w.letter for w in found.form.words][found.active or 0] == "Q" and found.active == 6
     assert found.given == frozenset("XZPQF")
+
+
+def test_gsk_g76_and_g92_read_the_run_out_j_k_the_starts_l_and_threads_per_inch_i() -> None:
+    # GSK980TDi §3.24.12: "G76 P(m)(r)(a) Q(△dmin) R(d) J_ K_；… F(I)" (J, K the run-out); §3.24.9:
+    # "G92 X(U)_ Z(W)_ F_ J_ K_ L" (L: "多头螺纹的头数"); I: "螺纹每英寸牙数"
+    gsk = "gsk980tdi"
+    first = "G76 P020060 Q100 R0.05 J1 K2"
+    assert _at(first, 23, gsk)[:2] == (FIRST_BLOCK, "J")  # type: ignore[index]
+    assert _at(first, 26, gsk)[1:] == ("K", "run-out: its length along the long axis (no sign); left out: as J")  # type: ignore[index]
+    assert _at("G76 X27.4 Z-30 P1300 Q400 I12", 26, gsk)[:2] == (SECOND_BLOCK, "I")  # type: ignore[index]
+    g92 = "G92 X29 Z-30 F2 J1 K2 L2"
+    assert _at(g92, 16, gsk)[1] == "J" and _at(g92, 19, gsk)[1] == "K"  # type: ignore[index]
+    assert _at(g92, 22, gsk)[1:] == ("L", "starts of the thread, 1-99 (left out: one), kept")  # type: ignore[index]
+    assert _at(g92, 13, gsk)[1] == "F"  # type: ignore[index]  # the lead, not F(L): L is a word of its own
+    assert _at(g92, 13)[1] == "F(L)"  # type: ignore[index]  # FANUC's manual writes the lead F(L)
+    assert _at(g92, 16) is None  # FANUC's G92 has no J

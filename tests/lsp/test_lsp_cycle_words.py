@@ -247,8 +247,9 @@ async def test_a_lathe_drilling_cycles_letters_differ_by_control(
     lead = await hover_at(gsk_en, uri, 4, 10)
     close_file(gsk_en, uri)
     assert r.startswith("**G83** — **R**: retract after each peck (mm, a radius; 1 when left out), kept")
-    assert lead.startswith("**G84** — **F(L)**: lead of the tap (per spindle turn, whatever G98/G99)")
+    # the GSK980TDi writes F(I) (§3.24.6, "G84 X(U)__ C(H)__ Z(W)__ P__ F(I)__ K__M__"): its L is no lead
+    assert lead.startswith("**G84** — **F**: lead of the tap (per spindle turn, whatever G98/G99)")
     uri = open_file(gsk_zh, GSK / "drill_zh.CNC", DRILLING)
     lead = await hover_at(gsk_zh, uri, 4, 10)
     close_file(gsk_zh, uri)
-    assert lead.startswith("**G84** — **F(L)**: 螺纹导程（主轴每转，与G98/G99无关）")
+    assert lead.startswith("**G84** — **F**: 螺纹导程（主轴每转，与G98/G99无关）")

@@ -15,7 +15,9 @@ taps; FANUC's "canned cycle for drilling"). Where they differ (docs/profiles.md,
 * F, S and T of G71–G73: FANUC reads them in the second block; the GSK980TDi in either block, and
   its second block of G71/G72 takes K (check the shape is monotone) and J (type II: one more pass
   along the rough contour);
-* the GSK980TDi threads take I (threads per inch) in place of F, and its G50 takes U and W.
+* the GSK980TDi threads take I (threads per inch) in place of F, and its G50 takes U and W;
+  its G76 (first block) and G92 take the run-out J and K, and G92 the starts L (§3.24.12,
+  §3.24.9), so its lead is written F alone, not FANUC's F(L).
 """
 
 from __future__ import annotations
@@ -47,6 +49,23 @@ RETRACT_E = w(
 )
 LEAD = w("F", "L", "lead of the thread (per spindle turn)", "螺纹导程（主轴每转）")
 THREADS_PER_INCH = w("I", "", "threads per inch, in place of F", "每英寸螺纹牙数（代替F）")
+# the GSK980TDi writes the lead F alone: its L is a word of its own, the starts of G92/G78
+GSK_LEAD = w("F", "", "lead of the thread (per spindle turn)", "螺纹导程（主轴每转）")
+# GSK980TDi G76's first block and G92: the thread's run-out, "J：螺纹退尾时在短轴方向的移动量…K：螺纹退尾
+# 时在长轴方向的长度" (§3.24.12; §3.24.9, where both are modal), and G92's "L：多头螺纹的头数…1～99"
+GSK_RUN_OUT_J = w(
+    "J",
+    "",
+    "run-out: the move along the short axis as the thread ends (no sign; a radius when it is X)",
+    "螺纹退尾时在短轴方向的移动量（不带方向；短轴为X轴时为半径值）",
+)
+GSK_RUN_OUT_K = w(
+    "K",
+    "",
+    "run-out: its length along the long axis (no sign); left out: as J",
+    "螺纹退尾时在长轴方向的长度（不带方向）；省略时按K=J",
+)
+GSK_STARTS = w("L", "", "starts of the thread, 1-99 (left out: one), kept", "多头螺纹的头数，1～99（省略为单头），模态")
 
 # the unit of the words given without a decimal point (G74/G75 P Q, G76 Q P)
 FANUC_INCREMENTS = (
@@ -64,7 +83,7 @@ def _in(unit: tuple[str, str], letter: str, symbol: str, en: str, zh: str) -> Cy
     return w(letter, symbol, f"{en}, {unit[0]}", f"{zh}，{unit[1]}")
 
 
-def _thread_end_block(unit: tuple[str, str]) -> tuple[CycleWord, ...]:
+def _thread_end_block(unit: tuple[str, str], lead: CycleWord = LEAD) -> tuple[CycleWord, ...]:
     """The second block of G76 (and the GSK980TDi's G78): the end point, the taper, the thread's
     height, the first cut's depth and the lead."""
     return (
@@ -77,7 +96,7 @@ def _thread_end_block(unit: tuple[str, str]) -> tuple[CycleWord, ...]:
         ),
         _in(unit, "P", "k", "height of the thread (a radius)", "螺纹牙高（半径值）"),
         _in(unit, "Q", "Δd", "depth of the first cut (a radius)", "第一次切削深度（半径值）"),
-        LEAD,
+        lead,
     )
 
 
@@ -133,8 +152,14 @@ def _stock_removal(
     ]
 
 
-def _grooving_and_threading(unit: tuple[str, str]) -> list[CycleWords]:
-    """G74, G75, G76 with the unit of their P and Q."""
+def _grooving_and_threading(
+    unit: tuple[str, str],
+    lead: CycleWord = LEAD,
+    g76_first_extra: tuple[CycleWord, ...] = (),
+    g76_second_extra: tuple[CycleWord, ...] = (),
+) -> list[CycleWords]:
+    """G74, G75, G76 with the unit of their P and Q, the thread's lead word and G76's own words
+    of a profile."""
     g74 = (
         *END_POINT,
         _in(unit, "P", "Δi", "X step between the passes (no sign)", "每次循环的X向移动量（无符号）"),
@@ -168,8 +193,9 @@ def _grooving_and_threading(unit: tuple[str, str]) -> list[CycleWords]:
         ),
         _in(unit, "Q", "Δdmin", "minimum depth of cut (a radius)", "最小切削深度（半径值）"),
         w("R", "d", "finishing allowance (a radius)", "精车余量（半径值）"),
+        *g76_first_extra,
     )
-    g76_second = _thread_end_block(unit)
+    g76_second = (*_thread_end_block(unit, lead), *g76_second_extra)
     return [
         two_blocks(
             "G74",
@@ -208,12 +234,14 @@ def _gsk_enhanced_thread(unit: tuple[str, str]) -> CycleWords:
         w("L", "", "starts of the thread, 1-99", "螺纹头数，1～99"),
         w("E", "", "screw-in distance along X (a radius)", "X向旋进距离（半径值）"),
     )
-    second = (*_thread_end_block(unit), THREADS_PER_INCH)
+    second = (*_thread_end_block(unit, GSK_LEAD), THREADS_PER_INCH)
     return two_blocks("G78", first, second, "XZUW", False)
 
 
-def _single_cycles(thread_extra: tuple[CycleWord, ...]) -> list[CycleWords]:
-    """G90, G92, G94 and G32; a thread takes ``thread_extra`` too."""
+def _single_cycles(
+    thread_extra: tuple[CycleWord, ...], lead: CycleWord = LEAD, g92_extra: tuple[CycleWord, ...] = ()
+) -> list[CycleWords]:
+    """G90, G92, G94 and G32; a thread takes ``thread_extra`` too, G92 ``g92_extra``."""
     taper_x = w(
         "R",
         "",
@@ -228,9 +256,9 @@ def _single_cycles(thread_extra: tuple[CycleWord, ...]) -> list[CycleWords]:
     )
     return [
         one_block("G90", *END_POINT, taper_x, FEED),
-        one_block("G92", *END_POINT, taper_x, LEAD, *thread_extra),
+        one_block("G92", *END_POINT, taper_x, lead, *thread_extra, *g92_extra),
         one_block("G94", *END_POINT, taper_z, FEED),
-        one_block("G32", *END_POINT, LEAD, *thread_extra),
+        one_block("G32", *END_POINT, lead, *thread_extra),
     ]
 
 
@@ -275,7 +303,7 @@ def _gsk_drilling() -> list[CycleWords]:
     )
     j = w("J", "", "J0: high-speed pecks (retract R); J1: back to the start after each peck",
           "J0：高速深孔钻（退R）；J1：每次退回钻孔起始位置")  # fmt: skip
-    lead = w("F", "L", "lead of the tap (per spindle turn, whatever G98/G99)", "螺纹导程（主轴每转，与G98/G99无关）")
+    lead = w("F", "", "lead of the tap (per spindle turn, whatever G98/G99)", "螺纹导程（主轴每转，与G98/G99无关）")
     face_hole = (w("X", "", "X of the hole (a diameter)", "钻孔位置X坐标（直径值）"), c,
                  w("Z", "", "Z of the bottom of the hole", "孔底位置Z坐标"))  # fmt: skip
     side_hole = (w("Z", "", "Z of the hole", "钻孔位置Z坐标"), c,
@@ -345,9 +373,9 @@ _EITHER_BLOCK = (
 
 GSK980TDI_CYCLE_WORDS: dict[float, CycleWords] = by_code(
     *_stock_removal(_EITHER_BLOCK, _EITHER_BLOCK, flags=True),
-    *_grooving_and_threading(GSK_INCREMENTS),
+    *_grooving_and_threading(GSK_INCREMENTS, GSK_LEAD, (GSK_RUN_OUT_J, GSK_RUN_OUT_K), (THREADS_PER_INCH,)),
     _gsk_enhanced_thread(GSK_INCREMENTS),
-    *_single_cycles((THREADS_PER_INCH,)),
+    *_single_cycles((THREADS_PER_INCH,), GSK_LEAD, (GSK_RUN_OUT_J, GSK_RUN_OUT_K, GSK_STARTS)),
     *_gsk_drilling(),
     *_spindle(
         (

@@ -94,8 +94,7 @@ TEXTS: dict[str, tuple[str, str]] = {
     ),
     "skip_clamp": ("a faster feed is clamped at {feed:g} mm/min", "进给速度超过 {feed:g} mm/min 时被箝制在该速度"),
     "skip_common": (
-        "{code} stores here the absolute {axis} position where the skip signal came on (until then it keeps its"
-        " value)",
+        "{code} stores here the absolute {axis} position where the skip signal came on (until then it keeps its value)",
         "{code} 跳转信号变为“1”时，在此存储 {axis} 轴的绝对坐标位置（此前保持原值）",
     ),
     "more": ("more", "更多"),
