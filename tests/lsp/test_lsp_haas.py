@@ -188,7 +188,7 @@ async def test_g65_p9832_is_a_probing_macro_on_the_control(
     assert "Program: kept on the control (Haas NGC mill keeps O9000–O9999 there" in said  # no machine file names them
     said = await hover_text(haas_zh, open_file(haas_zh, PROGRAM), *G65_P9832)
     assert said.startswith("**O9832** — 工件测头开启（Haas WIPS）")
-    assert "程序: 存放在数控系统内" in said and "Haas NGC mill 的 O9000–O9999" in said
+    assert "程序: 存放在数控系统内" in said and "Haas NGC 铣床 的 O9000–O9999" in said
     # FANUC keeps its 9000 series on the control too, with nothing said of what O9832 does there
     said = described(await hover_text(fanuc_en, as_fanuc(fanuc_en), *G65_P9832))
     assert said.startswith("**O9832** — Program: kept on the control (FANUC 0i Custom Macro B keeps O9000–O9999 there")

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field, replace
 from functools import cache
 from typing import Any
 
-from ..bilingual import Detail, detail
+from ..bilingual import Detail, detail, pick
 from .alarms import alarm_said, alarm_titled, shown_number
 from .cycle_words import CycleWords
 from .drill_cycles import DrillCycle, LatheDrilling
@@ -86,6 +86,8 @@ class Dialect:
     # motion mode in force: GSK980TDi G00, G01, G02, G03, G05, §3.28.3.2 note 2); None: after any
     # block with a move command (FANUC: "a block specifying movement along axes")
     modal_call_codes: frozenset[float] | None = None
+    # the profile's title in Chinese, for the editor's Chinese texts ("" where it reads as the English)
+    title_zh: str = ""
     # the modal state at power-on (MODAL_GROUPS names -> G code)
     modal_defaults: dict[str, float] = field(default_factory=dict)
     # which G code sets the coordinate system (G92 on a mill, G50 on this lathe)
@@ -406,6 +408,10 @@ class Dialect:
         if number in self.unnumbered_alarms:
             return None
         return shown_number(number, self.documented_alarms)
+
+    def shown_title(self, locale: str | None) -> str:
+        """The profile's title in the language of ``locale``."""
+        return pick(locale, self.title, self.title_zh or self.title)
 
     def alarm_said(self, number: int, width: int = 0) -> Detail:
         """The interpreter's alarm ``number`` as a message names it on this control (English,

@@ -57,6 +57,29 @@ MODAL_GROUPS = {
     "polar": 15.0,  # G15 G16
 }
 
+# How a hover names each modal group of a G code's row (``CodeDoc.group``), in English (the name
+# itself) and Chinese.
+MODAL_GROUP_NAMES: dict[str, tuple[str, str]] = {
+    "motion": ("motion", "运动（插补）"),
+    "plane": ("plane", "平面选择"),
+    "distance": ("distance", "绝对/增量"),
+    "stroke": ("stroke", "存储行程检测"),
+    "feed": ("feed", "进给方式"),
+    "units": ("units", "英制/公制"),
+    "cutter": ("cutter", "刀具半径补偿"),
+    "length": ("length", "刀具长度补偿"),
+    "canned": ("canned", "固定循环"),
+    "return": ("return", "固定循环返回平面"),
+    "scaling": ("scaling", "比例缩放"),
+    "macro": ("macro", "宏程序模态调用"),
+    "spindle": ("spindle", "恒线速度控制"),
+    "wcs": ("wcs", "工件坐标系"),
+    "cutting": ("cutting", "切削方式"),
+    "rotation": ("rotation", "坐标旋转"),
+    "mirror": ("mirror", "可编程镜像"),
+    "polar": ("polar", "极坐标指令"),
+}
+
 
 @dataclass(frozen=True, slots=True)
 class SystemVariable:

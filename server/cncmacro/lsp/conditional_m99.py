@@ -43,7 +43,7 @@ def conditional_m99_hover(block: Block, column: int, dialect: Dialect, locale: s
 def _text(dialect: Dialect, locale: str) -> str:
     head = t("conditional_m99", locale)
     if dialect.conditional_m99:
-        return f"{head}\n\n*{dialect.title}*"
+        return f"{head}\n\n*{dialect.shown_title(locale)}*"
     said = dialect.alarm_said(FORMAT)
-    refused = t("conditional_m99_refused", locale, title=dialect.title, alarm=pick(locale, said, said.zh))
+    refused = t("conditional_m99_refused", locale, title=dialect.shown_title(locale), alarm=pick(locale, said, said.zh))
     return f"{head}\n\n{refused}"

@@ -30,6 +30,7 @@ from ..dialects import describe
 from ..dialects.alarms import FORMAT, VARIABLE_NUMBER
 from ..dialects.cycle_words import CycleForm
 from ..dialects.functions_data import GSK_H_CODES
+from ..dialects.tables import MODAL_GROUP_NAMES
 from ..ide.cycle_words import cycle_form_of, cycle_word_at
 from ..machine.alarms import MacroAlarm
 from ..machine.calls import argument_targets, letters_for_local
@@ -156,7 +157,7 @@ def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
                 facts.append(f"{t('axis', loc)}: {doc.axis}")
             lines.append(" · ".join(facts))
             lines.append("")
-            lines.append(f"*{dialect.title}*")
+            lines.append(f"*{dialect.shown_title(loc)}*")
     elif kind == describe.LOCAL:
         spec1, spec2 = letters_for_local(number)
         lines.append("")
@@ -194,7 +195,7 @@ def named_hover(ls: CncMacroServer, cur: Cursor, node: NamedVar) -> str:
     head = f"**{node.text}**"
     if not dialect.variable_names:
         said = dialect.alarm_said(FORMAT)
-        return f"{head} — {t('no_names', loc, alarm=pick(loc, said, said.zh))}\n\n*{dialect.title}*"
+        return f"{head} — {t('no_names', loc, alarm=pick(loc, said, said.zh))}\n\n*{dialect.shown_title(loc)}*"
     row = dialect.variable_name(node.name)
     subscript = _literal(node.index.inner) if node.index is not None else None
     if row is not None and node.index is not None and subscript is None:
@@ -325,7 +326,7 @@ def program_hover(
     if found is None and number is not None and dialect.on_control(number):
         kept = dialect.programs_on_control
         ranges = ", ".join(f"O{a:04d}" if a == b else f"O{a:04d}–O{b:04d}" for a, b in kept)
-        said = t("on_control", loc, title=dialect.title, ranges=ranges)
+        said = t("on_control", loc, title=dialect.shown_title(loc), ranges=ranges)
         doc = dialect.program_doc(number)
         if doc is not None:  # the maker documents it: what it does, reads and writes, then where it lives
             lines = doc_lines(doc, loc, {w.letter for w in given})
@@ -354,18 +355,19 @@ def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
     if word.letter == "H" and dialect.h_codes and isinstance(word.value, Number) and _is_g65(cur.block.words):
         h = _H_CODES.get(f"H{int(word.value.value):02d}")
         if h is not None:
-            return f"```\n{h.signature}\n```\n{pick(loc, h.en, h.zh)}\n\n*{dialect.title}*"
+            return f"```\n{h.signature}\n```\n{pick(loc, h.en, h.zh)}\n\n*{dialect.shown_title(loc)}*"
     cycle = cycle_word_at(dialect, cur.block, word.start)
     if cycle is not None:  # a letter of a cycle block: what it means in this block
         name = pick(loc, *cycle.form.name)
         head = f"**{cycle.code}**" + (f" {name}" if name else "")
         meaning = f"**{cycle.word.piece}**: {pick(loc, cycle.word.en, cycle.word.zh)}"
-        return f"{head} — {meaning}\n\n{_form_line(cycle.code, cycle.form, loc)} · *{dialect.title}*"
+        return f"{head} — {meaning}\n\n{_form_line(cycle.code, cycle.form, loc)} · *{dialect.shown_title(loc)}*"
     if word.letter in ("G", "M") and isinstance(word.value, Number):
         doc = describe.code_doc(dialect, word.letter, word.value.value)
         if doc is not None:
-            group = f"{t('modal', loc)}: {doc.group}" if doc.group else t("one_shot", loc)
-            text = f"**{doc.code}** — {pick(loc, doc.en, doc.zh)}\n\n{group} · *{dialect.title}*"
+            names = MODAL_GROUP_NAMES.get(doc.group, (doc.group, doc.group))
+            group = f"{t('modal', loc)}: {pick(loc, *names)}" if doc.group else t("one_shot", loc)
+            text = f"**{doc.code}** — {pick(loc, doc.en, doc.zh)}\n\n{group} · *{dialect.shown_title(loc)}*"
             form = cycle_form_of(dialect, cur.block) if word.letter == "G" else None
             if form is not None and form[0] == doc.code:  # a cycle's code: the block it writes
                 text += f"\n\n{t('this_block', loc)}: {_form_line(form[0], form[1], loc)}"
@@ -400,7 +402,7 @@ def corner_hover(ls: CncMacroServer, cur: Cursor, corner: CornerWord) -> str:
     lines = [f"**,{corner.letter}** — {t(f'corner_{corner.letter}', loc)}", "", t("corner_run", loc)]
     dialect = cur.doc.dialect
     if not dialect.corner_words:
-        lines += ["", t("corner_not_in_manual", loc, title=dialect.title)]
+        lines += ["", t("corner_not_in_manual", loc, title=dialect.shown_title(loc))]
     return "\n".join(lines)
 
 
@@ -409,7 +411,7 @@ def abbreviation_hover(ls: CncMacroServer, cur: Cursor, a: Abbreviation) -> str:
     loc = ls.locale
     head = t("short_for", loc, text=a.text, word=a.word)
     if not cur.doc.dialect.keyword_abbreviations:
-        head += f" ({t('not_here', loc)}: *{cur.doc.dialect.title}*)"
+        head += f" ({t('not_here', loc)}: *{cur.doc.dialect.shown_title(loc)}*)"
     doc = function_hover(ls, cur, a.word)
     return f"{head}\n\n{doc}" if doc else head
 

@@ -17,6 +17,7 @@ from ..timing import Timing
 PROFILE = Dialect(
     name="fanuc-0i",
     title="FANUC 0i Custom Macro B",
+    title_zh="FANUC 0i 用户宏程序B",
     summary="FANUC 0i-D/0i-F mills and lathes, Custom Macro B",
     summary_zh="FANUC 0i-D/0i-F 铣床与车床，用户宏程序 B",
     aliases=("fanuc", "fanuc0i", "0i", "fanuc-0i-mf", "fanuc-0i-md"),

@@ -25,6 +25,7 @@ PROFILE = replace(
     FANUC_0I,
     name="fanuc-0i-lathe",
     title="FANUC 0i-TF lathe",
+    title_zh="FANUC 0i-TF 车床",
     summary="FANUC 0i-D/0i-F lathes (0i-TD, 0i-TF), G-code system A, Custom Macro B",
     summary_zh="FANUC 0i-D/0i-F 车床（0i-TD、0i-TF），G代码体系A，用户宏程序 B",
     aliases=("fanuc-0i-t", "0i-tf", "0i-td", "fanuc-0i-tf", "fanuc-lathe"),

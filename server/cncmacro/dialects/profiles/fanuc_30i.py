@@ -321,6 +321,7 @@ M_CODES: tuple[CodeDoc, ...] = tuple(_m98() if c.code == "M98" else c for c in f
 _MILL = FANUC_0I.configured(
     name="fanuc-30i",
     title="FANUC 30i-B Custom Macro",
+    title_zh="FANUC 30i-B 用户宏程序",
     summary="FANUC 30i/31i/32i-B (and 30i-class horizontal machining centres): names, 8-digit programs",
     summary_zh="FANUC 30i/31i/32i-B（及同级卧式加工中心）：系统变量名、8 位程序号",
     aliases=("fanuc30i", "30i", "31i", "32i", "fanuc-31i", "fanuc-32i", "fanuc-30i-b"),
@@ -335,6 +336,7 @@ _MILL = FANUC_0I.configured(
 # lathes"): the 30i's macro language with the NC side and power-on state of the 0i-TF lathe
 LATHE = _MILL.configured(
     title="FANUC 30i-B lathe (G-code system A)",
+    title_zh="FANUC 30i-B 车床（G代码体系A）",
     data_module="fanuc_30i_lathe_data",
     lathe=True,
     lathe_offsets=FANUC_0I_LATHE.lathe_offsets,

@@ -944,6 +944,7 @@ PROFILE = FANUC_0I.configured(
     **OTHER_MAKERS,  # the FANUC-only rules off (fanuc_0i.py); G04 P10. is 10 s here (Timing.dwell_p_point_seconds)
     name="haas",
     title="Haas NGC mill",
+    title_zh="Haas NGC 铣床",
     summary="Haas Next Generation Control (NGC) mills: 5-digit programs, #10000 commons, G154 P1-P99, O9xxx probing",
     summary_zh="Haas 新一代控制系统（NGC）铣床：5 位程序号、#10000 公共变量、G154 P1～P99、O9xxx 测头宏程序",
     aliases=("haas-ngc", "haas-mill", "haasngc", "ngc"),

@@ -36,6 +36,7 @@ PROFILE = replace(
     HAAS_MILL,
     name="haas-lathe",
     title="Haas lathe",
+    title_zh="Haas 车床",
     summary="Haas lathes (ST, SL series): the Haas macro language with G71/G76 in one block, offsets at #2001/#2701",
     summary_zh="Haas 车床（ST、SL 系列）：Haas 宏程序，G71/G76 单段格式，刀补在 #2001/#2701",
     aliases=("haas-st", "haas-sl", "haas-turn", "haas-ngc-lathe"),

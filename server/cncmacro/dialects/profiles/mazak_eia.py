@@ -19,6 +19,7 @@ PROFILE = FANUC_0I.configured(
     timing=OTHER_MAKERS_TIMING,
     name="mazak-eia",
     title="Mazak EIA/ISO (Matrix, Smooth)",
+    title_zh="Mazak EIA/ISO（Matrix、Smooth）",
     summary="Mazak Mazatrol Matrix/Smooth machining centres in EIA/ISO: Macro B with IF..THEN/ELSE/ENDIF, && and ||",
     summary_zh="马扎克 Mazatrol Matrix/Smooth 加工中心 EIA/ISO 程序：宏程序 B，支持 IF..THEN/ELSE/ENDIF、&& 和 ||",
     aliases=("mazak", "mazak-matrix", "mazak-smooth", "mazatrol"),

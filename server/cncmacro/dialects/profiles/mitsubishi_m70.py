@@ -18,6 +18,7 @@ PROFILE = FANUC_0I.configured(
     timing=OTHER_MAKERS_TIMING,
     name="mitsubishi-m70",
     title="Mitsubishi M70/M80 user macro",
+    title_zh="三菱 M70/M80 用户宏程序",
     summary="Mitsubishi M70/M80 (M8 series) machining centres: Macro B with IF..THEN/ELSE/ENDIF blocks",
     summary_zh="三菱 M70/M80（M8 系列）加工中心：用户宏程序 B，支持 IF..THEN/ELSE/ENDIF 块",
     aliases=("m70", "m80", "m800", "meldas", "mitsubishi", "mitsubishi-m80"),
