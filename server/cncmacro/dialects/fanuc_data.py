@@ -771,6 +771,15 @@ M_CODES: tuple[CodeDoc, ...] = (
     CodeDoc("M08", "", "Coolant on", "切削液开"),
     CodeDoc("M09", "", "Coolant off", "切削液关"),
     CodeDoc("M19", "", "Spindle orientation", "主轴定向"),
+    # FANUC "Rigid tapping": "M29 S****; specified prior to a tapping command" (G84, G74; a lathe's
+    # G84/G88), the M code of parameter 5210, M29 when it is 0
+    CodeDoc(
+        "M29",
+        "",
+        "Rigid tapping: M29 S_ before G84/G74 (a lathe's G84/G88) puts the spindle in rigid tapping mode (the M "
+        "code of parameter 5210, M29 by default)",
+        "刚性攻丝：在G84/G74（车床G84/G88）之前指定M29 S_，主轴进入刚性攻丝方式（M代码由参数5210设定，默认M29）",
+    ),
     *shared.codes("M30"),
     CodeDoc(
         "M98",

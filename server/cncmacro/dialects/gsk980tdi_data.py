@@ -485,6 +485,13 @@ M_CODES: tuple[CodeDoc, ...] = (
     CodeDoc("M09", "", "Coolant off", "冷却液关"),
     CodeDoc("M10", "", "Tailstock forward (standard PLC)", "尾座进（标准PLC）"),
     CodeDoc("M11", "", "Tailstock back (standard PLC)", "尾座退（标准PLC）"),
+    # "在 G84/G88 指令之前指定 M29 S_ … 在相同程序段中指令 M29 S_" (§3.24.6)
+    CodeDoc(
+        "M29",
+        "",
+        "Rigid tapping: M29 S_ before G84/G88 (or in the same block); no axis move between M29 and G84/G88",
+        "刚性攻丝：在G84/G88之前（或同一程序段中）指定M29 S_；M29与G84/G88之间不可指定轴移动",
+    ),
     *shared.codes("M30"),
     CodeDoc("M32", "", "Lubrication on (standard PLC)", "润滑开（标准PLC）"),
     CodeDoc("M33", "", "Lubrication off (standard PLC)", "润滑关（标准PLC）"),

@@ -110,4 +110,5 @@ G_CODES: tuple[CodeDoc, ...] = (
         for n in (1, 2, 3)
     ),
 )  # fmt: skip
-M_CODES: tuple[CodeDoc, ...] = with_m98_count_in_l(fanuc.M_CODES)
+# not FANUC's M29 row (its parameter 5210): no source at hand gives this control's tapping M code
+M_CODES: tuple[CodeDoc, ...] = with_m98_count_in_l(tuple(c for c in fanuc.M_CODES if c.code != "M29"))

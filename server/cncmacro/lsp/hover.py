@@ -31,6 +31,7 @@ from ..dialects.alarms import FORMAT, VARIABLE_NUMBER
 from ..dialects.cycle_words import CycleForm
 from ..dialects.functions_data import GSK_H_CODES
 from ..dialects.tables import MODAL_GROUP_NAMES
+from ..ide.address_words import address_hover
 from ..ide.cycle_words import cycle_form_of, cycle_word_at
 from ..machine.alarms import MacroAlarm
 from ..machine.calls import argument_targets, letters_for_local
@@ -362,6 +363,9 @@ def word_hover(ls: CncMacroServer, cur: Cursor, word: Word) -> str | None:
         head = f"**{cycle.code}**" + (f" {name}" if name else "")
         meaning = f"**{cycle.word.piece}**: {pick(loc, cycle.word.en, cycle.word.zh)}"
         return f"{head} — {meaning}\n\n{_form_line(cycle.code, cycle.form, loc)} · *{dialect.shown_title(loc)}*"
+    said = address_hover(dialect, cur.block, word, loc)  # T, G43's H, M98's L, G04's P
+    if said is not None:
+        return said
     if word.letter in ("G", "M") and isinstance(word.value, Number):
         doc = describe.code_doc(dialect, word.letter, word.value.value)
         if doc is not None:

@@ -36,10 +36,11 @@ def select_tool(p: Planner, t: float) -> None:
 def same_station(before: float, t: float) -> bool:
     """Whether lathe T codes ``before`` and ``t`` name the same tool station (their digits before
     the offset number's: T0101 and T0100 both station 1)."""
-    return _station(before) == _station(t)
+    return station_number(before) == station_number(t)
 
 
-def _station(t: float) -> int:
+def station_number(t: float) -> int:
+    """The tool station of a lathe's T code: its digits before the offset number's (T0101: 1)."""
     n = int(t)
     return n // 100 if n >= 100 else n // 10
 
