@@ -27,3 +27,12 @@ def test_a_range_longer_than_the_limit_is_cut() -> None:
     doc = document(*["#1=1"] * (MAX_LINES + 5))
     found = inline_values(doc, 0, MAX_LINES + 4)
     assert len(found) == MAX_LINES and found[-1].span.line == MAX_LINES - 1
+
+
+def test_a_write_only_variable_is_not_offered_for_a_value() -> None:
+    # #3000 is write-only (writing it raises the macro alarm): it has no value to show; #3001 has
+    doc = document("O0002", "#3000=1(STOP)", "#1=#3001")
+    assert inline_values(doc, 1, 2) == [
+        InlineExpression(Span(2, 0, 2), "#1"),
+        InlineExpression(Span(2, 3, 8), "#3001"),
+    ]

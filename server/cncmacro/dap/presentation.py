@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from ..bilingual import in_language, is_chinese, pick
+from ..dialects import describe
 from ..dialects.tables import SystemVariable
 from ..machine import Machine, MacroAlarm
 from ..machine.frames import Frame
@@ -184,10 +185,9 @@ def _in_scope(row: SystemVariable, scope: int) -> bool:
 
 
 def _describe(row: SystemVariable, n: int, machine: Machine, locale: str | None) -> str:
-    k = n - row.first
-    axes = machine.dialect.axes
-    text = pick(locale, row.en, row.zh)
-    text = text.replace("{axis}", axes[k] if k < len(axes) else str(k + 1)).replace("{index}", str(k + 1))
+    """The row's text for ``#n`` as hover fills it (``describe``), up to its first ``;``."""
+    doc = describe.describe_system_variable(machine.dialect, n, locale)
+    text = doc.text if doc is not None else pick(locale, row.en, row.zh)
     return text.split(";")[0]
 
 

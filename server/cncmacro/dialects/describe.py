@@ -78,6 +78,8 @@ def describe_system_variable(dialect: Dialect, number: int, locale: str | None =
     template = pick(locale, row.en, row.zh)
     axis = axis_name(dialect, k) if "{axis}" in row.en else None
     text = template.replace("{axis}", axis or "").replace("{index}", str(k + 1))
+    if "{diameter}" in text:  # a lathe's X value is a diameter: said on the X axis's row only
+        text = text.replace("{diameter}", pick(locale, " (on the diameter)", "（直径值）") if axis == "X" else "")
     unit = DEGREES if row.unit == LENGTH and axis in ROTARY_AXES else row.unit
     return VariableDoc(number, text, unit, row.access, axis, row.group, row.first, row.last)
 

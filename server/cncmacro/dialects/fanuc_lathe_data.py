@@ -145,9 +145,9 @@ TOOL_OFFSET_IN_EFFECT = SystemVariable(
     5084,
     "r",
     "position",
-    "{axis} axis tool offset now in effect: the geometry plus the wear of the T code's offset (X on the diameter); "
+    "{axis} axis tool offset now in effect: the geometry plus the wear of the T code's offset{diameter}; "
     "not readable while moving",
-    "第{index}轴（{axis}）当前执行的刀具偏置值：T代码所选刀补的几何形状值与磨损值之和（X为直径值），移动中不可读",
+    "第{index}轴（{axis}）当前执行的刀具偏置值：T代码所选刀补的几何形状值与磨损值之和{diameter}，移动中不可读",
     "mm",
     "position",
     "tool",

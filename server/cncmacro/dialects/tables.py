@@ -86,10 +86,11 @@ class SystemVariable:
     """One system variable, or a range of them that share a meaning.
 
     ``access`` is ``"r"``, ``"w"`` or ``"rw"``. ``en`` and ``zh`` describe the variable; in a
-    range they may use ``{axis}`` (X, Y, Z, 4th, 5th from ``k``) and ``{index}`` (``k + 1``,
-    e.g. the offset number). ``unit`` is shown on hover (``mm``, ``s``, ``ms``, ``h``, or
-    empty). ``group`` sorts variables into the debugger's scopes: ``signals``, ``tool``,
-    ``work``, ``alarm``, ``time``, ``control``, ``counters``, ``modal``, ``position``.
+    range they may use ``{axis}`` (X, Y, Z, 4th, 5th from ``k``), ``{index}`` (``k + 1``,
+    e.g. the offset number) and ``{diameter}`` (a lathe's "on the diameter", on the X axis
+    only). ``unit`` is shown on hover (``mm``, ``s``, ``ms``, ``h``, or empty; a rotary axis's
+    ``mm`` is read as degrees: ``describe``). ``group`` sorts variables into the debugger's
+    scopes: ``signals``, ``tool``, ``work``, ``alarm``, ``time``, ``control``, ``counters``, ``modal``, ``position``.
     ``default`` is the value before anything sets it (None for vacant).
     """
 

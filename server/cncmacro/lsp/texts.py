@@ -35,7 +35,7 @@ TEXTS: dict[str, tuple[str, str]] = {
         "`{symbol}` 在部分系统中表示 {word}；本系统不识别，应写 {word}。",
     ),
     "system": ("System variable", "系统变量"),
-    "null": ("#0: always vacant, read-only", "#0：总是空，只读"),
+    "null": ("Always vacant, read-only", "总是空，只读"),
     "undefined": ("No such variable in this dialect ({alarm})", "该系统中不存在此变量（{alarm}）"),
     "name": ("System variable name", "系统变量名"),
     "no_names": ("This dialect has no system variable names ({alarm})", "该系统不支持系统变量名（{alarm}）"),
