@@ -17,6 +17,7 @@ from collections.abc import Callable, Iterator
 from typing import TypeVar
 
 from ..machine import Machine, Snapshot
+from .stop_points import can_stop
 
 T = TypeVar("T")
 INTERVAL = 500
@@ -33,8 +34,9 @@ class History:
         self.checkpoints.append(m.snapshot())
 
     def record(self, m: Machine) -> None:
-        """Called after blocks ran: keep a checkpoint when ``interval`` blocks have passed."""
-        if not self.checkpoints or m.blocks - self.checkpoints[-1].blocks >= self.interval:
+        """Called after blocks ran: keep a checkpoint when ``interval`` blocks have passed, at a
+        point a run may stop at (``can_stop``: not inside a shape being read)."""
+        if not self.checkpoints or (m.blocks - self.checkpoints[-1].blocks >= self.interval and can_stop(m)):
             self.checkpoints.append(m.snapshot())
 
     def mark(self, m: Machine) -> None:

@@ -29,8 +29,9 @@ from ..machine.block_roles import skipped
 from ..machine.commanded_axes import CommandedAxes
 from ..machine.status import FINISHED, RunStatus
 from ..planner.moves import Move
-from .breakpoints import Breakpoints, Hit
+from .breakpoints import Breakpoints, Hit, Visit
 from .history import History
+from .stop_points import can_stop
 
 CONTINUE, STEP_IN, STEP_OVER, STEP_OUT = "continue", "in", "over", "out"
 
@@ -137,15 +138,15 @@ class Stepper:
             stop = self._status_stop()
             if stop is not None:
                 return stop
-            if self.pause_requested:
-                return Stop("pause")
+            if self.pause_requested:  # inside a shape being read: on to where a stop may be made
+                return Stop("pause") if can_stop(m) else self._run_blocks(CONTINUE)
 
     def _run_blocks(self, mode: str, until: Callable[[Machine], bool] | None = None) -> Stop:
         m = self.machine
         depth = len(m.frames)
         max_blocks = m.settings.max_blocks
         while True:
-            if self.pause_requested:
+            if self.pause_requested and can_stop(m):
                 return Stop("pause")
             if m.blocks >= max_blocks:
                 m.run(0)
@@ -158,13 +159,13 @@ class Stepper:
             if m.finished:
                 return self._ended()
             now = len(m.frames)
-            if until is not None and until(m):
-                return Stop("goto")
-            if _reading_shape(m):  # a roughing cycle reads its shape: one step, no stop inside
+            if not can_stop(m):  # a roughing cycle reads its shape: one step, no stop inside
                 stop = self._status_stop()
                 if stop is not None:
                     return stop
                 continue
+            if until is not None and until(m):
+                return Stop("goto")
             hit = self.breakpoints.check(m, now > before)  # counts the visit, also when a step lands here
             stop = self._status_stop()
             if stop is not None:
@@ -211,11 +212,21 @@ class Stepper:
         back = 1
         if m.status == RunStatus.COMPLETED and _end_code(m) is None:
             back = 2  # running off the file's end (or into the next O header) counted as a block
-        if self._back(m.blocks - back) is None:
-            while _reading_shape(m) and self._back(m.blocks - 1) is None:
-                pass  # a roughing cycle was one step forward: back to its block
+        if self.back_to(m.blocks - back):
             return Stop("step")
         return Stop("entry", pick(self.locale, "the start of the kept history", "保留的历史的起点"))
+
+    def back_to(self, target: int) -> bool:
+        """Back to block count ``target``, or further to the latest point before it where a run
+        may stop (``can_stop``: a roughing cycle was one step forward, so back to its block).
+        False when the kept history ended first."""
+        m = self.machine
+        if self._back(target) is not None:
+            return False
+        while not can_stop(m):
+            if self._back(m.blocks - 1) is not None:
+                return False
+        return True
 
     def reverse(self) -> Stop:
         """Back to the latest earlier point where a forward run stopped or would have stopped
@@ -236,7 +247,15 @@ class Stepper:
         after: dict[int, int] = {}
         found: Hit | None = None
         at = min(goal, now)
-        for block, visit in self.history.past(m, bps.look):
+
+        def look(machine: Machine, first: bool, arrival: bool, change: bool, entered: bool) -> Visit | None:
+            if can_stop(machine):  # the forward run never stopped nor counted a visit elsewhere
+                return bps.look(machine, first, arrival, change, entered)
+            if first:
+                bps.prime()
+            return None
+
+        for block, visit in self.history.past(m, look):
             if visit is not None and target is None and block < now:
                 found = bps.stop_back(visit, after)
                 if found is not None:
@@ -311,9 +330,3 @@ def last_line_run(m: Machine) -> int:
 def move_line(mv: Move, axes: tuple[str, ...], shown: list[int]) -> str:
     """An echoed move with the axes in ``shown`` (those the program has commanded so far)."""
     return f"{Path(mv.file).name}:{mv.line + 1} {mv.text(axes, shown)}\n"
-
-
-def _reading_shape(m: Machine) -> bool:
-    """Whether a lathe roughing cycle is reading its shape (no step stops inside it)."""
-    shape = m.planner.shape
-    return shape is not None and shape.reading

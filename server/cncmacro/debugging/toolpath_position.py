@@ -23,6 +23,7 @@ from ..bilingual import pick
 from ..machine import Machine
 from ..planner.moves import Move
 from .stepping import CONTINUE, Stepper, Stop
+from .stop_points import can_stop
 
 SHAPE_BLOCKS = 10_000  # a shape's blocks followed for its cycle's moves, at most
 
@@ -51,7 +52,7 @@ def run_to_move(stepper: Stepper, index: int) -> Stop:
     stop = stepper.run(CONTINUE, until=lambda machine: len(machine.planner.moves) > index)
     if stop.reason != "goto":
         return stop  # a breakpoint, an alarm, a pause or the end came first
-    if stepper._back(m.blocks - 1) is not None:
+    if not stepper.back_to(m.blocks - 1):
         return Stop("entry", pick(stepper.locale, "the start of the kept history", "保留的历史的起点"))
     return Stop("goto", _arrived(stepper, index))
 
@@ -59,13 +60,18 @@ def run_to_move(stepper: Stepper, index: int) -> Stop:
 def _back_to_move(stepper: Stepper, index: int) -> Stop:
     m = stepper.machine
     target = stepper.history.earliest  # when the history does not reach back that far
-    for block, made in stepper.history.past(m, lambda machine, *_: len(machine.planner.moves)):
-        if made <= index:
+    for block, made in stepper.history.past(m, _moves_made):
+        if made is not None and made <= index:
             target = block
             break
-    if stepper._back(target) is not None or len(m.planner.moves) > index:
+    if not stepper.back_to(target) or len(m.planner.moves) > index:
         return Stop("entry", pick(stepper.locale, "the start of the kept history", "保留的历史的起点"))
     return Stop("goto", _arrived(stepper, index))
+
+
+def _moves_made(m: Machine, *_: bool) -> int | None:
+    """The moves made before this earlier point, when a run may stop there."""
+    return len(m.planner.moves) if can_stop(m) else None
 
 
 def _arrived(stepper: Stepper, index: int) -> str:
