@@ -21,8 +21,8 @@ from pathlib import Path
 from typing import Any, BinaryIO
 
 from ..analysis.runs.subprogram_alone import LAUNCH_REPEAT, subprogram_remarks
-from ..bilingual import detail
-from ..debugging.breakpoints import Asked, Breakpoint, Breakpoints, LineBreakpoint, data_number
+from ..bilingual import detail, pick
+from ..debugging.breakpoints import Asked, Breakpoint, Breakpoints, LineBreakpoint, data_id, data_level, data_number
 from ..debugging.history import History
 from ..debugging.stepping import CONTINUE, STEP_IN, STEP_OUT, STEP_OVER, Filters, Stepper, Stop, last_line_run
 from ..debugging.toolpath_position import next_moves, run_to_move
@@ -223,8 +223,34 @@ class Session:
         number = data_number(name)  # what setDataBreakpoints takes: nothing is offered that it would refuse
         if number is None:
             return {"dataId": None, "description": f"{name} is not a # variable"}
-        return {"dataId": f"#{number}", "description": f"when #{number} changes", "accessTypes": ["write"],
+        level = self._local_level(number, args)
+        if level is None:
+            what = f"#{number}"
+        elif level == 0:
+            what = pick(self.locale, f"#{number} of the main program", f"主程序的 #{number}")
+        else:
+            what = pick(self.locale, f"#{number} of macro level {level}", f"宏程序第 {level} 层的 #{number}")
+        description = pick(self.locale, f"when {what} changes", f"{what}改变时")
+        return {"dataId": data_id(number, level), "description": description, "accessTypes": ["write"],
                 "canPersist": True}  # fmt: skip
+
+    def _local_level(self, number: int, args: dict[str, Any]) -> int | None:
+        """The macro level of the local ``#number`` asked about (docs/debugging.md): the frame's
+        (``frameId``), the scope's (``variablesReference``) or the top frame's; None for any
+        other variable, 0 (the main program's) when no program is paused."""
+        if data_level(f"#{number}") is None:
+            return None
+        if self.launched is None or self.running:
+            return 0
+        m = self.launched.machine
+        ref, frame_id = args.get("variablesReference"), args.get("frameId")
+        if isinstance(frame_id, int) and 1 <= frame_id <= len(m.frames):
+            index = frame_id - 1
+        elif isinstance(ref, int) and ref >= 1 and show.decode_reference(ref)[0] < len(m.frames):
+            index = show.decode_reference(ref)[0]
+        else:
+            index = len(m.frames) - 1
+        return m.frames[index].macro_level if m.frames else 0
 
     def on_setDataBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
         specs = _specs(args.get("breakpoints") or [])

@@ -47,6 +47,8 @@ from .code_breakpoints import CodeName, codes_of, looks_like_code, matches, read
 _HIT = re.compile(r"^\s*(==|>=|<=|>|<|%)?\s*(\d+)\s*$")
 _FUNCTION = re.compile(r"^\s*([NnOo])\s*(\d{1,8})\s*$")
 _LOG_PART = re.compile(r"\{([^{}]*)\}")
+_DATA_LEVEL = re.compile(r"@\s*(\d{1,3})\s*$")
+LOCALS = 33  # #1–#33: each macro level has its own
 
 
 def real_path(path: str) -> str:
@@ -184,13 +186,18 @@ class FunctionBreakpoint(Breakpoint):
 @dataclass(slots=True)
 class DataBreakpoint(Breakpoint):
     number: int = 0
+    level: int | None = None  # a local's (#1–#33) macro level: 0 the main program's
     last: float | None = None
     known: bool = False
 
     reason = "data breakpoint"
 
     def same(self, other: Breakpoint) -> bool:
-        return isinstance(other, DataBreakpoint) and other.number == self.number and Breakpoint.same(self, other)
+        return (
+            isinstance(other, DataBreakpoint)
+            and (other.number, other.level) == (self.number, self.level)
+            and Breakpoint.same(self, other)
+        )
 
 
 @dataclass(slots=True)
@@ -324,7 +331,7 @@ class Breakpoints:
             if number is None:
                 bp.verified, bp.message = False, f"'{data_id}' is not a variable such as #100"
             else:
-                bp.number = number
+                bp.number, bp.level = number, data_level(data_id)
             bp.prepare()
             self._compile(bp)
             self._carry(bp, old)
@@ -403,7 +410,8 @@ class Breakpoints:
         if m is None:
             return
         for bp in self.data:
-            bp.last, bp.known = _read(m, bp.number)
+            bp.last, bp.known = _watched(m, bp)
+            bp.known = bp.known or bp.level is not None  # a level not running yet: its locals start vacant
 
     # ---------------------------------------------------------------- deciding
     def _passes(self, bp: Breakpoint, m: Machine) -> tuple[bool, str | None]:
@@ -448,13 +456,11 @@ class Breakpoints:
                     if ok:
                         stop = stop or Hit("function breakpoint", [fb.id], problem)
         for db in self.data:
-            value, known = _read(m, db.number)
-            if known and (not db.known or value != db.last):
-                before = db.last
-                db.last, db.known = value, known
+            changed = _watch(m, db)
+            if changed is not None:
                 ok, problem = self._passes(db, m)
                 if ok:
-                    stop = stop or Hit("data breakpoint", [db.id], problem or _change(db.number, before, value))
+                    stop = stop or Hit("data breakpoint", [db.id], problem or _change(db.number, *changed))
         return stop
 
     def _block_facts(self, m: Machine) -> tuple[int | None, list[tuple[str, float]]]:
@@ -494,10 +500,9 @@ class Breakpoints:
                     self._meet(fb, m, met)
         if change:
             for db in self.data:
-                value, known = _read(m, db.number)
-                if known and (not db.known or value != db.last):
-                    changes[db.id] = _change(db.number, db.last, value)
-                    db.last, db.known = value, known
+                changed = _watch(m, db)
+                if changed is not None:
+                    changes[db.id] = _change(db.number, *changed)
                     self._meet(db, m, met)
         return Visit(m.blocks, met, changes) if met else None
 
@@ -547,6 +552,50 @@ def _change(number: int, before: float | None, now: float | None) -> str:
 def data_number(text: str) -> int | None:
     m = re.match(r"^\s*#\s*(\d{1,5})\b", text)
     return int(m.group(1)) if m else None
+
+
+def data_level(data_id: str) -> int | None:
+    """The macro level whose local a data breakpoint watches: ``#1@2`` watches #1 of level 2,
+    a local without a level (``#1``) the main program's; None for any other variable (it is
+    one for the whole run)."""
+    number = data_number(data_id)
+    if number is None or not 1 <= number <= LOCALS:
+        return None
+    m = _DATA_LEVEL.search(data_id)
+    return int(m.group(1)) if m else 0
+
+
+def data_id(number: int, level: int | None) -> str:
+    """The data breakpoint id of ``#number`` (of macro ``level`` for a local)."""
+    return f"#{number}@{level}" if level is not None and 1 <= number <= LOCALS else f"#{number}"
+
+
+def _watch(m: Machine, bp: DataBreakpoint) -> tuple[float | None, float | None] | None:
+    """The watched value's change since it was last seen (before, now), None when it did not
+    change; what is seen is kept. While the watched local's level is not running nothing is
+    seen, and the next call of that level starts with vacant locals."""
+    value, known = _watched(m, bp)
+    if not known:
+        if bp.level is not None:
+            bp.last, bp.known = None, True
+        return None
+    if bp.known and value == bp.last:
+        return None
+    before = bp.last
+    bp.last, bp.known = value, True
+    return before, value
+
+
+def _watched(m: Machine, bp: DataBreakpoint) -> tuple[float | None, bool]:
+    """The value a data breakpoint watches, and whether there is one: a local of a macro
+    level that is not running now (not called yet, or returned) has none, so a call or a
+    return that only switches levels is no change."""
+    if bp.level is None:
+        return _read(m, bp.number)
+    for f in m.frames:
+        if f.macro_level == bp.level:
+            return f.locals[bp.number], True
+    return None, False
 
 
 def _read(m: Machine, n: int) -> tuple[float | None, bool]:
