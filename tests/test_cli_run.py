@@ -200,3 +200,14 @@ def test_stdin_runs_an_editors_unsaved_text_under_the_files_name(tmp_path):
     result = json.loads(done.stdout)
     assert (done.returncode, result["status"]) == (0, "completed")
     assert result["variables"] == {"1": 7.0, "100": 14.0}
+
+
+def test_an_m00_stop_names_its_own_line(tmp_path):
+    # line 3 is #3006 (its message names line 3), line 4 the M00: its stop names line 4, not the
+    # line after it (5), where the run goes on
+    f = tmp_path / "O0001.nc"
+    f.write_text("O0001\n#1=1\n#3006=1 (CHECK PART)\nM00\n#2=1\nM30\n", encoding="utf-8")
+    code, out, _err = cli("run", str(f))
+    assert code == 0
+    assert "stop at O0001.nc:3: CHECK PART" in out
+    assert "stop at O0001.nc:4: M00 program stop" in out

@@ -71,6 +71,14 @@ describe('breaking on codes', () => {
     assert.match((await continueTo()).body.description, /program end \(M30\)/);
   });
 
+  test("the console names the M00's own line when it pauses", async () => {
+    await dc.begin({ program: STOP_AND_DRILL, stopOnEntry: true });
+    const paused = await continueTo(); // the M00 at line 7; the run goes on at line 8
+    assert.equal(paused.body.reason, 'pause');
+    assert.equal((await dc.top()).line, 8);
+    assert.match(dc.output, /stop at stop_and_drill\.nc:7: M00 program stop/);
+  });
+
   test('G81 stops before each block that holds it, not at a hole the modal cycle repeats', async () => {
     const { event } = await dc.begin({ program: STOP_AND_DRILL }, { functionBreakpoints: ['G81'] });
     assert.equal(event.body.reason, 'function breakpoint');

@@ -237,12 +237,14 @@ class CallStack:
         self.frames[-1].pc = pc
         return -1
 
-    def pause(self, message: str, nxt: int) -> int:
+    def pause(self, message: str, pc: int, nxt: int) -> int:
+        """The block at ``pc`` (an ``M00``) stops the run with ``message``; it goes on at ``nxt``.
+        The message names the block's own line, as a ``#3006`` stop does."""
         self.status = RunStatus.PAUSED
         self.message = message
         f = self.frames[-1]
         f.pc = nxt
-        self.notes.append(Note("message", message, f.file, nxt))
+        self.notes.append(Note("message", message, f.file, pc))
         return -1
 
     def enter_shape(self, call: ShapeCall, pc: int, nxt: int) -> int:

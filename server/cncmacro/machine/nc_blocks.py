@@ -431,7 +431,7 @@ def _nc(
         if not END_CODES.isdisjoint(mcontrol):
             return m.end_program(pc, next(v for v in mcontrol if v in END_CODES))
         if 0.0 in mcontrol:
-            return m.pause(detail("M00 program stop", "M00 程序停止"), nxt)
+            return m.pause(detail("M00 program stop", "M00 程序停止"), pc, nxt)
         return _after_nc(m, moved, skip_to, pc, nxt)
 
     return general_to
