@@ -373,8 +373,9 @@ def test_6_alarms_the_debugger_stops_on_an_alarm_with_its_detail_in_the_client_l
     messages, info = debug(f, "zh-CN")
     [stopped] = [m for m in messages if m.get("event") == "stopped"]
     assert stopped["body"]["reason"] == "exception"
-    assert stopped["body"]["text"] == "ALARM 119: L0：重复次数必须在 1～9999 之间"
-    assert info["description"] == "ALARM 119: L0：重复次数必须在 1～9999 之间"
+    # the headline as `cncmacro run --locale zh-CN` prints it (one function for both)
+    assert stopped["body"]["text"] == "报警 119：L0：重复次数必须在 1～9999 之间"
+    assert info["description"] == "报警 119：L0：重复次数必须在 1～9999 之间"
     assert info["details"]["message"] == "L0：重复次数必须在 1～9999 之间"
     _, english = debug(f, "en")
     assert english["description"] == "ALARM 119: L0: the repeat count must be 1 to 9999"

@@ -32,6 +32,7 @@ from ..bilingual import in_language, is_chinese, pick
 from ..library.machine_file import parse_preset
 from ..library.persistence_lock import LOCK_WAIT
 from ..machine import Machine, RunResult
+from ..machine.alarms import budget_spent
 from ..machine.commanded_axes import CommandedAxes
 from ..machine.setup import prepare_run
 from ..machine.status import RunStatus
@@ -292,8 +293,7 @@ def write_text(
             print(f"提示（{where}）：{text}" if chinese else f"note at {where}: {text}", file=out)
     if result.alarm is not None:
         a = result.alarm
-        text = in_language(a.message, chinese)
-        print(f"{a.words(locale)}：{text}" if chinese else f"{a.words().upper()}: {text}", file=out)
+        print(a.headline(locale), file=out)
         print(f"  位置 {a.file}:{a.line + 1}" if chinese else f"  at {a.file}:{a.line + 1}", file=out)
         for site in reversed(a.chain[:-1]):
             at = f"{site.file}:{site.line + 1}"
@@ -301,8 +301,7 @@ def write_text(
             print(f"  调用自 {site.program}（{how}），位置 {at}" if chinese
                   else f"  called from {site.program} ({site.how}) at {at}", file=out)  # fmt: skip
     elif result.status == RunStatus.LIMIT:
-        print(pick(locale, f"stopped after {result.blocks} blocks: the block budget ran out (an endless loop?)",
-                   f"执行 {result.blocks} 个程序段后停止：已达到程序段数上限（是否有死循环？）"), file=out)  # fmt: skip
+        print(budget_spent(result.blocks, locale), file=out)
     for remark in remarks or ():
         print(remark, file=out)
     if chinese:

@@ -511,7 +511,7 @@ class Session:
         message = show.detail_text(a.message, self.locale)
         chain = "\n".join(f"{c.program} ({c.how}) at {Path(c.file).name}:{c.line + 1}" for c in reversed(a.chain))
         return {
-            "exceptionId": a.words(), "description": f"{a.words().upper()}: {message}", "breakMode": "always",
+            "exceptionId": a.words(), "description": a.headline(self.locale), "breakMode": "always",
             "details": {"message": message, "typeName": a.words(), "stackTrace": chain},
         }  # fmt: skip
 

@@ -25,6 +25,7 @@ from pathlib import Path
 
 from ..bilingual import in_language, is_chinese, pick
 from ..machine import Machine
+from ..machine.alarms import budget_spent
 from ..machine.block_roles import skipped
 from ..machine.commanded_axes import CommandedAxes
 from ..machine.status import FINISHED, RunStatus
@@ -191,13 +192,12 @@ class Stepper:
     def _ended(self) -> Stop:
         m = self.machine
         if m.status == RunStatus.ALARM and m.alarm is not None:
-            a = m.alarm
-            text = f"{a.words().upper()}: {in_language(a.message, is_chinese(self.locale))}"
+            text = m.alarm.headline(self.locale)
             if self.filters.alarms:
                 return Stop("exception", text, text)
             self.output(text + "\n", "stderr")
         elif m.status == RunStatus.LIMIT:
-            text = f"stopped after {m.blocks} blocks: the block budget ran out (an endless loop?)"
+            text = budget_spent(m.blocks, self.locale)
             if not self.never_stop:
                 return Stop("exception", text, text)
             self.output(text + "\n", "stderr")

@@ -12,7 +12,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from ..bilingual import detail
+from ..bilingual import detail, in_language, is_chinese, pick
 from ..dialects.alarms import ARGUMENT_RANGE, alarm_words
 from ..planner.alarms import MacroAlarm as MacroAlarm
 
@@ -81,3 +81,18 @@ class Alarm:
 
     def describe(self) -> str:
         return f"{self.words()}: {self.message}"
+
+    def headline(self, locale: str | None) -> str:
+        """The alarm as a person reads it where a run stopped, in the language of ``locale``:
+        ``ALARM 112: division by zero``, ``报警 112：除数为零`` (``cncmacro run``, the debugger)."""
+        text = in_language(self.message, is_chinese(locale))
+        return pick(locale, f"{self.words().upper()}: {text}", f"{self.words(locale)}：{text}")
+
+
+def budget_spent(blocks: int, locale: str | None) -> str:
+    """Why a run stopped when its block budget ran out, in the language of ``locale``."""
+    return pick(
+        locale,
+        f"stopped after {blocks} blocks: the block budget ran out (an endless loop?)",
+        f"执行 {blocks} 个程序段后停止：已达到程序段数上限（是否有死循环？）",
+    )
