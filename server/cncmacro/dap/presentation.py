@@ -22,7 +22,7 @@ from ..dialects import describe
 from ..dialects.tables import SystemVariable
 from ..machine import Machine, MacroAlarm
 from ..machine.frames import Frame
-from ..planner.numbers import format_plain
+from ..planner.numbers import shown_value
 
 LOCALS, COMMON, PERSISTENT, POSITION, MODAL, OFFSETS = range(6)
 SCOPES_PER_FRAME = 8
@@ -33,7 +33,7 @@ WORK_OFFSETS = (2500, 5340)
 
 
 def vacant_text(locale: str | None) -> str:
-    return pick(locale, "<vacant>", "<空>")
+    return shown_value(None, locale)
 
 
 def detail_text(text: str, locale: str | None) -> str:
@@ -43,7 +43,7 @@ def detail_text(text: str, locale: str | None) -> str:
 
 def show(value: float | None, locale: str | None) -> str:
     """A value for the variables pane, the hover and the console."""
-    return vacant_text(locale) if value is None else format_plain(value)
+    return shown_value(value, locale)
 
 
 def is_vacant_text(text: str) -> bool:

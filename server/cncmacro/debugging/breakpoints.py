@@ -41,6 +41,7 @@ from ..library.programs import load_text
 from ..machine import Machine, MacroAlarm
 from ..machine.block_roles import stop_line
 from ..machine.evaluate import CompiledText, EvaluationError, compile_condition, compile_expression, holds, value_of
+from ..planner.numbers import format_plain, shown_value
 from ..syntax.program import Program
 from .code_breakpoints import CodeName, codes_of, looks_like_code, matches, read_code_name
 
@@ -445,7 +446,7 @@ class Breakpoints:
             if not ok:
                 continue
             if bp.log_message is not None and problem is None:
-                self.log(interpolate(m, bp.log_message))
+                self.log(interpolate(m, bp.log_message, self.locale))
                 continue
             stop = stop or Hit("breakpoint", [bp.id], problem)
         if self.functions:
@@ -544,8 +545,8 @@ class Breakpoints:
 
 
 def _change(number: int, before: float | None, now: float | None) -> str:
-    shown = "vacant" if before is None else f"{before:g}"
-    after = "vacant" if now is None else f"{now:g}"
+    shown = "vacant" if before is None else format_plain(before)
+    after = "vacant" if now is None else format_plain(now)
     return f"#{number} changed: {shown} -> {after}"
 
 
@@ -605,14 +606,15 @@ def _read(m: Machine, n: int) -> tuple[float | None, bool]:
         return None, False
 
 
-def interpolate(m: Machine, message: str) -> str:
-    """A log message with each ``{expression}`` replaced by its value."""
+def interpolate(m: Machine, message: str, locale: str | None = None) -> str:
+    """A log message with each ``{expression}`` replaced by its value, shown as the Variables
+    view shows it (``shown_value``: ``21.650635``, not ``21.6506``; ``0`` for 3.06e-15)."""
 
     def one(match: re.Match[str]) -> str:
         try:
             v = value_of(m, compile_expression(m, match.group(1)))
         except EvaluationError as e:
             return f"<{e}>"
-        return "<vacant>" if v is None else f"{v:g}"
+        return shown_value(v, locale)
 
     return _LOG_PART.sub(one, message)

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from decimal import ROUND_HALF_UP, Decimal, InvalidOperation
 
-from ..bilingual import detail
+from ..bilingual import detail, pick
 from ..dialects.alarms import ARGUMENT_RANGE, MAX_VALUE, OVERFLOW
 from ..dialects.describe import ROTARY_AXES
 from .alarms import MacroAlarm, UnknownValue
@@ -148,3 +148,9 @@ def format_plain(v: float | None) -> str:
         return str(int(v))
     text = f"{v:.6f}".rstrip("0").rstrip(".")
     return text if text not in ("-0", "") else "0"
+
+
+def shown_value(v: float | None, locale: str | None) -> str:
+    """A value as the debugger shows it (the Variables view, watch, hover, console and log
+    points): ``format_plain``, vacant as ``<vacant>`` (``<空>`` in a Chinese locale)."""
+    return pick(locale, "<vacant>", "<空>") if v is None else format_plain(v)
