@@ -492,3 +492,33 @@ def test_4_control_flow_generated_programs_after_edits_equal_runs_from_scratch(t
         for file in texts:
             scratch.open(str(tmp_path / file), ws.document(str(tmp_path / file)).text, 0)  # type: ignore[union-attr]
         assert got == snapshot(scratch, main)
+
+
+def _grooving_parts(parts: int) -> list[str]:
+    """A lathe program of ``parts`` grooving cycles: each G75 block makes about 220 passes (from
+    X40+k to X20 in pecks of 1.5 mm of radius: 7 pecks, 13 columns 2.5 mm apart from Z2 to Z-28)."""
+    lines = ["O0001 (cncmacro: dialect=fanuc-0i-lathe)", "G50 S2500", "G99 G18"]
+    for k in range(parts):
+        lines += ["T0101", "G97 S800 M03", f"G00 X{40 + k}. Z2.", "G75 R0.5", "G75 X20. Z-28. P1500 Q2500 F0.08",
+                  "G00 X100. Z100."]  # fmt: skip
+    return [*lines, "M30"]
+
+
+def test_4_control_flow_an_edit_in_a_program_of_lathe_cycles_runs_little_again(tmp_path, monkeypatch):
+    """A chunk of 64 blocks of grooving cycles is about 2,200 passes of work: the checkpoints
+    come every 4 blocks instead (64 / 16, the least interval), so a diameter typed in the 20th
+    part runs a few blocks again, not the 64 to 128 of two chunks, and the result is the same
+    as an analysis from scratch."""
+    monkeypatch.setattr(run_checks, "CHUNK", 64)
+    lines = _grooving_parts(40)
+    ws, main = _open_program(tmp_path, "GROOVING", lines)
+    snapshot(ws, main)
+    run = _run_of(ws)
+    total = run.machine.blocks
+    assert run.interval == 4 and total == 2 + 6 * 40 + 1  # the O line is not a block
+    edited = 3 + 6 * 20 + 2  # the G00 of the 21st part
+    assert lines[edited] == "G00 X60. Z2."
+    _edit(ws, main, edited, "G00 X61.5 Z2.", 1)
+    _same_as_from_scratch(tmp_path, ws, main)
+    run = _run_of(ws)
+    assert run.machine.blocks == total and run.rerun_blocks <= 12

@@ -13,7 +13,7 @@ The two ways give the same clock and lengths (tests/test_lathe_cycle_passes.py).
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Sequence
 from math import sqrt
 from typing import TYPE_CHECKING
 
@@ -28,8 +28,10 @@ if TYPE_CHECKING:
 Pass = tuple[float, tuple[float, ...], tuple[float, ...], "tuple[float, ...] | None"]
 
 
-def record_passes(p: Planner, file: str, line: int, passes: Iterable[Pass], pass_of: str) -> None:
-    """Record the passes of lathe cycle ``pass_of`` (e.g. "G75") of block ``line`` of ``file``."""
+def record_passes(p: Planner, file: str, line: int, passes: Sequence[Pass], pass_of: str) -> None:
+    """Record the passes of lathe cycle ``pass_of`` (e.g. "G75") of block ``line`` of ``file``,
+    and count them (``Planner.cycle_passes``: the analysis runs checkpoint by the work done)."""
+    p.cycle_passes += len(passes)
     shape = p.shape
     if p.record_moves or (shape is not None and shape.reading) or p.travel is not None:  # record checks the travel
         record = p.record

@@ -81,6 +81,7 @@ class Planner:
     """The NC side of one simulated control (module docstring)."""
 
     at_line: int = 0  # the line of the block being carried out (a cut with no feed is said there)
+    cycle_passes: int = 0  # passes the lathe cycles made (``cycle_passes.record_passes``): the work they cost
     # the tool vector before a change the machine has not travelled yet (offset_travel.py), else None
     vector_before: list[float] | None = None
     block_feed: bool = False  # whether that block writes F (G93 takes one in every cut: missing_feed.py)

@@ -3,7 +3,8 @@
 An ``EntryRun`` runs one program on a ``Machine`` whose observer it is (``RunObserver``: it
 hears of lines run, vacant argument reads, values written and loop passes; never loading
 or saving ``#500–#999``, never recording moves, ``M99`` at level 0 ending the run). It runs in
-chunks of ``CHUNK`` blocks and keeps a ``Snapshot`` at every chunk boundary, the step at which
+chunks of ``CHUNK`` blocks (fewer where lathe cycles make each block hundreds of passes:
+``EntryRun.checkpoint``) and keeps a ``Snapshot`` at every chunk boundary, the step at which
 each line first ran, and what the watched blocks reported (vacant argument reads, values
 written), each stamped with the chunk it came from. ``rewind(step)`` restores the last
 checkpoint at or before a step and forgets everything found after it, so that after an edit
@@ -71,6 +72,9 @@ from .sure_alarms import surely_reached
 from .unknown_stops import GUARD_OPENING, is_guard_note, named_persistent_values, runs_as_macro, unknown_value_text
 
 CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again before converging
+# the least interval, a share of CHUNK: a program of lathe cycles, each block hundreds of
+# passes, checkpoints at about CHUNK blocks' worth of work (``EntryRun.checkpoint``)
+LEAST_SHARE = 16
 MAX_SECONDS = 30.0  # wall-clock limit of one run
 MAX_RECORDS = 100_000  # notes (messages, DPRNT output, remarks) one run may record
 MAX_CHECKPOINTS = 400  # beyond this, every other checkpoint is dropped
@@ -151,6 +155,8 @@ class EntryRun(RunObserver):
         self.own_seconds = max_seconds
         self.max_records = max_records
         self.interval = CHUNK  # blocks between checkpoints
+        self.work = 0  # the lathe cycles' passes since the last checkpoint (``Planner.cycle_passes``)
+        self.thinned = False  # the checkpoints were thinned out: the interval no longer shrinks
         self.elapsed = 0.0  # seconds spent running since the start or the last rewind
         self.stopped_by: str | None = None  # "time" or "records" when a limit other than the budget ended it
         self.machine: Machine
@@ -194,6 +200,8 @@ class EntryRun(RunObserver):
         self.pass_marks = [{}]
         self.stamp = 0
         self.interval = CHUNK
+        self.work = 0
+        self.thinned = False
         self.elapsed = 0.0
         self.stopped_by = None
         self.serials = {}
@@ -227,8 +235,10 @@ class EntryRun(RunObserver):
             self.stamp = before = m.blocks
             self.track_serial = self.new_serial(m.blocks)
             began = time.perf_counter()
+            passes = m.planner.cycle_passes
             status = m.run(chunk, is_limit=chunk >= left)
             self.elapsed += time.perf_counter() - began
+            self.work += m.planner.cycle_passes - passes
             self.rerun_blocks += m.blocks - before
             if self.looking is not None:
                 status = self.look()
@@ -282,13 +292,31 @@ class EntryRun(RunObserver):
         return self.serial
 
     def checkpoint(self) -> None:
-        """Keep the machine's state here; thin the checkpoints out when there are too many."""
+        """Keep the machine's state here; thin the checkpoints out when there are too many.
+
+        A chunk whose blocks made more lathe cycle passes than blocks, and more work than
+        ``CHUNK`` blocks (a program of G71, G75 and G76 cycles: hundreds of passes a block),
+        halves the interval until its work would not, down to
+        ``CHUNK // LEAST_SHARE``, so that an edit runs about as much work again as in a program of
+        plain moves. The interval only shrinks by halves, and no more once the checkpoints were
+        thinned (which doubles it), so the
+        checkpoints stay at multiples of it: a run resumed after an edit makes the same
+        decisions on the same blocks and meets the earlier run's checkpoints to converge."""
+        blocks = self.machine.blocks - self.checkpoints[-1].blocks
         self.checkpoints.append(self.machine.snapshot())
         self.pass_marks.append(dict(self.passes))
+        passes, self.work = self.work, 0
+        least = max(1, CHUNK // LEAST_SHARE)
+        while (passes > blocks and blocks + passes > CHUNK and not self.thinned and self.interval >= 2 * least
+               and not self.machine.blocks % (self.interval // 2)):  # fmt: skip
+            self.interval //= 2
+            blocks //= 2
+            passes //= 2
         if len(self.checkpoints) > MAX_CHECKPOINTS:
             self.checkpoints[:] = self.checkpoints[::2]
             self.pass_marks[:] = self.pass_marks[::2]
             self.interval *= 2
+            self.thinned = True
 
     def edited(self, path: str, lines: list[int] | None) -> None:
         """An edit changed ``lines`` of ``path`` (None: its structure or line count) and the
@@ -328,6 +356,7 @@ class EntryRun(RunObserver):
         del self.checkpoints[keep + 1 :]
         del self.pass_marks[keep + 1 :]
         self.passes = dict(self.pass_marks[keep])
+        self.work = 0
         self.elapsed = 0.0
         self.stopped_by = None
         self.endless_at = None
