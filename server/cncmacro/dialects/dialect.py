@@ -378,6 +378,10 @@ class Dialect:
     # mode (G80 and G00-G03 clear the hole data); without this switch such a hole is drilled in one
     # feed, as G81
     peck_q_alarm: bool = False
+    # §9 a drilling cycle's dwell P is hole data that G80 and a G00-G03 clear (FANUC's "canned cycle
+    # for drilling"; Haas 96-8000, G73: "the dwell time will be reset to zero"): a cycle named after
+    # them without P dwells nothing; without this switch the last P stays until another is given
+    cycle_cancel_clears_dwell: bool = False
     # §9 a lathe's single fixed cycles (G90, G92, G94): which axis each goes in along first and
     # whether it comes out at rapid (turning_cycles.py); a turning cycle not listed is drawn as
     # one cut from where it starts to its end point

@@ -15,7 +15,7 @@ from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
 from .cutter_stage import cutter_code, frame_moved
-from .drill_cycles import CYCLE_Q
+from .drill_cycles import CYCLE_P, CYCLE_Q
 from .machine_limits import lathe_offset, offset_number, spindle_speed, tool_number
 from .moves import ToolChange
 from .offset_travel import keep_machine_position, vector_changing, work_offsets
@@ -75,11 +75,14 @@ def cycle_named(p: Planner, before: float, g: float) -> None:
     begins, after G80 or a G00-G03 (FANUC 0i-MF: "the absolute Z position when the canned cycle
     mode is entered"), or where a lathe's cycle drills along another axis (G83 on the face, G87
     on the side); and there, where FANUC clears the hole data (``Dialect.peck_q_alarm``), a peck's
-    Q from the cycle mode before is no longer in force."""
+    Q from the cycle mode before is no longer in force, nor, where the control resets it
+    (``Dialect.cycle_cancel_clears_dwell``), its dwell P."""
     if before == 80.0:
         p.cycle_start_z = None
         if p.dialect.peck_q_alarm:
             p.codes.pop(CYCLE_Q, None)
+        if p.dialect.cycle_cancel_clears_dwell:
+            p.codes.pop(CYCLE_P, None)
         return
     drilling = p.dialect.lathe_drilling
     if drilling is not None:

@@ -15,7 +15,8 @@ them:
    bottom before it rapids out and back after; back boring (G87) has its own order.
 
 The hole data Z, R, Q and P stay in force from the cycle block that last gave them (the
-control keeps them while the cycle is in force; a program names them again after G80). Under
+control keeps them while the cycle is in force; a program names them again after G80, but for
+FANUC's Q and, where the control resets it, P: block_words.py ``cycle_named``). Under
 G90 R and Z are levels; under G91 R is the distance from the initial level to R and Z the
 distance from R to the bottom. The initial level is the Z where the tool was when the canned
 cycle mode began, after G80 or a G00-G03 (``Planner.cycle_start_z``; another cycle named with

@@ -47,6 +47,7 @@ PROFILE = Dialect(
     cycle_words=FANUC_DRILL_CYCLE_WORDS,
     reference_in_cycle_alarm=True,  # PS0044 (docs/semantics.md §9, "Drilling canned cycles")
     peck_q_alarm=True,  # PS0045 (the same)
+    cycle_cancel_clears_dwell=True,  # G80 and G00-G03 clear the hole data, P among them (the same)
     ijk_order_matters=True,
     word_format_alarms=True,
     arc_radius_alarm=True,

@@ -352,6 +352,7 @@ LATHE = _MILL.configured(
     lathe_cycles=FANUC_0I_LATHE.lathe_cycles,
     cycle_rules=FANUC_0I_LATHE.cycle_rules,
     cycle_words=FANUC_0I_LATHE.cycle_words,
+    cycle_cancel_clears_dwell=FANUC_0I_LATHE.cycle_cancel_clears_dwell,
     timing=FANUC_0I_LATHE.timing,
 )
 

@@ -988,6 +988,9 @@ PROFILE = FANUC_0I.configured(
     drill_cycles=HAAS_DRILL_CYCLES,  # its G77 back bore, G87 bore in and manual retract
     cycle_words={},  # Haas repeats with L and reads more letters in G73 and G83: not described yet
     cycle_repeat_letter="L",  # L repeats a canned cycle (K is a peck's minimum on G73/G83)
+    # 96-8000, G73: "When the canned cycle is cancelled (i.e. G00, G01, G80, RESET) the dwell time
+    # will be reset to zero"
+    cycle_cancel_clears_dwell=True,
     # rapids of 1,000 in/min on X, Y, Z (a VF-2's), a typical tool change; a dwell's P counts
     # seconds written with a decimal point and milliseconds without (as the G04 row says)
     timing=Timing(

@@ -16,6 +16,7 @@ from .fanuc_0i import PROFILE as FANUC_0I
 
 PROFILE = FANUC_0I.configured(
     **OTHER_MAKERS,  # the FANUC-only rules off (fanuc_0i.py)
+    cycle_cancel_clears_dwell=False,  # no source at hand says G80 resets a drilling cycle's P
     timing=OTHER_MAKERS_TIMING,
     name="mazak-eia",
     title="Mazak EIA/ISO (Matrix, Smooth)",

@@ -15,6 +15,7 @@ from .fanuc_0i import PROFILE as FANUC_0I
 
 PROFILE = FANUC_0I.configured(
     **OTHER_MAKERS,  # the FANUC-only rules off (fanuc_0i.py)
+    cycle_cancel_clears_dwell=False,  # no source at hand says G80 resets a drilling cycle's P
     timing=OTHER_MAKERS_TIMING,
     name="mitsubishi-m70",
     title="Mitsubishi M70/M80 user macro",
