@@ -75,9 +75,11 @@ def test_endless_loops_a_shop_writes_on_purpose_or_that_wait_for_the_machine_are
     assert code == 0, out + err
     assert "error" not in out and "warning" not in out and "[endless-loop]" not in out
     assert out.count("information: an endless loop") == 3  # O0001, O0002, O0004
-    # the wait on the input signal: #1004 is the machine's, so the run stops there with a hint
+    # the wait on the input signal: #1004 is the machine's, so the run goes through the loop once
+    # and leaves it, with a hint (docs/semantics.md §2, a loop on a value only the machine has)
     code, out, _ = cli("check", "--hints", str(tmp_path / "O0003.nc"))
-    assert code == 0 and ":2:1: hint: the analysis run stops here: this block depends on #1004" in out
+    assert code == 0 and ":2:1: hint: the analysis run goes through this WHILE loop once" in out
+    assert "depends on #1004, an input signal the machine sends" in out
 
 
 # ---------------------------------------------------------------- macro alarms

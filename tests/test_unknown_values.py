@@ -302,15 +302,22 @@ SUBPROGRAM = "O1007\n#3=#101/#102\n#4=1\nWHILE [#4 LE #102] DO 1\nG01 Z[-#4*#3] 
 
 def test_a_subprogram_checked_without_its_caller_reads_the_commons_its_caller_sets_as_unknown(tmp_path: Path) -> None:
     # its caller sets #101 and #102 before M98 P1007 and is not in the folder: #101/#102 is
-    # unknown (no alarm 112, which the control never raises), and WHILE [1 LE #102] stops the run
-    # with a note naming #102 (it was "division by zero (alarm 112)", an error, on line 2)
+    # unknown (no alarm 112, which the control never raises); WHILE [1 LE #102] is gone through once
+    # with a note naming #102 (tests/test_unknown_loops.py), and the move by #3 in it stops the run
+    # with a note naming #101 and #102 (it was "division by zero (alarm 112)", an error, on line 2)
+    tail = (
+        "which a caller sets before the call; checked without its caller, this subprogram does not have what its "
+        "caller sets; a program in the folder that calls it has it checked with the caller's values"
+    )
     code, found = check(tmp_path, SUBPROGRAM)
     assert code == 0
     assert found == [
-        "4:1: hint: the analysis run stops here: this block depends on #102, which a caller sets before the call; "
-        "checked without its caller, this subprogram does not have what its caller sets; a program in the folder "
-        "that calls it has it checked with the caller's values, in iteration 1 of the WHILE loop at line 4, at "
-        "block 3 of the run (inside a loop) [unknown-value]"
+        "4:1: hint: the analysis run goes through this WHILE loop once and then leaves it, so that its body and what "
+        f"follows are checked; the machine repeats it as its condition says, which depends on #102, {tail} "
+        "[unknown-value]",
+        "5:1: hint: the analysis run stops here: this block depends on a value computed from #101 (line 2), #102 "
+        f"(line 2), {tail}, in iteration 1 of the WHILE loop at line 4, at block 4 of the run (inside a loop) "
+        "[unknown-value]",
     ]
     # a main program (M30) starts with #100-#199 vacant after power-on, as before: alarm 112
     code, found = check(tmp_path, SUBPROGRAM.replace("M99", "M30"))

@@ -52,7 +52,7 @@ from .block_rules import DIALECT_FORMS, first_alarm, validate_block
 from .calls import h_code_form
 from .corners import with_corners
 from .expressions import ExpressionCompiler, Getter
-from .guards import Passed, alarm_only, alarm_then
+from .guards import LOOP, Passed, alarm_only, alarm_then, unknown_loop_pass
 from .variables import out_of_range
 
 if TYPE_CHECKING:
@@ -635,7 +635,23 @@ class CompiledFile:
             loops.pop()
             return after
 
-        return head
+        if test is None or not self.machine.kept_unknown:
+            return head
+        passed = Passed(LOOP)
+
+        def guarded_head(m: Machine, pc: int) -> int:  # an analysis run: a count the machine has (guards.py)
+            loops = m.frames[-1].loops
+            entering = not loops or loops[-1] != pc
+            try:
+                return head(m, pc)
+            except UnknownValue:
+                passed.record(m, pc, None)
+                if unknown_loop_pass(entering):
+                    return nxt
+                loops.pop()
+                return after
+
+        return guarded_head
 
     def loop_end(self, s: End, pc: int) -> Runner:
         number = self.loop_number(s.loop)

@@ -9,7 +9,9 @@ unchecked. The control passes its own guard on every production cycle (the progr
 day), so where one side of a branch on an unknown is nothing but the program's own alarm, the
 analysis run follows the other side and says so with a note (kind ``"unknown"``, subject
 ``"guard"``, ``skipped`` the line of the alarm block it did not run). A branch whose sides are
-anything else still stops the path, as before. Only an analysis run meets an unknown:
+anything else still stops the path, as before. A ``WHILE`` whose condition is unknown is gone
+through once and then left (``unknown_loop_pass``, a note of subject ``"loop"``), so that its
+body and what follows are checked. Only an analysis run meets an unknown:
 ``cncmacro run`` and the debugger read these values as vacant and decide as the control with
 those values would.
 
@@ -31,7 +33,8 @@ if TYPE_CHECKING:
     from .machine import Machine
 
 GUARD = "guard"  # the subject of the note a guard passed leaves
-UNKNOWN_NOTE = "unknown"  # the kind of that note
+LOOP = "loop"  # the subject of the note a WHILE on an unknown leaves (one pass, then out)
+UNKNOWN_NOTE = "unknown"  # the kind of those notes
 
 
 def alarm_only(block: Block, dialect: Dialect) -> bool:
@@ -70,15 +73,26 @@ def alarm_then(s: If, dialect: Dialect) -> bool:
     return s.goto is None and s.then is not None and alarm_statement(s.then, dialect)
 
 
+def unknown_loop_pass(entering: bool) -> bool:
+    """Whether an analysis run goes (again) through a ``WHILE`` loop whose condition is unknown
+    (docs/semantics.md §2, a loop on a value only the machine has): once, on entering it, so that
+    its body is checked; coming back from its ``END``, it leaves the loop, so that what follows
+    is checked too. The machine runs it as many times as its value says, which the folder lacks;
+    one pass is the fewest that checks every block of it."""
+    return entering
+
+
 class Passed:
-    """The note a guard leaves, once for each time a run goes past it: a closure keeps one
-    and adds it again only when the run no longer holds it (a restore to a snapshot before it)."""
+    """The note a guard (or a loop on an unknown, ``subject`` LOOP) leaves, once for each time a
+    run goes past it: a closure keeps one and adds it again only when the run no longer holds it
+    (a restore to a snapshot before it)."""
 
-    __slots__ = ("at", "note")
+    __slots__ = ("at", "note", "subject")
 
-    def __init__(self) -> None:
+    def __init__(self, subject: str = GUARD) -> None:
         self.note: Note | None = None
         self.at = -1
+        self.subject = subject
 
     def record(self, m: Machine, pc: int, skipped: int | None) -> None:
         """Say that the run went past the guard on line ``pc`` (``skipped``: the alarm block's
@@ -87,15 +101,23 @@ class Passed:
         if held is not None and self.at < len(m.notes) and m.notes[self.at] is held:
             return
         f = m.frames[-1]
-        note = Note(
-            UNKNOWN_NOTE,
+        message = (
             detail(
                 "the analysis run goes on past this guard, as the machine passes it in production",
                 "分析运行越过此保护判断继续，机床在生产中通过该判断",
-            ),
+            )
+            if self.subject == GUARD
+            else detail(
+                "the analysis run goes through this loop once and leaves it: its condition is unknown",
+                "分析运行执行此循环一次后离开：其条件未知",
+            )
+        )
+        note = Note(
+            UNKNOWN_NOTE,
+            message,
             f.file,
             pc,
-            GUARD,
+            self.subject,
             m.chain(pc),
             skipped,
         )

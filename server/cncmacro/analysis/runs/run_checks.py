@@ -69,7 +69,7 @@ from ..diagnostics import Diagnostic, Related, diagnostic
 from .endless_loops import SHARED, loop_certainty, waits_for_the_machine
 from .run_convergence import Earlier, keep_earlier, try_converge
 from .sure_alarms import surely_reached
-from .unknown_stops import GUARD_OPENING, is_guard_note, named_persistent_values, runs_as_macro, unknown_value_text
+from .unknown_stops import guard_opening, is_guard_note, named_persistent_values, runs_as_macro, unknown_value_text
 
 CHUNK = 1000  # blocks between checkpoints: an edit runs about twice this again before converging
 # the least interval, a share of CHUNK: a program of lathe cycles, each block hundreds of
@@ -601,7 +601,7 @@ def _guard_diagnostic(run: EntryRun, note: Note, line_text: Callable[[str, int],
     ran = sorted((line for line in run.state.first.get(note.file, {}) if line < note.line), reverse=True)
     en, zh = unknown_value_text(line_text(note.file, note.line), ((n, line_text(note.file, n)) for n in ran),
                                 m.kinds, m.dialect, run.as_macro, lambda n: _still_unknown(m, n),
-                                GUARD_OPENING)  # fmt: skip
+                                guard_opening(note.subject))  # fmt: skip
     return _diagnostic(note.file, note.line, "unknown-value", en, zh, note.chain, None, False, line_text, locale)
 
 

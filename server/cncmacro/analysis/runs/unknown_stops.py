@@ -25,7 +25,7 @@ from ...library.programs import FoundProgram
 from ...machine import Machine
 from ...machine.calls import letters_for_local
 from ...machine.expressions import VariableKinds
-from ...machine.guards import GUARD, UNKNOWN_NOTE
+from ...machine.guards import GUARD, LOOP, UNKNOWN_NOTE
 from ...machine.status import RunStatus
 from ...machine.unknown_values import assigned, is_input, is_kept, is_skip_position, is_tool, variables_in
 from ...planner.alarms import UNKNOWN_VALUE
@@ -42,6 +42,12 @@ GUARD_OPENING = (
     "the analysis run goes on past this guard, on the side that does not raise the program's own alarm, as the "
     "machine passes it in production: the condition depends",
     "分析运行沿不触发程序自身报警的一侧越过此保护判断继续（机床在生产中通过该判断）：条件取决于",
+)
+# how the note of a WHILE loop whose condition is unknown opens (machine/guards.py, unknown_loop_pass)
+LOOP_OPENING = (
+    "the analysis run goes through this WHILE loop once and then leaves it, so that its body and what follows "
+    "are checked; the machine repeats it as its condition says, which depends",
+    "分析运行执行此 WHILE 循环一次后离开，以便检查循环体及其后的程序段；机床按条件重复执行，该条件取决于",
 )
 
 
@@ -293,8 +299,13 @@ def after_a_stop(stops: list[tuple[str, int]], file: str, first: int) -> bool:
 
 def is_guard_note(kind: str, subject: str | None) -> bool:
     """Whether a run's note of ``kind`` and ``subject`` says it went past the program's own guard
-    on an unknown value (machine/guards.py)."""
-    return kind == UNKNOWN_NOTE and subject == GUARD
+    on an unknown value, or through a WHILE loop on one once (machine/guards.py)."""
+    return kind == UNKNOWN_NOTE and subject in (GUARD, LOOP)
+
+
+def guard_opening(subject: str | None) -> tuple[str, str]:
+    """How the note of a guard (``GUARD_OPENING``) or of a loop (``LOOP_OPENING``) the run went past opens."""
+    return LOOP_OPENING if subject == LOOP else GUARD_OPENING
 
 
 def passed_guards(m: Machine) -> list[tuple[str, int]]:
