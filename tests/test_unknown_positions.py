@@ -137,3 +137,62 @@ def test_an_absolute_move_after_g30_is_travel_checked_again(tmp_path: Path) -> N
         "5:1: error: Y- over travel: the move goes to machine Y-460.000, 50.000 mm past the - limit Y-410.000 "
         "([limits] travel); the axis stops at the limit (alarm 501) [over-travel]"
     )
+
+
+# after G30 on every axis, a drilling cycle under G90 (docs/semantics.md §8, after G30): the holes'
+# X, Y are absolute, and under G99 the tool stops at the absolute R level
+AFTER_G30_CYCLE = "O0100\nG21 G90 G54 G00 X0. Y0.\nG91 G30 X0. Y0. Z0.\nG90 G99 G81 X-10. Y-10. Z-5. R2. F100.\nG80\n"
+
+
+def test_a_drilling_cycle_with_absolute_holes_after_g30_is_travel_checked_again(tmp_path: Path) -> None:
+    # the hole at X-10.: machine -420 - 10 = -430; G91 X-100. then goes to -530, 20 past -510: alarm 501
+    text = AFTER_G30_CYCLE + "G91 G00 X-100.\nM30\n"
+    code, found = check(tmp_path, text, MILL_LIMITS)
+    assert code == 1
+    assert found[0] == (
+        "6:1: error: X- over travel: the move goes to machine X-530.000, 20.000 mm past the - limit X-510.000 "
+        "([limits] travel); the axis stops at the limit (alarm 501) [over-travel]"
+    )
+
+
+def test_a_drilling_cycle_under_g99_leaves_z_at_the_r_level_known(tmp_path: Path) -> None:
+    # G99: Z stops at R2., machine -380 + 2 = -378, so 1 / [#5023 + 378.] = 1 / 0: alarm 112
+    text = AFTER_G30_CYCLE + "#3=1/[#5023+378.]\nM30\n"
+    code, found = check(tmp_path, text, MILL_LIMITS)
+    assert code == 1
+    assert found[0] == "6:1: error: division by zero (alarm 112) [division-by-zero]"
+    # G98: Z goes back to the initial level, the 2nd reference position: unknown, no alarm
+    assert check(tmp_path, text.replace("G99", "G98")) == (0, [])
+
+
+def test_a_lathe_drilling_cycle_after_g30_places_the_hole_on_x(tmp_path: Path) -> None:
+    # G83 X0. C0.: the hole at program X0, machine X = 0 (G54 X 0, no tool offset), so 1 / #5021
+    # = 1 / 0: alarm 112; Z goes back to where the drilling started, the 2nd reference position
+    text = "O0100\nG21 G98\nG30 U0 W0\nG83 X0. C0. Z-10. R-1. Q2000 F100.\nG80\n#3=1/#5021\nM30\n"
+    code, found = check(tmp_path, text, LATHE_LIMITS)
+    assert code == 1
+    assert found[0] == "6:1: error: division by zero (alarm 112) [division-by-zero]"
+
+
+# after G28 Z the tool is at machine Z0; its program position (#5003, #5043) is machine Z less the
+# G54 Z (and the tool offset, none here), so it is known only where G54 Z is (planner/whereabouts.py)
+AFTER_G28 = "O0100\nG21 G90 G54 G00 X10. Y0. Z50.\nG91 G28 Z0.\nG90\n"
+
+
+def test_the_program_position_after_g28_with_an_unknown_work_offset_is_unknown(tmp_path: Path) -> None:
+    # it read 0 - 0 = 0 (G54 Z taken as 0), so 1 / #5003 was "division by zero (alarm 112)"
+    assert check(tmp_path, AFTER_G28 + "#3=1/#5003\n#4=1/#5043\nM30\n") == (0, [])
+
+
+def test_the_program_position_after_g28_with_the_work_offset_given_is_known(tmp_path: Path) -> None:
+    # G54 Z -380: #5003 = 0 - (-380) = 380, so 1 / [#5003 - 380.] = 1 / 0: alarm 112
+    code, found = check(tmp_path, AFTER_G28 + "#3=1/[#5003-380.]\nM30\n", MILL_LIMITS)
+    assert code == 1
+    assert found[0] == "5:1: error: division by zero (alarm 112) [division-by-zero]"
+
+
+def test_an_absolute_move_after_g28_makes_the_program_position_known_again(tmp_path: Path) -> None:
+    # G00 Z20. under G90: #5003 = 20, so 1 / [#5003 - 20.] = 1 / 0: alarm 112 (no G54 given)
+    code, found = check(tmp_path, AFTER_G28 + "G00 X0. Y0.\nG91 G00 Z-5.\nG90 G00 Z20.\n#3=1/[#5003-20.]\nM30\n")
+    assert code == 1
+    assert found[0] == "8:1: error: division by zero (alarm 112) [division-by-zero]"

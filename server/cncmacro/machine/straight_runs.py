@@ -75,6 +75,9 @@ def run_straight(
         return 0, pc  # (planner/offset_travel.py)
     if p.whereabouts.lost:  # a G30 left an axis unknown: the general path finds its next absolute move
         return 0, pc  # (planner/whereabouts.py)
+    # the axes whose program position a G28/G53 gave: a line that names one absolutely is the
+    # general path's, which says the axis is where the program says (planner/whereabouts.py)
+    homed = p.whereabouts.homed
     if p.modal.get("feed") == INVERSE_TIME:  # G93: each cut's time is its block's F (missing_feed.py)
         return 0, pc
     g_words = p.plain.g_words()
@@ -158,6 +161,8 @@ def run_straight(
             if kind < PLAIN_INCREMENTAL:  # an axis
                 moved = True
                 if absolute:
+                    if homed and kind in homed:
+                        break
                     target[kind] = float(word[1:])
                 else:
                     target[kind] += float(word[1:])

@@ -43,6 +43,7 @@ from .alarms import MacroAlarm
 from .cycle_time import FEED_STEP, INCH, RAPID_STEP, SHIFT_STEP
 from .machine_limits import leaves_travel, program_bounds
 from .moves import DRILLING, Leg, Move
+from .whereabouts import placed
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -70,21 +71,24 @@ def drill_block(
     if z is not None and z in axes:
         codes[CYCLE_Z] = axes[z]
     repeats = repeat_count(other.get(m.dialect.cycle_repeat_letter), m.dialect.cycle_repeat_letter)
+    absolute = m.modal.get("distance", 90.0) == 90.0
     if z is None:  # no drilling axis: the holes are only positioned
         for _ in range(repeats):
             m.move(file, line, 0.0, m.target(plane, incremental))
+        if repeats and absolute:
+            placed(m, plane)  # whereabouts.py
         return
     if m.cycle_start_z is None:
         m.cycle_start_z = m.pos[z]
     initial = m.cycle_start_z
-    absolute = m.modal.get("distance", 90.0) == 90.0
     r_word, z_word = codes.get("R"), codes.get(CYCLE_Z)
     r_level = initial if r_word is None else r_word if absolute else initial + r_word
     bottom = r_level if z_word is None else z_word if absolute else r_level + z_word
     spec = m.dialect.drill_cycles.get(cycle, PLAIN_DRILLING)
     if spec.cut in (PECK, SHORT_PECK) and m.dialect.peck_q_alarm and not codes.get(CYCLE_Q):
         raise _no_peck(cycle, codes.get(CYCLE_Q))
-    back_to = initial if spec.back or m.modal.get("return") == 98.0 else r_level
+    to_initial = spec.back or m.modal.get("return") == 98.0
+    back_to = initial if to_initial else r_level
     times = m.times
     unit = INCH if m.modal.get("units") == 20.0 else 1.0
     q = abs(codes.get(CYCLE_Q) or 0.0)
@@ -110,6 +114,8 @@ def drill_block(
         record_hole(m, file, line, cycle, start, (hole_at, tuple(at_r), tuple(at_bottom), tuple(hole)),
                     spec.feed_out, feed, seconds, m.modal.get("plane", 17.0))  # fmt: skip
         m.pos = hole
+    if repeats and absolute:  # the holes' absolute X, Y, and the R level it stops at (whereabouts.py)
+        placed(m, [*plane, z] if r_word is not None and not to_initial else plane)
 
 
 def _no_peck(cycle: float, q: float | None) -> MacroAlarm:

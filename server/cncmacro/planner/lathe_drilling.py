@@ -33,6 +33,7 @@ from ..dialects.drill_cycles import PECK, SHORT_PECK, DrillCycle, LatheDrill
 from .cycle_time import INCH, RAPID_STEP
 from .drill_cycles import CYCLE_P, CYCLE_Q, hole_steps, record_hole, repeat_count
 from .turning_cycles import THREAD_MODE, in_increments
+from .whereabouts import placed
 
 if TYPE_CHECKING:
     from ..dialects.drill_cycles import LatheDrilling
@@ -67,10 +68,14 @@ def lathe_drill_block(
     if axis is None:  # no drilling axis on this machine: the holes are only positioned
         for _ in range(repeats):
             p.move(file, line, 0.0, p.target(place, place_inc))
+        if repeats:
+            placed(p, place)  # whereabouts.py
         return
     scale = 2.0 if axis == p.times.diameter else 1.0  # X levels are diameters, R a radius value
     for _ in range(repeats):
         _hole(p, data, spec, axis, scale, p.target(place, place_inc), file, line, code)
+    if repeats:
+        placed(p, place)  # the holes' X, C are where the program says (whereabouts.py)
 
 
 def _hole(

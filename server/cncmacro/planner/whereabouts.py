@@ -17,7 +17,10 @@ shift and the tool offset (positions.py). The run knows it on an axis when it kn
 - **the tool offset**: none in force, or its geometry given (a lathe's T offset, a mill's G43/G44 H).
 - **the program position**: after a ``G30`` the axis is at the 2nd reference position (FANUC
   parameter 1241, set by the machine builder), which the machine file does not give; the axis's
-  position is unknown until an absolute move of it, a ``G28`` or a ``G53``.
+  position is unknown until an absolute move of it, a ``G28`` or a ``G53``. After a ``G28`` or a
+  ``G53`` the machine position is known and the program position (#5001…, #5041…) follows from
+  it: machine position less the frame and the tool offset, so it is known only where those are,
+  until an absolute move of the axis or a coordinate setting names it.
 
 ``Whereabouts`` is immutable: a snapshot (state.py) keeps it as it is.
 """
@@ -41,12 +44,14 @@ class Whereabouts:
     since the made-up start point (``placed``), the axes a G30 left at an unknown position (``lost``), the axes at
     a reference point or a G53 position with the program position they have there
     (``at_reference``), and the frames a coordinate setting made: (axis, known, the work offset
-    variable in force then)."""
+    variable in force then); the axes whose program position a G28 or G53 gave, from their machine
+    position, and no absolute move has named since (``homed``)."""
 
     placed: frozenset[int] = frozenset()
     lost: frozenset[int] = frozenset()
     at_reference: tuple[tuple[int, float], ...] = ()
     frames: tuple[tuple[int, bool, int], ...] = ()
+    homed: frozenset[int] = frozenset()
 
     def leave_reference(self) -> Whereabouts:
         """The same with no axis at a reference point (a run of plain lines may move any)."""
@@ -104,10 +109,13 @@ def position_known(p: Planner, which: str, axis: int) -> bool:
         return machine_known(p, axis)
     if which == "tool":
         return tool_known(p, axis)
-    if which == "current":
-        return tool_known(p, axis) and axis not in p.whereabouts.lost
-    if which == "end":
-        return axis not in p.whereabouts.lost
+    w = p.whereabouts
+    if which in ("current", "end"):
+        if axis in w.lost:
+            return False
+        if axis in w.homed:  # from the machine position: less the frame and the tool offset
+            return frame_known(p, axis) and tool_known(p, axis)
+        return which == "end" or tool_known(p, axis)
     return True
 
 
@@ -123,8 +131,8 @@ def placed(p: Planner, axes: Iterable[int]) -> None:
     """An absolute move names ``axes``: each is where the program says."""
     w = p.whereabouts
     named = frozenset(axes)
-    if not named <= w.placed or named & w.lost or w.at_reference:
-        p.whereabouts = replace(w, placed=w.placed | named, lost=w.lost - named,
+    if not named <= w.placed or named & w.lost or w.at_reference or named & w.homed:
+        p.whereabouts = replace(w, placed=w.placed | named, lost=w.lost - named, homed=w.homed - named,
                                 at_reference=tuple(r for r in w.at_reference if r[0] not in named))  # fmt: skip
 
 
@@ -133,7 +141,7 @@ def referenced(p: Planner, axes: Iterable[int]) -> None:
     named = frozenset(axes)
     w = p.whereabouts
     kept = tuple(r for r in w.at_reference if r[0] not in named)
-    p.whereabouts = replace(w, placed=w.placed | named, lost=w.lost - named,
+    p.whereabouts = replace(w, placed=w.placed | named, lost=w.lost - named, homed=w.homed | named,
                             at_reference=kept + tuple((i, p.pos[i]) for i in sorted(named)))  # fmt: skip
 
 
@@ -141,7 +149,8 @@ def lose(p: Planner, axes: Iterable[int]) -> None:
     """A G30 left ``axes`` at the 2nd reference position, which the machine file does not give."""
     named = frozenset(axes)
     w = p.whereabouts
-    p.whereabouts = replace(w, lost=w.lost | named, at_reference=tuple(r for r in w.at_reference if r[0] not in named))
+    p.whereabouts = replace(w, lost=w.lost | named, homed=w.homed - named,
+                            at_reference=tuple(r for r in w.at_reference if r[0] not in named))  # fmt: skip
 
 
 def coordinates_set(p: Planner, axes: Iterable[int]) -> None:
@@ -153,7 +162,7 @@ def coordinates_set(p: Planner, axes: Iterable[int]) -> None:
     frames = tuple(f for f in w.frames if f[0] not in named) + tuple(
         (i, i in w.placed and machine_known(p, i), work_offset_variable(p, i)) for i in sorted(named)
     )
-    p.whereabouts = replace(w, placed=w.placed | named, lost=w.lost - named, frames=frames,
+    p.whereabouts = replace(w, placed=w.placed | named, lost=w.lost - named, frames=frames, homed=w.homed - named,
                             at_reference=tuple(r for r in w.at_reference if r[0] not in named))  # fmt: skip
 
 
