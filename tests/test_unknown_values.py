@@ -336,3 +336,30 @@ def test_a_subprogram_with_its_caller_in_the_folder_runs_with_the_commons_the_ca
     # #102 = 3 passes of 6 / 3 = 2 mm: Z-2., Z-4., Z-6., and nothing to say
     (tmp_path / "O1010.nc").write_text("O1010\n#101=6.\n#102=3\nM98 P1007\nM30\n", encoding="utf-8")
     assert cli("check", str(tmp_path))[:2] == (0, "")
+
+
+def test_an_unknown_hint_names_the_position_variable_and_says_no_value_is_assumed(tmp_path: Path) -> None:
+    # G43 H1 with H1 not given: #5083 (the tool length in force) is unknown, and the hint names it
+    text = "O0100\nG21 G90 G54 G00 X0. Y0.\nG43 H1 Z100.\nIF [#5083 GT 50.] GOTO 10\nG00 X5.\nN10 M30\n"
+    code, found = check(tmp_path, text)
+    assert code == 0
+    assert found == [
+        "4:1: hint: the analysis run stops here: this block depends on #5083, a position or offset in force the "
+        "machine has: it adds an offset this folder does not give (or follows a G30, or a G92/G50 where the tool's "
+        "place is not known), so the check assumes no value for it; this folder does not give it; set it under "
+        "[variables] in .cncmacro.toml (or in the persistent file it names) to check further [unknown-value]"
+    ]
+
+
+def test_an_unknown_hint_in_a_called_macro_names_the_argument_and_its_letter(tmp_path: Path) -> None:
+    # O0100 passes A#560 (kept): in O9101, IF [#1 GT 10.] decides with #1 (A), named with its letter
+    (tmp_path / "O9101.nc").write_text("O9101\nIF [#1 GT 10.] GOTO 10\nG00 X5.\nN10 M99\n", encoding="utf-8")
+    (tmp_path / "O0100.nc").write_text("O0100\nG65 P9101 A#560\nM30\n", encoding="utf-8")
+    code, out, err = cli("check", "--hints", str(tmp_path))
+    assert (code, err) == (0, "")
+    assert out.splitlines() == [
+        f"{tmp_path / 'O9101.nc'}:2:1: hint: the analysis run stops here: this block depends on #1 (A), which the "
+        "call passes from a value the machine has; this folder does not give it; set it under [variables] in "
+        ".cncmacro.toml (or in the persistent file it names) to check further; reached from O0100:2 (G65), at "
+        "block 2 of the run [unknown-value]"
+    ]

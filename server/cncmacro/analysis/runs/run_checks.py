@@ -547,6 +547,11 @@ def _records_before(st: RunState, at: int, cut: int) -> RunState:
 # ---------------------------------------------------------------- diagnostics of a run
 
 
+def _in_a_macro_call(chain: tuple[CallLevel, ...]) -> bool:
+    """Whether the level a finding's ``chain`` ends at is a macro a G65/G66 called (its locals are arguments)."""
+    return len(chain) > 1 and chain[-1].how in ("G65", "G66")
+
+
 def _still_unknown(m: Machine, n: int) -> bool:
     """Whether ``#n`` reads unknown where the run stopped (what cannot be read counts as unknown)."""
     try:
@@ -564,7 +569,8 @@ def _alarm_diagnostic(run: EntryRun, code: str, line_text: Callable[[str, int], 
     if a.subject == UNKNOWN_VALUE:
         ran = sorted((line for line in run.state.first.get(a.file, {}) if line < a.line), reverse=True)
         en, zh = unknown_value_text(line_text(a.file, a.line), ((n, line_text(a.file, n)) for n in ran), m.kinds,
-                                    m.dialect, run.as_macro, lambda n: _still_unknown(m, n))  # fmt: skip
+                                    m.dialect, run.as_macro, lambda n: _still_unknown(m, n),
+                                    called=_in_a_macro_call(a.chain))  # fmt: skip
     elif code == MACRO_ALARM:
         en = f"the run reaches macro {a.words()}: {a.message}"
         zh = f"运行到宏程序{a.words('zh')}：{in_language(a.message, True)}"
@@ -601,7 +607,7 @@ def _guard_diagnostic(run: EntryRun, note: Note, line_text: Callable[[str, int],
     ran = sorted((line for line in run.state.first.get(note.file, {}) if line < note.line), reverse=True)
     en, zh = unknown_value_text(line_text(note.file, note.line), ((n, line_text(note.file, n)) for n in ran),
                                 m.kinds, m.dialect, run.as_macro, lambda n: _still_unknown(m, n),
-                                guard_opening(note.subject))  # fmt: skip
+                                guard_opening(note.subject), _in_a_macro_call(note.chain))  # fmt: skip
     return _diagnostic(note.file, note.line, "unknown-value", en, zh, note.chain, None, False, line_text, locale)
 
 

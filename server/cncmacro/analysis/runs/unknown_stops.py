@@ -105,7 +105,7 @@ def named_persistent_values(settings: MachineSettings) -> dict[int, float]:
 def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: VariableKinds,
                        dialect: Dialect, arguments: bool,
                        unknown: Callable[[int], bool] = lambda n: True,
-                       opening: tuple[str, str] = STOP_OPENING) -> tuple[str, str]:  # fmt: skip
+                       opening: tuple[str, str] = STOP_OPENING, called: bool = False) -> tuple[str, str]:  # fmt: skip
     """The note (English, Chinese) for a run stopped on block ``text`` by an unknown value. It
     names at most three variables the block's value comes from: the block's own that no
     ``earlier`` block (that ran before it in its file: (line, text), nearest first) assigned,
@@ -116,7 +116,9 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     tool number the program has set since is not). Where the value was read through ``#[...]``,
     whose number only the run knows, and no such variable is left, the note names that read; where
     a random number (``RAND``, ``SRAND``) comes in, that it cannot be foreseen. ``opening`` is how
-    the note starts: ``STOP_OPENING``, or ``GUARD_OPENING`` for a guard the run went past."""
+    the note starts: ``STOP_OPENING``, or ``GUARD_OPENING`` for a guard the run went past. ``called``:
+    the block runs in a macro a G65/G66 of the run called, whose arguments still unknown came from
+    values its caller did not know (named with their letters)."""
     wanted, indirect, through, touched, drawn = _sources(text, earlier, dialect)
 
     def probed_here(n: int) -> bool:  # where a G31 stopped: #5061…, or GSK's #995… once a G31 wrote it
@@ -127,20 +129,23 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
 
     named = [(n, line) for n, line in wanted.items()
              if (is_kept(n, kinds, dialect) or is_input(n, dialect) or is_skip_position(n, dialect)
-                 or from_caller(n)) and unknown(n)]  # fmt: skip
+                 or is_position(n, dialect) or from_caller(n) or (called and 1 <= n <= 33)) and unknown(n)]  # fmt: skip
     if not named and drawn:
         return _random_number(drawn[0], opening)
     if not named and indirect:
         return _read_through(through, opening)
-    kept = [(n, line) for n, line in named[:3] if not from_caller(n)]
+    handed = [(n, line) for n, line in named[:3] if called and 1 <= n <= 33 and not from_caller(n)]
+    kept = [(n, line) for n, line in named[:3] if not from_caller(n) and (n, line) not in handed]
     passed = [(n, line) for n, line in named[:3] if 1 <= n <= 33 and from_caller(n)]
     set_before = [(n, line) for n, line in named[:3] if from_caller(n) and not 1 <= n <= 33]
     parts, parts_zh = [], []
     tool = [(n, line) for n, line in kept if is_tool(n, dialect)]
     inputs = [(n, line) for n, line in kept if is_input(n, dialect)]
     probed = [(n, line) for n, line in kept if probed_here(n)]
+    positions = [(n, line) for n, line in kept if is_position(n, dialect) and not is_skip_position(n, dialect)]
     kept = [(n, line) for n, line in kept
-            if not is_tool(n, dialect) and not is_input(n, dialect) and not probed_here(n)]  # fmt: skip
+            if not is_tool(n, dialect) and not is_input(n, dialect) and not probed_here(n)
+            and not is_position(n, dialect)]  # fmt: skip
     if kept:
         names, names_zh = _names(kept)
         parts.append(f"{names}, which the machine keeps")
@@ -158,6 +163,21 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
         names, names_zh = _names(probed)
         parts.append(f"{names}, where the probe's G31 touched")
         parts_zh.append(f"测头 G31 接触到的位置 {names_zh}")
+    if handed:
+        names, names_zh = _names(handed, letters=True)
+        parts.append(f"{names}, which the call passes from a value the machine has")
+        parts_zh.append(f"调用时由机床上的数值传入的自变量 {names_zh}")
+    if positions:
+        names, names_zh = _names(positions)
+        parts.append(
+            f"{names}, a position or offset in force the machine has: it adds an offset this folder does "
+            "not give (or follows a G30, or a G92/G50 where the tool's place is not known), so the check "
+            "assumes no value for it"
+        )
+        parts_zh.append(
+            f"机床上有而检查中没有的位置或当前补偿 {names_zh}"
+            "（它包含本文件夹未给出的工件坐标系偏置或刀具补偿，或在位置未知处执行了 G30、G92/G50，检查不假定其值）"
+        )
     if passed:
         names, names_zh = _names(passed, letters=True)
         parts.append(f"{names}, which a caller passes")
@@ -167,12 +187,18 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
         parts.append(f"{names}, which a caller sets before the call")
         parts_zh.append(f"调用者在调用前设定的 {names_zh}")
     if not parts:
-        which, which_zh = "on a value the machine keeps (a common kept at power-off, an offset)", "机床上保存的数值"
+        which, which_zh = (
+            "on a value the machine keeps (a common kept at power-off, an offset), which the check assumes "
+            "nothing about",
+            "机床上保存的数值（断电保持的公共变量、补偿值），检查不对其作任何假定",
+        )
     elif any(line is not None for _, line in named[:3]):
         which, which_zh = "on a value computed from " + " and ".join(parts), "由" + "和".join(parts_zh) + "算出的值"
     else:
         which, which_zh = "on " + " and ".join(parts), "和".join(parts_zh)
-    tail, tail_zh = _tail(bool(kept), bool(passed), bool(set_before), bool(tool), bool(inputs), bool(probed))
+    tail, tail_zh = _tail(
+        bool(kept or positions or handed), bool(passed), bool(set_before), bool(tool), bool(inputs), bool(probed)
+    )
     return f"{opening[0]} {which}; {tail}", f"{opening[1]}{which_zh}；{tail_zh}"
 
 
@@ -295,6 +321,14 @@ def unknown_stop(m: Machine) -> list[tuple[str, int]]:
 def after_a_stop(stops: list[tuple[str, int]], file: str, first: int) -> bool:
     """Whether lines from ``first`` on in ``file`` come after one of the ``stops``."""
     return any(f == file and first > line for f, line in stops)
+
+
+def is_position(n: int, dialect: Dialect) -> bool:
+    """Whether system variable ``#n`` reads a position or the tool offset in force (#5001…, #5021…,
+    #5041…, #5081…: a row of source ``"position"``), which may add an offset the folder lacks
+    (machine/unknown_values.py's ``position_unknown``)."""
+    row = dialect.system_variable(n)
+    return row is not None and row.source == "position"
 
 
 def is_guard_note(kind: str, subject: str | None) -> bool:
