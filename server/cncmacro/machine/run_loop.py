@@ -13,6 +13,7 @@ import gc
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, cast
 
+from ..planner.alarms import AlarmBeforeMove
 from .alarms import Alarm, CallLevel, MacroAlarm
 from .frames import Frame, ModalCall, Note
 from .status import CANCEL_CHECK, FINISHED, RunStatus
@@ -126,6 +127,8 @@ class RunLoop:
         f = self.frames[-1]
         if isinstance(e, MacroAlarm):
             f.pc = pc
+            if isinstance(e, AlarmBeforeMove):  # the control stopped before an earlier block moved
+                e.take_back()
             shown = self.dialect.shown_alarm(e.number)
             self.alarm = Alarm(e.number, e.message, f.file, pc, self.chain(), e.subject, shown)
             self.status = RunStatus.ALARM

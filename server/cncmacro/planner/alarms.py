@@ -6,6 +6,8 @@ which turns it into an ``Alarm`` with the file, the line and the call chain (mac
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from ..bilingual import detail
 from ..dialects.alarms import alarm_text
 
@@ -19,6 +21,18 @@ class MacroAlarm(Exception):
         self.message = message or detail(alarm_text(number), alarm_text(number, "zh"))
         self.subject = subject  # what the alarm is about where one number covers several things
         super().__init__(f"alarm {number}: {self.message}")
+
+
+class AlarmBeforeMove(MacroAlarm):
+    """An alarm the control raises while it reads ahead, before an earlier block than the one
+    read has moved (FANUC's interference check: "the tool stops and an alarm is displayed" at the
+    end of the block before the one that would be cut backwards). The planner has already made
+    that block's move; ``take_back`` undoes it, once, when the run ends on this alarm (a run of
+    plain lines that meets it runs the line again the general way, which raises it anew)."""
+
+    def __init__(self, number: int, message: str, subject: str, take_back: Callable[[], None]) -> None:
+        super().__init__(number, message, subject)
+        self.take_back = take_back
 
 
 UNKNOWN_VALUE = "unknown-value"  # the subject of ``UnknownValue``

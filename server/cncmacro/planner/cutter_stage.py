@@ -44,7 +44,7 @@ from ..dialects.alarms import (
     CUTTER_PLANE,
     CUTTER_SKIP,
 )
-from .alarms import MacroAlarm
+from .alarms import AlarmBeforeMove, MacroAlarm
 from .arcs import ARC_MODES
 from .cycle_time import INCH
 from .moves import CentrePath, CentrePiece, Move
@@ -636,7 +636,7 @@ class StraightCuts:
                 self._keep((line, mode, feed, start, end, px, py, tx, ty, l1, cx, cy, s0, per, off,
                            length, seconds, place, hold, held, fresh))  # fmt: skip
                 own, self.send = self.send, None
-                _finding(p, CUTTER_INTERFERENCE, "cutter-interference", new_line, _reversal_message(line))
+                _reversal(p, new_line, line, place, start, mode, plane, unit, seconds, length)
                 self.send, own = own, None
             # the last move, now that its corner is known: its length and time put right
             if fresh:
@@ -819,6 +819,45 @@ def _reversal_message(line: int) -> str:
     )
 
 
+def _reversal(
+    p: Planner, line: int, reversed_line: int, place: int, start: _Point, mode: float, plane: float, unit: float,
+    seconds: float, length: float,
+) -> None:  # fmt: skip
+    """The block on ``reversed_line`` would be cut backwards, found when the block on ``line`` is
+    read: PS0041 where the profile has the cutter alarms, else a note. FANUC's control finds it
+    reading ahead and stops before that block moves ("the tool stops and an alarm is displayed",
+    the tool "Stopped" at the end of the block before it): when the run ends on the alarm, the
+    block's move (recorded at ``place``, with its provisional ``seconds`` and ``length``) and any
+    made after it are taken back, and the tool is at its ``start``."""
+    message = _reversal_message(reversed_line)
+    if not p.dialect.cutter_alarms:
+        p.host.note("cutter", message, line, "cutter-interference")
+        return
+
+    def take_back() -> None:
+        moves = p.moves
+        if 0 <= place < len(moves) and moves[place].line == reversed_line:
+            after = moves[place + 1 :]
+            p.withdrawn = (place, moves[place:])
+            del moves[place:]
+        else:
+            after = []
+        p.clock -= seconds + sum(mv.seconds for mv in after)
+        taken = length * unit
+        if mode == 0.0:
+            p.rapid_length -= taken
+        else:
+            p.cut_length -= taken
+        for mv in after:  # the moves off the plane made at the block's corner
+            if mv.mode == 0.0:
+                p.rapid_length -= p.times.distance(mv.start, mv.end) * unit
+            else:
+                p.cut_length -= p.times.distance(mv.start, mv.end) * unit
+        p.pos = list(start)
+
+    raise AlarmBeforeMove(CUTTER_INTERFERENCE, message, "cutter-interference", take_back)
+
+
 def _arc_finding(p: Planner, message: str, line: int) -> None:
     """A start-up or cancel on an arc: PS0034 on every mill and on a lathe with FANUC's cutter
     alarms; a note on a lathe without them (GSK980TDi: no source at hand gives its alarm)."""
@@ -987,7 +1026,8 @@ def _settle(p: Planner, pending: Pending, corner: Corner, line: int, i: int, j: 
     if not pending.startup and pending.d:
         piece = centre_segment(element, _plane_point(provisional.start, i, j, scale), corner.before_end)
         if reverses(element, piece):
-            _finding(p, CUTTER_INTERFERENCE, "cutter-interference", line, _reversal_message(pending.line))
+            _reversal(p, line, pending.line, pending.place, pending.start, pending.mode, pending.plane, pending.unit,
+                      pending.seconds, pending.length)  # fmt: skip
     for link in corner.links:
         pieces.append(CentrePiece(_full(link, end_full, i, j, scale)))
     if corner.after_start != corner.before_end or corner.links:

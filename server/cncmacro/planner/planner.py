@@ -87,6 +87,9 @@ class Planner:
     block_feed: bool = False  # whether that block writes F (G93 takes one in every cut: missing_feed.py)
     whereabouts: Whereabouts = START  # what the run knows of where the machine is (whereabouts.py)
     block_corner: str | None = None  # a block's ,C or ,R (its letter) while it runs (machine/corners.py)
+    # the moves an alarm found reading ahead took back (cutter_stage.py, ``_reversal``), from which
+    # place: a snapshot taken before the alarm and restored gets them again
+    withdrawn: tuple[int, list[Move]] | None = None
 
     def __init__(self, dialect: Dialect, settings: MachineSettings, host: PlannerHost) -> None:
         self.dialect = dialect
@@ -211,6 +214,9 @@ class Planner:
         self.cycle_start_z = state.cycle_start_z
         self.clock = state.clock
         self.cut_length, self.rapid_length = state.lengths
+        withdrawn, self.withdrawn = self.withdrawn, None
+        if withdrawn is not None and withdrawn[0] == len(self.moves) < state.moves:  # back to before an alarm took them
+            self.moves.extend(withdrawn[1])
         del self.moves[state.moves :]
         if self.moves_cut and len(self.moves) < self.move_budget:  # taken back to before the toolpath filled
             self.moves_cut = False
