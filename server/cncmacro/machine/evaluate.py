@@ -33,6 +33,7 @@ Value = float | None
 
 _COLUMN = re.compile(r"column (\d+)")
 _COLUMN_ZH = re.compile(r"第 (\d+) 列")
+_WANTED_MORE = re.compile(r"; expected (?!'\]')")  # the parser wanted more than ']' (syntax/messages.py)
 _ASSIGNMENT = re.compile(r"^\s*#[^=]*?(?<![=!<>])=(?!=)")
 MAX_TEXT = 1000
 
@@ -63,8 +64,21 @@ def _block(text: str, prefix: str, suffix: str) -> Block:
     block = parse_block(prefix + text + suffix)
     error = next((p for p in block.problems if p.severity == "error"), None)
     if error is not None:
+        message = error.message
+        if suffix and error.start >= len(prefix) + len(text) and _WANTED_MORE.search(message):
+            raise EvaluationError(_ended_early(text, message))  # at what was put around the text
         raise EvaluationError(_shifted(error.message, len(prefix)))
     return block
+
+
+def _ended_early(text: str, message: str) -> Detail:
+    """The text stops before it is complete (``#4 GT``): the parser's complaint is about what
+    was put after it (the ``]`` of ``IF[...]``), which the person never typed; what it expected
+    there (``; expected a value``, syntax/messages.py) is kept."""
+    zh = getattr(message, "zh", message)
+    en_tail = message[message.find("; expected") :]
+    zh_tail = zh[zh.find("；应为") :] if "；应为" in zh else ""
+    return Detail(f"'{text}' is not complete{en_tail}", f"'{text}' 不完整{zh_tail}")
 
 
 def _shifted(message: str, shift: int) -> str:
@@ -87,7 +101,10 @@ def compile_expression(machine: Machine, text: str) -> CompiledText:
     block = _block(text.strip(), "#1=", "")
     if len(block.statements) != 1 or block.words or block.corners or not isinstance(block.statements[0], Assign):
         raise EvaluationError(detail(f"'{text.strip()}' is not an expression", f"'{text.strip()}' 不是表达式"))
-    return CompiledText(text, value=ExpressionCompiler(machine.kinds).value(block.statements[0].value))
+    compiler = ExpressionCompiler(machine.kinds)
+    value = compiler.value(block.statements[0].value)
+    _refused(machine, compiler)
+    return CompiledText(text, value=value)
 
 
 def compile_condition(machine: Machine, text: str) -> CompiledText:
@@ -102,7 +119,19 @@ def compile_condition(machine: Machine, text: str) -> CompiledText:
     statement = block.statements[0] if len(block.statements) == 1 else None
     if not isinstance(statement, If) or block.words or block.corners:
         raise EvaluationError(detail(f"'{stripped}' is not a condition", f"'{stripped}' 不是条件"))
-    return CompiledText(text, test=ExpressionCompiler(machine.kinds).condition(statement.condition))
+    compiler = ExpressionCompiler(machine.kinds)
+    test = compiler.condition(statement.condition)
+    _refused(machine, compiler)
+    return CompiledText(text, test=test)
+
+
+def _refused(machine: Machine, compiler: ExpressionCompiler) -> None:
+    """Raise, as running it would, the alarm the compiled text alone decides (``'=='`` where
+    the control reads only EQ, ``#9999``): text kept to run later is refused when it is given."""
+    alarm = compiler.refusal
+    if alarm is not None:
+        said = machine.dialect.alarm_said(alarm.number)
+        raise EvaluationError(detail(f"{said}: {alarm.message}", f"{said.zh}：{in_language(alarm.message, True)}"))
 
 
 @contextmanager

@@ -176,6 +176,16 @@ class ExpressionCompiler:
         # For the analysis only: values may be unknown (NaN, unknown_values.py); a function
         # gives unknown for unknown, a condition on one stops the path (``UnknownValue``)
         self.unknowns = unknowns
+        # the first alarm the text alone decides (compiled to a closure raising it): a
+        # debugger's condition is refused when it is set rather than when it is first tested
+        self.refusal: MacroAlarm | None = None
+
+    def _refuse(self, number: int, message: str) -> Callable[..., Any]:
+        """What a text compiles to when it alone decides that it alarms (it may never be
+        reached): a closure raising the alarm, the first such alarm kept in ``refusal``."""
+        if self.refusal is None:
+            self.refusal = MacroAlarm(number, message)
+        return raiser(number, message)
 
     # ---------------------------------------------------------------- values
     def value(self, node: Expr, letter: str = "X") -> Getter:
@@ -231,14 +241,14 @@ class ExpressionCompiler:
         if isinstance(node, FunctionCall):
             return self._call(node)
         if isinstance(node, Relation):
-            return raiser(
+            return self._refuse(
                 FORMAT,
                 detail(
                     "a relation (EQ, LT, ...) is only allowed in an IF or WHILE condition",
                     "关系运算（EQ、LT 等）只能用在 IF 或 WHILE 的条件中",
                 ),
             )
-        return raiser(FORMAT, detail("illegal expression", "非法的表达式"))
+        return self._refuse(FORMAT, detail("illegal expression", "非法的表达式"))
 
     def reader(self, n: int) -> Getter:
         """A closure reading ``#n`` (a literal number)."""
@@ -260,7 +270,7 @@ class ExpressionCompiler:
             if self.unknowns and kept_extended(self.kinds, n):
                 return lambda m: m.S.get(n, UNKNOWN)
             return lambda m: m.S.get(n)
-        return raiser(
+        return self._refuse(
             VARIABLE_NUMBER,
             self.dialect.missing_variable(n),
         )
@@ -276,7 +286,7 @@ class ExpressionCompiler:
         compiles it to alarm 114; the number itself is decided by ``named_number``."""
         dialect = self.dialect
         if not dialect.variable_names:
-            return raiser(
+            return self._refuse(
                 FORMAT,
                 detail(
                     f"{node.text}: system variable names are not a feature of {dialect.title}; write the number",
@@ -288,7 +298,7 @@ class ExpressionCompiler:
             try:
                 number = named_number(dialect, name, None, False)
             except MacroAlarm as alarm:
-                return raiser(alarm.number, alarm.message)
+                return self._refuse(alarm.number, alarm.message)
             return (lambda m: number) if write else self.reader(number)
         index = self._value(node.index)
         if write:
@@ -337,10 +347,10 @@ class ExpressionCompiler:
         apply: list[tuple[Callable[[Value, Value], Value], Getter]] = []
         for op, b in reversed(steps):
             if op in LOGICAL_SYMBOLS and not self.dialect.logical_symbols:
-                return raiser(FORMAT, logical_symbol_refused(self.dialect, op))
+                return self._refuse(FORMAT, logical_symbol_refused(self.dialect, op))
             fn = _STEP.get(LOGICAL_SYMBOLS.get(op, op))
             if fn is None:
-                return raiser(FORMAT, detail(f"unknown operator {op}", f"未知的运算符 {op}"))
+                return self._refuse(FORMAT, detail(f"unknown operator {op}", f"未知的运算符 {op}"))
             apply.append((fn, b))
 
         def chain(m: Machine) -> Value:
@@ -355,7 +365,7 @@ class ExpressionCompiler:
         op = node.op
         if op in LOGICAL_SYMBOLS:  # && and || are AND and OR where the control reads them
             if not self.dialect.logical_symbols:
-                return raiser(FORMAT, logical_symbol_refused(self.dialect, op))
+                return self._refuse(FORMAT, logical_symbol_refused(self.dialect, op))
             op = LOGICAL_SYMBOLS[op]
         rc, rv = self.constant(node.right)
         left_local = isinstance(node.left, Var) and self.kinds.kind(node.left.number) == "local" and not self.watch
@@ -410,13 +420,13 @@ class ExpressionCompiler:
                 return float(bitop(_whole(u), _whole(v)))
 
             return bitwise
-        return raiser(FORMAT, detail(f"unknown operator {op}", f"未知的运算符 {op}"))
+        return self._refuse(FORMAT, detail(f"unknown operator {op}", f"未知的运算符 {op}"))
 
     def _call(self, node: FunctionCall) -> Getter:
         name = node.name
         problem = call_problem(node, self.dialect)
         if problem is not None:
-            return raiser(FORMAT, problem[1])
+            return self._refuse(FORMAT, problem[1])
         args = [self._value(a) for a in node.args]
         if name in RANDOM_FUNCTIONS:
             return _random(args, self.unknowns)
@@ -470,7 +480,7 @@ class ExpressionCompiler:
             op = node.op
             if op in LOGICAL_SYMBOLS:
                 if not self.dialect.logical_symbols:
-                    return raiser(FORMAT, logical_symbol_refused(self.dialect, op))
+                    return self._refuse(FORMAT, logical_symbol_refused(self.dialect, op))
                 op = LOGICAL_SYMBOLS[op]
             a = self._condition(node.left)
             b = self._condition(node.right)
@@ -479,14 +489,14 @@ class ExpressionCompiler:
             if op == "OR":
                 return lambda m: a(m) or b(m)
             return lambda m: a(m) != b(m)
-        return raiser(
+        return self._refuse(
             FORMAT,
             detail("a condition needs a relation such as [#1 GT 0]", "条件中需要关系运算，例如 [#1 GT 0]"),
         )
 
     def _relation(self, node: Relation) -> Test:
         if not node.spelling.isalpha() and not self.dialect.c_relations:
-            return raiser(
+            return self._refuse(
                 FORMAT,
                 detail(
                     f"'{node.spelling}' is not a relation on {self.dialect.title}; write {node.op}",

@@ -128,7 +128,7 @@ def describe_error(code: str, err: UnexpectedInput) -> Problem:
             return Problem(_UNCLOSED_PRINT, start, end)
         if tok.type == "COMMA" and "CORNER" in expected_set:
             return Problem(_CORNER_COMMA, start, end)
-        if tok.type == "RSQB" and unclosed is None and "RSQB" not in expected_set:
+        if tok.type == "RSQB" and not _open_bracket_before(code, start) and "RSQB" not in expected_set:
             return Problem(detail("']' without a matching '['", "']' 没有与之配对的 '['"), start, end)
         if tok.type == "RELOP" and "RELOP" not in expected_set:
             if _open_bracket_before(code, start):
