@@ -52,7 +52,6 @@ STATUS_ZH = {
     RunStatus.LIMIT: "达到程序段数上限",
     RunStatus.STOPPED: "停止",
 }
-CALLED_HOW_ZH = {"main": "主程序"}
 
 
 def add_run_parser(sub: Any) -> None:
@@ -294,12 +293,8 @@ def write_text(
     if result.alarm is not None:
         a = result.alarm
         print(a.headline(locale), file=out)
-        print(f"  位置 {a.file}:{a.line + 1}" if chinese else f"  at {a.file}:{a.line + 1}", file=out)
-        for site in reversed(a.chain[:-1]):
-            at = f"{site.file}:{site.line + 1}"
-            how = CALLED_HOW_ZH.get(site.how, site.how)
-            print(f"  调用自 {site.program}（{how}），位置 {at}" if chinese
-                  else f"  called from {site.program} ({site.how}) at {at}", file=out)  # fmt: skip
+        for place in a.places(locale):
+            print(place, file=out)
     elif result.status == RunStatus.LIMIT:
         print(budget_spent(result.blocks, locale), file=out)
     for remark in remarks or ():

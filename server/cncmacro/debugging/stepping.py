@@ -195,7 +195,8 @@ class Stepper:
             text = m.alarm.headline(self.locale)
             if self.filters.alarms:
                 return Stop("exception", text, text)
-            self.output(text + "\n", "stderr")
+            places = m.alarm.places(self.locale, lambda file: Path(file).name)  # where, as a note's line says it
+            self.output("\n".join([text, *places]) + "\n", "stderr")
         elif m.status == RunStatus.LIMIT:
             text = budget_spent(m.blocks, self.locale)
             if not self.never_stop:

@@ -60,6 +60,9 @@ class CallLevel:
     how: str  # "main", "G65", "G66", "M98", or the code that called (e.g. "M50")
 
 
+CALLED_HOW_ZH = {"main": "主程序"}  # how a program level was called, in Chinese where it is a word
+
+
 @dataclass(frozen=True, slots=True)
 class Alarm:
     """An alarm the run stopped with: ``line`` is 0-based, ``chain`` lists the callers from
@@ -81,6 +84,19 @@ class Alarm:
 
     def describe(self) -> str:
         return f"{self.words()}: {self.message}"
+
+    def places(self, locale: str | None, shown: Callable[[str], str] = str) -> list[str]:
+        """Where the run stopped and the calls that led there, a line each, in the language of
+        ``locale``, each file as ``shown`` writes it: ``  at O1000.nc:30``, ``  called from O1000
+        (G65) at MAIN.nc:5`` (``cncmacro run``, the debugger's console)."""
+        chinese = is_chinese(locale)
+        out = [f"  位置 {shown(self.file)}:{self.line + 1}" if chinese else f"  at {shown(self.file)}:{self.line + 1}"]
+        for site in reversed(self.chain[:-1]):
+            at = f"{shown(site.file)}:{site.line + 1}"
+            how = CALLED_HOW_ZH.get(site.how, site.how)
+            out.append(f"  调用自 {site.program}（{how}），位置 {at}" if chinese
+                       else f"  called from {site.program} ({site.how}) at {at}")  # fmt: skip
+        return out
 
     def headline(self, locale: str | None) -> str:
         """The alarm as a person reads it where a run stopped, in the language of ``locale``:
