@@ -49,7 +49,7 @@ def test_5_stepping_into_m97_shows_a_frame_for_the_local_subprogram(tmp_path: Pa
     s.run(STEP_IN)  # #100=0
     assert shown(s) == [("O0011 (main)", 3)]
     s.run(STEP_IN)  # M97 P1000
-    assert shown(s) == [("O0011 (M97, level 1)", 6), ("O0011 (main)", 3)]
+    assert shown(s) == [("O0011 (M97, main's locals)", 6), ("O0011 (main)", 3)]
     s.run(STEP_OUT)  # past the M99
     assert shown(s) == [("O0011 (main)", 4)]
     assert s.machine.read(100) == 1

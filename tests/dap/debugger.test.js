@@ -52,7 +52,7 @@ describe('starting and breakpoints', () => {
     );
     assert.equal(verified['O0200.nc'][0].line, 4);
     const frame = await dc.top();
-    assert.deepEqual([frame.name, frame.line], ['O0200 (M98, level 1)', 4]);
+    assert.deepEqual([frame.name, frame.line], ["O0200 (M98, main's locals)", 4]);
     assert.equal(await dc.value('#103'), '7');
   });
 
@@ -79,7 +79,7 @@ describe('starting and breakpoints', () => {
   test('function breakpoints on a program and on a sequence number', async () => {
     await dc.begin({ program: program('main.nc') }, { functionBreakpoints: ['O0200'] });
     const frame = await dc.top();
-    assert.deepEqual([frame.name, frame.line], ['O0200 (M98, level 1)', 2]);
+    assert.deepEqual([frame.name, frame.line], ["O0200 (M98, main's locals)", 2]);
     await dc.restart();
     const { event } = await dc.begin({ program: program('alarm.nc'), set: { 100: 4 } }, { functionBreakpoints: ['N10'] });
     assert.equal(event.body.reason, 'function breakpoint');

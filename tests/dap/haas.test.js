@@ -39,9 +39,9 @@ describe('a Haas program in the debugger', () => {
     assert.equal(event.body.reason, 'breakpoint');
     assert.deepEqual(await frames(), [['O1000 (main)', 8]]);
     await dc.step('stepInRequest');
-    assert.deepEqual(await frames(), [['O1000 (M97, level 1)', 13], ['O1000 (main)', 8]]);
+    assert.deepEqual(await frames(), [["O1000 (M97, main's locals)", 13], ['O1000 (main)', 8]]);
     await dc.step('nextRequest'); // N100 #100=#100+1
-    assert.deepEqual(await frames(), [['O1000 (M97, level 1)', 14], ['O1000 (main)', 8]]);
+    assert.deepEqual(await frames(), [["O1000 (M97, main's locals)", 14], ['O1000 (main)', 8]]);
     assert.equal(await dc.value('#100'), '1');
     await dc.step('stepOutRequest'); // runs the cut and the M99
     assert.deepEqual(await frames(), [['O1000 (main)', 9]]);
