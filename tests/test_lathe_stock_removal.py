@@ -251,3 +251,35 @@ def test_10_g71_meets_an_arc_of_the_shape_where_the_circle_crosses_the_level(tmp
     arc = [mv for mv in moves if mv["kind"] == "arc"]
     shown = [(a["to"]["X"], a["to"]["Z"], a["centre"]["X"], a["centre"]["Z"]) for a in arc]
     assert shown == [(30.0, -15.0, 30.0, -10.0)]
+
+
+def test_10_g71_type_ii_roughs_a_pocket_deeper_than_the_shapes_first_point_in_levels(tmp_path: Path) -> None:
+    dialect = "fanuc-0i-lathe"
+    # Type II (N10 names X and Z): A = X42 Z2 (radius 21); Δd 2, e 0.5; shape X40 Z0 (B, radius 20),
+    # Z-10, X30 (the pocket, radius 15), Z-20, X40, Z-30, X42. The levels go on below B down to the
+    # pocket's floor: radius 19 (X38) and 17 (X34); 15 would reach the floor. B is at radius 20, so
+    # each level is a pocket from Z-10 to Z-20: over at A's diameter to Z-10, down at rapid to the
+    # level above (X42, then X38), in at the feed, along to Z-20, pulled back by e to X+1 Z+0.5,
+    # out to A's diameter and back along Z. Then the pass along the shape and back to A.
+    # It was one pass along the shape: the 5 mm (radius) pocket cut in one go.
+    moves = passes(tmp_path, dialect, "G00 X42. Z2.", "G71 U2. R0.5", "G71 P10 Q20 U0 W0 F0.2",
+                   "N10 G00 X40. Z0", "G01 Z-10.", "X30.", "Z-20.", "X40.", "Z-30.", "N20 X42.")  # fmt: skip
+    assert ends(moves) == [
+        (42.0, -10.0), (38.0, -10.0), (38.0, -20.0), (39.0, -19.5), (42.0, -19.5), (42.0, 2.0),
+        (42.0, -10.0), (38.0, -10.0), (34.0, -10.0), (34.0, -20.0), (35.0, -19.5), (42.0, -19.5), (42.0, 2.0),
+        (40.0, 0.0), (40.0, -10.0), (30.0, -10.0), (30.0, -20.0), (40.0, -20.0), (40.0, -30.0), (42.0, -30.0),
+        (42.0, -30.0), (42.0, 2.0),  # out to A's diameter (already there), back to A
+    ]  # fmt: skip
+    # feeds: two levels of 2 (in) + 10 (along) mm, the shape 10 + 5 + 10 + 5 + 10 + 1 = 41 mm:
+    # 65 mm at 100 mm/min = 39 s
+    assert feed_seconds(moves) == pytest.approx(39.0)
+
+
+def test_10_gsk_g71_type_ii_roughs_a_pocket_deeper_than_the_shapes_first_point_in_levels(tmp_path: Path) -> None:
+    # The same shape on gsk980tdi (A′ = A, no allowances): the levels' cuts are the same, X38 and
+    # X34 from Z-10 to Z-20, and only then the pass along the shape from B (X40 Z0).
+    moves = passes(tmp_path, "gsk980tdi", "G00 X42. Z2.", "G71 U2. R0.5", "G71 P10 Q20 U0 W0 F0.2",
+                   "N10 G00 X40. Z0", "G01 Z-10.", "X30.", "Z-20.", "X40.", "Z-30.", "N20 X42.")  # fmt: skip
+    along_z = [(mv["to"]["X"], mv["from"]["Z"], mv["to"]["Z"]) for mv in moves
+               if mv["kind"] == "feed" and mv["from"]["X"] == mv["to"]["X"] and mv["to"]["X"] < 40.0]  # fmt: skip
+    assert along_z == [(38.0, -10.0, -20.0), (34.0, -10.0, -20.0), (30.0, -10.0, -20.0)]

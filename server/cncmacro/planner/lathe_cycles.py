@@ -285,4 +285,5 @@ def _roughing_steps(p: Planner, shape: ShapeReading, xi: int, zi: int, facing: b
     ccw_mode = 3.0 if facing else 2.0
     via = offset_start if cycles.roughing_from_offset_start else None
     retract_mode = 1.0 if cycles.roughing_retract_at_feed else 0.0
-    return rough_passes(start, moved, depth, retract, approach, ccw_mode, via, retract_mode)
+    type_two = shape.first_axes is not None and {xi, zi} <= shape.first_axes  # its first block names both axes
+    return rough_passes(start, moved, depth, retract, approach, ccw_mode, via, retract_mode, type_two)

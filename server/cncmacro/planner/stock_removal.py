@@ -11,7 +11,9 @@ shape) an arc.
 G71/G72 (FANUC 0i-TF and GSK980TDi manuals, "stock removal in turning/facing"): from the start
 point A the tool steps in by the depth Δd, cuts along ``b`` until it meets the finishing shape
 (offset by the allowances), pulls back by e at 45°, returns along ``b`` at rapid and steps in
-again, until the next level would pass the shape's first point. Where the shape dips below a
+again, until the next level would pass the shape's first point (a type II shape, whose first
+block names both axes: its deepest point, since its first cut need not be vertical and the shape
+may go deeper after it, GSK980TDi §3.23.1 type II item 3). Where the shape dips below a
 level again further along (a pocket, type II), the level is cut there too: out to A's depth, over
 to where the shape goes below the level, down at rapid to the level above and in at the feed,
 along to where the shape comes back up, pulled back by e; and back to A's depth and along ``b``
@@ -135,6 +137,7 @@ def rough_passes(
     ccw_mode: float,
     offset_start: Point | None = None,
     retract_mode: float = 0.0,
+    to_deepest: bool = False,
 ) -> list[Step]:
     """G71/G72: the path from ``start`` (A) that removes the stock down to ``shape`` (already
     offset by the finishing allowances) in levels ``depth`` apart, each pass pulled back by
@@ -144,7 +147,8 @@ def rough_passes(
     counterclockwise in the ``(a, b)`` plane. With ``offset_start`` (A′, A moved by the
     allowances: the GSK980TDi's steps ①–⑧) the tool first goes there at rapid, the levels count
     from it and each cut returns to its ``b``, and from the shape's end it goes straight to A
-    at rapid."""
+    at rapid. With ``to_deepest`` (a type II shape) the levels go on down to the shape's deepest
+    point rather than stopping at its first point."""
     if not shape or depth <= 0:
         return []
     a_start, b_start = start if offset_start is None else offset_start
@@ -154,10 +158,16 @@ def rough_passes(
     end_b = shape[-1].end[1]
     along = math.copysign(1.0, end_b - first[1]) if end_b != first[1] else -1.0
     steps: list[Step] = [] if offset_start in (None, start) else [Step(0.0, offset_start)]
+    bottom = max(side * a for a, _ in [first, *pts]) if to_deepest else side * first[0]
+
+    def rapid(to: Point) -> None:  # a rapid to where the tool already is is left out
+        if to != (steps[-1].end if steps else (a_start, b_start)):
+            steps.append(Step(0.0, to))
+
     k = 1
     while side and k <= MAX_LEVELS:
         level = a_start + side * depth * k
-        if side * (level - first[0]) >= 0:
+        if side * level >= bottom:
             break
         runs = deeper_runs(pts, level, side, b_start, end_b)
         out = level - side * retract
@@ -165,13 +175,13 @@ def rough_passes(
             if n == 0 and b_in == b_start:  # in from the stock's end, at the level
                 steps.append(Step(approach, (level, b_start)))
             else:  # a pocket: over the shape at A's depth, down to the level above, in at the feed
-                steps.append(Step(0.0, (a_start, steps[-1].end[1] if steps else b_start)))
-                steps.append(Step(0.0, (a_start, b_in)))
-                steps.append(Step(0.0, (level - side * depth, b_in)))
+                rapid((a_start, steps[-1].end[1] if steps else b_start))
+                rapid((a_start, b_in))
+                rapid((level - side * depth, b_in))
                 steps.append(Step(1.0, (level, b_in)))
             steps.append(Step(1.0, (level, b_out)))
             steps.append(Step(retract_mode, (out, b_out - along * retract)))
-        if len(runs) > 1:
+        if len(runs) > 1 or (runs and runs[0][0] != b_start):  # out of a pocket over the shape
             steps.append(Step(0.0, (a_start, steps[-1].end[1])))
             steps.append(Step(0.0, (a_start, b_start)))
         elif runs:
