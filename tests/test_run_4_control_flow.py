@@ -109,8 +109,10 @@ def test_jumping_into_a_loop_is_an_error():
     assert number == 126 and line == 1
 
 
-def test_do_without_end_is_alarm_124():
-    assert alarm(lines("#1=0", "WHILE[#1 LT 3]DO1", "#1=#1+1", "M30")) == (124, 2)
+def test_do_without_end_is_alarm_124_where_the_condition_is_false():
+    # the control looks for END 1 only to go on after the loop (GSK980TDi manual §3.29, docs/semantics.md §4);
+    # with #1=0 the body runs and M30 ends the program first (test_4_do_without_end_alarms_only_where_...)
+    assert alarm(lines("#1=5", "WHILE[#1 LT 3]DO1", "#1=#1+1", "M30")) == (124, 2)
 
 
 def test_end_without_do_is_alarm_126():

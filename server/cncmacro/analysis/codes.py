@@ -126,7 +126,7 @@ CODES: dict[str, Code] = _codes(
     Code("loop-mismatch", ERROR,
          detail("DO without END, END without DO, or crossing loops (alarms 124/126).",
                 "DO 没有 END、END 没有 DO，或循环交叉（报警 124/126）。"),
-         BOTH, (MISSING_END,)),
+         BOTH, (MISSING_END,), milder=WARNING),
     Code("loop-number", ERROR,
          detail("A DO/END number outside 1-3, or loops nested deeper than 3 (alarm 126).",
                 "DO/END 号超出 1-3，或循环嵌套超过 3 层（报警 126）。"),

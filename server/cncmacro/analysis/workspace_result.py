@@ -76,11 +76,14 @@ def gather(version: int | None, own: dict[str, list[Diagnostic]], docs: Mapping[
     by_file = own
     seen: set[tuple[str, int, str]] = set()
     errors: set[tuple[str, int]] = set()
+    milder: dict[tuple[str, int, str], Diagnostic] = {}  # a file's own finding below an error
     for path, diags in by_file.items():
         for x in diags:
             seen.add((path, x.line, x.code))
             if x.severity == "error":
                 errors.add((path, x.line))
+            else:
+                milder.setdefault((path, x.line, x.code), x)
     for k, x in runs.failed.items():
         if k not in entries or x.file in docs:
             by_file.setdefault(x.file, []).append(x)
@@ -100,6 +103,10 @@ def gather(version: int | None, own: dict[str, list[Diagnostic]], docs: Mapping[
                 continue
             key = (x.file, x.line, x.code)
             if key in seen:
+                kept = milder.pop(key, None)  # a run that meets the alarm the check called possible: the error
+                if kept is not None and x.severity == "error":
+                    diags = by_file[x.file]
+                    diags[diags.index(kept)] = x
                 continue
             seen.add(key)
             by_file.setdefault(x.file, []).append(x)

@@ -614,10 +614,7 @@ class CompiledFile:
             return _bad_loop_number("DO", s.loop)
         end = self.do_end.get(pc)
         if end is None:
-            return raiser(
-                MISSING_END,
-                detail(f"DO {number} has no END {number}", f"DO {number} 没有对应的 END {number}"),
-            )
+            return self._loop_head_without_end(s, number, nxt)
         after = self.next_line(end)
         test = self.values.condition(s.condition) if isinstance(s, While) else None
 
@@ -652,6 +649,22 @@ class CompiledFile:
                 return after
 
         return guarded_head
+
+    def _loop_head_without_end(self, s: While | Do, number: int, nxt: int) -> Runner:
+        """A WHILE/DO whose END is not in its program (docs/semantics.md §4): the body runs while the
+        condition holds (the program may end or jump away before an END is needed); where it does
+        not hold the control looks for END m to go on after it, finds none: alarm 124."""
+        missing = detail(f"DO {number} has no END {number}", f"DO {number} 没有对应的 END {number}")
+        if not isinstance(s, While):
+            return lambda m, pc: nxt
+        test = self.values.condition(s.condition)
+
+        def head(m: Machine, pc: int) -> int:
+            if test(m):
+                return nxt
+            raise MacroAlarm(MISSING_END, missing)
+
+        return head
 
     def loop_end(self, s: End, pc: int) -> Runner:
         number = self.loop_number(s.loop)

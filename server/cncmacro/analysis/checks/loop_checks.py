@@ -120,8 +120,13 @@ def loop_diagnostics(program: Program, file: str, locale: str, dialect: Dialect)
         start, end = _marker_span(blocks[line])
         n = problem.number
         related: tuple[Related, ...] = ()
-        if problem.kind == "do-without-end":
-            message = pick(locale, f"DO {n} has no END {n} ({missing})", f"DO {n} 没有对应的 END {n}（{missing.zh}）")
+        milder = False
+        if problem.kind == "do-without-end":  # the control looks for the END only to leave the loop (§4)
+            milder = True
+            message = pick(locale, f"DO {n} has no END {n} ({missing}): the control raises it where the WHILE "
+                                   f"condition is false and it looks for END {n} to go on after it",
+                           f"DO {n} 没有对应的 END {n}（{missing.zh}）：WHILE 条件不成立、系统查找 END {n} "
+                           "以执行其后的程序段时报警")  # fmt: skip
         elif problem.kind == "end-without-do":
             message = pick(locale, f"END {n} has no DO {n} before it ({loop})",
                            f"END {n} 之前没有对应的 DO {n}（{loop.zh}）")  # fmt: skip
@@ -135,5 +140,5 @@ def loop_diagnostics(program: Program, file: str, locale: str, dialect: Dialect)
             )
             o_start, o_end = _marker_span(blocks[other])
             related = (Related(file, other, o_start, o_end, pick(locale, "the inner loop", "内层循环")),)
-        out.append(diagnostic(file, line, start, line, end, "loop-mismatch", message, related))
+        out.append(diagnostic(file, line, start, line, end, "loop-mismatch", message, related, milder=milder))
     return out
