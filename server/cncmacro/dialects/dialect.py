@@ -341,6 +341,9 @@ class Dialect:
     variable_names: bool = False
     # §3 functions beyond the common set: names (POW, ADP, PRM) and extra forms by signature (ATAN[a,b])
     extra_functions: frozenset[str] = frozenset()
+    # §3 a one-argument function followed by a bare number (``SIN30``, the GSK980TDi manual's own
+    # example) reads it as its argument; elsewhere a ``syntax`` finding and alarm 114
+    bare_function_argument: bool = False
 
     # §5 the M code of a local subprogram call (Haas ``M97 P<n> L<k>``: run from Nn of the
     # program running until M99, then back after the call); None: no such call, the code is a

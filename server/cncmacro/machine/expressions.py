@@ -574,6 +574,15 @@ def call_problem(node: FunctionCall, dialect: Dialect) -> tuple[str, str] | None
     bilingual message). Either is alarm 114 when the block runs."""
     forms = _FORMS.get(node.name, {})
     shape = (len(node.args), node.comma)
+    if node.bare:  # SIN30: the argument, a number, written without brackets (§3)
+        number = node.args[0]
+        text = number.text if isinstance(number, Number) else "a"
+        if not dialect.bare_function_argument or (1, False) not in forms:
+            return "syntax", detail(
+                f"{node.name}{text}: a function's argument is written in brackets, {node.name}[{text}]",
+                f"{node.name}{text}：函数的参数须写在方括号中，{node.name}[{text}]",
+            )
+        shape = (1, False)
     written = f"{node.name}{_SHAPES.get(shape, '[...]')}"
     if shape not in forms:
         allowed = ", ".join(f"{node.name}{_SHAPES[s]}" for s in forms)

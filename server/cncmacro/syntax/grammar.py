@@ -343,6 +343,12 @@ class _Builder(Transformer[Token, Items]):
         comma = any(isinstance(x, Token) and x.type == "COMMA" for x in c)
         return FunctionCall(name, args, head.start_pos, last.end_pos, comma)
 
+    def bare_call(self, c: _Children) -> FunctionCall:
+        head: _Tok
+        num: _Tok
+        head, num = c
+        return FunctionCall(self._word(head), (_number(num),), head.start_pos, num.end_pos, bare=True)
+
 
 _BRACKET_STARTS_BLOCK = detail(
     "a condition in brackets starts a block only in the conditional jump [cond] M99 P n (Haas); "

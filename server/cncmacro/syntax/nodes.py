@@ -122,13 +122,15 @@ class Bracket:
 class FunctionCall:
     """A function call in an expression: ``SIN[x]`` has one argument, ``ATAN[a]/[b]`` two. ``name`` is upper case.
     ``comma`` is True when the first brackets hold two arguments separated by a comma
-    (``POW[a,b]``, ``ATAN[a,b]``, ``PRM[n,axis]``); a ``/[b]`` after them adds one more."""
+    (``POW[a,b]``, ``ATAN[a,b]``, ``PRM[n,axis]``); a ``/[b]`` after them adds one more.
+    ``bare`` is True when the one argument is a number written without brackets (``SIN30``)."""
 
     name: str
     args: tuple[Expr, ...]
     start: int
     end: int
     comma: bool = False
+    bare: bool = False
 
 
 Expr = Number | Var | IndirectVar | NamedVar | Unary | Binary | Relation | Bracket | FunctionCall

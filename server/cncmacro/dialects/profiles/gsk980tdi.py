@@ -133,6 +133,7 @@ PROFILE = Dialect(
     keyword_abbreviations=False,
     # #i = RAND[#j], #i = SRAND[#j，#k]: random numbers (§3.29.1)
     extra_functions=frozenset({"RAND", "SRAND"}),
+    bare_function_argument=True,  # §3.29.2: "IF[#101>=7.22]THEN #101=SIN30"
     if_without_then=False,
     corner_words=False,
     # §3.19 note 2 (G52), §3.21 note 5 (G54-G59): a shift sets the tool nose radius compensation
