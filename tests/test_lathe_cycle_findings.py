@@ -202,10 +202,10 @@ def test_10_5_more_than_200_shape_blocks_on_gsk_is_a_warning() -> None:
 @pytest.mark.parametrize("dialect", LATHES)
 def test_10_5_grooving_steps_and_relief(dialect: str) -> None:
     text = lines("O0001", "G00 X42. Z2.", "G75 R0.5",
-                 "G75 X20. Z-20. P-500 F0.05",  # a negative step: PS0320
+                 "G75 X20. Z-20. P-500 Q1000 F0.05",  # a negative step: PS0320
                  "G75 X20. Z-20. P500 Q0 F0.05",  # Q0 while Z travels 22: PS0319
                  "G75 X20. Z2. P500 Q0 F0.05",  # Q0 and no travel along Z: fine
-                 "G74 X20. Z-20. Q2000 R-1. F0.05",  # a negative relief: PS0318, a warning
+                 "G74 X20. Z-20. P1000 Q2000 R-1. F0.05",  # a negative relief: PS0318, a warning
                  "M30")  # fmt: skip
     found = coded(check(text, dialect), "cycle-block")
     assert [(at(d)[0], at(d)[3], d.message.split("(alarm ")[1]) for d in found] == [
@@ -213,8 +213,22 @@ def test_10_5_grooving_steps_and_relief(dialect: str) -> None:
 
 
 @pytest.mark.parametrize("dialect", LATHES)
+def test_10_5_a_grooving_end_point_away_along_x_without_its_step_p_is_a_warning(tmp_path: Path, dialect: str) -> None:
+    # G74 from X42 to X20 (22 on the diameter) with no P: neither manual gives P a default (GSK §3.23.5
+    # "0＜Δi"), so a warning on the G74 line, from the text and from the run, shown once; it was nothing.
+    # The run cuts its columns at X42 and at X20 and goes on. A G74 with neither X nor P (drilling) is fine.
+    text = lines("O0001", "T0101", "G00 X42. Z2.", "G74 R0.5", "G74 X20. Z-20. Q2000 F0.05", "G74 Z-20. Q2000 F0.05",
+                 "M30")  # fmt: skip
+    assert findings(text, dialect, "cycle-block") == [(5, 0, 26, "warning")]
+    found = [d for d in analyse_files(tmp_path, {"O0001.nc": text}, dialect) if d.code == "cycle-block"]
+    assert [(d.line + 1, d.severity) for d in found] == [(5, "warning")]
+    assert "the step P is left out" in found[0].message
+    assert run(text, dialect).status == "completed"
+
+
+@pytest.mark.parametrize("dialect", LATHES)
 def test_10_5_a_grooving_step_from_a_variable_is_found_at_run_time(dialect: str) -> None:
-    text = lines("O0001", "#2=-500", "G00 X42. Z2.", "G75 R0.5", "G75 X20. Z-20. P#2 F0.05", "M30")
+    text = lines("O0001", "#2=-500", "G00 X42. Z2.", "G75 R0.5", "G75 X20. Z-20. P#2 Q1000 F0.05", "M30")
     assert findings(text, dialect, "cycle-block") == []
     assert alarm(text, dialect) == (320, 5)
 

@@ -32,6 +32,7 @@ THREAD_MIN_DEPTH = "thread-min-depth"
 THREAD_DEPTH = "thread-depth"
 GROOVE_RELIEF = "groove-relief"
 GROOVE_END = "groove-end"
+GROOVE_STEP_MISSING = "groove-step-missing"  # a warning on every profile: neither manual gives the step a default
 GROOVE_AMOUNT = "groove-amount"
 FIRST_BLOCK = "first-block"
 LAST_BLOCK = "last-block"

@@ -106,9 +106,19 @@ def block_findings(
                                     f"G73：切削次数 R{v:g} 不大于零"))  # fmt: skip
         return out
     if g in GROOVE_CODES and second:
-        for letter, axis in (("P", "X"), ("Q", "Z")):
+        for letter, axis, haas in (("P", "X", "I"), ("Q", "Z", "K")):
             v = words.get(letter)
             if v is None:
+                moved = abs((travel or {}).get(axis) or 0.0)
+                given = {letter, haas} & (set(words) | unknown)  # Haas's one-block G74/G75 steps by I and K
+                if moved > _TOL and not given:  # GSK §3.23.5: "0＜Δi", no default given
+                    out.append(_finding(rules, A.GROOVE_END_POINT, K.GROOVE_STEP_MISSING, None,
+                                        f"{c}: the end point is {moved:g} away along {axis} but the step {letter} "
+                                        f"is left out: the manuals give it no default; the run cuts at the start's "
+                                        f"{axis} and then at the end point's",
+                                        f"{c}：终点沿 {axis} 相距 {moved:g}，但省略了移动量 {letter}："
+                                        f"说明书未给出其默认值；本次运行先在起点的 {axis} 处切削，"
+                                        f"再在终点的 {axis} 处切削"))  # fmt: skip
                 continue
             if v < 0:
                 out.append(_finding(rules, A.GROOVE_AMOUNT, K.GROOVE_AMOUNT, letter,
@@ -270,21 +280,22 @@ def shape_findings(
 
 
 # ---------------------------------------------------------------- at run time
-def _report(p: Planner, found: list[CycleFinding], subject: str) -> None:
-    """Stop with the first sure finding; note the others (warnings), together, and go on.
-    ``subject`` is the diagnostic's (``cycle-block`` or ``cycle-shape``, analysis/codes.py)."""
+def _report(p: Planner, found: list[CycleFinding], subject: str, line: int | None = None) -> None:
+    """Stop with the first sure finding; note the others (warnings), together, on ``line`` (the
+    block running when None), and go on. ``subject`` is the diagnostic's (``cycle-block`` or
+    ``cycle-shape``, analysis/codes.py)."""
     for f in found:
         if f.sure and f.alarm is not None:
             raise MacroAlarm(f.alarm, f.message, subject)
     if found:  # one note: the analysis shows one finding of a code per line
         en = "; ".join(str(f.message) for f in found)
         zh = "；".join(f.message.zh for f in found)
-        p.host.note("cycle", detail(en, zh), None, subject)
+        p.host.note("cycle", detail(en, zh), line, subject)
 
 
-def check_cycle_block(p: Planner, g: float, words: dict[str, float]) -> None:
-    """Refuse a block of lathe cycle ``g`` whose ``words`` (U and W by letter) the control
-    alarms on; the first block's parameters are in ``p.cycle_params``."""
+def check_cycle_block(p: Planner, g: float, words: dict[str, float], line: int | None = None) -> None:
+    """Refuse a block of lathe cycle ``g`` on ``line`` whose ``words`` (U and W by letter) the
+    control alarms on; the first block's parameters are in ``p.cycle_params``."""
     rules = p.dialect.cycle_rules
     if rules is None:
         return
@@ -297,7 +308,7 @@ def check_cycle_block(p: Planner, g: float, words: dict[str, float]) -> None:
             travel[axis] = words[axis] - p.pos[i]
         else:
             travel[axis] = words.get(inc, 0.0)
-    _report(p, block_findings(rules, g, words, p.cycle_params.get(g), travel), "cycle-block")
+    _report(p, block_findings(rules, g, words, p.cycle_params.get(g), travel), "cycle-block", line)
 
 
 def check_shape(p: Planner, shape: ShapeReading) -> None:

@@ -125,7 +125,7 @@ def lathe_cycle(
     """Carry out a block of lathe cycle ``g`` (module docstring): (moved, the shape to read or run)."""
     if g in SHAPE_CODES:
         words = block_words(p, axes, inc, other)
-        check_cycle_block(p, g, words)
+        check_cycle_block(p, g, words, line)
         if ("P" in words and "Q" in words) if g == FINISHING else second_block(p, g, words):
             call = ShapeCall(g, words["P"], words["Q"])
             begin_shape(p, call, words, file, line)
@@ -146,10 +146,10 @@ def _other_cycle(
     if plan is not None or g in CHECKED_CYCLES:
         words = block_words(p, axes, inc, other)
         if not second_block(p, g, words):  # the first block: its parameters
-            check_cycle_block(p, g, dict(other))
+            check_cycle_block(p, g, dict(other), line)
             p.cycle_params[g] = dict(other)
             return False, None
-        check_cycle_block(p, g, words)
+        check_cycle_block(p, g, words, line)
         if plan is not None:
             plan(p, words, file, line, p.target(axes, inc))
             return True, None
