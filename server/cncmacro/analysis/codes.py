@@ -54,6 +54,7 @@ from ..dialects.alarms import (
     OVERTRAVEL_PLUS,
     P_VALUE_RANGE,
     PECK_Q_MISSING,
+    POLAR_START,
     PROGRAM_NOT_FOUND,
     RECIPROCATION_AMOUNT,
     REFERENCE_IN_CYCLE,
@@ -338,6 +339,11 @@ CODES: dict[str, Code] = _codes(
                 "刀具半径补偿（G41/G42）有效时指令了跳转 G31（FANUC PS0035、三菱 P608；"
                 "系统手册只要求先用 G40 取消而未给出报警时为警告）。"),
          RUN, (CUTTER_SKIP,), ("cutter-skip",), milder=WARNING),
+    Code("polar-start", ERROR,
+         detail("Polar coordinate interpolation (G12.1) started under feed per revolution (G99) or in tool nose "
+                "radius compensation (GSK980TDi).",
+                "在每转进给（G99）状态或刀尖半径补偿中启动极坐标插补（G12.1）（广数 GSK980TDi）。"),
+         RUN, (POLAR_START,), ("polar-start",)),
     Code("cutter-offset", HINT,
          detail("G41/G42 with a D whose offset has no value in the run: the tool centre is drawn on the programmed "
                 "path.",

@@ -82,6 +82,9 @@ RECIPROCATION_AMOUNT = 9086
 # the GSK980TDi's G22/G23 beside another G code or an M, S, T (machine/block_rules.py): no number
 # given either, shown unnumbered
 NOT_ALONE = 9022
+# the GSK980TDi's G12.1 under G99 or in tool nose radius compensation (planner/one_shot.py): no
+# number given, shown unnumbered
+POLAR_START = 9121
 P_VALUE_RANGE = 291
 COUNT_TWICE = 293
 NO_VARIABLE_NAME = 1098
@@ -193,6 +196,11 @@ ALARMS: dict[int, AlarmDoc] = {
             "往复进给循环（G86）的进刀量不当",
         ),
         AlarmDoc(NOT_ALONE, "the code must be in a block of its own", "该代码须单独编为一段"),
+        AlarmDoc(
+            POLAR_START,
+            "polar coordinate interpolation started under G99 or in tool nose radius compensation",
+            "在 G99 状态或刀尖半径补偿中启动极坐标插补",
+        ),
         AlarmDoc(P_VALUE_RANGE, "P value out of range", "P值超出范围"),
         AlarmDoc(COUNT_TWICE, "repeat count given in both P and L", "P和L同时指定了调用次数"),
         AlarmDoc(NO_VARIABLE_NAME, "no such variable name", "没有该变量名"),

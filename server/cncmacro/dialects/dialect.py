@@ -341,6 +341,10 @@ class Dialect:
     variable_names: bool = False
     # §3 functions beyond the common set: names (POW, ADP, PRM) and extra forms by signature (ATAN[a,b])
     extra_functions: frozenset[str] = frozenset()
+    # §10.1 polar coordinate interpolation (G12.1) may not start under feed per revolution (G99)
+    # or in tool nose radius compensation (G41/G42): the control's alarm (GSK980TDi §3.9 note 3);
+    # elsewhere it starts as written
+    polar_start_alarm: bool = False
     # §3 a one-argument function followed by a bare number (``SIN30``, the GSK980TDi manual's own
     # example) reads it as its argument; elsewhere a ``syntax`` finding and alarm 114
     bare_function_argument: bool = False

@@ -23,7 +23,7 @@ from .offset_travel import keep_machine_position, work_offsets
 from .positions import WORK_BASE, work_offset
 from .probing import skip_block
 from .reciprocating_feed import reciprocating_feed
-from .virtual_planes import switch_virtual_plane
+from .virtual_planes import refuse_polar_start, switch_virtual_plane
 from .whereabouts import coordinates_set, lose, placed, referenced, shift_cancelled
 
 if TYPE_CHECKING:
@@ -107,6 +107,7 @@ def one_shot(
         return False, None
     polar = p.dialect.polar_interpolation_codes.get(g)
     if polar is not None:  # G12.1 / G13.1 (virtual_planes.py)
+        refuse_polar_start(p, g, polar)
         switch_virtual_plane(p, g, polar)
         return False, None
     if g in p.dialect.preset_codes:  # G92.1 IP0: the shift of the named axes cancelled, no move

@@ -20,11 +20,37 @@ import math
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
+from ..bilingual import detail
+from ..dialects.alarms import POLAR_START
+from .alarms import MacroAlarm
+from .cutter_stage import LEFT, RIGHT
+
 if TYPE_CHECKING:
     from .planner import Planner
 
+PER_REVOLUTION = 99.0  # a lathe's G99 (system A), the feed group's code
+
 VIRTUAL_PLANE = "virtual plane"  # the ``modal`` key of the mode on (its code), absent when off
 CYLINDER = "cylinder radius"  # the ``modal`` key of cylindrical interpolation's radius, while it is on
+
+
+def refuse_polar_start(p: Planner, g: float, on: bool) -> None:
+    """Polar interpolation code ``g`` starting it (``on``) under feed per revolution (G99) or in tool nose
+    radius compensation (G41/G42): the control's alarm where the profile has it
+    (``Dialect.polar_start_alarm``: GSK980TDi §3.9 note 3, "在C刀补中间或G99状态下不能启动极坐标插补，
+    否则报警")."""
+    if not on or not p.dialect.polar_start_alarm:
+        return
+    code = p.modal.get("cutter")
+    if code in (LEFT, RIGHT):
+        raise MacroAlarm(POLAR_START, detail(
+            f"G{g:g} starts polar coordinate interpolation in tool nose radius compensation (G{code:g}): "
+            "cancel it with G40 first",
+            f"刀尖半径补偿（G{code:g}）中用 G{g:g} 启动极坐标插补：请先用 G40 取消补偿"), "polar-start")  # fmt: skip
+    if p.modal.get("feed") == PER_REVOLUTION:
+        raise MacroAlarm(POLAR_START, detail(
+            f"G{g:g} starts polar coordinate interpolation under feed per revolution (G99): select G98 first",
+            f"每转进给（G99）状态下用 G{g:g} 启动极坐标插补：请先指令 G98"), "polar-start")  # fmt: skip
 
 
 def switch_virtual_plane(p: Planner, g: float, on: bool, radius: float | None = None) -> None:

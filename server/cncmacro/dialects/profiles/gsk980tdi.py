@@ -13,6 +13,7 @@ from ..alarms import (
     OFFSET_NUMBER,
     OVERTRAVEL_MINUS,
     OVERTRAVEL_PLUS,
+    POLAR_START,
     RECIPROCATION_AMOUNT,
 )
 from ..dialect import ANY_BLOCK, Dialect
@@ -42,9 +43,10 @@ PROFILE = Dialect(
     # the soft limits and the offset numbers are the machine's (docs/semantics.md §11); no source
     # at hand gives the GSK980TDi's numbers for these alarms; G34's lead below zero: "因R的增加/减小使
     # 螺距…出现负值时产生报警" (§3.24.4), no number; nor for G86's I0 or I below R ("系统发出报警",
-    # §3.23.11); nor for G22/G23 sharing a block (§3.31 note 6)
+    # §3.23.11); nor for G22/G23 sharing a block (§3.31 note 6); nor for G12.1 under G99 or G41/G42
+    # (§3.9 note 3)
     unnumbered_alarms=frozenset(
-        {OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER, ILLEGAL_LEAD, RECIPROCATION_AMOUNT, NOT_ALONE}
+        {OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER, ILLEGAL_LEAD, RECIPROCATION_AMOUNT, NOT_ALONE, POLAR_START}
     ),
     h_codes=True,
     bracket_names=True,
@@ -133,7 +135,9 @@ PROFILE = Dialect(
     keyword_abbreviations=False,
     # #i = RAND[#j], #i = SRAND[#j，#k]: random numbers (§3.29.1)
     extra_functions=frozenset({"RAND", "SRAND"}),
-    bare_function_argument=True,  # §3.29.2: "IF[#101>=7.22]THEN #101=SIN30"
+    bare_function_argument=True,
+    # §3.9 note 3: "在C刀补中间或G99状态下不能启动极坐标插补，否则报警"
+    polar_start_alarm=True,  # §3.29.2: "IF[#101>=7.22]THEN #101=SIN30"
     if_without_then=False,
     corner_words=False,
     # §3.19 note 2 (G52), §3.21 note 5 (G54-G59): a shift sets the tool nose radius compensation
