@@ -146,6 +146,10 @@ class Dialect:
     # of their blocks is the cycle's (none moves an axis), the tool is left at its start point, and
     # the run notes once a block that the cycle is not simulated (the `not-simulated` information)
     unsimulated_codes: frozenset[float] = frozenset()
+    # §10.1 automatic tool offset measurement (GSK980TDi G36 X_, G37 Z_, §3.17): the tool goes to
+    # the measuring position at rapid whatever the motion in force, which stays; the offset's update
+    # by the measuring signal is not simulated (a `not-simulated` note)
+    tool_measure_codes: frozenset[float] = frozenset()
     # §10.3 the code of an independent reciprocating feed cycle along Z (GSK980TDi's G86 Z A I R F,
     # planner/reciprocating_feed.py); None where the control has none
     reciprocating_feed_code: float | None = None

@@ -121,7 +121,7 @@ def one_shot(
             frame_moved(p, change)
         return False, None
     if axes or inc:  # any other one-shot code with axis words: move in the modal mode
-        mode = p.modal.get("motion", 0.0)
+        mode = _one_shot_mode(p, g, line)
         target = p.target(axes, inc)
         if p.lathe or p.modal.get("distance", 90.0) == 90.0:
             placed(p, axes)
@@ -266,3 +266,20 @@ def _work_offset_base(p: Planner, l_value: float, number: int) -> int:
             detail(f"G10 L20 P{number}: P must be 1 to {count}", f"G10 L20 P{number}：P 必须在 1～{count} 之间"),
         )
     return p.dialect.extra_offset_variables + 20 * (number - 1)
+
+
+def _one_shot_mode(p: Planner, g: float, line: int) -> float:
+    """The mode a move of one-shot code ``g`` on ``line`` is made in: the motion in force, but at
+    rapid for an automatic tool offset measurement (``Dialect.tool_measure_codes``: GSK980TDi §3.17,
+    "在执行程序段 G36 X__(或 G37 Z__)时，刀具首先快速移动到代码的测量位置", the tool first goes to the
+    measuring position at rapid), whose measurement is noted as not simulated."""
+    if g not in p.dialect.tool_measure_codes:
+        return p.modal.get("motion", 0.0)
+    p.host.note("simulation", detail(
+        f"G{g:g} is not simulated beyond its move: the tool goes to the measuring position at rapid (the last "
+        "stretch at the measuring feed, parameter No.141, is timed at rapid too) and the tool offset is left as "
+        "it was, as if the measuring signal came exactly there",
+        f"G{g:g} 仅模拟其移动：刀具以快速移动速度到达测量位置（最后一段按参数№.141 的测量速度移动，也按快速移动计时），"
+        "刀具偏置值保持不变，视为测量到达信号恰在该位置发出"),
+        line, "not-simulated")  # fmt: skip
+    return 0.0
