@@ -146,6 +146,10 @@ class Dialect:
     # of their blocks is the cycle's (none moves an axis), the tool is left at its start point, and
     # the run notes once a block that the cycle is not simulated (the `not-simulated` information)
     unsimulated_codes: frozenset[float] = frozenset()
+    # §10.1 the chamfer and corner rounding words of a G01/G02/G03 block (GSK980TDi §3.11: L a
+    # straight chamfer, D a rounding arc), noted as not simulated (planner/chamfer_words.py); None:
+    # the profile has none
+    chamfer_words: tuple[str, str] | None = None
     # §10.1 automatic tool offset measurement (GSK980TDi G36 X_, G37 Z_, §3.17): the tool goes to
     # the measuring position at rapid whatever the motion in force, which stays; the offset's update
     # by the measuring signal is not simulated (a `not-simulated` note)

@@ -34,6 +34,7 @@ from .angled_moves import (
 from .arc_checks import arc_finding, no_centre
 from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
+from .chamfer_words import note_chamfer
 from .conic_moves import CURVE_FAULT, conic_points
 from .cutter_stage import (
     UNCOMPENSATED_CODES,
@@ -383,6 +384,8 @@ class Planner:
                 return uncompensated(self, lambda: one_shot(self, one, axes, incremental, other, file, line))
             return one_shot(self, one, axes, incremental, other, file, line)
         mode = self.modal.get("motion", 0.0)
+        if self.dialect.chamfer_words is not None:  # GSK980TDi's L and D: not simulated (chamfer_words.py)
+            note_chamfer(self, mode, other, line)
         drawing = self.dialect.drawing_angle
         if drawing is not None and self.block_angle is None and drawing[0] in other and mode in (0.0, 1.0):
             # GSK980TDi's G01 X_ Q_: the angle as a word of its own (angled_moves.py)

@@ -83,6 +83,8 @@ PROFILE = Dialect(
     unsimulated_codes=frozenset({74.1, 75.1}),
     # §3.17: "刀具首先快速移动到代码的测量位置" (the tool first goes to the measuring position at rapid)
     tool_measure_codes=frozenset({36.0, 37.0}),
+    # §3.11: "直线倒角的代码地址为 L", "圆弧倒角的代码地址为 D"
+    chamfer_words=("L", "D"),
     # G86 Z(start) A(end) I(stroke) R(advance) F: Z feeds back and forth to A and returns (§3.23.11)
     reciprocating_feed_code=86.0,
     # "G22/G23代码不能与其它G代码及MST代码共段，否则发出报警" (§3.31 note 6); "G12.1，G13.1，G16，G15要
