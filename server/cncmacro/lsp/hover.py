@@ -178,7 +178,7 @@ def variable_hover(ls: CncMacroServer, cur: Cursor, number: int) -> str:
         shared = dialect.shared_common(number)
         if shared is not None:
             lines += ["", t("part_system_shared" if shared else "part_system_own", loc)]
-        places, pending = write_places(ls, number)
+        places, pending = write_places(ls, cur, number)
         shown = [f"{Path(path).name}:{line + 1}" for path, line in places[:MAX_PLACES]]
         if places or not pending:
             lines += _places(t("written_at", loc), shown, len(places), t("not_written", loc), loc)
@@ -241,13 +241,14 @@ def _places(heading: str, entries: list[str], total: int, none: str, loc: str) -
     return ["", f"{heading}:", *_bulleted(entries, loc, total)]
 
 
-def write_places(ls: CncMacroServer, number: int) -> tuple[list[tuple[str, int]], list[str]]:
-    """Every (file, line) in the workspace that assigns ``#number`` (from each file's map of
-    the lines that write each variable), and the files whose map is not made yet (a huge file
+def write_places(ls: CncMacroServer, cur: Cursor, number: int) -> tuple[list[tuple[str, int]], list[str]]:
+    """Every (file, line) of the cursor's machine that assigns ``#number`` (from each file's map
+    of the lines that write each variable; a file of another control is another machine:
+    ``WorkspaceIndex.machine_sites``), and the files whose map is not made yet (a huge file
     being read, or indexed in steps: ``site_steps.py``)."""
     places: list[tuple[str, int]] = []
     pending: list[str] = []
-    for f in ls.index.file_sites():
+    for f in ls.index.machine_sites(cur.doc.path, cur.doc.dialect):
         if not f.sites.ready:
             index_soon(f.sites)
             pending.append(f.path)

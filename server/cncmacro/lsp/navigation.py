@@ -5,7 +5,8 @@ dialect has that local subprogram call) leads to the N label it lands on
 (``machine.jumps`` says which of duplicate labels); the ``P`` of ``G65``/``G66``/``M98`` leads
 to the called program's file and line, found by the program library. References cover N
 labels (within their program), O programs (every call across the workspace) and variables
-(locals within their program, the others across the workspace). Renaming a label rewrites the
+(locals within their program, the others across the files of the same machine: the same
+machine file and profile). Renaming a label rewrites the
 label and every jump to it.
 """
 
@@ -192,7 +193,8 @@ def program_references(
 def variable_references(
     ls: CncMacroServer, cur: Cursor, number: int, include_declaration: bool
 ) -> list[types.Location]:
-    """Where ``#number`` is mentioned: a local within its program, the others everywhere."""
+    """Where ``#number`` is mentioned: a local within its program, the others in every file of
+    the cursor's machine (``WorkspaceIndex.machine_sites``: not in a file of another control)."""
     encoding = ls.documents.encoding
     out: list[types.Location] = []
     kind = describe.variable_class(number, cur.doc.dialect)
@@ -202,7 +204,7 @@ def variable_references(
             (FileSites(cur.doc.path, cur.doc.lines, cur.doc.sites), unit.start, unit.end)
         ]
     else:
-        files = [(f, 0, None) for f in ls.index.file_sites()]
+        files = [(f, 0, None) for f in ls.index.machine_sites(cur.doc.path, cur.doc.dialect)]
     for f, start, end in files:
         uri = ls.uri_for_path(f.path)
         for i, s in f.sites.variable_uses(number, start, end):

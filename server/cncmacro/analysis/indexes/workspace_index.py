@@ -262,6 +262,17 @@ class WorkspaceIndex:
                 kept[path] = hit
             yield FileSites(path, loaded.lines, hit[1])
 
+    def machine_sites(self, path: str, dialect: Dialect) -> Iterator[FileSites]:
+        """``file_sites`` of the one machine the file at ``path``, read in ``dialect``, runs on:
+        the files read with the same machine file (``machine_of``) in the same profile. A
+        control's commons and system variables are one memory for all its programs; a file of
+        another control in the same folder (its dialect comment names another profile) or under
+        another machine file is another machine, whose ``#100`` is not this one's."""
+        machine = self.machine_of(path)
+        for f in self.file_sites():
+            if f.sites.dialect.name == dialect.name and (f.path == path or self.machine_of(f.path) == machine):
+                yield f
+
     def programs(self) -> Iterator[ProgramEntry]:
         """Every program, named as the outline names it (``Program.named_units``)."""
         for f in self.loaded_files():
