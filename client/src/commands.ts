@@ -88,7 +88,7 @@ async function selectDialect(server: ServerController): Promise<void> {
   const chinese = vscode.env.language.toLowerCase().startsWith('zh');
   const items: (vscode.QuickPickItem & { dialect: settings.Dialect })[] = profiles.map((p) => ({
     dialect: p.name,
-    label: p.title,
+    label: chinese && p.titleZh ? p.titleZh : p.title,
     description: `${p.name} · ${chinese && p.summaryZh ? p.summaryZh : p.summary}`,
   }));
   for (const item of items) {

@@ -53,6 +53,7 @@ export interface DocumentDialect {
 export interface Profile {
   name: string;
   title: string;
+  titleZh: string;
   summary: string;
   summaryZh: string;
   aliases: string[];

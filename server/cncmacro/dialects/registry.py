@@ -60,11 +60,13 @@ def names_and_aliases() -> dict[str, str]:
 
 def profile_facts() -> list[dict[str, Any]]:
     """Each profile as a client shows it (the language server's ``cncmacro/profiles`` answer and
-    ``cncmacro profiles --json``): name, title, summaries, aliases, lathe or mill, axes, commons."""
+    ``cncmacro profiles --json``): name, titles and summaries (English and Chinese), aliases,
+    lathe or mill, axes, commons."""
     return [
         {
             "name": d.name,
             "title": d.title,
+            "titleZh": d.title_zh or d.title,
             "summary": d.summary,
             "summaryZh": d.summary_zh,
             "aliases": list(d.aliases),

@@ -46,7 +46,7 @@ from .texts import t
 log = logging.getLogger(__name__)
 CONFIGURATION_TIMEOUT = 2.0  # seconds to wait for the editor's settings before analysing
 DOCUMENT_DIALECT = "cncmacro/documentDialect"  # {"uri"} -> {"dialect", "title", "lathe", "source"} or null
-PROFILES = "cncmacro/profiles"  # {} -> [{"name", "title", "summary", "summaryZh", "aliases", "lathe", ...}]
+PROFILES = "cncmacro/profiles"  # {} -> [{"name", "title", "titleZh", "summary", "summaryZh", "aliases", "lathe", ...}]
 _Handler = tuple[Callable[..., Any], tuple[Any, ...], None]  # what an lsp_method yields to pygls: handler, arguments
 
 
@@ -400,13 +400,15 @@ def build_server() -> CncMacroServer:
 
     @server.feature(DOCUMENT_DIALECT)
     def document_dialect(ls: CncMacroServer, params: Any) -> dict[str, Any] | None:
-        """The dialect an open document is read in and what decided it (the status bar)."""
+        """The dialect an open document is read in, its title in the editor's language (the
+        status bar shows it), and what decided it."""
         uri = params.get("uri") if isinstance(params, dict) else getattr(params, "uri", None)
         doc = ls.documents.by_uri.get(uri) if isinstance(uri, str) else None
         if doc is None:
             return None
         source = ls.documents.dialect_source(doc)
-        return {"dialect": doc.dialect.name, "title": doc.dialect.title, "lathe": doc.dialect.lathe, "source": source}
+        title = doc.dialect.shown_title(ls.locale)
+        return {"dialect": doc.dialect.name, "title": title, "lathe": doc.dialect.lathe, "source": source}
 
     @server.feature(PROFILES)
     def profiles(ls: CncMacroServer, params: Any) -> list[dict[str, Any]]:
