@@ -25,8 +25,9 @@ without acceleration a corner costs no time; feed and rapid overrides at 100 %.
 - Under G93 (inverse time feed, where the profile's table has it in the feed group) a cut (G01,
   G02, G03) takes 1/F minutes whatever its length (``inverse_time_seconds``); F belongs in every
   such block, and one without is timed at the last F and noted (missing_feed.py).
-- Lengths are in mm (a G20 program's inches times 25.4); on a lathe X is a diameter, so the tool
-  moves half of an X difference. A rotary axis's degrees count as millimetres, as in a FANUC
+- Lengths are in mm (a G20 program's inches times 25.4; a rotary axis's rapid is timed in degrees
+  in either unit, ``inch_scale``); on a lathe X is a diameter, so the tool moves half of an X
+  difference. A rotary axis's degrees count as millimetres, as in a FANUC
   feed of a move with rotary axes.
 - A mill's drilling cycle (G73, G74, G76, G81–G89) takes the time of its steps
   (``planner/drill_cycles.py`` lists them): the positioning as a rapid, then each rapid and
@@ -50,6 +51,8 @@ from itertools import pairwise
 from math import atan2, dist, hypot, sqrt
 from operator import mul, sub
 from typing import TYPE_CHECKING
+
+from ..dialects.describe import ROTARY_AXES
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -87,6 +90,10 @@ class MoveTimes:
         self.rapid_seconds_per_mm = tuple(
             60.0 * (0.5 if i == diameter else 1.0) / max(timing.rapid_rate(a), 1e-9) for i, a in enumerate(axes)
         )
+        # mm (degrees) per program unit of each axis under G20: a rotary axis stays in degrees
+        self.inch_scale = tuple(1.0 if a in ROTARY_AXES else INCH for a in axes)
+        # the same seconds per program unit under G20 (``rapid_seconds``)
+        self.rapid_seconds_per_inch = tuple(map(mul, self.rapid_seconds_per_mm, self.inch_scale))
         # plane code -> its two axes (indexes) and how far the tool goes per unit of each
         self.planes: dict[float, tuple[int, int, float, float]] = {}
         for code, (a, b) in _PLANE_AXES.items():
@@ -117,10 +124,12 @@ class MoveTimes:
         return sqrt(max(full * full - 0.75 * dx * dx, 0.0))
 
     def rapid_seconds(self, start: Sequence[float], end: Sequence[float], unit: float) -> float:
-        """Seconds a rapid takes: its slowest axis's (``unit`` is 25.4 under G20, else 1). A
-        machine has an axis at least, so ``max`` always has a value to take."""
-        slowest: float = max(map(mul, map(abs, map(sub, end, start)), self.rapid_seconds_per_mm))
-        return slowest * unit
+        """Seconds a rapid takes: its slowest axis's (``unit`` is 25.4 under G20, else 1; a
+        rotary axis's degrees are degrees in either unit, ``inch_scale``). A machine has an axis
+        at least, so ``max`` always has a value to take."""
+        per_unit = self.rapid_seconds_per_mm if unit == 1.0 else self.rapid_seconds_per_inch
+        slowest: float = max(map(mul, map(abs, map(sub, end, start)), per_unit))
+        return slowest
 
     def arc_length(
         self, mode: float, plane: float, start: Sequence[float], end: Sequence[float], centre: Sequence[float]

@@ -13,6 +13,9 @@ library/limits_settings.py; docs/semantics.md §11).
   counts as 0 unless given. A ``G53`` move names machine
   coordinates itself, so it is always checked. ``program_bounds`` turns the travel into the
   program's coordinates once for a run of moves made under the same offsets.
+- **Units.** The travel is in mm whatever G20/G21 says, a rotary axis's (A, B, C) in degrees: under
+  G20 a linear axis's inches are taken times 25.4 and a rotary axis's degrees as they are
+  (``axis_unit``).
 - **Spindle.** An S above the top speed under G97 is a warning; the spindle turns at its top
   speed (cycle_time.py times a feed per revolution with it).
 - **Tools.** A T whose tool (a lathe's: the digits before the offset number) the machine does not
@@ -31,9 +34,9 @@ from typing import TYPE_CHECKING
 
 from ..bilingual import detail
 from ..dialects.alarms import OFFSET_NUMBER, OVERTRAVEL_MINUS, OVERTRAVEL_PLUS
+from ..dialects.describe import ROTARY_AXES
 from .alarms import MacroAlarm
 from .arcs import ARC_MODES
-from .cycle_time import INCH
 from .tool_offsets import lathe_offset_number
 from .whereabouts import frame_offset, machine_known
 
@@ -50,9 +53,11 @@ SPINDLE_NOTE = "spindle-limit"  # the note subjects (the analysis's codes)
 TOOL_NOTE = "unknown-tool"
 
 
-def unit_of(p: Planner) -> float:
-    """mm per program unit: 25.4 under G20, else 1."""
-    return INCH if p.modal.get("units") == 20.0 else 1.0
+def axis_unit(p: Planner, i: int) -> float:
+    """mm (degrees) per program unit of axis ``i``: 25.4 under G20 for a linear axis; a rotary
+    axis is in degrees in either unit (FANUC: "The unit of data input for degrees remains
+    unchanged"), ``MoveTimes.inch_scale``."""
+    return p.times.inch_scale[i] if p.modal.get("units") == 20.0 else 1.0
 
 
 def program_bounds(p: Planner) -> Bounds:
@@ -61,10 +66,10 @@ def program_bounds(p: Planner) -> Bounds:
     travel = p.travel
     if travel is None:
         return ()
-    unit = unit_of(p)
     out = []
     for i, low, high in travel:
         if machine_known(p, i):
+            unit = axis_unit(p, i)
             offset = frame_offset(p, i)
             out.append((i, low / unit - offset, high / unit - offset, offset))
     return tuple(out)
@@ -75,10 +80,10 @@ def g53_bounds(p: Planner, named: Sequence[int]) -> Bounds:
     out in (one_shot.py): machine coordinates need no offset to be known there."""
     if p.travel is None:
         return ()
-    unit = unit_of(p)
     out = []
     for i, low, high in p.travel:
         if i in named:
+            unit = axis_unit(p, i)
             offset = frame_offset(p, i)
             out.append((i, low / unit - offset, high / unit - offset, offset))
     return tuple(out)
@@ -217,18 +222,19 @@ def _alarm(p: Planner, bounds: Bounds, found: _Leaving) -> MacroAlarm:
     coordinates and how far past the limit, in mm."""
     _, k, side, value = found
     i, low, high, offset = bounds[k]
-    unit = unit_of(p)
+    unit = axis_unit(p, i)
     axis = p.dialect.axes[i]
     limit = (high if side > 0 else low) + offset
     machine = (value + offset) * unit
     past = _beyond(bounds, found) * unit
     sign = "+" if side > 0 else "-"
     number = OVERTRAVEL_PLUS if side > 0 else OVERTRAVEL_MINUS
+    measure = "deg" if axis in ROTARY_AXES else "mm"
     return MacroAlarm(number, detail(
-        f"{axis}{sign} over travel: the move goes to machine {axis}{machine:.3f}, {past:.3f} mm past the "
+        f"{axis}{sign} over travel: the move goes to machine {axis}{machine:.3f}, {past:.3f} {measure} past the "
         f"{sign} limit {axis}{limit * unit:.3f} ([limits] travel); the axis stops at the limit",
         f"{axis} 轴{sign}向超程：该移动要到达机床坐标 {axis}{machine:.3f}，超出{sign}向限位 "
-        f"{axis}{limit * unit:.3f}（[limits] travel）{past:.3f} mm；轴停在限位处"))  # fmt: skip
+        f"{axis}{limit * unit:.3f}（[limits] travel）{past:.3f} {measure}；轴停在限位处"))  # fmt: skip
 
 
 # ---------------------------------------------------------------- spindle and tools
