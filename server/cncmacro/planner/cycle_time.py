@@ -23,8 +23,9 @@ without acceleration a corner costs no time; feed and rapid overrides at 100 %.
   long axis by the lead F per revolution whatever G98/G99 says; G34's lead grows by its change
   per revolution. A feed move without a feed (F0, or per revolution with S0) takes no time.
 - Under G93 (inverse time feed, where the profile's table has it in the feed group) a cut (G01,
-  G02, G03) takes 1/F minutes whatever its length (``inverse_time_seconds``); F belongs in every
-  such block, and one without is timed at the last F and noted (missing_feed.py).
+  G02, G03) takes 1/F minutes whatever its length (``inverse_time_seconds``), never faster than
+  ``top_feed``; F belongs in every such block, and one without is timed at the last F and noted
+  (missing_feed.py).
 - Lengths are in mm (a G20 program's inches times 25.4; a rotary axis's rapid is timed in degrees
   in either unit, ``inch_scale``); on a lathe X is a diameter, so the tool moves half of an X
   difference. A rotary axis's degrees count as millimetres, as in a FANUC
@@ -188,11 +189,14 @@ class MoveTimes:
                 return length / rate * 60.0 if rate > 0.0 and length > 0.0 else 0.0
         return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit, False) * 60.0
 
-    @staticmethod
-    def inverse_time_seconds(feed: float) -> float:
+    def inverse_time_seconds(self, feed: float, length: float = 0.0) -> float:
         """A cut's seconds under G93 (inverse time feed): 1/F minutes whatever its length, an
-        arc's too (Haas: "60 (seconds) divided by the F value"); none at F0."""
-        return 60.0 / feed if feed > 0.0 else 0.0
+        arc's too (Haas: "60 (seconds) divided by the F value"); none at F0. A cut ``length`` mm
+        long that 1/F minutes would move faster than ``top_feed`` goes at ``top_feed``: the control
+        clamps the feed it works out as any other."""
+        if feed <= 0.0:
+            return 0.0
+        return max(60.0 / feed, length / self.top_feed * 60.0)
 
     def straight_rate(
         self, feed: float, per_rev: bool, speed: float, css: bool, unit: float = 1.0, top: float | None = None

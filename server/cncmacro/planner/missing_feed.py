@@ -82,10 +82,11 @@ def note_missing_feed(p: Planner, feed: float, per_rev: bool, speed: float, line
         "请在切削前指令 S"), line, NO_FEED)  # fmt: skip
 
 
-def inverse_time_cut(p: Planner, feed: float, line: int) -> float:
-    """The seconds of a cut on ``line`` under G93 at inverse time ``feed`` (cycle_time.py's
-    ``inverse_time_seconds``), noting once a run a block that writes no F of its own (timed at
-    the last F) and, as any cut, one with no feed at all."""
+def inverse_time_cut(p: Planner, feed: float, line: int, length: float = 0.0) -> float:
+    """The seconds of a cut on ``line``, ``length`` mm long, under G93 at inverse time ``feed``
+    (cycle_time.py's ``inverse_time_seconds``, which clamps it at the highest cutting feed),
+    noting once a run a block that writes no F of its own (timed at the last F) and, as any cut,
+    one with no feed at all."""
     codes = p.codes
     if feed <= 0.0:
         note_missing_feed(p, feed, False, 0.0, line)
@@ -99,4 +100,4 @@ def inverse_time_cut(p: Planner, feed: float, line: int) -> float:
             f"系统要求每个切削程序段都指令 F；加工时间按上一个 F{feed:g}（{60.0 / feed:g} 秒）计算；"
             f"请在每个 G93 切削程序段中指令 F"),
             line, NO_FEED)  # fmt: skip
-    return p.times.inverse_time_seconds(feed)
+    return p.times.inverse_time_seconds(feed, length)

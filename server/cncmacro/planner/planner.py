@@ -723,7 +723,7 @@ class Planner:
                 if CYLINDER in modal:  # C's degrees on the cylinder's surface (virtual_planes.py)
                     length = surface_length(self, start, end, length)
             if modal.get("feed") == INVERSE_TIME and mode in INVERSE_TIME_MODES and legs is None and cycle is None:
-                seconds = inverse_time_cut(self, feed, line)  # G93: 1/F minutes (missing_feed.py)
+                seconds = inverse_time_cut(self, feed, line, length * unit)  # G93: 1/F minutes (missing_feed.py)
             else:
                 seconds = self.feed_seconds(mode, length, feed, start, end, unit, lead_change, line)
             self.cut_length += length * unit
