@@ -176,7 +176,8 @@ class MoveTimes:
         spindle clamped at ``clamp``, ``G50 S``). A thread's (``thread_modes``) is per revolution,
         along its long axis, its lead growing by ``lead_change`` per revolution (G34). A skip
         move (``SKIP_MODE``) goes at ``skip_feed`` at most, where its rate is the same all along."""
-        if mode in self.thread_modes:
+        thread = mode in self.thread_modes
+        if thread:
             length = self.long_axis(start, end)
             if lead_change and length > 0.0 and feed > 0.0:
                 feed = _mean_lead(length, feed, lead_change)
@@ -187,7 +188,7 @@ class MoveTimes:
             rate = self.straight_rate(feed, per_rev, speed, css, unit, top)
             if rate is not None:
                 return length / rate * 60.0 if rate > 0.0 and length > 0.0 else 0.0
-        return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit, False) * 60.0
+        return self.per_rev_minutes(length, feed, speed, css, clamp, start, end, unit, not thread) * 60.0
 
     def inverse_time_seconds(self, feed: float, length: float = 0.0) -> float:
         """A cut's seconds under G93 (inverse time feed): 1/F minutes whatever its length, an
@@ -229,7 +230,10 @@ class MoveTimes:
         diameter where the tool is, never above ``clamp`` and the spindle's top speed: over a
         straight move D changes linearly, so dt = dl·π·D / (1000·V·F) integrates to the piece's
         length times its mean diameter where the spindle is not clamped, and to length / (F·top)
-        where it is; the move is cut where |D| passes 0 or the clamp's diameter."""
+        where it is; the move is cut where |D| passes 0 or the clamp's diameter. Where F × rpm
+        would pass ``top_feed`` (not a thread's, without ``feed_clamp``) the tool moves at
+        ``top_feed``: the same as a spindle clamped at ``top_feed`` / F, so that speed is the clamp
+        where it is the lower."""
         if feed <= 0.0 or length <= 0.0:
             return 0.0
         d = self.diameter
@@ -241,6 +245,10 @@ class MoveTimes:
                 rate = self.top_feed / unit
             return length / rate
         top = self.timing.max_spindle_speed if clamp is None else min(clamp, self.timing.max_spindle_speed)
+        if feed_clamp and feed * top * unit > self.top_feed:
+            # F x rpm never above the highest cutting feed: where it would be, the tool moves as if
+            # the spindle turned at top_feed / F (the control clamps the feed, not the spindle)
+            top = self.top_feed / (feed * unit)
         if speed <= 0.0 or top <= 0.0:
             return 0.0
         x0, x1 = start[d] * unit, end[d] * unit  # diameters, mm
