@@ -134,3 +134,56 @@ def test_cncmacro_run_reads_the_guard_with_vacant_values_as_before(tmp_path: Pat
     code, out, _ = cli("run", "--json", "--no-save", str(tmp_path / "O0100.nc"))
     result = json.loads(out)
     assert code != 0 and result["alarm"]["number"] == 112 and result["alarm"]["line"] == 3
+
+
+# GSK980TDi §3.29.1: "0 到#j 之间产生随机数 #i = RAND[#j]。（不包括 0）": #1 is a draw above 0 up to 10
+RANDOM_GUARD = (
+    "hint: the analysis run goes on past this guard, on the side that does not raise the program's own alarm: the "
+    "condition depends on a random number (RAND, SRAND) (line 2), which the control draws as the program runs, so "
+    "the control takes either side: it raises the program's own alarm on some draws and goes on on others; what "
+    "follows is checked as the draws that go on run it [unknown-value]"
+)
+
+
+def test_a_guard_on_a_random_number_says_the_draw_takes_either_side(tmp_path: Path) -> None:
+    # IF [#1 GT 5] THEN #3000=1: a draw above 5 raises 5901, one of 5 or less goes on; the run
+    # follows the side that goes on, and 10 / 0 there is alarm 112 on every such draw: an error
+    text = "O0100 (cncmacro: dialect=gsk980tdi)\n#1=RAND[10]\nIF [#1 GT 5] THEN #3000=1 (HIGH)\n#3=10/0\nM30\n"
+    code, found = check(tmp_path, text)
+    assert code == 1
+    assert found == [
+        "3:1: " + RANDOM_GUARD,
+        "4:1: " + DIVISION,
+        "5:1: hint: no analysis run reaches this block [not-executed]",
+    ]
+    # it is not a value the machine keeps: nothing of production, nor "not judged", is said of it
+    assert "production" not in found[0] and "not judged" not in found[0]
+    code, found = check(tmp_path, text, "--locale", "zh-CN")
+    assert found[0].startswith("3:1: ") and "随机数（RAND、SRAND）（第 2 行）" in found[0]
+    assert "某些随机值触发程序自身报警" in found[0] and "生产" not in found[0]
+
+
+def test_a_macro_alarm_after_a_guard_on_a_random_number_is_not_sure(tmp_path: Path) -> None:
+    # the run reaches #3000=2 (5902) only on the draws of 5 or less; a draw above 5 stops at 5901
+    # first: not every run reaches 5902, so it is a warning, not an error (exit 0)
+    text = "O0100 (cncmacro: dialect=gsk980tdi)\n#1=RAND[10]\nIF [#1 GT 5] THEN #3000=1 (HIGH)\n#3000=2 (LOW)\nM30\n"
+    code, found = check(tmp_path, text)
+    assert code == 0
+    assert found == [
+        "3:1: " + RANDOM_GUARD,
+        "4:1: warning: the run reaches macro alarm 5902: LOW [macro-alarm]",
+        "5:1: hint: no analysis run reaches this block [not-executed]",
+    ]
+
+
+def test_a_while_loop_on_a_random_number_says_its_count_is_not_judged(tmp_path: Path) -> None:
+    # WHILE [#1 LT 5]: #1 is a new draw each pass; the run goes through the loop once and leaves it
+    text = "O0100 (cncmacro: dialect=gsk980tdi)\n#1=RAND[10]\nWHILE [#1 LT 5] DO1\n#1=RAND[10]\nEND1\nM30\n"
+    code, found = check(tmp_path, text)
+    assert code == 0
+    assert found == [
+        "3:1: hint: the analysis run goes through this WHILE loop once and then leaves it, so that its body and "
+        "what follows are checked; the machine repeats it as its condition says, which depends on a random number "
+        "(RAND, SRAND) (line 2), which the control draws as the program runs; no check can foresee how many times "
+        "the loop runs [unknown-value]"
+    ]

@@ -9,7 +9,10 @@ unchecked. The control passes its own guard on every production cycle (the progr
 day), so where one side of a branch on an unknown is nothing but the program's own alarm, the
 analysis run follows the other side and says so with a note (kind ``"unknown"``, subject
 ``"guard"``, ``skipped`` the line of the alarm block it did not run). A branch whose sides are
-anything else still stops the path, as before. A ``WHILE`` whose condition is unknown is gone
+anything else still stops the path, as before. A guard on a random number (GSK980TDi's
+``RAND``, ``SRAND``) is passed the same way, though the control takes either side as the draw
+falls: the other side is one the control takes, and the analysis says so
+(``analysis/runs/unknown_stops.py``). A ``WHILE`` whose condition is unknown is gone
 through once and then left (``unknown_loop_pass``, a note of subject ``"loop"``), so that its
 body and what follows are checked. Only an analysis run meets an unknown:
 ``cncmacro run`` and the debugger read these values as vacant and decide as the control with

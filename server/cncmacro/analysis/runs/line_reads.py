@@ -7,7 +7,8 @@ comments left out: a ``#n`` that is the target of an assignment (``#n=`` at the 
 statement, after an optional block delete and N number, or after ``THEN``) is written; every
 other ``#n`` is read.
 A read through ``#[...]`` or of a ``#_`` name (a 30i system variable or a named common) has no
-number: it is ``INDIRECT``, a value the text cannot place.
+number: it is ``INDIRECT``, a value the text cannot place. A line that draws a random number
+(``RAND[..]``, ``SRAND[..]``: ``draws``) reads a value no run can foresee.
 """
 
 from __future__ import annotations
@@ -15,12 +16,16 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 
+from ...machine.expressions import RANDOM_FUNCTIONS
+
 INDIRECT = -1
 
 _COMMENT = re.compile(r"\([^)]*\)?")
 _TARGET = re.compile(r"^\s*(?:/\d?\s*)?(?:N\d+\s*)?(?P<hash>#)\s*(\d+|\[.*?\])\s*=(?!=)", re.I)
 _THEN_TARGET = re.compile(r"(?<![A-Z])THEN\s*(?P<hash>#)\s*(\d+|\[.*?\])\s*=(?!=)", re.I)
 _REFERENCE = re.compile(r"#\s*(\d+|\[|_)")
+# a random number drawn: RAND[..], SRAND[..] (GSK980TDi, machine/expressions.py's RANDOM_FUNCTIONS)
+_DRAW = re.compile(rf"(?:{'|'.join(sorted(RANDOM_FUNCTIONS, key=len, reverse=True))})\s*\[", re.IGNORECASE)
 
 
 def code_of(text: str) -> str:
@@ -34,6 +39,11 @@ def _target(code: str) -> re.Match[str] | None:
     if target is None:
         target = _THEN_TARGET.search(code)
     return target
+
+
+def draws(code: str) -> bool:
+    """Whether ``code`` (comments left out) draws a random number (``RAND[..]``, ``SRAND[..]``)."""
+    return _DRAW.search(code) is not None
 
 
 def written(code: str) -> int | None:

@@ -18,7 +18,10 @@ does not, the analysis run only guessed it (a ``macro-alarm`` warning):
   (``#500``–, kept at power-off: a value in the folder's variable file may not be the one the
   machine holds when the program runs), an extended common,
   anything through ``#[..]`` or a ``#_`` name, or a common variable before any line the run
-  went through wrote it (the operator or an earlier program may have left a value there).
+  went through wrote it (the operator or an earlier program may have left a value there);
+- a line the run went through draws a random number (``RAND``, ``SRAND``, GSK980TDi): the
+  control draws another on each run, and a guard on it (machine/guards.py), which the run went
+  past on the side without the program's alarm, raises that alarm on some draws instead.
 
 Locals count as set by the program: a main program's start vacant, a macro's come from its
 caller's arguments, which the run went through. A variable is set by the program where a line
@@ -35,7 +38,7 @@ from ...machine.blocks import h_code_destination
 from ...machine.expressions import VariableKinds
 from ...syntax.block_parser import parse_block
 from ...syntax.nodes import Number
-from .line_reads import INDIRECT, code_of, reads, written
+from .line_reads import INDIRECT, code_of, draws, reads, written
 
 
 def surely_reached(
@@ -52,6 +55,8 @@ def surely_reached(
     set_by_program: set[int] = set()
     for file, line in path:
         code = code_of(line_text(file, line))
+        if draws(code):  # a draw no run can foresee: another run may go another way
+            return False
         target, destination_at = _target(code, kinds)
         for number in reads(code, destination_at):
             if number == INDIRECT:

@@ -30,11 +30,11 @@ from ...machine.status import RunStatus
 from ...machine.unknown_values import assigned, is_input, is_kept, is_skip_position, is_tool, variables_in
 from ...planner.alarms import UNKNOWN_VALUE
 from ...syntax.nodes import Number
+from .line_reads import draws
 
 log = logging.getLogger(__name__)
 _COMMENT = re.compile(r"\([^)]*\)?")  # a comment, to its ")" or the line's end
 _RETURN_OR_END = re.compile(r"M\s*0*(?:99|30|2)(?![\d.])", re.IGNORECASE)  # may hold M99, M30 or M02
-_RANDOM = re.compile(r"S?RAND\s*\[", re.IGNORECASE)  # a random number: RAND[..], SRAND[..] (GSK980TDi)
 # how a note opens (English, Chinese): where the run stops on an unknown, and where it went past
 # the program's own guard on one (machine/guards.py)
 STOP_OPENING = ("the analysis run stops here: this block depends", "分析运行在此停止：本程序段取决于")
@@ -42,6 +42,13 @@ GUARD_OPENING = (
     "the analysis run goes on past this guard, on the side that does not raise the program's own alarm, as the "
     "machine passes it in production: the condition depends",
     "分析运行沿不触发程序自身报警的一侧越过此保护判断继续（机床在生产中通过该判断）：条件取决于",
+)
+# how the note of such a guard on a random number opens: the control draws another number on each
+# run, so it is no value the machine passes in production (``_random_number``)
+RANDOM_GUARD_OPENING = (
+    "the analysis run goes on past this guard, on the side that does not raise the program's own alarm: the "
+    "condition depends",
+    "分析运行沿不触发程序自身报警的一侧越过此保护判断继续：条件取决于",
 )
 # how the note of a WHILE loop whose condition is unknown opens (machine/guards.py, unknown_loop_pass)
 LOOP_OPENING = (
@@ -130,7 +137,7 @@ def unknown_value_text(text: str, earlier: Iterable[tuple[int, str]], kinds: Var
     named = [(n, line) for n, line in wanted.items()
              if (is_kept(n, kinds, dialect) or is_input(n, dialect) or is_skip_position(n, dialect)
                  or is_position(n, dialect) or from_caller(n) or (called and 1 <= n <= 33)) and unknown(n)]  # fmt: skip
-    if not named and drawn:
+    if drawn and (not named or opening == GUARD_OPENING):  # a guard on a draw: no production value
         return _random_number(drawn[0], opening)
     if not named and indirect:
         return _read_through(through, opening)
@@ -256,7 +263,7 @@ def _sources(
     stored = frozenset(n for _, n in dialect.skip_commons)
     touched: set[int] = set()
     skip = _skip_code(dialect) if stored else None
-    drawn: list[int | None] = [None] if _RANDOM.search(expression) else []
+    drawn: list[int | None] = [None] if draws(expression) else []
     for line, before in earlier:
         if skip is not None and not stored.isdisjoint(wanted) and skip.search(_COMMENT.sub("", before)):
             touched |= stored.intersection(wanted)
@@ -265,7 +272,7 @@ def _sources(
             del wanted[a[0]]
             if not indirect and "#[" in a[1]:
                 indirect, where = True, line
-            if _RANDOM.search(a[1]):
+            if draws(a[1]):
                 drawn.append(line)
             for n in variables_in(a[1]):
                 wanted.setdefault(n, line)
@@ -283,14 +290,29 @@ def _skip_code(dialect: Dialect) -> re.Pattern[str]:
 
 
 def _random_number(line: int | None, opening: tuple[str, str]) -> tuple[str, str]:
-    """The note of a stop on a random number (``RAND``, ``SRAND``, drawn on ``line``; None: the block's own)."""
+    """The note of a stop on a random number (``RAND``, ``SRAND``, drawn on ``line``; None: the
+    block's own), of a guard the run went past on one (``GUARD_OPENING``: the control takes either
+    side, as the draw falls) or of a WHILE loop on one (``LOOP_OPENING``: how many times it runs
+    is not foreseen). A draw is no value the machine keeps: nothing can be given for it."""
     where = f" (line {line + 1})" if line is not None else ""
     where_zh = f"（第 {line + 1} 行）" if line is not None else ""
+    en = f"on a random number (RAND, SRAND){where}, which the control draws as the program runs"
+    zh = f"随机数（RAND、SRAND）{where_zh}，由系统在程序运行时产生"
+    if opening == GUARD_OPENING:
+        return (
+            f"{RANDOM_GUARD_OPENING[0]} {en}, so the control takes either side: it raises the program's own alarm "
+            "on some draws and goes on on others; what follows is checked as the draws that go on run it",
+            f"{RANDOM_GUARD_OPENING[1]}{zh}，系统可能走任一侧：某些随机值触发程序自身报警，其他随机值则继续执行；"
+            "其后的程序段按继续执行时的情况检查",
+        )
+    if opening == LOOP_OPENING:
+        return (
+            f"{opening[0]} {en}; no check can foresee how many times the loop runs",
+            f"{opening[1]}{zh}；检查无法预知循环执行的次数",
+        )
     return (
-        f"{opening[0]} on a random number (RAND, SRAND){where}, which the control draws as the program runs; no "
-        "check can foresee it, so what the block decides with it is not judged",
-        f"{opening[1]}随机数（RAND、SRAND）{where_zh}，由系统在程序运行时产生；"
-        "检查无法预知其值，因此不判断本程序段据此所作的决定",
+        f"{opening[0]} {en}; no check can foresee it, so what the block decides with it is not judged",
+        f"{opening[1]}{zh}；检查无法预知其值，因此不判断本程序段据此所作的决定",
     )
 
 
