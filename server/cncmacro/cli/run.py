@@ -33,6 +33,7 @@ from ..library.machine_file import parse_preset
 from ..library.persistence_lock import LOCK_WAIT
 from ..machine import Machine, RunResult
 from ..machine.alarms import budget_spent
+from ..machine.binary_output import BPRNT
 from ..machine.commanded_axes import CommandedAxes
 from ..machine.setup import prepare_run
 from ..machine.status import RunStatus
@@ -219,7 +220,7 @@ def result_json(result: RunResult, axes: tuple[str, ...], locale: str | None = N
         "blocks": result.blocks,
         "variables": {str(k): v for k, v in result.variables.items()},
         "moves": _moves_json(result, axes),
-        "output": result.output,
+        "output": [in_language(text, chinese) for text in result.output],  # a BPRNT record's words in Chinese
         "messages": [in_language(n.message, chinese) for n in result.notes if n.kind in _MESSAGE_KINDS],
     }
 
@@ -284,7 +285,9 @@ def write_text(
     for note in result.notes:
         where = f"{Path(note.file).name}:{note.line + 1}"
         text = in_language(note.message, chinese)
-        if note.kind == "output":
+        if note.kind == "output" and note.subject == BPRNT:  # says itself what it is (machine/binary_output.py)
+            print(text, file=out)
+        elif note.kind == "output":
             print(f"DPRNT  {note.message}", file=out)
         elif note.kind == "message":
             print(f"停止（{where}）：{text}" if chinese else f"stop at {where}: {text}", file=out)

@@ -283,8 +283,8 @@ class Stepper:
         self.moves_sent = len(m.planner.moves)
         for note in m.notes[self.notes_sent :]:
             where = f"{Path(note.file).name}:{note.line + 1}"
-            if note.kind == "output":
-                self.output(note.message + "\n", "stdout")
+            if note.kind == "output":  # a DPRNT line, a BPRNT record (its words in the locale's language)
+                self.output(in_language(note.message, is_chinese(self.locale)) + "\n", "stdout")
             elif note.kind == "message":
                 text = in_language(note.message, is_chinese(self.locale))
                 self.output(pick(self.locale, f"stop at {where}: {text}\n", f"停止（{where}）：{text}\n"), "console")

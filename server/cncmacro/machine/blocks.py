@@ -48,6 +48,7 @@ from ..syntax.nodes import (
 from ..syntax.program import ProgramUnit
 from . import block_roles, jumps
 from .alarms import MacroAlarm, raiser
+from .binary_output import BPRNT, bprnt_record
 from .block_rules import DIALECT_FORMS, first_alarm, validate_block
 from .calls import h_code_form
 from .corners import with_corners
@@ -710,12 +711,27 @@ class CompiledFile:
             else:
                 parts.append(p.text or "")
 
+        if s.command == "BPRNT":  # binary: each value as a 32-bit whole number (binary_output.py)
+            return self._bprnt(parts, nxt)
+
         def dprnt(m: Machine, pc: int) -> int:
             text = "".join(p if isinstance(p, str) else format_value(p[0](m), p[1], p[2], whole_part) for p in parts)
             m.print_line(text, pc)
             return nxt
 
         return dprnt
+
+    @staticmethod
+    def _bprnt(parts: list[str | tuple[Getter, int | None, int | None]], nxt: int) -> Runner:
+        """BPRNT's record: the characters, and each variable's value with its decimal places ``[c]``
+        (none given: 0)."""
+
+        def bprnt(m: Machine, pc: int) -> int:
+            pieces = [p if isinstance(p, str) else (p[0](m), p[2] or 0) for p in parts]
+            m.print_line(bprnt_record(pieces), pc, BPRNT)
+            return nxt
+
+        return bprnt
 
     # ---------------------------------------------------------------- NC words
     def word_value(self, w: Word, data: bool = False) -> tuple[bool, Any]:

@@ -263,9 +263,10 @@ class Machine(VariableAccess, VariableSets, CallStack, RunLoop):
         else:
             f.written.add(n)
 
-    def print_line(self, text: str, pc: int) -> None:
+    def print_line(self, text: str, pc: int, subject: str | None = None) -> None:
+        """Send ``text`` out (a DPRNT line; a BPRNT record, ``subject`` BPRNT, binary_output.py)."""
         self.output.append(text)
-        self.notes.append(Note("output", text, self.frames[-1].file, pc))
+        self.notes.append(Note("output", text, self.frames[-1].file, pc, subject))
 
     def chain(self, at: int | None = None) -> tuple[CallLevel, ...]:
         """Who called whom, from the main program inward (each with the line of its call;

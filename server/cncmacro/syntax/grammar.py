@@ -106,6 +106,8 @@ def _varnum(tok: _Tok) -> Var:
 
 
 _DPRNT_PIECE = re.compile(r"#[ \t]*(\d+)(?:[ \t]*\[[ \t]*(\d)[ \t]*(\d)[ \t]*\])?|\[|\]|.", re.S)
+# BPRNT's ``#b[c]``: one digit, the decimal places (docs/semantics.md §5)
+_BPRNT_PIECE = re.compile(r"#[ \t]*(\d+)(?:[ \t]*\[[ \t]*()(\d)[ \t]*\])?|\[|\]|.", re.S)
 
 
 class _Builder(Transformer[Token, Items]):
@@ -276,7 +278,7 @@ class _Builder(Transformer[Token, Items]):
         if len(c) == 1:
             return Output(name, (), kw.start_pos, kw.end_pos)
         args: _Tok = c[1]
-        return Output(name, _output_parts(args), kw.start_pos, args.end_pos)
+        return Output(name, _output_parts(args, name == "BPRNT"), kw.start_pos, args.end_pos)
 
     # ---- expressions
     def binary(self, c: _Children) -> Binary:
@@ -381,13 +383,14 @@ def _is_m99(w: Word) -> bool:
     return w.letter == "M" and isinstance(v, Number) and v.value == 99 and not v.has_point and v.text[0] != "+"
 
 
-def _output_parts(tok: _Tok) -> tuple[OutputPart, ...]:
-    """Split ``[X#2[53]**Y#5]`` into literal text and formatted variables."""
+def _output_parts(tok: _Tok, binary: bool = False) -> tuple[OutputPart, ...]:
+    """Split ``[X#2[53]**Y#5]`` into literal text and formatted variables; BPRNT's (``binary``)
+    ``[X#2[3]]`` gives each variable its decimal places alone."""
     body = str(tok)[1:-1]
     base = tok.start_pos + 1
     parts: list[OutputPart] = []
     text: list[str] = []
-    for m in _DPRNT_PIECE.finditer(body):
+    for m in (_BPRNT_PIECE if binary else _DPRNT_PIECE).finditer(body):
         if m.group(1) is not None:
             if text:
                 parts.append(OutputPart("".join(text), None, None, None))

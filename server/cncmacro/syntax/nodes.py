@@ -255,7 +255,7 @@ class Goto:
 class OutputPart:
     """One piece of a DPRNT/BPRNT argument: literal ``text`` (``*`` already turned into a
     space) or a variable with its format ``[ab]`` (``digits`` before and ``decimals`` after
-    the point; None when not given)."""
+    the point; None when not given; BPRNT's ``[c]`` gives ``decimals`` alone)."""
 
     text: str | None
     variable: Variable | None
