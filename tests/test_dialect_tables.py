@@ -32,7 +32,7 @@ CJK = re.compile(r"[\u4e00-\u9fff]")
 ACCESS = {"r", "w", "rw"}
 GROUPS = {"signals", "tool", "work", "alarm", "time", "control", "counters", "modal", "position"}
 PARAMS = {
-    "timer": {"ms", "s", "h"},
+    "timer": {"ms", "s", "h", "ms/2147483648"},  # the last: whole ms, back to 0 at 2^31 (FANUC #3001)
     "position": {"end", "machine", "current", "skip", "skip_programmed", "tool", "servo", "handle"},
     "code": set("FSTMDHBNOP"),
 }
@@ -174,7 +174,7 @@ def test_aliases_point_at_stored_variables_of_the_same_access(dialect):
         (2201, "rw", "alias", "11001"),
         (3000, "w", "alarm", ""),
         (3006, "w", "stop", ""),
-        (3001, "rw", "timer", "ms"),
+        (3001, "rw", "timer", "ms/2147483648"),
         (3002, "rw", "timer", "h"),
         (3011, "r", "date", ""),
         (3012, "r", "time", ""),

@@ -109,6 +109,19 @@ def test_clock_and_date_are_deterministic():
     assert v[102] == pytest.approx(10000.0) and v[103] == pytest.approx(11500.0)  # ms: 10 s move, 1.5 s dwell
 
 
+def test_8_machine_the_millisecond_timer_3001_counts_whole_milliseconds_and_wraps_at_2147483648():
+    # seed 003 §4.5 (the 0i's #3001 row): a timer that counts in 1 ms steps and returns to 0 at
+    # 2147483648 ms. G91 G01 X0.123 F6000: 0.123 mm at 6000 mm/min = 100 mm/s is 1.23 ms, so
+    # after 1, 2, 3 such moves 1.23, 2.46, 3.69 ms have passed: 1, 2, 3 whole steps (it read
+    # 1.23, 2.46, 3.69); 2147483647 + a 2 ms dwell = 2147483649, past 2^31: 1
+    program = lines("#3001=0", "G91 G01 X0.123 F6000", "#101=#3001", "X0.123", "#102=#3001", "X0.123", "#103=#3001",
+                    "#3001=2147483647", "#104=#3001", "G04 X0.002", "#105=#3001", "M30")  # fmt: skip
+    v = final(program)
+    assert (v[101], v[102], v[103], v[104], v[105]) == (1, 2, 3, 2147483647, 1)
+    # the same on the 30i, which takes the 0i's row
+    assert final(program, "fanuc-30i")[103] == 3
+
+
 def test_parts_counters():
     v = final(lines("#3901=#3901+1", "#100=#3901", "M30"), presets={3901: 41})
     assert v[100] == 42 and v[3901] == 42

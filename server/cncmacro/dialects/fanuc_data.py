@@ -174,7 +174,7 @@ _CONTROL: tuple[SystemVariable, ...] = (
         "毫秒计时器：以1毫秒为单位计时，通电时复位为0，达到2147483648毫秒时回到0",
         "ms",
         "timer",
-        "ms",
+        "ms/2147483648",  # whole milliseconds, back to 0 at 2^31 (seed 003 §4.5)
     ),
     SystemVariable(
         3002,

@@ -17,7 +17,8 @@ SOURCES = {
     "store": "a value the machine keeps (offsets, counters, signals); preset by the machine file",
     "alarm": "#3000: writing raises a macro alarm",
     "stop": "#3006: writing stops with a message, like M00",
-    "timer": "a timer that advances with simulated time (param: 'ms', 's' or 'h')",
+    "timer": "a timer that advances with simulated time (param: 'ms', 's' or 'h'; 'ms/2147483648': one that counts "
+    "whole milliseconds and returns to 0 at 2147483648)",
     "date": "the date as YYYYMMDD",
     "time": "the time of day as HHMMSS",
     "modal": "the modal G code of a group (param: the group's name in MODAL_GROUPS)",

@@ -11,6 +11,7 @@ number a FANUC 30i name ``[#_NAME[n]]`` stands for.
 from __future__ import annotations
 
 import datetime as _dt
+import math
 from typing import TYPE_CHECKING, Any
 
 from ..bilingual import detail
@@ -261,11 +262,19 @@ class VariableAccess:
             self.written_system.add(first + i)
 
     # ---------------------------------------------------------------- the clock
-    def timer_value(self, n: int, unit: str) -> float:
+    def timer_value(self, n: int, param: str) -> float:
+        """Timer ``#n``: what was written to it plus the simulated time since, in the row's unit
+        (``param`` ``ms``, ``s`` or ``h``). A ``param`` with a count (``ms/2147483648``, FANUC's
+        #3001, docs/semantics.md §8) counts whole units, the steps the timer has made, and returns
+        to 0 at that count."""
+        unit, _, wrap = param.partition("/")
         base = self.S.get(n, 0.0) or 0.0
         seconds = self.planner.clock - self.timer_marks.get(n, 0.0)
         scale = {"ms": 1000.0, "s": 1.0, "h": 1.0 / 3600.0}.get(unit, 1.0)
-        return base + seconds * scale
+        if not wrap:
+            return base + seconds * scale
+        steps = math.floor(seconds * scale + 1e-9)  # 2 ms summed from floats may read 1.9999999999999998
+        return math.fmod(base + steps, float(wrap))
 
     def set_timer(self, n: int, unit: str, value: float) -> None:
         self.S[n] = value
