@@ -11,7 +11,9 @@ drilling, operation at the bottom and retraction of each code, and each cycle's 
 
 * G73 high-speed peck: intermittent feed, pecks of Q, each followed by a rapid retract of d
   (parameter 5114); rapid out.
-* G74 left-hand tapping, G84 tapping: feed in, dwell P, spindle reverses, feed out to R.
+* G74 left-hand tapping, G84 tapping: feed in, dwell P, spindle reverses, feed out to R, dwell P
+  again at R, where the spindle turns back (``DrillCycle.dwell_at_r``; FANUC's tapping format:
+  "P_ : Dwell time at the bottom of the hole and at point R when a return is made").
 * G76 fine boring: feed in, dwell P, oriented spindle stop, shift by Q away from the wall,
   rapid out, shift back.
 * G81 drilling, G86 boring (spindle stop): feed in, rapid out.
@@ -27,6 +29,7 @@ drilling, operation at the bottom and retraction of each code, and each cycle's 
 
 Haas (Mill Operator's Manual 96-8000, G codes) runs G73, G74, G76, G81–G86, G88 and G89 the same
 way; its G87 is "bore in and manual retract" (G88 without the dwell) and its G77 the back bore.
+Its taps dwell at the bottom only: no Haas source at hand has the dwell at R (to confirm).
 """
 
 from __future__ import annotations
@@ -43,13 +46,20 @@ class DrillCycle:
     """How one drilling cycle cuts (``FEED``, ``PECK``, ``SHORT_PECK``), whether it dwells P at
     the bottom, comes out at F to R (tapping and feed-out boring), shifts by Q at the bottom
     before a rapid out (fine boring) or bores upwards from an R point below the work (back
-    boring, which always returns to the initial level)."""
+    boring, which always returns to the initial level). ``dwell_at_r``: a tap dwells P again at
+    the R point on the way out, where the spindle turns back (FANUC)."""
 
     cut: str = FEED
     dwell: bool = False
     feed_out: bool = False
     shift: bool = False
     back: bool = False
+    dwell_at_r: bool = False
+
+    @property
+    def dwells(self) -> int:
+        """How many times a hole dwells P: at the bottom, and again at R where ``dwell_at_r``."""
+        return int(self.dwell) + int(self.dwell_at_r)
 
 
 # a canned code the table does not list drills as G81 does
@@ -57,12 +67,12 @@ PLAIN_DRILLING = DrillCycle()
 
 FANUC_DRILL_CYCLES: dict[float, DrillCycle] = {
     73.0: DrillCycle(cut=SHORT_PECK),
-    74.0: DrillCycle(dwell=True, feed_out=True),
+    74.0: DrillCycle(dwell=True, feed_out=True, dwell_at_r=True),
     76.0: DrillCycle(dwell=True, shift=True),
     81.0: PLAIN_DRILLING,
     82.0: DrillCycle(dwell=True),
     83.0: DrillCycle(cut=PECK),
-    84.0: DrillCycle(dwell=True, feed_out=True),
+    84.0: DrillCycle(dwell=True, feed_out=True, dwell_at_r=True),
     85.0: DrillCycle(feed_out=True),
     86.0: PLAIN_DRILLING,
     87.0: DrillCycle(dwell=True, back=True),
@@ -70,8 +80,16 @@ FANUC_DRILL_CYCLES: dict[float, DrillCycle] = {
     89.0: DrillCycle(dwell=True, feed_out=True),
 }
 
-HAAS_DRILL_CYCLES: dict[float, DrillCycle] = {
+# FANUC's table with the taps dwelling at the bottom only, where no source at hand has the dwell at
+# R (Haas, Mitsubishi, Mazak)
+TAPS_DWELL_AT_BOTTOM: dict[float, DrillCycle] = {
     **FANUC_DRILL_CYCLES,
+    74.0: DrillCycle(dwell=True, feed_out=True),
+    84.0: DrillCycle(dwell=True, feed_out=True),
+}
+
+HAAS_DRILL_CYCLES: dict[float, DrillCycle] = {
+    **TAPS_DWELL_AT_BOTTOM,
     73.0: DrillCycle(cut=SHORT_PECK, dwell=True),  # P: a pause at the bottom after the last peck
     83.0: DrillCycle(cut=PECK, dwell=True),
     77.0: DrillCycle(back=True),
@@ -105,14 +123,16 @@ class LatheDrilling:
 
 # FANUC 0i-TF (G-code system A), "canned cycle for drilling": G83/G87 drilling, in pecks of Q where
 # Q is given (high-speed pecks, parameter 5101#2 RTR = 0, retract d: parameter 5114), G84/G88
-# tapping, G85/G89 boring; face cycles along Z, side cycles along X; P dwells at the bottom
+# tapping, G85/G89 boring; face cycles along Z, side cycles along X; P dwells at the bottom, and a
+# tap's again at the R point on its way out (FANUC 16i/18i/21i-TA/TB, G84/G88: "P_ : Dwell time at
+# the bottom of the hole and at point R when a return is made")
 FANUC_LATHE_DRILLING = LatheDrilling(
     {
         83.0: LatheDrill("Z", DrillCycle(cut=SHORT_PECK, dwell=True)),
-        84.0: LatheDrill("Z", DrillCycle(dwell=True, feed_out=True)),
+        84.0: LatheDrill("Z", DrillCycle(dwell=True, feed_out=True, dwell_at_r=True)),
         85.0: LatheDrill("Z", DrillCycle(feed_out=True)),
         87.0: LatheDrill("X", DrillCycle(cut=SHORT_PECK, dwell=True)),
-        88.0: LatheDrill("X", DrillCycle(dwell=True, feed_out=True)),
+        88.0: LatheDrill("X", DrillCycle(dwell=True, feed_out=True, dwell_at_r=True)),
         89.0: LatheDrill("X", DrillCycle(dwell=True, feed_out=True)),
     }
 )

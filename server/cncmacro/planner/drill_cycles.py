@@ -9,7 +9,8 @@ them:
 1. position X and Y (and any other axis but Z) at rapid, at the level the tool is at;
 2. rapid to the R point;
 3. cut from R to Z at F: in one feed, or for G83 and G73 in pecks of Q (``_cut``);
-4. dwell P at the bottom where the cycle does (``DrillCycle.dwell``);
+4. dwell P at the bottom where the cycle does (``DrillCycle.dwell``), and, for FANUC's taps, again
+   at R on the way out (``DrillCycle.dwell_at_r``);
 5. come back: G98 to the initial level, G99 to R; at rapid, or for tapping and feed-out boring
    at F up to R (then at rapid to the initial level under G98). Fine boring shifts by Q at the
    bottom before it rapids out and back after; back boring (G87) has its own order.
@@ -93,7 +94,7 @@ def drill_block(
     unit = INCH if m.modal.get("units") == 20.0 else 1.0
     q = abs(codes.get(CYCLE_Q) or 0.0)
     p = codes.get(CYCLE_P) or 0.0
-    dwell = times.dwell_seconds({"P": p}, None) if spec.dwell and p else 0.0
+    dwell = times.dwell_seconds({"P": p}, None) * spec.dwells if p else 0.0  # at the bottom, a tap's at R
     retract, clearance = times.timing.peck_retract / unit, times.timing.peck_clearance / unit
     shift_axis = m.axis_index.get("X", 0)
     feed = m.codes.get("F") or 0.0

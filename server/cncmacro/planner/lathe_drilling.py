@@ -11,7 +11,9 @@ FANUC 0i-TF (G-code system A), "canned cycle for drilling", ``G83 X(U) C(H) Z(W)
 3. cut to the bottom (Z, or W from the R point): in one feed, or in pecks of Q (least input
    increments, as the lathe cycles' P and Q) with a retract of d (the machine file's
    ``peck_retract``, FANUC parameter 5114) after each;
-4. dwell P at the bottom (G83, G84, G87, G88, G89);
+4. dwell P at the bottom (G83, G84, G87, G88, G89), a tap (G84, G88) again at the R point on its
+   way out (FANUC 16i/18i/21i-TA/TB: "Dwell time at the bottom of the hole and at point R when a
+   return is made");
 5. out to the initial level: at rapid, or for tapping and boring at F to the R point first.
 
 GSK980TDi §3.23.9, ``G83 X(U) C(H) Z(W) P Q R F K J``: there is no R point. The cycle drills
@@ -116,7 +118,7 @@ def _hole(
     rapid /= scale
     p_word = codes.get(CYCLE_P) or 0.0
     seconds += times.rapid_seconds(start, hole, unit) + (
-        times.dwell_seconds({"P": p_word}, None) if cycle.dwell else 0.0
+        times.dwell_seconds({"P": p_word}, None) * cycle.dwells  # at the bottom, a FANUC tap's at R too
     )
     p.clock += seconds
     p.cut_length += cut

@@ -11,12 +11,14 @@ macro words shortened to their first two letters or more (``WH`` for WHILE, ``GO
 
 from __future__ import annotations
 
+from ..drill_cycles import TAPS_DWELL_AT_BOTTOM
 from .fanuc_0i import OTHER_MAKERS, OTHER_MAKERS_TIMING
 from .fanuc_0i import PROFILE as FANUC_0I
 
 PROFILE = FANUC_0I.configured(
     **OTHER_MAKERS,  # the FANUC-only rules off (fanuc_0i.py)
     cycle_cancel_clears_dwell=False,  # no source at hand says G80 resets a drilling cycle's P
+    drill_cycles=TAPS_DWELL_AT_BOTTOM,  # nor that a tap dwells P again at R, as FANUC's do
     timing=OTHER_MAKERS_TIMING,
     name="mazak-eia",
     title="Mazak EIA/ISO (Matrix, Smooth)",

@@ -9,6 +9,7 @@ which the profile does not list yet: they are shown without a number (docs/profi
 
 from __future__ import annotations
 
+from ..drill_cycles import TAPS_DWELL_AT_BOTTOM
 from ..tables import CommonRange
 from .fanuc_0i import OTHER_MAKERS, OTHER_MAKERS_TIMING
 from .fanuc_0i import PROFILE as FANUC_0I
@@ -16,6 +17,7 @@ from .fanuc_0i import PROFILE as FANUC_0I
 PROFILE = FANUC_0I.configured(
     **OTHER_MAKERS,  # the FANUC-only rules off (fanuc_0i.py)
     cycle_cancel_clears_dwell=False,  # no source at hand says G80 resets a drilling cycle's P
+    drill_cycles=TAPS_DWELL_AT_BOTTOM,  # nor that a tap dwells P again at R, as FANUC's do
     timing=OTHER_MAKERS_TIMING,
     name="mitsubishi-m70",
     title="Mitsubishi M70/M80 user macro",
