@@ -397,6 +397,11 @@ class Dialect:
     # for drilling"; Haas 96-8000, G73: "the dwell time will be reset to zero"): a cycle named after
     # them without P dwells nothing; without this switch the last P stays until another is given
     cycle_cancel_clears_dwell: bool = False
+    # §9 a G00-G03 in the block of a drilling cycle's code moves as written and cancels the cycle
+    # (Mitsubishi M700V/M70V programming manual, appendix "Order of G function command priority":
+    # "Group 1 command is executed", "Group 9 is canceled"); without this switch the cycle is named
+    # and drills the block's hole
+    motion_cancels_cycle_in_block: bool = False
     # §9 a lathe's single fixed cycles (G90, G92, G94): which axis each goes in along first and
     # whether it comes out at rapid (turning_cycles.py); a turning cycle not listed is drawn as
     # one cut from where it starts to its end point

@@ -37,8 +37,11 @@ def set_modal(p: Planner, gs: list[float], other: dict[str, float], line: int) -
     if "wcs" in groups and p.dialect.coordinate_setting_voids_wcs and p.dialect.coordinate_setting_code in gs:
         kept = [(g, group) for g, group in zip(gs, groups, strict=True) if group != "wcs"]  # G55 G50: G50 alone
         gs, groups = [g for g, _ in kept], [group for _, group in kept]
-    if "motion" in groups and "canned" not in groups and p.dialect.drills:
+    if "motion" in groups and p.dialect.drills and ("canned" not in groups or p.dialect.motion_cancels_cycle_in_block):
         p.modal["canned"] = 80.0  # G00-G03 cancel a drilling cycle, as G80 does
+        if "canned" in groups:  # G00 G81 in one block: the G00 runs, the cycle is cancelled (Mitsubishi)
+            kept = [(g, group) for g, group in zip(gs, groups, strict=True) if group != "canned"]
+            gs, groups = [g for g, _ in kept], [group for _, group in kept]
     for g, group in zip(gs, groups, strict=True):
         if not group:
             one_shot_code = g

@@ -18,6 +18,9 @@ PROFILE = FANUC_0I.configured(
     **OTHER_MAKERS,  # the FANUC-only rules off (fanuc_0i.py)
     cycle_cancel_clears_dwell=False,  # no source at hand says G80 resets a drilling cycle's P
     drill_cycles=TAPS_DWELL_AT_BOTTOM,  # nor that a tap dwells P again at R, as FANUC's do
+    # G00 G81 in one block: the G00 moves, the cycle is cancelled (M700V/M70V programming manual,
+    # appendix 2 "Order of G function command priority")
+    motion_cancels_cycle_in_block=True,
     timing=OTHER_MAKERS_TIMING,
     name="mitsubishi-m70",
     title="Mitsubishi M70/M80 user macro",
