@@ -365,11 +365,13 @@ CODES: dict[str, Code] = _codes(
          detail("A lathe cycle block (G70-G76) the control refuses: P or Q missing, a depth, count, step or tool "
                 "angle out of range, a chamfer or corner R in a thread block (warning where the alarm is not "
                 "documented); a variable-lead thread (G34) whose lead is negative or would fall below zero; "
-                "G27-G30 while a drilling canned cycle is in force (PS0044); G73/G83 with no Q or Q0 (PS0045); GSK's "
+                "G27-G30 while a drilling canned cycle is in force (PS0044); G73/G83 with no Q or Q0 (PS0045); a FANUC "
+                "drilling cycle using a Z or R given before the G80 or G00-G03 that cleared them (warning); GSK's "
                 "G86 with I0 or I below R.",
                 "系统拒绝的车床循环程序段（G70-G76）：缺少 P 或 Q，切深、次数、移动量或刀尖角度超出范围，"
                 "螺纹程序段中有倒角或拐角 R（报警未见说明时为警告）；导程为负或将降到零以下的变导程螺纹（G34）；"
                 "钻孔固定循环有效时指令 G27-G30（PS0044）；G73/G83 没有 Q 或 Q0（PS0045）；"
+                "FANUC 钻孔循环使用了在清除它们的 G80 或 G00-G03 之前指令的 Z 或 R（警告）；"
                 "广数 G86 的 I 为 0 或小于 R。"),
          BOTH, (THREAD_CORNER, CYCLE_P_Q_MISSING, CYCLE_BAD_VALUE, TOOL_ANGLE, THREAD_MIN_DEPTH, THREAD_DEPTH,
                 GROOVE_RELIEF, GROOVE_END_POINT, GROOVE_AMOUNT, REPEAT_COUNT, ILLEGAL_LEAD, REFERENCE_IN_CYCLE,

@@ -15,7 +15,7 @@ from ..bilingual import detail
 from ..dialects.alarms import ARGUMENT_RANGE
 from .alarms import MacroAlarm
 from .cutter_stage import cutter_code, frame_moved
-from .drill_cycles import CYCLE_P, CYCLE_Q
+from .drill_cycles import CYCLE_P, CYCLE_Q, R_GIVEN, Z_GIVEN
 from .machine_limits import lathe_offset, offset_number, spindle_speed, tool_number
 from .moves import ToolChange
 from .offset_travel import keep_machine_position, vector_changing, work_offsets
@@ -84,6 +84,8 @@ def cycle_named(p: Planner, before: float, g: float) -> None:
         p.cycle_start_z = None
         if p.dialect.peck_q_alarm:
             p.codes.pop(CYCLE_Q, None)
+            p.codes.pop(Z_GIVEN, None)  # Z and R from before are kept, with a warning (drill_cycles.py)
+            p.codes.pop(R_GIVEN, None)
         if p.dialect.cycle_cancel_clears_dwell:
             p.codes.pop(CYCLE_P, None)
         return

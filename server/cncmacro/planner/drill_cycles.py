@@ -53,6 +53,9 @@ if TYPE_CHECKING:
 CYCLE_Z = "cycle Z"
 CYCLE_Q = "cycle Q"
 CYCLE_P = "cycle P"
+# set where Z, R were given in the canned cycle mode in force (block_words.py ``cycle_named``)
+Z_GIVEN = "cycle Z given"
+R_GIVEN = "cycle R given"
 MAX_REPEATS = 9999
 
 Steps = list[tuple[int, float]]
@@ -71,6 +74,8 @@ def drill_block(
     plane = {i: v for i, v in axes.items() if i != z}
     if z is not None and z in axes:
         codes[CYCLE_Z] = axes[z]
+    if m.dialect.peck_q_alarm:  # FANUC clears the hole data at G80 and G00-G03
+        _cleared_data(m, cycle, "R" in other, z is not None and z in axes, line)
     repeats = repeat_count(other.get(m.dialect.cycle_repeat_letter), m.dialect.cycle_repeat_letter)
     absolute = m.modal.get("distance", 90.0) == 90.0
     if z is None:  # no drilling axis: the holes are only positioned
@@ -117,6 +122,32 @@ def drill_block(
         m.pos = hole
     if repeats and absolute:  # the holes' absolute X, Y, and the R level it stops at (whereabouts.py)
         placed(m, [*plane, z] if r_word is not None and not to_initial else plane)
+
+
+def _cleared_data(m: Planner, cycle: float, r_given: bool, z_given: bool, line: int) -> None:
+    """A ``cycle-block`` warning, once a canned cycle mode, where a hole drills to a Z or from an R
+    given before the G80 or G00-G03 that began the mode: FANUC clears the hole data there (the
+    operator's manuals, "canned cycle for drilling"), so the control does not use them, while the
+    run keeps them (docs/semantics.md §9, "Hole data")."""
+    codes = m.codes
+    if r_given:
+        codes[R_GIVEN] = 1.0
+    if z_given:
+        codes[Z_GIVEN] = 1.0
+    old = [letter for letter, key, given in (("Z", CYCLE_Z, Z_GIVEN), ("R", "R", R_GIVEN))
+           if key in codes and given not in codes]  # fmt: skip
+    if not old:
+        return
+    codes[Z_GIVEN] = codes[R_GIVEN] = 1.0
+    words, was, it = (" and ".join(old), "were", "them") if len(old) > 1 else (old[0], "was", "it")
+    g = f"G{cycle:g}"
+    m.host.note("cycle", detail(
+        f"{g}: the {words} in force {was} given before the G80 or G00-G03 that ended the last canned cycle mode; "
+        f"FANUC clears the hole data there, so the control does not drill by {it} as the run does (the cycle "
+        f"time uses {it}): give {words} again in this canned cycle mode",
+        f"{g}：当前的 {'、'.join(old)} 是在结束上一个固定循环方式的 G80 或 G00-G03 之前指令的；FANUC 在此清除孔加工"
+        f"数据，控制器不会像本次运行这样按它钻孔（加工时间按它计算）：请在本固定循环方式中重新指令 {'、'.join(old)}"),
+        line, "cycle-block")  # fmt: skip
 
 
 def _no_peck(cycle: float, q: float | None) -> MacroAlarm:
