@@ -127,10 +127,13 @@ class RunLoop:
         f = self.frames[-1]
         if isinstance(e, MacroAlarm):
             f.pc = pc
+            line = pc
             if isinstance(e, AlarmBeforeMove):  # the control stopped before an earlier block moved
                 e.take_back()
+                if e.at is not None and e.at[0] == f.file:  # on that block (a block of another file: this one)
+                    line = e.at[1]
             shown = self.dialect.shown_alarm(e.number)
-            self.alarm = Alarm(e.number, e.message, f.file, pc, self.chain(), e.subject, shown)
+            self.alarm = Alarm(e.number, e.message, f.file, line, self.chain(line), e.subject, shown)
             self.status = RunStatus.ALARM
         else:
             f.pc = f.code.next_line(pc)

@@ -28,11 +28,17 @@ class AlarmBeforeMove(MacroAlarm):
     read has moved (FANUC's interference check: "the tool stops and an alarm is displayed" at the
     end of the block before the one that would be cut backwards). The planner has already made
     that block's move; ``take_back`` undoes it, once, when the run ends on this alarm (a run of
-    plain lines that meets it runs the line again the general way, which raises it anew)."""
+    plain lines that meets it runs the line again the general way, which raises it anew). ``at``
+    (file, 0-based line) is the block the alarm stands on when it is not the one read: a stroke
+    limit the tool centre crosses on a block whose path was settled by the next one (cutter_stage.py)."""
 
-    def __init__(self, number: int, message: str, subject: str, take_back: Callable[[], None]) -> None:
+    def __init__(
+        self, number: int, message: str, subject: str | None, take_back: Callable[[], None],
+        at: tuple[str, int] | None = None,
+    ) -> None:  # fmt: skip
         super().__init__(number, message, subject)
         self.take_back = take_back
+        self.at = at
 
 
 UNKNOWN_VALUE = "unknown-value"  # the subject of ``UnknownValue``

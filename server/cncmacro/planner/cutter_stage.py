@@ -47,6 +47,7 @@ from ..dialects.alarms import (
 from .alarms import AlarmBeforeMove, MacroAlarm
 from .arcs import ARC_MODES
 from .cycle_time import INCH
+from .machine_limits import Bounds, path_leaves_travel, program_bounds
 from .moves import CentrePath, CentrePiece, Move
 from .offset_geometry import (
     EPSILON,
@@ -90,7 +91,7 @@ class Pending(NamedTuple):
     offset (left positive), its provisional centre path and time, whether it is the start-up
     block, the places of the moves off the plane recorded since, the seconds per program unit of
     its path (0 for a rapid), its provisional path's length and the square of its move along the
-    axes off the plane."""
+    axes off the plane, and its file (the over-travel alarm found when its path is settled stands on it)."""
 
     place: int
     line: int
@@ -109,6 +110,7 @@ class Pending(NamedTuple):
     per_length: float
     length: float
     off_plane: float
+    file: str
 
 
 class CutterStage:
@@ -237,6 +239,10 @@ def uncompensated(p: Planner, run: Callable[[], _T]) -> _T:
     path to the perpendicular of its end, the moves of ``run`` are drawn as programmed, and the
     next move in the plane starts the offset again (a start-up from where the tool is)."""
     stage = p.cutter
+    if stage is not None and stage.on and stage.pending is not None and p.travel is not None:
+        pending = stage.pending  # its path to its end's perpendicular is the one made
+        if stage.moved is None or stage.moved[0] is not pending:
+            _pending_travel(p, pending, pending.path, stage.axes[0], stage.axes[1], _lathe_scale(p, stage))
     p.cutter = None
     try:
         return run()
@@ -343,7 +349,7 @@ def _full(plane_point: tuple[float, float], like: _Point, i: int, j: int, scale:
 
 
 def cutter_move(
-    p: Planner, line: int, mode: float, plane: float, start: _Point, end: _Point, centre: _Point | None,
+    p: Planner, file: str, line: int, mode: float, plane: float, start: _Point, end: _Point, centre: _Point | None,
     feed: float, unit: float,
 ) -> tuple[CentrePath, float] | None:  # fmt: skip
     """The centre path of a move (and its seconds, its length added to the run's) while the stage
@@ -374,10 +380,10 @@ def cutter_move(
         if stage.resume is not None:  # the compensation set aside by a shift: from where the centre is
             begin, stage.resume = _full(_plane_point(stage.resume, i, j, scale), start, i, j, scale), None
         d = d if stage.code == LEFT else -d
-        return _provisional(p, line, mode, plane, element, d, begin, start, end, None, feed, unit, True, i, j)
+        return _provisional(p, (file, line), mode, plane, element, d, begin, start, end, None, feed, unit, True, i, j)
     written = stage.written if in_plane else ""
     if centre is None and in_plane and mode != 0.0 and not written:  # a straight cut after one: joined in one pass
-        joined = _straight_after_straight(p, line, mode, plane, start, end, feed)
+        joined = _straight_after_straight(p, file, line, mode, plane, start, end, feed)
         if joined is not None:
             return joined
     pending = stage.pending
@@ -414,10 +420,10 @@ def cutter_move(
             corner = Corner(q, (), q)
         else:
             corner = _corner(p, here, element, d, outer, line)
-        _settle(p, pending, _moved_corner(corner, -mx, -my), line, i, j, scale)
+        _settle(p, pending, _moved_corner(corner, -mx, -my), line, i, j, scale, not mx and not my)
         begin = corner.after_start
-    return _provisional(p, line, mode, plane, element, d, _full(begin, start, i, j, scale), start, end, centre, feed,
-                        unit, False, i, j)  # fmt: skip
+    return _provisional(p, (file, line), mode, plane, element, d, _full(begin, start, i, j, scale), start, end, centre,
+                        feed, unit, False, i, j)  # fmt: skip
 
 
 def _cancel_move(
@@ -438,7 +444,7 @@ def _cancel_move(
         outer = PERPENDICULAR_BEFORE if arc or not stage.type_b else MEET
         here, mx, my = _in_frame(stage, pending)
         corner = _corner(p, here, PathElement(begin, last), pending.d, outer, line)
-        _settle(p, pending, _moved_corner(corner, -mx, -my), line, i, j, scale)
+        _settle(p, pending, _moved_corner(corner, -mx, -my), line, i, j, scale, not mx and not my)
         begin = corner.after_start
     stage.on = False
     stage.pending = None
@@ -455,12 +461,12 @@ _tuple_new = tuple.__new__  # a named tuple without its constructor's keyword ha
 
 
 def _straight_after_straight(
-    p: Planner, line: int, mode: float, plane: float, start: _Point, end: _Point, feed: float
+    p: Planner, file: str, line: int, mode: float, plane: float, start: _Point, end: _Point, feed: float
 ) -> tuple[CentrePath, float] | None:
     """A compiled line's straight cut after a straight cut, joined by ``StraightCuts`` as a run
     of plain lines joins it: its provisional path and seconds (``Planner.record`` records it),
     None for a case the general way takes."""
-    cuts = StraightCuts(p, "", False)
+    cuts = StraightCuts(p, file, False)
     if not cuts.take_over(plane):
         return None
     joined = cuts.cut((line, mode, feed, start, end))
@@ -579,6 +585,10 @@ class StraightCuts:
         least = -EPSILON  # the reversal a move of 1 may show before it is one (more in proportion to a longer move)
         keeps = hold or record or place >= 0  # moves are recorded
         points = keeps and p.centre_paths  # with their centre paths (the corners' points with them)
+        # the machine's travel in the plane (machine_limits.py), which the corners are held to: a
+        # corner inside it keeps the path to it inside (a straight piece leaves only where it ends out)
+        limits = _plane_limits(p, i, j)
+        corners = points or limits is not None
         # what a record reads that changes less often than moves come: the feed as a record holds
         # it, the room left in the toolpath, the axes after X and Y of the last move's end (on a
         # mill in G17: the rest of a centre point), kept while the moves stay in the plane
@@ -611,7 +621,7 @@ class StraightCuts:
             link = False
             if -1e-12 <= cross <= 1e-12 and dot > 0.0:  # straight on
                 back, ahead = 0.0, -d * cross
-                if points or fresh:
+                if corners or fresh:
                     bx, by = px - ty * d, py + tx * d
                     nx, ny = bx, by
             elif cross * d > 0.0 or dot >= 0.0:  # inside or obtuse: where the two offsets cross
@@ -619,7 +629,7 @@ class StraightCuts:
                     break
                 k = d / (1.0 + dot)
                 back = ahead = -k * cross
-                if points or fresh:
+                if corners or fresh:
                     bx, by = px - k * (ty + t2y), py + k * (tx + t2x)
                     nx, ny = bx, by
             else:  # acute outside: through the two extension points
@@ -637,6 +647,22 @@ class StraightCuts:
                            length, seconds, place, hold, held, fresh))  # fmt: skip
                 own, self.send = self.send, None
                 _reversal(p, new_line, line, place, start, mode, plane, unit, seconds, length)
+                self.send, own = own, None
+            if limits is not None and (
+                not (limits[0] <= bx <= limits[1] and limits[2] <= by <= limits[3])
+                or (link and not (limits[0] <= nx <= limits[1] and limits[2] <= ny <= limits[3]))
+            ):  # a corner out of the travel: the last move stops where its path leaves it
+                if not fresh:
+                    cx, cy = px - ty * d - reach * tx, py + tx * d - reach * ty
+                self._keep((line, mode, feed, start, end, px, py, tx, ty, l1, cx, cy, s0, per, off,
+                           length, seconds, place, hold, held, fresh))  # fmt: skip
+                own, self.send = self.send, None
+                ends = ((bx, by), (nx, ny)) if link else ((bx, by),)
+                made = CentrePath(_full((cx, cy), start, i, j), tuple(CentrePiece(_full(q, new_start, i, j))
+                                                                      for q in ends))  # fmt: skip
+                _pending_travel(p, Pending(place, line, mode, feed, unit, plane, start, end, PathElement(
+                    (start[i], start[j]), (px, py)), d, made, seconds, False, (), per, length, off, self.file),
+                    made, i, j, None)  # fmt: skip
                 self.send, own = own, None
             # the last move, now that its corner is known: its length and time put right
             if fresh:
@@ -794,7 +820,23 @@ class StraightCuts:
         element = _tuple_new(PathElement, ((self.ax, self.ay), (self.px, self.py), None, False))
         self.stage.pending = _tuple_new(Pending, (place, self.line, self.mode, self.feed, self.unit, self.plane,
                                                   self.start, end, element, self.d, path, self.seconds, False, (),
-                                                  self.per, self.length, self.off))  # fmt: skip
+                                                  self.per, self.length, self.off, self.file))  # fmt: skip
+
+
+def _plane_limits(p: Planner, i: int, j: int) -> tuple[float, float, float, float] | None:
+    """The machine's travel on the plane's axes ``i`` and ``j`` in program coordinates (lowest and
+    highest of each, unbounded where not limited: ``program_bounds``); None where neither is."""
+    if p.travel is None:
+        return None
+    inf = float("inf")
+    out = [-inf, inf, -inf, inf]
+    found = False
+    for k, low, high, _ in program_bounds(p):
+        if k in (i, j):
+            n = 0 if k == i else 2
+            out[n], out[n + 1] = low - 1e-9, high + 1e-9
+            found = True
+    return (out[0], out[1], out[2], out[3]) if found else None
 
 
 def _signed_radius(p: Planner, stage: CutterStage) -> float | None:
@@ -835,27 +877,156 @@ def _reversal(
         return
 
     def take_back() -> None:
-        moves = p.moves
-        if 0 <= place < len(moves) and moves[place].line == reversed_line:
-            after = moves[place + 1 :]
-            p.withdrawn = (place, moves[place:])
-            del moves[place:]
-        else:
-            after = []
-        p.clock -= seconds + sum(mv.seconds for mv in after)
-        taken = length * unit
-        if mode == 0.0:
-            p.rapid_length -= taken
-        else:
-            p.cut_length -= taken
-        for mv in after:  # the moves off the plane made at the block's corner
-            if mv.mode == 0.0:
-                p.rapid_length -= p.times.distance(mv.start, mv.end) * unit
-            else:
-                p.cut_length -= p.times.distance(mv.start, mv.end) * unit
+        _withdraw(p, place, reversed_line, mode, unit, seconds, length, None)
         p.pos = list(start)
 
     raise AlarmBeforeMove(CUTTER_INTERFERENCE, message, "cutter-interference", take_back)
+
+
+def _withdraw(
+    p: Planner, place: int, line: int, mode: float, unit: float, seconds: float, length: float, made: Move | None
+) -> None:
+    """Take back the move of ``line`` recorded at ``place`` (its provisional ``seconds`` and
+    ``length``) and the moves made after it, which the control never made: from the clock, the
+    lengths and the toolpath (``made``, what the control did make of that move, in its place;
+    ``Planner.withdrawn`` keeps what was taken for a snapshot restored)."""
+    moves = p.moves
+    if 0 <= place < len(moves) and moves[place].line == line:
+        after = moves[place + 1 :]
+        taken = moves[place:]
+        del moves[place:]
+        if made is not None:
+            moves.append(made)
+        p.withdrawn = (place, len(moves), taken)
+    else:
+        after = []
+    p.clock -= seconds + sum(mv.seconds for mv in after)
+    if mode == 0.0:
+        p.rapid_length -= length * unit
+    else:
+        p.cut_length -= length * unit
+    for mv in after:  # the moves off the plane made at the block's corner
+        if mv.mode == 0.0:
+            p.rapid_length -= p.times.distance(mv.start, mv.end) * unit
+        else:
+            p.cut_length -= p.times.distance(mv.start, mv.end) * unit
+
+
+def _machine_path(
+    p: Planner, path: CentrePath, radius: float, i: int, j: int, scale: _Scale, back: bool = False
+) -> CentrePath:
+    """The path the machine position follows along the tool centre's ``path``: the path itself on a
+    mill; on a lathe the imaginary tool nose's, the tip's vector (``_tip``) from the nose centre of
+    ``radius``, whose position the T offset carries to the machine (``back``: from that path to the
+    centre's)."""
+    tx, ty = _tip(p, abs(radius), i, j)
+    if not tx and not ty:
+        return path
+    if back:
+        tx, ty = -tx, -ty
+
+    def moved(q: _Point) -> _Point:
+        x, y = _plane_point(q, i, j, scale)
+        return _full((x + tx, y + ty), q, i, j, scale)
+
+    pieces = tuple(
+        CentrePiece(moved(pc.end), None if pc.centre is None else moved(pc.centre), pc.clockwise) for pc in path.pieces
+    )
+    return CentrePath(moved(path.start), pieces)
+
+
+def _programmed_at(element: PathElement, q: tuple[float, float], first: bool) -> tuple[float, float]:
+    """Where the programmed ``element`` is when the tool centre stops at ``q`` (the plane's
+    units): its point nearest ``q`` when the centre stopped on the path along it (``first``), its
+    end when on a corner's piece after it."""
+    if not first:
+        return element.end
+    (ax, ay), (bx, by) = element.start, element.end
+    c = element.centre
+    if c is not None:
+        r = hypot(ax - c[0], ay - c[1])
+        dx, dy = q[0] - c[0], q[1] - c[1]
+        h = hypot(dx, dy)
+        return element.end if h == 0.0 else (c[0] + dx * r / h, c[1] + dy * r / h)
+    ux, uy = bx - ax, by - ay
+    ll = ux * ux + uy * uy
+    t = 0.0 if ll == 0.0 else min(1.0, max(0.0, ((q[0] - ax) * ux + (q[1] - ay) * uy) / ll))
+    return ax + t * ux, ay + t * uy
+
+
+def _cut_short(
+    p: Planner, bounds: Bounds, plane: float, path: CentrePath, element: PathElement, radius: float, i: int, j: int,
+    scale: _Scale,
+) -> tuple[CentrePath, _Point, MacroAlarm] | None:  # fmt: skip
+    """Where the machine, following the centre's ``path``, first leaves ``bounds``: the centre's
+    path up to there, the programmed point there (``_programmed_at``) and the over-travel alarm;
+    None when it stays inside."""
+    found = path_leaves_travel(p, bounds, plane, _machine_path(p, path, radius, i, j, scale))
+    if found is None:
+        return None
+    machine, alarm = found
+    cut = _machine_path(p, machine, radius, i, j, scale, back=True)
+    last = cut.pieces[-1].end
+    q = _programmed_at(element, _plane_point(last, i, j, scale), len(cut.pieces) == 1)
+    return cut, _full(q, last, i, j, scale), alarm
+
+
+def _pending_travel(p: Planner, pending: Pending, path: CentrePath, i: int, j: int, scale: _Scale) -> None:
+    """The pending move's centre ``path``, now settled (its axes off the plane were checked as it
+    was made, ``centre_travel``): where it leaves the machine's travel in the plane, the control's
+    over-travel alarm on that block (FANUC OT0500/OT0501: the axis stops at the limit), raised
+    while the next move is read; the move is cut short there and the moves after it taken back
+    when the run ends on it."""
+    bounds = tuple(b for b in program_bounds(p) if b[0] == i or b[0] == j)
+    found = _cut_short(p, bounds, pending.plane, path, pending.element, pending.d, i, j, scale) if bounds else None
+    if found is None:
+        return
+    cut, stop, alarm = found
+    place, line, mode, feed, unit, plane, start = pending[:7]
+
+    def take_back() -> None:
+        moves = p.moves
+        made = None
+        if 0 <= place < len(moves) and moves[place].line == line:
+            made = moves[place]._replace(end=stop, tool_path=cut if p.centre_paths else None)
+        _withdraw(p, place, line, mode, unit, pending.seconds, pending.length, made)
+        taken = _cost(p, mode, cut, feed, unit, plane, start, stop)
+        p.clock += taken
+        if made is not None:
+            moves[-1] = made._replace(seconds=taken)
+        p.pos = list(stop)
+
+    raise AlarmBeforeMove(alarm.number, alarm.message, alarm.subject, take_back, (pending.file, line))
+
+
+def centre_travel(
+    p: Planner, line: int, mode: float, plane: float, start: _Point, end: _Point, centre: _Point | None,
+    path: CentrePath, feed: float, unit: float,
+) -> tuple[CentrePath, float, _Point, MacroAlarm] | None:  # fmt: skip
+    """The travel check of a move ``Planner.record`` makes with its centre ``path`` (the machine
+    follows the centre, not the programmed point): the whole path where it is final (a cancel, a
+    move off the plane), only its axes off the plane where the next move settles its corner
+    (``_pending_travel`` checks the plane then). Where it leaves: the path up to there, its
+    seconds (the run's lengths put right), the programmed point there and the alarm."""
+    axes = p.times.planes.get(plane)
+    if axes is None:
+        return None
+    i, j = axes[0], axes[1]
+    stage = p.cutter
+    bounds = program_bounds(p)
+    if stage is not None and stage.pending is not None and stage.pending.path is path:
+        bounds = tuple(b for b in bounds if b[0] != i and b[0] != j)
+    if not bounds:
+        return None
+    scale = (axes[2], axes[3]) if p.lathe else None
+    radius = nose_radius(p, line) if p.lathe else 0.0
+    element = _element(mode, start, end, centre, i, j, scale)
+    found = _cut_short(p, bounds, plane, path, element, radius, i, j, scale)
+    if found is None:
+        return None
+    cut, stop, alarm = found
+    _count(p, mode, path, plane, -unit)
+    return cut, _cost(p, mode, cut, feed, unit, plane, start, stop), stop, alarm
 
 
 def _arc_finding(p: Planner, message: str, line: int) -> None:
@@ -989,11 +1160,12 @@ def _corner(p: Planner, pending: Pending, after: PathElement, d: float, outer: s
 
 
 def _provisional(
-    p: Planner, line: int, mode: float, plane: float, element: PathElement, d: float, begin: _Point, start: _Point,
-    end: _Point, centre: _Point | None, feed: float, unit: float, startup: bool, i: int, j: int,
+    p: Planner, where: tuple[str, int], mode: float, plane: float, element: PathElement, d: float, begin: _Point,
+    start: _Point, end: _Point, centre: _Point | None, feed: float, unit: float, startup: bool, i: int, j: int,
 ) -> tuple[CentrePath, float]:  # fmt: skip
-    """The path of a new move in the plane from ``begin``, ending on its end's perpendicular as
-    if nothing followed, kept pending for the next move to put right."""
+    """The path of a new move in the plane (of ``where``: its file and line) from ``begin``, ending
+    on its end's perpendicular as if nothing followed, kept pending for the next move to put right."""
+    file, line = where
     stage = p.cutter
     assert stage is not None
     q = perpendicular_end(element, d)
@@ -1007,13 +1179,17 @@ def _provisional(
     (ax, ay), (bx, by) = element.start, element.end
     off_plane = max(dist(start, end) ** 2 - (bx - ax) ** 2 - (by - ay) ** 2, 0.0)
     stage.pending = Pending(index, line, mode, feed, unit, plane, start, end, element, d, path, seconds, startup, (),
-                            per_length, _length(p, path, plane), off_plane)  # fmt: skip
+                            per_length, _length(p, path, plane), off_plane, file)  # fmt: skip
     return path, seconds
 
 
-def _settle(p: Planner, pending: Pending, corner: Corner, line: int, i: int, j: int, scale: _Scale = None) -> None:
+def _settle(
+    p: Planner, pending: Pending, corner: Corner, line: int, i: int, j: int, scale: _Scale = None, checked: bool = True
+) -> None:
     """Put the pending move's centre path right now that the corner after it is known: its time,
-    its length, its record, and the moves off the plane made at its end."""
+    its length, its record, and the moves off the plane made at its end. Where the path leaves the
+    machine's travel the run stops on that move (``_pending_travel``; not ``checked`` when the
+    coordinate system moved since it, the travel then being in other coordinates)."""
     provisional = pending.path
     last = provisional.pieces[-1]
     end_full = last.end
@@ -1033,6 +1209,8 @@ def _settle(p: Planner, pending: Pending, corner: Corner, line: int, i: int, j: 
     if corner.after_start != corner.before_end or corner.links:
         pieces.append(CentrePiece(_full(corner.after_start, end_full, i, j, scale)))
     path = CentrePath(provisional.start, tuple(pieces))
+    if checked and p.travel is not None:
+        _pending_travel(p, pending, path, i, j, scale)
     mode, unit, plane = pending.mode, pending.unit, pending.plane
     seconds = _cost(p, mode, path, pending.feed, unit, plane, pending.start, pending.end)
     _count(p, mode, provisional, plane, -unit)

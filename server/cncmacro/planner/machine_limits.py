@@ -12,7 +12,9 @@ library/limits_settings.py; docs/semantics.md §11).
   offset in force given too, and no G30 since the axis's last absolute move. The external offset
   counts as 0 unless given. A ``G53`` move names machine
   coordinates itself, so it is always checked. ``program_bounds`` turns the travel into the
-  program's coordinates once for a run of moves made under the same offsets.
+  program's coordinates once for a run of moves made under the same offsets. Under cutter radius
+  compensation the machine follows the tool centre (a lathe's imaginary tool nose beside its nose
+  centre): cutter_stage.py checks its path (``path_leaves_travel``) once it is settled.
 - **Units.** The travel is in mm whatever G20/G21 says, a rotary axis's (A, B, C) in degrees: under
   G20 a linear axis's inches are taken times 25.4 and a rotary axis's degrees as they are
   (``axis_unit``).
@@ -37,11 +39,12 @@ from ..dialects.alarms import OFFSET_NUMBER, OVERTRAVEL_MINUS, OVERTRAVEL_PLUS
 from ..dialects.describe import ROTARY_AXES
 from .alarms import MacroAlarm
 from .arcs import ARC_MODES
+from .moves import CentrePath
 from .tool_offsets import lathe_offset_number
 from .whereabouts import frame_offset, machine_known
 
 if TYPE_CHECKING:
-    from .moves import Leg
+    from .moves import CentrePiece, Leg
     from .planner import Planner
 
 # (axis index, lowest, highest, offset): an axis's travel in program coordinates and the offset
@@ -128,6 +131,25 @@ def leaves_travel(
     t = found[0]
     point = tuple(s + (e - s) * t for s, e in zip(start, end, strict=True))
     return point, _alarm(p, bounds, found)
+
+
+def path_leaves_travel(
+    p: Planner, bounds: Bounds, plane: float, path: CentrePath
+) -> tuple[CentrePath, MacroAlarm] | None:
+    """Where a tool centre path (cutter radius compensation, cutter_stage.py: the machine position
+    follows the tool centre, not the programmed point) first leaves ``bounds``, piece by piece as
+    ``leaves_travel`` looks at a move: the path up to there and the alarm; None when it stays inside."""
+    at = path.start
+    kept: list[CentrePiece] = []
+    for piece in path.pieces:
+        mode = 1.0 if piece.centre is None else (2.0 if piece.clockwise else 3.0)
+        stop = leaves_travel(p, bounds, mode, plane, at, piece.end, piece.centre, None)
+        if stop is not None:
+            kept.append(piece._replace(end=stop[0]))
+            return CentrePath(path.start, tuple(kept)), stop[1]
+        kept.append(piece)
+        at = piece.end
+    return None
 
 
 # (where along the move it leaves, 0 to 1; the axis's row in the bounds; +1 or -1; the farthest

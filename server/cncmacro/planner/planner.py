@@ -39,6 +39,7 @@ from .conic_moves import CURVE_FAULT, conic_points
 from .cutter_stage import (
     UNCOMPENSATED_CODES,
     CutterStage,
+    centre_travel,
     cutter_move,
     restore_pending,
     skip_in_offset,
@@ -88,9 +89,10 @@ class Planner:
     block_feed: bool = False  # whether that block writes F (G93 takes one in every cut: missing_feed.py)
     whereabouts: Whereabouts = START  # what the run knows of where the machine is (whereabouts.py)
     block_corner: str | None = None  # a block's ,C or ,R (its letter) while it runs (machine/corners.py)
-    # the moves an alarm found reading ahead took back (cutter_stage.py, ``_reversal``), from which
-    # place: a snapshot taken before the alarm and restored gets them again
-    withdrawn: tuple[int, list[Move]] | None = None
+    # the moves an alarm found reading ahead took back (cutter_stage.py, ``_withdraw``): from which
+    # place, how many moves were left, and those taken: a snapshot taken before the alarm and
+    # restored gets them again
+    withdrawn: tuple[int, int, list[Move]] | None = None
 
     def __init__(self, dialect: Dialect, settings: MachineSettings, host: PlannerHost) -> None:
         self.dialect = dialect
@@ -216,8 +218,9 @@ class Planner:
         self.clock = state.clock
         self.cut_length, self.rapid_length = state.lengths
         withdrawn, self.withdrawn = self.withdrawn, None
-        if withdrawn is not None and withdrawn[0] == len(self.moves) < state.moves:  # back to before an alarm took them
-            self.moves.extend(withdrawn[1])
+        if withdrawn is not None and withdrawn[1] == len(self.moves) and withdrawn[0] < state.moves:
+            del self.moves[withdrawn[0] :]  # back to before an alarm took them (or cut the last one short)
+            self.moves.extend(withdrawn[2])
         del self.moves[state.moves :]
         if self.moves_cut and len(self.moves) < self.move_budget:  # taken back to before the toolpath filled
             self.moves_cut = False
@@ -701,14 +704,20 @@ class Planner:
         unit = INCH if modal.get("units") == 20.0 else 1.0
         plane = modal.get("plane", 17.0)
         stop = None
-        if self.travel is not None:  # the machine's soft limits: the move stops where it leaves them
-            stop = leaves_travel(self, program_bounds(self), mode, plane, start, end, centre, legs)
-            if stop is not None:
-                end = stop[0]
         tool_path = None
         compensated = None
         if self.cutter is not None and legs is None:  # cutter radius compensation (cutter_stage.py)
-            compensated = cutter_move(self, line, mode, plane, start, end, centre, feed, unit)
+            compensated = cutter_move(self, file, line, mode, plane, start, end, centre, feed, unit)
+        if self.travel is None:
+            pass
+        elif compensated is None:  # the machine's soft limits: the move stops where it leaves them
+            stop = leaves_travel(self, program_bounds(self), mode, plane, start, end, centre, legs)
+            if stop is not None:
+                end = stop[0]
+        else:  # the machine follows the tool centre
+            short = centre_travel(self, line, mode, plane, start, end, centre, compensated[0], feed, unit)
+            if short is not None:
+                compensated, end, stop = (short[0], short[1]), short[2], (short[2], short[3])
         travelled = start if self.vector_before is None else travel_start(self, start)  # offset_travel.py
         if compensated is not None:
             tool_path, seconds = compensated
