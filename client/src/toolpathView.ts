@@ -170,7 +170,8 @@ body.hide-centre .move .centre { display: none; }
   border: 1px solid var(--vscode-menu-border, rgba(128,128,128,0.5)); box-shadow: 0 2px 8px rgba(0,0,0,0.35); }
 #menu.open { display: flex; }
 #menu button { text-align: left; white-space: nowrap; }
-#legend .totals { font-weight: bold; white-space: nowrap; }
+#legend .totals { font-weight: bold; display: block; }
+#legend .totals .item { white-space: nowrap; }
 .hint { opacity: 0.7; margin-left: auto; }
 `;
 
@@ -474,7 +475,8 @@ function legend(texts: Texts, plot: Plot, debug?: PausedPage): string {
     items.push(`<li>${legendLine('feed current', false)}${escapeHtml(debug.legend.current)}</li>`);
     items.push(`<li>${legendLine('feed ahead', false)}${escapeHtml(debug.legend.ahead)}</li>`);
   }
-  if (texts.totals) items.push(`<li class="totals">${escapeHtml(texts.totals)}</li>`);
+  // the run's totals (`≈ 1 min 48 s · 596 mm cut · 766 mm rapid`) wrap only between their parts, as the status line
+  if (texts.totals) items.push(`<li class="totals">${statusHtml(texts.totals.split(' · ').map((part) => [part]))}</li>`);
   items.push(`<li class="plane">${escapeHtml(texts.plane)}</li>`);
   return `<ul id="legend">${items.join('')}</ul>`;
 }

@@ -5,7 +5,7 @@
 // README shows. Run: node --test tests/editor/cycle_time.test.mjs (after npm run package).
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
-import { screenshot, startWorkbench } from './codeServer.mjs';
+import { VIEWPORT, screenshot, startWorkbench } from './codeServer.mjs';
 import { hoverOver, openFile } from './workbench.mjs';
 
 const STEP = 90000;
@@ -59,6 +59,32 @@ test("the toolpath view's legend shows the run's totals", { timeout: STEP }, asy
   await totals.waitFor({ timeout: 45000 });
   assert.equal((await totals.innerText()).replace(/\u00a0/g, ' '), '≈ 33 s · 359 mm cut · 292 mm rapid');
   await shot('3-toolpath-legend');
+});
+
+test('in a narrow toolpath panel the totals wrap between their parts, none cut off at the edge', { timeout: STEP }, async () => {
+  // a smaller window: the toolpath panel beside the program is about 200 px wide, narrower than
+  // the bold '≈ 33 s · 359 mm cut · 292 mm rapid'
+  await page.setViewportSize({ width: 760, height: 800 });
+  try {
+    const view = page.frameLocator('iframe.webview.ready').frameLocator('iframe#active-frame');
+    const totals = view.locator('#legend .totals');
+    await page.waitForTimeout(800); // the panel is laid out anew
+    const drawn = await totals.evaluate((el) => {
+      const text = document.createRange();
+      text.selectNodeContents(el);
+      return {
+        right: text.getBoundingClientRect().right, // where the text ends, overflowing or not
+        width: document.documentElement.clientWidth,
+        lines: [...el.querySelectorAll('.item')].map((part) => [part.textContent, part.getClientRects().length]),
+      };
+    });
+    assert.ok(drawn.right <= drawn.width, `the totals end at ${drawn.right} px, in a panel ${drawn.width} px wide`);
+    // each part whole on its line: '359 mm cut' is never cut into '359 mm' and 'cut'
+    assert.deepEqual(drawn.lines, [['≈ 33 s', 1], ['359 mm cut', 1], ['292 mm rapid', 1]]);
+    await shot('4-narrow-legend');
+  } finally {
+    await page.setViewportSize(VIEWPORT);
+  }
 });
 
 test('the editor tried no host but this machine: no gallery, telemetry or update check', { timeout: STEP }, async () => {
