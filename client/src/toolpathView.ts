@@ -170,7 +170,7 @@ body.hide-centre .move .centre { display: none; }
   border: 1px solid var(--vscode-menu-border, rgba(128,128,128,0.5)); box-shadow: 0 2px 8px rgba(0,0,0,0.35); }
 #menu.open { display: flex; }
 #menu button { text-align: left; white-space: nowrap; }
-#legend .totals { font-weight: bold; display: block; }
+#legend .totals { font-weight: bold; display: block; flex-basis: 100%; } /* a line of its own: not read as an entry's */
 #legend .totals .item { white-space: nowrap; }
 .hint { opacity: 0.7; margin-left: auto; }
 `;

@@ -39,6 +39,20 @@ function exampleMoves() {
   return JSON.parse(run.stdout).moves;
 }
 
+/**
+ * The legend's entries drawn on the line of its totals (the run's cycle time and path), once the
+ * panel is laid out: none should be, or `still to run ≈ 1 min 26 s · …` reads as the time left.
+ */
+async function besideTotals(view) {
+  await page.waitForTimeout(400);
+  return view.locator('#legend').evaluate((legend) => {
+    const totals = legend.querySelector('.totals').getBoundingClientRect();
+    return [...legend.querySelectorAll('li:not(.totals):not(.plane)')]
+      .filter((entry) => entry.getBoundingClientRect().bottom > totals.top + 1)
+      .map((entry) => entry.textContent);
+  });
+}
+
 async function showToolpath() {
   await page.keyboard.press('F1');
   await page.keyboard.type('CNC Macro: Show Toolpath');
@@ -114,9 +128,11 @@ test('paused at the G71 block, every one of its passes is highlighted as the cur
   const title = await view.locator(`#plot g.move.current[data-line="${G71_LINE}"] title`).nth(1).textContent();
   assert.match(title, /\(pass of G71\)$/);
   if (await page.locator('.part.panel').isVisible()) await page.keyboard.press('Control+J'); // the Debug Console: room for the drawing
+  assert.deepEqual(await besideTotals(view), [], 'with the side bar');
   await page.keyboard.press('Control+B'); // the side bar away: room for the drawing
   await page.locator('.part.sidebar').waitFor({ state: 'hidden' });
   await page.mouse.move(5, 500);
+  assert.deepEqual(await besideTotals(view), [], 'without the side bar');
   await shot('lathe-3-paused-at-g71', 'lathe-toolpath');
   await page.keyboard.press('Control+B');
 
