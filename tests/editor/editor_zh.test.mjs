@@ -1,6 +1,6 @@
 // The extension in a VS Code whose display language is Chinese (code-server --locale zh-cn):
 // what a Chinese-reading user sees of CNC Macro — the command titles, a hover, the Problems
-// panel and the toolpath view in Chinese. Screenshots go to test-output/editor/zh-*.png. Run with the other editor
+// panel, the toolpath view and the debugger's exception filters in Chinese. Screenshots go to test-output/editor/zh-*.png. Run with the other editor
 // tests: node --test tests/editor/ (after npm run package).
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
@@ -110,6 +110,27 @@ test('the toolpath view speaks Chinese, and a short view keeps its axis names an
   assert.ok(layout.status.bottom - layout.status.top > 1.5 * layout.lineHeight, `the status line wraps: ${where}`);
   assert.ok(layout.items.length >= 4, `status items: ${where}`);
   for (const item of layout.items) assert.equal(item.lines, 1, `"${item.text}" on one line: ${where}`);
+});
+
+test('debugging, the Breakpoints view names the exception filters in Chinese', { timeout: 2 * STEP }, async () => {
+  await openFile(page, 'profile_steps.nc');
+  await page.locator('.editor-instance .view-lines').first().click();
+  await page.keyboard.press('Control+G');
+  await page.keyboard.type('11'); // G01 Y#2
+  await page.keyboard.press('Enter');
+  await page.keyboard.press('F9');
+  await page.locator('.codicon-debug-breakpoint').first().waitFor();
+  await page.keyboard.press('F5');
+  await page.locator('.debug-toolbar').waitFor({ state: 'visible' });
+  await page.locator('.debug-top-stack-frame-line').first().waitFor();
+  const filters = page.locator('.debug-breakpoints .monaco-list-row');
+  await filters.filter({ hasText: '所有报警' }).first().waitFor();
+  await filters.filter({ hasText: '#3006 信息' }).first().waitFor();
+  assert.equal(await filters.filter({ hasText: /All alarms|#3006 messages/ }).count(), 0);
+  await page.locator('.debug-view-content .monaco-list-row', { hasText: '局部变量' }).first().waitFor(); // the scope, as before
+  await shot('5-debugging');
+  await page.keyboard.press('Shift+F5');
+  await page.locator('.debug-toolbar').waitFor({ state: 'hidden' });
 });
 
 test('the editor tried no host but this machine: no gallery, telemetry or update check', { timeout: STEP }, async () => {

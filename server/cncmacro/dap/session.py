@@ -36,12 +36,17 @@ from .launch import LaunchConfig, Launched, LaunchError, launch
 from .protocol import Event, MessageWriter, ProtocolError, Request, Response, read_message
 
 THREAD_ID = 1
-EXCEPTION_FILTERS = [
-    {"filter": "alarms", "label": "All alarms", "default": True,
-     "description": "Stop when the program raises an alarm (#3000, division by zero, ...)"},
-    {"filter": "messages", "label": "#3006 messages", "default": True,
-     "description": "Stop at #3006 operator messages and M00"},
-]  # fmt: skip
+
+
+def exception_filters(locale: str | None) -> list[dict[str, Any]]:
+    """The two exception filters the Breakpoints view lists, named in the editor's language."""
+    return [
+        {"filter": "alarms", "label": pick(locale, "All alarms", "所有报警"), "default": True,
+         "description": pick(locale, "Stop when the program raises an alarm (#3000, division by zero, ...)",
+                             "程序发出报警时停止（#3000、除数为零等）")},
+        {"filter": "messages", "label": pick(locale, "#3006 messages", "#3006 信息"), "default": True,
+         "description": pick(locale, "Stop at #3006 operator messages and M00", "在 #3006 操作信息和 M00 处停止")},
+    ]  # fmt: skip
 
 
 TOOLPATH_PAGE = 100_000  # moves in one toolpath answer (about 12 MB of JSON)
@@ -132,7 +137,7 @@ class Session:
             "supportsTerminateRequest": True,
             "supportsStepBack": True,
             "supportsExceptionInfoRequest": True,
-            "exceptionBreakpointFilters": EXCEPTION_FILTERS,
+            "exceptionBreakpointFilters": exception_filters(self.locale),
         }
 
     def on_launch(self, args: dict[str, Any]) -> None:
