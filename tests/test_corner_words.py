@@ -31,14 +31,20 @@ def test_1_text_and_blocks_corner_words_check_clean_where_the_control_has_them(t
 
 
 @pytest.mark.parametrize("profile", PROFILES)
-def test_8_machine_corner_words_run_the_moves_as_written(profile):
+def test_8_machine_corner_words_cut_the_corner_between_the_moves(profile):
     m = run(REAL, profile)
     assert m.status == "completed", m.alarm
-    ends = [(mv.line + 1, mv.mode, mv.end[:2]) for mv in m.planner.moves]
+    ends = [(mv.line + 1, mv.mode, tuple(round(v, 6) for v in mv.end[:2])) for mv in m.planner.moves]
+    # ,R5 between +X and +Y (a left turn of 90°): tangent 5·tan(45°) = 5 from the corner X50 Y0, so
+    # X45 Y0, then G03 about X45 Y5 to X50 Y5. ,C3 between +Y and the line to X20 Y30 (direction
+    # (-30, -20)/√1300): X50 Y47, then X50 - 3·30/36.05551 = 47.503849, Y50 - 3·20/36.05551 = 48.335899.
+    # The last ,C3 has no move after it (M30): the corner stays as written
     assert ends == [
         (2, 0.0, (0.0, 0.0)),
-        (3, 1.0, (50.0, 0.0)),  # no corner point inserted: the sharp corner at X50 Y0
-        (4, 1.0, (50.0, 50.0)),
+        (3, 1.0, (45.0, 0.0)),
+        (3, 3.0, (50.0, 5.0)),
+        (4, 1.0, (50.0, 47.0)),
+        (4, 1.0, (47.503849, 48.335899)),
         (5, 1.0, (20.0, 30.0)),
     ]
 

@@ -22,6 +22,7 @@ from ..dialects.alarms import (
     ARC_RADIUS,
     ARGUMENT_RANGE,
     BRACKET_NESTING,
+    CORNER_FIT,
     COUNT_TWICE,
     CUTTER_ARC_START,
     CUTTER_CORNER,
@@ -333,6 +334,12 @@ CODES: dict[str, Code] = _codes(
                 "or changes between G41 and G42 (FANUC PS0039).",
                 "在建立或取消刀具半径补偿、或 G41/G42 切换的程序段中指令了倒角或拐角R（,C 或 ,R）（FANUC PS0039）。"),
          RUN, (CUTTER_CORNER,), ("cutter-corner",)),
+    Code("corner-fit", ERROR,
+         detail("A chamfer or corner R (,C, ,R; the GSK980TDi's L, D) that does not fit its moves: a move too short, "
+                "a radius too large (FANUC PS0055; the GSK980TDi's alarms of its manual §3.11.3).",
+                "倒角或拐角R（,C、,R；GSK980TDi 的 L、D）无法插入其两段移动之间：移动过短或半径过大"
+                "（FANUC PS0055；GSK980TDi 手册 §3.11.3 的报警）。"),
+         RUN, (CORNER_FIT,), ("corner-fit",)),
     Code("cutter-skip", ERROR,
          detail("A skip G31 commanded while cutter radius compensation (G41/G42) is in force (FANUC PS0035, "
                 "Mitsubishi P608; a warning where the control's manual asks for G40 first but names no alarm).",

@@ -72,6 +72,9 @@ CUTTER_ARC_START = 34
 CUTTER_SKIP = 35  # PS0035: G31 in G41/G42 (Mitsubishi: program error P608, shown without a number)
 CUTTER_PLANE = 37
 CUTTER_CORNER = 39  # PS0039: ,C/,R on a start-up, a cancel or a change of side in G41/G42
+# a chamfer or corner R that does not fit its moves (planner/corner_stage.py): FANUC's PS0055, the
+# GSK980TDi's unnumbered alarms of §3.11.3
+CORNER_FIT = 55
 CUTTER_INTERFERENCE = 41
 # a mill's drilling canned cycles (docs/semantics.md §9): FANUC 0i's PS alarms
 REFERENCE_IN_CYCLE = 44  # PS0044: G27-G30 in canned cycle mode (planner/one_shot.py)
@@ -188,6 +191,11 @@ ALARMS: dict[int, AlarmDoc] = {
             "G41/G42 建立、取消或切换时不能指令倒角或拐角R",
         ),
         AlarmDoc(CUTTER_INTERFERENCE, "interference in cutter compensation", "刀具半径补偿干涉"),
+        AlarmDoc(
+            CORNER_FIT,
+            "missing move value in chamfering or corner R (the move is shorter than the chamfer or corner R)",
+            "倒角或拐角R的移动量不足（移动量小于倒角或拐角R）",
+        ),
         AlarmDoc(REFERENCE_IN_CYCLE, "G27-G30 not allowed in a canned cycle", "固定循环中不能指令 G27-G30"),
         AlarmDoc(PECK_Q_MISSING, "address Q not found (G73/G83)", "未指令地址 Q（G73/G83）"),
         AlarmDoc(

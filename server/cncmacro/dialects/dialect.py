@@ -147,8 +147,8 @@ class Dialect:
     # the run notes once a block that the cycle is not simulated (the `not-simulated` information)
     unsimulated_codes: frozenset[float] = frozenset()
     # §10.1 the chamfer and corner rounding words of a G01/G02/G03 block (GSK980TDi §3.11: L a
-    # straight chamfer, D a rounding arc), noted as not simulated (planner/chamfer_words.py); None:
-    # the profile has none
+    # straight chamfer of that length, type I, D a rounding arc), cut between the block's move and
+    # the next (planner/corner_stage.py); None: the profile has none
     chamfer_words: tuple[str, str] | None = None
     # §10.1 automatic tool offset measurement (GSK980TDi G36 X_, G37 Z_, §3.17): the tool goes to
     # the measuring position at rapid whatever the motion in force, which stays; the offset's update
@@ -208,6 +208,11 @@ class Dialect:
     # a change between G41 and G42 is the control's alarm (FANUC PS0039 "CHF/CNR NOT ALLOWED IN
     # G41,G42", mills and lathes); without this switch nothing is said (the corner is not simulated)
     corner_compensation_alarm: bool = False
+    # §8 "Chamfer and corner words": a chamfer or corner R that does not fit its moves (a move too
+    # short, a radius too large) is the control's alarm (FANUC PS0055 "MISSING MOVE VALUE IN
+    # CHF/CNR"; the GSK980TDi's unnumbered alarms of §3.11.3); without this switch the corner is
+    # left sharp and the run notes it (planner/corner_stage.py)
+    corner_fit_alarm: bool = False
     # "Cutter radius compensation": G41/G42 written again in offset mode on the side in force ends
     # the previous block on the perpendicular of its end, inside or outside (FANUC 30i-MA and 15i-MB
     # manuals, "cutter compensation G code in the offset mode"); without this switch it

@@ -789,8 +789,13 @@ class CompiledFile:
             raise UnknownValue
         if letter == "G":
             return to_increment(v, 1) if v != int(v) else float(v)
-        if letter in INTEGER_LETTERS and not (letter == "D" and self.machine.dialect.lathe_cycles.one_block):
-            return round_half_away(v)  # (a lathe whose cycles take D as a depth keeps its decimals)
+        dialect = self.machine.dialect
+        if (
+            letter in INTEGER_LETTERS
+            and not (letter == "D" and dialect.lathe_cycles.one_block)
+            and not (dialect.chamfer_words is not None and letter in dialect.chamfer_words)
+        ):  # (a lathe whose cycles take D as a depth keeps its decimals, a GSK980TDi's chamfer L and D theirs)
+            return round_half_away(v)
         if letter == "F":
             return v
         inch = self.machine.planner.modal.get("units") == 20.0

@@ -1,10 +1,12 @@
 """Chamfer and corner words on a move: ``,C``, ``,R`` and ``,A`` (docs/semantics.md §8).
 
 FANUC's optional chamfering and corner R (``G01 X50. ,R5.``, ``G02 ... ,C3.``), Haas corner
-rounding and chamfering, and FANUC's ``,A`` angle of direct drawing dimension programming. The
-simulator runs the move as written and inserts no chamfer or arc: the toolpath keeps the sharp
-corner. A move that names one coordinate of the plane and an angle (``G01 X30. ,A135.``) goes
-at that angle to the other coordinate (``Planner.block_angle``, ``planner/angled_moves.py``).
+rounding and chamfering, and FANUC's ``,A`` angle of direct drawing dimension programming. A
+chamfer's or corner R's letter and value are handed to the planner while the block runs
+(``Planner.block_corner``), which cuts it between the move and the next
+(``planner/corner_stage.py``). A move that names one coordinate of the plane and an angle
+(``G01 X30. ,A135.``) goes at that angle to the other coordinate (``Planner.block_angle``,
+``planner/angled_moves.py``).
 The values are still computed when the block runs, in the address rules, so that what
 goes wrong in them (a vacant argument read, a division by zero, a variable that does not exist)
 is found where it is written. What the static check says of them is ``corner_findings``'s.
@@ -35,12 +37,16 @@ def with_corners(cf: CompiledFile, block: Block, run: Runner) -> Runner:
     (``Planner.block_angle``: a move that names one coordinate of the plane goes at that angle),
     and so is a chamfer's or corner R's letter (``Planner.block_corner``)."""
     angle = next((c for c in block.corners if c.letter == "A"), None)
+    rounded = next((c for c in block.corners if c.letter != "A"), None)
     getters: list[Getter] = [
-        cf.addresses.value(c.value) for c in block.corners if c is not angle and not cf.addresses.constant(c.value)[0]
+        cf.addresses.value(c.value)
+        for c in block.corners
+        if c is not angle and c is not rounded and not cf.addresses.constant(c.value)[0]
     ]
-    rounded = next((c.letter for c in block.corners if c.letter != "A"), None)
     if rounded is not None:  # a chamfer or corner R: the planner hears of it while the block runs
-        run = _with_rounded(run, rounded)
+        known, literal = cf.addresses.constant(rounded.value)
+        get = None if known else cf.addresses.value(rounded.value, rounded.letter)
+        run = _with_rounded(run, rounded.letter, literal, get)
     if angle is not None:
         known, literal = cf.addresses.constant(angle.value)
         get_angle = None if known else cf.addresses.value(angle.value, "A")
@@ -70,18 +76,23 @@ def with_corners(cf: CompiledFile, block: Block, run: Runner) -> Runner:
     return corners
 
 
-def _with_rounded(run: Runner, letter: str) -> Runner:
-    """``run`` with ``Planner.block_corner`` set to ``letter`` (C or R) while it runs: the cutter
-    compensation stage refuses a chamfer or corner R on a start-up, a cancel or a change of side
-    (planner/cutter_stage.py, PS0039)."""
+def _with_rounded(run: Runner, letter: str, literal: Any, get: Getter | None) -> Runner:
+    """``run`` with ``Planner.block_corner`` set to ``letter`` (C or R) and
+    ``Planner.block_corner_value`` to its value (``literal``, else computed by ``get``; None when
+    vacant) while it runs: the planner cuts the chamfer or corner R after the move
+    (planner/corner_stage.py), and the cutter compensation stage refuses one on a start-up, a
+    cancel or a change of side (planner/cutter_stage.py, PS0039)."""
 
     def rounded(m: Any, pc: int) -> int:
         p = m.planner
+        value = literal if get is None else get(m)
         p.block_corner = letter
+        p.block_corner_value = None if value is None else float(value)
         try:
             return run(m, pc)
         finally:
             p.block_corner = None
+            p.block_corner_value = None
 
     return rounded
 

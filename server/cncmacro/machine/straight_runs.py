@@ -69,6 +69,8 @@ def run_straight(
         return 0, pc
     if PENDING_ANGLE in p.codes:  # after ",A1" alone: the general path ends FANUC's two-block form
         return 0, pc
+    if p.corner is not None:  # a chamfer or rounding waits for this move: the general path cuts it
+        return 0, pc  # (planner/corner_stage.py)
     if CYLINDER in p.modal:  # a cut on a cylinder: the general path takes C on its surface (virtual_planes.py)
         return 0, pc
     if p.vector_before is not None:  # the tool vector changed: the general path times the machine's travel

@@ -34,8 +34,8 @@ from .angled_moves import (
 from .arc_checks import arc_finding, no_centre
 from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
-from .chamfer_words import note_chamfer
 from .conic_moves import CURVE_FAULT, conic_points
+from .corner_stage import HeldCorner, corner_word, hold_corner, restore_corner, take_corner
 from .cutter_stage import (
     UNCOMPENSATED_CODES,
     CutterStage,
@@ -89,6 +89,11 @@ class Planner:
     block_feed: bool = False  # whether that block writes F (G93 takes one in every cut: missing_feed.py)
     whereabouts: Whereabouts = START  # what the run knows of where the machine is (whereabouts.py)
     block_corner: str | None = None  # a block's ,C or ,R (its letter) while it runs (machine/corners.py)
+    block_corner_value: float | None = None  # and its value (None: vacant)
+    corner: HeldCorner | None = None  # a move whose chamfer or rounding waits for the next (corner_stage.py)
+    # where the last chamfer or rounding cut ended, and the seconds and cut length it added (the same)
+    corner_end: tuple[float, ...] | None = None
+    corner_cost: tuple[float, float] = (0.0, 0.0)
     # the moves an alarm found reading ahead took back (cutter_stage.py, ``_withdraw``): from which
     # place, how many moves were left, and those taken: a snapshot taken before the alarm and
     # restored gets them again
@@ -205,7 +210,7 @@ class Planner:
             len(self.tool_changes), self.skip_state, len(self.probes),
             {k: dict(v) for k, v in self.cycle_params.items()}, None if self.shape is None else self.shape.copy(),
             None if self.cutter is None else self.cutter.copy(),
-            None if self.vector_before is None else list(self.vector_before), self.whereabouts,
+            None if self.vector_before is None else list(self.vector_before), self.whereabouts, self.corner,
         )  # fmt: skip
 
     def restore(self, state: PlannerState) -> None:
@@ -233,7 +238,9 @@ class Planner:
         self.cutter = None if state.cutter is None else state.cutter.copy()
         self.vector_before = None if state.vector_before is None else list(state.vector_before)
         self.whereabouts = state.whereabouts
+        self.corner = state.corner
         restore_pending(self)
+        restore_corner(self)
 
     # ---------------------------------------------------------------- plain motion
     def run_plain(self, plan: PlainRun, line: int) -> bool:
@@ -268,7 +275,7 @@ class Planner:
             return False
         mode = modal["motion"]
         if (mode in self.cycle_codes or mode in self.own_path_modes or (modal["canned"] != 80.0 and self.drills)
-                or self.block_angle is not None):  # fmt: skip
+                or self.block_angle is not None or self.block_corner is not None):  # fmt: skip
             return self._cycle_fallback(plan, file, line)
         if self.shape is not None:
             self._shape_axes(frozenset(i for i, _ in axes) | frozenset(i for i, _ in inc))
@@ -387,8 +394,6 @@ class Planner:
                 return uncompensated(self, lambda: one_shot(self, one, axes, incremental, other, file, line))
             return one_shot(self, one, axes, incremental, other, file, line)
         mode = self.modal.get("motion", 0.0)
-        if self.dialect.chamfer_words is not None:  # GSK980TDi's L and D: not simulated (chamfer_words.py)
-            note_chamfer(self, mode, other, line)
         drawing = self.dialect.drawing_angle
         if drawing is not None and self.block_angle is None and drawing[0] in other and mode in (0.0, 1.0):
             # GSK980TDi's G01 X_ Q_: the angle as a word of its own (angled_moves.py)
@@ -435,7 +440,18 @@ class Planner:
             alarm = lead_alarm(mode, self.codes.get("F") or 0.0, change, self.times.long_axis(self.pos, target))
             if alarm is not None:
                 raise alarm
+        if self.block_corner is None and self.dialect.chamfer_words is None:
+            self.move(file, line, mode, target, centre, change)
+            return moved, None
+        word = corner_word(self, mode, other)  # a chamfer or rounding after the move (corner_stage.py)
+        clock, cut, start = self.clock, self.cut_length, tuple(self.pos)
+        self.corner_end, self.corner_cost = None, (0.0, 0.0)
         self.move(file, line, mode, target, centre, change)
+        if word is not None:
+            start = self.corner_end or start  # the move starts where a chamfer before it ended
+            unit = INCH if self.modal.get("units") == 20.0 else 1.0
+            seconds, length = self.clock - clock - self.corner_cost[0], self.cut_length - cut - self.corner_cost[1]
+            hold_corner(self, word, line, mode, start, tuple(target), centre, seconds, length / unit)
         return moved, None
 
     # ---------------------------------------------------------------- arcs
@@ -694,6 +710,9 @@ class Planner:
         (with an arc's centre and plane, a cycle's legs, its time, the lathe cycle it is a pass
         of), by cycle_time.py's rules. While a roughing cycle reads its shape, the move is kept as
         a segment of the shape instead (lathe_cycles.py)."""
+        if self.corner is not None:  # the corner a chamfer or rounding cuts first (corner_stage.py)
+            plain = legs is None and cycle is None and pass_of is None
+            start = self.corner_end = take_corner(self, mode, self.modal.get("plane", 17.0), start, end, centre, plain)
         shape = self.shape
         if shape is not None and shape.reading:
             shape.segments.append((mode, start, end, centre))

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .corner_stage import HeldCorner
 from .cutter_stage import CutterStage
 from .lathe_cycles import ShapeReading
 from .probing import SkipState
@@ -27,7 +28,8 @@ class PlannerState:
     many moves, tool changes and probes had been recorded, and a lathe's cycle parameters and
     the shape cycle under way (lathe_cycles.py), cutter radius compensation's stage
     (cutter_stage.py), the tool vector before a change the machine has not travelled yet
-    (offset_travel.py), and what the run knows of where the machine is (whereabouts.py)."""
+    (offset_travel.py), what the run knows of where the machine is (whereabouts.py), and the move
+    held for its chamfer or rounding (corner_stage.py)."""
 
     modal: dict[str, float]
     codes: dict[str, float | None]
@@ -45,3 +47,4 @@ class PlannerState:
     cutter: CutterStage | None = None
     vector_before: list[float] | None = None  # a tool vector change not yet travelled (offset_travel.py)
     whereabouts: Whereabouts = START  # what the run knows of where the machine is (whereabouts.py)
+    corner: HeldCorner | None = None  # a move whose chamfer or rounding waits for the next (corner_stage.py)

@@ -8,6 +8,7 @@ bracketed program names and ``#9xxx`` indirection.
 from __future__ import annotations
 
 from ..alarms import (
+    CORNER_FIT,
     ILLEGAL_LEAD,
     NOT_ALONE,
     OFFSET_NUMBER,
@@ -45,9 +46,20 @@ PROFILE = Dialect(
     # 螺距…出现负值时产生报警" (§3.24.4), no number; nor for G86's I0 or I below R ("系统发出报警",
     # §3.23.11); nor for G22/G23 sharing a block (§3.31 note 6); nor for G12.1 under G99 or G41/G42
     # (§3.9 note 3)
+    # a chamfer (L) or rounding (D) that does not fit: "CNC 产生报警" (§3.11.3), no number
     unnumbered_alarms=frozenset(
-        {OVERTRAVEL_PLUS, OVERTRAVEL_MINUS, OFFSET_NUMBER, ILLEGAL_LEAD, RECIPROCATION_AMOUNT, NOT_ALONE, POLAR_START}
+        {
+            OVERTRAVEL_PLUS,
+            OVERTRAVEL_MINUS,
+            OFFSET_NUMBER,
+            ILLEGAL_LEAD,
+            RECIPROCATION_AMOUNT,
+            NOT_ALONE,
+            POLAR_START,
+            CORNER_FIT,
+        }
     ),
+    corner_fit_alarm=True,
     h_codes=True,
     bracket_names=True,
     program_digits=4,
