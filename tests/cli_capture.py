@@ -37,3 +37,15 @@ def run_json(folder: Path, text: str, name: str = "MAIN.nc", machine_file: str |
     assert code == 0, err
     result: dict[str, Any] = json.loads(out)
     return result
+
+
+def check_findings(folder: Path, text: str, machine_file: str | None = None, *extra: str) -> tuple[int, list[str]]:
+    """``cncmacro check --hints`` of ``text`` saved as ``O0100.nc`` in ``folder`` (with
+    ``machine_file`` as its ``.cncmacro.toml``): the exit status and the findings as
+    ``line:column: severity: ... [code]`` without the file name."""
+    (folder / "O0100.nc").write_text(text, encoding="utf-8")
+    if machine_file is not None:
+        (folder / ".cncmacro.toml").write_text(machine_file, encoding="utf-8")
+    code, out, err = cli("check", "--hints", *extra, str(folder / "O0100.nc"))
+    assert err == ""
+    return code, [line.split(":", 1)[1] for line in out.splitlines()]

@@ -10,7 +10,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from cli_capture import cli
+from cli_capture import check_findings, cli
 
 PASSED = (
     "hint: the analysis run goes on past this guard, on the side that does not raise the program's own alarm, as "
@@ -27,11 +27,8 @@ DIVISION = "error: division by zero (alarm 112) [division-by-zero]"
 
 
 def check(folder: Path, text: str, *extra: str) -> tuple[int, list[str]]:
-    """(exit status, findings as ``line:column: severity: ... [code]`` without the file name)."""
-    (folder / "O0100.nc").write_text(text, encoding="utf-8")
-    code, out, err = cli("check", "--hints", *extra, str(folder / "O0100.nc"))
-    assert err == ""
-    return code, [line.split(":", 1)[1] for line in out.splitlines()]
+    """``check_findings`` of ``text`` with the command line's ``extra`` words."""
+    return check_findings(folder, text, None, *extra)
 
 
 # a batch counter's guard at the top (a public shop program's shape): #3901 parts done, #3902

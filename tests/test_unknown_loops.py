@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from cli_capture import cli
+from cli_capture import check_findings
 
 THROUGH = (
     "hint: the analysis run goes through this WHILE loop once and then leaves it, so that its body and what "
@@ -20,11 +20,8 @@ DIVISION = "error: division by zero (alarm 112) [division-by-zero]"
 
 
 def check(folder: Path, text: str, *extra: str) -> tuple[int, list[str]]:
-    """(exit status, findings as ``line:column: severity: ... [code]`` without the file name)."""
-    (folder / "O0100.nc").write_text(text, encoding="utf-8")
-    code, out, err = cli("check", "--hints", *extra, str(folder / "O0100.nc"))
-    assert err == ""
-    return code, [line.split(":", 1)[1] for line in out.splitlines()]
+    """``check_findings`` of ``text`` with the command line's ``extra`` words."""
+    return check_findings(folder, text, None, *extra)
 
 
 # a shop's loop over the parts of a fixture: #500, the parts per fixture, is kept on the machine

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from cli_capture import cli
+from cli_capture import check_findings
 
 MILL_LIMITS = """[variables]
 5221 = -420.0
@@ -27,14 +27,7 @@ travel = { X = [-420, 10], Z = [-720, 5] }
 """
 
 
-def check(folder: Path, text: str, machine_file: str | None = None, *extra: str) -> tuple[int, list[str]]:
-    """(exit status, findings as ``line: severity: ... [code]`` without the file name)."""
-    (folder / "O0100.nc").write_text(text, encoding="utf-8")
-    if machine_file is not None:
-        (folder / ".cncmacro.toml").write_text(machine_file, encoding="utf-8")
-    code, out, err = cli("check", "--hints", *extra, str(folder / "O0100.nc"))
-    assert err == ""
-    return code, [line.split(":", 1)[1] for line in out.splitlines()]
+check = check_findings
 
 
 def codes(found: list[str]) -> list[str]:

@@ -10,7 +10,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from cli_capture import cli
+from cli_capture import check_findings, cli
 
 # a production grinder's wear compensation: #706 is a count kept on the machine
 GRINDER = "O0100\n#641=#640/#706\n#642=#641*2\nM30\n"
@@ -22,14 +22,7 @@ PASSED = (
 )
 
 
-def check(folder: Path, text: str, machine_file: str | None = None, *extra: str) -> tuple[int, list[str]]:
-    """(exit status, findings as ``line: severity: ... [code]`` without the file name)."""
-    (folder / "O0100.nc").write_text(text, encoding="utf-8")
-    if machine_file is not None:
-        (folder / ".cncmacro.toml").write_text(machine_file, encoding="utf-8")
-    code, out, err = cli("check", "--hints", *extra, str(folder / "O0100.nc"))
-    assert err == ""
-    return code, [line.split(":", 1)[1] for line in out.splitlines()]
+check = check_findings
 
 
 def test_a_kept_common_as_divisor_is_no_alarm(tmp_path: Path) -> None:
