@@ -58,6 +58,9 @@ export interface RunMove {
   hole?: Axes;
   /** a G31's: whether the skip signal came on where it stopped (its `to`: the contact point) */
   skip?: boolean;
+  /** which end is at a place the run does not know (`start`, `end`, `both`): the move is not drawn,
+   * nor counted in the extents (docs/semantics.md §8) */
+  unknown?: string;
   /** a lathe cycle's pass: the cycle it belongs to, as the run names it */
   passOf?: string;
   /** under cutter radius compensation: where the tool's centre goes */
@@ -211,6 +214,7 @@ export function parseRunResult(text: string): RunResult | string {
     if (hole) move.hole = hole;
     if (typeof o.skip === 'boolean') move.skip = o.skip;
     if (typeof o.pass_of === 'string') move.passOf = o.pass_of;
+    if (typeof o.unknown === 'string') move.unknown = o.unknown;
     if (o.tool_path !== undefined) {
       const toolPath = parseToolPath(o.tool_path);
       if (!toolPath) return `the tool centre path of a move is malformed: ${JSON.stringify(o.tool_path).slice(0, 200)}`;
@@ -425,8 +429,9 @@ export function formatNumber(n: number): string {
 
 /** The plot of `moves` in `view`, `size` screen units across the longer side. */
 export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000): Plot {
-  const legs = moves.map((m) => legsOf(m, view));
-  const centres = moves.map((m) => centreOf(m, view));
+  // a move from or to a place the run does not know is drawn not (the line would cross the part)
+  const legs = moves.map((m) => (m.unknown ? [] : legsOf(m, view)));
+  const centres = moves.map((m) => (m.unknown ? undefined : centreOf(m, view)));
   const mirrored = view.lathe?.bothHalves === true; // the other half: every point at minus its radial value
   const project = (p: P3): [number, number] => [get(p, view.h), get(p, view.v)];
   let x0 = 0;
@@ -510,6 +515,7 @@ export function plot(moves: RunMove[], view: View, ended: boolean, size = 1000):
     let min = Infinity;
     let max = -Infinity;
     for (const m of moves) {
+      if (m.unknown) continue;
       for (const p of [m.from, m.to]) {
         if (!(axis in p)) continue;
         min = Math.min(min, get(p, axis));

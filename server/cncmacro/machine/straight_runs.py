@@ -32,6 +32,7 @@ from ..planner.plain_words import NOT_PLAIN, PLAIN_ARC_LETTERS, PLAIN_F, PLAIN_G
 from ..planner.planner import FEED_HINT_GIVEN
 from ..planner.turning_cycles import forget_single_cycle
 from ..planner.virtual_planes import CYLINDER, VIRTUAL_PLANE
+from ..planner.whereabouts import astray
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -75,8 +76,8 @@ def run_straight(
         return 0, pc
     if p.vector_before is not None:  # the tool vector changed: the general path times the machine's travel
         return 0, pc  # (planner/offset_travel.py)
-    if p.whereabouts.lost:  # a G30 left an axis unknown: the general path finds its next absolute move
-        return 0, pc  # (planner/whereabouts.py)
+    if p.whereabouts.lost or astray(p):  # a G30 left an axis unknown, or the start: the general path finds
+        return 0, pc  # its next absolute move and marks the moves from an unknown place (planner/whereabouts.py)
     # the axes whose program position a G28/G53 gave: a line that names one absolutely is the
     # general path's, which says the axis is where the program says (planner/whereabouts.py)
     homed = p.whereabouts.homed
@@ -343,7 +344,7 @@ def run_straight(
                 clock += seconds
                 if append is not None:
                     append(_new_move(Move, (path, pc, mode, start, end, f, centre, seconds, plane, None, None, None,
-                                            None)))  # fmt: skip
+                                            None, None)))  # fmt: skip
                 start = end
             pc += 1
             continue

@@ -694,11 +694,11 @@ class StraightCuts:
                     path = _tuple_new(CentrePath, (s0, pieces))
                 if held:
                     moves.append(_tuple_new(Move, (file, line, mode, start, end, kept_feed, None, settled_seconds,
-                                                   plane, None, None, None, path)))  # fmt: skip
+                                                   plane, None, None, None, path, None)))  # fmt: skip
                     room -= 1
                 elif 0 <= place < len(moves) and moves[place][1] == line:
                     old = moves[place]
-                    moves[place] = _tuple_new(Move, (*old[:7], settled_seconds, *old[8:12], path))
+                    moves[place] = _tuple_new(Move, (*old[:7], settled_seconds, *old[8:12], path, *old[13:]))
                 s0 = second if path is not None else None
             else:  # an analysis: no record, and the next path's start made only if asked for
                 s0 = None
@@ -816,7 +816,7 @@ class StraightCuts:
             place = len(p.moves)
             p.moves.append(_tuple_new(Move, (self.file, self.line, self.mode, self.start, end, float(self.feed), None,
                                              self.seconds, self.plane, None, None, None,
-                                             path if p.centre_paths else None)))  # fmt: skip
+                                             path if p.centre_paths else None, None)))  # fmt: skip
         element = _tuple_new(PathElement, ((self.ax, self.ay), (self.px, self.py), None, False))
         self.stage.pending = _tuple_new(Pending, (place, self.line, self.mode, self.feed, self.unit, self.plane,
                                                   self.start, end, element, self.d, path, self.seconds, False, (),

@@ -36,7 +36,8 @@ def move_json(mv: Move, axes: tuple[str, ...]) -> dict[str, Any]:
     G19 Y Z), and whether it turns ``clockwise``; a cycle gets its ``legs`` (each ``rapid`` or
     not, ``to`` a point) and its ``cycle`` (``drilling`` or ``turning``), and a drilling cycle's
     hole its ``hole`` (where it was drilled to: its bottom); a pass of a lathe cycle names the
-    cycle in ``pass_of`` (``G71``)."""
+    cycle in ``pass_of`` (``G71``); a move from or to a place the run does not know says which end
+    in ``unknown`` (``start``, ``end`` or ``both``: moves.py), and the view draws it not."""
     kind = move_kind(mv)
     move: dict[str, Any] = {
         "file": mv.file,
@@ -60,6 +61,8 @@ def move_json(mv: Move, axes: tuple[str, ...]) -> dict[str, Any]:
         move["legs"] = [{"rapid": leg.rapid, "to": dict(zip(axes, leg.end, strict=True))} for leg in mv.legs]
     if mv.pass_of is not None:
         move["pass_of"] = mv.pass_of
+    if mv.unknown is not None:
+        move["unknown"] = mv.unknown
     if mv.tool_path is not None:
         move["tool_path"] = centre_path_json(mv, axes)
     if mv.cycle == DRILLING:

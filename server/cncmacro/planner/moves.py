@@ -22,6 +22,9 @@ PROBE = "probe"
 CYCLE = "cycle"
 DRILLING = "drilling"  # a ``Move.cycle``: a hole of a drilling canned cycle
 TURNING = "turning"  # a lathe's turning cycle
+UNKNOWN_START = "start"  # a ``Move.unknown``: the move starts where the run does not know the tool is
+UNKNOWN_END = "end"  # … it ends at a place the run does not know
+UNKNOWN_BOTH = "both"
 
 
 class Leg(NamedTuple):
@@ -67,7 +70,11 @@ class Move(NamedTuple):
     where the tool's centre goes under cutter radius compensation (G41/G42: cutter_stage.py),
     which the time and the cut length follow; None when no compensation is in force, the
     centre then being on the programmed path, and in a run that keeps no centre paths
-    (``Planner.centre_paths``: ``cncmacro run``'s text, which shows none)."""
+    (``Planner.centre_paths``: ``cncmacro run``'s text, which shows none). ``unknown`` says which
+    end of the move is at a place the run does not know (whereabouts.py, ``astray``): ``UNKNOWN_START``
+    (the tool's place before it: where the operator left it, or after a G30), ``UNKNOWN_END`` (a reference
+    point whose offsets are not given), ``UNKNOWN_BOTH``; None when both are known. The front ends draw
+    neither such a move nor its ends (docs/semantics.md §8)."""
 
     file: str
     line: int
@@ -82,6 +89,7 @@ class Move(NamedTuple):
     cycle: str | None = None
     pass_of: str | None = None
     tool_path: CentrePath | None = None
+    unknown: str | None = None
 
     def text(self, axes: tuple[str, ...], shown: list[int] | None = None) -> str:
         """``G01  X0.000 Y0.000 -> X10.000 Y5.000  F200`` for a person: the axes in ``shown``

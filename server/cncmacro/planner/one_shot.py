@@ -24,7 +24,7 @@ from .positions import WORK_BASE, work_offset
 from .probing import skip_block
 from .reciprocating_feed import reciprocating_feed
 from .virtual_planes import refuse_polar_start, switch_virtual_plane
-from .whereabouts import coordinates_set, lose, placed, referenced, shift_cancelled
+from .whereabouts import coordinates_set, home_known, lose, placed, referenced, shift_cancelled
 
 if TYPE_CHECKING:
     from .planner import Planner
@@ -79,7 +79,7 @@ def one_shot(
             if stop is not None:
                 p.move(file, line, mode, list(stop[0]))
                 raise stop[1]
-        p.move(file, line, mode, target)
+        p.move(file, line, mode, target, end_unknown=not home_known(p, axes))
         referenced(p, axes)  # at a machine position the run knows (whereabouts.py)
         return bool(axes), None
     if g == p.dialect.local_coordinate_code:  # U, W as X, Z: "绝对代码或相对代码指定时执行的结果一样" (GSK §3.19)
@@ -151,7 +151,8 @@ def reference_return(p: Planner, g: float, axes: dict[int, float], inc: dict[int
     home = list(p.pos)
     for i in named:
         home[i] = 0.0 - (work_offset(p, i) + p.shift[i] + p.tool_vector[i]) + 0.0
-    p.move(file, line, 0.0, home)
+    # to a point on the drawing only where its offsets are given; a G30's is the machine builder's (whereabouts.py)
+    p.move(file, line, 0.0, home, end_unknown=not home_known(p, named, g == 28.0))
     if g == 28.0:
         referenced(p, named)
     else:  # the 2nd reference position is the machine builder's (FANUC parameter 1241): not known here

@@ -63,7 +63,7 @@ from .three_point_arcs import three_point_arc
 from .turning_cycles import forget_single_cycle, in_increments, single_cycle, single_cycle_target, turning_legs
 from .variable_leads import lead_alarm
 from .virtual_planes import CYLINDER, VIRTUAL_PLANE, surface_length
-from .whereabouts import START, Whereabouts, placed
+from .whereabouts import START, Whereabouts, astray, placed, unknown_ends
 
 if TYPE_CHECKING:
     from ..dialects import Dialect
@@ -88,6 +88,10 @@ class Planner:
     vector_before: list[float] | None = None
     block_feed: bool = False  # whether that block writes F (G93 takes one in every cut: missing_feed.py)
     whereabouts: Whereabouts = START  # what the run knows of where the machine is (whereabouts.py)
+    # the drawn axes astray when the block began, and where the tool was then (whereabouts.py, ``astray``):
+    # a move of the block that travels one from there starts at an unknown place (``Move.unknown``)
+    block_astray: frozenset[int] = frozenset()
+    block_start: tuple[float, ...] = ()
     block_corner: str | None = None  # a block's ,C or ,R (its letter) while it runs (machine/corners.py)
     block_corner_value: float | None = None  # and its value (None: vacant)
     corner: HeldCorner | None = None  # a move whose chamfer or rounding waits for the next (corner_stage.py)
@@ -248,6 +252,7 @@ class Planner:
         the block counts as a move for a G66 call (``execute_nc``)."""
         modal_sets, code_sets, axes, inc, _, file, _ = plan
         self.at_line = line
+        self.block_began()
         self.block_feed = any(letter == "F" for letter, _ in code_sets)
         if PENDING_ANGLE in self.codes and self.block_angle is None:  # the two-block form's second block
             del self.codes[PENDING_ANGLE], self.codes[PENDING_LINE]  # without its angle: no corner
@@ -299,6 +304,12 @@ class Planner:
             return False
         return not self._call_needs_distance or target != start or centre is not None
 
+    def block_began(self) -> None:
+        """Note which drawn axes are astray as a block begins, and where the tool is (whereabouts.py)."""
+        self.block_astray = astray(self)
+        if self.block_astray:
+            self.block_start = tuple(self.pos)
+
     def _shape_axes(self, named: frozenset[int]) -> None:
         """A block of a lathe cycle's shape names the axes ``named`` (by index): the first such
         block says whether the shape is type I or II (lathe_cycles.py)."""
@@ -326,6 +337,7 @@ class Planner:
         in force) and, for a lathe cycle that names a finishing shape (G70–G73 P Q), the shape the
         macro machine is to run (lathe_cycles.py)."""
         self.at_line = line
+        self.block_began()
         gs: list[float] = []
         axes: dict[int, float] = {}
         incremental: dict[int, float] = {}
@@ -669,10 +681,13 @@ class Planner:
         target: list[float],
         centre: tuple[float, ...] | None = None,
         lead_change: float = 0.0,
+        end_unknown: bool = False,
     ) -> None:
         """Move to ``target`` in ``mode`` (an arc about ``centre``; a variable-lead thread whose
-        lead changes by ``lead_change`` per revolution) and record it."""
-        self.record(file, line, mode, tuple(self.pos), tuple(target), centre, lead_change=lead_change)
+        lead changes by ``lead_change`` per revolution; to a place the run does not know: a
+        reference point, ``end_unknown``) and record it."""
+        self.record(file, line, mode, tuple(self.pos), tuple(target), centre, lead_change=lead_change,
+                    end_unknown=end_unknown)  # fmt: skip
         self.pos[:] = target
 
     def turning_cycle(
@@ -705,11 +720,13 @@ class Planner:
         cycle: str | None = None,
         pass_of: str | None = None,
         lead_change: float = 0.0,
+        end_unknown: bool = False,
     ) -> None:
         """Advance the clock by the move's time, add its length to the path and record the move
         (with an arc's centre and plane, a cycle's legs, its time, the lathe cycle it is a pass
         of), by cycle_time.py's rules. While a roughing cycle reads its shape, the move is kept as
-        a segment of the shape instead (lathe_cycles.py)."""
+        a segment of the shape instead (lathe_cycles.py). A move from or to a place the run does
+        not know is marked so (``Move.unknown``: whereabouts.py)."""
         if self.corner is not None:  # the corner a chamfer or rounding cuts first (corner_stage.py)
             plain = legs is None and cycle is None and pass_of is None
             start = self.corner_end = take_corner(self, mode, self.modal.get("plane", 17.0), start, end, centre, plain)
@@ -717,6 +734,7 @@ class Planner:
         if shape is not None and shape.reading:
             shape.segments.append((mode, start, end, centre))
             return
+        unknown = unknown_ends(self, start, end, end_unknown) if self.block_astray or end_unknown else None
         feed = self.codes.get("F") or 0.0
         times = self.times
         modal = self.modal
@@ -760,7 +778,8 @@ class Planner:
         self.clock += seconds
         if self.record_moves:
             self.moves.append(_new_move(Move, (file, line, mode, start, end, float(feed), centre, seconds, plane, legs,
-                                              cycle, pass_of, tool_path if self.centre_paths else None)))  # fmt: skip
+                                              cycle, pass_of, tool_path if self.centre_paths else None,
+                                              unknown)))  # fmt: skip
             if len(self.moves) >= self.move_budget:
                 self.moves_full(line)
         if stop is not None:

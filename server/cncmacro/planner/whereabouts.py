@@ -22,6 +22,13 @@ shift and the tool offset (positions.py). The run knows it on an axis when it kn
   it: machine position less the frame and the tool offset, so it is known only where those are,
   until an absolute move of the axis or a coordinate setting names it.
 
+**On the drawing** (``astray``, ``home_known``): the axes that place the tool in the toolpath view
+(X and Z on a lathe, X, Y and Z on a mill) are *astray* where the run does not know the program
+position: not named by an absolute move, a reference return or a coordinate setting since the start,
+left by a G30, or at a reference point (G28, G53) whose frame or tool offset is not given. A move
+that travels an astray axis from where the block found it starts at an unknown place, and a G28,
+G30 or G53 that ends an axis at such a point ends at one (``Move.unknown``, docs/semantics.md §8).
+
 ``Whereabouts`` is immutable: a snapshot (state.py) keeps it as it is.
 """
 
@@ -31,6 +38,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
+from .moves import UNKNOWN_BOTH, UNKNOWN_END, UNKNOWN_START
 from .positions import WORK_BASE, work_offset_variable
 from .tool_offsets import lathe_offset_number
 
@@ -117,6 +125,44 @@ def position_known(p: Planner, which: str, axis: int) -> bool:
             return frame_known(p, axis) and tool_known(p, axis)
         return which == "end" or tool_known(p, axis)
     return True
+
+
+def drawn_axes(p: Planner) -> tuple[int, ...]:
+    """The axes that place the tool in the toolpath view: X and Z on a lathe, X, Y and Z on a mill."""
+    letters = ("X", "Z") if p.lathe else ("X", "Y", "Z")
+    return tuple(p.axis_index[a] for a in letters if a in p.axis_index)
+
+
+def astray(p: Planner) -> frozenset[int]:
+    """The drawn axes whose program position the run does not know (module docstring)."""
+    w = p.whereabouts
+    axes = drawn_axes(p)
+    if not w.lost and not w.homed and all(i in w.placed for i in axes):
+        return frozenset()
+    return frozenset(i for i in axes if i not in w.placed or not position_known(p, "end", i))
+
+
+def home_known(p: Planner, axes: Iterable[int], returned: bool = True) -> bool:
+    """Whether a G28 or G53 (``returned``; a G30: never) ends the drawn ``axes`` at a program position
+    the run knows: the frame and the tool offset there are given (``position_known``'s rule)."""
+    drawn = [i for i in axes if i in drawn_axes(p)]
+    if not returned:
+        return not drawn
+    return all(frame_known(p, i) and tool_known(p, i) for i in drawn)
+
+
+def unknown_ends(p: Planner, start: tuple[float, ...], end: tuple[float, ...], end_unknown: bool) -> str | None:
+    """Which end of a move from ``start`` to ``end`` is at a place the run does not know (``Move.unknown``):
+    it starts at one when it travels an axis astray where its block began from there (a move that
+    travels nothing: when it is there), and ends at one when the caller says so (``home_known``)."""
+    unknown = None
+    origin = p.block_start
+    here = [i for i in p.block_astray if start[i] == origin[i]]
+    if here and (start == end or any(start[i] != end[i] for i in here)):
+        unknown = UNKNOWN_START
+    if end_unknown:
+        unknown = UNKNOWN_END if unknown is None else UNKNOWN_BOTH
+    return unknown
 
 
 def frame_offset(p: Planner, axis: int) -> float:
