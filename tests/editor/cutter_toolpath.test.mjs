@@ -100,7 +100,8 @@ test('a G41 contour: the tool centre is drawn a radius outside the plate, named 
   await view.locator('#centre-path:not(.on)').waitFor();
   await centres.first().waitFor({ state: 'hidden' });
   assert.equal(await centres.evaluateAll((els) => els.filter((e) => getComputedStyle(e).display !== 'none').length), 0);
-  assert.equal(await view.locator('#plot g.move path.leg').count() >= moves.length, true); // the programmed path stays
+  // the programmed path stays: every move but those from or to a place the run does not know (not drawn)
+  assert.equal(await view.locator('#plot g.move path.leg').count() >= moves.filter((m) => !m.unknown).length, true);
   await screenshot(page, 'cutter-1-centre-hidden');
   await button.click();
   await view.locator('#centre-path.on').waitFor();
