@@ -73,6 +73,11 @@ test('a lathe program: Z across, X up, the centre line drawn, each G71 pass draw
   assert.equal(await view.locator('#plot g.move').count(), moves.length);
   assert.equal(await view.locator(`#plot g.move[data-line="${G71_LINE}"]`).count(), passes.length);
   assert.equal(await view.locator('#plot line.spindle').count(), 1);
+  // the first rapid comes from where the turret was, which the program does not say: not drawn across the part
+  const astray = moves.map((m, i) => [m.unknown, i]).filter(([unknown]) => unknown);
+  assert.deepEqual(astray, [['start', 0]]);
+  assert.equal(await view.locator('#plot g.move[data-index="0"] path.leg').count(), 0);
+  assert.ok(await view.locator('#plot g.move[data-index="1"] path.leg').count() > 0); // the approach from there on
   assert.equal(await view.locator('#plot .axis-name.h').textContent(), 'Z →');
   assert.equal(await view.locator('#plot .axis-name.v').textContent(), '↑ X (diameter)');
   assert.equal(await view.locator('button.on', { hasText: 'Diameter' }).count(), 1);
