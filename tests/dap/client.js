@@ -85,6 +85,21 @@ class CncMacroClient extends DebugClient {
     const response = await this.variablesRequest({ variablesReference: scope.variablesReference });
     return { scope, variables: response.body.variables };
   }
+
+  // The row named `name` in a scope, opening the row of its hundred first in a large Common or
+  // Persistent scope (`#500–#599` holds #512).
+  async scopeRow(frameId, scopeName, name) {
+    let { variables } = await this.scopeVariables(frameId, scopeName);
+    const number = Number(name.slice(1));
+    const hundred = variables.find((v) => {
+      const span = /^#(\d+)–#(\d+)$/.exec(v.name);
+      return span && Number(span[1]) <= number && number <= Number(span[2]);
+    });
+    if (hundred) {
+      variables = (await this.variablesRequest({ variablesReference: hundred.variablesReference })).body.variables;
+    }
+    return variables.find((v) => v.name === name);
+  }
 }
 
 // A client started before each test of the calling file and stopped after it. What it returns

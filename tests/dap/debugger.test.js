@@ -164,10 +164,13 @@ describe('variables, evaluate and data breakpoints', () => {
     assert.deepEqual(locals.slice(0, 3).map((v) => [v.name, v.value]), [['#1 (A)', '2.5'], ['#2 (B)', '4'], ['#3', '<vacant>']]);
     const mainLocals = (await dc.scopeVariables(1, 'Locals')).variables;
     assert.deepEqual([mainLocals[0].name, mainLocals[0].value], ['#1', '3']);
-    const common = (await dc.scopeVariables(2, 'Common')).variables;
-    assert.deepEqual([common.length, common[0].name, common[0].value, common[1].value], [400, '#100', '6.5', '<vacant>']);
+    // 400 commons open by hundreds (#100–#199 … #400–#499), each on its 100 variables
+    const { variables: hundreds } = await dc.scopeVariables(2, 'Common');
+    assert.deepEqual([hundreds.length, hundreds[0].name, hundreds[3].name], [4, '#100–#199', '#400–#499']);
+    const common = (await dc.variablesRequest({ variablesReference: hundreds[0].variablesReference })).body.variables;
+    assert.deepEqual([common.length, common[0].name, common[0].value, common[1].value], [100, '#100', '6.5', '<vacant>']);
     const persistent = (await dc.scopeVariables(2, 'Persistent')).variables;
-    assert.deepEqual([persistent.length, persistent[0].name, persistent[499].name], [500, '#500', '#999']);
+    assert.deepEqual(persistent.map((v) => v.name), ['#500–#599', '#600–#699', '#700–#799', '#800–#899', '#900–#999']);
     const position = (await dc.scopeVariables(2, 'Position')).variables;
     assert.ok(position.some((v) => v.name.startsWith('#5001 (X axis block end position') && v.value === '0'));
     const modal = (await dc.scopeVariables(2, 'Modal')).variables;

@@ -15,8 +15,7 @@ async function where() {
 }
 
 async function commonValue(name) {
-  const { variables } = await dc.scopeVariables(1, 'Common');
-  return variables.find((v) => v.name === name).value;
+  return (await dc.scopeRow(1, 'Common', name)).value;
 }
 
 describe('the end of the program is a stop', () => {

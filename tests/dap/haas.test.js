@@ -1,7 +1,7 @@
 // A Haas NGC mill program (the `haas` profile, chosen by the file's dialect comment) through
 // `cncmacro dap` and a real DAP client: stepping into `M97 P100` shows a stack frame of its own
 // for the local subprogram at N100 and step out comes back after the M97; the Variables pane
-// shows the Haas variables (six axes, every common kept at power-off, G54-G59 with six axes,
+// shows the Haas variables (six axes, every common kept at power-off, by hundreds, G54-G59 with six axes,
 // the tool of `T5 M06`); the console reads G154 P1's offset by both its numbers; a call to a
 // probing macro kept on the control (O9000-O9999) returns at once. Read as fanuc-0i, none of
 // this holds (M97 is a plain M code, #14001 and #3026 do not exist, O9810 is not found).
@@ -53,8 +53,13 @@ describe('a Haas program in the debugger', () => {
     const scopes = (await dc.scopesRequest({ frameId: 1 })).body.scopes.map((s) => s.name);
     // every Haas common is kept at power-off: one scope for them, no empty "Common" scope
     assert.deepEqual(scopes, ['Locals', 'Persistent #100–#199, #500–#999, #10000–#10999', 'Position', 'Modal', 'Offsets']);
-    const kept = await names('Persistent');
-    assert.deepEqual([kept.length, kept[0], kept.at(-1)], [1600, ['#100', '1'], ['#10999', '<vacant>']]);
+    // 1,600 kept commons open by hundreds: #100–#199, #500–#599 … #900–#999, #10000–#10099 …
+    // #10900–#10999 is 1 + 5 + 10 = 16 rows; #100 = 1 after the M97 (N100 #100=#100+1 from 0)
+    const kept = (await dc.scopeVariables(1, 'Persistent')).variables;
+    assert.deepEqual([kept.length, [kept[0].name, kept[0].value], kept[6].name, kept.at(-1).name],
+      [16, ['#100–#199', '#100 = 1'], '#10000–#10099', '#10900–#10999']);
+    const tenThousands = (await dc.variablesRequest({ variablesReference: kept[6].variablesReference })).body.variables;
+    assert.deepEqual([tenThousands.length, tenThousands[1].name, tenThousands[1].value], [100, '#10001', '<vacant>']);
 
     const position = await names('Position');
     const machine = position.filter(([name]) => /^#502[1-6] /.test(name));

@@ -14,8 +14,7 @@ const PROGRAM = path.join(CELL, 'O3000.nc');
 const dc = clientPerTest();
 
 async function row(frameId, scopeName, name) {
-  const { variables } = await dc.scopeVariables(frameId, scopeName);
-  const found = variables.find((v) => v.name === name);
+  const found = await dc.scopeRow(frameId, scopeName, name);
   assert.ok(found, `no ${name} in ${scopeName}`);
   return found.value;
 }

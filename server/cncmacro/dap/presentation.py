@@ -6,10 +6,12 @@ locals)`` for a subprogram, which runs in its caller's locals.
 Each frame has up to six scopes: its locals ``#1–#33`` (``#24 (X)`` where a caller passed the
 argument letter), the volatile commons, the persistent ``#500–#999`` (a kind of common the
 control lacks has no scope), and the system variables of the dialect's tables grouped as
-position, modal state and offsets. A variables
-reference encodes the frame and the scope, so it stays valid for as long as the machine
-stays stopped. Vacant shows as ``<vacant>`` (``<空>`` in a Chinese locale), and the
-interpreter's alarm details and notes are shown in Chinese there too (``detail_text``).
+position, modal state and offsets. A scope of more than ``GROUP`` commons opens on one row per
+hundred numbers (``#500–#599``, a Haas's ``#10000–#10099``), its value the first numbers that
+hold one, and each row opens on its variables. A variables reference encodes the frame, the
+scope and the hundred, so it stays valid for as long as the machine stays stopped. Vacant
+shows as ``<vacant>`` (``<空>`` in a Chinese locale), and the interpreter's alarm details and
+notes are shown in Chinese there too (``detail_text``).
 """
 
 from __future__ import annotations
@@ -28,6 +30,9 @@ from ..planner.numbers import shown_value
 
 LOCALS, COMMON, PERSISTENT, POSITION, MODAL, OFFSETS = range(6)
 SCOPES_PER_FRAME = 8
+GROUP = 100  # a scope of more commons than this opens on one row per hundred numbers
+GROUPS_PER_SCOPE = 1024  # references: 0 the scope itself, k its k-th hundred
+PREVIEW = 3  # the numbers with a value a hundred's row names
 _NUMBER_NAME = re.compile(r"^\s*#\s*(\d+)(?:\s|$)")  # ``#24 (X)``; never ``#1e400`` or ``#1.5``
 # the external and G54–G59 offsets, 20 numbers each up to G59's #5321–#5340, whatever the number
 # of axes (not the additional systems G54.1 P / G154 P)
@@ -89,13 +94,15 @@ def stack_frames(machine: Machine) -> list[dict[str, Any]]:
     return out
 
 
-def reference(level: int, scope: int) -> int:
-    return level * SCOPES_PER_FRAME + scope + 1
+def reference(level: int, scope: int, group: int = 0) -> int:
+    """The variables reference of a frame's scope (``group`` 0) or of its ``group``-th hundred (from 1)."""
+    return (level * SCOPES_PER_FRAME + scope) * GROUPS_PER_SCOPE + group + 1
 
 
-def decode_reference(ref: int) -> tuple[int, int]:
-    """(level, scope) of a variables reference."""
-    return (ref - 1) // SCOPES_PER_FRAME, (ref - 1) % SCOPES_PER_FRAME
+def decode_reference(ref: int) -> tuple[int, int, int]:
+    """(level, scope, group) of a variables reference; group 0 is the whole scope."""
+    place, group = divmod(ref - 1, GROUPS_PER_SCOPE)
+    return place // SCOPES_PER_FRAME, place % SCOPES_PER_FRAME, group
 
 
 def scopes(machine: Machine, level: int, locale: str | None) -> list[dict[str, Any]]:
@@ -141,6 +148,58 @@ def letters_for(machine: Machine, level: int) -> dict[int, str]:
         if frames[k].letters:
             return frames[k].letters
     return {}
+
+
+def hundreds(machine: Machine, scope: int) -> list[tuple[int, int]]:
+    """The rows a Common or Persistent scope of more than ``GROUP`` variables opens on: its
+    ranges cut at each hundred (``#100–#199``, ``#200–#299``, ...; ``#500–#531`` stays whole),
+    first and last number of each. Empty for a smaller scope, which shows its variables at once."""
+    if scope not in (COMMON, PERSISTENT):
+        return []
+    ranges = machine.kinds.volatile if scope == COMMON else machine.kinds.persistent
+    if sum(r.last - r.first + 1 for r in ranges) <= GROUP:
+        return []
+    out = []
+    for r in ranges:
+        first = r.first
+        while first <= r.last:
+            last = min(r.last, (first // GROUP + 1) * GROUP - 1)
+            out.append((first, last))
+            first = last + 1
+    return out
+
+
+def children(machine: Machine, level: int, scope: int, group: int, locale: str | None) -> list[dict[str, Any]]:
+    """What a variables reference opens on: a scope's variables, or its hundreds' rows and
+    then, for one of those (``group`` from 1), the variables of that hundred."""
+    cut = hundreds(machine, scope)
+    if not cut:
+        return [variable_json(r, locale) for r in rows(machine, level, scope, locale)]
+    if group == 0:
+        return [_hundred_json(machine, level, scope, k, span, locale) for k, span in enumerate(cut, 1)]
+    first, last = cut[group - 1]
+    return [variable_json(Shown(n, f"#{n}", machine.read(n)), locale) for n in range(first, last + 1)]
+
+
+def has_group(machine: Machine, scope: int, group: int) -> bool:
+    """Whether ``group`` names the scope itself (0) or one of its hundreds."""
+    return group == 0 or group <= len(hundreds(machine, scope))
+
+
+def _hundred_json(
+    machine: Machine, level: int, scope: int, k: int, span: tuple[int, int], locale: str | None
+) -> dict[str, Any]:
+    """A hundred's row: ``#500–#599``, valued with its first numbers that hold a value."""
+    first, last = span
+    held = [(n, v) for n in range(first, last + 1) if (v := machine.read(n)) is not None]
+    value = ", ".join(f"#{n} = {show(v, locale)}" for n, v in held[:PREVIEW])
+    if len(held) > PREVIEW:
+        value += ", …"
+    return {
+        "name": f"#{first}–#{last}", "value": value or pick(locale, "all vacant", "全部为空"),
+        "variablesReference": reference(level, scope, k), "namedVariables": last - first + 1,
+        "presentationHint": {"kind": "virtual"},
+    }  # fmt: skip
 
 
 def rows(machine: Machine, level: int, scope: int, locale: str | None) -> list[Shown]:

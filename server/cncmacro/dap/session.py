@@ -458,24 +458,29 @@ class Session:
         level = self._level(args.get("frameId"))
         return {"scopes": show.scopes(self.machine(), level, self.locale)}
 
-    def _scope(self, ref: Any) -> tuple[Machine, int, int]:
+    def _scope(self, ref: Any) -> tuple[Machine, int, int, int]:
         m = self.machine()
-        if not isinstance(ref, int) or ref < 1:
+        if not isinstance(ref, int) or isinstance(ref, bool) or ref < 1:
             raise RequestFailed(f"no variables reference {ref}")
-        level, scope = show.decode_reference(ref)
-        if level >= len(m.frames) or scope > show.OFFSETS:
+        level, scope, group = show.decode_reference(ref)
+        if level >= len(m.frames) or scope > show.OFFSETS or not show.has_group(m, scope, group):
             raise RequestFailed(f"no variables reference {ref}")
-        return m, level, scope
+        return m, level, scope, group
 
     def on_variables(self, args: dict[str, Any]) -> dict[str, Any]:
-        m, level, scope = self._scope(args.get("variablesReference"))
-        rows = show.rows(m, level, scope, self.locale)
+        """A scope's variables, or the rows of its hundreds and a hundred's variables (a large
+        Common or Persistent scope); ``start`` and ``count`` page them. Every row is a named
+        variable: a client asking for ``indexed`` ones gets none."""
+        m, level, scope, group = self._scope(args.get("variablesReference"))
+        if args.get("filter") == "indexed":
+            return {"variables": []}
+        shown = show.children(m, level, scope, group, self.locale)
         start = _whole(args, "start", 0)
-        count = _whole(args, "count", 0) or len(rows)
-        return {"variables": [show.variable_json(r, self.locale) for r in rows[start : start + count]]}
+        count = _whole(args, "count", 0) or len(shown)
+        return {"variables": shown[start : start + count]}
 
     def on_setVariable(self, args: dict[str, Any]) -> dict[str, Any]:
-        m, level, _scope = self._scope(args.get("variablesReference"))
+        m, level, _scope, _group = self._scope(args.get("variablesReference"))
         name = str(args.get("name", ""))
         number = show.variable_number(name)
         if number is None:
