@@ -208,11 +208,15 @@ class Stepper:
 
     # ---------------------------------------------------------------- going back
     def step_back(self) -> Stop:
-        """Back one block (to the start of the kept history at most)."""
+        """Back one block (to the start of the kept history at most). From an alarm, back over
+        the alarm's block, which never ran to its end, to the block before it: one block back
+        would stand on the alarm's line with the same values, only the alarm cleared."""
         m = self.machine
         back = 1
         if m.status == RunStatus.COMPLETED and _end_code(m) is None:
             back = 2  # running off the file's end (or into the next O header) counted as a block
+        elif m.status == RunStatus.ALARM:
+            back = 2  # the alarm's block counted as a block
         if self.back_to(m.blocks - back):
             return Stop("step")
         return Stop("entry", pick(self.locale, "the start of the kept history", "保留的历史的起点"))
