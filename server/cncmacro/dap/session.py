@@ -31,6 +31,7 @@ from ..machine import Machine
 from ..machine.evaluate import EvaluationError, assign, evaluate, is_assignment, set_variable
 from ..machine.status import RunStatus
 from ..planner.move_json import machine_json, move_json
+from ..syntax.block_parser import warm_up
 from . import presentation as show
 from .launch import LaunchConfig, Launched, LaunchError, launch
 from .protocol import Event, MessageWriter, ProtocolError, Request, Response, read_message
@@ -75,6 +76,7 @@ class Session:
         self.told_subprogram = False  # the launched program ended at its M99, and the console says so
         self.done = False
         self._after: list[Callable[[], None]] = []
+        self.warming: threading.Thread | None = None  # builds the grammar parser (see on_initialize)
 
     # ---------------------------------------------------------------- plumbing
     def output(self, text: str, category: str = "console") -> None:
@@ -124,6 +126,10 @@ class Session:
         self.locale = locale if isinstance(locale, str) else None
         self.breakpoints.locale = self.locale
         self.later(lambda: self.event("initialized"))
+        # the grammar parser, built while the client sets up, so that the first watch or console
+        # line the fast path cannot read (an unfinished `#1 GT`, a `GOTO10`) does not wait for it
+        self.warming = threading.Thread(target=warm_up, name="cncmacro-grammar", daemon=True)
+        self.warming.start()
         return {
             "supportsConfigurationDoneRequest": True,
             "supportsConditionalBreakpoints": True,
