@@ -2,7 +2,8 @@
 
 One stack frame per program level, innermost first, named like ``O9100 (G65, level 1)`` (the
 macro level whose locals it has) or ``O2100 (M98, level 1's locals)``, ``O2000 (M98, main's
-locals)`` for a subprogram, which runs in its caller's locals.
+locals)`` for a subprogram, which runs in its caller's locals; a call repeated by its L says
+which pass runs (``O2100 (M98, main's locals, pass 2 of 2)``).
 Each frame has up to six scopes: its locals ``#1–#33`` (``#24 (X)`` where a caller passed the
 argument letter), the volatile commons, the persistent ``#500–#999`` (a kind of common the
 control lacks has no scope), and the system variables of the dialect's tables grouped as
@@ -72,10 +73,12 @@ def frame_name(frames: list[Frame], level: int) -> str:
             f"{f.name} ({f.kind} shape N{f.found.file.program.blocks[f.start_pc].label}–"
             f"N{f.found.file.program.blocks[f.end_line].label})"
         )
+    # a call repeated by its L (M98 P2100 L2, G65 P9001 L3) says which pass runs
+    passes = f", pass {f.passes - f.repeats} of {f.passes}" if f.passes > 1 else ""
     if f.locals is frames[level - 1].locals:  # a subprogram (M98, M97) runs in its caller's locals
         owner = "main's" if f.macro_level == 0 else f"level {f.macro_level}'s"
-        return f"{f.name} ({f.kind}, {owner} locals)"
-    return f"{f.name} ({f.kind}, level {f.macro_level})"
+        return f"{f.name} ({f.kind}, {owner} locals{passes})"
+    return f"{f.name} ({f.kind}, level {f.macro_level}{passes})"
 
 
 def stack_frames(machine: Machine) -> list[dict[str, Any]]:

@@ -132,6 +132,7 @@ class CallStack:
         frame = Frame(found, cf, start, kind, local, caller.macro_level + 1, pc, nxt, repeats - 1, start,
                       arguments.values, arguments.letters, [], modal)  # fmt: skip
         frame.increments = arguments.increments
+        frame.passes = max(repeats, 1)
         self.frames.append(frame)
         self.L = local
         self._program_number()
@@ -168,6 +169,7 @@ class CallStack:
         caller = self.frames[-1]
         caller.pc = pc
         frame = Frame(found, cf, start, kind, caller.locals, caller.macro_level, pc, nxt, repeats - 1, start)
+        frame.passes = max(repeats, 1)
         self.frames.append(frame)
         self._program_number()
         return -1

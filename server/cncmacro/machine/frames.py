@@ -42,6 +42,7 @@ class Frame:
     written: set[int] | None = None  # analysis runs: the locals this macro level assigned itself
     end_line: int = -1  # a shape cycle's frame: the line of its block N(Q), after which it ends
     increments: dict[int, float] = field(default_factory=dict)  # ``Arguments.increments``
+    passes: int = 1  # how many times the call runs the program in all (its L): the debugger's "pass 2 of 3"
 
     @property
     def file(self) -> str:
@@ -57,6 +58,7 @@ class Frame:
             self.repeats, self.start_pc, self.arguments, self.letters, list(self.loops), self.modal,
             None if self.written is None else set(self.written), self.end_line,
         )  # fmt: skip
+        f.passes = self.passes
         return f
 
 
