@@ -23,7 +23,7 @@ test('a call to a macro kept on the control is stepped over; M98 P915101 steps i
   assert.deepEqual([top.line, path.basename(top.source.path)], [6, 'O1000.nc']);
   await dc.step('stepInRequest'); // M98 P915101 L2
   top = await dc.top();
-  assert.deepEqual([top.name, path.basename(top.source.path), top.line], ["O915101 (M98, main's locals)", 'O915101.nc', 3]);
+  assert.deepEqual([top.name, path.basename(top.source.path), top.line], ["O915101 (M98, main's locals, pass 1 of 2)", 'O915101.nc', 3]);
   const common = (await dc.scopesRequest({ frameId: top.id })).body.scopes.map((s) => s.name);
   assert.ok(common.includes('Common #100–#199'), common.join(', '));
 });

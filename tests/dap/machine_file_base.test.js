@@ -44,7 +44,7 @@ test('base = "fanuc-30i" wins over the launch dialect: names, #3101, #98000, O98
   assert.deepEqual([top.line, path.basename(top.source.path)], [7, 'O3000.nc']);
   await dc.step('stepInRequest'); // M98 P12345678 L2: the whole P is the program number
   top = await dc.top();
-  assert.deepEqual([top.name, path.basename(top.source.path), top.line], ["O12345678 (M98, main's locals)", 'O12345678.nc', 3]);
+  assert.deepEqual([top.name, path.basename(top.source.path), top.line], ["O12345678 (M98, main's locals, pass 1 of 2)", 'O12345678.nc', 3]);
 
   const end = await dc.step('continueRequest');
   assert.deepEqual([end.body.reason, end.body.description], ['step', 'program end (M30)']);
