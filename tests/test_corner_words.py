@@ -19,7 +19,7 @@ REAL = lines(
     "G90 G17 G00 X0 Y0",
     "G01 X50. ,R5. F500.",
     "Y50. ,C3.",
-    "G01 X20 Y30 ,C3",
+    "G01 X20 Y30",
     "M30",
 )
 PROFILES = ("fanuc-0i", "fanuc-30i", "haas")
@@ -38,7 +38,8 @@ def test_8_machine_corner_words_cut_the_corner_between_the_moves(profile):
     # ,R5 between +X and +Y (a left turn of 90°): tangent 5·tan(45°) = 5 from the corner X50 Y0, so
     # X45 Y0, then G03 about X45 Y5 to X50 Y5. ,C3 between +Y and the line to X20 Y30 (direction
     # (-30, -20)/√1300): X50 Y47, then X50 - 3·30/36.05551 = 47.503849, Y50 - 3·20/36.05551 = 48.335899.
-    # The last ,C3 has no move after it (M30): the corner stays as written
+    # (A ,C on the last move, before M30, is FANUC's PS0051 "MISSING MOVE AFTER CHF/CNR":
+    # test_corner_next_block_alarms_ps0051_ps0052.py)
     assert ends == [
         (2, 0.0, (0.0, 0.0)),
         (3, 1.0, (45.0, 0.0)),
@@ -111,7 +112,7 @@ def test_4_control_flow_a_corner_word_beside_a_macro_statement_is_alarm_127():
 def test_1_text_and_blocks_corner_words_are_a_warning_on_gsk980tdi_and_still_run():
     # GSK980TDi's manual writes chamfers as L and corner arcs as D: ,C/,R are not documented there
     found = coded(check(REAL, "gsk980tdi"), "corner-word")
-    assert [(d.line + 1, d.severity) for d in found] == [(3, "warning"), (4, "warning"), (5, "warning")]
+    assert [(d.line + 1, d.severity) for d in found] == [(3, "warning"), (4, "warning")]
     assert "L" in found[0].message and "D" in found[0].message
     assert run(REAL, "gsk980tdi").status == "completed"
     zh = coded(check(REAL, "gsk980tdi", locale="zh-CN"), "corner-word")

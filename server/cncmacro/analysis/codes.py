@@ -23,6 +23,8 @@ from ..dialects.alarms import (
     ARGUMENT_RANGE,
     BRACKET_NESTING,
     CORNER_FIT,
+    CORNER_NO_MOVE,
+    CORNER_NOT_CUT,
     COUNT_TWICE,
     CUTTER_ARC_START,
     CUTTER_CORNER,
@@ -340,6 +342,12 @@ CODES: dict[str, Code] = _codes(
                 "倒角或拐角R（,C、,R；GSK980TDi 的 L、D）无法插入其两段移动之间：移动过短或半径过大"
                 "（FANUC PS0055；GSK980TDi 手册 §3.11.3 的报警）。"),
          RUN, (CORNER_FIT,), ("corner-fit",)),
+    Code("corner-next", ERROR,
+         detail("The block after a chamfer or corner R (,C, ,R) does not go on with a G01, G02 or G03 move in its "
+                "plane: no move, a move off the plane (FANUC PS0051), or a G00, a cycle, a return (PS0052).",
+                "倒角或拐角R（,C、,R）的下一程序段不是该平面内的 G01、G02 或 G03：它没有移动、移到平面之外"
+                "（FANUC PS0051），或是 G00、循环、返回参考点等（PS0052）。"),
+         RUN, (CORNER_NO_MOVE, CORNER_NOT_CUT), ("corner-next",)),
     Code("cutter-skip", ERROR,
          detail("A skip G31 commanded while cutter radius compensation (G41/G42) is in force (FANUC PS0035, "
                 "Mitsubishi P608; a warning where the control's manual asks for G40 first but names no alarm).",

@@ -75,6 +75,10 @@ CUTTER_CORNER = 39  # PS0039: ,C/,R on a start-up, a cancel or a change of side 
 # a chamfer or corner R that does not fit its moves (planner/corner_stage.py): FANUC's PS0055, the
 # GSK980TDi's unnumbered alarms of §3.11.3
 CORNER_FIT = 55
+# the block after a chamfer or corner R is no move in its plane, or not G01, G02, G03
+# (planner/corner_stage.py): FANUC's PS0051 and PS0052
+CORNER_NO_MOVE = 51
+CORNER_NOT_CUT = 52
 CUTTER_INTERFERENCE = 41
 # a mill's drilling canned cycles (docs/semantics.md §9): FANUC 0i's PS alarms
 REFERENCE_IN_CYCLE = 44  # PS0044: G27-G30 in canned cycle mode (planner/one_shot.py)
@@ -195,6 +199,16 @@ ALARMS: dict[int, AlarmDoc] = {
             CORNER_FIT,
             "missing move value in chamfering or corner R (the move is shorter than the chamfer or corner R)",
             "倒角或拐角R的移动量不足（移动量小于倒角或拐角R）",
+        ),
+        AlarmDoc(
+            CORNER_NO_MOVE,
+            "missing move after chamfering or corner R (the next block does not move in the plane)",
+            "倒角或拐角R之后缺少移动（下一程序段在该平面内没有移动）",
+        ),
+        AlarmDoc(
+            CORNER_NOT_CUT,
+            "code is not G01 after chamfering or corner R (the next block is not G01, G02 or G03)",
+            "倒角或拐角R之后的代码不是 G01（下一程序段不是 G01、G02 或 G03）",
         ),
         AlarmDoc(REFERENCE_IN_CYCLE, "G27-G30 not allowed in a canned cycle", "固定循环中不能指令 G27-G30"),
         AlarmDoc(PECK_Q_MISSING, "address Q not found (G73/G83)", "未指令地址 Q（G73/G83）"),

@@ -213,6 +213,11 @@ class Dialect:
     # CHF/CNR"; the GSK980TDi's unnumbered alarms of §3.11.3); without this switch the corner is
     # left sharp and the run notes it (planner/corner_stage.py)
     corner_fit_alarm: bool = False
+    # §8 "Chamfer and corner words": the block after a chamfer or corner R that does not go on with a
+    # G01, G02 or G03 move in the plane is the control's alarm (FANUC PS0051 "MISSING MOVE AFTER
+    # CHF/CNR": no move, or one off the plane; PS0052 "CODE IS NOT G01 AFTER CHF/CNR": a G00, a
+    # cycle, a return); without this switch the corner is left sharp and the run goes on
+    corner_next_alarm: bool = False
     # "Cutter radius compensation": G41/G42 written again in offset mode on the side in force ends
     # the previous block on the perpendicular of its end, inside or outside (FANUC 30i-MA and 15i-MB
     # manuals, "cutter compensation G code in the offset mode"); without this switch it

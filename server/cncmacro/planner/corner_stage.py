@@ -14,9 +14,12 @@ single block stop comes after it), and the next move starts where it ends. The p
 (#5001…) stays the programmed corner: the point the program wrote, from which the next block's
 increments count.
 
-Nothing is inserted (the corner stays sharp, as before) when the next move is not a G01, G02 or
-G03 in the same plane, when either move leaves the plane, between two lines on one line or, for a
-rounding, two moves already tangent (GSK980TDi §3.11.3). A chamfer or rounding that does not fit
+Nothing is inserted (the corner stays sharp, as before) when the block's own move leaves the
+plane, between two lines on one line or, for a rounding, two moves already tangent (GSK980TDi
+§3.11.3). When the next block is not a G01, G02 or G03 move in the plane (it moves nothing, moves
+off the plane, or is a G00, a cycle, a return) the corner is the control's alarm where the profile
+has it (``Dialect.corner_next_alarm``: FANUC's PS0051, PS0052; a G04 block between is let stand),
+else it stays sharp. A chamfer or rounding that does not fit
 its moves is the control's alarm where the profile has it (``Dialect.corner_fit_alarm``: FANUC's
 PS0055, the GSK980TDi's unnumbered ones), else a note. Under cutter radius compensation the corner
 is not inserted (a note says so): the two stages are not composed.
@@ -30,7 +33,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, NamedTuple
 
 from ..bilingual import Detail, detail
-from ..dialects.alarms import CORNER_FIT
+from ..dialects.alarms import CORNER_FIT, CORNER_NO_MOVE, CORNER_NOT_CUT
 from .alarms import MacroAlarm
 from .arcs import ARC_MODES
 from .corner_geometry import LONG, RADIUS, Inserted, NoFit, chamfer, chamfer_of_length, rounding
@@ -174,10 +177,17 @@ def take_corner(
     shape = p.shape
     in_shape = shape is not None and shape.reading
     axes = p.times.planes.get(plane)
-    if (
-        not plain or mode not in CUTTING_MODES or plane != held.plane or axes is None or in_shape != held.in_shape
-        or start != held.end or not _in_plane(start, end, axes) or not _in_plane(held.start, held.end, axes)
-    ):  # fmt: skip
+    if in_shape != held.in_shape or start != held.end:
+        return start
+    if not plain or mode not in CUTTING_MODES:  # a G00, a cycle, a return: PS0052 on FANUC
+        _next_alarm(p, held, CORNER_NOT_CUT, detail("the next block is not a G01, G02 or G03 move",
+                                                    "下一程序段不是 G01、G02 或 G03 的移动"))  # fmt: skip
+        return start
+    if plane != held.plane or axes is None or not _in_plane(start, end, axes):  # PS0051 on FANUC
+        _next_alarm(p, held, CORNER_NO_MOVE, detail("the next block moves off the plane of the corner",
+                                                   "下一程序段的移动不在该拐角所在的平面内"))  # fmt: skip
+        return start
+    if not _in_plane(held.start, held.end, axes):
         return start
     before = _element(held.mode, held.start, held.end, held.centre, axes)
     after = _element(mode, start, end, centre, axes)
@@ -199,6 +209,34 @@ def take_corner(
     else:
         _cut_corner(p, held, inserted, axes)
     return _full(inserted.end, start, axes)
+
+
+def _next_alarm(p: Planner, held: HeldCorner, number: int, why: Detail) -> None:
+    """The block after the corner ``held`` does not go on with a G01, G02 or G03 move in its
+    plane (``why``): alarm ``number`` (FANUC's PS0051 or PS0052) where the profile has it
+    (``Dialect.corner_next_alarm``); elsewhere the corner is left sharp."""
+    if not p.dialect.corner_next_alarm:
+        return
+    en, zh = _NAMES[held.kind]
+    raise MacroAlarm(number, detail(
+        f"{en} {held.value:g} of the block on line {held.line + 1} needs a G01, G02 or G03 move in its plane "
+        f"in the next block: {why}",
+        f"第 {held.line + 1} 行程序段的{zh} {held.value:g} 需要下一程序段为该平面内的 G01、G02 或 G03 移动：{why.zh}",
+    ), "corner-next")  # fmt: skip
+
+
+def corner_without_move(p: Planner, moved: bool, dwell: bool) -> None:
+    """A block that left the held corner waiting: one that ``moved`` by a way of its own (a
+    drilling cycle's holes) is FANUC's PS0052, one that moved nothing PS0051, but for a dwell
+    (``dwell``: a G04 block, which the control lets stand between the two moves) and inside a
+    roughing cycle's shape, where the cycle's own rules speak (PS0069)."""
+    held = p.corner
+    if held is None or held.in_shape or dwell:
+        return
+    if moved:
+        _next_alarm(p, held, CORNER_NOT_CUT, detail("the next block is not a G01, G02 or G03 move",
+                                                    "下一程序段不是 G01、G02 或 G03 的移动"))  # fmt: skip
+    _next_alarm(p, held, CORNER_NO_MOVE, detail("the next block moves nothing", "下一程序段没有移动"))
 
 
 def _shape_corner(segments: list[tuple[float, _Point, _Point, _Point | None]], held: HeldCorner, inserted: Inserted,

@@ -35,7 +35,7 @@ from .arc_checks import arc_finding, no_centre
 from .arcs import ARC_MODES, arc_centre, arc_fault, arc_planes
 from .block_words import set_codes, set_modal
 from .conic_moves import CURVE_FAULT, conic_points
-from .corner_stage import HeldCorner, corner_word, hold_corner, restore_corner, take_corner
+from .corner_stage import HeldCorner, corner_without_move, corner_word, hold_corner, restore_corner, take_corner
 from .cutter_stage import (
     UNCOMPENSATED_CODES,
     CutterStage,
@@ -250,6 +250,13 @@ class Planner:
     def run_plain(self, plan: PlainRun, line: int) -> bool:
         """Carry out a ``PlainWords`` plan with its file and next line appended; returns whether
         the block counts as a move for a G66 call (``execute_nc``)."""
+        held = self.corner
+        moved = self._run_plain(plan, line)
+        if held is not None and self.corner is held:  # a chamfer still waits: this block moved nothing
+            corner_without_move(self, moved, False)
+        return moved
+
+    def _run_plain(self, plan: PlainRun, line: int) -> bool:
         modal_sets, code_sets, axes, inc, _, file, _ = plan
         self.at_line = line
         self.block_began()
@@ -336,6 +343,13 @@ class Planner:
         ``modal_call_codes``, one of those codes: the block's one-shot code, else the motion mode
         in force) and, for a lathe cycle that names a finishing shape (G70–G73 P Q), the shape the
         macro machine is to run (lathe_cycles.py)."""
+        held = self.corner
+        done = self._execute_nc(words, file, line)
+        if held is not None and self.corner is held:  # a chamfer still waits: this block moved nothing
+            corner_without_move(self, done[0], ("G", 4.0) in words)
+        return done
+
+    def _execute_nc(self, words: list[tuple[str, float]], file: str, line: int) -> tuple[bool, ShapeCall | None]:
         self.at_line = line
         self.block_began()
         gs: list[float] = []

@@ -56,6 +56,7 @@ PROFILE = Dialect(
     skip_compensation_alarm=True,  # PS0035 (docs/semantics.md, "Cutter radius compensation")
     corner_compensation_alarm=True,  # PS0039 (the same)
     corner_fit_alarm=True,  # PS0055 (docs/semantics.md §8, "Chamfer and corner words")
+    corner_next_alarm=True,  # PS0051, PS0052 (the same)
     repeated_side_perpendicular=True,  # G41 again in G41: the perpendicular (the same)
     keyword_abbreviations=True,
     if_without_then=True,
@@ -80,7 +81,8 @@ PROFILE = Dialect(
 # Mitsubishi, Mazak): no source at hand gives them there. G54 Pn as G54.1 Pn; the alarms PS0044
 # (G27-G30 in a canned cycle), PS0045 (G73/G83 without Q; Haas pecks by Q or by I, J, K), PS0022
 # (an arc without R or I, J, K), PS0039 (,C/,R on a compensation start-up, cancel or change of
-# side) and PS0055 (a chamfer or corner R that does not fit its moves); G41/G42 again in offset
+# side), PS0055 (a chamfer or corner R that does not fit its moves) and PS0051/PS0052 (the block
+# after it not a G01, G02 or G03 move in the plane); G41/G42 again in offset
 # mode ending the previous block on its perpendicular (Mitsubishi's manual has the intersection
 # there); T, S and G04's P refused a decimal point (Haas's G04 P10. is
 # 10 s).
@@ -92,6 +94,7 @@ OTHER_MAKERS: dict[str, object] = {
     "arc_centre_alarm": False,
     "corner_compensation_alarm": False,
     "corner_fit_alarm": False,
+    "corner_next_alarm": False,
     "repeated_side_perpendicular": False,
     "no_point_words": {},
 }
