@@ -161,7 +161,9 @@ async def test_on_a_mill_g73_g74_g76_are_drilling_cycles(fanuc_en: LanguageClien
     code = await hover_at(fanuc_en, uri, 1, 1)
     close_file(fanuc_en, uri)
     assert peck.startswith("**G73** — **Q**: depth of each peck") and "*FANUC 0i Custom Macro B*" in peck
-    assert dwell.startswith("**G74** — **P**: dwell at the bottom (ms)")
+    # a FANUC tap dwells P at the bottom and again at R ("P_ : Dwell time at the bottom of the hole and
+    # at point R when a return is made", docs/semantics.md §9)
+    assert dwell.startswith("**G74** — **P**: dwell at the bottom of the hole and again at the R point")
     assert shift.startswith("**G76** — **Q**: shift off the wall at the bottom")
     assert "first block" not in peck + dwell + shift and "Δ" not in peck + dwell + shift
     assert "peck drilling" in code.lower()

@@ -17,6 +17,7 @@ from typing import Any
 from ..bilingual import Detail, detail, pick
 from .alarms import alarm_said, alarm_titled, shown_number
 from .cycle_words import CycleWords
+from .drill_cycle_words import dwelling_at_r
 from .drill_cycles import DrillCycle, LatheDrilling
 from .functions_data import BLOCK_IF_WORDS
 from .lathe_cycle_rules import LatheCycleRules
@@ -435,6 +436,18 @@ class Dialect:
         """This profile as one machine has it (a machine file's commons, digits and variables).
         ``changes`` are fields of ``Dialect`` by name; an unknown name is a ``TypeError``."""
         return replace(self, **changes)
+
+    def cycle_words_of(self, code: float) -> CycleWords | None:
+        """What each letter of cycle ``code``'s blocks means on this profile (``cycle_words``), P
+        following the cycle's data: a tap that dwells P again at the R point
+        (``DrillCycle.dwell_at_r``: FANUC's G74/G84, a lathe's G84/G88) says so."""
+        words = self.cycle_words.get(code)
+        if words is None:
+            return None
+        drill = self.drill_cycles.get(code)
+        if drill is None and self.lathe_drilling is not None and code in self.lathe_drilling.cycles:
+            drill = self.lathe_drilling.cycles[code].cycle
+        return dwelling_at_r(words) if drill is not None and drill.dwell_at_r else words
 
     def shown_alarm(self, number: int) -> int | None:
         """The number a person is shown for the interpreter's alarm ``number`` on this control,

@@ -10,6 +10,8 @@ P_ F_ K_``, …) and what its letters mean; what each does is ``drill_cycles.py`
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from .cycle_words import CycleWord, CycleWords, by_code, one_block
 
 w = CycleWord
@@ -20,6 +22,10 @@ Z_BOTTOM = w("Z", "", "the bottom of the hole", "孔底位置")
 R_POINT = w("R", "", "the R point, where the cut starts", "R点（开始切削的位置）")
 PECK = w("Q", "", "depth of each peck", "每次切削深度")
 DWELL = w("P", "", "dwell at the bottom (ms)", "孔底暂停时间（毫秒）")
+# P of a tap that dwells again at the R point on its way out (``DrillCycle.dwell_at_r``: FANUC's
+# "P_ : Dwell time at the bottom of the hole and at point R when a return is made")
+DWELL_AT_BOTTOM_AND_R = w("P", "", "dwell at the bottom of the hole and again at the R point on the way out (ms)",
+                          "孔底及返回到R点时的暂停时间（毫秒）")  # fmt: skip
 FEED = w("F", "", "cutting feed", "切削进给速度")
 TAP_FEED = w("F", "", "feed: the pitch × the spindle speed", "进给速度：螺距×主轴转速")
 SHIFT = w("Q", "", "shift off the wall at the bottom before coming out", "孔底退离孔壁的偏移量")
@@ -50,3 +56,14 @@ FANUC_DRILL_CYCLE_WORDS: dict[float, CycleWords] = by_code(
     one_block("G88", *HOLE, DWELL, FEED, REPEATS),
     one_block("G89", *HOLE, DWELL, FEED, REPEATS),
 )
+
+
+def dwelling_at_r(words: CycleWords) -> CycleWords:
+    """``words`` with P read as the dwell at the bottom and again at the R point: the table's
+    words of a tap whose cycle dwells at R on this profile (``Dialect.cycle_words_of``), whatever
+    the table, shared with profiles whose taps dwell at the bottom only, says of P."""
+    forms = tuple(
+        replace(form, words=tuple(DWELL_AT_BOTTOM_AND_R if word.letter == "P" else word for word in form.words))
+        for form in words.forms
+    )
+    return replace(words, forms=forms)

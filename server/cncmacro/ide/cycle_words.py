@@ -53,7 +53,7 @@ def cycle_of(dialect: Dialect, words: tuple[Word, ...] | list[Word]) -> tuple[Cy
     found = None
     for w in words:
         if w.letter == "G" and isinstance(w.value, Number):
-            cycle = dialect.cycle_words.get(w.value.value)
+            cycle = dialect.cycle_words_of(w.value.value)  # P as the cycle dwells on this profile
             if cycle is not None:
                 found = (cycle, w)
     return found
