@@ -62,6 +62,7 @@ import stat
 import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
+from functools import partial
 from pathlib import Path, PureWindowsPath
 from typing import Literal, TypedDict, cast
 
@@ -147,6 +148,9 @@ class MachineSettings:
     cutter_startup: str = "A"
     # what offset D holds: the cutter's "radius" or its "diameter" (Haas Setting 40, Tool Offset Measure)
     cutter_offset: str = "radius"
+    # §10.1 what the GSK980TDi's chamfer word L measures: "I" its own length (the default), "II" the
+    # distance from each end to the intersection (state parameter №181.0)
+    chamfer_type: str = "I"
     persistent_file: str | None = None
     max_blocks: int = DEFAULT_MAX_BLOCKS
     date: int | None = None
@@ -208,6 +212,7 @@ class _SettingsFields(TypedDict, total=False):
     arc_tolerance: float
     cutter_startup: str
     cutter_offset: str
+    chamfer_type: str
     persistent_file: str | None
     max_blocks: int
     date: int | None
@@ -350,7 +355,7 @@ def settings_from_mapping(
 
     known = {"base", "dialect", "common", "part_system_commons", "program_digits", "programs_on_control",
              "system_variables", "decimal_point", "block_delete", "shape_monotone_check", "arc_tolerance",
-             "cutter_startup", "cutter_offset", "persistent_file",
+             "cutter_startup", "cutter_offset", "chamfer_type", "persistent_file",
              "max_blocks", "date", "time", "variables", "calls", "skip", "severity", "timing", "lathe", "extensions",
              "codes", "limits"}  # fmt: skip
     for key in data:
@@ -382,6 +387,7 @@ def settings_from_mapping(
         "extensions": _extensions, "program_digits": _program_digits, "programs_on_control": _program_ranges,
         "system_variables": _system_variables, "decimal_point": _decimal_point, "arc_tolerance": _arc_tolerance,
         "cutter_startup": _cutter_startup, "cutter_offset": _cutter_offset,
+        "chamfer_type": partial(_chamfer_type, profile=str(kw.get("dialect") or DEFAULT_DIALECT)),
     }  # fmt: skip
     for key, read in readers.items():  # the keys whose value is read by itself
         if key in data:
@@ -496,6 +502,19 @@ def _lathe(value: object, profile: str, fail: _Fail) -> bool:
     if not value and base.lathe:
         raise fail("lathe", detail(f"cannot be false: {profile} is a lathe", f"不能为 false：{profile} 是车床"))
     return value
+
+
+def _chamfer_type(value: object, fail: _Fail, profile: str) -> str:
+    """``chamfer_type``: "I" or "II", what the chamfer word L measures (GSK980TDi §3.11.1, state
+    parameter №181.0); only a profile with that word takes it."""
+    if get_dialect(profile).chamfer_words is None:
+        raise fail("chamfer_type", detail(
+            f"is not a setting of {profile}, which has no chamfer word L (the GSK980TDi's: base = \"gsk980tdi\")",
+            f"不适用于 {profile}：它没有倒角代码 L（GSK980TDi 的：base = \"gsk980tdi\"）"))  # fmt: skip
+    if value not in ("I", "II"):
+        raise fail("chamfer_type", detail(f'must be "I" or "II" (not {_brief(value)})',
+                                          f'必须是 "I" 或 "II"（不能是 {_brief(value)}）'))  # fmt: skip
+    return str(value)
 
 
 def _common(value: object, profile: str, fail: _Fail) -> tuple[tuple[int, int], ...]:

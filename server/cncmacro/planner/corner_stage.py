@@ -3,7 +3,8 @@ words"; the GSK980TDi's L and D, §10.1).
 
 FANUC's and Haas's ``,C`` (a chamfer ``,C`` from the virtual corner along each move) and ``,R`` (an
 arc of that radius tangent to both), and the GSK980TDi's ``L`` (a chamfer of that length, type I of
-its state parameter №181.0, the default) and ``D`` (a rounding arc; ``Dialect.chamfer_words``),
+its state parameter №181.0, the default; type II, the distance to the intersection, is cut as
+``,C``: the machine file's ``chamfer_type``) and ``D`` (a rounding arc; ``Dialect.chamfer_words``),
 written on a G01, G02 or G03 block, shape the corner between that block's move and the next. The
 chamfer needs the next move, which the planner meets a block later: as the cutter compensation
 stage does (cutter_stage.py), the block's move is recorded at once as written, to the corner, and
@@ -81,7 +82,8 @@ class HeldCorner(NamedTuple):
 def corner_word(p: Planner, mode: float, other: dict[str, float]) -> tuple[str, float] | None:
     """The chamfer or rounding a G01/G02/G03 block asks for, as (kind, value): its ``,C`` or ``,R``
     (``Planner.block_corner``, ``Planner.block_corner_value``), else the profile's own words
-    (``Dialect.chamfer_words``: GSK's L and D, ignored outside 0–1000 mm)."""
+    (``Dialect.chamfer_words``: GSK's L and D, ignored outside 0–1000 mm; L of type II, the machine
+    file's ``chamfer_type``, is a chamfer as ``,C``)."""
     if mode not in CUTTING_MODES:
         return None
     letter = p.block_corner
@@ -93,7 +95,8 @@ def corner_word(p: Planner, mode: float, other: dict[str, float]) -> tuple[str, 
     words = p.dialect.chamfer_words
     if words is None:
         return None
-    for kind, word in ((LENGTH, words[0]), (ROUND, words[1])):
+    length = CHAMFER if p.settings.chamfer_type == "II" else LENGTH  # type II: L to the intersection, as ,C
+    for kind, word in ((length, words[0]), (ROUND, words[1])):
         value = other.get(word)
         if value is not None:
             return (kind, value) if 0.0 < value <= _LIMIT else None
