@@ -110,9 +110,11 @@ def test_a_program_no_header_holds_is_searched_for_once_until_a_file_changes(
     searched: list[Path] = []
     original = ProgramLibrary._header_in
 
-    def header_in(self: ProgramLibrary, folder: Path, number: int, header: re.Pattern[str]) -> FoundProgram | None:
+    def header_in(
+        self: ProgramLibrary, folder: Path, number: int, header: re.Pattern[str], near: LoadedFile | None
+    ) -> tuple[FoundProgram | None, bool]:
         searched.append(folder)
-        return original(self, folder, number, header)
+        return original(self, folder, number, header, near)
 
     monkeypatch.setattr(ProgramLibrary, "_header_in", header_in)
     index = WorkspaceIndex(lambda: [], lambda lines, path: get_dialect("fanuc"))

@@ -22,7 +22,11 @@ What "only as its title says" means, per kind of fix:
 - "Read this file as P: add (cncmacro: dialect=P)" and 'Set base = "P" in .cncmacro.toml': the
   run afterwards is the program's run read as P, all else of its machine file kept: the run of
   the file without a dialect comment, with its machine file without ``base``, under
-  ``--dialect P``.
+  ``--dialect P``. With the comment the file alone is read as P: the other programs of its folder
+  stay in the profile each is read in there, and a call finds only a program of its own profile
+  (docs/editor.md, "Where a call finds its program"), so the run under ``--dialect`` looks for the
+  programs it calls in a copy of the folder's programs, each marked with the profile it is read
+  in there.
 
 Messages (notes such as a clamped count's) are left out, as in ``test_editing_keeps_runs.py``.
 """
@@ -47,7 +51,8 @@ from pygls.uris import to_fs_path
 from pytest_lsp import LanguageClient
 
 from cncmacro.cli.main import main
-from cncmacro.library.machine_file import MACHINE_FILE_NAME, find_machine_file
+from cncmacro.library.machine_file import MACHINE_FILE_NAME, find_machine_file, load_machine_file
+from cncmacro.library.profiles import file_profile
 
 from .lsp_session import close_file, config, diagnostics_for, open_file, start
 
@@ -168,16 +173,38 @@ def _stopped_on(result: dict[str, Any], path: Path, lines: range) -> bool:
     return alarm is not None and Path(alarm["file"]) == path and alarm["line"] - 1 in lines
 
 
-def _read_as(path: Path, text: str, encoding: str, profile: str, tmp: Path) -> dict[str, Any]:
+def _read_as(path: Path, text: str, encoding: str, profile: str, tmp: Path, alone: bool) -> dict[str, Any]:
     """The run of the program ``text`` at ``path`` read as ``profile``, all else of its machine
-    kept."""
+    kept; ``alone``: the file alone is (its comment), its folder's other programs kept in theirs."""
     bare = tmp / path.name
     bare.write_bytes(_DIALECT_COMMENT.sub(lambda m: " " * len(m.group(0)), text).encode(encoding))
     machine = find_machine_file(path)
     settings = machine.read_text("utf-8") if machine is not None else ""
     (tmp / MACHINE_FILE_NAME).write_text(_BASE_LINE.sub("", settings), "utf-8")
-    found = _run(bare, "--machine", str(tmp / MACHINE_FILE_NAME), "--dialect", profile, "--path", str(path.parent))
-    return json.loads(json.dumps(found).replace(json.dumps(str(bare))[1:-1], json.dumps(str(path))[1:-1]))
+    folder = _marked_folder(path, tmp / "marked") if alone else path.parent
+    found = _run(bare, "--machine", str(tmp / MACHINE_FILE_NAME), "--dialect", profile, "--path", str(folder))
+    shown = json.dumps(found).replace(json.dumps(str(bare))[1:-1], json.dumps(str(path))[1:-1])
+    return json.loads(shown.replace(json.dumps(str(folder))[1:-1], json.dumps(str(path.parent))[1:-1]))
+
+
+def _marked_folder(path: Path, marked: Path) -> Path:
+    """A copy of the other programs of ``path``'s folder, each with the dialect comment of the
+    profile it is read in there (its own comment, else the folder's: ``file_profile``), added at
+    the end of its first line so that no line moves."""
+    shutil.rmtree(marked, ignore_errors=True)
+    marked.mkdir()
+    machine = find_machine_file(path)
+    settings = load_machine_file(machine) if machine is not None else None
+    for other in path.parent.iterdir():
+        if other == path or not other.is_file() or other.suffix.lower() not in (".nc", ".cnc"):
+            continue
+        text, encoding = _decoded(other)
+        name = file_profile(text, settings).name
+        first, sep, rest = text.partition("\n")
+        cr = "\r" if first.endswith("\r") else ""
+        marked_text = f"{first.removesuffix(cr)} (cncmacro: dialect={name}){cr}{sep}{rest}"
+        (marked / other.name).write_bytes(marked_text.encode(encoding))
+    return marked
 
 
 def _expect_same(title: str, path: Path, before: dict[str, Any], after: dict[str, Any], changed: range) -> None:
@@ -240,7 +267,8 @@ async def test_every_quick_fix_changes_a_run_only_as_its_title_says(client: Lang
                     _expect_same(action.title, path, {**before, "blocks": 0}, {**after, "blocks": 0}, changed)
                 elif action.title.startswith(("Read this file as", "Set base")):
                     profile = re.findall(r'dialect=([\w-]+)\)|base = "([\w-]+)"', action.title)[0]
-                    read_as = _read_as(path, text, encoding, profile[0] or profile[1], tmp_path)
+                    alone = action.title.startswith("Read this file as")
+                    read_as = _read_as(path, text, encoding, profile[0] or profile[1], tmp_path, alone)
                     assert after == read_as, (path, action.title)
                 else:
                     _expect_same(action.title, path, before, after, changed)

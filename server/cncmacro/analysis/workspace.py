@@ -135,7 +135,9 @@ class WorkspaceAnalysis:
         # reads the files on disk, each once; a cache given here is told of changes by its owner
         self._own_files = files is None
         self.files = files if files is not None else FileCache()
-        self._library = ProgramLibrary(self.search_paths, files=self.files, extensions=self.settings.extensions)
+        self._library = ProgramLibrary(
+            self.search_paths, files=self.files, extensions=self.settings.extensions, profile_of=self._profile_name
+        )
         self._library_due = False  # the library is made again when next used (``_reload``)
         self.workspace_folders = [str(p) for p in workspace_folders]
         # the open programs' callers on disk, and the runs that start there; ``call_index``, when
@@ -224,7 +226,9 @@ class WorkspaceAnalysis:
         """The programs a run may call: the open documents, then the files on disk."""
         if self._library_due:
             self._library_due = False
-            self._library = ProgramLibrary(self.search_paths, files=self.files, extensions=self.settings.extensions)
+            self._library = ProgramLibrary(
+                self.search_paths, files=self.files, extensions=self.settings.extensions, profile_of=self._profile_name
+            )
             for d in self.docs.values():
                 d.loaded = self._library.add_parsed(d.path, d.doc.lines, d.doc.program)
                 d.targets = None
@@ -243,10 +247,10 @@ class WorkspaceAnalysis:
         settings = settings or MachineSettings()
         budget = max_blocks if max_blocks is not None else settings.max_blocks
         if settings != self.settings or dialect != self.dialect_setting or budget != self.max_blocks:
-            extensions_changed = settings.extensions != self.settings.extensions
+            profiles_changed = settings != self.settings or dialect != self.dialect_setting
             self.settings, self.dialect_setting, self.max_blocks = settings, dialect, budget
-            if extensions_changed:
-                self._reload()  # other files are programs now
+            if profiles_changed:
+                self._reload()  # other files are programs now, or of another profile
             for d in self.docs.values():
                 d.own = d.static = d.targets = None
             self._unreached.forget()
@@ -258,6 +262,11 @@ class WorkspaceAnalysis:
     def dialect_of(self, lines: list[str]) -> Dialect:
         """The profile a file with these lines is read in (``file_profile``)."""
         return file_profile(lines, self.settings, self.dialect_setting)
+
+    def _profile_name(self, lines: list[str], path: str) -> str:
+        """The name of ``dialect_of``: the program library finds a call's program only among the
+        files read in the calling file's profile (``ProgramLibrary.on_machine``)."""
+        return self.dialect_of(lines).name
 
     def _calls_in(self, block: Block, d: WorkspaceDocument) -> bool:
         ctx = static_checks.line_context(self.dialect_of(d.doc.lines), self.settings, self.locale)

@@ -11,10 +11,13 @@ holds a call word is parsed for that; of any other, the numbers its O words may 
 noted from the text (every ``O`` followed by digits, a superset of the parser's program
 numbers), and the file is parsed for its exact O numbers (``exact_names``) only when one of
 those is a number that some call names. ``join_groups`` then joins into one group every file
-with the files that may hold what it calls. It errs on the side of joining: a number held by
-several files joins them all, and a file whose call names its program by a value only a run
-knows (``G65 P#1``) joins every file, so that no run can reach a file that is not open beside
-it (``library/programs.py`` decides which file a call reaches). Both are given texts, not
+with the files that may hold what it calls, among the files read in its profile: a call finds
+only a program of its own machine (``ProgramLibrary.on_machine``), so a FANUC file and a
+GSK980TDi-marked file beside it are never joined by a call. Within one profile it errs on the side
+of joining: a number held by several files joins them all, and a file whose call names its
+program by a value only a run knows (``G65 P#1``) joins every file of its profile, so that no run
+can reach a file that is not open beside it (``library/programs.py`` decides which file a call
+reaches). Both are given texts, not
 paths, so that the work can be spread over processes (``check_work.py``).
 """
 
@@ -41,11 +44,13 @@ _O_DIGITS = re.compile(r"[Oo][ \t]*\+?[ \t]*(\d+)")
 
 class FileKeys(NamedTuple):
     """What ``file_keys`` found in one file. ``maybe`` is None when ``names`` holds the file's
-    exact O numbers, else the numbers its O words may spell (``exact_names`` tells which)."""
+    exact O numbers, else the numbers its O words may spell (``exact_names`` tells which);
+    ``profile`` is the name of the profile the file is read in (``file_profile``)."""
 
     names: frozenset[Key]
     calls: frozenset[Key]
     maybe: frozenset[int] | None
+    profile: str
 
 
 def file_keys(path: Path, text: str, settings: MachineSettings, dialect: str | None) -> FileKeys:
@@ -54,7 +59,7 @@ def file_keys(path: Path, text: str, settings: MachineSettings, dialect: str | N
     word = re.compile(call_word_pattern(settings.calls)).search
     if word(text) is None:  # no call: the file is read for its O numbers only if a call names one
         maybe = frozenset(int(m) for m in _O_DIGITS.findall(text))
-        return FileKeys(frozenset(names), frozenset(), maybe)
+        return FileKeys(frozenset(names), frozenset(), maybe, file_profile(text, settings, dialect).name)
     loaded = load_text(str(path), text)
     names.update(("n", u.number) for u in loaded.program.units if u.number is not None)
     calls: set[Key] = set()
@@ -76,7 +81,7 @@ def file_keys(path: Path, text: str, settings: MachineSettings, dialect: str | N
                 calls.add(("n", named))
         if call.number is None and call.name is None and call.target is not None:
             calls.add(ANY)
-    return FileKeys(frozenset(names), frozenset(calls), None)
+    return FileKeys(frozenset(names), frozenset(calls), None, profile.name)
 
 
 def exact_names(path: Path, text: str) -> frozenset[Key]:
@@ -106,8 +111,8 @@ def to_read_exactly(keys: list[FileKeys]) -> list[int]:
 
 def join_groups(paths: list[Path], keys: list[FileKeys]) -> list[list[Path]]:
     """``paths`` (each with its ``keys``, exact where ``to_read_exactly`` asked) in groups of
-    files that calls may connect, each group in the order of ``paths``, the groups in the order
-    of their first file."""
+    files that calls may connect (a call, the files of its own file's profile only), each group
+    in the order of ``paths``, the groups in the order of their first file."""
     holders: dict[Key, list[int]] = {}
     for i, k in enumerate(keys):
         for key in k.names:
@@ -126,11 +131,14 @@ def join_groups(paths: list[Path], keys: list[FileKeys]) -> list[list[Path]]:
             if a != b:
                 parent[max(a, b)] = min(a, b)
 
+    of_profile: dict[str, list[int]] = {}
+    for i, k in enumerate(keys):
+        of_profile.setdefault(k.profile, []).append(i)
     for i, k in enumerate(keys):
         if ANY in k.calls:
-            join(i, range(len(paths)))
+            join(i, of_profile[k.profile])
         for key in k.calls:
-            join(i, holders.get(key, ()))
+            join(i, (j for j in holders.get(key, ()) if keys[j].profile == k.profile))
     groups: dict[int, list[Path]] = {}
     for i, path in enumerate(paths):
         groups.setdefault(root(i), []).append(path)

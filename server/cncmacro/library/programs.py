@@ -11,7 +11,13 @@ name is a file name (``CUT.CNC``), or an O number when it looks like one (``P[O1
 Only files inside those folders are ever read: a name with a path in it is never found, and a
 link in a folder that leads out of it (and out of every extra folder) is not followed. Files are
 read as any file found in a folder is (``files.read_program``): regular files only, up to
-``MAX_PROGRAM_BYTES``; one that is not read is not found. Files on disk are read through a
+``MAX_PROGRAM_BYTES``; one that is not read is not found. A control holds the programs of its
+own memory only: a library told which profile each file is read in (``profile_of``, the name of
+``profiles.file_profile``'s answer) finds, for a call, only the programs of files read in the
+calling file's profile. So in one folder a FANUC program's ``M98 P2000`` does not find an
+``O2000.nc`` marked ``(cncmacro: dialect=gsk980tdi)``, another machine's program, nor does that
+GSK980TDi program find the folder's unmarked files (read in the folder's profile); a folder of
+one control finds what it always found. Files on disk are read through a
 ``FileCache`` (``file_cache.py``), which a library may share with others (the language server's
 workspace index, the call index), so that a file is read and parsed once until it changes.
 """
@@ -20,14 +26,15 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..bilingual import Detail, detail
+from ..dialects import get_dialect
 from ..syntax.block_parser import BlockCache, shared_cache
 from ..syntax.program import Program, ProgramUnit
-from .dialect_choice import dialect_from_text
+from .dialect_choice import HEADER_LINES, dialect_from_text
 from .file_cache import FileCache, LoadedFile, load_text
 from .files import (
     MAX_PROGRAM_FILES,
@@ -110,7 +117,9 @@ class ProgramLibrary:
     """The programs a run may call. ``folders`` are searched after the calling file's own
     folder; ``texts`` maps paths to text that replaces the file on disk (open editors);
     ``files`` reads the files on disk (a cache of its own when none is given); ``absent`` the
-    numbers searched for in vain by header, per folder (its own when none is given)."""
+    numbers searched for in vain by header, per folder (its own when none is given);
+    ``profile_of`` the name of the profile a file (its lines, its path) is read in: a call finds
+    only the programs of its own file's profile, its machine's (None: every program is found)."""
 
     def __init__(
         self,
@@ -121,6 +130,7 @@ class ProgramLibrary:
         extensions: frozenset[str] = frozenset(),
         absent: dict[Path, set[int]] | None = None,
         listings: dict[ListingKey, Listing] | None = None,
+        profile_of: Callable[[list[str], str], str] | None = None,
     ) -> None:
         self.folders = [Path(f) for f in folders or []]
         self.extensions = extensions  # the machine file's endings of program files
@@ -140,6 +150,9 @@ class ProgramLibrary:
         # goes there (the language server's workspace index: a hover or look-up lists no folder)
         self._disk_listings: dict[ListingKey, Listing] = listings if listings is not None else {}
         self.unread: dict[str, Detail] = {}  # files that could not be read, and why
+        self.profile_of = profile_of
+        self._profiles: dict[tuple[str, tuple[str, ...]], str] = {}  # each file's profile, by its head
+        self.elsewhere: dict[str, str] = {}  # files passed over as another machine's, and their profile
 
     # ---- files
     def load(self, path: str | Path) -> LoadedFile | None:
@@ -278,6 +291,34 @@ class ProgramLibrary:
         return folders
 
     # ---- lookup
+    def on_machine(self, found: LoadedFile, near: LoadedFile | None) -> bool:
+        """Whether a call in ``near`` may run a program of ``found``: the two files are read in
+        one profile, so they are programs of one machine's memory (see the module docstring).
+        A file of another profile is noted in ``elsewhere`` for the message of a program not
+        found."""
+        if self.profile_of is None or near is None or found.path == near.path:
+            return True
+        theirs = self._profile(found)
+        if theirs == self._profile(near):
+            return True
+        self.elsewhere[found.path] = theirs
+        return False
+
+    def _profile(self, file: LoadedFile) -> str:
+        """The profile ``file`` is read in, by ``profile_of``: of the lines the library holds for
+        its path when ``file`` comes without them (a check's view of the file it checks). Kept
+        by path and first lines, where a dialect comment may be (an edit may change it)."""
+        assert self.profile_of is not None
+        lines = file.lines
+        if not lines:
+            held = self._files.get(file.path)
+            lines = held.lines if held is not None else lines
+        key = (file.path, tuple(lines[:HEADER_LINES]))
+        name = self._profiles.get(key)
+        if name is None:
+            name = self._profiles[key] = self.profile_of(lines, file.path)
+        return name
+
     def find_number(self, number: int, near: LoadedFile | None = None) -> FoundProgram | None:
         """The program O``number``, searched as the module docstring says."""
         if near is not None:
@@ -287,7 +328,7 @@ class ProgramLibrary:
         folders = self._search_folders(near)
         for folder in folders:
             for p in self._named_for(folder, number):
-                found = self._unit_in(p, number)
+                found = self._unit_in(p, number, near)
                 if found is not None:
                     return found
         header = _header_pattern(number)
@@ -295,36 +336,41 @@ class ProgramLibrary:
             absent = self._absent.setdefault(folder, set())
             if number in absent:  # searched in vain before: a folder of 100,000 files is not read again
                 continue
-            found = self._header_in(folder, number, header)
+            found, held = self._header_in(folder, number, header, near)
             if found is not None:
                 return found
-            absent.add(number)
+            if not held:  # no file there holds it, of any machine (another may look for it)
+                absent.add(number)
         return None
 
-    def _header_in(self, folder: Path, number: int, header: re.Pattern[str]) -> FoundProgram | None:
+    def _header_in(
+        self, folder: Path, number: int, header: re.Pattern[str], near: LoadedFile | None
+    ) -> tuple[FoundProgram | None, bool]:
         """O``number`` in a file of ``folder`` whatever its name, by its header: the first
-        ``MAX_PROGRAM_FILES`` files only, so that a lookup in a huge folder stays bounded."""
+        ``MAX_PROGRAM_FILES`` files only, so that a lookup in a huge folder stays bounded; and
+        whether a file there holds it, if only another machine's."""
+        held = False
         for p in self._folder_files(folder)[:MAX_PROGRAM_FILES]:
             loaded = self._files.get(str(p))
-            if loaded is not None:
-                unit = loaded.program.unit_numbered(number)
-                if unit is not None:
-                    return FoundProgram(loaded, unit)
-                continue
-            text = self.texts.get(str(p))
-            if text is None:
-                try:
-                    text = self.disk.text(str(p))
-                except (OSError, SkippedFileError):
+            if loaded is None:
+                text = self.texts.get(str(p))
+                if text is None:
+                    try:
+                        text = self.disk.text(str(p))
+                    except (OSError, SkippedFileError):
+                        continue
+                if not header.search(text):
                     continue
-            if header.search(text):
                 loaded = self.load(p)  # parsed from the text just searched (the cache keeps it)
                 if loaded is None:
                     continue
-                unit = loaded.program.unit_numbered(number)
-                if unit is not None:
-                    return FoundProgram(loaded, unit)
-        return None
+            unit = loaded.program.unit_numbered(number)
+            if unit is None:
+                continue
+            held = True
+            if self.on_machine(loaded, near):
+                return FoundProgram(loaded, unit), held
+        return None, held
 
     def control_program(self, number: int) -> FoundProgram:
         """O``number`` as a program kept on the control (a machine file's
@@ -354,7 +400,7 @@ class ProgramLibrary:
             for p in self._folder_files(folder):
                 if p.stem.lower() == wanted or p.name.lower() == wanted:
                     loaded = self.load(p)
-                    if loaded is not None:
+                    if loaded is not None and self.on_machine(loaded, near):
                         return FoundProgram(loaded, loaded.program.named_units()[0])
         return None
 
@@ -365,19 +411,25 @@ class ProgramLibrary:
         return sorted(p for name in names for p in stems.get(name, ()))
 
     def unread_for(self, number: int, near: LoadedFile | None = None) -> Detail | None:
-        """Why a file named for program ``number`` could not be read by ``find_number`` (a
-        DNC program holding it open, a binary or too large a file), for the message of a program
-        not found: the program may well be there."""
+        """Why a file named for program ``number`` was not found by ``find_number``: it could
+        not be read (a DNC program holding it open, a binary or too large a file), or it is
+        another machine's program (``on_machine``), for the message of a program not found:
+        the file is there."""
         for folder in self._search_folders(near):
             for p in self._named_for(folder, number):
                 why = self.unread.get(str(p))
                 if why is not None:
                     return why
+                other = self.elsewhere.get(str(p))
+                if other is not None:
+                    shown, title = shown_text(str(p)), get_dialect(other).title
+                    return detail(f"{shown} is a {title} program, another machine's",
+                                  f"{shown} 是 {title} 的程序，属于另一台机床")  # fmt: skip
         return None
 
-    def _unit_in(self, path: Path, number: int) -> FoundProgram | None:
+    def _unit_in(self, path: Path, number: int, near: LoadedFile | None) -> FoundProgram | None:
         loaded = self.load(path)
-        if loaded is None:
+        if loaded is None or not self.on_machine(loaded, near):
             return None
         unit = loaded.program.unit_numbered(number)
         if unit is None:

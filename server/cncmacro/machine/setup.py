@@ -147,7 +147,8 @@ def prepare_run(
     if max_blocks is not None:
         settings = replace(settings, max_blocks=max_blocks)
     profile = file_profile(source.text, settings, dialect)
-    library = ProgramLibrary(search_paths or [], extensions=settings.extensions)
+    library = ProgramLibrary(search_paths or [], extensions=settings.extensions,
+                             profile_of=lambda lines, _path: file_profile(lines, settings, dialect).name)  # fmt: skip
     machine = Machine(profile, settings, library, m99_ends_main=m99_ends_main)
     if machine.preset_problems:
         raise SetupError(machine.preset_problems[0])

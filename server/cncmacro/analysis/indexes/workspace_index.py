@@ -309,7 +309,8 @@ class WorkspaceIndex:
     def library(self, near: OpenFile | None) -> ProgramLibrary:
         """A program library over the folders of the machine's programs (``near``'s machine,
         else the first workspace folder's) with the open documents' text (the files on disk
-        read through the index's cache)."""
+        read through the index's cache), which finds for a call only the programs read in the
+        calling file's profile (``ProgramLibrary.on_machine``)."""
         open_files = list(self.open_files())
         texts = {d.path: d.parsed.text for d in open_files if near is None or d is not near}
         for d in open_files:  # an open document's text may hold a header by now
@@ -318,7 +319,12 @@ class WorkspaceIndex:
         folders = self.callee_folders(self.machine_of(where)) if where else list(map(str, self.roots))
         extensions = self.extensions_for(where)
         return ProgramLibrary(folders=folders, texts=texts, files=self.disk, extensions=extensions,
-                              absent=self.absent, listings=self.listings)  # fmt: skip
+                              absent=self.absent, listings=self.listings, profile_of=self._profile_name)  # fmt: skip
+
+    def _profile_name(self, lines: list[str], path: str) -> str:
+        """The name of the profile the file at ``path`` is read in (``dialect_for``): a call finds
+        only the programs of its own file's profile, as ``machine_sites`` shares variables."""
+        return self.dialect_for(lines, path).name
 
     def find_program(self, doc: OpenFile, number: int | None, name: str | None) -> FoundProgram | None:
         """The program a call in ``doc`` names, found as the program library finds it."""

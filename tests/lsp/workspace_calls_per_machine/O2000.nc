@@ -1,0 +1,5 @@
+O2000 (cncmacro: dialect=gsk980tdi)
+M98 P2001
+M98 P2002
+M98 P3000
+N30 M30
