@@ -92,6 +92,7 @@ class Planner:
     # a move of the block that travels one from there starts at an unknown place (``Move.unknown``)
     block_astray: frozenset[int] = frozenset()
     block_start: tuple[float, ...] = ()
+    drawn_axes: frozenset[int] | None = None  # the axes the toolpath view draws (whereabouts.py, ``drawn_axes``)
     block_corner: str | None = None  # a block's ,C or ,R (its letter) while it runs (machine/corners.py)
     block_corner_value: float | None = None  # and its value (None: vacant)
     corner: HeldCorner | None = None  # a move whose chamfer or rounding waits for the next (corner_stage.py)

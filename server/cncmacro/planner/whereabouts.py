@@ -127,18 +127,26 @@ def position_known(p: Planner, which: str, axis: int) -> bool:
     return True
 
 
-def drawn_axes(p: Planner) -> tuple[int, ...]:
-    """The axes that place the tool in the toolpath view: X and Z on a lathe, X, Y and Z on a mill."""
-    letters = ("X", "Z") if p.lathe else ("X", "Y", "Z")
-    return tuple(p.axis_index[a] for a in letters if a in p.axis_index)
+def drawn_axes(p: Planner) -> frozenset[int]:
+    """The axes that place the tool in the toolpath view: X and Z on a lathe, X, Y and Z on a mill
+    (found once a planner: its axes do not change)."""
+    drawn = p.drawn_axes
+    if drawn is None:
+        letters = ("X", "Z") if p.lathe else ("X", "Y", "Z")
+        drawn = p.drawn_axes = frozenset(p.axis_index[a] for a in letters if a in p.axis_index)
+    return drawn
+
+
+_NONE: frozenset[int] = frozenset()
 
 
 def astray(p: Planner) -> frozenset[int]:
-    """The drawn axes whose program position the run does not know (module docstring)."""
+    """The drawn axes whose program position the run does not know (module docstring). Asked at
+    every block: the common answer, every drawn axis placed and none lost, costs two tests."""
     w = p.whereabouts
     axes = drawn_axes(p)
-    if not w.lost and not w.homed and all(i in w.placed for i in axes):
-        return frozenset()
+    if not w.lost and not w.homed and axes <= w.placed:
+        return _NONE
     return frozenset(i for i in axes if i not in w.placed or not position_known(p, "end", i))
 
 
