@@ -70,3 +70,15 @@ def test_mill_return_of_z_to_an_unknown_home_is_marked_and_the_next_z_move_from_
     assert marks(m) == [(1, "start"), (2, None), (3, None), (3, "end"), (4, None), (5, "start")]
     # X20 from X0 at 24000 mm/min: 0.05 s; the cut Z50 -> Z10, 40 mm at 600 mm/min: 4 s
     assert [m.planner.moves[i].seconds for i in (1, 4)] == [pytest.approx(4.0), pytest.approx(0.05)]
+
+
+def test_mill_program_that_never_names_z_draws_its_moves_in_the_plane() -> None:
+    # Z never named: it stays where the operator left it. A line that moves only X and Y is drawn
+    # (the plain lines' run takes it as the general path does); one that goes nowhere stands at an
+    # unknown Z and is marked
+    m = run(lines("O0001", "G90 G17 G94", "G00 X0. Y0.", "G01 X10. Y0. F600", "G01 X10. Y20.",
+                  "G01 X10. Y20.", "M30"), "fanuc-0i")  # fmt: skip
+    assert m.status == "completed"
+    assert marks(m) == [(2, "start"), (3, None), (4, None), (5, "start")]
+    # 10 mm and 20 mm at 600 mm/min: 1 s and 2 s
+    assert [mv.seconds for mv in m.planner.moves[1:3]] == [pytest.approx(1.0), pytest.approx(2.0)]

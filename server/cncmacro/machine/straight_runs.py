@@ -76,11 +76,15 @@ def run_straight(
         return 0, pc
     if p.vector_before is not None:  # the tool vector changed: the general path times the machine's travel
         return 0, pc  # (planner/offset_travel.py)
-    if p.whereabouts.lost or astray(p):  # a G30 left an axis unknown, or the start: the general path finds
-        return 0, pc  # its next absolute move and marks the moves from an unknown place (planner/whereabouts.py)
-    # the axes whose program position a G28/G53 gave: a line that names one absolutely is the
-    # general path's, which says the axis is where the program says (planner/whereabouts.py)
-    homed = p.whereabouts.homed
+    if p.whereabouts.lost:  # a G30 left an axis unknown: the general path finds its next absolute move
+        return 0, pc  # (planner/whereabouts.py)
+    # the drawn axes astray (never named since the start, or at a point whose offsets are not
+    # given): a line that moves one is the general path's, which marks its move as from an unknown
+    # place; and the axes whose program position a G28/G53 gave: a line that names one absolutely
+    # is the general path's too, which says the axis is where the program says (planner/whereabouts.py).
+    # A line that moves only other axes runs here: its move is drawn as the general path draws it.
+    wander = astray(p)
+    homed = p.whereabouts.homed | wander if wander else p.whereabouts.homed
     if p.modal.get("feed") == INVERSE_TIME:  # G93: each cut's time is its block's F (missing_feed.py)
         return 0, pc
     g_words = p.plain.g_words()
@@ -168,6 +172,8 @@ def run_straight(
                         break
                     target[kind] = float(word[1:])
                 else:
+                    if wander and kind in wander:
+                        break
                     target[kind] += float(word[1:])
             elif kind == PLAIN_G:
                 group, v = g_words.get(word) or p.plain.g_word(word)
@@ -185,6 +191,8 @@ def run_straight(
                 else:
                     others.append((group, v))
             elif kind < PLAIN_G:  # an incremental letter (U, V, W): added after the absolute ones
+                if wander and kind - PLAIN_INCREMENTAL in wander:
+                    break
                 moved = True
                 if inc is None:
                     inc = [(kind - PLAIN_INCREMENTAL, float(word[1:]))]
@@ -203,6 +211,8 @@ def run_straight(
             else:
                 arc[PLAIN_ARC_LETTERS[kind]] = float(word[1:])
         else:
+            if wander and moved and (inc is not None or tuple(target) == start):
+                break  # a move that goes nowhere, at a place not known: the general path marks it (whereabouts.py)
             if others is not None and ("feed", INVERSE_TIME) in others:
                 break  # G93 from here on: the compiled path times each cut by its block's F
             if cutter is not None and others is not None:
